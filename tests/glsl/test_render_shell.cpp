@@ -1,0 +1,110 @@
+// Runs the render_shell executable on the fixture and inspects the PNG it writes.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "png_io.h"
+#include "reference_surfaces.h"
+#include "shell_renderer.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int status = -1;
+  std::string output;  // stdout + stderr
+};
+
+Outcome run_render_shell(const std::string& args) {
+  Outcome o;
+  const std::string cmd = std::string("'") + OFFSETGEN_RENDER_SHELL + "' " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (pipe == nullptr) return o;
+  std::array<char, 4096> buf{};
+  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;)
+    o.output.append(buf.data(), n);
+  const int st = pclose(pipe);
+  o.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return o;
+}
+
+std::string fixture_args() {
+  return "--snippet '" + offsetgen::glsl_test::fixture_dir() +
+         "/gyroid_o1.glsl' --prefix gyroid_o1";
+}
+
+fs::path scratch_png(const std::string& name) {
+  return fs::temp_directory_path() /
+         ("offsetgen_render_" + std::to_string(::getpid()) + "_" + name + ".png");
+}
+
+struct PixelCounts {
+  std::size_t background = 0;
+  std::size_t wall = 0;
+};
+
+PixelCounts classify(const offsetgen::png::Image& img) {
+  PixelCounts c;
+  for (std::size_t i = 0; i + 3 < img.rgba.size(); i += 4) {
+    const bool bg = img.rgba[i] == offsetgen::render::kBackground[0] &&
+                    img.rgba[i + 1] == offsetgen::render::kBackground[1] &&
+                    img.rgba[i + 2] == offsetgen::render::kBackground[2];
+    (bg ? c.background : c.wall) += 1;
+  }
+  return c;
+}
+
+// Renders at 128x128 with `extra` options and checks size, content and both pixel kinds.
+void expect_reasonable_picture(const std::string& name, const std::string& extra) {
+  const fs::path png = scratch_png(name);
+  const Outcome o =
+      run_render_shell(fixture_args() + " --size 128x128 " + extra + " -o '" + png.string() + "'");
+  ASSERT_EQ(o.status, 0) << o.output;
+  std::cout << "[ measured ] " << o.output;
+  const auto img = offsetgen::png::read_rgba(png.string());
+  fs::remove(png);
+  ASSERT_EQ(img.width, 128);
+  ASSERT_EQ(img.height, 128);
+  const PixelCounts c = classify(img);
+  const double total = 128.0 * 128.0;
+  // The box covers roughly half of the frame and the gyroid wall most of the box.
+  EXPECT_GT(static_cast<double>(c.wall) / total, 0.15) << "too few wall pixels";
+  EXPECT_GT(static_cast<double>(c.background) / total, 0.15) << "too few background pixels";
+}
+
+TEST(RenderShell, EsHostOneCell) { expect_reasonable_picture("es", "--thickness 0.1"); }
+TEST(RenderShell, GlHostTwoCells) {
+  expect_reasonable_picture("gl", "--thickness 0.08 --cells 2 --api gl");
+}
+TEST(RenderShell, GradedThickness) {
+  expect_reasonable_picture("graded", "--graded --thickness 0.04");
+}
+
+TEST(RenderShell, WrongPrefixListsTheSnippetFunctions) {
+  const Outcome o = run_render_shell(fixture_args() + "x -o '" + scratch_png("bad").string() + "'");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.output.find("defines no gyroid_o1x_field"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("gyroid_o1_shell"), std::string::npos) << o.output;
+}
+
+// Thicker walls cover more of the picture: a cheap check that the thickness reaches the shader.
+TEST(RenderShell, ThickerWallsCoverMorePixels) {
+  offsetgen::render::Options o;
+  o.snippet =
+      offsetgen::glsl::read_text_file(offsetgen::glsl_test::fixture_dir() + "/gyroid_o1.glsl");
+  o.prefix = "gyroid_o1";
+  o.width = o.height = 96;
+  o.thickness = 0.03;
+  const auto thin = classify(offsetgen::render::render(o));
+  o.thickness = 0.2;
+  const auto thick = classify(offsetgen::render::render(o));
+  EXPECT_GT(thick.wall, thin.wall);
+}
+
+}  // namespace
