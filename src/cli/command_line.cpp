@@ -1,0 +1,34 @@
+#include "cli/command_line.h"
+
+#include <filesystem>
+
+namespace offsetgen {
+namespace {
+
+std::string quote(const std::string& arg) {
+  if (!arg.empty() && arg.find_first_of(" \t\"'\\$`*?()<>|&;") == std::string::npos) return arg;
+  std::string out = "'";
+  for (char c : arg) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace
+
+std::string banner_command(const std::vector<std::string>& args) {
+  std::string command = "offsetgen";
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if ((arg == "--out-dir") && i + 1 < args.size()) {
+      ++i;  // where the files land does not change what they say
+      continue;
+    }
+    if (arg.rfind("--out-dir=", 0) == 0) continue;
+    command += " " + quote(arg);
+    if ((arg == "-o" || arg == "--output") && i + 1 < args.size()) {
+      command += " " + quote(std::filesystem::path(args[++i]).filename().string());
+    }
+  }
+  return command;
+}
+
+}  // namespace offsetgen

@@ -1,0 +1,15 @@
+// Helpers shared by the subcommands: exit codes and the banner's command text.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace offsetgen {
+
+enum ExitCode { kExitOk = 0, kExitCheckFailed = 1, kExitUsage = 2, kExitInternal = 3 };
+
+// "offsetgen generate --surface gyroid ..." with shell quoting where needed. Output locations
+// (-o, --out-dir) are reduced to file names so the same inputs give the same bytes in any directory.
+std::string banner_command(const std::vector<std::string>& args);
+
+}  // namespace offsetgen

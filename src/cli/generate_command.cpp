@@ -1,0 +1,118 @@
+#include "cli/generate_command.h"
+
+#include "cli/command_line.h"
+#include "emit/emitted_api.h"
+#include "emit/file_writer.h"
+#include "emit/generate.h"
+#include "surfaces/expression_input.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace offsetgen {
+namespace fs = std::filesystem;
+
+void add_generate_command(CLI::App& app, GenerateOptions& o) {
+  auto* cmd = app.add_subcommand("generate", "Generate offset functions as a C header and/or GLSL snippet");
+  cmd->add_option("-s,--surface", o.surface, "Catalog surface (see `offsetgen list`)");
+  cmd->add_option("-e,--expr", o.expression, "Your own F(x, y[, z]) in cell units, e.g. \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\"");
+  cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
+  cmd->add_option("-n,--name", o.name, "Function prefix (default <surface>_o<order>; required with --expr)");
+  cmd->add_option("-m,--order", o.order, "Approximation order m (1-" + std::to_string(kMaxOrder) + ")")
+      ->capture_default_str();
+  cmd->add_option("-l,--lang", o.lang, "Output language: c, glsl or all")
+      ->check(CLI::IsMember({"c", "glsl", "all"}))
+      ->capture_default_str();
+  cmd->add_option("--precision", o.precision, "C precision: double, float (f-suffixed names) or both")
+      ->check(CLI::IsMember({"double", "float", "both"}))
+      ->capture_default_str();
+  cmd->add_option("-t,--thickness", o.thickness, "Graded wall: total thickness t(x, y, z) in cell units; adds <prefix>_graded");
+  cmd->add_option("-o,--output", o.output, "Output file (with --lang all: the .h; the .glsl goes beside it); - for stdout");
+  cmd->add_option("--out-dir", o.out_dir, "Directory for <prefix>.h / <prefix>.glsl when -o is not given");
+  cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
+}
+
+namespace {
+
+std::string replace_extension(const std::string& path, const std::string& extension) {
+  return fs::path(path).replace_extension(extension).string();
+}
+
+}  // namespace
+
+int run_generate(const GenerateOptions& o, const std::vector<std::string>& args) {
+  const auto start = std::chrono::steady_clock::now();
+  GenerationRequest request;
+  request.surface = o.surface;
+  request.expression = o.expression;
+  request.name = o.name;
+  request.order = o.order;
+  request.c = o.lang == "c" || o.lang == "all";
+  request.glsl = o.lang == "glsl" || o.lang == "all";
+  if (o.precision == "double") request.precisions = {Precision::Double};
+  if (o.precision == "float") request.precisions = {Precision::Float};
+  if (o.precision == "both") request.precisions = {Precision::Double, Precision::Float};
+  for (const auto& p : o.params) {
+    auto [key, value] = split_param(p);
+    if (request.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
+    request.params[key] = value;
+  }
+  if (!o.thickness.empty()) request.thickness = o.thickness;
+  request.command = banner_command(args);
+  if (!o.output.empty() && !o.out_dir.empty()) throw InputError("give either -o or --out-dir, not both");
+  if (o.output == "-" && o.lang == "all") throw InputError("-o - (stdout) takes one language, not --lang all");
+
+  // Resolve the prefix first: default file names depend on it.
+  std::string prefix = o.name;
+  if (prefix.empty()) prefix = fmt::format("{}_o{}", resolve_surface(request).name, o.order);
+  const std::string dir = o.out_dir.empty() ? "" : o.out_dir;
+  std::string c_path, glsl_path;
+  if (request.c) c_path = !o.output.empty() ? o.output : (fs::path(dir) / (prefix + ".h")).string();
+  if (request.glsl) {
+    glsl_path = !o.output.empty() ? (request.c ? replace_extension(o.output, ".glsl") : o.output)
+                                  : (fs::path(dir) / (prefix + ".glsl")).string();
+  }
+  request.c_file_name = fs::path(c_path).filename().string();
+  request.glsl_file_name = fs::path(glsl_path).filename().string();
+  // Fail on an unwritable destination before any work, and before any file is touched.
+  for (const auto* path : {&c_path, &glsl_path}) {
+    if (!path->empty() && *path != "-") {
+      try {
+        require_writable(*path);
+      } catch (const std::runtime_error& e) {
+        throw InputError(e.what());
+      }
+    }
+  }
+
+  Generation g = generate(request);
+  std::vector<std::pair<std::string, std::string>> files;
+  if (request.c) files.emplace_back(c_path, g.c_header);
+  if (request.glsl) files.emplace_back(glsl_path, g.glsl_snippet);
+  std::vector<std::string> report;
+  for (const auto& [path, text] : files) {
+    if (path == "-") {
+      std::fwrite(text.data(), 1, text.size(), stdout);
+      continue;
+    }
+    bool written = write_file_if_changed(path, text);
+    report.push_back(fmt::format("{} {}", path, written ? "written" : "unchanged"));
+  }
+  if (!o.quiet && o.output != "-") {
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::string ops;
+    for (const auto& f : emitted_functions(g.programs, g.surface.dims))
+      ops += fmt::format("{}{} {}", ops.empty() ? "" : ", ", f.suffix, count_ops(*f.program));
+    fmt::print("offsetgen: {} — {}, order {}, {}D, max|grad F| = {:.6g} (natural units)\n", fmt::join(report, "; "),
+               g.surface.title, o.order, g.surface.dims, g.programs.gradient_bound);
+    fmt::print("offsetgen: ops after CSE: {}; generated in {:.1f} ms\n", ops, ms);
+  }
+  return kExitOk;
+}
+
+}  // namespace offsetgen

@@ -1,0 +1,22 @@
+// `offsetgen generate`: options and the run.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace offsetgen {
+
+struct GenerateOptions {
+  std::string surface, expression, name, lang = "c", precision = "double", output, out_dir;
+  std::vector<std::string> params;
+  std::string thickness;
+  int order = 4;
+  bool quiet = false;
+};
+
+void add_generate_command(CLI::App& app, GenerateOptions& options);
+int run_generate(const GenerateOptions& options, const std::vector<std::string>& args);
+
+}  // namespace offsetgen

@@ -1,0 +1,75 @@
+#include "emit/c_emitter.h"
+
+#include "emit/printer.h"
+#include "emit/templates.h"
+
+#include <fmt/format.h>
+
+namespace offsetgen {
+namespace {
+
+std::string function_name(const FileFacts& facts, const EmittedFunction& f, const Dialect& d) {
+  return facts.prefix + "_" + f.suffix + d.suffix();
+}
+
+std::string parameters(const FileFacts& facts, const EmittedFunction& f, const Dialect& d) {
+  std::string real = d.real_type();
+  std::string params = fmt::format("{0} x, {0} y", real);
+  if (facts.dims == 3) params += fmt::format(", {} z", real);
+  if (!f.extra_parameter.empty()) params += fmt::format(", {} {}", real, f.extra_parameter);
+  if (f.vector_result) params += fmt::format(", {} n[{}]", real, facts.dims);
+  return params;
+}
+
+std::string render_function(const std::string& skeleton, const FileFacts& facts, const EmittedFunction& f,
+                            const Dialect& d) {
+  std::vector<std::string> inputs = {"x", "y"};
+  if (facts.dims == 3) inputs.push_back("z");
+  if (!f.extra_parameter.empty()) inputs.push_back(f.extra_parameter);
+  PrintedBody printed = print_program(*f.program, d, inputs);
+  std::string body;
+  for (const auto& line : printed.temporaries) body += "    " + line + "\n";
+  if (f.vector_result) {
+    for (size_t i = 0; i < printed.outputs.size(); ++i) body += fmt::format("    n[{}] = {};\n", i, printed.outputs[i]);
+  } else {
+    body += fmt::format("    return {};\n", printed.outputs.at(0));
+  }
+  return fmt::format(fmt::runtime(skeleton), fmt::arg("doc", f.doc), fmt::arg("ops", count_ops(*f.program)),
+                     fmt::arg("return_type", f.vector_result ? "void" : d.real_type()),
+                     fmt::arg("name", function_name(facts, f, d)), fmt::arg("params", parameters(facts, f, d)),
+                     fmt::arg("body", body));
+}
+
+}  // namespace
+
+std::string emit_c_header(const FileFacts& facts, const std::vector<EmittedFunction>& functions,
+                          const std::vector<Precision>& precisions) {
+  const std::string skeleton = load_template("c_function.in");
+  std::string rendered, function_list, ops_list;
+  for (Precision precision : precisions) {
+    Dialect d{Language::C, precision};
+    for (const auto& f : functions) {
+      rendered += render_function(skeleton, facts, f, d);
+      std::string call = fmt::format("{} {}{}", f.vector_result ? "void" : d.real_type(),
+                                     function_name(facts, f, d),
+                                     f.vector_result ? f.signature_doc.substr(0, f.signature_doc.size() - 1) + ", n)"
+                                                     : f.signature_doc);
+      function_list += fmt::format(" *   {:<42} {}\n", call, f.doc);
+    }
+  }
+  for (const auto& f : functions) ops_list += fmt::format(" *   {:<8} {}\n", f.suffix, count_ops(*f.program));
+  function_list.pop_back();
+  ops_list.pop_back();
+
+  const Surface& s = *facts.surface;
+  return fmt::format(
+      fmt::runtime(load_template("c_header.h.in")), fmt::arg("file_name", facts.file_name),
+      fmt::arg("version", OFFSETGEN_VERSION), fmt::arg("command", facts.command), fmt::arg("order", facts.order),
+      fmt::arg("order_plus_one", facts.order + 1), fmt::arg("title", s.title), fmt::arg("formula", s.formula),
+      fmt::arg("citation", s.citation), fmt::arg("function_list", function_list), fmt::arg("prefix", facts.prefix),
+      fmt::arg("bound", fmt::format("{:.17g}", facts.gradient_bound)), fmt::arg("ops_list", ops_list),
+      fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "h")),
+      fmt::arg("functions", rendered));
+}
+
+}  // namespace offsetgen

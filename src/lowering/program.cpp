@@ -1,0 +1,357 @@
+#include "lowering/program.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+namespace offsetgen {
+namespace {
+
+uint64_t mix(uint64_t h, uint64_t v) {
+  h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+  h *= 0xff51afd7ed558ccdULL;
+  return h ^ (h >> 33);
+}
+
+uint64_t double_bits(double v) {
+  uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  return bits;
+}
+
+bool commutative(Op op) { return op == Op::Add || op == Op::Mul; }
+
+bool same_node(const Node& x, const Node& y) {
+  return x.op == y.op && x.fn == y.fn && x.a == y.a && x.b == y.b && x.c == y.c && x.input == y.input &&
+         double_bits(x.value) == double_bits(y.value);
+}
+
+double apply(Fn fn, double v) {
+  switch (fn) {
+    case Fn::Sin: return std::sin(v);
+    case Fn::Cos: return std::cos(v);
+    case Fn::Tan: return std::tan(v);
+    case Fn::Exp: return std::exp(v);
+    case Fn::Log: return std::log(v);
+    case Fn::Sinh: return std::sinh(v);
+    case Fn::Cosh: return std::cosh(v);
+    case Fn::Tanh: return std::tanh(v);
+    case Fn::Atan: return std::atan(v);
+    case Fn::Asin: return std::asin(v);
+    case Fn::Acos: return std::acos(v);
+    case Fn::None: break;
+  }
+  throw std::logic_error("apply: no function");
+}
+
+}  // namespace
+
+const char* function_name(Fn fn) {
+  switch (fn) {
+    case Fn::Sin: return "sin";
+    case Fn::Cos: return "cos";
+    case Fn::Tan: return "tan";
+    case Fn::Exp: return "exp";
+    case Fn::Log: return "log";
+    case Fn::Sinh: return "sinh";
+    case Fn::Cosh: return "cosh";
+    case Fn::Tanh: return "tanh";
+    case Fn::Atan: return "atan";
+    case Fn::Asin: return "asin";
+    case Fn::Acos: return "acos";
+    case Fn::None: break;
+  }
+  return "?";
+}
+
+Program::Program(std::vector<std::string> inputs) : inputs_(std::move(inputs)) {}
+
+NodeId Program::intern(Node n) {
+  if (commutative(n.op) && node(n.a).shape > node(n.b).shape) std::swap(n.a, n.b);
+  uint64_t h = mix(static_cast<uint64_t>(n.op) + 1, static_cast<uint64_t>(n.fn));
+  for (int operand : {n.a, n.b, n.c}) h = mix(h, operand < 0 ? 7 : node(operand).shape);
+  h = mix(h, static_cast<uint64_t>(n.input + 2));
+  h = mix(h, double_bits(n.value));
+  n.shape = h;
+  auto& bucket = by_shape_[h];
+  for (NodeId id : bucket) {
+    if (same_node(nodes_[static_cast<size_t>(id)], n)) return id;
+  }
+  nodes_.push_back(n);
+  NodeId id = static_cast<NodeId>(nodes_.size() - 1);
+  bucket.push_back(id);
+  return id;
+}
+
+bool Program::is_const(NodeId id, double value) const {
+  const Node& n = node(id);
+  return n.op == Op::Const && n.value == value;
+}
+
+NodeId Program::input(int index) {
+  Node n;
+  n.op = Op::Input;
+  n.input = index;
+  return intern(n);
+}
+
+NodeId Program::constant(double value) {
+  Node n;
+  n.op = Op::Const;
+  n.value = value == 0 ? 0.0 : value;  // one zero, not two
+  return intern(n);
+}
+
+NodeId Program::neg(NodeId a) {
+  const Node& x = node(a);
+  if (x.op == Op::Const) return constant(-x.value);
+  if (x.op == Op::Neg) return x.a;
+  if (x.op == Op::Sub) return sub(x.b, x.a);
+  Node n;
+  n.op = Op::Neg;
+  n.a = a;
+  return intern(n);
+}
+
+NodeId Program::add(NodeId a, NodeId b) {
+  if (is_const(a) && is_const(b)) return constant(node(a).value + node(b).value);
+  if (is_const(a, 0)) return b;
+  if (is_const(b, 0)) return a;
+  if (node(b).op == Op::Neg) return sub(a, node(b).a);
+  if (node(a).op == Op::Neg) return sub(b, node(a).a);
+  if (node(b).op == Op::Const && node(b).value < 0) return sub(a, constant(-node(b).value));
+  if (node(a).op == Op::Const && node(a).value < 0) return sub(b, constant(-node(a).value));
+  Node n;
+  n.op = Op::Add;
+  n.a = a;
+  n.b = b;
+  return intern(n);
+}
+
+NodeId Program::sub(NodeId a, NodeId b) {
+  if (is_const(a) && is_const(b)) return constant(node(a).value - node(b).value);
+  if (a == b) return constant(0);
+  if (is_const(b, 0)) return a;
+  if (is_const(a, 0)) return neg(b);
+  if (node(b).op == Op::Neg) return add(a, node(b).a);
+  if (node(a).op == Op::Neg) return neg(add(node(a).a, b));
+  Node n;
+  n.op = Op::Sub;
+  n.a = a;
+  n.b = b;
+  return intern(n);
+}
+
+NodeId Program::mul(NodeId a, NodeId b) {
+  if (is_const(a) && is_const(b)) return constant(node(a).value * node(b).value);
+  if (is_const(a, 0) || is_const(b, 0)) return constant(0);
+  if (is_const(a, 1)) return b;
+  if (is_const(b, 1)) return a;
+  if (is_const(a, -1)) return neg(b);
+  if (is_const(b, -1)) return neg(a);
+  // Signs move outwards, so -a*b and a*-b are one node.
+  if (node(a).op == Op::Neg) return neg(mul(node(a).a, b));
+  if (node(b).op == Op::Neg) return neg(mul(a, node(b).a));
+  if (node(a).op == Op::Const && node(a).value < 0) return neg(mul(constant(-node(a).value), b));
+  if (node(b).op == Op::Const && node(b).value < 0) return neg(mul(a, constant(-node(b).value)));
+  Node n;
+  n.op = Op::Mul;
+  n.a = a;
+  n.b = b;
+  return intern(n);
+}
+
+NodeId Program::div(NodeId a, NodeId b) {
+  if (is_const(a) && is_const(b)) return constant(node(a).value / node(b).value);
+  if (is_const(b, 1)) return a;
+  if (is_const(a, 0)) return constant(0);
+  if (node(a).op == Op::Neg) return neg(div(node(a).a, b));
+  if (node(b).op == Op::Neg) return neg(div(a, node(b).a));
+  // A multiply is cheaper than a divide; it costs at most one extra rounding.
+  if (is_const(b)) return mul(a, constant(1.0 / node(b).value));
+  Node n;
+  n.op = Op::Div;
+  n.a = a;
+  n.b = b;
+  return intern(n);
+}
+
+NodeId Program::sqrt(NodeId a) {
+  if (is_const(a)) return constant(std::sqrt(node(a).value));
+  Node n;
+  n.op = Op::Sqrt;
+  n.a = a;
+  return intern(n);
+}
+
+NodeId Program::abs(NodeId a) {
+  if (is_const(a)) return constant(std::fabs(node(a).value));
+  Node n;
+  n.op = Op::Abs;
+  n.a = node(a).op == Op::Neg ? node(a).a : a;
+  return intern(n);
+}
+
+NodeId Program::call(Fn fn, NodeId a) {
+  if (is_const(a)) return constant(apply(fn, node(a).value));
+  if (node(a).op == Op::Neg) {  // odd and even symmetry keeps one argument per sin/cos pair
+    if (fn == Fn::Cos || fn == Fn::Cosh) return call(fn, node(a).a);
+    if (fn == Fn::Sin || fn == Fn::Tan || fn == Fn::Sinh || fn == Fn::Tanh || fn == Fn::Atan || fn == Fn::Asin)
+      return neg(call(fn, node(a).a));
+  }
+  Node n;
+  n.op = Op::Call;
+  n.fn = fn;
+  n.a = a;
+  return intern(n);
+}
+
+NodeId Program::pow(NodeId a, NodeId b) {
+  if (is_const(a) && is_const(b)) return constant(std::pow(node(a).value, node(b).value));
+  Node n;
+  n.op = Op::Pow;
+  n.a = a;
+  n.b = b;
+  return intern(n);
+}
+
+NodeId Program::less_eq(NodeId a, NodeId b) {
+  Node n;
+  n.op = Op::LessEq;
+  n.a = a;
+  n.b = b;
+  n.boolean = true;
+  return intern(n);
+}
+
+NodeId Program::greater(NodeId a, NodeId b) {
+  Node n;
+  n.op = Op::Greater;
+  n.a = a;
+  n.b = b;
+  n.boolean = true;
+  return intern(n);
+}
+
+NodeId Program::select(NodeId condition, NodeId if_true, NodeId if_false) {
+  if (if_true == if_false) return if_true;
+  Node n;
+  n.op = Op::Select;
+  n.a = condition;
+  n.b = if_true;
+  n.c = if_false;
+  return intern(n);
+}
+
+NodeId Program::sum(std::vector<NodeId> terms) {
+  if (terms.empty()) return constant(0);
+  // Positive terms first, so a chain starts with an addition rather than a negation.
+  std::stable_sort(terms.begin(), terms.end(), [this](NodeId x, NodeId y) {
+    bool nx = node(x).op == Op::Neg, ny = node(y).op == Op::Neg;
+    if (nx != ny) return ny;
+    return node(x).shape < node(y).shape;
+  });
+  NodeId acc = terms.front();
+  for (size_t i = 1; i < terms.size(); ++i) acc = add(acc, terms[i]);
+  return acc;
+}
+
+NodeId Program::product(std::vector<NodeId> factors) {
+  if (factors.empty()) return constant(1);
+  std::stable_sort(factors.begin(), factors.end(),
+                   [this](NodeId x, NodeId y) { return node(x).shape < node(y).shape; });
+  NodeId acc = factors.front();
+  for (size_t i = 1; i < factors.size(); ++i) acc = mul(acc, factors[i]);
+  return acc;
+}
+
+NodeId Program::integer_power(NodeId base, int exponent) {
+  if (exponent < 1) throw std::invalid_argument("integer_power needs exponent >= 1");
+  if (exponent == 1) return base;
+  NodeId half = integer_power(base, exponent / 2);
+  NodeId square = mul(half, half);
+  return exponent % 2 ? mul(square, base) : square;
+}
+
+void Program::add_output(const std::string& name, NodeId node) { outputs_.emplace_back(name, node); }
+
+std::vector<NodeId> schedule(const Program& program) {
+  std::vector<NodeId> order;
+  std::vector<char> state(program.nodes().size(), 0);  // 0 new, 1 visiting, 2 done
+  std::vector<std::pair<NodeId, int>> stack;
+  for (const auto& output : program.outputs()) {
+    stack.push_back({output.second, 0});
+    while (!stack.empty()) {
+      auto& [id, step] = stack.back();
+      const Node& n = program.node(id);
+      if (state[static_cast<size_t>(id)] == 2) {
+        stack.pop_back();
+        continue;
+      }
+      state[static_cast<size_t>(id)] = 1;
+      int operands[3] = {n.a, n.b, n.c};
+      if (step < 3) {
+        int next = operands[step++];
+        if (next >= 0 && state[static_cast<size_t>(next)] == 0) stack.push_back({next, 0});
+        continue;
+      }
+      state[static_cast<size_t>(id)] = 2;
+      order.push_back(id);
+      stack.pop_back();
+    }
+  }
+  return order;
+}
+
+Evaluator::Evaluator(const Program& program)
+    : program_(program), order_(schedule(program)), values_(program.nodes().size(), 0.0) {}
+
+const std::vector<double>& Evaluator::operator()(const std::vector<double>& inputs) {
+  auto& v = values_;
+  for (NodeId id : order_) {
+    const Node& n = program_.node(id);
+    auto A = [&] { return v[static_cast<size_t>(n.a)]; };
+    auto B = [&] { return v[static_cast<size_t>(n.b)]; };
+    double r = 0;
+    switch (n.op) {
+      case Op::Input: r = inputs.at(static_cast<size_t>(n.input)); break;
+      case Op::Const: r = n.value; break;
+      case Op::Add: r = A() + B(); break;
+      case Op::Sub: r = A() - B(); break;
+      case Op::Mul: r = A() * B(); break;
+      case Op::Div: r = A() / B(); break;
+      case Op::Neg: r = -A(); break;
+      case Op::Sqrt: r = std::sqrt(A()); break;
+      case Op::Abs: r = std::fabs(A()); break;
+      case Op::Call: r = apply(n.fn, A()); break;
+      case Op::Pow: r = std::pow(A(), B()); break;
+      case Op::LessEq: r = A() <= B() ? 1.0 : 0.0; break;
+      case Op::Greater: r = A() > B() ? 1.0 : 0.0; break;
+      case Op::Select: r = A() != 0.0 ? B() : v[static_cast<size_t>(n.c)]; break;
+    }
+    v[static_cast<size_t>(id)] = r;
+  }
+  outputs_.clear();
+  for (const auto& output : program_.outputs()) outputs_.push_back(v[static_cast<size_t>(output.second)]);
+  return outputs_;
+}
+
+std::vector<double> evaluate(const Program& program, const std::vector<double>& inputs) {
+  Evaluator evaluator(program);
+  return evaluator(inputs);
+}
+
+// Counting rules (pinned by tests/test_op_count.cpp): every arithmetic operation (+, -, *, /, unary -),
+// every function call (sin, cos, sqrt, fabs, pow, ...), every comparison and every select counts 1.
+// Inputs and constants count 0. Each node counts once, however often it is used.
+int count_ops(const Program& program) {
+  int ops = 0;
+  for (NodeId id : schedule(program)) {
+    Op op = program.node(id).op;
+    if (op != Op::Input && op != Op::Const) ++ops;
+  }
+  return ops;
+}
+
+}  // namespace offsetgen

@@ -1,0 +1,128 @@
+#include "offset/offset_model.h"
+
+#include "offset/multi_index.h"
+#include "offset/richardson.h"
+#include "offset/symbolic_diff.h"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <stdexcept>
+
+namespace offsetgen {
+namespace {
+
+using Jet = std::map<MultiIndex, GiNaC::ex>;
+
+class ChainBuilder {
+ public:
+  ChainBuilder(const Surface& surface, int depth, AtomTable& atoms)
+      : dims_(surface.dims), depth_(depth), atoms_(atoms) {
+    const Symbols& sym = Symbols::get();
+    std::vector<GiNaC::symbol> vars;
+    for (int i = 0; i < dims_; ++i) vars.push_back(sym.natural(i));
+    MemoDiff differ(vars);
+    Jet p0;
+    for (const auto& alpha : indices_up_to(dims_, depth_)) {
+      p0[alpha] = atoms_.define("F" + index_label(alpha), differ.partial(surface.field, alpha), 0);
+    }
+    derivatives_.push_back(std::move(p0));
+  }
+
+  // |grad psi_k| and its derivatives up to the order the chain still needs at level k.
+  const Jet& norms(int level) {
+    while (static_cast<int>(norms_.size()) <= level) extend();
+    return norms_[static_cast<size_t>(level)];
+  }
+  const Jet& derivatives(int level) {
+    while (static_cast<int>(derivatives_.size()) <= level) extend();
+    return derivatives_[static_cast<size_t>(level)];
+  }
+
+ private:
+  void extend() {
+    const int level = static_cast<int>(norms_.size());
+    const int order = depth_ - level - 1;  // N_k needs one order less than P_k
+    if (order < 0) throw std::logic_error("offset chain asked beyond its derivative depth");
+    const Jet& p = derivatives_[static_cast<size_t>(level)];
+    const auto indices = indices_up_to(dims_, order);
+
+    Jet u;
+    for (const auto& alpha : indices) {
+      GiNaC::ex sum = 0;
+      for (int i = 0; i < dims_; ++i) {
+        MultiIndex e = unit_index(i);
+        for (const auto& beta : sub_indices(alpha)) {
+          sum += multi_binomial(alpha, beta) * p.at(beta + e) * p.at(alpha - beta + e);
+        }
+      }
+      u[alpha] = atoms_.define(fmt::format("U{}_{}", level, index_label(alpha)), sum, level);
+    }
+
+    Jet n;
+    const MultiIndex zero{0, 0, 0};
+    n[zero] = atoms_.define(fmt::format("N{}", level), GiNaC::sqrt(u[zero]), level);
+    GiNaC::ex reciprocal = GiNaC::pow(u[zero], GiNaC::numeric(-1, 2));
+    for (const auto& alpha : indices) {
+      if (total_order(alpha) == 0) continue;
+      GiNaC::ex inner = u[alpha];
+      for (const auto& beta : sub_indices(alpha)) {
+        if (total_order(beta) == 0 || beta == alpha) continue;
+        inner -= multi_binomial(alpha, beta) * n.at(beta) * n.at(alpha - beta);
+      }
+      n[alpha] = atoms_.define(fmt::format("N{}_{}", level, index_label(alpha)),
+                               GiNaC::numeric(1, 2) * reciprocal * inner, level);
+    }
+    norms_.push_back(n);
+
+    if (order >= 1) {  // the next level needs derivatives of psi_{k+1} up to `order`
+      const GiNaC::symbol& s = Symbols::get().s;
+      Jet next;
+      for (const auto& alpha : indices) {
+        next[alpha] = atoms_.define(fmt::format("P{}_{}", level + 1, index_label(alpha)),
+                                    p.at(alpha) - s * n.at(alpha), level + 1);
+      }
+      derivatives_.push_back(std::move(next));
+    }
+  }
+
+  int dims_;
+  int depth_;
+  AtomTable& atoms_;
+  std::vector<Jet> derivatives_;  // P_k
+  std::vector<Jet> norms_;        // N_k
+};
+
+}  // namespace
+
+OffsetModel build_offset_model(const Surface& surface, int order, bool with_gradient) {
+  if (order < 1) throw std::invalid_argument("offset order must be >= 1");
+  OffsetModel model;
+  model.order = order;
+  model.dims = surface.dims;
+  model.field = surface.field;
+  const int depth = order + (with_gradient ? 1 : 0);
+  ChainBuilder chains(surface, depth, model.atoms);
+
+  for (int i = 0; i < surface.dims; ++i) model.field_gradient.push_back(chains.derivatives(0).at(unit_index(i)));
+
+  const auto weights = richardson_weights(order);
+  auto add_terms = [&](const MultiIndex& alpha, ChainSum& sum) {
+    if (order == 1) {
+      sum.push_back({1, 1, chains.norms(0).at(alpha)});
+      return;
+    }
+    for (int j = 2; j <= order; ++j) {
+      GiNaC::numeric coeff = weights[static_cast<size_t>(j - 1)] / j;
+      for (int k = 1; k < j; ++k) sum.push_back({coeff, j, chains.norms(k).at(alpha)});
+    }
+  };
+  add_terms({0, 0, 0}, model.weighted_norms);
+  if (with_gradient) {
+    model.weighted_norms_gradient.resize(static_cast<size_t>(surface.dims));
+    for (int i = 0; i < surface.dims; ++i) add_terms(unit_index(i), model.weighted_norms_gradient[static_cast<size_t>(i)]);
+  }
+  return model;
+}
+
+}  // namespace offsetgen

@@ -1,0 +1,27 @@
+// Turning text (catalog formulas, --expr, --param, --thickness) into GiNaC expressions.
+#pragma once
+
+#include "surfaces/surface.h"
+
+#include <map>
+#include <string>
+
+namespace offsetgen {
+
+// A catalog formula in natural coordinates X, Y, Z (= 2*pi*x, ...).
+Surface parse_natural_expression(const std::string& text);
+
+// A user surface in cell coordinates x, y[, z] with named constant parameters (name -> value text).
+// Decimal literals are read as exact rationals, so 0.3 stays 3/10 and prints losslessly.
+// Throws InputError naming the problem and, where it has one, the column.
+Surface parse_user_expression(const std::string& text, const std::map<std::string, std::string>& params,
+                              const std::string& name);
+
+// A wall thickness t(x, y, z) in cell units, for graded walls.
+GiNaC::ex parse_thickness_expression(const std::string& text, const std::map<std::string, std::string>& params,
+                                     int dims);
+
+// "a=0.3" -> {"a", "0.3"}; throws InputError on a malformed entry.
+std::pair<std::string, std::string> split_param(const std::string& assignment);
+
+}  // namespace offsetgen
