@@ -2,6 +2,9 @@
 #include "cli/command_line.h"
 #include "cli/generate_command.h"
 #include "cli/list_command.h"
+#ifdef OFFSETGEN_HAVE_CHECK
+#include "cli/check_command.h"
+#endif
 #include "surfaces/surface.h"
 
 #include <CLI/CLI.hpp>
@@ -31,6 +34,10 @@ int main(int argc, char** argv) {
   add_generate_command(app, generate);
   bool list_json = false;
   add_list_command(app, list_json);
+#ifdef OFFSETGEN_HAVE_CHECK
+  CheckOptions check;
+  add_check_command(app, check);
+#endif
 
   try {
     app.parse(argc, argv);
@@ -42,6 +49,9 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("generate")) return run_generate(generate, args);
     if (app.got_subcommand("list")) return run_list(list_json);
+#ifdef OFFSETGEN_HAVE_CHECK
+    if (app.got_subcommand("check")) return run_check(check);
+#endif
   } catch (const InputError& e) {
     fmt::print(stderr, "offsetgen: error: {}\n", e.what());
     return kExitUsage;
