@@ -23,6 +23,7 @@ std::string banner_command(const std::vector<std::string>& args) {
       continue;
     }
     if (arg.rfind("--out-dir=", 0) == 0) continue;
+    if (arg == "-q" || arg == "--quiet") continue;  // says nothing about the content
     command += " " + quote(arg);
     if ((arg == "-o" || arg == "--output") && i + 1 < args.size()) {
       command += " " + quote(std::filesystem::path(args[++i]).filename().string());

@@ -22,12 +22,6 @@ void require_identifier(const std::string& name) {
   if (!ok) throw InputError(fmt::format("--name '{}' is not a C identifier (letters, digits, _)", name));
 }
 
-std::string expression_text(const GiNaC::ex& e) {
-  std::ostringstream out;
-  out << e;
-  return out.str();
-}
-
 nlohmann::ordered_json metadata(const GenerationRequest& request, const Generation& g) {
   nlohmann::ordered_json j;
   j["format"] = 1;
@@ -36,8 +30,7 @@ nlohmann::ordered_json metadata(const GenerationRequest& request, const Generati
   j["surface"] = request.surface.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(request.surface);
   j["expression"] = request.expression.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(request.expression);
   j["params"] = request.params;
-  j["natural_field"] = expression_text(g.surface.field);
-  j["scale"] = expression_text(g.surface.scale);
+  j["scale"] = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(g.surface.scale)).to_double();
   j["dims"] = g.surface.dims;
   j["order"] = request.order;
   j["thickness"] = request.thickness ? nlohmann::ordered_json(*request.thickness) : nlohmann::ordered_json();

@@ -107,7 +107,7 @@ NodeId Program::neg(NodeId a) {
   const Node& x = node(a);
   if (x.op == Op::Const) return constant(-x.value);
   if (x.op == Op::Neg) return x.a;
-  if (x.op == Op::Sub) return sub(x.b, x.a);
+  // No -(a - b) -> b - a: it would change which node stands for a sum's magnitude (see sum()).
   Node n;
   n.op = Op::Neg;
   n.a = a;
@@ -246,24 +246,61 @@ NodeId Program::select(NodeId condition, NodeId if_true, NodeId if_false) {
 
 NodeId Program::sum(std::vector<NodeId> terms) {
   if (terms.empty()) return constant(0);
+  // GiNaC may hand us a sum or its negation (it normalises signs by hash order, which varies
+  // between runs). Orient every sum canonically, so a - b and -(b - a) lower to one node and the
+  // output does not depend on that choice: the term with the smallest shape is made positive.
+  struct Term {
+    NodeId magnitude;
+    bool negative;
+  };
+  std::vector<Term> split;
+  for (NodeId t : terms) {
+    const Node& n = node(t);
+    if (n.op == Op::Neg) {
+      split.push_back({n.a, true});
+    } else if (n.op == Op::Const && n.value < 0) {
+      split.push_back({constant(-n.value), true});
+    } else {
+      split.push_back({t, false});
+    }
+  }
+  std::stable_sort(split.begin(), split.end(),
+                   [this](const Term& x, const Term& y) { return node(x.magnitude).shape < node(y.magnitude).shape; });
+  const bool flip = split.front().negative;
   // Positive terms first, so a chain starts with an addition rather than a negation.
-  std::stable_sort(terms.begin(), terms.end(), [this](NodeId x, NodeId y) {
-    bool nx = node(x).op == Op::Neg, ny = node(y).op == Op::Neg;
-    if (nx != ny) return ny;
-    return node(x).shape < node(y).shape;
-  });
-  NodeId acc = terms.front();
-  for (size_t i = 1; i < terms.size(); ++i) acc = add(acc, terms[i]);
-  return acc;
+  std::stable_partition(split.begin(), split.end(), [flip](const Term& t) { return t.negative == flip; });
+  NodeId acc = -1;
+  for (const Term& t : split) {
+    bool negative = t.negative != flip;
+    if (acc < 0) {
+      acc = negative ? neg(t.magnitude) : t.magnitude;
+    } else {
+      acc = negative ? sub(acc, t.magnitude) : add(acc, t.magnitude);
+    }
+  }
+  return flip ? neg(acc) : acc;
 }
 
 NodeId Program::product(std::vector<NodeId> factors) {
   if (factors.empty()) return constant(1);
+  // Signs are pulled out before sorting, so the grouping does not depend on which factors arrive
+  // negated (see sum()).
+  bool negative = false;
+  for (NodeId& f : factors) {
+    const Node& n = node(f);
+    if (n.op == Op::Neg) {
+      negative = !negative;
+      f = n.a;
+    } else if (n.op == Op::Const && n.value < 0) {
+      negative = !negative;
+      f = constant(-n.value);
+    }
+  }
   std::stable_sort(factors.begin(), factors.end(),
                    [this](NodeId x, NodeId y) { return node(x).shape < node(y).shape; });
   NodeId acc = factors.front();
   for (size_t i = 1; i < factors.size(); ++i) acc = mul(acc, factors[i]);
-  return acc;
+  return negative ? neg(acc) : acc;
 }
 
 NodeId Program::integer_power(NodeId base, int exponent) {
