@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 20
     - offset: 99
     - shell: 117
-    - normal: 255
+    - normal: 266
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":99,"shell":117,"normal":255}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":99,"shell":117,"normal":266}} */
 #ifndef OFFSETGEN_DIAMOND_O2_GLSL
 #define OFFSETGEN_DIAMOND_O2_GLSL
 
@@ -144,7 +144,7 @@ highp float diamond_o2_shell(highp vec3 p, highp float t)
     return (_t18 - _t19 * ((abs(_t38) <= 1.73205256) ? _t38 : ((_t38 > 0.0) ? 1.73205256 : (-1.73205256)))) * (((abs(_t42) <= 1.73205256) ? _t42 : ((_t42 > 0.0) ? 1.73205256 : (-1.73205256))) * _t19 + _t18);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 255.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 266.
 highp vec3 diamond_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -171,50 +171,57 @@ highp vec3 diamond_o2_normal(highp vec3 p, highp float h)
     highp float _t21 = _t7 + _t17 - _t11 - _t15;
     highp float _t22 = _t21 * _t21;
     highp float _t23 = _t18 * _t18;
-    highp float _t24 = 1.0 / sqrt(_t20 + _t22 + _t23);
-    highp float _t25 = _t10 * _t16;
-    highp float _t26 = _t9 * _t6;
-    highp float _t27 = _t14 * _t6;
-    highp float _t28 = _t4 * _t10;
-    highp float _t29 = _t25 + _t26 - _t27 - _t28;
-    highp float _t30 = _t25 + _t28 - _t27 - _t26;
-    highp float _t31 = _t25 + _t27;
-    highp float _t32 = _t28 + _t31 + _t26;
-    highp float _t33 = _t24 * (_t29 * _t21 * 2.0 + _t30 * _t19 * 2.0 - _t18 * _t32 * 2.0) * 0.5;
-    highp float _t34 = 6.28318548 * h;
-    highp float _t35 = _t34 * 0.5;
-    highp float _t36 = _t18 - _t33 * _t35;
-    highp float _t37 = _t31 - _t28 - _t26;
-    highp float _t38 = _t24 * (_t18 * _t29 * 2.0 + _t37 * _t19 * 2.0 - _t21 * _t32 * 2.0) * 0.5;
-    highp float _t39 = _t38 * _t35 - _t21;
-    highp float _t40 = _t24 * (_t37 * _t21 * 2.0 + _t18 * _t30 * 2.0 - _t32 * _t19 * 2.0) * 0.5;
-    highp float _t41 = _t40 * _t35 - _t19;
-    highp float _t42 = sqrt(_t36 * _t36 + (_t39 * _t39 + _t41 * _t41));
-    bool _t43 = abs(_t42) <= 1.73205256;
-    highp float _t44 = 1.0 / _t42;
-    highp float _t45 = _t15 + _t12 + _t17;
-    highp float _t46 = _t18 * _t21 * 2.0;
-    highp float _t47 = _t29 * _t32 * 2.0;
-    highp float _t48 = _t29 + (2.0 * (_t38 * _t33) - (_t45 * _t19 * 2.0 + _t37 * _t30 * 2.0 - _t46 - _t46 - _t47 - _t47)) * _t24 * 0.5 * _t35;
-    highp float _t49 = _t18 * _t19 * 2.0;
-    highp float _t50 = _t30 * _t32 * 2.0;
-    highp float _t51 = _t24 * (_t49 + _t49 + _t50 + _t50 - _t21 * _t45 * 2.0 - _t37 * _t29 * 2.0 + _t40 * _t33 * 2.0) * 0.5 * _t35 + _t30;
-    highp float _t52 = _t29 * _t29 * 2.0;
+    highp float _t24 = _t20 + _t22 + _t23;
+    highp float _t25 = 1.0 / sqrt(_t24);
+    highp float _t26 = _t10 * _t16;
+    highp float _t27 = _t9 * _t6;
+    highp float _t28 = _t14 * _t6;
+    highp float _t29 = _t4 * _t10;
+    highp float _t30 = _t26 + _t27 - _t28 - _t29;
+    highp float _t31 = _t26 + _t29 - _t28 - _t27;
+    highp float _t32 = _t26 + _t28;
+    highp float _t33 = _t29 + _t32 + _t27;
+    highp float _t34 = _t25 * (_t30 * _t21 * 2.0 + _t31 * _t19 * 2.0 - _t18 * _t33 * 2.0) * 0.5;
+    highp float _t35 = 6.28318548 * h;
+    highp float _t36 = _t35 * 0.5;
+    highp float _t37 = _t18 - _t34 * _t36;
+    highp float _t38 = _t32 - _t29 - _t27;
+    highp float _t39 = _t25 * (_t18 * _t30 * 2.0 + _t38 * _t19 * 2.0 - _t21 * _t33 * 2.0) * 0.5;
+    highp float _t40 = _t39 * _t36 - _t21;
+    highp float _t41 = _t25 * (_t38 * _t21 * 2.0 + _t18 * _t31 * 2.0 - _t33 * _t19 * 2.0) * 0.5;
+    highp float _t42 = _t41 * _t36 - _t19;
+    highp float _t43 = sqrt(_t37 * _t37 + (_t40 * _t40 + _t42 * _t42));
+    bool _t44 = abs(_t43) <= 1.73205256;
+    highp float _t45 = 1.0 / _t43;
+    highp float _t46 = _t15 + _t12 + _t17;
+    highp float _t47 = _t18 * _t21 * 2.0;
+    highp float _t48 = _t30 * _t33 * 2.0;
+    highp float _t49 = _t30 + (2.0 * (_t39 * _t34) - (_t46 * _t19 * 2.0 + _t38 * _t31 * 2.0 - _t47 - _t47 - _t48 - _t48)) * _t25 * 0.5 * _t36;
+    highp float _t50 = _t18 * _t19 * 2.0;
+    highp float _t51 = _t31 * _t33 * 2.0;
+    highp float _t52 = _t25 * (_t50 + _t50 + _t51 + _t51 - _t21 * _t46 * 2.0 - _t38 * _t30 * 2.0 + _t41 * _t34 * 2.0) * 0.5 * _t36 + _t31;
     highp float _t53 = _t30 * _t30 * 2.0;
-    highp float _t54 = _t32 * _t32 * 2.0;
-    highp float _t55 = _t22 * 2.0;
-    highp float _t56 = _t20 * 2.0;
-    highp float _t57 = _t23 * 2.0;
-    highp float _t58 = (_t43) ? _t34 * (_t44 * (_t39 * _t48 * 2.0 + 2.0 * (_t41 * _t51) + ((_t52 + _t53 + _t54 - _t55 - _t56 - _t57 - _t33 * _t33 * 2.0) * _t24 * 0.5 * _t35 + _t32) * _t36 * 2.0) * 0.5) + _t18 : _t18;
-    highp float _t59 = _t37 * _t37 * 2.0;
-    highp float _t60 = _t37 * _t32 * 2.0;
-    highp float _t61 = _t21 * _t19 * 2.0;
-    highp float _t62 = _t35 * (_t24 * (_t60 + _t60 + _t61 + _t61 - _t18 * _t45 * 2.0 - _t29 * _t30 * 2.0 + _t38 * _t40 * 2.0) * 0.5) + _t37;
-    highp float _t63 = (_t43) ? _t21 - _t34 * (_t44 * (_t36 * _t48 * 2.0 + _t39 * (_t32 + _t24 * (_t59 + _t52 + _t54 - _t55 - _t56 - _t57 - _t38 * _t38 * 2.0) * 0.5 * _t35) * 2.0 - _t41 * _t62 * 2.0) * 0.5) : _t21;
-    highp float _t64 = (_t43) ? _t19 - _t34 * (_t44 * (_t41 * (_t24 * (_t59 + _t53 + _t54 - _t55 - _t56 - _t57 - _t40 * _t40 * 2.0) * 0.5 * _t35 + _t32) * 2.0 + _t36 * _t51 * 2.0 - _t39 * _t62 * 2.0) * 0.5) : _t19;
-    highp float _t65 = _t58 * _t58 + _t63 * _t63 + _t64 * _t64;
-    highp float _t66 = (_t65 > 0.0) ? 1.0 / sqrt(_t65) : 0.0;
-    return vec3(_t66 * _t63, _t66 * _t58, _t66 * _t64);
+    highp float _t54 = _t31 * _t31 * 2.0;
+    highp float _t55 = _t33 * _t33 * 2.0;
+    highp float _t56 = _t22 * 2.0;
+    highp float _t57 = _t20 * 2.0;
+    highp float _t58 = _t23 * 2.0;
+    highp float _t59 = (_t44) ? _t35 * (_t45 * (_t40 * _t49 * 2.0 + 2.0 * (_t42 * _t52) + ((_t53 + _t54 + _t55 - _t56 - _t57 - _t58 - _t34 * _t34 * 2.0) * _t25 * 0.5 * _t36 + _t33) * _t37 * 2.0) * 0.5) + _t18 : _t18;
+    highp float _t60 = _t38 * _t38 * 2.0;
+    highp float _t61 = _t38 * _t33 * 2.0;
+    highp float _t62 = _t21 * _t19 * 2.0;
+    highp float _t63 = _t36 * (_t25 * (_t61 + _t61 + _t62 + _t62 - _t18 * _t46 * 2.0 - _t30 * _t31 * 2.0 + _t39 * _t41 * 2.0) * 0.5) + _t38;
+    highp float _t64 = (_t44) ? _t21 - _t35 * (_t45 * (_t37 * _t49 * 2.0 + _t40 * (_t33 + _t25 * (_t60 + _t53 + _t55 - _t56 - _t57 - _t58 - _t39 * _t39 * 2.0) * 0.5 * _t36) * 2.0 - _t42 * _t63 * 2.0) * 0.5) : _t21;
+    highp float _t65 = (_t44) ? _t19 - _t35 * (_t45 * (_t42 * (_t25 * (_t60 + _t54 + _t55 - _t56 - _t57 - _t58 - _t41 * _t41 * 2.0) * 0.5 * _t36 + _t33) * 2.0 + _t37 * _t52 * 2.0 - _t40 * _t63 * 2.0) * 0.5) : _t19;
+    highp float _t66 = _t59 * _t59 + _t64 * _t64 + _t65 * _t65;
+    bool _t67 = _t66 > 0.0;
+    bool _t68 = _t66 <= 1.00000002e+30;
+    highp float _t69 = 1.0 / sqrt(_t66);
+    highp float _t70 = (_t24 > 0.0) ? _t25 : 0.0;
+    highp float _t71 = _t21 * _t70;
+    highp float _t72 = _t18 * _t70;
+    highp float _t73 = _t70 * _t19;
+    return vec3((_t67) ? ((_t68) ? _t69 * _t64 : _t71) : _t71, (_t67) ? ((_t68) ? _t59 * _t69 : _t72) : _t72, (_t67) ? ((_t68) ? _t69 * _t65 : _t73) : _t73);
 }
 
 

@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 14
     - offset: 86
     - shell: 104
-    - normal: 260
+    - normal: 273
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":86,"shell":104,"normal":260}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":86,"shell":104,"normal":273}} */
 #ifndef OFFSETGEN_GYROID_O2_GLSL
 #define OFFSETGEN_GYROID_O2_GLSL
 
@@ -119,7 +119,7 @@ highp float gyroid_o2_shell(highp vec3 p, highp float t)
     return (_t13 + _t14 * ((abs(_t29) <= 1.73205256) ? _t29 : ((_t29 > 0.0) ? 1.73205256 : (-1.73205256)))) * (_t13 - _t14 * ((abs(_t33) <= 1.73205256) ? _t33 : ((_t33 > 0.0) ? 1.73205256 : (-1.73205256))));
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 260.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 273.
 highp vec3 gyroid_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.y;
@@ -143,39 +143,46 @@ highp vec3 gyroid_o2_normal(highp vec3 p, highp float h)
     highp float _t18 = _t7 * _t10;
     highp float _t19 = _t17 - _t18;
     highp float _t20 = _t19 * _t19;
-    highp float _t21 = 1.0 / sqrt(_t15 + _t16 + _t20);
-    highp float _t22 = _t6 * _t1;
-    highp float _t23 = _t7 * _t3;
-    highp float _t24 = _t22 + _t23;
-    highp float _t25 = _t1 * _t10;
-    highp float _t26 = _t12 * _t7;
-    highp float _t27 = _t21 * (2.0 * (_t9 * _t24) + _t25 * _t19 * 2.0 - _t14 * _t26 * 2.0) * 0.5;
-    highp float _t28 = 6.28318548 * h;
-    highp float _t29 = _t28 * 0.5;
-    highp float _t30 = _t9 + _t27 * _t29;
-    highp float _t31 = _t12 * _t10;
-    highp float _t32 = _t22 + _t31;
-    highp float _t33 = _t6 * _t3;
-    highp float _t34 = _t21 * (_t14 * _t32 * 2.0 - _t33 * _t19 * 2.0 - _t26 * _t9 * 2.0) * 0.5;
-    highp float _t35 = _t14 + _t34 * _t29;
-    highp float _t36 = _t31 + _t23;
-    highp float _t37 = _t21 * (_t9 * _t25 * 2.0 + _t36 * _t19 * 2.0 - _t14 * _t33 * 2.0) * 0.5;
-    highp float _t38 = _t37 * _t29 + _t19;
-    highp float _t39 = sqrt(_t30 * _t30 + (_t35 * _t35 + _t38 * _t38));
-    bool _t40 = abs(_t39) <= 1.73205256;
-    highp float _t41 = 1.0 / _t39;
-    highp float _t42 = _t21 * (_t34 * _t27 * 2.0 + (_t26 * _t24 * 2.0 + _t33 * _t25 * 2.0 + _t26 * _t32 * 2.0 - _t14 * _t8 * 2.0 - _t9 * _t13 * 2.0)) * 0.5 * _t29 + _t26;
-    highp float _t43 = _t26 * _t26 * 2.0;
-    highp float _t44 = _t25 * _t25 * 2.0;
-    highp float _t45 = _t21 * (_t24 * _t25 * 2.0 + _t9 * _t18 * 2.0 + _t36 * _t25 * 2.0 + _t26 * _t33 * 2.0 - _t4 * _t19 * 2.0 - _t37 * _t27 * 2.0) * 0.5 * _t29 + _t25;
-    highp float _t46 = (_t40) ? _t28 * (_t41 * (_t35 * _t42 * 2.0 - _t30 * (_t24 + (_t43 + _t18 * _t19 * 2.0 + _t14 * _t13 * 2.0 + _t24 * _t24 * 2.0 + _t44 - _t16 * 2.0 - _t27 * _t27 * 2.0) * _t21 * 0.5 * _t29) * 2.0 - _t45 * _t38 * 2.0) * 0.5) - _t9 : -_t9;
-    highp float _t47 = _t33 + (_t34 * _t37 * 2.0 + (_t19 * _t11 * 2.0 + (_t14 * _t17 * 2.0 + _t32 * _t33 * 2.0 + _t26 * _t25 * 2.0) + _t36 * _t33 * 2.0)) * _t21 * 0.5 * _t29;
-    highp float _t48 = _t33 * _t33 * 2.0;
-    highp float _t49 = (_t40) ? _t14 - _t28 * (_t41 * (_t30 * _t42 * 2.0 + _t47 * _t38 * 2.0 - 2.0 * ((_t32 + _t29 * (0.5 * (_t21 * (_t43 + (_t9 * _t8 * 2.0 + _t32 * _t32 * 2.0) + _t48 - _t17 * _t19 * 2.0 - _t15 * 2.0 - _t34 * _t34 * 2.0)))) * _t35)) * 0.5) : _t14;
-    highp float _t50 = (_t40) ? _t28 * ((((_t9 * _t4 * 2.0 + _t20 * 2.0 + 2.0 * (_t14 * _t11) - _t36 * _t36 * 2.0 - _t48 - _t44 + _t37 * _t37 * 2.0) * _t21 * 0.5 * _t29 - _t36) * _t38 * 2.0 + _t35 * _t47 * 2.0 - _t30 * _t45 * 2.0) * _t41 * 0.5) - _t19 : -_t19;
-    highp float _t51 = _t46 * _t46 + _t49 * _t49 + _t50 * _t50;
-    highp float _t52 = (_t51 > 0.0) ? 1.0 / sqrt(_t51) : 0.0;
-    return vec3(_t52 * _t50, _t52 * _t46, _t52 * _t49);
+    highp float _t21 = _t15 + _t16 + _t20;
+    highp float _t22 = 1.0 / sqrt(_t21);
+    highp float _t23 = _t6 * _t1;
+    highp float _t24 = _t7 * _t3;
+    highp float _t25 = _t23 + _t24;
+    highp float _t26 = _t1 * _t10;
+    highp float _t27 = _t12 * _t7;
+    highp float _t28 = _t22 * (2.0 * (_t9 * _t25) + _t26 * _t19 * 2.0 - _t14 * _t27 * 2.0) * 0.5;
+    highp float _t29 = 6.28318548 * h;
+    highp float _t30 = _t29 * 0.5;
+    highp float _t31 = _t9 + _t28 * _t30;
+    highp float _t32 = _t12 * _t10;
+    highp float _t33 = _t23 + _t32;
+    highp float _t34 = _t6 * _t3;
+    highp float _t35 = _t22 * (_t14 * _t33 * 2.0 - _t34 * _t19 * 2.0 - _t27 * _t9 * 2.0) * 0.5;
+    highp float _t36 = _t14 + _t35 * _t30;
+    highp float _t37 = _t32 + _t24;
+    highp float _t38 = _t22 * (_t9 * _t26 * 2.0 + _t37 * _t19 * 2.0 - _t14 * _t34 * 2.0) * 0.5;
+    highp float _t39 = _t38 * _t30 + _t19;
+    highp float _t40 = sqrt(_t31 * _t31 + (_t36 * _t36 + _t39 * _t39));
+    bool _t41 = abs(_t40) <= 1.73205256;
+    highp float _t42 = 1.0 / _t40;
+    highp float _t43 = _t22 * (_t35 * _t28 * 2.0 + (_t27 * _t25 * 2.0 + _t34 * _t26 * 2.0 + _t27 * _t33 * 2.0 - _t14 * _t8 * 2.0 - _t9 * _t13 * 2.0)) * 0.5 * _t30 + _t27;
+    highp float _t44 = _t27 * _t27 * 2.0;
+    highp float _t45 = _t26 * _t26 * 2.0;
+    highp float _t46 = _t22 * (_t25 * _t26 * 2.0 + _t9 * _t18 * 2.0 + _t37 * _t26 * 2.0 + _t27 * _t34 * 2.0 - _t4 * _t19 * 2.0 - _t38 * _t28 * 2.0) * 0.5 * _t30 + _t26;
+    highp float _t47 = (_t41) ? _t29 * (_t42 * (_t36 * _t43 * 2.0 - _t31 * (_t25 + (_t44 + _t18 * _t19 * 2.0 + _t14 * _t13 * 2.0 + _t25 * _t25 * 2.0 + _t45 - _t16 * 2.0 - _t28 * _t28 * 2.0) * _t22 * 0.5 * _t30) * 2.0 - _t46 * _t39 * 2.0) * 0.5) - _t9 : -_t9;
+    highp float _t48 = _t34 + (_t35 * _t38 * 2.0 + (_t19 * _t11 * 2.0 + (_t14 * _t17 * 2.0 + _t33 * _t34 * 2.0 + _t27 * _t26 * 2.0) + _t37 * _t34 * 2.0)) * _t22 * 0.5 * _t30;
+    highp float _t49 = _t34 * _t34 * 2.0;
+    highp float _t50 = (_t41) ? _t14 - _t29 * (_t42 * (_t31 * _t43 * 2.0 + _t48 * _t39 * 2.0 - 2.0 * ((_t33 + _t30 * (0.5 * (_t22 * (_t44 + (_t9 * _t8 * 2.0 + _t33 * _t33 * 2.0) + _t49 - _t17 * _t19 * 2.0 - _t15 * 2.0 - _t35 * _t35 * 2.0)))) * _t36)) * 0.5) : _t14;
+    highp float _t51 = (_t41) ? _t29 * ((((_t9 * _t4 * 2.0 + _t20 * 2.0 + 2.0 * (_t14 * _t11) - _t37 * _t37 * 2.0 - _t49 - _t45 + _t38 * _t38 * 2.0) * _t22 * 0.5 * _t30 - _t37) * _t39 * 2.0 + _t36 * _t48 * 2.0 - _t31 * _t46 * 2.0) * _t42 * 0.5) - _t19 : -_t19;
+    highp float _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
+    bool _t53 = _t52 > 0.0;
+    bool _t54 = _t52 <= 1.00000002e+30;
+    highp float _t55 = 1.0 / sqrt(_t52);
+    highp float _t56 = (_t21 > 0.0) ? _t22 : 0.0;
+    highp float _t57 = -(_t56 * _t19);
+    highp float _t58 = -(_t9 * _t56);
+    highp float _t59 = _t14 * _t56;
+    return vec3((_t53) ? ((_t54) ? _t51 * _t55 : _t57) : _t57, (_t53) ? ((_t54) ? _t55 * _t47 : _t58) : _t58, (_t53) ? ((_t54) ? _t55 * _t50 : _t59) : _t59);
 }
 
 

@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 14
     - offset: 272
     - shell: 353
-    - normal: 745
+    - normal: 758
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o3","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":272,"shell":353,"normal":745}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o3","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":272,"shell":353,"normal":758}} */
 #ifndef OFFSETGEN_GYROID_O3_GLSL
 #define OFFSETGEN_GYROID_O3_GLSL
 
@@ -198,7 +198,7 @@ highp float gyroid_o3_shell(highp vec3 p, highp float t)
     return (_t13 - ((abs(_t67) <= 1.73205256) ? _t68 : ((_t68 > 0.0) ? 1.73205256 : (-1.73205256))) * _t17) * (((abs(_t83) <= 1.73205256) ? _t83 : ((_t83 > 0.0) ? 1.73205256 : (-1.73205256))) * _t17 + _t13);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 745.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 758.
 highp vec3 gyroid_o3_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -222,96 +222,103 @@ highp vec3 gyroid_o3_normal(highp vec3 p, highp float h)
     highp float _t18 = _t13 * _t3;
     highp float _t19 = _t17 - _t18;
     highp float _t20 = _t19 * _t19;
-    highp float _t21 = 1.0 / sqrt(_t10 + _t16 + _t20);
-    highp float _t22 = _t1 * _t7;
-    highp float _t23 = _t5 * _t3;
-    highp float _t24 = _t22 + _t23;
-    highp float _t25 = _t9 * _t24;
-    highp float _t26 = _t25 * 2.0;
-    highp float _t27 = _t1 * _t11;
-    highp float _t28 = _t27 * _t19 * 2.0;
-    highp float _t29 = _t5 * _t13;
-    highp float _t30 = _t29 * _t15 * 2.0;
-    highp float _t31 = _t21 * (_t26 - _t28 - _t30) * 0.5;
-    highp float _t32 = 6.28318548 * h;
-    highp float _t33 = _t32 * 0.333333343;
-    highp float _t34 = _t9 + _t31 * _t33;
-    highp float _t35 = _t7 * _t3;
-    highp float _t36 = _t15 * _t35 * 2.0;
-    highp float _t37 = _t13 * _t11;
-    highp float _t38 = _t23 + _t37;
-    highp float _t39 = _t38 * _t19;
-    highp float _t40 = _t39 * 2.0;
-    highp float _t41 = _t9 * _t27 * 2.0;
-    highp float _t42 = _t21 * (_t36 + _t40 - _t41) * 0.5;
-    highp float _t43 = _t42 * _t33 + _t19;
-    highp float _t44 = _t22 + _t37;
-    highp float _t45 = _t15 * _t44;
-    highp float _t46 = 2.0 * _t45;
-    highp float _t47 = _t35 * _t19 * 2.0;
-    highp float _t48 = _t9 * _t29 * 2.0;
-    highp float _t49 = _t21 * (_t46 + _t47 - _t48) * 0.5;
-    highp float _t50 = _t49 * _t33 + _t15;
-    highp float _t51 = sqrt(_t34 * _t34 + _t43 * _t43 + _t50 * _t50);
-    highp float _t52 = 1.0 / _t51;
-    highp float _t53 = _t29 * _t29 * 2.0;
-    highp float _t54 = _t35 * _t35 * 2.0;
-    highp float _t55 = (_t53 + _t18 * _t19 * 2.0 + _t9 * _t8 * 2.0 + _t44 * _t44 * 2.0 + _t54 - _t16 * 2.0 - _t49 * _t49 * 2.0) * _t21 * 0.5;
-    highp float _t56 = _t55 * _t33 + _t44;
-    highp float _t57 = _t21 * (_t44 * _t35 * 2.0 + _t15 * _t18 * 2.0 + _t38 * _t35 * 2.0 + _t29 * _t27 * 2.0 - _t12 * _t19 * 2.0 - _t42 * _t49 * 2.0) * 0.5;
-    highp float _t58 = _t35 + _t57 * _t33;
-    highp float _t59 = _t21 * (_t31 * _t49 * 2.0 + (_t29 * _t44 * 2.0 + _t27 * _t35 * 2.0 + _t29 * _t24 * 2.0 - _t9 * _t14 * 2.0 - _t15 * _t8 * 2.0)) * 0.5;
-    highp float _t60 = _t29 + _t59 * _t33;
-    highp float _t61 = _t52 * (_t56 * _t50 * 2.0 + _t43 * _t58 * 2.0 - _t60 * _t34 * 2.0) * 0.5;
-    highp float _t62 = _t61 * _t33 + _t50;
-    highp float _t63 = _t27 * _t27 * 2.0;
-    highp float _t64 = 0.5 * (_t21 * (_t53 + (_t15 * _t14 * 2.0 + _t24 * _t24 * 2.0) + _t63 - _t17 * _t19 * 2.0 - _t10 * 2.0 - _t31 * _t31 * 2.0));
-    highp float _t65 = _t33 * _t64 + _t24;
-    highp float _t66 = (_t31 * _t42 * 2.0 + (_t19 * _t4 * 2.0 + (_t9 * _t17 * 2.0 + _t24 * _t27 * 2.0 + _t29 * _t35 * 2.0) + _t38 * _t27 * 2.0)) * _t21 * 0.5;
-    highp float _t67 = _t66 * _t33 + _t27;
-    highp float _t68 = _t52 * (_t65 * _t34 * 2.0 - _t50 * _t60 * 2.0 - _t67 * _t43 * 2.0) * 0.5;
-    highp float _t69 = _t68 * _t33 + _t34;
-    highp float _t70 = (_t15 * _t12 * 2.0 + _t20 * 2.0 + 2.0 * (_t9 * _t4) - _t38 * _t38 * 2.0 - _t63 - _t54 + _t42 * _t42 * 2.0) * _t21 * 0.5;
-    highp float _t71 = _t38 - _t70 * _t33;
-    highp float _t72 = 0.5 * (_t52 * (_t67 * _t34 * 2.0 - _t58 * _t50 * 2.0 - _t71 * _t43 * 2.0));
-    highp float _t73 = _t72 * _t33 - _t43;
-    highp float _t74 = sqrt(_t62 * _t62 + _t69 * _t69 + _t73 * _t73);
-    highp float _t75 = _t32 * 0.5;
-    highp float _t76 = _t15 + _t49 * _t75;
-    highp float _t77 = _t9 + _t31 * _t75;
-    highp float _t78 = _t42 * _t75 + _t19;
-    highp float _t79 = sqrt(_t76 * _t76 + (_t77 * _t77 + _t78 * _t78));
-    bool _t80 = abs((_t51 + _t74) * 1.5 - 2.0 * _t79) <= 1.73205256;
-    highp float _t81 = _t21 * (_t42 * _t59 * 2.0 + 2.0 * (_t66 * _t49) - _t57 * _t31 * 2.0 - (_t35 * _t4 * 2.0 + _t29 * _t18 * 2.0 + _t27 * _t14 * 2.0 - _t29 * _t17 * 2.0 - _t35 * _t8 * 2.0 - _t27 * _t12 * 2.0)) * 0.5 * _t33;
-    highp float _t82 = _t27 * _t17;
-    highp float _t83 = _t21 * (_t9 * _t23 * 2.0 + 4.0 * (_t38 * _t4) + _t24 * _t4 * 2.0 - 4.0 * _t82 - _t28 - _t28 - _t29 * _t12 * 2.0 - 2.0 * (_t31 * _t70) - 4.0 * (_t66 * _t42)) * 0.5 * _t33 + _t4;
-    highp float _t84 = _t27 * _t4;
-    highp float _t85 = _t21 * (_t42 * _t64 * 2.0 - (_t41 + (_t41 + (4.0 * _t84 + 2.0 * (_t35 * _t14))) - _t38 * _t17 * 2.0 - 4.0 * (_t24 * _t17) - _t23 * _t19 * 2.0) - 4.0 * (_t66 * _t31)) * 0.5 * _t33 + _t17;
-    highp float _t86 = _t52 * (_t81 * _t50 * 2.0 - _t58 * _t60 * 2.0 - _t83 * _t43 * 2.0 - _t85 * _t34 * 2.0 - _t65 * _t67 * 2.0 - _t71 * _t67 * 2.0 + _t68 * _t72 * 2.0) * 0.5 * _t33 - _t67;
-    highp float _t87 = _t35 * _t18;
-    highp float _t88 = _t21 * (_t29 * _t4 * 2.0 + 4.0 * _t87 - 4.0 * (_t38 * _t12) - _t44 * _t12 * 2.0 - _t15 * _t37 * 2.0 - _t47 - _t47 + _t49 * _t70 * 2.0 - _t57 * _t42 * 4.0) * 0.5 * _t33 - _t12;
-    highp float _t89 = _t35 * _t12;
-    highp float _t90 = _t18 - _t21 * (_t27 * _t8 * 2.0 + (_t36 + (4.0 * _t89 + 2.0 * (_t37 * _t19)) + _t36) - 4.0 * (_t44 * _t18) - _t38 * _t18 * 2.0 + 4.0 * (_t57 * _t49) + _t42 * _t55 * 2.0) * 0.5 * _t33;
-    highp float _t91 = _t52 * (_t56 * _t58 * 2.0 + (_t71 * _t58 * 2.0 + 2.0 * (_t88 * _t43) + _t50 * _t90 * 2.0) + _t81 * _t34 * 2.0 + _t67 * _t60 * 2.0 + _t61 * _t72 * 2.0) * 0.5 * _t33 + _t58;
-    highp float _t92 = _t67 * _t67 * 2.0;
-    highp float _t93 = _t58 * _t58 * 2.0;
-    highp float _t94 = 1.0 / _t74;
-    highp float _t95 = _t27 + _t66 * _t75;
-    highp float _t96 = _t57 * _t75 + _t35;
-    highp float _t97 = 1.0 / _t79;
-    highp float _t98 = (_t80) ? -(_t32 * (1.5 * ((_t86 * _t69 * 2.0 + _t91 * _t62 * 2.0 - _t73 * (_t71 + _t52 * (2.0 * (_t88 * _t50) + _t71 * _t71 * 2.0 + _t92 + _t93 - _t83 * _t34 * 2.0 - _t43 * (_t33 * (_t21 * (_t40 + (_t89 * 6.0 + _t36) + _t39 * 6.0 - 6.0 * _t84 - _t41 - _t42 * _t70 * 6.0) * 0.5) + _t19) * 2.0 - _t72 * _t72 * 2.0) * 0.5 * _t33) * 2.0) * _t94 * 0.5 - _t72) + ((_t70 * _t75 - _t38) * _t78 * 2.0 + _t77 * _t95 * 2.0 - _t76 * _t96 * 2.0) * _t97 * 0.5 * 2.0) + _t19) : -_t19;
-    highp float _t99 = _t29 * _t14;
-    highp float _t100 = _t21 * (_t31 * _t55 * 2.0 + (_t99 * 4.0 + _t27 * _t18 * 2.0 + _t22 * _t9 * 2.0 - 4.0 * (_t44 * _t8) - _t30 - _t30 - _t24 * _t8 * 2.0) - 4.0 * (_t49 * _t59)) * 0.5 * _t33 - _t8;
-    highp float _t101 = _t29 * _t8;
-    highp float _t102 = _t14 + _t33 * (_t21 * (4.0 * (_t31 * _t59) - (_t22 * _t15 * 2.0 + (4.0 * _t101 + _t35 * _t17 * 2.0) - 4.0 * (_t24 * _t14) - _t44 * _t14 * 2.0 - _t48 - _t48) - _t49 * _t64 * 2.0) * 0.5);
-    highp float _t103 = (2.0 * (_t56 * _t60) + (_t50 * _t100 * 2.0 + _t65 * _t60 * 2.0) + _t67 * _t58 * 2.0 - _t102 * _t34 * 2.0 - _t81 * _t43 * 2.0 + _t68 * _t61 * 2.0) * _t52 * 0.5 * _t33 + _t60;
-    highp float _t104 = _t60 * _t60 * 2.0;
-    highp float _t105 = _t59 * _t75 + _t29;
-    highp float _t106 = (_t80) ? -(_t15 + _t32 * (1.5 * (_t61 - (_t91 * _t73 * 2.0 + _t103 * _t69 * 2.0 - (_t56 - _t52 * (_t61 * _t61 * 2.0 - (_t43 * _t90 * 2.0 + _t104 + _t93 + _t56 * _t56 * 2.0 - (_t15 + _t21 * (_t101 * 6.0 + 6.0 * _t45 + _t46 + _t47 - _t87 * 6.0 - _t48 + _t55 * _t49 * 6.0) * 0.5 * _t33) * _t50 * 2.0 - _t34 * _t100 * 2.0)) * 0.5 * _t33) * _t62 * 2.0) * _t94 * 0.5) + _t97 * (_t77 * _t105 * 2.0 - _t76 * (_t44 + _t55 * _t75) * 2.0 - _t96 * _t78 * 2.0) * 0.5 * 2.0)) : -_t15;
-    highp float _t107 = (_t80) ? _t32 * (_t97 * (_t76 * _t105 * 2.0 + _t95 * _t78 * 2.0 - 2.0 * ((_t24 + _t75 * _t64) * _t77)) * 0.5 * 2.0 + (_t68 - (_t103 * _t62 * 2.0 + _t73 * _t86 * 2.0 - _t69 * (_t65 - _t52 * (_t68 * _t68 * 2.0 - (_t65 * _t65 * 2.0 + (_t104 + _t92) + _t102 * _t50 * 2.0 - _t43 * _t85 * 2.0 - (_t9 + _t21 * (_t31 * _t64 * 6.0 + (_t25 * 6.0 + (_t26 + _t99 * 6.0) - _t28 - _t82 * 6.0 - _t30)) * 0.5 * _t33) * _t34 * 2.0)) * 0.5 * _t33) * 2.0) * _t94 * 0.5) * 1.5) + _t9 : _t9;
-    highp float _t108 = _t98 * _t98 + (_t106 * _t106 + _t107 * _t107);
-    highp float _t109 = (_t108 > 0.0) ? 1.0 / sqrt(_t108) : 0.0;
-    return vec3(_t109 * _t98, _t106 * _t109, _t109 * _t107);
+    highp float _t21 = _t10 + _t16 + _t20;
+    highp float _t22 = 1.0 / sqrt(_t21);
+    highp float _t23 = _t1 * _t7;
+    highp float _t24 = _t5 * _t3;
+    highp float _t25 = _t23 + _t24;
+    highp float _t26 = _t9 * _t25;
+    highp float _t27 = _t26 * 2.0;
+    highp float _t28 = _t1 * _t11;
+    highp float _t29 = _t28 * _t19 * 2.0;
+    highp float _t30 = _t5 * _t13;
+    highp float _t31 = _t30 * _t15 * 2.0;
+    highp float _t32 = _t22 * (_t27 - _t29 - _t31) * 0.5;
+    highp float _t33 = 6.28318548 * h;
+    highp float _t34 = _t33 * 0.333333343;
+    highp float _t35 = _t9 + _t32 * _t34;
+    highp float _t36 = _t7 * _t3;
+    highp float _t37 = _t15 * _t36 * 2.0;
+    highp float _t38 = _t13 * _t11;
+    highp float _t39 = _t24 + _t38;
+    highp float _t40 = _t39 * _t19;
+    highp float _t41 = _t40 * 2.0;
+    highp float _t42 = _t9 * _t28 * 2.0;
+    highp float _t43 = _t22 * (_t37 + _t41 - _t42) * 0.5;
+    highp float _t44 = _t43 * _t34 + _t19;
+    highp float _t45 = _t23 + _t38;
+    highp float _t46 = _t15 * _t45;
+    highp float _t47 = 2.0 * _t46;
+    highp float _t48 = _t36 * _t19 * 2.0;
+    highp float _t49 = _t9 * _t30 * 2.0;
+    highp float _t50 = _t22 * (_t47 + _t48 - _t49) * 0.5;
+    highp float _t51 = _t50 * _t34 + _t15;
+    highp float _t52 = sqrt(_t35 * _t35 + _t44 * _t44 + _t51 * _t51);
+    highp float _t53 = 1.0 / _t52;
+    highp float _t54 = _t30 * _t30 * 2.0;
+    highp float _t55 = _t36 * _t36 * 2.0;
+    highp float _t56 = (_t54 + _t18 * _t19 * 2.0 + _t9 * _t8 * 2.0 + _t45 * _t45 * 2.0 + _t55 - _t16 * 2.0 - _t50 * _t50 * 2.0) * _t22 * 0.5;
+    highp float _t57 = _t56 * _t34 + _t45;
+    highp float _t58 = _t22 * (_t45 * _t36 * 2.0 + _t15 * _t18 * 2.0 + _t39 * _t36 * 2.0 + _t30 * _t28 * 2.0 - _t12 * _t19 * 2.0 - _t43 * _t50 * 2.0) * 0.5;
+    highp float _t59 = _t36 + _t58 * _t34;
+    highp float _t60 = _t22 * (_t32 * _t50 * 2.0 + (_t30 * _t45 * 2.0 + _t28 * _t36 * 2.0 + _t30 * _t25 * 2.0 - _t9 * _t14 * 2.0 - _t15 * _t8 * 2.0)) * 0.5;
+    highp float _t61 = _t30 + _t60 * _t34;
+    highp float _t62 = _t53 * (_t57 * _t51 * 2.0 + _t44 * _t59 * 2.0 - _t61 * _t35 * 2.0) * 0.5;
+    highp float _t63 = _t62 * _t34 + _t51;
+    highp float _t64 = _t28 * _t28 * 2.0;
+    highp float _t65 = 0.5 * (_t22 * (_t54 + (_t15 * _t14 * 2.0 + _t25 * _t25 * 2.0) + _t64 - _t17 * _t19 * 2.0 - _t10 * 2.0 - _t32 * _t32 * 2.0));
+    highp float _t66 = _t34 * _t65 + _t25;
+    highp float _t67 = (_t32 * _t43 * 2.0 + (_t19 * _t4 * 2.0 + (_t9 * _t17 * 2.0 + _t25 * _t28 * 2.0 + _t30 * _t36 * 2.0) + _t39 * _t28 * 2.0)) * _t22 * 0.5;
+    highp float _t68 = _t67 * _t34 + _t28;
+    highp float _t69 = _t53 * (_t66 * _t35 * 2.0 - _t51 * _t61 * 2.0 - _t68 * _t44 * 2.0) * 0.5;
+    highp float _t70 = _t69 * _t34 + _t35;
+    highp float _t71 = (_t15 * _t12 * 2.0 + _t20 * 2.0 + 2.0 * (_t9 * _t4) - _t39 * _t39 * 2.0 - _t64 - _t55 + _t43 * _t43 * 2.0) * _t22 * 0.5;
+    highp float _t72 = _t39 - _t71 * _t34;
+    highp float _t73 = 0.5 * (_t53 * (_t68 * _t35 * 2.0 - _t59 * _t51 * 2.0 - _t72 * _t44 * 2.0));
+    highp float _t74 = _t73 * _t34 - _t44;
+    highp float _t75 = sqrt(_t63 * _t63 + _t70 * _t70 + _t74 * _t74);
+    highp float _t76 = _t33 * 0.5;
+    highp float _t77 = _t15 + _t50 * _t76;
+    highp float _t78 = _t9 + _t32 * _t76;
+    highp float _t79 = _t43 * _t76 + _t19;
+    highp float _t80 = sqrt(_t77 * _t77 + (_t78 * _t78 + _t79 * _t79));
+    bool _t81 = abs((_t52 + _t75) * 1.5 - 2.0 * _t80) <= 1.73205256;
+    highp float _t82 = _t22 * (_t43 * _t60 * 2.0 + 2.0 * (_t67 * _t50) - _t58 * _t32 * 2.0 - (_t36 * _t4 * 2.0 + _t30 * _t18 * 2.0 + _t28 * _t14 * 2.0 - _t30 * _t17 * 2.0 - _t36 * _t8 * 2.0 - _t28 * _t12 * 2.0)) * 0.5 * _t34;
+    highp float _t83 = _t28 * _t17;
+    highp float _t84 = _t22 * (_t9 * _t24 * 2.0 + 4.0 * (_t39 * _t4) + _t25 * _t4 * 2.0 - 4.0 * _t83 - _t29 - _t29 - _t30 * _t12 * 2.0 - 2.0 * (_t32 * _t71) - 4.0 * (_t67 * _t43)) * 0.5 * _t34 + _t4;
+    highp float _t85 = _t28 * _t4;
+    highp float _t86 = _t22 * (_t43 * _t65 * 2.0 - (_t42 + (_t42 + (4.0 * _t85 + 2.0 * (_t36 * _t14))) - _t39 * _t17 * 2.0 - 4.0 * (_t25 * _t17) - _t24 * _t19 * 2.0) - 4.0 * (_t67 * _t32)) * 0.5 * _t34 + _t17;
+    highp float _t87 = _t53 * (_t82 * _t51 * 2.0 - _t59 * _t61 * 2.0 - _t84 * _t44 * 2.0 - _t86 * _t35 * 2.0 - _t66 * _t68 * 2.0 - _t72 * _t68 * 2.0 + _t69 * _t73 * 2.0) * 0.5 * _t34 - _t68;
+    highp float _t88 = _t36 * _t18;
+    highp float _t89 = _t22 * (_t30 * _t4 * 2.0 + 4.0 * _t88 - 4.0 * (_t39 * _t12) - _t45 * _t12 * 2.0 - _t15 * _t38 * 2.0 - _t48 - _t48 + _t50 * _t71 * 2.0 - _t58 * _t43 * 4.0) * 0.5 * _t34 - _t12;
+    highp float _t90 = _t36 * _t12;
+    highp float _t91 = _t18 - _t22 * (_t28 * _t8 * 2.0 + (_t37 + (4.0 * _t90 + 2.0 * (_t38 * _t19)) + _t37) - 4.0 * (_t45 * _t18) - _t39 * _t18 * 2.0 + 4.0 * (_t58 * _t50) + _t43 * _t56 * 2.0) * 0.5 * _t34;
+    highp float _t92 = _t53 * (_t57 * _t59 * 2.0 + (_t72 * _t59 * 2.0 + 2.0 * (_t89 * _t44) + _t51 * _t91 * 2.0) + _t82 * _t35 * 2.0 + _t68 * _t61 * 2.0 + _t62 * _t73 * 2.0) * 0.5 * _t34 + _t59;
+    highp float _t93 = _t68 * _t68 * 2.0;
+    highp float _t94 = _t59 * _t59 * 2.0;
+    highp float _t95 = 1.0 / _t75;
+    highp float _t96 = _t28 + _t67 * _t76;
+    highp float _t97 = _t58 * _t76 + _t36;
+    highp float _t98 = 1.0 / _t80;
+    highp float _t99 = (_t81) ? -(_t33 * (1.5 * ((_t87 * _t70 * 2.0 + _t92 * _t63 * 2.0 - _t74 * (_t72 + _t53 * (2.0 * (_t89 * _t51) + _t72 * _t72 * 2.0 + _t93 + _t94 - _t84 * _t35 * 2.0 - _t44 * (_t34 * (_t22 * (_t41 + (_t90 * 6.0 + _t37) + _t40 * 6.0 - 6.0 * _t85 - _t42 - _t43 * _t71 * 6.0) * 0.5) + _t19) * 2.0 - _t73 * _t73 * 2.0) * 0.5 * _t34) * 2.0) * _t95 * 0.5 - _t73) + ((_t71 * _t76 - _t39) * _t79 * 2.0 + _t78 * _t96 * 2.0 - _t77 * _t97 * 2.0) * _t98 * 0.5 * 2.0) + _t19) : -_t19;
+    highp float _t100 = _t30 * _t14;
+    highp float _t101 = _t22 * (_t32 * _t56 * 2.0 + (_t100 * 4.0 + _t28 * _t18 * 2.0 + _t23 * _t9 * 2.0 - 4.0 * (_t45 * _t8) - _t31 - _t31 - _t25 * _t8 * 2.0) - 4.0 * (_t50 * _t60)) * 0.5 * _t34 - _t8;
+    highp float _t102 = _t30 * _t8;
+    highp float _t103 = _t14 + _t34 * (_t22 * (4.0 * (_t32 * _t60) - (_t23 * _t15 * 2.0 + (4.0 * _t102 + _t36 * _t17 * 2.0) - 4.0 * (_t25 * _t14) - _t45 * _t14 * 2.0 - _t49 - _t49) - _t50 * _t65 * 2.0) * 0.5);
+    highp float _t104 = (2.0 * (_t57 * _t61) + (_t51 * _t101 * 2.0 + _t66 * _t61 * 2.0) + _t68 * _t59 * 2.0 - _t103 * _t35 * 2.0 - _t82 * _t44 * 2.0 + _t69 * _t62 * 2.0) * _t53 * 0.5 * _t34 + _t61;
+    highp float _t105 = _t61 * _t61 * 2.0;
+    highp float _t106 = _t60 * _t76 + _t30;
+    highp float _t107 = (_t81) ? -(_t15 + _t33 * (1.5 * (_t62 - (_t92 * _t74 * 2.0 + _t104 * _t70 * 2.0 - (_t57 - _t53 * (_t62 * _t62 * 2.0 - (_t44 * _t91 * 2.0 + _t105 + _t94 + _t57 * _t57 * 2.0 - (_t15 + _t22 * (_t102 * 6.0 + 6.0 * _t46 + _t47 + _t48 - _t88 * 6.0 - _t49 + _t56 * _t50 * 6.0) * 0.5 * _t34) * _t51 * 2.0 - _t35 * _t101 * 2.0)) * 0.5 * _t34) * _t63 * 2.0) * _t95 * 0.5) + _t98 * (_t78 * _t106 * 2.0 - _t77 * (_t45 + _t56 * _t76) * 2.0 - _t97 * _t79 * 2.0) * 0.5 * 2.0)) : -_t15;
+    highp float _t108 = (_t81) ? _t33 * (_t98 * (_t77 * _t106 * 2.0 + _t96 * _t79 * 2.0 - 2.0 * ((_t25 + _t76 * _t65) * _t78)) * 0.5 * 2.0 + (_t69 - (_t104 * _t63 * 2.0 + _t74 * _t87 * 2.0 - _t70 * (_t66 - _t53 * (_t69 * _t69 * 2.0 - (_t66 * _t66 * 2.0 + (_t105 + _t93) + _t103 * _t51 * 2.0 - _t44 * _t86 * 2.0 - (_t9 + _t22 * (_t32 * _t65 * 6.0 + (_t26 * 6.0 + (_t27 + _t100 * 6.0) - _t29 - _t83 * 6.0 - _t31)) * 0.5 * _t34) * _t35 * 2.0)) * 0.5 * _t34) * 2.0) * _t95 * 0.5) * 1.5) + _t9 : _t9;
+    highp float _t109 = _t99 * _t99 + (_t107 * _t107 + _t108 * _t108);
+    bool _t110 = _t109 > 0.0;
+    bool _t111 = _t109 <= 1.00000002e+30;
+    highp float _t112 = 1.0 / sqrt(_t109);
+    highp float _t113 = (_t21 > 0.0) ? _t22 : 0.0;
+    highp float _t114 = -(_t113 * _t19);
+    highp float _t115 = -(_t15 * _t113);
+    highp float _t116 = _t9 * _t113;
+    return vec3((_t110) ? ((_t111) ? _t112 * _t99 : _t114) : _t114, (_t110) ? ((_t111) ? _t112 * _t107 : _t115) : _t115, (_t110) ? ((_t111) ? _t112 * _t108 : _t116) : _t116);
 }
 
 

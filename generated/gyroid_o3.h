@@ -42,9 +42,9 @@
  *   field    14
  *   offset   272
  *   shell    353
- *   normal   745
+ *   normal   758
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o3","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":272,"shell":353,"normal":745}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o3","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":272,"shell":353,"normal":758}} */
 #ifndef OFFSETGEN_GYROID_O3_H
 #define OFFSETGEN_GYROID_O3_H
 
@@ -218,7 +218,7 @@ static inline double gyroid_o3_shell(double x, double y, double z, double t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 745
+ * Total ops: 758
  */
 static inline void gyroid_o3_normal(double x, double y, double z, double h, double n[3])
 {
@@ -243,98 +243,105 @@ static inline void gyroid_o3_normal(double x, double y, double z, double h, doub
     const double _t18 = _t13 * _t3;
     const double _t19 = _t17 - _t18;
     const double _t20 = _t19 * _t19;
-    const double _t21 = 1.0 / sqrt(_t10 + _t16 + _t20);
-    const double _t22 = _t1 * _t7;
-    const double _t23 = _t5 * _t3;
-    const double _t24 = _t22 + _t23;
-    const double _t25 = _t9 * _t24;
-    const double _t26 = _t25 * 2.0;
-    const double _t27 = _t1 * _t11;
-    const double _t28 = _t27 * _t19 * 2.0;
-    const double _t29 = _t5 * _t13;
-    const double _t30 = _t29 * _t15 * 2.0;
-    const double _t31 = _t21 * (_t26 - _t28 - _t30) * 0.5;
-    const double _t32 = 6.2831853071795862 * h;
-    const double _t33 = _t32 * 0.33333333333333331;
-    const double _t34 = _t9 + _t31 * _t33;
-    const double _t35 = _t7 * _t3;
-    const double _t36 = _t15 * _t35 * 2.0;
-    const double _t37 = _t13 * _t11;
-    const double _t38 = _t23 + _t37;
-    const double _t39 = _t38 * _t19;
-    const double _t40 = _t39 * 2.0;
-    const double _t41 = _t9 * _t27 * 2.0;
-    const double _t42 = _t21 * (_t36 + _t40 - _t41) * 0.5;
-    const double _t43 = _t42 * _t33 + _t19;
-    const double _t44 = _t22 + _t37;
-    const double _t45 = _t15 * _t44;
-    const double _t46 = 2.0 * _t45;
-    const double _t47 = _t35 * _t19 * 2.0;
-    const double _t48 = _t9 * _t29 * 2.0;
-    const double _t49 = _t21 * (_t46 + _t47 - _t48) * 0.5;
-    const double _t50 = _t49 * _t33 + _t15;
-    const double _t51 = sqrt(_t34 * _t34 + _t43 * _t43 + _t50 * _t50);
-    const double _t52 = 1.0 / _t51;
-    const double _t53 = _t29 * _t29 * 2.0;
-    const double _t54 = _t35 * _t35 * 2.0;
-    const double _t55 = (_t53 + _t18 * _t19 * 2.0 + _t9 * _t8 * 2.0 + _t44 * _t44 * 2.0 + _t54 - _t16 * 2.0 - _t49 * _t49 * 2.0) * _t21 * 0.5;
-    const double _t56 = _t55 * _t33 + _t44;
-    const double _t57 = _t21 * (_t44 * _t35 * 2.0 + _t15 * _t18 * 2.0 + _t38 * _t35 * 2.0 + _t29 * _t27 * 2.0 - _t12 * _t19 * 2.0 - _t42 * _t49 * 2.0) * 0.5;
-    const double _t58 = _t35 + _t57 * _t33;
-    const double _t59 = _t21 * (_t31 * _t49 * 2.0 + (_t29 * _t44 * 2.0 + _t27 * _t35 * 2.0 + _t29 * _t24 * 2.0 - _t9 * _t14 * 2.0 - _t15 * _t8 * 2.0)) * 0.5;
-    const double _t60 = _t29 + _t59 * _t33;
-    const double _t61 = _t52 * (_t56 * _t50 * 2.0 + _t43 * _t58 * 2.0 - _t60 * _t34 * 2.0) * 0.5;
-    const double _t62 = _t61 * _t33 + _t50;
-    const double _t63 = _t27 * _t27 * 2.0;
-    const double _t64 = 0.5 * (_t21 * (_t53 + (_t15 * _t14 * 2.0 + _t24 * _t24 * 2.0) + _t63 - _t17 * _t19 * 2.0 - _t10 * 2.0 - _t31 * _t31 * 2.0));
-    const double _t65 = _t33 * _t64 + _t24;
-    const double _t66 = (_t31 * _t42 * 2.0 + (_t19 * _t4 * 2.0 + (_t9 * _t17 * 2.0 + _t24 * _t27 * 2.0 + _t29 * _t35 * 2.0) + _t38 * _t27 * 2.0)) * _t21 * 0.5;
-    const double _t67 = _t66 * _t33 + _t27;
-    const double _t68 = _t52 * (_t65 * _t34 * 2.0 - _t50 * _t60 * 2.0 - _t67 * _t43 * 2.0) * 0.5;
-    const double _t69 = _t68 * _t33 + _t34;
-    const double _t70 = (_t15 * _t12 * 2.0 + _t20 * 2.0 + 2.0 * (_t9 * _t4) - _t38 * _t38 * 2.0 - _t63 - _t54 + _t42 * _t42 * 2.0) * _t21 * 0.5;
-    const double _t71 = _t38 - _t70 * _t33;
-    const double _t72 = 0.5 * (_t52 * (_t67 * _t34 * 2.0 - _t58 * _t50 * 2.0 - _t71 * _t43 * 2.0));
-    const double _t73 = _t72 * _t33 - _t43;
-    const double _t74 = sqrt(_t62 * _t62 + _t69 * _t69 + _t73 * _t73);
-    const double _t75 = _t32 * 0.5;
-    const double _t76 = _t15 + _t49 * _t75;
-    const double _t77 = _t9 + _t31 * _t75;
-    const double _t78 = _t42 * _t75 + _t19;
-    const double _t79 = sqrt(_t76 * _t76 + (_t77 * _t77 + _t78 * _t78));
-    const int _t80 = fabs((_t51 + _t74) * 1.5 - 2.0 * _t79) <= 1.7320525396196846;
-    const double _t81 = _t21 * (_t42 * _t59 * 2.0 + 2.0 * (_t66 * _t49) - _t57 * _t31 * 2.0 - (_t35 * _t4 * 2.0 + _t29 * _t18 * 2.0 + _t27 * _t14 * 2.0 - _t29 * _t17 * 2.0 - _t35 * _t8 * 2.0 - _t27 * _t12 * 2.0)) * 0.5 * _t33;
-    const double _t82 = _t27 * _t17;
-    const double _t83 = _t21 * (_t9 * _t23 * 2.0 + 4.0 * (_t38 * _t4) + _t24 * _t4 * 2.0 - 4.0 * _t82 - _t28 - _t28 - _t29 * _t12 * 2.0 - 2.0 * (_t31 * _t70) - 4.0 * (_t66 * _t42)) * 0.5 * _t33 + _t4;
-    const double _t84 = _t27 * _t4;
-    const double _t85 = _t21 * (_t42 * _t64 * 2.0 - (_t41 + (_t41 + (4.0 * _t84 + 2.0 * (_t35 * _t14))) - _t38 * _t17 * 2.0 - 4.0 * (_t24 * _t17) - _t23 * _t19 * 2.0) - 4.0 * (_t66 * _t31)) * 0.5 * _t33 + _t17;
-    const double _t86 = _t52 * (_t81 * _t50 * 2.0 - _t58 * _t60 * 2.0 - _t83 * _t43 * 2.0 - _t85 * _t34 * 2.0 - _t65 * _t67 * 2.0 - _t71 * _t67 * 2.0 + _t68 * _t72 * 2.0) * 0.5 * _t33 - _t67;
-    const double _t87 = _t35 * _t18;
-    const double _t88 = _t21 * (_t29 * _t4 * 2.0 + 4.0 * _t87 - 4.0 * (_t38 * _t12) - _t44 * _t12 * 2.0 - _t15 * _t37 * 2.0 - _t47 - _t47 + _t49 * _t70 * 2.0 - _t57 * _t42 * 4.0) * 0.5 * _t33 - _t12;
-    const double _t89 = _t35 * _t12;
-    const double _t90 = _t18 - _t21 * (_t27 * _t8 * 2.0 + (_t36 + (4.0 * _t89 + 2.0 * (_t37 * _t19)) + _t36) - 4.0 * (_t44 * _t18) - _t38 * _t18 * 2.0 + 4.0 * (_t57 * _t49) + _t42 * _t55 * 2.0) * 0.5 * _t33;
-    const double _t91 = _t52 * (_t56 * _t58 * 2.0 + (_t71 * _t58 * 2.0 + 2.0 * (_t88 * _t43) + _t50 * _t90 * 2.0) + _t81 * _t34 * 2.0 + _t67 * _t60 * 2.0 + _t61 * _t72 * 2.0) * 0.5 * _t33 + _t58;
-    const double _t92 = _t67 * _t67 * 2.0;
-    const double _t93 = _t58 * _t58 * 2.0;
-    const double _t94 = 1.0 / _t74;
-    const double _t95 = _t27 + _t66 * _t75;
-    const double _t96 = _t57 * _t75 + _t35;
-    const double _t97 = 1.0 / _t79;
-    const double _t98 = (_t80) ? -(_t32 * (1.5 * ((_t86 * _t69 * 2.0 + _t91 * _t62 * 2.0 - _t73 * (_t71 + _t52 * (2.0 * (_t88 * _t50) + _t71 * _t71 * 2.0 + _t92 + _t93 - _t83 * _t34 * 2.0 - _t43 * (_t33 * (_t21 * (_t40 + (_t89 * 6.0 + _t36) + _t39 * 6.0 - 6.0 * _t84 - _t41 - _t42 * _t70 * 6.0) * 0.5) + _t19) * 2.0 - _t72 * _t72 * 2.0) * 0.5 * _t33) * 2.0) * _t94 * 0.5 - _t72) + ((_t70 * _t75 - _t38) * _t78 * 2.0 + _t77 * _t95 * 2.0 - _t76 * _t96 * 2.0) * _t97 * 0.5 * 2.0) + _t19) : -_t19;
-    const double _t99 = _t29 * _t14;
-    const double _t100 = _t21 * (_t31 * _t55 * 2.0 + (_t99 * 4.0 + _t27 * _t18 * 2.0 + _t22 * _t9 * 2.0 - 4.0 * (_t44 * _t8) - _t30 - _t30 - _t24 * _t8 * 2.0) - 4.0 * (_t49 * _t59)) * 0.5 * _t33 - _t8;
-    const double _t101 = _t29 * _t8;
-    const double _t102 = _t14 + _t33 * (_t21 * (4.0 * (_t31 * _t59) - (_t22 * _t15 * 2.0 + (4.0 * _t101 + _t35 * _t17 * 2.0) - 4.0 * (_t24 * _t14) - _t44 * _t14 * 2.0 - _t48 - _t48) - _t49 * _t64 * 2.0) * 0.5);
-    const double _t103 = (2.0 * (_t56 * _t60) + (_t50 * _t100 * 2.0 + _t65 * _t60 * 2.0) + _t67 * _t58 * 2.0 - _t102 * _t34 * 2.0 - _t81 * _t43 * 2.0 + _t68 * _t61 * 2.0) * _t52 * 0.5 * _t33 + _t60;
-    const double _t104 = _t60 * _t60 * 2.0;
-    const double _t105 = _t59 * _t75 + _t29;
-    const double _t106 = (_t80) ? -(_t15 + _t32 * (1.5 * (_t61 - (_t91 * _t73 * 2.0 + _t103 * _t69 * 2.0 - (_t56 - _t52 * (_t61 * _t61 * 2.0 - (_t43 * _t90 * 2.0 + _t104 + _t93 + _t56 * _t56 * 2.0 - (_t15 + _t21 * (_t101 * 6.0 + 6.0 * _t45 + _t46 + _t47 - _t87 * 6.0 - _t48 + _t55 * _t49 * 6.0) * 0.5 * _t33) * _t50 * 2.0 - _t34 * _t100 * 2.0)) * 0.5 * _t33) * _t62 * 2.0) * _t94 * 0.5) + _t97 * (_t77 * _t105 * 2.0 - _t76 * (_t44 + _t55 * _t75) * 2.0 - _t96 * _t78 * 2.0) * 0.5 * 2.0)) : -_t15;
-    const double _t107 = (_t80) ? _t32 * (_t97 * (_t76 * _t105 * 2.0 + _t95 * _t78 * 2.0 - 2.0 * ((_t24 + _t75 * _t64) * _t77)) * 0.5 * 2.0 + (_t68 - (_t103 * _t62 * 2.0 + _t73 * _t86 * 2.0 - _t69 * (_t65 - _t52 * (_t68 * _t68 * 2.0 - (_t65 * _t65 * 2.0 + (_t104 + _t92) + _t102 * _t50 * 2.0 - _t43 * _t85 * 2.0 - (_t9 + _t21 * (_t31 * _t64 * 6.0 + (_t25 * 6.0 + (_t26 + _t99 * 6.0) - _t28 - _t82 * 6.0 - _t30)) * 0.5 * _t33) * _t34 * 2.0)) * 0.5 * _t33) * 2.0) * _t94 * 0.5) * 1.5) + _t9 : _t9;
-    const double _t108 = _t98 * _t98 + (_t106 * _t106 + _t107 * _t107);
-    const double _t109 = (_t108 > 0.0) ? 1.0 / sqrt(_t108) : 0.0;
-    n[0] = _t109 * _t98;
-    n[1] = _t106 * _t109;
-    n[2] = _t109 * _t107;
+    const double _t21 = _t10 + _t16 + _t20;
+    const double _t22 = 1.0 / sqrt(_t21);
+    const double _t23 = _t1 * _t7;
+    const double _t24 = _t5 * _t3;
+    const double _t25 = _t23 + _t24;
+    const double _t26 = _t9 * _t25;
+    const double _t27 = _t26 * 2.0;
+    const double _t28 = _t1 * _t11;
+    const double _t29 = _t28 * _t19 * 2.0;
+    const double _t30 = _t5 * _t13;
+    const double _t31 = _t30 * _t15 * 2.0;
+    const double _t32 = _t22 * (_t27 - _t29 - _t31) * 0.5;
+    const double _t33 = 6.2831853071795862 * h;
+    const double _t34 = _t33 * 0.33333333333333331;
+    const double _t35 = _t9 + _t32 * _t34;
+    const double _t36 = _t7 * _t3;
+    const double _t37 = _t15 * _t36 * 2.0;
+    const double _t38 = _t13 * _t11;
+    const double _t39 = _t24 + _t38;
+    const double _t40 = _t39 * _t19;
+    const double _t41 = _t40 * 2.0;
+    const double _t42 = _t9 * _t28 * 2.0;
+    const double _t43 = _t22 * (_t37 + _t41 - _t42) * 0.5;
+    const double _t44 = _t43 * _t34 + _t19;
+    const double _t45 = _t23 + _t38;
+    const double _t46 = _t15 * _t45;
+    const double _t47 = 2.0 * _t46;
+    const double _t48 = _t36 * _t19 * 2.0;
+    const double _t49 = _t9 * _t30 * 2.0;
+    const double _t50 = _t22 * (_t47 + _t48 - _t49) * 0.5;
+    const double _t51 = _t50 * _t34 + _t15;
+    const double _t52 = sqrt(_t35 * _t35 + _t44 * _t44 + _t51 * _t51);
+    const double _t53 = 1.0 / _t52;
+    const double _t54 = _t30 * _t30 * 2.0;
+    const double _t55 = _t36 * _t36 * 2.0;
+    const double _t56 = (_t54 + _t18 * _t19 * 2.0 + _t9 * _t8 * 2.0 + _t45 * _t45 * 2.0 + _t55 - _t16 * 2.0 - _t50 * _t50 * 2.0) * _t22 * 0.5;
+    const double _t57 = _t56 * _t34 + _t45;
+    const double _t58 = _t22 * (_t45 * _t36 * 2.0 + _t15 * _t18 * 2.0 + _t39 * _t36 * 2.0 + _t30 * _t28 * 2.0 - _t12 * _t19 * 2.0 - _t43 * _t50 * 2.0) * 0.5;
+    const double _t59 = _t36 + _t58 * _t34;
+    const double _t60 = _t22 * (_t32 * _t50 * 2.0 + (_t30 * _t45 * 2.0 + _t28 * _t36 * 2.0 + _t30 * _t25 * 2.0 - _t9 * _t14 * 2.0 - _t15 * _t8 * 2.0)) * 0.5;
+    const double _t61 = _t30 + _t60 * _t34;
+    const double _t62 = _t53 * (_t57 * _t51 * 2.0 + _t44 * _t59 * 2.0 - _t61 * _t35 * 2.0) * 0.5;
+    const double _t63 = _t62 * _t34 + _t51;
+    const double _t64 = _t28 * _t28 * 2.0;
+    const double _t65 = 0.5 * (_t22 * (_t54 + (_t15 * _t14 * 2.0 + _t25 * _t25 * 2.0) + _t64 - _t17 * _t19 * 2.0 - _t10 * 2.0 - _t32 * _t32 * 2.0));
+    const double _t66 = _t34 * _t65 + _t25;
+    const double _t67 = (_t32 * _t43 * 2.0 + (_t19 * _t4 * 2.0 + (_t9 * _t17 * 2.0 + _t25 * _t28 * 2.0 + _t30 * _t36 * 2.0) + _t39 * _t28 * 2.0)) * _t22 * 0.5;
+    const double _t68 = _t67 * _t34 + _t28;
+    const double _t69 = _t53 * (_t66 * _t35 * 2.0 - _t51 * _t61 * 2.0 - _t68 * _t44 * 2.0) * 0.5;
+    const double _t70 = _t69 * _t34 + _t35;
+    const double _t71 = (_t15 * _t12 * 2.0 + _t20 * 2.0 + 2.0 * (_t9 * _t4) - _t39 * _t39 * 2.0 - _t64 - _t55 + _t43 * _t43 * 2.0) * _t22 * 0.5;
+    const double _t72 = _t39 - _t71 * _t34;
+    const double _t73 = 0.5 * (_t53 * (_t68 * _t35 * 2.0 - _t59 * _t51 * 2.0 - _t72 * _t44 * 2.0));
+    const double _t74 = _t73 * _t34 - _t44;
+    const double _t75 = sqrt(_t63 * _t63 + _t70 * _t70 + _t74 * _t74);
+    const double _t76 = _t33 * 0.5;
+    const double _t77 = _t15 + _t50 * _t76;
+    const double _t78 = _t9 + _t32 * _t76;
+    const double _t79 = _t43 * _t76 + _t19;
+    const double _t80 = sqrt(_t77 * _t77 + (_t78 * _t78 + _t79 * _t79));
+    const int _t81 = fabs((_t52 + _t75) * 1.5 - 2.0 * _t80) <= 1.7320525396196846;
+    const double _t82 = _t22 * (_t43 * _t60 * 2.0 + 2.0 * (_t67 * _t50) - _t58 * _t32 * 2.0 - (_t36 * _t4 * 2.0 + _t30 * _t18 * 2.0 + _t28 * _t14 * 2.0 - _t30 * _t17 * 2.0 - _t36 * _t8 * 2.0 - _t28 * _t12 * 2.0)) * 0.5 * _t34;
+    const double _t83 = _t28 * _t17;
+    const double _t84 = _t22 * (_t9 * _t24 * 2.0 + 4.0 * (_t39 * _t4) + _t25 * _t4 * 2.0 - 4.0 * _t83 - _t29 - _t29 - _t30 * _t12 * 2.0 - 2.0 * (_t32 * _t71) - 4.0 * (_t67 * _t43)) * 0.5 * _t34 + _t4;
+    const double _t85 = _t28 * _t4;
+    const double _t86 = _t22 * (_t43 * _t65 * 2.0 - (_t42 + (_t42 + (4.0 * _t85 + 2.0 * (_t36 * _t14))) - _t39 * _t17 * 2.0 - 4.0 * (_t25 * _t17) - _t24 * _t19 * 2.0) - 4.0 * (_t67 * _t32)) * 0.5 * _t34 + _t17;
+    const double _t87 = _t53 * (_t82 * _t51 * 2.0 - _t59 * _t61 * 2.0 - _t84 * _t44 * 2.0 - _t86 * _t35 * 2.0 - _t66 * _t68 * 2.0 - _t72 * _t68 * 2.0 + _t69 * _t73 * 2.0) * 0.5 * _t34 - _t68;
+    const double _t88 = _t36 * _t18;
+    const double _t89 = _t22 * (_t30 * _t4 * 2.0 + 4.0 * _t88 - 4.0 * (_t39 * _t12) - _t45 * _t12 * 2.0 - _t15 * _t38 * 2.0 - _t48 - _t48 + _t50 * _t71 * 2.0 - _t58 * _t43 * 4.0) * 0.5 * _t34 - _t12;
+    const double _t90 = _t36 * _t12;
+    const double _t91 = _t18 - _t22 * (_t28 * _t8 * 2.0 + (_t37 + (4.0 * _t90 + 2.0 * (_t38 * _t19)) + _t37) - 4.0 * (_t45 * _t18) - _t39 * _t18 * 2.0 + 4.0 * (_t58 * _t50) + _t43 * _t56 * 2.0) * 0.5 * _t34;
+    const double _t92 = _t53 * (_t57 * _t59 * 2.0 + (_t72 * _t59 * 2.0 + 2.0 * (_t89 * _t44) + _t51 * _t91 * 2.0) + _t82 * _t35 * 2.0 + _t68 * _t61 * 2.0 + _t62 * _t73 * 2.0) * 0.5 * _t34 + _t59;
+    const double _t93 = _t68 * _t68 * 2.0;
+    const double _t94 = _t59 * _t59 * 2.0;
+    const double _t95 = 1.0 / _t75;
+    const double _t96 = _t28 + _t67 * _t76;
+    const double _t97 = _t58 * _t76 + _t36;
+    const double _t98 = 1.0 / _t80;
+    const double _t99 = (_t81) ? -(_t33 * (1.5 * ((_t87 * _t70 * 2.0 + _t92 * _t63 * 2.0 - _t74 * (_t72 + _t53 * (2.0 * (_t89 * _t51) + _t72 * _t72 * 2.0 + _t93 + _t94 - _t84 * _t35 * 2.0 - _t44 * (_t34 * (_t22 * (_t41 + (_t90 * 6.0 + _t37) + _t40 * 6.0 - 6.0 * _t85 - _t42 - _t43 * _t71 * 6.0) * 0.5) + _t19) * 2.0 - _t73 * _t73 * 2.0) * 0.5 * _t34) * 2.0) * _t95 * 0.5 - _t73) + ((_t71 * _t76 - _t39) * _t79 * 2.0 + _t78 * _t96 * 2.0 - _t77 * _t97 * 2.0) * _t98 * 0.5 * 2.0) + _t19) : -_t19;
+    const double _t100 = _t30 * _t14;
+    const double _t101 = _t22 * (_t32 * _t56 * 2.0 + (_t100 * 4.0 + _t28 * _t18 * 2.0 + _t23 * _t9 * 2.0 - 4.0 * (_t45 * _t8) - _t31 - _t31 - _t25 * _t8 * 2.0) - 4.0 * (_t50 * _t60)) * 0.5 * _t34 - _t8;
+    const double _t102 = _t30 * _t8;
+    const double _t103 = _t14 + _t34 * (_t22 * (4.0 * (_t32 * _t60) - (_t23 * _t15 * 2.0 + (4.0 * _t102 + _t36 * _t17 * 2.0) - 4.0 * (_t25 * _t14) - _t45 * _t14 * 2.0 - _t49 - _t49) - _t50 * _t65 * 2.0) * 0.5);
+    const double _t104 = (2.0 * (_t57 * _t61) + (_t51 * _t101 * 2.0 + _t66 * _t61 * 2.0) + _t68 * _t59 * 2.0 - _t103 * _t35 * 2.0 - _t82 * _t44 * 2.0 + _t69 * _t62 * 2.0) * _t53 * 0.5 * _t34 + _t61;
+    const double _t105 = _t61 * _t61 * 2.0;
+    const double _t106 = _t60 * _t76 + _t30;
+    const double _t107 = (_t81) ? -(_t15 + _t33 * (1.5 * (_t62 - (_t92 * _t74 * 2.0 + _t104 * _t70 * 2.0 - (_t57 - _t53 * (_t62 * _t62 * 2.0 - (_t44 * _t91 * 2.0 + _t105 + _t94 + _t57 * _t57 * 2.0 - (_t15 + _t22 * (_t102 * 6.0 + 6.0 * _t46 + _t47 + _t48 - _t88 * 6.0 - _t49 + _t56 * _t50 * 6.0) * 0.5 * _t34) * _t51 * 2.0 - _t35 * _t101 * 2.0)) * 0.5 * _t34) * _t63 * 2.0) * _t95 * 0.5) + _t98 * (_t78 * _t106 * 2.0 - _t77 * (_t45 + _t56 * _t76) * 2.0 - _t97 * _t79 * 2.0) * 0.5 * 2.0)) : -_t15;
+    const double _t108 = (_t81) ? _t33 * (_t98 * (_t77 * _t106 * 2.0 + _t96 * _t79 * 2.0 - 2.0 * ((_t25 + _t76 * _t65) * _t78)) * 0.5 * 2.0 + (_t69 - (_t104 * _t63 * 2.0 + _t74 * _t87 * 2.0 - _t70 * (_t66 - _t53 * (_t69 * _t69 * 2.0 - (_t66 * _t66 * 2.0 + (_t105 + _t93) + _t103 * _t51 * 2.0 - _t44 * _t86 * 2.0 - (_t9 + _t22 * (_t32 * _t65 * 6.0 + (_t26 * 6.0 + (_t27 + _t100 * 6.0) - _t29 - _t83 * 6.0 - _t31)) * 0.5 * _t34) * _t35 * 2.0)) * 0.5 * _t34) * 2.0) * _t95 * 0.5) * 1.5) + _t9 : _t9;
+    const double _t109 = _t99 * _t99 + (_t107 * _t107 + _t108 * _t108);
+    const int _t110 = _t109 > 0.0;
+    const int _t111 = _t109 <= 1.0e+30;
+    const double _t112 = 1.0 / sqrt(_t109);
+    const double _t113 = (_t21 > 0.0) ? _t22 : 0.0;
+    const double _t114 = -(_t113 * _t19);
+    const double _t115 = -(_t15 * _t113);
+    const double _t116 = _t9 * _t113;
+    n[0] = (_t110) ? ((_t111) ? _t112 * _t99 : _t114) : _t114;
+    n[1] = (_t110) ? ((_t111) ? _t112 * _t107 : _t115) : _t115;
+    n[2] = (_t110) ? ((_t111) ? _t112 * _t108 : _t116) : _t116;
 }
 
 /* F, the field; the surface is F = 0.
@@ -504,7 +511,7 @@ static inline float gyroid_o3_shellf(float x, float y, float z, float t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 745
+ * Total ops: 758
  */
 static inline void gyroid_o3_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -529,98 +536,537 @@ static inline void gyroid_o3_normalf(float x, float y, float z, float h, float n
     const float _t18 = _t13 * _t3;
     const float _t19 = _t17 - _t18;
     const float _t20 = _t19 * _t19;
-    const float _t21 = 1.0f / sqrtf(_t10 + _t16 + _t20);
-    const float _t22 = _t1 * _t7;
-    const float _t23 = _t5 * _t3;
-    const float _t24 = _t22 + _t23;
-    const float _t25 = _t9 * _t24;
-    const float _t26 = _t25 * 2.0f;
-    const float _t27 = _t1 * _t11;
-    const float _t28 = _t27 * _t19 * 2.0f;
-    const float _t29 = _t5 * _t13;
-    const float _t30 = _t29 * _t15 * 2.0f;
-    const float _t31 = _t21 * (_t26 - _t28 - _t30) * 0.5f;
-    const float _t32 = 6.28318548f * h;
-    const float _t33 = _t32 * 0.333333343f;
-    const float _t34 = _t9 + _t31 * _t33;
-    const float _t35 = _t7 * _t3;
-    const float _t36 = _t15 * _t35 * 2.0f;
-    const float _t37 = _t13 * _t11;
-    const float _t38 = _t23 + _t37;
-    const float _t39 = _t38 * _t19;
-    const float _t40 = _t39 * 2.0f;
-    const float _t41 = _t9 * _t27 * 2.0f;
-    const float _t42 = _t21 * (_t36 + _t40 - _t41) * 0.5f;
-    const float _t43 = _t42 * _t33 + _t19;
-    const float _t44 = _t22 + _t37;
-    const float _t45 = _t15 * _t44;
-    const float _t46 = 2.0f * _t45;
-    const float _t47 = _t35 * _t19 * 2.0f;
-    const float _t48 = _t9 * _t29 * 2.0f;
-    const float _t49 = _t21 * (_t46 + _t47 - _t48) * 0.5f;
-    const float _t50 = _t49 * _t33 + _t15;
-    const float _t51 = sqrtf(_t34 * _t34 + _t43 * _t43 + _t50 * _t50);
-    const float _t52 = 1.0f / _t51;
-    const float _t53 = _t29 * _t29 * 2.0f;
-    const float _t54 = _t35 * _t35 * 2.0f;
-    const float _t55 = (_t53 + _t18 * _t19 * 2.0f + _t9 * _t8 * 2.0f + _t44 * _t44 * 2.0f + _t54 - _t16 * 2.0f - _t49 * _t49 * 2.0f) * _t21 * 0.5f;
-    const float _t56 = _t55 * _t33 + _t44;
-    const float _t57 = _t21 * (_t44 * _t35 * 2.0f + _t15 * _t18 * 2.0f + _t38 * _t35 * 2.0f + _t29 * _t27 * 2.0f - _t12 * _t19 * 2.0f - _t42 * _t49 * 2.0f) * 0.5f;
-    const float _t58 = _t35 + _t57 * _t33;
-    const float _t59 = _t21 * (_t31 * _t49 * 2.0f + (_t29 * _t44 * 2.0f + _t27 * _t35 * 2.0f + _t29 * _t24 * 2.0f - _t9 * _t14 * 2.0f - _t15 * _t8 * 2.0f)) * 0.5f;
-    const float _t60 = _t29 + _t59 * _t33;
-    const float _t61 = _t52 * (_t56 * _t50 * 2.0f + _t43 * _t58 * 2.0f - _t60 * _t34 * 2.0f) * 0.5f;
-    const float _t62 = _t61 * _t33 + _t50;
-    const float _t63 = _t27 * _t27 * 2.0f;
-    const float _t64 = 0.5f * (_t21 * (_t53 + (_t15 * _t14 * 2.0f + _t24 * _t24 * 2.0f) + _t63 - _t17 * _t19 * 2.0f - _t10 * 2.0f - _t31 * _t31 * 2.0f));
-    const float _t65 = _t33 * _t64 + _t24;
-    const float _t66 = (_t31 * _t42 * 2.0f + (_t19 * _t4 * 2.0f + (_t9 * _t17 * 2.0f + _t24 * _t27 * 2.0f + _t29 * _t35 * 2.0f) + _t38 * _t27 * 2.0f)) * _t21 * 0.5f;
-    const float _t67 = _t66 * _t33 + _t27;
-    const float _t68 = _t52 * (_t65 * _t34 * 2.0f - _t50 * _t60 * 2.0f - _t67 * _t43 * 2.0f) * 0.5f;
-    const float _t69 = _t68 * _t33 + _t34;
-    const float _t70 = (_t15 * _t12 * 2.0f + _t20 * 2.0f + 2.0f * (_t9 * _t4) - _t38 * _t38 * 2.0f - _t63 - _t54 + _t42 * _t42 * 2.0f) * _t21 * 0.5f;
-    const float _t71 = _t38 - _t70 * _t33;
-    const float _t72 = 0.5f * (_t52 * (_t67 * _t34 * 2.0f - _t58 * _t50 * 2.0f - _t71 * _t43 * 2.0f));
-    const float _t73 = _t72 * _t33 - _t43;
-    const float _t74 = sqrtf(_t62 * _t62 + _t69 * _t69 + _t73 * _t73);
-    const float _t75 = _t32 * 0.5f;
-    const float _t76 = _t15 + _t49 * _t75;
-    const float _t77 = _t9 + _t31 * _t75;
-    const float _t78 = _t42 * _t75 + _t19;
-    const float _t79 = sqrtf(_t76 * _t76 + (_t77 * _t77 + _t78 * _t78));
-    const int _t80 = fabsf((_t51 + _t74) * 1.5f - 2.0f * _t79) <= 1.73205256f;
-    const float _t81 = _t21 * (_t42 * _t59 * 2.0f + 2.0f * (_t66 * _t49) - _t57 * _t31 * 2.0f - (_t35 * _t4 * 2.0f + _t29 * _t18 * 2.0f + _t27 * _t14 * 2.0f - _t29 * _t17 * 2.0f - _t35 * _t8 * 2.0f - _t27 * _t12 * 2.0f)) * 0.5f * _t33;
-    const float _t82 = _t27 * _t17;
-    const float _t83 = _t21 * (_t9 * _t23 * 2.0f + 4.0f * (_t38 * _t4) + _t24 * _t4 * 2.0f - 4.0f * _t82 - _t28 - _t28 - _t29 * _t12 * 2.0f - 2.0f * (_t31 * _t70) - 4.0f * (_t66 * _t42)) * 0.5f * _t33 + _t4;
-    const float _t84 = _t27 * _t4;
-    const float _t85 = _t21 * (_t42 * _t64 * 2.0f - (_t41 + (_t41 + (4.0f * _t84 + 2.0f * (_t35 * _t14))) - _t38 * _t17 * 2.0f - 4.0f * (_t24 * _t17) - _t23 * _t19 * 2.0f) - 4.0f * (_t66 * _t31)) * 0.5f * _t33 + _t17;
-    const float _t86 = _t52 * (_t81 * _t50 * 2.0f - _t58 * _t60 * 2.0f - _t83 * _t43 * 2.0f - _t85 * _t34 * 2.0f - _t65 * _t67 * 2.0f - _t71 * _t67 * 2.0f + _t68 * _t72 * 2.0f) * 0.5f * _t33 - _t67;
-    const float _t87 = _t35 * _t18;
-    const float _t88 = _t21 * (_t29 * _t4 * 2.0f + 4.0f * _t87 - 4.0f * (_t38 * _t12) - _t44 * _t12 * 2.0f - _t15 * _t37 * 2.0f - _t47 - _t47 + _t49 * _t70 * 2.0f - _t57 * _t42 * 4.0f) * 0.5f * _t33 - _t12;
-    const float _t89 = _t35 * _t12;
-    const float _t90 = _t18 - _t21 * (_t27 * _t8 * 2.0f + (_t36 + (4.0f * _t89 + 2.0f * (_t37 * _t19)) + _t36) - 4.0f * (_t44 * _t18) - _t38 * _t18 * 2.0f + 4.0f * (_t57 * _t49) + _t42 * _t55 * 2.0f) * 0.5f * _t33;
-    const float _t91 = _t52 * (_t56 * _t58 * 2.0f + (_t71 * _t58 * 2.0f + 2.0f * (_t88 * _t43) + _t50 * _t90 * 2.0f) + _t81 * _t34 * 2.0f + _t67 * _t60 * 2.0f + _t61 * _t72 * 2.0f) * 0.5f * _t33 + _t58;
-    const float _t92 = _t67 * _t67 * 2.0f;
-    const float _t93 = _t58 * _t58 * 2.0f;
-    const float _t94 = 1.0f / _t74;
-    const float _t95 = _t27 + _t66 * _t75;
-    const float _t96 = _t57 * _t75 + _t35;
-    const float _t97 = 1.0f / _t79;
-    const float _t98 = (_t80) ? -(_t32 * (1.5f * ((_t86 * _t69 * 2.0f + _t91 * _t62 * 2.0f - _t73 * (_t71 + _t52 * (2.0f * (_t88 * _t50) + _t71 * _t71 * 2.0f + _t92 + _t93 - _t83 * _t34 * 2.0f - _t43 * (_t33 * (_t21 * (_t40 + (_t89 * 6.0f + _t36) + _t39 * 6.0f - 6.0f * _t84 - _t41 - _t42 * _t70 * 6.0f) * 0.5f) + _t19) * 2.0f - _t72 * _t72 * 2.0f) * 0.5f * _t33) * 2.0f) * _t94 * 0.5f - _t72) + ((_t70 * _t75 - _t38) * _t78 * 2.0f + _t77 * _t95 * 2.0f - _t76 * _t96 * 2.0f) * _t97 * 0.5f * 2.0f) + _t19) : -_t19;
-    const float _t99 = _t29 * _t14;
-    const float _t100 = _t21 * (_t31 * _t55 * 2.0f + (_t99 * 4.0f + _t27 * _t18 * 2.0f + _t22 * _t9 * 2.0f - 4.0f * (_t44 * _t8) - _t30 - _t30 - _t24 * _t8 * 2.0f) - 4.0f * (_t49 * _t59)) * 0.5f * _t33 - _t8;
-    const float _t101 = _t29 * _t8;
-    const float _t102 = _t14 + _t33 * (_t21 * (4.0f * (_t31 * _t59) - (_t22 * _t15 * 2.0f + (4.0f * _t101 + _t35 * _t17 * 2.0f) - 4.0f * (_t24 * _t14) - _t44 * _t14 * 2.0f - _t48 - _t48) - _t49 * _t64 * 2.0f) * 0.5f);
-    const float _t103 = (2.0f * (_t56 * _t60) + (_t50 * _t100 * 2.0f + _t65 * _t60 * 2.0f) + _t67 * _t58 * 2.0f - _t102 * _t34 * 2.0f - _t81 * _t43 * 2.0f + _t68 * _t61 * 2.0f) * _t52 * 0.5f * _t33 + _t60;
-    const float _t104 = _t60 * _t60 * 2.0f;
-    const float _t105 = _t59 * _t75 + _t29;
-    const float _t106 = (_t80) ? -(_t15 + _t32 * (1.5f * (_t61 - (_t91 * _t73 * 2.0f + _t103 * _t69 * 2.0f - (_t56 - _t52 * (_t61 * _t61 * 2.0f - (_t43 * _t90 * 2.0f + _t104 + _t93 + _t56 * _t56 * 2.0f - (_t15 + _t21 * (_t101 * 6.0f + 6.0f * _t45 + _t46 + _t47 - _t87 * 6.0f - _t48 + _t55 * _t49 * 6.0f) * 0.5f * _t33) * _t50 * 2.0f - _t34 * _t100 * 2.0f)) * 0.5f * _t33) * _t62 * 2.0f) * _t94 * 0.5f) + _t97 * (_t77 * _t105 * 2.0f - _t76 * (_t44 + _t55 * _t75) * 2.0f - _t96 * _t78 * 2.0f) * 0.5f * 2.0f)) : -_t15;
-    const float _t107 = (_t80) ? _t32 * (_t97 * (_t76 * _t105 * 2.0f + _t95 * _t78 * 2.0f - 2.0f * ((_t24 + _t75 * _t64) * _t77)) * 0.5f * 2.0f + (_t68 - (_t103 * _t62 * 2.0f + _t73 * _t86 * 2.0f - _t69 * (_t65 - _t52 * (_t68 * _t68 * 2.0f - (_t65 * _t65 * 2.0f + (_t104 + _t92) + _t102 * _t50 * 2.0f - _t43 * _t85 * 2.0f - (_t9 + _t21 * (_t31 * _t64 * 6.0f + (_t25 * 6.0f + (_t26 + _t99 * 6.0f) - _t28 - _t82 * 6.0f - _t30)) * 0.5f * _t33) * _t34 * 2.0f)) * 0.5f * _t33) * 2.0f) * _t94 * 0.5f) * 1.5f) + _t9 : _t9;
-    const float _t108 = _t98 * _t98 + (_t106 * _t106 + _t107 * _t107);
-    const float _t109 = (_t108 > 0.0f) ? 1.0f / sqrtf(_t108) : 0.0f;
-    n[0] = _t109 * _t98;
-    n[1] = _t106 * _t109;
-    n[2] = _t109 * _t107;
+    const float _t21 = _t10 + _t16 + _t20;
+    const float _t22 = 1.0f / sqrtf(_t21);
+    const float _t23 = _t1 * _t7;
+    const float _t24 = _t5 * _t3;
+    const float _t25 = _t23 + _t24;
+    const float _t26 = _t9 * _t25;
+    const float _t27 = _t26 * 2.0f;
+    const float _t28 = _t1 * _t11;
+    const float _t29 = _t28 * _t19 * 2.0f;
+    const float _t30 = _t5 * _t13;
+    const float _t31 = _t30 * _t15 * 2.0f;
+    const float _t32 = _t22 * (_t27 - _t29 - _t31) * 0.5f;
+    const float _t33 = 6.28318548f * h;
+    const float _t34 = _t33 * 0.333333343f;
+    const float _t35 = _t9 + _t32 * _t34;
+    const float _t36 = _t7 * _t3;
+    const float _t37 = _t15 * _t36 * 2.0f;
+    const float _t38 = _t13 * _t11;
+    const float _t39 = _t24 + _t38;
+    const float _t40 = _t39 * _t19;
+    const float _t41 = _t40 * 2.0f;
+    const float _t42 = _t9 * _t28 * 2.0f;
+    const float _t43 = _t22 * (_t37 + _t41 - _t42) * 0.5f;
+    const float _t44 = _t43 * _t34 + _t19;
+    const float _t45 = _t23 + _t38;
+    const float _t46 = _t15 * _t45;
+    const float _t47 = 2.0f * _t46;
+    const float _t48 = _t36 * _t19 * 2.0f;
+    const float _t49 = _t9 * _t30 * 2.0f;
+    const float _t50 = _t22 * (_t47 + _t48 - _t49) * 0.5f;
+    const float _t51 = _t50 * _t34 + _t15;
+    const float _t52 = sqrtf(_t35 * _t35 + _t44 * _t44 + _t51 * _t51);
+    const float _t53 = 1.0f / _t52;
+    const float _t54 = _t30 * _t30 * 2.0f;
+    const float _t55 = _t36 * _t36 * 2.0f;
+    const float _t56 = (_t54 + _t18 * _t19 * 2.0f + _t9 * _t8 * 2.0f + _t45 * _t45 * 2.0f + _t55 - _t16 * 2.0f - _t50 * _t50 * 2.0f) * _t22 * 0.5f;
+    const float _t57 = _t56 * _t34 + _t45;
+    const float _t58 = _t22 * (_t45 * _t36 * 2.0f + _t15 * _t18 * 2.0f + _t39 * _t36 * 2.0f + _t30 * _t28 * 2.0f - _t12 * _t19 * 2.0f - _t43 * _t50 * 2.0f) * 0.5f;
+    const float _t59 = _t36 + _t58 * _t34;
+    const float _t60 = _t22 * (_t32 * _t50 * 2.0f + (_t30 * _t45 * 2.0f + _t28 * _t36 * 2.0f + _t30 * _t25 * 2.0f - _t9 * _t14 * 2.0f - _t15 * _t8 * 2.0f)) * 0.5f;
+    const float _t61 = _t30 + _t60 * _t34;
+    const float _t62 = _t53 * (_t57 * _t51 * 2.0f + _t44 * _t59 * 2.0f - _t61 * _t35 * 2.0f) * 0.5f;
+    const float _t63 = _t62 * _t34 + _t51;
+    const float _t64 = _t28 * _t28 * 2.0f;
+    const float _t65 = 0.5f * (_t22 * (_t54 + (_t15 * _t14 * 2.0f + _t25 * _t25 * 2.0f) + _t64 - _t17 * _t19 * 2.0f - _t10 * 2.0f - _t32 * _t32 * 2.0f));
+    const float _t66 = _t34 * _t65 + _t25;
+    const float _t67 = (_t32 * _t43 * 2.0f + (_t19 * _t4 * 2.0f + (_t9 * _t17 * 2.0f + _t25 * _t28 * 2.0f + _t30 * _t36 * 2.0f) + _t39 * _t28 * 2.0f)) * _t22 * 0.5f;
+    const float _t68 = _t67 * _t34 + _t28;
+    const float _t69 = _t53 * (_t66 * _t35 * 2.0f - _t51 * _t61 * 2.0f - _t68 * _t44 * 2.0f) * 0.5f;
+    const float _t70 = _t69 * _t34 + _t35;
+    const float _t71 = (_t15 * _t12 * 2.0f + _t20 * 2.0f + 2.0f * (_t9 * _t4) - _t39 * _t39 * 2.0f - _t64 - _t55 + _t43 * _t43 * 2.0f) * _t22 * 0.5f;
+    const float _t72 = _t39 - _t71 * _t34;
+    const float _t73 = 0.5f * (_t53 * (_t68 * _t35 * 2.0f - _t59 * _t51 * 2.0f - _t72 * _t44 * 2.0f));
+    const float _t74 = _t73 * _t34 - _t44;
+    const float _t75 = sqrtf(_t63 * _t63 + _t70 * _t70 + _t74 * _t74);
+    const float _t76 = _t33 * 0.5f;
+    const float _t77 = _t15 + _t50 * _t76;
+    const float _t78 = _t9 + _t32 * _t76;
+    const float _t79 = _t43 * _t76 + _t19;
+    const float _t80 = sqrtf(_t77 * _t77 + (_t78 * _t78 + _t79 * _t79));
+    const int _t81 = fabsf((_t52 + _t75) * 1.5f - 2.0f * _t80) <= 1.73205256f;
+    const float _t82 = _t22 * (_t43 * _t60 * 2.0f + 2.0f * (_t67 * _t50) - _t58 * _t32 * 2.0f - (_t36 * _t4 * 2.0f + _t30 * _t18 * 2.0f + _t28 * _t14 * 2.0f - _t30 * _t17 * 2.0f - _t36 * _t8 * 2.0f - _t28 * _t12 * 2.0f)) * 0.5f * _t34;
+    const float _t83 = _t28 * _t17;
+    const float _t84 = _t22 * (_t9 * _t24 * 2.0f + 4.0f * (_t39 * _t4) + _t25 * _t4 * 2.0f - 4.0f * _t83 - _t29 - _t29 - _t30 * _t12 * 2.0f - 2.0f * (_t32 * _t71) - 4.0f * (_t67 * _t43)) * 0.5f * _t34 + _t4;
+    const float _t85 = _t28 * _t4;
+    const float _t86 = _t22 * (_t43 * _t65 * 2.0f - (_t42 + (_t42 + (4.0f * _t85 + 2.0f * (_t36 * _t14))) - _t39 * _t17 * 2.0f - 4.0f * (_t25 * _t17) - _t24 * _t19 * 2.0f) - 4.0f * (_t67 * _t32)) * 0.5f * _t34 + _t17;
+    const float _t87 = _t53 * (_t82 * _t51 * 2.0f - _t59 * _t61 * 2.0f - _t84 * _t44 * 2.0f - _t86 * _t35 * 2.0f - _t66 * _t68 * 2.0f - _t72 * _t68 * 2.0f + _t69 * _t73 * 2.0f) * 0.5f * _t34 - _t68;
+    const float _t88 = _t36 * _t18;
+    const float _t89 = _t22 * (_t30 * _t4 * 2.0f + 4.0f * _t88 - 4.0f * (_t39 * _t12) - _t45 * _t12 * 2.0f - _t15 * _t38 * 2.0f - _t48 - _t48 + _t50 * _t71 * 2.0f - _t58 * _t43 * 4.0f) * 0.5f * _t34 - _t12;
+    const float _t90 = _t36 * _t12;
+    const float _t91 = _t18 - _t22 * (_t28 * _t8 * 2.0f + (_t37 + (4.0f * _t90 + 2.0f * (_t38 * _t19)) + _t37) - 4.0f * (_t45 * _t18) - _t39 * _t18 * 2.0f + 4.0f * (_t58 * _t50) + _t43 * _t56 * 2.0f) * 0.5f * _t34;
+    const float _t92 = _t53 * (_t57 * _t59 * 2.0f + (_t72 * _t59 * 2.0f + 2.0f * (_t89 * _t44) + _t51 * _t91 * 2.0f) + _t82 * _t35 * 2.0f + _t68 * _t61 * 2.0f + _t62 * _t73 * 2.0f) * 0.5f * _t34 + _t59;
+    const float _t93 = _t68 * _t68 * 2.0f;
+    const float _t94 = _t59 * _t59 * 2.0f;
+    const float _t95 = 1.0f / _t75;
+    const float _t96 = _t28 + _t67 * _t76;
+    const float _t97 = _t58 * _t76 + _t36;
+    const float _t98 = 1.0f / _t80;
+    const float _t99 = (_t81) ? -(_t33 * (1.5f * ((_t87 * _t70 * 2.0f + _t92 * _t63 * 2.0f - _t74 * (_t72 + _t53 * (2.0f * (_t89 * _t51) + _t72 * _t72 * 2.0f + _t93 + _t94 - _t84 * _t35 * 2.0f - _t44 * (_t34 * (_t22 * (_t41 + (_t90 * 6.0f + _t37) + _t40 * 6.0f - 6.0f * _t85 - _t42 - _t43 * _t71 * 6.0f) * 0.5f) + _t19) * 2.0f - _t73 * _t73 * 2.0f) * 0.5f * _t34) * 2.0f) * _t95 * 0.5f - _t73) + ((_t71 * _t76 - _t39) * _t79 * 2.0f + _t78 * _t96 * 2.0f - _t77 * _t97 * 2.0f) * _t98 * 0.5f * 2.0f) + _t19) : -_t19;
+    const float _t100 = _t30 * _t14;
+    const float _t101 = _t22 * (_t32 * _t56 * 2.0f + (_t100 * 4.0f + _t28 * _t18 * 2.0f + _t23 * _t9 * 2.0f - 4.0f * (_t45 * _t8) - _t31 - _t31 - _t25 * _t8 * 2.0f) - 4.0f * (_t50 * _t60)) * 0.5f * _t34 - _t8;
+    const float _t102 = _t30 * _t8;
+    const float _t103 = _t14 + _t34 * (_t22 * (4.0f * (_t32 * _t60) - (_t23 * _t15 * 2.0f + (4.0f * _t102 + _t36 * _t17 * 2.0f) - 4.0f * (_t25 * _t14) - _t45 * _t14 * 2.0f - _t49 - _t49) - _t50 * _t65 * 2.0f) * 0.5f);
+    const float _t104 = (2.0f * (_t57 * _t61) + (_t51 * _t101 * 2.0f + _t66 * _t61 * 2.0f) + _t68 * _t59 * 2.0f - _t103 * _t35 * 2.0f - _t82 * _t44 * 2.0f + _t69 * _t62 * 2.0f) * _t53 * 0.5f * _t34 + _t61;
+    const float _t105 = _t61 * _t61 * 2.0f;
+    const float _t106 = _t60 * _t76 + _t30;
+    const float _t107 = (_t81) ? -(_t15 + _t33 * (1.5f * (_t62 - (_t92 * _t74 * 2.0f + _t104 * _t70 * 2.0f - (_t57 - _t53 * (_t62 * _t62 * 2.0f - (_t44 * _t91 * 2.0f + _t105 + _t94 + _t57 * _t57 * 2.0f - (_t15 + _t22 * (_t102 * 6.0f + 6.0f * _t46 + _t47 + _t48 - _t88 * 6.0f - _t49 + _t56 * _t50 * 6.0f) * 0.5f * _t34) * _t51 * 2.0f - _t35 * _t101 * 2.0f)) * 0.5f * _t34) * _t63 * 2.0f) * _t95 * 0.5f) + _t98 * (_t78 * _t106 * 2.0f - _t77 * (_t45 + _t56 * _t76) * 2.0f - _t97 * _t79 * 2.0f) * 0.5f * 2.0f)) : -_t15;
+    const float _t108 = (_t81) ? _t33 * (_t98 * (_t77 * _t106 * 2.0f + _t96 * _t79 * 2.0f - 2.0f * ((_t25 + _t76 * _t65) * _t78)) * 0.5f * 2.0f + (_t69 - (_t104 * _t63 * 2.0f + _t74 * _t87 * 2.0f - _t70 * (_t66 - _t53 * (_t69 * _t69 * 2.0f - (_t66 * _t66 * 2.0f + (_t105 + _t93) + _t103 * _t51 * 2.0f - _t44 * _t86 * 2.0f - (_t9 + _t22 * (_t32 * _t65 * 6.0f + (_t26 * 6.0f + (_t27 + _t100 * 6.0f) - _t29 - _t83 * 6.0f - _t31)) * 0.5f * _t34) * _t35 * 2.0f)) * 0.5f * _t34) * 2.0f) * _t95 * 0.5f) * 1.5f) + _t9 : _t9;
+    const float _t109 = _t99 * _t99 + (_t107 * _t107 + _t108 * _t108);
+    const int _t110 = _t109 > 0.0f;
+    const int _t111 = _t109 <= 1.00000002e+30f;
+    const float _t112 = 1.0f / sqrtf(_t109);
+    const float _t113 = (_t21 > 0.0f) ? _t22 : 0.0f;
+    const float _t114 = -(_t113 * _t19);
+    const float _t115 = -(_t15 * _t113);
+    const float _t116 = _t9 * _t113;
+    n[0] = (_t110) ? ((_t111) ? _t112 * _t99 : _t114) : _t114;
+    n[1] = (_t110) ? ((_t111) ? _t112 * _t107 : _t115) : _t115;
+    n[2] = (_t110) ? ((_t111) ? _t112 * _t108 : _t116) : _t116;
+}
+
+/* ---- Batch API ------------------------------------------------------------------------------------
+ *   void gyroid_o3_offset_n(n, x, y, z, h, out)
+ *   void gyroid_o3_shell_n(n, x, y, z, t, out)
+ *   void gyroid_o3_offsetf_n(n, x, y, z, h, out)
+ *   void gyroid_o3_shellf_n(n, x, y, z, t, out)
+ *
+ * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
+ * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
+ * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
+ * selects (blends), and there are no calls left for the vectoriser to stumble over.
+ *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
+ *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
+ *                `#pragma omp simd`; otherwise it carries `GCC ivdep` / `clang loop vectorize(enable)`.
+ *                Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * The results agree with the scalar functions to about 1e-15 of the field's scale (the only
+ * difference is the last bits of sin and cos). Points whose sin/cos arguments lie beyond the
+ * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
+ * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
+ * function's finite value. `out` must not overlap the input arrays. Other elementary functions
+ * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
+ * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ */
+#ifndef OFFSETGEN_SIMD_LOOP
+#if defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)
+#define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
+#elif defined(__clang__)
+#define OFFSETGEN_SIMD_LOOP _Pragma("clang loop vectorize(enable) interleave(enable)")
+#elif defined(__GNUC__)
+#define OFFSETGEN_SIMD_LOOP _Pragma("GCC ivdep")
+#else
+#define OFFSETGEN_SIMD_LOOP
+#endif
+#endif
+#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
+#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
+/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
+ * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
+ * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
+ * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
+ * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sin(double a)
+{
+    const double q = rint(a * 0.63661977236758138);
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
+    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
+    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : NAN;
+}
+
+static inline double offsetgen_batch_cos(double a)
+{
+    const double q = rint(a * 0.63661977236758138);
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
+    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
+    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : NAN;
+}
+#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
+#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
+#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
+/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
+ * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
+static inline float offsetgen_batch_sinf(float a)
+{
+    const float q = rintf(a * 0.636619772f);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
+    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
+    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+}
+
+static inline float offsetgen_batch_cosf(float a)
+{
+    const float q = rintf(a * 0.636619772f);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
+    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
+    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+}
+#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+
+
+/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ * Batch form of gyroid_o3_offset: out[i] = gyroid_o3_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
+ */
+static inline void gyroid_o3_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t2 = 6.2831853071795862 * y[i];
+        const double _t3 = offsetgen_batch_sin(_t2);
+        const double _t4 = _t1 * _t3;
+        const double _t5 = offsetgen_batch_sin(_t0);
+        const double _t6 = 6.2831853071795862 * x[i];
+        const double _t7 = offsetgen_batch_cos(_t6);
+        const double _t8 = _t5 * _t7;
+        const double _t9 = _t4 + _t8;
+        const double _t10 = offsetgen_batch_cos(_t2);
+        const double _t11 = offsetgen_batch_sin(_t6);
+        const double _t12 = _t10 * _t11;
+        const double _t13 = 6.2831853071795862 * h[i];
+        const double _t14 = _t1 * _t7;
+        const double _t15 = _t5 * _t3;
+        const double _t16 = _t14 - _t15;
+        const double _t17 = _t16 * _t16;
+        const double _t18 = _t3 * _t11;
+        const double _t19 = _t1 * _t10;
+        const double _t20 = _t18 - _t19;
+        const double _t21 = _t20 * _t20;
+        const double _t22 = _t5 * _t11;
+        const double _t23 = _t10 * _t7;
+        const double _t24 = _t22 - _t23;
+        const double _t25 = _t24 * _t24;
+        const double _t26 = 1.0 / sqrt(_t17 + _t21 + _t25);
+        const double _t27 = _t1 * _t11;
+        const double _t28 = _t5 * _t10;
+        const double _t29 = _t26 * (_t16 * _t9 * 2.0 - _t27 * _t24 * 2.0 - _t28 * _t20 * 2.0) * 0.5;
+        const double _t30 = _t13 * 0.33333333333333331;
+        const double _t31 = _t16 + _t29 * _t30;
+        const double _t32 = _t3 * _t7;
+        const double _t33 = _t8 + _t12;
+        const double _t34 = _t26 * (_t20 * _t32 * 2.0 + _t33 * _t24 * 2.0 - _t16 * _t27 * 2.0) * 0.5;
+        const double _t35 = _t34 * _t30 + _t24;
+        const double _t36 = _t4 + _t12;
+        const double _t37 = _t26 * (2.0 * (_t20 * _t36) + _t32 * _t24 * 2.0 - _t16 * _t28 * 2.0) * 0.5;
+        const double _t38 = _t37 * _t30 + _t20;
+        const double _t39 = sqrt(_t31 * _t31 + _t35 * _t35 + _t38 * _t38);
+        const double _t40 = 1.0 / _t39;
+        const double _t41 = _t28 * _t28 * 2.0;
+        const double _t42 = _t32 * _t32 * 2.0;
+        const double _t43 = _t32 + _t26 * (_t36 * _t32 * 2.0 + _t20 * _t23 * 2.0 + _t33 * _t32 * 2.0 + _t28 * _t27 * 2.0 - _t18 * _t24 * 2.0 - _t34 * _t37 * 2.0) * 0.5 * _t30;
+        const double _t44 = _t28 + _t26 * (_t29 * _t37 * 2.0 + (_t28 * _t36 * 2.0 + _t27 * _t32 * 2.0 + _t28 * _t9 * 2.0 - _t16 * _t19 * 2.0 - _t20 * _t15 * 2.0)) * 0.5 * _t30;
+        const double _t45 = _t40 * (((_t41 + _t23 * _t24 * 2.0 + _t16 * _t15 * 2.0 + _t36 * _t36 * 2.0 + _t42 - _t21 * 2.0 - _t37 * _t37 * 2.0) * _t26 * 0.5 * _t30 + _t36) * _t38 * 2.0 + _t35 * _t43 * 2.0 - _t44 * _t31 * 2.0) * 0.5 * _t30 + _t38;
+        const double _t46 = _t27 * _t27 * 2.0;
+        const double _t47 = (_t29 * _t34 * 2.0 + (_t24 * _t14 * 2.0 + (_t16 * _t22 * 2.0 + _t9 * _t27 * 2.0 + _t28 * _t32 * 2.0) + _t33 * _t27 * 2.0)) * _t26 * 0.5 * _t30 + _t27;
+        const double _t48 = _t40 * ((_t30 * (0.5 * (_t26 * (_t41 + (_t20 * _t19 * 2.0 + _t9 * _t9 * 2.0) + _t46 - _t22 * _t24 * 2.0 - _t17 * 2.0 - _t29 * _t29 * 2.0))) + _t9) * _t31 * 2.0 - _t38 * _t44 * 2.0 - _t47 * _t35 * 2.0) * 0.5 * _t30 + _t31;
+        const double _t49 = 0.5 * (_t40 * (_t47 * _t31 * 2.0 - _t43 * _t38 * 2.0 - (_t33 - (_t20 * _t18 * 2.0 + _t25 * 2.0 + 2.0 * (_t16 * _t14) - _t33 * _t33 * 2.0 - _t46 - _t42 + _t34 * _t34 * 2.0) * _t26 * 0.5 * _t30) * _t35 * 2.0)) * _t30 - _t35;
+        const double _t50 = _t13 * 0.5;
+        const double _t51 = _t20 + _t37 * _t50;
+        const double _t52 = _t16 + _t29 * _t50;
+        const double _t53 = _t34 * _t50 + _t24;
+        const double _t54 = (_t39 + sqrt(_t45 * _t45 + _t48 * _t48 + _t49 * _t49)) * 1.5 - 2.0 * sqrt(_t51 * _t51 + (_t52 * _t52 + _t53 * _t53));
+        out[i] = _t9 + _t12 - _t13 * ((fabs(_t54) <= 1.7320525396196846) ? _t54 : ((_t54 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = gyroid_o3_offset(x[i], y[i], z[i], h[i]);
+    }
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Batch form of gyroid_o3_shell: out[i] = gyroid_o3_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
+ */
+static inline void gyroid_o3_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t2 = 6.2831853071795862 * y[i];
+        const double _t3 = offsetgen_batch_sin(_t2);
+        const double _t4 = _t1 * _t3;
+        const double _t5 = offsetgen_batch_sin(_t0);
+        const double _t6 = 6.2831853071795862 * x[i];
+        const double _t7 = offsetgen_batch_cos(_t6);
+        const double _t8 = _t5 * _t7;
+        const double _t9 = _t4 + _t8;
+        const double _t10 = offsetgen_batch_cos(_t2);
+        const double _t11 = offsetgen_batch_sin(_t6);
+        const double _t12 = _t10 * _t11;
+        const double _t13 = _t9 + _t12;
+        const double _t14 = _t3 * _t11;
+        const double _t15 = _t1 * _t10;
+        const double _t16 = _t14 - _t15;
+        const double _t17 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t18 = _t17 * 0.5;
+        const double _t19 = _t1 * _t7;
+        const double _t20 = _t5 * _t3;
+        const double _t21 = _t19 - _t20;
+        const double _t22 = _t21 * _t21;
+        const double _t23 = _t16 * _t16;
+        const double _t24 = _t5 * _t11;
+        const double _t25 = _t10 * _t7;
+        const double _t26 = _t24 - _t25;
+        const double _t27 = _t26 * _t26;
+        const double _t28 = 1.0 / sqrt(_t22 + _t23 + _t27);
+        const double _t29 = _t4 + _t12;
+        const double _t30 = _t3 * _t7;
+        const double _t31 = _t5 * _t10;
+        const double _t32 = _t28 * (2.0 * (_t16 * _t29) + _t30 * _t26 * 2.0 - _t21 * _t31 * 2.0) * 0.5;
+        const double _t33 = _t18 * _t32;
+        const double _t34 = _t16 + _t33;
+        const double _t35 = _t8 + _t12;
+        const double _t36 = _t1 * _t11;
+        const double _t37 = _t28 * (_t16 * _t30 * 2.0 + _t35 * _t26 * 2.0 - _t21 * _t36 * 2.0) * 0.5;
+        const double _t38 = _t18 * _t37;
+        const double _t39 = _t38 + _t26;
+        const double _t40 = _t28 * (_t21 * _t9 * 2.0 - _t36 * _t26 * 2.0 - _t31 * _t16 * 2.0) * 0.5;
+        const double _t41 = _t40 * _t18;
+        const double _t42 = _t21 + _t41;
+        const double _t43 = _t17 * 0.33333333333333331;
+        const double _t44 = _t37 * _t43;
+        const double _t45 = _t44 + _t26;
+        const double _t46 = _t32 * _t43;
+        const double _t47 = _t16 + _t46;
+        const double _t48 = _t40 * _t43;
+        const double _t49 = _t21 + _t48;
+        const double _t50 = sqrt(_t47 * _t47 + _t45 * _t45 + _t49 * _t49);
+        const double _t51 = 1.0 / _t50;
+        const double _t52 = _t28 * (_t29 * _t30 * 2.0 + _t16 * _t25 * 2.0 + _t35 * _t30 * 2.0 + _t31 * _t36 * 2.0 - _t14 * _t26 * 2.0 - _t37 * _t32 * 2.0) * 0.5 * _t43;
+        const double _t53 = _t52 + _t30;
+        const double _t54 = _t36 * _t36 * 2.0;
+        const double _t55 = _t30 * _t30 * 2.0;
+        const double _t56 = _t43 * ((_t16 * _t14 * 2.0 + _t27 * 2.0 + 2.0 * (_t21 * _t19) - _t35 * _t35 * 2.0 - _t54 - _t55 + _t37 * _t37 * 2.0) * _t28 * 0.5);
+        const double _t57 = (_t40 * _t37 * 2.0 + (_t26 * _t19 * 2.0 + (_t21 * _t24 * 2.0 + _t9 * _t36 * 2.0 + _t31 * _t30 * 2.0) + _t35 * _t36 * 2.0)) * _t28 * 0.5 * _t43;
+        const double _t58 = _t36 + _t57;
+        const double _t59 = _t45 + _t51 * (_t47 * _t53 * 2.0 + (_t35 - _t56) * _t45 * 2.0 - _t58 * _t49 * 2.0) * 0.5 * _t43;
+        const double _t60 = _t43 * (_t28 * (_t40 * _t32 * 2.0 + (_t31 * _t29 * 2.0 + _t36 * _t30 * 2.0 + _t31 * _t9 * 2.0 - _t21 * _t15 * 2.0 - _t16 * _t20 * 2.0)) * 0.5);
+        const double _t61 = _t31 + _t60;
+        const double _t62 = _t31 * _t31 * 2.0;
+        const double _t63 = (_t62 + _t25 * _t26 * 2.0 + _t21 * _t20 * 2.0 + _t29 * _t29 * 2.0 + _t55 - _t23 * 2.0 - _t32 * _t32 * 2.0) * _t28 * 0.5 * _t43;
+        const double _t64 = (_t61 * _t49 * 2.0 - _t53 * _t45 * 2.0 - _t47 * (_t63 + _t29) * 2.0) * _t51 * 0.5 * _t43 - _t47;
+        const double _t65 = _t43 * (0.5 * (_t28 * (_t62 + (_t16 * _t15 * 2.0 + _t9 * _t9 * 2.0) + _t54 - _t24 * _t26 * 2.0 - _t22 * 2.0 - _t40 * _t40 * 2.0)));
+        const double _t66 = _t51 * (_t58 * _t45 * 2.0 + _t47 * _t61 * 2.0 - _t49 * (_t9 + _t65) * 2.0) * 0.5 * _t43 - _t49;
+        const double _t67 = sqrt(_t34 * _t34 + _t39 * _t39 + _t42 * _t42) * 2.0 - 1.5 * (sqrt(_t59 * _t59 + _t64 * _t64 + _t66 * _t66) + _t50);
+        const double _t68 = -_t67;
+        const double _t69 = _t44 - _t26;
+        const double _t70 = _t16 - _t46;
+        const double _t71 = _t21 - _t48;
+        const double _t72 = sqrt(_t69 * _t69 + _t70 * _t70 + _t71 * _t71);
+        const double _t73 = _t52 - _t30;
+        const double _t74 = _t31 - _t60;
+        const double _t75 = 1.0 / _t72;
+        const double _t76 = (_t69 * _t73 * 2.0 - _t74 * _t71 * 2.0 - (_t63 - _t29) * _t70 * 2.0) * _t75 * 0.5 * _t43 - _t70;
+        const double _t77 = _t36 - _t57;
+        const double _t78 = _t71 - ((_t9 - _t65) * _t71 * 2.0 + _t69 * _t77 * 2.0 - _t74 * _t70 * 2.0) * _t75 * 0.5 * _t43;
+        const double _t79 = _t69 - (_t71 * _t77 * 2.0 + _t69 * (_t35 + _t56) * 2.0 + _t70 * _t73 * 2.0) * _t75 * 0.5 * _t43;
+        const double _t80 = _t21 - _t41;
+        const double _t81 = _t38 - _t26;
+        const double _t82 = _t16 - _t33;
+        const double _t83 = 1.5 * (_t72 + sqrt(_t76 * _t76 + _t78 * _t78 + _t79 * _t79)) - sqrt(_t80 * _t80 + _t81 * _t81 + _t82 * _t82) * 2.0;
+        out[i] = (_t13 - ((fabs(_t67) <= 1.7320525396196846) ? _t68 : ((_t68 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t17) * (((fabs(_t83) <= 1.7320525396196846) ? _t83 : ((_t83 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t17 + _t13);
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = gyroid_o3_shell(x[i], y[i], z[i], t[i]);
+    }
+}
+
+/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ * Batch form of gyroid_o3_offsetf: out[i] = gyroid_o3_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
+ */
+static inline void gyroid_o3_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t2 = 6.28318548f * y[i];
+        const float _t3 = offsetgen_batch_sinf(_t2);
+        const float _t4 = _t1 * _t3;
+        const float _t5 = offsetgen_batch_sinf(_t0);
+        const float _t6 = 6.28318548f * x[i];
+        const float _t7 = offsetgen_batch_cosf(_t6);
+        const float _t8 = _t5 * _t7;
+        const float _t9 = _t4 + _t8;
+        const float _t10 = offsetgen_batch_cosf(_t2);
+        const float _t11 = offsetgen_batch_sinf(_t6);
+        const float _t12 = _t10 * _t11;
+        const float _t13 = 6.28318548f * h[i];
+        const float _t14 = _t1 * _t7;
+        const float _t15 = _t5 * _t3;
+        const float _t16 = _t14 - _t15;
+        const float _t17 = _t16 * _t16;
+        const float _t18 = _t3 * _t11;
+        const float _t19 = _t1 * _t10;
+        const float _t20 = _t18 - _t19;
+        const float _t21 = _t20 * _t20;
+        const float _t22 = _t5 * _t11;
+        const float _t23 = _t10 * _t7;
+        const float _t24 = _t22 - _t23;
+        const float _t25 = _t24 * _t24;
+        const float _t26 = 1.0f / sqrtf(_t17 + _t21 + _t25);
+        const float _t27 = _t1 * _t11;
+        const float _t28 = _t5 * _t10;
+        const float _t29 = _t26 * (_t16 * _t9 * 2.0f - _t27 * _t24 * 2.0f - _t28 * _t20 * 2.0f) * 0.5f;
+        const float _t30 = _t13 * 0.333333343f;
+        const float _t31 = _t16 + _t29 * _t30;
+        const float _t32 = _t3 * _t7;
+        const float _t33 = _t8 + _t12;
+        const float _t34 = _t26 * (_t20 * _t32 * 2.0f + _t33 * _t24 * 2.0f - _t16 * _t27 * 2.0f) * 0.5f;
+        const float _t35 = _t34 * _t30 + _t24;
+        const float _t36 = _t4 + _t12;
+        const float _t37 = _t26 * (2.0f * (_t20 * _t36) + _t32 * _t24 * 2.0f - _t16 * _t28 * 2.0f) * 0.5f;
+        const float _t38 = _t37 * _t30 + _t20;
+        const float _t39 = sqrtf(_t31 * _t31 + _t35 * _t35 + _t38 * _t38);
+        const float _t40 = 1.0f / _t39;
+        const float _t41 = _t28 * _t28 * 2.0f;
+        const float _t42 = _t32 * _t32 * 2.0f;
+        const float _t43 = _t32 + _t26 * (_t36 * _t32 * 2.0f + _t20 * _t23 * 2.0f + _t33 * _t32 * 2.0f + _t28 * _t27 * 2.0f - _t18 * _t24 * 2.0f - _t34 * _t37 * 2.0f) * 0.5f * _t30;
+        const float _t44 = _t28 + _t26 * (_t29 * _t37 * 2.0f + (_t28 * _t36 * 2.0f + _t27 * _t32 * 2.0f + _t28 * _t9 * 2.0f - _t16 * _t19 * 2.0f - _t20 * _t15 * 2.0f)) * 0.5f * _t30;
+        const float _t45 = _t40 * (((_t41 + _t23 * _t24 * 2.0f + _t16 * _t15 * 2.0f + _t36 * _t36 * 2.0f + _t42 - _t21 * 2.0f - _t37 * _t37 * 2.0f) * _t26 * 0.5f * _t30 + _t36) * _t38 * 2.0f + _t35 * _t43 * 2.0f - _t44 * _t31 * 2.0f) * 0.5f * _t30 + _t38;
+        const float _t46 = _t27 * _t27 * 2.0f;
+        const float _t47 = (_t29 * _t34 * 2.0f + (_t24 * _t14 * 2.0f + (_t16 * _t22 * 2.0f + _t9 * _t27 * 2.0f + _t28 * _t32 * 2.0f) + _t33 * _t27 * 2.0f)) * _t26 * 0.5f * _t30 + _t27;
+        const float _t48 = _t40 * ((_t30 * (0.5f * (_t26 * (_t41 + (_t20 * _t19 * 2.0f + _t9 * _t9 * 2.0f) + _t46 - _t22 * _t24 * 2.0f - _t17 * 2.0f - _t29 * _t29 * 2.0f))) + _t9) * _t31 * 2.0f - _t38 * _t44 * 2.0f - _t47 * _t35 * 2.0f) * 0.5f * _t30 + _t31;
+        const float _t49 = 0.5f * (_t40 * (_t47 * _t31 * 2.0f - _t43 * _t38 * 2.0f - (_t33 - (_t20 * _t18 * 2.0f + _t25 * 2.0f + 2.0f * (_t16 * _t14) - _t33 * _t33 * 2.0f - _t46 - _t42 + _t34 * _t34 * 2.0f) * _t26 * 0.5f * _t30) * _t35 * 2.0f)) * _t30 - _t35;
+        const float _t50 = _t13 * 0.5f;
+        const float _t51 = _t20 + _t37 * _t50;
+        const float _t52 = _t16 + _t29 * _t50;
+        const float _t53 = _t34 * _t50 + _t24;
+        const float _t54 = (_t39 + sqrtf(_t45 * _t45 + _t48 * _t48 + _t49 * _t49)) * 1.5f - 2.0f * sqrtf(_t51 * _t51 + (_t52 * _t52 + _t53 * _t53));
+        out[i] = _t9 + _t12 - _t13 * ((fabsf(_t54) <= 1.73205256f) ? _t54 : ((_t54 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o3_offsetf(x[i], y[i], z[i], h[i]);
+    }
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Batch form of gyroid_o3_shellf: out[i] = gyroid_o3_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
+ */
+static inline void gyroid_o3_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t2 = 6.28318548f * y[i];
+        const float _t3 = offsetgen_batch_sinf(_t2);
+        const float _t4 = _t1 * _t3;
+        const float _t5 = offsetgen_batch_sinf(_t0);
+        const float _t6 = 6.28318548f * x[i];
+        const float _t7 = offsetgen_batch_cosf(_t6);
+        const float _t8 = _t5 * _t7;
+        const float _t9 = _t4 + _t8;
+        const float _t10 = offsetgen_batch_cosf(_t2);
+        const float _t11 = offsetgen_batch_sinf(_t6);
+        const float _t12 = _t10 * _t11;
+        const float _t13 = _t9 + _t12;
+        const float _t14 = _t3 * _t11;
+        const float _t15 = _t1 * _t10;
+        const float _t16 = _t14 - _t15;
+        const float _t17 = 6.28318548f * (t[i] * 0.5f);
+        const float _t18 = _t17 * 0.5f;
+        const float _t19 = _t1 * _t7;
+        const float _t20 = _t5 * _t3;
+        const float _t21 = _t19 - _t20;
+        const float _t22 = _t21 * _t21;
+        const float _t23 = _t16 * _t16;
+        const float _t24 = _t5 * _t11;
+        const float _t25 = _t10 * _t7;
+        const float _t26 = _t24 - _t25;
+        const float _t27 = _t26 * _t26;
+        const float _t28 = 1.0f / sqrtf(_t22 + _t23 + _t27);
+        const float _t29 = _t4 + _t12;
+        const float _t30 = _t3 * _t7;
+        const float _t31 = _t5 * _t10;
+        const float _t32 = _t28 * (2.0f * (_t16 * _t29) + _t30 * _t26 * 2.0f - _t21 * _t31 * 2.0f) * 0.5f;
+        const float _t33 = _t18 * _t32;
+        const float _t34 = _t16 + _t33;
+        const float _t35 = _t8 + _t12;
+        const float _t36 = _t1 * _t11;
+        const float _t37 = _t28 * (_t16 * _t30 * 2.0f + _t35 * _t26 * 2.0f - _t21 * _t36 * 2.0f) * 0.5f;
+        const float _t38 = _t18 * _t37;
+        const float _t39 = _t38 + _t26;
+        const float _t40 = _t28 * (_t21 * _t9 * 2.0f - _t36 * _t26 * 2.0f - _t31 * _t16 * 2.0f) * 0.5f;
+        const float _t41 = _t40 * _t18;
+        const float _t42 = _t21 + _t41;
+        const float _t43 = _t17 * 0.333333343f;
+        const float _t44 = _t37 * _t43;
+        const float _t45 = _t44 + _t26;
+        const float _t46 = _t32 * _t43;
+        const float _t47 = _t16 + _t46;
+        const float _t48 = _t40 * _t43;
+        const float _t49 = _t21 + _t48;
+        const float _t50 = sqrtf(_t47 * _t47 + _t45 * _t45 + _t49 * _t49);
+        const float _t51 = 1.0f / _t50;
+        const float _t52 = _t28 * (_t29 * _t30 * 2.0f + _t16 * _t25 * 2.0f + _t35 * _t30 * 2.0f + _t31 * _t36 * 2.0f - _t14 * _t26 * 2.0f - _t37 * _t32 * 2.0f) * 0.5f * _t43;
+        const float _t53 = _t52 + _t30;
+        const float _t54 = _t36 * _t36 * 2.0f;
+        const float _t55 = _t30 * _t30 * 2.0f;
+        const float _t56 = _t43 * ((_t16 * _t14 * 2.0f + _t27 * 2.0f + 2.0f * (_t21 * _t19) - _t35 * _t35 * 2.0f - _t54 - _t55 + _t37 * _t37 * 2.0f) * _t28 * 0.5f);
+        const float _t57 = (_t40 * _t37 * 2.0f + (_t26 * _t19 * 2.0f + (_t21 * _t24 * 2.0f + _t9 * _t36 * 2.0f + _t31 * _t30 * 2.0f) + _t35 * _t36 * 2.0f)) * _t28 * 0.5f * _t43;
+        const float _t58 = _t36 + _t57;
+        const float _t59 = _t45 + _t51 * (_t47 * _t53 * 2.0f + (_t35 - _t56) * _t45 * 2.0f - _t58 * _t49 * 2.0f) * 0.5f * _t43;
+        const float _t60 = _t43 * (_t28 * (_t40 * _t32 * 2.0f + (_t31 * _t29 * 2.0f + _t36 * _t30 * 2.0f + _t31 * _t9 * 2.0f - _t21 * _t15 * 2.0f - _t16 * _t20 * 2.0f)) * 0.5f);
+        const float _t61 = _t31 + _t60;
+        const float _t62 = _t31 * _t31 * 2.0f;
+        const float _t63 = (_t62 + _t25 * _t26 * 2.0f + _t21 * _t20 * 2.0f + _t29 * _t29 * 2.0f + _t55 - _t23 * 2.0f - _t32 * _t32 * 2.0f) * _t28 * 0.5f * _t43;
+        const float _t64 = (_t61 * _t49 * 2.0f - _t53 * _t45 * 2.0f - _t47 * (_t63 + _t29) * 2.0f) * _t51 * 0.5f * _t43 - _t47;
+        const float _t65 = _t43 * (0.5f * (_t28 * (_t62 + (_t16 * _t15 * 2.0f + _t9 * _t9 * 2.0f) + _t54 - _t24 * _t26 * 2.0f - _t22 * 2.0f - _t40 * _t40 * 2.0f)));
+        const float _t66 = _t51 * (_t58 * _t45 * 2.0f + _t47 * _t61 * 2.0f - _t49 * (_t9 + _t65) * 2.0f) * 0.5f * _t43 - _t49;
+        const float _t67 = sqrtf(_t34 * _t34 + _t39 * _t39 + _t42 * _t42) * 2.0f - 1.5f * (sqrtf(_t59 * _t59 + _t64 * _t64 + _t66 * _t66) + _t50);
+        const float _t68 = -_t67;
+        const float _t69 = _t44 - _t26;
+        const float _t70 = _t16 - _t46;
+        const float _t71 = _t21 - _t48;
+        const float _t72 = sqrtf(_t69 * _t69 + _t70 * _t70 + _t71 * _t71);
+        const float _t73 = _t52 - _t30;
+        const float _t74 = _t31 - _t60;
+        const float _t75 = 1.0f / _t72;
+        const float _t76 = (_t69 * _t73 * 2.0f - _t74 * _t71 * 2.0f - (_t63 - _t29) * _t70 * 2.0f) * _t75 * 0.5f * _t43 - _t70;
+        const float _t77 = _t36 - _t57;
+        const float _t78 = _t71 - ((_t9 - _t65) * _t71 * 2.0f + _t69 * _t77 * 2.0f - _t74 * _t70 * 2.0f) * _t75 * 0.5f * _t43;
+        const float _t79 = _t69 - (_t71 * _t77 * 2.0f + _t69 * (_t35 + _t56) * 2.0f + _t70 * _t73 * 2.0f) * _t75 * 0.5f * _t43;
+        const float _t80 = _t21 - _t41;
+        const float _t81 = _t38 - _t26;
+        const float _t82 = _t16 - _t33;
+        const float _t83 = 1.5f * (_t72 + sqrtf(_t76 * _t76 + _t78 * _t78 + _t79 * _t79)) - sqrtf(_t80 * _t80 + _t81 * _t81 + _t82 * _t82) * 2.0f;
+        out[i] = (_t13 - ((fabsf(_t67) <= 1.73205256f) ? _t68 : ((_t68 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t17) * (((fabsf(_t83) <= 1.73205256f) ? _t83 : ((_t83 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t17 + _t13);
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o3_shellf(x[i], y[i], z[i], t[i]);
+    }
 }
 
 

@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 15
     - offset: 99
     - shell: 117
-    - normal: 279
+    - normal: 293
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":99,"shell":117,"normal":279}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":99,"shell":117,"normal":293}} */
 #ifndef OFFSETGEN_NEOVIUS_O2_GLSL
 #define OFFSETGEN_NEOVIUS_O2_GLSL
 
@@ -125,7 +125,7 @@ highp float neovius_o2_shell(highp vec3 p, highp float t)
     return (_t11 + _t12 * ((abs(_t32) <= 7.00000715) ? _t32 : ((_t32 > 0.0) ? 7.00000715 : (-7.00000715)))) * (_t11 - _t12 * ((abs(_t36) <= 7.00000715) ? _t36 : ((_t36 > 0.0) ? 7.00000715 : (-7.00000715))));
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 279.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 293.
 highp vec3 neovius_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -149,42 +149,49 @@ highp vec3 neovius_o2_normal(highp vec3 p, highp float h)
     highp float _t18 = 4.0 * (_t17 * _t16);
     highp float _t19 = 3.0 * _t16 + _t18;
     highp float _t20 = _t19 * _t19;
-    highp float _t21 = 1.0 / sqrt(_t14 + _t15 + _t20);
-    highp float _t22 = _t17 * _t6 * 4.0;
-    highp float _t23 = _t22 + _t9 * 3.0;
-    highp float _t24 = _t1 * _t10;
-    highp float _t25 = 4.0 * (_t6 * _t24);
-    highp float _t26 = 4.0 * (_t4 * _t16);
-    highp float _t27 = _t21 * (_t8 * _t23 * 2.0 - _t13 * _t25 * 2.0 - _t26 * _t19 * 2.0) * 0.5;
-    highp float _t28 = 6.28318548 * h;
-    highp float _t29 = _t28 * 0.5;
-    highp float _t30 = _t8 + _t27 * _t29;
-    highp float _t31 = 4.0 * (_t11 * _t16);
-    highp float _t32 = _t22 + _t3 * 3.0;
-    highp float _t33 = (_t8 * _t25 * 2.0 + _t31 * _t19 * 2.0 - _t13 * _t32 * 2.0) * _t21 * 0.5;
-    highp float _t34 = _t13 - _t33 * _t29;
-    highp float _t35 = _t22 + 3.0 * _t6;
-    highp float _t36 = (_t35 * _t19 * 2.0 - _t8 * _t26 * 2.0 - _t31 * _t13 * 2.0) * _t21 * 0.5;
-    highp float _t37 = _t36 * _t29 + _t19;
-    highp float _t38 = sqrt(_t30 * _t30 + _t34 * _t34 + _t37 * _t37);
-    bool _t39 = abs(_t38) <= 7.00000715;
-    highp float _t40 = _t16 * _t24 * 4.0;
-    highp float _t41 = _t31 - _t21 * (_t33 * _t36 * 2.0 + (2.0 * (_t8 * _t40) + _t26 * _t25 * 2.0 - _t13 * _t18 * 2.0 - _t31 * _t35 * 2.0 - _t12 * _t19 * 2.0 - _t31 * _t32 * 2.0)) * 0.5 * _t29;
-    highp float _t42 = _t8 * _t7 * 2.0;
-    highp float _t43 = _t18 * _t19 * 2.0;
-    highp float _t44 = _t25 * _t25 * 2.0;
-    highp float _t45 = _t31 * _t31 * 2.0;
-    highp float _t46 = _t21 * (_t33 * _t27 * 2.0 - (_t13 * _t7 * 2.0 + _t25 * _t23 * 2.0 + _t8 * _t12 * 2.0 + _t32 * _t25 * 2.0 - _t40 * _t19 * 2.0 - _t31 * _t26 * 2.0)) * 0.5 * _t29 - _t25;
-    highp float _t47 = 1.0 / _t38;
-    highp float _t48 = (_t39) ? _t28 * ((_t41 * _t37 * 2.0 + 2.0 * (_t34 * (0.5 * (_t21 * (_t33 * _t33 * 2.0 + (_t42 + _t14 * 2.0 + _t43 - _t32 * _t32 * 2.0 - _t44 - _t45))) * _t29 - _t32)) - _t30 * _t46 * 2.0) * _t47 * 0.5) - _t13 : -_t13;
-    highp float _t49 = _t13 * _t12 * 2.0;
-    highp float _t50 = _t26 * _t26 * 2.0;
-    highp float _t51 = _t26 + (_t36 * _t27 * 2.0 + (_t8 * _t18 * 2.0 + _t26 * _t23 * 2.0 + _t26 * _t35 * 2.0 + _t19 * _t7 * 2.0 - _t31 * _t25 * 2.0 - _t13 * _t40 * 2.0)) * _t21 * 0.5 * _t29;
-    highp float _t52 = (_t39) ? _t28 * ((_t37 * ((_t42 + _t20 * 2.0 + _t49 - _t35 * _t35 * 2.0 - _t45 - _t50 + _t36 * _t36 * 2.0) * _t21 * 0.5 * _t29 - _t35) * 2.0 + (_t30 * _t51 * 2.0 + _t41 * _t34 * 2.0)) * _t47 * 0.5) - _t19 : -_t19;
-    highp float _t53 = (_t39) ? -(_t8 + _t28 * ((_t30 * (_t23 - _t21 * (_t15 * 2.0 + _t49 + _t43 - _t44 - _t50 - _t23 * _t23 * 2.0 + _t27 * _t27 * 2.0) * 0.5 * _t29) * 2.0 + _t34 * _t46 * 2.0 - _t51 * _t37 * 2.0) * _t47 * 0.5)) : -_t8;
-    highp float _t54 = _t48 * _t48 + _t52 * _t52 + _t53 * _t53;
-    highp float _t55 = (_t54 > 0.0) ? 1.0 / sqrt(_t54) : 0.0;
-    return vec3(_t55 * _t52, _t55 * _t48, _t55 * _t53);
+    highp float _t21 = _t14 + _t15 + _t20;
+    highp float _t22 = 1.0 / sqrt(_t21);
+    highp float _t23 = _t17 * _t6 * 4.0;
+    highp float _t24 = _t23 + _t9 * 3.0;
+    highp float _t25 = _t1 * _t10;
+    highp float _t26 = 4.0 * (_t6 * _t25);
+    highp float _t27 = 4.0 * (_t4 * _t16);
+    highp float _t28 = _t22 * (_t8 * _t24 * 2.0 - _t13 * _t26 * 2.0 - _t27 * _t19 * 2.0) * 0.5;
+    highp float _t29 = 6.28318548 * h;
+    highp float _t30 = _t29 * 0.5;
+    highp float _t31 = _t8 + _t28 * _t30;
+    highp float _t32 = 4.0 * (_t11 * _t16);
+    highp float _t33 = _t23 + _t3 * 3.0;
+    highp float _t34 = (_t8 * _t26 * 2.0 + _t32 * _t19 * 2.0 - _t13 * _t33 * 2.0) * _t22 * 0.5;
+    highp float _t35 = _t13 - _t34 * _t30;
+    highp float _t36 = _t23 + 3.0 * _t6;
+    highp float _t37 = (_t36 * _t19 * 2.0 - _t8 * _t27 * 2.0 - _t32 * _t13 * 2.0) * _t22 * 0.5;
+    highp float _t38 = _t37 * _t30 + _t19;
+    highp float _t39 = sqrt(_t31 * _t31 + _t35 * _t35 + _t38 * _t38);
+    bool _t40 = abs(_t39) <= 7.00000715;
+    highp float _t41 = _t16 * _t25 * 4.0;
+    highp float _t42 = _t32 - _t22 * (_t34 * _t37 * 2.0 + (2.0 * (_t8 * _t41) + _t27 * _t26 * 2.0 - _t13 * _t18 * 2.0 - _t32 * _t36 * 2.0 - _t12 * _t19 * 2.0 - _t32 * _t33 * 2.0)) * 0.5 * _t30;
+    highp float _t43 = _t8 * _t7 * 2.0;
+    highp float _t44 = _t18 * _t19 * 2.0;
+    highp float _t45 = _t26 * _t26 * 2.0;
+    highp float _t46 = _t32 * _t32 * 2.0;
+    highp float _t47 = _t22 * (_t34 * _t28 * 2.0 - (_t13 * _t7 * 2.0 + _t26 * _t24 * 2.0 + _t8 * _t12 * 2.0 + _t33 * _t26 * 2.0 - _t41 * _t19 * 2.0 - _t32 * _t27 * 2.0)) * 0.5 * _t30 - _t26;
+    highp float _t48 = 1.0 / _t39;
+    highp float _t49 = (_t40) ? _t29 * ((_t42 * _t38 * 2.0 + 2.0 * (_t35 * (0.5 * (_t22 * (_t34 * _t34 * 2.0 + (_t43 + _t14 * 2.0 + _t44 - _t33 * _t33 * 2.0 - _t45 - _t46))) * _t30 - _t33)) - _t31 * _t47 * 2.0) * _t48 * 0.5) - _t13 : -_t13;
+    highp float _t50 = _t13 * _t12 * 2.0;
+    highp float _t51 = _t27 * _t27 * 2.0;
+    highp float _t52 = _t27 + (_t37 * _t28 * 2.0 + (_t8 * _t18 * 2.0 + _t27 * _t24 * 2.0 + _t27 * _t36 * 2.0 + _t19 * _t7 * 2.0 - _t32 * _t26 * 2.0 - _t13 * _t41 * 2.0)) * _t22 * 0.5 * _t30;
+    highp float _t53 = (_t40) ? _t29 * ((_t38 * ((_t43 + _t20 * 2.0 + _t50 - _t36 * _t36 * 2.0 - _t46 - _t51 + _t37 * _t37 * 2.0) * _t22 * 0.5 * _t30 - _t36) * 2.0 + (_t31 * _t52 * 2.0 + _t42 * _t35 * 2.0)) * _t48 * 0.5) - _t19 : -_t19;
+    highp float _t54 = (_t40) ? -(_t8 + _t29 * ((_t31 * (_t24 - _t22 * (_t15 * 2.0 + _t50 + _t44 - _t45 - _t51 - _t24 * _t24 * 2.0 + _t28 * _t28 * 2.0) * 0.5 * _t30) * 2.0 + _t35 * _t47 * 2.0 - _t52 * _t38 * 2.0) * _t48 * 0.5)) : -_t8;
+    highp float _t55 = _t49 * _t49 + _t53 * _t53 + _t54 * _t54;
+    bool _t56 = _t55 > 0.0;
+    bool _t57 = _t55 <= 1.00000002e+30;
+    highp float _t58 = 1.0 / sqrt(_t55);
+    highp float _t59 = (_t21 > 0.0) ? _t22 : 0.0;
+    highp float _t60 = -(_t59 * _t19);
+    highp float _t61 = -(_t13 * _t59);
+    highp float _t62 = -(_t8 * _t59);
+    return vec3((_t56) ? ((_t57) ? _t58 * _t53 : _t60) : _t60, (_t56) ? ((_t57) ? _t58 * _t49 : _t61) : _t61, (_t56) ? ((_t57) ? _t58 * _t54 : _t62) : _t62);
 }
 
 

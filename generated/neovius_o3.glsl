@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 15
     - offset: 290
     - shell: 371
-    - normal: 776
+    - normal: 790
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o3","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":290,"shell":371,"normal":776}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o3","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":290,"shell":371,"normal":790}} */
 #ifndef OFFSETGEN_NEOVIUS_O3_GLSL
 #define OFFSETGEN_NEOVIUS_O3_GLSL
 
@@ -208,7 +208,7 @@ highp float neovius_o3_shell(highp vec3 p, highp float t)
     return (_t11 - _t12 * ((abs(_t72) <= 7.00000715) ? _t72 : ((_t72 > 0.0) ? 7.00000715 : (-7.00000715)))) * (_t11 + _t12 * ((abs(_t87) <= 7.00000715) ? _t88 : ((_t88 > 0.0) ? 7.00000715 : (-7.00000715))));
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 776.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 790.
 highp vec3 neovius_o3_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -234,109 +234,116 @@ highp vec3 neovius_o3_normal(highp vec3 p, highp float h)
     highp float _t20 = 4.0 * (_t19 * _t18);
     highp float _t21 = 3.0 * _t18 + _t20;
     highp float _t22 = _t21 * _t21;
-    highp float _t23 = 1.0 / sqrt(_t16 + _t17 + _t22);
-    highp float _t24 = _t19 * _t6 * 4.0;
-    highp float _t25 = _t24 + _t11 * 3.0;
-    highp float _t26 = _t8 * _t25;
-    highp float _t27 = _t26 * 2.0;
-    highp float _t28 = _t1 * _t12;
-    highp float _t29 = 4.0 * (_t6 * _t28);
-    highp float _t30 = _t15 * _t29 * 2.0;
-    highp float _t31 = 4.0 * (_t4 * _t18);
-    highp float _t32 = _t31 * _t21 * 2.0;
-    highp float _t33 = _t23 * (_t27 - _t30 - _t32) * 0.5;
-    highp float _t34 = _t8 + _t10 * _t33;
-    highp float _t35 = _t24 + 3.0 * _t6;
-    highp float _t36 = _t35 * _t21;
-    highp float _t37 = _t36 * 2.0;
-    highp float _t38 = _t8 * _t31 * 2.0;
-    highp float _t39 = 4.0 * (_t13 * _t18);
-    highp float _t40 = _t39 * _t15 * 2.0;
-    highp float _t41 = (_t37 - _t38 - _t40) * _t23 * 0.5;
-    highp float _t42 = _t41 * _t10 + _t21;
-    highp float _t43 = _t8 * _t29 * 2.0;
-    highp float _t44 = _t39 * _t21 * 2.0;
-    highp float _t45 = _t24 + _t3 * 3.0;
-    highp float _t46 = _t15 * _t45;
-    highp float _t47 = _t46 * 2.0;
-    highp float _t48 = (_t43 + _t44 - _t47) * _t23 * 0.5;
-    highp float _t49 = _t15 - _t48 * _t10;
-    highp float _t50 = sqrt(_t34 * _t34 + _t42 * _t42 + _t49 * _t49);
-    highp float _t51 = _t15 * _t14 * 2.0;
-    highp float _t52 = _t20 * _t21 * 2.0;
-    highp float _t53 = _t29 * _t29 * 2.0;
-    highp float _t54 = _t31 * _t31 * 2.0;
-    highp float _t55 = _t23 * (_t17 * 2.0 + _t51 + _t52 - _t53 - _t54 - _t25 * _t25 * 2.0 + _t33 * _t33 * 2.0) * 0.5;
-    highp float _t56 = _t55 * _t10 - _t25;
-    highp float _t57 = _t18 * _t28 * 4.0;
-    highp float _t58 = (_t41 * _t33 * 2.0 + (_t8 * _t20 * 2.0 + _t31 * _t25 * 2.0 + _t31 * _t35 * 2.0 + _t21 * _t7 * 2.0 - _t39 * _t29 * 2.0 - _t15 * _t57 * 2.0)) * _t23 * 0.5;
-    highp float _t59 = _t31 + _t10 * _t58;
-    highp float _t60 = _t23 * (_t48 * _t33 * 2.0 - (_t15 * _t7 * 2.0 + _t29 * _t25 * 2.0 + _t8 * _t14 * 2.0 + _t45 * _t29 * 2.0 - _t57 * _t21 * 2.0 - _t39 * _t31 * 2.0)) * 0.5;
-    highp float _t61 = _t60 * _t10 - _t29;
-    highp float _t62 = 1.0 / _t50;
-    highp float _t63 = (_t34 * _t56 * 2.0 + _t42 * _t59 * 2.0 - 2.0 * (_t61 * _t49)) * _t62 * 0.5;
-    highp float _t64 = _t34 - _t63 * _t10;
-    highp float _t65 = _t8 * _t7 * 2.0;
-    highp float _t66 = _t39 * _t39 * 2.0;
-    highp float _t67 = 0.5 * (_t23 * (_t48 * _t48 * 2.0 + (_t65 + _t16 * 2.0 + _t52 - _t45 * _t45 * 2.0 - _t53 - _t66)));
-    highp float _t68 = _t45 - _t67 * _t10;
-    highp float _t69 = _t23 * (_t48 * _t41 * 2.0 + (2.0 * (_t8 * _t57) + _t31 * _t29 * 2.0 - _t15 * _t20 * 2.0 - _t39 * _t35 * 2.0 - _t14 * _t21 * 2.0 - _t39 * _t45 * 2.0)) * 0.5;
-    highp float _t70 = _t39 - _t69 * _t10;
-    highp float _t71 = 0.5 * ((_t49 * _t68 * 2.0 + _t34 * _t61 * 2.0 - _t70 * _t42 * 2.0) * _t62);
-    highp float _t72 = _t49 + _t71 * _t10;
-    highp float _t73 = (_t65 + _t22 * 2.0 + _t51 - _t35 * _t35 * 2.0 - _t66 - _t54 + _t41 * _t41 * 2.0) * _t23 * 0.5;
-    highp float _t74 = _t35 - _t73 * _t10;
-    highp float _t75 = (_t74 * _t42 * 2.0 - _t49 * _t70 * 2.0 - _t34 * _t59 * 2.0) * _t62 * 0.5;
-    highp float _t76 = _t75 * _t10 + _t42;
-    highp float _t77 = sqrt(_t64 * _t64 + _t72 * _t72 + _t76 * _t76);
-    highp float _t78 = _t9 * 0.5;
-    highp float _t79 = _t8 + _t33 * _t78;
-    highp float _t80 = _t15 - _t48 * _t78;
-    highp float _t81 = _t41 * _t78 + _t21;
-    highp float _t82 = sqrt(_t79 * _t79 + _t80 * _t80 + _t81 * _t81);
-    bool _t83 = abs(1.5 * (_t50 + _t77) - _t82 * 2.0) <= 7.00000715;
-    highp float _t84 = _t31 + _t58 * _t78;
-    highp float _t85 = _t39 - _t69 * _t78;
-    highp float _t86 = 1.0 / _t82;
-    highp float _t87 = 1.0 / _t77;
-    highp float _t88 = _t15 * _t24 * 2.0;
-    highp float _t89 = _t14 * _t45 * 2.0;
-    highp float _t90 = _t31 * _t57 * 4.0;
-    highp float _t91 = _t29 * _t7;
-    highp float _t92 = _t39 * _t20;
-    highp float _t93 = _t14 + _t23 * (_t69 * _t41 * 4.0 + _t48 * _t73 * 2.0 + (_t14 * _t35 * 4.0 + _t88 + _t89 + _t90 - _t43 - _t91 * 2.0 - _t44 - _t44 - _t92 * 4.0)) * 0.5 * _t10;
-    highp float _t94 = _t39 * _t14;
-    highp float _t95 = _t31 * _t7;
-    highp float _t96 = 2.0 * (_t35 * _t20);
-    highp float _t97 = _t24 * _t21 * 2.0;
-    highp float _t98 = 4.0 * (_t57 * _t29);
-    highp float _t99 = _t20 - 0.5 * ((4.0 * _t94 + (_t95 * 2.0 + _t38) + _t40 + _t40 - _t96 - 4.0 * (_t20 * _t45) - _t97 - _t98 + 4.0 * (_t48 * _t69) + _t41 * _t67 * 2.0) * _t23) * _t10;
-    highp float _t100 = _t39 * _t7 * 2.0;
-    highp float _t101 = _t14 * _t31 * 2.0;
-    highp float _t102 = _t20 * _t29 * 2.0;
-    highp float _t103 = _t57 - (_t48 * _t58 * 2.0 + _t69 * _t33 * 2.0 + _t60 * _t41 * 2.0 - (_t100 + (_t57 * _t45 * 2.0 + _t100) + _t8 * _t39 * 2.0 + _t57 * _t25 * 2.0 + _t101 + _t101 + _t102 + _t102 + _t57 * _t35 * 2.0 + _t15 * _t31 * 2.0 + _t21 * _t29 * 2.0)) * _t23 * 0.5 * _t10;
-    highp float _t104 = _t70 + (_t93 * _t42 * 2.0 + (_t70 * _t74 * 2.0 + _t70 * _t68 * 2.0 + _t99 * _t49 * 2.0 + _t61 * _t59 * 2.0) - _t34 * _t103 * 2.0 + _t71 * _t75 * 2.0) * _t62 * 0.5 * _t10;
-    highp float _t105 = _t20 - (4.0 * (_t58 * _t33) + _t55 * _t41 * 2.0 - (_t96 + _t97 + _t20 * _t25 * 4.0 + _t98 - _t38 - _t38 - 4.0 * _t95 - _t94 * 2.0 - _t40)) * _t23 * 0.5 * _t10;
-    highp float _t106 = _t31 * _t20;
-    highp float _t107 = _t14 * _t29;
-    highp float _t108 = _t8 * _t24 * 2.0;
-    highp float _t109 = 4.0 * (_t39 * _t57);
-    highp float _t110 = _t25 * _t7 * 2.0;
-    highp float _t111 = _t23 * (4.0 * (_t41 * _t58) + (4.0 * _t106 + _t30 + _t32 + _t32 + _t107 * 2.0 - _t108 - _t109 - 4.0 * (_t35 * _t7) - _t110) + _t73 * _t33 * 2.0) * 0.5 * _t10 - _t7;
-    highp float _t112 = (_t34 * _t105 * 2.0 + _t74 * _t59 * 2.0 + _t61 * _t70 * 2.0 - _t56 * _t59 * 2.0 - _t49 * _t103 * 2.0 - _t111 * _t42 * 2.0 - _t75 * _t63 * 2.0) * _t62 * 0.5 * _t10 + _t59;
-    highp float _t113 = 2.0 * (_t70 * _t70);
-    highp float _t114 = _t59 * _t59 * 2.0;
-    highp float _t115 = (_t83) ? -(_t9 * ((_t81 * (_t73 * _t78 - _t35) * 2.0 + (_t79 * _t84 * 2.0 + _t85 * _t80 * 2.0)) * _t86 * 0.5 * 2.0 - 1.5 * (_t87 * (_t104 * _t72 * 2.0 + _t64 * _t112 * 2.0 - _t76 * (_t74 + (_t113 + (_t114 + _t42 * ((_t73 * _t41 * 6.0 + (6.0 * _t95 + (_t94 * 6.0 + _t38) + _t40 - _t37 - _t36 * 6.0)) * _t23 * 0.5 * _t10 - _t21) * 2.0) + _t74 * _t74 * 2.0 + _t34 * _t111 * 2.0 - _t93 * _t49 * 2.0 - _t75 * _t75 * 2.0) * _t62 * 0.5 * _t10) * 2.0) * 0.5 - _t75)) + _t21) : -_t21;
-    highp float _t116 = _t60 * _t78 - _t29;
-    highp float _t117 = _t23 * (_t108 + 4.0 * (_t45 * _t7) + _t109 + _t110 - _t106 * 2.0 - _t30 - _t30 - _t32 - _t107 * 4.0 - _t67 * _t33 * 2.0 - 4.0 * (_t48 * _t60)) * 0.5 * _t10 + _t7;
-    highp float _t118 = _t14 + _t10 * ((_t48 * _t55 * 2.0 + 4.0 * (_t60 * _t33) - (_t44 + (_t43 + (_t92 * 2.0 + 4.0 * _t91) + _t43) - _t88 - _t89 - 4.0 * (_t14 * _t25) - _t90)) * _t23 * 0.5);
-    highp float _t119 = _t61 + (_t71 * _t63 * 2.0 + (_t103 * _t42 * 2.0 + _t61 * _t68 * 2.0 + _t70 * _t59 * 2.0 - _t61 * _t56 * 2.0 - 2.0 * (_t117 * _t49) - _t34 * _t118 * 2.0)) * _t62 * 0.5 * _t10;
-    highp float _t120 = _t61 * _t61 * 2.0;
-    highp float _t121 = (_t83) ? _t9 * ((_t79 * (_t25 - _t55 * _t78) * 2.0 + _t80 * _t116 * 2.0 - _t84 * _t81 * 2.0) * _t86 * 0.5 * 2.0 - 1.5 * (_t87 * (_t119 * _t72 * 2.0 - _t76 * _t112 * 2.0 - _t64 * (_t56 + (_t63 * _t63 * 2.0 - (_t114 + _t56 * _t56 * 2.0 + _t34 * ((_t55 * _t33 * 6.0 - (_t27 + _t26 * 6.0 - _t30 - _t32 - 6.0 * _t106 - _t107 * 6.0)) * _t23 * 0.5 * _t10 - _t8) * 2.0 + _t120 - _t42 * _t105 * 2.0 - _t118 * _t49 * 2.0)) * _t62 * 0.5 * _t10) * 2.0) * 0.5 - _t63)) - _t8 : -_t8;
-    highp float _t122 = (_t83) ? -(_t15 + _t9 * ((_t85 * _t81 * 2.0 + 2.0 * (_t80 * (_t67 * _t78 - _t45)) - _t79 * _t116 * 2.0) * _t86 * 0.5 * 2.0 + 1.5 * (_t71 - _t87 * (_t104 * _t76 * 2.0 - (_t68 - _t62 * (_t71 * _t71 * 2.0 + (_t99 * _t42 * 2.0 + _t49 * (_t23 * (_t48 * _t67 * 6.0 + (_t46 * 6.0 + _t47 - _t92 * 6.0 - _t43 - _t44 - _t91 * 6.0)) * 0.5 * _t10 + _t15) * 2.0 + _t34 * _t117 * 2.0 - _t68 * _t68 * 2.0 - _t113 - _t120)) * 0.5 * _t10) * _t72 * 2.0 - _t64 * _t119 * 2.0) * 0.5))) : -_t15;
-    highp float _t123 = _t115 * _t115 + _t121 * _t121 + _t122 * _t122;
-    highp float _t124 = (_t123 > 0.0) ? 1.0 / sqrt(_t123) : 0.0;
-    return vec3(_t124 * _t115, _t122 * _t124, _t124 * _t121);
+    highp float _t23 = _t16 + _t17 + _t22;
+    highp float _t24 = 1.0 / sqrt(_t23);
+    highp float _t25 = _t19 * _t6 * 4.0;
+    highp float _t26 = _t25 + _t11 * 3.0;
+    highp float _t27 = _t8 * _t26;
+    highp float _t28 = _t27 * 2.0;
+    highp float _t29 = _t1 * _t12;
+    highp float _t30 = 4.0 * (_t6 * _t29);
+    highp float _t31 = _t15 * _t30 * 2.0;
+    highp float _t32 = 4.0 * (_t4 * _t18);
+    highp float _t33 = _t32 * _t21 * 2.0;
+    highp float _t34 = _t24 * (_t28 - _t31 - _t33) * 0.5;
+    highp float _t35 = _t8 + _t10 * _t34;
+    highp float _t36 = _t25 + 3.0 * _t6;
+    highp float _t37 = _t36 * _t21;
+    highp float _t38 = _t37 * 2.0;
+    highp float _t39 = _t8 * _t32 * 2.0;
+    highp float _t40 = 4.0 * (_t13 * _t18);
+    highp float _t41 = _t40 * _t15 * 2.0;
+    highp float _t42 = (_t38 - _t39 - _t41) * _t24 * 0.5;
+    highp float _t43 = _t42 * _t10 + _t21;
+    highp float _t44 = _t8 * _t30 * 2.0;
+    highp float _t45 = _t40 * _t21 * 2.0;
+    highp float _t46 = _t25 + _t3 * 3.0;
+    highp float _t47 = _t15 * _t46;
+    highp float _t48 = _t47 * 2.0;
+    highp float _t49 = (_t44 + _t45 - _t48) * _t24 * 0.5;
+    highp float _t50 = _t15 - _t49 * _t10;
+    highp float _t51 = sqrt(_t35 * _t35 + _t43 * _t43 + _t50 * _t50);
+    highp float _t52 = _t15 * _t14 * 2.0;
+    highp float _t53 = _t20 * _t21 * 2.0;
+    highp float _t54 = _t30 * _t30 * 2.0;
+    highp float _t55 = _t32 * _t32 * 2.0;
+    highp float _t56 = _t24 * (_t17 * 2.0 + _t52 + _t53 - _t54 - _t55 - _t26 * _t26 * 2.0 + _t34 * _t34 * 2.0) * 0.5;
+    highp float _t57 = _t56 * _t10 - _t26;
+    highp float _t58 = _t18 * _t29 * 4.0;
+    highp float _t59 = (_t42 * _t34 * 2.0 + (_t8 * _t20 * 2.0 + _t32 * _t26 * 2.0 + _t32 * _t36 * 2.0 + _t21 * _t7 * 2.0 - _t40 * _t30 * 2.0 - _t15 * _t58 * 2.0)) * _t24 * 0.5;
+    highp float _t60 = _t32 + _t10 * _t59;
+    highp float _t61 = _t24 * (_t49 * _t34 * 2.0 - (_t15 * _t7 * 2.0 + _t30 * _t26 * 2.0 + _t8 * _t14 * 2.0 + _t46 * _t30 * 2.0 - _t58 * _t21 * 2.0 - _t40 * _t32 * 2.0)) * 0.5;
+    highp float _t62 = _t61 * _t10 - _t30;
+    highp float _t63 = 1.0 / _t51;
+    highp float _t64 = (_t35 * _t57 * 2.0 + _t43 * _t60 * 2.0 - 2.0 * (_t62 * _t50)) * _t63 * 0.5;
+    highp float _t65 = _t35 - _t64 * _t10;
+    highp float _t66 = _t8 * _t7 * 2.0;
+    highp float _t67 = _t40 * _t40 * 2.0;
+    highp float _t68 = 0.5 * (_t24 * (_t49 * _t49 * 2.0 + (_t66 + _t16 * 2.0 + _t53 - _t46 * _t46 * 2.0 - _t54 - _t67)));
+    highp float _t69 = _t46 - _t68 * _t10;
+    highp float _t70 = _t24 * (_t49 * _t42 * 2.0 + (2.0 * (_t8 * _t58) + _t32 * _t30 * 2.0 - _t15 * _t20 * 2.0 - _t40 * _t36 * 2.0 - _t14 * _t21 * 2.0 - _t40 * _t46 * 2.0)) * 0.5;
+    highp float _t71 = _t40 - _t70 * _t10;
+    highp float _t72 = 0.5 * ((_t50 * _t69 * 2.0 + _t35 * _t62 * 2.0 - _t71 * _t43 * 2.0) * _t63);
+    highp float _t73 = _t50 + _t72 * _t10;
+    highp float _t74 = (_t66 + _t22 * 2.0 + _t52 - _t36 * _t36 * 2.0 - _t67 - _t55 + _t42 * _t42 * 2.0) * _t24 * 0.5;
+    highp float _t75 = _t36 - _t74 * _t10;
+    highp float _t76 = (_t75 * _t43 * 2.0 - _t50 * _t71 * 2.0 - _t35 * _t60 * 2.0) * _t63 * 0.5;
+    highp float _t77 = _t76 * _t10 + _t43;
+    highp float _t78 = sqrt(_t65 * _t65 + _t73 * _t73 + _t77 * _t77);
+    highp float _t79 = _t9 * 0.5;
+    highp float _t80 = _t8 + _t34 * _t79;
+    highp float _t81 = _t15 - _t49 * _t79;
+    highp float _t82 = _t42 * _t79 + _t21;
+    highp float _t83 = sqrt(_t80 * _t80 + _t81 * _t81 + _t82 * _t82);
+    bool _t84 = abs(1.5 * (_t51 + _t78) - _t83 * 2.0) <= 7.00000715;
+    highp float _t85 = _t32 + _t59 * _t79;
+    highp float _t86 = _t40 - _t70 * _t79;
+    highp float _t87 = 1.0 / _t83;
+    highp float _t88 = 1.0 / _t78;
+    highp float _t89 = _t15 * _t25 * 2.0;
+    highp float _t90 = _t14 * _t46 * 2.0;
+    highp float _t91 = _t32 * _t58 * 4.0;
+    highp float _t92 = _t30 * _t7;
+    highp float _t93 = _t40 * _t20;
+    highp float _t94 = _t14 + _t24 * (_t70 * _t42 * 4.0 + _t49 * _t74 * 2.0 + (_t14 * _t36 * 4.0 + _t89 + _t90 + _t91 - _t44 - _t92 * 2.0 - _t45 - _t45 - _t93 * 4.0)) * 0.5 * _t10;
+    highp float _t95 = _t40 * _t14;
+    highp float _t96 = _t32 * _t7;
+    highp float _t97 = 2.0 * (_t36 * _t20);
+    highp float _t98 = _t25 * _t21 * 2.0;
+    highp float _t99 = 4.0 * (_t58 * _t30);
+    highp float _t100 = _t20 - 0.5 * ((4.0 * _t95 + (_t96 * 2.0 + _t39) + _t41 + _t41 - _t97 - 4.0 * (_t20 * _t46) - _t98 - _t99 + 4.0 * (_t49 * _t70) + _t42 * _t68 * 2.0) * _t24) * _t10;
+    highp float _t101 = _t40 * _t7 * 2.0;
+    highp float _t102 = _t14 * _t32 * 2.0;
+    highp float _t103 = _t20 * _t30 * 2.0;
+    highp float _t104 = _t58 - (_t49 * _t59 * 2.0 + _t70 * _t34 * 2.0 + _t61 * _t42 * 2.0 - (_t101 + (_t58 * _t46 * 2.0 + _t101) + _t8 * _t40 * 2.0 + _t58 * _t26 * 2.0 + _t102 + _t102 + _t103 + _t103 + _t58 * _t36 * 2.0 + _t15 * _t32 * 2.0 + _t21 * _t30 * 2.0)) * _t24 * 0.5 * _t10;
+    highp float _t105 = _t71 + (_t94 * _t43 * 2.0 + (_t71 * _t75 * 2.0 + _t71 * _t69 * 2.0 + _t100 * _t50 * 2.0 + _t62 * _t60 * 2.0) - _t35 * _t104 * 2.0 + _t72 * _t76 * 2.0) * _t63 * 0.5 * _t10;
+    highp float _t106 = _t20 - (4.0 * (_t59 * _t34) + _t56 * _t42 * 2.0 - (_t97 + _t98 + _t20 * _t26 * 4.0 + _t99 - _t39 - _t39 - 4.0 * _t96 - _t95 * 2.0 - _t41)) * _t24 * 0.5 * _t10;
+    highp float _t107 = _t32 * _t20;
+    highp float _t108 = _t14 * _t30;
+    highp float _t109 = _t8 * _t25 * 2.0;
+    highp float _t110 = 4.0 * (_t40 * _t58);
+    highp float _t111 = _t26 * _t7 * 2.0;
+    highp float _t112 = _t24 * (4.0 * (_t42 * _t59) + (4.0 * _t107 + _t31 + _t33 + _t33 + _t108 * 2.0 - _t109 - _t110 - 4.0 * (_t36 * _t7) - _t111) + _t74 * _t34 * 2.0) * 0.5 * _t10 - _t7;
+    highp float _t113 = (_t35 * _t106 * 2.0 + _t75 * _t60 * 2.0 + _t62 * _t71 * 2.0 - _t57 * _t60 * 2.0 - _t50 * _t104 * 2.0 - _t112 * _t43 * 2.0 - _t76 * _t64 * 2.0) * _t63 * 0.5 * _t10 + _t60;
+    highp float _t114 = 2.0 * (_t71 * _t71);
+    highp float _t115 = _t60 * _t60 * 2.0;
+    highp float _t116 = (_t84) ? -(_t9 * ((_t82 * (_t74 * _t79 - _t36) * 2.0 + (_t80 * _t85 * 2.0 + _t86 * _t81 * 2.0)) * _t87 * 0.5 * 2.0 - 1.5 * (_t88 * (_t105 * _t73 * 2.0 + _t65 * _t113 * 2.0 - _t77 * (_t75 + (_t114 + (_t115 + _t43 * ((_t74 * _t42 * 6.0 + (6.0 * _t96 + (_t95 * 6.0 + _t39) + _t41 - _t38 - _t37 * 6.0)) * _t24 * 0.5 * _t10 - _t21) * 2.0) + _t75 * _t75 * 2.0 + _t35 * _t112 * 2.0 - _t94 * _t50 * 2.0 - _t76 * _t76 * 2.0) * _t63 * 0.5 * _t10) * 2.0) * 0.5 - _t76)) + _t21) : -_t21;
+    highp float _t117 = _t61 * _t79 - _t30;
+    highp float _t118 = _t24 * (_t109 + 4.0 * (_t46 * _t7) + _t110 + _t111 - _t107 * 2.0 - _t31 - _t31 - _t33 - _t108 * 4.0 - _t68 * _t34 * 2.0 - 4.0 * (_t49 * _t61)) * 0.5 * _t10 + _t7;
+    highp float _t119 = _t14 + _t10 * ((_t49 * _t56 * 2.0 + 4.0 * (_t61 * _t34) - (_t45 + (_t44 + (_t93 * 2.0 + 4.0 * _t92) + _t44) - _t89 - _t90 - 4.0 * (_t14 * _t26) - _t91)) * _t24 * 0.5);
+    highp float _t120 = _t62 + (_t72 * _t64 * 2.0 + (_t104 * _t43 * 2.0 + _t62 * _t69 * 2.0 + _t71 * _t60 * 2.0 - _t62 * _t57 * 2.0 - 2.0 * (_t118 * _t50) - _t35 * _t119 * 2.0)) * _t63 * 0.5 * _t10;
+    highp float _t121 = _t62 * _t62 * 2.0;
+    highp float _t122 = (_t84) ? _t9 * ((_t80 * (_t26 - _t56 * _t79) * 2.0 + _t81 * _t117 * 2.0 - _t85 * _t82 * 2.0) * _t87 * 0.5 * 2.0 - 1.5 * (_t88 * (_t120 * _t73 * 2.0 - _t77 * _t113 * 2.0 - _t65 * (_t57 + (_t64 * _t64 * 2.0 - (_t115 + _t57 * _t57 * 2.0 + _t35 * ((_t56 * _t34 * 6.0 - (_t28 + _t27 * 6.0 - _t31 - _t33 - 6.0 * _t107 - _t108 * 6.0)) * _t24 * 0.5 * _t10 - _t8) * 2.0 + _t121 - _t43 * _t106 * 2.0 - _t119 * _t50 * 2.0)) * _t63 * 0.5 * _t10) * 2.0) * 0.5 - _t64)) - _t8 : -_t8;
+    highp float _t123 = (_t84) ? -(_t15 + _t9 * ((_t86 * _t82 * 2.0 + 2.0 * (_t81 * (_t68 * _t79 - _t46)) - _t80 * _t117 * 2.0) * _t87 * 0.5 * 2.0 + 1.5 * (_t72 - _t88 * (_t105 * _t77 * 2.0 - (_t69 - _t63 * (_t72 * _t72 * 2.0 + (_t100 * _t43 * 2.0 + _t50 * (_t24 * (_t49 * _t68 * 6.0 + (_t47 * 6.0 + _t48 - _t93 * 6.0 - _t44 - _t45 - _t92 * 6.0)) * 0.5 * _t10 + _t15) * 2.0 + _t35 * _t118 * 2.0 - _t69 * _t69 * 2.0 - _t114 - _t121)) * 0.5 * _t10) * _t73 * 2.0 - _t65 * _t120 * 2.0) * 0.5))) : -_t15;
+    highp float _t124 = _t116 * _t116 + _t122 * _t122 + _t123 * _t123;
+    bool _t125 = _t124 > 0.0;
+    bool _t126 = _t124 <= 1.00000002e+30;
+    highp float _t127 = 1.0 / sqrt(_t124);
+    highp float _t128 = (_t23 > 0.0) ? _t24 : 0.0;
+    highp float _t129 = -(_t128 * _t21);
+    highp float _t130 = -(_t15 * _t128);
+    highp float _t131 = -(_t8 * _t128);
+    return vec3((_t125) ? ((_t126) ? _t116 * _t127 : _t129) : _t129, (_t125) ? ((_t126) ? _t123 * _t127 : _t130) : _t130, (_t125) ? ((_t126) ? _t122 * _t127 : _t131) : _t131);
 }
 
 

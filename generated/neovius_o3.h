@@ -42,9 +42,9 @@
  *   field    15
  *   offset   290
  *   shell    371
- *   normal   776
+ *   normal   790
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o3","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":290,"shell":371,"normal":776}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o3","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":290,"shell":371,"normal":790}} */
 #ifndef OFFSETGEN_NEOVIUS_O3_H
 #define OFFSETGEN_NEOVIUS_O3_H
 
@@ -228,7 +228,7 @@ static inline double neovius_o3_shell(double x, double y, double z, double t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 776
+ * Total ops: 790
  */
 static inline void neovius_o3_normal(double x, double y, double z, double h, double n[3])
 {
@@ -255,111 +255,118 @@ static inline void neovius_o3_normal(double x, double y, double z, double h, dou
     const double _t20 = 4.0 * (_t19 * _t18);
     const double _t21 = 3.0 * _t18 + _t20;
     const double _t22 = _t21 * _t21;
-    const double _t23 = 1.0 / sqrt(_t16 + _t17 + _t22);
-    const double _t24 = _t19 * _t6 * 4.0;
-    const double _t25 = _t24 + _t11 * 3.0;
-    const double _t26 = _t8 * _t25;
-    const double _t27 = _t26 * 2.0;
-    const double _t28 = _t1 * _t12;
-    const double _t29 = 4.0 * (_t6 * _t28);
-    const double _t30 = _t15 * _t29 * 2.0;
-    const double _t31 = 4.0 * (_t4 * _t18);
-    const double _t32 = _t31 * _t21 * 2.0;
-    const double _t33 = _t23 * (_t27 - _t30 - _t32) * 0.5;
-    const double _t34 = _t8 + _t10 * _t33;
-    const double _t35 = _t24 + 3.0 * _t6;
-    const double _t36 = _t35 * _t21;
-    const double _t37 = _t36 * 2.0;
-    const double _t38 = _t8 * _t31 * 2.0;
-    const double _t39 = 4.0 * (_t13 * _t18);
-    const double _t40 = _t39 * _t15 * 2.0;
-    const double _t41 = (_t37 - _t38 - _t40) * _t23 * 0.5;
-    const double _t42 = _t41 * _t10 + _t21;
-    const double _t43 = _t8 * _t29 * 2.0;
-    const double _t44 = _t39 * _t21 * 2.0;
-    const double _t45 = _t24 + _t3 * 3.0;
-    const double _t46 = _t15 * _t45;
-    const double _t47 = _t46 * 2.0;
-    const double _t48 = (_t43 + _t44 - _t47) * _t23 * 0.5;
-    const double _t49 = _t15 - _t48 * _t10;
-    const double _t50 = sqrt(_t34 * _t34 + _t42 * _t42 + _t49 * _t49);
-    const double _t51 = _t15 * _t14 * 2.0;
-    const double _t52 = _t20 * _t21 * 2.0;
-    const double _t53 = _t29 * _t29 * 2.0;
-    const double _t54 = _t31 * _t31 * 2.0;
-    const double _t55 = _t23 * (_t17 * 2.0 + _t51 + _t52 - _t53 - _t54 - _t25 * _t25 * 2.0 + _t33 * _t33 * 2.0) * 0.5;
-    const double _t56 = _t55 * _t10 - _t25;
-    const double _t57 = _t18 * _t28 * 4.0;
-    const double _t58 = (_t41 * _t33 * 2.0 + (_t8 * _t20 * 2.0 + _t31 * _t25 * 2.0 + _t31 * _t35 * 2.0 + _t21 * _t7 * 2.0 - _t39 * _t29 * 2.0 - _t15 * _t57 * 2.0)) * _t23 * 0.5;
-    const double _t59 = _t31 + _t10 * _t58;
-    const double _t60 = _t23 * (_t48 * _t33 * 2.0 - (_t15 * _t7 * 2.0 + _t29 * _t25 * 2.0 + _t8 * _t14 * 2.0 + _t45 * _t29 * 2.0 - _t57 * _t21 * 2.0 - _t39 * _t31 * 2.0)) * 0.5;
-    const double _t61 = _t60 * _t10 - _t29;
-    const double _t62 = 1.0 / _t50;
-    const double _t63 = (_t34 * _t56 * 2.0 + _t42 * _t59 * 2.0 - 2.0 * (_t61 * _t49)) * _t62 * 0.5;
-    const double _t64 = _t34 - _t63 * _t10;
-    const double _t65 = _t8 * _t7 * 2.0;
-    const double _t66 = _t39 * _t39 * 2.0;
-    const double _t67 = 0.5 * (_t23 * (_t48 * _t48 * 2.0 + (_t65 + _t16 * 2.0 + _t52 - _t45 * _t45 * 2.0 - _t53 - _t66)));
-    const double _t68 = _t45 - _t67 * _t10;
-    const double _t69 = _t23 * (_t48 * _t41 * 2.0 + (2.0 * (_t8 * _t57) + _t31 * _t29 * 2.0 - _t15 * _t20 * 2.0 - _t39 * _t35 * 2.0 - _t14 * _t21 * 2.0 - _t39 * _t45 * 2.0)) * 0.5;
-    const double _t70 = _t39 - _t69 * _t10;
-    const double _t71 = 0.5 * ((_t49 * _t68 * 2.0 + _t34 * _t61 * 2.0 - _t70 * _t42 * 2.0) * _t62);
-    const double _t72 = _t49 + _t71 * _t10;
-    const double _t73 = (_t65 + _t22 * 2.0 + _t51 - _t35 * _t35 * 2.0 - _t66 - _t54 + _t41 * _t41 * 2.0) * _t23 * 0.5;
-    const double _t74 = _t35 - _t73 * _t10;
-    const double _t75 = (_t74 * _t42 * 2.0 - _t49 * _t70 * 2.0 - _t34 * _t59 * 2.0) * _t62 * 0.5;
-    const double _t76 = _t75 * _t10 + _t42;
-    const double _t77 = sqrt(_t64 * _t64 + _t72 * _t72 + _t76 * _t76);
-    const double _t78 = _t9 * 0.5;
-    const double _t79 = _t8 + _t33 * _t78;
-    const double _t80 = _t15 - _t48 * _t78;
-    const double _t81 = _t41 * _t78 + _t21;
-    const double _t82 = sqrt(_t79 * _t79 + _t80 * _t80 + _t81 * _t81);
-    const int _t83 = fabs(1.5 * (_t50 + _t77) - _t82 * 2.0) <= 7.0000069999999992;
-    const double _t84 = _t31 + _t58 * _t78;
-    const double _t85 = _t39 - _t69 * _t78;
-    const double _t86 = 1.0 / _t82;
-    const double _t87 = 1.0 / _t77;
-    const double _t88 = _t15 * _t24 * 2.0;
-    const double _t89 = _t14 * _t45 * 2.0;
-    const double _t90 = _t31 * _t57 * 4.0;
-    const double _t91 = _t29 * _t7;
-    const double _t92 = _t39 * _t20;
-    const double _t93 = _t14 + _t23 * (_t69 * _t41 * 4.0 + _t48 * _t73 * 2.0 + (_t14 * _t35 * 4.0 + _t88 + _t89 + _t90 - _t43 - _t91 * 2.0 - _t44 - _t44 - _t92 * 4.0)) * 0.5 * _t10;
-    const double _t94 = _t39 * _t14;
-    const double _t95 = _t31 * _t7;
-    const double _t96 = 2.0 * (_t35 * _t20);
-    const double _t97 = _t24 * _t21 * 2.0;
-    const double _t98 = 4.0 * (_t57 * _t29);
-    const double _t99 = _t20 - 0.5 * ((4.0 * _t94 + (_t95 * 2.0 + _t38) + _t40 + _t40 - _t96 - 4.0 * (_t20 * _t45) - _t97 - _t98 + 4.0 * (_t48 * _t69) + _t41 * _t67 * 2.0) * _t23) * _t10;
-    const double _t100 = _t39 * _t7 * 2.0;
-    const double _t101 = _t14 * _t31 * 2.0;
-    const double _t102 = _t20 * _t29 * 2.0;
-    const double _t103 = _t57 - (_t48 * _t58 * 2.0 + _t69 * _t33 * 2.0 + _t60 * _t41 * 2.0 - (_t100 + (_t57 * _t45 * 2.0 + _t100) + _t8 * _t39 * 2.0 + _t57 * _t25 * 2.0 + _t101 + _t101 + _t102 + _t102 + _t57 * _t35 * 2.0 + _t15 * _t31 * 2.0 + _t21 * _t29 * 2.0)) * _t23 * 0.5 * _t10;
-    const double _t104 = _t70 + (_t93 * _t42 * 2.0 + (_t70 * _t74 * 2.0 + _t70 * _t68 * 2.0 + _t99 * _t49 * 2.0 + _t61 * _t59 * 2.0) - _t34 * _t103 * 2.0 + _t71 * _t75 * 2.0) * _t62 * 0.5 * _t10;
-    const double _t105 = _t20 - (4.0 * (_t58 * _t33) + _t55 * _t41 * 2.0 - (_t96 + _t97 + _t20 * _t25 * 4.0 + _t98 - _t38 - _t38 - 4.0 * _t95 - _t94 * 2.0 - _t40)) * _t23 * 0.5 * _t10;
-    const double _t106 = _t31 * _t20;
-    const double _t107 = _t14 * _t29;
-    const double _t108 = _t8 * _t24 * 2.0;
-    const double _t109 = 4.0 * (_t39 * _t57);
-    const double _t110 = _t25 * _t7 * 2.0;
-    const double _t111 = _t23 * (4.0 * (_t41 * _t58) + (4.0 * _t106 + _t30 + _t32 + _t32 + _t107 * 2.0 - _t108 - _t109 - 4.0 * (_t35 * _t7) - _t110) + _t73 * _t33 * 2.0) * 0.5 * _t10 - _t7;
-    const double _t112 = (_t34 * _t105 * 2.0 + _t74 * _t59 * 2.0 + _t61 * _t70 * 2.0 - _t56 * _t59 * 2.0 - _t49 * _t103 * 2.0 - _t111 * _t42 * 2.0 - _t75 * _t63 * 2.0) * _t62 * 0.5 * _t10 + _t59;
-    const double _t113 = 2.0 * (_t70 * _t70);
-    const double _t114 = _t59 * _t59 * 2.0;
-    const double _t115 = (_t83) ? -(_t9 * ((_t81 * (_t73 * _t78 - _t35) * 2.0 + (_t79 * _t84 * 2.0 + _t85 * _t80 * 2.0)) * _t86 * 0.5 * 2.0 - 1.5 * (_t87 * (_t104 * _t72 * 2.0 + _t64 * _t112 * 2.0 - _t76 * (_t74 + (_t113 + (_t114 + _t42 * ((_t73 * _t41 * 6.0 + (6.0 * _t95 + (_t94 * 6.0 + _t38) + _t40 - _t37 - _t36 * 6.0)) * _t23 * 0.5 * _t10 - _t21) * 2.0) + _t74 * _t74 * 2.0 + _t34 * _t111 * 2.0 - _t93 * _t49 * 2.0 - _t75 * _t75 * 2.0) * _t62 * 0.5 * _t10) * 2.0) * 0.5 - _t75)) + _t21) : -_t21;
-    const double _t116 = _t60 * _t78 - _t29;
-    const double _t117 = _t23 * (_t108 + 4.0 * (_t45 * _t7) + _t109 + _t110 - _t106 * 2.0 - _t30 - _t30 - _t32 - _t107 * 4.0 - _t67 * _t33 * 2.0 - 4.0 * (_t48 * _t60)) * 0.5 * _t10 + _t7;
-    const double _t118 = _t14 + _t10 * ((_t48 * _t55 * 2.0 + 4.0 * (_t60 * _t33) - (_t44 + (_t43 + (_t92 * 2.0 + 4.0 * _t91) + _t43) - _t88 - _t89 - 4.0 * (_t14 * _t25) - _t90)) * _t23 * 0.5);
-    const double _t119 = _t61 + (_t71 * _t63 * 2.0 + (_t103 * _t42 * 2.0 + _t61 * _t68 * 2.0 + _t70 * _t59 * 2.0 - _t61 * _t56 * 2.0 - 2.0 * (_t117 * _t49) - _t34 * _t118 * 2.0)) * _t62 * 0.5 * _t10;
-    const double _t120 = _t61 * _t61 * 2.0;
-    const double _t121 = (_t83) ? _t9 * ((_t79 * (_t25 - _t55 * _t78) * 2.0 + _t80 * _t116 * 2.0 - _t84 * _t81 * 2.0) * _t86 * 0.5 * 2.0 - 1.5 * (_t87 * (_t119 * _t72 * 2.0 - _t76 * _t112 * 2.0 - _t64 * (_t56 + (_t63 * _t63 * 2.0 - (_t114 + _t56 * _t56 * 2.0 + _t34 * ((_t55 * _t33 * 6.0 - (_t27 + _t26 * 6.0 - _t30 - _t32 - 6.0 * _t106 - _t107 * 6.0)) * _t23 * 0.5 * _t10 - _t8) * 2.0 + _t120 - _t42 * _t105 * 2.0 - _t118 * _t49 * 2.0)) * _t62 * 0.5 * _t10) * 2.0) * 0.5 - _t63)) - _t8 : -_t8;
-    const double _t122 = (_t83) ? -(_t15 + _t9 * ((_t85 * _t81 * 2.0 + 2.0 * (_t80 * (_t67 * _t78 - _t45)) - _t79 * _t116 * 2.0) * _t86 * 0.5 * 2.0 + 1.5 * (_t71 - _t87 * (_t104 * _t76 * 2.0 - (_t68 - _t62 * (_t71 * _t71 * 2.0 + (_t99 * _t42 * 2.0 + _t49 * (_t23 * (_t48 * _t67 * 6.0 + (_t46 * 6.0 + _t47 - _t92 * 6.0 - _t43 - _t44 - _t91 * 6.0)) * 0.5 * _t10 + _t15) * 2.0 + _t34 * _t117 * 2.0 - _t68 * _t68 * 2.0 - _t113 - _t120)) * 0.5 * _t10) * _t72 * 2.0 - _t64 * _t119 * 2.0) * 0.5))) : -_t15;
-    const double _t123 = _t115 * _t115 + _t121 * _t121 + _t122 * _t122;
-    const double _t124 = (_t123 > 0.0) ? 1.0 / sqrt(_t123) : 0.0;
-    n[0] = _t124 * _t115;
-    n[1] = _t122 * _t124;
-    n[2] = _t124 * _t121;
+    const double _t23 = _t16 + _t17 + _t22;
+    const double _t24 = 1.0 / sqrt(_t23);
+    const double _t25 = _t19 * _t6 * 4.0;
+    const double _t26 = _t25 + _t11 * 3.0;
+    const double _t27 = _t8 * _t26;
+    const double _t28 = _t27 * 2.0;
+    const double _t29 = _t1 * _t12;
+    const double _t30 = 4.0 * (_t6 * _t29);
+    const double _t31 = _t15 * _t30 * 2.0;
+    const double _t32 = 4.0 * (_t4 * _t18);
+    const double _t33 = _t32 * _t21 * 2.0;
+    const double _t34 = _t24 * (_t28 - _t31 - _t33) * 0.5;
+    const double _t35 = _t8 + _t10 * _t34;
+    const double _t36 = _t25 + 3.0 * _t6;
+    const double _t37 = _t36 * _t21;
+    const double _t38 = _t37 * 2.0;
+    const double _t39 = _t8 * _t32 * 2.0;
+    const double _t40 = 4.0 * (_t13 * _t18);
+    const double _t41 = _t40 * _t15 * 2.0;
+    const double _t42 = (_t38 - _t39 - _t41) * _t24 * 0.5;
+    const double _t43 = _t42 * _t10 + _t21;
+    const double _t44 = _t8 * _t30 * 2.0;
+    const double _t45 = _t40 * _t21 * 2.0;
+    const double _t46 = _t25 + _t3 * 3.0;
+    const double _t47 = _t15 * _t46;
+    const double _t48 = _t47 * 2.0;
+    const double _t49 = (_t44 + _t45 - _t48) * _t24 * 0.5;
+    const double _t50 = _t15 - _t49 * _t10;
+    const double _t51 = sqrt(_t35 * _t35 + _t43 * _t43 + _t50 * _t50);
+    const double _t52 = _t15 * _t14 * 2.0;
+    const double _t53 = _t20 * _t21 * 2.0;
+    const double _t54 = _t30 * _t30 * 2.0;
+    const double _t55 = _t32 * _t32 * 2.0;
+    const double _t56 = _t24 * (_t17 * 2.0 + _t52 + _t53 - _t54 - _t55 - _t26 * _t26 * 2.0 + _t34 * _t34 * 2.0) * 0.5;
+    const double _t57 = _t56 * _t10 - _t26;
+    const double _t58 = _t18 * _t29 * 4.0;
+    const double _t59 = (_t42 * _t34 * 2.0 + (_t8 * _t20 * 2.0 + _t32 * _t26 * 2.0 + _t32 * _t36 * 2.0 + _t21 * _t7 * 2.0 - _t40 * _t30 * 2.0 - _t15 * _t58 * 2.0)) * _t24 * 0.5;
+    const double _t60 = _t32 + _t10 * _t59;
+    const double _t61 = _t24 * (_t49 * _t34 * 2.0 - (_t15 * _t7 * 2.0 + _t30 * _t26 * 2.0 + _t8 * _t14 * 2.0 + _t46 * _t30 * 2.0 - _t58 * _t21 * 2.0 - _t40 * _t32 * 2.0)) * 0.5;
+    const double _t62 = _t61 * _t10 - _t30;
+    const double _t63 = 1.0 / _t51;
+    const double _t64 = (_t35 * _t57 * 2.0 + _t43 * _t60 * 2.0 - 2.0 * (_t62 * _t50)) * _t63 * 0.5;
+    const double _t65 = _t35 - _t64 * _t10;
+    const double _t66 = _t8 * _t7 * 2.0;
+    const double _t67 = _t40 * _t40 * 2.0;
+    const double _t68 = 0.5 * (_t24 * (_t49 * _t49 * 2.0 + (_t66 + _t16 * 2.0 + _t53 - _t46 * _t46 * 2.0 - _t54 - _t67)));
+    const double _t69 = _t46 - _t68 * _t10;
+    const double _t70 = _t24 * (_t49 * _t42 * 2.0 + (2.0 * (_t8 * _t58) + _t32 * _t30 * 2.0 - _t15 * _t20 * 2.0 - _t40 * _t36 * 2.0 - _t14 * _t21 * 2.0 - _t40 * _t46 * 2.0)) * 0.5;
+    const double _t71 = _t40 - _t70 * _t10;
+    const double _t72 = 0.5 * ((_t50 * _t69 * 2.0 + _t35 * _t62 * 2.0 - _t71 * _t43 * 2.0) * _t63);
+    const double _t73 = _t50 + _t72 * _t10;
+    const double _t74 = (_t66 + _t22 * 2.0 + _t52 - _t36 * _t36 * 2.0 - _t67 - _t55 + _t42 * _t42 * 2.0) * _t24 * 0.5;
+    const double _t75 = _t36 - _t74 * _t10;
+    const double _t76 = (_t75 * _t43 * 2.0 - _t50 * _t71 * 2.0 - _t35 * _t60 * 2.0) * _t63 * 0.5;
+    const double _t77 = _t76 * _t10 + _t43;
+    const double _t78 = sqrt(_t65 * _t65 + _t73 * _t73 + _t77 * _t77);
+    const double _t79 = _t9 * 0.5;
+    const double _t80 = _t8 + _t34 * _t79;
+    const double _t81 = _t15 - _t49 * _t79;
+    const double _t82 = _t42 * _t79 + _t21;
+    const double _t83 = sqrt(_t80 * _t80 + _t81 * _t81 + _t82 * _t82);
+    const int _t84 = fabs(1.5 * (_t51 + _t78) - _t83 * 2.0) <= 7.0000069999999992;
+    const double _t85 = _t32 + _t59 * _t79;
+    const double _t86 = _t40 - _t70 * _t79;
+    const double _t87 = 1.0 / _t83;
+    const double _t88 = 1.0 / _t78;
+    const double _t89 = _t15 * _t25 * 2.0;
+    const double _t90 = _t14 * _t46 * 2.0;
+    const double _t91 = _t32 * _t58 * 4.0;
+    const double _t92 = _t30 * _t7;
+    const double _t93 = _t40 * _t20;
+    const double _t94 = _t14 + _t24 * (_t70 * _t42 * 4.0 + _t49 * _t74 * 2.0 + (_t14 * _t36 * 4.0 + _t89 + _t90 + _t91 - _t44 - _t92 * 2.0 - _t45 - _t45 - _t93 * 4.0)) * 0.5 * _t10;
+    const double _t95 = _t40 * _t14;
+    const double _t96 = _t32 * _t7;
+    const double _t97 = 2.0 * (_t36 * _t20);
+    const double _t98 = _t25 * _t21 * 2.0;
+    const double _t99 = 4.0 * (_t58 * _t30);
+    const double _t100 = _t20 - 0.5 * ((4.0 * _t95 + (_t96 * 2.0 + _t39) + _t41 + _t41 - _t97 - 4.0 * (_t20 * _t46) - _t98 - _t99 + 4.0 * (_t49 * _t70) + _t42 * _t68 * 2.0) * _t24) * _t10;
+    const double _t101 = _t40 * _t7 * 2.0;
+    const double _t102 = _t14 * _t32 * 2.0;
+    const double _t103 = _t20 * _t30 * 2.0;
+    const double _t104 = _t58 - (_t49 * _t59 * 2.0 + _t70 * _t34 * 2.0 + _t61 * _t42 * 2.0 - (_t101 + (_t58 * _t46 * 2.0 + _t101) + _t8 * _t40 * 2.0 + _t58 * _t26 * 2.0 + _t102 + _t102 + _t103 + _t103 + _t58 * _t36 * 2.0 + _t15 * _t32 * 2.0 + _t21 * _t30 * 2.0)) * _t24 * 0.5 * _t10;
+    const double _t105 = _t71 + (_t94 * _t43 * 2.0 + (_t71 * _t75 * 2.0 + _t71 * _t69 * 2.0 + _t100 * _t50 * 2.0 + _t62 * _t60 * 2.0) - _t35 * _t104 * 2.0 + _t72 * _t76 * 2.0) * _t63 * 0.5 * _t10;
+    const double _t106 = _t20 - (4.0 * (_t59 * _t34) + _t56 * _t42 * 2.0 - (_t97 + _t98 + _t20 * _t26 * 4.0 + _t99 - _t39 - _t39 - 4.0 * _t96 - _t95 * 2.0 - _t41)) * _t24 * 0.5 * _t10;
+    const double _t107 = _t32 * _t20;
+    const double _t108 = _t14 * _t30;
+    const double _t109 = _t8 * _t25 * 2.0;
+    const double _t110 = 4.0 * (_t40 * _t58);
+    const double _t111 = _t26 * _t7 * 2.0;
+    const double _t112 = _t24 * (4.0 * (_t42 * _t59) + (4.0 * _t107 + _t31 + _t33 + _t33 + _t108 * 2.0 - _t109 - _t110 - 4.0 * (_t36 * _t7) - _t111) + _t74 * _t34 * 2.0) * 0.5 * _t10 - _t7;
+    const double _t113 = (_t35 * _t106 * 2.0 + _t75 * _t60 * 2.0 + _t62 * _t71 * 2.0 - _t57 * _t60 * 2.0 - _t50 * _t104 * 2.0 - _t112 * _t43 * 2.0 - _t76 * _t64 * 2.0) * _t63 * 0.5 * _t10 + _t60;
+    const double _t114 = 2.0 * (_t71 * _t71);
+    const double _t115 = _t60 * _t60 * 2.0;
+    const double _t116 = (_t84) ? -(_t9 * ((_t82 * (_t74 * _t79 - _t36) * 2.0 + (_t80 * _t85 * 2.0 + _t86 * _t81 * 2.0)) * _t87 * 0.5 * 2.0 - 1.5 * (_t88 * (_t105 * _t73 * 2.0 + _t65 * _t113 * 2.0 - _t77 * (_t75 + (_t114 + (_t115 + _t43 * ((_t74 * _t42 * 6.0 + (6.0 * _t96 + (_t95 * 6.0 + _t39) + _t41 - _t38 - _t37 * 6.0)) * _t24 * 0.5 * _t10 - _t21) * 2.0) + _t75 * _t75 * 2.0 + _t35 * _t112 * 2.0 - _t94 * _t50 * 2.0 - _t76 * _t76 * 2.0) * _t63 * 0.5 * _t10) * 2.0) * 0.5 - _t76)) + _t21) : -_t21;
+    const double _t117 = _t61 * _t79 - _t30;
+    const double _t118 = _t24 * (_t109 + 4.0 * (_t46 * _t7) + _t110 + _t111 - _t107 * 2.0 - _t31 - _t31 - _t33 - _t108 * 4.0 - _t68 * _t34 * 2.0 - 4.0 * (_t49 * _t61)) * 0.5 * _t10 + _t7;
+    const double _t119 = _t14 + _t10 * ((_t49 * _t56 * 2.0 + 4.0 * (_t61 * _t34) - (_t45 + (_t44 + (_t93 * 2.0 + 4.0 * _t92) + _t44) - _t89 - _t90 - 4.0 * (_t14 * _t26) - _t91)) * _t24 * 0.5);
+    const double _t120 = _t62 + (_t72 * _t64 * 2.0 + (_t104 * _t43 * 2.0 + _t62 * _t69 * 2.0 + _t71 * _t60 * 2.0 - _t62 * _t57 * 2.0 - 2.0 * (_t118 * _t50) - _t35 * _t119 * 2.0)) * _t63 * 0.5 * _t10;
+    const double _t121 = _t62 * _t62 * 2.0;
+    const double _t122 = (_t84) ? _t9 * ((_t80 * (_t26 - _t56 * _t79) * 2.0 + _t81 * _t117 * 2.0 - _t85 * _t82 * 2.0) * _t87 * 0.5 * 2.0 - 1.5 * (_t88 * (_t120 * _t73 * 2.0 - _t77 * _t113 * 2.0 - _t65 * (_t57 + (_t64 * _t64 * 2.0 - (_t115 + _t57 * _t57 * 2.0 + _t35 * ((_t56 * _t34 * 6.0 - (_t28 + _t27 * 6.0 - _t31 - _t33 - 6.0 * _t107 - _t108 * 6.0)) * _t24 * 0.5 * _t10 - _t8) * 2.0 + _t121 - _t43 * _t106 * 2.0 - _t119 * _t50 * 2.0)) * _t63 * 0.5 * _t10) * 2.0) * 0.5 - _t64)) - _t8 : -_t8;
+    const double _t123 = (_t84) ? -(_t15 + _t9 * ((_t86 * _t82 * 2.0 + 2.0 * (_t81 * (_t68 * _t79 - _t46)) - _t80 * _t117 * 2.0) * _t87 * 0.5 * 2.0 + 1.5 * (_t72 - _t88 * (_t105 * _t77 * 2.0 - (_t69 - _t63 * (_t72 * _t72 * 2.0 + (_t100 * _t43 * 2.0 + _t50 * (_t24 * (_t49 * _t68 * 6.0 + (_t47 * 6.0 + _t48 - _t93 * 6.0 - _t44 - _t45 - _t92 * 6.0)) * 0.5 * _t10 + _t15) * 2.0 + _t35 * _t118 * 2.0 - _t69 * _t69 * 2.0 - _t114 - _t121)) * 0.5 * _t10) * _t73 * 2.0 - _t65 * _t120 * 2.0) * 0.5))) : -_t15;
+    const double _t124 = _t116 * _t116 + _t122 * _t122 + _t123 * _t123;
+    const int _t125 = _t124 > 0.0;
+    const int _t126 = _t124 <= 1.0e+30;
+    const double _t127 = 1.0 / sqrt(_t124);
+    const double _t128 = (_t23 > 0.0) ? _t24 : 0.0;
+    const double _t129 = -(_t128 * _t21);
+    const double _t130 = -(_t15 * _t128);
+    const double _t131 = -(_t8 * _t128);
+    n[0] = (_t125) ? ((_t126) ? _t116 * _t127 : _t129) : _t129;
+    n[1] = (_t125) ? ((_t126) ? _t123 * _t127 : _t130) : _t130;
+    n[2] = (_t125) ? ((_t126) ? _t122 * _t127 : _t131) : _t131;
 }
 
 /* F, the field; the surface is F = 0.
@@ -539,7 +546,7 @@ static inline float neovius_o3_shellf(float x, float y, float z, float t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 776
+ * Total ops: 790
  */
 static inline void neovius_o3_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -566,111 +573,570 @@ static inline void neovius_o3_normalf(float x, float y, float z, float h, float 
     const float _t20 = 4.0f * (_t19 * _t18);
     const float _t21 = 3.0f * _t18 + _t20;
     const float _t22 = _t21 * _t21;
-    const float _t23 = 1.0f / sqrtf(_t16 + _t17 + _t22);
-    const float _t24 = _t19 * _t6 * 4.0f;
-    const float _t25 = _t24 + _t11 * 3.0f;
-    const float _t26 = _t8 * _t25;
-    const float _t27 = _t26 * 2.0f;
-    const float _t28 = _t1 * _t12;
-    const float _t29 = 4.0f * (_t6 * _t28);
-    const float _t30 = _t15 * _t29 * 2.0f;
-    const float _t31 = 4.0f * (_t4 * _t18);
-    const float _t32 = _t31 * _t21 * 2.0f;
-    const float _t33 = _t23 * (_t27 - _t30 - _t32) * 0.5f;
-    const float _t34 = _t8 + _t10 * _t33;
-    const float _t35 = _t24 + 3.0f * _t6;
-    const float _t36 = _t35 * _t21;
-    const float _t37 = _t36 * 2.0f;
-    const float _t38 = _t8 * _t31 * 2.0f;
-    const float _t39 = 4.0f * (_t13 * _t18);
-    const float _t40 = _t39 * _t15 * 2.0f;
-    const float _t41 = (_t37 - _t38 - _t40) * _t23 * 0.5f;
-    const float _t42 = _t41 * _t10 + _t21;
-    const float _t43 = _t8 * _t29 * 2.0f;
-    const float _t44 = _t39 * _t21 * 2.0f;
-    const float _t45 = _t24 + _t3 * 3.0f;
-    const float _t46 = _t15 * _t45;
-    const float _t47 = _t46 * 2.0f;
-    const float _t48 = (_t43 + _t44 - _t47) * _t23 * 0.5f;
-    const float _t49 = _t15 - _t48 * _t10;
-    const float _t50 = sqrtf(_t34 * _t34 + _t42 * _t42 + _t49 * _t49);
-    const float _t51 = _t15 * _t14 * 2.0f;
-    const float _t52 = _t20 * _t21 * 2.0f;
-    const float _t53 = _t29 * _t29 * 2.0f;
-    const float _t54 = _t31 * _t31 * 2.0f;
-    const float _t55 = _t23 * (_t17 * 2.0f + _t51 + _t52 - _t53 - _t54 - _t25 * _t25 * 2.0f + _t33 * _t33 * 2.0f) * 0.5f;
-    const float _t56 = _t55 * _t10 - _t25;
-    const float _t57 = _t18 * _t28 * 4.0f;
-    const float _t58 = (_t41 * _t33 * 2.0f + (_t8 * _t20 * 2.0f + _t31 * _t25 * 2.0f + _t31 * _t35 * 2.0f + _t21 * _t7 * 2.0f - _t39 * _t29 * 2.0f - _t15 * _t57 * 2.0f)) * _t23 * 0.5f;
-    const float _t59 = _t31 + _t10 * _t58;
-    const float _t60 = _t23 * (_t48 * _t33 * 2.0f - (_t15 * _t7 * 2.0f + _t29 * _t25 * 2.0f + _t8 * _t14 * 2.0f + _t45 * _t29 * 2.0f - _t57 * _t21 * 2.0f - _t39 * _t31 * 2.0f)) * 0.5f;
-    const float _t61 = _t60 * _t10 - _t29;
-    const float _t62 = 1.0f / _t50;
-    const float _t63 = (_t34 * _t56 * 2.0f + _t42 * _t59 * 2.0f - 2.0f * (_t61 * _t49)) * _t62 * 0.5f;
-    const float _t64 = _t34 - _t63 * _t10;
-    const float _t65 = _t8 * _t7 * 2.0f;
-    const float _t66 = _t39 * _t39 * 2.0f;
-    const float _t67 = 0.5f * (_t23 * (_t48 * _t48 * 2.0f + (_t65 + _t16 * 2.0f + _t52 - _t45 * _t45 * 2.0f - _t53 - _t66)));
-    const float _t68 = _t45 - _t67 * _t10;
-    const float _t69 = _t23 * (_t48 * _t41 * 2.0f + (2.0f * (_t8 * _t57) + _t31 * _t29 * 2.0f - _t15 * _t20 * 2.0f - _t39 * _t35 * 2.0f - _t14 * _t21 * 2.0f - _t39 * _t45 * 2.0f)) * 0.5f;
-    const float _t70 = _t39 - _t69 * _t10;
-    const float _t71 = 0.5f * ((_t49 * _t68 * 2.0f + _t34 * _t61 * 2.0f - _t70 * _t42 * 2.0f) * _t62);
-    const float _t72 = _t49 + _t71 * _t10;
-    const float _t73 = (_t65 + _t22 * 2.0f + _t51 - _t35 * _t35 * 2.0f - _t66 - _t54 + _t41 * _t41 * 2.0f) * _t23 * 0.5f;
-    const float _t74 = _t35 - _t73 * _t10;
-    const float _t75 = (_t74 * _t42 * 2.0f - _t49 * _t70 * 2.0f - _t34 * _t59 * 2.0f) * _t62 * 0.5f;
-    const float _t76 = _t75 * _t10 + _t42;
-    const float _t77 = sqrtf(_t64 * _t64 + _t72 * _t72 + _t76 * _t76);
-    const float _t78 = _t9 * 0.5f;
-    const float _t79 = _t8 + _t33 * _t78;
-    const float _t80 = _t15 - _t48 * _t78;
-    const float _t81 = _t41 * _t78 + _t21;
-    const float _t82 = sqrtf(_t79 * _t79 + _t80 * _t80 + _t81 * _t81);
-    const int _t83 = fabsf(1.5f * (_t50 + _t77) - _t82 * 2.0f) <= 7.00000715f;
-    const float _t84 = _t31 + _t58 * _t78;
-    const float _t85 = _t39 - _t69 * _t78;
-    const float _t86 = 1.0f / _t82;
-    const float _t87 = 1.0f / _t77;
-    const float _t88 = _t15 * _t24 * 2.0f;
-    const float _t89 = _t14 * _t45 * 2.0f;
-    const float _t90 = _t31 * _t57 * 4.0f;
-    const float _t91 = _t29 * _t7;
-    const float _t92 = _t39 * _t20;
-    const float _t93 = _t14 + _t23 * (_t69 * _t41 * 4.0f + _t48 * _t73 * 2.0f + (_t14 * _t35 * 4.0f + _t88 + _t89 + _t90 - _t43 - _t91 * 2.0f - _t44 - _t44 - _t92 * 4.0f)) * 0.5f * _t10;
-    const float _t94 = _t39 * _t14;
-    const float _t95 = _t31 * _t7;
-    const float _t96 = 2.0f * (_t35 * _t20);
-    const float _t97 = _t24 * _t21 * 2.0f;
-    const float _t98 = 4.0f * (_t57 * _t29);
-    const float _t99 = _t20 - 0.5f * ((4.0f * _t94 + (_t95 * 2.0f + _t38) + _t40 + _t40 - _t96 - 4.0f * (_t20 * _t45) - _t97 - _t98 + 4.0f * (_t48 * _t69) + _t41 * _t67 * 2.0f) * _t23) * _t10;
-    const float _t100 = _t39 * _t7 * 2.0f;
-    const float _t101 = _t14 * _t31 * 2.0f;
-    const float _t102 = _t20 * _t29 * 2.0f;
-    const float _t103 = _t57 - (_t48 * _t58 * 2.0f + _t69 * _t33 * 2.0f + _t60 * _t41 * 2.0f - (_t100 + (_t57 * _t45 * 2.0f + _t100) + _t8 * _t39 * 2.0f + _t57 * _t25 * 2.0f + _t101 + _t101 + _t102 + _t102 + _t57 * _t35 * 2.0f + _t15 * _t31 * 2.0f + _t21 * _t29 * 2.0f)) * _t23 * 0.5f * _t10;
-    const float _t104 = _t70 + (_t93 * _t42 * 2.0f + (_t70 * _t74 * 2.0f + _t70 * _t68 * 2.0f + _t99 * _t49 * 2.0f + _t61 * _t59 * 2.0f) - _t34 * _t103 * 2.0f + _t71 * _t75 * 2.0f) * _t62 * 0.5f * _t10;
-    const float _t105 = _t20 - (4.0f * (_t58 * _t33) + _t55 * _t41 * 2.0f - (_t96 + _t97 + _t20 * _t25 * 4.0f + _t98 - _t38 - _t38 - 4.0f * _t95 - _t94 * 2.0f - _t40)) * _t23 * 0.5f * _t10;
-    const float _t106 = _t31 * _t20;
-    const float _t107 = _t14 * _t29;
-    const float _t108 = _t8 * _t24 * 2.0f;
-    const float _t109 = 4.0f * (_t39 * _t57);
-    const float _t110 = _t25 * _t7 * 2.0f;
-    const float _t111 = _t23 * (4.0f * (_t41 * _t58) + (4.0f * _t106 + _t30 + _t32 + _t32 + _t107 * 2.0f - _t108 - _t109 - 4.0f * (_t35 * _t7) - _t110) + _t73 * _t33 * 2.0f) * 0.5f * _t10 - _t7;
-    const float _t112 = (_t34 * _t105 * 2.0f + _t74 * _t59 * 2.0f + _t61 * _t70 * 2.0f - _t56 * _t59 * 2.0f - _t49 * _t103 * 2.0f - _t111 * _t42 * 2.0f - _t75 * _t63 * 2.0f) * _t62 * 0.5f * _t10 + _t59;
-    const float _t113 = 2.0f * (_t70 * _t70);
-    const float _t114 = _t59 * _t59 * 2.0f;
-    const float _t115 = (_t83) ? -(_t9 * ((_t81 * (_t73 * _t78 - _t35) * 2.0f + (_t79 * _t84 * 2.0f + _t85 * _t80 * 2.0f)) * _t86 * 0.5f * 2.0f - 1.5f * (_t87 * (_t104 * _t72 * 2.0f + _t64 * _t112 * 2.0f - _t76 * (_t74 + (_t113 + (_t114 + _t42 * ((_t73 * _t41 * 6.0f + (6.0f * _t95 + (_t94 * 6.0f + _t38) + _t40 - _t37 - _t36 * 6.0f)) * _t23 * 0.5f * _t10 - _t21) * 2.0f) + _t74 * _t74 * 2.0f + _t34 * _t111 * 2.0f - _t93 * _t49 * 2.0f - _t75 * _t75 * 2.0f) * _t62 * 0.5f * _t10) * 2.0f) * 0.5f - _t75)) + _t21) : -_t21;
-    const float _t116 = _t60 * _t78 - _t29;
-    const float _t117 = _t23 * (_t108 + 4.0f * (_t45 * _t7) + _t109 + _t110 - _t106 * 2.0f - _t30 - _t30 - _t32 - _t107 * 4.0f - _t67 * _t33 * 2.0f - 4.0f * (_t48 * _t60)) * 0.5f * _t10 + _t7;
-    const float _t118 = _t14 + _t10 * ((_t48 * _t55 * 2.0f + 4.0f * (_t60 * _t33) - (_t44 + (_t43 + (_t92 * 2.0f + 4.0f * _t91) + _t43) - _t88 - _t89 - 4.0f * (_t14 * _t25) - _t90)) * _t23 * 0.5f);
-    const float _t119 = _t61 + (_t71 * _t63 * 2.0f + (_t103 * _t42 * 2.0f + _t61 * _t68 * 2.0f + _t70 * _t59 * 2.0f - _t61 * _t56 * 2.0f - 2.0f * (_t117 * _t49) - _t34 * _t118 * 2.0f)) * _t62 * 0.5f * _t10;
-    const float _t120 = _t61 * _t61 * 2.0f;
-    const float _t121 = (_t83) ? _t9 * ((_t79 * (_t25 - _t55 * _t78) * 2.0f + _t80 * _t116 * 2.0f - _t84 * _t81 * 2.0f) * _t86 * 0.5f * 2.0f - 1.5f * (_t87 * (_t119 * _t72 * 2.0f - _t76 * _t112 * 2.0f - _t64 * (_t56 + (_t63 * _t63 * 2.0f - (_t114 + _t56 * _t56 * 2.0f + _t34 * ((_t55 * _t33 * 6.0f - (_t27 + _t26 * 6.0f - _t30 - _t32 - 6.0f * _t106 - _t107 * 6.0f)) * _t23 * 0.5f * _t10 - _t8) * 2.0f + _t120 - _t42 * _t105 * 2.0f - _t118 * _t49 * 2.0f)) * _t62 * 0.5f * _t10) * 2.0f) * 0.5f - _t63)) - _t8 : -_t8;
-    const float _t122 = (_t83) ? -(_t15 + _t9 * ((_t85 * _t81 * 2.0f + 2.0f * (_t80 * (_t67 * _t78 - _t45)) - _t79 * _t116 * 2.0f) * _t86 * 0.5f * 2.0f + 1.5f * (_t71 - _t87 * (_t104 * _t76 * 2.0f - (_t68 - _t62 * (_t71 * _t71 * 2.0f + (_t99 * _t42 * 2.0f + _t49 * (_t23 * (_t48 * _t67 * 6.0f + (_t46 * 6.0f + _t47 - _t92 * 6.0f - _t43 - _t44 - _t91 * 6.0f)) * 0.5f * _t10 + _t15) * 2.0f + _t34 * _t117 * 2.0f - _t68 * _t68 * 2.0f - _t113 - _t120)) * 0.5f * _t10) * _t72 * 2.0f - _t64 * _t119 * 2.0f) * 0.5f))) : -_t15;
-    const float _t123 = _t115 * _t115 + _t121 * _t121 + _t122 * _t122;
-    const float _t124 = (_t123 > 0.0f) ? 1.0f / sqrtf(_t123) : 0.0f;
-    n[0] = _t124 * _t115;
-    n[1] = _t122 * _t124;
-    n[2] = _t124 * _t121;
+    const float _t23 = _t16 + _t17 + _t22;
+    const float _t24 = 1.0f / sqrtf(_t23);
+    const float _t25 = _t19 * _t6 * 4.0f;
+    const float _t26 = _t25 + _t11 * 3.0f;
+    const float _t27 = _t8 * _t26;
+    const float _t28 = _t27 * 2.0f;
+    const float _t29 = _t1 * _t12;
+    const float _t30 = 4.0f * (_t6 * _t29);
+    const float _t31 = _t15 * _t30 * 2.0f;
+    const float _t32 = 4.0f * (_t4 * _t18);
+    const float _t33 = _t32 * _t21 * 2.0f;
+    const float _t34 = _t24 * (_t28 - _t31 - _t33) * 0.5f;
+    const float _t35 = _t8 + _t10 * _t34;
+    const float _t36 = _t25 + 3.0f * _t6;
+    const float _t37 = _t36 * _t21;
+    const float _t38 = _t37 * 2.0f;
+    const float _t39 = _t8 * _t32 * 2.0f;
+    const float _t40 = 4.0f * (_t13 * _t18);
+    const float _t41 = _t40 * _t15 * 2.0f;
+    const float _t42 = (_t38 - _t39 - _t41) * _t24 * 0.5f;
+    const float _t43 = _t42 * _t10 + _t21;
+    const float _t44 = _t8 * _t30 * 2.0f;
+    const float _t45 = _t40 * _t21 * 2.0f;
+    const float _t46 = _t25 + _t3 * 3.0f;
+    const float _t47 = _t15 * _t46;
+    const float _t48 = _t47 * 2.0f;
+    const float _t49 = (_t44 + _t45 - _t48) * _t24 * 0.5f;
+    const float _t50 = _t15 - _t49 * _t10;
+    const float _t51 = sqrtf(_t35 * _t35 + _t43 * _t43 + _t50 * _t50);
+    const float _t52 = _t15 * _t14 * 2.0f;
+    const float _t53 = _t20 * _t21 * 2.0f;
+    const float _t54 = _t30 * _t30 * 2.0f;
+    const float _t55 = _t32 * _t32 * 2.0f;
+    const float _t56 = _t24 * (_t17 * 2.0f + _t52 + _t53 - _t54 - _t55 - _t26 * _t26 * 2.0f + _t34 * _t34 * 2.0f) * 0.5f;
+    const float _t57 = _t56 * _t10 - _t26;
+    const float _t58 = _t18 * _t29 * 4.0f;
+    const float _t59 = (_t42 * _t34 * 2.0f + (_t8 * _t20 * 2.0f + _t32 * _t26 * 2.0f + _t32 * _t36 * 2.0f + _t21 * _t7 * 2.0f - _t40 * _t30 * 2.0f - _t15 * _t58 * 2.0f)) * _t24 * 0.5f;
+    const float _t60 = _t32 + _t10 * _t59;
+    const float _t61 = _t24 * (_t49 * _t34 * 2.0f - (_t15 * _t7 * 2.0f + _t30 * _t26 * 2.0f + _t8 * _t14 * 2.0f + _t46 * _t30 * 2.0f - _t58 * _t21 * 2.0f - _t40 * _t32 * 2.0f)) * 0.5f;
+    const float _t62 = _t61 * _t10 - _t30;
+    const float _t63 = 1.0f / _t51;
+    const float _t64 = (_t35 * _t57 * 2.0f + _t43 * _t60 * 2.0f - 2.0f * (_t62 * _t50)) * _t63 * 0.5f;
+    const float _t65 = _t35 - _t64 * _t10;
+    const float _t66 = _t8 * _t7 * 2.0f;
+    const float _t67 = _t40 * _t40 * 2.0f;
+    const float _t68 = 0.5f * (_t24 * (_t49 * _t49 * 2.0f + (_t66 + _t16 * 2.0f + _t53 - _t46 * _t46 * 2.0f - _t54 - _t67)));
+    const float _t69 = _t46 - _t68 * _t10;
+    const float _t70 = _t24 * (_t49 * _t42 * 2.0f + (2.0f * (_t8 * _t58) + _t32 * _t30 * 2.0f - _t15 * _t20 * 2.0f - _t40 * _t36 * 2.0f - _t14 * _t21 * 2.0f - _t40 * _t46 * 2.0f)) * 0.5f;
+    const float _t71 = _t40 - _t70 * _t10;
+    const float _t72 = 0.5f * ((_t50 * _t69 * 2.0f + _t35 * _t62 * 2.0f - _t71 * _t43 * 2.0f) * _t63);
+    const float _t73 = _t50 + _t72 * _t10;
+    const float _t74 = (_t66 + _t22 * 2.0f + _t52 - _t36 * _t36 * 2.0f - _t67 - _t55 + _t42 * _t42 * 2.0f) * _t24 * 0.5f;
+    const float _t75 = _t36 - _t74 * _t10;
+    const float _t76 = (_t75 * _t43 * 2.0f - _t50 * _t71 * 2.0f - _t35 * _t60 * 2.0f) * _t63 * 0.5f;
+    const float _t77 = _t76 * _t10 + _t43;
+    const float _t78 = sqrtf(_t65 * _t65 + _t73 * _t73 + _t77 * _t77);
+    const float _t79 = _t9 * 0.5f;
+    const float _t80 = _t8 + _t34 * _t79;
+    const float _t81 = _t15 - _t49 * _t79;
+    const float _t82 = _t42 * _t79 + _t21;
+    const float _t83 = sqrtf(_t80 * _t80 + _t81 * _t81 + _t82 * _t82);
+    const int _t84 = fabsf(1.5f * (_t51 + _t78) - _t83 * 2.0f) <= 7.00000715f;
+    const float _t85 = _t32 + _t59 * _t79;
+    const float _t86 = _t40 - _t70 * _t79;
+    const float _t87 = 1.0f / _t83;
+    const float _t88 = 1.0f / _t78;
+    const float _t89 = _t15 * _t25 * 2.0f;
+    const float _t90 = _t14 * _t46 * 2.0f;
+    const float _t91 = _t32 * _t58 * 4.0f;
+    const float _t92 = _t30 * _t7;
+    const float _t93 = _t40 * _t20;
+    const float _t94 = _t14 + _t24 * (_t70 * _t42 * 4.0f + _t49 * _t74 * 2.0f + (_t14 * _t36 * 4.0f + _t89 + _t90 + _t91 - _t44 - _t92 * 2.0f - _t45 - _t45 - _t93 * 4.0f)) * 0.5f * _t10;
+    const float _t95 = _t40 * _t14;
+    const float _t96 = _t32 * _t7;
+    const float _t97 = 2.0f * (_t36 * _t20);
+    const float _t98 = _t25 * _t21 * 2.0f;
+    const float _t99 = 4.0f * (_t58 * _t30);
+    const float _t100 = _t20 - 0.5f * ((4.0f * _t95 + (_t96 * 2.0f + _t39) + _t41 + _t41 - _t97 - 4.0f * (_t20 * _t46) - _t98 - _t99 + 4.0f * (_t49 * _t70) + _t42 * _t68 * 2.0f) * _t24) * _t10;
+    const float _t101 = _t40 * _t7 * 2.0f;
+    const float _t102 = _t14 * _t32 * 2.0f;
+    const float _t103 = _t20 * _t30 * 2.0f;
+    const float _t104 = _t58 - (_t49 * _t59 * 2.0f + _t70 * _t34 * 2.0f + _t61 * _t42 * 2.0f - (_t101 + (_t58 * _t46 * 2.0f + _t101) + _t8 * _t40 * 2.0f + _t58 * _t26 * 2.0f + _t102 + _t102 + _t103 + _t103 + _t58 * _t36 * 2.0f + _t15 * _t32 * 2.0f + _t21 * _t30 * 2.0f)) * _t24 * 0.5f * _t10;
+    const float _t105 = _t71 + (_t94 * _t43 * 2.0f + (_t71 * _t75 * 2.0f + _t71 * _t69 * 2.0f + _t100 * _t50 * 2.0f + _t62 * _t60 * 2.0f) - _t35 * _t104 * 2.0f + _t72 * _t76 * 2.0f) * _t63 * 0.5f * _t10;
+    const float _t106 = _t20 - (4.0f * (_t59 * _t34) + _t56 * _t42 * 2.0f - (_t97 + _t98 + _t20 * _t26 * 4.0f + _t99 - _t39 - _t39 - 4.0f * _t96 - _t95 * 2.0f - _t41)) * _t24 * 0.5f * _t10;
+    const float _t107 = _t32 * _t20;
+    const float _t108 = _t14 * _t30;
+    const float _t109 = _t8 * _t25 * 2.0f;
+    const float _t110 = 4.0f * (_t40 * _t58);
+    const float _t111 = _t26 * _t7 * 2.0f;
+    const float _t112 = _t24 * (4.0f * (_t42 * _t59) + (4.0f * _t107 + _t31 + _t33 + _t33 + _t108 * 2.0f - _t109 - _t110 - 4.0f * (_t36 * _t7) - _t111) + _t74 * _t34 * 2.0f) * 0.5f * _t10 - _t7;
+    const float _t113 = (_t35 * _t106 * 2.0f + _t75 * _t60 * 2.0f + _t62 * _t71 * 2.0f - _t57 * _t60 * 2.0f - _t50 * _t104 * 2.0f - _t112 * _t43 * 2.0f - _t76 * _t64 * 2.0f) * _t63 * 0.5f * _t10 + _t60;
+    const float _t114 = 2.0f * (_t71 * _t71);
+    const float _t115 = _t60 * _t60 * 2.0f;
+    const float _t116 = (_t84) ? -(_t9 * ((_t82 * (_t74 * _t79 - _t36) * 2.0f + (_t80 * _t85 * 2.0f + _t86 * _t81 * 2.0f)) * _t87 * 0.5f * 2.0f - 1.5f * (_t88 * (_t105 * _t73 * 2.0f + _t65 * _t113 * 2.0f - _t77 * (_t75 + (_t114 + (_t115 + _t43 * ((_t74 * _t42 * 6.0f + (6.0f * _t96 + (_t95 * 6.0f + _t39) + _t41 - _t38 - _t37 * 6.0f)) * _t24 * 0.5f * _t10 - _t21) * 2.0f) + _t75 * _t75 * 2.0f + _t35 * _t112 * 2.0f - _t94 * _t50 * 2.0f - _t76 * _t76 * 2.0f) * _t63 * 0.5f * _t10) * 2.0f) * 0.5f - _t76)) + _t21) : -_t21;
+    const float _t117 = _t61 * _t79 - _t30;
+    const float _t118 = _t24 * (_t109 + 4.0f * (_t46 * _t7) + _t110 + _t111 - _t107 * 2.0f - _t31 - _t31 - _t33 - _t108 * 4.0f - _t68 * _t34 * 2.0f - 4.0f * (_t49 * _t61)) * 0.5f * _t10 + _t7;
+    const float _t119 = _t14 + _t10 * ((_t49 * _t56 * 2.0f + 4.0f * (_t61 * _t34) - (_t45 + (_t44 + (_t93 * 2.0f + 4.0f * _t92) + _t44) - _t89 - _t90 - 4.0f * (_t14 * _t26) - _t91)) * _t24 * 0.5f);
+    const float _t120 = _t62 + (_t72 * _t64 * 2.0f + (_t104 * _t43 * 2.0f + _t62 * _t69 * 2.0f + _t71 * _t60 * 2.0f - _t62 * _t57 * 2.0f - 2.0f * (_t118 * _t50) - _t35 * _t119 * 2.0f)) * _t63 * 0.5f * _t10;
+    const float _t121 = _t62 * _t62 * 2.0f;
+    const float _t122 = (_t84) ? _t9 * ((_t80 * (_t26 - _t56 * _t79) * 2.0f + _t81 * _t117 * 2.0f - _t85 * _t82 * 2.0f) * _t87 * 0.5f * 2.0f - 1.5f * (_t88 * (_t120 * _t73 * 2.0f - _t77 * _t113 * 2.0f - _t65 * (_t57 + (_t64 * _t64 * 2.0f - (_t115 + _t57 * _t57 * 2.0f + _t35 * ((_t56 * _t34 * 6.0f - (_t28 + _t27 * 6.0f - _t31 - _t33 - 6.0f * _t107 - _t108 * 6.0f)) * _t24 * 0.5f * _t10 - _t8) * 2.0f + _t121 - _t43 * _t106 * 2.0f - _t119 * _t50 * 2.0f)) * _t63 * 0.5f * _t10) * 2.0f) * 0.5f - _t64)) - _t8 : -_t8;
+    const float _t123 = (_t84) ? -(_t15 + _t9 * ((_t86 * _t82 * 2.0f + 2.0f * (_t81 * (_t68 * _t79 - _t46)) - _t80 * _t117 * 2.0f) * _t87 * 0.5f * 2.0f + 1.5f * (_t72 - _t88 * (_t105 * _t77 * 2.0f - (_t69 - _t63 * (_t72 * _t72 * 2.0f + (_t100 * _t43 * 2.0f + _t50 * (_t24 * (_t49 * _t68 * 6.0f + (_t47 * 6.0f + _t48 - _t93 * 6.0f - _t44 - _t45 - _t92 * 6.0f)) * 0.5f * _t10 + _t15) * 2.0f + _t35 * _t118 * 2.0f - _t69 * _t69 * 2.0f - _t114 - _t121)) * 0.5f * _t10) * _t73 * 2.0f - _t65 * _t120 * 2.0f) * 0.5f))) : -_t15;
+    const float _t124 = _t116 * _t116 + _t122 * _t122 + _t123 * _t123;
+    const int _t125 = _t124 > 0.0f;
+    const int _t126 = _t124 <= 1.00000002e+30f;
+    const float _t127 = 1.0f / sqrtf(_t124);
+    const float _t128 = (_t23 > 0.0f) ? _t24 : 0.0f;
+    const float _t129 = -(_t128 * _t21);
+    const float _t130 = -(_t15 * _t128);
+    const float _t131 = -(_t8 * _t128);
+    n[0] = (_t125) ? ((_t126) ? _t116 * _t127 : _t129) : _t129;
+    n[1] = (_t125) ? ((_t126) ? _t123 * _t127 : _t130) : _t130;
+    n[2] = (_t125) ? ((_t126) ? _t122 * _t127 : _t131) : _t131;
+}
+
+/* ---- Batch API ------------------------------------------------------------------------------------
+ *   void neovius_o3_offset_n(n, x, y, z, h, out)
+ *   void neovius_o3_shell_n(n, x, y, z, t, out)
+ *   void neovius_o3_offsetf_n(n, x, y, z, h, out)
+ *   void neovius_o3_shellf_n(n, x, y, z, t, out)
+ *
+ * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
+ * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
+ * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
+ * selects (blends), and there are no calls left for the vectoriser to stumble over.
+ *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
+ *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
+ *                `#pragma omp simd`; otherwise it carries `GCC ivdep` / `clang loop vectorize(enable)`.
+ *                Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * The results agree with the scalar functions to about 1e-15 of the field's scale (the only
+ * difference is the last bits of sin and cos). Points whose sin/cos arguments lie beyond the
+ * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
+ * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
+ * function's finite value. `out` must not overlap the input arrays. Other elementary functions
+ * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
+ * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ */
+#ifndef OFFSETGEN_SIMD_LOOP
+#if defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)
+#define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
+#elif defined(__clang__)
+#define OFFSETGEN_SIMD_LOOP _Pragma("clang loop vectorize(enable) interleave(enable)")
+#elif defined(__GNUC__)
+#define OFFSETGEN_SIMD_LOOP _Pragma("GCC ivdep")
+#else
+#define OFFSETGEN_SIMD_LOOP
+#endif
+#endif
+#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
+#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
+/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
+ * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
+ * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
+ * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
+ * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sin(double a)
+{
+    const double q = rint(a * 0.63661977236758138);
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
+    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
+    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : NAN;
+}
+
+static inline double offsetgen_batch_cos(double a)
+{
+    const double q = rint(a * 0.63661977236758138);
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
+    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
+    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : NAN;
+}
+#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
+#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
+#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
+/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
+ * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
+static inline float offsetgen_batch_sinf(float a)
+{
+    const float q = rintf(a * 0.636619772f);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
+    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
+    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+}
+
+static inline float offsetgen_batch_cosf(float a)
+{
+    const float q = rintf(a * 0.636619772f);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
+    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
+    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+}
+#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+
+
+/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ * Batch form of neovius_o3_offset: out[i] = neovius_o3_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
+ */
+static inline void neovius_o3_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t2 = 6.2831853071795862 * y[i];
+        const double _t3 = offsetgen_batch_cos(_t2);
+        const double _t4 = _t1 * _t3;
+        const double _t5 = 6.2831853071795862 * x[i];
+        const double _t6 = offsetgen_batch_cos(_t5);
+        const double _t7 = _t4 * _t6 * 4.0;
+        const double _t8 = _t7 + 3.0 * _t6;
+        const double _t9 = _t1 * 3.0;
+        const double _t10 = _t3 * 3.0;
+        const double _t11 = 6.2831853071795862 * h[i];
+        const double _t12 = offsetgen_batch_sin(_t0);
+        const double _t13 = _t12 * _t3;
+        const double _t14 = 4.0 * (_t13 * _t6);
+        const double _t15 = _t12 * 3.0 + _t14;
+        const double _t16 = _t11 * 0.33333333333333331;
+        const double _t17 = offsetgen_batch_sin(_t2);
+        const double _t18 = _t1 * _t17;
+        const double _t19 = 4.0 * (_t18 * _t6);
+        const double _t20 = _t19 + _t17 * 3.0;
+        const double _t21 = _t20 * _t20;
+        const double _t22 = _t15 * _t15;
+        const double _t23 = offsetgen_batch_sin(_t5);
+        const double _t24 = 4.0 * (_t4 * _t23);
+        const double _t25 = 3.0 * _t23 + _t24;
+        const double _t26 = _t25 * _t25;
+        const double _t27 = 1.0 / sqrt(_t21 + _t22 + _t26);
+        const double _t28 = _t7 + _t9;
+        const double _t29 = _t12 * _t17;
+        const double _t30 = 4.0 * (_t6 * _t29);
+        const double _t31 = 4.0 * (_t13 * _t23);
+        const double _t32 = _t27 * (_t15 * _t28 * 2.0 - _t20 * _t30 * 2.0 - _t31 * _t25 * 2.0) * 0.5;
+        const double _t33 = _t15 + _t16 * _t32;
+        const double _t34 = 4.0 * (_t18 * _t23);
+        const double _t35 = (_t8 * _t25 * 2.0 - _t15 * _t31 * 2.0 - _t34 * _t20 * 2.0) * _t27 * 0.5;
+        const double _t36 = _t35 * _t16 + _t25;
+        const double _t37 = _t7 + _t10;
+        const double _t38 = (_t15 * _t30 * 2.0 + _t34 * _t25 * 2.0 - _t20 * _t37 * 2.0) * _t27 * 0.5;
+        const double _t39 = _t20 - _t38 * _t16;
+        const double _t40 = sqrt(_t33 * _t33 + _t36 * _t36 + _t39 * _t39);
+        const double _t41 = _t20 * _t19 * 2.0;
+        const double _t42 = _t24 * _t25 * 2.0;
+        const double _t43 = _t30 * _t30 * 2.0;
+        const double _t44 = _t31 * _t31 * 2.0;
+        const double _t45 = _t23 * _t29 * 4.0;
+        const double _t46 = _t31 + _t16 * ((_t35 * _t32 * 2.0 + (_t15 * _t24 * 2.0 + _t31 * _t28 * 2.0 + _t31 * _t8 * 2.0 + _t25 * _t14 * 2.0 - _t34 * _t30 * 2.0 - _t20 * _t45 * 2.0)) * _t27 * 0.5);
+        const double _t47 = _t27 * (_t38 * _t32 * 2.0 - (_t20 * _t14 * 2.0 + _t30 * _t28 * 2.0 + _t15 * _t19 * 2.0 + _t37 * _t30 * 2.0 - _t45 * _t25 * 2.0 - _t34 * _t31 * 2.0)) * 0.5 * _t16 - _t30;
+        const double _t48 = 1.0 / _t40;
+        const double _t49 = _t33 - (_t33 * (_t27 * (_t22 * 2.0 + _t41 + _t42 - _t43 - _t44 - _t28 * _t28 * 2.0 + _t32 * _t32 * 2.0) * 0.5 * _t16 - _t28) * 2.0 + _t36 * _t46 * 2.0 - 2.0 * (_t47 * _t39)) * _t48 * 0.5 * _t16;
+        const double _t50 = _t15 * _t14 * 2.0;
+        const double _t51 = _t34 * _t34 * 2.0;
+        const double _t52 = _t34 - _t27 * (_t38 * _t35 * 2.0 + (2.0 * (_t15 * _t45) + _t31 * _t30 * 2.0 - _t20 * _t24 * 2.0 - _t34 * _t8 * 2.0 - _t19 * _t25 * 2.0 - _t34 * _t37 * 2.0)) * 0.5 * _t16;
+        const double _t53 = _t39 + 0.5 * ((_t39 * (_t37 - 0.5 * (_t27 * (_t38 * _t38 * 2.0 + (_t50 + _t21 * 2.0 + _t42 - _t37 * _t37 * 2.0 - _t43 - _t51))) * _t16) * 2.0 + _t33 * _t47 * 2.0 - _t52 * _t36 * 2.0) * _t48) * _t16;
+        const double _t54 = ((_t8 - (_t50 + _t26 * 2.0 + _t41 - _t8 * _t8 * 2.0 - _t51 - _t44 + _t35 * _t35 * 2.0) * _t27 * 0.5 * _t16) * _t36 * 2.0 - _t39 * _t52 * 2.0 - _t33 * _t46 * 2.0) * _t48 * 0.5 * _t16 + _t36;
+        const double _t55 = _t11 * 0.5;
+        const double _t56 = _t15 + _t32 * _t55;
+        const double _t57 = _t20 - _t38 * _t55;
+        const double _t58 = _t35 * _t55 + _t25;
+        const double _t59 = 1.5 * (_t40 + sqrt(_t49 * _t49 + _t53 * _t53 + _t54 * _t54)) - sqrt(_t56 * _t56 + _t57 * _t57 + _t58 * _t58) * 2.0;
+        out[i] = _t8 + _t9 + _t10 - _t11 * ((fabs(_t59) <= 7.0000069999999992) ? _t59 : ((_t59 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992)));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_o3_offset(x[i], y[i], z[i], h[i]);
+    }
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Batch form of neovius_o3_shell: out[i] = neovius_o3_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
+ */
+static inline void neovius_o3_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t2 = 6.2831853071795862 * y[i];
+        const double _t3 = offsetgen_batch_cos(_t2);
+        const double _t4 = _t1 * _t3;
+        const double _t5 = 6.2831853071795862 * x[i];
+        const double _t6 = offsetgen_batch_cos(_t5);
+        const double _t7 = _t4 * _t6 * 4.0;
+        const double _t8 = _t7 + 3.0 * _t6;
+        const double _t9 = _t1 * 3.0;
+        const double _t10 = _t3 * 3.0;
+        const double _t11 = _t8 + _t9 + _t10;
+        const double _t12 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t13 = offsetgen_batch_sin(_t2);
+        const double _t14 = _t1 * _t13;
+        const double _t15 = 4.0 * (_t14 * _t6);
+        const double _t16 = _t15 + _t13 * 3.0;
+        const double _t17 = _t16 * _t16;
+        const double _t18 = offsetgen_batch_sin(_t0);
+        const double _t19 = _t18 * _t3;
+        const double _t20 = 4.0 * (_t19 * _t6);
+        const double _t21 = _t18 * 3.0 + _t20;
+        const double _t22 = _t21 * _t21;
+        const double _t23 = offsetgen_batch_sin(_t5);
+        const double _t24 = 4.0 * (_t4 * _t23);
+        const double _t25 = 3.0 * _t23 + _t24;
+        const double _t26 = _t25 * _t25;
+        const double _t27 = 1.0 / sqrt(_t17 + _t22 + _t26);
+        const double _t28 = _t16 * _t15 * 2.0;
+        const double _t29 = _t24 * _t25 * 2.0;
+        const double _t30 = _t18 * _t13;
+        const double _t31 = 4.0 * (_t6 * _t30);
+        const double _t32 = _t31 * _t31 * 2.0;
+        const double _t33 = 4.0 * (_t19 * _t23);
+        const double _t34 = _t33 * _t33 * 2.0;
+        const double _t35 = _t7 + _t9;
+        const double _t36 = _t27 * (_t21 * _t35 * 2.0 - _t16 * _t31 * 2.0 - _t33 * _t25 * 2.0) * 0.5;
+        const double _t37 = _t12 * 0.33333333333333331;
+        const double _t38 = _t27 * (_t22 * 2.0 + _t28 + _t29 - _t32 - _t34 - _t35 * _t35 * 2.0 + _t36 * _t36 * 2.0) * 0.5 * _t37;
+        const double _t39 = _t37 * _t36;
+        const double _t40 = _t21 + _t39;
+        const double _t41 = 4.0 * (_t14 * _t23);
+        const double _t42 = (_t8 * _t25 * 2.0 - _t21 * _t33 * 2.0 - _t41 * _t16 * 2.0) * _t27 * 0.5;
+        const double _t43 = _t23 * _t30 * 4.0;
+        const double _t44 = _t37 * ((_t42 * _t36 * 2.0 + (_t21 * _t24 * 2.0 + _t33 * _t35 * 2.0 + _t33 * _t8 * 2.0 + _t25 * _t20 * 2.0 - _t41 * _t31 * 2.0 - _t16 * _t43 * 2.0)) * _t27 * 0.5);
+        const double _t45 = _t44 + _t33;
+        const double _t46 = _t37 * _t42;
+        const double _t47 = _t46 + _t25;
+        const double _t48 = _t7 + _t10;
+        const double _t49 = (_t21 * _t31 * 2.0 + _t41 * _t25 * 2.0 - _t16 * _t48 * 2.0) * _t27 * 0.5;
+        const double _t50 = _t27 * (_t49 * _t36 * 2.0 - (_t16 * _t20 * 2.0 + _t31 * _t35 * 2.0 + _t21 * _t15 * 2.0 + _t48 * _t31 * 2.0 - _t43 * _t25 * 2.0 - _t41 * _t33 * 2.0)) * 0.5 * _t37;
+        const double _t51 = _t50 - _t31;
+        const double _t52 = _t49 * _t37;
+        const double _t53 = _t16 - _t52;
+        const double _t54 = sqrt(_t47 * _t47 + _t53 * _t53 + _t40 * _t40);
+        const double _t55 = 1.0 / _t54;
+        const double _t56 = ((_t38 - _t35) * _t40 * 2.0 + _t45 * _t47 * 2.0 - _t51 * _t53 * 2.0) * _t55 * 0.5 * _t37 - _t40;
+        const double _t57 = _t21 * _t20 * 2.0;
+        const double _t58 = _t41 * _t41 * 2.0;
+        const double _t59 = _t37 * (0.5 * (_t27 * (_t49 * _t49 * 2.0 + (_t57 + _t17 * 2.0 + _t29 - _t48 * _t48 * 2.0 - _t32 - _t58))));
+        const double _t60 = _t27 * (_t49 * _t42 * 2.0 + (2.0 * (_t21 * _t43) + _t33 * _t31 * 2.0 - _t16 * _t24 * 2.0 - _t41 * _t8 * 2.0 - _t15 * _t25 * 2.0 - _t41 * _t48 * 2.0)) * 0.5 * _t37;
+        const double _t61 = _t60 - _t41;
+        const double _t62 = ((_t59 - _t48) * _t53 * 2.0 - _t51 * _t40 * 2.0 - _t61 * _t47 * 2.0) * _t55 * 0.5 * _t37 - _t53;
+        const double _t63 = (_t57 + _t26 * 2.0 + _t28 - _t8 * _t8 * 2.0 - _t58 - _t34 + _t42 * _t42 * 2.0) * _t27 * 0.5 * _t37;
+        const double _t64 = _t37 * (_t55 * ((_t8 - _t63) * _t47 * 2.0 + _t53 * _t61 * 2.0 - _t45 * _t40 * 2.0) * 0.5) + _t47;
+        const double _t65 = _t12 * 0.5;
+        const double _t66 = _t49 * _t65;
+        const double _t67 = _t16 - _t66;
+        const double _t68 = _t65 * _t36;
+        const double _t69 = _t21 + _t68;
+        const double _t70 = _t65 * _t42;
+        const double _t71 = _t70 + _t25;
+        const double _t72 = 1.5 * (sqrt(_t56 * _t56 + _t62 * _t62 + _t64 * _t64) + _t54) - sqrt(_t67 * _t67 + _t69 * _t69 + _t71 * _t71) * 2.0;
+        const double _t73 = _t70 - _t25;
+        const double _t74 = _t16 + _t66;
+        const double _t75 = _t21 - _t68;
+        const double _t76 = _t16 + _t52;
+        const double _t77 = _t21 - _t39;
+        const double _t78 = _t46 - _t25;
+        const double _t79 = sqrt(_t77 * _t77 + _t76 * _t76 + _t78 * _t78);
+        const double _t80 = 1.0 / _t79;
+        const double _t81 = _t60 + _t41;
+        const double _t82 = _t50 + _t31;
+        const double _t83 = _t76 - _t80 * (_t76 * (_t59 + _t48) * 2.0 + _t81 * _t78 * 2.0 - _t77 * _t82 * 2.0) * 0.5 * _t37;
+        const double _t84 = _t44 - _t33;
+        const double _t85 = _t78 - _t80 * (_t78 * (_t8 + _t63) * 2.0 + _t81 * _t76 * 2.0 - 2.0 * (_t84 * _t77)) * 0.5 * _t37;
+        const double _t86 = _t77 + _t37 * (_t80 * (_t84 * _t78 * 2.0 + _t76 * _t82 * 2.0 - (_t38 + _t35) * _t77 * 2.0) * 0.5);
+        const double _t87 = sqrt(_t73 * _t73 + _t74 * _t74 + _t75 * _t75) * 2.0 - 1.5 * (sqrt(_t83 * _t83 + _t85 * _t85 + _t86 * _t86) + _t79);
+        const double _t88 = -_t87;
+        out[i] = (_t11 - _t12 * ((fabs(_t72) <= 7.0000069999999992) ? _t72 : ((_t72 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992)))) * (_t11 + _t12 * ((fabs(_t87) <= 7.0000069999999992) ? _t88 : ((_t88 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992))));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_o3_shell(x[i], y[i], z[i], t[i]);
+    }
+}
+
+/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ * Batch form of neovius_o3_offsetf: out[i] = neovius_o3_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
+ */
+static inline void neovius_o3_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t2 = 6.28318548f * y[i];
+        const float _t3 = offsetgen_batch_cosf(_t2);
+        const float _t4 = _t1 * _t3;
+        const float _t5 = 6.28318548f * x[i];
+        const float _t6 = offsetgen_batch_cosf(_t5);
+        const float _t7 = _t4 * _t6 * 4.0f;
+        const float _t8 = _t7 + 3.0f * _t6;
+        const float _t9 = _t1 * 3.0f;
+        const float _t10 = _t3 * 3.0f;
+        const float _t11 = 6.28318548f * h[i];
+        const float _t12 = offsetgen_batch_sinf(_t0);
+        const float _t13 = _t12 * _t3;
+        const float _t14 = 4.0f * (_t13 * _t6);
+        const float _t15 = _t12 * 3.0f + _t14;
+        const float _t16 = _t11 * 0.333333343f;
+        const float _t17 = offsetgen_batch_sinf(_t2);
+        const float _t18 = _t1 * _t17;
+        const float _t19 = 4.0f * (_t18 * _t6);
+        const float _t20 = _t19 + _t17 * 3.0f;
+        const float _t21 = _t20 * _t20;
+        const float _t22 = _t15 * _t15;
+        const float _t23 = offsetgen_batch_sinf(_t5);
+        const float _t24 = 4.0f * (_t4 * _t23);
+        const float _t25 = 3.0f * _t23 + _t24;
+        const float _t26 = _t25 * _t25;
+        const float _t27 = 1.0f / sqrtf(_t21 + _t22 + _t26);
+        const float _t28 = _t7 + _t9;
+        const float _t29 = _t12 * _t17;
+        const float _t30 = 4.0f * (_t6 * _t29);
+        const float _t31 = 4.0f * (_t13 * _t23);
+        const float _t32 = _t27 * (_t15 * _t28 * 2.0f - _t20 * _t30 * 2.0f - _t31 * _t25 * 2.0f) * 0.5f;
+        const float _t33 = _t15 + _t16 * _t32;
+        const float _t34 = 4.0f * (_t18 * _t23);
+        const float _t35 = (_t8 * _t25 * 2.0f - _t15 * _t31 * 2.0f - _t34 * _t20 * 2.0f) * _t27 * 0.5f;
+        const float _t36 = _t35 * _t16 + _t25;
+        const float _t37 = _t7 + _t10;
+        const float _t38 = (_t15 * _t30 * 2.0f + _t34 * _t25 * 2.0f - _t20 * _t37 * 2.0f) * _t27 * 0.5f;
+        const float _t39 = _t20 - _t38 * _t16;
+        const float _t40 = sqrtf(_t33 * _t33 + _t36 * _t36 + _t39 * _t39);
+        const float _t41 = _t20 * _t19 * 2.0f;
+        const float _t42 = _t24 * _t25 * 2.0f;
+        const float _t43 = _t30 * _t30 * 2.0f;
+        const float _t44 = _t31 * _t31 * 2.0f;
+        const float _t45 = _t23 * _t29 * 4.0f;
+        const float _t46 = _t31 + _t16 * ((_t35 * _t32 * 2.0f + (_t15 * _t24 * 2.0f + _t31 * _t28 * 2.0f + _t31 * _t8 * 2.0f + _t25 * _t14 * 2.0f - _t34 * _t30 * 2.0f - _t20 * _t45 * 2.0f)) * _t27 * 0.5f);
+        const float _t47 = _t27 * (_t38 * _t32 * 2.0f - (_t20 * _t14 * 2.0f + _t30 * _t28 * 2.0f + _t15 * _t19 * 2.0f + _t37 * _t30 * 2.0f - _t45 * _t25 * 2.0f - _t34 * _t31 * 2.0f)) * 0.5f * _t16 - _t30;
+        const float _t48 = 1.0f / _t40;
+        const float _t49 = _t33 - (_t33 * (_t27 * (_t22 * 2.0f + _t41 + _t42 - _t43 - _t44 - _t28 * _t28 * 2.0f + _t32 * _t32 * 2.0f) * 0.5f * _t16 - _t28) * 2.0f + _t36 * _t46 * 2.0f - 2.0f * (_t47 * _t39)) * _t48 * 0.5f * _t16;
+        const float _t50 = _t15 * _t14 * 2.0f;
+        const float _t51 = _t34 * _t34 * 2.0f;
+        const float _t52 = _t34 - _t27 * (_t38 * _t35 * 2.0f + (2.0f * (_t15 * _t45) + _t31 * _t30 * 2.0f - _t20 * _t24 * 2.0f - _t34 * _t8 * 2.0f - _t19 * _t25 * 2.0f - _t34 * _t37 * 2.0f)) * 0.5f * _t16;
+        const float _t53 = _t39 + 0.5f * ((_t39 * (_t37 - 0.5f * (_t27 * (_t38 * _t38 * 2.0f + (_t50 + _t21 * 2.0f + _t42 - _t37 * _t37 * 2.0f - _t43 - _t51))) * _t16) * 2.0f + _t33 * _t47 * 2.0f - _t52 * _t36 * 2.0f) * _t48) * _t16;
+        const float _t54 = ((_t8 - (_t50 + _t26 * 2.0f + _t41 - _t8 * _t8 * 2.0f - _t51 - _t44 + _t35 * _t35 * 2.0f) * _t27 * 0.5f * _t16) * _t36 * 2.0f - _t39 * _t52 * 2.0f - _t33 * _t46 * 2.0f) * _t48 * 0.5f * _t16 + _t36;
+        const float _t55 = _t11 * 0.5f;
+        const float _t56 = _t15 + _t32 * _t55;
+        const float _t57 = _t20 - _t38 * _t55;
+        const float _t58 = _t35 * _t55 + _t25;
+        const float _t59 = 1.5f * (_t40 + sqrtf(_t49 * _t49 + _t53 * _t53 + _t54 * _t54)) - sqrtf(_t56 * _t56 + _t57 * _t57 + _t58 * _t58) * 2.0f;
+        out[i] = _t8 + _t9 + _t10 - _t11 * ((fabsf(_t59) <= 7.00000715f) ? _t59 : ((_t59 > 0.0f) ? 7.00000715f : (-7.00000715f)));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_o3_offsetf(x[i], y[i], z[i], h[i]);
+    }
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Batch form of neovius_o3_shellf: out[i] = neovius_o3_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
+ */
+static inline void neovius_o3_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t2 = 6.28318548f * y[i];
+        const float _t3 = offsetgen_batch_cosf(_t2);
+        const float _t4 = _t1 * _t3;
+        const float _t5 = 6.28318548f * x[i];
+        const float _t6 = offsetgen_batch_cosf(_t5);
+        const float _t7 = _t4 * _t6 * 4.0f;
+        const float _t8 = _t7 + 3.0f * _t6;
+        const float _t9 = _t1 * 3.0f;
+        const float _t10 = _t3 * 3.0f;
+        const float _t11 = _t8 + _t9 + _t10;
+        const float _t12 = 6.28318548f * (t[i] * 0.5f);
+        const float _t13 = offsetgen_batch_sinf(_t2);
+        const float _t14 = _t1 * _t13;
+        const float _t15 = 4.0f * (_t14 * _t6);
+        const float _t16 = _t15 + _t13 * 3.0f;
+        const float _t17 = _t16 * _t16;
+        const float _t18 = offsetgen_batch_sinf(_t0);
+        const float _t19 = _t18 * _t3;
+        const float _t20 = 4.0f * (_t19 * _t6);
+        const float _t21 = _t18 * 3.0f + _t20;
+        const float _t22 = _t21 * _t21;
+        const float _t23 = offsetgen_batch_sinf(_t5);
+        const float _t24 = 4.0f * (_t4 * _t23);
+        const float _t25 = 3.0f * _t23 + _t24;
+        const float _t26 = _t25 * _t25;
+        const float _t27 = 1.0f / sqrtf(_t17 + _t22 + _t26);
+        const float _t28 = _t16 * _t15 * 2.0f;
+        const float _t29 = _t24 * _t25 * 2.0f;
+        const float _t30 = _t18 * _t13;
+        const float _t31 = 4.0f * (_t6 * _t30);
+        const float _t32 = _t31 * _t31 * 2.0f;
+        const float _t33 = 4.0f * (_t19 * _t23);
+        const float _t34 = _t33 * _t33 * 2.0f;
+        const float _t35 = _t7 + _t9;
+        const float _t36 = _t27 * (_t21 * _t35 * 2.0f - _t16 * _t31 * 2.0f - _t33 * _t25 * 2.0f) * 0.5f;
+        const float _t37 = _t12 * 0.333333343f;
+        const float _t38 = _t27 * (_t22 * 2.0f + _t28 + _t29 - _t32 - _t34 - _t35 * _t35 * 2.0f + _t36 * _t36 * 2.0f) * 0.5f * _t37;
+        const float _t39 = _t37 * _t36;
+        const float _t40 = _t21 + _t39;
+        const float _t41 = 4.0f * (_t14 * _t23);
+        const float _t42 = (_t8 * _t25 * 2.0f - _t21 * _t33 * 2.0f - _t41 * _t16 * 2.0f) * _t27 * 0.5f;
+        const float _t43 = _t23 * _t30 * 4.0f;
+        const float _t44 = _t37 * ((_t42 * _t36 * 2.0f + (_t21 * _t24 * 2.0f + _t33 * _t35 * 2.0f + _t33 * _t8 * 2.0f + _t25 * _t20 * 2.0f - _t41 * _t31 * 2.0f - _t16 * _t43 * 2.0f)) * _t27 * 0.5f);
+        const float _t45 = _t44 + _t33;
+        const float _t46 = _t37 * _t42;
+        const float _t47 = _t46 + _t25;
+        const float _t48 = _t7 + _t10;
+        const float _t49 = (_t21 * _t31 * 2.0f + _t41 * _t25 * 2.0f - _t16 * _t48 * 2.0f) * _t27 * 0.5f;
+        const float _t50 = _t27 * (_t49 * _t36 * 2.0f - (_t16 * _t20 * 2.0f + _t31 * _t35 * 2.0f + _t21 * _t15 * 2.0f + _t48 * _t31 * 2.0f - _t43 * _t25 * 2.0f - _t41 * _t33 * 2.0f)) * 0.5f * _t37;
+        const float _t51 = _t50 - _t31;
+        const float _t52 = _t49 * _t37;
+        const float _t53 = _t16 - _t52;
+        const float _t54 = sqrtf(_t47 * _t47 + _t53 * _t53 + _t40 * _t40);
+        const float _t55 = 1.0f / _t54;
+        const float _t56 = ((_t38 - _t35) * _t40 * 2.0f + _t45 * _t47 * 2.0f - _t51 * _t53 * 2.0f) * _t55 * 0.5f * _t37 - _t40;
+        const float _t57 = _t21 * _t20 * 2.0f;
+        const float _t58 = _t41 * _t41 * 2.0f;
+        const float _t59 = _t37 * (0.5f * (_t27 * (_t49 * _t49 * 2.0f + (_t57 + _t17 * 2.0f + _t29 - _t48 * _t48 * 2.0f - _t32 - _t58))));
+        const float _t60 = _t27 * (_t49 * _t42 * 2.0f + (2.0f * (_t21 * _t43) + _t33 * _t31 * 2.0f - _t16 * _t24 * 2.0f - _t41 * _t8 * 2.0f - _t15 * _t25 * 2.0f - _t41 * _t48 * 2.0f)) * 0.5f * _t37;
+        const float _t61 = _t60 - _t41;
+        const float _t62 = ((_t59 - _t48) * _t53 * 2.0f - _t51 * _t40 * 2.0f - _t61 * _t47 * 2.0f) * _t55 * 0.5f * _t37 - _t53;
+        const float _t63 = (_t57 + _t26 * 2.0f + _t28 - _t8 * _t8 * 2.0f - _t58 - _t34 + _t42 * _t42 * 2.0f) * _t27 * 0.5f * _t37;
+        const float _t64 = _t37 * (_t55 * ((_t8 - _t63) * _t47 * 2.0f + _t53 * _t61 * 2.0f - _t45 * _t40 * 2.0f) * 0.5f) + _t47;
+        const float _t65 = _t12 * 0.5f;
+        const float _t66 = _t49 * _t65;
+        const float _t67 = _t16 - _t66;
+        const float _t68 = _t65 * _t36;
+        const float _t69 = _t21 + _t68;
+        const float _t70 = _t65 * _t42;
+        const float _t71 = _t70 + _t25;
+        const float _t72 = 1.5f * (sqrtf(_t56 * _t56 + _t62 * _t62 + _t64 * _t64) + _t54) - sqrtf(_t67 * _t67 + _t69 * _t69 + _t71 * _t71) * 2.0f;
+        const float _t73 = _t70 - _t25;
+        const float _t74 = _t16 + _t66;
+        const float _t75 = _t21 - _t68;
+        const float _t76 = _t16 + _t52;
+        const float _t77 = _t21 - _t39;
+        const float _t78 = _t46 - _t25;
+        const float _t79 = sqrtf(_t77 * _t77 + _t76 * _t76 + _t78 * _t78);
+        const float _t80 = 1.0f / _t79;
+        const float _t81 = _t60 + _t41;
+        const float _t82 = _t50 + _t31;
+        const float _t83 = _t76 - _t80 * (_t76 * (_t59 + _t48) * 2.0f + _t81 * _t78 * 2.0f - _t77 * _t82 * 2.0f) * 0.5f * _t37;
+        const float _t84 = _t44 - _t33;
+        const float _t85 = _t78 - _t80 * (_t78 * (_t8 + _t63) * 2.0f + _t81 * _t76 * 2.0f - 2.0f * (_t84 * _t77)) * 0.5f * _t37;
+        const float _t86 = _t77 + _t37 * (_t80 * (_t84 * _t78 * 2.0f + _t76 * _t82 * 2.0f - (_t38 + _t35) * _t77 * 2.0f) * 0.5f);
+        const float _t87 = sqrtf(_t73 * _t73 + _t74 * _t74 + _t75 * _t75) * 2.0f - 1.5f * (sqrtf(_t83 * _t83 + _t85 * _t85 + _t86 * _t86) + _t79);
+        const float _t88 = -_t87;
+        out[i] = (_t11 - _t12 * ((fabsf(_t72) <= 7.00000715f) ? _t72 : ((_t72 > 0.0f) ? 7.00000715f : (-7.00000715f)))) * (_t11 + _t12 * ((fabsf(_t87) <= 7.00000715f) ? _t88 : ((_t88 > 0.0f) ? 7.00000715f : (-7.00000715f))));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_o3_shellf(x[i], y[i], z[i], t[i]);
+    }
 }
 
 

@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 8
     - offset: 153
     - shell: 232
-    - normal: 464
+    - normal: 478
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":153,"shell":232,"normal":464}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":153,"shell":232,"normal":478}} */
 #ifndef OFFSETGEN_SCHWARZP_O3_GLSL
 #define OFFSETGEN_SCHWARZP_O3_GLSL
 
@@ -148,7 +148,7 @@ highp float schwarzp_o3_shell(highp vec3 p, highp float t)
     return (_t6 - ((abs(_t43) <= 1.73205256) ? _t44 : ((_t44 > 0.0) ? 1.73205256 : (-1.73205256))) * _t7) * (((abs(_t56) <= 1.73205256) ? _t57 : ((_t57 > 0.0) ? 1.73205256 : (-1.73205256))) * _t7 + _t6);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 464.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 478.
 highp vec3 schwarzp_o3_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -163,72 +163,79 @@ highp vec3 schwarzp_o3_normal(highp vec3 p, highp float h)
     highp float _t9 = 6.28318548 * p.y;
     highp float _t10 = sin(_t9);
     highp float _t11 = _t10 * _t10;
-    highp float _t12 = 1.0 / sqrt(_t7 + _t8 + _t11);
-    highp float _t13 = _t4 * _t12 * 0.5;
-    highp float _t14 = 6.28318548 * h;
-    highp float _t15 = _t14 * 0.333333343;
-    highp float _t16 = _t1 + _t13 * _t15;
-    highp float _t17 = cos(_t5);
-    highp float _t18 = _t6 * _t17;
-    highp float _t19 = _t18 * 2.0;
-    highp float _t20 = _t19 * _t12 * 0.5;
-    highp float _t21 = _t20 * _t15 + _t6;
-    highp float _t22 = cos(_t9);
-    highp float _t23 = _t22 * _t10;
-    highp float _t24 = _t23 * 2.0;
-    highp float _t25 = _t24 * _t12 * 0.5;
-    highp float _t26 = _t25 * _t15 + _t10;
-    highp float _t27 = sqrt(_t16 * _t16 + _t21 * _t21 + _t26 * _t26);
-    highp float _t28 = _t20 * _t25 * _t12;
-    highp float _t29 = _t15 * _t28;
-    highp float _t30 = _t20 * _t13 * _t12;
-    highp float _t31 = _t30 * _t15;
-    highp float _t32 = (2.0 * (_t17 * _t17) - _t7 * 2.0 - _t20 * _t20 * 2.0) * _t12 * 0.5;
-    highp float _t33 = _t32 * _t15 + _t17;
-    highp float _t34 = 1.0 / _t27;
-    highp float _t35 = (_t26 * _t29 * 2.0 + _t31 * _t16 * 2.0 - _t21 * _t33 * 2.0) * _t34 * 0.5;
-    highp float _t36 = _t21 - _t15 * _t35;
-    highp float _t37 = (_t22 * _t22 * 2.0 - _t11 * 2.0 - _t25 * _t25 * 2.0) * _t12 * 0.5;
-    highp float _t38 = _t22 + _t37 * _t15;
-    highp float _t39 = _t13 * _t25 * _t12;
-    highp float _t40 = _t39 * _t15;
-    highp float _t41 = (_t38 * _t26 * 2.0 - 2.0 * (_t21 * _t29) - _t40 * _t16 * 2.0) * _t34 * 0.5;
-    highp float _t42 = _t15 * _t41 + _t26;
-    highp float _t43 = (_t8 * 2.0 - _t2 * _t2 * 2.0 + _t13 * _t13 * 2.0) * _t12 * 0.5;
-    highp float _t44 = _t2 - _t43 * _t15;
-    highp float _t45 = (_t40 * _t26 * 2.0 + _t21 * _t31 * 2.0 - _t44 * _t16 * 2.0) * _t34 * 0.5;
-    highp float _t46 = _t45 * _t15 - _t16;
-    highp float _t47 = sqrt(_t36 * _t36 + _t42 * _t42 + _t46 * _t46);
-    highp float _t48 = _t14 * 0.5;
-    highp float _t49 = _t20 * _t48 + _t6;
-    highp float _t50 = _t10 + _t25 * _t48;
-    highp float _t51 = _t1 + _t13 * _t48;
-    highp float _t52 = sqrt(_t49 * _t49 + (_t50 * _t50 + _t51 * _t51));
-    bool _t53 = abs(1.5 * (_t27 + _t47) - _t52 * 2.0) <= 1.73205256;
-    highp float _t54 = 1.0 / _t47;
-    highp float _t55 = (_t20 * _t30 * 2.0 - _t13 * _t32) * _t12 * _t15;
-    highp float _t56 = (_t30 * _t25 + _t13 * _t28 + _t20 * _t39) * _t12 * _t15;
-    highp float _t57 = (_t43 * _t20 + _t30 * _t13 * 2.0) * _t12 * _t15;
-    highp float _t58 = _t31 + (_t31 * _t33 * 2.0 + _t44 * _t31 * 2.0 - _t40 * _t29 * 2.0 - _t21 * _t55 * 2.0 - _t26 * _t56 * 2.0 - _t16 * _t57 * 2.0 + _t45 * _t35 * 2.0) * _t34 * 0.5 * _t15;
-    highp float _t59 = _t29 * _t29 * 2.0;
-    highp float _t60 = _t31 * _t31 * 2.0;
-    highp float _t61 = (_t32 * _t25 - _t20 * _t28 * 2.0) * _t12 * _t15;
-    highp float _t62 = _t15 * ((_t25 * _t28 * 2.0 - _t37 * _t20) * _t12);
-    highp float _t63 = _t15 * (_t34 * (_t29 * _t33 * 2.0 + (_t61 * _t21 * 2.0 + _t38 * _t29 * 2.0) - _t26 * _t62 * 2.0 - _t16 * _t56 * 2.0 - _t40 * _t31 * 2.0 - _t35 * _t41 * 2.0) * 0.5) + _t29;
-    highp float _t64 = _t30 * _t48;
-    highp float _t65 = _t48 * _t28;
-    highp float _t66 = 1.0 / _t52;
-    highp float _t67 = (_t53) ? -(_t14 * (1.5 * (_t54 * (_t58 * _t46 * 2.0 + (0.5 * ((_t59 + _t16 * _t55 * 2.0 + _t60 + _t33 * _t33 * 2.0 - _t61 * _t26 * 2.0 - ((6.0 * _t18 + _t19 + 6.0 * (_t20 * _t32)) * _t12 * 0.5 * _t15 + _t6) * _t21 * 2.0 - _t35 * _t35 * 2.0) * _t34) * _t15 + _t33) * _t36 * 2.0 - _t63 * _t42 * 2.0) * 0.5 - _t35) + (_t51 * _t64 * 2.0 + _t50 * _t65 * 2.0 - _t49 * (_t32 * _t48 + _t17) * 2.0) * _t66 * 0.5 * 2.0) + _t6) : -_t6;
-    highp float _t68 = _t39 * _t48;
-    highp float _t69 = _t40 * _t40 * 2.0;
-    highp float _t70 = (_t43 * _t25 + _t39 * _t13 * 2.0) * _t12 * _t15;
-    highp float _t71 = (_t37 * _t13 - _t39 * _t25 * 2.0) * _t12 * _t15;
-    highp float _t72 = _t40 + (_t71 * _t26 * 2.0 + (_t44 * _t40 * 2.0 + _t40 * _t38 * 2.0) - _t70 * _t16 * 2.0 - _t31 * _t29 * 2.0 - _t21 * _t56 * 2.0 - 2.0 * (_t45 * _t41)) * _t34 * 0.5 * _t15;
-    highp float _t73 = (_t53) ? -(_t1 + _t14 * (_t66 * (_t50 * _t68 * 2.0 + _t49 * _t64 * 2.0 - _t51 * (_t2 - _t43 * _t48) * 2.0) * 0.5 * 2.0 - (_t45 + _t54 * ((_t44 - (_t45 * _t45 * 2.0 - (_t44 * _t44 * 2.0 + _t69 + _t60 + _t21 * _t57 * 2.0 + _t70 * _t26 * 2.0 - _t16 * (_t1 - (_t43 * _t13 * 6.0 - (_t3 * 6.0 + _t4)) * _t12 * 0.5 * _t15) * 2.0)) * _t34 * 0.5 * _t15) * _t46 * 2.0 + _t58 * _t36 * 2.0 + _t72 * _t42 * 2.0) * 0.5) * 1.5)) : -_t1;
-    highp float _t74 = (_t53) ? -(_t14 * (0.5 * (_t66 * (_t65 * _t49 * 2.0 + _t51 * _t68 * 2.0 - _t50 * (_t22 + _t37 * _t48) * 2.0)) * 2.0 - 1.5 * ((_t63 * _t36 * 2.0 - _t72 * _t46 * 2.0 - _t42 * (_t38 - (_t41 * _t41 * 2.0 - (_t38 * _t38 * 2.0 + (_t69 + _t59) + 2.0 * (_t21 * _t62) - 2.0 * (_t71 * _t16) - (_t10 + (_t24 + _t23 * 6.0 + _t37 * _t25 * 6.0) * _t12 * 0.5 * _t15) * _t26 * 2.0)) * _t34 * 0.5 * _t15) * 2.0) * _t54 * 0.5 - _t41)) + _t10) : -_t10;
-    highp float _t75 = _t67 * _t67 + _t73 * _t73 + _t74 * _t74;
-    highp float _t76 = (_t75 > 0.0) ? 1.0 / sqrt(_t75) : 0.0;
-    return vec3(_t67 * _t76, _t74 * _t76, _t76 * _t73);
+    highp float _t12 = _t7 + _t8 + _t11;
+    highp float _t13 = 1.0 / sqrt(_t12);
+    highp float _t14 = _t4 * _t13 * 0.5;
+    highp float _t15 = 6.28318548 * h;
+    highp float _t16 = _t15 * 0.333333343;
+    highp float _t17 = _t1 + _t14 * _t16;
+    highp float _t18 = cos(_t5);
+    highp float _t19 = _t6 * _t18;
+    highp float _t20 = _t19 * 2.0;
+    highp float _t21 = _t20 * _t13 * 0.5;
+    highp float _t22 = _t21 * _t16 + _t6;
+    highp float _t23 = cos(_t9);
+    highp float _t24 = _t23 * _t10;
+    highp float _t25 = _t24 * 2.0;
+    highp float _t26 = _t25 * _t13 * 0.5;
+    highp float _t27 = _t26 * _t16 + _t10;
+    highp float _t28 = sqrt(_t17 * _t17 + _t22 * _t22 + _t27 * _t27);
+    highp float _t29 = _t21 * _t26 * _t13;
+    highp float _t30 = _t16 * _t29;
+    highp float _t31 = _t21 * _t14 * _t13;
+    highp float _t32 = _t31 * _t16;
+    highp float _t33 = (2.0 * (_t18 * _t18) - _t7 * 2.0 - _t21 * _t21 * 2.0) * _t13 * 0.5;
+    highp float _t34 = _t33 * _t16 + _t18;
+    highp float _t35 = 1.0 / _t28;
+    highp float _t36 = (_t27 * _t30 * 2.0 + _t32 * _t17 * 2.0 - _t22 * _t34 * 2.0) * _t35 * 0.5;
+    highp float _t37 = _t22 - _t16 * _t36;
+    highp float _t38 = (_t23 * _t23 * 2.0 - _t11 * 2.0 - _t26 * _t26 * 2.0) * _t13 * 0.5;
+    highp float _t39 = _t23 + _t38 * _t16;
+    highp float _t40 = _t14 * _t26 * _t13;
+    highp float _t41 = _t40 * _t16;
+    highp float _t42 = (_t39 * _t27 * 2.0 - 2.0 * (_t22 * _t30) - _t41 * _t17 * 2.0) * _t35 * 0.5;
+    highp float _t43 = _t16 * _t42 + _t27;
+    highp float _t44 = (_t8 * 2.0 - _t2 * _t2 * 2.0 + _t14 * _t14 * 2.0) * _t13 * 0.5;
+    highp float _t45 = _t2 - _t44 * _t16;
+    highp float _t46 = (_t41 * _t27 * 2.0 + _t22 * _t32 * 2.0 - _t45 * _t17 * 2.0) * _t35 * 0.5;
+    highp float _t47 = _t46 * _t16 - _t17;
+    highp float _t48 = sqrt(_t37 * _t37 + _t43 * _t43 + _t47 * _t47);
+    highp float _t49 = _t15 * 0.5;
+    highp float _t50 = _t21 * _t49 + _t6;
+    highp float _t51 = _t10 + _t26 * _t49;
+    highp float _t52 = _t1 + _t14 * _t49;
+    highp float _t53 = sqrt(_t50 * _t50 + (_t51 * _t51 + _t52 * _t52));
+    bool _t54 = abs(1.5 * (_t28 + _t48) - _t53 * 2.0) <= 1.73205256;
+    highp float _t55 = 1.0 / _t48;
+    highp float _t56 = (_t21 * _t31 * 2.0 - _t14 * _t33) * _t13 * _t16;
+    highp float _t57 = (_t31 * _t26 + _t14 * _t29 + _t21 * _t40) * _t13 * _t16;
+    highp float _t58 = (_t44 * _t21 + _t31 * _t14 * 2.0) * _t13 * _t16;
+    highp float _t59 = _t32 + (_t32 * _t34 * 2.0 + _t45 * _t32 * 2.0 - _t41 * _t30 * 2.0 - _t22 * _t56 * 2.0 - _t27 * _t57 * 2.0 - _t17 * _t58 * 2.0 + _t46 * _t36 * 2.0) * _t35 * 0.5 * _t16;
+    highp float _t60 = _t30 * _t30 * 2.0;
+    highp float _t61 = _t32 * _t32 * 2.0;
+    highp float _t62 = (_t33 * _t26 - _t21 * _t29 * 2.0) * _t13 * _t16;
+    highp float _t63 = _t16 * ((_t26 * _t29 * 2.0 - _t38 * _t21) * _t13);
+    highp float _t64 = _t16 * (_t35 * (_t30 * _t34 * 2.0 + (_t62 * _t22 * 2.0 + _t39 * _t30 * 2.0) - _t27 * _t63 * 2.0 - _t17 * _t57 * 2.0 - _t41 * _t32 * 2.0 - _t36 * _t42 * 2.0) * 0.5) + _t30;
+    highp float _t65 = _t31 * _t49;
+    highp float _t66 = _t49 * _t29;
+    highp float _t67 = 1.0 / _t53;
+    highp float _t68 = (_t54) ? -(_t15 * (1.5 * (_t55 * (_t59 * _t47 * 2.0 + (0.5 * ((_t60 + _t17 * _t56 * 2.0 + _t61 + _t34 * _t34 * 2.0 - _t62 * _t27 * 2.0 - ((6.0 * _t19 + _t20 + 6.0 * (_t21 * _t33)) * _t13 * 0.5 * _t16 + _t6) * _t22 * 2.0 - _t36 * _t36 * 2.0) * _t35) * _t16 + _t34) * _t37 * 2.0 - _t64 * _t43 * 2.0) * 0.5 - _t36) + (_t52 * _t65 * 2.0 + _t51 * _t66 * 2.0 - _t50 * (_t33 * _t49 + _t18) * 2.0) * _t67 * 0.5 * 2.0) + _t6) : -_t6;
+    highp float _t69 = _t40 * _t49;
+    highp float _t70 = _t41 * _t41 * 2.0;
+    highp float _t71 = (_t44 * _t26 + _t40 * _t14 * 2.0) * _t13 * _t16;
+    highp float _t72 = (_t38 * _t14 - _t40 * _t26 * 2.0) * _t13 * _t16;
+    highp float _t73 = _t41 + (_t72 * _t27 * 2.0 + (_t45 * _t41 * 2.0 + _t41 * _t39 * 2.0) - _t71 * _t17 * 2.0 - _t32 * _t30 * 2.0 - _t22 * _t57 * 2.0 - 2.0 * (_t46 * _t42)) * _t35 * 0.5 * _t16;
+    highp float _t74 = (_t54) ? -(_t1 + _t15 * (_t67 * (_t51 * _t69 * 2.0 + _t50 * _t65 * 2.0 - _t52 * (_t2 - _t44 * _t49) * 2.0) * 0.5 * 2.0 - (_t46 + _t55 * ((_t45 - (_t46 * _t46 * 2.0 - (_t45 * _t45 * 2.0 + _t70 + _t61 + _t22 * _t58 * 2.0 + _t71 * _t27 * 2.0 - _t17 * (_t1 - (_t44 * _t14 * 6.0 - (_t3 * 6.0 + _t4)) * _t13 * 0.5 * _t16) * 2.0)) * _t35 * 0.5 * _t16) * _t47 * 2.0 + _t59 * _t37 * 2.0 + _t73 * _t43 * 2.0) * 0.5) * 1.5)) : -_t1;
+    highp float _t75 = (_t54) ? -(_t15 * (0.5 * (_t67 * (_t66 * _t50 * 2.0 + _t52 * _t69 * 2.0 - _t51 * (_t23 + _t38 * _t49) * 2.0)) * 2.0 - 1.5 * ((_t64 * _t37 * 2.0 - _t73 * _t47 * 2.0 - _t43 * (_t39 - (_t42 * _t42 * 2.0 - (_t39 * _t39 * 2.0 + (_t70 + _t60) + 2.0 * (_t22 * _t63) - 2.0 * (_t72 * _t17) - (_t10 + (_t25 + _t24 * 6.0 + _t38 * _t26 * 6.0) * _t13 * 0.5 * _t16) * _t27 * 2.0)) * _t35 * 0.5 * _t16) * 2.0) * _t55 * 0.5 - _t42)) + _t10) : -_t10;
+    highp float _t76 = _t68 * _t68 + _t74 * _t74 + _t75 * _t75;
+    bool _t77 = _t76 > 0.0;
+    bool _t78 = _t76 <= 1.00000002e+30;
+    highp float _t79 = 1.0 / sqrt(_t76);
+    highp float _t80 = (_t12 > 0.0) ? _t13 : 0.0;
+    highp float _t81 = -(_t80 * _t6);
+    highp float _t82 = -(_t10 * _t80);
+    highp float _t83 = -(_t1 * _t80);
+    return vec3((_t77) ? ((_t78) ? _t68 * _t79 : _t81) : _t81, (_t77) ? ((_t78) ? _t75 * _t79 : _t82) : _t82, (_t77) ? ((_t78) ? _t79 * _t74 : _t83) : _t83);
 }
 
 

@@ -42,9 +42,9 @@
  *   field    8
  *   offset   153
  *   shell    232
- *   normal   464
+ *   normal   478
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":153,"shell":232,"normal":464}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":153,"shell":232,"normal":478}} */
 #ifndef OFFSETGEN_SCHWARZP_O3_H
 #define OFFSETGEN_SCHWARZP_O3_H
 
@@ -168,7 +168,7 @@ static inline double schwarzp_o3_shell(double x, double y, double z, double t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 464
+ * Total ops: 478
  */
 static inline void schwarzp_o3_normal(double x, double y, double z, double h, double n[3])
 {
@@ -184,74 +184,81 @@ static inline void schwarzp_o3_normal(double x, double y, double z, double h, do
     const double _t9 = 6.2831853071795862 * y;
     const double _t10 = sin(_t9);
     const double _t11 = _t10 * _t10;
-    const double _t12 = 1.0 / sqrt(_t7 + _t8 + _t11);
-    const double _t13 = _t4 * _t12 * 0.5;
-    const double _t14 = 6.2831853071795862 * h;
-    const double _t15 = _t14 * 0.33333333333333331;
-    const double _t16 = _t1 + _t13 * _t15;
-    const double _t17 = cos(_t5);
-    const double _t18 = _t6 * _t17;
-    const double _t19 = _t18 * 2.0;
-    const double _t20 = _t19 * _t12 * 0.5;
-    const double _t21 = _t20 * _t15 + _t6;
-    const double _t22 = cos(_t9);
-    const double _t23 = _t22 * _t10;
-    const double _t24 = _t23 * 2.0;
-    const double _t25 = _t24 * _t12 * 0.5;
-    const double _t26 = _t25 * _t15 + _t10;
-    const double _t27 = sqrt(_t16 * _t16 + _t21 * _t21 + _t26 * _t26);
-    const double _t28 = _t20 * _t25 * _t12;
-    const double _t29 = _t15 * _t28;
-    const double _t30 = _t20 * _t13 * _t12;
-    const double _t31 = _t30 * _t15;
-    const double _t32 = (2.0 * (_t17 * _t17) - _t7 * 2.0 - _t20 * _t20 * 2.0) * _t12 * 0.5;
-    const double _t33 = _t32 * _t15 + _t17;
-    const double _t34 = 1.0 / _t27;
-    const double _t35 = (_t26 * _t29 * 2.0 + _t31 * _t16 * 2.0 - _t21 * _t33 * 2.0) * _t34 * 0.5;
-    const double _t36 = _t21 - _t15 * _t35;
-    const double _t37 = (_t22 * _t22 * 2.0 - _t11 * 2.0 - _t25 * _t25 * 2.0) * _t12 * 0.5;
-    const double _t38 = _t22 + _t37 * _t15;
-    const double _t39 = _t13 * _t25 * _t12;
-    const double _t40 = _t39 * _t15;
-    const double _t41 = (_t38 * _t26 * 2.0 - 2.0 * (_t21 * _t29) - _t40 * _t16 * 2.0) * _t34 * 0.5;
-    const double _t42 = _t15 * _t41 + _t26;
-    const double _t43 = (_t8 * 2.0 - _t2 * _t2 * 2.0 + _t13 * _t13 * 2.0) * _t12 * 0.5;
-    const double _t44 = _t2 - _t43 * _t15;
-    const double _t45 = (_t40 * _t26 * 2.0 + _t21 * _t31 * 2.0 - _t44 * _t16 * 2.0) * _t34 * 0.5;
-    const double _t46 = _t45 * _t15 - _t16;
-    const double _t47 = sqrt(_t36 * _t36 + _t42 * _t42 + _t46 * _t46);
-    const double _t48 = _t14 * 0.5;
-    const double _t49 = _t20 * _t48 + _t6;
-    const double _t50 = _t10 + _t25 * _t48;
-    const double _t51 = _t1 + _t13 * _t48;
-    const double _t52 = sqrt(_t49 * _t49 + (_t50 * _t50 + _t51 * _t51));
-    const int _t53 = fabs(1.5 * (_t27 + _t47) - _t52 * 2.0) <= 1.7320525396196846;
-    const double _t54 = 1.0 / _t47;
-    const double _t55 = (_t20 * _t30 * 2.0 - _t13 * _t32) * _t12 * _t15;
-    const double _t56 = (_t30 * _t25 + _t13 * _t28 + _t20 * _t39) * _t12 * _t15;
-    const double _t57 = (_t43 * _t20 + _t30 * _t13 * 2.0) * _t12 * _t15;
-    const double _t58 = _t31 + (_t31 * _t33 * 2.0 + _t44 * _t31 * 2.0 - _t40 * _t29 * 2.0 - _t21 * _t55 * 2.0 - _t26 * _t56 * 2.0 - _t16 * _t57 * 2.0 + _t45 * _t35 * 2.0) * _t34 * 0.5 * _t15;
-    const double _t59 = _t29 * _t29 * 2.0;
-    const double _t60 = _t31 * _t31 * 2.0;
-    const double _t61 = (_t32 * _t25 - _t20 * _t28 * 2.0) * _t12 * _t15;
-    const double _t62 = _t15 * ((_t25 * _t28 * 2.0 - _t37 * _t20) * _t12);
-    const double _t63 = _t15 * (_t34 * (_t29 * _t33 * 2.0 + (_t61 * _t21 * 2.0 + _t38 * _t29 * 2.0) - _t26 * _t62 * 2.0 - _t16 * _t56 * 2.0 - _t40 * _t31 * 2.0 - _t35 * _t41 * 2.0) * 0.5) + _t29;
-    const double _t64 = _t30 * _t48;
-    const double _t65 = _t48 * _t28;
-    const double _t66 = 1.0 / _t52;
-    const double _t67 = (_t53) ? -(_t14 * (1.5 * (_t54 * (_t58 * _t46 * 2.0 + (0.5 * ((_t59 + _t16 * _t55 * 2.0 + _t60 + _t33 * _t33 * 2.0 - _t61 * _t26 * 2.0 - ((6.0 * _t18 + _t19 + 6.0 * (_t20 * _t32)) * _t12 * 0.5 * _t15 + _t6) * _t21 * 2.0 - _t35 * _t35 * 2.0) * _t34) * _t15 + _t33) * _t36 * 2.0 - _t63 * _t42 * 2.0) * 0.5 - _t35) + (_t51 * _t64 * 2.0 + _t50 * _t65 * 2.0 - _t49 * (_t32 * _t48 + _t17) * 2.0) * _t66 * 0.5 * 2.0) + _t6) : -_t6;
-    const double _t68 = _t39 * _t48;
-    const double _t69 = _t40 * _t40 * 2.0;
-    const double _t70 = (_t43 * _t25 + _t39 * _t13 * 2.0) * _t12 * _t15;
-    const double _t71 = (_t37 * _t13 - _t39 * _t25 * 2.0) * _t12 * _t15;
-    const double _t72 = _t40 + (_t71 * _t26 * 2.0 + (_t44 * _t40 * 2.0 + _t40 * _t38 * 2.0) - _t70 * _t16 * 2.0 - _t31 * _t29 * 2.0 - _t21 * _t56 * 2.0 - 2.0 * (_t45 * _t41)) * _t34 * 0.5 * _t15;
-    const double _t73 = (_t53) ? -(_t1 + _t14 * (_t66 * (_t50 * _t68 * 2.0 + _t49 * _t64 * 2.0 - _t51 * (_t2 - _t43 * _t48) * 2.0) * 0.5 * 2.0 - (_t45 + _t54 * ((_t44 - (_t45 * _t45 * 2.0 - (_t44 * _t44 * 2.0 + _t69 + _t60 + _t21 * _t57 * 2.0 + _t70 * _t26 * 2.0 - _t16 * (_t1 - (_t43 * _t13 * 6.0 - (_t3 * 6.0 + _t4)) * _t12 * 0.5 * _t15) * 2.0)) * _t34 * 0.5 * _t15) * _t46 * 2.0 + _t58 * _t36 * 2.0 + _t72 * _t42 * 2.0) * 0.5) * 1.5)) : -_t1;
-    const double _t74 = (_t53) ? -(_t14 * (0.5 * (_t66 * (_t65 * _t49 * 2.0 + _t51 * _t68 * 2.0 - _t50 * (_t22 + _t37 * _t48) * 2.0)) * 2.0 - 1.5 * ((_t63 * _t36 * 2.0 - _t72 * _t46 * 2.0 - _t42 * (_t38 - (_t41 * _t41 * 2.0 - (_t38 * _t38 * 2.0 + (_t69 + _t59) + 2.0 * (_t21 * _t62) - 2.0 * (_t71 * _t16) - (_t10 + (_t24 + _t23 * 6.0 + _t37 * _t25 * 6.0) * _t12 * 0.5 * _t15) * _t26 * 2.0)) * _t34 * 0.5 * _t15) * 2.0) * _t54 * 0.5 - _t41)) + _t10) : -_t10;
-    const double _t75 = _t67 * _t67 + _t73 * _t73 + _t74 * _t74;
-    const double _t76 = (_t75 > 0.0) ? 1.0 / sqrt(_t75) : 0.0;
-    n[0] = _t67 * _t76;
-    n[1] = _t74 * _t76;
-    n[2] = _t76 * _t73;
+    const double _t12 = _t7 + _t8 + _t11;
+    const double _t13 = 1.0 / sqrt(_t12);
+    const double _t14 = _t4 * _t13 * 0.5;
+    const double _t15 = 6.2831853071795862 * h;
+    const double _t16 = _t15 * 0.33333333333333331;
+    const double _t17 = _t1 + _t14 * _t16;
+    const double _t18 = cos(_t5);
+    const double _t19 = _t6 * _t18;
+    const double _t20 = _t19 * 2.0;
+    const double _t21 = _t20 * _t13 * 0.5;
+    const double _t22 = _t21 * _t16 + _t6;
+    const double _t23 = cos(_t9);
+    const double _t24 = _t23 * _t10;
+    const double _t25 = _t24 * 2.0;
+    const double _t26 = _t25 * _t13 * 0.5;
+    const double _t27 = _t26 * _t16 + _t10;
+    const double _t28 = sqrt(_t17 * _t17 + _t22 * _t22 + _t27 * _t27);
+    const double _t29 = _t21 * _t26 * _t13;
+    const double _t30 = _t16 * _t29;
+    const double _t31 = _t21 * _t14 * _t13;
+    const double _t32 = _t31 * _t16;
+    const double _t33 = (2.0 * (_t18 * _t18) - _t7 * 2.0 - _t21 * _t21 * 2.0) * _t13 * 0.5;
+    const double _t34 = _t33 * _t16 + _t18;
+    const double _t35 = 1.0 / _t28;
+    const double _t36 = (_t27 * _t30 * 2.0 + _t32 * _t17 * 2.0 - _t22 * _t34 * 2.0) * _t35 * 0.5;
+    const double _t37 = _t22 - _t16 * _t36;
+    const double _t38 = (_t23 * _t23 * 2.0 - _t11 * 2.0 - _t26 * _t26 * 2.0) * _t13 * 0.5;
+    const double _t39 = _t23 + _t38 * _t16;
+    const double _t40 = _t14 * _t26 * _t13;
+    const double _t41 = _t40 * _t16;
+    const double _t42 = (_t39 * _t27 * 2.0 - 2.0 * (_t22 * _t30) - _t41 * _t17 * 2.0) * _t35 * 0.5;
+    const double _t43 = _t16 * _t42 + _t27;
+    const double _t44 = (_t8 * 2.0 - _t2 * _t2 * 2.0 + _t14 * _t14 * 2.0) * _t13 * 0.5;
+    const double _t45 = _t2 - _t44 * _t16;
+    const double _t46 = (_t41 * _t27 * 2.0 + _t22 * _t32 * 2.0 - _t45 * _t17 * 2.0) * _t35 * 0.5;
+    const double _t47 = _t46 * _t16 - _t17;
+    const double _t48 = sqrt(_t37 * _t37 + _t43 * _t43 + _t47 * _t47);
+    const double _t49 = _t15 * 0.5;
+    const double _t50 = _t21 * _t49 + _t6;
+    const double _t51 = _t10 + _t26 * _t49;
+    const double _t52 = _t1 + _t14 * _t49;
+    const double _t53 = sqrt(_t50 * _t50 + (_t51 * _t51 + _t52 * _t52));
+    const int _t54 = fabs(1.5 * (_t28 + _t48) - _t53 * 2.0) <= 1.7320525396196846;
+    const double _t55 = 1.0 / _t48;
+    const double _t56 = (_t21 * _t31 * 2.0 - _t14 * _t33) * _t13 * _t16;
+    const double _t57 = (_t31 * _t26 + _t14 * _t29 + _t21 * _t40) * _t13 * _t16;
+    const double _t58 = (_t44 * _t21 + _t31 * _t14 * 2.0) * _t13 * _t16;
+    const double _t59 = _t32 + (_t32 * _t34 * 2.0 + _t45 * _t32 * 2.0 - _t41 * _t30 * 2.0 - _t22 * _t56 * 2.0 - _t27 * _t57 * 2.0 - _t17 * _t58 * 2.0 + _t46 * _t36 * 2.0) * _t35 * 0.5 * _t16;
+    const double _t60 = _t30 * _t30 * 2.0;
+    const double _t61 = _t32 * _t32 * 2.0;
+    const double _t62 = (_t33 * _t26 - _t21 * _t29 * 2.0) * _t13 * _t16;
+    const double _t63 = _t16 * ((_t26 * _t29 * 2.0 - _t38 * _t21) * _t13);
+    const double _t64 = _t16 * (_t35 * (_t30 * _t34 * 2.0 + (_t62 * _t22 * 2.0 + _t39 * _t30 * 2.0) - _t27 * _t63 * 2.0 - _t17 * _t57 * 2.0 - _t41 * _t32 * 2.0 - _t36 * _t42 * 2.0) * 0.5) + _t30;
+    const double _t65 = _t31 * _t49;
+    const double _t66 = _t49 * _t29;
+    const double _t67 = 1.0 / _t53;
+    const double _t68 = (_t54) ? -(_t15 * (1.5 * (_t55 * (_t59 * _t47 * 2.0 + (0.5 * ((_t60 + _t17 * _t56 * 2.0 + _t61 + _t34 * _t34 * 2.0 - _t62 * _t27 * 2.0 - ((6.0 * _t19 + _t20 + 6.0 * (_t21 * _t33)) * _t13 * 0.5 * _t16 + _t6) * _t22 * 2.0 - _t36 * _t36 * 2.0) * _t35) * _t16 + _t34) * _t37 * 2.0 - _t64 * _t43 * 2.0) * 0.5 - _t36) + (_t52 * _t65 * 2.0 + _t51 * _t66 * 2.0 - _t50 * (_t33 * _t49 + _t18) * 2.0) * _t67 * 0.5 * 2.0) + _t6) : -_t6;
+    const double _t69 = _t40 * _t49;
+    const double _t70 = _t41 * _t41 * 2.0;
+    const double _t71 = (_t44 * _t26 + _t40 * _t14 * 2.0) * _t13 * _t16;
+    const double _t72 = (_t38 * _t14 - _t40 * _t26 * 2.0) * _t13 * _t16;
+    const double _t73 = _t41 + (_t72 * _t27 * 2.0 + (_t45 * _t41 * 2.0 + _t41 * _t39 * 2.0) - _t71 * _t17 * 2.0 - _t32 * _t30 * 2.0 - _t22 * _t57 * 2.0 - 2.0 * (_t46 * _t42)) * _t35 * 0.5 * _t16;
+    const double _t74 = (_t54) ? -(_t1 + _t15 * (_t67 * (_t51 * _t69 * 2.0 + _t50 * _t65 * 2.0 - _t52 * (_t2 - _t44 * _t49) * 2.0) * 0.5 * 2.0 - (_t46 + _t55 * ((_t45 - (_t46 * _t46 * 2.0 - (_t45 * _t45 * 2.0 + _t70 + _t61 + _t22 * _t58 * 2.0 + _t71 * _t27 * 2.0 - _t17 * (_t1 - (_t44 * _t14 * 6.0 - (_t3 * 6.0 + _t4)) * _t13 * 0.5 * _t16) * 2.0)) * _t35 * 0.5 * _t16) * _t47 * 2.0 + _t59 * _t37 * 2.0 + _t73 * _t43 * 2.0) * 0.5) * 1.5)) : -_t1;
+    const double _t75 = (_t54) ? -(_t15 * (0.5 * (_t67 * (_t66 * _t50 * 2.0 + _t52 * _t69 * 2.0 - _t51 * (_t23 + _t38 * _t49) * 2.0)) * 2.0 - 1.5 * ((_t64 * _t37 * 2.0 - _t73 * _t47 * 2.0 - _t43 * (_t39 - (_t42 * _t42 * 2.0 - (_t39 * _t39 * 2.0 + (_t70 + _t60) + 2.0 * (_t22 * _t63) - 2.0 * (_t72 * _t17) - (_t10 + (_t25 + _t24 * 6.0 + _t38 * _t26 * 6.0) * _t13 * 0.5 * _t16) * _t27 * 2.0)) * _t35 * 0.5 * _t16) * 2.0) * _t55 * 0.5 - _t42)) + _t10) : -_t10;
+    const double _t76 = _t68 * _t68 + _t74 * _t74 + _t75 * _t75;
+    const int _t77 = _t76 > 0.0;
+    const int _t78 = _t76 <= 1.0e+30;
+    const double _t79 = 1.0 / sqrt(_t76);
+    const double _t80 = (_t12 > 0.0) ? _t13 : 0.0;
+    const double _t81 = -(_t80 * _t6);
+    const double _t82 = -(_t10 * _t80);
+    const double _t83 = -(_t1 * _t80);
+    n[0] = (_t77) ? ((_t78) ? _t68 * _t79 : _t81) : _t81;
+    n[1] = (_t77) ? ((_t78) ? _t75 * _t79 : _t82) : _t82;
+    n[2] = (_t77) ? ((_t78) ? _t79 * _t74 : _t83) : _t83;
 }
 
 /* F, the field; the surface is F = 0.
@@ -371,7 +378,7 @@ static inline float schwarzp_o3_shellf(float x, float y, float z, float t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 464
+ * Total ops: 478
  */
 static inline void schwarzp_o3_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -387,74 +394,419 @@ static inline void schwarzp_o3_normalf(float x, float y, float z, float h, float
     const float _t9 = 6.28318548f * y;
     const float _t10 = sinf(_t9);
     const float _t11 = _t10 * _t10;
-    const float _t12 = 1.0f / sqrtf(_t7 + _t8 + _t11);
-    const float _t13 = _t4 * _t12 * 0.5f;
-    const float _t14 = 6.28318548f * h;
-    const float _t15 = _t14 * 0.333333343f;
-    const float _t16 = _t1 + _t13 * _t15;
-    const float _t17 = cosf(_t5);
-    const float _t18 = _t6 * _t17;
-    const float _t19 = _t18 * 2.0f;
-    const float _t20 = _t19 * _t12 * 0.5f;
-    const float _t21 = _t20 * _t15 + _t6;
-    const float _t22 = cosf(_t9);
-    const float _t23 = _t22 * _t10;
-    const float _t24 = _t23 * 2.0f;
-    const float _t25 = _t24 * _t12 * 0.5f;
-    const float _t26 = _t25 * _t15 + _t10;
-    const float _t27 = sqrtf(_t16 * _t16 + _t21 * _t21 + _t26 * _t26);
-    const float _t28 = _t20 * _t25 * _t12;
-    const float _t29 = _t15 * _t28;
-    const float _t30 = _t20 * _t13 * _t12;
-    const float _t31 = _t30 * _t15;
-    const float _t32 = (2.0f * (_t17 * _t17) - _t7 * 2.0f - _t20 * _t20 * 2.0f) * _t12 * 0.5f;
-    const float _t33 = _t32 * _t15 + _t17;
-    const float _t34 = 1.0f / _t27;
-    const float _t35 = (_t26 * _t29 * 2.0f + _t31 * _t16 * 2.0f - _t21 * _t33 * 2.0f) * _t34 * 0.5f;
-    const float _t36 = _t21 - _t15 * _t35;
-    const float _t37 = (_t22 * _t22 * 2.0f - _t11 * 2.0f - _t25 * _t25 * 2.0f) * _t12 * 0.5f;
-    const float _t38 = _t22 + _t37 * _t15;
-    const float _t39 = _t13 * _t25 * _t12;
-    const float _t40 = _t39 * _t15;
-    const float _t41 = (_t38 * _t26 * 2.0f - 2.0f * (_t21 * _t29) - _t40 * _t16 * 2.0f) * _t34 * 0.5f;
-    const float _t42 = _t15 * _t41 + _t26;
-    const float _t43 = (_t8 * 2.0f - _t2 * _t2 * 2.0f + _t13 * _t13 * 2.0f) * _t12 * 0.5f;
-    const float _t44 = _t2 - _t43 * _t15;
-    const float _t45 = (_t40 * _t26 * 2.0f + _t21 * _t31 * 2.0f - _t44 * _t16 * 2.0f) * _t34 * 0.5f;
-    const float _t46 = _t45 * _t15 - _t16;
-    const float _t47 = sqrtf(_t36 * _t36 + _t42 * _t42 + _t46 * _t46);
-    const float _t48 = _t14 * 0.5f;
-    const float _t49 = _t20 * _t48 + _t6;
-    const float _t50 = _t10 + _t25 * _t48;
-    const float _t51 = _t1 + _t13 * _t48;
-    const float _t52 = sqrtf(_t49 * _t49 + (_t50 * _t50 + _t51 * _t51));
-    const int _t53 = fabsf(1.5f * (_t27 + _t47) - _t52 * 2.0f) <= 1.73205256f;
-    const float _t54 = 1.0f / _t47;
-    const float _t55 = (_t20 * _t30 * 2.0f - _t13 * _t32) * _t12 * _t15;
-    const float _t56 = (_t30 * _t25 + _t13 * _t28 + _t20 * _t39) * _t12 * _t15;
-    const float _t57 = (_t43 * _t20 + _t30 * _t13 * 2.0f) * _t12 * _t15;
-    const float _t58 = _t31 + (_t31 * _t33 * 2.0f + _t44 * _t31 * 2.0f - _t40 * _t29 * 2.0f - _t21 * _t55 * 2.0f - _t26 * _t56 * 2.0f - _t16 * _t57 * 2.0f + _t45 * _t35 * 2.0f) * _t34 * 0.5f * _t15;
-    const float _t59 = _t29 * _t29 * 2.0f;
-    const float _t60 = _t31 * _t31 * 2.0f;
-    const float _t61 = (_t32 * _t25 - _t20 * _t28 * 2.0f) * _t12 * _t15;
-    const float _t62 = _t15 * ((_t25 * _t28 * 2.0f - _t37 * _t20) * _t12);
-    const float _t63 = _t15 * (_t34 * (_t29 * _t33 * 2.0f + (_t61 * _t21 * 2.0f + _t38 * _t29 * 2.0f) - _t26 * _t62 * 2.0f - _t16 * _t56 * 2.0f - _t40 * _t31 * 2.0f - _t35 * _t41 * 2.0f) * 0.5f) + _t29;
-    const float _t64 = _t30 * _t48;
-    const float _t65 = _t48 * _t28;
-    const float _t66 = 1.0f / _t52;
-    const float _t67 = (_t53) ? -(_t14 * (1.5f * (_t54 * (_t58 * _t46 * 2.0f + (0.5f * ((_t59 + _t16 * _t55 * 2.0f + _t60 + _t33 * _t33 * 2.0f - _t61 * _t26 * 2.0f - ((6.0f * _t18 + _t19 + 6.0f * (_t20 * _t32)) * _t12 * 0.5f * _t15 + _t6) * _t21 * 2.0f - _t35 * _t35 * 2.0f) * _t34) * _t15 + _t33) * _t36 * 2.0f - _t63 * _t42 * 2.0f) * 0.5f - _t35) + (_t51 * _t64 * 2.0f + _t50 * _t65 * 2.0f - _t49 * (_t32 * _t48 + _t17) * 2.0f) * _t66 * 0.5f * 2.0f) + _t6) : -_t6;
-    const float _t68 = _t39 * _t48;
-    const float _t69 = _t40 * _t40 * 2.0f;
-    const float _t70 = (_t43 * _t25 + _t39 * _t13 * 2.0f) * _t12 * _t15;
-    const float _t71 = (_t37 * _t13 - _t39 * _t25 * 2.0f) * _t12 * _t15;
-    const float _t72 = _t40 + (_t71 * _t26 * 2.0f + (_t44 * _t40 * 2.0f + _t40 * _t38 * 2.0f) - _t70 * _t16 * 2.0f - _t31 * _t29 * 2.0f - _t21 * _t56 * 2.0f - 2.0f * (_t45 * _t41)) * _t34 * 0.5f * _t15;
-    const float _t73 = (_t53) ? -(_t1 + _t14 * (_t66 * (_t50 * _t68 * 2.0f + _t49 * _t64 * 2.0f - _t51 * (_t2 - _t43 * _t48) * 2.0f) * 0.5f * 2.0f - (_t45 + _t54 * ((_t44 - (_t45 * _t45 * 2.0f - (_t44 * _t44 * 2.0f + _t69 + _t60 + _t21 * _t57 * 2.0f + _t70 * _t26 * 2.0f - _t16 * (_t1 - (_t43 * _t13 * 6.0f - (_t3 * 6.0f + _t4)) * _t12 * 0.5f * _t15) * 2.0f)) * _t34 * 0.5f * _t15) * _t46 * 2.0f + _t58 * _t36 * 2.0f + _t72 * _t42 * 2.0f) * 0.5f) * 1.5f)) : -_t1;
-    const float _t74 = (_t53) ? -(_t14 * (0.5f * (_t66 * (_t65 * _t49 * 2.0f + _t51 * _t68 * 2.0f - _t50 * (_t22 + _t37 * _t48) * 2.0f)) * 2.0f - 1.5f * ((_t63 * _t36 * 2.0f - _t72 * _t46 * 2.0f - _t42 * (_t38 - (_t41 * _t41 * 2.0f - (_t38 * _t38 * 2.0f + (_t69 + _t59) + 2.0f * (_t21 * _t62) - 2.0f * (_t71 * _t16) - (_t10 + (_t24 + _t23 * 6.0f + _t37 * _t25 * 6.0f) * _t12 * 0.5f * _t15) * _t26 * 2.0f)) * _t34 * 0.5f * _t15) * 2.0f) * _t54 * 0.5f - _t41)) + _t10) : -_t10;
-    const float _t75 = _t67 * _t67 + _t73 * _t73 + _t74 * _t74;
-    const float _t76 = (_t75 > 0.0f) ? 1.0f / sqrtf(_t75) : 0.0f;
-    n[0] = _t67 * _t76;
-    n[1] = _t74 * _t76;
-    n[2] = _t76 * _t73;
+    const float _t12 = _t7 + _t8 + _t11;
+    const float _t13 = 1.0f / sqrtf(_t12);
+    const float _t14 = _t4 * _t13 * 0.5f;
+    const float _t15 = 6.28318548f * h;
+    const float _t16 = _t15 * 0.333333343f;
+    const float _t17 = _t1 + _t14 * _t16;
+    const float _t18 = cosf(_t5);
+    const float _t19 = _t6 * _t18;
+    const float _t20 = _t19 * 2.0f;
+    const float _t21 = _t20 * _t13 * 0.5f;
+    const float _t22 = _t21 * _t16 + _t6;
+    const float _t23 = cosf(_t9);
+    const float _t24 = _t23 * _t10;
+    const float _t25 = _t24 * 2.0f;
+    const float _t26 = _t25 * _t13 * 0.5f;
+    const float _t27 = _t26 * _t16 + _t10;
+    const float _t28 = sqrtf(_t17 * _t17 + _t22 * _t22 + _t27 * _t27);
+    const float _t29 = _t21 * _t26 * _t13;
+    const float _t30 = _t16 * _t29;
+    const float _t31 = _t21 * _t14 * _t13;
+    const float _t32 = _t31 * _t16;
+    const float _t33 = (2.0f * (_t18 * _t18) - _t7 * 2.0f - _t21 * _t21 * 2.0f) * _t13 * 0.5f;
+    const float _t34 = _t33 * _t16 + _t18;
+    const float _t35 = 1.0f / _t28;
+    const float _t36 = (_t27 * _t30 * 2.0f + _t32 * _t17 * 2.0f - _t22 * _t34 * 2.0f) * _t35 * 0.5f;
+    const float _t37 = _t22 - _t16 * _t36;
+    const float _t38 = (_t23 * _t23 * 2.0f - _t11 * 2.0f - _t26 * _t26 * 2.0f) * _t13 * 0.5f;
+    const float _t39 = _t23 + _t38 * _t16;
+    const float _t40 = _t14 * _t26 * _t13;
+    const float _t41 = _t40 * _t16;
+    const float _t42 = (_t39 * _t27 * 2.0f - 2.0f * (_t22 * _t30) - _t41 * _t17 * 2.0f) * _t35 * 0.5f;
+    const float _t43 = _t16 * _t42 + _t27;
+    const float _t44 = (_t8 * 2.0f - _t2 * _t2 * 2.0f + _t14 * _t14 * 2.0f) * _t13 * 0.5f;
+    const float _t45 = _t2 - _t44 * _t16;
+    const float _t46 = (_t41 * _t27 * 2.0f + _t22 * _t32 * 2.0f - _t45 * _t17 * 2.0f) * _t35 * 0.5f;
+    const float _t47 = _t46 * _t16 - _t17;
+    const float _t48 = sqrtf(_t37 * _t37 + _t43 * _t43 + _t47 * _t47);
+    const float _t49 = _t15 * 0.5f;
+    const float _t50 = _t21 * _t49 + _t6;
+    const float _t51 = _t10 + _t26 * _t49;
+    const float _t52 = _t1 + _t14 * _t49;
+    const float _t53 = sqrtf(_t50 * _t50 + (_t51 * _t51 + _t52 * _t52));
+    const int _t54 = fabsf(1.5f * (_t28 + _t48) - _t53 * 2.0f) <= 1.73205256f;
+    const float _t55 = 1.0f / _t48;
+    const float _t56 = (_t21 * _t31 * 2.0f - _t14 * _t33) * _t13 * _t16;
+    const float _t57 = (_t31 * _t26 + _t14 * _t29 + _t21 * _t40) * _t13 * _t16;
+    const float _t58 = (_t44 * _t21 + _t31 * _t14 * 2.0f) * _t13 * _t16;
+    const float _t59 = _t32 + (_t32 * _t34 * 2.0f + _t45 * _t32 * 2.0f - _t41 * _t30 * 2.0f - _t22 * _t56 * 2.0f - _t27 * _t57 * 2.0f - _t17 * _t58 * 2.0f + _t46 * _t36 * 2.0f) * _t35 * 0.5f * _t16;
+    const float _t60 = _t30 * _t30 * 2.0f;
+    const float _t61 = _t32 * _t32 * 2.0f;
+    const float _t62 = (_t33 * _t26 - _t21 * _t29 * 2.0f) * _t13 * _t16;
+    const float _t63 = _t16 * ((_t26 * _t29 * 2.0f - _t38 * _t21) * _t13);
+    const float _t64 = _t16 * (_t35 * (_t30 * _t34 * 2.0f + (_t62 * _t22 * 2.0f + _t39 * _t30 * 2.0f) - _t27 * _t63 * 2.0f - _t17 * _t57 * 2.0f - _t41 * _t32 * 2.0f - _t36 * _t42 * 2.0f) * 0.5f) + _t30;
+    const float _t65 = _t31 * _t49;
+    const float _t66 = _t49 * _t29;
+    const float _t67 = 1.0f / _t53;
+    const float _t68 = (_t54) ? -(_t15 * (1.5f * (_t55 * (_t59 * _t47 * 2.0f + (0.5f * ((_t60 + _t17 * _t56 * 2.0f + _t61 + _t34 * _t34 * 2.0f - _t62 * _t27 * 2.0f - ((6.0f * _t19 + _t20 + 6.0f * (_t21 * _t33)) * _t13 * 0.5f * _t16 + _t6) * _t22 * 2.0f - _t36 * _t36 * 2.0f) * _t35) * _t16 + _t34) * _t37 * 2.0f - _t64 * _t43 * 2.0f) * 0.5f - _t36) + (_t52 * _t65 * 2.0f + _t51 * _t66 * 2.0f - _t50 * (_t33 * _t49 + _t18) * 2.0f) * _t67 * 0.5f * 2.0f) + _t6) : -_t6;
+    const float _t69 = _t40 * _t49;
+    const float _t70 = _t41 * _t41 * 2.0f;
+    const float _t71 = (_t44 * _t26 + _t40 * _t14 * 2.0f) * _t13 * _t16;
+    const float _t72 = (_t38 * _t14 - _t40 * _t26 * 2.0f) * _t13 * _t16;
+    const float _t73 = _t41 + (_t72 * _t27 * 2.0f + (_t45 * _t41 * 2.0f + _t41 * _t39 * 2.0f) - _t71 * _t17 * 2.0f - _t32 * _t30 * 2.0f - _t22 * _t57 * 2.0f - 2.0f * (_t46 * _t42)) * _t35 * 0.5f * _t16;
+    const float _t74 = (_t54) ? -(_t1 + _t15 * (_t67 * (_t51 * _t69 * 2.0f + _t50 * _t65 * 2.0f - _t52 * (_t2 - _t44 * _t49) * 2.0f) * 0.5f * 2.0f - (_t46 + _t55 * ((_t45 - (_t46 * _t46 * 2.0f - (_t45 * _t45 * 2.0f + _t70 + _t61 + _t22 * _t58 * 2.0f + _t71 * _t27 * 2.0f - _t17 * (_t1 - (_t44 * _t14 * 6.0f - (_t3 * 6.0f + _t4)) * _t13 * 0.5f * _t16) * 2.0f)) * _t35 * 0.5f * _t16) * _t47 * 2.0f + _t59 * _t37 * 2.0f + _t73 * _t43 * 2.0f) * 0.5f) * 1.5f)) : -_t1;
+    const float _t75 = (_t54) ? -(_t15 * (0.5f * (_t67 * (_t66 * _t50 * 2.0f + _t52 * _t69 * 2.0f - _t51 * (_t23 + _t38 * _t49) * 2.0f)) * 2.0f - 1.5f * ((_t64 * _t37 * 2.0f - _t73 * _t47 * 2.0f - _t43 * (_t39 - (_t42 * _t42 * 2.0f - (_t39 * _t39 * 2.0f + (_t70 + _t60) + 2.0f * (_t22 * _t63) - 2.0f * (_t72 * _t17) - (_t10 + (_t25 + _t24 * 6.0f + _t38 * _t26 * 6.0f) * _t13 * 0.5f * _t16) * _t27 * 2.0f)) * _t35 * 0.5f * _t16) * 2.0f) * _t55 * 0.5f - _t42)) + _t10) : -_t10;
+    const float _t76 = _t68 * _t68 + _t74 * _t74 + _t75 * _t75;
+    const int _t77 = _t76 > 0.0f;
+    const int _t78 = _t76 <= 1.00000002e+30f;
+    const float _t79 = 1.0f / sqrtf(_t76);
+    const float _t80 = (_t12 > 0.0f) ? _t13 : 0.0f;
+    const float _t81 = -(_t80 * _t6);
+    const float _t82 = -(_t10 * _t80);
+    const float _t83 = -(_t1 * _t80);
+    n[0] = (_t77) ? ((_t78) ? _t68 * _t79 : _t81) : _t81;
+    n[1] = (_t77) ? ((_t78) ? _t75 * _t79 : _t82) : _t82;
+    n[2] = (_t77) ? ((_t78) ? _t79 * _t74 : _t83) : _t83;
+}
+
+/* ---- Batch API ------------------------------------------------------------------------------------
+ *   void schwarzp_o3_offset_n(n, x, y, z, h, out)
+ *   void schwarzp_o3_shell_n(n, x, y, z, t, out)
+ *   void schwarzp_o3_offsetf_n(n, x, y, z, h, out)
+ *   void schwarzp_o3_shellf_n(n, x, y, z, t, out)
+ *
+ * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
+ * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
+ * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
+ * selects (blends), and there are no calls left for the vectoriser to stumble over.
+ *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
+ *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
+ *                `#pragma omp simd`; otherwise it carries `GCC ivdep` / `clang loop vectorize(enable)`.
+ *                Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * The results agree with the scalar functions to about 1e-15 of the field's scale (the only
+ * difference is the last bits of sin and cos). Points whose sin/cos arguments lie beyond the
+ * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
+ * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
+ * function's finite value. `out` must not overlap the input arrays. Other elementary functions
+ * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
+ * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ */
+#ifndef OFFSETGEN_SIMD_LOOP
+#if defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)
+#define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
+#elif defined(__clang__)
+#define OFFSETGEN_SIMD_LOOP _Pragma("clang loop vectorize(enable) interleave(enable)")
+#elif defined(__GNUC__)
+#define OFFSETGEN_SIMD_LOOP _Pragma("GCC ivdep")
+#else
+#define OFFSETGEN_SIMD_LOOP
+#endif
+#endif
+#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
+#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
+/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
+ * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
+ * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
+ * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
+ * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sin(double a)
+{
+    const double q = rint(a * 0.63661977236758138);
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
+    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
+    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : NAN;
+}
+
+static inline double offsetgen_batch_cos(double a)
+{
+    const double q = rint(a * 0.63661977236758138);
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
+    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
+    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : NAN;
+}
+#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
+#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
+#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
+/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
+ * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
+static inline float offsetgen_batch_sinf(float a)
+{
+    const float q = rintf(a * 0.636619772f);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
+    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
+    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+}
+
+static inline float offsetgen_batch_cosf(float a)
+{
+    const float q = rintf(a * 0.636619772f);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
+    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
+    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+}
+#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+
+
+/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ * Batch form of schwarzp_o3_offset: out[i] = schwarzp_o3_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
+ */
+static inline void schwarzp_o3_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t2 = 6.2831853071795862 * y[i];
+        const double _t3 = offsetgen_batch_cos(_t2);
+        const double _t4 = 6.2831853071795862 * x[i];
+        const double _t5 = offsetgen_batch_cos(_t4);
+        const double _t6 = 6.2831853071795862 * h[i];
+        const double _t7 = offsetgen_batch_sin(_t0);
+        const double _t8 = offsetgen_batch_sin(_t4);
+        const double _t9 = _t8 * _t8;
+        const double _t10 = _t7 * _t7;
+        const double _t11 = offsetgen_batch_sin(_t2);
+        const double _t12 = _t11 * _t11;
+        const double _t13 = 1.0 / sqrt(_t9 + _t10 + _t12);
+        const double _t14 = _t1 * _t7 * 2.0 * _t13 * 0.5;
+        const double _t15 = _t6 * 0.33333333333333331;
+        const double _t16 = _t7 + _t14 * _t15;
+        const double _t17 = _t8 * _t5 * 2.0 * _t13 * 0.5;
+        const double _t18 = _t17 * _t15 + _t8;
+        const double _t19 = _t3 * _t11 * 2.0 * _t13 * 0.5;
+        const double _t20 = _t19 * _t15 + _t11;
+        const double _t21 = sqrt(_t16 * _t16 + _t18 * _t18 + _t20 * _t20);
+        const double _t22 = _t15 * (_t17 * _t19 * _t13);
+        const double _t23 = _t17 * _t14 * _t13 * _t15;
+        const double _t24 = 1.0 / _t21;
+        const double _t25 = _t18 - _t15 * ((_t20 * _t22 * 2.0 + _t23 * _t16 * 2.0 - _t18 * ((2.0 * (_t5 * _t5) - _t9 * 2.0 - _t17 * _t17 * 2.0) * _t13 * 0.5 * _t15 + _t5) * 2.0) * _t24 * 0.5);
+        const double _t26 = _t14 * _t19 * _t13 * _t15;
+        const double _t27 = _t15 * (((_t3 + (_t3 * _t3 * 2.0 - _t12 * 2.0 - _t19 * _t19 * 2.0) * _t13 * 0.5 * _t15) * _t20 * 2.0 - 2.0 * (_t18 * _t22) - _t26 * _t16 * 2.0) * _t24 * 0.5) + _t20;
+        const double _t28 = (_t26 * _t20 * 2.0 + _t18 * _t23 * 2.0 - (_t1 - (_t10 * 2.0 - _t1 * _t1 * 2.0 + _t14 * _t14 * 2.0) * _t13 * 0.5 * _t15) * _t16 * 2.0) * _t24 * 0.5 * _t15 - _t16;
+        const double _t29 = _t6 * 0.5;
+        const double _t30 = _t17 * _t29 + _t8;
+        const double _t31 = _t11 + _t19 * _t29;
+        const double _t32 = _t7 + _t14 * _t29;
+        const double _t33 = 1.5 * (_t21 + sqrt(_t25 * _t25 + _t27 * _t27 + _t28 * _t28)) - sqrt(_t30 * _t30 + (_t31 * _t31 + _t32 * _t32)) * 2.0;
+        out[i] = _t1 + _t3 + _t5 - _t6 * ((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o3_offset(x[i], y[i], z[i], h[i]);
+    }
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Batch form of schwarzp_o3_shell: out[i] = schwarzp_o3_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
+ */
+static inline void schwarzp_o3_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t2 = 6.2831853071795862 * y[i];
+        const double _t3 = offsetgen_batch_cos(_t2);
+        const double _t4 = 6.2831853071795862 * x[i];
+        const double _t5 = offsetgen_batch_cos(_t4);
+        const double _t6 = _t1 + _t3 + _t5;
+        const double _t7 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t8 = _t7 * 0.5;
+        const double _t9 = offsetgen_batch_sin(_t2);
+        const double _t10 = offsetgen_batch_sin(_t4);
+        const double _t11 = _t10 * _t10;
+        const double _t12 = offsetgen_batch_sin(_t0);
+        const double _t13 = _t12 * _t12;
+        const double _t14 = _t9 * _t9;
+        const double _t15 = 1.0 / sqrt(_t11 + _t13 + _t14);
+        const double _t16 = _t3 * _t9 * 2.0 * _t15 * 0.5;
+        const double _t17 = _t8 * _t16;
+        const double _t18 = _t17 + _t9;
+        const double _t19 = _t10 * _t5 * 2.0 * _t15 * 0.5;
+        const double _t20 = _t8 * _t19;
+        const double _t21 = _t20 + _t10;
+        const double _t22 = _t1 * _t12 * 2.0 * _t15 * 0.5;
+        const double _t23 = _t8 * _t22;
+        const double _t24 = _t12 + _t23;
+        const double _t25 = _t7 * 0.33333333333333331;
+        const double _t26 = _t22 * _t25;
+        const double _t27 = _t12 + _t26;
+        const double _t28 = _t16 * _t25;
+        const double _t29 = _t9 + _t28;
+        const double _t30 = _t19 * _t25;
+        const double _t31 = _t30 + _t10;
+        const double _t32 = sqrt(_t27 * _t27 + _t29 * _t29 + _t31 * _t31);
+        const double _t33 = 1.0 / _t32;
+        const double _t34 = _t19 * _t22 * _t15 * _t25;
+        const double _t35 = _t22 * _t16 * _t15 * _t25;
+        const double _t36 = (_t13 * 2.0 - _t1 * _t1 * 2.0 + _t22 * _t22 * 2.0) * _t15 * 0.5 * _t25;
+        const double _t37 = 0.5 * (_t33 * (_t31 * _t34 * 2.0 + _t35 * _t29 * 2.0 - (_t1 - _t36) * _t27 * 2.0)) * _t25 - _t27;
+        const double _t38 = (_t3 * _t3 * 2.0 - _t14 * 2.0 - _t16 * _t16 * 2.0) * _t15 * 0.5 * _t25;
+        const double _t39 = _t25 * (_t19 * _t16 * _t15);
+        const double _t40 = _t33 * ((_t38 + _t3) * _t29 * 2.0 - _t35 * _t27 * 2.0 - _t31 * _t39 * 2.0) * 0.5 * _t25 + _t29;
+        const double _t41 = (2.0 * (_t5 * _t5) - _t11 * 2.0 - _t19 * _t19 * 2.0) * _t15 * 0.5 * _t25;
+        const double _t42 = _t31 + (_t31 * (_t41 + _t5) * 2.0 - _t34 * _t27 * 2.0 - _t29 * _t39 * 2.0) * _t33 * 0.5 * _t25;
+        const double _t43 = sqrt(_t18 * _t18 + _t21 * _t21 + _t24 * _t24) * 2.0 - 1.5 * (_t32 + sqrt(_t37 * _t37 + _t40 * _t40 + _t42 * _t42));
+        const double _t44 = -_t43;
+        const double _t45 = _t17 - _t9;
+        const double _t46 = _t12 - _t23;
+        const double _t47 = _t20 - _t10;
+        const double _t48 = _t12 - _t26;
+        const double _t49 = _t9 - _t28;
+        const double _t50 = _t30 - _t10;
+        const double _t51 = sqrt(_t48 * _t48 + _t49 * _t49 + _t50 * _t50);
+        const double _t52 = 1.0 / _t51;
+        const double _t53 = _t48 - _t25 * ((_t49 * _t35 * 2.0 + _t48 * (_t1 + _t36) * 2.0 - _t34 * _t50 * 2.0) * _t52 * 0.5);
+        const double _t54 = _t50 + _t25 * (_t52 * (_t49 * _t39 * 2.0 + (_t50 * (_t41 - _t5) * 2.0 + _t48 * _t34 * 2.0)) * 0.5);
+        const double _t55 = _t25 * ((_t49 * (_t38 - _t3) * 2.0 + _t50 * _t39 * 2.0 - _t48 * _t35 * 2.0) * _t52 * 0.5) + _t49;
+        const double _t56 = sqrt(_t45 * _t45 + (_t46 * _t46 + _t47 * _t47)) * 2.0 - 1.5 * (_t51 + sqrt(_t53 * _t53 + _t54 * _t54 + _t55 * _t55));
+        const double _t57 = -_t56;
+        out[i] = (_t6 - ((fabs(_t43) <= 1.7320525396196846) ? _t44 : ((_t44 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t7) * (((fabs(_t56) <= 1.7320525396196846) ? _t57 : ((_t57 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t7 + _t6);
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o3_shell(x[i], y[i], z[i], t[i]);
+    }
+}
+
+/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ * Batch form of schwarzp_o3_offsetf: out[i] = schwarzp_o3_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
+ */
+static inline void schwarzp_o3_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t2 = 6.28318548f * y[i];
+        const float _t3 = offsetgen_batch_cosf(_t2);
+        const float _t4 = 6.28318548f * x[i];
+        const float _t5 = offsetgen_batch_cosf(_t4);
+        const float _t6 = 6.28318548f * h[i];
+        const float _t7 = offsetgen_batch_sinf(_t0);
+        const float _t8 = offsetgen_batch_sinf(_t4);
+        const float _t9 = _t8 * _t8;
+        const float _t10 = _t7 * _t7;
+        const float _t11 = offsetgen_batch_sinf(_t2);
+        const float _t12 = _t11 * _t11;
+        const float _t13 = 1.0f / sqrtf(_t9 + _t10 + _t12);
+        const float _t14 = _t1 * _t7 * 2.0f * _t13 * 0.5f;
+        const float _t15 = _t6 * 0.333333343f;
+        const float _t16 = _t7 + _t14 * _t15;
+        const float _t17 = _t8 * _t5 * 2.0f * _t13 * 0.5f;
+        const float _t18 = _t17 * _t15 + _t8;
+        const float _t19 = _t3 * _t11 * 2.0f * _t13 * 0.5f;
+        const float _t20 = _t19 * _t15 + _t11;
+        const float _t21 = sqrtf(_t16 * _t16 + _t18 * _t18 + _t20 * _t20);
+        const float _t22 = _t15 * (_t17 * _t19 * _t13);
+        const float _t23 = _t17 * _t14 * _t13 * _t15;
+        const float _t24 = 1.0f / _t21;
+        const float _t25 = _t18 - _t15 * ((_t20 * _t22 * 2.0f + _t23 * _t16 * 2.0f - _t18 * ((2.0f * (_t5 * _t5) - _t9 * 2.0f - _t17 * _t17 * 2.0f) * _t13 * 0.5f * _t15 + _t5) * 2.0f) * _t24 * 0.5f);
+        const float _t26 = _t14 * _t19 * _t13 * _t15;
+        const float _t27 = _t15 * (((_t3 + (_t3 * _t3 * 2.0f - _t12 * 2.0f - _t19 * _t19 * 2.0f) * _t13 * 0.5f * _t15) * _t20 * 2.0f - 2.0f * (_t18 * _t22) - _t26 * _t16 * 2.0f) * _t24 * 0.5f) + _t20;
+        const float _t28 = (_t26 * _t20 * 2.0f + _t18 * _t23 * 2.0f - (_t1 - (_t10 * 2.0f - _t1 * _t1 * 2.0f + _t14 * _t14 * 2.0f) * _t13 * 0.5f * _t15) * _t16 * 2.0f) * _t24 * 0.5f * _t15 - _t16;
+        const float _t29 = _t6 * 0.5f;
+        const float _t30 = _t17 * _t29 + _t8;
+        const float _t31 = _t11 + _t19 * _t29;
+        const float _t32 = _t7 + _t14 * _t29;
+        const float _t33 = 1.5f * (_t21 + sqrtf(_t25 * _t25 + _t27 * _t27 + _t28 * _t28)) - sqrtf(_t30 * _t30 + (_t31 * _t31 + _t32 * _t32)) * 2.0f;
+        out[i] = _t1 + _t3 + _t5 - _t6 * ((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o3_offsetf(x[i], y[i], z[i], h[i]);
+    }
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Batch form of schwarzp_o3_shellf: out[i] = schwarzp_o3_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
+ */
+static inline void schwarzp_o3_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t2 = 6.28318548f * y[i];
+        const float _t3 = offsetgen_batch_cosf(_t2);
+        const float _t4 = 6.28318548f * x[i];
+        const float _t5 = offsetgen_batch_cosf(_t4);
+        const float _t6 = _t1 + _t3 + _t5;
+        const float _t7 = 6.28318548f * (t[i] * 0.5f);
+        const float _t8 = _t7 * 0.5f;
+        const float _t9 = offsetgen_batch_sinf(_t2);
+        const float _t10 = offsetgen_batch_sinf(_t4);
+        const float _t11 = _t10 * _t10;
+        const float _t12 = offsetgen_batch_sinf(_t0);
+        const float _t13 = _t12 * _t12;
+        const float _t14 = _t9 * _t9;
+        const float _t15 = 1.0f / sqrtf(_t11 + _t13 + _t14);
+        const float _t16 = _t3 * _t9 * 2.0f * _t15 * 0.5f;
+        const float _t17 = _t8 * _t16;
+        const float _t18 = _t17 + _t9;
+        const float _t19 = _t10 * _t5 * 2.0f * _t15 * 0.5f;
+        const float _t20 = _t8 * _t19;
+        const float _t21 = _t20 + _t10;
+        const float _t22 = _t1 * _t12 * 2.0f * _t15 * 0.5f;
+        const float _t23 = _t8 * _t22;
+        const float _t24 = _t12 + _t23;
+        const float _t25 = _t7 * 0.333333343f;
+        const float _t26 = _t22 * _t25;
+        const float _t27 = _t12 + _t26;
+        const float _t28 = _t16 * _t25;
+        const float _t29 = _t9 + _t28;
+        const float _t30 = _t19 * _t25;
+        const float _t31 = _t30 + _t10;
+        const float _t32 = sqrtf(_t27 * _t27 + _t29 * _t29 + _t31 * _t31);
+        const float _t33 = 1.0f / _t32;
+        const float _t34 = _t19 * _t22 * _t15 * _t25;
+        const float _t35 = _t22 * _t16 * _t15 * _t25;
+        const float _t36 = (_t13 * 2.0f - _t1 * _t1 * 2.0f + _t22 * _t22 * 2.0f) * _t15 * 0.5f * _t25;
+        const float _t37 = 0.5f * (_t33 * (_t31 * _t34 * 2.0f + _t35 * _t29 * 2.0f - (_t1 - _t36) * _t27 * 2.0f)) * _t25 - _t27;
+        const float _t38 = (_t3 * _t3 * 2.0f - _t14 * 2.0f - _t16 * _t16 * 2.0f) * _t15 * 0.5f * _t25;
+        const float _t39 = _t25 * (_t19 * _t16 * _t15);
+        const float _t40 = _t33 * ((_t38 + _t3) * _t29 * 2.0f - _t35 * _t27 * 2.0f - _t31 * _t39 * 2.0f) * 0.5f * _t25 + _t29;
+        const float _t41 = (2.0f * (_t5 * _t5) - _t11 * 2.0f - _t19 * _t19 * 2.0f) * _t15 * 0.5f * _t25;
+        const float _t42 = _t31 + (_t31 * (_t41 + _t5) * 2.0f - _t34 * _t27 * 2.0f - _t29 * _t39 * 2.0f) * _t33 * 0.5f * _t25;
+        const float _t43 = sqrtf(_t18 * _t18 + _t21 * _t21 + _t24 * _t24) * 2.0f - 1.5f * (_t32 + sqrtf(_t37 * _t37 + _t40 * _t40 + _t42 * _t42));
+        const float _t44 = -_t43;
+        const float _t45 = _t17 - _t9;
+        const float _t46 = _t12 - _t23;
+        const float _t47 = _t20 - _t10;
+        const float _t48 = _t12 - _t26;
+        const float _t49 = _t9 - _t28;
+        const float _t50 = _t30 - _t10;
+        const float _t51 = sqrtf(_t48 * _t48 + _t49 * _t49 + _t50 * _t50);
+        const float _t52 = 1.0f / _t51;
+        const float _t53 = _t48 - _t25 * ((_t49 * _t35 * 2.0f + _t48 * (_t1 + _t36) * 2.0f - _t34 * _t50 * 2.0f) * _t52 * 0.5f);
+        const float _t54 = _t50 + _t25 * (_t52 * (_t49 * _t39 * 2.0f + (_t50 * (_t41 - _t5) * 2.0f + _t48 * _t34 * 2.0f)) * 0.5f);
+        const float _t55 = _t25 * ((_t49 * (_t38 - _t3) * 2.0f + _t50 * _t39 * 2.0f - _t48 * _t35 * 2.0f) * _t52 * 0.5f) + _t49;
+        const float _t56 = sqrtf(_t45 * _t45 + (_t46 * _t46 + _t47 * _t47)) * 2.0f - 1.5f * (_t51 + sqrtf(_t53 * _t53 + _t54 * _t54 + _t55 * _t55));
+        const float _t57 = -_t56;
+        out[i] = (_t6 - ((fabsf(_t43) <= 1.73205256f) ? _t44 : ((_t44 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t7) * (((fabsf(_t56) <= 1.73205256f) ? _t57 : ((_t57 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t7 + _t6);
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o3_shellf(x[i], y[i], z[i], t[i]);
+    }
 }
 
 

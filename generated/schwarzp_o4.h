@@ -42,9 +42,9 @@
  *   field    8
  *   offset   473
  *   shell    781
- *   normal   1401
+ *   normal   1415
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":4,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":473,"shell":781,"normal":1401}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":4,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":473,"shell":781,"normal":1415}} */
 #ifndef OFFSETGEN_SCHWARZP_O4_H
 #define OFFSETGEN_SCHWARZP_O4_H
 
@@ -296,7 +296,7 @@ static inline double schwarzp_o4_shell(double x, double y, double z, double t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 1401
+ * Total ops: 1415
  */
 static inline void schwarzp_o4_normal(double x, double y, double z, double h, double n[3])
 {
@@ -312,177 +312,184 @@ static inline void schwarzp_o4_normal(double x, double y, double z, double h, do
     const double _t9 = 6.2831853071795862 * y;
     const double _t10 = sin(_t9);
     const double _t11 = _t10 * _t10;
-    const double _t12 = 1.0 / sqrt(_t5 + _t8 + _t11);
-    const double _t13 = _t4 * _t12 * 0.5;
-    const double _t14 = cos(_t6);
-    const double _t15 = _t14 * _t7;
-    const double _t16 = _t15 * 2.0;
-    const double _t17 = _t16 * _t12 * 0.5;
-    const double _t18 = _t13 * _t17 * _t12;
-    const double _t19 = 6.2831853071795862 * h;
-    const double _t20 = _t19 * 0.25;
-    const double _t21 = _t18 * _t20;
-    const double _t22 = _t13 * _t20 + _t1;
-    const double _t23 = cos(_t9);
-    const double _t24 = _t23 * _t10;
-    const double _t25 = _t24 * 2.0;
-    const double _t26 = _t25 * _t12 * 0.5;
-    const double _t27 = _t17 * _t26 * _t12;
-    const double _t28 = _t27 * _t20;
-    const double _t29 = _t10 + _t26 * _t20;
-    const double _t30 = _t8 * 2.0;
-    const double _t31 = _t14 * _t14;
-    const double _t32 = (_t30 - _t31 * 2.0 + _t17 * _t17 * 2.0) * _t12 * 0.5;
-    const double _t33 = _t14 - _t32 * _t20;
-    const double _t34 = _t7 + _t17 * _t20;
-    const double _t35 = sqrt(_t29 * _t29 + _t34 * _t34 + _t22 * _t22);
-    const double _t36 = 1.0 / _t35;
-    const double _t37 = (_t21 * _t22 * 2.0 + _t28 * _t29 * 2.0 - _t33 * _t34 * 2.0) * _t36 * 0.5;
-    const double _t38 = _t37 * _t20 - _t34;
-    const double _t39 = _t23 * _t23;
-    const double _t40 = _t11 * 2.0;
-    const double _t41 = (_t39 * 2.0 - _t40 - _t26 * _t26 * 2.0) * _t12 * 0.5;
-    const double _t42 = _t23 + _t41 * _t20;
-    const double _t43 = _t13 * _t26 * _t12;
-    const double _t44 = _t43 * _t20;
-    const double _t45 = 0.5 * ((_t42 * _t29 * 2.0 - _t28 * _t34 * 2.0 - _t44 * _t22 * 2.0) * _t36);
-    const double _t46 = _t29 + _t45 * _t20;
-    const double _t47 = _t2 * _t2;
-    const double _t48 = _t5 * 2.0;
-    const double _t49 = (2.0 * _t47 - _t48 - _t13 * _t13 * 2.0) * _t12 * 0.5;
-    const double _t50 = _t49 * _t20 + _t2;
-    const double _t51 = (_t21 * _t34 * 2.0 + _t44 * _t29 * 2.0 - _t50 * _t22 * 2.0) * _t36 * 0.5;
-    const double _t52 = _t51 * _t20 - _t22;
-    const double _t53 = sqrt(_t46 * _t46 + (_t52 * _t52 + _t38 * _t38));
-    const double _t54 = 1.0 / _t53;
-    const double _t55 = (_t32 * _t13 + _t18 * _t17 * 2.0) * _t12;
-    const double _t56 = _t55 * _t20;
-    const double _t57 = _t28 * _t28 * 2.0;
-    const double _t58 = (_t32 * _t26 + _t27 * _t17 * 2.0) * _t12;
-    const double _t59 = _t58 * _t20;
-    const double _t60 = _t21 * _t21 * 2.0;
-    const double _t61 = (_t32 * _t17 * 6.0 - (_t15 * 6.0 + _t16)) * _t12 * 0.5;
-    const double _t62 = _t7 - _t61 * _t20;
-    const double _t63 = (_t56 * _t22 * 2.0 + (_t57 + (_t33 * _t33 * 2.0 + _t29 * _t59 * 2.0)) + _t60 - _t62 * _t34 * 2.0 - _t37 * _t37 * 2.0) * _t36 * 0.5;
-    const double _t64 = _t33 + _t63 * _t20;
-    const double _t65 = (_t18 * _t26 + _t17 * _t43 + _t13 * _t27) * _t12;
-    const double _t66 = _t65 * _t20;
-    const double _t67 = (_t41 * _t17 - _t27 * _t26 * 2.0) * _t12;
-    const double _t68 = _t67 * _t20;
-    const double _t69 = (_t22 * _t66 * 2.0 + _t21 * _t44 * 2.0 + _t59 * _t34 * 2.0 - _t28 * _t33 * 2.0 - _t29 * _t68 * 2.0 - _t42 * _t28 * 2.0 + _t45 * _t37 * 2.0) * _t36 * 0.5;
-    const double _t70 = _t28 - _t69 * _t20;
-    const double _t71 = (_t13 * _t18 * 2.0 - _t17 * _t49) * _t12;
-    const double _t72 = _t71 * _t20;
-    const double _t73 = (_t21 * _t33 * 2.0 + _t21 * _t50 * 2.0 - _t44 * _t28 * 2.0 - _t29 * _t66 * 2.0 - _t22 * _t72 * 2.0 - _t56 * _t34 * 2.0 + _t51 * _t37 * 2.0) * _t36 * 0.5;
-    const double _t74 = _t21 + _t73 * _t20;
-    const double _t75 = _t54 * (_t38 * _t64 * 2.0 + _t46 * _t70 * 2.0 - _t52 * _t74 * 2.0) * 0.5;
-    const double _t76 = _t38 + _t75 * _t20;
-    const double _t77 = (_t25 + _t24 * 6.0 + _t41 * _t26 * 6.0) * _t12 * 0.5;
-    const double _t78 = _t10 + _t77 * _t20;
-    const double _t79 = (_t26 * _t43 * 2.0 - _t41 * _t13) * _t12;
-    const double _t80 = _t79 * _t20;
-    const double _t81 = _t44 * _t44 * 2.0;
-    const double _t82 = _t36 * (_t45 * _t45 * 2.0 + (_t34 * _t68 * 2.0 + _t78 * _t29 * 2.0 - _t57 - _t22 * _t80 * 2.0 - _t42 * _t42 * 2.0 - _t81)) * 0.5;
-    const double _t83 = _t42 - _t82 * _t20;
-    const double _t84 = (_t49 * _t26 - _t13 * _t43 * 2.0) * _t12;
-    const double _t85 = _t84 * _t20;
-    const double _t86 = (_t50 * _t44 * 2.0 + (_t22 * _t85 * 2.0 + _t42 * _t44 * 2.0) - _t29 * _t80 * 2.0 - _t66 * _t34 * 2.0 - _t21 * _t28 * 2.0 - _t51 * _t45 * 2.0) * _t36 * 0.5;
-    const double _t87 = _t44 + _t86 * _t20;
-    const double _t88 = (_t83 * _t46 * 2.0 + _t38 * _t70 * 2.0 + _t52 * _t87 * 2.0) * _t54 * 0.5;
-    const double _t89 = _t46 + _t88 * _t20;
-    const double _t90 = (6.0 * _t3 + _t4 + 6.0 * (_t13 * _t49)) * _t12 * 0.5;
-    const double _t91 = _t90 * _t20 + _t1;
-    const double _t92 = (_t60 + (_t50 * _t50 * 2.0 + _t34 * _t72 * 2.0) + _t81 - _t91 * _t22 * 2.0 - _t29 * _t85 * 2.0 - _t51 * _t51 * 2.0) * _t36 * 0.5;
-    const double _t93 = _t50 + _t92 * _t20;
-    const double _t94 = 0.5 * ((_t38 * _t74 * 2.0 - _t46 * _t87 * 2.0 - 2.0 * (_t93 * _t52)) * _t54);
-    const double _t95 = _t52 - _t94 * _t20;
-    const double _t96 = sqrt(_t76 * _t76 + _t89 * _t89 + _t95 * _t95);
-    const double _t97 = _t19 * 0.5;
-    const double _t98 = _t13 * _t97 + _t1;
-    const double _t99 = _t10 + _t26 * _t97;
-    const double _t100 = _t7 + _t17 * _t97;
-    const double _t101 = sqrt(_t98 * _t98 + (_t99 * _t99 + _t100 * _t100));
-    const double _t102 = _t19 * 0.33333333333333331;
-    const double _t103 = _t7 + _t17 * _t102;
-    const double _t104 = _t13 * _t102 + _t1;
-    const double _t105 = _t26 * _t102 + _t10;
-    const double _t106 = sqrt(_t103 * _t103 + _t104 * _t104 + _t105 * _t105);
-    const double _t107 = _t102 * _t43;
-    const double _t108 = _t18 * _t102;
-    const double _t109 = _t49 * _t102 + _t2;
-    const double _t110 = 1.0 / _t106;
-    const double _t111 = (_t105 * _t107 * 2.0 + _t108 * _t103 * 2.0 - _t104 * _t109 * 2.0) * _t110 * 0.5;
-    const double _t112 = _t104 - _t102 * _t111;
-    const double _t113 = _t23 + _t41 * _t102;
-    const double _t114 = _t27 * _t102;
-    const double _t115 = (_t113 * _t105 * 2.0 - 2.0 * (_t104 * _t107) - _t114 * _t103 * 2.0) * _t110 * 0.5;
-    const double _t116 = _t102 * _t115 + _t105;
-    const double _t117 = _t14 - _t32 * _t102;
-    const double _t118 = (_t114 * _t105 * 2.0 + _t104 * _t108 * 2.0 - _t117 * _t103 * 2.0) * _t110 * 0.5;
-    const double _t119 = _t118 * _t102 - _t103;
-    const double _t120 = sqrt(_t112 * _t112 + _t116 * _t116 + _t119 * _t119);
-    const int _t121 = fabs(2.6666666666666665 * (_t96 + _t53 + _t35) + _t101 * 2.0 - 4.5 * (_t106 + _t120)) <= 1.7320525396196846;
-    const double _t122 = 1.0 / _t96;
-    const double _t123 = _t44 * _t80;
-    const double _t124 = (_t18 * _t43 * 2.0 + (_t71 * _t26 + _t13 * _t65 * 2.0) - _t27 * _t49 - _t84 * _t17) * _t12 * _t20;
-    const double _t125 = 4.0 * (_t21 * _t66);
-    const double _t126 = (_t84 * _t26 * 2.0 - _t41 * _t49 - _t43 * _t43 * 2.0 - _t13 * _t79 * 2.0) * _t12 * _t20;
-    const double _t127 = (_t13 * _t84 * 3.0 + _t90 * _t26 + 3.0 * (_t49 * _t43)) * _t12 * _t20;
-    const double _t128 = 0.5 * ((4.0 * (_t86 * _t51) + (4.0 * _t123 + (_t28 * _t72 * 2.0 + (_t124 * _t34 * 2.0 + _t42 * _t85 * 2.0)) + _t125 + 4.0 * (_t50 * _t85) - _t91 * _t44 * 2.0 - _t29 * _t126 * 2.0 - _t127 * _t22 * 2.0) + _t92 * _t45 * 2.0) * _t36) * _t20 + _t85;
-    const double _t129 = (_t13 * _t55 * 2.0 + _t71 * _t17 * 2.0 + _t18 * _t18 * 2.0 - _t32 * _t49) * _t12 * _t20;
-    const double _t130 = _t21 * _t56;
-    const double _t131 = (_t71 * _t13 * 3.0 - _t90 * _t17 - _t18 * _t49 * 3.0) * _t12 * _t20;
-    const double _t132 = _t44 * _t66 * 4.0;
-    const double _t133 = (_t21 * _t91 * 2.0 + (_t28 * _t85 * 2.0 + 4.0 * (_t50 * _t72)) + _t33 * _t72 * 2.0 - _t129 * _t34 * 2.0 - 4.0 * _t130 - _t124 * _t29 * 2.0 - 2.0 * (_t22 * _t131) - _t132 + _t92 * _t37 * 2.0 - 4.0 * (_t51 * _t73)) * _t36 * 0.5 * _t20 + _t72;
-    const double _t134 = _t74 * _t74 * 2.0;
-    const double _t135 = _t44 * _t85;
-    const double _t136 = _t21 * _t72;
-    const double _t137 = _t87 * _t87 * 2.0;
-    const double _t138 = (_t32 * _t43 + (_t26 * _t55 + 2.0 * (_t18 * _t27) + _t13 * _t58) + _t17 * _t65 * 2.0) * _t12 * _t20;
-    const double _t139 = (_t26 * _t65 * 2.0 + _t17 * _t79 + _t27 * _t43 * 2.0 - _t67 * _t13 - _t41 * _t18) * _t12 * _t20;
-    const double _t140 = 0.5 * ((_t69 * _t51 * 2.0 + _t73 * _t45 * 2.0 - (_t138 * _t34 * 2.0 + (_t44 * _t72 * 2.0 + _t22 * _t124 * 2.0) + _t28 * _t80 * 2.0 + _t29 * _t139 * 2.0 + _t28 * _t56 * 2.0 + _t21 * _t59 * 2.0 - _t44 * _t68 * 2.0 - _t33 * _t66 * 2.0 - _t42 * _t66 * 2.0 - _t50 * _t66 * 2.0 - _t21 * _t85 * 2.0) - _t86 * _t37 * 2.0) * _t36) * _t20 + _t66;
-    const double _t141 = _t12 * (_t77 * _t13 + 3.0 * (_t41 * _t43) - _t26 * _t79 * 3.0) * _t20;
-    const double _t142 = 4.0 * (_t28 * _t66);
-    const double _t143 = (4.0 * (_t86 * _t45) + (2.0 * (_t50 * _t80) + (4.0 * (_t42 * _t80) + (_t78 * _t44 * 2.0 + _t21 * _t68 * 2.0)) + _t135 * 4.0 + _t22 * _t126 * 2.0 + 2.0 * (_t141 * _t29) - _t142 - _t139 * _t34 * 2.0) - _t82 * _t51 * 2.0) * _t36 * 0.5 * _t20 + _t80;
-    const double _t144 = (_t83 * _t87 * 2.0 + (_t93 * _t87 * 2.0 + _t38 * _t140 * 2.0) - _t70 * _t74 * 2.0 - _t128 * _t52 * 2.0 - 2.0 * (_t143 * _t46) + _t88 * _t94 * 2.0) * _t54 * 0.5 * _t20 + _t87;
-    const double _t145 = (_t13 * _t61 + (_t17 * _t55 * 3.0 + _t32 * _t18 * 3.0)) * _t12 * _t20;
-    const double _t146 = _t56 - (_t22 * _t129 * 2.0 + (_t136 * 4.0 + (_t138 * _t29 * 2.0 + _t44 * _t59 * 2.0) + _t142 + _t145 * _t34 * 2.0) - 4.0 * (_t56 * _t33) - _t50 * _t56 * 2.0 - _t21 * _t62 * 2.0 + _t73 * _t37 * 4.0 - _t63 * _t51 * 2.0) * _t36 * 0.5 * _t20;
-    const double _t147 = (_t52 * _t133 * 2.0 + (_t93 * _t74 * 2.0 + _t64 * _t74 * 2.0) + _t38 * _t146 * 2.0 - _t46 * _t140 * 2.0 - _t70 * _t87 * 2.0 - _t75 * _t94 * 2.0) * _t54 * 0.5 * _t20 + _t74;
-    const double _t148 = 1.0 / _t120;
-    const double _t149 = _t71 * _t102;
-    const double _t150 = _t65 * _t102;
-    const double _t151 = _t55 * _t102;
-    const double _t152 = _t108 + (_t108 * _t109 * 2.0 + _t117 * _t108 * 2.0 - _t114 * _t107 * 2.0 - _t104 * _t149 * 2.0 - _t105 * _t150 * 2.0 - _t103 * _t151 * 2.0 + _t118 * _t111 * 2.0) * _t110 * 0.5 * _t102;
-    const double _t153 = _t107 * _t107 * 2.0;
+    const double _t12 = _t5 + _t8 + _t11;
+    const double _t13 = 1.0 / sqrt(_t12);
+    const double _t14 = _t4 * _t13 * 0.5;
+    const double _t15 = cos(_t6);
+    const double _t16 = _t15 * _t7;
+    const double _t17 = _t16 * 2.0;
+    const double _t18 = _t17 * _t13 * 0.5;
+    const double _t19 = _t14 * _t18 * _t13;
+    const double _t20 = 6.2831853071795862 * h;
+    const double _t21 = _t20 * 0.25;
+    const double _t22 = _t19 * _t21;
+    const double _t23 = _t14 * _t21 + _t1;
+    const double _t24 = cos(_t9);
+    const double _t25 = _t24 * _t10;
+    const double _t26 = _t25 * 2.0;
+    const double _t27 = _t26 * _t13 * 0.5;
+    const double _t28 = _t18 * _t27 * _t13;
+    const double _t29 = _t28 * _t21;
+    const double _t30 = _t10 + _t27 * _t21;
+    const double _t31 = _t8 * 2.0;
+    const double _t32 = _t15 * _t15;
+    const double _t33 = (_t31 - _t32 * 2.0 + _t18 * _t18 * 2.0) * _t13 * 0.5;
+    const double _t34 = _t15 - _t33 * _t21;
+    const double _t35 = _t7 + _t18 * _t21;
+    const double _t36 = sqrt(_t30 * _t30 + _t35 * _t35 + _t23 * _t23);
+    const double _t37 = 1.0 / _t36;
+    const double _t38 = (_t22 * _t23 * 2.0 + _t29 * _t30 * 2.0 - _t34 * _t35 * 2.0) * _t37 * 0.5;
+    const double _t39 = _t38 * _t21 - _t35;
+    const double _t40 = _t24 * _t24;
+    const double _t41 = _t11 * 2.0;
+    const double _t42 = (_t40 * 2.0 - _t41 - _t27 * _t27 * 2.0) * _t13 * 0.5;
+    const double _t43 = _t24 + _t42 * _t21;
+    const double _t44 = _t14 * _t27 * _t13;
+    const double _t45 = _t44 * _t21;
+    const double _t46 = 0.5 * ((_t43 * _t30 * 2.0 - _t29 * _t35 * 2.0 - _t45 * _t23 * 2.0) * _t37);
+    const double _t47 = _t30 + _t46 * _t21;
+    const double _t48 = _t2 * _t2;
+    const double _t49 = _t5 * 2.0;
+    const double _t50 = (2.0 * _t48 - _t49 - _t14 * _t14 * 2.0) * _t13 * 0.5;
+    const double _t51 = _t50 * _t21 + _t2;
+    const double _t52 = (_t22 * _t35 * 2.0 + _t45 * _t30 * 2.0 - _t51 * _t23 * 2.0) * _t37 * 0.5;
+    const double _t53 = _t52 * _t21 - _t23;
+    const double _t54 = sqrt(_t47 * _t47 + (_t53 * _t53 + _t39 * _t39));
+    const double _t55 = 1.0 / _t54;
+    const double _t56 = (_t33 * _t14 + _t19 * _t18 * 2.0) * _t13;
+    const double _t57 = _t56 * _t21;
+    const double _t58 = _t29 * _t29 * 2.0;
+    const double _t59 = (_t33 * _t27 + _t28 * _t18 * 2.0) * _t13;
+    const double _t60 = _t59 * _t21;
+    const double _t61 = _t22 * _t22 * 2.0;
+    const double _t62 = (_t33 * _t18 * 6.0 - (_t16 * 6.0 + _t17)) * _t13 * 0.5;
+    const double _t63 = _t7 - _t62 * _t21;
+    const double _t64 = (_t57 * _t23 * 2.0 + (_t58 + (_t34 * _t34 * 2.0 + _t30 * _t60 * 2.0)) + _t61 - _t63 * _t35 * 2.0 - _t38 * _t38 * 2.0) * _t37 * 0.5;
+    const double _t65 = _t34 + _t64 * _t21;
+    const double _t66 = (_t19 * _t27 + _t18 * _t44 + _t14 * _t28) * _t13;
+    const double _t67 = _t66 * _t21;
+    const double _t68 = (_t42 * _t18 - _t28 * _t27 * 2.0) * _t13;
+    const double _t69 = _t68 * _t21;
+    const double _t70 = (_t23 * _t67 * 2.0 + _t22 * _t45 * 2.0 + _t60 * _t35 * 2.0 - _t29 * _t34 * 2.0 - _t30 * _t69 * 2.0 - _t43 * _t29 * 2.0 + _t46 * _t38 * 2.0) * _t37 * 0.5;
+    const double _t71 = _t29 - _t70 * _t21;
+    const double _t72 = (_t14 * _t19 * 2.0 - _t18 * _t50) * _t13;
+    const double _t73 = _t72 * _t21;
+    const double _t74 = (_t22 * _t34 * 2.0 + _t22 * _t51 * 2.0 - _t45 * _t29 * 2.0 - _t30 * _t67 * 2.0 - _t23 * _t73 * 2.0 - _t57 * _t35 * 2.0 + _t52 * _t38 * 2.0) * _t37 * 0.5;
+    const double _t75 = _t22 + _t74 * _t21;
+    const double _t76 = _t55 * (_t39 * _t65 * 2.0 + _t47 * _t71 * 2.0 - _t53 * _t75 * 2.0) * 0.5;
+    const double _t77 = _t39 + _t76 * _t21;
+    const double _t78 = (_t26 + _t25 * 6.0 + _t42 * _t27 * 6.0) * _t13 * 0.5;
+    const double _t79 = _t10 + _t78 * _t21;
+    const double _t80 = (_t27 * _t44 * 2.0 - _t42 * _t14) * _t13;
+    const double _t81 = _t80 * _t21;
+    const double _t82 = _t45 * _t45 * 2.0;
+    const double _t83 = _t37 * (_t46 * _t46 * 2.0 + (_t35 * _t69 * 2.0 + _t79 * _t30 * 2.0 - _t58 - _t23 * _t81 * 2.0 - _t43 * _t43 * 2.0 - _t82)) * 0.5;
+    const double _t84 = _t43 - _t83 * _t21;
+    const double _t85 = (_t50 * _t27 - _t14 * _t44 * 2.0) * _t13;
+    const double _t86 = _t85 * _t21;
+    const double _t87 = (_t51 * _t45 * 2.0 + (_t23 * _t86 * 2.0 + _t43 * _t45 * 2.0) - _t30 * _t81 * 2.0 - _t67 * _t35 * 2.0 - _t22 * _t29 * 2.0 - _t52 * _t46 * 2.0) * _t37 * 0.5;
+    const double _t88 = _t45 + _t87 * _t21;
+    const double _t89 = (_t84 * _t47 * 2.0 + _t39 * _t71 * 2.0 + _t53 * _t88 * 2.0) * _t55 * 0.5;
+    const double _t90 = _t47 + _t89 * _t21;
+    const double _t91 = (6.0 * _t3 + _t4 + 6.0 * (_t14 * _t50)) * _t13 * 0.5;
+    const double _t92 = _t91 * _t21 + _t1;
+    const double _t93 = (_t61 + (_t51 * _t51 * 2.0 + _t35 * _t73 * 2.0) + _t82 - _t92 * _t23 * 2.0 - _t30 * _t86 * 2.0 - _t52 * _t52 * 2.0) * _t37 * 0.5;
+    const double _t94 = _t51 + _t93 * _t21;
+    const double _t95 = 0.5 * ((_t39 * _t75 * 2.0 - _t47 * _t88 * 2.0 - 2.0 * (_t94 * _t53)) * _t55);
+    const double _t96 = _t53 - _t95 * _t21;
+    const double _t97 = sqrt(_t77 * _t77 + _t90 * _t90 + _t96 * _t96);
+    const double _t98 = _t20 * 0.5;
+    const double _t99 = _t14 * _t98 + _t1;
+    const double _t100 = _t10 + _t27 * _t98;
+    const double _t101 = _t7 + _t18 * _t98;
+    const double _t102 = sqrt(_t99 * _t99 + (_t100 * _t100 + _t101 * _t101));
+    const double _t103 = _t20 * 0.33333333333333331;
+    const double _t104 = _t7 + _t18 * _t103;
+    const double _t105 = _t14 * _t103 + _t1;
+    const double _t106 = _t27 * _t103 + _t10;
+    const double _t107 = sqrt(_t104 * _t104 + _t105 * _t105 + _t106 * _t106);
+    const double _t108 = _t103 * _t44;
+    const double _t109 = _t19 * _t103;
+    const double _t110 = _t50 * _t103 + _t2;
+    const double _t111 = 1.0 / _t107;
+    const double _t112 = (_t106 * _t108 * 2.0 + _t109 * _t104 * 2.0 - _t105 * _t110 * 2.0) * _t111 * 0.5;
+    const double _t113 = _t105 - _t103 * _t112;
+    const double _t114 = _t24 + _t42 * _t103;
+    const double _t115 = _t28 * _t103;
+    const double _t116 = (_t114 * _t106 * 2.0 - 2.0 * (_t105 * _t108) - _t115 * _t104 * 2.0) * _t111 * 0.5;
+    const double _t117 = _t103 * _t116 + _t106;
+    const double _t118 = _t15 - _t33 * _t103;
+    const double _t119 = (_t115 * _t106 * 2.0 + _t105 * _t109 * 2.0 - _t118 * _t104 * 2.0) * _t111 * 0.5;
+    const double _t120 = _t119 * _t103 - _t104;
+    const double _t121 = sqrt(_t113 * _t113 + _t117 * _t117 + _t120 * _t120);
+    const int _t122 = fabs(2.6666666666666665 * (_t97 + _t54 + _t36) + _t102 * 2.0 - 4.5 * (_t107 + _t121)) <= 1.7320525396196846;
+    const double _t123 = 1.0 / _t97;
+    const double _t124 = _t45 * _t81;
+    const double _t125 = (_t19 * _t44 * 2.0 + (_t72 * _t27 + _t14 * _t66 * 2.0) - _t28 * _t50 - _t85 * _t18) * _t13 * _t21;
+    const double _t126 = 4.0 * (_t22 * _t67);
+    const double _t127 = (_t85 * _t27 * 2.0 - _t42 * _t50 - _t44 * _t44 * 2.0 - _t14 * _t80 * 2.0) * _t13 * _t21;
+    const double _t128 = (_t14 * _t85 * 3.0 + _t91 * _t27 + 3.0 * (_t50 * _t44)) * _t13 * _t21;
+    const double _t129 = 0.5 * ((4.0 * (_t87 * _t52) + (4.0 * _t124 + (_t29 * _t73 * 2.0 + (_t125 * _t35 * 2.0 + _t43 * _t86 * 2.0)) + _t126 + 4.0 * (_t51 * _t86) - _t92 * _t45 * 2.0 - _t30 * _t127 * 2.0 - _t128 * _t23 * 2.0) + _t93 * _t46 * 2.0) * _t37) * _t21 + _t86;
+    const double _t130 = (_t14 * _t56 * 2.0 + _t72 * _t18 * 2.0 + _t19 * _t19 * 2.0 - _t33 * _t50) * _t13 * _t21;
+    const double _t131 = _t22 * _t57;
+    const double _t132 = (_t72 * _t14 * 3.0 - _t91 * _t18 - _t19 * _t50 * 3.0) * _t13 * _t21;
+    const double _t133 = _t45 * _t67 * 4.0;
+    const double _t134 = (_t22 * _t92 * 2.0 + (_t29 * _t86 * 2.0 + 4.0 * (_t51 * _t73)) + _t34 * _t73 * 2.0 - _t130 * _t35 * 2.0 - 4.0 * _t131 - _t125 * _t30 * 2.0 - 2.0 * (_t23 * _t132) - _t133 + _t93 * _t38 * 2.0 - 4.0 * (_t52 * _t74)) * _t37 * 0.5 * _t21 + _t73;
+    const double _t135 = _t75 * _t75 * 2.0;
+    const double _t136 = _t45 * _t86;
+    const double _t137 = _t22 * _t73;
+    const double _t138 = _t88 * _t88 * 2.0;
+    const double _t139 = (_t33 * _t44 + (_t27 * _t56 + 2.0 * (_t19 * _t28) + _t14 * _t59) + _t18 * _t66 * 2.0) * _t13 * _t21;
+    const double _t140 = (_t27 * _t66 * 2.0 + _t18 * _t80 + _t28 * _t44 * 2.0 - _t68 * _t14 - _t42 * _t19) * _t13 * _t21;
+    const double _t141 = 0.5 * ((_t70 * _t52 * 2.0 + _t74 * _t46 * 2.0 - (_t139 * _t35 * 2.0 + (_t45 * _t73 * 2.0 + _t23 * _t125 * 2.0) + _t29 * _t81 * 2.0 + _t30 * _t140 * 2.0 + _t29 * _t57 * 2.0 + _t22 * _t60 * 2.0 - _t45 * _t69 * 2.0 - _t34 * _t67 * 2.0 - _t43 * _t67 * 2.0 - _t51 * _t67 * 2.0 - _t22 * _t86 * 2.0) - _t87 * _t38 * 2.0) * _t37) * _t21 + _t67;
+    const double _t142 = _t13 * (_t78 * _t14 + 3.0 * (_t42 * _t44) - _t27 * _t80 * 3.0) * _t21;
+    const double _t143 = 4.0 * (_t29 * _t67);
+    const double _t144 = (4.0 * (_t87 * _t46) + (2.0 * (_t51 * _t81) + (4.0 * (_t43 * _t81) + (_t79 * _t45 * 2.0 + _t22 * _t69 * 2.0)) + _t136 * 4.0 + _t23 * _t127 * 2.0 + 2.0 * (_t142 * _t30) - _t143 - _t140 * _t35 * 2.0) - _t83 * _t52 * 2.0) * _t37 * 0.5 * _t21 + _t81;
+    const double _t145 = (_t84 * _t88 * 2.0 + (_t94 * _t88 * 2.0 + _t39 * _t141 * 2.0) - _t71 * _t75 * 2.0 - _t129 * _t53 * 2.0 - 2.0 * (_t144 * _t47) + _t89 * _t95 * 2.0) * _t55 * 0.5 * _t21 + _t88;
+    const double _t146 = (_t14 * _t62 + (_t18 * _t56 * 3.0 + _t33 * _t19 * 3.0)) * _t13 * _t21;
+    const double _t147 = _t57 - (_t23 * _t130 * 2.0 + (_t137 * 4.0 + (_t139 * _t30 * 2.0 + _t45 * _t60 * 2.0) + _t143 + _t146 * _t35 * 2.0) - 4.0 * (_t57 * _t34) - _t51 * _t57 * 2.0 - _t22 * _t63 * 2.0 + _t74 * _t38 * 4.0 - _t64 * _t52 * 2.0) * _t37 * 0.5 * _t21;
+    const double _t148 = (_t53 * _t134 * 2.0 + (_t94 * _t75 * 2.0 + _t65 * _t75 * 2.0) + _t39 * _t147 * 2.0 - _t47 * _t141 * 2.0 - _t71 * _t88 * 2.0 - _t76 * _t95 * 2.0) * _t55 * 0.5 * _t21 + _t75;
+    const double _t149 = 1.0 / _t121;
+    const double _t150 = _t72 * _t103;
+    const double _t151 = _t66 * _t103;
+    const double _t152 = _t56 * _t103;
+    const double _t153 = _t109 + (_t109 * _t110 * 2.0 + _t118 * _t109 * 2.0 - _t115 * _t108 * 2.0 - _t105 * _t150 * 2.0 - _t106 * _t151 * 2.0 - _t104 * _t152 * 2.0 + _t119 * _t112 * 2.0) * _t111 * 0.5 * _t103;
     const double _t154 = _t108 * _t108 * 2.0;
-    const double _t155 = _t84 * _t102;
-    const double _t156 = _t102 * _t79;
-    const double _t157 = _t102 * (_t110 * (_t107 * _t109 * 2.0 + (_t155 * _t104 * 2.0 + _t113 * _t107 * 2.0) - _t105 * _t156 * 2.0 - _t103 * _t150 * 2.0 - _t114 * _t108 * 2.0 - _t111 * _t115 * 2.0) * 0.5) + _t107;
-    const double _t158 = _t18 * _t97;
-    const double _t159 = _t97 * _t43;
-    const double _t160 = 1.0 / _t101;
-    const double _t161 = (_t121) ? _t19 * (2.6666666666666665 * (_t51 + _t122 * ((_t93 - _t54 * (2.0 * (_t94 * _t94) + (_t128 * _t46 * 2.0 + _t38 * _t133 * 2.0 - _t134 - _t93 * _t93 * 2.0 - (_t91 - (6.0 * (_t51 * _t92) + (_t127 * _t29 * 2.0 + _t135 * 6.0 - 6.0 * (_t91 * _t50) - _t34 * _t131 * 2.0 - _t136 * 6.0 - ((_t49 * _t49 * 6.0 - (_t5 * 6.0 + _t48 - 8.0 * _t47) - _t90 * _t13 * 8.0) * _t12 * 0.5 * _t20 + _t2) * _t22 * 2.0)) * _t36 * 0.5 * _t20) * _t52 * 2.0 - _t137)) * 0.5 * _t20) * _t95 * 2.0 + _t89 * _t144 * 2.0 - _t76 * _t147 * 2.0) * 0.5 - _t94) + 4.5 * (_t148 * (_t152 * _t119 * 2.0 + (0.5 * ((_t153 + _t103 * _t149 * 2.0 + _t154 + _t109 * _t109 * 2.0 - _t155 * _t105 * 2.0 - (_t90 * _t102 + _t1) * _t104 * 2.0 - _t111 * _t111 * 2.0) * _t110) * _t102 + _t109) * _t112 * 2.0 - _t157 * _t116 * 2.0) * 0.5 - _t111) + (_t100 * _t158 * 2.0 + _t99 * _t159 * 2.0 - _t98 * (_t49 * _t97 + _t2) * 2.0) * _t160 * 0.5 * 2.0) - _t1 : -_t1;
-    const double _t162 = _t67 * _t102;
-    const double _t163 = _t58 * _t102;
-    const double _t164 = _t114 + (_t162 * _t105 * 2.0 + (_t117 * _t114 * 2.0 + _t114 * _t113 * 2.0) - _t163 * _t103 * 2.0 - _t108 * _t107 * 2.0 - _t104 * _t150 * 2.0 - 2.0 * (_t118 * _t115)) * _t110 * 0.5 * _t102;
-    const double _t165 = _t114 * _t114 * 2.0;
-    const double _t166 = _t28 * _t59;
-    const double _t167 = (_t41 * _t32 + _t67 * _t17 * 2.0 - _t26 * _t58 * 2.0 - _t27 * _t27 * 2.0) * _t12 * _t20;
-    const double _t168 = (_t41 * _t27 * 3.0 + _t77 * _t17 + _t67 * _t26 * 3.0) * _t12 * _t20;
-    const double _t169 = _t68 + (_t82 * _t37 * 2.0 + 4.0 * (_t69 * _t45) + (4.0 * (_t42 * _t68) + _t21 * _t80 * 2.0 + _t33 * _t68 * 2.0 + _t132 + _t22 * _t139 * 2.0 + 4.0 * _t166 - _t78 * _t28 * 2.0 - _t167 * _t34 * 2.0 - _t168 * _t29 * 2.0)) * _t36 * 0.5 * _t20;
-    const double _t170 = _t70 * _t70 * 2.0;
-    const double _t171 = _t28 * _t68;
-    const double _t172 = (3.0 * (_t32 * _t27) + _t26 * _t61 + 3.0 * (_t17 * _t58)) * _t12 * _t20;
-    const double _t173 = _t59 + 0.5 * ((_t42 * _t59 * 2.0 + (_t167 * _t29 * 2.0 + _t62 * _t28 * 2.0) + _t171 * 4.0 + 4.0 * (_t33 * _t59) - 2.0 * (_t22 * _t138) - _t125 - _t44 * _t56 * 2.0 - _t172 * _t34 * 2.0 + _t69 * _t37 * 4.0 - _t63 * _t45 * 2.0) * _t36) * _t20;
-    const double _t174 = (_t75 * _t88 * 2.0 - (_t169 * _t46 * 2.0 + (_t52 * _t140 * 2.0 + _t173 * _t38 * 2.0) + _t70 * _t64 * 2.0 + _t83 * _t70 * 2.0 - _t87 * _t74 * 2.0)) * _t54 * 0.5 * _t20 - _t70;
-    const double _t175 = _t27 * _t97;
-    const double _t176 = (_t121) ? -(_t10 + _t19 * (4.5 * ((_t157 * _t112 * 2.0 - _t164 * _t119 * 2.0 - _t116 * (_t113 - (_t115 * _t115 * 2.0 - (_t113 * _t113 * 2.0 + (_t165 + _t153) + 2.0 * (_t104 * _t156) - 2.0 * (_t162 * _t103) - (_t10 + _t77 * _t102) * _t105 * 2.0)) * _t110 * 0.5 * _t102) * 2.0) * _t148 * 0.5 - _t115) + 2.6666666666666665 * ((2.0 * (_t95 * _t144) + _t89 * (_t83 - (_t88 * _t88 * 2.0 - (_t38 * _t169 * 2.0 + (_t83 * _t83 * 2.0 + _t137) + _t170 - _t143 * _t52 * 2.0 - (_t78 - 0.5 * ((6.0 * (_t82 * _t45) - (_t123 * 6.0 + ((_t23 + (8.0 * _t39 - 6.0 * _t11 - _t40 + _t41 * _t41 * 6.0 - 8.0 * (_t77 * _t26)) * _t12 * 0.5 * _t20) * _t29 * 2.0 + _t78 * _t42 * 6.0) - _t168 * _t34 * 2.0 - _t141 * _t22 * 2.0 - _t171 * 6.0)) * _t36) * _t20) * _t46 * 2.0)) * _t54 * 0.5 * _t20) * 2.0 - _t76 * _t174 * 2.0) * _t122 * 0.5 + _t88 + _t45) - 0.5 * (_t160 * (_t159 * _t98 * 2.0 + _t100 * _t175 * 2.0 - _t99 * (_t23 + _t41 * _t97) * 2.0)) * 2.0)) : -_t10;
-    const double _t177 = (_t121) ? _t19 * ((_t75 + _t37 - (_t95 * _t147 * 2.0 + _t89 * _t174 * 2.0 - _t76 * ((_t38 * (_t62 + (_t166 * 6.0 + (_t62 * _t33 * 6.0 + (_t145 * _t22 * 2.0 + (_t172 * _t29 * 2.0 + _t130 * 6.0))) + (_t14 - (_t30 + 6.0 * _t8 - 8.0 * _t31 - _t32 * _t32 * 6.0 - 8.0 * (_t17 * _t61)) * _t12 * 0.5 * _t20) * _t34 * 2.0 - _t63 * _t37 * 6.0) * _t36 * 0.5 * _t20) * 2.0 + (_t173 * _t46 * 2.0 + (_t134 + _t64 * _t64 * 2.0)) + _t170 - _t52 * _t146 * 2.0 - _t75 * _t75 * 2.0) * _t54 * 0.5 * _t20 + _t64) * 2.0) * _t122 * 0.5) * 2.6666666666666665 + _t160 * (_t99 * _t175 * 2.0 + _t98 * _t158 * 2.0 - _t100 * (_t14 - _t32 * _t97) * 2.0) * 0.5 * 2.0 - 4.5 * (_t118 + _t148 * ((_t117 - (_t118 * _t118 * 2.0 - (_t117 * _t117 * 2.0 + _t165 + _t154 + _t104 * _t151 * 2.0 + _t163 * _t105 * 2.0 - _t103 * (_t7 - _t61 * _t102) * 2.0)) * _t110 * 0.5 * _t102) * _t119 * 2.0 + _t152 * _t112 * 2.0 + _t164 * _t116 * 2.0) * 0.5)) - _t7 : -_t7;
-    const double _t178 = _t161 * _t161 + _t176 * _t176 + _t177 * _t177;
-    const double _t179 = (_t178 > 0.0) ? 1.0 / sqrt(_t178) : 0.0;
-    n[0] = _t179 * _t161;
-    n[1] = _t176 * _t179;
-    n[2] = _t179 * _t177;
+    const double _t155 = _t109 * _t109 * 2.0;
+    const double _t156 = _t85 * _t103;
+    const double _t157 = _t103 * _t80;
+    const double _t158 = _t103 * (_t111 * (_t108 * _t110 * 2.0 + (_t156 * _t105 * 2.0 + _t114 * _t108 * 2.0) - _t106 * _t157 * 2.0 - _t104 * _t151 * 2.0 - _t115 * _t109 * 2.0 - _t112 * _t116 * 2.0) * 0.5) + _t108;
+    const double _t159 = _t19 * _t98;
+    const double _t160 = _t98 * _t44;
+    const double _t161 = 1.0 / _t102;
+    const double _t162 = (_t122) ? _t20 * (2.6666666666666665 * (_t52 + _t123 * ((_t94 - _t55 * (2.0 * (_t95 * _t95) + (_t129 * _t47 * 2.0 + _t39 * _t134 * 2.0 - _t135 - _t94 * _t94 * 2.0 - (_t92 - (6.0 * (_t52 * _t93) + (_t128 * _t30 * 2.0 + _t136 * 6.0 - 6.0 * (_t92 * _t51) - _t35 * _t132 * 2.0 - _t137 * 6.0 - ((_t50 * _t50 * 6.0 - (_t5 * 6.0 + _t49 - 8.0 * _t48) - _t91 * _t14 * 8.0) * _t13 * 0.5 * _t21 + _t2) * _t23 * 2.0)) * _t37 * 0.5 * _t21) * _t53 * 2.0 - _t138)) * 0.5 * _t21) * _t96 * 2.0 + _t90 * _t145 * 2.0 - _t77 * _t148 * 2.0) * 0.5 - _t95) + 4.5 * (_t149 * (_t153 * _t120 * 2.0 + (0.5 * ((_t154 + _t104 * _t150 * 2.0 + _t155 + _t110 * _t110 * 2.0 - _t156 * _t106 * 2.0 - (_t91 * _t103 + _t1) * _t105 * 2.0 - _t112 * _t112 * 2.0) * _t111) * _t103 + _t110) * _t113 * 2.0 - _t158 * _t117 * 2.0) * 0.5 - _t112) + (_t101 * _t159 * 2.0 + _t100 * _t160 * 2.0 - _t99 * (_t50 * _t98 + _t2) * 2.0) * _t161 * 0.5 * 2.0) - _t1 : -_t1;
+    const double _t163 = _t68 * _t103;
+    const double _t164 = _t59 * _t103;
+    const double _t165 = _t115 + (_t163 * _t106 * 2.0 + (_t118 * _t115 * 2.0 + _t115 * _t114 * 2.0) - _t164 * _t104 * 2.0 - _t109 * _t108 * 2.0 - _t105 * _t151 * 2.0 - 2.0 * (_t119 * _t116)) * _t111 * 0.5 * _t103;
+    const double _t166 = _t115 * _t115 * 2.0;
+    const double _t167 = _t29 * _t60;
+    const double _t168 = (_t42 * _t33 + _t68 * _t18 * 2.0 - _t27 * _t59 * 2.0 - _t28 * _t28 * 2.0) * _t13 * _t21;
+    const double _t169 = (_t42 * _t28 * 3.0 + _t78 * _t18 + _t68 * _t27 * 3.0) * _t13 * _t21;
+    const double _t170 = _t69 + (_t83 * _t38 * 2.0 + 4.0 * (_t70 * _t46) + (4.0 * (_t43 * _t69) + _t22 * _t81 * 2.0 + _t34 * _t69 * 2.0 + _t133 + _t23 * _t140 * 2.0 + 4.0 * _t167 - _t79 * _t29 * 2.0 - _t168 * _t35 * 2.0 - _t169 * _t30 * 2.0)) * _t37 * 0.5 * _t21;
+    const double _t171 = _t71 * _t71 * 2.0;
+    const double _t172 = _t29 * _t69;
+    const double _t173 = (3.0 * (_t33 * _t28) + _t27 * _t62 + 3.0 * (_t18 * _t59)) * _t13 * _t21;
+    const double _t174 = _t60 + 0.5 * ((_t43 * _t60 * 2.0 + (_t168 * _t30 * 2.0 + _t63 * _t29 * 2.0) + _t172 * 4.0 + 4.0 * (_t34 * _t60) - 2.0 * (_t23 * _t139) - _t126 - _t45 * _t57 * 2.0 - _t173 * _t35 * 2.0 + _t70 * _t38 * 4.0 - _t64 * _t46 * 2.0) * _t37) * _t21;
+    const double _t175 = (_t76 * _t89 * 2.0 - (_t170 * _t47 * 2.0 + (_t53 * _t141 * 2.0 + _t174 * _t39 * 2.0) + _t71 * _t65 * 2.0 + _t84 * _t71 * 2.0 - _t88 * _t75 * 2.0)) * _t55 * 0.5 * _t21 - _t71;
+    const double _t176 = _t28 * _t98;
+    const double _t177 = (_t122) ? -(_t10 + _t20 * (4.5 * ((_t158 * _t113 * 2.0 - _t165 * _t120 * 2.0 - _t117 * (_t114 - (_t116 * _t116 * 2.0 - (_t114 * _t114 * 2.0 + (_t166 + _t154) + 2.0 * (_t105 * _t157) - 2.0 * (_t163 * _t104) - (_t10 + _t78 * _t103) * _t106 * 2.0)) * _t111 * 0.5 * _t103) * 2.0) * _t149 * 0.5 - _t116) + 2.6666666666666665 * ((2.0 * (_t96 * _t145) + _t90 * (_t84 - (_t89 * _t89 * 2.0 - (_t39 * _t170 * 2.0 + (_t84 * _t84 * 2.0 + _t138) + _t171 - _t144 * _t53 * 2.0 - (_t79 - 0.5 * ((6.0 * (_t83 * _t46) - (_t124 * 6.0 + ((_t24 + (8.0 * _t40 - 6.0 * _t11 - _t41 + _t42 * _t42 * 6.0 - 8.0 * (_t78 * _t27)) * _t13 * 0.5 * _t21) * _t30 * 2.0 + _t79 * _t43 * 6.0) - _t169 * _t35 * 2.0 - _t142 * _t23 * 2.0 - _t172 * 6.0)) * _t37) * _t21) * _t47 * 2.0)) * _t55 * 0.5 * _t21) * 2.0 - _t77 * _t175 * 2.0) * _t123 * 0.5 + _t89 + _t46) - 0.5 * (_t161 * (_t160 * _t99 * 2.0 + _t101 * _t176 * 2.0 - _t100 * (_t24 + _t42 * _t98) * 2.0)) * 2.0)) : -_t10;
+    const double _t178 = (_t122) ? _t20 * ((_t76 + _t38 - (_t96 * _t148 * 2.0 + _t90 * _t175 * 2.0 - _t77 * ((_t39 * (_t63 + (_t167 * 6.0 + (_t63 * _t34 * 6.0 + (_t146 * _t23 * 2.0 + (_t173 * _t30 * 2.0 + _t131 * 6.0))) + (_t15 - (_t31 + 6.0 * _t8 - 8.0 * _t32 - _t33 * _t33 * 6.0 - 8.0 * (_t18 * _t62)) * _t13 * 0.5 * _t21) * _t35 * 2.0 - _t64 * _t38 * 6.0) * _t37 * 0.5 * _t21) * 2.0 + (_t174 * _t47 * 2.0 + (_t135 + _t65 * _t65 * 2.0)) + _t171 - _t53 * _t147 * 2.0 - _t76 * _t76 * 2.0) * _t55 * 0.5 * _t21 + _t65) * 2.0) * _t123 * 0.5) * 2.6666666666666665 + _t161 * (_t100 * _t176 * 2.0 + _t99 * _t159 * 2.0 - _t101 * (_t15 - _t33 * _t98) * 2.0) * 0.5 * 2.0 - 4.5 * (_t119 + _t149 * ((_t118 - (_t119 * _t119 * 2.0 - (_t118 * _t118 * 2.0 + _t166 + _t155 + _t105 * _t152 * 2.0 + _t164 * _t106 * 2.0 - _t104 * (_t7 - _t62 * _t103) * 2.0)) * _t111 * 0.5 * _t103) * _t120 * 2.0 + _t153 * _t113 * 2.0 + _t165 * _t117 * 2.0) * 0.5)) - _t7 : -_t7;
+    const double _t179 = _t162 * _t162 + _t177 * _t177 + _t178 * _t178;
+    const int _t180 = _t179 > 0.0;
+    const int _t181 = _t179 <= 1.0e+30;
+    const double _t182 = 1.0 / sqrt(_t179);
+    const double _t183 = (_t12 > 0.0) ? _t13 : 0.0;
+    const double _t184 = -(_t183 * _t1);
+    const double _t185 = -(_t10 * _t183);
+    const double _t186 = -(_t7 * _t183);
+    n[0] = (_t180) ? ((_t181) ? _t162 * _t182 : _t184) : _t184;
+    n[1] = (_t180) ? ((_t181) ? _t177 * _t182 : _t185) : _t185;
+    n[2] = (_t180) ? ((_t181) ? _t178 * _t182 : _t186) : _t186;
 }
 
 /* F, the field; the surface is F = 0.
@@ -730,7 +737,7 @@ static inline float schwarzp_o4_shellf(float x, float y, float z, float t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 1401
+ * Total ops: 1415
  */
 static inline void schwarzp_o4_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -746,177 +753,778 @@ static inline void schwarzp_o4_normalf(float x, float y, float z, float h, float
     const float _t9 = 6.28318548f * y;
     const float _t10 = sinf(_t9);
     const float _t11 = _t10 * _t10;
-    const float _t12 = 1.0f / sqrtf(_t5 + _t8 + _t11);
-    const float _t13 = _t4 * _t12 * 0.5f;
-    const float _t14 = cosf(_t6);
-    const float _t15 = _t14 * _t7;
-    const float _t16 = _t15 * 2.0f;
-    const float _t17 = _t16 * _t12 * 0.5f;
-    const float _t18 = _t13 * _t17 * _t12;
-    const float _t19 = 6.28318548f * h;
-    const float _t20 = _t19 * 0.25f;
-    const float _t21 = _t18 * _t20;
-    const float _t22 = _t13 * _t20 + _t1;
-    const float _t23 = cosf(_t9);
-    const float _t24 = _t23 * _t10;
-    const float _t25 = _t24 * 2.0f;
-    const float _t26 = _t25 * _t12 * 0.5f;
-    const float _t27 = _t17 * _t26 * _t12;
-    const float _t28 = _t27 * _t20;
-    const float _t29 = _t10 + _t26 * _t20;
-    const float _t30 = _t8 * 2.0f;
-    const float _t31 = _t14 * _t14;
-    const float _t32 = (_t30 - _t31 * 2.0f + _t17 * _t17 * 2.0f) * _t12 * 0.5f;
-    const float _t33 = _t14 - _t32 * _t20;
-    const float _t34 = _t7 + _t17 * _t20;
-    const float _t35 = sqrtf(_t29 * _t29 + _t34 * _t34 + _t22 * _t22);
-    const float _t36 = 1.0f / _t35;
-    const float _t37 = (_t21 * _t22 * 2.0f + _t28 * _t29 * 2.0f - _t33 * _t34 * 2.0f) * _t36 * 0.5f;
-    const float _t38 = _t37 * _t20 - _t34;
-    const float _t39 = _t23 * _t23;
-    const float _t40 = _t11 * 2.0f;
-    const float _t41 = (_t39 * 2.0f - _t40 - _t26 * _t26 * 2.0f) * _t12 * 0.5f;
-    const float _t42 = _t23 + _t41 * _t20;
-    const float _t43 = _t13 * _t26 * _t12;
-    const float _t44 = _t43 * _t20;
-    const float _t45 = 0.5f * ((_t42 * _t29 * 2.0f - _t28 * _t34 * 2.0f - _t44 * _t22 * 2.0f) * _t36);
-    const float _t46 = _t29 + _t45 * _t20;
-    const float _t47 = _t2 * _t2;
-    const float _t48 = _t5 * 2.0f;
-    const float _t49 = (2.0f * _t47 - _t48 - _t13 * _t13 * 2.0f) * _t12 * 0.5f;
-    const float _t50 = _t49 * _t20 + _t2;
-    const float _t51 = (_t21 * _t34 * 2.0f + _t44 * _t29 * 2.0f - _t50 * _t22 * 2.0f) * _t36 * 0.5f;
-    const float _t52 = _t51 * _t20 - _t22;
-    const float _t53 = sqrtf(_t46 * _t46 + (_t52 * _t52 + _t38 * _t38));
-    const float _t54 = 1.0f / _t53;
-    const float _t55 = (_t32 * _t13 + _t18 * _t17 * 2.0f) * _t12;
-    const float _t56 = _t55 * _t20;
-    const float _t57 = _t28 * _t28 * 2.0f;
-    const float _t58 = (_t32 * _t26 + _t27 * _t17 * 2.0f) * _t12;
-    const float _t59 = _t58 * _t20;
-    const float _t60 = _t21 * _t21 * 2.0f;
-    const float _t61 = (_t32 * _t17 * 6.0f - (_t15 * 6.0f + _t16)) * _t12 * 0.5f;
-    const float _t62 = _t7 - _t61 * _t20;
-    const float _t63 = (_t56 * _t22 * 2.0f + (_t57 + (_t33 * _t33 * 2.0f + _t29 * _t59 * 2.0f)) + _t60 - _t62 * _t34 * 2.0f - _t37 * _t37 * 2.0f) * _t36 * 0.5f;
-    const float _t64 = _t33 + _t63 * _t20;
-    const float _t65 = (_t18 * _t26 + _t17 * _t43 + _t13 * _t27) * _t12;
-    const float _t66 = _t65 * _t20;
-    const float _t67 = (_t41 * _t17 - _t27 * _t26 * 2.0f) * _t12;
-    const float _t68 = _t67 * _t20;
-    const float _t69 = (_t22 * _t66 * 2.0f + _t21 * _t44 * 2.0f + _t59 * _t34 * 2.0f - _t28 * _t33 * 2.0f - _t29 * _t68 * 2.0f - _t42 * _t28 * 2.0f + _t45 * _t37 * 2.0f) * _t36 * 0.5f;
-    const float _t70 = _t28 - _t69 * _t20;
-    const float _t71 = (_t13 * _t18 * 2.0f - _t17 * _t49) * _t12;
-    const float _t72 = _t71 * _t20;
-    const float _t73 = (_t21 * _t33 * 2.0f + _t21 * _t50 * 2.0f - _t44 * _t28 * 2.0f - _t29 * _t66 * 2.0f - _t22 * _t72 * 2.0f - _t56 * _t34 * 2.0f + _t51 * _t37 * 2.0f) * _t36 * 0.5f;
-    const float _t74 = _t21 + _t73 * _t20;
-    const float _t75 = _t54 * (_t38 * _t64 * 2.0f + _t46 * _t70 * 2.0f - _t52 * _t74 * 2.0f) * 0.5f;
-    const float _t76 = _t38 + _t75 * _t20;
-    const float _t77 = (_t25 + _t24 * 6.0f + _t41 * _t26 * 6.0f) * _t12 * 0.5f;
-    const float _t78 = _t10 + _t77 * _t20;
-    const float _t79 = (_t26 * _t43 * 2.0f - _t41 * _t13) * _t12;
-    const float _t80 = _t79 * _t20;
-    const float _t81 = _t44 * _t44 * 2.0f;
-    const float _t82 = _t36 * (_t45 * _t45 * 2.0f + (_t34 * _t68 * 2.0f + _t78 * _t29 * 2.0f - _t57 - _t22 * _t80 * 2.0f - _t42 * _t42 * 2.0f - _t81)) * 0.5f;
-    const float _t83 = _t42 - _t82 * _t20;
-    const float _t84 = (_t49 * _t26 - _t13 * _t43 * 2.0f) * _t12;
-    const float _t85 = _t84 * _t20;
-    const float _t86 = (_t50 * _t44 * 2.0f + (_t22 * _t85 * 2.0f + _t42 * _t44 * 2.0f) - _t29 * _t80 * 2.0f - _t66 * _t34 * 2.0f - _t21 * _t28 * 2.0f - _t51 * _t45 * 2.0f) * _t36 * 0.5f;
-    const float _t87 = _t44 + _t86 * _t20;
-    const float _t88 = (_t83 * _t46 * 2.0f + _t38 * _t70 * 2.0f + _t52 * _t87 * 2.0f) * _t54 * 0.5f;
-    const float _t89 = _t46 + _t88 * _t20;
-    const float _t90 = (6.0f * _t3 + _t4 + 6.0f * (_t13 * _t49)) * _t12 * 0.5f;
-    const float _t91 = _t90 * _t20 + _t1;
-    const float _t92 = (_t60 + (_t50 * _t50 * 2.0f + _t34 * _t72 * 2.0f) + _t81 - _t91 * _t22 * 2.0f - _t29 * _t85 * 2.0f - _t51 * _t51 * 2.0f) * _t36 * 0.5f;
-    const float _t93 = _t50 + _t92 * _t20;
-    const float _t94 = 0.5f * ((_t38 * _t74 * 2.0f - _t46 * _t87 * 2.0f - 2.0f * (_t93 * _t52)) * _t54);
-    const float _t95 = _t52 - _t94 * _t20;
-    const float _t96 = sqrtf(_t76 * _t76 + _t89 * _t89 + _t95 * _t95);
-    const float _t97 = _t19 * 0.5f;
-    const float _t98 = _t13 * _t97 + _t1;
-    const float _t99 = _t10 + _t26 * _t97;
-    const float _t100 = _t7 + _t17 * _t97;
-    const float _t101 = sqrtf(_t98 * _t98 + (_t99 * _t99 + _t100 * _t100));
-    const float _t102 = _t19 * 0.333333343f;
-    const float _t103 = _t7 + _t17 * _t102;
-    const float _t104 = _t13 * _t102 + _t1;
-    const float _t105 = _t26 * _t102 + _t10;
-    const float _t106 = sqrtf(_t103 * _t103 + _t104 * _t104 + _t105 * _t105);
-    const float _t107 = _t102 * _t43;
-    const float _t108 = _t18 * _t102;
-    const float _t109 = _t49 * _t102 + _t2;
-    const float _t110 = 1.0f / _t106;
-    const float _t111 = (_t105 * _t107 * 2.0f + _t108 * _t103 * 2.0f - _t104 * _t109 * 2.0f) * _t110 * 0.5f;
-    const float _t112 = _t104 - _t102 * _t111;
-    const float _t113 = _t23 + _t41 * _t102;
-    const float _t114 = _t27 * _t102;
-    const float _t115 = (_t113 * _t105 * 2.0f - 2.0f * (_t104 * _t107) - _t114 * _t103 * 2.0f) * _t110 * 0.5f;
-    const float _t116 = _t102 * _t115 + _t105;
-    const float _t117 = _t14 - _t32 * _t102;
-    const float _t118 = (_t114 * _t105 * 2.0f + _t104 * _t108 * 2.0f - _t117 * _t103 * 2.0f) * _t110 * 0.5f;
-    const float _t119 = _t118 * _t102 - _t103;
-    const float _t120 = sqrtf(_t112 * _t112 + _t116 * _t116 + _t119 * _t119);
-    const int _t121 = fabsf(2.66666675f * (_t96 + _t53 + _t35) + _t101 * 2.0f - 4.5f * (_t106 + _t120)) <= 1.73205256f;
-    const float _t122 = 1.0f / _t96;
-    const float _t123 = _t44 * _t80;
-    const float _t124 = (_t18 * _t43 * 2.0f + (_t71 * _t26 + _t13 * _t65 * 2.0f) - _t27 * _t49 - _t84 * _t17) * _t12 * _t20;
-    const float _t125 = 4.0f * (_t21 * _t66);
-    const float _t126 = (_t84 * _t26 * 2.0f - _t41 * _t49 - _t43 * _t43 * 2.0f - _t13 * _t79 * 2.0f) * _t12 * _t20;
-    const float _t127 = (_t13 * _t84 * 3.0f + _t90 * _t26 + 3.0f * (_t49 * _t43)) * _t12 * _t20;
-    const float _t128 = 0.5f * ((4.0f * (_t86 * _t51) + (4.0f * _t123 + (_t28 * _t72 * 2.0f + (_t124 * _t34 * 2.0f + _t42 * _t85 * 2.0f)) + _t125 + 4.0f * (_t50 * _t85) - _t91 * _t44 * 2.0f - _t29 * _t126 * 2.0f - _t127 * _t22 * 2.0f) + _t92 * _t45 * 2.0f) * _t36) * _t20 + _t85;
-    const float _t129 = (_t13 * _t55 * 2.0f + _t71 * _t17 * 2.0f + _t18 * _t18 * 2.0f - _t32 * _t49) * _t12 * _t20;
-    const float _t130 = _t21 * _t56;
-    const float _t131 = (_t71 * _t13 * 3.0f - _t90 * _t17 - _t18 * _t49 * 3.0f) * _t12 * _t20;
-    const float _t132 = _t44 * _t66 * 4.0f;
-    const float _t133 = (_t21 * _t91 * 2.0f + (_t28 * _t85 * 2.0f + 4.0f * (_t50 * _t72)) + _t33 * _t72 * 2.0f - _t129 * _t34 * 2.0f - 4.0f * _t130 - _t124 * _t29 * 2.0f - 2.0f * (_t22 * _t131) - _t132 + _t92 * _t37 * 2.0f - 4.0f * (_t51 * _t73)) * _t36 * 0.5f * _t20 + _t72;
-    const float _t134 = _t74 * _t74 * 2.0f;
-    const float _t135 = _t44 * _t85;
-    const float _t136 = _t21 * _t72;
-    const float _t137 = _t87 * _t87 * 2.0f;
-    const float _t138 = (_t32 * _t43 + (_t26 * _t55 + 2.0f * (_t18 * _t27) + _t13 * _t58) + _t17 * _t65 * 2.0f) * _t12 * _t20;
-    const float _t139 = (_t26 * _t65 * 2.0f + _t17 * _t79 + _t27 * _t43 * 2.0f - _t67 * _t13 - _t41 * _t18) * _t12 * _t20;
-    const float _t140 = 0.5f * ((_t69 * _t51 * 2.0f + _t73 * _t45 * 2.0f - (_t138 * _t34 * 2.0f + (_t44 * _t72 * 2.0f + _t22 * _t124 * 2.0f) + _t28 * _t80 * 2.0f + _t29 * _t139 * 2.0f + _t28 * _t56 * 2.0f + _t21 * _t59 * 2.0f - _t44 * _t68 * 2.0f - _t33 * _t66 * 2.0f - _t42 * _t66 * 2.0f - _t50 * _t66 * 2.0f - _t21 * _t85 * 2.0f) - _t86 * _t37 * 2.0f) * _t36) * _t20 + _t66;
-    const float _t141 = _t12 * (_t77 * _t13 + 3.0f * (_t41 * _t43) - _t26 * _t79 * 3.0f) * _t20;
-    const float _t142 = 4.0f * (_t28 * _t66);
-    const float _t143 = (4.0f * (_t86 * _t45) + (2.0f * (_t50 * _t80) + (4.0f * (_t42 * _t80) + (_t78 * _t44 * 2.0f + _t21 * _t68 * 2.0f)) + _t135 * 4.0f + _t22 * _t126 * 2.0f + 2.0f * (_t141 * _t29) - _t142 - _t139 * _t34 * 2.0f) - _t82 * _t51 * 2.0f) * _t36 * 0.5f * _t20 + _t80;
-    const float _t144 = (_t83 * _t87 * 2.0f + (_t93 * _t87 * 2.0f + _t38 * _t140 * 2.0f) - _t70 * _t74 * 2.0f - _t128 * _t52 * 2.0f - 2.0f * (_t143 * _t46) + _t88 * _t94 * 2.0f) * _t54 * 0.5f * _t20 + _t87;
-    const float _t145 = (_t13 * _t61 + (_t17 * _t55 * 3.0f + _t32 * _t18 * 3.0f)) * _t12 * _t20;
-    const float _t146 = _t56 - (_t22 * _t129 * 2.0f + (_t136 * 4.0f + (_t138 * _t29 * 2.0f + _t44 * _t59 * 2.0f) + _t142 + _t145 * _t34 * 2.0f) - 4.0f * (_t56 * _t33) - _t50 * _t56 * 2.0f - _t21 * _t62 * 2.0f + _t73 * _t37 * 4.0f - _t63 * _t51 * 2.0f) * _t36 * 0.5f * _t20;
-    const float _t147 = (_t52 * _t133 * 2.0f + (_t93 * _t74 * 2.0f + _t64 * _t74 * 2.0f) + _t38 * _t146 * 2.0f - _t46 * _t140 * 2.0f - _t70 * _t87 * 2.0f - _t75 * _t94 * 2.0f) * _t54 * 0.5f * _t20 + _t74;
-    const float _t148 = 1.0f / _t120;
-    const float _t149 = _t71 * _t102;
-    const float _t150 = _t65 * _t102;
-    const float _t151 = _t55 * _t102;
-    const float _t152 = _t108 + (_t108 * _t109 * 2.0f + _t117 * _t108 * 2.0f - _t114 * _t107 * 2.0f - _t104 * _t149 * 2.0f - _t105 * _t150 * 2.0f - _t103 * _t151 * 2.0f + _t118 * _t111 * 2.0f) * _t110 * 0.5f * _t102;
-    const float _t153 = _t107 * _t107 * 2.0f;
+    const float _t12 = _t5 + _t8 + _t11;
+    const float _t13 = 1.0f / sqrtf(_t12);
+    const float _t14 = _t4 * _t13 * 0.5f;
+    const float _t15 = cosf(_t6);
+    const float _t16 = _t15 * _t7;
+    const float _t17 = _t16 * 2.0f;
+    const float _t18 = _t17 * _t13 * 0.5f;
+    const float _t19 = _t14 * _t18 * _t13;
+    const float _t20 = 6.28318548f * h;
+    const float _t21 = _t20 * 0.25f;
+    const float _t22 = _t19 * _t21;
+    const float _t23 = _t14 * _t21 + _t1;
+    const float _t24 = cosf(_t9);
+    const float _t25 = _t24 * _t10;
+    const float _t26 = _t25 * 2.0f;
+    const float _t27 = _t26 * _t13 * 0.5f;
+    const float _t28 = _t18 * _t27 * _t13;
+    const float _t29 = _t28 * _t21;
+    const float _t30 = _t10 + _t27 * _t21;
+    const float _t31 = _t8 * 2.0f;
+    const float _t32 = _t15 * _t15;
+    const float _t33 = (_t31 - _t32 * 2.0f + _t18 * _t18 * 2.0f) * _t13 * 0.5f;
+    const float _t34 = _t15 - _t33 * _t21;
+    const float _t35 = _t7 + _t18 * _t21;
+    const float _t36 = sqrtf(_t30 * _t30 + _t35 * _t35 + _t23 * _t23);
+    const float _t37 = 1.0f / _t36;
+    const float _t38 = (_t22 * _t23 * 2.0f + _t29 * _t30 * 2.0f - _t34 * _t35 * 2.0f) * _t37 * 0.5f;
+    const float _t39 = _t38 * _t21 - _t35;
+    const float _t40 = _t24 * _t24;
+    const float _t41 = _t11 * 2.0f;
+    const float _t42 = (_t40 * 2.0f - _t41 - _t27 * _t27 * 2.0f) * _t13 * 0.5f;
+    const float _t43 = _t24 + _t42 * _t21;
+    const float _t44 = _t14 * _t27 * _t13;
+    const float _t45 = _t44 * _t21;
+    const float _t46 = 0.5f * ((_t43 * _t30 * 2.0f - _t29 * _t35 * 2.0f - _t45 * _t23 * 2.0f) * _t37);
+    const float _t47 = _t30 + _t46 * _t21;
+    const float _t48 = _t2 * _t2;
+    const float _t49 = _t5 * 2.0f;
+    const float _t50 = (2.0f * _t48 - _t49 - _t14 * _t14 * 2.0f) * _t13 * 0.5f;
+    const float _t51 = _t50 * _t21 + _t2;
+    const float _t52 = (_t22 * _t35 * 2.0f + _t45 * _t30 * 2.0f - _t51 * _t23 * 2.0f) * _t37 * 0.5f;
+    const float _t53 = _t52 * _t21 - _t23;
+    const float _t54 = sqrtf(_t47 * _t47 + (_t53 * _t53 + _t39 * _t39));
+    const float _t55 = 1.0f / _t54;
+    const float _t56 = (_t33 * _t14 + _t19 * _t18 * 2.0f) * _t13;
+    const float _t57 = _t56 * _t21;
+    const float _t58 = _t29 * _t29 * 2.0f;
+    const float _t59 = (_t33 * _t27 + _t28 * _t18 * 2.0f) * _t13;
+    const float _t60 = _t59 * _t21;
+    const float _t61 = _t22 * _t22 * 2.0f;
+    const float _t62 = (_t33 * _t18 * 6.0f - (_t16 * 6.0f + _t17)) * _t13 * 0.5f;
+    const float _t63 = _t7 - _t62 * _t21;
+    const float _t64 = (_t57 * _t23 * 2.0f + (_t58 + (_t34 * _t34 * 2.0f + _t30 * _t60 * 2.0f)) + _t61 - _t63 * _t35 * 2.0f - _t38 * _t38 * 2.0f) * _t37 * 0.5f;
+    const float _t65 = _t34 + _t64 * _t21;
+    const float _t66 = (_t19 * _t27 + _t18 * _t44 + _t14 * _t28) * _t13;
+    const float _t67 = _t66 * _t21;
+    const float _t68 = (_t42 * _t18 - _t28 * _t27 * 2.0f) * _t13;
+    const float _t69 = _t68 * _t21;
+    const float _t70 = (_t23 * _t67 * 2.0f + _t22 * _t45 * 2.0f + _t60 * _t35 * 2.0f - _t29 * _t34 * 2.0f - _t30 * _t69 * 2.0f - _t43 * _t29 * 2.0f + _t46 * _t38 * 2.0f) * _t37 * 0.5f;
+    const float _t71 = _t29 - _t70 * _t21;
+    const float _t72 = (_t14 * _t19 * 2.0f - _t18 * _t50) * _t13;
+    const float _t73 = _t72 * _t21;
+    const float _t74 = (_t22 * _t34 * 2.0f + _t22 * _t51 * 2.0f - _t45 * _t29 * 2.0f - _t30 * _t67 * 2.0f - _t23 * _t73 * 2.0f - _t57 * _t35 * 2.0f + _t52 * _t38 * 2.0f) * _t37 * 0.5f;
+    const float _t75 = _t22 + _t74 * _t21;
+    const float _t76 = _t55 * (_t39 * _t65 * 2.0f + _t47 * _t71 * 2.0f - _t53 * _t75 * 2.0f) * 0.5f;
+    const float _t77 = _t39 + _t76 * _t21;
+    const float _t78 = (_t26 + _t25 * 6.0f + _t42 * _t27 * 6.0f) * _t13 * 0.5f;
+    const float _t79 = _t10 + _t78 * _t21;
+    const float _t80 = (_t27 * _t44 * 2.0f - _t42 * _t14) * _t13;
+    const float _t81 = _t80 * _t21;
+    const float _t82 = _t45 * _t45 * 2.0f;
+    const float _t83 = _t37 * (_t46 * _t46 * 2.0f + (_t35 * _t69 * 2.0f + _t79 * _t30 * 2.0f - _t58 - _t23 * _t81 * 2.0f - _t43 * _t43 * 2.0f - _t82)) * 0.5f;
+    const float _t84 = _t43 - _t83 * _t21;
+    const float _t85 = (_t50 * _t27 - _t14 * _t44 * 2.0f) * _t13;
+    const float _t86 = _t85 * _t21;
+    const float _t87 = (_t51 * _t45 * 2.0f + (_t23 * _t86 * 2.0f + _t43 * _t45 * 2.0f) - _t30 * _t81 * 2.0f - _t67 * _t35 * 2.0f - _t22 * _t29 * 2.0f - _t52 * _t46 * 2.0f) * _t37 * 0.5f;
+    const float _t88 = _t45 + _t87 * _t21;
+    const float _t89 = (_t84 * _t47 * 2.0f + _t39 * _t71 * 2.0f + _t53 * _t88 * 2.0f) * _t55 * 0.5f;
+    const float _t90 = _t47 + _t89 * _t21;
+    const float _t91 = (6.0f * _t3 + _t4 + 6.0f * (_t14 * _t50)) * _t13 * 0.5f;
+    const float _t92 = _t91 * _t21 + _t1;
+    const float _t93 = (_t61 + (_t51 * _t51 * 2.0f + _t35 * _t73 * 2.0f) + _t82 - _t92 * _t23 * 2.0f - _t30 * _t86 * 2.0f - _t52 * _t52 * 2.0f) * _t37 * 0.5f;
+    const float _t94 = _t51 + _t93 * _t21;
+    const float _t95 = 0.5f * ((_t39 * _t75 * 2.0f - _t47 * _t88 * 2.0f - 2.0f * (_t94 * _t53)) * _t55);
+    const float _t96 = _t53 - _t95 * _t21;
+    const float _t97 = sqrtf(_t77 * _t77 + _t90 * _t90 + _t96 * _t96);
+    const float _t98 = _t20 * 0.5f;
+    const float _t99 = _t14 * _t98 + _t1;
+    const float _t100 = _t10 + _t27 * _t98;
+    const float _t101 = _t7 + _t18 * _t98;
+    const float _t102 = sqrtf(_t99 * _t99 + (_t100 * _t100 + _t101 * _t101));
+    const float _t103 = _t20 * 0.333333343f;
+    const float _t104 = _t7 + _t18 * _t103;
+    const float _t105 = _t14 * _t103 + _t1;
+    const float _t106 = _t27 * _t103 + _t10;
+    const float _t107 = sqrtf(_t104 * _t104 + _t105 * _t105 + _t106 * _t106);
+    const float _t108 = _t103 * _t44;
+    const float _t109 = _t19 * _t103;
+    const float _t110 = _t50 * _t103 + _t2;
+    const float _t111 = 1.0f / _t107;
+    const float _t112 = (_t106 * _t108 * 2.0f + _t109 * _t104 * 2.0f - _t105 * _t110 * 2.0f) * _t111 * 0.5f;
+    const float _t113 = _t105 - _t103 * _t112;
+    const float _t114 = _t24 + _t42 * _t103;
+    const float _t115 = _t28 * _t103;
+    const float _t116 = (_t114 * _t106 * 2.0f - 2.0f * (_t105 * _t108) - _t115 * _t104 * 2.0f) * _t111 * 0.5f;
+    const float _t117 = _t103 * _t116 + _t106;
+    const float _t118 = _t15 - _t33 * _t103;
+    const float _t119 = (_t115 * _t106 * 2.0f + _t105 * _t109 * 2.0f - _t118 * _t104 * 2.0f) * _t111 * 0.5f;
+    const float _t120 = _t119 * _t103 - _t104;
+    const float _t121 = sqrtf(_t113 * _t113 + _t117 * _t117 + _t120 * _t120);
+    const int _t122 = fabsf(2.66666675f * (_t97 + _t54 + _t36) + _t102 * 2.0f - 4.5f * (_t107 + _t121)) <= 1.73205256f;
+    const float _t123 = 1.0f / _t97;
+    const float _t124 = _t45 * _t81;
+    const float _t125 = (_t19 * _t44 * 2.0f + (_t72 * _t27 + _t14 * _t66 * 2.0f) - _t28 * _t50 - _t85 * _t18) * _t13 * _t21;
+    const float _t126 = 4.0f * (_t22 * _t67);
+    const float _t127 = (_t85 * _t27 * 2.0f - _t42 * _t50 - _t44 * _t44 * 2.0f - _t14 * _t80 * 2.0f) * _t13 * _t21;
+    const float _t128 = (_t14 * _t85 * 3.0f + _t91 * _t27 + 3.0f * (_t50 * _t44)) * _t13 * _t21;
+    const float _t129 = 0.5f * ((4.0f * (_t87 * _t52) + (4.0f * _t124 + (_t29 * _t73 * 2.0f + (_t125 * _t35 * 2.0f + _t43 * _t86 * 2.0f)) + _t126 + 4.0f * (_t51 * _t86) - _t92 * _t45 * 2.0f - _t30 * _t127 * 2.0f - _t128 * _t23 * 2.0f) + _t93 * _t46 * 2.0f) * _t37) * _t21 + _t86;
+    const float _t130 = (_t14 * _t56 * 2.0f + _t72 * _t18 * 2.0f + _t19 * _t19 * 2.0f - _t33 * _t50) * _t13 * _t21;
+    const float _t131 = _t22 * _t57;
+    const float _t132 = (_t72 * _t14 * 3.0f - _t91 * _t18 - _t19 * _t50 * 3.0f) * _t13 * _t21;
+    const float _t133 = _t45 * _t67 * 4.0f;
+    const float _t134 = (_t22 * _t92 * 2.0f + (_t29 * _t86 * 2.0f + 4.0f * (_t51 * _t73)) + _t34 * _t73 * 2.0f - _t130 * _t35 * 2.0f - 4.0f * _t131 - _t125 * _t30 * 2.0f - 2.0f * (_t23 * _t132) - _t133 + _t93 * _t38 * 2.0f - 4.0f * (_t52 * _t74)) * _t37 * 0.5f * _t21 + _t73;
+    const float _t135 = _t75 * _t75 * 2.0f;
+    const float _t136 = _t45 * _t86;
+    const float _t137 = _t22 * _t73;
+    const float _t138 = _t88 * _t88 * 2.0f;
+    const float _t139 = (_t33 * _t44 + (_t27 * _t56 + 2.0f * (_t19 * _t28) + _t14 * _t59) + _t18 * _t66 * 2.0f) * _t13 * _t21;
+    const float _t140 = (_t27 * _t66 * 2.0f + _t18 * _t80 + _t28 * _t44 * 2.0f - _t68 * _t14 - _t42 * _t19) * _t13 * _t21;
+    const float _t141 = 0.5f * ((_t70 * _t52 * 2.0f + _t74 * _t46 * 2.0f - (_t139 * _t35 * 2.0f + (_t45 * _t73 * 2.0f + _t23 * _t125 * 2.0f) + _t29 * _t81 * 2.0f + _t30 * _t140 * 2.0f + _t29 * _t57 * 2.0f + _t22 * _t60 * 2.0f - _t45 * _t69 * 2.0f - _t34 * _t67 * 2.0f - _t43 * _t67 * 2.0f - _t51 * _t67 * 2.0f - _t22 * _t86 * 2.0f) - _t87 * _t38 * 2.0f) * _t37) * _t21 + _t67;
+    const float _t142 = _t13 * (_t78 * _t14 + 3.0f * (_t42 * _t44) - _t27 * _t80 * 3.0f) * _t21;
+    const float _t143 = 4.0f * (_t29 * _t67);
+    const float _t144 = (4.0f * (_t87 * _t46) + (2.0f * (_t51 * _t81) + (4.0f * (_t43 * _t81) + (_t79 * _t45 * 2.0f + _t22 * _t69 * 2.0f)) + _t136 * 4.0f + _t23 * _t127 * 2.0f + 2.0f * (_t142 * _t30) - _t143 - _t140 * _t35 * 2.0f) - _t83 * _t52 * 2.0f) * _t37 * 0.5f * _t21 + _t81;
+    const float _t145 = (_t84 * _t88 * 2.0f + (_t94 * _t88 * 2.0f + _t39 * _t141 * 2.0f) - _t71 * _t75 * 2.0f - _t129 * _t53 * 2.0f - 2.0f * (_t144 * _t47) + _t89 * _t95 * 2.0f) * _t55 * 0.5f * _t21 + _t88;
+    const float _t146 = (_t14 * _t62 + (_t18 * _t56 * 3.0f + _t33 * _t19 * 3.0f)) * _t13 * _t21;
+    const float _t147 = _t57 - (_t23 * _t130 * 2.0f + (_t137 * 4.0f + (_t139 * _t30 * 2.0f + _t45 * _t60 * 2.0f) + _t143 + _t146 * _t35 * 2.0f) - 4.0f * (_t57 * _t34) - _t51 * _t57 * 2.0f - _t22 * _t63 * 2.0f + _t74 * _t38 * 4.0f - _t64 * _t52 * 2.0f) * _t37 * 0.5f * _t21;
+    const float _t148 = (_t53 * _t134 * 2.0f + (_t94 * _t75 * 2.0f + _t65 * _t75 * 2.0f) + _t39 * _t147 * 2.0f - _t47 * _t141 * 2.0f - _t71 * _t88 * 2.0f - _t76 * _t95 * 2.0f) * _t55 * 0.5f * _t21 + _t75;
+    const float _t149 = 1.0f / _t121;
+    const float _t150 = _t72 * _t103;
+    const float _t151 = _t66 * _t103;
+    const float _t152 = _t56 * _t103;
+    const float _t153 = _t109 + (_t109 * _t110 * 2.0f + _t118 * _t109 * 2.0f - _t115 * _t108 * 2.0f - _t105 * _t150 * 2.0f - _t106 * _t151 * 2.0f - _t104 * _t152 * 2.0f + _t119 * _t112 * 2.0f) * _t111 * 0.5f * _t103;
     const float _t154 = _t108 * _t108 * 2.0f;
-    const float _t155 = _t84 * _t102;
-    const float _t156 = _t102 * _t79;
-    const float _t157 = _t102 * (_t110 * (_t107 * _t109 * 2.0f + (_t155 * _t104 * 2.0f + _t113 * _t107 * 2.0f) - _t105 * _t156 * 2.0f - _t103 * _t150 * 2.0f - _t114 * _t108 * 2.0f - _t111 * _t115 * 2.0f) * 0.5f) + _t107;
-    const float _t158 = _t18 * _t97;
-    const float _t159 = _t97 * _t43;
-    const float _t160 = 1.0f / _t101;
-    const float _t161 = (_t121) ? _t19 * (2.66666675f * (_t51 + _t122 * ((_t93 - _t54 * (2.0f * (_t94 * _t94) + (_t128 * _t46 * 2.0f + _t38 * _t133 * 2.0f - _t134 - _t93 * _t93 * 2.0f - (_t91 - (6.0f * (_t51 * _t92) + (_t127 * _t29 * 2.0f + _t135 * 6.0f - 6.0f * (_t91 * _t50) - _t34 * _t131 * 2.0f - _t136 * 6.0f - ((_t49 * _t49 * 6.0f - (_t5 * 6.0f + _t48 - 8.0f * _t47) - _t90 * _t13 * 8.0f) * _t12 * 0.5f * _t20 + _t2) * _t22 * 2.0f)) * _t36 * 0.5f * _t20) * _t52 * 2.0f - _t137)) * 0.5f * _t20) * _t95 * 2.0f + _t89 * _t144 * 2.0f - _t76 * _t147 * 2.0f) * 0.5f - _t94) + 4.5f * (_t148 * (_t152 * _t119 * 2.0f + (0.5f * ((_t153 + _t103 * _t149 * 2.0f + _t154 + _t109 * _t109 * 2.0f - _t155 * _t105 * 2.0f - (_t90 * _t102 + _t1) * _t104 * 2.0f - _t111 * _t111 * 2.0f) * _t110) * _t102 + _t109) * _t112 * 2.0f - _t157 * _t116 * 2.0f) * 0.5f - _t111) + (_t100 * _t158 * 2.0f + _t99 * _t159 * 2.0f - _t98 * (_t49 * _t97 + _t2) * 2.0f) * _t160 * 0.5f * 2.0f) - _t1 : -_t1;
-    const float _t162 = _t67 * _t102;
-    const float _t163 = _t58 * _t102;
-    const float _t164 = _t114 + (_t162 * _t105 * 2.0f + (_t117 * _t114 * 2.0f + _t114 * _t113 * 2.0f) - _t163 * _t103 * 2.0f - _t108 * _t107 * 2.0f - _t104 * _t150 * 2.0f - 2.0f * (_t118 * _t115)) * _t110 * 0.5f * _t102;
-    const float _t165 = _t114 * _t114 * 2.0f;
-    const float _t166 = _t28 * _t59;
-    const float _t167 = (_t41 * _t32 + _t67 * _t17 * 2.0f - _t26 * _t58 * 2.0f - _t27 * _t27 * 2.0f) * _t12 * _t20;
-    const float _t168 = (_t41 * _t27 * 3.0f + _t77 * _t17 + _t67 * _t26 * 3.0f) * _t12 * _t20;
-    const float _t169 = _t68 + (_t82 * _t37 * 2.0f + 4.0f * (_t69 * _t45) + (4.0f * (_t42 * _t68) + _t21 * _t80 * 2.0f + _t33 * _t68 * 2.0f + _t132 + _t22 * _t139 * 2.0f + 4.0f * _t166 - _t78 * _t28 * 2.0f - _t167 * _t34 * 2.0f - _t168 * _t29 * 2.0f)) * _t36 * 0.5f * _t20;
-    const float _t170 = _t70 * _t70 * 2.0f;
-    const float _t171 = _t28 * _t68;
-    const float _t172 = (3.0f * (_t32 * _t27) + _t26 * _t61 + 3.0f * (_t17 * _t58)) * _t12 * _t20;
-    const float _t173 = _t59 + 0.5f * ((_t42 * _t59 * 2.0f + (_t167 * _t29 * 2.0f + _t62 * _t28 * 2.0f) + _t171 * 4.0f + 4.0f * (_t33 * _t59) - 2.0f * (_t22 * _t138) - _t125 - _t44 * _t56 * 2.0f - _t172 * _t34 * 2.0f + _t69 * _t37 * 4.0f - _t63 * _t45 * 2.0f) * _t36) * _t20;
-    const float _t174 = (_t75 * _t88 * 2.0f - (_t169 * _t46 * 2.0f + (_t52 * _t140 * 2.0f + _t173 * _t38 * 2.0f) + _t70 * _t64 * 2.0f + _t83 * _t70 * 2.0f - _t87 * _t74 * 2.0f)) * _t54 * 0.5f * _t20 - _t70;
-    const float _t175 = _t27 * _t97;
-    const float _t176 = (_t121) ? -(_t10 + _t19 * (4.5f * ((_t157 * _t112 * 2.0f - _t164 * _t119 * 2.0f - _t116 * (_t113 - (_t115 * _t115 * 2.0f - (_t113 * _t113 * 2.0f + (_t165 + _t153) + 2.0f * (_t104 * _t156) - 2.0f * (_t162 * _t103) - (_t10 + _t77 * _t102) * _t105 * 2.0f)) * _t110 * 0.5f * _t102) * 2.0f) * _t148 * 0.5f - _t115) + 2.66666675f * ((2.0f * (_t95 * _t144) + _t89 * (_t83 - (_t88 * _t88 * 2.0f - (_t38 * _t169 * 2.0f + (_t83 * _t83 * 2.0f + _t137) + _t170 - _t143 * _t52 * 2.0f - (_t78 - 0.5f * ((6.0f * (_t82 * _t45) - (_t123 * 6.0f + ((_t23 + (8.0f * _t39 - 6.0f * _t11 - _t40 + _t41 * _t41 * 6.0f - 8.0f * (_t77 * _t26)) * _t12 * 0.5f * _t20) * _t29 * 2.0f + _t78 * _t42 * 6.0f) - _t168 * _t34 * 2.0f - _t141 * _t22 * 2.0f - _t171 * 6.0f)) * _t36) * _t20) * _t46 * 2.0f)) * _t54 * 0.5f * _t20) * 2.0f - _t76 * _t174 * 2.0f) * _t122 * 0.5f + _t88 + _t45) - 0.5f * (_t160 * (_t159 * _t98 * 2.0f + _t100 * _t175 * 2.0f - _t99 * (_t23 + _t41 * _t97) * 2.0f)) * 2.0f)) : -_t10;
-    const float _t177 = (_t121) ? _t19 * ((_t75 + _t37 - (_t95 * _t147 * 2.0f + _t89 * _t174 * 2.0f - _t76 * ((_t38 * (_t62 + (_t166 * 6.0f + (_t62 * _t33 * 6.0f + (_t145 * _t22 * 2.0f + (_t172 * _t29 * 2.0f + _t130 * 6.0f))) + (_t14 - (_t30 + 6.0f * _t8 - 8.0f * _t31 - _t32 * _t32 * 6.0f - 8.0f * (_t17 * _t61)) * _t12 * 0.5f * _t20) * _t34 * 2.0f - _t63 * _t37 * 6.0f) * _t36 * 0.5f * _t20) * 2.0f + (_t173 * _t46 * 2.0f + (_t134 + _t64 * _t64 * 2.0f)) + _t170 - _t52 * _t146 * 2.0f - _t75 * _t75 * 2.0f) * _t54 * 0.5f * _t20 + _t64) * 2.0f) * _t122 * 0.5f) * 2.66666675f + _t160 * (_t99 * _t175 * 2.0f + _t98 * _t158 * 2.0f - _t100 * (_t14 - _t32 * _t97) * 2.0f) * 0.5f * 2.0f - 4.5f * (_t118 + _t148 * ((_t117 - (_t118 * _t118 * 2.0f - (_t117 * _t117 * 2.0f + _t165 + _t154 + _t104 * _t151 * 2.0f + _t163 * _t105 * 2.0f - _t103 * (_t7 - _t61 * _t102) * 2.0f)) * _t110 * 0.5f * _t102) * _t119 * 2.0f + _t152 * _t112 * 2.0f + _t164 * _t116 * 2.0f) * 0.5f)) - _t7 : -_t7;
-    const float _t178 = _t161 * _t161 + _t176 * _t176 + _t177 * _t177;
-    const float _t179 = (_t178 > 0.0f) ? 1.0f / sqrtf(_t178) : 0.0f;
-    n[0] = _t179 * _t161;
-    n[1] = _t176 * _t179;
-    n[2] = _t179 * _t177;
+    const float _t155 = _t109 * _t109 * 2.0f;
+    const float _t156 = _t85 * _t103;
+    const float _t157 = _t103 * _t80;
+    const float _t158 = _t103 * (_t111 * (_t108 * _t110 * 2.0f + (_t156 * _t105 * 2.0f + _t114 * _t108 * 2.0f) - _t106 * _t157 * 2.0f - _t104 * _t151 * 2.0f - _t115 * _t109 * 2.0f - _t112 * _t116 * 2.0f) * 0.5f) + _t108;
+    const float _t159 = _t19 * _t98;
+    const float _t160 = _t98 * _t44;
+    const float _t161 = 1.0f / _t102;
+    const float _t162 = (_t122) ? _t20 * (2.66666675f * (_t52 + _t123 * ((_t94 - _t55 * (2.0f * (_t95 * _t95) + (_t129 * _t47 * 2.0f + _t39 * _t134 * 2.0f - _t135 - _t94 * _t94 * 2.0f - (_t92 - (6.0f * (_t52 * _t93) + (_t128 * _t30 * 2.0f + _t136 * 6.0f - 6.0f * (_t92 * _t51) - _t35 * _t132 * 2.0f - _t137 * 6.0f - ((_t50 * _t50 * 6.0f - (_t5 * 6.0f + _t49 - 8.0f * _t48) - _t91 * _t14 * 8.0f) * _t13 * 0.5f * _t21 + _t2) * _t23 * 2.0f)) * _t37 * 0.5f * _t21) * _t53 * 2.0f - _t138)) * 0.5f * _t21) * _t96 * 2.0f + _t90 * _t145 * 2.0f - _t77 * _t148 * 2.0f) * 0.5f - _t95) + 4.5f * (_t149 * (_t153 * _t120 * 2.0f + (0.5f * ((_t154 + _t104 * _t150 * 2.0f + _t155 + _t110 * _t110 * 2.0f - _t156 * _t106 * 2.0f - (_t91 * _t103 + _t1) * _t105 * 2.0f - _t112 * _t112 * 2.0f) * _t111) * _t103 + _t110) * _t113 * 2.0f - _t158 * _t117 * 2.0f) * 0.5f - _t112) + (_t101 * _t159 * 2.0f + _t100 * _t160 * 2.0f - _t99 * (_t50 * _t98 + _t2) * 2.0f) * _t161 * 0.5f * 2.0f) - _t1 : -_t1;
+    const float _t163 = _t68 * _t103;
+    const float _t164 = _t59 * _t103;
+    const float _t165 = _t115 + (_t163 * _t106 * 2.0f + (_t118 * _t115 * 2.0f + _t115 * _t114 * 2.0f) - _t164 * _t104 * 2.0f - _t109 * _t108 * 2.0f - _t105 * _t151 * 2.0f - 2.0f * (_t119 * _t116)) * _t111 * 0.5f * _t103;
+    const float _t166 = _t115 * _t115 * 2.0f;
+    const float _t167 = _t29 * _t60;
+    const float _t168 = (_t42 * _t33 + _t68 * _t18 * 2.0f - _t27 * _t59 * 2.0f - _t28 * _t28 * 2.0f) * _t13 * _t21;
+    const float _t169 = (_t42 * _t28 * 3.0f + _t78 * _t18 + _t68 * _t27 * 3.0f) * _t13 * _t21;
+    const float _t170 = _t69 + (_t83 * _t38 * 2.0f + 4.0f * (_t70 * _t46) + (4.0f * (_t43 * _t69) + _t22 * _t81 * 2.0f + _t34 * _t69 * 2.0f + _t133 + _t23 * _t140 * 2.0f + 4.0f * _t167 - _t79 * _t29 * 2.0f - _t168 * _t35 * 2.0f - _t169 * _t30 * 2.0f)) * _t37 * 0.5f * _t21;
+    const float _t171 = _t71 * _t71 * 2.0f;
+    const float _t172 = _t29 * _t69;
+    const float _t173 = (3.0f * (_t33 * _t28) + _t27 * _t62 + 3.0f * (_t18 * _t59)) * _t13 * _t21;
+    const float _t174 = _t60 + 0.5f * ((_t43 * _t60 * 2.0f + (_t168 * _t30 * 2.0f + _t63 * _t29 * 2.0f) + _t172 * 4.0f + 4.0f * (_t34 * _t60) - 2.0f * (_t23 * _t139) - _t126 - _t45 * _t57 * 2.0f - _t173 * _t35 * 2.0f + _t70 * _t38 * 4.0f - _t64 * _t46 * 2.0f) * _t37) * _t21;
+    const float _t175 = (_t76 * _t89 * 2.0f - (_t170 * _t47 * 2.0f + (_t53 * _t141 * 2.0f + _t174 * _t39 * 2.0f) + _t71 * _t65 * 2.0f + _t84 * _t71 * 2.0f - _t88 * _t75 * 2.0f)) * _t55 * 0.5f * _t21 - _t71;
+    const float _t176 = _t28 * _t98;
+    const float _t177 = (_t122) ? -(_t10 + _t20 * (4.5f * ((_t158 * _t113 * 2.0f - _t165 * _t120 * 2.0f - _t117 * (_t114 - (_t116 * _t116 * 2.0f - (_t114 * _t114 * 2.0f + (_t166 + _t154) + 2.0f * (_t105 * _t157) - 2.0f * (_t163 * _t104) - (_t10 + _t78 * _t103) * _t106 * 2.0f)) * _t111 * 0.5f * _t103) * 2.0f) * _t149 * 0.5f - _t116) + 2.66666675f * ((2.0f * (_t96 * _t145) + _t90 * (_t84 - (_t89 * _t89 * 2.0f - (_t39 * _t170 * 2.0f + (_t84 * _t84 * 2.0f + _t138) + _t171 - _t144 * _t53 * 2.0f - (_t79 - 0.5f * ((6.0f * (_t83 * _t46) - (_t124 * 6.0f + ((_t24 + (8.0f * _t40 - 6.0f * _t11 - _t41 + _t42 * _t42 * 6.0f - 8.0f * (_t78 * _t27)) * _t13 * 0.5f * _t21) * _t30 * 2.0f + _t79 * _t43 * 6.0f) - _t169 * _t35 * 2.0f - _t142 * _t23 * 2.0f - _t172 * 6.0f)) * _t37) * _t21) * _t47 * 2.0f)) * _t55 * 0.5f * _t21) * 2.0f - _t77 * _t175 * 2.0f) * _t123 * 0.5f + _t89 + _t46) - 0.5f * (_t161 * (_t160 * _t99 * 2.0f + _t101 * _t176 * 2.0f - _t100 * (_t24 + _t42 * _t98) * 2.0f)) * 2.0f)) : -_t10;
+    const float _t178 = (_t122) ? _t20 * ((_t76 + _t38 - (_t96 * _t148 * 2.0f + _t90 * _t175 * 2.0f - _t77 * ((_t39 * (_t63 + (_t167 * 6.0f + (_t63 * _t34 * 6.0f + (_t146 * _t23 * 2.0f + (_t173 * _t30 * 2.0f + _t131 * 6.0f))) + (_t15 - (_t31 + 6.0f * _t8 - 8.0f * _t32 - _t33 * _t33 * 6.0f - 8.0f * (_t18 * _t62)) * _t13 * 0.5f * _t21) * _t35 * 2.0f - _t64 * _t38 * 6.0f) * _t37 * 0.5f * _t21) * 2.0f + (_t174 * _t47 * 2.0f + (_t135 + _t65 * _t65 * 2.0f)) + _t171 - _t53 * _t147 * 2.0f - _t76 * _t76 * 2.0f) * _t55 * 0.5f * _t21 + _t65) * 2.0f) * _t123 * 0.5f) * 2.66666675f + _t161 * (_t100 * _t176 * 2.0f + _t99 * _t159 * 2.0f - _t101 * (_t15 - _t33 * _t98) * 2.0f) * 0.5f * 2.0f - 4.5f * (_t119 + _t149 * ((_t118 - (_t119 * _t119 * 2.0f - (_t118 * _t118 * 2.0f + _t166 + _t155 + _t105 * _t152 * 2.0f + _t164 * _t106 * 2.0f - _t104 * (_t7 - _t62 * _t103) * 2.0f)) * _t111 * 0.5f * _t103) * _t120 * 2.0f + _t153 * _t113 * 2.0f + _t165 * _t117 * 2.0f) * 0.5f)) - _t7 : -_t7;
+    const float _t179 = _t162 * _t162 + _t177 * _t177 + _t178 * _t178;
+    const int _t180 = _t179 > 0.0f;
+    const int _t181 = _t179 <= 1.00000002e+30f;
+    const float _t182 = 1.0f / sqrtf(_t179);
+    const float _t183 = (_t12 > 0.0f) ? _t13 : 0.0f;
+    const float _t184 = -(_t183 * _t1);
+    const float _t185 = -(_t10 * _t183);
+    const float _t186 = -(_t7 * _t183);
+    n[0] = (_t180) ? ((_t181) ? _t162 * _t182 : _t184) : _t184;
+    n[1] = (_t180) ? ((_t181) ? _t177 * _t182 : _t185) : _t185;
+    n[2] = (_t180) ? ((_t181) ? _t178 * _t182 : _t186) : _t186;
+}
+
+/* ---- Batch API ------------------------------------------------------------------------------------
+ *   void schwarzp_o4_offset_n(n, x, y, z, h, out)
+ *   void schwarzp_o4_shell_n(n, x, y, z, t, out)
+ *   void schwarzp_o4_offsetf_n(n, x, y, z, h, out)
+ *   void schwarzp_o4_shellf_n(n, x, y, z, t, out)
+ *
+ * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
+ * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
+ * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
+ * selects (blends), and there are no calls left for the vectoriser to stumble over.
+ *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
+ *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
+ *                `#pragma omp simd`; otherwise it carries `GCC ivdep` / `clang loop vectorize(enable)`.
+ *                Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * The results agree with the scalar functions to about 1e-15 of the field's scale (the only
+ * difference is the last bits of sin and cos). Points whose sin/cos arguments lie beyond the
+ * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
+ * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
+ * function's finite value. `out` must not overlap the input arrays. Other elementary functions
+ * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
+ * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ */
+#ifndef OFFSETGEN_SIMD_LOOP
+#if defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)
+#define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
+#elif defined(__clang__)
+#define OFFSETGEN_SIMD_LOOP _Pragma("clang loop vectorize(enable) interleave(enable)")
+#elif defined(__GNUC__)
+#define OFFSETGEN_SIMD_LOOP _Pragma("GCC ivdep")
+#else
+#define OFFSETGEN_SIMD_LOOP
+#endif
+#endif
+#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
+#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
+/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
+ * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
+ * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
+ * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
+ * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sin(double a)
+{
+    const double q = rint(a * 0.63661977236758138);
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
+    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
+    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : NAN;
+}
+
+static inline double offsetgen_batch_cos(double a)
+{
+    const double q = rint(a * 0.63661977236758138);
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
+    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
+    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : NAN;
+}
+#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
+#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
+#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
+/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
+ * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
+static inline float offsetgen_batch_sinf(float a)
+{
+    const float q = rintf(a * 0.636619772f);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
+    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
+    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+}
+
+static inline float offsetgen_batch_cosf(float a)
+{
+    const float q = rintf(a * 0.636619772f);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
+    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
+    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+}
+#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+
+
+/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ * Batch form of schwarzp_o4_offset: out[i] = schwarzp_o4_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
+ */
+static inline void schwarzp_o4_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t2 = 6.2831853071795862 * y[i];
+        const double _t3 = offsetgen_batch_cos(_t2);
+        const double _t4 = 6.2831853071795862 * x[i];
+        const double _t5 = offsetgen_batch_cos(_t4);
+        const double _t6 = 6.2831853071795862 * h[i];
+        const double _t7 = offsetgen_batch_sin(_t4);
+        const double _t8 = _t7 * _t5;
+        const double _t9 = _t8 * 2.0;
+        const double _t10 = _t7 * _t7;
+        const double _t11 = offsetgen_batch_sin(_t0);
+        const double _t12 = _t11 * _t11;
+        const double _t13 = offsetgen_batch_sin(_t2);
+        const double _t14 = _t13 * _t13;
+        const double _t15 = 1.0 / sqrt(_t10 + _t12 + _t14);
+        const double _t16 = _t9 * _t15 * 0.5;
+        const double _t17 = _t1 * _t11;
+        const double _t18 = _t17 * 2.0;
+        const double _t19 = _t18 * _t15 * 0.5;
+        const double _t20 = _t16 * _t19 * _t15;
+        const double _t21 = _t6 * 0.25;
+        const double _t22 = _t20 * _t21;
+        const double _t23 = _t16 * _t21 + _t7;
+        const double _t24 = _t3 * _t13;
+        const double _t25 = _t24 * 2.0;
+        const double _t26 = _t25 * _t15 * 0.5;
+        const double _t27 = _t19 * _t26 * _t15;
+        const double _t28 = _t27 * _t21;
+        const double _t29 = _t13 + _t26 * _t21;
+        const double _t30 = (_t12 * 2.0 - _t1 * _t1 * 2.0 + _t19 * _t19 * 2.0) * _t15 * 0.5;
+        const double _t31 = _t1 - _t30 * _t21;
+        const double _t32 = _t11 + _t19 * _t21;
+        const double _t33 = sqrt(_t29 * _t29 + _t32 * _t32 + _t23 * _t23);
+        const double _t34 = 1.0 / _t33;
+        const double _t35 = (_t22 * _t23 * 2.0 + _t28 * _t29 * 2.0 - _t31 * _t32 * 2.0) * _t34 * 0.5;
+        const double _t36 = _t35 * _t21 - _t32;
+        const double _t37 = (_t3 * _t3 * 2.0 - _t14 * 2.0 - _t26 * _t26 * 2.0) * _t15 * 0.5;
+        const double _t38 = _t3 + _t37 * _t21;
+        const double _t39 = _t16 * _t26 * _t15;
+        const double _t40 = _t39 * _t21;
+        const double _t41 = 0.5 * ((_t38 * _t29 * 2.0 - _t28 * _t32 * 2.0 - _t40 * _t23 * 2.0) * _t34);
+        const double _t42 = _t29 + _t41 * _t21;
+        const double _t43 = (2.0 * (_t5 * _t5) - _t10 * 2.0 - _t16 * _t16 * 2.0) * _t15 * 0.5;
+        const double _t44 = _t43 * _t21 + _t5;
+        const double _t45 = (_t22 * _t32 * 2.0 + _t40 * _t29 * 2.0 - _t44 * _t23 * 2.0) * _t34 * 0.5;
+        const double _t46 = _t45 * _t21 - _t23;
+        const double _t47 = sqrt(_t42 * _t42 + (_t46 * _t46 + _t36 * _t36));
+        const double _t48 = 1.0 / _t47;
+        const double _t49 = (_t30 * _t16 + _t20 * _t19 * 2.0) * _t15 * _t21;
+        const double _t50 = _t28 * _t28 * 2.0;
+        const double _t51 = (_t30 * _t26 + _t27 * _t19 * 2.0) * _t15 * _t21;
+        const double _t52 = _t22 * _t22 * 2.0;
+        const double _t53 = (_t20 * _t26 + _t19 * _t39 + _t16 * _t27) * _t15 * _t21;
+        const double _t54 = (_t37 * _t19 - _t27 * _t26 * 2.0) * _t15 * _t21;
+        const double _t55 = _t28 - (_t23 * _t53 * 2.0 + _t22 * _t40 * 2.0 + _t51 * _t32 * 2.0 - _t28 * _t31 * 2.0 - _t29 * _t54 * 2.0 - _t38 * _t28 * 2.0 + _t41 * _t35 * 2.0) * _t34 * 0.5 * _t21;
+        const double _t56 = (_t16 * _t20 * 2.0 - _t19 * _t43) * _t15 * _t21;
+        const double _t57 = _t22 + (_t22 * _t31 * 2.0 + _t22 * _t44 * 2.0 - _t40 * _t28 * 2.0 - _t29 * _t53 * 2.0 - _t23 * _t56 * 2.0 - _t49 * _t32 * 2.0 + _t45 * _t35 * 2.0) * _t34 * 0.5 * _t21;
+        const double _t58 = _t36 + _t48 * (_t36 * (_t31 + (_t49 * _t23 * 2.0 + (_t50 + (_t31 * _t31 * 2.0 + _t29 * _t51 * 2.0)) + _t52 - (_t11 - (_t30 * _t19 * 6.0 - (_t17 * 6.0 + _t18)) * _t15 * 0.5 * _t21) * _t32 * 2.0 - _t35 * _t35 * 2.0) * _t34 * 0.5 * _t21) * 2.0 + _t42 * _t55 * 2.0 - _t46 * _t57 * 2.0) * 0.5 * _t21;
+        const double _t59 = (_t26 * _t39 * 2.0 - _t37 * _t16) * _t15 * _t21;
+        const double _t60 = _t40 * _t40 * 2.0;
+        const double _t61 = (_t43 * _t26 - _t16 * _t39 * 2.0) * _t15 * _t21;
+        const double _t62 = _t40 + (_t44 * _t40 * 2.0 + (_t23 * _t61 * 2.0 + _t38 * _t40 * 2.0) - _t29 * _t59 * 2.0 - _t53 * _t32 * 2.0 - _t22 * _t28 * 2.0 - _t45 * _t41 * 2.0) * _t34 * 0.5 * _t21;
+        const double _t63 = _t42 + ((_t38 - _t34 * (_t41 * _t41 * 2.0 + (_t32 * _t54 * 2.0 + (_t13 + (_t25 + _t24 * 6.0 + _t37 * _t26 * 6.0) * _t15 * 0.5 * _t21) * _t29 * 2.0 - _t50 - _t23 * _t59 * 2.0 - _t38 * _t38 * 2.0 - _t60)) * 0.5 * _t21) * _t42 * 2.0 + _t36 * _t55 * 2.0 + _t46 * _t62 * 2.0) * _t48 * 0.5 * _t21;
+        const double _t64 = _t46 - 0.5 * ((_t36 * _t57 * 2.0 - _t42 * _t62 * 2.0 - 2.0 * ((_t44 + (_t52 + (_t44 * _t44 * 2.0 + _t32 * _t56 * 2.0) + _t60 - ((6.0 * _t8 + _t9 + 6.0 * (_t16 * _t43)) * _t15 * 0.5 * _t21 + _t7) * _t23 * 2.0 - _t29 * _t61 * 2.0 - _t45 * _t45 * 2.0) * _t34 * 0.5 * _t21) * _t46)) * _t48) * _t21;
+        const double _t65 = _t6 * 0.5;
+        const double _t66 = _t16 * _t65 + _t7;
+        const double _t67 = _t13 + _t26 * _t65;
+        const double _t68 = _t11 + _t19 * _t65;
+        const double _t69 = _t6 * 0.33333333333333331;
+        const double _t70 = _t11 + _t19 * _t69;
+        const double _t71 = _t16 * _t69 + _t7;
+        const double _t72 = _t26 * _t69 + _t13;
+        const double _t73 = sqrt(_t70 * _t70 + _t71 * _t71 + _t72 * _t72);
+        const double _t74 = _t69 * _t39;
+        const double _t75 = _t20 * _t69;
+        const double _t76 = 1.0 / _t73;
+        const double _t77 = _t71 - _t69 * ((_t72 * _t74 * 2.0 + _t75 * _t70 * 2.0 - _t71 * (_t43 * _t69 + _t5) * 2.0) * _t76 * 0.5);
+        const double _t78 = _t27 * _t69;
+        const double _t79 = _t69 * (((_t3 + _t37 * _t69) * _t72 * 2.0 - 2.0 * (_t71 * _t74) - _t78 * _t70 * 2.0) * _t76 * 0.5) + _t72;
+        const double _t80 = (_t78 * _t72 * 2.0 + _t71 * _t75 * 2.0 - (_t1 - _t30 * _t69) * _t70 * 2.0) * _t76 * 0.5 * _t69 - _t70;
+        const double _t81 = 2.6666666666666665 * (sqrt(_t58 * _t58 + _t63 * _t63 + _t64 * _t64) + _t47 + _t33) + sqrt(_t66 * _t66 + (_t67 * _t67 + _t68 * _t68)) * 2.0 - 4.5 * (_t73 + sqrt(_t77 * _t77 + _t79 * _t79 + _t80 * _t80));
+        out[i] = _t1 + _t3 + _t5 - _t6 * ((fabs(_t81) <= 1.7320525396196846) ? _t81 : ((_t81 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o4_offset(x[i], y[i], z[i], h[i]);
+    }
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Batch form of schwarzp_o4_shell: out[i] = schwarzp_o4_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
+ */
+static inline void schwarzp_o4_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t2 = 6.2831853071795862 * y[i];
+        const double _t3 = offsetgen_batch_cos(_t2);
+        const double _t4 = 6.2831853071795862 * x[i];
+        const double _t5 = offsetgen_batch_cos(_t4);
+        const double _t6 = _t1 + _t3 + _t5;
+        const double _t7 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t8 = _t7 * 0.5;
+        const double _t9 = offsetgen_batch_sin(_t2);
+        const double _t10 = _t3 * _t9;
+        const double _t11 = _t10 * 2.0;
+        const double _t12 = offsetgen_batch_sin(_t4);
+        const double _t13 = _t12 * _t12;
+        const double _t14 = offsetgen_batch_sin(_t0);
+        const double _t15 = _t14 * _t14;
+        const double _t16 = _t9 * _t9;
+        const double _t17 = 1.0 / sqrt(_t13 + _t15 + _t16);
+        const double _t18 = _t11 * _t17 * 0.5;
+        const double _t19 = _t8 * _t18;
+        const double _t20 = _t19 + _t9;
+        const double _t21 = _t12 * _t5;
+        const double _t22 = _t21 * 2.0;
+        const double _t23 = _t22 * _t17 * 0.5;
+        const double _t24 = _t8 * _t23;
+        const double _t25 = _t24 + _t12;
+        const double _t26 = _t1 * _t14;
+        const double _t27 = _t26 * 2.0;
+        const double _t28 = _t27 * _t17 * 0.5;
+        const double _t29 = _t8 * _t28;
+        const double _t30 = _t14 + _t29;
+        const double _t31 = _t7 * 0.25;
+        const double _t32 = _t31 * _t23;
+        const double _t33 = _t32 + _t12;
+        const double _t34 = _t31 * _t28;
+        const double _t35 = _t14 + _t34;
+        const double _t36 = _t31 * _t18;
+        const double _t37 = _t9 + _t36;
+        const double _t38 = sqrt(_t33 * _t33 + _t35 * _t35 + _t37 * _t37);
+        const double _t39 = _t23 * _t18 * _t17;
+        const double _t40 = _t31 * _t39;
+        const double _t41 = _t28 * _t18 * _t17;
+        const double _t42 = _t31 * _t41;
+        const double _t43 = (_t3 * _t3 * 2.0 - _t16 * 2.0 - _t18 * _t18 * 2.0) * _t17 * 0.5;
+        const double _t44 = _t31 * _t43;
+        const double _t45 = _t3 + _t44;
+        const double _t46 = 1.0 / _t38;
+        const double _t47 = (_t40 * _t33 * 2.0 + _t42 * _t35 * 2.0 - _t45 * _t37 * 2.0) * _t46 * 0.5;
+        const double _t48 = _t31 * _t47 - _t37;
+        const double _t49 = (_t15 * 2.0 - _t1 * _t1 * 2.0 + _t28 * _t28 * 2.0) * _t17 * 0.5;
+        const double _t50 = _t31 * _t49;
+        const double _t51 = _t1 - _t50;
+        const double _t52 = _t23 * _t28 * _t17;
+        const double _t53 = _t31 * _t52;
+        const double _t54 = (_t51 * _t35 * 2.0 - _t53 * _t33 * 2.0 - _t42 * _t37 * 2.0) * _t46 * 0.5;
+        const double _t55 = _t31 * _t54 + _t35;
+        const double _t56 = (2.0 * (_t5 * _t5) - _t13 * 2.0 - _t23 * _t23 * 2.0) * _t17 * 0.5;
+        const double _t57 = _t31 * _t56;
+        const double _t58 = _t57 + _t5;
+        const double _t59 = (_t58 * _t33 * 2.0 - _t40 * _t37 * 2.0 - _t53 * _t35 * 2.0) * _t46 * 0.5;
+        const double _t60 = _t33 + _t31 * _t59;
+        const double _t61 = sqrt(_t48 * _t48 + _t55 * _t55 + _t60 * _t60);
+        const double _t62 = 1.0 / _t61;
+        const double _t63 = _t40 * _t40 * 2.0;
+        const double _t64 = _t31 * ((_t23 * _t52 * 2.0 - _t28 * _t56) * _t17);
+        const double _t65 = _t53 * _t53 * 2.0;
+        const double _t66 = _t31 * ((_t56 * _t18 - _t23 * _t39 * 2.0) * _t17);
+        const double _t67 = _t31 * ((6.0 * _t21 + _t22 + 6.0 * (_t23 * _t56)) * _t17 * 0.5);
+        const double _t68 = _t31 * ((_t52 * _t18 + _t28 * _t39 + _t23 * _t41) * _t17);
+        const double _t69 = _t31 * ((_t49 * _t23 + _t52 * _t28 * 2.0) * _t17);
+        const double _t70 = _t40 * _t42 * 2.0;
+        const double _t71 = _t53 - _t31 * (_t46 * (_t68 * _t37 * 2.0 + (_t33 * _t64 * 2.0 + _t35 * _t69 * 2.0) + _t70 - _t51 * _t53 * 2.0 - _t58 * _t53 * 2.0 - _t59 * _t54 * 2.0) * 0.5);
+        const double _t72 = _t31 * ((_t18 * _t39 * 2.0 - _t43 * _t23) * _t17);
+        const double _t73 = _t53 * _t42 * 2.0;
+        const double _t74 = _t31 * ((_t68 * _t35 * 2.0 + _t72 * _t37 * 2.0 + _t73 - _t40 * _t45 * 2.0 - _t66 * _t33 * 2.0 - 2.0 * (_t58 * _t40) + _t59 * _t47 * 2.0) * _t46 * 0.5) - _t40;
+        const double _t75 = _t31 * (_t62 * ((_t58 - _t31 * (_t46 * (_t59 * _t59 * 2.0 - (_t63 + _t58 * _t58 * 2.0 + _t35 * _t64 * 2.0 + _t65 - _t66 * _t37 * 2.0 - (_t67 + _t12) * _t33 * 2.0)) * 0.5)) * _t60 * 2.0 - _t71 * _t55 * 2.0 - _t74 * _t48 * 2.0) * 0.5) + _t60;
+        const double _t76 = _t42 * _t42 * 2.0;
+        const double _t77 = _t31 * ((_t11 + _t10 * 6.0 + _t43 * _t18 * 6.0) * _t17 * 0.5);
+        const double _t78 = _t31 * ((_t43 * _t28 - _t41 * _t18 * 2.0) * _t17);
+        const double _t79 = _t40 * _t53 * 2.0;
+        const double _t80 = _t31 * ((_t49 * _t18 + _t41 * _t28 * 2.0) * _t17);
+        const double _t81 = _t31 * (_t46 * (_t54 * _t47 * 2.0 - (_t45 * _t42 * 2.0 + (_t78 * _t37 * 2.0 + 2.0 * (_t51 * _t42)) - _t68 * _t33 * 2.0 - _t79 - _t80 * _t35 * 2.0)) * 0.5) - _t42;
+        const double _t82 = _t31 * (0.5 * (_t62 * (_t48 * (_t31 * ((_t47 * _t47 * 2.0 - (_t76 + (_t72 * _t33 * 2.0 + _t63 + _t45 * _t45 * 2.0) - (_t77 + _t9) * _t37 * 2.0 - _t78 * _t35 * 2.0)) * _t46 * 0.5) - _t45) * 2.0 + _t81 * _t55 * 2.0 + _t74 * _t60 * 2.0))) - _t48;
+        const double _t83 = _t31 * ((_t49 * _t28 * 6.0 - (_t26 * 6.0 + _t27)) * _t17 * 0.5);
+        const double _t84 = _t55 + _t31 * (_t62 * ((_t51 + _t31 * (0.5 * ((_t33 * _t69 * 2.0 + _t51 * _t51 * 2.0 + _t80 * _t37 * 2.0 + _t76 + _t65 - (_t14 - _t83) * _t35 * 2.0 - _t54 * _t54 * 2.0) * _t46))) * _t55 * 2.0 - _t81 * _t48 * 2.0 - _t71 * _t60 * 2.0) * 0.5);
+        const double _t85 = _t7 * 0.33333333333333331;
+        const double _t86 = _t28 * _t85;
+        const double _t87 = _t14 + _t86;
+        const double _t88 = _t18 * _t85;
+        const double _t89 = _t9 + _t88;
+        const double _t90 = _t23 * _t85;
+        const double _t91 = _t90 + _t12;
+        const double _t92 = sqrt(_t87 * _t87 + _t89 * _t89 + _t91 * _t91);
+        const double _t93 = 1.0 / _t92;
+        const double _t94 = _t52 * _t85;
+        const double _t95 = _t41 * _t85;
+        const double _t96 = _t49 * _t85;
+        const double _t97 = 0.5 * (_t93 * (_t91 * _t94 * 2.0 + _t95 * _t89 * 2.0 - (_t1 - _t96) * _t87 * 2.0)) * _t85 - _t87;
+        const double _t98 = _t43 * _t85;
+        const double _t99 = _t85 * _t39;
+        const double _t100 = _t93 * ((_t98 + _t3) * _t89 * 2.0 - _t95 * _t87 * 2.0 - _t91 * _t99 * 2.0) * 0.5 * _t85 + _t89;
+        const double _t101 = _t56 * _t85;
+        const double _t102 = _t91 + (_t91 * (_t101 + _t5) * 2.0 - _t94 * _t87 * 2.0 - _t89 * _t99 * 2.0) * _t93 * 0.5 * _t85;
+        const double _t103 = sqrt(_t20 * _t20 + _t25 * _t25 + _t30 * _t30) * 2.0 + 2.6666666666666665 * (_t38 + sqrt(_t75 * _t75 + _t82 * _t82 + _t84 * _t84) + _t61) - 4.5 * (_t92 + sqrt(_t97 * _t97 + _t100 * _t100 + _t102 * _t102));
+        const double _t104 = _t19 - _t9;
+        const double _t105 = _t14 - _t29;
+        const double _t106 = _t24 - _t12;
+        const double _t107 = _t9 - _t36;
+        const double _t108 = _t32 - _t12;
+        const double _t109 = _t14 - _t34;
+        const double _t110 = sqrt(_t107 * _t107 + (_t108 * _t108 + _t109 * _t109));
+        const double _t111 = 1.0 / _t110;
+        const double _t112 = _t3 - _t44;
+        const double _t113 = _t111 * (_t107 * _t112 * 2.0 + _t109 * _t42 * 2.0 - _t108 * _t40 * 2.0) * 0.5;
+        const double _t114 = _t107 - _t31 * _t113;
+        const double _t115 = _t57 - _t5;
+        const double _t116 = (_t40 * _t107 * 2.0 + (_t109 * _t53 * 2.0 + _t108 * _t115 * 2.0)) * _t111 * 0.5;
+        const double _t117 = _t40 + _t31 * (_t111 * (_t109 * _t68 * 2.0 + (_t72 * _t107 * 2.0 + _t40 * _t115 * 2.0) + _t108 * _t66 * 2.0 - _t73 - 2.0 * (_t40 * _t112) + _t116 * _t113 * 2.0) * 0.5);
+        const double _t118 = _t108 + _t31 * _t116;
+        const double _t119 = _t1 + _t50;
+        const double _t120 = _t111 * (_t107 * _t42 * 2.0 + _t109 * _t119 * 2.0 - _t108 * _t53 * 2.0) * 0.5;
+        const double _t121 = _t109 - _t31 * _t120;
+        const double _t122 = _t31 * ((_t78 * _t107 * 2.0 + (_t79 + (_t108 * _t68 * 2.0 + (_t42 * _t119 * 2.0 + 2.0 * (_t42 * _t112)))) - _t109 * _t80 * 2.0 - _t120 * _t113 * 2.0) * _t111 * 0.5) - _t42;
+        const double _t123 = sqrt(_t114 * _t114 + _t118 * _t118 + _t121 * _t121);
+        const double _t124 = 1.0 / _t123;
+        const double _t125 = _t114 + _t31 * ((_t117 * _t118 * 2.0 + _t121 * _t122 * 2.0 - _t114 * (_t112 + _t31 * ((_t113 * _t113 * 2.0 - (_t107 * (_t77 - _t9) * 2.0 + (_t112 * _t112 * 2.0 + _t63 + _t76 + _t78 * _t109 * 2.0) + _t108 * _t72 * 2.0)) * _t111 * 0.5)) * 2.0) * _t124 * 0.5);
+        const double _t126 = _t31 * (_t111 * (_t53 * _t115 * 2.0 + (_t68 * _t107 * 2.0 + _t109 * _t69 * 2.0) - _t108 * _t64 * 2.0 - _t53 * _t119 * 2.0 - _t70 + _t120 * _t116 * 2.0) * 0.5) + _t53;
+        const double _t127 = _t121 + _t31 * ((_t126 * _t118 * 2.0 + _t114 * _t122 * 2.0 - _t121 * (_t31 * (0.5 * (_t111 * (_t120 * _t120 * 2.0 + (_t80 * _t107 * 2.0 + (_t14 + _t83) * _t109 * 2.0 - _t108 * _t69 * 2.0 - _t76 - _t119 * _t119 * 2.0 - _t65)))) + _t119) * 2.0) * _t124 * 0.5);
+        const double _t128 = _t118 - _t31 * (_t124 * (_t118 * (_t31 * (_t111 * (_t109 * _t64 * 2.0 + _t108 * (_t67 - _t12) * 2.0 - _t63 - _t115 * _t115 * 2.0 - _t107 * _t66 * 2.0 - _t65 + _t116 * _t116 * 2.0) * 0.5) - _t115) * 2.0 - _t114 * _t117 * 2.0 - 2.0 * (_t126 * _t121)) * 0.5);
+        const double _t129 = _t14 - _t86;
+        const double _t130 = _t9 - _t88;
+        const double _t131 = _t90 - _t12;
+        const double _t132 = sqrt(_t129 * _t129 + _t130 * _t130 + _t131 * _t131);
+        const double _t133 = 1.0 / _t132;
+        const double _t134 = _t129 - _t85 * ((_t130 * _t95 * 2.0 + _t129 * (_t1 + _t96) * 2.0 - _t94 * _t131 * 2.0) * _t133 * 0.5);
+        const double _t135 = _t131 + _t85 * (_t133 * (_t130 * _t99 * 2.0 + (_t131 * (_t101 - _t5) * 2.0 + _t129 * _t94 * 2.0)) * 0.5);
+        const double _t136 = _t85 * ((_t130 * (_t98 - _t3) * 2.0 + _t131 * _t99 * 2.0 - _t129 * _t95 * 2.0) * _t133 * 0.5) + _t130;
+        const double _t137 = sqrt(_t104 * _t104 + (_t105 * _t105 + _t106 * _t106)) * 2.0 + 2.6666666666666665 * (sqrt(_t125 * _t125 + _t127 * _t127 + _t128 * _t128) + _t123 + _t110) - 4.5 * (_t132 + sqrt(_t134 * _t134 + _t135 * _t135 + _t136 * _t136));
+        out[i] = (_t6 - ((fabs(_t103) <= 1.7320525396196846) ? _t103 : ((_t103 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t7) * (_t7 * ((fabs(_t137) <= 1.7320525396196846) ? _t137 : ((_t137 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) + _t6);
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o4_shell(x[i], y[i], z[i], t[i]);
+    }
+}
+
+/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ * Batch form of schwarzp_o4_offsetf: out[i] = schwarzp_o4_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
+ */
+static inline void schwarzp_o4_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t2 = 6.28318548f * y[i];
+        const float _t3 = offsetgen_batch_cosf(_t2);
+        const float _t4 = 6.28318548f * x[i];
+        const float _t5 = offsetgen_batch_cosf(_t4);
+        const float _t6 = 6.28318548f * h[i];
+        const float _t7 = offsetgen_batch_sinf(_t4);
+        const float _t8 = _t7 * _t5;
+        const float _t9 = _t8 * 2.0f;
+        const float _t10 = _t7 * _t7;
+        const float _t11 = offsetgen_batch_sinf(_t0);
+        const float _t12 = _t11 * _t11;
+        const float _t13 = offsetgen_batch_sinf(_t2);
+        const float _t14 = _t13 * _t13;
+        const float _t15 = 1.0f / sqrtf(_t10 + _t12 + _t14);
+        const float _t16 = _t9 * _t15 * 0.5f;
+        const float _t17 = _t1 * _t11;
+        const float _t18 = _t17 * 2.0f;
+        const float _t19 = _t18 * _t15 * 0.5f;
+        const float _t20 = _t16 * _t19 * _t15;
+        const float _t21 = _t6 * 0.25f;
+        const float _t22 = _t20 * _t21;
+        const float _t23 = _t16 * _t21 + _t7;
+        const float _t24 = _t3 * _t13;
+        const float _t25 = _t24 * 2.0f;
+        const float _t26 = _t25 * _t15 * 0.5f;
+        const float _t27 = _t19 * _t26 * _t15;
+        const float _t28 = _t27 * _t21;
+        const float _t29 = _t13 + _t26 * _t21;
+        const float _t30 = (_t12 * 2.0f - _t1 * _t1 * 2.0f + _t19 * _t19 * 2.0f) * _t15 * 0.5f;
+        const float _t31 = _t1 - _t30 * _t21;
+        const float _t32 = _t11 + _t19 * _t21;
+        const float _t33 = sqrtf(_t29 * _t29 + _t32 * _t32 + _t23 * _t23);
+        const float _t34 = 1.0f / _t33;
+        const float _t35 = (_t22 * _t23 * 2.0f + _t28 * _t29 * 2.0f - _t31 * _t32 * 2.0f) * _t34 * 0.5f;
+        const float _t36 = _t35 * _t21 - _t32;
+        const float _t37 = (_t3 * _t3 * 2.0f - _t14 * 2.0f - _t26 * _t26 * 2.0f) * _t15 * 0.5f;
+        const float _t38 = _t3 + _t37 * _t21;
+        const float _t39 = _t16 * _t26 * _t15;
+        const float _t40 = _t39 * _t21;
+        const float _t41 = 0.5f * ((_t38 * _t29 * 2.0f - _t28 * _t32 * 2.0f - _t40 * _t23 * 2.0f) * _t34);
+        const float _t42 = _t29 + _t41 * _t21;
+        const float _t43 = (2.0f * (_t5 * _t5) - _t10 * 2.0f - _t16 * _t16 * 2.0f) * _t15 * 0.5f;
+        const float _t44 = _t43 * _t21 + _t5;
+        const float _t45 = (_t22 * _t32 * 2.0f + _t40 * _t29 * 2.0f - _t44 * _t23 * 2.0f) * _t34 * 0.5f;
+        const float _t46 = _t45 * _t21 - _t23;
+        const float _t47 = sqrtf(_t42 * _t42 + (_t46 * _t46 + _t36 * _t36));
+        const float _t48 = 1.0f / _t47;
+        const float _t49 = (_t30 * _t16 + _t20 * _t19 * 2.0f) * _t15 * _t21;
+        const float _t50 = _t28 * _t28 * 2.0f;
+        const float _t51 = (_t30 * _t26 + _t27 * _t19 * 2.0f) * _t15 * _t21;
+        const float _t52 = _t22 * _t22 * 2.0f;
+        const float _t53 = (_t20 * _t26 + _t19 * _t39 + _t16 * _t27) * _t15 * _t21;
+        const float _t54 = (_t37 * _t19 - _t27 * _t26 * 2.0f) * _t15 * _t21;
+        const float _t55 = _t28 - (_t23 * _t53 * 2.0f + _t22 * _t40 * 2.0f + _t51 * _t32 * 2.0f - _t28 * _t31 * 2.0f - _t29 * _t54 * 2.0f - _t38 * _t28 * 2.0f + _t41 * _t35 * 2.0f) * _t34 * 0.5f * _t21;
+        const float _t56 = (_t16 * _t20 * 2.0f - _t19 * _t43) * _t15 * _t21;
+        const float _t57 = _t22 + (_t22 * _t31 * 2.0f + _t22 * _t44 * 2.0f - _t40 * _t28 * 2.0f - _t29 * _t53 * 2.0f - _t23 * _t56 * 2.0f - _t49 * _t32 * 2.0f + _t45 * _t35 * 2.0f) * _t34 * 0.5f * _t21;
+        const float _t58 = _t36 + _t48 * (_t36 * (_t31 + (_t49 * _t23 * 2.0f + (_t50 + (_t31 * _t31 * 2.0f + _t29 * _t51 * 2.0f)) + _t52 - (_t11 - (_t30 * _t19 * 6.0f - (_t17 * 6.0f + _t18)) * _t15 * 0.5f * _t21) * _t32 * 2.0f - _t35 * _t35 * 2.0f) * _t34 * 0.5f * _t21) * 2.0f + _t42 * _t55 * 2.0f - _t46 * _t57 * 2.0f) * 0.5f * _t21;
+        const float _t59 = (_t26 * _t39 * 2.0f - _t37 * _t16) * _t15 * _t21;
+        const float _t60 = _t40 * _t40 * 2.0f;
+        const float _t61 = (_t43 * _t26 - _t16 * _t39 * 2.0f) * _t15 * _t21;
+        const float _t62 = _t40 + (_t44 * _t40 * 2.0f + (_t23 * _t61 * 2.0f + _t38 * _t40 * 2.0f) - _t29 * _t59 * 2.0f - _t53 * _t32 * 2.0f - _t22 * _t28 * 2.0f - _t45 * _t41 * 2.0f) * _t34 * 0.5f * _t21;
+        const float _t63 = _t42 + ((_t38 - _t34 * (_t41 * _t41 * 2.0f + (_t32 * _t54 * 2.0f + (_t13 + (_t25 + _t24 * 6.0f + _t37 * _t26 * 6.0f) * _t15 * 0.5f * _t21) * _t29 * 2.0f - _t50 - _t23 * _t59 * 2.0f - _t38 * _t38 * 2.0f - _t60)) * 0.5f * _t21) * _t42 * 2.0f + _t36 * _t55 * 2.0f + _t46 * _t62 * 2.0f) * _t48 * 0.5f * _t21;
+        const float _t64 = _t46 - 0.5f * ((_t36 * _t57 * 2.0f - _t42 * _t62 * 2.0f - 2.0f * ((_t44 + (_t52 + (_t44 * _t44 * 2.0f + _t32 * _t56 * 2.0f) + _t60 - ((6.0f * _t8 + _t9 + 6.0f * (_t16 * _t43)) * _t15 * 0.5f * _t21 + _t7) * _t23 * 2.0f - _t29 * _t61 * 2.0f - _t45 * _t45 * 2.0f) * _t34 * 0.5f * _t21) * _t46)) * _t48) * _t21;
+        const float _t65 = _t6 * 0.5f;
+        const float _t66 = _t16 * _t65 + _t7;
+        const float _t67 = _t13 + _t26 * _t65;
+        const float _t68 = _t11 + _t19 * _t65;
+        const float _t69 = _t6 * 0.333333343f;
+        const float _t70 = _t11 + _t19 * _t69;
+        const float _t71 = _t16 * _t69 + _t7;
+        const float _t72 = _t26 * _t69 + _t13;
+        const float _t73 = sqrtf(_t70 * _t70 + _t71 * _t71 + _t72 * _t72);
+        const float _t74 = _t69 * _t39;
+        const float _t75 = _t20 * _t69;
+        const float _t76 = 1.0f / _t73;
+        const float _t77 = _t71 - _t69 * ((_t72 * _t74 * 2.0f + _t75 * _t70 * 2.0f - _t71 * (_t43 * _t69 + _t5) * 2.0f) * _t76 * 0.5f);
+        const float _t78 = _t27 * _t69;
+        const float _t79 = _t69 * (((_t3 + _t37 * _t69) * _t72 * 2.0f - 2.0f * (_t71 * _t74) - _t78 * _t70 * 2.0f) * _t76 * 0.5f) + _t72;
+        const float _t80 = (_t78 * _t72 * 2.0f + _t71 * _t75 * 2.0f - (_t1 - _t30 * _t69) * _t70 * 2.0f) * _t76 * 0.5f * _t69 - _t70;
+        const float _t81 = 2.66666675f * (sqrtf(_t58 * _t58 + _t63 * _t63 + _t64 * _t64) + _t47 + _t33) + sqrtf(_t66 * _t66 + (_t67 * _t67 + _t68 * _t68)) * 2.0f - 4.5f * (_t73 + sqrtf(_t77 * _t77 + _t79 * _t79 + _t80 * _t80));
+        out[i] = _t1 + _t3 + _t5 - _t6 * ((fabsf(_t81) <= 1.73205256f) ? _t81 : ((_t81 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o4_offsetf(x[i], y[i], z[i], h[i]);
+    }
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Batch form of schwarzp_o4_shellf: out[i] = schwarzp_o4_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
+ */
+static inline void schwarzp_o4_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+{
+    size_t i;
+    OFFSETGEN_SIMD_LOOP
+    for (i = 0; i < n; ++i) {
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t2 = 6.28318548f * y[i];
+        const float _t3 = offsetgen_batch_cosf(_t2);
+        const float _t4 = 6.28318548f * x[i];
+        const float _t5 = offsetgen_batch_cosf(_t4);
+        const float _t6 = _t1 + _t3 + _t5;
+        const float _t7 = 6.28318548f * (t[i] * 0.5f);
+        const float _t8 = _t7 * 0.5f;
+        const float _t9 = offsetgen_batch_sinf(_t2);
+        const float _t10 = _t3 * _t9;
+        const float _t11 = _t10 * 2.0f;
+        const float _t12 = offsetgen_batch_sinf(_t4);
+        const float _t13 = _t12 * _t12;
+        const float _t14 = offsetgen_batch_sinf(_t0);
+        const float _t15 = _t14 * _t14;
+        const float _t16 = _t9 * _t9;
+        const float _t17 = 1.0f / sqrtf(_t13 + _t15 + _t16);
+        const float _t18 = _t11 * _t17 * 0.5f;
+        const float _t19 = _t8 * _t18;
+        const float _t20 = _t19 + _t9;
+        const float _t21 = _t12 * _t5;
+        const float _t22 = _t21 * 2.0f;
+        const float _t23 = _t22 * _t17 * 0.5f;
+        const float _t24 = _t8 * _t23;
+        const float _t25 = _t24 + _t12;
+        const float _t26 = _t1 * _t14;
+        const float _t27 = _t26 * 2.0f;
+        const float _t28 = _t27 * _t17 * 0.5f;
+        const float _t29 = _t8 * _t28;
+        const float _t30 = _t14 + _t29;
+        const float _t31 = _t7 * 0.25f;
+        const float _t32 = _t31 * _t23;
+        const float _t33 = _t32 + _t12;
+        const float _t34 = _t31 * _t28;
+        const float _t35 = _t14 + _t34;
+        const float _t36 = _t31 * _t18;
+        const float _t37 = _t9 + _t36;
+        const float _t38 = sqrtf(_t33 * _t33 + _t35 * _t35 + _t37 * _t37);
+        const float _t39 = _t23 * _t18 * _t17;
+        const float _t40 = _t31 * _t39;
+        const float _t41 = _t28 * _t18 * _t17;
+        const float _t42 = _t31 * _t41;
+        const float _t43 = (_t3 * _t3 * 2.0f - _t16 * 2.0f - _t18 * _t18 * 2.0f) * _t17 * 0.5f;
+        const float _t44 = _t31 * _t43;
+        const float _t45 = _t3 + _t44;
+        const float _t46 = 1.0f / _t38;
+        const float _t47 = (_t40 * _t33 * 2.0f + _t42 * _t35 * 2.0f - _t45 * _t37 * 2.0f) * _t46 * 0.5f;
+        const float _t48 = _t31 * _t47 - _t37;
+        const float _t49 = (_t15 * 2.0f - _t1 * _t1 * 2.0f + _t28 * _t28 * 2.0f) * _t17 * 0.5f;
+        const float _t50 = _t31 * _t49;
+        const float _t51 = _t1 - _t50;
+        const float _t52 = _t23 * _t28 * _t17;
+        const float _t53 = _t31 * _t52;
+        const float _t54 = (_t51 * _t35 * 2.0f - _t53 * _t33 * 2.0f - _t42 * _t37 * 2.0f) * _t46 * 0.5f;
+        const float _t55 = _t31 * _t54 + _t35;
+        const float _t56 = (2.0f * (_t5 * _t5) - _t13 * 2.0f - _t23 * _t23 * 2.0f) * _t17 * 0.5f;
+        const float _t57 = _t31 * _t56;
+        const float _t58 = _t57 + _t5;
+        const float _t59 = (_t58 * _t33 * 2.0f - _t40 * _t37 * 2.0f - _t53 * _t35 * 2.0f) * _t46 * 0.5f;
+        const float _t60 = _t33 + _t31 * _t59;
+        const float _t61 = sqrtf(_t48 * _t48 + _t55 * _t55 + _t60 * _t60);
+        const float _t62 = 1.0f / _t61;
+        const float _t63 = _t40 * _t40 * 2.0f;
+        const float _t64 = _t31 * ((_t23 * _t52 * 2.0f - _t28 * _t56) * _t17);
+        const float _t65 = _t53 * _t53 * 2.0f;
+        const float _t66 = _t31 * ((_t56 * _t18 - _t23 * _t39 * 2.0f) * _t17);
+        const float _t67 = _t31 * ((6.0f * _t21 + _t22 + 6.0f * (_t23 * _t56)) * _t17 * 0.5f);
+        const float _t68 = _t31 * ((_t52 * _t18 + _t28 * _t39 + _t23 * _t41) * _t17);
+        const float _t69 = _t31 * ((_t49 * _t23 + _t52 * _t28 * 2.0f) * _t17);
+        const float _t70 = _t40 * _t42 * 2.0f;
+        const float _t71 = _t53 - _t31 * (_t46 * (_t68 * _t37 * 2.0f + (_t33 * _t64 * 2.0f + _t35 * _t69 * 2.0f) + _t70 - _t51 * _t53 * 2.0f - _t58 * _t53 * 2.0f - _t59 * _t54 * 2.0f) * 0.5f);
+        const float _t72 = _t31 * ((_t18 * _t39 * 2.0f - _t43 * _t23) * _t17);
+        const float _t73 = _t53 * _t42 * 2.0f;
+        const float _t74 = _t31 * ((_t68 * _t35 * 2.0f + _t72 * _t37 * 2.0f + _t73 - _t40 * _t45 * 2.0f - _t66 * _t33 * 2.0f - 2.0f * (_t58 * _t40) + _t59 * _t47 * 2.0f) * _t46 * 0.5f) - _t40;
+        const float _t75 = _t31 * (_t62 * ((_t58 - _t31 * (_t46 * (_t59 * _t59 * 2.0f - (_t63 + _t58 * _t58 * 2.0f + _t35 * _t64 * 2.0f + _t65 - _t66 * _t37 * 2.0f - (_t67 + _t12) * _t33 * 2.0f)) * 0.5f)) * _t60 * 2.0f - _t71 * _t55 * 2.0f - _t74 * _t48 * 2.0f) * 0.5f) + _t60;
+        const float _t76 = _t42 * _t42 * 2.0f;
+        const float _t77 = _t31 * ((_t11 + _t10 * 6.0f + _t43 * _t18 * 6.0f) * _t17 * 0.5f);
+        const float _t78 = _t31 * ((_t43 * _t28 - _t41 * _t18 * 2.0f) * _t17);
+        const float _t79 = _t40 * _t53 * 2.0f;
+        const float _t80 = _t31 * ((_t49 * _t18 + _t41 * _t28 * 2.0f) * _t17);
+        const float _t81 = _t31 * (_t46 * (_t54 * _t47 * 2.0f - (_t45 * _t42 * 2.0f + (_t78 * _t37 * 2.0f + 2.0f * (_t51 * _t42)) - _t68 * _t33 * 2.0f - _t79 - _t80 * _t35 * 2.0f)) * 0.5f) - _t42;
+        const float _t82 = _t31 * (0.5f * (_t62 * (_t48 * (_t31 * ((_t47 * _t47 * 2.0f - (_t76 + (_t72 * _t33 * 2.0f + _t63 + _t45 * _t45 * 2.0f) - (_t77 + _t9) * _t37 * 2.0f - _t78 * _t35 * 2.0f)) * _t46 * 0.5f) - _t45) * 2.0f + _t81 * _t55 * 2.0f + _t74 * _t60 * 2.0f))) - _t48;
+        const float _t83 = _t31 * ((_t49 * _t28 * 6.0f - (_t26 * 6.0f + _t27)) * _t17 * 0.5f);
+        const float _t84 = _t55 + _t31 * (_t62 * ((_t51 + _t31 * (0.5f * ((_t33 * _t69 * 2.0f + _t51 * _t51 * 2.0f + _t80 * _t37 * 2.0f + _t76 + _t65 - (_t14 - _t83) * _t35 * 2.0f - _t54 * _t54 * 2.0f) * _t46))) * _t55 * 2.0f - _t81 * _t48 * 2.0f - _t71 * _t60 * 2.0f) * 0.5f);
+        const float _t85 = _t7 * 0.333333343f;
+        const float _t86 = _t28 * _t85;
+        const float _t87 = _t14 + _t86;
+        const float _t88 = _t18 * _t85;
+        const float _t89 = _t9 + _t88;
+        const float _t90 = _t23 * _t85;
+        const float _t91 = _t90 + _t12;
+        const float _t92 = sqrtf(_t87 * _t87 + _t89 * _t89 + _t91 * _t91);
+        const float _t93 = 1.0f / _t92;
+        const float _t94 = _t52 * _t85;
+        const float _t95 = _t41 * _t85;
+        const float _t96 = _t49 * _t85;
+        const float _t97 = 0.5f * (_t93 * (_t91 * _t94 * 2.0f + _t95 * _t89 * 2.0f - (_t1 - _t96) * _t87 * 2.0f)) * _t85 - _t87;
+        const float _t98 = _t43 * _t85;
+        const float _t99 = _t85 * _t39;
+        const float _t100 = _t93 * ((_t98 + _t3) * _t89 * 2.0f - _t95 * _t87 * 2.0f - _t91 * _t99 * 2.0f) * 0.5f * _t85 + _t89;
+        const float _t101 = _t56 * _t85;
+        const float _t102 = _t91 + (_t91 * (_t101 + _t5) * 2.0f - _t94 * _t87 * 2.0f - _t89 * _t99 * 2.0f) * _t93 * 0.5f * _t85;
+        const float _t103 = sqrtf(_t20 * _t20 + _t25 * _t25 + _t30 * _t30) * 2.0f + 2.66666675f * (_t38 + sqrtf(_t75 * _t75 + _t82 * _t82 + _t84 * _t84) + _t61) - 4.5f * (_t92 + sqrtf(_t97 * _t97 + _t100 * _t100 + _t102 * _t102));
+        const float _t104 = _t19 - _t9;
+        const float _t105 = _t14 - _t29;
+        const float _t106 = _t24 - _t12;
+        const float _t107 = _t9 - _t36;
+        const float _t108 = _t32 - _t12;
+        const float _t109 = _t14 - _t34;
+        const float _t110 = sqrtf(_t107 * _t107 + (_t108 * _t108 + _t109 * _t109));
+        const float _t111 = 1.0f / _t110;
+        const float _t112 = _t3 - _t44;
+        const float _t113 = _t111 * (_t107 * _t112 * 2.0f + _t109 * _t42 * 2.0f - _t108 * _t40 * 2.0f) * 0.5f;
+        const float _t114 = _t107 - _t31 * _t113;
+        const float _t115 = _t57 - _t5;
+        const float _t116 = (_t40 * _t107 * 2.0f + (_t109 * _t53 * 2.0f + _t108 * _t115 * 2.0f)) * _t111 * 0.5f;
+        const float _t117 = _t40 + _t31 * (_t111 * (_t109 * _t68 * 2.0f + (_t72 * _t107 * 2.0f + _t40 * _t115 * 2.0f) + _t108 * _t66 * 2.0f - _t73 - 2.0f * (_t40 * _t112) + _t116 * _t113 * 2.0f) * 0.5f);
+        const float _t118 = _t108 + _t31 * _t116;
+        const float _t119 = _t1 + _t50;
+        const float _t120 = _t111 * (_t107 * _t42 * 2.0f + _t109 * _t119 * 2.0f - _t108 * _t53 * 2.0f) * 0.5f;
+        const float _t121 = _t109 - _t31 * _t120;
+        const float _t122 = _t31 * ((_t78 * _t107 * 2.0f + (_t79 + (_t108 * _t68 * 2.0f + (_t42 * _t119 * 2.0f + 2.0f * (_t42 * _t112)))) - _t109 * _t80 * 2.0f - _t120 * _t113 * 2.0f) * _t111 * 0.5f) - _t42;
+        const float _t123 = sqrtf(_t114 * _t114 + _t118 * _t118 + _t121 * _t121);
+        const float _t124 = 1.0f / _t123;
+        const float _t125 = _t114 + _t31 * ((_t117 * _t118 * 2.0f + _t121 * _t122 * 2.0f - _t114 * (_t112 + _t31 * ((_t113 * _t113 * 2.0f - (_t107 * (_t77 - _t9) * 2.0f + (_t112 * _t112 * 2.0f + _t63 + _t76 + _t78 * _t109 * 2.0f) + _t108 * _t72 * 2.0f)) * _t111 * 0.5f)) * 2.0f) * _t124 * 0.5f);
+        const float _t126 = _t31 * (_t111 * (_t53 * _t115 * 2.0f + (_t68 * _t107 * 2.0f + _t109 * _t69 * 2.0f) - _t108 * _t64 * 2.0f - _t53 * _t119 * 2.0f - _t70 + _t120 * _t116 * 2.0f) * 0.5f) + _t53;
+        const float _t127 = _t121 + _t31 * ((_t126 * _t118 * 2.0f + _t114 * _t122 * 2.0f - _t121 * (_t31 * (0.5f * (_t111 * (_t120 * _t120 * 2.0f + (_t80 * _t107 * 2.0f + (_t14 + _t83) * _t109 * 2.0f - _t108 * _t69 * 2.0f - _t76 - _t119 * _t119 * 2.0f - _t65)))) + _t119) * 2.0f) * _t124 * 0.5f);
+        const float _t128 = _t118 - _t31 * (_t124 * (_t118 * (_t31 * (_t111 * (_t109 * _t64 * 2.0f + _t108 * (_t67 - _t12) * 2.0f - _t63 - _t115 * _t115 * 2.0f - _t107 * _t66 * 2.0f - _t65 + _t116 * _t116 * 2.0f) * 0.5f) - _t115) * 2.0f - _t114 * _t117 * 2.0f - 2.0f * (_t126 * _t121)) * 0.5f);
+        const float _t129 = _t14 - _t86;
+        const float _t130 = _t9 - _t88;
+        const float _t131 = _t90 - _t12;
+        const float _t132 = sqrtf(_t129 * _t129 + _t130 * _t130 + _t131 * _t131);
+        const float _t133 = 1.0f / _t132;
+        const float _t134 = _t129 - _t85 * ((_t130 * _t95 * 2.0f + _t129 * (_t1 + _t96) * 2.0f - _t94 * _t131 * 2.0f) * _t133 * 0.5f);
+        const float _t135 = _t131 + _t85 * (_t133 * (_t130 * _t99 * 2.0f + (_t131 * (_t101 - _t5) * 2.0f + _t129 * _t94 * 2.0f)) * 0.5f);
+        const float _t136 = _t85 * ((_t130 * (_t98 - _t3) * 2.0f + _t131 * _t99 * 2.0f - _t129 * _t95 * 2.0f) * _t133 * 0.5f) + _t130;
+        const float _t137 = sqrtf(_t104 * _t104 + (_t105 * _t105 + _t106 * _t106)) * 2.0f + 2.66666675f * (sqrtf(_t125 * _t125 + _t127 * _t127 + _t128 * _t128) + _t123 + _t110) - 4.5f * (_t132 + sqrtf(_t134 * _t134 + _t135 * _t135 + _t136 * _t136));
+        out[i] = (_t6 - ((fabsf(_t103) <= 1.73205256f) ? _t103 : ((_t103 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t7) * (_t7 * ((fabsf(_t137) <= 1.73205256f) ? _t137 : ((_t137 > 0.0f) ? 1.73205256f : (-1.73205256f))) + _t6);
+    }
+    for (i = 0; i < n; ++i) {
+        if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o4_shellf(x[i], y[i], z[i], t[i]);
+    }
 }
 
 

@@ -88,23 +88,34 @@ class FunctionBuilder {
   }
 
   // grad phi = grad F - h grad G, or grad F where the clamp is active (G is constant there).
+  // Where that gradient is not a finite, positive length (derivatives of |grad F| are 0/0 at
+  // critical points of F) the normal falls back to grad F / |grad F|, and to 0 where that vanishes.
   std::vector<NodeId> unit_normal(NodeId h_cell) {
     NodeId h = natural_distance(h_cell);
     NodeId inside = inside_bound(chain_sum(model_.weighted_norms, h));
-    std::vector<NodeId> gradient;
-    std::vector<NodeId> squares;
+    std::vector<NodeId> gradient, field_squares, squares;
     for (int i = 0; i < model_.dims; ++i) {
       NodeId g_i = chain_sum(model_.weighted_norms_gradient[static_cast<size_t>(i)], h);
       NodeId full = program_.sub(field_gradient(i), program_.mul(h, g_i));
       gradient.push_back(program_.select(inside, full, field_gradient(i)));
       squares.push_back(program_.mul(gradient.back(), gradient.back()));
+      field_squares.push_back(program_.mul(field_gradient(i), field_gradient(i)));
     }
+    NodeId zero = program_.constant(0);
     NodeId length2 = program_.sum(squares);
-    NodeId inverse = program_.select(program_.greater(length2, program_.constant(0)),
-                                     program_.div(program_.constant(1), program_.sqrt(length2)),
-                                     program_.constant(0));
-    for (auto& g : gradient) g = program_.mul(g, inverse);
-    return gradient;
+    NodeId field_length2 = program_.sum(field_squares);
+    NodeId field_inverse = program_.select(program_.greater(field_length2, zero),
+                                           program_.div(program_.constant(1), program_.sqrt(field_length2)), zero);
+    NodeId inverse = program_.div(program_.constant(1), program_.sqrt(length2));
+    NodeId positive = program_.greater(length2, zero);                   // false for NaN too
+    NodeId bounded = program_.less_eq(length2, program_.constant(1e30));  // false for inf and NaN
+    std::vector<NodeId> normal;
+    for (int i = 0; i < model_.dims; ++i) {
+      NodeId fallback = program_.mul(field_gradient(i), field_inverse);
+      NodeId unit = program_.mul(gradient[static_cast<size_t>(i)], inverse);
+      normal.push_back(program_.select(positive, program_.select(bounded, unit, fallback), fallback));
+    }
+    return normal;
   }
 
  private:
