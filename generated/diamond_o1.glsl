@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 20
     - offset: 47
     - shell: 50
-    - normal: 113
+    - normal: 101
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":47,"shell":50,"normal":113}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":47,"shell":50,"normal":101}} */
 #ifndef OFFSETGEN_DIAMOND_O1_GLSL
 #define OFFSETGEN_DIAMOND_O1_GLSL
 
@@ -109,7 +109,7 @@ highp float diamond_o1_shell(highp vec3 p, highp float t)
     return (_t21 + _t22) * (_t22 - _t21);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 113.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 101.
 highp vec3 diamond_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -136,28 +136,28 @@ highp vec3 diamond_o1_normal(highp vec3 p, highp float h)
     highp float _t21 = sqrt(_t20);
     bool _t22 = abs(_t21) <= 1.73205256;
     highp float _t23 = 6.28318548 * h;
-    highp float _t24 = 1.0 / _t21;
-    highp float _t25 = _t10 * _t15;
-    highp float _t26 = _t13 * _t6;
-    highp float _t27 = _t9 * _t6;
-    highp float _t28 = _t4 * _t10;
-    highp float _t29 = _t25 + _t26 - _t27 - _t28;
-    highp float _t30 = _t25 + _t27;
-    highp float _t31 = _t30 - _t28 - _t26;
-    highp float _t32 = _t28 + _t30 + _t26;
-    highp float _t33 = (_t22) ? _t18 - _t23 * (_t24 * (_t19 * _t29 * 2.0 + _t31 * _t17 * 2.0 - _t18 * _t32 * 2.0) * 0.5) : _t18;
-    highp float _t34 = _t25 + _t28 - _t27 - _t26;
-    highp float _t35 = (_t22) ? _t19 - _t23 * (_t24 * (_t29 * _t18 * 2.0 + _t34 * _t17 * 2.0 - _t19 * _t32 * 2.0) * 0.5) : _t19;
-    highp float _t36 = (_t22) ? _t17 - _t23 * (_t24 * (_t31 * _t18 * 2.0 + _t19 * _t34 * 2.0 - _t32 * _t17 * 2.0) * 0.5) : _t17;
+    highp float _t24 = _t10 * _t15;
+    highp float _t25 = _t13 * _t6;
+    highp float _t26 = _t9 * _t6;
+    highp float _t27 = _t4 * _t10;
+    highp float _t28 = _t24 + _t25 - _t26 - _t27;
+    highp float _t29 = _t24 + _t27 - _t26 - _t25;
+    highp float _t30 = _t24 + _t26;
+    highp float _t31 = _t27 + _t30 + _t25;
+    highp float _t32 = 1.0 / _t21;
+    highp float _t33 = (_t22) ? _t19 - _t23 * ((_t28 * _t18 + _t29 * _t17 - _t19 * _t31) * _t32) : _t19;
+    highp float _t34 = _t30 - _t27 - _t25;
+    highp float _t35 = (_t22) ? _t17 - _t23 * (_t32 * (_t19 * _t29 + _t34 * _t18 - _t31 * _t17)) : _t17;
+    highp float _t36 = (_t22) ? _t18 - _t23 * (_t32 * (_t34 * _t17 + _t19 * _t28 - _t18 * _t31)) : _t18;
     highp float _t37 = _t33 * _t33 + _t35 * _t35 + _t36 * _t36;
     bool _t38 = _t37 > 0.0;
     bool _t39 = _t37 <= 1.00000002e+30;
     highp float _t40 = 1.0 / sqrt(_t37);
-    highp float _t41 = (_t20 > 0.0) ? _t24 : 0.0;
+    highp float _t41 = (_t20 > 0.0) ? _t32 : 0.0;
     highp float _t42 = _t18 * _t41;
     highp float _t43 = _t19 * _t41;
     highp float _t44 = _t41 * _t17;
-    return vec3((_t38) ? ((_t39) ? _t40 * _t33 : _t42) : _t42, (_t38) ? ((_t39) ? _t40 * _t35 : _t43) : _t43, (_t38) ? ((_t39) ? _t36 * _t40 : _t44) : _t44);
+    return vec3((_t38) ? ((_t39) ? _t40 * _t36 : _t42) : _t42, (_t38) ? ((_t39) ? _t40 * _t33 : _t43) : _t43, (_t38) ? ((_t39) ? _t40 * _t35 : _t44) : _t44);
 }
 
 

@@ -42,9 +42,9 @@
  *   field    20
  *   offset   47
  *   shell    50
- *   normal   113
+ *   normal   101
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":47,"shell":50,"normal":113}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":47,"shell":50,"normal":101}} */
 #ifndef OFFSETGEN_DIAMOND_O1_H
 #define OFFSETGEN_DIAMOND_O1_H
 
@@ -129,7 +129,7 @@ static inline double diamond_o1_shell(double x, double y, double z, double t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 113
+ * Total ops: 101
  */
 static inline void diamond_o1_normal(double x, double y, double z, double h, double n[3])
 {
@@ -157,30 +157,30 @@ static inline void diamond_o1_normal(double x, double y, double z, double h, dou
     const double _t21 = sqrt(_t20);
     const int _t22 = fabs(_t21) <= 1.7320525396196846;
     const double _t23 = 6.2831853071795862 * h;
-    const double _t24 = 1.0 / _t21;
-    const double _t25 = _t10 * _t15;
-    const double _t26 = _t13 * _t6;
-    const double _t27 = _t9 * _t6;
-    const double _t28 = _t4 * _t10;
-    const double _t29 = _t25 + _t26 - _t27 - _t28;
-    const double _t30 = _t25 + _t27;
-    const double _t31 = _t30 - _t28 - _t26;
-    const double _t32 = _t28 + _t30 + _t26;
-    const double _t33 = (_t22) ? _t18 - _t23 * (_t24 * (_t19 * _t29 * 2.0 + _t31 * _t17 * 2.0 - _t18 * _t32 * 2.0) * 0.5) : _t18;
-    const double _t34 = _t25 + _t28 - _t27 - _t26;
-    const double _t35 = (_t22) ? _t19 - _t23 * (_t24 * (_t29 * _t18 * 2.0 + _t34 * _t17 * 2.0 - _t19 * _t32 * 2.0) * 0.5) : _t19;
-    const double _t36 = (_t22) ? _t17 - _t23 * (_t24 * (_t31 * _t18 * 2.0 + _t19 * _t34 * 2.0 - _t32 * _t17 * 2.0) * 0.5) : _t17;
+    const double _t24 = _t10 * _t15;
+    const double _t25 = _t13 * _t6;
+    const double _t26 = _t9 * _t6;
+    const double _t27 = _t4 * _t10;
+    const double _t28 = _t24 + _t25 - _t26 - _t27;
+    const double _t29 = _t24 + _t27 - _t26 - _t25;
+    const double _t30 = _t24 + _t26;
+    const double _t31 = _t27 + _t30 + _t25;
+    const double _t32 = 1.0 / _t21;
+    const double _t33 = (_t22) ? _t19 - _t23 * ((_t28 * _t18 + _t29 * _t17 - _t19 * _t31) * _t32) : _t19;
+    const double _t34 = _t30 - _t27 - _t25;
+    const double _t35 = (_t22) ? _t17 - _t23 * (_t32 * (_t19 * _t29 + _t34 * _t18 - _t31 * _t17)) : _t17;
+    const double _t36 = (_t22) ? _t18 - _t23 * (_t32 * (_t34 * _t17 + _t19 * _t28 - _t18 * _t31)) : _t18;
     const double _t37 = _t33 * _t33 + _t35 * _t35 + _t36 * _t36;
     const int _t38 = _t37 > 0.0;
     const int _t39 = _t37 <= 1.0e+30;
     const double _t40 = 1.0 / sqrt(_t37);
-    const double _t41 = (_t20 > 0.0) ? _t24 : 0.0;
+    const double _t41 = (_t20 > 0.0) ? _t32 : 0.0;
     const double _t42 = _t18 * _t41;
     const double _t43 = _t19 * _t41;
     const double _t44 = _t41 * _t17;
-    n[0] = (_t38) ? ((_t39) ? _t40 * _t33 : _t42) : _t42;
-    n[1] = (_t38) ? ((_t39) ? _t40 * _t35 : _t43) : _t43;
-    n[2] = (_t38) ? ((_t39) ? _t36 * _t40 : _t44) : _t44;
+    n[0] = (_t38) ? ((_t39) ? _t40 * _t36 : _t42) : _t42;
+    n[1] = (_t38) ? ((_t39) ? _t40 * _t33 : _t43) : _t43;
+    n[2] = (_t38) ? ((_t39) ? _t40 * _t35 : _t44) : _t44;
 }
 
 /* F, the field; the surface is F = 0.
@@ -261,7 +261,7 @@ static inline float diamond_o1_shellf(float x, float y, float z, float t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 113
+ * Total ops: 101
  */
 static inline void diamond_o1_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -289,30 +289,30 @@ static inline void diamond_o1_normalf(float x, float y, float z, float h, float 
     const float _t21 = sqrtf(_t20);
     const int _t22 = fabsf(_t21) <= 1.73205256f;
     const float _t23 = 6.28318548f * h;
-    const float _t24 = 1.0f / _t21;
-    const float _t25 = _t10 * _t15;
-    const float _t26 = _t13 * _t6;
-    const float _t27 = _t9 * _t6;
-    const float _t28 = _t4 * _t10;
-    const float _t29 = _t25 + _t26 - _t27 - _t28;
-    const float _t30 = _t25 + _t27;
-    const float _t31 = _t30 - _t28 - _t26;
-    const float _t32 = _t28 + _t30 + _t26;
-    const float _t33 = (_t22) ? _t18 - _t23 * (_t24 * (_t19 * _t29 * 2.0f + _t31 * _t17 * 2.0f - _t18 * _t32 * 2.0f) * 0.5f) : _t18;
-    const float _t34 = _t25 + _t28 - _t27 - _t26;
-    const float _t35 = (_t22) ? _t19 - _t23 * (_t24 * (_t29 * _t18 * 2.0f + _t34 * _t17 * 2.0f - _t19 * _t32 * 2.0f) * 0.5f) : _t19;
-    const float _t36 = (_t22) ? _t17 - _t23 * (_t24 * (_t31 * _t18 * 2.0f + _t19 * _t34 * 2.0f - _t32 * _t17 * 2.0f) * 0.5f) : _t17;
+    const float _t24 = _t10 * _t15;
+    const float _t25 = _t13 * _t6;
+    const float _t26 = _t9 * _t6;
+    const float _t27 = _t4 * _t10;
+    const float _t28 = _t24 + _t25 - _t26 - _t27;
+    const float _t29 = _t24 + _t27 - _t26 - _t25;
+    const float _t30 = _t24 + _t26;
+    const float _t31 = _t27 + _t30 + _t25;
+    const float _t32 = 1.0f / _t21;
+    const float _t33 = (_t22) ? _t19 - _t23 * ((_t28 * _t18 + _t29 * _t17 - _t19 * _t31) * _t32) : _t19;
+    const float _t34 = _t30 - _t27 - _t25;
+    const float _t35 = (_t22) ? _t17 - _t23 * (_t32 * (_t19 * _t29 + _t34 * _t18 - _t31 * _t17)) : _t17;
+    const float _t36 = (_t22) ? _t18 - _t23 * (_t32 * (_t34 * _t17 + _t19 * _t28 - _t18 * _t31)) : _t18;
     const float _t37 = _t33 * _t33 + _t35 * _t35 + _t36 * _t36;
     const int _t38 = _t37 > 0.0f;
     const int _t39 = _t37 <= 1.00000002e+30f;
     const float _t40 = 1.0f / sqrtf(_t37);
-    const float _t41 = (_t20 > 0.0f) ? _t24 : 0.0f;
+    const float _t41 = (_t20 > 0.0f) ? _t32 : 0.0f;
     const float _t42 = _t18 * _t41;
     const float _t43 = _t19 * _t41;
     const float _t44 = _t41 * _t17;
-    n[0] = (_t38) ? ((_t39) ? _t40 * _t33 : _t42) : _t42;
-    n[1] = (_t38) ? ((_t39) ? _t40 * _t35 : _t43) : _t43;
-    n[2] = (_t38) ? ((_t39) ? _t36 * _t40 : _t44) : _t44;
+    n[0] = (_t38) ? ((_t39) ? _t40 * _t36 : _t42) : _t42;
+    n[1] = (_t38) ? ((_t39) ? _t40 * _t33 : _t43) : _t43;
+    n[2] = (_t38) ? ((_t39) ? _t40 * _t35 : _t44) : _t44;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------

@@ -40,11 +40,11 @@
  *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    20
- *   offset   99
- *   shell    117
- *   normal   266
+ *   offset   87
+ *   shell    105
+ *   normal   211
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":99,"shell":117,"normal":266}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":87,"shell":105,"normal":211}} */
 #ifndef OFFSETGEN_DIAMOND_O2_H
 #define OFFSETGEN_DIAMOND_O2_H
 
@@ -69,9 +69,53 @@ static inline double diamond_o2_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 99
+ * Total ops: 87
  */
 static inline double diamond_o2_offset(double x, double y, double z, double h)
+{
+    const double _t0 = z * 6.2831853071795862;
+    const double _t1 = cos(_t0);
+    const double _t2 = 6.2831853071795862 * y;
+    const double _t3 = cos(_t2);
+    const double _t4 = _t1 * _t3;
+    const double _t5 = 6.2831853071795862 * x;
+    const double _t6 = sin(_t5);
+    const double _t7 = _t4 * _t6;
+    const double _t8 = sin(_t0);
+    const double _t9 = sin(_t2);
+    const double _t10 = _t8 * _t9;
+    const double _t11 = _t6 * _t10;
+    const double _t12 = _t1 * _t9;
+    const double _t13 = cos(_t5);
+    const double _t14 = _t12 * _t13;
+    const double _t15 = _t11 + _t14;
+    const double _t16 = _t8 * _t3;
+    const double _t17 = _t16 * _t13;
+    const double _t18 = _t7 + _t15 + _t17;
+    const double _t19 = 6.2831853071795862 * h;
+    const double _t20 = _t11 + _t17 - _t14 - _t7;
+    const double _t21 = _t4 * _t13;
+    const double _t22 = _t13 * _t10;
+    const double _t23 = _t16 * _t6;
+    const double _t24 = _t12 * _t6;
+    const double _t25 = _t21 + _t22 - _t23 - _t24;
+    const double _t26 = _t11 + _t7 - _t14 - _t17;
+    const double _t27 = _t21 + _t24 - _t23 - _t22;
+    const double _t28 = _t21 + _t23 - _t24 - _t22;
+    const double _t29 = 1.0 / sqrt(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+    const double _t30 = _t19 * 0.5;
+    const double _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
+    const double _t32 = _t15 - _t7 - _t17;
+    const double _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
+    const double _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
+    const double _t35 = sqrt(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
+    return _t18 - _t19 * ((fabs(_t35) <= 1.7320525396196846) ? _t35 : ((_t35 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Total ops: 105
+ */
+static inline double diamond_o2_shell(double x, double y, double z, double t)
 {
     const double _t0 = z * 6.2831853071795862;
     const double _t1 = cos(_t0);
@@ -97,154 +141,107 @@ static inline double diamond_o2_offset(double x, double y, double z, double h)
     const double _t21 = _t12 * _t6;
     const double _t22 = _t13 * _t10;
     const double _t23 = _t19 + _t20 - _t21 - _t22;
-    const double _t24 = _t19 + _t21 - _t20 - _t22;
-    const double _t25 = _t19 + _t22 - _t20 - _t21;
-    const double _t26 = 1.0 / sqrt(_t24 * _t24 + _t25 * _t25 + _t23 * _t23);
-    const double _t27 = _t11 + _t17 - _t14 - _t7;
+    const double _t24 = 6.2831853071795862 * (t * 0.5);
+    const double _t25 = _t24 * 0.5;
+    const double _t26 = _t11 + _t17 - _t14 - _t7;
+    const double _t27 = _t19 + _t22 - _t20 - _t21;
     const double _t28 = _t11 + _t7 - _t14 - _t17;
-    const double _t29 = 6.2831853071795862 * h;
-    const double _t30 = _t29 * 0.5;
-    const double _t31 = _t23 - _t26 * (_t27 * _t25 * 2.0 + _t28 * _t24 * 2.0 - _t23 * _t18 * 2.0) * 0.5 * _t30;
-    const double _t32 = _t15 - _t7 - _t17;
-    const double _t33 = _t26 * (_t23 * _t27 * 2.0 + _t32 * _t24 * 2.0 - _t25 * _t18 * 2.0) * 0.5 * _t30 - _t25;
-    const double _t34 = _t26 * (_t32 * _t25 * 2.0 + _t23 * _t28 * 2.0 - _t18 * _t24 * 2.0) * 0.5 * _t30 - _t24;
-    const double _t35 = sqrt(_t31 * _t31 + (_t33 * _t33 + _t34 * _t34));
-    return _t18 - ((fabs(_t35) <= 1.7320525396196846) ? _t35 : ((_t35 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t29;
-}
-
-/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 117
- */
-static inline double diamond_o2_shell(double x, double y, double z, double t)
-{
-    const double _t0 = z * 6.2831853071795862;
-    const double _t1 = cos(_t0);
-    const double _t2 = 6.2831853071795862 * y;
-    const double _t3 = cos(_t2);
-    const double _t4 = _t1 * _t3;
-    const double _t5 = 6.2831853071795862 * x;
-    const double _t6 = sin(_t5);
-    const double _t7 = _t4 * _t6;
-    const double _t8 = sin(_t0);
-    const double _t9 = sin(_t2);
-    const double _t10 = _t8 * _t9;
-    const double _t11 = _t6 * _t10;
-    const double _t12 = _t1 * _t9;
-    const double _t13 = cos(_t5);
-    const double _t14 = _t12 * _t13;
-    const double _t15 = _t11 + _t14;
-    const double _t16 = _t8 * _t3;
-    const double _t17 = _t16 * _t13;
-    const double _t18 = _t7 + _t15 + _t17;
-    const double _t19 = 6.2831853071795862 * (t * 0.5);
-    const double _t20 = _t4 * _t13;
-    const double _t21 = _t12 * _t6;
-    const double _t22 = _t16 * _t6;
-    const double _t23 = _t13 * _t10;
-    const double _t24 = _t20 + _t21 - _t22 - _t23;
-    const double _t25 = _t20 + _t23 - _t22 - _t21;
-    const double _t26 = _t20 + _t22 - _t21 - _t23;
-    const double _t27 = 1.0 / sqrt(_t24 * _t24 + _t25 * _t25 + _t26 * _t26);
-    const double _t28 = _t15 - _t7 - _t17;
-    const double _t29 = _t11 + _t7 - _t14 - _t17;
-    const double _t30 = _t19 * 0.5;
-    const double _t31 = _t27 * (_t28 * _t25 * 2.0 + _t26 * _t29 * 2.0 - _t18 * _t24 * 2.0) * 0.5 * _t30;
-    const double _t32 = _t31 - _t24;
-    const double _t33 = _t11 + _t17 - _t14 - _t7;
-    const double _t34 = _t27 * (_t26 * _t33 * 2.0 + _t28 * _t24 * 2.0 - _t25 * _t18 * 2.0) * 0.5 * _t30;
-    const double _t35 = _t25 - _t34;
-    const double _t36 = _t30 * (_t27 * (_t33 * _t25 * 2.0 + _t29 * _t24 * 2.0 - _t26 * _t18 * 2.0) * 0.5);
-    const double _t37 = _t26 - _t36;
+    const double _t29 = _t19 + _t21 - _t20 - _t22;
+    const double _t30 = 1.0 / sqrt(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
+    const double _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
+    const double _t32 = _t23 + _t31;
+    const double _t33 = _t15 - _t7 - _t17;
+    const double _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
+    const double _t35 = _t34 + _t27;
+    const double _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
+    const double _t37 = _t36 + _t29;
     const double _t38 = sqrt(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-    const double _t39 = _t26 + _t36;
-    const double _t40 = _t25 + _t34;
-    const double _t41 = _t31 + _t24;
+    const double _t39 = _t34 - _t27;
+    const double _t40 = _t23 - _t31;
+    const double _t41 = _t36 - _t29;
     const double _t42 = sqrt(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-    return (_t18 - _t19 * ((fabs(_t38) <= 1.7320525396196846) ? _t38 : ((_t38 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)))) * (((fabs(_t42) <= 1.7320525396196846) ? _t42 : ((_t42 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t19 + _t18);
+    return (_t18 + ((fabs(_t38) <= 1.7320525396196846) ? _t38 : ((_t38 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t24) * (_t18 - ((fabs(_t42) <= 1.7320525396196846) ? _t42 : ((_t42 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t24);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 266
+ * Total ops: 211
  */
 static inline void diamond_o2_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = z * 6.2831853071795862;
-    const double _t1 = cos(_t0);
-    const double _t2 = 6.2831853071795862 * y;
-    const double _t3 = cos(_t2);
-    const double _t4 = _t1 * _t3;
-    const double _t5 = 6.2831853071795862 * x;
-    const double _t6 = cos(_t5);
-    const double _t7 = _t4 * _t6;
-    const double _t8 = sin(_t0);
-    const double _t9 = _t8 * _t3;
-    const double _t10 = sin(_t5);
+    const double _t0 = 6.2831853071795862 * x;
+    const double _t1 = sin(_t0);
+    const double _t2 = z * 6.2831853071795862;
+    const double _t3 = sin(_t2);
+    const double _t4 = 6.2831853071795862 * y;
+    const double _t5 = sin(_t4);
+    const double _t6 = _t3 * _t5;
+    const double _t7 = _t1 * _t6;
+    const double _t8 = cos(_t4);
+    const double _t9 = _t3 * _t8;
+    const double _t10 = cos(_t0);
     const double _t11 = _t9 * _t10;
-    const double _t12 = _t7 + _t11;
-    const double _t13 = sin(_t2);
-    const double _t14 = _t1 * _t13;
-    const double _t15 = _t14 * _t10;
-    const double _t16 = _t8 * _t13;
-    const double _t17 = _t6 * _t16;
-    const double _t18 = _t12 - _t15 - _t17;
-    const double _t19 = _t7 + _t15 - _t11 - _t17;
-    const double _t20 = _t19 * _t19;
-    const double _t21 = _t7 + _t17 - _t11 - _t15;
-    const double _t22 = _t21 * _t21;
-    const double _t23 = _t18 * _t18;
-    const double _t24 = _t20 + _t22 + _t23;
-    const double _t25 = 1.0 / sqrt(_t24);
-    const double _t26 = _t10 * _t16;
-    const double _t27 = _t9 * _t6;
-    const double _t28 = _t14 * _t6;
-    const double _t29 = _t4 * _t10;
-    const double _t30 = _t26 + _t27 - _t28 - _t29;
-    const double _t31 = _t26 + _t29 - _t28 - _t27;
-    const double _t32 = _t26 + _t28;
-    const double _t33 = _t29 + _t32 + _t27;
-    const double _t34 = _t25 * (_t30 * _t21 * 2.0 + _t31 * _t19 * 2.0 - _t18 * _t33 * 2.0) * 0.5;
+    const double _t12 = cos(_t2);
+    const double _t13 = _t12 * _t5;
+    const double _t14 = _t13 * _t10;
+    const double _t15 = _t12 * _t8;
+    const double _t16 = _t15 * _t1;
+    const double _t17 = _t7 + _t11 - _t14 - _t16;
+    const double _t18 = _t15 * _t10;
+    const double _t19 = _t10 * _t6;
+    const double _t20 = _t9 * _t1;
+    const double _t21 = _t13 * _t1;
+    const double _t22 = _t18 + _t19 - _t20 - _t21;
+    const double _t23 = _t7 + _t16 - _t14 - _t11;
+    const double _t24 = _t18 + _t21 - _t20 - _t19;
+    const double _t25 = _t18 + _t20;
+    const double _t26 = _t25 - _t21 - _t19;
+    const double _t27 = _t7 + _t14;
+    const double _t28 = _t16 + _t27 + _t11;
+    const double _t29 = _t24 * _t24;
+    const double _t30 = _t22 * _t22;
+    const double _t31 = _t26 * _t26;
+    const double _t32 = _t29 + _t30 + _t31;
+    const double _t33 = 1.0 / sqrt(_t32);
+    const double _t34 = (_t17 * _t22 + _t23 * _t24 - _t26 * _t28) * _t33;
     const double _t35 = 6.2831853071795862 * h;
     const double _t36 = _t35 * 0.5;
-    const double _t37 = _t18 - _t34 * _t36;
-    const double _t38 = _t32 - _t29 - _t27;
-    const double _t39 = _t25 * (_t18 * _t30 * 2.0 + _t38 * _t19 * 2.0 - _t21 * _t33 * 2.0) * 0.5;
-    const double _t40 = _t39 * _t36 - _t21;
-    const double _t41 = _t25 * (_t38 * _t21 * 2.0 + _t18 * _t31 * 2.0 - _t33 * _t19 * 2.0) * 0.5;
-    const double _t42 = _t41 * _t36 - _t19;
-    const double _t43 = sqrt(_t37 * _t37 + (_t40 * _t40 + _t42 * _t42));
+    const double _t37 = _t34 * _t36 - _t26;
+    const double _t38 = _t27 - _t16 - _t11;
+    const double _t39 = _t33 * (_t26 * _t23 + _t38 * _t22 - _t28 * _t24);
+    const double _t40 = _t39 * _t36 - _t24;
+    const double _t41 = _t33 * (_t38 * _t24 + _t26 * _t17 - _t22 * _t28);
+    const double _t42 = _t22 - _t41 * _t36;
+    const double _t43 = sqrt(_t37 * _t37 + _t40 * _t40 + _t42 * _t42);
     const int _t44 = fabs(_t43) <= 1.7320525396196846;
     const double _t45 = 1.0 / _t43;
-    const double _t46 = _t15 + _t12 + _t17;
-    const double _t47 = _t18 * _t21 * 2.0;
-    const double _t48 = _t30 * _t33 * 2.0;
-    const double _t49 = _t30 + (2.0 * (_t39 * _t34) - (_t46 * _t19 * 2.0 + _t38 * _t31 * 2.0 - _t47 - _t47 - _t48 - _t48)) * _t25 * 0.5 * _t36;
-    const double _t50 = _t18 * _t19 * 2.0;
-    const double _t51 = _t31 * _t33 * 2.0;
-    const double _t52 = _t25 * (_t50 + _t50 + _t51 + _t51 - _t21 * _t46 * 2.0 - _t38 * _t30 * 2.0 + _t41 * _t34 * 2.0) * 0.5 * _t36 + _t31;
-    const double _t53 = _t30 * _t30 * 2.0;
-    const double _t54 = _t31 * _t31 * 2.0;
-    const double _t55 = _t33 * _t33 * 2.0;
-    const double _t56 = _t22 * 2.0;
-    const double _t57 = _t20 * 2.0;
-    const double _t58 = _t23 * 2.0;
-    const double _t59 = (_t44) ? _t35 * (_t45 * (_t40 * _t49 * 2.0 + 2.0 * (_t42 * _t52) + ((_t53 + _t54 + _t55 - _t56 - _t57 - _t58 - _t34 * _t34 * 2.0) * _t25 * 0.5 * _t36 + _t33) * _t37 * 2.0) * 0.5) + _t18 : _t18;
-    const double _t60 = _t38 * _t38 * 2.0;
-    const double _t61 = _t38 * _t33 * 2.0;
-    const double _t62 = _t21 * _t19 * 2.0;
-    const double _t63 = _t36 * (_t25 * (_t61 + _t61 + _t62 + _t62 - _t18 * _t46 * 2.0 - _t30 * _t31 * 2.0 + _t39 * _t41 * 2.0) * 0.5) + _t38;
-    const double _t64 = (_t44) ? _t21 - _t35 * (_t45 * (_t37 * _t49 * 2.0 + _t40 * (_t33 + _t25 * (_t60 + _t53 + _t55 - _t56 - _t57 - _t58 - _t39 * _t39 * 2.0) * 0.5 * _t36) * 2.0 - _t42 * _t63 * 2.0) * 0.5) : _t21;
-    const double _t65 = (_t44) ? _t19 - _t35 * (_t45 * (_t42 * (_t25 * (_t60 + _t54 + _t55 - _t56 - _t57 - _t58 - _t41 * _t41 * 2.0) * 0.5 * _t36 + _t33) * 2.0 + _t37 * _t52 * 2.0 - _t40 * _t63 * 2.0) * 0.5) : _t19;
-    const double _t66 = _t59 * _t59 + _t64 * _t64 + _t65 * _t65;
-    const int _t67 = _t66 > 0.0;
-    const int _t68 = _t66 <= 1.0e+30;
-    const double _t69 = 1.0 / sqrt(_t66);
-    const double _t70 = (_t24 > 0.0) ? _t25 : 0.0;
-    const double _t71 = _t21 * _t70;
-    const double _t72 = _t18 * _t70;
-    const double _t73 = _t70 * _t19;
-    n[0] = (_t67) ? ((_t68) ? _t69 * _t64 : _t71) : _t71;
-    n[1] = (_t67) ? ((_t68) ? _t59 * _t69 : _t72) : _t72;
-    n[2] = (_t67) ? ((_t68) ? _t69 * _t65 : _t73) : _t73;
+    const double _t46 = _t38 * _t38;
+    const double _t47 = _t28 * _t28;
+    const double _t48 = _t23 * _t23;
+    const double _t49 = _t22 * _t24;
+    const double _t50 = _t38 * _t28;
+    const double _t51 = _t21 + _t25 + _t19;
+    const double _t52 = _t38 + (_t49 + (_t50 + _t50 + _t49) - _t26 * _t51 - _t17 * _t23 + _t39 * _t41) * _t33 * _t36;
+    const double _t53 = _t26 * _t24;
+    const double _t54 = _t23 * _t28;
+    const double _t55 = _t33 * (_t39 * _t34 + (_t53 + _t53 + _t54 + _t54 - _t22 * _t51 - _t38 * _t17)) * _t36 + _t23;
+    const double _t56 = (_t44) ? _t24 - _t35 * (_t45 * ((_t28 - _t33 * (_t39 * _t39 - (_t46 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t40 + _t42 * _t52 - _t55 * _t37)) : _t24;
+    const double _t57 = _t26 * _t22;
+    const double _t58 = _t17 * _t28;
+    const double _t59 = _t33 * (_t38 * _t23 + _t51 * _t24 - _t57 - _t57 - _t58 - _t58 - _t41 * _t34) * _t36 - _t17;
+    const double _t60 = _t17 * _t17;
+    const double _t61 = (_t44) ? _t35 * (_t45 * (_t42 * _t59 + _t40 * _t55 - (_t28 - _t33 * (_t34 * _t34 - (_t60 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t37)) + _t26 : _t26;
+    const double _t62 = (_t44) ? _t35 * (_t45 * (_t40 * _t52 - (_t36 * (_t33 * (_t41 * _t41 - (_t47 + (_t46 + _t60) - _t29 - _t30 - _t31))) - _t28) * _t42 - _t59 * _t37)) + _t22 : _t22;
+    const double _t63 = _t56 * _t56 + (_t61 * _t61 + _t62 * _t62);
+    const int _t64 = _t63 > 0.0;
+    const int _t65 = _t63 <= 1.0e+30;
+    const double _t66 = 1.0 / sqrt(_t63);
+    const double _t67 = (_t32 > 0.0) ? _t33 : 0.0;
+    const double _t68 = _t22 * _t67;
+    const double _t69 = _t26 * _t67;
+    const double _t70 = _t67 * _t24;
+    n[0] = (_t64) ? ((_t65) ? _t62 * _t66 : _t68) : _t68;
+    n[1] = (_t64) ? ((_t65) ? _t61 * _t66 : _t69) : _t69;
+    n[2] = (_t64) ? ((_t65) ? _t56 * _t66 : _t70) : _t70;
 }
 
 /* F, the field; the surface is F = 0.
@@ -265,9 +262,53 @@ static inline float diamond_o2_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 99
+ * Total ops: 87
  */
 static inline float diamond_o2_offsetf(float x, float y, float z, float h)
+{
+    const float _t0 = z * 6.28318548f;
+    const float _t1 = cosf(_t0);
+    const float _t2 = 6.28318548f * y;
+    const float _t3 = cosf(_t2);
+    const float _t4 = _t1 * _t3;
+    const float _t5 = 6.28318548f * x;
+    const float _t6 = sinf(_t5);
+    const float _t7 = _t4 * _t6;
+    const float _t8 = sinf(_t0);
+    const float _t9 = sinf(_t2);
+    const float _t10 = _t8 * _t9;
+    const float _t11 = _t6 * _t10;
+    const float _t12 = _t1 * _t9;
+    const float _t13 = cosf(_t5);
+    const float _t14 = _t12 * _t13;
+    const float _t15 = _t11 + _t14;
+    const float _t16 = _t8 * _t3;
+    const float _t17 = _t16 * _t13;
+    const float _t18 = _t7 + _t15 + _t17;
+    const float _t19 = 6.28318548f * h;
+    const float _t20 = _t11 + _t17 - _t14 - _t7;
+    const float _t21 = _t4 * _t13;
+    const float _t22 = _t13 * _t10;
+    const float _t23 = _t16 * _t6;
+    const float _t24 = _t12 * _t6;
+    const float _t25 = _t21 + _t22 - _t23 - _t24;
+    const float _t26 = _t11 + _t7 - _t14 - _t17;
+    const float _t27 = _t21 + _t24 - _t23 - _t22;
+    const float _t28 = _t21 + _t23 - _t24 - _t22;
+    const float _t29 = 1.0f / sqrtf(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+    const float _t30 = _t19 * 0.5f;
+    const float _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
+    const float _t32 = _t15 - _t7 - _t17;
+    const float _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
+    const float _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
+    const float _t35 = sqrtf(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
+    return _t18 - _t19 * ((fabsf(_t35) <= 1.73205256f) ? _t35 : ((_t35 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Total ops: 105
+ */
+static inline float diamond_o2_shellf(float x, float y, float z, float t)
 {
     const float _t0 = z * 6.28318548f;
     const float _t1 = cosf(_t0);
@@ -293,154 +334,107 @@ static inline float diamond_o2_offsetf(float x, float y, float z, float h)
     const float _t21 = _t12 * _t6;
     const float _t22 = _t13 * _t10;
     const float _t23 = _t19 + _t20 - _t21 - _t22;
-    const float _t24 = _t19 + _t21 - _t20 - _t22;
-    const float _t25 = _t19 + _t22 - _t20 - _t21;
-    const float _t26 = 1.0f / sqrtf(_t24 * _t24 + _t25 * _t25 + _t23 * _t23);
-    const float _t27 = _t11 + _t17 - _t14 - _t7;
+    const float _t24 = 6.28318548f * (t * 0.5f);
+    const float _t25 = _t24 * 0.5f;
+    const float _t26 = _t11 + _t17 - _t14 - _t7;
+    const float _t27 = _t19 + _t22 - _t20 - _t21;
     const float _t28 = _t11 + _t7 - _t14 - _t17;
-    const float _t29 = 6.28318548f * h;
-    const float _t30 = _t29 * 0.5f;
-    const float _t31 = _t23 - _t26 * (_t27 * _t25 * 2.0f + _t28 * _t24 * 2.0f - _t23 * _t18 * 2.0f) * 0.5f * _t30;
-    const float _t32 = _t15 - _t7 - _t17;
-    const float _t33 = _t26 * (_t23 * _t27 * 2.0f + _t32 * _t24 * 2.0f - _t25 * _t18 * 2.0f) * 0.5f * _t30 - _t25;
-    const float _t34 = _t26 * (_t32 * _t25 * 2.0f + _t23 * _t28 * 2.0f - _t18 * _t24 * 2.0f) * 0.5f * _t30 - _t24;
-    const float _t35 = sqrtf(_t31 * _t31 + (_t33 * _t33 + _t34 * _t34));
-    return _t18 - ((fabsf(_t35) <= 1.73205256f) ? _t35 : ((_t35 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t29;
-}
-
-/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 117
- */
-static inline float diamond_o2_shellf(float x, float y, float z, float t)
-{
-    const float _t0 = z * 6.28318548f;
-    const float _t1 = cosf(_t0);
-    const float _t2 = 6.28318548f * y;
-    const float _t3 = cosf(_t2);
-    const float _t4 = _t1 * _t3;
-    const float _t5 = 6.28318548f * x;
-    const float _t6 = sinf(_t5);
-    const float _t7 = _t4 * _t6;
-    const float _t8 = sinf(_t0);
-    const float _t9 = sinf(_t2);
-    const float _t10 = _t8 * _t9;
-    const float _t11 = _t6 * _t10;
-    const float _t12 = _t1 * _t9;
-    const float _t13 = cosf(_t5);
-    const float _t14 = _t12 * _t13;
-    const float _t15 = _t11 + _t14;
-    const float _t16 = _t8 * _t3;
-    const float _t17 = _t16 * _t13;
-    const float _t18 = _t7 + _t15 + _t17;
-    const float _t19 = 6.28318548f * (t * 0.5f);
-    const float _t20 = _t4 * _t13;
-    const float _t21 = _t12 * _t6;
-    const float _t22 = _t16 * _t6;
-    const float _t23 = _t13 * _t10;
-    const float _t24 = _t20 + _t21 - _t22 - _t23;
-    const float _t25 = _t20 + _t23 - _t22 - _t21;
-    const float _t26 = _t20 + _t22 - _t21 - _t23;
-    const float _t27 = 1.0f / sqrtf(_t24 * _t24 + _t25 * _t25 + _t26 * _t26);
-    const float _t28 = _t15 - _t7 - _t17;
-    const float _t29 = _t11 + _t7 - _t14 - _t17;
-    const float _t30 = _t19 * 0.5f;
-    const float _t31 = _t27 * (_t28 * _t25 * 2.0f + _t26 * _t29 * 2.0f - _t18 * _t24 * 2.0f) * 0.5f * _t30;
-    const float _t32 = _t31 - _t24;
-    const float _t33 = _t11 + _t17 - _t14 - _t7;
-    const float _t34 = _t27 * (_t26 * _t33 * 2.0f + _t28 * _t24 * 2.0f - _t25 * _t18 * 2.0f) * 0.5f * _t30;
-    const float _t35 = _t25 - _t34;
-    const float _t36 = _t30 * (_t27 * (_t33 * _t25 * 2.0f + _t29 * _t24 * 2.0f - _t26 * _t18 * 2.0f) * 0.5f);
-    const float _t37 = _t26 - _t36;
+    const float _t29 = _t19 + _t21 - _t20 - _t22;
+    const float _t30 = 1.0f / sqrtf(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
+    const float _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
+    const float _t32 = _t23 + _t31;
+    const float _t33 = _t15 - _t7 - _t17;
+    const float _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
+    const float _t35 = _t34 + _t27;
+    const float _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
+    const float _t37 = _t36 + _t29;
     const float _t38 = sqrtf(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-    const float _t39 = _t26 + _t36;
-    const float _t40 = _t25 + _t34;
-    const float _t41 = _t31 + _t24;
+    const float _t39 = _t34 - _t27;
+    const float _t40 = _t23 - _t31;
+    const float _t41 = _t36 - _t29;
     const float _t42 = sqrtf(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-    return (_t18 - _t19 * ((fabsf(_t38) <= 1.73205256f) ? _t38 : ((_t38 > 0.0f) ? 1.73205256f : (-1.73205256f)))) * (((fabsf(_t42) <= 1.73205256f) ? _t42 : ((_t42 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t19 + _t18);
+    return (_t18 + ((fabsf(_t38) <= 1.73205256f) ? _t38 : ((_t38 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t24) * (_t18 - ((fabsf(_t42) <= 1.73205256f) ? _t42 : ((_t42 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t24);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 266
+ * Total ops: 211
  */
 static inline void diamond_o2_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = z * 6.28318548f;
-    const float _t1 = cosf(_t0);
-    const float _t2 = 6.28318548f * y;
-    const float _t3 = cosf(_t2);
-    const float _t4 = _t1 * _t3;
-    const float _t5 = 6.28318548f * x;
-    const float _t6 = cosf(_t5);
-    const float _t7 = _t4 * _t6;
-    const float _t8 = sinf(_t0);
-    const float _t9 = _t8 * _t3;
-    const float _t10 = sinf(_t5);
+    const float _t0 = 6.28318548f * x;
+    const float _t1 = sinf(_t0);
+    const float _t2 = z * 6.28318548f;
+    const float _t3 = sinf(_t2);
+    const float _t4 = 6.28318548f * y;
+    const float _t5 = sinf(_t4);
+    const float _t6 = _t3 * _t5;
+    const float _t7 = _t1 * _t6;
+    const float _t8 = cosf(_t4);
+    const float _t9 = _t3 * _t8;
+    const float _t10 = cosf(_t0);
     const float _t11 = _t9 * _t10;
-    const float _t12 = _t7 + _t11;
-    const float _t13 = sinf(_t2);
-    const float _t14 = _t1 * _t13;
-    const float _t15 = _t14 * _t10;
-    const float _t16 = _t8 * _t13;
-    const float _t17 = _t6 * _t16;
-    const float _t18 = _t12 - _t15 - _t17;
-    const float _t19 = _t7 + _t15 - _t11 - _t17;
-    const float _t20 = _t19 * _t19;
-    const float _t21 = _t7 + _t17 - _t11 - _t15;
-    const float _t22 = _t21 * _t21;
-    const float _t23 = _t18 * _t18;
-    const float _t24 = _t20 + _t22 + _t23;
-    const float _t25 = 1.0f / sqrtf(_t24);
-    const float _t26 = _t10 * _t16;
-    const float _t27 = _t9 * _t6;
-    const float _t28 = _t14 * _t6;
-    const float _t29 = _t4 * _t10;
-    const float _t30 = _t26 + _t27 - _t28 - _t29;
-    const float _t31 = _t26 + _t29 - _t28 - _t27;
-    const float _t32 = _t26 + _t28;
-    const float _t33 = _t29 + _t32 + _t27;
-    const float _t34 = _t25 * (_t30 * _t21 * 2.0f + _t31 * _t19 * 2.0f - _t18 * _t33 * 2.0f) * 0.5f;
+    const float _t12 = cosf(_t2);
+    const float _t13 = _t12 * _t5;
+    const float _t14 = _t13 * _t10;
+    const float _t15 = _t12 * _t8;
+    const float _t16 = _t15 * _t1;
+    const float _t17 = _t7 + _t11 - _t14 - _t16;
+    const float _t18 = _t15 * _t10;
+    const float _t19 = _t10 * _t6;
+    const float _t20 = _t9 * _t1;
+    const float _t21 = _t13 * _t1;
+    const float _t22 = _t18 + _t19 - _t20 - _t21;
+    const float _t23 = _t7 + _t16 - _t14 - _t11;
+    const float _t24 = _t18 + _t21 - _t20 - _t19;
+    const float _t25 = _t18 + _t20;
+    const float _t26 = _t25 - _t21 - _t19;
+    const float _t27 = _t7 + _t14;
+    const float _t28 = _t16 + _t27 + _t11;
+    const float _t29 = _t24 * _t24;
+    const float _t30 = _t22 * _t22;
+    const float _t31 = _t26 * _t26;
+    const float _t32 = _t29 + _t30 + _t31;
+    const float _t33 = 1.0f / sqrtf(_t32);
+    const float _t34 = (_t17 * _t22 + _t23 * _t24 - _t26 * _t28) * _t33;
     const float _t35 = 6.28318548f * h;
     const float _t36 = _t35 * 0.5f;
-    const float _t37 = _t18 - _t34 * _t36;
-    const float _t38 = _t32 - _t29 - _t27;
-    const float _t39 = _t25 * (_t18 * _t30 * 2.0f + _t38 * _t19 * 2.0f - _t21 * _t33 * 2.0f) * 0.5f;
-    const float _t40 = _t39 * _t36 - _t21;
-    const float _t41 = _t25 * (_t38 * _t21 * 2.0f + _t18 * _t31 * 2.0f - _t33 * _t19 * 2.0f) * 0.5f;
-    const float _t42 = _t41 * _t36 - _t19;
-    const float _t43 = sqrtf(_t37 * _t37 + (_t40 * _t40 + _t42 * _t42));
+    const float _t37 = _t34 * _t36 - _t26;
+    const float _t38 = _t27 - _t16 - _t11;
+    const float _t39 = _t33 * (_t26 * _t23 + _t38 * _t22 - _t28 * _t24);
+    const float _t40 = _t39 * _t36 - _t24;
+    const float _t41 = _t33 * (_t38 * _t24 + _t26 * _t17 - _t22 * _t28);
+    const float _t42 = _t22 - _t41 * _t36;
+    const float _t43 = sqrtf(_t37 * _t37 + _t40 * _t40 + _t42 * _t42);
     const int _t44 = fabsf(_t43) <= 1.73205256f;
     const float _t45 = 1.0f / _t43;
-    const float _t46 = _t15 + _t12 + _t17;
-    const float _t47 = _t18 * _t21 * 2.0f;
-    const float _t48 = _t30 * _t33 * 2.0f;
-    const float _t49 = _t30 + (2.0f * (_t39 * _t34) - (_t46 * _t19 * 2.0f + _t38 * _t31 * 2.0f - _t47 - _t47 - _t48 - _t48)) * _t25 * 0.5f * _t36;
-    const float _t50 = _t18 * _t19 * 2.0f;
-    const float _t51 = _t31 * _t33 * 2.0f;
-    const float _t52 = _t25 * (_t50 + _t50 + _t51 + _t51 - _t21 * _t46 * 2.0f - _t38 * _t30 * 2.0f + _t41 * _t34 * 2.0f) * 0.5f * _t36 + _t31;
-    const float _t53 = _t30 * _t30 * 2.0f;
-    const float _t54 = _t31 * _t31 * 2.0f;
-    const float _t55 = _t33 * _t33 * 2.0f;
-    const float _t56 = _t22 * 2.0f;
-    const float _t57 = _t20 * 2.0f;
-    const float _t58 = _t23 * 2.0f;
-    const float _t59 = (_t44) ? _t35 * (_t45 * (_t40 * _t49 * 2.0f + 2.0f * (_t42 * _t52) + ((_t53 + _t54 + _t55 - _t56 - _t57 - _t58 - _t34 * _t34 * 2.0f) * _t25 * 0.5f * _t36 + _t33) * _t37 * 2.0f) * 0.5f) + _t18 : _t18;
-    const float _t60 = _t38 * _t38 * 2.0f;
-    const float _t61 = _t38 * _t33 * 2.0f;
-    const float _t62 = _t21 * _t19 * 2.0f;
-    const float _t63 = _t36 * (_t25 * (_t61 + _t61 + _t62 + _t62 - _t18 * _t46 * 2.0f - _t30 * _t31 * 2.0f + _t39 * _t41 * 2.0f) * 0.5f) + _t38;
-    const float _t64 = (_t44) ? _t21 - _t35 * (_t45 * (_t37 * _t49 * 2.0f + _t40 * (_t33 + _t25 * (_t60 + _t53 + _t55 - _t56 - _t57 - _t58 - _t39 * _t39 * 2.0f) * 0.5f * _t36) * 2.0f - _t42 * _t63 * 2.0f) * 0.5f) : _t21;
-    const float _t65 = (_t44) ? _t19 - _t35 * (_t45 * (_t42 * (_t25 * (_t60 + _t54 + _t55 - _t56 - _t57 - _t58 - _t41 * _t41 * 2.0f) * 0.5f * _t36 + _t33) * 2.0f + _t37 * _t52 * 2.0f - _t40 * _t63 * 2.0f) * 0.5f) : _t19;
-    const float _t66 = _t59 * _t59 + _t64 * _t64 + _t65 * _t65;
-    const int _t67 = _t66 > 0.0f;
-    const int _t68 = _t66 <= 1.00000002e+30f;
-    const float _t69 = 1.0f / sqrtf(_t66);
-    const float _t70 = (_t24 > 0.0f) ? _t25 : 0.0f;
-    const float _t71 = _t21 * _t70;
-    const float _t72 = _t18 * _t70;
-    const float _t73 = _t70 * _t19;
-    n[0] = (_t67) ? ((_t68) ? _t69 * _t64 : _t71) : _t71;
-    n[1] = (_t67) ? ((_t68) ? _t59 * _t69 : _t72) : _t72;
-    n[2] = (_t67) ? ((_t68) ? _t69 * _t65 : _t73) : _t73;
+    const float _t46 = _t38 * _t38;
+    const float _t47 = _t28 * _t28;
+    const float _t48 = _t23 * _t23;
+    const float _t49 = _t22 * _t24;
+    const float _t50 = _t38 * _t28;
+    const float _t51 = _t21 + _t25 + _t19;
+    const float _t52 = _t38 + (_t49 + (_t50 + _t50 + _t49) - _t26 * _t51 - _t17 * _t23 + _t39 * _t41) * _t33 * _t36;
+    const float _t53 = _t26 * _t24;
+    const float _t54 = _t23 * _t28;
+    const float _t55 = _t33 * (_t39 * _t34 + (_t53 + _t53 + _t54 + _t54 - _t22 * _t51 - _t38 * _t17)) * _t36 + _t23;
+    const float _t56 = (_t44) ? _t24 - _t35 * (_t45 * ((_t28 - _t33 * (_t39 * _t39 - (_t46 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t40 + _t42 * _t52 - _t55 * _t37)) : _t24;
+    const float _t57 = _t26 * _t22;
+    const float _t58 = _t17 * _t28;
+    const float _t59 = _t33 * (_t38 * _t23 + _t51 * _t24 - _t57 - _t57 - _t58 - _t58 - _t41 * _t34) * _t36 - _t17;
+    const float _t60 = _t17 * _t17;
+    const float _t61 = (_t44) ? _t35 * (_t45 * (_t42 * _t59 + _t40 * _t55 - (_t28 - _t33 * (_t34 * _t34 - (_t60 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t37)) + _t26 : _t26;
+    const float _t62 = (_t44) ? _t35 * (_t45 * (_t40 * _t52 - (_t36 * (_t33 * (_t41 * _t41 - (_t47 + (_t46 + _t60) - _t29 - _t30 - _t31))) - _t28) * _t42 - _t59 * _t37)) + _t22 : _t22;
+    const float _t63 = _t56 * _t56 + (_t61 * _t61 + _t62 * _t62);
+    const int _t64 = _t63 > 0.0f;
+    const int _t65 = _t63 <= 1.00000002e+30f;
+    const float _t66 = 1.0f / sqrtf(_t63);
+    const float _t67 = (_t32 > 0.0f) ? _t33 : 0.0f;
+    const float _t68 = _t22 * _t67;
+    const float _t69 = _t26 * _t67;
+    const float _t70 = _t67 * _t24;
+    n[0] = (_t64) ? ((_t65) ? _t62 * _t66 : _t68) : _t68;
+    n[1] = (_t64) ? ((_t65) ? _t61 * _t66 : _t69) : _t69;
+    n[2] = (_t64) ? ((_t65) ? _t56 * _t66 : _t70) : _t70;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -564,24 +558,24 @@ static inline void diamond_o2_offset_n(size_t n, const double *x, const double *
         const double _t16 = _t8 * _t3;
         const double _t17 = _t16 * _t13;
         const double _t18 = _t7 + _t15 + _t17;
-        const double _t19 = _t4 * _t13;
-        const double _t20 = _t16 * _t6;
-        const double _t21 = _t12 * _t6;
+        const double _t19 = 6.2831853071795862 * h[i];
+        const double _t20 = _t11 + _t17 - _t14 - _t7;
+        const double _t21 = _t4 * _t13;
         const double _t22 = _t13 * _t10;
-        const double _t23 = _t19 + _t20 - _t21 - _t22;
-        const double _t24 = _t19 + _t21 - _t20 - _t22;
-        const double _t25 = _t19 + _t22 - _t20 - _t21;
-        const double _t26 = 1.0 / sqrt(_t24 * _t24 + _t25 * _t25 + _t23 * _t23);
-        const double _t27 = _t11 + _t17 - _t14 - _t7;
-        const double _t28 = _t11 + _t7 - _t14 - _t17;
-        const double _t29 = 6.2831853071795862 * h[i];
-        const double _t30 = _t29 * 0.5;
-        const double _t31 = _t23 - _t26 * (_t27 * _t25 * 2.0 + _t28 * _t24 * 2.0 - _t23 * _t18 * 2.0) * 0.5 * _t30;
+        const double _t23 = _t16 * _t6;
+        const double _t24 = _t12 * _t6;
+        const double _t25 = _t21 + _t22 - _t23 - _t24;
+        const double _t26 = _t11 + _t7 - _t14 - _t17;
+        const double _t27 = _t21 + _t24 - _t23 - _t22;
+        const double _t28 = _t21 + _t23 - _t24 - _t22;
+        const double _t29 = 1.0 / sqrt(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+        const double _t30 = _t19 * 0.5;
+        const double _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
         const double _t32 = _t15 - _t7 - _t17;
-        const double _t33 = _t26 * (_t23 * _t27 * 2.0 + _t32 * _t24 * 2.0 - _t25 * _t18 * 2.0) * 0.5 * _t30 - _t25;
-        const double _t34 = _t26 * (_t32 * _t25 * 2.0 + _t23 * _t28 * 2.0 - _t18 * _t24 * 2.0) * 0.5 * _t30 - _t24;
-        const double _t35 = sqrt(_t31 * _t31 + (_t33 * _t33 + _t34 * _t34));
-        out[i] = _t18 - ((fabs(_t35) <= 1.7320525396196846) ? _t35 : ((_t35 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t29;
+        const double _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
+        const double _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
+        const double _t35 = sqrt(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
+        out[i] = _t18 - _t19 * ((fabs(_t35) <= 1.7320525396196846) ? _t35 : ((_t35 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_o2_offset(x[i], y[i], z[i], h[i]);
@@ -615,31 +609,31 @@ static inline void diamond_o2_shell_n(size_t n, const double *x, const double *y
         const double _t16 = _t8 * _t3;
         const double _t17 = _t16 * _t13;
         const double _t18 = _t7 + _t15 + _t17;
-        const double _t19 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t20 = _t4 * _t13;
+        const double _t19 = _t4 * _t13;
+        const double _t20 = _t16 * _t6;
         const double _t21 = _t12 * _t6;
-        const double _t22 = _t16 * _t6;
-        const double _t23 = _t13 * _t10;
-        const double _t24 = _t20 + _t21 - _t22 - _t23;
-        const double _t25 = _t20 + _t23 - _t22 - _t21;
-        const double _t26 = _t20 + _t22 - _t21 - _t23;
-        const double _t27 = 1.0 / sqrt(_t24 * _t24 + _t25 * _t25 + _t26 * _t26);
-        const double _t28 = _t15 - _t7 - _t17;
-        const double _t29 = _t11 + _t7 - _t14 - _t17;
-        const double _t30 = _t19 * 0.5;
-        const double _t31 = _t27 * (_t28 * _t25 * 2.0 + _t26 * _t29 * 2.0 - _t18 * _t24 * 2.0) * 0.5 * _t30;
-        const double _t32 = _t31 - _t24;
-        const double _t33 = _t11 + _t17 - _t14 - _t7;
-        const double _t34 = _t27 * (_t26 * _t33 * 2.0 + _t28 * _t24 * 2.0 - _t25 * _t18 * 2.0) * 0.5 * _t30;
-        const double _t35 = _t25 - _t34;
-        const double _t36 = _t30 * (_t27 * (_t33 * _t25 * 2.0 + _t29 * _t24 * 2.0 - _t26 * _t18 * 2.0) * 0.5);
-        const double _t37 = _t26 - _t36;
+        const double _t22 = _t13 * _t10;
+        const double _t23 = _t19 + _t20 - _t21 - _t22;
+        const double _t24 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t25 = _t24 * 0.5;
+        const double _t26 = _t11 + _t17 - _t14 - _t7;
+        const double _t27 = _t19 + _t22 - _t20 - _t21;
+        const double _t28 = _t11 + _t7 - _t14 - _t17;
+        const double _t29 = _t19 + _t21 - _t20 - _t22;
+        const double _t30 = 1.0 / sqrt(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
+        const double _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
+        const double _t32 = _t23 + _t31;
+        const double _t33 = _t15 - _t7 - _t17;
+        const double _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
+        const double _t35 = _t34 + _t27;
+        const double _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
+        const double _t37 = _t36 + _t29;
         const double _t38 = sqrt(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-        const double _t39 = _t26 + _t36;
-        const double _t40 = _t25 + _t34;
-        const double _t41 = _t31 + _t24;
+        const double _t39 = _t34 - _t27;
+        const double _t40 = _t23 - _t31;
+        const double _t41 = _t36 - _t29;
         const double _t42 = sqrt(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-        out[i] = (_t18 - _t19 * ((fabs(_t38) <= 1.7320525396196846) ? _t38 : ((_t38 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)))) * (((fabs(_t42) <= 1.7320525396196846) ? _t42 : ((_t42 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t19 + _t18);
+        out[i] = (_t18 + ((fabs(_t38) <= 1.7320525396196846) ? _t38 : ((_t38 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t24) * (_t18 - ((fabs(_t42) <= 1.7320525396196846) ? _t42 : ((_t42 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t24);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_o2_shell(x[i], y[i], z[i], t[i]);
@@ -673,24 +667,24 @@ static inline void diamond_o2_offsetf_n(size_t n, const float *x, const float *y
         const float _t16 = _t8 * _t3;
         const float _t17 = _t16 * _t13;
         const float _t18 = _t7 + _t15 + _t17;
-        const float _t19 = _t4 * _t13;
-        const float _t20 = _t16 * _t6;
-        const float _t21 = _t12 * _t6;
+        const float _t19 = 6.28318548f * h[i];
+        const float _t20 = _t11 + _t17 - _t14 - _t7;
+        const float _t21 = _t4 * _t13;
         const float _t22 = _t13 * _t10;
-        const float _t23 = _t19 + _t20 - _t21 - _t22;
-        const float _t24 = _t19 + _t21 - _t20 - _t22;
-        const float _t25 = _t19 + _t22 - _t20 - _t21;
-        const float _t26 = 1.0f / sqrtf(_t24 * _t24 + _t25 * _t25 + _t23 * _t23);
-        const float _t27 = _t11 + _t17 - _t14 - _t7;
-        const float _t28 = _t11 + _t7 - _t14 - _t17;
-        const float _t29 = 6.28318548f * h[i];
-        const float _t30 = _t29 * 0.5f;
-        const float _t31 = _t23 - _t26 * (_t27 * _t25 * 2.0f + _t28 * _t24 * 2.0f - _t23 * _t18 * 2.0f) * 0.5f * _t30;
+        const float _t23 = _t16 * _t6;
+        const float _t24 = _t12 * _t6;
+        const float _t25 = _t21 + _t22 - _t23 - _t24;
+        const float _t26 = _t11 + _t7 - _t14 - _t17;
+        const float _t27 = _t21 + _t24 - _t23 - _t22;
+        const float _t28 = _t21 + _t23 - _t24 - _t22;
+        const float _t29 = 1.0f / sqrtf(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+        const float _t30 = _t19 * 0.5f;
+        const float _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
         const float _t32 = _t15 - _t7 - _t17;
-        const float _t33 = _t26 * (_t23 * _t27 * 2.0f + _t32 * _t24 * 2.0f - _t25 * _t18 * 2.0f) * 0.5f * _t30 - _t25;
-        const float _t34 = _t26 * (_t32 * _t25 * 2.0f + _t23 * _t28 * 2.0f - _t18 * _t24 * 2.0f) * 0.5f * _t30 - _t24;
-        const float _t35 = sqrtf(_t31 * _t31 + (_t33 * _t33 + _t34 * _t34));
-        out[i] = _t18 - ((fabsf(_t35) <= 1.73205256f) ? _t35 : ((_t35 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t29;
+        const float _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
+        const float _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
+        const float _t35 = sqrtf(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
+        out[i] = _t18 - _t19 * ((fabsf(_t35) <= 1.73205256f) ? _t35 : ((_t35 > 0.0f) ? 1.73205256f : (-1.73205256f)));
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_o2_offsetf(x[i], y[i], z[i], h[i]);
@@ -724,31 +718,31 @@ static inline void diamond_o2_shellf_n(size_t n, const float *x, const float *y,
         const float _t16 = _t8 * _t3;
         const float _t17 = _t16 * _t13;
         const float _t18 = _t7 + _t15 + _t17;
-        const float _t19 = 6.28318548f * (t[i] * 0.5f);
-        const float _t20 = _t4 * _t13;
+        const float _t19 = _t4 * _t13;
+        const float _t20 = _t16 * _t6;
         const float _t21 = _t12 * _t6;
-        const float _t22 = _t16 * _t6;
-        const float _t23 = _t13 * _t10;
-        const float _t24 = _t20 + _t21 - _t22 - _t23;
-        const float _t25 = _t20 + _t23 - _t22 - _t21;
-        const float _t26 = _t20 + _t22 - _t21 - _t23;
-        const float _t27 = 1.0f / sqrtf(_t24 * _t24 + _t25 * _t25 + _t26 * _t26);
-        const float _t28 = _t15 - _t7 - _t17;
-        const float _t29 = _t11 + _t7 - _t14 - _t17;
-        const float _t30 = _t19 * 0.5f;
-        const float _t31 = _t27 * (_t28 * _t25 * 2.0f + _t26 * _t29 * 2.0f - _t18 * _t24 * 2.0f) * 0.5f * _t30;
-        const float _t32 = _t31 - _t24;
-        const float _t33 = _t11 + _t17 - _t14 - _t7;
-        const float _t34 = _t27 * (_t26 * _t33 * 2.0f + _t28 * _t24 * 2.0f - _t25 * _t18 * 2.0f) * 0.5f * _t30;
-        const float _t35 = _t25 - _t34;
-        const float _t36 = _t30 * (_t27 * (_t33 * _t25 * 2.0f + _t29 * _t24 * 2.0f - _t26 * _t18 * 2.0f) * 0.5f);
-        const float _t37 = _t26 - _t36;
+        const float _t22 = _t13 * _t10;
+        const float _t23 = _t19 + _t20 - _t21 - _t22;
+        const float _t24 = 6.28318548f * (t[i] * 0.5f);
+        const float _t25 = _t24 * 0.5f;
+        const float _t26 = _t11 + _t17 - _t14 - _t7;
+        const float _t27 = _t19 + _t22 - _t20 - _t21;
+        const float _t28 = _t11 + _t7 - _t14 - _t17;
+        const float _t29 = _t19 + _t21 - _t20 - _t22;
+        const float _t30 = 1.0f / sqrtf(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
+        const float _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
+        const float _t32 = _t23 + _t31;
+        const float _t33 = _t15 - _t7 - _t17;
+        const float _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
+        const float _t35 = _t34 + _t27;
+        const float _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
+        const float _t37 = _t36 + _t29;
         const float _t38 = sqrtf(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-        const float _t39 = _t26 + _t36;
-        const float _t40 = _t25 + _t34;
-        const float _t41 = _t31 + _t24;
+        const float _t39 = _t34 - _t27;
+        const float _t40 = _t23 - _t31;
+        const float _t41 = _t36 - _t29;
         const float _t42 = sqrtf(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-        out[i] = (_t18 - _t19 * ((fabsf(_t38) <= 1.73205256f) ? _t38 : ((_t38 > 0.0f) ? 1.73205256f : (-1.73205256f)))) * (((fabsf(_t42) <= 1.73205256f) ? _t42 : ((_t42 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t19 + _t18);
+        out[i] = (_t18 + ((fabsf(_t38) <= 1.73205256f) ? _t38 : ((_t38 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t24) * (_t18 - ((fabsf(_t42) <= 1.73205256f) ? _t42 : ((_t42 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t24);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_o2_shellf(x[i], y[i], z[i], t[i]);

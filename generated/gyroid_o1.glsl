@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 14
     - offset: 37
     - shell: 40
-    - normal: 105
+    - normal: 92
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o1","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":37,"shell":40,"normal":105}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o1","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":37,"shell":40,"normal":92}} */
 #ifndef OFFSETGEN_GYROID_O1_GLSL
 #define OFFSETGEN_GYROID_O1_GLSL
 
@@ -87,7 +87,7 @@ highp float gyroid_o1_shell(highp vec3 p, highp float t)
     return (_t9 - _t14) * (_t14 + _t9);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 105.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 92.
 highp vec3 gyroid_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -107,16 +107,16 @@ highp vec3 gyroid_o1_normal(highp vec3 p, highp float h)
     bool _t14 = abs(_t13) <= 1.73205256;
     highp float _t15 = 6.28318548 * h;
     highp float _t16 = 1.0 / _t13;
-    highp float _t17 = _t1 * _t6;
-    highp float _t18 = _t9 * _t8;
-    highp float _t19 = _t6 * _t3;
-    highp float _t20 = _t4 * _t9;
-    highp float _t21 = (_t14) ? -(_t15 * (_t16 * (2.0 * (_t10 * (_t17 + _t18)) + _t19 * _t11 * 2.0 - _t7 * _t20 * 2.0) * 0.5) + _t10) : -_t10;
-    highp float _t22 = _t4 * _t3;
-    highp float _t23 = _t1 * _t8;
-    highp float _t24 = (_t14) ? -(_t15 * (_t16 * (_t10 * _t19 * 2.0 + (_t22 + _t18) * _t11 * 2.0 - _t7 * _t23 * 2.0) * 0.5) + _t11) : -_t11;
-    highp float _t25 = (_t14) ? _t7 + _t15 * (_t16 * (_t7 * (_t17 + _t22) * 2.0 - _t23 * _t11 * 2.0 - _t20 * _t10 * 2.0) * 0.5) : _t7;
-    highp float _t26 = _t21 * _t21 + (_t24 * _t24 + _t25 * _t25);
+    highp float _t17 = _t4 * _t9;
+    highp float _t18 = _t1 * _t8;
+    highp float _t19 = _t1 * _t6;
+    highp float _t20 = _t4 * _t3;
+    highp float _t21 = (_t14) ? _t7 - _t15 * (_t16 * (_t17 * _t10 + _t18 * _t11 - _t7 * (_t19 + _t20))) : _t7;
+    highp float _t22 = _t9 * _t8;
+    highp float _t23 = _t6 * _t3;
+    highp float _t24 = (_t14) ? -(_t15 * (_t16 * ((_t20 + _t22) * _t11 + _t10 * _t23 - _t7 * _t18)) + _t11) : -_t11;
+    highp float _t25 = (_t14) ? _t15 * (_t16 * (_t7 * _t17 - _t23 * _t11 - _t10 * (_t19 + _t22))) - _t10 : -_t10;
+    highp float _t26 = _t21 * _t21 + _t24 * _t24 + _t25 * _t25;
     bool _t27 = _t26 > 0.0;
     bool _t28 = _t26 <= 1.00000002e+30;
     highp float _t29 = 1.0 / sqrt(_t26);
@@ -124,7 +124,7 @@ highp vec3 gyroid_o1_normal(highp vec3 p, highp float h)
     highp float _t31 = -(_t30 * _t11);
     highp float _t32 = -(_t10 * _t30);
     highp float _t33 = _t7 * _t30;
-    return vec3((_t27) ? ((_t28) ? _t24 * _t29 : _t31) : _t31, (_t27) ? ((_t28) ? _t21 * _t29 : _t32) : _t32, (_t27) ? ((_t28) ? _t25 * _t29 : _t33) : _t33);
+    return vec3((_t27) ? ((_t28) ? _t29 * _t24 : _t31) : _t31, (_t27) ? ((_t28) ? _t25 * _t29 : _t32) : _t32, (_t27) ? ((_t28) ? _t21 * _t29 : _t33) : _t33);
 }
 
 

@@ -42,9 +42,9 @@
  *   field    14
  *   offset   37
  *   shell    40
- *   normal   105
+ *   normal   92
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o1","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":37,"shell":40,"normal":105}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o1","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":37,"shell":40,"normal":92}} */
 #ifndef OFFSETGEN_GYROID_O1_H
 #define OFFSETGEN_GYROID_O1_H
 
@@ -107,7 +107,7 @@ static inline double gyroid_o1_shell(double x, double y, double z, double t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 105
+ * Total ops: 92
  */
 static inline void gyroid_o1_normal(double x, double y, double z, double h, double n[3])
 {
@@ -128,16 +128,16 @@ static inline void gyroid_o1_normal(double x, double y, double z, double h, doub
     const int _t14 = fabs(_t13) <= 1.7320525396196846;
     const double _t15 = 6.2831853071795862 * h;
     const double _t16 = 1.0 / _t13;
-    const double _t17 = _t1 * _t6;
-    const double _t18 = _t9 * _t8;
-    const double _t19 = _t6 * _t3;
-    const double _t20 = _t4 * _t9;
-    const double _t21 = (_t14) ? -(_t15 * (_t16 * (2.0 * (_t10 * (_t17 + _t18)) + _t19 * _t11 * 2.0 - _t7 * _t20 * 2.0) * 0.5) + _t10) : -_t10;
-    const double _t22 = _t4 * _t3;
-    const double _t23 = _t1 * _t8;
-    const double _t24 = (_t14) ? -(_t15 * (_t16 * (_t10 * _t19 * 2.0 + (_t22 + _t18) * _t11 * 2.0 - _t7 * _t23 * 2.0) * 0.5) + _t11) : -_t11;
-    const double _t25 = (_t14) ? _t7 + _t15 * (_t16 * (_t7 * (_t17 + _t22) * 2.0 - _t23 * _t11 * 2.0 - _t20 * _t10 * 2.0) * 0.5) : _t7;
-    const double _t26 = _t21 * _t21 + (_t24 * _t24 + _t25 * _t25);
+    const double _t17 = _t4 * _t9;
+    const double _t18 = _t1 * _t8;
+    const double _t19 = _t1 * _t6;
+    const double _t20 = _t4 * _t3;
+    const double _t21 = (_t14) ? _t7 - _t15 * (_t16 * (_t17 * _t10 + _t18 * _t11 - _t7 * (_t19 + _t20))) : _t7;
+    const double _t22 = _t9 * _t8;
+    const double _t23 = _t6 * _t3;
+    const double _t24 = (_t14) ? -(_t15 * (_t16 * ((_t20 + _t22) * _t11 + _t10 * _t23 - _t7 * _t18)) + _t11) : -_t11;
+    const double _t25 = (_t14) ? _t15 * (_t16 * (_t7 * _t17 - _t23 * _t11 - _t10 * (_t19 + _t22))) - _t10 : -_t10;
+    const double _t26 = _t21 * _t21 + _t24 * _t24 + _t25 * _t25;
     const int _t27 = _t26 > 0.0;
     const int _t28 = _t26 <= 1.0e+30;
     const double _t29 = 1.0 / sqrt(_t26);
@@ -145,9 +145,9 @@ static inline void gyroid_o1_normal(double x, double y, double z, double h, doub
     const double _t31 = -(_t30 * _t11);
     const double _t32 = -(_t10 * _t30);
     const double _t33 = _t7 * _t30;
-    n[0] = (_t27) ? ((_t28) ? _t24 * _t29 : _t31) : _t31;
-    n[1] = (_t27) ? ((_t28) ? _t21 * _t29 : _t32) : _t32;
-    n[2] = (_t27) ? ((_t28) ? _t25 * _t29 : _t33) : _t33;
+    n[0] = (_t27) ? ((_t28) ? _t29 * _t24 : _t31) : _t31;
+    n[1] = (_t27) ? ((_t28) ? _t25 * _t29 : _t32) : _t32;
+    n[2] = (_t27) ? ((_t28) ? _t21 * _t29 : _t33) : _t33;
 }
 
 /* F, the field; the surface is F = 0.
@@ -206,7 +206,7 @@ static inline float gyroid_o1_shellf(float x, float y, float z, float t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 105
+ * Total ops: 92
  */
 static inline void gyroid_o1_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -227,16 +227,16 @@ static inline void gyroid_o1_normalf(float x, float y, float z, float h, float n
     const int _t14 = fabsf(_t13) <= 1.73205256f;
     const float _t15 = 6.28318548f * h;
     const float _t16 = 1.0f / _t13;
-    const float _t17 = _t1 * _t6;
-    const float _t18 = _t9 * _t8;
-    const float _t19 = _t6 * _t3;
-    const float _t20 = _t4 * _t9;
-    const float _t21 = (_t14) ? -(_t15 * (_t16 * (2.0f * (_t10 * (_t17 + _t18)) + _t19 * _t11 * 2.0f - _t7 * _t20 * 2.0f) * 0.5f) + _t10) : -_t10;
-    const float _t22 = _t4 * _t3;
-    const float _t23 = _t1 * _t8;
-    const float _t24 = (_t14) ? -(_t15 * (_t16 * (_t10 * _t19 * 2.0f + (_t22 + _t18) * _t11 * 2.0f - _t7 * _t23 * 2.0f) * 0.5f) + _t11) : -_t11;
-    const float _t25 = (_t14) ? _t7 + _t15 * (_t16 * (_t7 * (_t17 + _t22) * 2.0f - _t23 * _t11 * 2.0f - _t20 * _t10 * 2.0f) * 0.5f) : _t7;
-    const float _t26 = _t21 * _t21 + (_t24 * _t24 + _t25 * _t25);
+    const float _t17 = _t4 * _t9;
+    const float _t18 = _t1 * _t8;
+    const float _t19 = _t1 * _t6;
+    const float _t20 = _t4 * _t3;
+    const float _t21 = (_t14) ? _t7 - _t15 * (_t16 * (_t17 * _t10 + _t18 * _t11 - _t7 * (_t19 + _t20))) : _t7;
+    const float _t22 = _t9 * _t8;
+    const float _t23 = _t6 * _t3;
+    const float _t24 = (_t14) ? -(_t15 * (_t16 * ((_t20 + _t22) * _t11 + _t10 * _t23 - _t7 * _t18)) + _t11) : -_t11;
+    const float _t25 = (_t14) ? _t15 * (_t16 * (_t7 * _t17 - _t23 * _t11 - _t10 * (_t19 + _t22))) - _t10 : -_t10;
+    const float _t26 = _t21 * _t21 + _t24 * _t24 + _t25 * _t25;
     const int _t27 = _t26 > 0.0f;
     const int _t28 = _t26 <= 1.00000002e+30f;
     const float _t29 = 1.0f / sqrtf(_t26);
@@ -244,9 +244,9 @@ static inline void gyroid_o1_normalf(float x, float y, float z, float h, float n
     const float _t31 = -(_t30 * _t11);
     const float _t32 = -(_t10 * _t30);
     const float _t33 = _t7 * _t30;
-    n[0] = (_t27) ? ((_t28) ? _t24 * _t29 : _t31) : _t31;
-    n[1] = (_t27) ? ((_t28) ? _t21 * _t29 : _t32) : _t32;
-    n[2] = (_t27) ? ((_t28) ? _t25 * _t29 : _t33) : _t33;
+    n[0] = (_t27) ? ((_t28) ? _t29 * _t24 : _t31) : _t31;
+    n[1] = (_t27) ? ((_t28) ? _t25 * _t29 : _t32) : _t32;
+    n[2] = (_t27) ? ((_t28) ? _t21 * _t29 : _t33) : _t33;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------

@@ -29,12 +29,12 @@ safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on th
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 14
-    - offset: 86
-    - shell: 104
-    - normal: 273
+    - offset: 74
+    - shell: 92
+    - normal: 207
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":86,"shell":104,"normal":273}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":74,"shell":92,"normal":207}} */
 #ifndef OFFSETGEN_GYROID_O2_GLSL
 #define OFFSETGEN_GYROID_O2_GLSL
 
@@ -47,7 +47,7 @@ highp float gyroid_o2_field(highp vec3 p)
     return cos(_t0) * sin(_t1) + sin(_t0) * cos(_t2) + cos(_t1) * sin(_t2);
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 86.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 74.
 highp float gyroid_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -64,22 +64,22 @@ highp float gyroid_o2_offset(highp vec3 p, highp float h)
     highp float _t11 = sin(_t6);
     highp float _t12 = _t10 * _t11;
     highp float _t13 = 6.28318548 * h;
-    highp float _t14 = _t3 * _t11 - _t1 * _t10;
-    highp float _t15 = _t1 * _t7 - _t5 * _t3;
+    highp float _t14 = _t1 * _t7 - _t5 * _t3;
+    highp float _t15 = _t3 * _t11 - _t1 * _t10;
     highp float _t16 = _t5 * _t11 - _t10 * _t7;
-    highp float _t17 = 1.0 / sqrt(_t15 * _t15 + _t14 * _t14 + _t16 * _t16);
+    highp float _t17 = 1.0 / sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
     highp float _t18 = _t3 * _t7;
-    highp float _t19 = _t5 * _t10;
+    highp float _t19 = _t1 * _t11;
     highp float _t20 = _t13 * 0.5;
-    highp float _t21 = _t14 + _t17 * (2.0 * (_t14 * (_t4 + _t12)) + _t18 * _t16 * 2.0 - _t15 * _t19 * 2.0) * 0.5 * _t20;
-    highp float _t22 = _t1 * _t11;
-    highp float _t23 = _t15 + _t17 * (_t15 * _t9 * 2.0 - _t22 * _t16 * 2.0 - _t19 * _t14 * 2.0) * 0.5 * _t20;
-    highp float _t24 = _t17 * (_t14 * _t18 * 2.0 + (_t8 + _t12) * _t16 * 2.0 - _t15 * _t22 * 2.0) * 0.5 * _t20 + _t16;
-    highp float _t25 = sqrt(_t21 * _t21 + (_t23 * _t23 + _t24 * _t24));
+    highp float _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
+    highp float _t22 = _t5 * _t10;
+    highp float _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
+    highp float _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
+    highp float _t25 = sqrt(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
     return _t9 + _t12 - _t13 * ((abs(_t25) <= 1.73205256) ? _t25 : ((_t25 > 0.0) ? 1.73205256 : (-1.73205256)));
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 104.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 92.
 highp float gyroid_o2_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -96,93 +96,93 @@ highp float gyroid_o2_shell(highp vec3 p, highp float t)
     highp float _t11 = sin(_t6);
     highp float _t12 = _t10 * _t11;
     highp float _t13 = _t9 + _t12;
-    highp float _t14 = 6.28318548 * (t * 0.5);
-    highp float _t15 = _t1 * _t7 - _t5 * _t3;
-    highp float _t16 = _t3 * _t11 - _t1 * _t10;
-    highp float _t17 = _t5 * _t11 - _t10 * _t7;
-    highp float _t18 = 1.0 / sqrt(_t15 * _t15 + _t16 * _t16 + _t17 * _t17);
-    highp float _t19 = _t1 * _t11;
+    highp float _t14 = _t3 * _t11 - _t1 * _t10;
+    highp float _t15 = 6.28318548 * (t * 0.5);
+    highp float _t16 = _t15 * 0.5;
+    highp float _t17 = _t1 * _t7 - _t5 * _t3;
+    highp float _t18 = _t5 * _t11 - _t10 * _t7;
+    highp float _t19 = 1.0 / sqrt(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
     highp float _t20 = _t5 * _t10;
-    highp float _t21 = _t14 * 0.5;
-    highp float _t22 = _t18 * (_t15 * _t9 * 2.0 - _t19 * _t17 * 2.0 - _t20 * _t16 * 2.0) * 0.5 * _t21;
-    highp float _t23 = _t15 - _t22;
-    highp float _t24 = _t3 * _t7;
-    highp float _t25 = _t21 * (_t18 * (_t16 * _t24 * 2.0 + (_t8 + _t12) * _t17 * 2.0 - _t15 * _t19 * 2.0) * 0.5);
-    highp float _t26 = _t25 - _t17;
-    highp float _t27 = _t21 * (_t18 * (2.0 * (_t16 * (_t4 + _t12)) + _t24 * _t17 * 2.0 - _t15 * _t20 * 2.0) * 0.5);
-    highp float _t28 = _t16 - _t27;
+    highp float _t21 = _t3 * _t7;
+    highp float _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
+    highp float _t23 = _t14 - _t22;
+    highp float _t24 = _t1 * _t11;
+    highp float _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
+    highp float _t26 = _t25 + _t18;
+    highp float _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
+    highp float _t28 = _t17 - _t27;
     highp float _t29 = sqrt(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-    highp float _t30 = _t16 + _t27;
-    highp float _t31 = _t25 + _t17;
-    highp float _t32 = _t15 + _t22;
+    highp float _t30 = _t25 - _t18;
+    highp float _t31 = _t17 + _t27;
+    highp float _t32 = _t14 + _t22;
     highp float _t33 = sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-    return (_t13 + _t14 * ((abs(_t29) <= 1.73205256) ? _t29 : ((_t29 > 0.0) ? 1.73205256 : (-1.73205256)))) * (_t13 - _t14 * ((abs(_t33) <= 1.73205256) ? _t33 : ((_t33 > 0.0) ? 1.73205256 : (-1.73205256))));
+    return (_t13 - ((abs(_t29) <= 1.73205256) ? _t29 : ((_t29 > 0.0) ? 1.73205256 : (-1.73205256))) * _t15) * (((abs(_t33) <= 1.73205256) ? _t33 : ((_t33 > 0.0) ? 1.73205256 : (-1.73205256))) * _t15 + _t13);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 273.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 207.
 highp vec3 gyroid_o2_normal(highp vec3 p, highp float h)
 {
-    highp float _t0 = 6.28318548 * p.y;
-    highp float _t1 = sin(_t0);
+    highp float _t0 = p.z * 6.28318548;
+    highp float _t1 = cos(_t0);
     highp float _t2 = 6.28318548 * p.x;
-    highp float _t3 = sin(_t2);
+    highp float _t3 = cos(_t2);
     highp float _t4 = _t1 * _t3;
-    highp float _t5 = p.z * 6.28318548;
-    highp float _t6 = cos(_t5);
-    highp float _t7 = cos(_t0);
-    highp float _t8 = _t6 * _t7;
+    highp float _t5 = sin(_t0);
+    highp float _t6 = 6.28318548 * p.y;
+    highp float _t7 = sin(_t6);
+    highp float _t8 = _t5 * _t7;
     highp float _t9 = _t4 - _t8;
-    highp float _t10 = cos(_t2);
-    highp float _t11 = _t6 * _t10;
-    highp float _t12 = sin(_t5);
-    highp float _t13 = _t12 * _t1;
-    highp float _t14 = _t11 - _t13;
-    highp float _t15 = _t14 * _t14;
-    highp float _t16 = _t9 * _t9;
-    highp float _t17 = _t12 * _t3;
-    highp float _t18 = _t7 * _t10;
+    highp float _t10 = _t9 * _t9;
+    highp float _t11 = sin(_t2);
+    highp float _t12 = _t7 * _t11;
+    highp float _t13 = cos(_t6);
+    highp float _t14 = _t1 * _t13;
+    highp float _t15 = _t12 - _t14;
+    highp float _t16 = _t15 * _t15;
+    highp float _t17 = _t5 * _t11;
+    highp float _t18 = _t13 * _t3;
     highp float _t19 = _t17 - _t18;
     highp float _t20 = _t19 * _t19;
-    highp float _t21 = _t15 + _t16 + _t20;
+    highp float _t21 = _t10 + _t16 + _t20;
     highp float _t22 = 1.0 / sqrt(_t21);
-    highp float _t23 = _t6 * _t1;
-    highp float _t24 = _t7 * _t3;
+    highp float _t23 = _t5 * _t3;
+    highp float _t24 = _t13 * _t11;
     highp float _t25 = _t23 + _t24;
-    highp float _t26 = _t1 * _t10;
-    highp float _t27 = _t12 * _t7;
-    highp float _t28 = _t22 * (2.0 * (_t9 * _t25) + _t26 * _t19 * 2.0 - _t14 * _t27 * 2.0) * 0.5;
+    highp float _t26 = _t7 * _t3;
+    highp float _t27 = _t1 * _t11;
+    highp float _t28 = _t22 * (_t25 * _t19 + _t15 * _t26 - _t9 * _t27);
     highp float _t29 = 6.28318548 * h;
     highp float _t30 = _t29 * 0.5;
-    highp float _t31 = _t9 + _t28 * _t30;
-    highp float _t32 = _t12 * _t10;
-    highp float _t33 = _t23 + _t32;
-    highp float _t34 = _t6 * _t3;
-    highp float _t35 = _t22 * (_t14 * _t33 * 2.0 - _t34 * _t19 * 2.0 - _t27 * _t9 * 2.0) * 0.5;
-    highp float _t36 = _t14 + _t35 * _t30;
-    highp float _t37 = _t32 + _t24;
-    highp float _t38 = _t22 * (_t9 * _t26 * 2.0 + _t37 * _t19 * 2.0 - _t14 * _t34 * 2.0) * 0.5;
-    highp float _t39 = _t38 * _t30 + _t19;
-    highp float _t40 = sqrt(_t31 * _t31 + (_t36 * _t36 + _t39 * _t39));
+    highp float _t31 = _t28 * _t30 + _t19;
+    highp float _t32 = _t5 * _t13;
+    highp float _t33 = _t1 * _t7;
+    highp float _t34 = _t33 + _t23;
+    highp float _t35 = _t22 * (_t32 * _t15 + _t27 * _t19 - _t9 * _t34);
+    highp float _t36 = _t9 - _t35 * _t30;
+    highp float _t37 = _t33 + _t24;
+    highp float _t38 = _t22 * (_t9 * _t32 - _t26 * _t19 - _t15 * _t37);
+    highp float _t39 = _t38 * _t30 - _t15;
+    highp float _t40 = sqrt(_t31 * _t31 + _t36 * _t36 + _t39 * _t39);
     bool _t41 = abs(_t40) <= 1.73205256;
-    highp float _t42 = 1.0 / _t40;
-    highp float _t43 = _t22 * (_t35 * _t28 * 2.0 + (_t27 * _t25 * 2.0 + _t34 * _t26 * 2.0 + _t27 * _t33 * 2.0 - _t14 * _t8 * 2.0 - _t9 * _t13 * 2.0)) * 0.5 * _t30 + _t27;
-    highp float _t44 = _t27 * _t27 * 2.0;
-    highp float _t45 = _t26 * _t26 * 2.0;
-    highp float _t46 = _t22 * (_t25 * _t26 * 2.0 + _t9 * _t18 * 2.0 + _t37 * _t26 * 2.0 + _t27 * _t34 * 2.0 - _t4 * _t19 * 2.0 - _t38 * _t28 * 2.0) * 0.5 * _t30 + _t26;
-    highp float _t47 = (_t41) ? _t29 * (_t42 * (_t36 * _t43 * 2.0 - _t31 * (_t25 + (_t44 + _t18 * _t19 * 2.0 + _t14 * _t13 * 2.0 + _t25 * _t25 * 2.0 + _t45 - _t16 * 2.0 - _t28 * _t28 * 2.0) * _t22 * 0.5 * _t30) * 2.0 - _t46 * _t39 * 2.0) * 0.5) - _t9 : -_t9;
-    highp float _t48 = _t34 + (_t35 * _t38 * 2.0 + (_t19 * _t11 * 2.0 + (_t14 * _t17 * 2.0 + _t33 * _t34 * 2.0 + _t27 * _t26 * 2.0) + _t37 * _t34 * 2.0)) * _t22 * 0.5 * _t30;
-    highp float _t49 = _t34 * _t34 * 2.0;
-    highp float _t50 = (_t41) ? _t14 - _t29 * (_t42 * (_t31 * _t43 * 2.0 + _t48 * _t39 * 2.0 - 2.0 * ((_t33 + _t30 * (0.5 * (_t22 * (_t44 + (_t9 * _t8 * 2.0 + _t33 * _t33 * 2.0) + _t49 - _t17 * _t19 * 2.0 - _t15 * 2.0 - _t35 * _t35 * 2.0)))) * _t36)) * 0.5) : _t14;
-    highp float _t51 = (_t41) ? _t29 * ((((_t9 * _t4 * 2.0 + _t20 * 2.0 + 2.0 * (_t14 * _t11) - _t37 * _t37 * 2.0 - _t49 - _t45 + _t38 * _t38 * 2.0) * _t22 * 0.5 * _t30 - _t37) * _t39 * 2.0 + _t36 * _t48 * 2.0 - _t31 * _t46 * 2.0) * _t42 * 0.5) - _t19 : -_t19;
+    highp float _t42 = _t27 + _t22 * (_t34 * _t27 + _t25 * _t27 + _t9 * _t17 + _t19 * _t4 + _t32 * _t26 - _t35 * _t28) * _t30;
+    highp float _t43 = _t22 * (_t38 * _t28 + (_t32 * _t27 + _t25 * _t26 + _t15 * _t18 + _t37 * _t26 - _t12 * _t19)) * _t30 + _t26;
+    highp float _t44 = _t27 * _t27;
+    highp float _t45 = _t26 * _t26;
+    highp float _t46 = 1.0 / _t40;
+    highp float _t47 = (_t41) ? _t29 * ((_t36 * _t42 + _t43 * _t39 - _t31 * (_t22 * (_t25 * _t25 + (_t44 + _t45) - _t15 * _t12 - _t20 - _t9 * _t4 - _t28 * _t28) * _t30 + _t25)) * _t46) - _t19 : -_t19;
+    highp float _t48 = _t32 - _t22 * (_t15 * _t8 + _t9 * _t14 - _t32 * _t34 - _t27 * _t26 - _t32 * _t37 - _t38 * _t35) * _t30;
+    highp float _t49 = _t32 * _t32;
+    highp float _t50 = (_t41) ? _t29 * ((_t48 * _t36 - (_t22 * (_t38 * _t38 - (_t49 + _t9 * _t8 + _t45 + _t18 * _t19 + _t37 * _t37 - _t16)) * _t30 - _t37) * _t39 - _t43 * _t31) * _t46) - _t15 : -_t15;
+    highp float _t51 = (_t41) ? _t9 + _t29 * (((_t34 + _t22 * (_t34 * _t34 + (_t44 + _t49) + _t15 * _t14 - _t17 * _t19 - _t10 - _t35 * _t35) * _t30) * _t36 + _t48 * _t39 - _t31 * _t42) * _t46) : _t9;
     highp float _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
     bool _t53 = _t52 > 0.0;
     bool _t54 = _t52 <= 1.00000002e+30;
     highp float _t55 = 1.0 / sqrt(_t52);
     highp float _t56 = (_t21 > 0.0) ? _t22 : 0.0;
     highp float _t57 = -(_t56 * _t19);
-    highp float _t58 = -(_t9 * _t56);
-    highp float _t59 = _t14 * _t56;
-    return vec3((_t53) ? ((_t54) ? _t51 * _t55 : _t57) : _t57, (_t53) ? ((_t54) ? _t55 * _t47 : _t58) : _t58, (_t53) ? ((_t54) ? _t55 * _t50 : _t59) : _t59);
+    highp float _t58 = -(_t15 * _t56);
+    highp float _t59 = _t9 * _t56;
+    return vec3((_t53) ? ((_t54) ? _t55 * _t47 : _t57) : _t57, (_t53) ? ((_t54) ? _t55 * _t50 : _t58) : _t58, (_t53) ? ((_t54) ? _t51 * _t55 : _t59) : _t59);
 }
 
 

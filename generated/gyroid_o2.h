@@ -40,11 +40,11 @@
  *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    14
- *   offset   86
- *   shell    104
- *   normal   273
+ *   offset   74
+ *   shell    92
+ *   normal   207
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":86,"shell":104,"normal":273}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":74,"shell":92,"normal":207}} */
 #ifndef OFFSETGEN_GYROID_O2_H
 #define OFFSETGEN_GYROID_O2_H
 
@@ -63,7 +63,7 @@ static inline double gyroid_o2_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 86
+ * Total ops: 74
  */
 static inline double gyroid_o2_offset(double x, double y, double z, double h)
 {
@@ -81,23 +81,23 @@ static inline double gyroid_o2_offset(double x, double y, double z, double h)
     const double _t11 = sin(_t6);
     const double _t12 = _t10 * _t11;
     const double _t13 = 6.2831853071795862 * h;
-    const double _t14 = _t3 * _t11 - _t1 * _t10;
-    const double _t15 = _t1 * _t7 - _t5 * _t3;
+    const double _t14 = _t1 * _t7 - _t5 * _t3;
+    const double _t15 = _t3 * _t11 - _t1 * _t10;
     const double _t16 = _t5 * _t11 - _t10 * _t7;
-    const double _t17 = 1.0 / sqrt(_t15 * _t15 + _t14 * _t14 + _t16 * _t16);
+    const double _t17 = 1.0 / sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
     const double _t18 = _t3 * _t7;
-    const double _t19 = _t5 * _t10;
+    const double _t19 = _t1 * _t11;
     const double _t20 = _t13 * 0.5;
-    const double _t21 = _t14 + _t17 * (2.0 * (_t14 * (_t4 + _t12)) + _t18 * _t16 * 2.0 - _t15 * _t19 * 2.0) * 0.5 * _t20;
-    const double _t22 = _t1 * _t11;
-    const double _t23 = _t15 + _t17 * (_t15 * _t9 * 2.0 - _t22 * _t16 * 2.0 - _t19 * _t14 * 2.0) * 0.5 * _t20;
-    const double _t24 = _t17 * (_t14 * _t18 * 2.0 + (_t8 + _t12) * _t16 * 2.0 - _t15 * _t22 * 2.0) * 0.5 * _t20 + _t16;
-    const double _t25 = sqrt(_t21 * _t21 + (_t23 * _t23 + _t24 * _t24));
+    const double _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
+    const double _t22 = _t5 * _t10;
+    const double _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
+    const double _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
+    const double _t25 = sqrt(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
     return _t9 + _t12 - _t13 * ((fabs(_t25) <= 1.7320525396196846) ? _t25 : ((_t25 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 104
+ * Total ops: 92
  */
 static inline double gyroid_o2_shell(double x, double y, double z, double t)
 {
@@ -115,97 +115,97 @@ static inline double gyroid_o2_shell(double x, double y, double z, double t)
     const double _t11 = sin(_t6);
     const double _t12 = _t10 * _t11;
     const double _t13 = _t9 + _t12;
-    const double _t14 = 6.2831853071795862 * (t * 0.5);
-    const double _t15 = _t1 * _t7 - _t5 * _t3;
-    const double _t16 = _t3 * _t11 - _t1 * _t10;
-    const double _t17 = _t5 * _t11 - _t10 * _t7;
-    const double _t18 = 1.0 / sqrt(_t15 * _t15 + _t16 * _t16 + _t17 * _t17);
-    const double _t19 = _t1 * _t11;
+    const double _t14 = _t3 * _t11 - _t1 * _t10;
+    const double _t15 = 6.2831853071795862 * (t * 0.5);
+    const double _t16 = _t15 * 0.5;
+    const double _t17 = _t1 * _t7 - _t5 * _t3;
+    const double _t18 = _t5 * _t11 - _t10 * _t7;
+    const double _t19 = 1.0 / sqrt(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
     const double _t20 = _t5 * _t10;
-    const double _t21 = _t14 * 0.5;
-    const double _t22 = _t18 * (_t15 * _t9 * 2.0 - _t19 * _t17 * 2.0 - _t20 * _t16 * 2.0) * 0.5 * _t21;
-    const double _t23 = _t15 - _t22;
-    const double _t24 = _t3 * _t7;
-    const double _t25 = _t21 * (_t18 * (_t16 * _t24 * 2.0 + (_t8 + _t12) * _t17 * 2.0 - _t15 * _t19 * 2.0) * 0.5);
-    const double _t26 = _t25 - _t17;
-    const double _t27 = _t21 * (_t18 * (2.0 * (_t16 * (_t4 + _t12)) + _t24 * _t17 * 2.0 - _t15 * _t20 * 2.0) * 0.5);
-    const double _t28 = _t16 - _t27;
+    const double _t21 = _t3 * _t7;
+    const double _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
+    const double _t23 = _t14 - _t22;
+    const double _t24 = _t1 * _t11;
+    const double _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
+    const double _t26 = _t25 + _t18;
+    const double _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
+    const double _t28 = _t17 - _t27;
     const double _t29 = sqrt(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-    const double _t30 = _t16 + _t27;
-    const double _t31 = _t25 + _t17;
-    const double _t32 = _t15 + _t22;
+    const double _t30 = _t25 - _t18;
+    const double _t31 = _t17 + _t27;
+    const double _t32 = _t14 + _t22;
     const double _t33 = sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-    return (_t13 + _t14 * ((fabs(_t29) <= 1.7320525396196846) ? _t29 : ((_t29 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)))) * (_t13 - _t14 * ((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))));
+    return (_t13 - ((fabs(_t29) <= 1.7320525396196846) ? _t29 : ((_t29 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t15) * (((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t15 + _t13);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 273
+ * Total ops: 207
  */
 static inline void gyroid_o2_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = 6.2831853071795862 * y;
-    const double _t1 = sin(_t0);
+    const double _t0 = z * 6.2831853071795862;
+    const double _t1 = cos(_t0);
     const double _t2 = 6.2831853071795862 * x;
-    const double _t3 = sin(_t2);
+    const double _t3 = cos(_t2);
     const double _t4 = _t1 * _t3;
-    const double _t5 = z * 6.2831853071795862;
-    const double _t6 = cos(_t5);
-    const double _t7 = cos(_t0);
-    const double _t8 = _t6 * _t7;
+    const double _t5 = sin(_t0);
+    const double _t6 = 6.2831853071795862 * y;
+    const double _t7 = sin(_t6);
+    const double _t8 = _t5 * _t7;
     const double _t9 = _t4 - _t8;
-    const double _t10 = cos(_t2);
-    const double _t11 = _t6 * _t10;
-    const double _t12 = sin(_t5);
-    const double _t13 = _t12 * _t1;
-    const double _t14 = _t11 - _t13;
-    const double _t15 = _t14 * _t14;
-    const double _t16 = _t9 * _t9;
-    const double _t17 = _t12 * _t3;
-    const double _t18 = _t7 * _t10;
+    const double _t10 = _t9 * _t9;
+    const double _t11 = sin(_t2);
+    const double _t12 = _t7 * _t11;
+    const double _t13 = cos(_t6);
+    const double _t14 = _t1 * _t13;
+    const double _t15 = _t12 - _t14;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t5 * _t11;
+    const double _t18 = _t13 * _t3;
     const double _t19 = _t17 - _t18;
     const double _t20 = _t19 * _t19;
-    const double _t21 = _t15 + _t16 + _t20;
+    const double _t21 = _t10 + _t16 + _t20;
     const double _t22 = 1.0 / sqrt(_t21);
-    const double _t23 = _t6 * _t1;
-    const double _t24 = _t7 * _t3;
+    const double _t23 = _t5 * _t3;
+    const double _t24 = _t13 * _t11;
     const double _t25 = _t23 + _t24;
-    const double _t26 = _t1 * _t10;
-    const double _t27 = _t12 * _t7;
-    const double _t28 = _t22 * (2.0 * (_t9 * _t25) + _t26 * _t19 * 2.0 - _t14 * _t27 * 2.0) * 0.5;
+    const double _t26 = _t7 * _t3;
+    const double _t27 = _t1 * _t11;
+    const double _t28 = _t22 * (_t25 * _t19 + _t15 * _t26 - _t9 * _t27);
     const double _t29 = 6.2831853071795862 * h;
     const double _t30 = _t29 * 0.5;
-    const double _t31 = _t9 + _t28 * _t30;
-    const double _t32 = _t12 * _t10;
-    const double _t33 = _t23 + _t32;
-    const double _t34 = _t6 * _t3;
-    const double _t35 = _t22 * (_t14 * _t33 * 2.0 - _t34 * _t19 * 2.0 - _t27 * _t9 * 2.0) * 0.5;
-    const double _t36 = _t14 + _t35 * _t30;
-    const double _t37 = _t32 + _t24;
-    const double _t38 = _t22 * (_t9 * _t26 * 2.0 + _t37 * _t19 * 2.0 - _t14 * _t34 * 2.0) * 0.5;
-    const double _t39 = _t38 * _t30 + _t19;
-    const double _t40 = sqrt(_t31 * _t31 + (_t36 * _t36 + _t39 * _t39));
+    const double _t31 = _t28 * _t30 + _t19;
+    const double _t32 = _t5 * _t13;
+    const double _t33 = _t1 * _t7;
+    const double _t34 = _t33 + _t23;
+    const double _t35 = _t22 * (_t32 * _t15 + _t27 * _t19 - _t9 * _t34);
+    const double _t36 = _t9 - _t35 * _t30;
+    const double _t37 = _t33 + _t24;
+    const double _t38 = _t22 * (_t9 * _t32 - _t26 * _t19 - _t15 * _t37);
+    const double _t39 = _t38 * _t30 - _t15;
+    const double _t40 = sqrt(_t31 * _t31 + _t36 * _t36 + _t39 * _t39);
     const int _t41 = fabs(_t40) <= 1.7320525396196846;
-    const double _t42 = 1.0 / _t40;
-    const double _t43 = _t22 * (_t35 * _t28 * 2.0 + (_t27 * _t25 * 2.0 + _t34 * _t26 * 2.0 + _t27 * _t33 * 2.0 - _t14 * _t8 * 2.0 - _t9 * _t13 * 2.0)) * 0.5 * _t30 + _t27;
-    const double _t44 = _t27 * _t27 * 2.0;
-    const double _t45 = _t26 * _t26 * 2.0;
-    const double _t46 = _t22 * (_t25 * _t26 * 2.0 + _t9 * _t18 * 2.0 + _t37 * _t26 * 2.0 + _t27 * _t34 * 2.0 - _t4 * _t19 * 2.0 - _t38 * _t28 * 2.0) * 0.5 * _t30 + _t26;
-    const double _t47 = (_t41) ? _t29 * (_t42 * (_t36 * _t43 * 2.0 - _t31 * (_t25 + (_t44 + _t18 * _t19 * 2.0 + _t14 * _t13 * 2.0 + _t25 * _t25 * 2.0 + _t45 - _t16 * 2.0 - _t28 * _t28 * 2.0) * _t22 * 0.5 * _t30) * 2.0 - _t46 * _t39 * 2.0) * 0.5) - _t9 : -_t9;
-    const double _t48 = _t34 + (_t35 * _t38 * 2.0 + (_t19 * _t11 * 2.0 + (_t14 * _t17 * 2.0 + _t33 * _t34 * 2.0 + _t27 * _t26 * 2.0) + _t37 * _t34 * 2.0)) * _t22 * 0.5 * _t30;
-    const double _t49 = _t34 * _t34 * 2.0;
-    const double _t50 = (_t41) ? _t14 - _t29 * (_t42 * (_t31 * _t43 * 2.0 + _t48 * _t39 * 2.0 - 2.0 * ((_t33 + _t30 * (0.5 * (_t22 * (_t44 + (_t9 * _t8 * 2.0 + _t33 * _t33 * 2.0) + _t49 - _t17 * _t19 * 2.0 - _t15 * 2.0 - _t35 * _t35 * 2.0)))) * _t36)) * 0.5) : _t14;
-    const double _t51 = (_t41) ? _t29 * ((((_t9 * _t4 * 2.0 + _t20 * 2.0 + 2.0 * (_t14 * _t11) - _t37 * _t37 * 2.0 - _t49 - _t45 + _t38 * _t38 * 2.0) * _t22 * 0.5 * _t30 - _t37) * _t39 * 2.0 + _t36 * _t48 * 2.0 - _t31 * _t46 * 2.0) * _t42 * 0.5) - _t19 : -_t19;
+    const double _t42 = _t27 + _t22 * (_t34 * _t27 + _t25 * _t27 + _t9 * _t17 + _t19 * _t4 + _t32 * _t26 - _t35 * _t28) * _t30;
+    const double _t43 = _t22 * (_t38 * _t28 + (_t32 * _t27 + _t25 * _t26 + _t15 * _t18 + _t37 * _t26 - _t12 * _t19)) * _t30 + _t26;
+    const double _t44 = _t27 * _t27;
+    const double _t45 = _t26 * _t26;
+    const double _t46 = 1.0 / _t40;
+    const double _t47 = (_t41) ? _t29 * ((_t36 * _t42 + _t43 * _t39 - _t31 * (_t22 * (_t25 * _t25 + (_t44 + _t45) - _t15 * _t12 - _t20 - _t9 * _t4 - _t28 * _t28) * _t30 + _t25)) * _t46) - _t19 : -_t19;
+    const double _t48 = _t32 - _t22 * (_t15 * _t8 + _t9 * _t14 - _t32 * _t34 - _t27 * _t26 - _t32 * _t37 - _t38 * _t35) * _t30;
+    const double _t49 = _t32 * _t32;
+    const double _t50 = (_t41) ? _t29 * ((_t48 * _t36 - (_t22 * (_t38 * _t38 - (_t49 + _t9 * _t8 + _t45 + _t18 * _t19 + _t37 * _t37 - _t16)) * _t30 - _t37) * _t39 - _t43 * _t31) * _t46) - _t15 : -_t15;
+    const double _t51 = (_t41) ? _t9 + _t29 * (((_t34 + _t22 * (_t34 * _t34 + (_t44 + _t49) + _t15 * _t14 - _t17 * _t19 - _t10 - _t35 * _t35) * _t30) * _t36 + _t48 * _t39 - _t31 * _t42) * _t46) : _t9;
     const double _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
     const int _t53 = _t52 > 0.0;
     const int _t54 = _t52 <= 1.0e+30;
     const double _t55 = 1.0 / sqrt(_t52);
     const double _t56 = (_t21 > 0.0) ? _t22 : 0.0;
     const double _t57 = -(_t56 * _t19);
-    const double _t58 = -(_t9 * _t56);
-    const double _t59 = _t14 * _t56;
-    n[0] = (_t53) ? ((_t54) ? _t51 * _t55 : _t57) : _t57;
-    n[1] = (_t53) ? ((_t54) ? _t55 * _t47 : _t58) : _t58;
-    n[2] = (_t53) ? ((_t54) ? _t55 * _t50 : _t59) : _t59;
+    const double _t58 = -(_t15 * _t56);
+    const double _t59 = _t9 * _t56;
+    n[0] = (_t53) ? ((_t54) ? _t55 * _t47 : _t57) : _t57;
+    n[1] = (_t53) ? ((_t54) ? _t55 * _t50 : _t58) : _t58;
+    n[2] = (_t53) ? ((_t54) ? _t51 * _t55 : _t59) : _t59;
 }
 
 /* F, the field; the surface is F = 0.
@@ -220,7 +220,7 @@ static inline float gyroid_o2_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 86
+ * Total ops: 74
  */
 static inline float gyroid_o2_offsetf(float x, float y, float z, float h)
 {
@@ -238,23 +238,23 @@ static inline float gyroid_o2_offsetf(float x, float y, float z, float h)
     const float _t11 = sinf(_t6);
     const float _t12 = _t10 * _t11;
     const float _t13 = 6.28318548f * h;
-    const float _t14 = _t3 * _t11 - _t1 * _t10;
-    const float _t15 = _t1 * _t7 - _t5 * _t3;
+    const float _t14 = _t1 * _t7 - _t5 * _t3;
+    const float _t15 = _t3 * _t11 - _t1 * _t10;
     const float _t16 = _t5 * _t11 - _t10 * _t7;
-    const float _t17 = 1.0f / sqrtf(_t15 * _t15 + _t14 * _t14 + _t16 * _t16);
+    const float _t17 = 1.0f / sqrtf(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
     const float _t18 = _t3 * _t7;
-    const float _t19 = _t5 * _t10;
+    const float _t19 = _t1 * _t11;
     const float _t20 = _t13 * 0.5f;
-    const float _t21 = _t14 + _t17 * (2.0f * (_t14 * (_t4 + _t12)) + _t18 * _t16 * 2.0f - _t15 * _t19 * 2.0f) * 0.5f * _t20;
-    const float _t22 = _t1 * _t11;
-    const float _t23 = _t15 + _t17 * (_t15 * _t9 * 2.0f - _t22 * _t16 * 2.0f - _t19 * _t14 * 2.0f) * 0.5f * _t20;
-    const float _t24 = _t17 * (_t14 * _t18 * 2.0f + (_t8 + _t12) * _t16 * 2.0f - _t15 * _t22 * 2.0f) * 0.5f * _t20 + _t16;
-    const float _t25 = sqrtf(_t21 * _t21 + (_t23 * _t23 + _t24 * _t24));
+    const float _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
+    const float _t22 = _t5 * _t10;
+    const float _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
+    const float _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
+    const float _t25 = sqrtf(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
     return _t9 + _t12 - _t13 * ((fabsf(_t25) <= 1.73205256f) ? _t25 : ((_t25 > 0.0f) ? 1.73205256f : (-1.73205256f)));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 104
+ * Total ops: 92
  */
 static inline float gyroid_o2_shellf(float x, float y, float z, float t)
 {
@@ -272,97 +272,97 @@ static inline float gyroid_o2_shellf(float x, float y, float z, float t)
     const float _t11 = sinf(_t6);
     const float _t12 = _t10 * _t11;
     const float _t13 = _t9 + _t12;
-    const float _t14 = 6.28318548f * (t * 0.5f);
-    const float _t15 = _t1 * _t7 - _t5 * _t3;
-    const float _t16 = _t3 * _t11 - _t1 * _t10;
-    const float _t17 = _t5 * _t11 - _t10 * _t7;
-    const float _t18 = 1.0f / sqrtf(_t15 * _t15 + _t16 * _t16 + _t17 * _t17);
-    const float _t19 = _t1 * _t11;
+    const float _t14 = _t3 * _t11 - _t1 * _t10;
+    const float _t15 = 6.28318548f * (t * 0.5f);
+    const float _t16 = _t15 * 0.5f;
+    const float _t17 = _t1 * _t7 - _t5 * _t3;
+    const float _t18 = _t5 * _t11 - _t10 * _t7;
+    const float _t19 = 1.0f / sqrtf(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
     const float _t20 = _t5 * _t10;
-    const float _t21 = _t14 * 0.5f;
-    const float _t22 = _t18 * (_t15 * _t9 * 2.0f - _t19 * _t17 * 2.0f - _t20 * _t16 * 2.0f) * 0.5f * _t21;
-    const float _t23 = _t15 - _t22;
-    const float _t24 = _t3 * _t7;
-    const float _t25 = _t21 * (_t18 * (_t16 * _t24 * 2.0f + (_t8 + _t12) * _t17 * 2.0f - _t15 * _t19 * 2.0f) * 0.5f);
-    const float _t26 = _t25 - _t17;
-    const float _t27 = _t21 * (_t18 * (2.0f * (_t16 * (_t4 + _t12)) + _t24 * _t17 * 2.0f - _t15 * _t20 * 2.0f) * 0.5f);
-    const float _t28 = _t16 - _t27;
+    const float _t21 = _t3 * _t7;
+    const float _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
+    const float _t23 = _t14 - _t22;
+    const float _t24 = _t1 * _t11;
+    const float _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
+    const float _t26 = _t25 + _t18;
+    const float _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
+    const float _t28 = _t17 - _t27;
     const float _t29 = sqrtf(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-    const float _t30 = _t16 + _t27;
-    const float _t31 = _t25 + _t17;
-    const float _t32 = _t15 + _t22;
+    const float _t30 = _t25 - _t18;
+    const float _t31 = _t17 + _t27;
+    const float _t32 = _t14 + _t22;
     const float _t33 = sqrtf(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-    return (_t13 + _t14 * ((fabsf(_t29) <= 1.73205256f) ? _t29 : ((_t29 > 0.0f) ? 1.73205256f : (-1.73205256f)))) * (_t13 - _t14 * ((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f))));
+    return (_t13 - ((fabsf(_t29) <= 1.73205256f) ? _t29 : ((_t29 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t15) * (((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t15 + _t13);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 273
+ * Total ops: 207
  */
 static inline void gyroid_o2_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = 6.28318548f * y;
-    const float _t1 = sinf(_t0);
+    const float _t0 = z * 6.28318548f;
+    const float _t1 = cosf(_t0);
     const float _t2 = 6.28318548f * x;
-    const float _t3 = sinf(_t2);
+    const float _t3 = cosf(_t2);
     const float _t4 = _t1 * _t3;
-    const float _t5 = z * 6.28318548f;
-    const float _t6 = cosf(_t5);
-    const float _t7 = cosf(_t0);
-    const float _t8 = _t6 * _t7;
+    const float _t5 = sinf(_t0);
+    const float _t6 = 6.28318548f * y;
+    const float _t7 = sinf(_t6);
+    const float _t8 = _t5 * _t7;
     const float _t9 = _t4 - _t8;
-    const float _t10 = cosf(_t2);
-    const float _t11 = _t6 * _t10;
-    const float _t12 = sinf(_t5);
-    const float _t13 = _t12 * _t1;
-    const float _t14 = _t11 - _t13;
-    const float _t15 = _t14 * _t14;
-    const float _t16 = _t9 * _t9;
-    const float _t17 = _t12 * _t3;
-    const float _t18 = _t7 * _t10;
+    const float _t10 = _t9 * _t9;
+    const float _t11 = sinf(_t2);
+    const float _t12 = _t7 * _t11;
+    const float _t13 = cosf(_t6);
+    const float _t14 = _t1 * _t13;
+    const float _t15 = _t12 - _t14;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t5 * _t11;
+    const float _t18 = _t13 * _t3;
     const float _t19 = _t17 - _t18;
     const float _t20 = _t19 * _t19;
-    const float _t21 = _t15 + _t16 + _t20;
+    const float _t21 = _t10 + _t16 + _t20;
     const float _t22 = 1.0f / sqrtf(_t21);
-    const float _t23 = _t6 * _t1;
-    const float _t24 = _t7 * _t3;
+    const float _t23 = _t5 * _t3;
+    const float _t24 = _t13 * _t11;
     const float _t25 = _t23 + _t24;
-    const float _t26 = _t1 * _t10;
-    const float _t27 = _t12 * _t7;
-    const float _t28 = _t22 * (2.0f * (_t9 * _t25) + _t26 * _t19 * 2.0f - _t14 * _t27 * 2.0f) * 0.5f;
+    const float _t26 = _t7 * _t3;
+    const float _t27 = _t1 * _t11;
+    const float _t28 = _t22 * (_t25 * _t19 + _t15 * _t26 - _t9 * _t27);
     const float _t29 = 6.28318548f * h;
     const float _t30 = _t29 * 0.5f;
-    const float _t31 = _t9 + _t28 * _t30;
-    const float _t32 = _t12 * _t10;
-    const float _t33 = _t23 + _t32;
-    const float _t34 = _t6 * _t3;
-    const float _t35 = _t22 * (_t14 * _t33 * 2.0f - _t34 * _t19 * 2.0f - _t27 * _t9 * 2.0f) * 0.5f;
-    const float _t36 = _t14 + _t35 * _t30;
-    const float _t37 = _t32 + _t24;
-    const float _t38 = _t22 * (_t9 * _t26 * 2.0f + _t37 * _t19 * 2.0f - _t14 * _t34 * 2.0f) * 0.5f;
-    const float _t39 = _t38 * _t30 + _t19;
-    const float _t40 = sqrtf(_t31 * _t31 + (_t36 * _t36 + _t39 * _t39));
+    const float _t31 = _t28 * _t30 + _t19;
+    const float _t32 = _t5 * _t13;
+    const float _t33 = _t1 * _t7;
+    const float _t34 = _t33 + _t23;
+    const float _t35 = _t22 * (_t32 * _t15 + _t27 * _t19 - _t9 * _t34);
+    const float _t36 = _t9 - _t35 * _t30;
+    const float _t37 = _t33 + _t24;
+    const float _t38 = _t22 * (_t9 * _t32 - _t26 * _t19 - _t15 * _t37);
+    const float _t39 = _t38 * _t30 - _t15;
+    const float _t40 = sqrtf(_t31 * _t31 + _t36 * _t36 + _t39 * _t39);
     const int _t41 = fabsf(_t40) <= 1.73205256f;
-    const float _t42 = 1.0f / _t40;
-    const float _t43 = _t22 * (_t35 * _t28 * 2.0f + (_t27 * _t25 * 2.0f + _t34 * _t26 * 2.0f + _t27 * _t33 * 2.0f - _t14 * _t8 * 2.0f - _t9 * _t13 * 2.0f)) * 0.5f * _t30 + _t27;
-    const float _t44 = _t27 * _t27 * 2.0f;
-    const float _t45 = _t26 * _t26 * 2.0f;
-    const float _t46 = _t22 * (_t25 * _t26 * 2.0f + _t9 * _t18 * 2.0f + _t37 * _t26 * 2.0f + _t27 * _t34 * 2.0f - _t4 * _t19 * 2.0f - _t38 * _t28 * 2.0f) * 0.5f * _t30 + _t26;
-    const float _t47 = (_t41) ? _t29 * (_t42 * (_t36 * _t43 * 2.0f - _t31 * (_t25 + (_t44 + _t18 * _t19 * 2.0f + _t14 * _t13 * 2.0f + _t25 * _t25 * 2.0f + _t45 - _t16 * 2.0f - _t28 * _t28 * 2.0f) * _t22 * 0.5f * _t30) * 2.0f - _t46 * _t39 * 2.0f) * 0.5f) - _t9 : -_t9;
-    const float _t48 = _t34 + (_t35 * _t38 * 2.0f + (_t19 * _t11 * 2.0f + (_t14 * _t17 * 2.0f + _t33 * _t34 * 2.0f + _t27 * _t26 * 2.0f) + _t37 * _t34 * 2.0f)) * _t22 * 0.5f * _t30;
-    const float _t49 = _t34 * _t34 * 2.0f;
-    const float _t50 = (_t41) ? _t14 - _t29 * (_t42 * (_t31 * _t43 * 2.0f + _t48 * _t39 * 2.0f - 2.0f * ((_t33 + _t30 * (0.5f * (_t22 * (_t44 + (_t9 * _t8 * 2.0f + _t33 * _t33 * 2.0f) + _t49 - _t17 * _t19 * 2.0f - _t15 * 2.0f - _t35 * _t35 * 2.0f)))) * _t36)) * 0.5f) : _t14;
-    const float _t51 = (_t41) ? _t29 * ((((_t9 * _t4 * 2.0f + _t20 * 2.0f + 2.0f * (_t14 * _t11) - _t37 * _t37 * 2.0f - _t49 - _t45 + _t38 * _t38 * 2.0f) * _t22 * 0.5f * _t30 - _t37) * _t39 * 2.0f + _t36 * _t48 * 2.0f - _t31 * _t46 * 2.0f) * _t42 * 0.5f) - _t19 : -_t19;
+    const float _t42 = _t27 + _t22 * (_t34 * _t27 + _t25 * _t27 + _t9 * _t17 + _t19 * _t4 + _t32 * _t26 - _t35 * _t28) * _t30;
+    const float _t43 = _t22 * (_t38 * _t28 + (_t32 * _t27 + _t25 * _t26 + _t15 * _t18 + _t37 * _t26 - _t12 * _t19)) * _t30 + _t26;
+    const float _t44 = _t27 * _t27;
+    const float _t45 = _t26 * _t26;
+    const float _t46 = 1.0f / _t40;
+    const float _t47 = (_t41) ? _t29 * ((_t36 * _t42 + _t43 * _t39 - _t31 * (_t22 * (_t25 * _t25 + (_t44 + _t45) - _t15 * _t12 - _t20 - _t9 * _t4 - _t28 * _t28) * _t30 + _t25)) * _t46) - _t19 : -_t19;
+    const float _t48 = _t32 - _t22 * (_t15 * _t8 + _t9 * _t14 - _t32 * _t34 - _t27 * _t26 - _t32 * _t37 - _t38 * _t35) * _t30;
+    const float _t49 = _t32 * _t32;
+    const float _t50 = (_t41) ? _t29 * ((_t48 * _t36 - (_t22 * (_t38 * _t38 - (_t49 + _t9 * _t8 + _t45 + _t18 * _t19 + _t37 * _t37 - _t16)) * _t30 - _t37) * _t39 - _t43 * _t31) * _t46) - _t15 : -_t15;
+    const float _t51 = (_t41) ? _t9 + _t29 * (((_t34 + _t22 * (_t34 * _t34 + (_t44 + _t49) + _t15 * _t14 - _t17 * _t19 - _t10 - _t35 * _t35) * _t30) * _t36 + _t48 * _t39 - _t31 * _t42) * _t46) : _t9;
     const float _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
     const int _t53 = _t52 > 0.0f;
     const int _t54 = _t52 <= 1.00000002e+30f;
     const float _t55 = 1.0f / sqrtf(_t52);
     const float _t56 = (_t21 > 0.0f) ? _t22 : 0.0f;
     const float _t57 = -(_t56 * _t19);
-    const float _t58 = -(_t9 * _t56);
-    const float _t59 = _t14 * _t56;
-    n[0] = (_t53) ? ((_t54) ? _t51 * _t55 : _t57) : _t57;
-    n[1] = (_t53) ? ((_t54) ? _t55 * _t47 : _t58) : _t58;
-    n[2] = (_t53) ? ((_t54) ? _t55 * _t50 : _t59) : _t59;
+    const float _t58 = -(_t15 * _t56);
+    const float _t59 = _t9 * _t56;
+    n[0] = (_t53) ? ((_t54) ? _t55 * _t47 : _t57) : _t57;
+    n[1] = (_t53) ? ((_t54) ? _t55 * _t50 : _t58) : _t58;
+    n[2] = (_t53) ? ((_t54) ? _t51 * _t55 : _t59) : _t59;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -481,18 +481,18 @@ static inline void gyroid_o2_offset_n(size_t n, const double *x, const double *y
         const double _t11 = offsetgen_batch_sin(_t6);
         const double _t12 = _t10 * _t11;
         const double _t13 = 6.2831853071795862 * h[i];
-        const double _t14 = _t3 * _t11 - _t1 * _t10;
-        const double _t15 = _t1 * _t7 - _t5 * _t3;
+        const double _t14 = _t1 * _t7 - _t5 * _t3;
+        const double _t15 = _t3 * _t11 - _t1 * _t10;
         const double _t16 = _t5 * _t11 - _t10 * _t7;
-        const double _t17 = 1.0 / sqrt(_t15 * _t15 + _t14 * _t14 + _t16 * _t16);
+        const double _t17 = 1.0 / sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
         const double _t18 = _t3 * _t7;
-        const double _t19 = _t5 * _t10;
+        const double _t19 = _t1 * _t11;
         const double _t20 = _t13 * 0.5;
-        const double _t21 = _t14 + _t17 * (2.0 * (_t14 * (_t4 + _t12)) + _t18 * _t16 * 2.0 - _t15 * _t19 * 2.0) * 0.5 * _t20;
-        const double _t22 = _t1 * _t11;
-        const double _t23 = _t15 + _t17 * (_t15 * _t9 * 2.0 - _t22 * _t16 * 2.0 - _t19 * _t14 * 2.0) * 0.5 * _t20;
-        const double _t24 = _t17 * (_t14 * _t18 * 2.0 + (_t8 + _t12) * _t16 * 2.0 - _t15 * _t22 * 2.0) * 0.5 * _t20 + _t16;
-        const double _t25 = sqrt(_t21 * _t21 + (_t23 * _t23 + _t24 * _t24));
+        const double _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
+        const double _t22 = _t5 * _t10;
+        const double _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
+        const double _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
+        const double _t25 = sqrt(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
         out[i] = _t9 + _t12 - _t13 * ((fabs(_t25) <= 1.7320525396196846) ? _t25 : ((_t25 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
     }
     for (i = 0; i < n; ++i) {
@@ -522,27 +522,27 @@ static inline void gyroid_o2_shell_n(size_t n, const double *x, const double *y,
         const double _t11 = offsetgen_batch_sin(_t6);
         const double _t12 = _t10 * _t11;
         const double _t13 = _t9 + _t12;
-        const double _t14 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t15 = _t1 * _t7 - _t5 * _t3;
-        const double _t16 = _t3 * _t11 - _t1 * _t10;
-        const double _t17 = _t5 * _t11 - _t10 * _t7;
-        const double _t18 = 1.0 / sqrt(_t15 * _t15 + _t16 * _t16 + _t17 * _t17);
-        const double _t19 = _t1 * _t11;
+        const double _t14 = _t3 * _t11 - _t1 * _t10;
+        const double _t15 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t16 = _t15 * 0.5;
+        const double _t17 = _t1 * _t7 - _t5 * _t3;
+        const double _t18 = _t5 * _t11 - _t10 * _t7;
+        const double _t19 = 1.0 / sqrt(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
         const double _t20 = _t5 * _t10;
-        const double _t21 = _t14 * 0.5;
-        const double _t22 = _t18 * (_t15 * _t9 * 2.0 - _t19 * _t17 * 2.0 - _t20 * _t16 * 2.0) * 0.5 * _t21;
-        const double _t23 = _t15 - _t22;
-        const double _t24 = _t3 * _t7;
-        const double _t25 = _t21 * (_t18 * (_t16 * _t24 * 2.0 + (_t8 + _t12) * _t17 * 2.0 - _t15 * _t19 * 2.0) * 0.5);
-        const double _t26 = _t25 - _t17;
-        const double _t27 = _t21 * (_t18 * (2.0 * (_t16 * (_t4 + _t12)) + _t24 * _t17 * 2.0 - _t15 * _t20 * 2.0) * 0.5);
-        const double _t28 = _t16 - _t27;
+        const double _t21 = _t3 * _t7;
+        const double _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
+        const double _t23 = _t14 - _t22;
+        const double _t24 = _t1 * _t11;
+        const double _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
+        const double _t26 = _t25 + _t18;
+        const double _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
+        const double _t28 = _t17 - _t27;
         const double _t29 = sqrt(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-        const double _t30 = _t16 + _t27;
-        const double _t31 = _t25 + _t17;
-        const double _t32 = _t15 + _t22;
+        const double _t30 = _t25 - _t18;
+        const double _t31 = _t17 + _t27;
+        const double _t32 = _t14 + _t22;
         const double _t33 = sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-        out[i] = (_t13 + _t14 * ((fabs(_t29) <= 1.7320525396196846) ? _t29 : ((_t29 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)))) * (_t13 - _t14 * ((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))));
+        out[i] = (_t13 - ((fabs(_t29) <= 1.7320525396196846) ? _t29 : ((_t29 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t15) * (((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t15 + _t13);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = gyroid_o2_shell(x[i], y[i], z[i], t[i]);
@@ -571,18 +571,18 @@ static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y,
         const float _t11 = offsetgen_batch_sinf(_t6);
         const float _t12 = _t10 * _t11;
         const float _t13 = 6.28318548f * h[i];
-        const float _t14 = _t3 * _t11 - _t1 * _t10;
-        const float _t15 = _t1 * _t7 - _t5 * _t3;
+        const float _t14 = _t1 * _t7 - _t5 * _t3;
+        const float _t15 = _t3 * _t11 - _t1 * _t10;
         const float _t16 = _t5 * _t11 - _t10 * _t7;
-        const float _t17 = 1.0f / sqrtf(_t15 * _t15 + _t14 * _t14 + _t16 * _t16);
+        const float _t17 = 1.0f / sqrtf(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
         const float _t18 = _t3 * _t7;
-        const float _t19 = _t5 * _t10;
+        const float _t19 = _t1 * _t11;
         const float _t20 = _t13 * 0.5f;
-        const float _t21 = _t14 + _t17 * (2.0f * (_t14 * (_t4 + _t12)) + _t18 * _t16 * 2.0f - _t15 * _t19 * 2.0f) * 0.5f * _t20;
-        const float _t22 = _t1 * _t11;
-        const float _t23 = _t15 + _t17 * (_t15 * _t9 * 2.0f - _t22 * _t16 * 2.0f - _t19 * _t14 * 2.0f) * 0.5f * _t20;
-        const float _t24 = _t17 * (_t14 * _t18 * 2.0f + (_t8 + _t12) * _t16 * 2.0f - _t15 * _t22 * 2.0f) * 0.5f * _t20 + _t16;
-        const float _t25 = sqrtf(_t21 * _t21 + (_t23 * _t23 + _t24 * _t24));
+        const float _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
+        const float _t22 = _t5 * _t10;
+        const float _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
+        const float _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
+        const float _t25 = sqrtf(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
         out[i] = _t9 + _t12 - _t13 * ((fabsf(_t25) <= 1.73205256f) ? _t25 : ((_t25 > 0.0f) ? 1.73205256f : (-1.73205256f)));
     }
     for (i = 0; i < n; ++i) {
@@ -612,27 +612,27 @@ static inline void gyroid_o2_shellf_n(size_t n, const float *x, const float *y, 
         const float _t11 = offsetgen_batch_sinf(_t6);
         const float _t12 = _t10 * _t11;
         const float _t13 = _t9 + _t12;
-        const float _t14 = 6.28318548f * (t[i] * 0.5f);
-        const float _t15 = _t1 * _t7 - _t5 * _t3;
-        const float _t16 = _t3 * _t11 - _t1 * _t10;
-        const float _t17 = _t5 * _t11 - _t10 * _t7;
-        const float _t18 = 1.0f / sqrtf(_t15 * _t15 + _t16 * _t16 + _t17 * _t17);
-        const float _t19 = _t1 * _t11;
+        const float _t14 = _t3 * _t11 - _t1 * _t10;
+        const float _t15 = 6.28318548f * (t[i] * 0.5f);
+        const float _t16 = _t15 * 0.5f;
+        const float _t17 = _t1 * _t7 - _t5 * _t3;
+        const float _t18 = _t5 * _t11 - _t10 * _t7;
+        const float _t19 = 1.0f / sqrtf(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
         const float _t20 = _t5 * _t10;
-        const float _t21 = _t14 * 0.5f;
-        const float _t22 = _t18 * (_t15 * _t9 * 2.0f - _t19 * _t17 * 2.0f - _t20 * _t16 * 2.0f) * 0.5f * _t21;
-        const float _t23 = _t15 - _t22;
-        const float _t24 = _t3 * _t7;
-        const float _t25 = _t21 * (_t18 * (_t16 * _t24 * 2.0f + (_t8 + _t12) * _t17 * 2.0f - _t15 * _t19 * 2.0f) * 0.5f);
-        const float _t26 = _t25 - _t17;
-        const float _t27 = _t21 * (_t18 * (2.0f * (_t16 * (_t4 + _t12)) + _t24 * _t17 * 2.0f - _t15 * _t20 * 2.0f) * 0.5f);
-        const float _t28 = _t16 - _t27;
+        const float _t21 = _t3 * _t7;
+        const float _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
+        const float _t23 = _t14 - _t22;
+        const float _t24 = _t1 * _t11;
+        const float _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
+        const float _t26 = _t25 + _t18;
+        const float _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
+        const float _t28 = _t17 - _t27;
         const float _t29 = sqrtf(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-        const float _t30 = _t16 + _t27;
-        const float _t31 = _t25 + _t17;
-        const float _t32 = _t15 + _t22;
+        const float _t30 = _t25 - _t18;
+        const float _t31 = _t17 + _t27;
+        const float _t32 = _t14 + _t22;
         const float _t33 = sqrtf(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-        out[i] = (_t13 + _t14 * ((fabsf(_t29) <= 1.73205256f) ? _t29 : ((_t29 > 0.0f) ? 1.73205256f : (-1.73205256f)))) * (_t13 - _t14 * ((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f))));
+        out[i] = (_t13 - ((fabsf(_t29) <= 1.73205256f) ? _t29 : ((_t29 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t15) * (((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t15 + _t13);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o2_shellf(x[i], y[i], z[i], t[i]);

@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 15
     - offset: 46
     - shell: 49
-    - normal: 119
+    - normal: 105
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":46,"shell":49,"normal":119}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":46,"shell":49,"normal":105}} */
 #ifndef OFFSETGEN_NEOVIUS_O1_GLSL
 #define OFFSETGEN_NEOVIUS_O1_GLSL
 
@@ -89,7 +89,7 @@ highp float neovius_o1_shell(highp vec3 p, highp float t)
     return (_t14 + _t15) * (_t15 - _t14);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 119.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 105.
 highp vec3 neovius_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -111,23 +111,23 @@ highp vec3 neovius_o1_normal(highp vec3 p, highp float h)
     highp float _t16 = sqrt(_t15);
     bool _t17 = abs(_t16) <= 7.00000715;
     highp float _t18 = 6.28318548 * h;
-    highp float _t19 = _t13 * _t6 * 4.0;
-    highp float _t20 = 4.0 * (_t10 * _t12);
-    highp float _t21 = 4.0 * (_t4 * _t12);
-    highp float _t22 = 1.0 / _t16;
-    highp float _t23 = (_t17) ? -(_t18 * (((_t19 + 3.0 * _t6) * _t14 * 2.0 - _t11 * _t20 * 2.0 - _t21 * _t7 * 2.0) * _t22 * 0.5) + _t14) : -_t14;
-    highp float _t24 = 4.0 * (_t6 * (_t8 * _t3));
-    highp float _t25 = (_t17) ? -(_t11 + _t18 * (_t22 * (_t11 * (_t19 + _t1 * 3.0) * 2.0 - _t7 * _t24 * 2.0 - _t20 * _t14 * 2.0) * 0.5)) : -_t11;
-    highp float _t26 = (_t17) ? _t18 * ((_t11 * _t24 * 2.0 + _t21 * _t14 * 2.0 - _t7 * (_t19 + _t9 * 3.0) * 2.0) * _t22 * 0.5) - _t7 : -_t7;
+    highp float _t19 = 1.0 / _t16;
+    highp float _t20 = 4.0 * (_t6 * (_t8 * _t3));
+    highp float _t21 = 4.0 * (_t10 * _t12);
+    highp float _t22 = _t13 * _t6 * 4.0;
+    highp float _t23 = (_t17) ? _t18 * (_t19 * (_t7 * _t20 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0))) - _t11 : -_t11;
+    highp float _t24 = 4.0 * (_t4 * _t12);
+    highp float _t25 = (_t17) ? _t18 * ((_t24 * _t7 + _t11 * _t21 - (_t22 + 3.0 * _t6) * _t14) * _t19) - _t14 : -_t14;
+    highp float _t26 = (_t17) ? _t18 * (_t19 * (_t11 * _t20 + _t24 * _t14 - _t7 * (_t22 + _t9 * 3.0))) - _t7 : -_t7;
     highp float _t27 = _t23 * _t23 + _t25 * _t25 + _t26 * _t26;
     bool _t28 = _t27 > 0.0;
     bool _t29 = _t27 <= 1.00000002e+30;
     highp float _t30 = 1.0 / sqrt(_t27);
-    highp float _t31 = (_t15 > 0.0) ? _t22 : 0.0;
+    highp float _t31 = (_t15 > 0.0) ? _t19 : 0.0;
     highp float _t32 = -(_t31 * _t14);
     highp float _t33 = -(_t7 * _t31);
     highp float _t34 = -(_t11 * _t31);
-    return vec3((_t28) ? ((_t29) ? _t30 * _t23 : _t32) : _t32, (_t28) ? ((_t29) ? _t30 * _t26 : _t33) : _t33, (_t28) ? ((_t29) ? _t30 * _t25 : _t34) : _t34);
+    return vec3((_t28) ? ((_t29) ? _t25 * _t30 : _t32) : _t32, (_t28) ? ((_t29) ? _t26 * _t30 : _t33) : _t33, (_t28) ? ((_t29) ? _t30 * _t23 : _t34) : _t34);
 }
 
 

@@ -42,9 +42,9 @@
  *   field    15
  *   offset   46
  *   shell    49
- *   normal   119
+ *   normal   105
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":46,"shell":49,"normal":119}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":46,"shell":49,"normal":105}} */
 #ifndef OFFSETGEN_NEOVIUS_O1_H
 #define OFFSETGEN_NEOVIUS_O1_H
 
@@ -109,7 +109,7 @@ static inline double neovius_o1_shell(double x, double y, double z, double t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 119
+ * Total ops: 105
  */
 static inline void neovius_o1_normal(double x, double y, double z, double h, double n[3])
 {
@@ -132,25 +132,25 @@ static inline void neovius_o1_normal(double x, double y, double z, double h, dou
     const double _t16 = sqrt(_t15);
     const int _t17 = fabs(_t16) <= 7.0000069999999992;
     const double _t18 = 6.2831853071795862 * h;
-    const double _t19 = _t13 * _t6 * 4.0;
-    const double _t20 = 4.0 * (_t10 * _t12);
-    const double _t21 = 4.0 * (_t4 * _t12);
-    const double _t22 = 1.0 / _t16;
-    const double _t23 = (_t17) ? -(_t18 * (((_t19 + 3.0 * _t6) * _t14 * 2.0 - _t11 * _t20 * 2.0 - _t21 * _t7 * 2.0) * _t22 * 0.5) + _t14) : -_t14;
-    const double _t24 = 4.0 * (_t6 * (_t8 * _t3));
-    const double _t25 = (_t17) ? -(_t11 + _t18 * (_t22 * (_t11 * (_t19 + _t1 * 3.0) * 2.0 - _t7 * _t24 * 2.0 - _t20 * _t14 * 2.0) * 0.5)) : -_t11;
-    const double _t26 = (_t17) ? _t18 * ((_t11 * _t24 * 2.0 + _t21 * _t14 * 2.0 - _t7 * (_t19 + _t9 * 3.0) * 2.0) * _t22 * 0.5) - _t7 : -_t7;
+    const double _t19 = 1.0 / _t16;
+    const double _t20 = 4.0 * (_t6 * (_t8 * _t3));
+    const double _t21 = 4.0 * (_t10 * _t12);
+    const double _t22 = _t13 * _t6 * 4.0;
+    const double _t23 = (_t17) ? _t18 * (_t19 * (_t7 * _t20 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0))) - _t11 : -_t11;
+    const double _t24 = 4.0 * (_t4 * _t12);
+    const double _t25 = (_t17) ? _t18 * ((_t24 * _t7 + _t11 * _t21 - (_t22 + 3.0 * _t6) * _t14) * _t19) - _t14 : -_t14;
+    const double _t26 = (_t17) ? _t18 * (_t19 * (_t11 * _t20 + _t24 * _t14 - _t7 * (_t22 + _t9 * 3.0))) - _t7 : -_t7;
     const double _t27 = _t23 * _t23 + _t25 * _t25 + _t26 * _t26;
     const int _t28 = _t27 > 0.0;
     const int _t29 = _t27 <= 1.0e+30;
     const double _t30 = 1.0 / sqrt(_t27);
-    const double _t31 = (_t15 > 0.0) ? _t22 : 0.0;
+    const double _t31 = (_t15 > 0.0) ? _t19 : 0.0;
     const double _t32 = -(_t31 * _t14);
     const double _t33 = -(_t7 * _t31);
     const double _t34 = -(_t11 * _t31);
-    n[0] = (_t28) ? ((_t29) ? _t30 * _t23 : _t32) : _t32;
-    n[1] = (_t28) ? ((_t29) ? _t30 * _t26 : _t33) : _t33;
-    n[2] = (_t28) ? ((_t29) ? _t30 * _t25 : _t34) : _t34;
+    n[0] = (_t28) ? ((_t29) ? _t25 * _t30 : _t32) : _t32;
+    n[1] = (_t28) ? ((_t29) ? _t26 * _t30 : _t33) : _t33;
+    n[2] = (_t28) ? ((_t29) ? _t30 * _t23 : _t34) : _t34;
 }
 
 /* F, the field; the surface is F = 0.
@@ -211,7 +211,7 @@ static inline float neovius_o1_shellf(float x, float y, float z, float t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 119
+ * Total ops: 105
  */
 static inline void neovius_o1_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -234,25 +234,25 @@ static inline void neovius_o1_normalf(float x, float y, float z, float h, float 
     const float _t16 = sqrtf(_t15);
     const int _t17 = fabsf(_t16) <= 7.00000715f;
     const float _t18 = 6.28318548f * h;
-    const float _t19 = _t13 * _t6 * 4.0f;
-    const float _t20 = 4.0f * (_t10 * _t12);
-    const float _t21 = 4.0f * (_t4 * _t12);
-    const float _t22 = 1.0f / _t16;
-    const float _t23 = (_t17) ? -(_t18 * (((_t19 + 3.0f * _t6) * _t14 * 2.0f - _t11 * _t20 * 2.0f - _t21 * _t7 * 2.0f) * _t22 * 0.5f) + _t14) : -_t14;
-    const float _t24 = 4.0f * (_t6 * (_t8 * _t3));
-    const float _t25 = (_t17) ? -(_t11 + _t18 * (_t22 * (_t11 * (_t19 + _t1 * 3.0f) * 2.0f - _t7 * _t24 * 2.0f - _t20 * _t14 * 2.0f) * 0.5f)) : -_t11;
-    const float _t26 = (_t17) ? _t18 * ((_t11 * _t24 * 2.0f + _t21 * _t14 * 2.0f - _t7 * (_t19 + _t9 * 3.0f) * 2.0f) * _t22 * 0.5f) - _t7 : -_t7;
+    const float _t19 = 1.0f / _t16;
+    const float _t20 = 4.0f * (_t6 * (_t8 * _t3));
+    const float _t21 = 4.0f * (_t10 * _t12);
+    const float _t22 = _t13 * _t6 * 4.0f;
+    const float _t23 = (_t17) ? _t18 * (_t19 * (_t7 * _t20 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0f))) - _t11 : -_t11;
+    const float _t24 = 4.0f * (_t4 * _t12);
+    const float _t25 = (_t17) ? _t18 * ((_t24 * _t7 + _t11 * _t21 - (_t22 + 3.0f * _t6) * _t14) * _t19) - _t14 : -_t14;
+    const float _t26 = (_t17) ? _t18 * (_t19 * (_t11 * _t20 + _t24 * _t14 - _t7 * (_t22 + _t9 * 3.0f))) - _t7 : -_t7;
     const float _t27 = _t23 * _t23 + _t25 * _t25 + _t26 * _t26;
     const int _t28 = _t27 > 0.0f;
     const int _t29 = _t27 <= 1.00000002e+30f;
     const float _t30 = 1.0f / sqrtf(_t27);
-    const float _t31 = (_t15 > 0.0f) ? _t22 : 0.0f;
+    const float _t31 = (_t15 > 0.0f) ? _t19 : 0.0f;
     const float _t32 = -(_t31 * _t14);
     const float _t33 = -(_t7 * _t31);
     const float _t34 = -(_t11 * _t31);
-    n[0] = (_t28) ? ((_t29) ? _t30 * _t23 : _t32) : _t32;
-    n[1] = (_t28) ? ((_t29) ? _t30 * _t26 : _t33) : _t33;
-    n[2] = (_t28) ? ((_t29) ? _t30 * _t25 : _t34) : _t34;
+    n[0] = (_t28) ? ((_t29) ? _t25 * _t30 : _t32) : _t32;
+    n[1] = (_t28) ? ((_t29) ? _t26 * _t30 : _t33) : _t33;
+    n[2] = (_t28) ? ((_t29) ? _t30 * _t23 : _t34) : _t34;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------

@@ -31,10 +31,10 @@ total ops after CSE:
     - field: 8
     - offset: 25
     - shell: 28
-    - normal: 72
+    - normal: 66
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":25,"shell":28,"normal":72}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":25,"shell":28,"normal":66}} */
 #ifndef OFFSETGEN_SCHWARZP_O1_GLSL
 #define OFFSETGEN_SCHWARZP_O1_GLSL
 
@@ -72,7 +72,7 @@ highp float schwarzp_o1_shell(highp vec3 p, highp float t)
     return (_t3 - _t8) * (_t3 + _t8);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 72.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 66.
 highp vec3 schwarzp_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.x;
@@ -86,9 +86,9 @@ highp vec3 schwarzp_o1_normal(highp vec3 p, highp float h)
     bool _t8 = abs(_t7) <= 1.73205256;
     highp float _t9 = 6.28318548 * h;
     highp float _t10 = 1.0 / _t7;
-    highp float _t11 = (_t8) ? -(_t9 * (cos(_t4) * _t5 * 2.0 * _t10 * 0.5) + _t5) : -_t5;
-    highp float _t12 = (_t8) ? -(_t3 + _t9 * (cos(_t2) * _t3 * 2.0 * _t10 * 0.5)) : -_t3;
-    highp float _t13 = (_t8) ? -(_t9 * (_t1 * cos(_t0) * 2.0 * _t10 * 0.5) + _t1) : -_t1;
+    highp float _t11 = (_t8) ? -(_t9 * (cos(_t2) * _t3 * _t10) + _t3) : -_t3;
+    highp float _t12 = (_t8) ? -(_t5 + _t9 * (cos(_t4) * _t5 * _t10)) : -_t5;
+    highp float _t13 = (_t8) ? -(_t9 * (_t1 * cos(_t0) * _t10) + _t1) : -_t1;
     highp float _t14 = _t11 * _t11 + _t12 * _t12 + _t13 * _t13;
     bool _t15 = _t14 > 0.0;
     bool _t16 = _t14 <= 1.00000002e+30;
@@ -97,7 +97,7 @@ highp vec3 schwarzp_o1_normal(highp vec3 p, highp float h)
     highp float _t19 = -(_t18 * _t1);
     highp float _t20 = -(_t5 * _t18);
     highp float _t21 = -(_t3 * _t18);
-    return vec3((_t15) ? ((_t16) ? _t17 * _t13 : _t19) : _t19, (_t15) ? ((_t16) ? _t11 * _t17 : _t20) : _t20, (_t15) ? ((_t16) ? _t12 * _t17 : _t21) : _t21);
+    return vec3((_t15) ? ((_t16) ? _t17 * _t13 : _t19) : _t19, (_t15) ? ((_t16) ? _t12 * _t17 : _t20) : _t20, (_t15) ? ((_t16) ? _t17 * _t11 : _t21) : _t21);
 }
 
 

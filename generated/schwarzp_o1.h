@@ -42,9 +42,9 @@
  *   field    8
  *   offset   25
  *   shell    28
- *   normal   72
+ *   normal   66
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":25,"shell":28,"normal":72}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":25,"shell":28,"normal":66}} */
 #ifndef OFFSETGEN_SCHWARZP_O1_H
 #define OFFSETGEN_SCHWARZP_O1_H
 
@@ -92,7 +92,7 @@ static inline double schwarzp_o1_shell(double x, double y, double z, double t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 72
+ * Total ops: 66
  */
 static inline void schwarzp_o1_normal(double x, double y, double z, double h, double n[3])
 {
@@ -107,9 +107,9 @@ static inline void schwarzp_o1_normal(double x, double y, double z, double h, do
     const int _t8 = fabs(_t7) <= 1.7320525396196846;
     const double _t9 = 6.2831853071795862 * h;
     const double _t10 = 1.0 / _t7;
-    const double _t11 = (_t8) ? -(_t9 * (cos(_t4) * _t5 * 2.0 * _t10 * 0.5) + _t5) : -_t5;
-    const double _t12 = (_t8) ? -(_t3 + _t9 * (cos(_t2) * _t3 * 2.0 * _t10 * 0.5)) : -_t3;
-    const double _t13 = (_t8) ? -(_t9 * (_t1 * cos(_t0) * 2.0 * _t10 * 0.5) + _t1) : -_t1;
+    const double _t11 = (_t8) ? -(_t9 * (cos(_t2) * _t3 * _t10) + _t3) : -_t3;
+    const double _t12 = (_t8) ? -(_t5 + _t9 * (cos(_t4) * _t5 * _t10)) : -_t5;
+    const double _t13 = (_t8) ? -(_t9 * (_t1 * cos(_t0) * _t10) + _t1) : -_t1;
     const double _t14 = _t11 * _t11 + _t12 * _t12 + _t13 * _t13;
     const int _t15 = _t14 > 0.0;
     const int _t16 = _t14 <= 1.0e+30;
@@ -119,8 +119,8 @@ static inline void schwarzp_o1_normal(double x, double y, double z, double h, do
     const double _t20 = -(_t5 * _t18);
     const double _t21 = -(_t3 * _t18);
     n[0] = (_t15) ? ((_t16) ? _t17 * _t13 : _t19) : _t19;
-    n[1] = (_t15) ? ((_t16) ? _t11 * _t17 : _t20) : _t20;
-    n[2] = (_t15) ? ((_t16) ? _t12 * _t17 : _t21) : _t21;
+    n[1] = (_t15) ? ((_t16) ? _t12 * _t17 : _t20) : _t20;
+    n[2] = (_t15) ? ((_t16) ? _t17 * _t11 : _t21) : _t21;
 }
 
 /* F, the field; the surface is F = 0.
@@ -164,7 +164,7 @@ static inline float schwarzp_o1_shellf(float x, float y, float z, float t)
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 72
+ * Total ops: 66
  */
 static inline void schwarzp_o1_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -179,9 +179,9 @@ static inline void schwarzp_o1_normalf(float x, float y, float z, float h, float
     const int _t8 = fabsf(_t7) <= 1.73205256f;
     const float _t9 = 6.28318548f * h;
     const float _t10 = 1.0f / _t7;
-    const float _t11 = (_t8) ? -(_t9 * (cosf(_t4) * _t5 * 2.0f * _t10 * 0.5f) + _t5) : -_t5;
-    const float _t12 = (_t8) ? -(_t3 + _t9 * (cosf(_t2) * _t3 * 2.0f * _t10 * 0.5f)) : -_t3;
-    const float _t13 = (_t8) ? -(_t9 * (_t1 * cosf(_t0) * 2.0f * _t10 * 0.5f) + _t1) : -_t1;
+    const float _t11 = (_t8) ? -(_t9 * (cosf(_t2) * _t3 * _t10) + _t3) : -_t3;
+    const float _t12 = (_t8) ? -(_t5 + _t9 * (cosf(_t4) * _t5 * _t10)) : -_t5;
+    const float _t13 = (_t8) ? -(_t9 * (_t1 * cosf(_t0) * _t10) + _t1) : -_t1;
     const float _t14 = _t11 * _t11 + _t12 * _t12 + _t13 * _t13;
     const int _t15 = _t14 > 0.0f;
     const int _t16 = _t14 <= 1.00000002e+30f;
@@ -191,8 +191,8 @@ static inline void schwarzp_o1_normalf(float x, float y, float z, float h, float
     const float _t20 = -(_t5 * _t18);
     const float _t21 = -(_t3 * _t18);
     n[0] = (_t15) ? ((_t16) ? _t17 * _t13 : _t19) : _t19;
-    n[1] = (_t15) ? ((_t16) ? _t11 * _t17 : _t20) : _t20;
-    n[2] = (_t15) ? ((_t16) ? _t12 * _t17 : _t21) : _t21;
+    n[1] = (_t15) ? ((_t16) ? _t12 * _t17 : _t20) : _t20;
+    n[2] = (_t15) ? ((_t16) ? _t17 * _t11 : _t21) : _t21;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------

@@ -29,12 +29,12 @@ safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on th
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 8
-    - offset: 51
-    - shell: 69
-    - normal: 155
+    - offset: 45
+    - shell: 63
+    - normal: 127
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":51,"shell":69,"normal":155}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":45,"shell":63,"normal":127}} */
 #ifndef OFFSETGEN_SCHWARZP_O2_GLSL
 #define OFFSETGEN_SCHWARZP_O2_GLSL
 
@@ -44,7 +44,7 @@ highp float schwarzp_o2_field(highp vec3 p)
     return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 51.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 45.
 highp float schwarzp_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -54,91 +54,91 @@ highp float schwarzp_o2_offset(highp vec3 p, highp float h)
     highp float _t4 = 6.28318548 * p.x;
     highp float _t5 = cos(_t4);
     highp float _t6 = 6.28318548 * h;
-    highp float _t7 = sin(_t4);
-    highp float _t8 = sin(_t0);
-    highp float _t9 = sin(_t2);
-    highp float _t10 = 1.0 / sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+    highp float _t7 = sin(_t2);
+    highp float _t8 = sin(_t4);
+    highp float _t9 = sin(_t0);
+    highp float _t10 = 1.0 / sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
     highp float _t11 = _t6 * 0.5;
-    highp float _t12 = _t7 * _t5 * 2.0 * _t10 * 0.5 * _t11 + _t7;
-    highp float _t13 = _t9 + _t3 * _t9 * 2.0 * _t10 * 0.5 * _t11;
-    highp float _t14 = _t8 + _t1 * _t8 * 2.0 * _t10 * 0.5 * _t11;
-    highp float _t15 = sqrt(_t12 * _t12 + (_t13 * _t13 + _t14 * _t14));
+    highp float _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
+    highp float _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
+    highp float _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
+    highp float _t15 = sqrt(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
     return _t1 + _t3 + _t5 - _t6 * ((abs(_t15) <= 1.73205256) ? _t15 : ((_t15 > 0.0) ? 1.73205256 : (-1.73205256)));
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 69.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 63.
 highp float schwarzp_o2_shell(highp vec3 p, highp float t)
 {
-    highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = cos(_t0);
+    highp float _t0 = 6.28318548 * (t * 0.5);
+    highp float _t1 = _t0 * 0.5;
     highp float _t2 = 6.28318548 * p.y;
     highp float _t3 = cos(_t2);
-    highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = cos(_t4);
-    highp float _t6 = _t1 + _t3 + _t5;
-    highp float _t7 = 6.28318548 * (t * 0.5);
-    highp float _t8 = _t7 * 0.5;
-    highp float _t9 = sin(_t2);
-    highp float _t10 = sin(_t4);
-    highp float _t11 = sin(_t0);
-    highp float _t12 = 1.0 / sqrt(_t10 * _t10 + _t11 * _t11 + _t9 * _t9);
-    highp float _t13 = _t8 * (_t3 * _t9 * 2.0 * _t12 * 0.5);
-    highp float _t14 = _t13 + _t9;
-    highp float _t15 = _t8 * (_t10 * _t5 * 2.0 * _t12 * 0.5);
-    highp float _t16 = _t15 + _t10;
-    highp float _t17 = _t8 * (_t1 * _t11 * 2.0 * _t12 * 0.5);
-    highp float _t18 = _t11 + _t17;
-    highp float _t19 = sqrt(_t14 * _t14 + _t16 * _t16 + _t18 * _t18);
-    highp float _t20 = _t13 - _t9;
-    highp float _t21 = _t11 - _t17;
-    highp float _t22 = _t15 - _t10;
+    highp float _t4 = sin(_t2);
+    highp float _t5 = 6.28318548 * p.x;
+    highp float _t6 = sin(_t5);
+    highp float _t7 = p.z * 6.28318548;
+    highp float _t8 = sin(_t7);
+    highp float _t9 = 1.0 / sqrt(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
+    highp float _t10 = _t1 * (_t3 * _t4 * _t9);
+    highp float _t11 = _t10 - _t4;
+    highp float _t12 = cos(_t5);
+    highp float _t13 = _t6 * _t12 * _t9 * _t1;
+    highp float _t14 = _t13 - _t6;
+    highp float _t15 = cos(_t7);
+    highp float _t16 = _t1 * (_t15 * _t8 * _t9);
+    highp float _t17 = _t8 - _t16;
+    highp float _t18 = sqrt(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
+    highp float _t19 = _t15 + _t3 + _t12;
+    highp float _t20 = _t13 + _t6;
+    highp float _t21 = _t8 + _t16;
+    highp float _t22 = _t10 + _t4;
     highp float _t23 = sqrt(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-    return (_t6 - _t7 * ((abs(_t19) <= 1.73205256) ? _t19 : ((_t19 > 0.0) ? 1.73205256 : (-1.73205256)))) * (((abs(_t23) <= 1.73205256) ? _t23 : ((_t23 > 0.0) ? 1.73205256 : (-1.73205256))) * _t7 + _t6);
+    return (((abs(_t18) <= 1.73205256) ? _t18 : ((_t18 > 0.0) ? 1.73205256 : (-1.73205256))) * _t0 + _t19) * (_t19 - ((abs(_t23) <= 1.73205256) ? _t23 : ((_t23 > 0.0) ? 1.73205256 : (-1.73205256))) * _t0);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 155.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 127.
 highp vec3 schwarzp_o2_normal(highp vec3 p, highp float h)
 {
-    highp float _t0 = 6.28318548 * p.x;
+    highp float _t0 = 6.28318548 * p.y;
     highp float _t1 = sin(_t0);
     highp float _t2 = cos(_t0);
-    highp float _t3 = _t1 * _t1;
-    highp float _t4 = p.z * 6.28318548;
-    highp float _t5 = sin(_t4);
-    highp float _t6 = _t5 * _t5;
-    highp float _t7 = 6.28318548 * p.y;
-    highp float _t8 = sin(_t7);
-    highp float _t9 = _t8 * _t8;
-    highp float _t10 = _t3 + _t6 + _t9;
+    highp float _t3 = 6.28318548 * p.x;
+    highp float _t4 = sin(_t3);
+    highp float _t5 = _t4 * _t4;
+    highp float _t6 = p.z * 6.28318548;
+    highp float _t7 = sin(_t6);
+    highp float _t8 = _t7 * _t7;
+    highp float _t9 = _t1 * _t1;
+    highp float _t10 = _t5 + _t8 + _t9;
     highp float _t11 = 1.0 / sqrt(_t10);
-    highp float _t12 = _t1 * _t2 * 2.0 * _t11 * 0.5;
+    highp float _t12 = _t2 * _t1 * _t11;
     highp float _t13 = 6.28318548 * h;
     highp float _t14 = _t13 * 0.5;
-    highp float _t15 = _t12 * _t14 + _t1;
-    highp float _t16 = cos(_t7);
-    highp float _t17 = _t16 * _t8 * 2.0 * _t11 * 0.5;
-    highp float _t18 = _t8 + _t17 * _t14;
-    highp float _t19 = cos(_t4);
-    highp float _t20 = _t19 * _t5 * 2.0 * _t11 * 0.5;
-    highp float _t21 = _t5 + _t20 * _t14;
-    highp float _t22 = sqrt(_t15 * _t15 + (_t18 * _t18 + _t21 * _t21));
+    highp float _t15 = _t1 + _t12 * _t14;
+    highp float _t16 = cos(_t3);
+    highp float _t17 = _t4 * _t16 * _t11;
+    highp float _t18 = _t17 * _t14 + _t4;
+    highp float _t19 = cos(_t6);
+    highp float _t20 = _t19 * _t7 * _t11;
+    highp float _t21 = _t20 * _t14 + _t7;
+    highp float _t22 = sqrt(_t15 * _t15 + _t18 * _t18 + _t21 * _t21);
     bool _t23 = abs(_t22) <= 1.73205256;
-    highp float _t24 = _t12 * _t20 * _t11 * _t14;
-    highp float _t25 = _t14 * (_t12 * _t17 * _t11);
-    highp float _t26 = 1.0 / _t22;
-    highp float _t27 = (_t23) ? _t13 * ((_t21 * _t24 * 2.0 + _t18 * _t25 * 2.0 - _t15 * ((2.0 * (_t2 * _t2) - _t3 * 2.0 - _t12 * _t12 * 2.0) * _t11 * 0.5 * _t14 + _t2) * 2.0) * _t26 * 0.5) - _t1 : -_t1;
-    highp float _t28 = _t20 * _t17 * _t11 * _t14;
-    highp float _t29 = (_t23) ? _t13 * (0.5 * (_t26 * (_t25 * _t15 * 2.0 + _t21 * _t28 * 2.0 - _t18 * (_t16 + (_t16 * _t16 * 2.0 - _t9 * 2.0 - _t17 * _t17 * 2.0) * _t11 * 0.5 * _t14) * 2.0))) - _t8 : -_t8;
-    highp float _t30 = (_t23) ? _t13 * (_t26 * (_t18 * _t28 * 2.0 + _t15 * _t24 * 2.0 - _t21 * (_t19 - (_t6 * 2.0 - _t19 * _t19 * 2.0 + _t20 * _t20 * 2.0) * _t11 * 0.5 * _t14) * 2.0) * 0.5) - _t5 : -_t5;
-    highp float _t31 = _t27 * _t27 + _t29 * _t29 + _t30 * _t30;
+    highp float _t24 = 1.0 / _t22;
+    highp float _t25 = _t17 * _t12 * _t11 * _t14;
+    highp float _t26 = _t20 * _t12 * _t11 * _t14;
+    highp float _t27 = (_t23) ? -(_t13 * (_t24 * ((_t2 - (_t12 * _t12 - (_t2 * _t2 - _t9)) * _t11 * _t14) * _t15 - _t18 * _t25 - _t21 * _t26)) + _t1) : -_t1;
+    highp float _t28 = _t17 * _t20 * _t11 * _t14;
+    highp float _t29 = (_t23) ? -(_t13 * (_t24 * ((_t19 - (_t20 * _t20 - (_t19 * _t19 - _t8)) * _t11 * _t14) * _t21 - _t18 * _t28 - _t15 * _t26)) + _t7) : -_t7;
+    highp float _t30 = (_t23) ? _t13 * ((_t28 * _t21 + (_t25 * _t15 + _t18 * ((_t5 - _t16 * _t16 + _t17 * _t17) * _t11 * _t14 - _t16))) * _t24) - _t4 : -_t4;
+    highp float _t31 = _t27 * _t27 + (_t29 * _t29 + _t30 * _t30);
     bool _t32 = _t31 > 0.0;
     bool _t33 = _t31 <= 1.00000002e+30;
     highp float _t34 = 1.0 / sqrt(_t31);
     highp float _t35 = (_t10 > 0.0) ? _t11 : 0.0;
-    highp float _t36 = -(_t35 * _t1);
-    highp float _t37 = -(_t8 * _t35);
-    highp float _t38 = -(_t5 * _t35);
-    return vec3((_t32) ? ((_t33) ? _t34 * _t27 : _t36) : _t36, (_t32) ? ((_t33) ? _t29 * _t34 : _t37) : _t37, (_t32) ? ((_t33) ? _t30 * _t34 : _t38) : _t38);
+    highp float _t36 = -(_t35 * _t4);
+    highp float _t37 = -(_t1 * _t35);
+    highp float _t38 = -(_t7 * _t35);
+    return vec3((_t32) ? ((_t33) ? _t34 * _t30 : _t36) : _t36, (_t32) ? ((_t33) ? _t34 * _t27 : _t37) : _t37, (_t32) ? ((_t33) ? _t34 * _t29 : _t38) : _t38);
 }
 
 

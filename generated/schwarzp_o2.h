@@ -40,11 +40,11 @@
  *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   51
- *   shell    69
- *   normal   155
+ *   offset   45
+ *   shell    63
+ *   normal   127
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":51,"shell":69,"normal":155}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":45,"shell":63,"normal":127}} */
 #ifndef OFFSETGEN_SCHWARZP_O2_H
 #define OFFSETGEN_SCHWARZP_O2_H
 
@@ -60,7 +60,7 @@ static inline double schwarzp_o2_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 51
+ * Total ops: 45
  */
 static inline double schwarzp_o2_offset(double x, double y, double z, double h)
 {
@@ -71,97 +71,97 @@ static inline double schwarzp_o2_offset(double x, double y, double z, double h)
     const double _t4 = 6.2831853071795862 * x;
     const double _t5 = cos(_t4);
     const double _t6 = 6.2831853071795862 * h;
-    const double _t7 = sin(_t4);
-    const double _t8 = sin(_t0);
-    const double _t9 = sin(_t2);
-    const double _t10 = 1.0 / sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+    const double _t7 = sin(_t2);
+    const double _t8 = sin(_t4);
+    const double _t9 = sin(_t0);
+    const double _t10 = 1.0 / sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
     const double _t11 = _t6 * 0.5;
-    const double _t12 = _t7 * _t5 * 2.0 * _t10 * 0.5 * _t11 + _t7;
-    const double _t13 = _t9 + _t3 * _t9 * 2.0 * _t10 * 0.5 * _t11;
-    const double _t14 = _t8 + _t1 * _t8 * 2.0 * _t10 * 0.5 * _t11;
-    const double _t15 = sqrt(_t12 * _t12 + (_t13 * _t13 + _t14 * _t14));
+    const double _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
+    const double _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
+    const double _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
+    const double _t15 = sqrt(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
     return _t1 + _t3 + _t5 - _t6 * ((fabs(_t15) <= 1.7320525396196846) ? _t15 : ((_t15 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 69
+ * Total ops: 63
  */
 static inline double schwarzp_o2_shell(double x, double y, double z, double t)
 {
-    const double _t0 = z * 6.2831853071795862;
-    const double _t1 = cos(_t0);
+    const double _t0 = 6.2831853071795862 * (t * 0.5);
+    const double _t1 = _t0 * 0.5;
     const double _t2 = 6.2831853071795862 * y;
     const double _t3 = cos(_t2);
-    const double _t4 = 6.2831853071795862 * x;
-    const double _t5 = cos(_t4);
-    const double _t6 = _t1 + _t3 + _t5;
-    const double _t7 = 6.2831853071795862 * (t * 0.5);
-    const double _t8 = _t7 * 0.5;
-    const double _t9 = sin(_t2);
-    const double _t10 = sin(_t4);
-    const double _t11 = sin(_t0);
-    const double _t12 = 1.0 / sqrt(_t10 * _t10 + _t11 * _t11 + _t9 * _t9);
-    const double _t13 = _t8 * (_t3 * _t9 * 2.0 * _t12 * 0.5);
-    const double _t14 = _t13 + _t9;
-    const double _t15 = _t8 * (_t10 * _t5 * 2.0 * _t12 * 0.5);
-    const double _t16 = _t15 + _t10;
-    const double _t17 = _t8 * (_t1 * _t11 * 2.0 * _t12 * 0.5);
-    const double _t18 = _t11 + _t17;
-    const double _t19 = sqrt(_t14 * _t14 + _t16 * _t16 + _t18 * _t18);
-    const double _t20 = _t13 - _t9;
-    const double _t21 = _t11 - _t17;
-    const double _t22 = _t15 - _t10;
+    const double _t4 = sin(_t2);
+    const double _t5 = 6.2831853071795862 * x;
+    const double _t6 = sin(_t5);
+    const double _t7 = z * 6.2831853071795862;
+    const double _t8 = sin(_t7);
+    const double _t9 = 1.0 / sqrt(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
+    const double _t10 = _t1 * (_t3 * _t4 * _t9);
+    const double _t11 = _t10 - _t4;
+    const double _t12 = cos(_t5);
+    const double _t13 = _t6 * _t12 * _t9 * _t1;
+    const double _t14 = _t13 - _t6;
+    const double _t15 = cos(_t7);
+    const double _t16 = _t1 * (_t15 * _t8 * _t9);
+    const double _t17 = _t8 - _t16;
+    const double _t18 = sqrt(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
+    const double _t19 = _t15 + _t3 + _t12;
+    const double _t20 = _t13 + _t6;
+    const double _t21 = _t8 + _t16;
+    const double _t22 = _t10 + _t4;
     const double _t23 = sqrt(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-    return (_t6 - _t7 * ((fabs(_t19) <= 1.7320525396196846) ? _t19 : ((_t19 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)))) * (((fabs(_t23) <= 1.7320525396196846) ? _t23 : ((_t23 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t7 + _t6);
+    return (((fabs(_t18) <= 1.7320525396196846) ? _t18 : ((_t18 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t0 + _t19) * (_t19 - ((fabs(_t23) <= 1.7320525396196846) ? _t23 : ((_t23 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t0);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 155
+ * Total ops: 127
  */
 static inline void schwarzp_o2_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = 6.2831853071795862 * x;
+    const double _t0 = 6.2831853071795862 * y;
     const double _t1 = sin(_t0);
     const double _t2 = cos(_t0);
-    const double _t3 = _t1 * _t1;
-    const double _t4 = z * 6.2831853071795862;
-    const double _t5 = sin(_t4);
-    const double _t6 = _t5 * _t5;
-    const double _t7 = 6.2831853071795862 * y;
-    const double _t8 = sin(_t7);
-    const double _t9 = _t8 * _t8;
-    const double _t10 = _t3 + _t6 + _t9;
+    const double _t3 = 6.2831853071795862 * x;
+    const double _t4 = sin(_t3);
+    const double _t5 = _t4 * _t4;
+    const double _t6 = z * 6.2831853071795862;
+    const double _t7 = sin(_t6);
+    const double _t8 = _t7 * _t7;
+    const double _t9 = _t1 * _t1;
+    const double _t10 = _t5 + _t8 + _t9;
     const double _t11 = 1.0 / sqrt(_t10);
-    const double _t12 = _t1 * _t2 * 2.0 * _t11 * 0.5;
+    const double _t12 = _t2 * _t1 * _t11;
     const double _t13 = 6.2831853071795862 * h;
     const double _t14 = _t13 * 0.5;
-    const double _t15 = _t12 * _t14 + _t1;
-    const double _t16 = cos(_t7);
-    const double _t17 = _t16 * _t8 * 2.0 * _t11 * 0.5;
-    const double _t18 = _t8 + _t17 * _t14;
-    const double _t19 = cos(_t4);
-    const double _t20 = _t19 * _t5 * 2.0 * _t11 * 0.5;
-    const double _t21 = _t5 + _t20 * _t14;
-    const double _t22 = sqrt(_t15 * _t15 + (_t18 * _t18 + _t21 * _t21));
+    const double _t15 = _t1 + _t12 * _t14;
+    const double _t16 = cos(_t3);
+    const double _t17 = _t4 * _t16 * _t11;
+    const double _t18 = _t17 * _t14 + _t4;
+    const double _t19 = cos(_t6);
+    const double _t20 = _t19 * _t7 * _t11;
+    const double _t21 = _t20 * _t14 + _t7;
+    const double _t22 = sqrt(_t15 * _t15 + _t18 * _t18 + _t21 * _t21);
     const int _t23 = fabs(_t22) <= 1.7320525396196846;
-    const double _t24 = _t12 * _t20 * _t11 * _t14;
-    const double _t25 = _t14 * (_t12 * _t17 * _t11);
-    const double _t26 = 1.0 / _t22;
-    const double _t27 = (_t23) ? _t13 * ((_t21 * _t24 * 2.0 + _t18 * _t25 * 2.0 - _t15 * ((2.0 * (_t2 * _t2) - _t3 * 2.0 - _t12 * _t12 * 2.0) * _t11 * 0.5 * _t14 + _t2) * 2.0) * _t26 * 0.5) - _t1 : -_t1;
-    const double _t28 = _t20 * _t17 * _t11 * _t14;
-    const double _t29 = (_t23) ? _t13 * (0.5 * (_t26 * (_t25 * _t15 * 2.0 + _t21 * _t28 * 2.0 - _t18 * (_t16 + (_t16 * _t16 * 2.0 - _t9 * 2.0 - _t17 * _t17 * 2.0) * _t11 * 0.5 * _t14) * 2.0))) - _t8 : -_t8;
-    const double _t30 = (_t23) ? _t13 * (_t26 * (_t18 * _t28 * 2.0 + _t15 * _t24 * 2.0 - _t21 * (_t19 - (_t6 * 2.0 - _t19 * _t19 * 2.0 + _t20 * _t20 * 2.0) * _t11 * 0.5 * _t14) * 2.0) * 0.5) - _t5 : -_t5;
-    const double _t31 = _t27 * _t27 + _t29 * _t29 + _t30 * _t30;
+    const double _t24 = 1.0 / _t22;
+    const double _t25 = _t17 * _t12 * _t11 * _t14;
+    const double _t26 = _t20 * _t12 * _t11 * _t14;
+    const double _t27 = (_t23) ? -(_t13 * (_t24 * ((_t2 - (_t12 * _t12 - (_t2 * _t2 - _t9)) * _t11 * _t14) * _t15 - _t18 * _t25 - _t21 * _t26)) + _t1) : -_t1;
+    const double _t28 = _t17 * _t20 * _t11 * _t14;
+    const double _t29 = (_t23) ? -(_t13 * (_t24 * ((_t19 - (_t20 * _t20 - (_t19 * _t19 - _t8)) * _t11 * _t14) * _t21 - _t18 * _t28 - _t15 * _t26)) + _t7) : -_t7;
+    const double _t30 = (_t23) ? _t13 * ((_t28 * _t21 + (_t25 * _t15 + _t18 * ((_t5 - _t16 * _t16 + _t17 * _t17) * _t11 * _t14 - _t16))) * _t24) - _t4 : -_t4;
+    const double _t31 = _t27 * _t27 + (_t29 * _t29 + _t30 * _t30);
     const int _t32 = _t31 > 0.0;
     const int _t33 = _t31 <= 1.0e+30;
     const double _t34 = 1.0 / sqrt(_t31);
     const double _t35 = (_t10 > 0.0) ? _t11 : 0.0;
-    const double _t36 = -(_t35 * _t1);
-    const double _t37 = -(_t8 * _t35);
-    const double _t38 = -(_t5 * _t35);
-    n[0] = (_t32) ? ((_t33) ? _t34 * _t27 : _t36) : _t36;
-    n[1] = (_t32) ? ((_t33) ? _t29 * _t34 : _t37) : _t37;
-    n[2] = (_t32) ? ((_t33) ? _t30 * _t34 : _t38) : _t38;
+    const double _t36 = -(_t35 * _t4);
+    const double _t37 = -(_t1 * _t35);
+    const double _t38 = -(_t7 * _t35);
+    n[0] = (_t32) ? ((_t33) ? _t34 * _t30 : _t36) : _t36;
+    n[1] = (_t32) ? ((_t33) ? _t34 * _t27 : _t37) : _t37;
+    n[2] = (_t32) ? ((_t33) ? _t34 * _t29 : _t38) : _t38;
 }
 
 /* F, the field; the surface is F = 0.
@@ -173,7 +173,7 @@ static inline float schwarzp_o2_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 51
+ * Total ops: 45
  */
 static inline float schwarzp_o2_offsetf(float x, float y, float z, float h)
 {
@@ -184,97 +184,97 @@ static inline float schwarzp_o2_offsetf(float x, float y, float z, float h)
     const float _t4 = 6.28318548f * x;
     const float _t5 = cosf(_t4);
     const float _t6 = 6.28318548f * h;
-    const float _t7 = sinf(_t4);
-    const float _t8 = sinf(_t0);
-    const float _t9 = sinf(_t2);
-    const float _t10 = 1.0f / sqrtf(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+    const float _t7 = sinf(_t2);
+    const float _t8 = sinf(_t4);
+    const float _t9 = sinf(_t0);
+    const float _t10 = 1.0f / sqrtf(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
     const float _t11 = _t6 * 0.5f;
-    const float _t12 = _t7 * _t5 * 2.0f * _t10 * 0.5f * _t11 + _t7;
-    const float _t13 = _t9 + _t3 * _t9 * 2.0f * _t10 * 0.5f * _t11;
-    const float _t14 = _t8 + _t1 * _t8 * 2.0f * _t10 * 0.5f * _t11;
-    const float _t15 = sqrtf(_t12 * _t12 + (_t13 * _t13 + _t14 * _t14));
+    const float _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
+    const float _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
+    const float _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
+    const float _t15 = sqrtf(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
     return _t1 + _t3 + _t5 - _t6 * ((fabsf(_t15) <= 1.73205256f) ? _t15 : ((_t15 > 0.0f) ? 1.73205256f : (-1.73205256f)));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 69
+ * Total ops: 63
  */
 static inline float schwarzp_o2_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = z * 6.28318548f;
-    const float _t1 = cosf(_t0);
+    const float _t0 = 6.28318548f * (t * 0.5f);
+    const float _t1 = _t0 * 0.5f;
     const float _t2 = 6.28318548f * y;
     const float _t3 = cosf(_t2);
-    const float _t4 = 6.28318548f * x;
-    const float _t5 = cosf(_t4);
-    const float _t6 = _t1 + _t3 + _t5;
-    const float _t7 = 6.28318548f * (t * 0.5f);
-    const float _t8 = _t7 * 0.5f;
-    const float _t9 = sinf(_t2);
-    const float _t10 = sinf(_t4);
-    const float _t11 = sinf(_t0);
-    const float _t12 = 1.0f / sqrtf(_t10 * _t10 + _t11 * _t11 + _t9 * _t9);
-    const float _t13 = _t8 * (_t3 * _t9 * 2.0f * _t12 * 0.5f);
-    const float _t14 = _t13 + _t9;
-    const float _t15 = _t8 * (_t10 * _t5 * 2.0f * _t12 * 0.5f);
-    const float _t16 = _t15 + _t10;
-    const float _t17 = _t8 * (_t1 * _t11 * 2.0f * _t12 * 0.5f);
-    const float _t18 = _t11 + _t17;
-    const float _t19 = sqrtf(_t14 * _t14 + _t16 * _t16 + _t18 * _t18);
-    const float _t20 = _t13 - _t9;
-    const float _t21 = _t11 - _t17;
-    const float _t22 = _t15 - _t10;
+    const float _t4 = sinf(_t2);
+    const float _t5 = 6.28318548f * x;
+    const float _t6 = sinf(_t5);
+    const float _t7 = z * 6.28318548f;
+    const float _t8 = sinf(_t7);
+    const float _t9 = 1.0f / sqrtf(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
+    const float _t10 = _t1 * (_t3 * _t4 * _t9);
+    const float _t11 = _t10 - _t4;
+    const float _t12 = cosf(_t5);
+    const float _t13 = _t6 * _t12 * _t9 * _t1;
+    const float _t14 = _t13 - _t6;
+    const float _t15 = cosf(_t7);
+    const float _t16 = _t1 * (_t15 * _t8 * _t9);
+    const float _t17 = _t8 - _t16;
+    const float _t18 = sqrtf(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
+    const float _t19 = _t15 + _t3 + _t12;
+    const float _t20 = _t13 + _t6;
+    const float _t21 = _t8 + _t16;
+    const float _t22 = _t10 + _t4;
     const float _t23 = sqrtf(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-    return (_t6 - _t7 * ((fabsf(_t19) <= 1.73205256f) ? _t19 : ((_t19 > 0.0f) ? 1.73205256f : (-1.73205256f)))) * (((fabsf(_t23) <= 1.73205256f) ? _t23 : ((_t23 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t7 + _t6);
+    return (((fabsf(_t18) <= 1.73205256f) ? _t18 : ((_t18 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t0 + _t19) * (_t19 - ((fabsf(_t23) <= 1.73205256f) ? _t23 : ((_t23 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t0);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 155
+ * Total ops: 127
  */
 static inline void schwarzp_o2_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = 6.28318548f * x;
+    const float _t0 = 6.28318548f * y;
     const float _t1 = sinf(_t0);
     const float _t2 = cosf(_t0);
-    const float _t3 = _t1 * _t1;
-    const float _t4 = z * 6.28318548f;
-    const float _t5 = sinf(_t4);
-    const float _t6 = _t5 * _t5;
-    const float _t7 = 6.28318548f * y;
-    const float _t8 = sinf(_t7);
-    const float _t9 = _t8 * _t8;
-    const float _t10 = _t3 + _t6 + _t9;
+    const float _t3 = 6.28318548f * x;
+    const float _t4 = sinf(_t3);
+    const float _t5 = _t4 * _t4;
+    const float _t6 = z * 6.28318548f;
+    const float _t7 = sinf(_t6);
+    const float _t8 = _t7 * _t7;
+    const float _t9 = _t1 * _t1;
+    const float _t10 = _t5 + _t8 + _t9;
     const float _t11 = 1.0f / sqrtf(_t10);
-    const float _t12 = _t1 * _t2 * 2.0f * _t11 * 0.5f;
+    const float _t12 = _t2 * _t1 * _t11;
     const float _t13 = 6.28318548f * h;
     const float _t14 = _t13 * 0.5f;
-    const float _t15 = _t12 * _t14 + _t1;
-    const float _t16 = cosf(_t7);
-    const float _t17 = _t16 * _t8 * 2.0f * _t11 * 0.5f;
-    const float _t18 = _t8 + _t17 * _t14;
-    const float _t19 = cosf(_t4);
-    const float _t20 = _t19 * _t5 * 2.0f * _t11 * 0.5f;
-    const float _t21 = _t5 + _t20 * _t14;
-    const float _t22 = sqrtf(_t15 * _t15 + (_t18 * _t18 + _t21 * _t21));
+    const float _t15 = _t1 + _t12 * _t14;
+    const float _t16 = cosf(_t3);
+    const float _t17 = _t4 * _t16 * _t11;
+    const float _t18 = _t17 * _t14 + _t4;
+    const float _t19 = cosf(_t6);
+    const float _t20 = _t19 * _t7 * _t11;
+    const float _t21 = _t20 * _t14 + _t7;
+    const float _t22 = sqrtf(_t15 * _t15 + _t18 * _t18 + _t21 * _t21);
     const int _t23 = fabsf(_t22) <= 1.73205256f;
-    const float _t24 = _t12 * _t20 * _t11 * _t14;
-    const float _t25 = _t14 * (_t12 * _t17 * _t11);
-    const float _t26 = 1.0f / _t22;
-    const float _t27 = (_t23) ? _t13 * ((_t21 * _t24 * 2.0f + _t18 * _t25 * 2.0f - _t15 * ((2.0f * (_t2 * _t2) - _t3 * 2.0f - _t12 * _t12 * 2.0f) * _t11 * 0.5f * _t14 + _t2) * 2.0f) * _t26 * 0.5f) - _t1 : -_t1;
-    const float _t28 = _t20 * _t17 * _t11 * _t14;
-    const float _t29 = (_t23) ? _t13 * (0.5f * (_t26 * (_t25 * _t15 * 2.0f + _t21 * _t28 * 2.0f - _t18 * (_t16 + (_t16 * _t16 * 2.0f - _t9 * 2.0f - _t17 * _t17 * 2.0f) * _t11 * 0.5f * _t14) * 2.0f))) - _t8 : -_t8;
-    const float _t30 = (_t23) ? _t13 * (_t26 * (_t18 * _t28 * 2.0f + _t15 * _t24 * 2.0f - _t21 * (_t19 - (_t6 * 2.0f - _t19 * _t19 * 2.0f + _t20 * _t20 * 2.0f) * _t11 * 0.5f * _t14) * 2.0f) * 0.5f) - _t5 : -_t5;
-    const float _t31 = _t27 * _t27 + _t29 * _t29 + _t30 * _t30;
+    const float _t24 = 1.0f / _t22;
+    const float _t25 = _t17 * _t12 * _t11 * _t14;
+    const float _t26 = _t20 * _t12 * _t11 * _t14;
+    const float _t27 = (_t23) ? -(_t13 * (_t24 * ((_t2 - (_t12 * _t12 - (_t2 * _t2 - _t9)) * _t11 * _t14) * _t15 - _t18 * _t25 - _t21 * _t26)) + _t1) : -_t1;
+    const float _t28 = _t17 * _t20 * _t11 * _t14;
+    const float _t29 = (_t23) ? -(_t13 * (_t24 * ((_t19 - (_t20 * _t20 - (_t19 * _t19 - _t8)) * _t11 * _t14) * _t21 - _t18 * _t28 - _t15 * _t26)) + _t7) : -_t7;
+    const float _t30 = (_t23) ? _t13 * ((_t28 * _t21 + (_t25 * _t15 + _t18 * ((_t5 - _t16 * _t16 + _t17 * _t17) * _t11 * _t14 - _t16))) * _t24) - _t4 : -_t4;
+    const float _t31 = _t27 * _t27 + (_t29 * _t29 + _t30 * _t30);
     const int _t32 = _t31 > 0.0f;
     const int _t33 = _t31 <= 1.00000002e+30f;
     const float _t34 = 1.0f / sqrtf(_t31);
     const float _t35 = (_t10 > 0.0f) ? _t11 : 0.0f;
-    const float _t36 = -(_t35 * _t1);
-    const float _t37 = -(_t8 * _t35);
-    const float _t38 = -(_t5 * _t35);
-    n[0] = (_t32) ? ((_t33) ? _t34 * _t27 : _t36) : _t36;
-    n[1] = (_t32) ? ((_t33) ? _t29 * _t34 : _t37) : _t37;
-    n[2] = (_t32) ? ((_t33) ? _t30 * _t34 : _t38) : _t38;
+    const float _t36 = -(_t35 * _t4);
+    const float _t37 = -(_t1 * _t35);
+    const float _t38 = -(_t7 * _t35);
+    n[0] = (_t32) ? ((_t33) ? _t34 * _t30 : _t36) : _t36;
+    n[1] = (_t32) ? ((_t33) ? _t34 * _t27 : _t37) : _t37;
+    n[2] = (_t32) ? ((_t33) ? _t34 * _t29 : _t38) : _t38;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -386,15 +386,15 @@ static inline void schwarzp_o2_offset_n(size_t n, const double *x, const double 
         const double _t4 = 6.2831853071795862 * x[i];
         const double _t5 = offsetgen_batch_cos(_t4);
         const double _t6 = 6.2831853071795862 * h[i];
-        const double _t7 = offsetgen_batch_sin(_t4);
-        const double _t8 = offsetgen_batch_sin(_t0);
-        const double _t9 = offsetgen_batch_sin(_t2);
-        const double _t10 = 1.0 / sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+        const double _t7 = offsetgen_batch_sin(_t2);
+        const double _t8 = offsetgen_batch_sin(_t4);
+        const double _t9 = offsetgen_batch_sin(_t0);
+        const double _t10 = 1.0 / sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
         const double _t11 = _t6 * 0.5;
-        const double _t12 = _t7 * _t5 * 2.0 * _t10 * 0.5 * _t11 + _t7;
-        const double _t13 = _t9 + _t3 * _t9 * 2.0 * _t10 * 0.5 * _t11;
-        const double _t14 = _t8 + _t1 * _t8 * 2.0 * _t10 * 0.5 * _t11;
-        const double _t15 = sqrt(_t12 * _t12 + (_t13 * _t13 + _t14 * _t14));
+        const double _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
+        const double _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
+        const double _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
+        const double _t15 = sqrt(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
         out[i] = _t1 + _t3 + _t5 - _t6 * ((fabs(_t15) <= 1.7320525396196846) ? _t15 : ((_t15 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
     }
     for (i = 0; i < n; ++i) {
@@ -410,31 +410,31 @@ static inline void schwarzp_o2_shell_n(size_t n, const double *x, const double *
     size_t i;
     OFFSETGEN_SIMD_LOOP
     for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_cos(_t0);
+        const double _t0 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t1 = _t0 * 0.5;
         const double _t2 = 6.2831853071795862 * y[i];
         const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = 6.2831853071795862 * x[i];
-        const double _t5 = offsetgen_batch_cos(_t4);
-        const double _t6 = _t1 + _t3 + _t5;
-        const double _t7 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t8 = _t7 * 0.5;
-        const double _t9 = offsetgen_batch_sin(_t2);
-        const double _t10 = offsetgen_batch_sin(_t4);
-        const double _t11 = offsetgen_batch_sin(_t0);
-        const double _t12 = 1.0 / sqrt(_t10 * _t10 + _t11 * _t11 + _t9 * _t9);
-        const double _t13 = _t8 * (_t3 * _t9 * 2.0 * _t12 * 0.5);
-        const double _t14 = _t13 + _t9;
-        const double _t15 = _t8 * (_t10 * _t5 * 2.0 * _t12 * 0.5);
-        const double _t16 = _t15 + _t10;
-        const double _t17 = _t8 * (_t1 * _t11 * 2.0 * _t12 * 0.5);
-        const double _t18 = _t11 + _t17;
-        const double _t19 = sqrt(_t14 * _t14 + _t16 * _t16 + _t18 * _t18);
-        const double _t20 = _t13 - _t9;
-        const double _t21 = _t11 - _t17;
-        const double _t22 = _t15 - _t10;
+        const double _t4 = offsetgen_batch_sin(_t2);
+        const double _t5 = 6.2831853071795862 * x[i];
+        const double _t6 = offsetgen_batch_sin(_t5);
+        const double _t7 = z[i] * 6.2831853071795862;
+        const double _t8 = offsetgen_batch_sin(_t7);
+        const double _t9 = 1.0 / sqrt(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
+        const double _t10 = _t1 * (_t3 * _t4 * _t9);
+        const double _t11 = _t10 - _t4;
+        const double _t12 = offsetgen_batch_cos(_t5);
+        const double _t13 = _t6 * _t12 * _t9 * _t1;
+        const double _t14 = _t13 - _t6;
+        const double _t15 = offsetgen_batch_cos(_t7);
+        const double _t16 = _t1 * (_t15 * _t8 * _t9);
+        const double _t17 = _t8 - _t16;
+        const double _t18 = sqrt(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
+        const double _t19 = _t15 + _t3 + _t12;
+        const double _t20 = _t13 + _t6;
+        const double _t21 = _t8 + _t16;
+        const double _t22 = _t10 + _t4;
         const double _t23 = sqrt(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-        out[i] = (_t6 - _t7 * ((fabs(_t19) <= 1.7320525396196846) ? _t19 : ((_t19 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)))) * (((fabs(_t23) <= 1.7320525396196846) ? _t23 : ((_t23 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t7 + _t6);
+        out[i] = (((fabs(_t18) <= 1.7320525396196846) ? _t18 : ((_t18 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t0 + _t19) * (_t19 - ((fabs(_t23) <= 1.7320525396196846) ? _t23 : ((_t23 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t0);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o2_shell(x[i], y[i], z[i], t[i]);
@@ -456,15 +456,15 @@ static inline void schwarzp_o2_offsetf_n(size_t n, const float *x, const float *
         const float _t4 = 6.28318548f * x[i];
         const float _t5 = offsetgen_batch_cosf(_t4);
         const float _t6 = 6.28318548f * h[i];
-        const float _t7 = offsetgen_batch_sinf(_t4);
-        const float _t8 = offsetgen_batch_sinf(_t0);
-        const float _t9 = offsetgen_batch_sinf(_t2);
-        const float _t10 = 1.0f / sqrtf(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+        const float _t7 = offsetgen_batch_sinf(_t2);
+        const float _t8 = offsetgen_batch_sinf(_t4);
+        const float _t9 = offsetgen_batch_sinf(_t0);
+        const float _t10 = 1.0f / sqrtf(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
         const float _t11 = _t6 * 0.5f;
-        const float _t12 = _t7 * _t5 * 2.0f * _t10 * 0.5f * _t11 + _t7;
-        const float _t13 = _t9 + _t3 * _t9 * 2.0f * _t10 * 0.5f * _t11;
-        const float _t14 = _t8 + _t1 * _t8 * 2.0f * _t10 * 0.5f * _t11;
-        const float _t15 = sqrtf(_t12 * _t12 + (_t13 * _t13 + _t14 * _t14));
+        const float _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
+        const float _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
+        const float _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
+        const float _t15 = sqrtf(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
         out[i] = _t1 + _t3 + _t5 - _t6 * ((fabsf(_t15) <= 1.73205256f) ? _t15 : ((_t15 > 0.0f) ? 1.73205256f : (-1.73205256f)));
     }
     for (i = 0; i < n; ++i) {
@@ -480,31 +480,31 @@ static inline void schwarzp_o2_shellf_n(size_t n, const float *x, const float *y
     size_t i;
     OFFSETGEN_SIMD_LOOP
     for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_cosf(_t0);
+        const float _t0 = 6.28318548f * (t[i] * 0.5f);
+        const float _t1 = _t0 * 0.5f;
         const float _t2 = 6.28318548f * y[i];
         const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = 6.28318548f * x[i];
-        const float _t5 = offsetgen_batch_cosf(_t4);
-        const float _t6 = _t1 + _t3 + _t5;
-        const float _t7 = 6.28318548f * (t[i] * 0.5f);
-        const float _t8 = _t7 * 0.5f;
-        const float _t9 = offsetgen_batch_sinf(_t2);
-        const float _t10 = offsetgen_batch_sinf(_t4);
-        const float _t11 = offsetgen_batch_sinf(_t0);
-        const float _t12 = 1.0f / sqrtf(_t10 * _t10 + _t11 * _t11 + _t9 * _t9);
-        const float _t13 = _t8 * (_t3 * _t9 * 2.0f * _t12 * 0.5f);
-        const float _t14 = _t13 + _t9;
-        const float _t15 = _t8 * (_t10 * _t5 * 2.0f * _t12 * 0.5f);
-        const float _t16 = _t15 + _t10;
-        const float _t17 = _t8 * (_t1 * _t11 * 2.0f * _t12 * 0.5f);
-        const float _t18 = _t11 + _t17;
-        const float _t19 = sqrtf(_t14 * _t14 + _t16 * _t16 + _t18 * _t18);
-        const float _t20 = _t13 - _t9;
-        const float _t21 = _t11 - _t17;
-        const float _t22 = _t15 - _t10;
+        const float _t4 = offsetgen_batch_sinf(_t2);
+        const float _t5 = 6.28318548f * x[i];
+        const float _t6 = offsetgen_batch_sinf(_t5);
+        const float _t7 = z[i] * 6.28318548f;
+        const float _t8 = offsetgen_batch_sinf(_t7);
+        const float _t9 = 1.0f / sqrtf(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
+        const float _t10 = _t1 * (_t3 * _t4 * _t9);
+        const float _t11 = _t10 - _t4;
+        const float _t12 = offsetgen_batch_cosf(_t5);
+        const float _t13 = _t6 * _t12 * _t9 * _t1;
+        const float _t14 = _t13 - _t6;
+        const float _t15 = offsetgen_batch_cosf(_t7);
+        const float _t16 = _t1 * (_t15 * _t8 * _t9);
+        const float _t17 = _t8 - _t16;
+        const float _t18 = sqrtf(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
+        const float _t19 = _t15 + _t3 + _t12;
+        const float _t20 = _t13 + _t6;
+        const float _t21 = _t8 + _t16;
+        const float _t22 = _t10 + _t4;
         const float _t23 = sqrtf(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-        out[i] = (_t6 - _t7 * ((fabsf(_t19) <= 1.73205256f) ? _t19 : ((_t19 > 0.0f) ? 1.73205256f : (-1.73205256f)))) * (((fabsf(_t23) <= 1.73205256f) ? _t23 : ((_t23 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t7 + _t6);
+        out[i] = (((fabsf(_t18) <= 1.73205256f) ? _t18 : ((_t18 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t0 + _t19) * (_t19 - ((fabsf(_t23) <= 1.73205256f) ? _t23 : ((_t23 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t0);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o2_shellf(x[i], y[i], z[i], t[i]);

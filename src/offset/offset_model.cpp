@@ -47,8 +47,11 @@ class ChainBuilder {
     const Jet& p = derivatives_[static_cast<size_t>(level)];
     const auto indices = indices_up_to(dims_, order);
 
+    // u[0] = |grad psi_k|^2; for a != 0, u[a] holds HALF of D^a |grad psi_k|^2, so the factor 2 of
+    // the symmetric Leibniz pairs and the 1/2 of the sqrt recurrence cancel symbolically.
     Jet u;
     for (const auto& alpha : indices) {
+      const bool root = total_order(alpha) == 0;
       GiNaC::ex sum = 0;
       for (int i = 0; i < dims_; ++i) {
         MultiIndex e = unit_index(i);
@@ -56,22 +59,24 @@ class ChainBuilder {
           sum += multi_binomial(alpha, beta) * p.at(beta + e) * p.at(alpha - beta + e);
         }
       }
-      u[alpha] = atoms_.define(fmt::format("U{}_{}", level, index_label(alpha)), sum, level);
+      u[alpha] = atoms_.define(fmt::format("U{}_{}", level, index_label(alpha)),
+                               root ? sum : GiNaC::numeric(1, 2) * sum, level);
     }
 
+    // N*N = U gives D^a N = (D^a U / 2 - 1/2 sum_{0<b<a} C(a,b) D^b N D^(a-b) N) / N.
     Jet n;
     const MultiIndex zero{0, 0, 0};
     n[zero] = atoms_.define(fmt::format("N{}", level), GiNaC::sqrt(u[zero]), level);
     GiNaC::ex reciprocal = GiNaC::pow(u[zero], GiNaC::numeric(-1, 2));
     for (const auto& alpha : indices) {
       if (total_order(alpha) == 0) continue;
-      GiNaC::ex inner = u[alpha];
+      GiNaC::ex products = 0;
       for (const auto& beta : sub_indices(alpha)) {
         if (total_order(beta) == 0 || beta == alpha) continue;
-        inner -= multi_binomial(alpha, beta) * n.at(beta) * n.at(alpha - beta);
+        products += multi_binomial(alpha, beta) * n.at(beta) * n.at(alpha - beta);
       }
       n[alpha] = atoms_.define(fmt::format("N{}_{}", level, index_label(alpha)),
-                               GiNaC::numeric(1, 2) * reciprocal * inner, level);
+                               reciprocal * (u[alpha] - GiNaC::numeric(1, 2) * products), level);
     }
     norms_.push_back(n);
 
