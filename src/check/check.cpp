@@ -1,0 +1,197 @@
+#include "check/check.h"
+
+#include "check/progress.h"
+#include "check/reference.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace offsetgen::check {
+namespace {
+
+Verdict order_verdict(const std::string& name, const OrderFit& fit, double expected, double slack, bool judged) {
+  Verdict v;
+  v.name = name;
+  v.judged = judged;
+  if (!fit.fitted) {
+    v.pass = true;
+    v.detail = fit.note.empty() ? "not fitted" : fit.note;
+    return v;
+  }
+  v.pass = !judged || fit.slope >= expected - slack;
+  v.detail = fmt::format("fitted order {:.2f} over h = {:g}..{:g} ({} points), expected >= {:.2f}{}", fit.slope,
+                         fit.h_min, fit.h_max, fit.points, expected - slack,
+                         judged ? "" : " (reported, not judged)");
+  return v;
+}
+
+// Rays without a crossing inside the fitted (small-h) range fail the check; beyond it they are
+// reported (large h on strongly curved surfaces leaves the method's validity range).
+Verdict missed_verdict(const std::string& name, const std::vector<std::pair<double, const ErrorStats*>>& rows,
+                       double h_limit) {
+  Verdict v;
+  v.name = name;
+  int inside = 0, outside = 0, rays = 0;
+  for (const auto& [h, stats] : rows) {
+    rays += stats->rays;
+    (h <= h_limit * (1 + 1e-12) ? inside : outside) += stats->missed;
+  }
+  v.pass = inside == 0;
+  v.detail = fmt::format("{} of {} rays without a crossing for h <= {:g}, {} beyond", inside, rays, h_limit, outside);
+  return v;
+}
+
+}  // namespace
+
+std::vector<double> default_sweep() {
+  std::vector<double> h;
+  for (int k = 0; k <= 8; ++k) h.push_back(std::stod(fmt::format("{:.3g}", 0.001 * std::pow(10.0, k / 4.0))));
+  return h;
+}
+
+std::vector<double> parse_h_list(const std::string& text) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+    std::string word = b == std::string::npos ? "" : item.substr(b, e - b + 1);
+    size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(word, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (word.empty() || used != word.size() || !std::isfinite(v))
+      throw InputError(fmt::format("--h: '{}' is not a number (expected a comma-separated list like 0.001,0.01,0.1)", word));
+    if (!(v > 0) || v > 0.5)
+      throw InputError(fmt::format("--h: {} is outside (0, 0.5]: offsets are positive distances in cell units", word));
+    out.push_back(v);
+  }
+  if (out.empty()) throw InputError("--h: empty list");
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+CheckReport run_checks(const CheckSettings& s) {
+  CheckReport report;
+  report.file = s.file;
+  std::string text;
+  report.meta = read_metadata(s.file, &text);
+  const FileMetadata& meta = report.meta;
+  report.sweep = s.h.empty() ? default_sweep() : s.h;
+
+  if (meta.kind == FileKind::Glsl) {
+    report.glsl = compile_glsl(text, meta);
+    for (const auto& r : report.glsl) {
+      Verdict v{"glslang " + r.name, r.ok, true, r.ok ? "compiles and links" : "does not compile"};
+      report.verdicts.push_back(v);
+    }
+    report.warnings.push_back(
+        "GLSL: compiled only; running it (float32 deviation from the double C output) needs the GLSL executor of "
+        "tests/glsl, which `offsetgen check` does not link. Check the C header of the same generation for numbers.");
+    report.pass = std::all_of(report.verdicts.begin(), report.verdicts.end(), [](const Verdict& v) { return v.pass; });
+    return report;
+  }
+
+  // Input problems first, before any long work: thickness expression, compiler, model.
+  std::optional<GiNaC::ex> thickness_ex;
+  std::optional<std::string> thickness_text = s.thickness ? s.thickness : meta.thickness;
+  if (thickness_text) thickness_ex = parse_thickness(*thickness_text, meta, s.params);
+  std::optional<GiNaC::ex> file_thickness;
+  if (meta.thickness) file_thickness = parse_thickness(*meta.thickness, meta, {});
+  const Toolchain tools = find_toolchain();
+  report.toolchain = fmt::format("{} (from {})", tools.c.front(), tools.c_origin);
+  if (!tools.cxx.empty()) report.toolchain += fmt::format(", {} (from {})", tools.cxx.front(), tools.cxx_origin);
+
+  Progress progress;
+  progress.update("model", "rebuilding the symbolic offset model from the metadata");
+  std::unique_ptr<Reference> reference = rebuild_reference(meta);
+  report.warnings.insert(report.warnings.end(), reference->warnings.begin(), reference->warnings.end());
+  report.surface_title = reference->generation.surface.title;
+
+  progress.update("compile", "C99 strict, C++17 strict, shared object");
+  report.compile = compile_and_load(s.file, meta, tools);
+  {
+    Verdict v{"compile", report.compile.ok, true, ""};
+    for (const auto& step : report.compile.steps)
+      v.detail += fmt::format("{}{}: {}", v.detail.empty() ? "" : "; ", step.name,
+                              step.skipped ? "skipped" : (step.ok ? "ok" : "FAILED"));
+    report.verdicts.push_back(v);
+  }
+  if (!report.compile.library) {
+    progress.clear();
+    report.pass = false;
+    return report;
+  }
+  const LoadedFunctions& functions = report.compile.library->functions();
+
+  if (s.run_values) {
+    progress.update("values", fmt::format("random points against {}-digit CLN", s.values.digits));
+    report.values = check_values(functions, *reference, meta, file_thickness, s.values);
+    report.verdicts.push_back({"values", report.values->pass, true,
+                               fmt::format("max zero-set shift {:.2e} (limit {:.0e})", report.values->max_shift_double,
+                                           s.values.tolerance)});
+  }
+
+  if (s.run_thickness) {
+    Probe probe = make_probe(functions);
+    ThicknessOptions options;
+    options.h = report.sweep;
+    options.grid = s.grid;
+    options.scan = s.scan;
+    options.progress = [&progress](const std::string& what) { progress.update("thickness", what); };
+    report.thickness = measure_constant(probe, options);
+    const ThicknessReport& t = *report.thickness;
+    const double m = meta.order;
+    // Beyond order 4 most of the asymptotic range lies under the double-precision floor: slopes
+    // are reported, not judged.
+    const bool judge = meta.order <= 4 && !probe.float_only;
+    report.verdicts.push_back(order_verdict("order F -> phi", t.fit_f_to_phi, m, s.order_slack, judge));
+    report.verdicts.push_back(order_verdict("order phi -> F", t.fit_phi_to_f, m, s.order_slack, judge));
+    report.verdicts.push_back(order_verdict("order shell", t.fit_shell, m, s.order_slack, judge));
+    const double h_limit = std::sqrt(report.sweep.front() * report.sweep.back());
+    std::vector<std::pair<double, const ErrorStats*>> rays;
+    for (const auto& row : t.rows) {
+      rays.emplace_back(row.h, &row.f_to_phi);
+      rays.emplace_back(row.h, &row.phi_to_f);
+      rays.emplace_back(row.h, &row.shell);
+    }
+    report.verdicts.push_back(missed_verdict("crossings", rays, h_limit));
+
+    if (thickness_ex) {
+      ThicknessFunction tfun(*thickness_ex, meta.dims);
+      const bool compiled = !s.thickness.has_value() && functions.graded != nullptr;
+      report.graded = measure_graded(probe, tfun, *thickness_text, compiled, options);
+      const GradedReport& g = *report.graded;
+      if (!(g.t_peak > 0)) {
+        report.verdicts.push_back({"graded", false, true,
+                                   fmt::format("thickness '{}' is never positive in the cell", *thickness_text)});
+      } else {
+        const double expected = std::min(m, 2.0);
+        report.verdicts.push_back(
+            order_verdict("graded total thickness", g.fit_total, expected, s.order_slack, !probe.float_only));
+        report.verdicts.push_back(
+            order_verdict("graded paper (wall -> F)", g.fit_paper, expected, s.order_slack, !probe.float_only));
+        report.verdicts.push_back(order_verdict("graded one-sided", g.fit_one_sided, 1.0, s.order_slack, false));
+        std::vector<std::pair<double, const ErrorStats*>> graded_rays;
+        for (const auto& row : g.rows) {
+          if (row.as_given) continue;
+          graded_rays.emplace_back(row.h_max, &row.total);
+          graded_rays.emplace_back(row.h_max, &row.paper);
+        }
+        report.verdicts.push_back(missed_verdict("graded crossings", graded_rays, h_limit));
+      }
+    }
+  }
+  progress.clear();
+  report.pass = std::all_of(report.verdicts.begin(), report.verdicts.end(), [](const Verdict& v) { return v.pass; });
+  return report;
+}
+
+}  // namespace offsetgen::check

@@ -1,0 +1,68 @@
+// `offsetgen check FILE`: the second stage. Reads the file's metadata, rebuilds the symbolic model,
+// compiles and loads the code, compares values with a 40-digit evaluation, measures the wall
+// thickness (paper section 5.2.1) and judges the numbers.
+#pragma once
+
+#include "check/compile.h"
+#include "check/glsl_compile.h"
+#include "check/metadata.h"
+#include "check/thickness.h"
+#include "check/value_check.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace offsetgen::check {
+
+struct CheckSettings {
+  std::string file;
+  std::vector<double> h;                      // sweep, cell units (default: default_sweep())
+  std::optional<std::string> thickness;       // graded wall t(x) (overrides the file's)
+  std::map<std::string, std::string> params;  // for the thickness expression
+  std::string json_path;
+  std::string plot_path;
+  std::string plot_script;
+  int grid = 21;
+  int scan = 200;
+  ValueCheckOptions values;
+  double order_slack = 0.3;  // fitted order must reach expected - slack
+  bool run_values = true;
+  bool run_thickness = true;
+};
+
+// 0.001 * 10^(k/4), k = 0..8: 0.001 ... 0.1, nine points, 0.01 included.
+std::vector<double> default_sweep();
+
+// "0.001,0.01, 0.1" -> values; throws InputError naming the bad entry. Each must be in (0, 0.5].
+std::vector<double> parse_h_list(const std::string& text);
+
+struct Verdict {
+  std::string name;
+  bool pass = true;
+  bool judged = true;  // false: reported only
+  std::string detail;
+};
+
+struct CheckReport {
+  std::string file;
+  FileMetadata meta;
+  std::vector<std::string> warnings;
+  std::string surface_title;
+  std::string toolchain;
+  CompileResult compile;                       // C files
+  std::vector<GlslCompileResult> glsl;         // GLSL files
+  std::optional<ValueReport> values;
+  std::optional<ThicknessReport> thickness;
+  std::optional<GradedReport> graded;
+  std::vector<Verdict> verdicts;
+  std::vector<double> sweep;
+  bool pass = false;
+};
+
+// Runs everything. Throws InputError for usage and input problems (exit 2); a failed check comes
+// back as report.pass == false (exit 1).
+CheckReport run_checks(const CheckSettings& settings);
+
+}  // namespace offsetgen::check

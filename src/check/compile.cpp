@@ -1,0 +1,222 @@
+#include "check/compile.h"
+
+#include "check/process.h"
+#include "surfaces/surface.h"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+
+namespace offsetgen::check {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kStrictWarnings[] = {"-pedantic", "-Wall", "-Wextra", "-Werror"};
+
+// A scratch directory removed when it goes out of scope.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    std::string pattern = (fs::temp_directory_path() / "offsetgen-check-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
+    path_ = pattern;
+  }
+  ~ScratchDir() {
+    if (std::getenv("OFFSETGEN_CHECK_KEEP") == nullptr) {
+      std::error_code ec;
+      fs::remove_all(path_, ec);
+    }
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::vector<std::string> first_found(const char* env, std::initializer_list<const char*> names, std::string& origin,
+                                     bool required, const char* what) {
+  if (const char* value = std::getenv(env); value != nullptr && *value != '\0') {
+    std::vector<std::string> words = split_words(value);
+    if (!words.empty()) {
+      std::string exe = find_on_path(words[0]);
+      if (exe.empty()) {
+        if (required)
+          throw InputError(fmt::format("${} is set to '{}', but '{}' is not an executable on PATH", env, value, words[0]));
+        return {};
+      }
+      origin = std::string("$") + env;
+      return words;
+    }
+  }
+  for (const char* name : names) {
+    std::string exe = find_on_path(name);
+    if (!exe.empty()) {
+      origin = "PATH";
+      return {exe};
+    }
+  }
+  if (required) {
+    std::string tried;
+    for (const char* name : names) tried += std::string(tried.empty() ? "" : ", ") + name;
+    throw InputError(fmt::format("no {} on PATH (looked for {}; set ${} to choose one). `offsetgen check` compiles "
+                                 "the header with the system compiler; install one with `apt-get install gcc`.",
+                                 what, tried, env));
+  }
+  return {};
+}
+
+CompileStep run_step(const std::string& name, std::vector<std::string> command) {
+  CompileStep step;
+  step.name = name;
+  step.command = command;
+  auto start = std::chrono::steady_clock::now();
+  ProcessResult r = run_process(command);
+  step.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  step.ok = r.started && r.exit_code == 0;
+  step.output = r.output;
+  if (!r.started && step.output.empty()) step.output = "could not run " + command.at(0);
+  return step;
+}
+
+template <typename T>
+T symbol(void* handle, const std::string& name) {
+  void* p = ::dlsym(handle, name.c_str());
+  return reinterpret_cast<T>(p);
+}
+
+}  // namespace
+
+LoadedLibrary::~LoadedLibrary() {
+  if (handle_ != nullptr) ::dlclose(handle_);
+}
+
+Toolchain find_toolchain() {
+  Toolchain t;
+  t.c = first_found("CC", {"cc", "gcc", "clang"}, t.c_origin, true, "C compiler");
+  t.cxx = first_found("CXX", {"c++", "g++", "clang++"}, t.cxx_origin, false, "C++ compiler");
+  return t;
+}
+
+std::string wrapper_source(const std::string& include_name, const FileMetadata& meta) {
+  const std::string& p = meta.prefix;
+  const std::string args = meta.dims == 3 ? "p[0], p[1], p[2]" : "p[0], p[1]";
+  std::string s;
+  s += "/* offsetgen check: exports the header's static inline functions for dlopen. */\n";
+  s += fmt::format("#include \"{}\"\n#include \"{}\" /* a second time: the include guard must hold */\n\n",
+                   include_name, include_name);
+  s += "#ifdef __cplusplus\nextern \"C\" {\n#endif\n";
+  auto emit = [&](const std::string& type, const char* suffix) {
+    const std::string t = type;
+    const std::string fs = type == "float" ? "f" : "";
+    s += fmt::format("{0} offsetgen_check_field{1}(const {0}* p);\n", t, fs);
+    s += fmt::format("{0} offsetgen_check_field{1}(const {0}* p) {{ return {2}_field{1}({3}); }}\n", t, fs, p, args);
+    s += fmt::format("{0} offsetgen_check_offset{1}(const {0}* p, {0} h);\n", t, fs);
+    s += fmt::format("{0} offsetgen_check_offset{1}(const {0}* p, {0} h) {{ return {2}_offset{1}({3}, h); }}\n", t, fs, p,
+                     args);
+    s += fmt::format("{0} offsetgen_check_shell{1}(const {0}* p, {0} t);\n", t, fs);
+    s += fmt::format("{0} offsetgen_check_shell{1}(const {0}* p, {0} t) {{ return {2}_shell{1}({3}, t); }}\n", t, fs, p,
+                     args);
+    s += fmt::format("void offsetgen_check_normal{1}(const {0}* p, {0} h, {0}* n);\n", t, fs);
+    s += fmt::format("void offsetgen_check_normal{1}(const {0}* p, {0} h, {0}* n) {{ {2}_normal{1}({3}, h, n); }}\n", t,
+                     fs, p, args);
+    if (meta.thickness) {
+      s += fmt::format("{0} offsetgen_check_graded{1}(const {0}* p);\n", t, fs);
+      s += fmt::format("{0} offsetgen_check_graded{1}(const {0}* p) {{ return {2}_graded{1}({3}); }}\n", t, fs, p, args);
+    }
+    (void)suffix;
+  };
+  if (meta.has_double) emit("double", "");
+  if (meta.has_float) emit("float", "f");
+  s += "#ifdef __cplusplus\n}\n#endif\n";
+  return s;
+}
+
+CompileResult compile_and_load(const std::string& header_path, const FileMetadata& meta, const Toolchain& tools) {
+  CompileResult result;
+  ScratchDir scratch;
+  const fs::path header = fs::absolute(header_path);
+  const std::string include_dir = header.parent_path().string();
+  std::string include_name = header.filename().string();
+  if (include_name.find_first_of("\"\\\n") != std::string::npos) {  // cannot be spelled in #include "..."
+    fs::copy_file(header, scratch.path() / "checked_header.h");
+    include_name = "checked_header.h";
+  }
+  const fs::path source = scratch.path() / "offsetgen_check_wrapper.c";
+  const fs::path library = scratch.path() / "offsetgen_check_wrapper.so";
+  {
+    std::ofstream out(source);
+    out << wrapper_source(include_name, meta);
+    if (!out) throw std::runtime_error("cannot write " + source.string());
+  }
+
+  // 1. Strict C99; this step also builds the shared object that gets loaded.
+  std::vector<std::string> c = tools.c;
+  c.insert(c.end(), {"-std=c99"});
+  c.insert(c.end(), std::begin(kStrictWarnings), std::end(kStrictWarnings));
+  c.insert(c.end(), {"-O2", "-ffp-contract=off", "-fPIC", "-shared", "-I" + include_dir, "-I" + scratch.path().string(),
+                     source.string(), "-o", library.string(), "-lm"});
+  result.steps.push_back(run_step("C99 strict + shared object", c));
+  bool ok = result.steps.back().ok;
+
+  // 2. Strict C++17 (compiled, not linked).
+  if (tools.cxx.empty()) {
+    CompileStep skipped;
+    skipped.name = "C++17 strict";
+    skipped.skipped = true;
+    skipped.ok = true;
+    skipped.output = "no C++ compiler on PATH (looked for $CXX, c++, g++, clang++): C++17 check skipped";
+    result.steps.push_back(skipped);
+  } else {
+    std::vector<std::string> cxx = tools.cxx;
+    cxx.insert(cxx.end(), {"-std=c++17"});
+    cxx.insert(cxx.end(), std::begin(kStrictWarnings), std::end(kStrictWarnings));
+    cxx.insert(cxx.end(), {"-O2", "-I" + include_dir, "-I" + scratch.path().string(), "-x", "c++", "-c",
+                           source.string(), "-o", (scratch.path() / "cxx17.o").string()});
+    result.steps.push_back(run_step("C++17 strict", cxx));
+    ok = ok && result.steps.back().ok;
+  }
+  if (!result.steps.front().ok) return result;
+
+  // 3. Load.
+  CompileStep load;
+  load.name = "dlopen";
+  void* handle = ::dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* err = ::dlerror();
+    load.output = err ? err : "dlopen failed";
+    result.steps.push_back(load);
+    return result;
+  }
+  LoadedFunctions f;
+  f.dims = meta.dims;
+  if (meta.has_double) {
+    f.field = symbol<decltype(f.field)>(handle, "offsetgen_check_field");
+    f.offset = symbol<decltype(f.offset)>(handle, "offsetgen_check_offset");
+    f.shell = symbol<decltype(f.shell)>(handle, "offsetgen_check_shell");
+    f.normal = symbol<decltype(f.normal)>(handle, "offsetgen_check_normal");
+    if (meta.thickness) f.graded = symbol<decltype(f.graded)>(handle, "offsetgen_check_graded");
+  }
+  if (meta.has_float) {
+    f.fieldf = symbol<decltype(f.fieldf)>(handle, "offsetgen_check_fieldf");
+    f.offsetf = symbol<decltype(f.offsetf)>(handle, "offsetgen_check_offsetf");
+    f.shellf = symbol<decltype(f.shellf)>(handle, "offsetgen_check_shellf");
+    f.normalf = symbol<decltype(f.normalf)>(handle, "offsetgen_check_normalf");
+    if (meta.thickness) f.gradedf = symbol<decltype(f.gradedf)>(handle, "offsetgen_check_gradedf");
+  }
+  result.library = std::make_unique<LoadedLibrary>(handle, f);
+  load.ok = true;
+  load.output = library.filename().string() + " loaded";
+  result.steps.push_back(load);
+  result.ok = ok;
+  return result;
+}
+
+}  // namespace offsetgen::check

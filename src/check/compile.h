@@ -1,0 +1,77 @@
+// Compiling an emitted C header with the system compilers and loading it: strict C99
+// (-std=c99 -pedantic -Wall -Wextra -Werror), C++17 with the same warnings, then a shared object
+// opened with dlopen. Compiler output is kept verbatim for the report.
+#pragma once
+
+#include "check/metadata.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace offsetgen::check {
+
+struct Toolchain {
+  std::vector<std::string> c;    // e.g. {"/usr/bin/cc"}, or $CC split into words
+  std::vector<std::string> cxx;  // empty when no C++ compiler is found
+  std::string c_origin;          // "$CC" or "PATH"
+  std::string cxx_origin;
+};
+
+// $CC (else cc, gcc, clang on PATH) and $CXX (else c++, g++, clang++). Throws InputError
+// "no C compiler on PATH ..." when there is no C compiler, or when $CC names a missing program.
+Toolchain find_toolchain();
+
+struct CompileStep {
+  std::string name;                  // "C99 strict", "C++17 strict", "shared object", "dlopen"
+  std::vector<std::string> command;  // empty for dlopen
+  bool ok = false;
+  bool skipped = false;              // e.g. no C++ compiler
+  std::string output;                // compiler output, verbatim
+  double seconds = 0;
+};
+
+// The loaded code, through exported wrappers taking the coordinates as an array (dims entries).
+// Members are null where the file lacks the function (float twins, _graded).
+struct LoadedFunctions {
+  int dims = 3;
+  double (*field)(const double* p) = nullptr;
+  double (*offset)(const double* p, double h) = nullptr;
+  double (*shell)(const double* p, double t) = nullptr;
+  void (*normal)(const double* p, double h, double* n) = nullptr;
+  double (*graded)(const double* p) = nullptr;
+  float (*fieldf)(const float* p) = nullptr;
+  float (*offsetf)(const float* p, float h) = nullptr;
+  float (*shellf)(const float* p, float t) = nullptr;
+  void (*normalf)(const float* p, float h, float* n) = nullptr;
+  float (*gradedf)(const float* p) = nullptr;
+};
+
+class LoadedLibrary {
+ public:
+  LoadedLibrary(void* handle, LoadedFunctions functions) : handle_(handle), functions_(functions) {}
+  ~LoadedLibrary();
+  LoadedLibrary(const LoadedLibrary&) = delete;
+  LoadedLibrary& operator=(const LoadedLibrary&) = delete;
+  const LoadedFunctions& functions() const { return functions_; }
+
+ private:
+  void* handle_;
+  LoadedFunctions functions_;
+};
+
+struct CompileResult {
+  std::vector<CompileStep> steps;
+  bool ok = false;                         // every step that ran succeeded and the code is loaded
+  std::unique_ptr<LoadedLibrary> library;  // set when ok
+};
+
+// The C translation unit that includes the header (twice: the include guard must hold) and exports
+// one wrapper per function with unmangled names.
+std::string wrapper_source(const std::string& include_name, const FileMetadata& meta);
+
+// Compiles `header_path` (strict C99, strict C++17, shared object) in a fresh scratch directory and
+// loads it. Never throws for compiler failures: they come back as failed steps.
+CompileResult compile_and_load(const std::string& header_path, const FileMetadata& meta, const Toolchain& tools);
+
+}  // namespace offsetgen::check

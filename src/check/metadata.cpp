@@ -1,0 +1,175 @@
+#include "check/metadata.h"
+
+#include "surfaces/surface.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace offsetgen::check {
+namespace {
+
+constexpr const char* kMarker = "offsetgen-metadata";
+constexpr int kMaxSupportedOrder = 64;
+
+[[noreturn]] void damaged(const std::string& what) {
+  throw InputError(fmt::format("the offsetgen-metadata block is damaged: {}. Regenerate the file with "
+                               "`offsetgen generate` (the command is in its banner).", what));
+}
+
+using json = nlohmann::json;
+
+const json& field(const json& j, const char* key) {
+  auto it = j.find(key);
+  if (it == j.end()) damaged(fmt::format("field \"{}\" is missing", key));
+  return *it;
+}
+
+std::string string_field(const json& j, const char* key) {
+  const json& v = field(j, key);
+  if (!v.is_string()) damaged(fmt::format("field \"{}\" must be a string", key));
+  return v.get<std::string>();
+}
+
+std::optional<std::string> optional_string_field(const json& j, const char* key) {
+  auto it = j.find(key);
+  if (it == j.end() || it->is_null()) return std::nullopt;
+  if (!it->is_string()) damaged(fmt::format("field \"{}\" must be a string or null", key));
+  return it->get<std::string>();
+}
+
+int int_field(const json& j, const char* key, int lo, int hi) {
+  const json& v = field(j, key);
+  if (!v.is_number_integer()) damaged(fmt::format("field \"{}\" must be an integer", key));
+  long long value = v.get<long long>();
+  if (value < lo || value > hi) damaged(fmt::format("field \"{}\" = {} is outside {}..{}", key, value, lo, hi));
+  return static_cast<int>(value);
+}
+
+double positive_number_field(const json& j, const char* key) {
+  const json& v = field(j, key);
+  if (!v.is_number()) damaged(fmt::format("field \"{}\" must be a number", key));
+  double value = v.get<double>();
+  if (!std::isfinite(value) || value <= 0) damaged(fmt::format("field \"{}\" must be a positive number", key));
+  return value;
+}
+
+bool is_identifier(const std::string& s) {
+  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  for (char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  return true;
+}
+
+}  // namespace
+
+FileKind kind_of_path(const std::string& path) {
+  auto dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == "glsl" || ext == "frag" || ext == "vert" || ext == "comp") return FileKind::Glsl;
+  return FileKind::C;
+}
+
+FileMetadata parse_metadata(const std::string& text, FileKind kind) {
+  const std::string opener = std::string("/* ") + kMarker;
+  auto start = text.find(opener);
+  if (start == std::string::npos) {
+    throw InputError(
+        "this file was not produced by offsetgen: it has no `/* offsetgen-metadata {...} */` block, so "
+        "there is no record of the surface and order it was made from. `offsetgen check` only checks "
+        "files written by `offsetgen generate`.");
+  }
+  if (text.find(opener, start + opener.size()) != std::string::npos)
+    damaged("the file holds more than one metadata block (two generated files pasted together?)");
+  auto json_begin = start + opener.size();
+  auto line_end = text.find('\n', json_begin);
+  auto close = text.find("*/", json_begin);
+  if (close == std::string::npos || (line_end != std::string::npos && close > line_end))
+    damaged("the block does not end with `*/` on its line");
+  std::string body = text.substr(json_begin, close - json_begin);
+
+  json j;
+  try {
+    j = json::parse(body);
+  } catch (const json::parse_error& e) {
+    damaged(fmt::format("its JSON does not parse ({})", e.what()));
+  }
+  if (!j.is_object()) damaged("its JSON is not an object");
+
+  FileMetadata m;
+  m.kind = kind;
+  m.json = body;
+  // trim the surrounding spaces of the JSON text
+  while (!m.json.empty() && std::isspace(static_cast<unsigned char>(m.json.front()))) m.json.erase(0, 1);
+  while (!m.json.empty() && std::isspace(static_cast<unsigned char>(m.json.back()))) m.json.pop_back();
+
+  m.format = int_field(j, "format", 0, 1000);
+  if (m.format != 1)
+    throw InputError(fmt::format("the offsetgen-metadata block has format {}, but this offsetgen reads format 1; "
+                                 "use the offsetgen version that wrote the file",
+                                 m.format));
+  m.generator = string_field(j, "generator");
+  if (m.generator.rfind("offsetgen", 0) != 0) damaged("field \"generator\" does not name offsetgen");
+  m.prefix = string_field(j, "prefix");
+  if (!is_identifier(m.prefix)) damaged(fmt::format("field \"prefix\" = \"{}\" is not a C identifier", m.prefix));
+  m.surface = optional_string_field(j, "surface");
+  m.expression = optional_string_field(j, "expression");
+  if (m.surface.has_value() == m.expression.has_value())
+    damaged("exactly one of \"surface\" and \"expression\" must be given");
+  if (auto it = j.find("params"); it != j.end() && !it->is_null()) {
+    if (!it->is_object()) damaged("field \"params\" must be an object");
+    for (auto p = it->begin(); p != it->end(); ++p) {
+      if (!p.value().is_string()) damaged(fmt::format("parameter \"{}\" must be a string", p.key()));
+      m.params[p.key()] = p.value().get<std::string>();
+    }
+  }
+  m.scale = positive_number_field(j, "scale");
+  m.dims = int_field(j, "dims", 2, 3);
+  m.order = int_field(j, "order", 1, kMaxSupportedOrder);
+  m.thickness = optional_string_field(j, "thickness");
+  const json& precisions = field(j, "precisions");
+  if (!precisions.is_array() || precisions.empty()) damaged("field \"precisions\" must be a non-empty list");
+  m.has_double = m.has_float = false;
+  for (const auto& p : precisions) {
+    if (p == "double") {
+      m.has_double = true;
+    } else if (p == "float") {
+      m.has_float = true;
+    } else {
+      damaged("field \"precisions\" may only hold \"double\" and \"float\"");
+    }
+  }
+  m.gradient_bound = positive_number_field(j, "gradient_bound");
+  if (auto it = j.find("ops"); it != j.end() && !it->is_null()) {
+    if (!it->is_object()) damaged("field \"ops\" must be an object");
+    for (auto p = it->begin(); p != it->end(); ++p) {
+      if (!p.value().is_number_integer()) damaged(fmt::format("ops of \"{}\" must be an integer", p.key()));
+      m.ops[p.key()] = p.value().get<int>();
+    }
+  }
+  // The header must actually define what the block describes.
+  const std::string probe = m.prefix + "_offset";
+  if (text.find(probe) == std::string::npos)
+    damaged(fmt::format("the file does not define {} although its metadata names prefix \"{}\"", probe, m.prefix));
+  return m;
+}
+
+FileMetadata read_metadata(const std::string& path, std::string* text_out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("cannot read '{}'", path));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  std::string text = buffer.str();
+  if (text.find('\0') != std::string::npos)
+    throw InputError(fmt::format("'{}' is a binary file, not a header or GLSL snippet written by offsetgen", path));
+  FileMetadata m = parse_metadata(text, kind_of_path(path));
+  if (text_out) *text_out = std::move(text);
+  return m;
+}
+
+}  // namespace offsetgen::check

@@ -1,0 +1,45 @@
+// The machine-readable block every emitted file carries:
+//   /* offsetgen-metadata {"format":1,"generator":...,"surface":...,"order":4,...} */
+// Reading it is how `offsetgen check` knows what a file was made from; nothing else is needed.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace offsetgen::check {
+
+enum class FileKind { C, Glsl };
+
+struct FileMetadata {
+  FileKind kind = FileKind::C;
+  int format = 1;
+  std::string generator;                      // "offsetgen 0.1.0"
+  std::string prefix;                         // function prefix, e.g. gyroid_o4
+  std::optional<std::string> surface;         // catalog name, or
+  std::optional<std::string> expression;      // user expression in cell coordinates
+  std::map<std::string, std::string> params;  // --param values
+  double scale = 1;                           // k of X = k x
+  int dims = 3;
+  int order = 1;
+  std::optional<std::string> thickness;       // --thickness (total wall thickness), if any
+  bool has_double = true;                     // C precisions present
+  bool has_float = false;
+  double gradient_bound = 0;                  // the safeguard's M (natural units)
+  std::map<std::string, int> ops;             // per function, when present
+  std::string json;                           // the block's JSON text as found
+};
+
+// Parses the metadata out of a file's text. Throws offsetgen::InputError saying that the file was
+// not produced by offsetgen (no block) or that its block is damaged (bad JSON, missing or
+// ill-typed fields), naming the problem.
+FileMetadata parse_metadata(const std::string& text, FileKind kind);
+
+// Reads `path` and parses it; the kind follows from the extension (.glsl/.frag/.vert/.comp are
+// GLSL, everything else C). Throws InputError when the file cannot be read.
+FileMetadata read_metadata(const std::string& path, std::string* text_out = nullptr);
+
+FileKind kind_of_path(const std::string& path);
+
+}  // namespace offsetgen::check

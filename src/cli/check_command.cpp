@@ -1,0 +1,93 @@
+#include "cli/check_command.h"
+
+#include "check/check.h"
+#include "check/plot.h"
+#include "check/report.h"
+#include "cli/command_line.h"
+#include "surfaces/expression_input.h"
+#include "surfaces/surface.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <fstream>
+
+namespace offsetgen {
+
+void add_check_command(CLI::App& app, CheckOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "check",
+      "Check an emitted file: compile it (C99 strict, C++17, dlopen), compare its values with a 40-digit\n"
+      "evaluation, and measure the wall thickness it produces (paper section 5.2.1). GLSL: glslang compile.");
+  cmd->add_option("file", o.file, "Header (.h) or GLSL snippet (.glsl) written by `offsetgen generate`")->required();
+  cmd->add_option("--h", o.h_list, "Offsets to measure, comma-separated, cell units (default 0.001..0.1, 9 log-spaced)");
+  cmd->add_option("--json", o.json_path, "Write every number to this JSON file");
+  cmd->add_option("--plot", o.plot_path, "Write a log-log convergence figure (PNG) via tools/plot_convergence.py");
+  cmd->add_option("--plot-script", o.plot_script,
+                  "Path of plot_convergence.py (default: $OFFSETGEN_PLOT_SCRIPT, <prefix>/share/offsetgen/tools, "
+                  "the source tree)");
+  cmd->add_option("-t,--thickness", o.thickness,
+                  "Graded wall: total thickness t(x, y, z) in cell units, e.g. \"0.1*x\" (default: the file's)");
+  cmd->add_option("-p,--param", o.params, "NAME=VALUE for the thickness expression (repeatable)");
+  cmd->add_option("--grid", o.grid, "Sample grid points per axis on [0, 1] (21: step 0.05 as in the paper)")
+      ->check(CLI::Range(2, 401));
+  cmd->add_option("--scan", o.scan, "Bracketing sub-intervals along z when sampling a surface")->check(CLI::Range(4, 100000));
+  cmd->add_option("--points", o.points, "Random points of the 40-digit value check (default 200; 60 at orders 5-6, 16 above)")
+      ->check(CLI::Range(0, 1000000));
+  cmd->add_option("--seed", o.seed, "Seed of the random points");
+  cmd->add_option("--tolerance", o.tolerance, "Max zero-set shift of the value check (cell units)");
+  cmd->add_option("--order-slack", o.order_slack, "Fitted order must reach the expected order minus this");
+  cmd->add_flag("--no-values", o.no_values, "Skip the 40-digit value check");
+  cmd->add_flag("--no-thickness", o.no_thickness, "Skip the wall-thickness measurement");
+  cmd->footer(
+      "Exit status: 0 all checks pass, 1 a check failed (compile error, numbers out of bound), 2 usage or input\n"
+      "error (not an offsetgen file, damaged metadata, no C compiler, bad --thickness).\n"
+      "Example: offsetgen check gyroid_o4.h --json gyroid_o4.json --plot gyroid_o4.png");
+}
+
+int run_check(const CheckOptions& o) {
+  check::CheckSettings s;
+  s.file = o.file;
+  if (!o.h_list.empty()) s.h = check::parse_h_list(o.h_list);
+  if (!o.thickness.empty()) s.thickness = o.thickness;
+  for (const auto& p : o.params) s.params.insert(split_param(p));
+  s.json_path = o.json_path;
+  s.plot_path = o.plot_path;
+  s.plot_script = o.plot_script;
+  s.grid = o.grid;
+  s.scan = o.scan;
+  s.values.points = o.points;
+  s.values.seed = o.seed;
+  s.values.tolerance = o.tolerance;
+  s.order_slack = o.order_slack;
+  s.run_values = !o.no_values;
+  s.run_thickness = !o.no_thickness;
+  // Find the plot script before the long run, so a missing one is a quick usage error.
+  std::string script;
+  if (!s.plot_path.empty()) {
+    script = check::find_plot_script(s.plot_script);
+    if (script.empty())
+      throw InputError(fmt::format("--plot: plot_convergence.py not found{}; pass --plot-script PATH or set "
+                                   "$OFFSETGEN_PLOT_SCRIPT",
+                                   s.plot_script.empty() ? "" : " at " + s.plot_script));
+  }
+
+  check::CheckReport report = check::run_checks(s);
+  std::fputs(check::format_report(report).c_str(), stdout);
+  std::fflush(stdout);
+  if (!s.json_path.empty()) {
+    std::ofstream out(s.json_path);
+    out << check::report_json(report).dump(1) << "\n";
+    if (!out) throw InputError(fmt::format("--json: cannot write '{}'", s.json_path));
+  }
+  if (!s.plot_path.empty()) {
+    if (report.thickness) {
+      check::render_plot(check::plot_spec(report), s.plot_path, script);
+    } else {
+      fmt::print(stderr, "offsetgen check: --plot: nothing to plot (no thickness measurement ran)\n");
+    }
+  }
+  return report.pass ? kExitOk : kExitCheckFailed;
+}
+
+}  // namespace offsetgen

@@ -1,0 +1,34 @@
+// `offsetgen check FILE`: compile, load and measure an emitted header (or compile a GLSL snippet).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace offsetgen {
+
+struct CheckOptions {
+  std::string file;
+  std::string h_list;
+  std::string json_path;
+  std::string plot_path;
+  std::string plot_script;
+  std::string thickness;
+  std::vector<std::string> params;
+  int grid = 21;
+  int scan = 200;
+  int points = 0;  // 0: by order (check/value_check.h)
+  unsigned seed = 20210415;
+  double tolerance = 1e-12;
+  double order_slack = 0.3;
+  bool no_values = false;
+  bool no_thickness = false;
+};
+
+void add_check_command(CLI::App& app, CheckOptions& options);
+
+// Exit codes: kExitOk all checks pass, kExitCheckFailed a check failed, kExitUsage usage or input error.
+int run_check(const CheckOptions& options);
+
+}  // namespace offsetgen
