@@ -1,0 +1,70 @@
+# Installation, the CMake package (find_package(offsetgen), offsetgen_generate()) and the build-tree
+# export. Included by the top-level CMakeLists.txt after src/.
+#
+# Installed layout (the executable finds its templates at <exe>/../share/offsetgen/templates, and
+# `offsetgen check` its plot script at <exe>/../share/offsetgen/tools, so bin/ and share/ are fixed):
+#   bin/offsetgen
+#   share/offsetgen/templates/*.in
+#   share/offsetgen/tools/plot_convergence.py
+#   <OFFSETGEN_INSTALL_CMAKEDIR>/offsetgenConfig.cmake, offsetgenConfigVersion.cmake,
+#       offsetgenTargets*.cmake, offsetgenGenerate.cmake, offsetgenGlslString.cmake
+include(CMakePackageConfigHelpers)
+include(GNUInstallDirs)
+
+option(OFFSETGEN_INSTALL "Generate offsetgen's install rules" ${PROJECT_IS_TOP_LEVEL})
+set(OFFSETGEN_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/offsetgen" CACHE STRING
+    "Where to install offsetgen's CMake package, relative to the prefix")
+mark_as_advanced(OFFSETGEN_INSTALL_CMAKEDIR)
+
+# The highest order the executable accepts (kMaxOrder), so offsetgen_generate() can reject others at
+# configure time.
+set(OFFSETGEN_MAX_ORDER 12)
+file(STRINGS "${PROJECT_SOURCE_DIR}/src/emit/generate.h" _offsetgen_max_order_line
+     REGEX "kMaxOrder[ \t]*=[ \t]*[0-9]+")
+if(_offsetgen_max_order_line MATCHES "kMaxOrder[ \t]*=[ \t]*([0-9]+)")
+  set(OFFSETGEN_MAX_ORDER ${CMAKE_MATCH_1})
+endif()
+unset(_offsetgen_max_order_line)
+
+# --- The same names inside this build (add_subdirectory / FetchContent users, and our tests) -------
+add_executable(offsetgen::offsetgen ALIAS offsetgen)
+file(GLOB _offsetgen_templates "${PROJECT_SOURCE_DIR}/templates/*.in")
+set_property(GLOBAL PROPERTY OFFSETGEN_MAX_ORDER ${OFFSETGEN_MAX_ORDER})
+set_property(GLOBAL PROPERTY OFFSETGEN_TEMPLATE_FILES ${_offsetgen_templates})
+unset(_offsetgen_templates)
+include("${CMAKE_CURRENT_LIST_DIR}/offsetgenGenerate.cmake")
+
+# --- Build-tree package: find_package(offsetgen) with offsetgen_DIR=<this build dir> ------------
+export(TARGETS offsetgen NAMESPACE offsetgen:: FILE "${PROJECT_BINARY_DIR}/offsetgenTargets.cmake")
+set(OFFSETGEN_CONFIG_TEMPLATE_DIR "${PROJECT_SOURCE_DIR}/templates")
+set(OFFSETGEN_CONFIG_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}")
+configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/offsetgenConfig.cmake.in"
+  "${PROJECT_BINARY_DIR}/offsetgenConfig.cmake"
+  INSTALL_DESTINATION "${PROJECT_BINARY_DIR}"
+  INSTALL_PREFIX "${PROJECT_BINARY_DIR}"
+  PATH_VARS OFFSETGEN_CONFIG_TEMPLATE_DIR OFFSETGEN_CONFIG_MODULE_DIR)
+# offsetgen is a build tool: a 32-bit consumer can run a 64-bit offsetgen, hence ARCH_INDEPENDENT.
+write_basic_package_version_file("${PROJECT_BINARY_DIR}/offsetgenConfigVersion.cmake"
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion ARCH_INDEPENDENT)
+
+# --- Installation --------------------------------------------------------------------------------
+if(OFFSETGEN_INSTALL)
+  install(TARGETS offsetgen EXPORT offsetgenTargets RUNTIME DESTINATION bin)
+  install(DIRECTORY "${PROJECT_SOURCE_DIR}/templates/" DESTINATION share/offsetgen/templates)
+  install(PROGRAMS "${PROJECT_SOURCE_DIR}/tools/plot_convergence.py" DESTINATION share/offsetgen/tools)
+
+  install(EXPORT offsetgenTargets NAMESPACE offsetgen:: FILE offsetgenTargets.cmake
+          DESTINATION "${OFFSETGEN_INSTALL_CMAKEDIR}")
+  set(OFFSETGEN_CONFIG_TEMPLATE_DIR share/offsetgen/templates)
+  set(OFFSETGEN_CONFIG_MODULE_DIR "${OFFSETGEN_INSTALL_CMAKEDIR}")
+  configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/offsetgenConfig.cmake.in"
+    "${PROJECT_BINARY_DIR}/CMakeFiles/offsetgen-install/offsetgenConfig.cmake"
+    INSTALL_DESTINATION "${OFFSETGEN_INSTALL_CMAKEDIR}"
+    PATH_VARS OFFSETGEN_CONFIG_TEMPLATE_DIR OFFSETGEN_CONFIG_MODULE_DIR)
+  install(FILES
+    "${PROJECT_BINARY_DIR}/CMakeFiles/offsetgen-install/offsetgenConfig.cmake"
+    "${PROJECT_BINARY_DIR}/offsetgenConfigVersion.cmake"
+    "${CMAKE_CURRENT_LIST_DIR}/offsetgenGenerate.cmake"
+    "${CMAKE_CURRENT_LIST_DIR}/offsetgenGlslString.cmake"
+    DESTINATION "${OFFSETGEN_INSTALL_CMAKEDIR}")
+endif()

@@ -1,0 +1,310 @@
+# offsetgen_generate(): generate offset-function headers and GLSL snippets at build time.
+#
+#   offsetgen_generate(TARGET <name>
+#                      SURFACE <catalog-name>                    # or:
+#                      EXPR "<F(x, y[, z])>" NAME <stem> [PARAMS a=0.3 ...]
+#                      ORDERS <m> [<m> ...]                      # 1..12
+#                      [LANG c glsl glsl_string]                 # default: c
+#                      [PRECISION double float]                  # default: double (C only)
+#                      [THICKNESS "<t(x, y, z)>"]                # adds <prefix>_graded
+#                      [NAME <stem>]                             # with SURFACE: replaces it in the prefix
+#                      [OUTPUT_DIR <dir>])                       # default: ${CMAKE_CURRENT_BINARY_DIR}/<name>
+#
+# For every order m it generates, in OUTPUT_DIR, the files of prefix <stem>_o<m> (stem = NAME, else
+# SURFACE): <prefix>.h (LANG c), <prefix>.glsl (LANG glsl or glsl_string) and <prefix>_glsl.h
+# (LANG glsl_string: `static const char <prefix>_glsl[]`, the snippet as a C string).
+#
+# It creates
+#   <name>            an INTERFACE library carrying OUTPUT_DIR as include directory; linking it
+#                     orders the generation before the consumer's compilation;
+#   <name>_generate   the custom target that runs the generator (part of `all`);
+# and sets, in the caller's scope and as properties of <name>:
+#   <name>_HEADERS / OFFSETGEN_HEADERS                 the C headers (<prefix>.h)
+#   <name>_GLSL_FILES / OFFSETGEN_GLSL_FILES           the .glsl snippets
+#   <name>_GLSL_STRING_HEADERS / OFFSETGEN_GLSL_STRING_HEADERS   the <prefix>_glsl.h headers
+#   <name>_OUTPUT_DIR / OFFSETGEN_OUTPUT_DIR           the directory
+#
+# The generator is offsetgen::offsetgen (find_package(offsetgen) or add_subdirectory), or the host
+# executable in the cache variable OFFSETGEN_EXECUTABLE when that is set (cross-compiling).
+# Files are regenerated when the generator, its templates or the arguments change, and only then;
+# offsetgen rewrites a file only when its content changes, so consumers recompile only then.
+
+include_guard(GLOBAL)
+
+set(OFFSETGEN_EXECUTABLE "" CACHE FILEPATH
+    "Host offsetgen executable for offsetgen_generate() (cross-compiling); empty: the offsetgen::offsetgen target")
+
+# Reports a configure-time error of offsetgen_generate() and stops.
+function(_offsetgen_fail target message)
+  if(target)
+    message(FATAL_ERROR "offsetgen_generate(TARGET ${target}): ${message}")
+  else()
+    message(FATAL_ERROR "offsetgen_generate(): ${message}")
+  endif()
+endfunction()
+
+# Writes `content` to `path` only when it differs, so dependants see a new time stamp only then.
+function(_offsetgen_write_if_changed path content)
+  if(EXISTS "${path}")
+    file(READ "${path}" old)
+    if(old STREQUAL content)
+      return()
+    endif()
+  endif()
+  file(WRITE "${path}" "${content}")
+endfunction()
+
+function(offsetgen_generate)
+  set(keywords TARGET SURFACE EXPR NAME THICKNESS OUTPUT_DIR ORDERS LANG PRECISION PARAMS)
+  cmake_parse_arguments(PARSE_ARGV 0 OG "" "TARGET;SURFACE;EXPR;NAME;THICKNESS;OUTPUT_DIR"
+                        "ORDERS;LANG;PRECISION;PARAMS")
+  set(target "")
+  if(DEFINED OG_TARGET)
+    set(target "${OG_TARGET}")
+  endif()
+  string(REPLACE ";" ", " keyword_list "${keywords}")
+
+  # --- Arguments -------------------------------------------------------------------------------
+  if(DEFINED OG_UNPARSED_ARGUMENTS)
+    string(REPLACE ";" " " unparsed "${OG_UNPARSED_ARGUMENTS}")
+    _offsetgen_fail("${target}" "unknown keyword or argument(s) '${unparsed}'; the keywords are ${keyword_list}")
+  endif()
+  if(DEFINED OG_KEYWORDS_MISSING_VALUES)
+    _offsetgen_fail("${target}" "keyword(s) ${OG_KEYWORDS_MISSING_VALUES} given without a value")
+  endif()
+  # After a multi-value keyword a misspelt keyword reads as one more value: name it as what it is.
+  foreach(list_keyword ORDERS LANG PRECISION PARAMS)
+    foreach(value IN LISTS OG_${list_keyword})
+      if(value MATCHES "^[A-Z][A-Z_]+$")
+        _offsetgen_fail("${target}" "unknown keyword '${value}' (read as a value of ${list_keyword}); the keywords are ${keyword_list}")
+      endif()
+    endforeach()
+  endforeach()
+
+  if(NOT DEFINED OG_TARGET)
+    _offsetgen_fail("" "TARGET <name> is required (the INTERFACE library to create)")
+  endif()
+  if(NOT target MATCHES "^[A-Za-z0-9_.+-]+$")
+    _offsetgen_fail("${target}" "TARGET '${target}' is not a valid target name")
+  endif()
+  if(TARGET "${target}" OR TARGET "${target}_generate")
+    _offsetgen_fail("${target}" "TARGET '${target}' (or '${target}_generate') already exists")
+  endif()
+
+  if(DEFINED OG_SURFACE AND DEFINED OG_EXPR)
+    _offsetgen_fail("${target}" "give either SURFACE or EXPR, not both")
+  elseif(DEFINED OG_SURFACE)
+    if(NOT OG_SURFACE MATCHES "^[A-Za-z_][A-Za-z0-9_]*$")
+      _offsetgen_fail("${target}" "SURFACE '${OG_SURFACE}' is not a catalog name (see `offsetgen list`)")
+    endif()
+    set(source_args --surface "${OG_SURFACE}")
+    set(stem "${OG_SURFACE}")
+  elseif(DEFINED OG_EXPR)
+    if(NOT DEFINED OG_NAME)
+      _offsetgen_fail("${target}" "EXPR needs NAME <stem>, the stem of the generated names")
+    endif()
+    set(source_args --expr "${OG_EXPR}")
+    set(stem "${OG_NAME}")
+  else()
+    _offsetgen_fail("${target}" "missing SURFACE <catalog-name> or EXPR \"<expression>\" NAME <stem>")
+  endif()
+  if(DEFINED OG_NAME)
+    if(NOT OG_NAME MATCHES "^[A-Za-z_][A-Za-z0-9_]*$")
+      _offsetgen_fail("${target}" "NAME '${OG_NAME}' is not a C identifier (letters, digits, _)")
+    endif()
+    set(stem "${OG_NAME}")
+  endif()
+
+  get_property(max_order GLOBAL PROPERTY OFFSETGEN_MAX_ORDER)
+  if(NOT max_order)
+    set(max_order 12)
+  endif()
+  if(NOT DEFINED OG_ORDERS)
+    _offsetgen_fail("${target}" "ORDERS <m> ... is required (orders 1 to ${max_order})")
+  endif()
+  set(orders "")
+  foreach(order IN LISTS OG_ORDERS)
+    if(NOT order MATCHES "^[0-9]+$" OR order LESS 1 OR order GREATER max_order)
+      _offsetgen_fail("${target}" "ORDERS: order '${order}' is out of range; offsetgen supports orders 1 to ${max_order}")
+    endif()
+    math(EXPR order "${order}")  # 04 -> 4, as offsetgen names the files
+    list(APPEND orders ${order})
+  endforeach()
+  list(REMOVE_DUPLICATES orders)
+
+  set(want_c OFF)
+  set(want_glsl OFF)
+  set(want_glsl_string OFF)
+  set(languages c)
+  if(DEFINED OG_LANG)
+    set(languages ${OG_LANG})
+  endif()
+  foreach(language IN LISTS languages)
+    if(language STREQUAL "c")
+      set(want_c ON)
+    elseif(language STREQUAL "glsl")
+      set(want_glsl ON)
+    elseif(language STREQUAL "glsl_string")
+      set(want_glsl ON)
+      set(want_glsl_string ON)
+    else()
+      _offsetgen_fail("${target}" "LANG: unknown language '${language}'; expected c, glsl or glsl_string")
+    endif()
+  endforeach()
+  list(REMOVE_DUPLICATES languages)
+  string(REPLACE ";" ", " languages_text "${languages}")
+  if(want_c AND want_glsl)
+    set(lang_arg all)
+  elseif(want_c)
+    set(lang_arg c)
+  else()
+    set(lang_arg glsl)
+  endif()
+
+  set(want_double OFF)
+  set(want_float OFF)
+  set(precisions double)
+  if(DEFINED OG_PRECISION)
+    set(precisions ${OG_PRECISION})
+  endif()
+  foreach(precision IN LISTS precisions)
+    if(precision STREQUAL "double")
+      set(want_double ON)
+    elseif(precision STREQUAL "float")
+      set(want_float ON)
+    else()
+      _offsetgen_fail("${target}" "PRECISION: unknown precision '${precision}'; expected double and/or float")
+    endif()
+  endforeach()
+  set(precision_args "")
+  if(want_c)  # the GLSL snippet is float-only; --precision concerns the C header
+    if(want_double AND want_float)
+      set(precision_args --precision both)
+    elseif(want_float)
+      set(precision_args --precision float)
+    else()
+      set(precision_args --precision double)
+    endif()
+  endif()
+
+  set(param_args "")
+  foreach(param IN LISTS OG_PARAMS)
+    if(NOT param MATCHES "^[A-Za-z_][A-Za-z0-9_]*=.+$")
+      _offsetgen_fail("${target}" "PARAMS: '${param}' is not NAME=VALUE")
+    endif()
+    list(APPEND param_args --param "${param}")
+  endforeach()
+  set(thickness_args "")
+  if(DEFINED OG_THICKNESS)
+    set(thickness_args --thickness "${OG_THICKNESS}")
+  endif()
+
+  set(output_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}")
+  if(DEFINED OG_OUTPUT_DIR)
+    get_filename_component(output_dir "${OG_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
+  endif()
+
+  # --- The generator -----------------------------------------------------------------------------
+  if(OFFSETGEN_EXECUTABLE)
+    if(NOT EXISTS "${OFFSETGEN_EXECUTABLE}" OR IS_DIRECTORY "${OFFSETGEN_EXECUTABLE}")
+      _offsetgen_fail("${target}" "OFFSETGEN_EXECUTABLE '${OFFSETGEN_EXECUTABLE}' does not exist")
+    endif()
+    set(tool "${OFFSETGEN_EXECUTABLE}")
+    set(tool_inputs "${OFFSETGEN_EXECUTABLE}")
+  elseif(TARGET offsetgen::offsetgen)
+    set(tool offsetgen::offsetgen)
+    set(tool_inputs offsetgen::offsetgen)
+    get_property(templates GLOBAL PROPERTY OFFSETGEN_TEMPLATE_FILES)
+    list(APPEND tool_inputs ${templates})
+  else()
+    _offsetgen_fail("${target}" "no offsetgen: call find_package(offsetgen) or add_subdirectory(<offsetgen>) first, or set OFFSETGEN_EXECUTABLE to a host offsetgen")
+  endif()
+
+  # --- One custom command per order --------------------------------------------------------------
+  set(glsl_string_script "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/offsetgenGlslString.cmake")
+  set(state_dir "${CMAKE_CURRENT_BINARY_DIR}/CMakeFiles/offsetgen_generate/${target}")
+  file(MAKE_DIRECTORY "${state_dir}" "${output_dir}")
+  set(headers "")
+  set(glsl_files "")
+  set(glsl_string_headers "")
+  set(all_outputs "")
+  foreach(order IN LISTS orders)
+    set(prefix "${stem}_o${order}")
+    set(name_args "")
+    if(DEFINED OG_NAME)
+      set(name_args --name "${prefix}")
+    endif()
+    set(args generate ${source_args} ${param_args} ${name_args} --order ${order} --lang ${lang_arg}
+             ${precision_args} ${thickness_args} --out-dir "${output_dir}")
+
+    # The stamp is the primary output, touched on every run, while offsetgen (and the glsl_string
+    # script) leave files with unchanged content alone; so after a rerun that changed nothing, e.g.
+    # a rebuilt generator, the command does not run again and consumers are not recompiled.
+    # Ninja sees the generated files as outputs too (restat). The Makefile generators touch every
+    # OUTPUT but the first one after a run, which would recompile consumers for nothing: there
+    # they are BYPRODUCTS, which consumers of the INTERFACE library pick up through its target
+    # dependency and the compiler's dependency files.
+    set(stamp "${state_dir}/${prefix}.stamp")
+    # The exact arguments, written only when they change: the Makefile generators do not rerun a
+    # custom command whose command line changed, so the command depends on this file.
+    set(args_file "${state_dir}/${prefix}.args")
+    string(REPLACE ";" "\n" args_text "${tool};${args};glsl_string=${want_glsl_string}")
+    _offsetgen_write_if_changed("${args_file}" "${args_text}\n")
+
+    set(outputs "")
+    set(commands COMMAND "${tool}" ${args})
+    if(want_c)
+      list(APPEND outputs "${output_dir}/${prefix}.h")
+      list(APPEND headers "${output_dir}/${prefix}.h")
+    endif()
+    if(want_glsl)
+      list(APPEND outputs "${output_dir}/${prefix}.glsl")
+      list(APPEND glsl_files "${output_dir}/${prefix}.glsl")
+    endif()
+    if(want_glsl_string)
+      list(APPEND outputs "${output_dir}/${prefix}_glsl.h")
+      list(APPEND glsl_string_headers "${output_dir}/${prefix}_glsl.h")
+      list(APPEND commands COMMAND "${CMAKE_COMMAND}" "-DINPUT=${output_dir}/${prefix}.glsl"
+           "-DOUTPUT=${output_dir}/${prefix}_glsl.h" "-DNAME=${prefix}_glsl" -P "${glsl_string_script}")
+    endif()
+    # A generated file gone missing (deleted, or OUTPUT_DIR moved) means the stamp lies: drop it.
+    foreach(output IN LISTS outputs)
+      if(NOT EXISTS "${output}")
+        file(REMOVE "${stamp}")
+      endif()
+    endforeach()
+    list(APPEND all_outputs "${stamp}")
+    if(CMAKE_GENERATOR MATCHES "Makefiles")
+      set(output_args OUTPUT "${stamp}" BYPRODUCTS ${outputs})
+    else()
+      set(output_args OUTPUT "${stamp}" ${outputs})
+      list(APPEND all_outputs ${outputs})
+    endif()
+    set(script_inputs "")
+    if(want_glsl_string)
+      set(script_inputs "${glsl_string_script}")
+    endif()
+    add_custom_command(
+      ${output_args}
+      COMMAND "${CMAKE_COMMAND}" -E make_directory "${output_dir}"
+      ${commands}
+      COMMAND "${CMAKE_COMMAND}" -E touch "${stamp}"
+      DEPENDS ${tool_inputs} "${args_file}" ${script_inputs}
+      COMMENT "offsetgen: generating ${prefix} (${languages_text}) for ${target}"
+      VERBATIM)
+  endforeach()
+
+  add_custom_target(${target}_generate ALL DEPENDS ${all_outputs})
+  add_library(${target} INTERFACE)
+  target_include_directories(${target} INTERFACE "${output_dir}")
+  add_dependencies(${target} ${target}_generate)
+  set_target_properties(${target} PROPERTIES
+    OFFSETGEN_HEADERS "${headers}"
+    OFFSETGEN_GLSL_FILES "${glsl_files}"
+    OFFSETGEN_GLSL_STRING_HEADERS "${glsl_string_headers}"
+    OFFSETGEN_OUTPUT_DIR "${output_dir}")
+  set(${target}_HEADERS "${headers}" PARENT_SCOPE)
+  set(${target}_GLSL_FILES "${glsl_files}" PARENT_SCOPE)
+  set(${target}_GLSL_STRING_HEADERS "${glsl_string_headers}" PARENT_SCOPE)
+  set(${target}_OUTPUT_DIR "${output_dir}" PARENT_SCOPE)
+endfunction()
