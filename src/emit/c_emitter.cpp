@@ -1,5 +1,6 @@
 #include "emit/c_emitter.h"
 
+#include "emit/c_batch.h"
 #include "emit/printer.h"
 #include "emit/templates.h"
 
@@ -57,6 +58,7 @@ std::string emit_c_header(const FileFacts& facts, const std::vector<EmittedFunct
       function_list += fmt::format(" *   {:<42} {}\n", call, f.doc);
     }
   }
+  rendered += emit_c_batch(facts, functions, precisions);  // the _n batch API (c_batch.h)
   for (const auto& f : functions) ops_list += fmt::format(" *   {:<8} {}\n", f.suffix, count_ops(*f.program));
   function_list.pop_back();
   ops_list.pop_back();

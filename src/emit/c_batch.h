@@ -1,0 +1,23 @@
+// The batch (array) API of the C header: <prefix>_offset_n and <prefix>_shell_n (and their float
+// twins), loops written to vectorise. The text skeleton is templates/c_batch.in.
+#pragma once
+
+#include "emit/dialect.h"
+#include "emit/emitted_api.h"
+
+#include <string>
+#include <vector>
+
+namespace offsetgen {
+
+// The batch section of a C header: the loop pragma macro, the vectorisable sin/cos helpers of each
+// requested precision, and one `_n` function per batched scalar function (offset and shell).
+// Returns "" when `functions` holds nothing to batch.
+std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFunction>& functions,
+                         const std::vector<Precision>& precisions);
+
+// Replaces calls of sin/cos (and sinf/cosf) in printed C by the batch helpers
+// offsetgen_batch_sin/cos(f); other text is untouched. Exposed for tests.
+std::string use_batch_trig(const std::string& code);
+
+}  // namespace offsetgen
