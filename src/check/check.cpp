@@ -87,7 +87,7 @@ CheckReport run_checks(const CheckSettings& s) {
   report.sweep = s.h.empty() ? default_sweep() : s.h;
 
   if (meta.kind == FileKind::Glsl) {
-    report.glsl = compile_glsl(text, meta);
+    report.glsl = compile_glsl(text, meta, s.file);
     for (const auto& r : report.glsl) {
       Verdict v{"glslang " + r.name, r.ok, true, r.ok ? "compiles and links" : "does not compile"};
       report.verdicts.push_back(v);
@@ -134,13 +134,20 @@ CheckReport run_checks(const CheckSettings& s) {
   if (s.run_values) {
     progress.update("values", fmt::format("random points against {}-digit CLN", s.values.digits));
     report.values = check_values(functions, *reference, meta, file_thickness, s.values);
-    report.verdicts.push_back({"values", report.values->pass, true,
-                               fmt::format("max zero-set shift {:.2e} (limit {:.0e})", report.values->max_shift_double,
-                                           s.values.tolerance)});
+    if (report.values->has_double) {
+      report.verdicts.push_back({"values", report.values->pass, true,
+                                 fmt::format("max zero-set shift {:.2e} (limit {:.0e})", report.values->max_shift_double,
+                                             s.values.tolerance)});
+    } else {
+      report.verdicts.push_back({"values", true, false,
+                                 fmt::format("float-only file: max float32 zero-set shift {:.2e}, reported, not judged",
+                                             report.values->max_shift_float)});
+    }
   }
 
   if (s.run_thickness) {
     Probe probe = make_probe(functions);
+    report.thickness_float_only = probe.float_only;
     ThicknessOptions options;
     options.h = report.sweep;
     options.grid = s.grid;

@@ -55,6 +55,7 @@ struct CheckReport {
   std::vector<GlslCompileResult> glsl;         // GLSL files
   std::optional<ValueReport> values;
   std::optional<ThicknessReport> thickness;
+  bool thickness_float_only = false;
   std::optional<GradedReport> graded;
   std::vector<Verdict> verdicts;
   std::vector<double> sweep;

@@ -6,7 +6,9 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <future>
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
@@ -139,7 +141,8 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
   return s;
 }
 
-CompileResult compile_and_load(const std::string& header_path, const FileMetadata& meta, const Toolchain& tools) {
+CompileResult compile_and_load(const std::string& header_path, const FileMetadata& meta, const Toolchain& tools,
+                               const CompileOptions& options) {
   CompileResult result;
   ScratchDir scratch;
   const fs::path header = fs::absolute(header_path);
@@ -157,32 +160,43 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
     if (!out) throw std::runtime_error("cannot write " + source.string());
   }
 
-  // 1. Strict C99; this step also builds the shared object that gets loaded.
+  // Optimisation: -O2 as users build, except for very large functions (order >= 7), where gcc -O2
+  // needs minutes while -O0 gives the same IEEE results (no -ffast-math, no contraction) in seconds.
+  int largest = 0;
+  for (const auto& [name, ops] : meta.ops) largest = std::max(largest, ops);
+  const std::string opt = !options.optimization.empty() ? options.optimization : (largest > kLargeFunctionOps ? "-O0" : "-O2");
+  result.optimization = opt;
+  if (opt == "-O0" && options.optimization.empty())
+    result.note = fmt::format("built at -O0: the largest function has {} ops (gcc -O2 takes minutes at this size)", largest);
+
+  // 1. Strict C99; this step also builds the shared object that gets loaded. 2. Strict C++17
+  // (compiled, not linked). The two run in parallel.
   std::vector<std::string> c = tools.c;
   c.insert(c.end(), {"-std=c99"});
   c.insert(c.end(), std::begin(kStrictWarnings), std::end(kStrictWarnings));
-  c.insert(c.end(), {"-O2", "-ffp-contract=off", "-fPIC", "-shared", "-I" + include_dir, "-I" + scratch.path().string(),
+  c.insert(c.end(), {opt, "-ffp-contract=off", "-fPIC", "-shared", "-I" + include_dir, "-I" + scratch.path().string(),
                      source.string(), "-o", library.string(), "-lm"});
-  result.steps.push_back(run_step("C99 strict + shared object", c));
-  bool ok = result.steps.back().ok;
-
-  // 2. Strict C++17 (compiled, not linked).
-  if (tools.cxx.empty()) {
+  auto c_step = std::async(std::launch::async, [c] { return run_step("C99 strict + shared object", c); });
+  CompileStep cxx_step;
+  if (tools.cxx.empty() || !options.cxx) {
     CompileStep skipped;
     skipped.name = "C++17 strict";
     skipped.skipped = true;
     skipped.ok = true;
-    skipped.output = "no C++ compiler on PATH (looked for $CXX, c++, g++, clang++): C++17 check skipped";
-    result.steps.push_back(skipped);
+    skipped.output = options.cxx ? "no C++ compiler on PATH (looked for $CXX, c++, g++, clang++): C++17 check skipped"
+                                 : "not requested";
+    cxx_step = skipped;
   } else {
     std::vector<std::string> cxx = tools.cxx;
     cxx.insert(cxx.end(), {"-std=c++17"});
     cxx.insert(cxx.end(), std::begin(kStrictWarnings), std::end(kStrictWarnings));
-    cxx.insert(cxx.end(), {"-O2", "-I" + include_dir, "-I" + scratch.path().string(), "-x", "c++", "-c",
+    cxx.insert(cxx.end(), {opt, "-I" + include_dir, "-I" + scratch.path().string(), "-x", "c++", "-c",
                            source.string(), "-o", (scratch.path() / "cxx17.o").string()});
-    result.steps.push_back(run_step("C++17 strict", cxx));
-    ok = ok && result.steps.back().ok;
+    cxx_step = run_step("C++17 strict", cxx);
   }
+  result.steps.push_back(c_step.get());
+  result.steps.push_back(cxx_step);
+  const bool ok = result.steps[0].ok && result.steps[1].ok;
   if (!result.steps.front().ok) return result;
 
   // 3. Load.

@@ -60,8 +60,13 @@ class LoadedLibrary {
   LoadedFunctions functions_;
 };
 
+// Above this many ops in one function the shared object is built at -O0 (see compile.cpp).
+constexpr int kLargeFunctionOps = 5000;
+
 struct CompileResult {
   std::vector<CompileStep> steps;
+  std::string optimization;  // "-O2" or "-O0"
+  std::string note;          // why -O0, when it is
   bool ok = false;                         // every step that ran succeeded and the code is loaded
   std::unique_ptr<LoadedLibrary> library;  // set when ok
 };
@@ -70,8 +75,14 @@ struct CompileResult {
 // one wrapper per function with unmangled names.
 std::string wrapper_source(const std::string& include_name, const FileMetadata& meta);
 
+struct CompileOptions {
+  std::string optimization;  // "" picks -O2, or -O0 above kLargeFunctionOps; tests force "-O0" for speed
+  bool cxx = true;           // also the strict C++17 compile
+};
+
 // Compiles `header_path` (strict C99, strict C++17, shared object) in a fresh scratch directory and
 // loads it. Never throws for compiler failures: they come back as failed steps.
-CompileResult compile_and_load(const std::string& header_path, const FileMetadata& meta, const Toolchain& tools);
+CompileResult compile_and_load(const std::string& header_path, const FileMetadata& meta, const Toolchain& tools,
+                               const CompileOptions& options = {});
 
 }  // namespace offsetgen::check

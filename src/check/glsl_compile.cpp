@@ -34,8 +34,8 @@ int count_lines(const std::string& s) {
 }
 
 // "ERROR: 0:57: ..." -> the same line, followed by "  (snippet line 53)" when it falls in the snippet.
-std::string annotate(const std::string& log, int first, int snippet_lines) {
-  static const std::regex location(R"((?:ERROR|WARNING): \d+:(\d+):)");
+std::string annotate(const std::string& log, int first, int snippet_lines, const std::string& name) {
+  static const std::regex location(R"((?:ERROR|WARNING): .*?:(\d+):)");
   std::istringstream in(log);
   std::string line, out;
   while (std::getline(in, line)) {
@@ -44,7 +44,7 @@ std::string annotate(const std::string& log, int first, int snippet_lines) {
     if (std::regex_search(line, m, location)) {
       const int host = std::stoi(m[1].str());
       const int snippet = host - first + 1;
-      if (snippet >= 1 && snippet <= snippet_lines) out += fmt::format("   [snippet line {}]", snippet);
+      if (snippet >= 1 && snippet <= snippet_lines) out += fmt::format("   [{} line {}]", name, snippet);
     }
     out += "\n";
   }
@@ -83,7 +83,8 @@ std::string glsl_host_shader(const std::string& snippet, const FileMetadata& met
   return s;
 }
 
-std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const FileMetadata& meta) {
+std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const FileMetadata& meta,
+                                            const std::string& display_name) {
   const std::string validator = find_on_path("glslangValidator");
   if (validator.empty())
     throw InputError("glslangValidator is not on PATH: `offsetgen check` compiles GLSL snippets with it "
@@ -110,7 +111,7 @@ std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const Fi
     r.command.push_back(frag.string());
     ProcessResult pr = run_process(r.command);
     r.ok = pr.started && pr.exit_code == 0;
-    r.output = r.ok ? pr.output : annotate(pr.output, first, snippet_lines);
+    r.output = r.ok ? pr.output : annotate(pr.output, first, snippet_lines, display_name);
     results.push_back(r);
   }
   if (std::getenv("OFFSETGEN_CHECK_KEEP") == nullptr) {

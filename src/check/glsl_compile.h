@@ -28,6 +28,8 @@ std::string glsl_host_shader(const std::string& snippet, const FileMetadata& met
                              int* snippet_first_line = nullptr);
 
 // Throws InputError when glslangValidator is not on PATH (Debian: glslang-tools).
-std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const FileMetadata& meta);
+// `display_name` names the snippet in the line notes ("[gyroid_o4.glsl line 55]").
+std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const FileMetadata& meta,
+                                            const std::string& display_name);
 
 }  // namespace offsetgen::check

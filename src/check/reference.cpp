@@ -1,5 +1,6 @@
 #include "check/reference.h"
 
+#include "check/expression_syntax.h"
 #include "lowering/lower.h"
 #include "offset/atom_table.h"
 #include "surfaces/expression_input.h"
@@ -72,6 +73,9 @@ GiNaC::ex parse_thickness(const std::string& text, const FileMetadata& meta,
                           const std::map<std::string, std::string>& extra) {
   std::map<std::string, std::string> params = meta.params;
   for (const auto& [k, v] : extra) params[k] = v;
+  if (auto problem = find_syntax_problem(text))
+    throw InputError(fmt::format("--thickness: the expression does not parse: {} at column {}:\n{}", problem->message,
+                                 problem->column, caret_line(text, problem->column, 4)));
   try {
     return parse_thickness_expression(text, params, meta.dims);
   } catch (const InputError& e) {

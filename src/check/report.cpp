@@ -82,6 +82,7 @@ std::string format_report(const CheckReport& r) {
   } else {
     line("");
     line(fmt::format("1. Compile ({})", r.toolchain));
+    if (!r.compile.note.empty()) line("   " + r.compile.note);
     for (const auto& step : r.compile.steps) {
       std::string cmd;
       for (const auto& a : step.command) cmd += (cmd.empty() ? "" : " ") + a;
@@ -105,8 +106,9 @@ std::string format_report(const CheckReport& r) {
     for (const auto& f : v.functions)
       line(fmt::format("  {:<10} {:>6} {:>11} {:>11}  {}", f.function, f.points, sci(f.max_shift), sci(f.mean_shift),
                        f.measure));
-    line(fmt::format("  max zero-set shift (double) {} {} {:.0e}: {}", sci(v.max_shift_double),
-                     v.max_shift_double <= v.tolerance ? "<=" : ">", v.tolerance, v.pass ? "PASS" : "FAIL"));
+    if (v.has_double)
+      line(fmt::format("  max zero-set shift (double) {} {} {:.0e}: {}", sci(v.max_shift_double),
+                       v.max_shift_double <= v.tolerance ? "<=" : ">", v.tolerance, v.pass ? "PASS" : "FAIL"));
     if (v.max_shift_float > 0)
       line(fmt::format("  float32 twins: max shift {} (reported only; float32 rounding is ~1e-7)", sci(v.max_shift_float)));
   }
@@ -114,9 +116,15 @@ std::string format_report(const CheckReport& r) {
   if (r.thickness) {
     const ThicknessReport& t = *r.thickness;
     line("");
-    line(fmt::format("3. Wall thickness (paper section 5.2.1): {} points on F = 0 (x, y on a {}x{} grid, z by "
-                     "bracketing + Brent),",
-                     t.samples_on_f, t.grid, t.grid));
+    if (m.dims == 3)
+      line(fmt::format("3. Wall thickness (paper section 5.2.1): {} points on F = 0 (x, y on a {}x{} grid, z by "
+                       "bracketing + Brent),",
+                       t.samples_on_f, t.grid, t.grid));
+    else
+      line(fmt::format("3. Wall thickness (paper section 5.2.1): {} points on F = 0 (x on a grid of {}, y by "
+                       "bracketing + Brent),",
+                       t.samples_on_f, t.grid));
+    if (r.thickness_float_only) line("   (float-only file: measured on the float32 functions, slopes not judged)");
     line("   rays along the unit normal; relative error |h_m - h| / h; 'missed' = rays without a crossing");
     line(fmt::format("  {:>8} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6}", "h/L", "F->phi", "max",
                      "missed", "phi->F", "max", "missed", "shell t=2h", "max", "missed"));
@@ -193,6 +201,8 @@ ojson report_json(const CheckReport& r) {
   ojson compile;
   compile["toolchain"] = r.toolchain;
   compile["ok"] = r.compile.ok;
+  compile["optimization"] = r.compile.optimization;
+  compile["note"] = r.compile.note;
   ojson steps = ojson::array();
   for (const auto& s : r.compile.steps)
     steps.push_back({{"name", s.name}, {"ok", s.ok}, {"skipped", s.skipped}, {"seconds", s.seconds}, {"command", s.command},
@@ -206,7 +216,7 @@ ojson report_json(const CheckReport& r) {
     vj["digits"] = v.digits;
     vj["tolerance"] = v.tolerance;
     vj["pass"] = v.pass;
-    vj["max_shift_double"] = v.max_shift_double;
+    vj["max_shift_double"] = v.has_double ? ojson(v.max_shift_double) : ojson();
     vj["max_normal_deviation_double"] = v.max_normal_double;
     vj["max_shift_float"] = v.max_shift_float;
     ojson fs = ojson::array();

@@ -181,6 +181,7 @@ ValueReport check_values(const LoadedFunctions& f, const Reference& reference, c
     }
     report.functions.push_back(d);
   }
+  report.has_double = f.offset != nullptr;
   report.pass = report.max_shift_double <= options.tolerance;
   return report;
 }

@@ -39,6 +39,7 @@ struct ValueReport {
   double max_shift_float = 0;   // informational: float32 cannot meet 1e-12
   double tolerance = 0;
   int digits = 40;
+  bool has_double = true;  // false for float-only files: nothing is judged
   bool pass = false;
 };
 
