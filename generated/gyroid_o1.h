@@ -261,8 +261,8 @@ static inline void gyroid_o1_normalf(float x, float y, float z, float h, float n
  * selects (blends), and there are no calls left for the vectoriser to stumble over.
  *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
  *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
- *                `#pragma omp simd`; otherwise it carries `GCC ivdep` / `clang loop vectorize(enable)`.
- *                Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
+ *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
  * The results agree with the scalar functions to about 1e-15 of the field's scale (the only
  * difference is the last bits of sin and cos). Points whose sin/cos arguments lie beyond the
  * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
@@ -272,11 +272,10 @@ static inline void gyroid_o1_normalf(float x, float y, float z, float h, float n
  * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
  */
 #ifndef OFFSETGEN_SIMD_LOOP
-#if defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)
+/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno sqrt calls. */
+#if (defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)) && (!defined(__clang__) || defined(__NO_MATH_ERRNO__))
 #define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
-#elif defined(__clang__)
-#define OFFSETGEN_SIMD_LOOP _Pragma("clang loop vectorize(enable) interleave(enable)")
-#elif defined(__GNUC__)
+#elif defined(__GNUC__) && !defined(__clang__)
 #define OFFSETGEN_SIMD_LOOP _Pragma("GCC ivdep")
 #else
 #define OFFSETGEN_SIMD_LOOP
