@@ -1,0 +1,148 @@
+// `offsetgen check` as a user runs it: exit codes 0 (all pass), 1 (a check failed), 2 (usage or
+// input error), the table, --json and --plot.
+#include "check/process.h"
+#include "check_test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace offsetgen::check {
+namespace {
+
+const std::vector<std::string> kQuick = {"--h", "0.005,0.01,0.02", "--grid", "6", "--scan", "60", "--points", "10"};
+
+std::vector<std::string> args(std::vector<std::string> a, bool quick = true) {
+  if (quick) a.insert(a.end(), kQuick.begin(), kQuick.end());
+  return a;
+}
+
+class CheckCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new std::string(testing::scratch_dir("cli"));
+    header_ = new std::string(testing::write_header(*dir_, "gyroid", 2, "0.01*x"));
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    delete header_;
+  }
+  static std::string* dir_;
+  static std::string* header_;
+};
+std::string* CheckCli::dir_ = nullptr;
+std::string* CheckCli::header_ = nullptr;
+
+TEST_F(CheckCli, AGoodHeaderPassesWithExit0AndEveryNumberInJson) {
+  const std::string json = *dir_ + "/out.json";
+  auto r = testing::run_offsetgen(args({"check", *header_, "--json", json}));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const char* text : {"1. Compile", "C99 strict", "2. Values", "3. Wall thickness", "4. Graded wall", "fitted order",
+                           "one-sided", "all checks passed"})
+    EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
+  nlohmann::json j = nlohmann::json::parse(testing::read_text(json));
+  EXPECT_EQ(j["pass"], true);
+  EXPECT_EQ(j["metadata"]["order"], 2);
+  EXPECT_LT(j["values"]["max_shift_double"].get<double>(), 1e-12);
+  ASSERT_EQ(j["thickness"]["rows"].size(), 3u);
+  EXPECT_EQ(j["thickness"]["rows"][1]["h"], 0.01);
+  EXPECT_GT(j["thickness"]["rows"][1]["f_to_phi"]["mean_relative_error"].get<double>(), 0);
+  EXPECT_TRUE(j["thickness"]["fits"]["f_to_phi"]["fitted"].get<bool>());
+  EXPECT_EQ(j["graded"]["rows"].back()["as_given"], true);
+  EXPECT_TRUE(j["graded"]["definitions"].contains("one_sided"));
+}
+
+TEST_F(CheckCli, ProgressIsNotWrittenWhenStderrIsNotATerminal) {
+  auto r = testing::run_offsetgen(args({"check", *header_, "--no-values"}));
+  EXPECT_EQ(r.output.find("[offsetgen check]"), std::string::npos);
+  EXPECT_EQ(r.output.find('\r'), std::string::npos);
+}
+
+TEST_F(CheckCli, APlotIsWrittenWithThePlotScript) {
+  if (find_on_path("/usr/bin/python3").empty()) GTEST_SKIP() << "no /usr/bin/python3";
+  if (run_process({"/usr/bin/python3", "-c", "import matplotlib"}).exit_code != 0) GTEST_SKIP() << "no matplotlib";
+  const std::string png = *dir_ + "/plot.png";
+  auto r = testing::run_offsetgen(args({"check", *header_, "--no-values", "--plot", png}));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+  auto bad = testing::run_offsetgen(args({"check", *header_, "--plot", png, "--plot-script", "/nonexistent.py"}));
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+}
+
+TEST_F(CheckCli, ACompileErrorExits1WithTheCompilerOutput) {
+  std::string text = testing::read_text(*header_);
+  const auto body = text.find("{", text.find("static inline double gyroid_o2_shell"));
+  text.insert(body + 1, "\n    return undeclared_identifier;");
+  const std::string broken = *dir_ + "/broken.h";
+  testing::write_text(broken, text);
+  auto r = testing::run_offsetgen(args({"check", broken}));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("undeclared_identifier"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("broken.h:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("FAILED"), std::string::npos) << r.output;
+}
+
+TEST_F(CheckCli, NumbersOutOfBoundExit1) {
+  auto r = testing::run_offsetgen(args({"check", *header_, "--no-thickness", "--tolerance", "1e-30"}));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAIL   values"), std::string::npos) << r.output;
+}
+
+TEST_F(CheckCli, InputErrorsExit2WithAMessage) {
+  const std::string plain = *dir_ + "/plain.h";
+  testing::write_text(plain, "#include <math.h>\nstatic double f(double x) { return x; }\n");
+  std::string text = testing::read_text(*header_);
+  text.replace(text.find("\"order\":2"), 9, "\"order\":\"two\"");
+  const std::string damaged = *dir_ + "/damaged.h";
+  testing::write_text(damaged, text);
+  struct Case {
+    std::vector<std::string> argv;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {{"check", plain}, "not produced by offsetgen"},
+      {{"check", damaged}, "damaged"},
+      {{"check", *dir_ + "/missing.h"}, "cannot read"},
+      {{"check", *header_, "--thickness", "0.1*x+*2"}, "column 7"},
+      {{"check", *header_, "--h", "0.01,abc"}, "'abc' is not a number"},
+      {{"check", *header_, "--h", "-0.01"}, "outside (0, 0.5]"},
+      {{"check"}, "file is required"},
+  };
+  for (const auto& c : cases) {
+    auto r = testing::run_offsetgen(c.argv);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << "expected '" << c.says << "' in: " << r.output;
+  }
+}
+
+TEST_F(CheckCli, NoCompilerOnPathExits2) {
+  const char* old = std::getenv("PATH");
+  const std::string saved = old ? old : "";
+  const char* old_cc = std::getenv("CC");
+  const std::string saved_cc = old_cc ? old_cc : "";
+  ::setenv("PATH", "/nonexistent-offsetgen-test", 1);
+  ::unsetenv("CC");
+  auto r = testing::run_offsetgen(args({"check", *header_}));
+  ::setenv("PATH", saved.c_str(), 1);
+  if (old_cc) ::setenv("CC", saved_cc.c_str(), 1);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("no C compiler on PATH"), std::string::npos) << r.output;
+}
+
+TEST_F(CheckCli, GlslFilesAreCompiledForFourTargets) {
+  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  const std::string glsl = testing::write_header(*dir_, "schwarzp", 3, "", true);
+  auto r = testing::run_offsetgen({"check", glsl});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const char* t : {"GLSL ES 3.00", "GLSL 3.30", "GLSL 4.50", "Vulkan"}) EXPECT_NE(r.output.find(t), std::string::npos);
+  std::string text = testing::read_text(glsl);
+  text.insert(text.find("{\n", text.find("schwarzp_o3_field(")) + 2, "    oops;\n");
+  testing::write_text(*dir_ + "/bad.glsl", text);
+  auto bad = testing::run_offsetgen({"check", *dir_ + "/bad.glsl"});
+  EXPECT_EQ(bad.exit_code, 1) << bad.output;
+}
+
+}  // namespace
+}  // namespace offsetgen::check

@@ -1,0 +1,148 @@
+// The metadata block: read back from real generated files, refused (with a message saying why)
+// when absent or damaged.
+#include "check/metadata.h"
+#include "check/reference.h"
+#include "check_test_support.h"
+#include "surfaces/surface.h"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+
+namespace offsetgen::check {
+namespace {
+
+std::string generated_header() {
+  static const std::string text = [] {
+    const std::string dir = testing::scratch_dir("metadata");
+    return testing::read_text(testing::write_header(dir, "gyroid", 3, "0.02+0.01*x"));
+  }();
+  return text;
+}
+
+std::string refusal(const std::string& text, FileKind kind = FileKind::C) {
+  try {
+    parse_metadata(text, kind);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(Metadata, ReadsEverythingFromAGeneratedHeader) {
+  FileMetadata m = parse_metadata(generated_header(), FileKind::C);
+  EXPECT_EQ(m.format, 1);
+  EXPECT_EQ(m.prefix, "gyroid_o3");
+  ASSERT_TRUE(m.surface);
+  EXPECT_EQ(*m.surface, "gyroid");
+  EXPECT_FALSE(m.expression);
+  EXPECT_EQ(m.order, 3);
+  EXPECT_EQ(m.dims, 3);
+  ASSERT_TRUE(m.thickness);
+  EXPECT_EQ(*m.thickness, "0.02+0.01*x");
+  EXPECT_TRUE(m.has_double);
+  EXPECT_FALSE(m.has_float);
+  EXPECT_NEAR(m.scale, 6.283185307179586, 1e-15);
+  EXPECT_GT(m.gradient_bound, 1.7);
+  EXPECT_GT(m.ops.at("offset"), 0);
+}
+
+TEST(Metadata, TheModelRebuildsFromTheMetadataAlone) {
+  FileMetadata m = parse_metadata(generated_header(), FileKind::C);
+  auto ref = rebuild_reference(m);
+  EXPECT_EQ(ref->generation.prefix, "gyroid_o3");
+  EXPECT_EQ(ref->generation.model.order, 3);
+  EXPECT_DOUBLE_EQ(ref->generation.programs.gradient_bound, m.gradient_bound);
+  EXPECT_TRUE(ref->warnings.empty()) << ref->warnings.front();
+}
+
+TEST(Metadata, AFileWithoutTheBlockIsNotAnOffsetgenFile) {
+  EXPECT_NE(refusal("#include <math.h>\nstatic double f(double x) { return x; }\n").find("not produced by offsetgen"),
+            std::string::npos);
+  EXPECT_NE(refusal("").find("not produced by offsetgen"), std::string::npos);
+}
+
+TEST(Metadata, DamagedBlocksAreRefusedWithTheReason) {
+  const std::string good = generated_header();
+  struct Case {
+    std::string text;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {replace(good, "\"order\":3", "\"order\":3,,"), "does not parse"},
+      {replace(good, "\"order\":3", "\"order\":\"3\""), "\"order\" must be an integer"},
+      {replace(good, "\"order\":3,", ""), "\"order\" is missing"},
+      {replace(good, "\"order\":3", "\"order\":0"), "outside"},
+      {replace(good, "\"dims\":3", "\"dims\":4"), "outside"},
+      {replace(good, "\"surface\":\"gyroid\"", "\"surface\":null"), "exactly one of"},
+      {replace(good, "\"precisions\":[\"double\"]", "\"precisions\":[\"half\"]"), "precisions"},
+      {replace(good, "\"gradient_bound\":", "\"gradient_bound\":-"), "positive"},
+      {replace(good, "\"prefix\":\"gyroid_o3\"", "\"prefix\":\"gyroid o3\""), "not a C identifier"},
+      {replace(good, "\"prefix\":\"gyroid_o3\"", "\"prefix\":\"other_o3\""), "does not define other_o3_offset"},
+      {replace(good, "} */", "}"), "does not end"},
+      {good + "\n/* offsetgen-metadata {} */\n", "more than one"},
+      {replace(good, "\"generator\":\"offsetgen", "\"generator\":\"sympy"), "generator"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = refusal(c.text);
+    EXPECT_NE(message.find("damaged"), std::string::npos) << message;
+    EXPECT_NE(message.find(c.says), std::string::npos) << "expected '" << c.says << "' in: " << message;
+  }
+}
+
+TEST(Metadata, AnUnknownFormatIsRefused) {
+  const std::string message = refusal(replace(generated_header(), "\"format\":1", "\"format\":2"));
+  EXPECT_NE(message.find("format 2"), std::string::npos) << message;
+}
+
+TEST(Metadata, AMetadataSurfaceThisOffsetgenDoesNotKnowIsAnInputError) {
+  FileMetadata m = parse_metadata(replace(generated_header(), "\"surface\":\"gyroid\"", "\"surface\":\"nosuch\""),
+                                  FileKind::C);
+  try {
+    rebuild_reference(m);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot be rebuilt"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Metadata, KindFollowsTheExtension) {
+  EXPECT_EQ(kind_of_path("a/b/gyroid_o4.h"), FileKind::C);
+  EXPECT_EQ(kind_of_path("gyroid_o4.glsl"), FileKind::Glsl);
+  EXPECT_EQ(kind_of_path("gyroid_o4.FRAG"), FileKind::Glsl);
+}
+
+TEST(Metadata, BinaryAndMissingFilesAreInputErrors) {
+  const std::string dir = testing::scratch_dir("metadata-binary");
+  testing::write_text(dir + "/bin.h", std::string("\x7f" "ELF\0\0\0", 7));
+  EXPECT_THROW(read_metadata(dir + "/bin.h"), InputError);
+  EXPECT_THROW(read_metadata(dir + "/missing.h"), InputError);
+}
+
+TEST(Metadata, ThicknessSyntaxErrorsSayWhere) {
+  FileMetadata m = parse_metadata(generated_header(), FileKind::C);
+  try {
+    parse_thickness("0.1*x+*2", m, {});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("column 7"), std::string::npos) << e.what();
+  }
+  try {
+    parse_thickness("0.1*(x+2", m, {});
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("column 5"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_thickness("0.1*q", m, {}), InputError);  // unknown parameter (the core's message)
+  EXPECT_NO_THROW(parse_thickness("q*x", m, {{"q", "0.1"}}));
+}
+
+}  // namespace
+}  // namespace offsetgen::check
