@@ -65,7 +65,10 @@ struct BadInput {
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliBadInput, ExitsTwoWithAMessageAndTouchesNoFile) {
-  std::string dir = testing::fresh_directory("cli_bad");
+  // One directory per case: ctest runs the cases in parallel processes.
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  for (char& c : name) c = c == '/' ? '_' : c;
+  std::string dir = testing::fresh_directory("cli_bad_" + name);
   std::string target = dir + "/out.h";
   {
     std::ofstream keep(target);
