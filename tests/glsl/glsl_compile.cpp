@@ -174,18 +174,13 @@ std::string find_glslang_validator() {
   return {};
 }
 
-CompileResult compile_check(const std::string& snippet, Target target) {
+CompileResult compile_fragment_shader(const HostedSource& source, Target target) {
   CompileResult r;
   r.target = target;
+  r.source = source;
   const std::string validator = find_glslang_validator();
   if (validator.empty()) {
     r.message = kMissingValidator;
-    return r;
-  }
-  try {
-    r.source = host_shader(snippet, target);
-  } catch (const std::exception& e) {
-    r.message = std::string("cannot build a host shader: ") + e.what();
     return r;
   }
   static std::atomic<int> counter{0};
@@ -204,6 +199,25 @@ CompileResult compile_check(const std::string& snippet, Target target) {
                 std::to_string(status) + "\n" + annotate_log(log, r.source);
   }
   return r;
+}
+
+CompileResult compile_check(const std::string& snippet, Target target) {
+  if (find_glslang_validator().empty()) {
+    CompileResult r;
+    r.target = target;
+    r.message = kMissingValidator;
+    return r;
+  }
+  HostedSource source;
+  try {
+    source = host_shader(snippet, target);
+  } catch (const std::exception& e) {
+    CompileResult r;
+    r.target = target;
+    r.message = std::string("cannot build a host shader: ") + e.what();
+    return r;
+  }
+  return compile_fragment_shader(source, target);
 }
 
 std::vector<CompileResult> compile_check_all(const std::string& snippet) {

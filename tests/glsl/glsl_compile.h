@@ -3,6 +3,7 @@
 // and linked as used code, not as dead code.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ enum class Target {
 };
 
 const char* target_name(Target t);
+inline void PrintTo(Target t, std::ostream* os) { *os << target_name(t); }  // for GoogleTest
 std::vector<Target> all_targets();
 
 struct CompileResult {
@@ -37,6 +39,10 @@ HostedSource host_shader(const std::string& snippet, Target target);
 // validator or an unsupported snippet comes back as ok == false with the reason in `message`.
 CompileResult compile_check(const std::string& snippet, Target target);
 std::vector<CompileResult> compile_check_all(const std::string& snippet);
+
+// Compiles and links a complete fragment shader (host code included) with
+// `glslangValidator -l`; `target` only selects -V for Vulkan. Never throws.
+CompileResult compile_fragment_shader(const HostedSource& source, Target target);
 
 // Absolute path of glslangValidator on PATH, or "" when absent.
 std::string find_glslang_validator();

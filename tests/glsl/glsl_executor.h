@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ using Point = std::array<float, 4>;
 
 enum class Path { Compute, Fragment };
 const char* path_name(Path p);
+inline void PrintTo(Path p, std::ostream* os) { *os << path_name(p); }  // for GoogleTest
 std::vector<Path> all_paths();
 
 struct RunStats {

@@ -86,6 +86,23 @@ TEST(RenderShell, GradedThickness) {
   expect_reasonable_picture("graded", "--graded --thickness 0.04");
 }
 
+TEST(RenderShell, BoxAndViewDirection) {
+  expect_reasonable_picture("box", "--thickness 0.08 --box 2x1x1 --view 0.2 -0.95 0.3");
+}
+
+TEST(RenderShell, BadBoxAndViewAreRejected) {
+  const std::string png = " -o '" + scratch_png("badbox").string() + "'";
+  Outcome o = run_render_shell(fixture_args() + " --box 2x1" + png);
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_NE(o.output.find("bad --box '2x1'"), std::string::npos) << o.output;
+  o = run_render_shell(fixture_args() + " --box 0x1x1" + png);
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("box cells must be in 1..16"), std::string::npos) << o.output;
+  o = run_render_shell(fixture_args() + " --view 0 0 1" + png);
+  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_NE(o.output.find("not vertical"), std::string::npos) << o.output;
+}
+
 TEST(RenderShell, WrongPrefixListsTheSnippetFunctions) {
   const Outcome o = run_render_shell(fixture_args() + "x -o '" + scratch_png("bad").string() + "'");
   EXPECT_EQ(o.status, 1);

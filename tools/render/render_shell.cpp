@@ -1,10 +1,12 @@
 // render_shell: headless picture of a generated shell snippet.
 //   render_shell --snippet gyroid_o4.glsl --prefix gyroid_o4 --thickness 0.1 -o out.png
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "shell_renderer.h"
 
@@ -17,6 +19,15 @@ bool parse_size(const std::string& text, int& w, int& h) {
   if (!std::regex_match(text, m, kSize)) return false;
   w = std::stoi(m[1].str());
   h = m[2].matched ? std::stoi(m[2].str()) : w;
+  return true;
+}
+
+// "3x1x1" -> {3, 1, 1}.
+bool parse_box(const std::string& text, int box[3]) {
+  std::smatch m;
+  static const std::regex kBox(R"((\d{1,2})[xX](\d{1,2})[xX](\d{1,2}))");
+  if (!std::regex_match(text, m, kBox)) return false;
+  for (int i = 0; i < 3; ++i) box[i] = std::stoi(m[static_cast<std::size_t>(i) + 1].str());
   return true;
 }
 
@@ -38,6 +49,11 @@ int main(int argc, char** argv) {
   app.add_flag("--graded", o.graded,
                "draw <prefix>_graded(p) < 0 (thickness baked into the snippet)");
   app.add_option("--cells", o.cells, "render the box [0,N]^3")->capture_default_str();
+  std::string box;
+  app.add_option("--box", box, "render the box [0,X]x[0,Y]x[0,Z], given as XxYxZ cells (e.g. 3x1x1)");
+  std::vector<double> view;
+  app.add_option("--view", view, "direction from the box centre to the eye: X Y Z (default 0.70 0.46 0.55)")
+      ->expected(3);
   app.add_option("--size", size, "WIDTHxHEIGHT")->capture_default_str();
   app.add_option("--samples", o.samples, "NxN supersampling per pixel")->capture_default_str();
   app.add_option("--step", o.step, "ray-march step (default 0.4 * thickness)");
@@ -54,6 +70,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "render_shell: bad --size '%s' (want WIDTHxHEIGHT)\n", size.c_str());
       return 2;
     }
+    if (!box.empty() && !parse_box(box, o.box)) {
+      std::fprintf(stderr, "render_shell: bad --box '%s' (want XxYxZ, e.g. 3x1x1)\n", box.c_str());
+      return 2;
+    }
+    if (!view.empty()) std::copy(view.begin(), view.end(), o.view);
     o.api = api == "gl" ? offsetgen::gl::Api::Desktop43 : offsetgen::gl::Api::Es30;
     o.snippet = offsetgen::glsl::read_text_file(snippet_path);
     if (print_shader) {
@@ -63,9 +84,11 @@ int main(int argc, char** argv) {
     r::Timing timing;
     const auto image = r::render(o, &timing);
     offsetgen::png::write_rgba(output, image);
-    std::printf("render_shell: %s %dx%d, %d cell(s), on %s: compile %.2f s, render %.2f s\n",
-                output.c_str(), o.width, o.height, o.cells, offsetgen::gl::renderer().c_str(),
-                timing.compile_s, timing.render_s);
+    int cells[3];
+    r::box_cells(o, cells);
+    std::printf("render_shell: %s %dx%d, %dx%dx%d cell(s), on %s: compile %.2f s, render %.2f s\n",
+                output.c_str(), o.width, o.height, cells[0], cells[1], cells[2],
+                offsetgen::gl::renderer().c_str(), timing.compile_s, timing.render_s);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "render_shell: %s\n", e.what());

@@ -47,7 +47,7 @@ std::string epilogue(const Options& o) {
   std::string s = R"(
 // ---- render_shell host (everything above this line is the snippet, verbatim) ----
 uniform vec2 u_resolution;
-uniform float u_cells;
+uniform vec3 u_box;
 uniform float u_thickness;
 uniform float u_step;
 uniform vec3 u_eye;
@@ -84,11 +84,11 @@ const vec3 rs_color_cut = vec3(0.80, 0.80, 0.76);  // wall cut open by the box f
   }
   s += "float rs_side(vec3 p) { return " + P + "_field(p) >= 0.0 ? 1.0 : -1.0; }\n";
   s += R"(
-// Slab test against [0, u_cells]^3; returns entry/exit distances and the entry face normal.
+// Slab test against the box [0, u_box]; returns entry/exit distances and the entry face normal.
 bool rs_box(vec3 ro, vec3 rd, out float t0, out float t1, out vec3 n0) {
   vec3 d = mix(rd, vec3(1.0e-8), lessThan(abs(rd), vec3(1.0e-8)));
   vec3 ta = (vec3(0.0) - ro) / d;
-  vec3 tb = (vec3(u_cells) - ro) / d;
+  vec3 tb = (u_box - ro) / d;
   vec3 tmin = min(ta, tb);
   vec3 tmax = max(ta, tb);
   t0 = max(max(tmin.x, tmin.y), tmin.z);
@@ -103,7 +103,8 @@ vec3 rs_shade(vec3 n, vec3 rd, vec3 base) {
   vec3 key = normalize(vec3(0.45, 0.25, 0.85));
   float diffuse = max(dot(n, key), 0.0);
   float head = max(dot(n, -rd), 0.0);  // a light at the eye keeps back-lit walls readable
-  return base * (0.22 + 0.55 * diffuse + 0.30 * head);
+  float spec = pow(max(dot(reflect(-key, n), -rd), 0.0), 40.0);
+  return min(base * (0.20 + 0.55 * diffuse + 0.30 * head) + vec3(0.22 * spec), vec3(1.0));
 }
 
 // March until the first sample inside the wall (rs_shell < 0), then bisect the sign change.
@@ -157,6 +158,14 @@ void validate(const Options& o) {
   if (o.prefix.empty()) throw std::runtime_error("no prefix given");
   if (!(o.thickness > 0.0) && !o.graded) throw std::runtime_error("thickness must be > 0");
   if (o.cells < 1 || o.cells > 16) throw std::runtime_error("cells must be in 1..16");
+  const bool box_set = o.box[0] > 0 || o.box[1] > 0 || o.box[2] > 0;
+  for (int c : o.box) {
+    if (box_set && (c < 1 || c > 16)) throw std::runtime_error("box cells must be in 1..16");
+  }
+  const double v2 = o.view[0] * o.view[0] + o.view[1] * o.view[1] + o.view[2] * o.view[2];
+  if (!(v2 > 1e-12) || o.view[0] * o.view[0] + o.view[1] * o.view[1] < 1e-6 * v2) {
+    throw std::runtime_error("view direction must be nonzero and not vertical");
+  }
   if (o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192) {
     throw std::runtime_error("size must be within 1x1 .. 8192x8192");
   }
@@ -171,18 +180,56 @@ void validate(const Options& o) {
   }
 }
 
-// Camera on the (+x, +y, +z) corner diagonal, a little lower than isometric, framing the whole box.
-void set_camera(const gl::Functions& gl, GLuint program, int cells) {
-  const float c = static_cast<float>(cells);
-  const float half = 0.5f * c;
-  const float dist = 3.0f * c;  // bounding sphere (radius 0.87 c) seen under 2 x 16.8 < 39 degrees
-  const float dx = 0.70f, dy = 0.46f, dz = 0.55f;  // roughly unit, from the corner
-  gl.Uniform3f(gl.GetUniformLocation(program, "u_target"), half, half, half);
-  gl.Uniform3f(gl.GetUniformLocation(program, "u_eye"), half + dist * dx, half + dist * dy,
-               half + dist * dz);
+struct Vec3 {
+  double x, y, z;
+};
+Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
+double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Vec3 cross(Vec3 a, Vec3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+Vec3 normalized(Vec3 a) { return (1.0 / std::sqrt(dot(a, a))) * a; }
+
+// Eye on the line from the box centre along `view`, as close as it can be while all eight box
+// corners project inside the frame (with a small margin): the box fills the picture.
+// Must agree with the shader: focal length 1.4, uv = (frag - res/2) / res.y.
+void set_camera(const gl::Functions& gl, GLuint program, const Options& o) {
+  int cells[3];
+  box_cells(o, cells);
+  const Vec3 size{static_cast<double>(cells[0]), static_cast<double>(cells[1]),
+                  static_cast<double>(cells[2])};
+  const Vec3 centre = 0.5 * size;
+  const Vec3 d = normalized({o.view[0], o.view[1], o.view[2]});
+  const Vec3 fwd = -1.0 * d;
+  const Vec3 right = normalized(cross(fwd, {0.0, 0.0, 1.0}));
+  const Vec3 up = cross(right, fwd);
+  constexpr double kFocal = 1.4, kMargin = 0.94;
+  const double half_w = 0.5 * kMargin * static_cast<double>(o.width) / o.height;
+  const double half_h = 0.5 * kMargin;
+  double dist = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    const Vec3 corner{(i & 1) ? size.x : 0.0, (i & 2) ? size.y : 0.0, (i & 4) ? size.z : 0.0};
+    const Vec3 q = corner - centre;
+    // depth of the corner = dist + q.fwd must reach focal * |q.right| / half_w (and likewise up)
+    dist = std::max(dist, kFocal * std::abs(dot(q, right)) / half_w - dot(q, fwd));
+    dist = std::max(dist, kFocal * std::abs(dot(q, up)) / half_h - dot(q, fwd));
+  }
+  const Vec3 eye{centre.x + dist * d.x, centre.y + dist * d.y, centre.z + dist * d.z};
+  gl.Uniform3f(gl.GetUniformLocation(program, "u_target"), static_cast<float>(centre.x),
+               static_cast<float>(centre.y), static_cast<float>(centre.z));
+  gl.Uniform3f(gl.GetUniformLocation(program, "u_eye"), static_cast<float>(eye.x),
+               static_cast<float>(eye.y), static_cast<float>(eye.z));
+  gl.Uniform3f(gl.GetUniformLocation(program, "u_box"), static_cast<float>(size.x),
+               static_cast<float>(size.y), static_cast<float>(size.z));
 }
 
 }  // namespace
+
+void box_cells(const Options& o, int out[3]) {
+  const bool box_set = o.box[0] > 0 || o.box[1] > 0 || o.box[2] > 0;
+  for (int i = 0; i < 3; ++i) out[i] = box_set ? o.box[i] : o.cells;
+}
 
 glsl::HostedSource fragment_source(const Options& o) {
   const std::string prologue =
@@ -217,12 +264,11 @@ png::Image render(const Options& o, Timing* timing) {
   gl.UseProgram(program);
   gl.Uniform2f(gl.GetUniformLocation(program, "u_resolution"), static_cast<float>(o.width),
                static_cast<float>(o.height));
-  gl.Uniform1f(gl.GetUniformLocation(program, "u_cells"), static_cast<float>(o.cells));
   gl.Uniform1f(gl.GetUniformLocation(program, "u_thickness"), static_cast<float>(o.thickness));
   const double step = o.step > 0.0 ? o.step : 0.4 * std::max(o.thickness, 0.005);
   gl.Uniform1f(gl.GetUniformLocation(program, "u_step"), static_cast<float>(step));
   gl.Uniform1i(gl.GetUniformLocation(program, "u_samples"), o.samples);
-  set_camera(gl, program, o.cells);
+  set_camera(gl, program, o);
   gl.DrawArrays(GL_TRIANGLES, 0, 3);
 
   png::Image img;

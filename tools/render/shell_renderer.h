@@ -15,7 +15,9 @@ struct Options {
   std::string prefix;      // e.g. "gyroid_o4": functions are <prefix>_shell, _field, ...
   double thickness = 0.1;  // total wall thickness t (cell length 1)
   bool graded = false;     // use <prefix>_graded(p) instead of <prefix>_shell(p, t)
-  int cells = 1;           // renders the box [0, cells]^3
+  int cells = 1;           // renders the box [0, cells]^3 ...
+  int box[3] = {0, 0, 0};  // ... or [0, box[0]] x [0, box[1]] x [0, box[2]] when all are > 0
+  double view[3] = {0.70, 0.46, 0.55};  // direction from the box centre towards the eye
   int width = 512;
   int height = 512;
   int samples = 1;    // samples x samples supersampling per pixel
@@ -30,6 +32,9 @@ struct Timing {
   double compile_s = 0.0;  // shader compile + link
   double render_s = 0.0;   // draw + read back
 };
+
+// Cells along x, y, z: `box` when set, else `cells` each way.
+void box_cells(const Options& options, int out[3]);
 
 // Fragment shader source (snippet at its recorded position) for `options`.
 glsl::HostedSource fragment_source(const Options& options);
