@@ -9,7 +9,7 @@ packages=(
   libfmt-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   glslang-tools libegl-dev libopengl-dev libgles-dev libgl1-mesa-dri libpng-dev
-  python3 python3-sympy python3-matplotlib python3-numpy
+  python3 python3-sympy python3-matplotlib python3-numpy time
   clang-format clang-tidy
 )
 

@@ -1,0 +1,459 @@
+#!/usr/bin/python3
+"""Writes BENCHMARKS.md from the results directory of tools/run_benchmarks.sh.
+
+Inputs (all in --results):
+  machine.txt          key=value facts about the run
+  gen.tsv              one line per CLI run: surface order rep wall_s user_s sys_s maxrss_kb
+  gen/<s>_o<m>.h       the generated headers (their metadata line holds our op counts)
+  naive.jsonl          bench_naive_ginac runs
+  sympy.jsonl          tools/sympy_baseline.py runs (+ wall_seconds, maxrss_kb)
+  count_ops.jsonl      tools/count_ops_c.py on our offset/shell functions
+  eval_<flags>.json    Google Benchmark output (median aggregates) per flag set
+Every figure is a median over repetitions.
+"""
+
+import argparse
+import collections
+import json
+import os
+import re
+import statistics
+import sys
+
+FLAG_SETS = [("O2", "-O2"), ("O3native", "-O3 -march=native"),
+             ("O3native_nme", "-O3 -march=native -fno-math-errno")]
+SYMPY_SURFACES = ["gyroid", "schwarzp", "neovius", "diamond"]
+
+
+def median(values):
+    return statistics.median(values) if values else None
+
+
+def fmt(value, digits=3):
+    """Compact number: 3 significant digits, '-' for missing."""
+    if value is None:
+        return "-"
+    if value == 0:
+        return "0"
+    if abs(value) >= 1000:
+        return "{:,.0f}".format(value)
+    return "{:.{}g}".format(value, digits)
+
+
+def ratio(a, b, digits=3):
+    if a is None or b is None or b == 0:
+        return "-"
+    return "{:.{}g}x".format(a / b, digits)
+
+
+def table(header, rows):
+    out = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(out)
+
+
+def load_machine(results):
+    facts = {}
+    with open(os.path.join(results, "machine.txt")) as f:
+        for line in f:
+            if "=" in line:
+                k, v = line.rstrip("\n").split("=", 1)
+                facts[k] = v
+    return facts
+
+
+def load_gen(results):
+    runs = collections.defaultdict(list)
+    with open(os.path.join(results, "gen.tsv")) as f:
+        next(f)
+        for line in f:
+            s, m, rep, wall, user, sys_, rss = line.split("\t")
+            runs[(s, int(m))].append((float(wall), float(user) + float(sys_), int(rss)))
+    gen = {}
+    for key, rs in runs.items():
+        gen[key] = {"wall": median([r[0] for r in rs]), "cpu": median([r[1] for r in rs]),
+                    "rss_mb": max(r[2] for r in rs) / 1024.0, "runs": len(rs)}
+    return gen
+
+
+def load_metadata_ops(results, surface, order):
+    path = os.path.join(results, "gen", "%s_o%d.h" % (surface, order))
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"/\* offsetgen-metadata (\{.*\}) \*/", line)
+            if m:
+                return json.loads(m.group(1)).get("ops")
+    return None
+
+
+def load_jsonl(results, name):
+    path = os.path.join(results, name)
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [json.loads(line) for line in f if line.strip()]
+
+
+def load_eval(results):
+    """{flag_set: {benchmark name: ns per point (median cpu time / points)}}"""
+    out = {}
+    for flags, _ in FLAG_SETS:
+        path = os.path.join(results, "eval_%s.json" % flags)
+        if not os.path.exists(path):
+            continue
+        with open(path) as f:
+            data = json.load(f)
+        times = {}
+        for b in data["benchmarks"]:
+            if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+                continue
+            scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b.get("time_unit", "ns")]
+            times[b["run_name"]] = b["cpu_time"] * scale / b["points"]
+        out[flags] = times
+    return out
+
+
+def ns(times, mode, impl, surface, order, function, precision):
+    return times.get("%s/%s/%s/o%d/%s/%s" % (mode, impl, surface, order, function, precision))
+
+
+def op_categories(path, function):
+    """Counts of each operation kind in one emitted C function (text level, after CSE)."""
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        src = f.read()
+    m = re.search(r"(?:static inline )?\w+ %s\([^)]*\)\s*\{(.*?)\n\}" % re.escape(function), src, re.S)
+    if not m:
+        return None
+    body = re.sub(r"/\*.*?\*/", " ", m.group(1), flags=re.S)
+    text = re.sub(r"const (?:double|float|int) \w+ =", " ", body).replace("return", " ")
+    text = re.sub(r"\b\d+\.\d*(?:e[-+]?\d+)?f?\b|\b\d+\b", "C", text)
+    counts = collections.OrderedDict()
+    for fn in ("sin", "cos", "sqrt", "pow", "fabs"):
+        counts[fn] = len(re.findall(r"\b%sf?\(" % fn, text))
+    counts["/"] = text.count("/")
+    counts["*"] = text.count("*")
+    counts["+ -"] = len(re.findall(r"[\w)\]] [-+] ", text))
+    counts["unary -"] = text.count("-") - len(re.findall(r"[\w)\]] - ", text))
+    counts["?: and comparisons"] = text.count("?") + len(re.findall(r"<=|>=| > | < ", text))
+    counts["temporaries"] = len(re.findall(r"const (?:double|float|int) \w+ =", body))
+    return counts
+
+
+def load_agreement(results):
+    path = os.path.join(results, "batch_agreement.txt")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [line.rstrip() for line in f if line.startswith("  ") and "within" in line]
+
+
+def verdict(ok):
+    return "**met**" if ok else "**missed**"
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--results", required=True)
+    p.add_argument("--output", required=True)
+    args = p.parse_args(argv)
+    R = args.results
+
+    machine = load_machine(R)
+    gen = load_gen(R)
+    naive_runs = load_jsonl(R, "naive.jsonl")
+    sympy_runs = load_jsonl(R, "sympy.jsonl")
+    counts = load_jsonl(R, "count_ops.jsonl")
+    evals = load_eval(R)
+    agreement = load_agreement(R)
+
+    surfaces = []
+    for (s, _m) in gen:
+        if s not in surfaces:
+            surfaces.append(s)
+    orders = sorted({m for (_s, m) in gen if m <= 8})
+
+    naive = collections.defaultdict(list)
+    naive_timeout = {}
+    for r in naive_runs:
+        if r.get("timed_out"):
+            naive_timeout[(r["surface"], r["order"])] = r["cap"]
+        else:
+            naive[(r["surface"], r["order"])].append(r["seconds"])
+    sympy = collections.defaultdict(list)
+    sympy_ops = {}
+    sympy_timeout = set()
+    for r in sympy_runs:
+        key = (r["surface"], r["order"])
+        if r.get("timed_out"):
+            sympy_timeout.add(key)
+            continue
+        sympy[key].append(r["gen_cpu_seconds"])
+        sympy_ops[key] = r["cse_count_ops"]
+    ours_sympy_rules = {(c["surface"], c["order"], c["kind"]): c["sympy_count_ops"] for c in counts}
+
+    md = []
+    w = md.append
+    w("# Benchmarks")
+    w("")
+    w("Written by `tools/run_benchmarks.sh` (bench/report.py) in one run on one machine; do not edit by hand.")
+    w("Every time is the **median** of repetitions: %s CLI runs per generation entry, Google Benchmark "
+      "repetitions for ns per point (CPU time). The machine is shared, so absolute times are noisy; the ratios "
+      "compare runs made minutes apart under the same conditions."
+      % (gen.get(("gyroid", 4), {}).get("runs", "?")))
+    w("")
+    w(table(["", ""], [
+        ["date", machine.get("date", "?")],
+        ["commit", machine.get("commit", "?")],
+        ["CPU", "%s, %s cores" % (machine.get("cpu", "?"), machine.get("cores", "?"))],
+        ["compiler", machine.get("compiler", "?")],
+        ["GiNaC / SymPy / Google Benchmark", "%s / %s / %s" % (machine.get("ginac"), machine.get("sympy"),
+                                                               machine.get("benchmark"))],
+        ["load average at start / end", "%s / %s" % (machine.get("load_start"), machine.get("load_end"))],
+        ["run time", "%s s (of which %s s building)" % (machine.get("total_seconds"), machine.get("build_seconds"))],
+    ]))
+    w("")
+
+    # ------------------------------------------------------------------ targets
+    g4 = gen.get(("gyroid", 4))
+    g8 = gen.get(("gyroid", 8))
+    g10 = gen.get(("gyroid", 10))
+    ours_g4_rules = ours_sympy_rules.get(("gyroid", 4, "offset"))
+    sympy_g4_ops = sympy_ops.get(("gyroid", 4))
+    rows = []
+    if g4:
+        rows.append(["generation, gyroid order 4, end to end", "< 20 ms",
+                     "%s ms wall (%s ms CPU)" % (fmt(g4["wall"] * 1e3), fmt(g4["cpu"] * 1e3)),
+                     verdict(g4["wall"] < 0.020)])
+    if g8:
+        rows.append(["generation, gyroid order 8, end to end", "< 2 s",
+                     "%s s wall (%s s CPU)" % (fmt(g8["wall"]), fmt(g8["cpu"])), verdict(g8["wall"] < 2.0)])
+    if g10:
+        rows.append(["generation, gyroid order 10", "works", "%s s, %s MB peak" % (fmt(g10["wall"]), fmt(g10["rss_mb"])),
+                     verdict(True)])
+    if ours_g4_rules and sympy_g4_ops:
+        rows.append(["op count, gyroid o4 offset, SymPy's count_ops rules", "<= 0.6x SymPy's cse (%d)" % sympy_g4_ops,
+                     "%d (%s)" % (ours_g4_rules, ratio(ours_g4_rules, sympy_g4_ops)),
+                     verdict(ours_g4_rules <= 0.6 * sympy_g4_ops)])
+    for flags, label in FLAG_SETS[:2]:
+        t = evals.get(flags, {})
+        o = ns(t, "scalar", "ours", "gyroid", 4, "offset", "double")
+        s = ns(t, "scalar", "sympy", "gyroid", 4, "offset", "double")
+        a = ns(t, "scalar", "ad", "gyroid", 4, "offset", "double")
+        if o and s:
+            rows.append(["scalar offset vs SymPy's C, gyroid o4, `%s`" % label, "<= 0.6x",
+                         "%s vs %s ns/pt (%s)" % (fmt(o), fmt(s), ratio(o, s)), verdict(o <= 0.6 * s)])
+        if o and a:
+            rows.append(["scalar offset vs nested AD, gyroid o4, `%s`" % label, ">= 50x faster",
+                         "%s vs %s ns/pt (%s faster)" % (fmt(o), fmt(a), ratio(a, o)), verdict(a >= 50 * o)])
+    t = evals.get("O3native_nme", {})
+    t3 = evals.get("O3native", {})
+    for function in ("offset", "shell"):
+        b = ns(t, "batch", "ours", "gyroid", 4, function, "double")
+        sc = [v for v in (ns(t, "scalar", "ours", "gyroid", 4, function, "double"),
+                          ns(t3, "scalar", "ours", "gyroid", 4, function, "double")) if v]
+        if b and sc:
+            best = min(sc)
+            rows.append(["batch %s vs the faster scalar build, gyroid o4, double" % function, ">= 3x throughput",
+                         "%s vs %s ns/pt (%s)" % (fmt(b), fmt(best), ratio(best, b)), verdict(best >= 3 * b)])
+    w("## Targets (issue 6), gyroid")
+    w("")
+    w(table(["what", "target", "measured", ""], rows))
+    w("")
+    w("Batch agreement with the scalar functions is a test, not a benchmark: `ctest -L batch` "
+      "(tests/batch/test_batch_agreement.cpp prints the fractions and error quantiles).")
+    w("")
+
+    # ------------------------------------------------------------------ generation
+    w("## Generation time, end to end through the CLI")
+    w("")
+    w("`offsetgen generate --surface S --order M --lang c -o FILE` (double precision, the file deleted before "
+      "each run so it is always written): median wall time in ms, CPU time (user + sys) in parentheses.")
+    w("")
+    rows = []
+    for s in surfaces:
+        rows.append([s] + ["%s (%s)" % (fmt(gen[(s, m)]["wall"] * 1e3), fmt(gen[(s, m)]["cpu"] * 1e3))
+                           if (s, m) in gen else "-" for m in orders])
+    w(table(["surface"] + ["o%d" % m for m in orders], rows))
+    w("")
+    w("Peak memory (max RSS, MB, largest over the runs):")
+    w("")
+    rows = [[s] + [fmt(gen[(s, m)]["rss_mb"]) if (s, m) in gen else "-" for m in orders] for s in surfaces]
+    w(table(["surface"] + ["o%d" % m for m in orders], rows))
+    w("")
+    if g10:
+        w("Order 10 (gyroid), once: %s s wall, %s s CPU, %s MB peak; ops after CSE: %s."
+          % (fmt(g10["wall"]), fmt(g10["cpu"]), fmt(g10["rss_mb"]), load_metadata_ops(R, "gyroid", 10)))
+        w("")
+
+    # ------------------------------------------------------------------ naive + sympy
+    w("## Against the naive baseline and SymPy")
+    w("")
+    w("Naive: `bench/naive_ginac.cpp` builds phi^(m) with GiNaC's own `diff()` on the explicit chain "
+      "(construction only, nothing printed). SymPy: `tools/sympy_baseline.py` (diff, exact Richardson weights, "
+      "`cse`, `ccode`), its own CPU time. Ours: CPU time of the whole CLI run above.")
+    w("")
+    rows = []
+    for s in SYMPY_SURFACES:
+        for m in range(1, 7):
+            if (s, m) not in gen:
+                continue
+            ours_cpu = gen[(s, m)]["cpu"]
+            nv = median(naive.get((s, m), []))
+            sp = median(sympy.get((s, m), []))
+            if nv is None and sp is None and (s, m) not in naive_timeout and (s, m) not in sympy_timeout:
+                continue
+            nv_text = fmt(nv) if nv is not None else (">%d (cap)" % naive_timeout[(s, m)]
+                                                       if (s, m) in naive_timeout else "-")
+            sp_text = fmt(sp) if sp is not None else ("timed out" if (s, m) in sympy_timeout else "-")
+            rows.append([s, m, "%s ms" % fmt(ours_cpu * 1e3), nv_text, ratio(nv, ours_cpu, 3),
+                         sp_text, ratio(sp, ours_cpu, 3)])
+    w(table(["surface", "order", "ours (CPU)", "naive GiNaC diff (s)", "naive / ours", "SymPy (CPU s)",
+             "SymPy / ours"], rows))
+    w("")
+
+    # ------------------------------------------------------------------ op counts
+    w("## Operation count after CSE")
+    w("")
+    w("Ours: \"Total ops\" of the header (each +, -, *, /, negation, call, comparison and select counts 1). "
+      "Ours under SymPy's rules: `tools/count_ops_c.py` applies `sympy.count_ops` to our emitted C function. "
+      "SymPy: `sum(count_ops)` over its `cse` output (offset only; it has no shell).")
+    w("")
+    rows = []
+    for s in SYMPY_SURFACES:
+        for m in range(1, 7):
+            ops = load_metadata_ops(R, s, m)
+            if ops is None or ((s, m, "offset") not in ours_sympy_rules and (s, m) not in sympy_ops):
+                continue
+            r_off = ours_sympy_rules.get((s, m, "offset"))
+            r_shell = ours_sympy_rules.get((s, m, "shell"))
+            sp = sympy_ops.get((s, m))
+            rows.append([s, m, ops.get("offset"), r_off if r_off is not None else "-", sp if sp else "-",
+                         ratio(r_off, sp, 3), ops.get("shell"), r_shell if r_shell is not None else "-"])
+    w(table(["surface", "order", "ours offset", "ours offset, SymPy rules", "SymPy cse", "ratio (SymPy rules)",
+             "ours shell", "ours shell, SymPy rules"], rows))
+    w("")
+    w("Our offset op counts for every catalog surface (\"Total ops\"):")
+    w("")
+    rows = []
+    for s in surfaces:
+        row = [s]
+        for m in orders:
+            ops = load_metadata_ops(R, s, m)
+            row.append(ops.get("offset") if ops else "-")
+        rows.append(row)
+    w(table(["surface"] + ["o%d" % m for m in orders], rows))
+    w("")
+
+    ours_cat = op_categories(os.path.join(R, "gen", "gyroid_o4.h"), "gyroid_o4_offset")
+    sympy_cat = op_categories(os.path.join(R, "sympy", "sympy_gyroid_o4.c"), "sympy_gyroid_o4_offset")
+    if ours_cat and sympy_cat:
+        w("Where the operations go, gyroid order 4 offset (operators counted in the C text; SymPy's `/` include "
+          "its rational constants like `1.0/2.0`, which the compiler folds, and its `pow(x, 2)` calls):")
+        w("")
+        w(table(["", "ours", "SymPy"], [[k, ours_cat[k], sympy_cat[k]] for k in ours_cat]))
+        w("")
+
+    # ------------------------------------------------------------------ scalar ns/pt
+    w("## Scalar evaluation, ns per point")
+    w("")
+    w("Random points of the unit cell, h in [-0.05, 0.05] (offset), t in [0, 0.1] (shell); each function called "
+      "through a pointer, so none is inlined into the loop. SymPy's C and ours are compiled with the same flags; "
+      "SymPy's shell is its offset called twice. Nested AD: `bench/nested_dual.h` (offset only).")
+    w("")
+    eval_keys = sorted({(k.split("/")[2], int(k.split("/")[3][1:])) for t in evals.values() for k in t},
+                       key=lambda sm: (SYMPY_SURFACES.index(sm[0]) if sm[0] in SYMPY_SURFACES else 99, sm[1]))
+    for flags, label in FLAG_SETS:
+        t = evals.get(flags)
+        if not t:
+            continue
+        w("### `%s`" % label)
+        w("")
+        rows = []
+        for (s, m) in eval_keys:
+            o = ns(t, "scalar", "ours", s, m, "offset", "double")
+            sp = ns(t, "scalar", "sympy", s, m, "offset", "double")
+            ad = ns(t, "scalar", "ad", s, m, "offset", "double")
+            osh = ns(t, "scalar", "ours", s, m, "shell", "double")
+            ssh = ns(t, "scalar", "sympy", s, m, "shell", "double")
+            rows.append([s, m, fmt(o), fmt(sp), ratio(o, sp), fmt(ad), ratio(ad, o), fmt(osh), fmt(ssh), ratio(osh, ssh)])
+        w(table(["surface", "order", "ours offset", "SymPy offset", "ours / SymPy", "nested AD", "AD / ours",
+                 "ours shell", "SymPy shell", "ours / SymPy"], rows))
+        w("")
+
+    # ------------------------------------------------------------------ batch
+    w("## Batch API, ns per point")
+    w("")
+    w("`<prefix>_offset_n` / `_shell_n` over 4096 points against the scalar function in the same build. The batch "
+      "loops need `-fno-math-errno` to vectorise (sqrt); `-O3 -march=native -fno-math-errno` is the documented "
+      "build, the other columns show what happens without it. Speed-up = scalar time / batch time.")
+    w("")
+    for precision in ("double", "float"):
+        w("### %s" % precision)
+        w("")
+        rows = []
+        for (s, m) in eval_keys:
+            for function in ("offset", "shell"):
+                row = [s, m, function]
+                any_value = False
+                for flags, _label in FLAG_SETS:
+                    t = evals.get(flags, {})
+                    sc = ns(t, "scalar", "ours", s, m, function, precision)
+                    b = ns(t, "batch", "ours", s, m, function, precision)
+                    any_value = any_value or b is not None
+                    row += [fmt(sc), fmt(b), ratio(sc, b)]
+                if any_value:
+                    rows.append(row)
+        header = ["surface", "order", "function"]
+        for flags, _label in FLAG_SETS:
+            header += ["scalar %s" % flags, "batch %s" % flags, "speed-up"]
+        w(table(header, rows))
+        w("")
+
+    if agreement:
+        w("Agreement of the batch functions with the scalar ones (`batch_tests`, 20011 random points in "
+          "[-2, 3]^3, |h| <= 0.1, every header compiled with `-O3 -march=native -fno-math-errno` unless named "
+          "_omp (plus `-fopenmp-simd`) or _generic (`-O2`)): the share of points within 1e-14 (double) or 1e-5 "
+          "(float) of the scalar value relative to max(|value|, 1), and both functions' error quantiles against "
+          "the same program evaluated in long double (double) or double (float):")
+        w("")
+        w("```")
+        w("\n".join(agreement))
+        w("```")
+        w("")
+
+    # ------------------------------------------------------------------ float
+    w("## Float path (`--precision float`)")
+    w("")
+    w("Float against double, same build (`-O3 -march=native -fno-math-errno`); ratio = float time / double time.")
+    w("")
+    t = evals.get("O3native_nme", {})
+    rows = []
+    for (s, m) in eval_keys:
+        for function in ("offset", "shell"):
+            sd = ns(t, "scalar", "ours", s, m, function, "double")
+            sf = ns(t, "scalar", "ours", s, m, function, "float")
+            bd = ns(t, "batch", "ours", s, m, function, "double")
+            bf = ns(t, "batch", "ours", s, m, function, "float")
+            if sf is None:
+                continue
+            rows.append([s, m, function, fmt(sd), fmt(sf), ratio(sf, sd), fmt(bd), fmt(bf), ratio(bf, bd)])
+    w(table(["surface", "order", "function", "scalar double", "scalar float", "float / double", "batch double",
+             "batch float", "float / double"], rows))
+    w("")
+    w("## How to reproduce")
+    w("")
+    w("```sh\ntools/run_benchmarks.sh              # builds build-bench/, runs everything, rewrites BENCHMARKS.md\n"
+      "tools/run_benchmarks.sh --sympy-o5   # adds SymPy's gyroid order 5 (~76 s)\n```")
+    w("")
+    w("Raw results (TSV, JSON lines, Google Benchmark JSON) stay in `build-bench/bench/results/`.")
+    with open(args.output, "w") as f:
+        f.write("\n".join(md) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
