@@ -275,7 +275,8 @@ nlohmann::json plot_spec(const CheckReport& r) {
     s["order"] = order;
     s["x"] = x;
     nlohmann::json ys = nlohmann::json::array();
-    for (double v : y) ys.push_back(std::isfinite(v) && v > 0 ? nlohmann::json(v) : nlohmann::json());
+    // points under 1e-12 are roundoff; leaving them out keeps the slope triangles on real slopes
+    for (double v : y) ys.push_back(std::isfinite(v) && v > 1e-12 ? nlohmann::json(v) : nlohmann::json());
     s["y"] = ys;
     series.push_back(s);
   };
