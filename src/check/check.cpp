@@ -132,8 +132,11 @@ CheckReport run_checks(const CheckSettings& s) {
   const LoadedFunctions& functions = report.compile.library->functions();
 
   if (s.run_values) {
-    progress.update("values", fmt::format("random points against {}-digit CLN", s.values.digits));
-    report.values = check_values(functions, *reference, meta, file_thickness, s.values);
+    ValueCheckOptions value_options = s.values;
+    value_options.progress = [&progress, &s](int done, int total) {
+      progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
+    };
+    report.values = check_values(functions, *reference, meta, file_thickness, value_options);
     if (report.values->has_double) {
       report.verdicts.push_back({"values", report.values->pass, true,
                                  fmt::format("max zero-set shift {:.2e} (limit {:.0e})", report.values->max_shift_double,

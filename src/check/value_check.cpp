@@ -80,6 +80,7 @@ ValueReport check_values(const LoadedFunctions& f, const Reference& reference, c
   const int points = options.points > 0 ? options.points : default_value_points(meta.order);
   const int stride = std::max(1, options.normal_stride);
   for (int i = 0; i < points; ++i) {
+    if (options.progress) options.progress(i, points);
     for (int k = 0; k < dims; ++k) {
       // float and double functions see the same point: draw it representable in float
       p[static_cast<size_t>(k)] = static_cast<double>(static_cast<float>(coordinate(rng)));

@@ -7,6 +7,7 @@
 #include "check/metadata.h"
 #include "check/reference.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@ struct ValueCheckOptions {
   double h_max = 0.1;        // h (and t/2) drawn uniformly from [-h_max, h_max] (cell units)
   double tolerance = 1e-12;  // max zero-set shift of the double functions (cell units)
   int digits = 40;
+  std::function<void(int done, int total)> progress;  // may be empty
 };
 
 struct FunctionDeviation {
