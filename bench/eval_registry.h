@@ -3,6 +3,7 @@
 //   ours   the generated header (scalar functions and the batch API, double and float)
 //   sympy  tools/sympy_baseline.py's C (offset only; its shell is two offset calls)
 //   ad     runtime nested forward-mode AD (nested_dual.h; offset only)
+//   polytrig  prototype: ours with inline polynomial sin/cos (poly_trig.h), scalar double only
 #pragma once
 
 #include <cstddef>
@@ -30,6 +31,7 @@ struct Registry {
   std::map<Key, OursFunctions> ours;
   std::map<Key, Scalar> sympy;
   std::map<Key, Scalar> ad;
+  std::map<Key, std::pair<Scalar, Scalar>> polytrig;  // prototype: offset, shell with inline sin/cos
 };
 
 Registry& registry();
@@ -40,6 +42,10 @@ inline bool register_ours(const char* surface, int order, OursFunctions f) {
 }
 inline bool register_sympy(const char* surface, int order, Scalar offset) {
   registry().sympy[{surface, order}] = offset;
+  return true;
+}
+inline bool register_polytrig(const char* surface, int order, Scalar offset, Scalar shell) {
+  registry().polytrig[{surface, order}] = {offset, shell};
   return true;
 }
 inline bool register_ad(const char* surface, int order, Scalar offset) {

@@ -296,7 +296,7 @@ def main(argv=None):
     # ------------------------------------------------------------------ naive + sympy
     w("## Against the naive baseline and SymPy")
     w("")
-    w("All CPU times of whole processes, startup included (about 5 ms for a GiNaC program here). Ours: the CLI "
+    w("All CPU times of whole processes, startup included (the order-1 rows show it). Ours: the CLI "
       "runs above (build, lower, CSE, print, write). Naive: `bench/naive_ginac.cpp` builds phi^(m) with GiNaC's "
       "own `diff()` on the explicit chain and stops there (nothing simplified, printed or written); the "
       "construction alone is in parentheses. SymPy: `tools/sympy_baseline.py` (diff, exact Richardson weights, "
@@ -391,12 +391,45 @@ def main(argv=None):
                  "ours shell", "SymPy shell", "ours / SymPy"], rows))
         w("")
 
+    # ------------------------------------------------------------------ prototype
+    if any(k.startswith("scalar/polytrig/") for t in evals.values() for k in t):
+        w("### Prototype: the scalar functions with inline sin/cos")
+        w("")
+        w("Not what offsetgen emits (yet): `bench/poly_trig_variant.cmake` copies each header's double `_offset` and "
+          "`_shell` with every `sin`/`cos` call replaced by `bench/poly_trig.h`, the batch API's branch-free "
+          "polynomials (within 1.5 ulp of libm; an int-conversion quadrant so plain `-O2` needs no `rint` call; "
+          "libm beyond |argument| 1e8). libm's `sincos` costs ~11 ns per distinct argument (3 per point for these "
+          "surfaces), which dominates the low orders; inline, a sin/cos pair costs a few ns. Same builds as above.")
+        w("")
+        for flags, label in FLAG_SETS[:2]:
+            t = evals.get(flags, {})
+            rows = []
+            for (s_, m) in eval_keys:
+                o = ns(t, "scalar", "ours", s_, m, "offset", "double")
+                pt = ns(t, "scalar", "polytrig", s_, m, "offset", "double")
+                sp = ns(t, "scalar", "sympy", s_, m, "offset", "double")
+                ad = ns(t, "scalar", "ad", s_, m, "offset", "double")
+                osh = ns(t, "scalar", "ours", s_, m, "shell", "double")
+                psh = ns(t, "scalar", "polytrig", s_, m, "shell", "double")
+                if pt is None:
+                    continue
+                rows.append([s_, m, fmt(o), fmt(pt), ratio(pt, o), ratio(pt, sp), ratio(ad, pt), fmt(osh), fmt(psh),
+                             ratio(psh, osh)])
+            w("`%s`:" % label)
+            w("")
+            w(table(["surface", "order", "ours offset", "inline sin/cos", "inline / ours", "inline / SymPy",
+                     "AD / inline", "ours shell", "inline shell", "inline / ours"], rows))
+            w("")
+
     # ------------------------------------------------------------------ batch
     w("## Batch API, ns per point")
     w("")
     w("`<prefix>_offset_n` / `_shell_n` over 4096 points against the scalar function in the same build. The batch "
       "loops need `-fno-math-errno` to vectorise (sqrt); `-O3 -march=native -fno-math-errno` is the documented "
-      "build, the other columns show what happens without it. Speed-up = scalar time / batch time.")
+      "build, the other columns show what happens without it. Speed-up = scalar time / batch time. The loops "
+      "carry their own branch-free sin/cos rather than glibc's libmvec: glibc 2.36 declares its vector sin/cos "
+      "only under `-ffast-math` (`__FAST_MATH__`), and GCC fuses a sin and a cos of one argument into a sincos "
+      "(cexpi) call it cannot vectorise, even then.")
     w("")
     for precision in ("double", "float"):
         w("### %s" % precision)
