@@ -216,23 +216,17 @@ NodeId Program::pow(NodeId a, NodeId b) {
   return intern(n);
 }
 
-NodeId Program::less_eq(NodeId a, NodeId b) {
+NodeId Program::comparison(Op op, NodeId a, NodeId b) {
   Node n;
-  n.op = Op::LessEq;
+  n.op = op;
   n.a = a;
   n.b = b;
   n.boolean = true;
   return intern(n);
 }
 
-NodeId Program::greater(NodeId a, NodeId b) {
-  Node n;
-  n.op = Op::Greater;
-  n.a = a;
-  n.b = b;
-  n.boolean = true;
-  return intern(n);
-}
+NodeId Program::less_eq(NodeId a, NodeId b) { return comparison(Op::LessEq, a, b); }
+NodeId Program::greater(NodeId a, NodeId b) { return comparison(Op::Greater, a, b); }
 
 NodeId Program::select(NodeId condition, NodeId if_true, NodeId if_false) {
   if (if_true == if_false) return if_true;

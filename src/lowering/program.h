@@ -72,6 +72,7 @@ class Program {
 
  private:
   NodeId intern(Node node);
+  NodeId comparison(Op op, NodeId a, NodeId b);
 
   std::vector<std::string> inputs_;
   std::vector<Node> nodes_;
