@@ -112,10 +112,10 @@ void register_benchmarks() {
           kPoints);
     });
   }
-  for (const auto& [key, f] : r.polytrig) {
-    benchmark::RegisterBenchmark(name("scalar", "polytrig", key, "offset", "double").c_str(),
+  for (const auto& [key, f] : r.libm_trig) {
+    benchmark::RegisterBenchmark(name("scalar", "libm_trig", key, "offset", "double").c_str(),
                                  [f = f.first](benchmark::State& s) { run_scalar<double>(s, f, false, kPoints); });
-    benchmark::RegisterBenchmark(name("scalar", "polytrig", key, "shell", "double").c_str(),
+    benchmark::RegisterBenchmark(name("scalar", "libm_trig", key, "shell", "double").c_str(),
                                  [f = f.second](benchmark::State& s) { run_scalar<double>(s, f, true, kPoints); });
   }
   for (const auto& [key, f] : r.ad) {
@@ -148,8 +148,8 @@ int cross_check() {
     if (r.ours.count(key)) check("sympy", key, f, 1e-9, 256);
   for (const auto& [key, f] : r.ad)
     if (r.ours.count(key)) check("nested AD", key, f, 1e-9, 16);
-  for (const auto& [key, f] : r.polytrig)
-    if (r.ours.count(key)) check("polytrig prototype", key, f.first, 1e-12, 1024);
+  for (const auto& [key, f] : r.libm_trig)
+    if (r.ours.count(key)) check("libm sin/cos build", key, f.first, 1e-12, 1024);
   for (const auto& [key, f] : r.ours) {
     std::vector<double> out(kPoints);
     f.offset_n(kPoints, p.x.data(), p.y.data(), p.z.data(), p.w.data(), out.data());

@@ -3,7 +3,8 @@
 //   ours   the generated header (scalar functions and the batch API, double and float)
 //   sympy  tools/sympy_baseline.py's C (offset only; its shell is two offset calls)
 //   ad     runtime nested forward-mode AD (nested_dual.h; offset only)
-//   polytrig  prototype: ours with inline polynomial sin/cos (poly_trig.h), scalar double only
+//   libm_trig  ours built with OFFSETGEN_LIBM_TRIG (libm's sin/cos instead of the inline ones),
+//              scalar double only
 #pragma once
 
 #include <cstddef>
@@ -31,7 +32,7 @@ struct Registry {
   std::map<Key, OursFunctions> ours;
   std::map<Key, Scalar> sympy;
   std::map<Key, Scalar> ad;
-  std::map<Key, std::pair<Scalar, Scalar>> polytrig;  // prototype: offset, shell with inline sin/cos
+  std::map<Key, std::pair<Scalar, Scalar>> libm_trig;  // offset, shell calling libm's sin/cos
 };
 
 Registry& registry();
@@ -44,8 +45,8 @@ inline bool register_sympy(const char* surface, int order, Scalar offset) {
   registry().sympy[{surface, order}] = offset;
   return true;
 }
-inline bool register_polytrig(const char* surface, int order, Scalar offset, Scalar shell) {
-  registry().polytrig[{surface, order}] = {offset, shell};
+inline bool register_libm_trig(const char* surface, int order, Scalar offset, Scalar shell) {
+  registry().libm_trig[{surface, order}] = {offset, shell};
   return true;
 }
 inline bool register_ad(const char* surface, int order, Scalar offset) {

@@ -391,34 +391,34 @@ def main(argv=None):
                  "ours shell", "SymPy shell", "ours / SymPy"], rows))
         w("")
 
-    # ------------------------------------------------------------------ prototype
-    if any(k.startswith("scalar/polytrig/") for t in evals.values() for k in t):
-        w("### Prototype: the scalar functions with inline sin/cos")
+    # ------------------------------------------------------------------ inline sin/cos vs libm
+    if any(k.startswith("scalar/libm_trig/") for t in evals.values() for k in t):
+        w("### Inline sin/cos against libm's")
         w("")
-        w("Not what offsetgen emits (yet): `bench/poly_trig_variant.cmake` copies each header's double `_offset` and "
-          "`_shell` with every `sin`/`cos` call replaced by `bench/poly_trig.h`, the batch API's branch-free "
-          "polynomials (within 1.5 ulp of libm; an int-conversion quadrant so plain `-O2` needs no `rint` call; "
-          "libm beyond |argument| 1e8). libm's `sincos` costs ~11 ns per distinct argument (3 per point for these "
-          "surfaces), which dominates the low orders; inline, a sin/cos pair costs a few ns. Same builds as above.")
+        w("The scalar functions call the header's inline `offsetgen_sin`/`offsetgen_cos` (the batch API's Cody-Waite "
+          "reduction and polynomials, within 1.5 ulp of libm, int-conversion quadrant; libm beyond |argument| 1e8). "
+          "Defining `OFFSETGEN_LIBM_TRIG` before the `#include` makes them call libm's `sin`/`cos` instead: the "
+          "`libm` columns are the same header built that way, in the same executable. libm's `sincos` costs ~11 ns "
+          "per distinct argument (3 per point for these surfaces), which dominates the low orders.")
         w("")
         for flags, label in FLAG_SETS[:2]:
             t = evals.get(flags, {})
             rows = []
             for (s_, m) in eval_keys:
                 o = ns(t, "scalar", "ours", s_, m, "offset", "double")
-                pt = ns(t, "scalar", "polytrig", s_, m, "offset", "double")
+                lm = ns(t, "scalar", "libm_trig", s_, m, "offset", "double")
                 sp = ns(t, "scalar", "sympy", s_, m, "offset", "double")
                 ad = ns(t, "scalar", "ad", s_, m, "offset", "double")
                 osh = ns(t, "scalar", "ours", s_, m, "shell", "double")
-                psh = ns(t, "scalar", "polytrig", s_, m, "shell", "double")
-                if pt is None:
+                lsh = ns(t, "scalar", "libm_trig", s_, m, "shell", "double")
+                if lm is None:
                     continue
-                rows.append([s_, m, fmt(o), fmt(pt), ratio(pt, o), ratio(pt, sp), ratio(ad, pt), fmt(osh), fmt(psh),
-                             ratio(psh, osh)])
+                rows.append([s_, m, fmt(o), fmt(lm), ratio(o, lm), ratio(lm, sp), ratio(ad, lm), fmt(osh), fmt(lsh),
+                             ratio(osh, lsh)])
             w("`%s`:" % label)
             w("")
-            w(table(["surface", "order", "ours offset", "inline sin/cos", "inline / ours", "inline / SymPy",
-                     "AD / inline", "ours shell", "inline shell", "inline / ours"], rows))
+            w(table(["surface", "order", "ours offset", "libm offset", "ours / libm", "libm / SymPy",
+                     "AD / libm", "ours shell", "libm shell", "ours / libm"], rows))
             w("")
 
     # ------------------------------------------------------------------ batch

@@ -51,6 +51,56 @@
 #include <math.h>
 #include <stddef.h>
 
+#ifndef OFFSETGEN_SCALAR_TRIG_DOUBLE_V1
+#define OFFSETGEN_SCALAR_TRIG_DOUBLE_V1
+/* C++'s -Wold-style-cast and C's lack of static_cast: one spelling of the int conversion for both. */
+#ifdef __cplusplus
+#define OFFSETGEN_TRIG_INT_(x) static_cast<int>(x)
+#else
+#define OFFSETGEN_TRIG_INT_(x) ((int)(x))
+#endif
+/* sin and cos for the scalar functions, inline: libm's sin and cos cost more than the rest of a
+ * low-order offset. The same reduction and polynomials as the batch helpers (within 1.5 ulp of
+ * libm), so the scalar and batch functions agree to the last bits; the quadrant comes from an int
+ * conversion, so plain -O2 needs no rint call. Arguments beyond 1.0e8 radians go to libm.
+ * A sin and a cos of the same argument share the reduction and both polynomials after inlining.
+ * Define OFFSETGEN_LIBM_TRIG before including this header to call libm's sin and cos instead. */
+static inline double offsetgen_sin(double a)
+{
+#ifdef OFFSETGEN_LIBM_TRIG
+    return sin(a);
+#else
+    const double v = a * 0.63661977236758138;
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
+    const double q = qi;
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double u = (qi & 1) ? c : s;
+    return (fabs(a) <= 1.0e8) ? ((qi & 2) ? -u : u) : sin(a);
+#endif
+}
+
+static inline double offsetgen_cos(double a)
+{
+#ifdef OFFSETGEN_LIBM_TRIG
+    return cos(a);
+#else
+    const double v = a * 0.63661977236758138;
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
+    const double q = qi;
+    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
+    const double z = r * r;
+    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
+    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
+    const double u = (qi & 1) ? s : c;
+    return (fabs(a) <= 1.0e8) ? (((qi + 1) & 2) ? -u : u) : cos(a);
+#endif
+}
+#undef OFFSETGEN_TRIG_INT_
+#endif /* OFFSETGEN_SCALAR_TRIG_DOUBLE_V1 */
+
 /* F, the field; the surface is F = 0.
  * Total ops: 14
  */
@@ -59,7 +109,7 @@ static inline double gyroid_o3_field(double x, double y, double z)
     const double _t0 = z * 6.2831853071795862;
     const double _t1 = 6.2831853071795862 * y;
     const double _t2 = 6.2831853071795862 * x;
-    return cos(_t0) * sin(_t1) + sin(_t0) * cos(_t2) + cos(_t1) * sin(_t2);
+    return offsetgen_cos(_t0) * offsetgen_sin(_t1) + offsetgen_sin(_t0) * offsetgen_cos(_t2) + offsetgen_cos(_t1) * offsetgen_sin(_t2);
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
@@ -68,17 +118,17 @@ static inline double gyroid_o3_field(double x, double y, double z)
 static inline double gyroid_o3_offset(double x, double y, double z, double h)
 {
     const double _t0 = z * 6.2831853071795862;
-    const double _t1 = cos(_t0);
+    const double _t1 = offsetgen_cos(_t0);
     const double _t2 = 6.2831853071795862 * y;
-    const double _t3 = sin(_t2);
+    const double _t3 = offsetgen_sin(_t2);
     const double _t4 = _t1 * _t3;
-    const double _t5 = sin(_t0);
+    const double _t5 = offsetgen_sin(_t0);
     const double _t6 = 6.2831853071795862 * x;
-    const double _t7 = cos(_t6);
+    const double _t7 = offsetgen_cos(_t6);
     const double _t8 = _t5 * _t7;
     const double _t9 = _t4 + _t8;
-    const double _t10 = cos(_t2);
-    const double _t11 = sin(_t6);
+    const double _t10 = offsetgen_cos(_t2);
+    const double _t11 = offsetgen_sin(_t6);
     const double _t12 = _t10 * _t11;
     const double _t13 = 6.2831853071795862 * h;
     const double _t14 = _t1 * _t7;
@@ -133,19 +183,19 @@ static inline double gyroid_o3_shell(double x, double y, double z, double t)
     const double _t0 = 6.2831853071795862 * (t * 0.5);
     const double _t1 = _t0 * 0.5;
     const double _t2 = z * 6.2831853071795862;
-    const double _t3 = cos(_t2);
+    const double _t3 = offsetgen_cos(_t2);
     const double _t4 = 6.2831853071795862 * x;
-    const double _t5 = cos(_t4);
+    const double _t5 = offsetgen_cos(_t4);
     const double _t6 = _t3 * _t5;
-    const double _t7 = sin(_t2);
+    const double _t7 = offsetgen_sin(_t2);
     const double _t8 = 6.2831853071795862 * y;
-    const double _t9 = sin(_t8);
+    const double _t9 = offsetgen_sin(_t8);
     const double _t10 = _t7 * _t9;
     const double _t11 = _t6 - _t10;
     const double _t12 = _t11 * _t11;
-    const double _t13 = sin(_t4);
+    const double _t13 = offsetgen_sin(_t4);
     const double _t14 = _t9 * _t13;
-    const double _t15 = cos(_t8);
+    const double _t15 = offsetgen_cos(_t8);
     const double _t16 = _t3 * _t15;
     const double _t17 = _t14 - _t16;
     const double _t18 = _t17 * _t17;
@@ -224,19 +274,19 @@ static inline double gyroid_o3_shell(double x, double y, double z, double t)
 static inline void gyroid_o3_normal(double x, double y, double z, double h, double n[3])
 {
     const double _t0 = z * 6.2831853071795862;
-    const double _t1 = cos(_t0);
+    const double _t1 = offsetgen_cos(_t0);
     const double _t2 = 6.2831853071795862 * x;
-    const double _t3 = cos(_t2);
+    const double _t3 = offsetgen_cos(_t2);
     const double _t4 = _t1 * _t3;
-    const double _t5 = sin(_t0);
+    const double _t5 = offsetgen_sin(_t0);
     const double _t6 = 6.2831853071795862 * y;
-    const double _t7 = sin(_t6);
+    const double _t7 = offsetgen_sin(_t6);
     const double _t8 = _t5 * _t7;
     const double _t9 = _t4 - _t8;
     const double _t10 = _t9 * _t9;
-    const double _t11 = sin(_t2);
+    const double _t11 = offsetgen_sin(_t2);
     const double _t12 = _t7 * _t11;
-    const double _t13 = cos(_t6);
+    const double _t13 = offsetgen_cos(_t6);
     const double _t14 = _t1 * _t13;
     const double _t15 = _t12 - _t14;
     const double _t16 = _t15 * _t15;
@@ -342,6 +392,54 @@ static inline void gyroid_o3_normal(double x, double y, double z, double h, doub
     n[2] = (_t107) ? ((_t108) ? _t109 * _t96 : _t113) : _t113;
 }
 
+#ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
+#define OFFSETGEN_SCALAR_TRIG_FLOAT_V1
+#ifdef __cplusplus
+#define OFFSETGEN_TRIG_INTF_(x) static_cast<int>(x)
+#define OFFSETGEN_TRIG_FLOAT_(x) static_cast<float>(x)
+#else
+#define OFFSETGEN_TRIG_INTF_(x) ((int)(x))
+#define OFFSETGEN_TRIG_FLOAT_(x) ((float)(x))
+#endif
+/* Float sin and cos for the scalar functions: the batch helpers' reduction and Cephes polynomials,
+ * with an int-conversion quadrant; sinf/cosf beyond 8192.0 radians, or everywhere with
+ * OFFSETGEN_LIBM_TRIG defined. */
+static inline float offsetgen_sinf(float a)
+{
+#ifdef OFFSETGEN_LIBM_TRIG
+    return sinf(a);
+#else
+    const float v = a * 0.636619772f;
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
+    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float u = (qi & 1) ? c : s;
+    return (fabsf(a) <= 8192.0f) ? ((qi & 2) ? -u : u) : sinf(a);
+#endif
+}
+
+static inline float offsetgen_cosf(float a)
+{
+#ifdef OFFSETGEN_LIBM_TRIG
+    return cosf(a);
+#else
+    const float v = a * 0.636619772f;
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
+    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    const float z = r * r;
+    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    const float u = (qi & 1) ? s : c;
+    return (fabsf(a) <= 8192.0f) ? (((qi + 1) & 2) ? -u : u) : cosf(a);
+#endif
+}
+#undef OFFSETGEN_TRIG_INTF_
+#undef OFFSETGEN_TRIG_FLOAT_
+#endif /* OFFSETGEN_SCALAR_TRIG_FLOAT_V1 */
 /* F, the field; the surface is F = 0.
  * Total ops: 14
  */
@@ -350,7 +448,7 @@ static inline float gyroid_o3_fieldf(float x, float y, float z)
     const float _t0 = z * 6.28318548f;
     const float _t1 = 6.28318548f * y;
     const float _t2 = 6.28318548f * x;
-    return cosf(_t0) * sinf(_t1) + sinf(_t0) * cosf(_t2) + cosf(_t1) * sinf(_t2);
+    return offsetgen_cosf(_t0) * offsetgen_sinf(_t1) + offsetgen_sinf(_t0) * offsetgen_cosf(_t2) + offsetgen_cosf(_t1) * offsetgen_sinf(_t2);
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
@@ -359,17 +457,17 @@ static inline float gyroid_o3_fieldf(float x, float y, float z)
 static inline float gyroid_o3_offsetf(float x, float y, float z, float h)
 {
     const float _t0 = z * 6.28318548f;
-    const float _t1 = cosf(_t0);
+    const float _t1 = offsetgen_cosf(_t0);
     const float _t2 = 6.28318548f * y;
-    const float _t3 = sinf(_t2);
+    const float _t3 = offsetgen_sinf(_t2);
     const float _t4 = _t1 * _t3;
-    const float _t5 = sinf(_t0);
+    const float _t5 = offsetgen_sinf(_t0);
     const float _t6 = 6.28318548f * x;
-    const float _t7 = cosf(_t6);
+    const float _t7 = offsetgen_cosf(_t6);
     const float _t8 = _t5 * _t7;
     const float _t9 = _t4 + _t8;
-    const float _t10 = cosf(_t2);
-    const float _t11 = sinf(_t6);
+    const float _t10 = offsetgen_cosf(_t2);
+    const float _t11 = offsetgen_sinf(_t6);
     const float _t12 = _t10 * _t11;
     const float _t13 = 6.28318548f * h;
     const float _t14 = _t1 * _t7;
@@ -424,19 +522,19 @@ static inline float gyroid_o3_shellf(float x, float y, float z, float t)
     const float _t0 = 6.28318548f * (t * 0.5f);
     const float _t1 = _t0 * 0.5f;
     const float _t2 = z * 6.28318548f;
-    const float _t3 = cosf(_t2);
+    const float _t3 = offsetgen_cosf(_t2);
     const float _t4 = 6.28318548f * x;
-    const float _t5 = cosf(_t4);
+    const float _t5 = offsetgen_cosf(_t4);
     const float _t6 = _t3 * _t5;
-    const float _t7 = sinf(_t2);
+    const float _t7 = offsetgen_sinf(_t2);
     const float _t8 = 6.28318548f * y;
-    const float _t9 = sinf(_t8);
+    const float _t9 = offsetgen_sinf(_t8);
     const float _t10 = _t7 * _t9;
     const float _t11 = _t6 - _t10;
     const float _t12 = _t11 * _t11;
-    const float _t13 = sinf(_t4);
+    const float _t13 = offsetgen_sinf(_t4);
     const float _t14 = _t9 * _t13;
-    const float _t15 = cosf(_t8);
+    const float _t15 = offsetgen_cosf(_t8);
     const float _t16 = _t3 * _t15;
     const float _t17 = _t14 - _t16;
     const float _t18 = _t17 * _t17;
@@ -515,19 +613,19 @@ static inline float gyroid_o3_shellf(float x, float y, float z, float t)
 static inline void gyroid_o3_normalf(float x, float y, float z, float h, float n[3])
 {
     const float _t0 = z * 6.28318548f;
-    const float _t1 = cosf(_t0);
+    const float _t1 = offsetgen_cosf(_t0);
     const float _t2 = 6.28318548f * x;
-    const float _t3 = cosf(_t2);
+    const float _t3 = offsetgen_cosf(_t2);
     const float _t4 = _t1 * _t3;
-    const float _t5 = sinf(_t0);
+    const float _t5 = offsetgen_sinf(_t0);
     const float _t6 = 6.28318548f * y;
-    const float _t7 = sinf(_t6);
+    const float _t7 = offsetgen_sinf(_t6);
     const float _t8 = _t5 * _t7;
     const float _t9 = _t4 - _t8;
     const float _t10 = _t9 * _t9;
-    const float _t11 = sinf(_t2);
+    const float _t11 = offsetgen_sinf(_t2);
     const float _t12 = _t7 * _t11;
-    const float _t13 = cosf(_t6);
+    const float _t13 = offsetgen_cosf(_t6);
     const float _t14 = _t1 * _t13;
     const float _t15 = _t12 - _t14;
     const float _t16 = _t15 * _t15;
@@ -647,8 +745,9 @@ static inline void gyroid_o3_normalf(float x, float y, float z, float h, float n
  *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
  *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
  *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
- * The results agree with the scalar functions to about 1e-15 of the field's scale (the only
- * difference is the last bits of sin and cos). Points whose sin/cos arguments lie beyond the
+ * The results agree with the scalar functions to about 1e-15 of the field's scale: both use the
+ * same sin/cos reduction and polynomials, so only the compiler's vector contraction and ordering of
+ * the same operations can differ. Points whose sin/cos arguments lie beyond the
  * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
  * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
  * function's finite value. `out` must not overlap the input arrays. Other elementary functions
@@ -681,7 +780,7 @@ static inline double offsetgen_batch_sin(double a)
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
     const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
     const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : NAN;
+    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : HUGE_VAL - HUGE_VAL;  /* NaN, as a double */
 }
 
 static inline double offsetgen_batch_cos(double a)
@@ -693,7 +792,7 @@ static inline double offsetgen_batch_cos(double a)
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
     const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
     const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
-    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : NAN;
+    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : HUGE_VAL - HUGE_VAL;
 }
 #endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
 #ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1

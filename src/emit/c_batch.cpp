@@ -13,28 +13,6 @@
 namespace offsetgen {
 namespace {
 
-// Argument ranges (radians) where the helpers' Cody-Waite reduction is exact; see c_batch.in.
-constexpr const char* kRangeDouble = "1.0e8";
-constexpr const char* kRangeFloat = "8192.0";
-
-// templates/c_batch.in holds several fmt skeletons, each introduced by a line "@@ <name>".
-std::map<std::string, std::string> template_sections() {
-  std::map<std::string, std::string> sections;
-  std::istringstream in(load_template("c_batch.in"));
-  std::string line, current;
-  while (std::getline(in, line)) {
-    if (line.rfind("@@ ", 0) == 0) {
-      current = line.substr(3);
-      sections[current];
-      continue;
-    }
-    if (current.empty()) continue;
-    sections[current] += line + "\n";
-  }
-  for (const char* name : {"file", "support_double", "support_float", "function"})
-    if (!sections.count(name)) throw std::runtime_error(std::string("template c_batch.in lacks section @@ ") + name);
-  return sections;
-}
 
 bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
@@ -48,7 +26,7 @@ bool batched(const EmittedFunction& f) { return !f.vector_result && (f.suffix ==
 
 }  // namespace
 
-std::string use_batch_trig(const std::string& code) {
+std::string rename_trig_calls(const std::string& code, const std::string& prefix) {
   std::string out;
   out.reserve(code.size() + code.size() / 8);
   size_t i = 0;
@@ -58,7 +36,7 @@ std::string use_batch_trig(const std::string& code) {
       size_t end = i + 3;
       if (end < code.size() && code[end] == 'f') ++end;
       if (end < code.size() && code[end] == '(') {
-        out += "offsetgen_batch_";
+        out += prefix;
         out.append(code, i, end - i);
         i = end;
         continue;
@@ -75,7 +53,7 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
   for (const auto& f : functions) any = any || batched(f);
   if (!any) return "";
 
-  const auto sections = template_sections();
+  const auto sections = load_template_sections("c_batch.in", {"file", "support_double", "support_float", "function"});
   std::vector<std::string> coordinates = {"x", "y"};
   if (facts.dims == 3) coordinates.push_back("z");
 
@@ -84,7 +62,7 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
     const Dialect d{Language::C, precision};
     const std::string real = d.real_type();
     support += fmt::format(fmt::runtime(sections.at(precision == Precision::Double ? "support_double" : "support_float")),
-                           fmt::arg("range_double", kRangeDouble), fmt::arg("range_float", kRangeFloat));
+                           fmt::arg("range_double", kTrigRangeDouble), fmt::arg("range_float", kTrigRangeFloat));
     for (const auto& f : functions) {
       if (!batched(f)) continue;
       std::vector<std::string> inputs = coordinates;
@@ -106,14 +84,14 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
           fmt::runtime(sections.at("function")), fmt::arg("doc", f.doc), fmt::arg("scalar", scalar),
           fmt::arg("name", name), fmt::arg("call", join(elements, ", ")),
           fmt::arg("array_params", join(array_params, ", ")), fmt::arg("real", real),
-          fmt::arg("body", use_batch_trig(body)), fmt::arg("abs", d.abs_name()),
+          fmt::arg("body", rename_trig_calls(body, "offsetgen_batch_")), fmt::arg("abs", d.abs_name()),
           fmt::arg("huge", precision == Precision::Double ? "HUGE_VAL" : "HUGE_VALF"));
     }
   }
   if (!list.empty()) list.pop_back();
   return fmt::format(fmt::runtime(sections.at("file")), fmt::arg("list", list), fmt::arg("support", support),
-                     fmt::arg("functions", rendered), fmt::arg("range_double", kRangeDouble),
-                     fmt::arg("range_float", kRangeFloat));
+                     fmt::arg("functions", rendered), fmt::arg("range_double", kTrigRangeDouble),
+                     fmt::arg("range_float", kTrigRangeFloat));
 }
 
 }  // namespace offsetgen

@@ -16,8 +16,13 @@ namespace offsetgen {
 std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFunction>& functions,
                          const std::vector<Precision>& precisions);
 
-// Replaces calls of sin/cos (and sinf/cosf) in printed C by the batch helpers
-// offsetgen_batch_sin/cos(f); other text is untouched. Exposed for tests.
-std::string use_batch_trig(const std::string& code);
+// Argument ranges (radians) where the inline sin/cos helpers' Cody-Waite reduction is exact
+// (templates/c_batch.in, templates/c_scalar_trig.in).
+inline constexpr const char* kTrigRangeDouble = "1.0e8";
+inline constexpr const char* kTrigRangeFloat = "8192.0";
+
+// Replaces calls of sin/cos (and sinf/cosf) in printed C by prefix + the name, e.g. with prefix
+// "offsetgen_batch_": offsetgen_batch_sin/cos(f); other text is untouched.
+std::string rename_trig_calls(const std::string& code, const std::string& prefix);
 
 }  // namespace offsetgen

@@ -35,10 +35,25 @@ std::string render_function(const std::string& skeleton, const FileFacts& facts,
   } else {
     body += fmt::format("    return {};\n", printed.outputs.at(0));
   }
+  body = rename_trig_calls(body, "offsetgen_");  // the inline helpers of templates/c_scalar_trig.in
   return fmt::format(fmt::runtime(skeleton), fmt::arg("doc", f.doc), fmt::arg("ops", count_ops(*f.program)),
                      fmt::arg("return_type", f.vector_result ? "void" : d.real_type()),
                      fmt::arg("name", function_name(facts, f, d)), fmt::arg("params", parameters(facts, f, d)),
                      fmt::arg("body", body));
+}
+
+// The scalar functions call inline sin/cos helpers instead of libm's; they are defined once, ahead
+// of the functions of each precision that call them.
+std::string with_scalar_trig(const std::string& functions, Precision precision) {
+  const std::string f = precision == Precision::Double ? "" : "f";
+  if (functions.find("offsetgen_sin" + f + "(") == std::string::npos &&
+      functions.find("offsetgen_cos" + f + "(") == std::string::npos)
+    return functions;
+  const auto sections = load_template_sections("c_scalar_trig.in", {"double", "float"});
+  const std::string support =
+      fmt::format(fmt::runtime(sections.at(precision == Precision::Double ? "double" : "float")),
+                  fmt::arg("range_double", kTrigRangeDouble), fmt::arg("range_float", kTrigRangeFloat));
+  return support + functions;
 }
 
 }  // namespace
@@ -49,14 +64,16 @@ std::string emit_c_header(const FileFacts& facts, const std::vector<EmittedFunct
   std::string rendered, function_list, ops_list;
   for (Precision precision : precisions) {
     Dialect d{Language::C, precision};
+    std::string scalar_functions;
     for (const auto& f : functions) {
-      rendered += render_function(skeleton, facts, f, d);
+      scalar_functions += render_function(skeleton, facts, f, d);
       std::string call = fmt::format("{} {}{}", f.vector_result ? "void" : d.real_type(),
                                      function_name(facts, f, d),
                                      f.vector_result ? f.signature_doc.substr(0, f.signature_doc.size() - 1) + ", n)"
                                                      : f.signature_doc);
       function_list += fmt::format(" *   {:<42} {}\n", call, f.doc);
     }
+    rendered += with_scalar_trig(scalar_functions, precision);
   }
   rendered += emit_c_batch(facts, functions, precisions);  // the _n batch API (c_batch.h)
   for (const auto& f : functions) ops_list += fmt::format(" *   {:<8} {}\n", f.suffix, count_ops(*f.program));

@@ -46,4 +46,23 @@ std::string load_template(const std::string& name) {
   return text.str();
 }
 
+std::map<std::string, std::string> load_template_sections(const std::string& name,
+                                                          const std::vector<std::string>& required) {
+  std::map<std::string, std::string> sections;
+  std::istringstream in(load_template(name));
+  std::string line, current;
+  while (std::getline(in, line)) {
+    if (line.rfind("@@ ", 0) == 0) {
+      current = line.substr(3);
+      sections[current];
+      continue;
+    }
+    if (current.empty()) continue;
+    sections[current] += line + "\n";
+  }
+  for (const auto& section : required)
+    if (!sections.count(section)) throw std::runtime_error("template " + name + " lacks section @@ " + section);
+  return sections;
+}
+
 }  // namespace offsetgen
