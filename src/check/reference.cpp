@@ -1,6 +1,6 @@
 #include "check/reference.h"
 
-#include "check/expression_syntax.h"
+#include "surfaces/expression_syntax.h"
 #include "lowering/lower.h"
 #include "offset/atom_table.h"
 #include "surfaces/expression_input.h"

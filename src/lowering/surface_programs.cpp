@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -143,6 +144,9 @@ class FunctionBuilder {
 
 }  // namespace
 
+// Per start of the compass search; a smooth maximum needs a few hundred.
+constexpr int kMaxSearchEvaluations = 20000;
+
 double max_gradient_norm(const Surface& surface, const OffsetModel& model) {
   const int dims = surface.dims;
   Program program(coordinate_names(dims));
@@ -169,8 +173,12 @@ double max_gradient_norm(const Surface& surface, const OffsetModel& model) {
       p[static_cast<size_t>(i)] = extent * (rest % n + 0.5) / n;
       rest /= n;
     }
-    best.push_back({grad2(p)[0], p});
+    const double value = grad2(p)[0];
+    if (std::isfinite(value)) best.push_back({value, p});  // poles (log, 1/x) cannot be the bound
   }
+  if (best.empty())
+    throw std::runtime_error("the gradient of F is not finite anywhere on the sampled cell, so no bound M "
+                             "for the safeguard exists");
   const size_t starts = std::min<size_t>(8, best.size());
   std::partial_sort(best.begin(), best.begin() + static_cast<long>(starts), best.end(),
                     [](const auto& a, const auto& b) { return a.first > b.first; });
@@ -178,14 +186,17 @@ double max_gradient_norm(const Surface& surface, const OffsetModel& model) {
   double maximum = best.front().first;
   for (size_t s = 0; s < starts; ++s) {
     auto [value, point] = best[s];
-    for (double step = extent / n; step > extent * 1e-13;) {
+    // Capped: near a pole the search would otherwise creep towards it one tiny step at a time.
+    int evaluations = 0;
+    for (double step = extent / n; step > extent * 1e-13 && evaluations < kMaxSearchEvaluations;) {
       bool improved = false;
       for (int i = 0; i < dims && !improved; ++i) {
         for (double direction : {1.0, -1.0}) {
           auto trial = point;
           trial[static_cast<size_t>(i)] = std::clamp(trial[static_cast<size_t>(i)] + direction * step, 0.0, extent);
-          double v = grad2(trial)[0];
-          if (v > value) {
+          const double v = grad2(trial)[0];
+          ++evaluations;
+          if (std::isfinite(v) && v > value) {
             value = v;
             point = trial;
             improved = true;

@@ -1,5 +1,7 @@
 #include "surfaces/expression_input.h"
 
+#include "surfaces/expression_syntax.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -63,6 +65,10 @@ struct Scan {
 // One pass over the text: rejects unsupported and non-smooth functions with their column, and
 // collects free identifiers so unknown parameters can be named before GiNaC sees the text.
 Scan scan_expression(const std::string& text, const std::string& what) {
+  // GiNaC's own parse errors say "line 0, column 0"; this pass points at the column.
+  if (auto problem = find_syntax_problem(text))
+    throw InputError(fmt::format("cannot parse {}: {} at column {}:\n{}", what, problem->message, problem->column,
+                                 caret_line(text, problem->column, 4)));
   Scan scan;
   size_t i = 0;
   while (i < text.size()) {
@@ -126,14 +132,21 @@ Scan scan_expression(const std::string& text, const std::string& what) {
   return scan;
 }
 
-GiNaC::ex parse_with(const std::string& text, const GiNaC::symtab& table, const std::string& what) {
+// GiNaC appends "[function(file:line)]" to its messages: the user needs neither.
+std::string without_source_location(const std::string& message) {
+  std::string out = message.substr(0, message.find("\n["));
+  while (!out.empty() && std::isspace(static_cast<unsigned char>(out.back()))) out.pop_back();
+  return out;
+}
+
+// `original` is the text as the user gave it (for messages), `rewritten` what GiNaC reads.
+GiNaC::ex parse_with(const std::string& original, const std::string& rewritten, const GiNaC::symtab& table,
+                     const std::string& what) {
   try {
     GiNaC::parser reader(table, true);
-    return reader(text);
-  } catch (const GiNaC::parse_error& e) {
-    throw InputError(fmt::format("cannot parse {} '{}': {}", what, text, e.what()));
+    return reader(rewritten);
   } catch (const std::exception& e) {
-    throw InputError(fmt::format("cannot parse {} '{}': {}", what, text, e.what()));
+    throw InputError(fmt::format("cannot parse {} '{}': {}", what, original, without_source_location(e.what())));
   }
 }
 
@@ -147,7 +160,7 @@ GiNaC::ex parse_constant(const std::string& name, const std::string& text) {
       throw InputError(fmt::format("parameter {}={} must be a constant, but uses '{}'", name, text, ident));
     }
   }
-  return parse_with(scan.rewritten, table, fmt::format("parameter {}", name));
+  return parse_with(text, scan.rewritten, table, fmt::format("parameter {}", name));
 }
 
 // Functions beyond the parser's reach (built by GiNaC itself, e.g. abs from sqrt(x^2)) are caught here.
@@ -186,7 +199,7 @@ GiNaC::ex parse_in_cell_coordinates(const std::string& text, const std::map<std:
     }
   }
   if (unused_params) *unused_params = unused;
-  GiNaC::ex e = parse_with(scan.rewritten, table, what);
+  GiNaC::ex e = parse_with(text, scan.rewritten, table, what);
   require_smooth(e, what);
   return e;
 }
@@ -217,7 +230,7 @@ Surface parse_natural_expression(const std::string& text) {
   table["Y"] = sym.Y;
   table["Z"] = sym.Z;
   Surface surface;
-  surface.field = parse_with(text, table, "catalog formula");
+  surface.field = parse_with(text, text, table, "catalog formula");
   surface.scale = 2 * GiNaC::Pi;
   surface.dims = surface.field.has(sym.Z) ? 3 : 2;
   surface.source_expr = text;

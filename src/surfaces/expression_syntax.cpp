@@ -1,8 +1,8 @@
-#include "check/expression_syntax.h"
+#include "surfaces/expression_syntax.h"
 
 #include <cctype>
 
-namespace offsetgen::check {
+namespace offsetgen {
 namespace {
 
 class Parser {
@@ -62,8 +62,8 @@ class Parser {
   bool power() {
     if (!primary()) return false;
     skip();
-    if (!at_end() && s_[i_] == '^') {
-      ++i_;
+    if (!at_end() && (s_[i_] == '^' || s_.compare(i_, 2, "**") == 0)) {  // Python's ** too
+      i_ += s_[i_] == '^' ? 1 : 2;
       return unary();
     }
     return true;
@@ -147,4 +147,4 @@ std::string caret_line(const std::string& text, int column, int indent) {
   return pad + text + "\n" + pad + std::string(static_cast<size_t>(column > 0 ? column - 1 : 0), ' ') + "^";
 }
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen

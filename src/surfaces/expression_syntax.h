@@ -5,18 +5,18 @@
 #include <optional>
 #include <string>
 
-namespace offsetgen::check {
+namespace offsetgen {
 
 struct SyntaxProblem {
   int column = 0;  // 1-based column in the text as given
   std::string message;
 };
 
-// A recursive-descent pass over the usual grammar (numbers, names, calls, + - * / ^, parentheses).
+// A recursive-descent pass over the usual grammar (numbers, names, calls, + - * / ^ **, parentheses).
 // nullopt when the text is well formed; semantic problems (unknown names) are left to the core.
 std::optional<SyntaxProblem> find_syntax_problem(const std::string& text);
 
 // "  0.1*x+*2\n         ^" style pointer under the offending column.
 std::string caret_line(const std::string& text, int column, int indent);
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen

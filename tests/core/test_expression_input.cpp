@@ -78,6 +78,46 @@ TEST(ExpressionInput, RejectsBadInputWithAClearReason) {
   EXPECT_THROW(split_param("1a=3"), InputError);
 }
 
+// Syntax errors point at the column of the text as typed (GiNaC's own messages say "line 0,
+// column 0", show its rewritten text and name its source files).
+TEST(ExpressionInput, SyntaxErrorsNameTheColumnAndNothingOfGiNaC) {
+  struct Case {
+    const char* text;
+    const char* words;
+  };
+  for (const Case& c : {Case{"sin(x) + * cos(y)", "unexpected '*' where a number, name or '(' is expected at column 10"},
+                        Case{"sin(x) + (cos(y)", "this '(' is never closed at column 10"},
+                        Case{"sin(x) 3", "unexpected '3' after a complete expression at column 8"},
+                        Case{"0.5*x) + y", "unbalanced ')' at column 6"},
+                        Case{"x + 1.5e", "malformed exponent in a number at column 8"}}) {
+    try {
+      parse_user_expression(c.text, {}, "s");
+      ADD_FAILURE() << "no error for " << c.text;
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(c.words), std::string::npos) << message;
+      EXPECT_NE(message.find(std::string("    ") + c.text + "\n"), std::string::npos) << message;  // caret line
+      EXPECT_EQ(message.find("GiNaC"), std::string::npos) << message;
+      EXPECT_EQ(message.find("parser.cpp"), std::string::npos) << message;
+      EXPECT_EQ(message.find("line 0"), std::string::npos) << message;
+    }
+  }
+  // Python's ** is accepted as a power.
+  EXPECT_NO_THROW(parse_user_expression("x**2 + y**2 - 0.25", {}, "s"));
+}
+
+TEST(ExpressionInput, GiNaCsOwnErrorsLoseTheirSourceLocation) {
+  try {
+    parse_user_expression("1/0 + x", {}, "s");
+    FAIL();
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'1/0 + x'"), std::string::npos) << message;
+    EXPECT_NE(message.find("division by zero"), std::string::npos) << message;
+    EXPECT_EQ(message.find("\n"), std::string::npos) << message;
+  }
+}
+
 TEST(ExpressionInput, ThicknessNamesTheColumnOfAParseError) {
   EXPECT_NO_THROW(parse_thickness_expression("0.01 + 0.02*x", {}, 3));
   try {
@@ -85,6 +125,7 @@ TEST(ExpressionInput, ThicknessNamesTheColumnOfAParseError) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("thickness"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("column 8"), std::string::npos) << e.what();
   }
   EXPECT_THROW(parse_thickness_expression("0.1*z", {}, 2), InputError);
 }

@@ -4,6 +4,8 @@
 // the check stage tie the printed C to them.
 #include "test_support.h"
 
+#include "surfaces/expression_input.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,6 +72,22 @@ TEST_P(Safeguard, FiniteEverywhereAndNeverTheWrongSideFarFromTheSurface) {
         }
   }
   EXPECT_GT(checked_far, 0);
+}
+
+// A user expression whose gradient has a pole in the cell (x^y and log(x) at x = 0): the bound
+// search skips non-finite samples and stops instead of creeping towards the pole (it used to run
+// for more than ten minutes), and the bound is a finite upper bound of the sampled gradient.
+TEST(SafeguardBound, FiniteForGradientsWithPolesInTheCell) {
+  for (const char* text : {"x^y", "log(x) + y", "1/(x + 0.001) + y"}) {
+    const Surface surface = parse_user_expression(text, {}, "pole");
+    const OffsetModel model = build_offset_model(surface, 1, true);
+    const double bound = max_gradient_norm(surface, model);
+    EXPECT_TRUE(std::isfinite(bound)) << text;
+    EXPECT_GT(bound, 1.0) << text;
+  }
+  // The smooth quarter circle's gradient (2x, 2y) peaks at (1, 1): |grad F| = 2 sqrt(2).
+  const Surface circle = parse_user_expression("x^2 + y^2 - 0.25", {}, "circle");
+  EXPECT_NEAR(max_gradient_norm(circle, build_offset_model(circle, 1, true)), 2 * std::sqrt(2.0), 1e-5);
 }
 
 std::vector<Case> all_cases() {
