@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^2) of the exact offset; relative thickness error ~ (h/L)^1.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: diamond_o1_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 2.000002 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 20
-    - offset: 47
-    - shell: 50
-    - normal: 101
+    - offset: 46
+    - shell: 49
+    - normal: 104
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":47,"shell":50,"normal":101}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":46,"shell":49,"normal":104}} */
 #ifndef OFFSETGEN_DIAMOND_O1_GLSL
 #define OFFSETGEN_DIAMOND_O1_GLSL
 
@@ -53,7 +54,7 @@ highp float diamond_o1_field(highp vec3 p)
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 47.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 46.
 highp float diamond_o1_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -77,10 +78,10 @@ highp float diamond_o1_offset(highp vec3 p, highp float h)
     highp float _t18 = _t13 + _t16 - _t15 - _t14;
     highp float _t19 = _t13 + _t15 - _t14 - _t16;
     highp float _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    return _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.28318548 * h * ((abs(_t20) <= 1.73205256) ? _t20 : ((_t20 > 0.0) ? 1.73205256 : (-1.73205256)));
+    return _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.28318548 * h * ((_t20 <= 1.73205256) ? (((-1.73205256) <= _t20) ? _t20 : (-1.73205256)) : 1.73205256);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 50.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 49.
 highp float diamond_o1_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -104,12 +105,12 @@ highp float diamond_o1_shell(highp vec3 p, highp float t)
     highp float _t18 = _t7 + _t16 - _t14 - _t11;
     highp float _t19 = _t7 + _t14 - _t11 - _t16;
     highp float _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    highp float _t21 = ((abs(_t20) <= 1.73205256) ? _t20 : ((_t20 > 0.0) ? 1.73205256 : (-1.73205256))) * (6.28318548 * (t * 0.5));
+    highp float _t21 = 6.28318548 * (t * 0.5) * ((_t20 <= 1.73205256) ? (((-1.73205256) <= _t20) ? _t20 : (-1.73205256)) : 1.73205256);
     highp float _t22 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
     return (_t21 + _t22) * (_t22 - _t21);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 101.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 104.
 highp vec3 diamond_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -134,30 +135,31 @@ highp vec3 diamond_o1_normal(highp vec3 p, highp float h)
     highp float _t19 = _t7 + _t14 - _t11 - _t16;
     highp float _t20 = _t17 * _t17 + _t18 * _t18 + _t19 * _t19;
     highp float _t21 = sqrt(_t20);
-    bool _t22 = abs(_t21) <= 1.73205256;
-    highp float _t23 = 6.28318548 * h;
-    highp float _t24 = _t10 * _t15;
-    highp float _t25 = _t13 * _t6;
-    highp float _t26 = _t9 * _t6;
-    highp float _t27 = _t4 * _t10;
-    highp float _t28 = _t24 + _t25 - _t26 - _t27;
-    highp float _t29 = _t24 + _t27 - _t26 - _t25;
-    highp float _t30 = _t24 + _t26;
-    highp float _t31 = _t27 + _t30 + _t25;
-    highp float _t32 = 1.0 / _t21;
-    highp float _t33 = (_t22) ? _t19 - _t23 * ((_t28 * _t18 + _t29 * _t17 - _t19 * _t31) * _t32) : _t19;
-    highp float _t34 = _t30 - _t27 - _t25;
-    highp float _t35 = (_t22) ? _t17 - _t23 * (_t32 * (_t19 * _t29 + _t34 * _t18 - _t31 * _t17)) : _t17;
-    highp float _t36 = (_t22) ? _t18 - _t23 * (_t32 * (_t34 * _t17 + _t19 * _t28 - _t18 * _t31)) : _t18;
-    highp float _t37 = _t33 * _t33 + _t35 * _t35 + _t36 * _t36;
-    bool _t38 = _t37 > 0.0;
-    bool _t39 = _t37 <= 1.00000002e+30;
-    highp float _t40 = 1.0 / sqrt(_t37);
-    highp float _t41 = (_t20 > 0.0) ? _t32 : 0.0;
-    highp float _t42 = _t18 * _t41;
-    highp float _t43 = _t19 * _t41;
-    highp float _t44 = _t41 * _t17;
-    return vec3((_t38) ? ((_t39) ? _t40 * _t36 : _t42) : _t42, (_t38) ? ((_t39) ? _t40 * _t33 : _t43) : _t43, (_t38) ? ((_t39) ? _t40 * _t35 : _t44) : _t44);
+    bool _t22 = _t21 <= 1.73205256;
+    bool _t23 = (-1.73205256) <= _t21;
+    highp float _t24 = 6.28318548 * h;
+    highp float _t25 = _t10 * _t15;
+    highp float _t26 = _t13 * _t6;
+    highp float _t27 = _t9 * _t6;
+    highp float _t28 = _t4 * _t10;
+    highp float _t29 = _t25 + _t26 - _t27 - _t28;
+    highp float _t30 = _t25 + _t28 - _t27 - _t26;
+    highp float _t31 = _t25 + _t27;
+    highp float _t32 = _t28 + _t31 + _t26;
+    highp float _t33 = 1.0 / _t21;
+    highp float _t34 = (_t22) ? ((_t23) ? _t19 - _t24 * ((_t29 * _t18 + _t30 * _t17 - _t19 * _t32) * _t33) : _t19) : _t19;
+    highp float _t35 = _t31 - _t28 - _t26;
+    highp float _t36 = (_t22) ? ((_t23) ? _t17 - _t24 * (_t33 * (_t19 * _t30 + _t35 * _t18 - _t32 * _t17)) : _t17) : _t17;
+    highp float _t37 = (_t22) ? ((_t23) ? _t18 - _t24 * (_t33 * (_t35 * _t17 + _t19 * _t29 - _t18 * _t32)) : _t18) : _t18;
+    highp float _t38 = _t34 * _t34 + (_t36 * _t36 + _t37 * _t37);
+    bool _t39 = _t38 > 0.0;
+    bool _t40 = _t38 <= 1.00000002e+30;
+    highp float _t41 = 1.0 / sqrt(_t38);
+    highp float _t42 = (_t20 > 0.0) ? _t33 : 0.0;
+    highp float _t43 = _t18 * _t42;
+    highp float _t44 = _t19 * _t42;
+    highp float _t45 = _t42 * _t17;
+    return vec3((_t39) ? ((_t40) ? _t37 * _t41 : _t43) : _t43, (_t39) ? ((_t40) ? _t34 * _t41 : _t44) : _t44, (_t39) ? ((_t40) ? _t36 * _t41 : _t45) : _t45);
 }
 
 

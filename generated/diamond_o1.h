@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to diamond_o1_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 1.7320525396196846 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
+ *   and H = 2.0000020000000061 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    20
- *   offset   47
- *   shell    50
- *   normal   101
+ *   offset   46
+ *   shell    49
+ *   normal   104
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":47,"shell":50,"normal":101}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":46,"shell":49,"normal":104}} */
 #ifndef OFFSETGEN_DIAMOND_O1_H
 #define OFFSETGEN_DIAMOND_O1_H
 
@@ -119,7 +122,7 @@ static inline double diamond_o1_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 47
+ * Total ops: 46
  */
 static inline double diamond_o1_offset(double x, double y, double z, double h)
 {
@@ -144,11 +147,11 @@ static inline double diamond_o1_offset(double x, double y, double z, double h)
     const double _t18 = _t13 + _t16 - _t15 - _t14;
     const double _t19 = _t13 + _t15 - _t14 - _t16;
     const double _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    return _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.2831853071795862 * h * ((fabs(_t20) <= 1.7320525396196846) ? _t20 : ((_t20 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    return _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.2831853071795862 * h * ((_t20 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846)) : 1.7320525396196846);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 50
+ * Total ops: 49
  */
 static inline double diamond_o1_shell(double x, double y, double z, double t)
 {
@@ -173,13 +176,13 @@ static inline double diamond_o1_shell(double x, double y, double z, double t)
     const double _t18 = _t7 + _t16 - _t14 - _t11;
     const double _t19 = _t7 + _t14 - _t11 - _t16;
     const double _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    const double _t21 = ((fabs(_t20) <= 1.7320525396196846) ? _t20 : ((_t20 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * (6.2831853071795862 * (t * 0.5));
+    const double _t21 = 6.2831853071795862 * (t * 0.5) * ((_t20 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846)) : 1.7320525396196846);
     const double _t22 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
     return (_t21 + _t22) * (_t22 - _t21);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 101
+ * Total ops: 104
  */
 static inline void diamond_o1_normal(double x, double y, double z, double h, double n[3])
 {
@@ -205,32 +208,33 @@ static inline void diamond_o1_normal(double x, double y, double z, double h, dou
     const double _t19 = _t7 + _t14 - _t11 - _t16;
     const double _t20 = _t17 * _t17 + _t18 * _t18 + _t19 * _t19;
     const double _t21 = sqrt(_t20);
-    const int _t22 = fabs(_t21) <= 1.7320525396196846;
-    const double _t23 = 6.2831853071795862 * h;
-    const double _t24 = _t10 * _t15;
-    const double _t25 = _t13 * _t6;
-    const double _t26 = _t9 * _t6;
-    const double _t27 = _t4 * _t10;
-    const double _t28 = _t24 + _t25 - _t26 - _t27;
-    const double _t29 = _t24 + _t27 - _t26 - _t25;
-    const double _t30 = _t24 + _t26;
-    const double _t31 = _t27 + _t30 + _t25;
-    const double _t32 = 1.0 / _t21;
-    const double _t33 = (_t22) ? _t19 - _t23 * ((_t28 * _t18 + _t29 * _t17 - _t19 * _t31) * _t32) : _t19;
-    const double _t34 = _t30 - _t27 - _t25;
-    const double _t35 = (_t22) ? _t17 - _t23 * (_t32 * (_t19 * _t29 + _t34 * _t18 - _t31 * _t17)) : _t17;
-    const double _t36 = (_t22) ? _t18 - _t23 * (_t32 * (_t34 * _t17 + _t19 * _t28 - _t18 * _t31)) : _t18;
-    const double _t37 = _t33 * _t33 + _t35 * _t35 + _t36 * _t36;
-    const int _t38 = _t37 > 0.0;
-    const int _t39 = _t37 <= 1.0e+30;
-    const double _t40 = 1.0 / sqrt(_t37);
-    const double _t41 = (_t20 > 0.0) ? _t32 : 0.0;
-    const double _t42 = _t18 * _t41;
-    const double _t43 = _t19 * _t41;
-    const double _t44 = _t41 * _t17;
-    n[0] = (_t38) ? ((_t39) ? _t40 * _t36 : _t42) : _t42;
-    n[1] = (_t38) ? ((_t39) ? _t40 * _t33 : _t43) : _t43;
-    n[2] = (_t38) ? ((_t39) ? _t40 * _t35 : _t44) : _t44;
+    const int _t22 = _t21 <= 1.7320525396196846;
+    const int _t23 = (-1.7320525396196846) <= _t21;
+    const double _t24 = 6.2831853071795862 * h;
+    const double _t25 = _t10 * _t15;
+    const double _t26 = _t13 * _t6;
+    const double _t27 = _t9 * _t6;
+    const double _t28 = _t4 * _t10;
+    const double _t29 = _t25 + _t26 - _t27 - _t28;
+    const double _t30 = _t25 + _t28 - _t27 - _t26;
+    const double _t31 = _t25 + _t27;
+    const double _t32 = _t28 + _t31 + _t26;
+    const double _t33 = 1.0 / _t21;
+    const double _t34 = (_t22) ? ((_t23) ? _t19 - _t24 * ((_t29 * _t18 + _t30 * _t17 - _t19 * _t32) * _t33) : _t19) : _t19;
+    const double _t35 = _t31 - _t28 - _t26;
+    const double _t36 = (_t22) ? ((_t23) ? _t17 - _t24 * (_t33 * (_t19 * _t30 + _t35 * _t18 - _t32 * _t17)) : _t17) : _t17;
+    const double _t37 = (_t22) ? ((_t23) ? _t18 - _t24 * (_t33 * (_t35 * _t17 + _t19 * _t29 - _t18 * _t32)) : _t18) : _t18;
+    const double _t38 = _t34 * _t34 + (_t36 * _t36 + _t37 * _t37);
+    const int _t39 = _t38 > 0.0;
+    const int _t40 = _t38 <= 1.0e+30;
+    const double _t41 = 1.0 / sqrt(_t38);
+    const double _t42 = (_t20 > 0.0) ? _t33 : 0.0;
+    const double _t43 = _t18 * _t42;
+    const double _t44 = _t19 * _t42;
+    const double _t45 = _t42 * _t17;
+    n[0] = (_t39) ? ((_t40) ? _t37 * _t41 : _t43) : _t43;
+    n[1] = (_t39) ? ((_t40) ? _t34 * _t41 : _t44) : _t44;
+    n[2] = (_t39) ? ((_t40) ? _t36 * _t41 : _t45) : _t45;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -299,7 +303,7 @@ static inline float diamond_o1_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 47
+ * Total ops: 46
  */
 static inline float diamond_o1_offsetf(float x, float y, float z, float h)
 {
@@ -324,11 +328,11 @@ static inline float diamond_o1_offsetf(float x, float y, float z, float h)
     const float _t18 = _t13 + _t16 - _t15 - _t14;
     const float _t19 = _t13 + _t15 - _t14 - _t16;
     const float _t20 = sqrtf(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    return _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.28318548f * h * ((fabsf(_t20) <= 1.73205256f) ? _t20 : ((_t20 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    return _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.28318548f * h * ((_t20 <= 1.73205256f) ? (((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f)) : 1.73205256f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 50
+ * Total ops: 49
  */
 static inline float diamond_o1_shellf(float x, float y, float z, float t)
 {
@@ -353,13 +357,13 @@ static inline float diamond_o1_shellf(float x, float y, float z, float t)
     const float _t18 = _t7 + _t16 - _t14 - _t11;
     const float _t19 = _t7 + _t14 - _t11 - _t16;
     const float _t20 = sqrtf(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    const float _t21 = ((fabsf(_t20) <= 1.73205256f) ? _t20 : ((_t20 > 0.0f) ? 1.73205256f : (-1.73205256f))) * (6.28318548f * (t * 0.5f));
+    const float _t21 = 6.28318548f * (t * 0.5f) * ((_t20 <= 1.73205256f) ? (((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f)) : 1.73205256f);
     const float _t22 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
     return (_t21 + _t22) * (_t22 - _t21);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 101
+ * Total ops: 104
  */
 static inline void diamond_o1_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -385,32 +389,33 @@ static inline void diamond_o1_normalf(float x, float y, float z, float h, float 
     const float _t19 = _t7 + _t14 - _t11 - _t16;
     const float _t20 = _t17 * _t17 + _t18 * _t18 + _t19 * _t19;
     const float _t21 = sqrtf(_t20);
-    const int _t22 = fabsf(_t21) <= 1.73205256f;
-    const float _t23 = 6.28318548f * h;
-    const float _t24 = _t10 * _t15;
-    const float _t25 = _t13 * _t6;
-    const float _t26 = _t9 * _t6;
-    const float _t27 = _t4 * _t10;
-    const float _t28 = _t24 + _t25 - _t26 - _t27;
-    const float _t29 = _t24 + _t27 - _t26 - _t25;
-    const float _t30 = _t24 + _t26;
-    const float _t31 = _t27 + _t30 + _t25;
-    const float _t32 = 1.0f / _t21;
-    const float _t33 = (_t22) ? _t19 - _t23 * ((_t28 * _t18 + _t29 * _t17 - _t19 * _t31) * _t32) : _t19;
-    const float _t34 = _t30 - _t27 - _t25;
-    const float _t35 = (_t22) ? _t17 - _t23 * (_t32 * (_t19 * _t29 + _t34 * _t18 - _t31 * _t17)) : _t17;
-    const float _t36 = (_t22) ? _t18 - _t23 * (_t32 * (_t34 * _t17 + _t19 * _t28 - _t18 * _t31)) : _t18;
-    const float _t37 = _t33 * _t33 + _t35 * _t35 + _t36 * _t36;
-    const int _t38 = _t37 > 0.0f;
-    const int _t39 = _t37 <= 1.00000002e+30f;
-    const float _t40 = 1.0f / sqrtf(_t37);
-    const float _t41 = (_t20 > 0.0f) ? _t32 : 0.0f;
-    const float _t42 = _t18 * _t41;
-    const float _t43 = _t19 * _t41;
-    const float _t44 = _t41 * _t17;
-    n[0] = (_t38) ? ((_t39) ? _t40 * _t36 : _t42) : _t42;
-    n[1] = (_t38) ? ((_t39) ? _t40 * _t33 : _t43) : _t43;
-    n[2] = (_t38) ? ((_t39) ? _t40 * _t35 : _t44) : _t44;
+    const int _t22 = _t21 <= 1.73205256f;
+    const int _t23 = (-1.73205256f) <= _t21;
+    const float _t24 = 6.28318548f * h;
+    const float _t25 = _t10 * _t15;
+    const float _t26 = _t13 * _t6;
+    const float _t27 = _t9 * _t6;
+    const float _t28 = _t4 * _t10;
+    const float _t29 = _t25 + _t26 - _t27 - _t28;
+    const float _t30 = _t25 + _t28 - _t27 - _t26;
+    const float _t31 = _t25 + _t27;
+    const float _t32 = _t28 + _t31 + _t26;
+    const float _t33 = 1.0f / _t21;
+    const float _t34 = (_t22) ? ((_t23) ? _t19 - _t24 * ((_t29 * _t18 + _t30 * _t17 - _t19 * _t32) * _t33) : _t19) : _t19;
+    const float _t35 = _t31 - _t28 - _t26;
+    const float _t36 = (_t22) ? ((_t23) ? _t17 - _t24 * (_t33 * (_t19 * _t30 + _t35 * _t18 - _t32 * _t17)) : _t17) : _t17;
+    const float _t37 = (_t22) ? ((_t23) ? _t18 - _t24 * (_t33 * (_t35 * _t17 + _t19 * _t29 - _t18 * _t32)) : _t18) : _t18;
+    const float _t38 = _t34 * _t34 + (_t36 * _t36 + _t37 * _t37);
+    const int _t39 = _t38 > 0.0f;
+    const int _t40 = _t38 <= 1.00000002e+30f;
+    const float _t41 = 1.0f / sqrtf(_t38);
+    const float _t42 = (_t20 > 0.0f) ? _t33 : 0.0f;
+    const float _t43 = _t18 * _t42;
+    const float _t44 = _t19 * _t42;
+    const float _t45 = _t42 * _t17;
+    n[0] = (_t39) ? ((_t40) ? _t37 * _t41 : _t43) : _t43;
+    n[1] = (_t39) ? ((_t40) ? _t34 * _t41 : _t44) : _t44;
+    n[2] = (_t39) ? ((_t40) ? _t36 * _t41 : _t45) : _t45;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -536,7 +541,7 @@ static inline void diamond_o1_offset_n(size_t n, const double *x, const double *
         const double _t18 = _t13 + _t16 - _t15 - _t14;
         const double _t19 = _t13 + _t15 - _t14 - _t16;
         const double _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-        out[i] = _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.2831853071795862 * h[i] * ((fabs(_t20) <= 1.7320525396196846) ? _t20 : ((_t20 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        out[i] = _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.2831853071795862 * h[i] * ((_t20 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846)) : 1.7320525396196846);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_o1_offset(x[i], y[i], z[i], h[i]);
@@ -572,7 +577,7 @@ static inline void diamond_o1_shell_n(size_t n, const double *x, const double *y
         const double _t18 = _t7 + _t16 - _t14 - _t11;
         const double _t19 = _t7 + _t14 - _t11 - _t16;
         const double _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-        const double _t21 = ((fabs(_t20) <= 1.7320525396196846) ? _t20 : ((_t20 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * (6.2831853071795862 * (t[i] * 0.5));
+        const double _t21 = 6.2831853071795862 * (t[i] * 0.5) * ((_t20 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846)) : 1.7320525396196846);
         const double _t22 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
         out[i] = (_t21 + _t22) * (_t22 - _t21);
     }
@@ -610,7 +615,7 @@ static inline void diamond_o1_offsetf_n(size_t n, const float *x, const float *y
         const float _t18 = _t13 + _t16 - _t15 - _t14;
         const float _t19 = _t13 + _t15 - _t14 - _t16;
         const float _t20 = sqrtf(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-        out[i] = _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.28318548f * h[i] * ((fabsf(_t20) <= 1.73205256f) ? _t20 : ((_t20 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        out[i] = _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.28318548f * h[i] * ((_t20 <= 1.73205256f) ? (((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f)) : 1.73205256f);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_o1_offsetf(x[i], y[i], z[i], h[i]);
@@ -646,7 +651,7 @@ static inline void diamond_o1_shellf_n(size_t n, const float *x, const float *y,
         const float _t18 = _t7 + _t16 - _t14 - _t11;
         const float _t19 = _t7 + _t14 - _t11 - _t16;
         const float _t20 = sqrtf(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-        const float _t21 = ((fabsf(_t20) <= 1.73205256f) ? _t20 : ((_t20 > 0.0f) ? 1.73205256f : (-1.73205256f))) * (6.28318548f * (t[i] * 0.5f));
+        const float _t21 = 6.28318548f * (t[i] * 0.5f) * ((_t20 <= 1.73205256f) ? (((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f)) : 1.73205256f);
         const float _t22 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
         out[i] = (_t21 + _t22) * (_t22 - _t21);
     }

@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^3) of the exact offset; relative thickness error ~ (h/L)^2.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: diamond_o2_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 2.000002 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 20
-    - offset: 87
-    - shell: 105
-    - normal: 211
+    - offset: 95
+    - shell: 112
+    - normal: 235
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":87,"shell":105,"normal":211}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":95,"shell":112,"normal":235}} */
 #ifndef OFFSETGEN_DIAMOND_O2_GLSL
 #define OFFSETGEN_DIAMOND_O2_GLSL
 
@@ -53,7 +54,7 @@ highp float diamond_o2_field(highp vec3 p)
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 87.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 95.
 highp float diamond_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -85,17 +86,23 @@ highp float diamond_o2_offset(highp vec3 p, highp float h)
     highp float _t26 = _t11 + _t7 - _t14 - _t17;
     highp float _t27 = _t21 + _t24 - _t23 - _t22;
     highp float _t28 = _t21 + _t23 - _t24 - _t22;
-    highp float _t29 = 1.0 / sqrt(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
-    highp float _t30 = _t19 * 0.5;
-    highp float _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
-    highp float _t32 = _t15 - _t7 - _t17;
-    highp float _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
-    highp float _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
-    highp float _t35 = sqrt(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
-    return _t18 - _t19 * ((abs(_t35) <= 1.73205256) ? _t35 : ((_t35 > 0.0) ? 1.73205256 : (-1.73205256)));
+    highp float _t29 = sqrt(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+    highp float _t30 = 1.0 / _t29;
+    highp float _t31 = _t19 * 0.5;
+    highp float _t32 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t30 * _t31 - _t28;
+    highp float _t33 = _t15 - _t7 - _t17;
+    highp float _t34 = _t30 * (_t28 * _t26 + _t33 * _t25 - _t18 * _t27) * _t31 - _t27;
+    highp float _t35 = _t25 - _t30 * (_t33 * _t27 + _t28 * _t20 - _t25 * _t18) * _t31;
+    highp float _t36 = sqrt(_t32 * _t32 + _t34 * _t34 + _t35 * _t35);
+    highp float _t37 = abs(_t19);
+    highp float _t38 = _t29 + _t37 * 1.00000095;
+    highp float _t39 = (_t38 <= 1.73205256) ? _t38 : 1.73205256;
+    highp float _t40 = _t29 - _t37 * 3.0000031;
+    highp float _t41 = ((-1.73205256) <= _t40) ? _t40 : (-1.73205256);
+    return _t18 - _t19 * ((_t36 <= _t39) ? ((_t41 <= _t36) ? _t36 : _t41) : _t39);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 105.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 112.
 highp float diamond_o2_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -104,47 +111,53 @@ highp float diamond_o2_shell(highp vec3 p, highp float t)
     highp float _t3 = cos(_t2);
     highp float _t4 = _t1 * _t3;
     highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = sin(_t5);
+    highp float _t6 = cos(_t5);
     highp float _t7 = _t4 * _t6;
     highp float _t8 = sin(_t0);
-    highp float _t9 = sin(_t2);
-    highp float _t10 = _t8 * _t9;
-    highp float _t11 = _t6 * _t10;
-    highp float _t12 = _t1 * _t9;
-    highp float _t13 = cos(_t5);
-    highp float _t14 = _t12 * _t13;
-    highp float _t15 = _t11 + _t14;
-    highp float _t16 = _t8 * _t3;
-    highp float _t17 = _t16 * _t13;
-    highp float _t18 = _t7 + _t15 + _t17;
-    highp float _t19 = _t4 * _t13;
-    highp float _t20 = _t16 * _t6;
-    highp float _t21 = _t12 * _t6;
-    highp float _t22 = _t13 * _t10;
-    highp float _t23 = _t19 + _t20 - _t21 - _t22;
-    highp float _t24 = 6.28318548 * (t * 0.5);
-    highp float _t25 = _t24 * 0.5;
-    highp float _t26 = _t11 + _t17 - _t14 - _t7;
-    highp float _t27 = _t19 + _t22 - _t20 - _t21;
-    highp float _t28 = _t11 + _t7 - _t14 - _t17;
-    highp float _t29 = _t19 + _t21 - _t20 - _t22;
-    highp float _t30 = 1.0 / sqrt(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
-    highp float _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
-    highp float _t32 = _t23 + _t31;
-    highp float _t33 = _t15 - _t7 - _t17;
-    highp float _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
-    highp float _t35 = _t34 + _t27;
-    highp float _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
-    highp float _t37 = _t36 + _t29;
-    highp float _t38 = sqrt(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-    highp float _t39 = _t34 - _t27;
-    highp float _t40 = _t23 - _t31;
-    highp float _t41 = _t36 - _t29;
-    highp float _t42 = sqrt(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-    return (_t18 + ((abs(_t38) <= 1.73205256) ? _t38 : ((_t38 > 0.0) ? 1.73205256 : (-1.73205256))) * _t24) * (_t18 - ((abs(_t42) <= 1.73205256) ? _t42 : ((_t42 > 0.0) ? 1.73205256 : (-1.73205256))) * _t24);
+    highp float _t9 = _t8 * _t3;
+    highp float _t10 = sin(_t5);
+    highp float _t11 = _t9 * _t10;
+    highp float _t12 = sin(_t2);
+    highp float _t13 = _t1 * _t12;
+    highp float _t14 = _t13 * _t10;
+    highp float _t15 = _t8 * _t12;
+    highp float _t16 = _t6 * _t15;
+    highp float _t17 = _t7 + _t11 - _t14 - _t16;
+    highp float _t18 = 6.28318548 * (t * 0.5);
+    highp float _t19 = _t18 * 0.5;
+    highp float _t20 = _t10 * _t15;
+    highp float _t21 = _t9 * _t6;
+    highp float _t22 = _t13 * _t6;
+    highp float _t23 = _t4 * _t10;
+    highp float _t24 = _t20 + _t21 - _t22 - _t23;
+    highp float _t25 = _t7 + _t16 - _t11 - _t14;
+    highp float _t26 = _t20 + _t23 - _t22 - _t21;
+    highp float _t27 = _t7 + _t14 - _t11 - _t16;
+    highp float _t28 = _t20 + _t22;
+    highp float _t29 = _t23 + _t28 + _t21;
+    highp float _t30 = sqrt(_t27 * _t27 + _t25 * _t25 + _t17 * _t17);
+    highp float _t31 = 1.0 / _t30;
+    highp float _t32 = _t19 * ((_t24 * _t25 + _t26 * _t27 - _t17 * _t29) * _t31);
+    highp float _t33 = _t17 + _t32;
+    highp float _t34 = _t28 - _t23 - _t21;
+    highp float _t35 = _t19 * (_t31 * (_t34 * _t27 + _t17 * _t24 - _t25 * _t29));
+    highp float _t36 = _t35 + _t25;
+    highp float _t37 = _t31 * (_t17 * _t26 + _t34 * _t25 - _t29 * _t27) * _t19;
+    highp float _t38 = _t37 + _t27;
+    highp float _t39 = sqrt(_t33 * _t33 + _t36 * _t36 + _t38 * _t38);
+    highp float _t40 = abs(_t18);
+    highp float _t41 = _t30 + _t40 * 1.00000095;
+    highp float _t42 = (_t41 <= 1.73205256) ? _t41 : 1.73205256;
+    highp float _t43 = _t30 - 3.0000031 * _t40;
+    highp float _t44 = ((-1.73205256) <= _t43) ? _t43 : (-1.73205256);
+    highp float _t45 = _t35 - _t25;
+    highp float _t46 = _t17 - _t32;
+    highp float _t47 = _t37 - _t27;
+    highp float _t48 = sqrt(_t45 * _t45 + _t46 * _t46 + _t47 * _t47);
+    return (((_t39 <= _t42) ? ((_t44 <= _t39) ? _t39 : _t44) : _t42) * _t18 + _t29) * (_t29 - _t18 * ((_t48 <= _t42) ? ((_t44 <= _t48) ? _t48 : _t44) : _t42));
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 211.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 235.
 highp vec3 diamond_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.x;
@@ -180,45 +193,55 @@ highp vec3 diamond_o2_normal(highp vec3 p, highp float h)
     highp float _t30 = _t22 * _t22;
     highp float _t31 = _t26 * _t26;
     highp float _t32 = _t29 + _t30 + _t31;
-    highp float _t33 = 1.0 / sqrt(_t32);
-    highp float _t34 = (_t17 * _t22 + _t23 * _t24 - _t26 * _t28) * _t33;
-    highp float _t35 = 6.28318548 * h;
-    highp float _t36 = _t35 * 0.5;
-    highp float _t37 = _t34 * _t36 - _t26;
-    highp float _t38 = _t27 - _t16 - _t11;
-    highp float _t39 = _t33 * (_t26 * _t23 + _t38 * _t22 - _t28 * _t24);
-    highp float _t40 = _t39 * _t36 - _t24;
-    highp float _t41 = _t33 * (_t38 * _t24 + _t26 * _t17 - _t22 * _t28);
-    highp float _t42 = _t22 - _t41 * _t36;
-    highp float _t43 = sqrt(_t37 * _t37 + _t40 * _t40 + _t42 * _t42);
-    bool _t44 = abs(_t43) <= 1.73205256;
-    highp float _t45 = 1.0 / _t43;
-    highp float _t46 = _t38 * _t38;
-    highp float _t47 = _t28 * _t28;
-    highp float _t48 = _t23 * _t23;
-    highp float _t49 = _t22 * _t24;
-    highp float _t50 = _t38 * _t28;
-    highp float _t51 = _t21 + _t25 + _t19;
-    highp float _t52 = _t38 + (_t49 + (_t50 + _t50 + _t49) - _t26 * _t51 - _t17 * _t23 + _t39 * _t41) * _t33 * _t36;
-    highp float _t53 = _t26 * _t24;
-    highp float _t54 = _t23 * _t28;
-    highp float _t55 = _t33 * (_t39 * _t34 + (_t53 + _t53 + _t54 + _t54 - _t22 * _t51 - _t38 * _t17)) * _t36 + _t23;
-    highp float _t56 = (_t44) ? _t24 - _t35 * (_t45 * ((_t28 - _t33 * (_t39 * _t39 - (_t46 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t40 + _t42 * _t52 - _t55 * _t37)) : _t24;
-    highp float _t57 = _t26 * _t22;
-    highp float _t58 = _t17 * _t28;
-    highp float _t59 = _t33 * (_t38 * _t23 + _t51 * _t24 - _t57 - _t57 - _t58 - _t58 - _t41 * _t34) * _t36 - _t17;
+    highp float _t33 = sqrt(_t32);
+    highp float _t34 = 1.0 / _t33;
+    highp float _t35 = (_t17 * _t22 + _t23 * _t24 - _t26 * _t28) * _t34;
+    highp float _t36 = 6.28318548 * h;
+    highp float _t37 = _t36 * 0.5;
+    highp float _t38 = _t35 * _t37 - _t26;
+    highp float _t39 = _t27 - _t16 - _t11;
+    highp float _t40 = _t34 * (_t26 * _t23 + _t39 * _t22 - _t28 * _t24);
+    highp float _t41 = _t40 * _t37 - _t24;
+    highp float _t42 = _t34 * (_t39 * _t24 + _t26 * _t17 - _t22 * _t28);
+    highp float _t43 = _t22 - _t42 * _t37;
+    highp float _t44 = sqrt(_t38 * _t38 + _t41 * _t41 + _t43 * _t43);
+    highp float _t45 = abs(_t36);
+    highp float _t46 = _t33 + _t45 * 1.00000095;
+    bool _t47 = _t46 <= 1.73205256;
+    bool _t48 = _t44 <= ((_t47) ? _t46 : 1.73205256);
+    highp float _t49 = _t33 - _t45 * 3.0000031;
+    bool _t50 = (-1.73205256) <= _t49;
+    bool _t51 = ((_t50) ? _t49 : (-1.73205256)) <= _t44;
+    highp float _t52 = 1.0 / _t44;
+    highp float _t53 = _t21 + _t25 + _t19;
+    highp float _t54 = _t26 * _t22;
+    highp float _t55 = _t17 * _t28;
+    highp float _t56 = _t34 * (_t39 * _t23 + _t53 * _t24 - _t54 - _t54 - _t55 - _t55 - _t42 * _t35) * _t37 - _t17;
+    highp float _t57 = _t26 * _t24;
+    highp float _t58 = _t23 * _t28;
+    highp float _t59 = _t34 * (_t40 * _t35 + (_t57 + _t57 + _t58 + _t58 - _t22 * _t53 - _t39 * _t17)) * _t37 + _t23;
     highp float _t60 = _t17 * _t17;
-    highp float _t61 = (_t44) ? _t35 * (_t45 * (_t42 * _t59 + _t40 * _t55 - (_t28 - _t33 * (_t34 * _t34 - (_t60 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t37)) + _t26 : _t26;
-    highp float _t62 = (_t44) ? _t35 * (_t45 * (_t40 * _t52 - (_t36 * (_t33 * (_t41 * _t41 - (_t47 + (_t46 + _t60) - _t29 - _t30 - _t31))) - _t28) * _t42 - _t59 * _t37)) + _t22 : _t22;
-    highp float _t63 = _t56 * _t56 + (_t61 * _t61 + _t62 * _t62);
-    bool _t64 = _t63 > 0.0;
-    bool _t65 = _t63 <= 1.00000002e+30;
-    highp float _t66 = 1.0 / sqrt(_t63);
-    highp float _t67 = (_t32 > 0.0) ? _t33 : 0.0;
-    highp float _t68 = _t22 * _t67;
-    highp float _t69 = _t26 * _t67;
-    highp float _t70 = _t67 * _t24;
-    return vec3((_t64) ? ((_t65) ? _t62 * _t66 : _t68) : _t68, (_t64) ? ((_t65) ? _t61 * _t66 : _t69) : _t69, (_t64) ? ((_t65) ? _t56 * _t66 : _t70) : _t70);
+    highp float _t61 = _t28 * _t28;
+    highp float _t62 = _t23 * _t23;
+    highp float _t63 = _t26 - _t36 * _t35;
+    highp float _t64 = (_t48) ? ((_t51) ? _t36 * (_t52 * (_t43 * _t56 + _t41 * _t59 - (_t28 - _t34 * (_t35 * _t35 - (_t60 + _t61 + _t62 - _t29 - _t30 - _t31)) * _t37) * _t38)) + _t26 : ((_t50) ? _t63 : _t26)) : ((_t47) ? _t63 : _t26);
+    highp float _t65 = _t22 * _t24;
+    highp float _t66 = _t39 * _t28;
+    highp float _t67 = _t39 + (_t65 + (_t66 + _t66 + _t65) - _t26 * _t53 - _t17 * _t23 + _t40 * _t42) * _t34 * _t37;
+    highp float _t68 = _t39 * _t39;
+    highp float _t69 = _t22 - _t36 * _t42;
+    highp float _t70 = (_t48) ? ((_t51) ? _t36 * (_t52 * (_t41 * _t67 - (_t37 * (_t34 * (_t42 * _t42 - (_t61 + (_t68 + _t60) - _t29 - _t30 - _t31))) - _t28) * _t43 - _t56 * _t38)) + _t22 : ((_t50) ? _t69 : _t22)) : ((_t47) ? _t69 : _t22);
+    highp float _t71 = _t24 - _t36 * _t40;
+    highp float _t72 = (_t48) ? ((_t51) ? _t24 - _t36 * (_t52 * ((_t28 - _t34 * (_t40 * _t40 - (_t68 + _t61 + _t62 - _t29 - _t30 - _t31)) * _t37) * _t41 + _t43 * _t67 - _t59 * _t38)) : ((_t50) ? _t71 : _t24)) : ((_t47) ? _t71 : _t24);
+    highp float _t73 = _t64 * _t64 + _t70 * _t70 + _t72 * _t72;
+    bool _t74 = _t73 > 0.0;
+    bool _t75 = _t73 <= 1.00000002e+30;
+    highp float _t76 = 1.0 / sqrt(_t73);
+    highp float _t77 = (_t32 > 0.0) ? _t34 : 0.0;
+    highp float _t78 = _t22 * _t77;
+    highp float _t79 = _t26 * _t77;
+    highp float _t80 = _t77 * _t24;
+    return vec3((_t74) ? ((_t75) ? _t70 * _t76 : _t78) : _t78, (_t74) ? ((_t75) ? _t64 * _t76 : _t79) : _t79, (_t74) ? ((_t75) ? _t72 * _t76 : _t80) : _t80);
 }
 
 

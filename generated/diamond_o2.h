@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to diamond_o2_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 1.7320525396196846 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
+ *   and H = 2.0000020000000061 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    20
- *   offset   87
- *   shell    105
- *   normal   211
+ *   offset   95
+ *   shell    112
+ *   normal   235
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":87,"shell":105,"normal":211}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":95,"shell":112,"normal":235}} */
 #ifndef OFFSETGEN_DIAMOND_O2_H
 #define OFFSETGEN_DIAMOND_O2_H
 
@@ -119,7 +122,7 @@ static inline double diamond_o2_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 87
+ * Total ops: 95
  */
 static inline double diamond_o2_offset(double x, double y, double z, double h)
 {
@@ -152,18 +155,24 @@ static inline double diamond_o2_offset(double x, double y, double z, double h)
     const double _t26 = _t11 + _t7 - _t14 - _t17;
     const double _t27 = _t21 + _t24 - _t23 - _t22;
     const double _t28 = _t21 + _t23 - _t24 - _t22;
-    const double _t29 = 1.0 / sqrt(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
-    const double _t30 = _t19 * 0.5;
-    const double _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
-    const double _t32 = _t15 - _t7 - _t17;
-    const double _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
-    const double _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
-    const double _t35 = sqrt(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
-    return _t18 - _t19 * ((fabs(_t35) <= 1.7320525396196846) ? _t35 : ((_t35 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    const double _t29 = sqrt(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+    const double _t30 = 1.0 / _t29;
+    const double _t31 = _t19 * 0.5;
+    const double _t32 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t30 * _t31 - _t28;
+    const double _t33 = _t15 - _t7 - _t17;
+    const double _t34 = _t30 * (_t28 * _t26 + _t33 * _t25 - _t18 * _t27) * _t31 - _t27;
+    const double _t35 = _t25 - _t30 * (_t33 * _t27 + _t28 * _t20 - _t25 * _t18) * _t31;
+    const double _t36 = sqrt(_t32 * _t32 + _t34 * _t34 + _t35 * _t35);
+    const double _t37 = fabs(_t19);
+    const double _t38 = _t29 + _t37 * 1.000001000000003;
+    const double _t39 = (_t38 <= 1.7320525396196846) ? _t38 : 1.7320525396196846;
+    const double _t40 = _t29 - _t37 * 3.0000030000000093;
+    const double _t41 = ((-1.7320525396196846) <= _t40) ? _t40 : (-1.7320525396196846);
+    return _t18 - _t19 * ((_t36 <= _t39) ? ((_t41 <= _t36) ? _t36 : _t41) : _t39);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 105
+ * Total ops: 112
  */
 static inline double diamond_o2_shell(double x, double y, double z, double t)
 {
@@ -173,48 +182,54 @@ static inline double diamond_o2_shell(double x, double y, double z, double t)
     const double _t3 = offsetgen_cos(_t2);
     const double _t4 = _t1 * _t3;
     const double _t5 = 6.2831853071795862 * x;
-    const double _t6 = offsetgen_sin(_t5);
+    const double _t6 = offsetgen_cos(_t5);
     const double _t7 = _t4 * _t6;
     const double _t8 = offsetgen_sin(_t0);
-    const double _t9 = offsetgen_sin(_t2);
-    const double _t10 = _t8 * _t9;
-    const double _t11 = _t6 * _t10;
-    const double _t12 = _t1 * _t9;
-    const double _t13 = offsetgen_cos(_t5);
-    const double _t14 = _t12 * _t13;
-    const double _t15 = _t11 + _t14;
-    const double _t16 = _t8 * _t3;
-    const double _t17 = _t16 * _t13;
-    const double _t18 = _t7 + _t15 + _t17;
-    const double _t19 = _t4 * _t13;
-    const double _t20 = _t16 * _t6;
-    const double _t21 = _t12 * _t6;
-    const double _t22 = _t13 * _t10;
-    const double _t23 = _t19 + _t20 - _t21 - _t22;
-    const double _t24 = 6.2831853071795862 * (t * 0.5);
-    const double _t25 = _t24 * 0.5;
-    const double _t26 = _t11 + _t17 - _t14 - _t7;
-    const double _t27 = _t19 + _t22 - _t20 - _t21;
-    const double _t28 = _t11 + _t7 - _t14 - _t17;
-    const double _t29 = _t19 + _t21 - _t20 - _t22;
-    const double _t30 = 1.0 / sqrt(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
-    const double _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
-    const double _t32 = _t23 + _t31;
-    const double _t33 = _t15 - _t7 - _t17;
-    const double _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
-    const double _t35 = _t34 + _t27;
-    const double _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
-    const double _t37 = _t36 + _t29;
-    const double _t38 = sqrt(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-    const double _t39 = _t34 - _t27;
-    const double _t40 = _t23 - _t31;
-    const double _t41 = _t36 - _t29;
-    const double _t42 = sqrt(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-    return (_t18 + ((fabs(_t38) <= 1.7320525396196846) ? _t38 : ((_t38 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t24) * (_t18 - ((fabs(_t42) <= 1.7320525396196846) ? _t42 : ((_t42 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t24);
+    const double _t9 = _t8 * _t3;
+    const double _t10 = offsetgen_sin(_t5);
+    const double _t11 = _t9 * _t10;
+    const double _t12 = offsetgen_sin(_t2);
+    const double _t13 = _t1 * _t12;
+    const double _t14 = _t13 * _t10;
+    const double _t15 = _t8 * _t12;
+    const double _t16 = _t6 * _t15;
+    const double _t17 = _t7 + _t11 - _t14 - _t16;
+    const double _t18 = 6.2831853071795862 * (t * 0.5);
+    const double _t19 = _t18 * 0.5;
+    const double _t20 = _t10 * _t15;
+    const double _t21 = _t9 * _t6;
+    const double _t22 = _t13 * _t6;
+    const double _t23 = _t4 * _t10;
+    const double _t24 = _t20 + _t21 - _t22 - _t23;
+    const double _t25 = _t7 + _t16 - _t11 - _t14;
+    const double _t26 = _t20 + _t23 - _t22 - _t21;
+    const double _t27 = _t7 + _t14 - _t11 - _t16;
+    const double _t28 = _t20 + _t22;
+    const double _t29 = _t23 + _t28 + _t21;
+    const double _t30 = sqrt(_t27 * _t27 + _t25 * _t25 + _t17 * _t17);
+    const double _t31 = 1.0 / _t30;
+    const double _t32 = _t19 * ((_t24 * _t25 + _t26 * _t27 - _t17 * _t29) * _t31);
+    const double _t33 = _t17 + _t32;
+    const double _t34 = _t28 - _t23 - _t21;
+    const double _t35 = _t19 * (_t31 * (_t34 * _t27 + _t17 * _t24 - _t25 * _t29));
+    const double _t36 = _t35 + _t25;
+    const double _t37 = _t31 * (_t17 * _t26 + _t34 * _t25 - _t29 * _t27) * _t19;
+    const double _t38 = _t37 + _t27;
+    const double _t39 = sqrt(_t33 * _t33 + _t36 * _t36 + _t38 * _t38);
+    const double _t40 = fabs(_t18);
+    const double _t41 = _t30 + _t40 * 1.000001000000003;
+    const double _t42 = (_t41 <= 1.7320525396196846) ? _t41 : 1.7320525396196846;
+    const double _t43 = _t30 - 3.0000030000000093 * _t40;
+    const double _t44 = ((-1.7320525396196846) <= _t43) ? _t43 : (-1.7320525396196846);
+    const double _t45 = _t35 - _t25;
+    const double _t46 = _t17 - _t32;
+    const double _t47 = _t37 - _t27;
+    const double _t48 = sqrt(_t45 * _t45 + _t46 * _t46 + _t47 * _t47);
+    return (((_t39 <= _t42) ? ((_t44 <= _t39) ? _t39 : _t44) : _t42) * _t18 + _t29) * (_t29 - _t18 * ((_t48 <= _t42) ? ((_t44 <= _t48) ? _t48 : _t44) : _t42));
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 211
+ * Total ops: 235
  */
 static inline void diamond_o2_normal(double x, double y, double z, double h, double n[3])
 {
@@ -251,47 +266,57 @@ static inline void diamond_o2_normal(double x, double y, double z, double h, dou
     const double _t30 = _t22 * _t22;
     const double _t31 = _t26 * _t26;
     const double _t32 = _t29 + _t30 + _t31;
-    const double _t33 = 1.0 / sqrt(_t32);
-    const double _t34 = (_t17 * _t22 + _t23 * _t24 - _t26 * _t28) * _t33;
-    const double _t35 = 6.2831853071795862 * h;
-    const double _t36 = _t35 * 0.5;
-    const double _t37 = _t34 * _t36 - _t26;
-    const double _t38 = _t27 - _t16 - _t11;
-    const double _t39 = _t33 * (_t26 * _t23 + _t38 * _t22 - _t28 * _t24);
-    const double _t40 = _t39 * _t36 - _t24;
-    const double _t41 = _t33 * (_t38 * _t24 + _t26 * _t17 - _t22 * _t28);
-    const double _t42 = _t22 - _t41 * _t36;
-    const double _t43 = sqrt(_t37 * _t37 + _t40 * _t40 + _t42 * _t42);
-    const int _t44 = fabs(_t43) <= 1.7320525396196846;
-    const double _t45 = 1.0 / _t43;
-    const double _t46 = _t38 * _t38;
-    const double _t47 = _t28 * _t28;
-    const double _t48 = _t23 * _t23;
-    const double _t49 = _t22 * _t24;
-    const double _t50 = _t38 * _t28;
-    const double _t51 = _t21 + _t25 + _t19;
-    const double _t52 = _t38 + (_t49 + (_t50 + _t50 + _t49) - _t26 * _t51 - _t17 * _t23 + _t39 * _t41) * _t33 * _t36;
-    const double _t53 = _t26 * _t24;
-    const double _t54 = _t23 * _t28;
-    const double _t55 = _t33 * (_t39 * _t34 + (_t53 + _t53 + _t54 + _t54 - _t22 * _t51 - _t38 * _t17)) * _t36 + _t23;
-    const double _t56 = (_t44) ? _t24 - _t35 * (_t45 * ((_t28 - _t33 * (_t39 * _t39 - (_t46 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t40 + _t42 * _t52 - _t55 * _t37)) : _t24;
-    const double _t57 = _t26 * _t22;
-    const double _t58 = _t17 * _t28;
-    const double _t59 = _t33 * (_t38 * _t23 + _t51 * _t24 - _t57 - _t57 - _t58 - _t58 - _t41 * _t34) * _t36 - _t17;
+    const double _t33 = sqrt(_t32);
+    const double _t34 = 1.0 / _t33;
+    const double _t35 = (_t17 * _t22 + _t23 * _t24 - _t26 * _t28) * _t34;
+    const double _t36 = 6.2831853071795862 * h;
+    const double _t37 = _t36 * 0.5;
+    const double _t38 = _t35 * _t37 - _t26;
+    const double _t39 = _t27 - _t16 - _t11;
+    const double _t40 = _t34 * (_t26 * _t23 + _t39 * _t22 - _t28 * _t24);
+    const double _t41 = _t40 * _t37 - _t24;
+    const double _t42 = _t34 * (_t39 * _t24 + _t26 * _t17 - _t22 * _t28);
+    const double _t43 = _t22 - _t42 * _t37;
+    const double _t44 = sqrt(_t38 * _t38 + _t41 * _t41 + _t43 * _t43);
+    const double _t45 = fabs(_t36);
+    const double _t46 = _t33 + _t45 * 1.000001000000003;
+    const int _t47 = _t46 <= 1.7320525396196846;
+    const int _t48 = _t44 <= ((_t47) ? _t46 : 1.7320525396196846);
+    const double _t49 = _t33 - _t45 * 3.0000030000000093;
+    const int _t50 = (-1.7320525396196846) <= _t49;
+    const int _t51 = ((_t50) ? _t49 : (-1.7320525396196846)) <= _t44;
+    const double _t52 = 1.0 / _t44;
+    const double _t53 = _t21 + _t25 + _t19;
+    const double _t54 = _t26 * _t22;
+    const double _t55 = _t17 * _t28;
+    const double _t56 = _t34 * (_t39 * _t23 + _t53 * _t24 - _t54 - _t54 - _t55 - _t55 - _t42 * _t35) * _t37 - _t17;
+    const double _t57 = _t26 * _t24;
+    const double _t58 = _t23 * _t28;
+    const double _t59 = _t34 * (_t40 * _t35 + (_t57 + _t57 + _t58 + _t58 - _t22 * _t53 - _t39 * _t17)) * _t37 + _t23;
     const double _t60 = _t17 * _t17;
-    const double _t61 = (_t44) ? _t35 * (_t45 * (_t42 * _t59 + _t40 * _t55 - (_t28 - _t33 * (_t34 * _t34 - (_t60 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t37)) + _t26 : _t26;
-    const double _t62 = (_t44) ? _t35 * (_t45 * (_t40 * _t52 - (_t36 * (_t33 * (_t41 * _t41 - (_t47 + (_t46 + _t60) - _t29 - _t30 - _t31))) - _t28) * _t42 - _t59 * _t37)) + _t22 : _t22;
-    const double _t63 = _t56 * _t56 + (_t61 * _t61 + _t62 * _t62);
-    const int _t64 = _t63 > 0.0;
-    const int _t65 = _t63 <= 1.0e+30;
-    const double _t66 = 1.0 / sqrt(_t63);
-    const double _t67 = (_t32 > 0.0) ? _t33 : 0.0;
-    const double _t68 = _t22 * _t67;
-    const double _t69 = _t26 * _t67;
-    const double _t70 = _t67 * _t24;
-    n[0] = (_t64) ? ((_t65) ? _t62 * _t66 : _t68) : _t68;
-    n[1] = (_t64) ? ((_t65) ? _t61 * _t66 : _t69) : _t69;
-    n[2] = (_t64) ? ((_t65) ? _t56 * _t66 : _t70) : _t70;
+    const double _t61 = _t28 * _t28;
+    const double _t62 = _t23 * _t23;
+    const double _t63 = _t26 - _t36 * _t35;
+    const double _t64 = (_t48) ? ((_t51) ? _t36 * (_t52 * (_t43 * _t56 + _t41 * _t59 - (_t28 - _t34 * (_t35 * _t35 - (_t60 + _t61 + _t62 - _t29 - _t30 - _t31)) * _t37) * _t38)) + _t26 : ((_t50) ? _t63 : _t26)) : ((_t47) ? _t63 : _t26);
+    const double _t65 = _t22 * _t24;
+    const double _t66 = _t39 * _t28;
+    const double _t67 = _t39 + (_t65 + (_t66 + _t66 + _t65) - _t26 * _t53 - _t17 * _t23 + _t40 * _t42) * _t34 * _t37;
+    const double _t68 = _t39 * _t39;
+    const double _t69 = _t22 - _t36 * _t42;
+    const double _t70 = (_t48) ? ((_t51) ? _t36 * (_t52 * (_t41 * _t67 - (_t37 * (_t34 * (_t42 * _t42 - (_t61 + (_t68 + _t60) - _t29 - _t30 - _t31))) - _t28) * _t43 - _t56 * _t38)) + _t22 : ((_t50) ? _t69 : _t22)) : ((_t47) ? _t69 : _t22);
+    const double _t71 = _t24 - _t36 * _t40;
+    const double _t72 = (_t48) ? ((_t51) ? _t24 - _t36 * (_t52 * ((_t28 - _t34 * (_t40 * _t40 - (_t68 + _t61 + _t62 - _t29 - _t30 - _t31)) * _t37) * _t41 + _t43 * _t67 - _t59 * _t38)) : ((_t50) ? _t71 : _t24)) : ((_t47) ? _t71 : _t24);
+    const double _t73 = _t64 * _t64 + _t70 * _t70 + _t72 * _t72;
+    const int _t74 = _t73 > 0.0;
+    const int _t75 = _t73 <= 1.0e+30;
+    const double _t76 = 1.0 / sqrt(_t73);
+    const double _t77 = (_t32 > 0.0) ? _t34 : 0.0;
+    const double _t78 = _t22 * _t77;
+    const double _t79 = _t26 * _t77;
+    const double _t80 = _t77 * _t24;
+    n[0] = (_t74) ? ((_t75) ? _t70 * _t76 : _t78) : _t78;
+    n[1] = (_t74) ? ((_t75) ? _t64 * _t76 : _t79) : _t79;
+    n[2] = (_t74) ? ((_t75) ? _t72 * _t76 : _t80) : _t80;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -360,7 +385,7 @@ static inline float diamond_o2_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 87
+ * Total ops: 95
  */
 static inline float diamond_o2_offsetf(float x, float y, float z, float h)
 {
@@ -393,18 +418,24 @@ static inline float diamond_o2_offsetf(float x, float y, float z, float h)
     const float _t26 = _t11 + _t7 - _t14 - _t17;
     const float _t27 = _t21 + _t24 - _t23 - _t22;
     const float _t28 = _t21 + _t23 - _t24 - _t22;
-    const float _t29 = 1.0f / sqrtf(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
-    const float _t30 = _t19 * 0.5f;
-    const float _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
-    const float _t32 = _t15 - _t7 - _t17;
-    const float _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
-    const float _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
-    const float _t35 = sqrtf(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
-    return _t18 - _t19 * ((fabsf(_t35) <= 1.73205256f) ? _t35 : ((_t35 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    const float _t29 = sqrtf(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+    const float _t30 = 1.0f / _t29;
+    const float _t31 = _t19 * 0.5f;
+    const float _t32 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t30 * _t31 - _t28;
+    const float _t33 = _t15 - _t7 - _t17;
+    const float _t34 = _t30 * (_t28 * _t26 + _t33 * _t25 - _t18 * _t27) * _t31 - _t27;
+    const float _t35 = _t25 - _t30 * (_t33 * _t27 + _t28 * _t20 - _t25 * _t18) * _t31;
+    const float _t36 = sqrtf(_t32 * _t32 + _t34 * _t34 + _t35 * _t35);
+    const float _t37 = fabsf(_t19);
+    const float _t38 = _t29 + _t37 * 1.00000095f;
+    const float _t39 = (_t38 <= 1.73205256f) ? _t38 : 1.73205256f;
+    const float _t40 = _t29 - _t37 * 3.0000031f;
+    const float _t41 = ((-1.73205256f) <= _t40) ? _t40 : (-1.73205256f);
+    return _t18 - _t19 * ((_t36 <= _t39) ? ((_t41 <= _t36) ? _t36 : _t41) : _t39);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 105
+ * Total ops: 112
  */
 static inline float diamond_o2_shellf(float x, float y, float z, float t)
 {
@@ -414,48 +445,54 @@ static inline float diamond_o2_shellf(float x, float y, float z, float t)
     const float _t3 = offsetgen_cosf(_t2);
     const float _t4 = _t1 * _t3;
     const float _t5 = 6.28318548f * x;
-    const float _t6 = offsetgen_sinf(_t5);
+    const float _t6 = offsetgen_cosf(_t5);
     const float _t7 = _t4 * _t6;
     const float _t8 = offsetgen_sinf(_t0);
-    const float _t9 = offsetgen_sinf(_t2);
-    const float _t10 = _t8 * _t9;
-    const float _t11 = _t6 * _t10;
-    const float _t12 = _t1 * _t9;
-    const float _t13 = offsetgen_cosf(_t5);
-    const float _t14 = _t12 * _t13;
-    const float _t15 = _t11 + _t14;
-    const float _t16 = _t8 * _t3;
-    const float _t17 = _t16 * _t13;
-    const float _t18 = _t7 + _t15 + _t17;
-    const float _t19 = _t4 * _t13;
-    const float _t20 = _t16 * _t6;
-    const float _t21 = _t12 * _t6;
-    const float _t22 = _t13 * _t10;
-    const float _t23 = _t19 + _t20 - _t21 - _t22;
-    const float _t24 = 6.28318548f * (t * 0.5f);
-    const float _t25 = _t24 * 0.5f;
-    const float _t26 = _t11 + _t17 - _t14 - _t7;
-    const float _t27 = _t19 + _t22 - _t20 - _t21;
-    const float _t28 = _t11 + _t7 - _t14 - _t17;
-    const float _t29 = _t19 + _t21 - _t20 - _t22;
-    const float _t30 = 1.0f / sqrtf(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
-    const float _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
-    const float _t32 = _t23 + _t31;
-    const float _t33 = _t15 - _t7 - _t17;
-    const float _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
-    const float _t35 = _t34 + _t27;
-    const float _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
-    const float _t37 = _t36 + _t29;
-    const float _t38 = sqrtf(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-    const float _t39 = _t34 - _t27;
-    const float _t40 = _t23 - _t31;
-    const float _t41 = _t36 - _t29;
-    const float _t42 = sqrtf(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-    return (_t18 + ((fabsf(_t38) <= 1.73205256f) ? _t38 : ((_t38 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t24) * (_t18 - ((fabsf(_t42) <= 1.73205256f) ? _t42 : ((_t42 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t24);
+    const float _t9 = _t8 * _t3;
+    const float _t10 = offsetgen_sinf(_t5);
+    const float _t11 = _t9 * _t10;
+    const float _t12 = offsetgen_sinf(_t2);
+    const float _t13 = _t1 * _t12;
+    const float _t14 = _t13 * _t10;
+    const float _t15 = _t8 * _t12;
+    const float _t16 = _t6 * _t15;
+    const float _t17 = _t7 + _t11 - _t14 - _t16;
+    const float _t18 = 6.28318548f * (t * 0.5f);
+    const float _t19 = _t18 * 0.5f;
+    const float _t20 = _t10 * _t15;
+    const float _t21 = _t9 * _t6;
+    const float _t22 = _t13 * _t6;
+    const float _t23 = _t4 * _t10;
+    const float _t24 = _t20 + _t21 - _t22 - _t23;
+    const float _t25 = _t7 + _t16 - _t11 - _t14;
+    const float _t26 = _t20 + _t23 - _t22 - _t21;
+    const float _t27 = _t7 + _t14 - _t11 - _t16;
+    const float _t28 = _t20 + _t22;
+    const float _t29 = _t23 + _t28 + _t21;
+    const float _t30 = sqrtf(_t27 * _t27 + _t25 * _t25 + _t17 * _t17);
+    const float _t31 = 1.0f / _t30;
+    const float _t32 = _t19 * ((_t24 * _t25 + _t26 * _t27 - _t17 * _t29) * _t31);
+    const float _t33 = _t17 + _t32;
+    const float _t34 = _t28 - _t23 - _t21;
+    const float _t35 = _t19 * (_t31 * (_t34 * _t27 + _t17 * _t24 - _t25 * _t29));
+    const float _t36 = _t35 + _t25;
+    const float _t37 = _t31 * (_t17 * _t26 + _t34 * _t25 - _t29 * _t27) * _t19;
+    const float _t38 = _t37 + _t27;
+    const float _t39 = sqrtf(_t33 * _t33 + _t36 * _t36 + _t38 * _t38);
+    const float _t40 = fabsf(_t18);
+    const float _t41 = _t30 + _t40 * 1.00000095f;
+    const float _t42 = (_t41 <= 1.73205256f) ? _t41 : 1.73205256f;
+    const float _t43 = _t30 - 3.0000031f * _t40;
+    const float _t44 = ((-1.73205256f) <= _t43) ? _t43 : (-1.73205256f);
+    const float _t45 = _t35 - _t25;
+    const float _t46 = _t17 - _t32;
+    const float _t47 = _t37 - _t27;
+    const float _t48 = sqrtf(_t45 * _t45 + _t46 * _t46 + _t47 * _t47);
+    return (((_t39 <= _t42) ? ((_t44 <= _t39) ? _t39 : _t44) : _t42) * _t18 + _t29) * (_t29 - _t18 * ((_t48 <= _t42) ? ((_t44 <= _t48) ? _t48 : _t44) : _t42));
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 211
+ * Total ops: 235
  */
 static inline void diamond_o2_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -492,47 +529,57 @@ static inline void diamond_o2_normalf(float x, float y, float z, float h, float 
     const float _t30 = _t22 * _t22;
     const float _t31 = _t26 * _t26;
     const float _t32 = _t29 + _t30 + _t31;
-    const float _t33 = 1.0f / sqrtf(_t32);
-    const float _t34 = (_t17 * _t22 + _t23 * _t24 - _t26 * _t28) * _t33;
-    const float _t35 = 6.28318548f * h;
-    const float _t36 = _t35 * 0.5f;
-    const float _t37 = _t34 * _t36 - _t26;
-    const float _t38 = _t27 - _t16 - _t11;
-    const float _t39 = _t33 * (_t26 * _t23 + _t38 * _t22 - _t28 * _t24);
-    const float _t40 = _t39 * _t36 - _t24;
-    const float _t41 = _t33 * (_t38 * _t24 + _t26 * _t17 - _t22 * _t28);
-    const float _t42 = _t22 - _t41 * _t36;
-    const float _t43 = sqrtf(_t37 * _t37 + _t40 * _t40 + _t42 * _t42);
-    const int _t44 = fabsf(_t43) <= 1.73205256f;
-    const float _t45 = 1.0f / _t43;
-    const float _t46 = _t38 * _t38;
-    const float _t47 = _t28 * _t28;
-    const float _t48 = _t23 * _t23;
-    const float _t49 = _t22 * _t24;
-    const float _t50 = _t38 * _t28;
-    const float _t51 = _t21 + _t25 + _t19;
-    const float _t52 = _t38 + (_t49 + (_t50 + _t50 + _t49) - _t26 * _t51 - _t17 * _t23 + _t39 * _t41) * _t33 * _t36;
-    const float _t53 = _t26 * _t24;
-    const float _t54 = _t23 * _t28;
-    const float _t55 = _t33 * (_t39 * _t34 + (_t53 + _t53 + _t54 + _t54 - _t22 * _t51 - _t38 * _t17)) * _t36 + _t23;
-    const float _t56 = (_t44) ? _t24 - _t35 * (_t45 * ((_t28 - _t33 * (_t39 * _t39 - (_t46 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t40 + _t42 * _t52 - _t55 * _t37)) : _t24;
-    const float _t57 = _t26 * _t22;
-    const float _t58 = _t17 * _t28;
-    const float _t59 = _t33 * (_t38 * _t23 + _t51 * _t24 - _t57 - _t57 - _t58 - _t58 - _t41 * _t34) * _t36 - _t17;
+    const float _t33 = sqrtf(_t32);
+    const float _t34 = 1.0f / _t33;
+    const float _t35 = (_t17 * _t22 + _t23 * _t24 - _t26 * _t28) * _t34;
+    const float _t36 = 6.28318548f * h;
+    const float _t37 = _t36 * 0.5f;
+    const float _t38 = _t35 * _t37 - _t26;
+    const float _t39 = _t27 - _t16 - _t11;
+    const float _t40 = _t34 * (_t26 * _t23 + _t39 * _t22 - _t28 * _t24);
+    const float _t41 = _t40 * _t37 - _t24;
+    const float _t42 = _t34 * (_t39 * _t24 + _t26 * _t17 - _t22 * _t28);
+    const float _t43 = _t22 - _t42 * _t37;
+    const float _t44 = sqrtf(_t38 * _t38 + _t41 * _t41 + _t43 * _t43);
+    const float _t45 = fabsf(_t36);
+    const float _t46 = _t33 + _t45 * 1.00000095f;
+    const int _t47 = _t46 <= 1.73205256f;
+    const int _t48 = _t44 <= ((_t47) ? _t46 : 1.73205256f);
+    const float _t49 = _t33 - _t45 * 3.0000031f;
+    const int _t50 = (-1.73205256f) <= _t49;
+    const int _t51 = ((_t50) ? _t49 : (-1.73205256f)) <= _t44;
+    const float _t52 = 1.0f / _t44;
+    const float _t53 = _t21 + _t25 + _t19;
+    const float _t54 = _t26 * _t22;
+    const float _t55 = _t17 * _t28;
+    const float _t56 = _t34 * (_t39 * _t23 + _t53 * _t24 - _t54 - _t54 - _t55 - _t55 - _t42 * _t35) * _t37 - _t17;
+    const float _t57 = _t26 * _t24;
+    const float _t58 = _t23 * _t28;
+    const float _t59 = _t34 * (_t40 * _t35 + (_t57 + _t57 + _t58 + _t58 - _t22 * _t53 - _t39 * _t17)) * _t37 + _t23;
     const float _t60 = _t17 * _t17;
-    const float _t61 = (_t44) ? _t35 * (_t45 * (_t42 * _t59 + _t40 * _t55 - (_t28 - _t33 * (_t34 * _t34 - (_t60 + _t47 + _t48 - _t29 - _t30 - _t31)) * _t36) * _t37)) + _t26 : _t26;
-    const float _t62 = (_t44) ? _t35 * (_t45 * (_t40 * _t52 - (_t36 * (_t33 * (_t41 * _t41 - (_t47 + (_t46 + _t60) - _t29 - _t30 - _t31))) - _t28) * _t42 - _t59 * _t37)) + _t22 : _t22;
-    const float _t63 = _t56 * _t56 + (_t61 * _t61 + _t62 * _t62);
-    const int _t64 = _t63 > 0.0f;
-    const int _t65 = _t63 <= 1.00000002e+30f;
-    const float _t66 = 1.0f / sqrtf(_t63);
-    const float _t67 = (_t32 > 0.0f) ? _t33 : 0.0f;
-    const float _t68 = _t22 * _t67;
-    const float _t69 = _t26 * _t67;
-    const float _t70 = _t67 * _t24;
-    n[0] = (_t64) ? ((_t65) ? _t62 * _t66 : _t68) : _t68;
-    n[1] = (_t64) ? ((_t65) ? _t61 * _t66 : _t69) : _t69;
-    n[2] = (_t64) ? ((_t65) ? _t56 * _t66 : _t70) : _t70;
+    const float _t61 = _t28 * _t28;
+    const float _t62 = _t23 * _t23;
+    const float _t63 = _t26 - _t36 * _t35;
+    const float _t64 = (_t48) ? ((_t51) ? _t36 * (_t52 * (_t43 * _t56 + _t41 * _t59 - (_t28 - _t34 * (_t35 * _t35 - (_t60 + _t61 + _t62 - _t29 - _t30 - _t31)) * _t37) * _t38)) + _t26 : ((_t50) ? _t63 : _t26)) : ((_t47) ? _t63 : _t26);
+    const float _t65 = _t22 * _t24;
+    const float _t66 = _t39 * _t28;
+    const float _t67 = _t39 + (_t65 + (_t66 + _t66 + _t65) - _t26 * _t53 - _t17 * _t23 + _t40 * _t42) * _t34 * _t37;
+    const float _t68 = _t39 * _t39;
+    const float _t69 = _t22 - _t36 * _t42;
+    const float _t70 = (_t48) ? ((_t51) ? _t36 * (_t52 * (_t41 * _t67 - (_t37 * (_t34 * (_t42 * _t42 - (_t61 + (_t68 + _t60) - _t29 - _t30 - _t31))) - _t28) * _t43 - _t56 * _t38)) + _t22 : ((_t50) ? _t69 : _t22)) : ((_t47) ? _t69 : _t22);
+    const float _t71 = _t24 - _t36 * _t40;
+    const float _t72 = (_t48) ? ((_t51) ? _t24 - _t36 * (_t52 * ((_t28 - _t34 * (_t40 * _t40 - (_t68 + _t61 + _t62 - _t29 - _t30 - _t31)) * _t37) * _t41 + _t43 * _t67 - _t59 * _t38)) : ((_t50) ? _t71 : _t24)) : ((_t47) ? _t71 : _t24);
+    const float _t73 = _t64 * _t64 + _t70 * _t70 + _t72 * _t72;
+    const int _t74 = _t73 > 0.0f;
+    const int _t75 = _t73 <= 1.00000002e+30f;
+    const float _t76 = 1.0f / sqrtf(_t73);
+    const float _t77 = (_t32 > 0.0f) ? _t34 : 0.0f;
+    const float _t78 = _t22 * _t77;
+    const float _t79 = _t26 * _t77;
+    const float _t80 = _t77 * _t24;
+    n[0] = (_t74) ? ((_t75) ? _t70 * _t76 : _t78) : _t78;
+    n[1] = (_t74) ? ((_t75) ? _t64 * _t76 : _t79) : _t79;
+    n[2] = (_t74) ? ((_t75) ? _t72 * _t76 : _t80) : _t80;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -666,14 +713,20 @@ static inline void diamond_o2_offset_n(size_t n, const double *x, const double *
         const double _t26 = _t11 + _t7 - _t14 - _t17;
         const double _t27 = _t21 + _t24 - _t23 - _t22;
         const double _t28 = _t21 + _t23 - _t24 - _t22;
-        const double _t29 = 1.0 / sqrt(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
-        const double _t30 = _t19 * 0.5;
-        const double _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
-        const double _t32 = _t15 - _t7 - _t17;
-        const double _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
-        const double _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
-        const double _t35 = sqrt(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
-        out[i] = _t18 - _t19 * ((fabs(_t35) <= 1.7320525396196846) ? _t35 : ((_t35 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        const double _t29 = sqrt(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+        const double _t30 = 1.0 / _t29;
+        const double _t31 = _t19 * 0.5;
+        const double _t32 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t30 * _t31 - _t28;
+        const double _t33 = _t15 - _t7 - _t17;
+        const double _t34 = _t30 * (_t28 * _t26 + _t33 * _t25 - _t18 * _t27) * _t31 - _t27;
+        const double _t35 = _t25 - _t30 * (_t33 * _t27 + _t28 * _t20 - _t25 * _t18) * _t31;
+        const double _t36 = sqrt(_t32 * _t32 + _t34 * _t34 + _t35 * _t35);
+        const double _t37 = fabs(_t19);
+        const double _t38 = _t29 + _t37 * 1.000001000000003;
+        const double _t39 = (_t38 <= 1.7320525396196846) ? _t38 : 1.7320525396196846;
+        const double _t40 = _t29 - _t37 * 3.0000030000000093;
+        const double _t41 = ((-1.7320525396196846) <= _t40) ? _t40 : (-1.7320525396196846);
+        out[i] = _t18 - _t19 * ((_t36 <= _t39) ? ((_t41 <= _t36) ? _t36 : _t41) : _t39);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_o2_offset(x[i], y[i], z[i], h[i]);
@@ -694,44 +747,50 @@ static inline void diamond_o2_shell_n(size_t n, const double *x, const double *y
         const double _t3 = offsetgen_batch_cos(_t2);
         const double _t4 = _t1 * _t3;
         const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_sin(_t5);
+        const double _t6 = offsetgen_batch_cos(_t5);
         const double _t7 = _t4 * _t6;
         const double _t8 = offsetgen_batch_sin(_t0);
-        const double _t9 = offsetgen_batch_sin(_t2);
-        const double _t10 = _t8 * _t9;
-        const double _t11 = _t6 * _t10;
-        const double _t12 = _t1 * _t9;
-        const double _t13 = offsetgen_batch_cos(_t5);
-        const double _t14 = _t12 * _t13;
-        const double _t15 = _t11 + _t14;
-        const double _t16 = _t8 * _t3;
-        const double _t17 = _t16 * _t13;
-        const double _t18 = _t7 + _t15 + _t17;
-        const double _t19 = _t4 * _t13;
-        const double _t20 = _t16 * _t6;
-        const double _t21 = _t12 * _t6;
-        const double _t22 = _t13 * _t10;
-        const double _t23 = _t19 + _t20 - _t21 - _t22;
-        const double _t24 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t25 = _t24 * 0.5;
-        const double _t26 = _t11 + _t17 - _t14 - _t7;
-        const double _t27 = _t19 + _t22 - _t20 - _t21;
-        const double _t28 = _t11 + _t7 - _t14 - _t17;
-        const double _t29 = _t19 + _t21 - _t20 - _t22;
-        const double _t30 = 1.0 / sqrt(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
-        const double _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
-        const double _t32 = _t23 + _t31;
-        const double _t33 = _t15 - _t7 - _t17;
-        const double _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
-        const double _t35 = _t34 + _t27;
-        const double _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
-        const double _t37 = _t36 + _t29;
-        const double _t38 = sqrt(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-        const double _t39 = _t34 - _t27;
-        const double _t40 = _t23 - _t31;
-        const double _t41 = _t36 - _t29;
-        const double _t42 = sqrt(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-        out[i] = (_t18 + ((fabs(_t38) <= 1.7320525396196846) ? _t38 : ((_t38 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t24) * (_t18 - ((fabs(_t42) <= 1.7320525396196846) ? _t42 : ((_t42 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t24);
+        const double _t9 = _t8 * _t3;
+        const double _t10 = offsetgen_batch_sin(_t5);
+        const double _t11 = _t9 * _t10;
+        const double _t12 = offsetgen_batch_sin(_t2);
+        const double _t13 = _t1 * _t12;
+        const double _t14 = _t13 * _t10;
+        const double _t15 = _t8 * _t12;
+        const double _t16 = _t6 * _t15;
+        const double _t17 = _t7 + _t11 - _t14 - _t16;
+        const double _t18 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t19 = _t18 * 0.5;
+        const double _t20 = _t10 * _t15;
+        const double _t21 = _t9 * _t6;
+        const double _t22 = _t13 * _t6;
+        const double _t23 = _t4 * _t10;
+        const double _t24 = _t20 + _t21 - _t22 - _t23;
+        const double _t25 = _t7 + _t16 - _t11 - _t14;
+        const double _t26 = _t20 + _t23 - _t22 - _t21;
+        const double _t27 = _t7 + _t14 - _t11 - _t16;
+        const double _t28 = _t20 + _t22;
+        const double _t29 = _t23 + _t28 + _t21;
+        const double _t30 = sqrt(_t27 * _t27 + _t25 * _t25 + _t17 * _t17);
+        const double _t31 = 1.0 / _t30;
+        const double _t32 = _t19 * ((_t24 * _t25 + _t26 * _t27 - _t17 * _t29) * _t31);
+        const double _t33 = _t17 + _t32;
+        const double _t34 = _t28 - _t23 - _t21;
+        const double _t35 = _t19 * (_t31 * (_t34 * _t27 + _t17 * _t24 - _t25 * _t29));
+        const double _t36 = _t35 + _t25;
+        const double _t37 = _t31 * (_t17 * _t26 + _t34 * _t25 - _t29 * _t27) * _t19;
+        const double _t38 = _t37 + _t27;
+        const double _t39 = sqrt(_t33 * _t33 + _t36 * _t36 + _t38 * _t38);
+        const double _t40 = fabs(_t18);
+        const double _t41 = _t30 + _t40 * 1.000001000000003;
+        const double _t42 = (_t41 <= 1.7320525396196846) ? _t41 : 1.7320525396196846;
+        const double _t43 = _t30 - 3.0000030000000093 * _t40;
+        const double _t44 = ((-1.7320525396196846) <= _t43) ? _t43 : (-1.7320525396196846);
+        const double _t45 = _t35 - _t25;
+        const double _t46 = _t17 - _t32;
+        const double _t47 = _t37 - _t27;
+        const double _t48 = sqrt(_t45 * _t45 + _t46 * _t46 + _t47 * _t47);
+        out[i] = (((_t39 <= _t42) ? ((_t44 <= _t39) ? _t39 : _t44) : _t42) * _t18 + _t29) * (_t29 - _t18 * ((_t48 <= _t42) ? ((_t44 <= _t48) ? _t48 : _t44) : _t42));
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_o2_shell(x[i], y[i], z[i], t[i]);
@@ -775,14 +834,20 @@ static inline void diamond_o2_offsetf_n(size_t n, const float *x, const float *y
         const float _t26 = _t11 + _t7 - _t14 - _t17;
         const float _t27 = _t21 + _t24 - _t23 - _t22;
         const float _t28 = _t21 + _t23 - _t24 - _t22;
-        const float _t29 = 1.0f / sqrtf(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
-        const float _t30 = _t19 * 0.5f;
-        const float _t31 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t29 * _t30 - _t28;
-        const float _t32 = _t15 - _t7 - _t17;
-        const float _t33 = _t29 * (_t28 * _t26 + _t32 * _t25 - _t18 * _t27) * _t30 - _t27;
-        const float _t34 = _t25 - _t29 * (_t32 * _t27 + _t28 * _t20 - _t25 * _t18) * _t30;
-        const float _t35 = sqrtf(_t31 * _t31 + _t33 * _t33 + _t34 * _t34);
-        out[i] = _t18 - _t19 * ((fabsf(_t35) <= 1.73205256f) ? _t35 : ((_t35 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        const float _t29 = sqrtf(_t27 * _t27 + _t25 * _t25 + _t28 * _t28);
+        const float _t30 = 1.0f / _t29;
+        const float _t31 = _t19 * 0.5f;
+        const float _t32 = (_t20 * _t25 + _t26 * _t27 - _t28 * _t18) * _t30 * _t31 - _t28;
+        const float _t33 = _t15 - _t7 - _t17;
+        const float _t34 = _t30 * (_t28 * _t26 + _t33 * _t25 - _t18 * _t27) * _t31 - _t27;
+        const float _t35 = _t25 - _t30 * (_t33 * _t27 + _t28 * _t20 - _t25 * _t18) * _t31;
+        const float _t36 = sqrtf(_t32 * _t32 + _t34 * _t34 + _t35 * _t35);
+        const float _t37 = fabsf(_t19);
+        const float _t38 = _t29 + _t37 * 1.00000095f;
+        const float _t39 = (_t38 <= 1.73205256f) ? _t38 : 1.73205256f;
+        const float _t40 = _t29 - _t37 * 3.0000031f;
+        const float _t41 = ((-1.73205256f) <= _t40) ? _t40 : (-1.73205256f);
+        out[i] = _t18 - _t19 * ((_t36 <= _t39) ? ((_t41 <= _t36) ? _t36 : _t41) : _t39);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_o2_offsetf(x[i], y[i], z[i], h[i]);
@@ -803,44 +868,50 @@ static inline void diamond_o2_shellf_n(size_t n, const float *x, const float *y,
         const float _t3 = offsetgen_batch_cosf(_t2);
         const float _t4 = _t1 * _t3;
         const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_sinf(_t5);
+        const float _t6 = offsetgen_batch_cosf(_t5);
         const float _t7 = _t4 * _t6;
         const float _t8 = offsetgen_batch_sinf(_t0);
-        const float _t9 = offsetgen_batch_sinf(_t2);
-        const float _t10 = _t8 * _t9;
-        const float _t11 = _t6 * _t10;
-        const float _t12 = _t1 * _t9;
-        const float _t13 = offsetgen_batch_cosf(_t5);
-        const float _t14 = _t12 * _t13;
-        const float _t15 = _t11 + _t14;
-        const float _t16 = _t8 * _t3;
-        const float _t17 = _t16 * _t13;
-        const float _t18 = _t7 + _t15 + _t17;
-        const float _t19 = _t4 * _t13;
-        const float _t20 = _t16 * _t6;
-        const float _t21 = _t12 * _t6;
-        const float _t22 = _t13 * _t10;
-        const float _t23 = _t19 + _t20 - _t21 - _t22;
-        const float _t24 = 6.28318548f * (t[i] * 0.5f);
-        const float _t25 = _t24 * 0.5f;
-        const float _t26 = _t11 + _t17 - _t14 - _t7;
-        const float _t27 = _t19 + _t22 - _t20 - _t21;
-        const float _t28 = _t11 + _t7 - _t14 - _t17;
-        const float _t29 = _t19 + _t21 - _t20 - _t22;
-        const float _t30 = 1.0f / sqrtf(_t29 * _t29 + _t27 * _t27 + _t23 * _t23);
-        const float _t31 = _t25 * ((_t26 * _t27 + _t28 * _t29 - _t23 * _t18) * _t30);
-        const float _t32 = _t23 + _t31;
-        const float _t33 = _t15 - _t7 - _t17;
-        const float _t34 = _t25 * (_t30 * (_t33 * _t29 + _t23 * _t26 - _t27 * _t18));
-        const float _t35 = _t34 + _t27;
-        const float _t36 = _t30 * (_t23 * _t28 + _t33 * _t27 - _t18 * _t29) * _t25;
-        const float _t37 = _t36 + _t29;
-        const float _t38 = sqrtf(_t32 * _t32 + _t35 * _t35 + _t37 * _t37);
-        const float _t39 = _t34 - _t27;
-        const float _t40 = _t23 - _t31;
-        const float _t41 = _t36 - _t29;
-        const float _t42 = sqrtf(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
-        out[i] = (_t18 + ((fabsf(_t38) <= 1.73205256f) ? _t38 : ((_t38 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t24) * (_t18 - ((fabsf(_t42) <= 1.73205256f) ? _t42 : ((_t42 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t24);
+        const float _t9 = _t8 * _t3;
+        const float _t10 = offsetgen_batch_sinf(_t5);
+        const float _t11 = _t9 * _t10;
+        const float _t12 = offsetgen_batch_sinf(_t2);
+        const float _t13 = _t1 * _t12;
+        const float _t14 = _t13 * _t10;
+        const float _t15 = _t8 * _t12;
+        const float _t16 = _t6 * _t15;
+        const float _t17 = _t7 + _t11 - _t14 - _t16;
+        const float _t18 = 6.28318548f * (t[i] * 0.5f);
+        const float _t19 = _t18 * 0.5f;
+        const float _t20 = _t10 * _t15;
+        const float _t21 = _t9 * _t6;
+        const float _t22 = _t13 * _t6;
+        const float _t23 = _t4 * _t10;
+        const float _t24 = _t20 + _t21 - _t22 - _t23;
+        const float _t25 = _t7 + _t16 - _t11 - _t14;
+        const float _t26 = _t20 + _t23 - _t22 - _t21;
+        const float _t27 = _t7 + _t14 - _t11 - _t16;
+        const float _t28 = _t20 + _t22;
+        const float _t29 = _t23 + _t28 + _t21;
+        const float _t30 = sqrtf(_t27 * _t27 + _t25 * _t25 + _t17 * _t17);
+        const float _t31 = 1.0f / _t30;
+        const float _t32 = _t19 * ((_t24 * _t25 + _t26 * _t27 - _t17 * _t29) * _t31);
+        const float _t33 = _t17 + _t32;
+        const float _t34 = _t28 - _t23 - _t21;
+        const float _t35 = _t19 * (_t31 * (_t34 * _t27 + _t17 * _t24 - _t25 * _t29));
+        const float _t36 = _t35 + _t25;
+        const float _t37 = _t31 * (_t17 * _t26 + _t34 * _t25 - _t29 * _t27) * _t19;
+        const float _t38 = _t37 + _t27;
+        const float _t39 = sqrtf(_t33 * _t33 + _t36 * _t36 + _t38 * _t38);
+        const float _t40 = fabsf(_t18);
+        const float _t41 = _t30 + _t40 * 1.00000095f;
+        const float _t42 = (_t41 <= 1.73205256f) ? _t41 : 1.73205256f;
+        const float _t43 = _t30 - 3.0000031f * _t40;
+        const float _t44 = ((-1.73205256f) <= _t43) ? _t43 : (-1.73205256f);
+        const float _t45 = _t35 - _t25;
+        const float _t46 = _t17 - _t32;
+        const float _t47 = _t37 - _t27;
+        const float _t48 = sqrtf(_t45 * _t45 + _t46 * _t46 + _t47 * _t47);
+        out[i] = (((_t39 <= _t42) ? ((_t44 <= _t39) ? _t39 : _t44) : _t42) * _t18 + _t29) * (_t29 - _t18 * ((_t48 <= _t42) ? ((_t44 <= _t48) ? _t48 : _t44) : _t42));
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_o2_shellf(x[i], y[i], z[i], t[i]);

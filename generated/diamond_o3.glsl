@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^4) of the exact offset; relative thickness error ~ (h/L)^3.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: diamond_o3_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 2.000002 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 20
-    - offset: 214
-    - shell: 282
-    - normal: 564
+    - offset: 222
+    - shell: 289
+    - normal: 589
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o3","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":20,"offset":214,"shell":282,"normal":564}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o3","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":222,"shell":289,"normal":589}} */
 #ifndef OFFSETGEN_DIAMOND_O3_GLSL
 #define OFFSETGEN_DIAMOND_O3_GLSL
 
@@ -53,7 +54,7 @@ highp float diamond_o3_field(highp vec3 p)
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 214.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 222.
 highp float diamond_o3_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -89,44 +90,49 @@ highp float diamond_o3_offset(highp vec3 p, highp float h)
     highp float _t30 = _t27 * _t27;
     highp float _t31 = _t25 * _t25;
     highp float _t32 = _t29 * _t29;
-    highp float _t33 = 1.0 / sqrt(_t30 + _t31 + _t32);
-    highp float _t34 = (_t20 * _t25 + _t26 * _t27 - _t29 * _t18) * _t33;
-    highp float _t35 = _t19 * 0.5;
-    highp float _t36 = _t34 * _t35 - _t29;
-    highp float _t37 = _t15 - _t7 - _t17;
-    highp float _t38 = _t33 * (_t29 * _t26 + _t37 * _t25 - _t18 * _t27);
-    highp float _t39 = _t38 * _t35 - _t27;
-    highp float _t40 = _t33 * (_t37 * _t27 + _t29 * _t20 - _t25 * _t18);
-    highp float _t41 = _t25 - _t40 * _t35;
-    highp float _t42 = _t19 * 0.333333343;
-    highp float _t43 = _t29 - _t42 * _t34;
-    highp float _t44 = _t40 * _t42 - _t25;
-    highp float _t45 = _t38 * _t42 - _t27;
-    highp float _t46 = sqrt(_t43 * _t43 + (_t44 * _t44 + _t45 * _t45));
-    highp float _t47 = _t25 * _t27;
-    highp float _t48 = _t37 * _t18;
-    highp float _t49 = _t24 + _t28 + _t22;
-    highp float _t50 = _t37 + (_t47 + (_t48 + _t48 + _t47) - _t29 * _t49 - _t20 * _t26 + _t38 * _t40) * _t33 * _t42;
-    highp float _t51 = _t29 * _t25;
-    highp float _t52 = _t20 * _t18;
-    highp float _t53 = _t33 * (_t37 * _t26 + _t49 * _t27 - _t51 - _t51 - _t52 - _t52 - _t40 * _t34) * _t42 - _t20;
-    highp float _t54 = _t18 * _t18;
-    highp float _t55 = _t37 * _t37;
-    highp float _t56 = _t20 * _t20;
-    highp float _t57 = 1.0 / _t46;
-    highp float _t58 = _t44 - (_t45 * _t50 + _t43 * _t53 + _t44 * (_t42 * (_t33 * (_t40 * _t40 - (_t54 + (_t55 + _t56) - _t30 - _t31 - _t32))) - _t18)) * _t57 * _t42;
-    highp float _t59 = _t26 * _t26;
-    highp float _t60 = _t29 * _t27;
-    highp float _t61 = _t26 * _t18;
-    highp float _t62 = _t26 + _t33 * (_t38 * _t34 + (_t60 + _t60 + _t61 + _t61 - _t25 * _t49 - _t37 * _t20)) * _t42;
-    highp float _t63 = ((_t33 * (_t34 * _t34 - (_t56 + _t54 + _t59 - _t30 - _t31 - _t32)) * _t42 - _t18) * _t43 + _t44 * _t53 - _t45 * _t62) * _t57 * _t42 - _t43;
-    highp float _t64 = (_t45 * (_t42 * (_t33 * (_t38 * _t38 - (_t55 + _t54 + _t59 - _t30 - _t31 - _t32))) - _t18) + _t44 * _t50 - _t62 * _t43) * _t57 * _t42 - _t45;
-    highp float _t65 = sqrt(_t36 * _t36 + _t39 * _t39 + _t41 * _t41) * 2.0 - 1.5 * (_t46 + sqrt(_t58 * _t58 + (_t63 * _t63 + _t64 * _t64)));
-    highp float _t66 = -_t65;
-    return _t18 - _t19 * ((abs(_t65) <= 1.73205256) ? _t66 : ((_t66 > 0.0) ? 1.73205256 : (-1.73205256)));
+    highp float _t33 = sqrt(_t30 + _t31 + _t32);
+    highp float _t34 = 1.0 / _t33;
+    highp float _t35 = (_t20 * _t25 + _t26 * _t27 - _t29 * _t18) * _t34;
+    highp float _t36 = _t19 * 0.5;
+    highp float _t37 = _t35 * _t36 - _t29;
+    highp float _t38 = _t15 - _t7 - _t17;
+    highp float _t39 = _t34 * (_t29 * _t26 + _t38 * _t25 - _t18 * _t27);
+    highp float _t40 = _t39 * _t36 - _t27;
+    highp float _t41 = _t34 * (_t38 * _t27 + _t29 * _t20 - _t25 * _t18);
+    highp float _t42 = _t25 - _t41 * _t36;
+    highp float _t43 = _t19 * 0.333333343;
+    highp float _t44 = _t29 - _t43 * _t35;
+    highp float _t45 = _t41 * _t43 - _t25;
+    highp float _t46 = _t39 * _t43 - _t27;
+    highp float _t47 = sqrt(_t44 * _t44 + (_t45 * _t45 + _t46 * _t46));
+    highp float _t48 = _t25 * _t27;
+    highp float _t49 = _t38 * _t18;
+    highp float _t50 = _t24 + _t28 + _t22;
+    highp float _t51 = _t38 + (_t48 + (_t49 + _t49 + _t48) - _t29 * _t50 - _t20 * _t26 + _t39 * _t41) * _t34 * _t43;
+    highp float _t52 = _t29 * _t25;
+    highp float _t53 = _t20 * _t18;
+    highp float _t54 = _t34 * (_t38 * _t26 + _t50 * _t27 - _t52 - _t52 - _t53 - _t53 - _t41 * _t35) * _t43 - _t20;
+    highp float _t55 = _t18 * _t18;
+    highp float _t56 = _t38 * _t38;
+    highp float _t57 = _t20 * _t20;
+    highp float _t58 = 1.0 / _t47;
+    highp float _t59 = _t45 - (_t46 * _t51 + _t44 * _t54 + _t45 * (_t43 * (_t34 * (_t41 * _t41 - (_t55 + (_t56 + _t57) - _t30 - _t31 - _t32))) - _t18)) * _t58 * _t43;
+    highp float _t60 = _t26 * _t26;
+    highp float _t61 = _t29 * _t27;
+    highp float _t62 = _t26 * _t18;
+    highp float _t63 = _t26 + _t34 * (_t39 * _t35 + (_t61 + _t61 + _t62 + _t62 - _t25 * _t50 - _t38 * _t20)) * _t43;
+    highp float _t64 = ((_t34 * (_t35 * _t35 - (_t57 + _t55 + _t60 - _t30 - _t31 - _t32)) * _t43 - _t18) * _t44 + _t45 * _t54 - _t46 * _t63) * _t58 * _t43 - _t44;
+    highp float _t65 = (_t46 * (_t43 * (_t34 * (_t39 * _t39 - (_t56 + _t55 + _t60 - _t30 - _t31 - _t32))) - _t18) + _t45 * _t51 - _t63 * _t44) * _t58 * _t43 - _t46;
+    highp float _t66 = -(sqrt(_t37 * _t37 + _t40 * _t40 + _t42 * _t42) * 2.0 - 1.5 * (_t47 + sqrt(_t59 * _t59 + (_t64 * _t64 + _t65 * _t65))));
+    highp float _t67 = abs(_t19);
+    highp float _t68 = _t33 + _t67 * 1.00000095;
+    highp float _t69 = (_t68 <= 1.73205256) ? _t68 : 1.73205256;
+    highp float _t70 = _t33 - _t67 * 3.0000031;
+    highp float _t71 = ((-1.73205256) <= _t70) ? _t70 : (-1.73205256);
+    return _t18 - _t19 * ((_t66 <= _t69) ? ((_t71 <= _t66) ? _t66 : _t71) : _t69);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 282.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 289.
 highp float diamond_o3_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -163,70 +169,75 @@ highp float diamond_o3_shell(highp vec3 p, highp float t)
     highp float _t31 = _t28 * _t28;
     highp float _t32 = _t26 * _t26;
     highp float _t33 = _t18 * _t18;
-    highp float _t34 = 1.0 / sqrt(_t31 + _t32 + _t33);
-    highp float _t35 = (_t25 * _t26 + _t27 * _t28 - _t18 * _t30) * _t34;
-    highp float _t36 = _t20 * _t35;
-    highp float _t37 = _t18 + _t36;
-    highp float _t38 = _t29 - _t24 - _t22;
-    highp float _t39 = _t34 * (_t38 * _t28 + _t18 * _t25 - _t26 * _t30);
-    highp float _t40 = _t20 * _t39;
-    highp float _t41 = _t40 + _t26;
-    highp float _t42 = _t34 * (_t18 * _t27 + _t38 * _t26 - _t30 * _t28);
-    highp float _t43 = _t42 * _t20;
-    highp float _t44 = _t43 + _t28;
-    highp float _t45 = _t18 * _t28;
-    highp float _t46 = _t27 * _t30;
-    highp float _t47 = _t15 + _t12 + _t17;
-    highp float _t48 = _t19 * 0.333333343;
-    highp float _t49 = _t34 * (_t42 * _t35 + (_t45 + _t45 + _t46 + _t46 - _t26 * _t47 - _t38 * _t25)) * _t48;
-    highp float _t50 = _t49 - _t27;
-    highp float _t51 = _t48 * _t35;
-    highp float _t52 = _t51 + _t18;
-    highp float _t53 = _t42 * _t48;
-    highp float _t54 = _t53 + _t28;
-    highp float _t55 = _t38 * _t38;
-    highp float _t56 = _t30 * _t30;
-    highp float _t57 = _t27 * _t27;
-    highp float _t58 = _t48 * (_t34 * (_t42 * _t42 - (_t55 + _t56 + _t57 - _t31 - _t32 - _t33)));
-    highp float _t59 = _t48 * _t39;
-    highp float _t60 = _t59 + _t26;
-    highp float _t61 = _t26 * _t28;
-    highp float _t62 = _t38 * _t30;
-    highp float _t63 = (_t61 + (_t62 + _t62 + _t61) - _t18 * _t47 - _t25 * _t27 + _t42 * _t39) * _t34 * _t48;
-    highp float _t64 = _t38 - _t63;
-    highp float _t65 = sqrt(_t54 * _t54 + _t52 * _t52 + _t60 * _t60);
-    highp float _t66 = 1.0 / _t65;
-    highp float _t67 = (_t50 * _t52 + _t54 * (_t58 + _t30) - _t60 * _t64) * _t66 * _t48 - _t54;
-    highp float _t68 = _t25 * _t25;
-    highp float _t69 = _t48 * (_t34 * (_t35 * _t35 - (_t68 + _t56 + _t57 - _t31 - _t32 - _t33)));
-    highp float _t70 = _t18 * _t26;
-    highp float _t71 = _t25 * _t30;
-    highp float _t72 = _t34 * (_t38 * _t27 + _t47 * _t28 - _t70 - _t70 - _t71 - _t71 - _t39 * _t35) * _t48;
-    highp float _t73 = _t25 + _t72;
-    highp float _t74 = _t52 - (_t50 * _t54 + _t52 * (_t30 + _t69) - _t60 * _t73) * _t66 * _t48;
-    highp float _t75 = _t48 * (_t34 * (_t39 * _t39 - (_t56 + (_t55 + _t68) - _t31 - _t32 - _t33)));
-    highp float _t76 = _t60 - (_t60 * (_t30 + _t75) - _t52 * _t73 - _t54 * _t64) * _t66 * _t48;
-    highp float _t77 = sqrt(_t37 * _t37 + _t41 * _t41 + _t44 * _t44) * 2.0 - 1.5 * (sqrt(_t67 * _t67 + (_t74 * _t74 + _t76 * _t76)) + _t65);
-    highp float _t78 = -_t77;
-    highp float _t79 = _t59 - _t26;
-    highp float _t80 = _t51 - _t18;
-    highp float _t81 = _t53 - _t28;
-    highp float _t82 = sqrt(_t79 * _t79 + (_t80 * _t80 + _t81 * _t81));
-    highp float _t83 = _t25 - _t72;
-    highp float _t84 = _t38 + _t63;
-    highp float _t85 = 1.0 / _t82;
-    highp float _t86 = _t79 + _t48 * (((_t30 - _t75) * _t79 - _t83 * _t80 - _t84 * _t81) * _t85);
-    highp float _t87 = _t49 + _t27;
-    highp float _t88 = _t80 - (_t83 * _t79 + _t87 * _t81 - (_t30 - _t69) * _t80) * _t85 * _t48;
-    highp float _t89 = (_t81 * (_t58 - _t30) + _t87 * _t80 + _t84 * _t79) * _t85 * _t48 - _t81;
-    highp float _t90 = _t40 - _t26;
-    highp float _t91 = _t18 - _t36;
-    highp float _t92 = _t43 - _t28;
-    highp float _t93 = (_t82 + sqrt(_t86 * _t86 + _t88 * _t88 + _t89 * _t89)) * 1.5 - sqrt(_t90 * _t90 + _t91 * _t91 + _t92 * _t92) * 2.0;
-    return (((abs(_t77) <= 1.73205256) ? _t78 : ((_t78 > 0.0) ? 1.73205256 : (-1.73205256))) * _t19 + _t30) * (_t30 - ((abs(_t93) <= 1.73205256) ? _t93 : ((_t93 > 0.0) ? 1.73205256 : (-1.73205256))) * _t19);
+    highp float _t34 = sqrt(_t31 + _t32 + _t33);
+    highp float _t35 = 1.0 / _t34;
+    highp float _t36 = (_t25 * _t26 + _t27 * _t28 - _t18 * _t30) * _t35;
+    highp float _t37 = _t20 * _t36;
+    highp float _t38 = _t18 + _t37;
+    highp float _t39 = _t29 - _t24 - _t22;
+    highp float _t40 = _t35 * (_t39 * _t28 + _t18 * _t25 - _t26 * _t30);
+    highp float _t41 = _t20 * _t40;
+    highp float _t42 = _t41 + _t26;
+    highp float _t43 = _t35 * (_t18 * _t27 + _t39 * _t26 - _t30 * _t28);
+    highp float _t44 = _t43 * _t20;
+    highp float _t45 = _t44 + _t28;
+    highp float _t46 = _t18 * _t28;
+    highp float _t47 = _t27 * _t30;
+    highp float _t48 = _t15 + _t12 + _t17;
+    highp float _t49 = _t19 * 0.333333343;
+    highp float _t50 = _t35 * (_t43 * _t36 + (_t46 + _t46 + _t47 + _t47 - _t26 * _t48 - _t39 * _t25)) * _t49;
+    highp float _t51 = _t50 - _t27;
+    highp float _t52 = _t49 * _t36;
+    highp float _t53 = _t52 + _t18;
+    highp float _t54 = _t43 * _t49;
+    highp float _t55 = _t54 + _t28;
+    highp float _t56 = _t39 * _t39;
+    highp float _t57 = _t30 * _t30;
+    highp float _t58 = _t27 * _t27;
+    highp float _t59 = _t49 * (_t35 * (_t43 * _t43 - (_t56 + _t57 + _t58 - _t31 - _t32 - _t33)));
+    highp float _t60 = _t49 * _t40;
+    highp float _t61 = _t60 + _t26;
+    highp float _t62 = _t26 * _t28;
+    highp float _t63 = _t39 * _t30;
+    highp float _t64 = (_t62 + (_t63 + _t63 + _t62) - _t18 * _t48 - _t25 * _t27 + _t43 * _t40) * _t35 * _t49;
+    highp float _t65 = _t39 - _t64;
+    highp float _t66 = sqrt(_t55 * _t55 + _t53 * _t53 + _t61 * _t61);
+    highp float _t67 = 1.0 / _t66;
+    highp float _t68 = (_t51 * _t53 + _t55 * (_t59 + _t30) - _t61 * _t65) * _t67 * _t49 - _t55;
+    highp float _t69 = _t25 * _t25;
+    highp float _t70 = _t49 * (_t35 * (_t36 * _t36 - (_t69 + _t57 + _t58 - _t31 - _t32 - _t33)));
+    highp float _t71 = _t18 * _t26;
+    highp float _t72 = _t25 * _t30;
+    highp float _t73 = _t35 * (_t39 * _t27 + _t48 * _t28 - _t71 - _t71 - _t72 - _t72 - _t40 * _t36) * _t49;
+    highp float _t74 = _t25 + _t73;
+    highp float _t75 = _t53 - (_t51 * _t55 + _t53 * (_t30 + _t70) - _t61 * _t74) * _t67 * _t49;
+    highp float _t76 = _t49 * (_t35 * (_t40 * _t40 - (_t57 + (_t56 + _t69) - _t31 - _t32 - _t33)));
+    highp float _t77 = _t61 - (_t61 * (_t30 + _t76) - _t53 * _t74 - _t55 * _t65) * _t67 * _t49;
+    highp float _t78 = -(sqrt(_t38 * _t38 + _t42 * _t42 + _t45 * _t45) * 2.0 - 1.5 * (sqrt(_t68 * _t68 + (_t75 * _t75 + _t77 * _t77)) + _t66));
+    highp float _t79 = abs(_t19);
+    highp float _t80 = _t34 + _t79 * 1.00000095;
+    highp float _t81 = (_t80 <= 1.73205256) ? _t80 : 1.73205256;
+    highp float _t82 = _t34 - 3.0000031 * _t79;
+    highp float _t83 = ((-1.73205256) <= _t82) ? _t82 : (-1.73205256);
+    highp float _t84 = _t60 - _t26;
+    highp float _t85 = _t52 - _t18;
+    highp float _t86 = _t54 - _t28;
+    highp float _t87 = sqrt(_t84 * _t84 + (_t85 * _t85 + _t86 * _t86));
+    highp float _t88 = _t25 - _t73;
+    highp float _t89 = _t39 + _t64;
+    highp float _t90 = 1.0 / _t87;
+    highp float _t91 = _t84 + _t49 * (((_t30 - _t76) * _t84 - _t88 * _t85 - _t89 * _t86) * _t90);
+    highp float _t92 = _t50 + _t27;
+    highp float _t93 = _t85 - (_t88 * _t84 + _t92 * _t86 - (_t30 - _t70) * _t85) * _t90 * _t49;
+    highp float _t94 = (_t86 * (_t59 - _t30) + _t92 * _t85 + _t89 * _t84) * _t90 * _t49 - _t86;
+    highp float _t95 = _t41 - _t26;
+    highp float _t96 = _t18 - _t37;
+    highp float _t97 = _t44 - _t28;
+    highp float _t98 = (_t87 + sqrt(_t91 * _t91 + _t93 * _t93 + _t94 * _t94)) * 1.5 - sqrt(_t95 * _t95 + _t96 * _t96 + _t97 * _t97) * 2.0;
+    return (((_t78 <= _t81) ? ((_t83 <= _t78) ? _t78 : _t83) : _t81) * _t19 + _t30) * (_t30 - ((_t98 <= _t81) ? ((_t83 <= _t98) ? _t98 : _t83) : _t81) * _t19);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 564.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 589.
 highp vec3 diamond_o3_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.x;
@@ -265,100 +276,111 @@ highp vec3 diamond_o3_normal(highp vec3 p, highp float h)
     highp float _t33 = _t22 * _t22;
     highp float _t34 = _t28 * _t28;
     highp float _t35 = _t32 + _t33 + _t34;
-    highp float _t36 = 1.0 / sqrt(_t35);
-    highp float _t37 = (_t23 + _t26 - _t31) * _t36;
-    highp float _t38 = 6.28318548 * h;
-    highp float _t39 = _t38 * 0.5;
-    highp float _t40 = _t37 * _t39 - _t28;
-    highp float _t41 = _t28 * _t24;
-    highp float _t42 = _t29 - _t16 - _t11;
-    highp float _t43 = _t42 * _t22;
-    highp float _t44 = _t30 * _t25;
-    highp float _t45 = _t36 * (_t41 + _t43 - _t44);
-    highp float _t46 = _t45 * _t39 - _t25;
-    highp float _t47 = _t42 * _t25;
-    highp float _t48 = _t28 * _t17;
-    highp float _t49 = _t22 * _t30;
-    highp float _t50 = _t36 * (_t47 + _t48 - _t49);
-    highp float _t51 = _t22 - _t50 * _t39;
-    highp float _t52 = sqrt(_t40 * _t40 + _t46 * _t46 + _t51 * _t51);
-    highp float _t53 = _t38 * 0.333333343;
-    highp float _t54 = _t28 - _t53 * _t37;
-    highp float _t55 = _t50 * _t53 - _t22;
-    highp float _t56 = _t45 * _t53 - _t25;
-    highp float _t57 = sqrt(_t54 * _t54 + (_t55 * _t55 + _t56 * _t56));
-    highp float _t58 = _t22 * _t25;
-    highp float _t59 = _t42 * _t30;
-    highp float _t60 = _t21 + _t27 + _t19;
-    highp float _t61 = (_t58 + (_t59 + _t59 + _t58) - _t28 * _t60 - _t17 * _t24 + _t45 * _t50) * _t36;
-    highp float _t62 = _t42 + _t61 * _t53;
-    highp float _t63 = _t28 * _t22;
-    highp float _t64 = _t17 * _t30;
-    highp float _t65 = _t36 * (_t42 * _t24 + _t60 * _t25 - _t63 - _t63 - _t64 - _t64 - _t50 * _t37);
-    highp float _t66 = _t65 * _t53 - _t17;
-    highp float _t67 = _t30 * _t30;
-    highp float _t68 = _t42 * _t42;
-    highp float _t69 = _t17 * _t17;
-    highp float _t70 = _t36 * (_t50 * _t50 - (_t67 + (_t68 + _t69) - _t32 - _t33 - _t34));
-    highp float _t71 = _t53 * _t70 - _t30;
-    highp float _t72 = 1.0 / _t57;
-    highp float _t73 = (_t56 * _t62 + _t54 * _t66 + _t55 * _t71) * _t72;
-    highp float _t74 = _t55 - _t73 * _t53;
-    highp float _t75 = _t24 * _t24;
-    highp float _t76 = _t36 * (_t37 * _t37 - (_t69 + _t67 + _t75 - _t32 - _t33 - _t34));
-    highp float _t77 = _t76 * _t53 - _t30;
-    highp float _t78 = _t28 * _t25;
-    highp float _t79 = _t24 * _t30;
-    highp float _t80 = _t36 * (_t45 * _t37 + (_t78 + _t78 + _t79 + _t79 - _t22 * _t60 - _t42 * _t17));
-    highp float _t81 = _t24 + _t80 * _t53;
-    highp float _t82 = (_t77 * _t54 + _t55 * _t66 - _t56 * _t81) * _t72;
-    highp float _t83 = _t82 * _t53 - _t54;
-    highp float _t84 = _t36 * (_t45 * _t45 - (_t68 + _t67 + _t75 - _t32 - _t33 - _t34));
-    highp float _t85 = _t53 * _t84 - _t30;
-    highp float _t86 = (_t56 * _t85 + _t55 * _t62 - _t81 * _t54) * _t72;
-    highp float _t87 = _t86 * _t53 - _t56;
-    highp float _t88 = sqrt(_t74 * _t74 + (_t83 * _t83 + _t87 * _t87));
-    bool _t89 = abs(_t52 * 2.0 - 1.5 * (_t57 + _t88)) <= 1.73205256;
-    highp float _t90 = _t44 + (_t17 * _t60 * 2.0 + _t44) + _t44 * 2.0 - _t41 - _t41 - _t43 - _t43;
-    highp float _t91 = _t36 * (_t90 - _t41 * 2.0 + _t80 * _t37 * 2.0 + _t45 * _t76) * _t53 + _t25;
-    highp float _t92 = _t42 * _t60 * 2.0;
-    highp float _t93 = _t31 * 2.0;
-    highp float _t94 = _t28 - _t36 * (_t26 + (_t26 * 2.0 + (_t23 + _t23)) + _t26 - _t31 - _t31 - _t92 - _t93 - _t37 * _t84 - _t45 * _t80 * 2.0) * _t53;
-    highp float _t95 = _t42 * _t28;
-    highp float _t96 = _t24 * _t22;
-    highp float _t97 = _t17 * _t25;
-    highp float _t98 = _t60 * _t30;
-    highp float _t99 = (_t80 * _t50 + _t61 * _t37 - _t45 * _t65 - (_t95 + (_t96 + (_t97 + (_t97 + _t97) + _t96) + _t96 + _t95 + _t95) + _t98 + _t98 + _t98)) * _t36 * _t53 - _t60;
-    highp float _t100 = _t81 - _t72 * (_t86 * _t82 - (_t62 * _t66 + _t91 * _t54 - _t94 * _t56 - _t81 * _t85 - _t77 * _t81 - _t55 * _t99)) * _t53;
-    highp float _t101 = _t28 + (_t37 * _t70 - (_t26 + (_t23 + (_t23 * 2.0 + _t23)) + _t26 - _t31 - _t31 - _t92 - _t93) - _t65 * _t50 * 2.0) * _t36 * _t53;
-    highp float _t102 = _t47 + _t47;
-    highp float _t103 = _t49 * 2.0;
-    highp float _t104 = _t24 * _t60 * 2.0;
-    highp float _t105 = _t36 * (_t48 + (_t48 * 2.0 + _t102 + _t48) - _t103 - _t49 - _t49 - _t104 + _t65 * _t37 * 2.0 - _t50 * _t76) * _t53 - _t22;
-    highp float _t106 = (_t73 * _t82 - (_t77 * _t66 + _t71 * _t66 - _t62 * _t81 - _t55 * _t101 - _t105 * _t54 - _t99 * _t56)) * _t72 * _t53 + _t66;
-    highp float _t107 = _t66 * _t66;
-    highp float _t108 = _t81 * _t81;
-    highp float _t109 = 1.0 / _t88;
-    highp float _t110 = 1.0 / _t52;
-    highp float _t111 = _t65 * _t39 - _t17;
-    highp float _t112 = _t80 * _t39 + _t24;
-    highp float _t113 = (_t89) ? _t28 - _t38 * (1.5 * ((_t87 * _t100 + _t106 * _t74 - _t83 * ((_t55 * _t105 + _t54 * (_t28 + _t36 * (_t76 * _t37 * 3.0 - (_t26 + (_t23 + 3.0 * _t26) + _t23 * 3.0 - _t31 - _t31 * 3.0)) * _t53) - _t77 * _t77 - _t107 - _t108 - _t91 * _t56 + _t82 * _t82) * _t72 * _t53 + _t77)) * _t109 + _t82) + _t110 * (_t51 * _t111 + _t46 * _t112 - (_t30 - _t76 * _t39) * _t40) * 2.0) : _t28;
-    highp float _t114 = _t62 * _t62;
-    highp float _t115 = _t36 * (_t45 * _t61 * 2.0 + _t50 * _t84 - (_t48 + (_t48 + _t102) + _t47 * 2.0 - _t103 - _t49 - _t49 - _t104)) * _t53 + _t22;
-    highp float _t116 = _t36 * (_t90 - _t43 * 2.0 + _t61 * _t50 * 2.0 + _t45 * _t70) * _t53 + _t25;
-    highp float _t117 = _t62 - (_t115 * _t56 + _t62 * _t85 + _t62 * _t71 + _t55 * _t116 - _t99 * _t54 - _t81 * _t66 - _t73 * _t86) * _t72 * _t53;
-    highp float _t118 = _t42 + _t61 * _t39;
-    highp float _t119 = (_t89) ? _t38 * (1.5 * (((_t72 * ((_t36 * (_t44 * 3.0 + _t44 - _t41 - _t43 - _t43 * 3.0 - _t41 * 3.0 + _t45 * _t84 * 3.0) * _t53 + _t25) * _t56 + _t114 + _t55 * _t115 + _t85 * _t85 + _t108 - _t94 * _t54 - _t86 * _t86) * _t53 - _t85) * _t87 + _t83 * _t100 + _t117 * _t74) * _t109 + _t86) + _t110 * ((_t30 - _t84 * _t39) * _t46 + _t51 * _t118 - _t112 * _t40) * 2.0) + _t25 : _t25;
-    highp float _t120 = (_t89) ? _t22 - _t38 * (((((_t114 + (_t116 * _t56 + _t71 * _t71 + _t55 * (_t36 * (_t49 * 3.0 + _t49 - _t47 - _t48 - _t48 * 3.0 - _t47 * 3.0 + _t50 * _t70 * 3.0) * _t53 + _t22)) + _t107 - _t101 * _t54 - _t73 * _t73) * _t72 * _t53 - _t71) * _t74 + _t106 * _t83 + _t117 * _t87) * _t109 - _t73) * 1.5 + _t110 * (_t46 * _t118 - (_t39 * _t70 - _t30) * _t51 - _t111 * _t40) * 2.0) : _t22;
-    highp float _t121 = _t113 * _t113 + (_t119 * _t119 + _t120 * _t120);
-    bool _t122 = _t121 > 0.0;
-    bool _t123 = _t121 <= 1.00000002e+30;
-    highp float _t124 = 1.0 / sqrt(_t121);
-    highp float _t125 = (_t35 > 0.0) ? _t36 : 0.0;
-    highp float _t126 = _t22 * _t125;
-    highp float _t127 = _t28 * _t125;
-    highp float _t128 = _t125 * _t25;
-    return vec3((_t122) ? ((_t123) ? _t120 * _t124 : _t126) : _t126, (_t122) ? ((_t123) ? _t124 * _t113 : _t127) : _t127, (_t122) ? ((_t123) ? _t124 * _t119 : _t128) : _t128);
+    highp float _t36 = sqrt(_t35);
+    highp float _t37 = 1.0 / _t36;
+    highp float _t38 = (_t23 + _t26 - _t31) * _t37;
+    highp float _t39 = 6.28318548 * h;
+    highp float _t40 = _t39 * 0.5;
+    highp float _t41 = _t38 * _t40 - _t28;
+    highp float _t42 = _t28 * _t24;
+    highp float _t43 = _t29 - _t16 - _t11;
+    highp float _t44 = _t43 * _t22;
+    highp float _t45 = _t30 * _t25;
+    highp float _t46 = _t37 * (_t42 + _t44 - _t45);
+    highp float _t47 = _t46 * _t40 - _t25;
+    highp float _t48 = _t43 * _t25;
+    highp float _t49 = _t28 * _t17;
+    highp float _t50 = _t22 * _t30;
+    highp float _t51 = _t37 * (_t48 + _t49 - _t50);
+    highp float _t52 = _t22 - _t51 * _t40;
+    highp float _t53 = sqrt(_t41 * _t41 + _t47 * _t47 + _t52 * _t52);
+    highp float _t54 = _t39 * 0.333333343;
+    highp float _t55 = _t28 - _t54 * _t38;
+    highp float _t56 = _t51 * _t54 - _t22;
+    highp float _t57 = _t46 * _t54 - _t25;
+    highp float _t58 = sqrt(_t55 * _t55 + (_t56 * _t56 + _t57 * _t57));
+    highp float _t59 = _t22 * _t25;
+    highp float _t60 = _t43 * _t30;
+    highp float _t61 = _t21 + _t27 + _t19;
+    highp float _t62 = (_t59 + (_t60 + _t60 + _t59) - _t28 * _t61 - _t17 * _t24 + _t46 * _t51) * _t37;
+    highp float _t63 = _t43 + _t62 * _t54;
+    highp float _t64 = _t28 * _t22;
+    highp float _t65 = _t17 * _t30;
+    highp float _t66 = _t37 * (_t43 * _t24 + _t61 * _t25 - _t64 - _t64 - _t65 - _t65 - _t51 * _t38);
+    highp float _t67 = _t66 * _t54 - _t17;
+    highp float _t68 = _t30 * _t30;
+    highp float _t69 = _t43 * _t43;
+    highp float _t70 = _t17 * _t17;
+    highp float _t71 = _t37 * (_t51 * _t51 - (_t68 + (_t69 + _t70) - _t32 - _t33 - _t34));
+    highp float _t72 = _t54 * _t71 - _t30;
+    highp float _t73 = 1.0 / _t58;
+    highp float _t74 = (_t57 * _t63 + _t55 * _t67 + _t56 * _t72) * _t73;
+    highp float _t75 = _t56 - _t74 * _t54;
+    highp float _t76 = _t24 * _t24;
+    highp float _t77 = _t37 * (_t38 * _t38 - (_t70 + _t68 + _t76 - _t32 - _t33 - _t34));
+    highp float _t78 = _t77 * _t54 - _t30;
+    highp float _t79 = _t28 * _t25;
+    highp float _t80 = _t24 * _t30;
+    highp float _t81 = _t37 * (_t46 * _t38 + (_t79 + _t79 + _t80 + _t80 - _t22 * _t61 - _t43 * _t17));
+    highp float _t82 = _t24 + _t81 * _t54;
+    highp float _t83 = (_t78 * _t55 + _t56 * _t67 - _t57 * _t82) * _t73;
+    highp float _t84 = _t83 * _t54 - _t55;
+    highp float _t85 = _t37 * (_t46 * _t46 - (_t69 + _t68 + _t76 - _t32 - _t33 - _t34));
+    highp float _t86 = _t54 * _t85 - _t30;
+    highp float _t87 = (_t57 * _t86 + _t56 * _t63 - _t82 * _t55) * _t73;
+    highp float _t88 = _t87 * _t54 - _t57;
+    highp float _t89 = sqrt(_t75 * _t75 + (_t84 * _t84 + _t88 * _t88));
+    highp float _t90 = -(_t53 * 2.0 - 1.5 * (_t58 + _t89));
+    highp float _t91 = abs(_t39);
+    highp float _t92 = _t36 + _t91 * 1.00000095;
+    bool _t93 = _t92 <= 1.73205256;
+    bool _t94 = _t90 <= ((_t93) ? _t92 : 1.73205256);
+    highp float _t95 = _t36 - _t91 * 3.0000031;
+    bool _t96 = (-1.73205256) <= _t95;
+    bool _t97 = ((_t96) ? _t95 : (-1.73205256)) <= _t90;
+    highp float _t98 = _t63 * _t63;
+    highp float _t99 = _t48 + _t48;
+    highp float _t100 = _t50 * 2.0;
+    highp float _t101 = _t24 * _t61 * 2.0;
+    highp float _t102 = _t37 * (_t46 * _t62 * 2.0 + _t51 * _t85 - (_t49 + (_t49 + _t99) + _t48 * 2.0 - _t100 - _t50 - _t50 - _t101)) * _t54 + _t22;
+    highp float _t103 = _t82 * _t82;
+    highp float _t104 = _t43 * _t61 * 2.0;
+    highp float _t105 = _t31 * 2.0;
+    highp float _t106 = _t28 - _t37 * (_t26 + (_t26 * 2.0 + (_t23 + _t23)) + _t26 - _t31 - _t31 - _t104 - _t105 - _t38 * _t85 - _t46 * _t81 * 2.0) * _t54;
+    highp float _t107 = _t45 + (_t17 * _t61 * 2.0 + _t45) + _t45 * 2.0 - _t42 - _t42 - _t44 - _t44;
+    highp float _t108 = _t37 * (_t107 - _t42 * 2.0 + _t81 * _t38 * 2.0 + _t46 * _t77) * _t54 + _t25;
+    highp float _t109 = _t43 * _t28;
+    highp float _t110 = _t24 * _t22;
+    highp float _t111 = _t17 * _t25;
+    highp float _t112 = _t61 * _t30;
+    highp float _t113 = (_t81 * _t51 + _t62 * _t38 - _t46 * _t66 - (_t109 + (_t110 + (_t111 + (_t111 + _t111) + _t110) + _t110 + _t109 + _t109) + _t112 + _t112 + _t112)) * _t37 * _t54 - _t61;
+    highp float _t114 = _t82 - _t73 * (_t87 * _t83 - (_t63 * _t67 + _t108 * _t55 - _t106 * _t57 - _t82 * _t86 - _t78 * _t82 - _t56 * _t113)) * _t54;
+    highp float _t115 = _t37 * (_t107 - _t44 * 2.0 + _t62 * _t51 * 2.0 + _t46 * _t71) * _t54 + _t25;
+    highp float _t116 = _t63 - (_t102 * _t57 + _t63 * _t86 + _t63 * _t72 + _t56 * _t115 - _t113 * _t55 - _t82 * _t67 - _t74 * _t87) * _t73 * _t54;
+    highp float _t117 = 1.0 / _t89;
+    highp float _t118 = 1.0 / _t53;
+    highp float _t119 = _t43 + _t62 * _t40;
+    highp float _t120 = _t81 * _t40 + _t24;
+    highp float _t121 = _t25 - _t39 * _t46;
+    highp float _t122 = (_t94) ? ((_t97) ? _t39 * (1.5 * (((_t73 * ((_t37 * (_t45 * 3.0 + _t45 - _t42 - _t44 - _t44 * 3.0 - _t42 * 3.0 + _t46 * _t85 * 3.0) * _t54 + _t25) * _t57 + _t98 + _t56 * _t102 + _t86 * _t86 + _t103 - _t106 * _t55 - _t87 * _t87) * _t54 - _t86) * _t88 + _t84 * _t114 + _t116 * _t75) * _t117 + _t87) + _t118 * ((_t30 - _t85 * _t40) * _t47 + _t52 * _t119 - _t120 * _t41) * 2.0) + _t25 : ((_t96) ? _t121 : _t25)) : ((_t93) ? _t121 : _t25);
+    highp float _t123 = _t28 + (_t38 * _t71 - (_t26 + (_t23 + (_t23 * 2.0 + _t23)) + _t26 - _t31 - _t31 - _t104 - _t105) - _t66 * _t51 * 2.0) * _t37 * _t54;
+    highp float _t124 = _t37 * (_t49 + (_t49 * 2.0 + _t99 + _t49) - _t100 - _t50 - _t50 - _t101 + _t66 * _t38 * 2.0 - _t51 * _t77) * _t54 - _t22;
+    highp float _t125 = (_t74 * _t83 - (_t78 * _t67 + _t72 * _t67 - _t63 * _t82 - _t56 * _t123 - _t124 * _t55 - _t113 * _t57)) * _t73 * _t54 + _t67;
+    highp float _t126 = _t67 * _t67;
+    highp float _t127 = _t66 * _t40 - _t17;
+    highp float _t128 = _t28 - _t39 * _t38;
+    highp float _t129 = (_t94) ? ((_t97) ? _t28 - _t39 * (1.5 * ((_t88 * _t114 + _t125 * _t75 - _t84 * ((_t56 * _t124 + _t55 * (_t28 + _t37 * (_t77 * _t38 * 3.0 - (_t26 + (_t23 + 3.0 * _t26) + _t23 * 3.0 - _t31 - _t31 * 3.0)) * _t54) - _t78 * _t78 - _t126 - _t103 - _t108 * _t57 + _t83 * _t83) * _t73 * _t54 + _t78)) * _t117 + _t83) + _t118 * (_t52 * _t127 + _t47 * _t120 - (_t30 - _t77 * _t40) * _t41) * 2.0) : ((_t96) ? _t128 : _t28)) : ((_t93) ? _t128 : _t28);
+    highp float _t130 = _t22 - _t39 * _t51;
+    highp float _t131 = (_t94) ? ((_t97) ? _t22 - _t39 * (((((_t98 + (_t115 * _t57 + _t72 * _t72 + _t56 * (_t37 * (_t50 * 3.0 + _t50 - _t48 - _t49 - _t49 * 3.0 - _t48 * 3.0 + _t51 * _t71 * 3.0) * _t54 + _t22)) + _t126 - _t123 * _t55 - _t74 * _t74) * _t73 * _t54 - _t72) * _t75 + _t125 * _t84 + _t116 * _t88) * _t117 - _t74) * 1.5 + _t118 * (_t47 * _t119 - (_t40 * _t71 - _t30) * _t52 - _t127 * _t41) * 2.0) : ((_t96) ? _t130 : _t22)) : ((_t93) ? _t130 : _t22);
+    highp float _t132 = _t122 * _t122 + _t129 * _t129 + _t131 * _t131;
+    bool _t133 = _t132 > 0.0;
+    bool _t134 = _t132 <= 1.00000002e+30;
+    highp float _t135 = 1.0 / sqrt(_t132);
+    highp float _t136 = (_t35 > 0.0) ? _t37 : 0.0;
+    highp float _t137 = _t22 * _t136;
+    highp float _t138 = _t28 * _t136;
+    highp float _t139 = _t136 * _t25;
+    return vec3((_t133) ? ((_t134) ? _t135 * _t131 : _t137) : _t137, (_t133) ? ((_t134) ? _t135 * _t129 : _t138) : _t138, (_t133) ? ((_t134) ? _t122 * _t135 : _t139) : _t139);
 }
 
 

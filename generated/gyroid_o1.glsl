@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^2) of the exact offset; relative thickness error ~ (h/L)^1.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: gyroid_o1_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 2.000002 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 14
-    - offset: 37
-    - shell: 40
-    - normal: 92
+    - offset: 36
+    - shell: 39
+    - normal: 95
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o1","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":37,"shell":40,"normal":92}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o1","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":36,"shell":39,"normal":95}} */
 #ifndef OFFSETGEN_GYROID_O1_GLSL
 #define OFFSETGEN_GYROID_O1_GLSL
 
@@ -47,7 +48,7 @@ highp float gyroid_o1_field(highp vec3 p)
     return cos(_t0) * sin(_t1) + sin(_t0) * cos(_t2) + cos(_t1) * sin(_t2);
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 37.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 36.
 highp float gyroid_o1_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -63,10 +64,10 @@ highp float gyroid_o1_offset(highp vec3 p, highp float h)
     highp float _t10 = _t3 * _t8 - _t1 * _t7;
     highp float _t11 = _t4 * _t8 - _t7 * _t6;
     highp float _t12 = sqrt(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.28318548 * h * ((abs(_t12) <= 1.73205256) ? _t12 : ((_t12 > 0.0) ? 1.73205256 : (-1.73205256)));
+    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.28318548 * h * ((_t12 <= 1.73205256) ? (((-1.73205256) <= _t12) ? _t12 : (-1.73205256)) : 1.73205256);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 40.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 39.
 highp float gyroid_o1_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -83,11 +84,11 @@ highp float gyroid_o1_shell(highp vec3 p, highp float t)
     highp float _t11 = _t3 * _t8 - _t1 * _t7;
     highp float _t12 = _t4 * _t8 - _t7 * _t6;
     highp float _t13 = sqrt(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-    highp float _t14 = 6.28318548 * (t * 0.5) * ((abs(_t13) <= 1.73205256) ? _t13 : ((_t13 > 0.0) ? 1.73205256 : (-1.73205256)));
+    highp float _t14 = ((_t13 <= 1.73205256) ? (((-1.73205256) <= _t13) ? _t13 : (-1.73205256)) : 1.73205256) * (6.28318548 * (t * 0.5));
     return (_t9 - _t14) * (_t14 + _t9);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 92.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 95.
 highp vec3 gyroid_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -104,27 +105,30 @@ highp vec3 gyroid_o1_normal(highp vec3 p, highp float h)
     highp float _t11 = _t4 * _t8 - _t9 * _t3;
     highp float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
     highp float _t13 = sqrt(_t12);
-    bool _t14 = abs(_t13) <= 1.73205256;
-    highp float _t15 = 6.28318548 * h;
-    highp float _t16 = 1.0 / _t13;
-    highp float _t17 = _t4 * _t9;
-    highp float _t18 = _t1 * _t8;
-    highp float _t19 = _t1 * _t6;
-    highp float _t20 = _t4 * _t3;
-    highp float _t21 = (_t14) ? _t7 - _t15 * (_t16 * (_t17 * _t10 + _t18 * _t11 - _t7 * (_t19 + _t20))) : _t7;
-    highp float _t22 = _t9 * _t8;
-    highp float _t23 = _t6 * _t3;
-    highp float _t24 = (_t14) ? -(_t15 * (_t16 * ((_t20 + _t22) * _t11 + _t10 * _t23 - _t7 * _t18)) + _t11) : -_t11;
-    highp float _t25 = (_t14) ? _t15 * (_t16 * (_t7 * _t17 - _t23 * _t11 - _t10 * (_t19 + _t22))) - _t10 : -_t10;
-    highp float _t26 = _t21 * _t21 + _t24 * _t24 + _t25 * _t25;
-    bool _t27 = _t26 > 0.0;
-    bool _t28 = _t26 <= 1.00000002e+30;
-    highp float _t29 = 1.0 / sqrt(_t26);
-    highp float _t30 = (_t12 > 0.0) ? _t16 : 0.0;
-    highp float _t31 = -(_t30 * _t11);
-    highp float _t32 = -(_t10 * _t30);
-    highp float _t33 = _t7 * _t30;
-    return vec3((_t27) ? ((_t28) ? _t29 * _t24 : _t31) : _t31, (_t27) ? ((_t28) ? _t25 * _t29 : _t32) : _t32, (_t27) ? ((_t28) ? _t21 * _t29 : _t33) : _t33);
+    bool _t14 = _t13 <= 1.73205256;
+    bool _t15 = (-1.73205256) <= _t13;
+    highp float _t16 = 6.28318548 * h;
+    highp float _t17 = 1.0 / _t13;
+    highp float _t18 = _t4 * _t9;
+    highp float _t19 = _t1 * _t8;
+    highp float _t20 = _t1 * _t6;
+    highp float _t21 = _t4 * _t3;
+    highp float _t22 = (_t14) ? ((_t15) ? _t7 - _t16 * (_t17 * (_t18 * _t10 + _t19 * _t11 - _t7 * (_t20 + _t21))) : _t7) : _t7;
+    highp float _t23 = _t9 * _t8;
+    highp float _t24 = _t6 * _t3;
+    highp float _t25 = -_t11;
+    highp float _t26 = (_t14) ? ((_t15) ? -(_t16 * (_t17 * ((_t21 + _t23) * _t11 + _t10 * _t24 - _t7 * _t19)) + _t11) : _t25) : _t25;
+    highp float _t27 = -_t10;
+    highp float _t28 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t7 * _t18 - _t24 * _t11 - _t10 * (_t20 + _t23))) - _t10 : _t27) : _t27;
+    highp float _t29 = _t22 * _t22 + _t26 * _t26 + _t28 * _t28;
+    bool _t30 = _t29 > 0.0;
+    bool _t31 = _t29 <= 1.00000002e+30;
+    highp float _t32 = 1.0 / sqrt(_t29);
+    highp float _t33 = (_t12 > 0.0) ? _t17 : 0.0;
+    highp float _t34 = -(_t33 * _t11);
+    highp float _t35 = -(_t10 * _t33);
+    highp float _t36 = _t7 * _t33;
+    return vec3((_t30) ? ((_t31) ? _t26 * _t32 : _t34) : _t34, (_t30) ? ((_t31) ? _t28 * _t32 : _t35) : _t35, (_t30) ? ((_t31) ? _t22 * _t32 : _t36) : _t36);
 }
 
 

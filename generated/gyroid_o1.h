@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to gyroid_o1_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 1.7320525396196846 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
+ *   and H = 2.0000020000000003 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    14
- *   offset   37
- *   shell    40
- *   normal   92
+ *   offset   36
+ *   shell    39
+ *   normal   95
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o1","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":37,"shell":40,"normal":92}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o1","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":36,"shell":39,"normal":95}} */
 #ifndef OFFSETGEN_GYROID_O1_H
 #define OFFSETGEN_GYROID_O1_H
 
@@ -113,7 +116,7 @@ static inline double gyroid_o1_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 37
+ * Total ops: 36
  */
 static inline double gyroid_o1_offset(double x, double y, double z, double h)
 {
@@ -130,11 +133,11 @@ static inline double gyroid_o1_offset(double x, double y, double z, double h)
     const double _t10 = _t3 * _t8 - _t1 * _t7;
     const double _t11 = _t4 * _t8 - _t7 * _t6;
     const double _t12 = sqrt(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.2831853071795862 * h * ((fabs(_t12) <= 1.7320525396196846) ? _t12 : ((_t12 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.2831853071795862 * h * ((_t12 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t12) ? _t12 : (-1.7320525396196846)) : 1.7320525396196846);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 40
+ * Total ops: 39
  */
 static inline double gyroid_o1_shell(double x, double y, double z, double t)
 {
@@ -152,12 +155,12 @@ static inline double gyroid_o1_shell(double x, double y, double z, double t)
     const double _t11 = _t3 * _t8 - _t1 * _t7;
     const double _t12 = _t4 * _t8 - _t7 * _t6;
     const double _t13 = sqrt(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-    const double _t14 = 6.2831853071795862 * (t * 0.5) * ((fabs(_t13) <= 1.7320525396196846) ? _t13 : ((_t13 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    const double _t14 = ((_t13 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t13) ? _t13 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t * 0.5));
     return (_t9 - _t14) * (_t14 + _t9);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 92
+ * Total ops: 95
  */
 static inline void gyroid_o1_normal(double x, double y, double z, double h, double n[3])
 {
@@ -175,29 +178,32 @@ static inline void gyroid_o1_normal(double x, double y, double z, double h, doub
     const double _t11 = _t4 * _t8 - _t9 * _t3;
     const double _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
     const double _t13 = sqrt(_t12);
-    const int _t14 = fabs(_t13) <= 1.7320525396196846;
-    const double _t15 = 6.2831853071795862 * h;
-    const double _t16 = 1.0 / _t13;
-    const double _t17 = _t4 * _t9;
-    const double _t18 = _t1 * _t8;
-    const double _t19 = _t1 * _t6;
-    const double _t20 = _t4 * _t3;
-    const double _t21 = (_t14) ? _t7 - _t15 * (_t16 * (_t17 * _t10 + _t18 * _t11 - _t7 * (_t19 + _t20))) : _t7;
-    const double _t22 = _t9 * _t8;
-    const double _t23 = _t6 * _t3;
-    const double _t24 = (_t14) ? -(_t15 * (_t16 * ((_t20 + _t22) * _t11 + _t10 * _t23 - _t7 * _t18)) + _t11) : -_t11;
-    const double _t25 = (_t14) ? _t15 * (_t16 * (_t7 * _t17 - _t23 * _t11 - _t10 * (_t19 + _t22))) - _t10 : -_t10;
-    const double _t26 = _t21 * _t21 + _t24 * _t24 + _t25 * _t25;
-    const int _t27 = _t26 > 0.0;
-    const int _t28 = _t26 <= 1.0e+30;
-    const double _t29 = 1.0 / sqrt(_t26);
-    const double _t30 = (_t12 > 0.0) ? _t16 : 0.0;
-    const double _t31 = -(_t30 * _t11);
-    const double _t32 = -(_t10 * _t30);
-    const double _t33 = _t7 * _t30;
-    n[0] = (_t27) ? ((_t28) ? _t29 * _t24 : _t31) : _t31;
-    n[1] = (_t27) ? ((_t28) ? _t25 * _t29 : _t32) : _t32;
-    n[2] = (_t27) ? ((_t28) ? _t21 * _t29 : _t33) : _t33;
+    const int _t14 = _t13 <= 1.7320525396196846;
+    const int _t15 = (-1.7320525396196846) <= _t13;
+    const double _t16 = 6.2831853071795862 * h;
+    const double _t17 = 1.0 / _t13;
+    const double _t18 = _t4 * _t9;
+    const double _t19 = _t1 * _t8;
+    const double _t20 = _t1 * _t6;
+    const double _t21 = _t4 * _t3;
+    const double _t22 = (_t14) ? ((_t15) ? _t7 - _t16 * (_t17 * (_t18 * _t10 + _t19 * _t11 - _t7 * (_t20 + _t21))) : _t7) : _t7;
+    const double _t23 = _t9 * _t8;
+    const double _t24 = _t6 * _t3;
+    const double _t25 = -_t11;
+    const double _t26 = (_t14) ? ((_t15) ? -(_t16 * (_t17 * ((_t21 + _t23) * _t11 + _t10 * _t24 - _t7 * _t19)) + _t11) : _t25) : _t25;
+    const double _t27 = -_t10;
+    const double _t28 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t7 * _t18 - _t24 * _t11 - _t10 * (_t20 + _t23))) - _t10 : _t27) : _t27;
+    const double _t29 = _t22 * _t22 + _t26 * _t26 + _t28 * _t28;
+    const int _t30 = _t29 > 0.0;
+    const int _t31 = _t29 <= 1.0e+30;
+    const double _t32 = 1.0 / sqrt(_t29);
+    const double _t33 = (_t12 > 0.0) ? _t17 : 0.0;
+    const double _t34 = -(_t33 * _t11);
+    const double _t35 = -(_t10 * _t33);
+    const double _t36 = _t7 * _t33;
+    n[0] = (_t30) ? ((_t31) ? _t26 * _t32 : _t34) : _t34;
+    n[1] = (_t30) ? ((_t31) ? _t28 * _t32 : _t35) : _t35;
+    n[2] = (_t30) ? ((_t31) ? _t22 * _t32 : _t36) : _t36;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -260,7 +266,7 @@ static inline float gyroid_o1_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 37
+ * Total ops: 36
  */
 static inline float gyroid_o1_offsetf(float x, float y, float z, float h)
 {
@@ -277,11 +283,11 @@ static inline float gyroid_o1_offsetf(float x, float y, float z, float h)
     const float _t10 = _t3 * _t8 - _t1 * _t7;
     const float _t11 = _t4 * _t8 - _t7 * _t6;
     const float _t12 = sqrtf(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.28318548f * h * ((fabsf(_t12) <= 1.73205256f) ? _t12 : ((_t12 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.28318548f * h * ((_t12 <= 1.73205256f) ? (((-1.73205256f) <= _t12) ? _t12 : (-1.73205256f)) : 1.73205256f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 40
+ * Total ops: 39
  */
 static inline float gyroid_o1_shellf(float x, float y, float z, float t)
 {
@@ -299,12 +305,12 @@ static inline float gyroid_o1_shellf(float x, float y, float z, float t)
     const float _t11 = _t3 * _t8 - _t1 * _t7;
     const float _t12 = _t4 * _t8 - _t7 * _t6;
     const float _t13 = sqrtf(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-    const float _t14 = 6.28318548f * (t * 0.5f) * ((fabsf(_t13) <= 1.73205256f) ? _t13 : ((_t13 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    const float _t14 = ((_t13 <= 1.73205256f) ? (((-1.73205256f) <= _t13) ? _t13 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t * 0.5f));
     return (_t9 - _t14) * (_t14 + _t9);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 92
+ * Total ops: 95
  */
 static inline void gyroid_o1_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -322,29 +328,32 @@ static inline void gyroid_o1_normalf(float x, float y, float z, float h, float n
     const float _t11 = _t4 * _t8 - _t9 * _t3;
     const float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
     const float _t13 = sqrtf(_t12);
-    const int _t14 = fabsf(_t13) <= 1.73205256f;
-    const float _t15 = 6.28318548f * h;
-    const float _t16 = 1.0f / _t13;
-    const float _t17 = _t4 * _t9;
-    const float _t18 = _t1 * _t8;
-    const float _t19 = _t1 * _t6;
-    const float _t20 = _t4 * _t3;
-    const float _t21 = (_t14) ? _t7 - _t15 * (_t16 * (_t17 * _t10 + _t18 * _t11 - _t7 * (_t19 + _t20))) : _t7;
-    const float _t22 = _t9 * _t8;
-    const float _t23 = _t6 * _t3;
-    const float _t24 = (_t14) ? -(_t15 * (_t16 * ((_t20 + _t22) * _t11 + _t10 * _t23 - _t7 * _t18)) + _t11) : -_t11;
-    const float _t25 = (_t14) ? _t15 * (_t16 * (_t7 * _t17 - _t23 * _t11 - _t10 * (_t19 + _t22))) - _t10 : -_t10;
-    const float _t26 = _t21 * _t21 + _t24 * _t24 + _t25 * _t25;
-    const int _t27 = _t26 > 0.0f;
-    const int _t28 = _t26 <= 1.00000002e+30f;
-    const float _t29 = 1.0f / sqrtf(_t26);
-    const float _t30 = (_t12 > 0.0f) ? _t16 : 0.0f;
-    const float _t31 = -(_t30 * _t11);
-    const float _t32 = -(_t10 * _t30);
-    const float _t33 = _t7 * _t30;
-    n[0] = (_t27) ? ((_t28) ? _t29 * _t24 : _t31) : _t31;
-    n[1] = (_t27) ? ((_t28) ? _t25 * _t29 : _t32) : _t32;
-    n[2] = (_t27) ? ((_t28) ? _t21 * _t29 : _t33) : _t33;
+    const int _t14 = _t13 <= 1.73205256f;
+    const int _t15 = (-1.73205256f) <= _t13;
+    const float _t16 = 6.28318548f * h;
+    const float _t17 = 1.0f / _t13;
+    const float _t18 = _t4 * _t9;
+    const float _t19 = _t1 * _t8;
+    const float _t20 = _t1 * _t6;
+    const float _t21 = _t4 * _t3;
+    const float _t22 = (_t14) ? ((_t15) ? _t7 - _t16 * (_t17 * (_t18 * _t10 + _t19 * _t11 - _t7 * (_t20 + _t21))) : _t7) : _t7;
+    const float _t23 = _t9 * _t8;
+    const float _t24 = _t6 * _t3;
+    const float _t25 = -_t11;
+    const float _t26 = (_t14) ? ((_t15) ? -(_t16 * (_t17 * ((_t21 + _t23) * _t11 + _t10 * _t24 - _t7 * _t19)) + _t11) : _t25) : _t25;
+    const float _t27 = -_t10;
+    const float _t28 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t7 * _t18 - _t24 * _t11 - _t10 * (_t20 + _t23))) - _t10 : _t27) : _t27;
+    const float _t29 = _t22 * _t22 + _t26 * _t26 + _t28 * _t28;
+    const int _t30 = _t29 > 0.0f;
+    const int _t31 = _t29 <= 1.00000002e+30f;
+    const float _t32 = 1.0f / sqrtf(_t29);
+    const float _t33 = (_t12 > 0.0f) ? _t17 : 0.0f;
+    const float _t34 = -(_t33 * _t11);
+    const float _t35 = -(_t10 * _t33);
+    const float _t36 = _t7 * _t33;
+    n[0] = (_t30) ? ((_t31) ? _t26 * _t32 : _t34) : _t34;
+    n[1] = (_t30) ? ((_t31) ? _t28 * _t32 : _t35) : _t35;
+    n[2] = (_t30) ? ((_t31) ? _t22 * _t32 : _t36) : _t36;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -462,7 +471,7 @@ static inline void gyroid_o1_offset_n(size_t n, const double *x, const double *y
         const double _t10 = _t3 * _t8 - _t1 * _t7;
         const double _t11 = _t4 * _t8 - _t7 * _t6;
         const double _t12 = sqrt(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-        out[i] = _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.2831853071795862 * h[i] * ((fabs(_t12) <= 1.7320525396196846) ? _t12 : ((_t12 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        out[i] = _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.2831853071795862 * h[i] * ((_t12 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t12) ? _t12 : (-1.7320525396196846)) : 1.7320525396196846);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = gyroid_o1_offset(x[i], y[i], z[i], h[i]);
@@ -491,7 +500,7 @@ static inline void gyroid_o1_shell_n(size_t n, const double *x, const double *y,
         const double _t11 = _t3 * _t8 - _t1 * _t7;
         const double _t12 = _t4 * _t8 - _t7 * _t6;
         const double _t13 = sqrt(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-        const double _t14 = 6.2831853071795862 * (t[i] * 0.5) * ((fabs(_t13) <= 1.7320525396196846) ? _t13 : ((_t13 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        const double _t14 = ((_t13 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t13) ? _t13 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t[i] * 0.5));
         out[i] = (_t9 - _t14) * (_t14 + _t9);
     }
     for (i = 0; i < n; ++i) {
@@ -520,7 +529,7 @@ static inline void gyroid_o1_offsetf_n(size_t n, const float *x, const float *y,
         const float _t10 = _t3 * _t8 - _t1 * _t7;
         const float _t11 = _t4 * _t8 - _t7 * _t6;
         const float _t12 = sqrtf(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-        out[i] = _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.28318548f * h[i] * ((fabsf(_t12) <= 1.73205256f) ? _t12 : ((_t12 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        out[i] = _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.28318548f * h[i] * ((_t12 <= 1.73205256f) ? (((-1.73205256f) <= _t12) ? _t12 : (-1.73205256f)) : 1.73205256f);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o1_offsetf(x[i], y[i], z[i], h[i]);
@@ -549,7 +558,7 @@ static inline void gyroid_o1_shellf_n(size_t n, const float *x, const float *y, 
         const float _t11 = _t3 * _t8 - _t1 * _t7;
         const float _t12 = _t4 * _t8 - _t7 * _t6;
         const float _t13 = sqrtf(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-        const float _t14 = 6.28318548f * (t[i] * 0.5f) * ((fabsf(_t13) <= 1.73205256f) ? _t13 : ((_t13 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        const float _t14 = ((_t13 <= 1.73205256f) ? (((-1.73205256f) <= _t13) ? _t13 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t[i] * 0.5f));
         out[i] = (_t9 - _t14) * (_t14 + _t9);
     }
     for (i = 0; i < n; ++i) {

@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^3) of the exact offset; relative thickness error ~ (h/L)^2.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: gyroid_o2_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 2.000002 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 14
-    - offset: 74
-    - shell: 92
-    - normal: 207
+    - offset: 82
+    - shell: 99
+    - normal: 232
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":74,"shell":92,"normal":207}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":82,"shell":99,"normal":232}} */
 #ifndef OFFSETGEN_GYROID_O2_GLSL
 #define OFFSETGEN_GYROID_O2_GLSL
 
@@ -47,7 +48,7 @@ highp float gyroid_o2_field(highp vec3 p)
     return cos(_t0) * sin(_t1) + sin(_t0) * cos(_t2) + cos(_t1) * sin(_t2);
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 74.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 82.
 highp float gyroid_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -67,59 +68,71 @@ highp float gyroid_o2_offset(highp vec3 p, highp float h)
     highp float _t14 = _t1 * _t7 - _t5 * _t3;
     highp float _t15 = _t3 * _t11 - _t1 * _t10;
     highp float _t16 = _t5 * _t11 - _t10 * _t7;
-    highp float _t17 = 1.0 / sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
-    highp float _t18 = _t3 * _t7;
-    highp float _t19 = _t1 * _t11;
-    highp float _t20 = _t13 * 0.5;
-    highp float _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
-    highp float _t22 = _t5 * _t10;
-    highp float _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
-    highp float _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
-    highp float _t25 = sqrt(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
-    return _t9 + _t12 - _t13 * ((abs(_t25) <= 1.73205256) ? _t25 : ((_t25 > 0.0) ? 1.73205256 : (-1.73205256)));
+    highp float _t17 = sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
+    highp float _t18 = 1.0 / _t17;
+    highp float _t19 = _t3 * _t7;
+    highp float _t20 = _t1 * _t11;
+    highp float _t21 = _t13 * 0.5;
+    highp float _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
+    highp float _t23 = _t5 * _t10;
+    highp float _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
+    highp float _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
+    highp float _t26 = sqrt(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
+    highp float _t27 = abs(_t13);
+    highp float _t28 = _t17 + _t27 * 1.00000095;
+    highp float _t29 = (_t28 <= 1.73205256) ? _t28 : 1.73205256;
+    highp float _t30 = _t17 - _t27 * 3.0000031;
+    highp float _t31 = ((-1.73205256) <= _t30) ? _t30 : (-1.73205256);
+    return _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 92.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 99.
 highp float gyroid_o2_shell(highp vec3 p, highp float t)
 {
-    highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = cos(_t0);
-    highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = sin(_t2);
-    highp float _t4 = _t1 * _t3;
-    highp float _t5 = sin(_t0);
-    highp float _t6 = 6.28318548 * p.x;
-    highp float _t7 = cos(_t6);
-    highp float _t8 = _t5 * _t7;
-    highp float _t9 = _t4 + _t8;
-    highp float _t10 = cos(_t2);
-    highp float _t11 = sin(_t6);
-    highp float _t12 = _t10 * _t11;
-    highp float _t13 = _t9 + _t12;
-    highp float _t14 = _t3 * _t11 - _t1 * _t10;
-    highp float _t15 = 6.28318548 * (t * 0.5);
-    highp float _t16 = _t15 * 0.5;
-    highp float _t17 = _t1 * _t7 - _t5 * _t3;
-    highp float _t18 = _t5 * _t11 - _t10 * _t7;
-    highp float _t19 = 1.0 / sqrt(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
-    highp float _t20 = _t5 * _t10;
-    highp float _t21 = _t3 * _t7;
-    highp float _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
-    highp float _t23 = _t14 - _t22;
-    highp float _t24 = _t1 * _t11;
-    highp float _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
-    highp float _t26 = _t25 + _t18;
-    highp float _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
-    highp float _t28 = _t17 - _t27;
-    highp float _t29 = sqrt(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-    highp float _t30 = _t25 - _t18;
-    highp float _t31 = _t17 + _t27;
-    highp float _t32 = _t14 + _t22;
-    highp float _t33 = sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-    return (_t13 - ((abs(_t29) <= 1.73205256) ? _t29 : ((_t29 > 0.0) ? 1.73205256 : (-1.73205256))) * _t15) * (((abs(_t33) <= 1.73205256) ? _t33 : ((_t33 > 0.0) ? 1.73205256 : (-1.73205256))) * _t15 + _t13);
+    highp float _t0 = 6.28318548 * (t * 0.5);
+    highp float _t1 = _t0 * 0.5;
+    highp float _t2 = p.z * 6.28318548;
+    highp float _t3 = cos(_t2);
+    highp float _t4 = 6.28318548 * p.x;
+    highp float _t5 = cos(_t4);
+    highp float _t6 = sin(_t2);
+    highp float _t7 = 6.28318548 * p.y;
+    highp float _t8 = sin(_t7);
+    highp float _t9 = _t3 * _t5 - _t6 * _t8;
+    highp float _t10 = sin(_t4);
+    highp float _t11 = cos(_t7);
+    highp float _t12 = _t8 * _t10 - _t3 * _t11;
+    highp float _t13 = _t6 * _t10 - _t11 * _t5;
+    highp float _t14 = sqrt(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
+    highp float _t15 = 1.0 / _t14;
+    highp float _t16 = _t6 * _t5;
+    highp float _t17 = _t11 * _t10;
+    highp float _t18 = _t8 * _t5;
+    highp float _t19 = _t3 * _t10;
+    highp float _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
+    highp float _t21 = _t20 - _t13;
+    highp float _t22 = _t6 * _t11;
+    highp float _t23 = _t3 * _t8;
+    highp float _t24 = _t23 + _t16;
+    highp float _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
+    highp float _t26 = _t9 + _t25;
+    highp float _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
+    highp float _t28 = _t12 + _t27;
+    highp float _t29 = sqrt(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
+    highp float _t30 = abs(_t0);
+    highp float _t31 = _t30 * 1.00000095 + _t14;
+    highp float _t32 = (_t31 <= 1.73205256) ? _t31 : 1.73205256;
+    highp float _t33 = _t14 - 3.0000031 * _t30;
+    highp float _t34 = ((-1.73205256) <= _t33) ? _t33 : (-1.73205256);
+    highp float _t35 = _t24 + _t17;
+    highp float _t36 = _t12 - _t27;
+    highp float _t37 = _t20 + _t13;
+    highp float _t38 = _t9 - _t25;
+    highp float _t39 = sqrt(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
+    return (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 207.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 232.
 highp vec3 gyroid_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -144,45 +157,57 @@ highp vec3 gyroid_o2_normal(highp vec3 p, highp float h)
     highp float _t19 = _t17 - _t18;
     highp float _t20 = _t19 * _t19;
     highp float _t21 = _t10 + _t16 + _t20;
-    highp float _t22 = 1.0 / sqrt(_t21);
-    highp float _t23 = _t5 * _t3;
-    highp float _t24 = _t13 * _t11;
-    highp float _t25 = _t23 + _t24;
-    highp float _t26 = _t7 * _t3;
-    highp float _t27 = _t1 * _t11;
-    highp float _t28 = _t22 * (_t25 * _t19 + _t15 * _t26 - _t9 * _t27);
-    highp float _t29 = 6.28318548 * h;
-    highp float _t30 = _t29 * 0.5;
-    highp float _t31 = _t28 * _t30 + _t19;
-    highp float _t32 = _t5 * _t13;
-    highp float _t33 = _t1 * _t7;
-    highp float _t34 = _t33 + _t23;
-    highp float _t35 = _t22 * (_t32 * _t15 + _t27 * _t19 - _t9 * _t34);
-    highp float _t36 = _t9 - _t35 * _t30;
-    highp float _t37 = _t33 + _t24;
-    highp float _t38 = _t22 * (_t9 * _t32 - _t26 * _t19 - _t15 * _t37);
-    highp float _t39 = _t38 * _t30 - _t15;
-    highp float _t40 = sqrt(_t31 * _t31 + _t36 * _t36 + _t39 * _t39);
-    bool _t41 = abs(_t40) <= 1.73205256;
-    highp float _t42 = _t27 + _t22 * (_t34 * _t27 + _t25 * _t27 + _t9 * _t17 + _t19 * _t4 + _t32 * _t26 - _t35 * _t28) * _t30;
-    highp float _t43 = _t22 * (_t38 * _t28 + (_t32 * _t27 + _t25 * _t26 + _t15 * _t18 + _t37 * _t26 - _t12 * _t19)) * _t30 + _t26;
-    highp float _t44 = _t27 * _t27;
-    highp float _t45 = _t26 * _t26;
-    highp float _t46 = 1.0 / _t40;
-    highp float _t47 = (_t41) ? _t29 * ((_t36 * _t42 + _t43 * _t39 - _t31 * (_t22 * (_t25 * _t25 + (_t44 + _t45) - _t15 * _t12 - _t20 - _t9 * _t4 - _t28 * _t28) * _t30 + _t25)) * _t46) - _t19 : -_t19;
-    highp float _t48 = _t32 - _t22 * (_t15 * _t8 + _t9 * _t14 - _t32 * _t34 - _t27 * _t26 - _t32 * _t37 - _t38 * _t35) * _t30;
-    highp float _t49 = _t32 * _t32;
-    highp float _t50 = (_t41) ? _t29 * ((_t48 * _t36 - (_t22 * (_t38 * _t38 - (_t49 + _t9 * _t8 + _t45 + _t18 * _t19 + _t37 * _t37 - _t16)) * _t30 - _t37) * _t39 - _t43 * _t31) * _t46) - _t15 : -_t15;
-    highp float _t51 = (_t41) ? _t9 + _t29 * (((_t34 + _t22 * (_t34 * _t34 + (_t44 + _t49) + _t15 * _t14 - _t17 * _t19 - _t10 - _t35 * _t35) * _t30) * _t36 + _t48 * _t39 - _t31 * _t42) * _t46) : _t9;
-    highp float _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
-    bool _t53 = _t52 > 0.0;
-    bool _t54 = _t52 <= 1.00000002e+30;
-    highp float _t55 = 1.0 / sqrt(_t52);
-    highp float _t56 = (_t21 > 0.0) ? _t22 : 0.0;
-    highp float _t57 = -(_t56 * _t19);
-    highp float _t58 = -(_t15 * _t56);
-    highp float _t59 = _t9 * _t56;
-    return vec3((_t53) ? ((_t54) ? _t55 * _t47 : _t57) : _t57, (_t53) ? ((_t54) ? _t55 * _t50 : _t58) : _t58, (_t53) ? ((_t54) ? _t51 * _t55 : _t59) : _t59);
+    highp float _t22 = sqrt(_t21);
+    highp float _t23 = 1.0 / _t22;
+    highp float _t24 = _t5 * _t3;
+    highp float _t25 = _t13 * _t11;
+    highp float _t26 = _t24 + _t25;
+    highp float _t27 = _t7 * _t3;
+    highp float _t28 = _t1 * _t11;
+    highp float _t29 = _t23 * (_t26 * _t19 + _t15 * _t27 - _t9 * _t28);
+    highp float _t30 = 6.28318548 * h;
+    highp float _t31 = _t30 * 0.5;
+    highp float _t32 = _t29 * _t31 + _t19;
+    highp float _t33 = _t5 * _t13;
+    highp float _t34 = _t1 * _t7;
+    highp float _t35 = _t34 + _t24;
+    highp float _t36 = _t23 * (_t33 * _t15 + _t28 * _t19 - _t9 * _t35);
+    highp float _t37 = _t9 - _t36 * _t31;
+    highp float _t38 = _t34 + _t25;
+    highp float _t39 = _t23 * (_t9 * _t33 - _t27 * _t19 - _t15 * _t38);
+    highp float _t40 = _t39 * _t31 - _t15;
+    highp float _t41 = sqrt(_t32 * _t32 + _t37 * _t37 + _t40 * _t40);
+    highp float _t42 = abs(_t30);
+    highp float _t43 = _t22 + _t42 * 1.00000095;
+    bool _t44 = _t43 <= 1.73205256;
+    bool _t45 = _t41 <= ((_t44) ? _t43 : 1.73205256);
+    highp float _t46 = _t22 - _t42 * 3.0000031;
+    bool _t47 = (-1.73205256) <= _t46;
+    bool _t48 = ((_t47) ? _t46 : (-1.73205256)) <= _t41;
+    highp float _t49 = _t33 - _t23 * (_t15 * _t8 + _t9 * _t14 - _t33 * _t35 - _t28 * _t27 - _t33 * _t38 - _t39 * _t36) * _t31;
+    highp float _t50 = _t33 * _t33;
+    highp float _t51 = _t27 * _t27;
+    highp float _t52 = _t23 * (_t39 * _t29 + (_t33 * _t28 + _t26 * _t27 + _t15 * _t18 + _t38 * _t27 - _t12 * _t19)) * _t31 + _t27;
+    highp float _t53 = 1.0 / _t41;
+    highp float _t54 = _t30 * _t39 - _t15;
+    highp float _t55 = -_t15;
+    highp float _t56 = (_t45) ? ((_t48) ? _t30 * ((_t49 * _t37 - (_t23 * (_t39 * _t39 - (_t50 + _t9 * _t8 + _t51 + _t18 * _t19 + _t38 * _t38 - _t16)) * _t31 - _t38) * _t40 - _t52 * _t32) * _t53) - _t15 : ((_t47) ? _t54 : _t55)) : ((_t44) ? _t54 : _t55);
+    highp float _t57 = _t28 + _t23 * (_t35 * _t28 + _t26 * _t28 + _t9 * _t17 + _t19 * _t4 + _t33 * _t27 - _t36 * _t29) * _t31;
+    highp float _t58 = _t28 * _t28;
+    highp float _t59 = -(_t30 * _t29 + _t19);
+    highp float _t60 = -_t19;
+    highp float _t61 = (_t45) ? ((_t48) ? _t30 * ((_t37 * _t57 + _t52 * _t40 - _t32 * (_t23 * (_t26 * _t26 + (_t58 + _t51) - _t15 * _t12 - _t20 - _t9 * _t4 - _t29 * _t29) * _t31 + _t26)) * _t53) - _t19 : ((_t47) ? _t59 : _t60)) : ((_t44) ? _t59 : _t60);
+    highp float _t62 = _t9 - _t30 * _t36;
+    highp float _t63 = (_t45) ? ((_t48) ? _t9 + _t30 * (((_t35 + _t23 * (_t35 * _t35 + (_t58 + _t50) + _t15 * _t14 - _t17 * _t19 - _t10 - _t36 * _t36) * _t31) * _t37 + _t49 * _t40 - _t32 * _t57) * _t53) : ((_t47) ? _t62 : _t9)) : ((_t44) ? _t62 : _t9);
+    highp float _t64 = _t56 * _t56 + _t61 * _t61 + _t63 * _t63;
+    bool _t65 = _t64 > 0.0;
+    bool _t66 = _t64 <= 1.00000002e+30;
+    highp float _t67 = 1.0 / sqrt(_t64);
+    highp float _t68 = (_t21 > 0.0) ? _t23 : 0.0;
+    highp float _t69 = -(_t68 * _t19);
+    highp float _t70 = -(_t15 * _t68);
+    highp float _t71 = _t9 * _t68;
+    return vec3((_t65) ? ((_t66) ? _t61 * _t67 : _t69) : _t69, (_t65) ? ((_t66) ? _t56 * _t67 : _t70) : _t70, (_t65) ? ((_t66) ? _t63 * _t67 : _t71) : _t71);
 }
 
 

@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to gyroid_o2_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 1.7320525396196846 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
+ *   and H = 2.0000020000000003 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    14
- *   offset   74
- *   shell    92
- *   normal   207
+ *   offset   82
+ *   shell    99
+ *   normal   232
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":14,"offset":74,"shell":92,"normal":207}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":82,"shell":99,"normal":232}} */
 #ifndef OFFSETGEN_GYROID_O2_H
 #define OFFSETGEN_GYROID_O2_H
 
@@ -113,7 +116,7 @@ static inline double gyroid_o2_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 74
+ * Total ops: 82
  */
 static inline double gyroid_o2_offset(double x, double y, double z, double h)
 {
@@ -134,62 +137,74 @@ static inline double gyroid_o2_offset(double x, double y, double z, double h)
     const double _t14 = _t1 * _t7 - _t5 * _t3;
     const double _t15 = _t3 * _t11 - _t1 * _t10;
     const double _t16 = _t5 * _t11 - _t10 * _t7;
-    const double _t17 = 1.0 / sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
-    const double _t18 = _t3 * _t7;
-    const double _t19 = _t1 * _t11;
-    const double _t20 = _t13 * 0.5;
-    const double _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
-    const double _t22 = _t5 * _t10;
-    const double _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
-    const double _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
-    const double _t25 = sqrt(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
-    return _t9 + _t12 - _t13 * ((fabs(_t25) <= 1.7320525396196846) ? _t25 : ((_t25 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    const double _t17 = sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
+    const double _t18 = 1.0 / _t17;
+    const double _t19 = _t3 * _t7;
+    const double _t20 = _t1 * _t11;
+    const double _t21 = _t13 * 0.5;
+    const double _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
+    const double _t23 = _t5 * _t10;
+    const double _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
+    const double _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
+    const double _t26 = sqrt(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
+    const double _t27 = fabs(_t13);
+    const double _t28 = _t17 + _t27 * 1.0000010000000001;
+    const double _t29 = (_t28 <= 1.7320525396196846) ? _t28 : 1.7320525396196846;
+    const double _t30 = _t17 - _t27 * 3.0000030000000004;
+    const double _t31 = ((-1.7320525396196846) <= _t30) ? _t30 : (-1.7320525396196846);
+    return _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 92
+ * Total ops: 99
  */
 static inline double gyroid_o2_shell(double x, double y, double z, double t)
 {
-    const double _t0 = z * 6.2831853071795862;
-    const double _t1 = offsetgen_cos(_t0);
-    const double _t2 = 6.2831853071795862 * y;
-    const double _t3 = offsetgen_sin(_t2);
-    const double _t4 = _t1 * _t3;
-    const double _t5 = offsetgen_sin(_t0);
-    const double _t6 = 6.2831853071795862 * x;
-    const double _t7 = offsetgen_cos(_t6);
-    const double _t8 = _t5 * _t7;
-    const double _t9 = _t4 + _t8;
-    const double _t10 = offsetgen_cos(_t2);
-    const double _t11 = offsetgen_sin(_t6);
-    const double _t12 = _t10 * _t11;
-    const double _t13 = _t9 + _t12;
-    const double _t14 = _t3 * _t11 - _t1 * _t10;
-    const double _t15 = 6.2831853071795862 * (t * 0.5);
-    const double _t16 = _t15 * 0.5;
-    const double _t17 = _t1 * _t7 - _t5 * _t3;
-    const double _t18 = _t5 * _t11 - _t10 * _t7;
-    const double _t19 = 1.0 / sqrt(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
-    const double _t20 = _t5 * _t10;
-    const double _t21 = _t3 * _t7;
-    const double _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
-    const double _t23 = _t14 - _t22;
-    const double _t24 = _t1 * _t11;
-    const double _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
-    const double _t26 = _t25 + _t18;
-    const double _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
-    const double _t28 = _t17 - _t27;
-    const double _t29 = sqrt(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-    const double _t30 = _t25 - _t18;
-    const double _t31 = _t17 + _t27;
-    const double _t32 = _t14 + _t22;
-    const double _t33 = sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-    return (_t13 - ((fabs(_t29) <= 1.7320525396196846) ? _t29 : ((_t29 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t15) * (((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t15 + _t13);
+    const double _t0 = 6.2831853071795862 * (t * 0.5);
+    const double _t1 = _t0 * 0.5;
+    const double _t2 = z * 6.2831853071795862;
+    const double _t3 = offsetgen_cos(_t2);
+    const double _t4 = 6.2831853071795862 * x;
+    const double _t5 = offsetgen_cos(_t4);
+    const double _t6 = offsetgen_sin(_t2);
+    const double _t7 = 6.2831853071795862 * y;
+    const double _t8 = offsetgen_sin(_t7);
+    const double _t9 = _t3 * _t5 - _t6 * _t8;
+    const double _t10 = offsetgen_sin(_t4);
+    const double _t11 = offsetgen_cos(_t7);
+    const double _t12 = _t8 * _t10 - _t3 * _t11;
+    const double _t13 = _t6 * _t10 - _t11 * _t5;
+    const double _t14 = sqrt(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
+    const double _t15 = 1.0 / _t14;
+    const double _t16 = _t6 * _t5;
+    const double _t17 = _t11 * _t10;
+    const double _t18 = _t8 * _t5;
+    const double _t19 = _t3 * _t10;
+    const double _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
+    const double _t21 = _t20 - _t13;
+    const double _t22 = _t6 * _t11;
+    const double _t23 = _t3 * _t8;
+    const double _t24 = _t23 + _t16;
+    const double _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
+    const double _t26 = _t9 + _t25;
+    const double _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
+    const double _t28 = _t12 + _t27;
+    const double _t29 = sqrt(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
+    const double _t30 = fabs(_t0);
+    const double _t31 = _t30 * 1.0000010000000001 + _t14;
+    const double _t32 = (_t31 <= 1.7320525396196846) ? _t31 : 1.7320525396196846;
+    const double _t33 = _t14 - 3.0000030000000004 * _t30;
+    const double _t34 = ((-1.7320525396196846) <= _t33) ? _t33 : (-1.7320525396196846);
+    const double _t35 = _t24 + _t17;
+    const double _t36 = _t12 - _t27;
+    const double _t37 = _t20 + _t13;
+    const double _t38 = _t9 - _t25;
+    const double _t39 = sqrt(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
+    return (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 207
+ * Total ops: 232
  */
 static inline void gyroid_o2_normal(double x, double y, double z, double h, double n[3])
 {
@@ -215,47 +230,59 @@ static inline void gyroid_o2_normal(double x, double y, double z, double h, doub
     const double _t19 = _t17 - _t18;
     const double _t20 = _t19 * _t19;
     const double _t21 = _t10 + _t16 + _t20;
-    const double _t22 = 1.0 / sqrt(_t21);
-    const double _t23 = _t5 * _t3;
-    const double _t24 = _t13 * _t11;
-    const double _t25 = _t23 + _t24;
-    const double _t26 = _t7 * _t3;
-    const double _t27 = _t1 * _t11;
-    const double _t28 = _t22 * (_t25 * _t19 + _t15 * _t26 - _t9 * _t27);
-    const double _t29 = 6.2831853071795862 * h;
-    const double _t30 = _t29 * 0.5;
-    const double _t31 = _t28 * _t30 + _t19;
-    const double _t32 = _t5 * _t13;
-    const double _t33 = _t1 * _t7;
-    const double _t34 = _t33 + _t23;
-    const double _t35 = _t22 * (_t32 * _t15 + _t27 * _t19 - _t9 * _t34);
-    const double _t36 = _t9 - _t35 * _t30;
-    const double _t37 = _t33 + _t24;
-    const double _t38 = _t22 * (_t9 * _t32 - _t26 * _t19 - _t15 * _t37);
-    const double _t39 = _t38 * _t30 - _t15;
-    const double _t40 = sqrt(_t31 * _t31 + _t36 * _t36 + _t39 * _t39);
-    const int _t41 = fabs(_t40) <= 1.7320525396196846;
-    const double _t42 = _t27 + _t22 * (_t34 * _t27 + _t25 * _t27 + _t9 * _t17 + _t19 * _t4 + _t32 * _t26 - _t35 * _t28) * _t30;
-    const double _t43 = _t22 * (_t38 * _t28 + (_t32 * _t27 + _t25 * _t26 + _t15 * _t18 + _t37 * _t26 - _t12 * _t19)) * _t30 + _t26;
-    const double _t44 = _t27 * _t27;
-    const double _t45 = _t26 * _t26;
-    const double _t46 = 1.0 / _t40;
-    const double _t47 = (_t41) ? _t29 * ((_t36 * _t42 + _t43 * _t39 - _t31 * (_t22 * (_t25 * _t25 + (_t44 + _t45) - _t15 * _t12 - _t20 - _t9 * _t4 - _t28 * _t28) * _t30 + _t25)) * _t46) - _t19 : -_t19;
-    const double _t48 = _t32 - _t22 * (_t15 * _t8 + _t9 * _t14 - _t32 * _t34 - _t27 * _t26 - _t32 * _t37 - _t38 * _t35) * _t30;
-    const double _t49 = _t32 * _t32;
-    const double _t50 = (_t41) ? _t29 * ((_t48 * _t36 - (_t22 * (_t38 * _t38 - (_t49 + _t9 * _t8 + _t45 + _t18 * _t19 + _t37 * _t37 - _t16)) * _t30 - _t37) * _t39 - _t43 * _t31) * _t46) - _t15 : -_t15;
-    const double _t51 = (_t41) ? _t9 + _t29 * (((_t34 + _t22 * (_t34 * _t34 + (_t44 + _t49) + _t15 * _t14 - _t17 * _t19 - _t10 - _t35 * _t35) * _t30) * _t36 + _t48 * _t39 - _t31 * _t42) * _t46) : _t9;
-    const double _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
-    const int _t53 = _t52 > 0.0;
-    const int _t54 = _t52 <= 1.0e+30;
-    const double _t55 = 1.0 / sqrt(_t52);
-    const double _t56 = (_t21 > 0.0) ? _t22 : 0.0;
-    const double _t57 = -(_t56 * _t19);
-    const double _t58 = -(_t15 * _t56);
-    const double _t59 = _t9 * _t56;
-    n[0] = (_t53) ? ((_t54) ? _t55 * _t47 : _t57) : _t57;
-    n[1] = (_t53) ? ((_t54) ? _t55 * _t50 : _t58) : _t58;
-    n[2] = (_t53) ? ((_t54) ? _t51 * _t55 : _t59) : _t59;
+    const double _t22 = sqrt(_t21);
+    const double _t23 = 1.0 / _t22;
+    const double _t24 = _t5 * _t3;
+    const double _t25 = _t13 * _t11;
+    const double _t26 = _t24 + _t25;
+    const double _t27 = _t7 * _t3;
+    const double _t28 = _t1 * _t11;
+    const double _t29 = _t23 * (_t26 * _t19 + _t15 * _t27 - _t9 * _t28);
+    const double _t30 = 6.2831853071795862 * h;
+    const double _t31 = _t30 * 0.5;
+    const double _t32 = _t29 * _t31 + _t19;
+    const double _t33 = _t5 * _t13;
+    const double _t34 = _t1 * _t7;
+    const double _t35 = _t34 + _t24;
+    const double _t36 = _t23 * (_t33 * _t15 + _t28 * _t19 - _t9 * _t35);
+    const double _t37 = _t9 - _t36 * _t31;
+    const double _t38 = _t34 + _t25;
+    const double _t39 = _t23 * (_t9 * _t33 - _t27 * _t19 - _t15 * _t38);
+    const double _t40 = _t39 * _t31 - _t15;
+    const double _t41 = sqrt(_t32 * _t32 + _t37 * _t37 + _t40 * _t40);
+    const double _t42 = fabs(_t30);
+    const double _t43 = _t22 + _t42 * 1.0000010000000001;
+    const int _t44 = _t43 <= 1.7320525396196846;
+    const int _t45 = _t41 <= ((_t44) ? _t43 : 1.7320525396196846);
+    const double _t46 = _t22 - _t42 * 3.0000030000000004;
+    const int _t47 = (-1.7320525396196846) <= _t46;
+    const int _t48 = ((_t47) ? _t46 : (-1.7320525396196846)) <= _t41;
+    const double _t49 = _t33 - _t23 * (_t15 * _t8 + _t9 * _t14 - _t33 * _t35 - _t28 * _t27 - _t33 * _t38 - _t39 * _t36) * _t31;
+    const double _t50 = _t33 * _t33;
+    const double _t51 = _t27 * _t27;
+    const double _t52 = _t23 * (_t39 * _t29 + (_t33 * _t28 + _t26 * _t27 + _t15 * _t18 + _t38 * _t27 - _t12 * _t19)) * _t31 + _t27;
+    const double _t53 = 1.0 / _t41;
+    const double _t54 = _t30 * _t39 - _t15;
+    const double _t55 = -_t15;
+    const double _t56 = (_t45) ? ((_t48) ? _t30 * ((_t49 * _t37 - (_t23 * (_t39 * _t39 - (_t50 + _t9 * _t8 + _t51 + _t18 * _t19 + _t38 * _t38 - _t16)) * _t31 - _t38) * _t40 - _t52 * _t32) * _t53) - _t15 : ((_t47) ? _t54 : _t55)) : ((_t44) ? _t54 : _t55);
+    const double _t57 = _t28 + _t23 * (_t35 * _t28 + _t26 * _t28 + _t9 * _t17 + _t19 * _t4 + _t33 * _t27 - _t36 * _t29) * _t31;
+    const double _t58 = _t28 * _t28;
+    const double _t59 = -(_t30 * _t29 + _t19);
+    const double _t60 = -_t19;
+    const double _t61 = (_t45) ? ((_t48) ? _t30 * ((_t37 * _t57 + _t52 * _t40 - _t32 * (_t23 * (_t26 * _t26 + (_t58 + _t51) - _t15 * _t12 - _t20 - _t9 * _t4 - _t29 * _t29) * _t31 + _t26)) * _t53) - _t19 : ((_t47) ? _t59 : _t60)) : ((_t44) ? _t59 : _t60);
+    const double _t62 = _t9 - _t30 * _t36;
+    const double _t63 = (_t45) ? ((_t48) ? _t9 + _t30 * (((_t35 + _t23 * (_t35 * _t35 + (_t58 + _t50) + _t15 * _t14 - _t17 * _t19 - _t10 - _t36 * _t36) * _t31) * _t37 + _t49 * _t40 - _t32 * _t57) * _t53) : ((_t47) ? _t62 : _t9)) : ((_t44) ? _t62 : _t9);
+    const double _t64 = _t56 * _t56 + _t61 * _t61 + _t63 * _t63;
+    const int _t65 = _t64 > 0.0;
+    const int _t66 = _t64 <= 1.0e+30;
+    const double _t67 = 1.0 / sqrt(_t64);
+    const double _t68 = (_t21 > 0.0) ? _t23 : 0.0;
+    const double _t69 = -(_t68 * _t19);
+    const double _t70 = -(_t15 * _t68);
+    const double _t71 = _t9 * _t68;
+    n[0] = (_t65) ? ((_t66) ? _t61 * _t67 : _t69) : _t69;
+    n[1] = (_t65) ? ((_t66) ? _t56 * _t67 : _t70) : _t70;
+    n[2] = (_t65) ? ((_t66) ? _t63 * _t67 : _t71) : _t71;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -318,7 +345,7 @@ static inline float gyroid_o2_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 74
+ * Total ops: 82
  */
 static inline float gyroid_o2_offsetf(float x, float y, float z, float h)
 {
@@ -339,62 +366,74 @@ static inline float gyroid_o2_offsetf(float x, float y, float z, float h)
     const float _t14 = _t1 * _t7 - _t5 * _t3;
     const float _t15 = _t3 * _t11 - _t1 * _t10;
     const float _t16 = _t5 * _t11 - _t10 * _t7;
-    const float _t17 = 1.0f / sqrtf(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
-    const float _t18 = _t3 * _t7;
-    const float _t19 = _t1 * _t11;
-    const float _t20 = _t13 * 0.5f;
-    const float _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
-    const float _t22 = _t5 * _t10;
-    const float _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
-    const float _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
-    const float _t25 = sqrtf(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
-    return _t9 + _t12 - _t13 * ((fabsf(_t25) <= 1.73205256f) ? _t25 : ((_t25 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    const float _t17 = sqrtf(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
+    const float _t18 = 1.0f / _t17;
+    const float _t19 = _t3 * _t7;
+    const float _t20 = _t1 * _t11;
+    const float _t21 = _t13 * 0.5f;
+    const float _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
+    const float _t23 = _t5 * _t10;
+    const float _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
+    const float _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
+    const float _t26 = sqrtf(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
+    const float _t27 = fabsf(_t13);
+    const float _t28 = _t17 + _t27 * 1.00000095f;
+    const float _t29 = (_t28 <= 1.73205256f) ? _t28 : 1.73205256f;
+    const float _t30 = _t17 - _t27 * 3.0000031f;
+    const float _t31 = ((-1.73205256f) <= _t30) ? _t30 : (-1.73205256f);
+    return _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 92
+ * Total ops: 99
  */
 static inline float gyroid_o2_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = z * 6.28318548f;
-    const float _t1 = offsetgen_cosf(_t0);
-    const float _t2 = 6.28318548f * y;
-    const float _t3 = offsetgen_sinf(_t2);
-    const float _t4 = _t1 * _t3;
-    const float _t5 = offsetgen_sinf(_t0);
-    const float _t6 = 6.28318548f * x;
-    const float _t7 = offsetgen_cosf(_t6);
-    const float _t8 = _t5 * _t7;
-    const float _t9 = _t4 + _t8;
-    const float _t10 = offsetgen_cosf(_t2);
-    const float _t11 = offsetgen_sinf(_t6);
-    const float _t12 = _t10 * _t11;
-    const float _t13 = _t9 + _t12;
-    const float _t14 = _t3 * _t11 - _t1 * _t10;
-    const float _t15 = 6.28318548f * (t * 0.5f);
-    const float _t16 = _t15 * 0.5f;
-    const float _t17 = _t1 * _t7 - _t5 * _t3;
-    const float _t18 = _t5 * _t11 - _t10 * _t7;
-    const float _t19 = 1.0f / sqrtf(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
-    const float _t20 = _t5 * _t10;
-    const float _t21 = _t3 * _t7;
-    const float _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
-    const float _t23 = _t14 - _t22;
-    const float _t24 = _t1 * _t11;
-    const float _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
-    const float _t26 = _t25 + _t18;
-    const float _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
-    const float _t28 = _t17 - _t27;
-    const float _t29 = sqrtf(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-    const float _t30 = _t25 - _t18;
-    const float _t31 = _t17 + _t27;
-    const float _t32 = _t14 + _t22;
-    const float _t33 = sqrtf(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-    return (_t13 - ((fabsf(_t29) <= 1.73205256f) ? _t29 : ((_t29 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t15) * (((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t15 + _t13);
+    const float _t0 = 6.28318548f * (t * 0.5f);
+    const float _t1 = _t0 * 0.5f;
+    const float _t2 = z * 6.28318548f;
+    const float _t3 = offsetgen_cosf(_t2);
+    const float _t4 = 6.28318548f * x;
+    const float _t5 = offsetgen_cosf(_t4);
+    const float _t6 = offsetgen_sinf(_t2);
+    const float _t7 = 6.28318548f * y;
+    const float _t8 = offsetgen_sinf(_t7);
+    const float _t9 = _t3 * _t5 - _t6 * _t8;
+    const float _t10 = offsetgen_sinf(_t4);
+    const float _t11 = offsetgen_cosf(_t7);
+    const float _t12 = _t8 * _t10 - _t3 * _t11;
+    const float _t13 = _t6 * _t10 - _t11 * _t5;
+    const float _t14 = sqrtf(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
+    const float _t15 = 1.0f / _t14;
+    const float _t16 = _t6 * _t5;
+    const float _t17 = _t11 * _t10;
+    const float _t18 = _t8 * _t5;
+    const float _t19 = _t3 * _t10;
+    const float _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
+    const float _t21 = _t20 - _t13;
+    const float _t22 = _t6 * _t11;
+    const float _t23 = _t3 * _t8;
+    const float _t24 = _t23 + _t16;
+    const float _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
+    const float _t26 = _t9 + _t25;
+    const float _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
+    const float _t28 = _t12 + _t27;
+    const float _t29 = sqrtf(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
+    const float _t30 = fabsf(_t0);
+    const float _t31 = _t30 * 1.00000095f + _t14;
+    const float _t32 = (_t31 <= 1.73205256f) ? _t31 : 1.73205256f;
+    const float _t33 = _t14 - 3.0000031f * _t30;
+    const float _t34 = ((-1.73205256f) <= _t33) ? _t33 : (-1.73205256f);
+    const float _t35 = _t24 + _t17;
+    const float _t36 = _t12 - _t27;
+    const float _t37 = _t20 + _t13;
+    const float _t38 = _t9 - _t25;
+    const float _t39 = sqrtf(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
+    return (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 207
+ * Total ops: 232
  */
 static inline void gyroid_o2_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -420,47 +459,59 @@ static inline void gyroid_o2_normalf(float x, float y, float z, float h, float n
     const float _t19 = _t17 - _t18;
     const float _t20 = _t19 * _t19;
     const float _t21 = _t10 + _t16 + _t20;
-    const float _t22 = 1.0f / sqrtf(_t21);
-    const float _t23 = _t5 * _t3;
-    const float _t24 = _t13 * _t11;
-    const float _t25 = _t23 + _t24;
-    const float _t26 = _t7 * _t3;
-    const float _t27 = _t1 * _t11;
-    const float _t28 = _t22 * (_t25 * _t19 + _t15 * _t26 - _t9 * _t27);
-    const float _t29 = 6.28318548f * h;
-    const float _t30 = _t29 * 0.5f;
-    const float _t31 = _t28 * _t30 + _t19;
-    const float _t32 = _t5 * _t13;
-    const float _t33 = _t1 * _t7;
-    const float _t34 = _t33 + _t23;
-    const float _t35 = _t22 * (_t32 * _t15 + _t27 * _t19 - _t9 * _t34);
-    const float _t36 = _t9 - _t35 * _t30;
-    const float _t37 = _t33 + _t24;
-    const float _t38 = _t22 * (_t9 * _t32 - _t26 * _t19 - _t15 * _t37);
-    const float _t39 = _t38 * _t30 - _t15;
-    const float _t40 = sqrtf(_t31 * _t31 + _t36 * _t36 + _t39 * _t39);
-    const int _t41 = fabsf(_t40) <= 1.73205256f;
-    const float _t42 = _t27 + _t22 * (_t34 * _t27 + _t25 * _t27 + _t9 * _t17 + _t19 * _t4 + _t32 * _t26 - _t35 * _t28) * _t30;
-    const float _t43 = _t22 * (_t38 * _t28 + (_t32 * _t27 + _t25 * _t26 + _t15 * _t18 + _t37 * _t26 - _t12 * _t19)) * _t30 + _t26;
-    const float _t44 = _t27 * _t27;
-    const float _t45 = _t26 * _t26;
-    const float _t46 = 1.0f / _t40;
-    const float _t47 = (_t41) ? _t29 * ((_t36 * _t42 + _t43 * _t39 - _t31 * (_t22 * (_t25 * _t25 + (_t44 + _t45) - _t15 * _t12 - _t20 - _t9 * _t4 - _t28 * _t28) * _t30 + _t25)) * _t46) - _t19 : -_t19;
-    const float _t48 = _t32 - _t22 * (_t15 * _t8 + _t9 * _t14 - _t32 * _t34 - _t27 * _t26 - _t32 * _t37 - _t38 * _t35) * _t30;
-    const float _t49 = _t32 * _t32;
-    const float _t50 = (_t41) ? _t29 * ((_t48 * _t36 - (_t22 * (_t38 * _t38 - (_t49 + _t9 * _t8 + _t45 + _t18 * _t19 + _t37 * _t37 - _t16)) * _t30 - _t37) * _t39 - _t43 * _t31) * _t46) - _t15 : -_t15;
-    const float _t51 = (_t41) ? _t9 + _t29 * (((_t34 + _t22 * (_t34 * _t34 + (_t44 + _t49) + _t15 * _t14 - _t17 * _t19 - _t10 - _t35 * _t35) * _t30) * _t36 + _t48 * _t39 - _t31 * _t42) * _t46) : _t9;
-    const float _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
-    const int _t53 = _t52 > 0.0f;
-    const int _t54 = _t52 <= 1.00000002e+30f;
-    const float _t55 = 1.0f / sqrtf(_t52);
-    const float _t56 = (_t21 > 0.0f) ? _t22 : 0.0f;
-    const float _t57 = -(_t56 * _t19);
-    const float _t58 = -(_t15 * _t56);
-    const float _t59 = _t9 * _t56;
-    n[0] = (_t53) ? ((_t54) ? _t55 * _t47 : _t57) : _t57;
-    n[1] = (_t53) ? ((_t54) ? _t55 * _t50 : _t58) : _t58;
-    n[2] = (_t53) ? ((_t54) ? _t51 * _t55 : _t59) : _t59;
+    const float _t22 = sqrtf(_t21);
+    const float _t23 = 1.0f / _t22;
+    const float _t24 = _t5 * _t3;
+    const float _t25 = _t13 * _t11;
+    const float _t26 = _t24 + _t25;
+    const float _t27 = _t7 * _t3;
+    const float _t28 = _t1 * _t11;
+    const float _t29 = _t23 * (_t26 * _t19 + _t15 * _t27 - _t9 * _t28);
+    const float _t30 = 6.28318548f * h;
+    const float _t31 = _t30 * 0.5f;
+    const float _t32 = _t29 * _t31 + _t19;
+    const float _t33 = _t5 * _t13;
+    const float _t34 = _t1 * _t7;
+    const float _t35 = _t34 + _t24;
+    const float _t36 = _t23 * (_t33 * _t15 + _t28 * _t19 - _t9 * _t35);
+    const float _t37 = _t9 - _t36 * _t31;
+    const float _t38 = _t34 + _t25;
+    const float _t39 = _t23 * (_t9 * _t33 - _t27 * _t19 - _t15 * _t38);
+    const float _t40 = _t39 * _t31 - _t15;
+    const float _t41 = sqrtf(_t32 * _t32 + _t37 * _t37 + _t40 * _t40);
+    const float _t42 = fabsf(_t30);
+    const float _t43 = _t22 + _t42 * 1.00000095f;
+    const int _t44 = _t43 <= 1.73205256f;
+    const int _t45 = _t41 <= ((_t44) ? _t43 : 1.73205256f);
+    const float _t46 = _t22 - _t42 * 3.0000031f;
+    const int _t47 = (-1.73205256f) <= _t46;
+    const int _t48 = ((_t47) ? _t46 : (-1.73205256f)) <= _t41;
+    const float _t49 = _t33 - _t23 * (_t15 * _t8 + _t9 * _t14 - _t33 * _t35 - _t28 * _t27 - _t33 * _t38 - _t39 * _t36) * _t31;
+    const float _t50 = _t33 * _t33;
+    const float _t51 = _t27 * _t27;
+    const float _t52 = _t23 * (_t39 * _t29 + (_t33 * _t28 + _t26 * _t27 + _t15 * _t18 + _t38 * _t27 - _t12 * _t19)) * _t31 + _t27;
+    const float _t53 = 1.0f / _t41;
+    const float _t54 = _t30 * _t39 - _t15;
+    const float _t55 = -_t15;
+    const float _t56 = (_t45) ? ((_t48) ? _t30 * ((_t49 * _t37 - (_t23 * (_t39 * _t39 - (_t50 + _t9 * _t8 + _t51 + _t18 * _t19 + _t38 * _t38 - _t16)) * _t31 - _t38) * _t40 - _t52 * _t32) * _t53) - _t15 : ((_t47) ? _t54 : _t55)) : ((_t44) ? _t54 : _t55);
+    const float _t57 = _t28 + _t23 * (_t35 * _t28 + _t26 * _t28 + _t9 * _t17 + _t19 * _t4 + _t33 * _t27 - _t36 * _t29) * _t31;
+    const float _t58 = _t28 * _t28;
+    const float _t59 = -(_t30 * _t29 + _t19);
+    const float _t60 = -_t19;
+    const float _t61 = (_t45) ? ((_t48) ? _t30 * ((_t37 * _t57 + _t52 * _t40 - _t32 * (_t23 * (_t26 * _t26 + (_t58 + _t51) - _t15 * _t12 - _t20 - _t9 * _t4 - _t29 * _t29) * _t31 + _t26)) * _t53) - _t19 : ((_t47) ? _t59 : _t60)) : ((_t44) ? _t59 : _t60);
+    const float _t62 = _t9 - _t30 * _t36;
+    const float _t63 = (_t45) ? ((_t48) ? _t9 + _t30 * (((_t35 + _t23 * (_t35 * _t35 + (_t58 + _t50) + _t15 * _t14 - _t17 * _t19 - _t10 - _t36 * _t36) * _t31) * _t37 + _t49 * _t40 - _t32 * _t57) * _t53) : ((_t47) ? _t62 : _t9)) : ((_t44) ? _t62 : _t9);
+    const float _t64 = _t56 * _t56 + _t61 * _t61 + _t63 * _t63;
+    const int _t65 = _t64 > 0.0f;
+    const int _t66 = _t64 <= 1.00000002e+30f;
+    const float _t67 = 1.0f / sqrtf(_t64);
+    const float _t68 = (_t21 > 0.0f) ? _t23 : 0.0f;
+    const float _t69 = -(_t68 * _t19);
+    const float _t70 = -(_t15 * _t68);
+    const float _t71 = _t9 * _t68;
+    n[0] = (_t65) ? ((_t66) ? _t61 * _t67 : _t69) : _t69;
+    n[1] = (_t65) ? ((_t66) ? _t56 * _t67 : _t70) : _t70;
+    n[2] = (_t65) ? ((_t66) ? _t63 * _t67 : _t71) : _t71;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -582,16 +633,22 @@ static inline void gyroid_o2_offset_n(size_t n, const double *x, const double *y
         const double _t14 = _t1 * _t7 - _t5 * _t3;
         const double _t15 = _t3 * _t11 - _t1 * _t10;
         const double _t16 = _t5 * _t11 - _t10 * _t7;
-        const double _t17 = 1.0 / sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
-        const double _t18 = _t3 * _t7;
-        const double _t19 = _t1 * _t11;
-        const double _t20 = _t13 * 0.5;
-        const double _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
-        const double _t22 = _t5 * _t10;
-        const double _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
-        const double _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
-        const double _t25 = sqrt(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
-        out[i] = _t9 + _t12 - _t13 * ((fabs(_t25) <= 1.7320525396196846) ? _t25 : ((_t25 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        const double _t17 = sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
+        const double _t18 = 1.0 / _t17;
+        const double _t19 = _t3 * _t7;
+        const double _t20 = _t1 * _t11;
+        const double _t21 = _t13 * 0.5;
+        const double _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
+        const double _t23 = _t5 * _t10;
+        const double _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
+        const double _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
+        const double _t26 = sqrt(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
+        const double _t27 = fabs(_t13);
+        const double _t28 = _t17 + _t27 * 1.0000010000000001;
+        const double _t29 = (_t28 <= 1.7320525396196846) ? _t28 : 1.7320525396196846;
+        const double _t30 = _t17 - _t27 * 3.0000030000000004;
+        const double _t31 = ((-1.7320525396196846) <= _t30) ? _t30 : (-1.7320525396196846);
+        out[i] = _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = gyroid_o2_offset(x[i], y[i], z[i], h[i]);
@@ -606,41 +663,47 @@ static inline void gyroid_o2_shell_n(size_t n, const double *x, const double *y,
     size_t i;
     OFFSETGEN_SIMD_LOOP
     for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_cos(_t0);
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_sin(_t2);
-        const double _t4 = _t1 * _t3;
-        const double _t5 = offsetgen_batch_sin(_t0);
-        const double _t6 = 6.2831853071795862 * x[i];
-        const double _t7 = offsetgen_batch_cos(_t6);
-        const double _t8 = _t5 * _t7;
-        const double _t9 = _t4 + _t8;
-        const double _t10 = offsetgen_batch_cos(_t2);
-        const double _t11 = offsetgen_batch_sin(_t6);
-        const double _t12 = _t10 * _t11;
-        const double _t13 = _t9 + _t12;
-        const double _t14 = _t3 * _t11 - _t1 * _t10;
-        const double _t15 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t16 = _t15 * 0.5;
-        const double _t17 = _t1 * _t7 - _t5 * _t3;
-        const double _t18 = _t5 * _t11 - _t10 * _t7;
-        const double _t19 = 1.0 / sqrt(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
-        const double _t20 = _t5 * _t10;
-        const double _t21 = _t3 * _t7;
-        const double _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
-        const double _t23 = _t14 - _t22;
-        const double _t24 = _t1 * _t11;
-        const double _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
-        const double _t26 = _t25 + _t18;
-        const double _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
-        const double _t28 = _t17 - _t27;
-        const double _t29 = sqrt(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-        const double _t30 = _t25 - _t18;
-        const double _t31 = _t17 + _t27;
-        const double _t32 = _t14 + _t22;
-        const double _t33 = sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-        out[i] = (_t13 - ((fabs(_t29) <= 1.7320525396196846) ? _t29 : ((_t29 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t15) * (((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t15 + _t13);
+        const double _t0 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t1 = _t0 * 0.5;
+        const double _t2 = z[i] * 6.2831853071795862;
+        const double _t3 = offsetgen_batch_cos(_t2);
+        const double _t4 = 6.2831853071795862 * x[i];
+        const double _t5 = offsetgen_batch_cos(_t4);
+        const double _t6 = offsetgen_batch_sin(_t2);
+        const double _t7 = 6.2831853071795862 * y[i];
+        const double _t8 = offsetgen_batch_sin(_t7);
+        const double _t9 = _t3 * _t5 - _t6 * _t8;
+        const double _t10 = offsetgen_batch_sin(_t4);
+        const double _t11 = offsetgen_batch_cos(_t7);
+        const double _t12 = _t8 * _t10 - _t3 * _t11;
+        const double _t13 = _t6 * _t10 - _t11 * _t5;
+        const double _t14 = sqrt(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
+        const double _t15 = 1.0 / _t14;
+        const double _t16 = _t6 * _t5;
+        const double _t17 = _t11 * _t10;
+        const double _t18 = _t8 * _t5;
+        const double _t19 = _t3 * _t10;
+        const double _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
+        const double _t21 = _t20 - _t13;
+        const double _t22 = _t6 * _t11;
+        const double _t23 = _t3 * _t8;
+        const double _t24 = _t23 + _t16;
+        const double _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
+        const double _t26 = _t9 + _t25;
+        const double _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
+        const double _t28 = _t12 + _t27;
+        const double _t29 = sqrt(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
+        const double _t30 = fabs(_t0);
+        const double _t31 = _t30 * 1.0000010000000001 + _t14;
+        const double _t32 = (_t31 <= 1.7320525396196846) ? _t31 : 1.7320525396196846;
+        const double _t33 = _t14 - 3.0000030000000004 * _t30;
+        const double _t34 = ((-1.7320525396196846) <= _t33) ? _t33 : (-1.7320525396196846);
+        const double _t35 = _t24 + _t17;
+        const double _t36 = _t12 - _t27;
+        const double _t37 = _t20 + _t13;
+        const double _t38 = _t9 - _t25;
+        const double _t39 = sqrt(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
+        out[i] = (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = gyroid_o2_shell(x[i], y[i], z[i], t[i]);
@@ -672,16 +735,22 @@ static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y,
         const float _t14 = _t1 * _t7 - _t5 * _t3;
         const float _t15 = _t3 * _t11 - _t1 * _t10;
         const float _t16 = _t5 * _t11 - _t10 * _t7;
-        const float _t17 = 1.0f / sqrtf(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
-        const float _t18 = _t3 * _t7;
-        const float _t19 = _t1 * _t11;
-        const float _t20 = _t13 * 0.5f;
-        const float _t21 = _t17 * ((_t8 + _t12) * _t16 + _t15 * _t18 - _t14 * _t19) * _t20 + _t16;
-        const float _t22 = _t5 * _t10;
-        const float _t23 = _t14 - _t17 * (_t22 * _t15 + _t19 * _t16 - _t14 * _t9) * _t20;
-        const float _t24 = _t17 * (_t14 * _t22 - _t18 * _t16 - _t15 * (_t4 + _t12)) * _t20 - _t15;
-        const float _t25 = sqrtf(_t21 * _t21 + _t23 * _t23 + _t24 * _t24);
-        out[i] = _t9 + _t12 - _t13 * ((fabsf(_t25) <= 1.73205256f) ? _t25 : ((_t25 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        const float _t17 = sqrtf(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
+        const float _t18 = 1.0f / _t17;
+        const float _t19 = _t3 * _t7;
+        const float _t20 = _t1 * _t11;
+        const float _t21 = _t13 * 0.5f;
+        const float _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
+        const float _t23 = _t5 * _t10;
+        const float _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
+        const float _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
+        const float _t26 = sqrtf(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
+        const float _t27 = fabsf(_t13);
+        const float _t28 = _t17 + _t27 * 1.00000095f;
+        const float _t29 = (_t28 <= 1.73205256f) ? _t28 : 1.73205256f;
+        const float _t30 = _t17 - _t27 * 3.0000031f;
+        const float _t31 = ((-1.73205256f) <= _t30) ? _t30 : (-1.73205256f);
+        out[i] = _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o2_offsetf(x[i], y[i], z[i], h[i]);
@@ -696,41 +765,47 @@ static inline void gyroid_o2_shellf_n(size_t n, const float *x, const float *y, 
     size_t i;
     OFFSETGEN_SIMD_LOOP
     for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_cosf(_t0);
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_sinf(_t2);
-        const float _t4 = _t1 * _t3;
-        const float _t5 = offsetgen_batch_sinf(_t0);
-        const float _t6 = 6.28318548f * x[i];
-        const float _t7 = offsetgen_batch_cosf(_t6);
-        const float _t8 = _t5 * _t7;
-        const float _t9 = _t4 + _t8;
-        const float _t10 = offsetgen_batch_cosf(_t2);
-        const float _t11 = offsetgen_batch_sinf(_t6);
-        const float _t12 = _t10 * _t11;
-        const float _t13 = _t9 + _t12;
-        const float _t14 = _t3 * _t11 - _t1 * _t10;
-        const float _t15 = 6.28318548f * (t[i] * 0.5f);
-        const float _t16 = _t15 * 0.5f;
-        const float _t17 = _t1 * _t7 - _t5 * _t3;
-        const float _t18 = _t5 * _t11 - _t10 * _t7;
-        const float _t19 = 1.0f / sqrtf(_t17 * _t17 + _t14 * _t14 + _t18 * _t18);
-        const float _t20 = _t5 * _t10;
-        const float _t21 = _t3 * _t7;
-        const float _t22 = _t16 * (_t19 * (_t17 * _t20 - _t21 * _t18 - _t14 * (_t4 + _t12)));
-        const float _t23 = _t14 - _t22;
-        const float _t24 = _t1 * _t11;
-        const float _t25 = _t16 * (_t19 * ((_t8 + _t12) * _t18 + _t14 * _t21 - _t17 * _t24));
-        const float _t26 = _t25 + _t18;
-        const float _t27 = _t16 * (_t19 * (_t20 * _t14 + _t24 * _t18 - _t17 * _t9));
-        const float _t28 = _t17 - _t27;
-        const float _t29 = sqrtf(_t23 * _t23 + _t26 * _t26 + _t28 * _t28);
-        const float _t30 = _t25 - _t18;
-        const float _t31 = _t17 + _t27;
-        const float _t32 = _t14 + _t22;
-        const float _t33 = sqrtf(_t30 * _t30 + _t31 * _t31 + _t32 * _t32);
-        out[i] = (_t13 - ((fabsf(_t29) <= 1.73205256f) ? _t29 : ((_t29 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t15) * (((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t15 + _t13);
+        const float _t0 = 6.28318548f * (t[i] * 0.5f);
+        const float _t1 = _t0 * 0.5f;
+        const float _t2 = z[i] * 6.28318548f;
+        const float _t3 = offsetgen_batch_cosf(_t2);
+        const float _t4 = 6.28318548f * x[i];
+        const float _t5 = offsetgen_batch_cosf(_t4);
+        const float _t6 = offsetgen_batch_sinf(_t2);
+        const float _t7 = 6.28318548f * y[i];
+        const float _t8 = offsetgen_batch_sinf(_t7);
+        const float _t9 = _t3 * _t5 - _t6 * _t8;
+        const float _t10 = offsetgen_batch_sinf(_t4);
+        const float _t11 = offsetgen_batch_cosf(_t7);
+        const float _t12 = _t8 * _t10 - _t3 * _t11;
+        const float _t13 = _t6 * _t10 - _t11 * _t5;
+        const float _t14 = sqrtf(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
+        const float _t15 = 1.0f / _t14;
+        const float _t16 = _t6 * _t5;
+        const float _t17 = _t11 * _t10;
+        const float _t18 = _t8 * _t5;
+        const float _t19 = _t3 * _t10;
+        const float _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
+        const float _t21 = _t20 - _t13;
+        const float _t22 = _t6 * _t11;
+        const float _t23 = _t3 * _t8;
+        const float _t24 = _t23 + _t16;
+        const float _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
+        const float _t26 = _t9 + _t25;
+        const float _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
+        const float _t28 = _t12 + _t27;
+        const float _t29 = sqrtf(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
+        const float _t30 = fabsf(_t0);
+        const float _t31 = _t30 * 1.00000095f + _t14;
+        const float _t32 = (_t31 <= 1.73205256f) ? _t31 : 1.73205256f;
+        const float _t33 = _t14 - 3.0000031f * _t30;
+        const float _t34 = ((-1.73205256f) <= _t33) ? _t33 : (-1.73205256f);
+        const float _t35 = _t24 + _t17;
+        const float _t36 = _t12 - _t27;
+        const float _t37 = _t20 + _t13;
+        const float _t38 = _t9 - _t25;
+        const float _t39 = sqrtf(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
+        out[i] = (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o2_shellf(x[i], y[i], z[i], t[i]);

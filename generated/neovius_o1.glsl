@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^2) of the exact offset; relative thickness error ~ (h/L)^1.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: neovius_o1_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 7.000007, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 7.000007 and to |grad F| + [-1.5, 0.5] * 7.000007 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 15
-    - offset: 46
-    - shell: 49
-    - normal: 105
+    - offset: 45
+    - shell: 48
+    - normal: 108
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":46,"shell":49,"normal":105}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":45,"shell":48,"normal":108}} */
 #ifndef OFFSETGEN_NEOVIUS_O1_GLSL
 #define OFFSETGEN_NEOVIUS_O1_GLSL
 
@@ -47,7 +48,7 @@ highp float neovius_o1_field(highp vec3 p)
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 46.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 45.
 highp float neovius_o1_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -64,10 +65,10 @@ highp float neovius_o1_offset(highp vec3 p, highp float h)
     highp float _t11 = sin(_t5);
     highp float _t12 = 3.0 * _t11 + 4.0 * (_t4 * _t11);
     highp float _t13 = sqrt(_t8 * _t8 + _t10 * _t10 + _t12 * _t12);
-    return _t4 * _t6 * 4.0 + 3.0 * _t6 + _t1 * 3.0 + _t3 * 3.0 - 6.28318548 * h * ((abs(_t13) <= 7.00000715) ? _t13 : ((_t13 > 0.0) ? 7.00000715 : (-7.00000715)));
+    return _t4 * _t6 * 4.0 + 3.0 * _t6 + _t1 * 3.0 + _t3 * 3.0 - 6.28318548 * h * ((_t13 <= 7.00000715) ? (((-7.00000715) <= _t13) ? _t13 : (-7.00000715)) : 7.00000715);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 49.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 48.
 highp float neovius_o1_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -84,12 +85,12 @@ highp float neovius_o1_shell(highp vec3 p, highp float t)
     highp float _t11 = _t1 * _t8;
     highp float _t12 = 3.0 * _t10 + 4.0 * (_t11 * _t10);
     highp float _t13 = sqrt(_t6 * _t6 + _t9 * _t9 + _t12 * _t12);
-    highp float _t14 = ((abs(_t13) <= 7.00000715) ? _t13 : ((_t13 > 0.0) ? 7.00000715 : (-7.00000715))) * (6.28318548 * (t * 0.5));
+    highp float _t14 = 6.28318548 * (t * 0.5) * ((_t13 <= 7.00000715) ? (((-7.00000715) <= _t13) ? _t13 : (-7.00000715)) : 7.00000715);
     highp float _t15 = _t11 * _t5 * 4.0 + 3.0 * _t5 + _t1 * 3.0 + _t8 * 3.0;
     return (_t14 + _t15) * (_t15 - _t14);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 105.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 108.
 highp vec3 neovius_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -109,25 +110,29 @@ highp vec3 neovius_o1_normal(highp vec3 p, highp float h)
     highp float _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
     highp float _t15 = _t7 * _t7 + _t11 * _t11 + _t14 * _t14;
     highp float _t16 = sqrt(_t15);
-    bool _t17 = abs(_t16) <= 7.00000715;
-    highp float _t18 = 6.28318548 * h;
-    highp float _t19 = 1.0 / _t16;
-    highp float _t20 = 4.0 * (_t6 * (_t8 * _t3));
+    bool _t17 = _t16 <= 7.00000715;
+    bool _t18 = (-7.00000715) <= _t16;
+    highp float _t19 = 6.28318548 * h;
+    highp float _t20 = 4.0 * (_t4 * _t12);
     highp float _t21 = 4.0 * (_t10 * _t12);
     highp float _t22 = _t13 * _t6 * 4.0;
-    highp float _t23 = (_t17) ? _t18 * (_t19 * (_t7 * _t20 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0))) - _t11 : -_t11;
-    highp float _t24 = 4.0 * (_t4 * _t12);
-    highp float _t25 = (_t17) ? _t18 * ((_t24 * _t7 + _t11 * _t21 - (_t22 + 3.0 * _t6) * _t14) * _t19) - _t14 : -_t14;
-    highp float _t26 = (_t17) ? _t18 * (_t19 * (_t11 * _t20 + _t24 * _t14 - _t7 * (_t22 + _t9 * 3.0))) - _t7 : -_t7;
-    highp float _t27 = _t23 * _t23 + _t25 * _t25 + _t26 * _t26;
-    bool _t28 = _t27 > 0.0;
-    bool _t29 = _t27 <= 1.00000002e+30;
-    highp float _t30 = 1.0 / sqrt(_t27);
-    highp float _t31 = (_t15 > 0.0) ? _t19 : 0.0;
-    highp float _t32 = -(_t31 * _t14);
-    highp float _t33 = -(_t7 * _t31);
-    highp float _t34 = -(_t11 * _t31);
-    return vec3((_t28) ? ((_t29) ? _t25 * _t30 : _t32) : _t32, (_t28) ? ((_t29) ? _t26 * _t30 : _t33) : _t33, (_t28) ? ((_t29) ? _t30 * _t23 : _t34) : _t34);
+    highp float _t23 = 1.0 / _t16;
+    highp float _t24 = -_t14;
+    highp float _t25 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t7 + _t11 * _t21 - (_t22 + 3.0 * _t6) * _t14) * _t23) - _t14 : _t24) : _t24;
+    highp float _t26 = 4.0 * (_t6 * (_t8 * _t3));
+    highp float _t27 = -_t7;
+    highp float _t28 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t11 * _t26 + _t20 * _t14 - _t7 * (_t22 + _t9 * 3.0))) - _t7 : _t27) : _t27;
+    highp float _t29 = -_t11;
+    highp float _t30 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t7 * _t26 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0))) - _t11 : _t29) : _t29;
+    highp float _t31 = _t25 * _t25 + _t28 * _t28 + _t30 * _t30;
+    bool _t32 = _t31 > 0.0;
+    bool _t33 = _t31 <= 1.00000002e+30;
+    highp float _t34 = 1.0 / sqrt(_t31);
+    highp float _t35 = (_t15 > 0.0) ? _t23 : 0.0;
+    highp float _t36 = -(_t35 * _t14);
+    highp float _t37 = -(_t7 * _t35);
+    highp float _t38 = -(_t11 * _t35);
+    return vec3((_t32) ? ((_t33) ? _t34 * _t25 : _t36) : _t36, (_t32) ? ((_t33) ? _t28 * _t34 : _t37) : _t37, (_t32) ? ((_t33) ? _t30 * _t34 : _t38) : _t38);
 }
 
 

@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to neovius_o1_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 7.0000069999999992 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 7.0000069999999992 >= max |grad F|
+ *   and H = 7.0000070000000001 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    15
- *   offset   46
- *   shell    49
- *   normal   105
+ *   offset   45
+ *   shell    48
+ *   normal   108
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":46,"shell":49,"normal":105}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":45,"shell":48,"normal":108}} */
 #ifndef OFFSETGEN_NEOVIUS_O1_H
 #define OFFSETGEN_NEOVIUS_O1_H
 
@@ -113,7 +116,7 @@ static inline double neovius_o1_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 46
+ * Total ops: 45
  */
 static inline double neovius_o1_offset(double x, double y, double z, double h)
 {
@@ -131,11 +134,11 @@ static inline double neovius_o1_offset(double x, double y, double z, double h)
     const double _t11 = offsetgen_sin(_t5);
     const double _t12 = 3.0 * _t11 + 4.0 * (_t4 * _t11);
     const double _t13 = sqrt(_t8 * _t8 + _t10 * _t10 + _t12 * _t12);
-    return _t4 * _t6 * 4.0 + 3.0 * _t6 + _t1 * 3.0 + _t3 * 3.0 - 6.2831853071795862 * h * ((fabs(_t13) <= 7.0000069999999992) ? _t13 : ((_t13 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992)));
+    return _t4 * _t6 * 4.0 + 3.0 * _t6 + _t1 * 3.0 + _t3 * 3.0 - 6.2831853071795862 * h * ((_t13 <= 7.0000069999999992) ? (((-7.0000069999999992) <= _t13) ? _t13 : (-7.0000069999999992)) : 7.0000069999999992);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 49
+ * Total ops: 48
  */
 static inline double neovius_o1_shell(double x, double y, double z, double t)
 {
@@ -153,13 +156,13 @@ static inline double neovius_o1_shell(double x, double y, double z, double t)
     const double _t11 = _t1 * _t8;
     const double _t12 = 3.0 * _t10 + 4.0 * (_t11 * _t10);
     const double _t13 = sqrt(_t6 * _t6 + _t9 * _t9 + _t12 * _t12);
-    const double _t14 = ((fabs(_t13) <= 7.0000069999999992) ? _t13 : ((_t13 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992))) * (6.2831853071795862 * (t * 0.5));
+    const double _t14 = 6.2831853071795862 * (t * 0.5) * ((_t13 <= 7.0000069999999992) ? (((-7.0000069999999992) <= _t13) ? _t13 : (-7.0000069999999992)) : 7.0000069999999992);
     const double _t15 = _t11 * _t5 * 4.0 + 3.0 * _t5 + _t1 * 3.0 + _t8 * 3.0;
     return (_t14 + _t15) * (_t15 - _t14);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 105
+ * Total ops: 108
  */
 static inline void neovius_o1_normal(double x, double y, double z, double h, double n[3])
 {
@@ -180,27 +183,31 @@ static inline void neovius_o1_normal(double x, double y, double z, double h, dou
     const double _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
     const double _t15 = _t7 * _t7 + _t11 * _t11 + _t14 * _t14;
     const double _t16 = sqrt(_t15);
-    const int _t17 = fabs(_t16) <= 7.0000069999999992;
-    const double _t18 = 6.2831853071795862 * h;
-    const double _t19 = 1.0 / _t16;
-    const double _t20 = 4.0 * (_t6 * (_t8 * _t3));
+    const int _t17 = _t16 <= 7.0000069999999992;
+    const int _t18 = (-7.0000069999999992) <= _t16;
+    const double _t19 = 6.2831853071795862 * h;
+    const double _t20 = 4.0 * (_t4 * _t12);
     const double _t21 = 4.0 * (_t10 * _t12);
     const double _t22 = _t13 * _t6 * 4.0;
-    const double _t23 = (_t17) ? _t18 * (_t19 * (_t7 * _t20 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0))) - _t11 : -_t11;
-    const double _t24 = 4.0 * (_t4 * _t12);
-    const double _t25 = (_t17) ? _t18 * ((_t24 * _t7 + _t11 * _t21 - (_t22 + 3.0 * _t6) * _t14) * _t19) - _t14 : -_t14;
-    const double _t26 = (_t17) ? _t18 * (_t19 * (_t11 * _t20 + _t24 * _t14 - _t7 * (_t22 + _t9 * 3.0))) - _t7 : -_t7;
-    const double _t27 = _t23 * _t23 + _t25 * _t25 + _t26 * _t26;
-    const int _t28 = _t27 > 0.0;
-    const int _t29 = _t27 <= 1.0e+30;
-    const double _t30 = 1.0 / sqrt(_t27);
-    const double _t31 = (_t15 > 0.0) ? _t19 : 0.0;
-    const double _t32 = -(_t31 * _t14);
-    const double _t33 = -(_t7 * _t31);
-    const double _t34 = -(_t11 * _t31);
-    n[0] = (_t28) ? ((_t29) ? _t25 * _t30 : _t32) : _t32;
-    n[1] = (_t28) ? ((_t29) ? _t26 * _t30 : _t33) : _t33;
-    n[2] = (_t28) ? ((_t29) ? _t30 * _t23 : _t34) : _t34;
+    const double _t23 = 1.0 / _t16;
+    const double _t24 = -_t14;
+    const double _t25 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t7 + _t11 * _t21 - (_t22 + 3.0 * _t6) * _t14) * _t23) - _t14 : _t24) : _t24;
+    const double _t26 = 4.0 * (_t6 * (_t8 * _t3));
+    const double _t27 = -_t7;
+    const double _t28 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t11 * _t26 + _t20 * _t14 - _t7 * (_t22 + _t9 * 3.0))) - _t7 : _t27) : _t27;
+    const double _t29 = -_t11;
+    const double _t30 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t7 * _t26 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0))) - _t11 : _t29) : _t29;
+    const double _t31 = _t25 * _t25 + _t28 * _t28 + _t30 * _t30;
+    const int _t32 = _t31 > 0.0;
+    const int _t33 = _t31 <= 1.0e+30;
+    const double _t34 = 1.0 / sqrt(_t31);
+    const double _t35 = (_t15 > 0.0) ? _t23 : 0.0;
+    const double _t36 = -(_t35 * _t14);
+    const double _t37 = -(_t7 * _t35);
+    const double _t38 = -(_t11 * _t35);
+    n[0] = (_t32) ? ((_t33) ? _t34 * _t25 : _t36) : _t36;
+    n[1] = (_t32) ? ((_t33) ? _t28 * _t34 : _t37) : _t37;
+    n[2] = (_t32) ? ((_t33) ? _t30 * _t34 : _t38) : _t38;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -263,7 +270,7 @@ static inline float neovius_o1_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 46
+ * Total ops: 45
  */
 static inline float neovius_o1_offsetf(float x, float y, float z, float h)
 {
@@ -281,11 +288,11 @@ static inline float neovius_o1_offsetf(float x, float y, float z, float h)
     const float _t11 = offsetgen_sinf(_t5);
     const float _t12 = 3.0f * _t11 + 4.0f * (_t4 * _t11);
     const float _t13 = sqrtf(_t8 * _t8 + _t10 * _t10 + _t12 * _t12);
-    return _t4 * _t6 * 4.0f + 3.0f * _t6 + _t1 * 3.0f + _t3 * 3.0f - 6.28318548f * h * ((fabsf(_t13) <= 7.00000715f) ? _t13 : ((_t13 > 0.0f) ? 7.00000715f : (-7.00000715f)));
+    return _t4 * _t6 * 4.0f + 3.0f * _t6 + _t1 * 3.0f + _t3 * 3.0f - 6.28318548f * h * ((_t13 <= 7.00000715f) ? (((-7.00000715f) <= _t13) ? _t13 : (-7.00000715f)) : 7.00000715f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 49
+ * Total ops: 48
  */
 static inline float neovius_o1_shellf(float x, float y, float z, float t)
 {
@@ -303,13 +310,13 @@ static inline float neovius_o1_shellf(float x, float y, float z, float t)
     const float _t11 = _t1 * _t8;
     const float _t12 = 3.0f * _t10 + 4.0f * (_t11 * _t10);
     const float _t13 = sqrtf(_t6 * _t6 + _t9 * _t9 + _t12 * _t12);
-    const float _t14 = ((fabsf(_t13) <= 7.00000715f) ? _t13 : ((_t13 > 0.0f) ? 7.00000715f : (-7.00000715f))) * (6.28318548f * (t * 0.5f));
+    const float _t14 = 6.28318548f * (t * 0.5f) * ((_t13 <= 7.00000715f) ? (((-7.00000715f) <= _t13) ? _t13 : (-7.00000715f)) : 7.00000715f);
     const float _t15 = _t11 * _t5 * 4.0f + 3.0f * _t5 + _t1 * 3.0f + _t8 * 3.0f;
     return (_t14 + _t15) * (_t15 - _t14);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 105
+ * Total ops: 108
  */
 static inline void neovius_o1_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -330,27 +337,31 @@ static inline void neovius_o1_normalf(float x, float y, float z, float h, float 
     const float _t14 = 3.0f * _t12 + 4.0f * (_t13 * _t12);
     const float _t15 = _t7 * _t7 + _t11 * _t11 + _t14 * _t14;
     const float _t16 = sqrtf(_t15);
-    const int _t17 = fabsf(_t16) <= 7.00000715f;
-    const float _t18 = 6.28318548f * h;
-    const float _t19 = 1.0f / _t16;
-    const float _t20 = 4.0f * (_t6 * (_t8 * _t3));
+    const int _t17 = _t16 <= 7.00000715f;
+    const int _t18 = (-7.00000715f) <= _t16;
+    const float _t19 = 6.28318548f * h;
+    const float _t20 = 4.0f * (_t4 * _t12);
     const float _t21 = 4.0f * (_t10 * _t12);
     const float _t22 = _t13 * _t6 * 4.0f;
-    const float _t23 = (_t17) ? _t18 * (_t19 * (_t7 * _t20 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0f))) - _t11 : -_t11;
-    const float _t24 = 4.0f * (_t4 * _t12);
-    const float _t25 = (_t17) ? _t18 * ((_t24 * _t7 + _t11 * _t21 - (_t22 + 3.0f * _t6) * _t14) * _t19) - _t14 : -_t14;
-    const float _t26 = (_t17) ? _t18 * (_t19 * (_t11 * _t20 + _t24 * _t14 - _t7 * (_t22 + _t9 * 3.0f))) - _t7 : -_t7;
-    const float _t27 = _t23 * _t23 + _t25 * _t25 + _t26 * _t26;
-    const int _t28 = _t27 > 0.0f;
-    const int _t29 = _t27 <= 1.00000002e+30f;
-    const float _t30 = 1.0f / sqrtf(_t27);
-    const float _t31 = (_t15 > 0.0f) ? _t19 : 0.0f;
-    const float _t32 = -(_t31 * _t14);
-    const float _t33 = -(_t7 * _t31);
-    const float _t34 = -(_t11 * _t31);
-    n[0] = (_t28) ? ((_t29) ? _t25 * _t30 : _t32) : _t32;
-    n[1] = (_t28) ? ((_t29) ? _t26 * _t30 : _t33) : _t33;
-    n[2] = (_t28) ? ((_t29) ? _t30 * _t23 : _t34) : _t34;
+    const float _t23 = 1.0f / _t16;
+    const float _t24 = -_t14;
+    const float _t25 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t7 + _t11 * _t21 - (_t22 + 3.0f * _t6) * _t14) * _t23) - _t14 : _t24) : _t24;
+    const float _t26 = 4.0f * (_t6 * (_t8 * _t3));
+    const float _t27 = -_t7;
+    const float _t28 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t11 * _t26 + _t20 * _t14 - _t7 * (_t22 + _t9 * 3.0f))) - _t7 : _t27) : _t27;
+    const float _t29 = -_t11;
+    const float _t30 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t7 * _t26 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0f))) - _t11 : _t29) : _t29;
+    const float _t31 = _t25 * _t25 + _t28 * _t28 + _t30 * _t30;
+    const int _t32 = _t31 > 0.0f;
+    const int _t33 = _t31 <= 1.00000002e+30f;
+    const float _t34 = 1.0f / sqrtf(_t31);
+    const float _t35 = (_t15 > 0.0f) ? _t23 : 0.0f;
+    const float _t36 = -(_t35 * _t14);
+    const float _t37 = -(_t7 * _t35);
+    const float _t38 = -(_t11 * _t35);
+    n[0] = (_t32) ? ((_t33) ? _t34 * _t25 : _t36) : _t36;
+    n[1] = (_t32) ? ((_t33) ? _t28 * _t34 : _t37) : _t37;
+    n[2] = (_t32) ? ((_t33) ? _t30 * _t34 : _t38) : _t38;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -469,7 +480,7 @@ static inline void neovius_o1_offset_n(size_t n, const double *x, const double *
         const double _t11 = offsetgen_batch_sin(_t5);
         const double _t12 = 3.0 * _t11 + 4.0 * (_t4 * _t11);
         const double _t13 = sqrt(_t8 * _t8 + _t10 * _t10 + _t12 * _t12);
-        out[i] = _t4 * _t6 * 4.0 + 3.0 * _t6 + _t1 * 3.0 + _t3 * 3.0 - 6.2831853071795862 * h[i] * ((fabs(_t13) <= 7.0000069999999992) ? _t13 : ((_t13 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992)));
+        out[i] = _t4 * _t6 * 4.0 + 3.0 * _t6 + _t1 * 3.0 + _t3 * 3.0 - 6.2831853071795862 * h[i] * ((_t13 <= 7.0000069999999992) ? (((-7.0000069999999992) <= _t13) ? _t13 : (-7.0000069999999992)) : 7.0000069999999992);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_o1_offset(x[i], y[i], z[i], h[i]);
@@ -498,7 +509,7 @@ static inline void neovius_o1_shell_n(size_t n, const double *x, const double *y
         const double _t11 = _t1 * _t8;
         const double _t12 = 3.0 * _t10 + 4.0 * (_t11 * _t10);
         const double _t13 = sqrt(_t6 * _t6 + _t9 * _t9 + _t12 * _t12);
-        const double _t14 = ((fabs(_t13) <= 7.0000069999999992) ? _t13 : ((_t13 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992))) * (6.2831853071795862 * (t[i] * 0.5));
+        const double _t14 = 6.2831853071795862 * (t[i] * 0.5) * ((_t13 <= 7.0000069999999992) ? (((-7.0000069999999992) <= _t13) ? _t13 : (-7.0000069999999992)) : 7.0000069999999992);
         const double _t15 = _t11 * _t5 * 4.0 + 3.0 * _t5 + _t1 * 3.0 + _t8 * 3.0;
         out[i] = (_t14 + _t15) * (_t15 - _t14);
     }
@@ -529,7 +540,7 @@ static inline void neovius_o1_offsetf_n(size_t n, const float *x, const float *y
         const float _t11 = offsetgen_batch_sinf(_t5);
         const float _t12 = 3.0f * _t11 + 4.0f * (_t4 * _t11);
         const float _t13 = sqrtf(_t8 * _t8 + _t10 * _t10 + _t12 * _t12);
-        out[i] = _t4 * _t6 * 4.0f + 3.0f * _t6 + _t1 * 3.0f + _t3 * 3.0f - 6.28318548f * h[i] * ((fabsf(_t13) <= 7.00000715f) ? _t13 : ((_t13 > 0.0f) ? 7.00000715f : (-7.00000715f)));
+        out[i] = _t4 * _t6 * 4.0f + 3.0f * _t6 + _t1 * 3.0f + _t3 * 3.0f - 6.28318548f * h[i] * ((_t13 <= 7.00000715f) ? (((-7.00000715f) <= _t13) ? _t13 : (-7.00000715f)) : 7.00000715f);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_o1_offsetf(x[i], y[i], z[i], h[i]);
@@ -558,7 +569,7 @@ static inline void neovius_o1_shellf_n(size_t n, const float *x, const float *y,
         const float _t11 = _t1 * _t8;
         const float _t12 = 3.0f * _t10 + 4.0f * (_t11 * _t10);
         const float _t13 = sqrtf(_t6 * _t6 + _t9 * _t9 + _t12 * _t12);
-        const float _t14 = ((fabsf(_t13) <= 7.00000715f) ? _t13 : ((_t13 > 0.0f) ? 7.00000715f : (-7.00000715f))) * (6.28318548f * (t[i] * 0.5f));
+        const float _t14 = 6.28318548f * (t[i] * 0.5f) * ((_t13 <= 7.00000715f) ? (((-7.00000715f) <= _t13) ? _t13 : (-7.00000715f)) : 7.00000715f);
         const float _t15 = _t11 * _t5 * 4.0f + 3.0f * _t5 + _t1 * 3.0f + _t8 * 3.0f;
         out[i] = (_t14 + _t15) * (_t15 - _t14);
     }

@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^3) of the exact offset; relative thickness error ~ (h/L)^2.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: neovius_o2_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 7.000007, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 7.000007 and to |grad F| + [-1.5, 0.5] * 7.000007 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 15
-    - offset: 87
-    - shell: 105
-    - normal: 227
+    - offset: 95
+    - shell: 112
+    - normal: 251
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":87,"shell":105,"normal":227}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":95,"shell":112,"normal":251}} */
 #ifndef OFFSETGEN_NEOVIUS_O2_GLSL
 #define OFFSETGEN_NEOVIUS_O2_GLSL
 
@@ -47,7 +48,7 @@ highp float neovius_o2_field(highp vec3 p)
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 87.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 95.
 highp float neovius_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -72,60 +73,72 @@ highp float neovius_o2_offset(highp vec3 p, highp float h)
     highp float _t19 = _t17 * 3.0 + 4.0 * (_t18 * _t6);
     highp float _t20 = 4.0 * (_t18 * _t14);
     highp float _t21 = 3.0 * _t14 + 4.0 * (_t4 * _t14);
-    highp float _t22 = 1.0 / sqrt(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
-    highp float _t23 = _t11 * 0.5;
-    highp float _t24 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t22 * _t23 - _t21;
-    highp float _t25 = 4.0 * (_t6 * (_t17 * _t12));
-    highp float _t26 = _t16 - _t22 * (_t19 * _t25 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t23;
-    highp float _t27 = _t19 - _t22 * (_t16 * _t25 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t23;
-    highp float _t28 = sqrt(_t24 * _t24 + (_t26 * _t26 + _t27 * _t27));
-    return _t8 + _t9 + _t10 - _t11 * ((abs(_t28) <= 7.00000715) ? _t28 : ((_t28 > 0.0) ? 7.00000715 : (-7.00000715)));
+    highp float _t22 = sqrt(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
+    highp float _t23 = 1.0 / _t22;
+    highp float _t24 = _t11 * 0.5;
+    highp float _t25 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t23 * _t24 - _t21;
+    highp float _t26 = 4.0 * (_t6 * (_t17 * _t12));
+    highp float _t27 = _t16 - _t23 * (_t19 * _t26 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t24;
+    highp float _t28 = _t19 - _t23 * (_t16 * _t26 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t24;
+    highp float _t29 = sqrt(_t25 * _t25 + (_t27 * _t27 + _t28 * _t28));
+    highp float _t30 = abs(_t11);
+    highp float _t31 = _t30 * 3.50000358 + _t22;
+    highp float _t32 = (_t31 <= 7.00000715) ? _t31 : 7.00000715;
+    highp float _t33 = _t22 - _t30 * 10.5000105;
+    highp float _t34 = ((-7.00000715) <= _t33) ? _t33 : (-7.00000715);
+    return _t8 + _t9 + _t10 - _t11 * ((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 105.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 112.
 highp float neovius_o2_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = sin(_t0);
+    highp float _t1 = cos(_t0);
     highp float _t2 = 6.28318548 * p.y;
     highp float _t3 = cos(_t2);
     highp float _t4 = _t1 * _t3;
     highp float _t5 = 6.28318548 * p.x;
     highp float _t6 = cos(_t5);
-    highp float _t7 = _t1 * 3.0 + 4.0 * (_t4 * _t6);
-    highp float _t8 = cos(_t0);
-    highp float _t9 = sin(_t2);
-    highp float _t10 = _t8 * _t9;
-    highp float _t11 = 4.0 * (_t10 * _t6) + _t9 * 3.0;
-    highp float _t12 = sin(_t5);
-    highp float _t13 = _t8 * _t3;
-    highp float _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
-    highp float _t15 = 1.0 / sqrt(_t11 * _t11 + _t7 * _t7 + _t14 * _t14);
-    highp float _t16 = 4.0 * (_t6 * (_t1 * _t9));
-    highp float _t17 = 4.0 * (_t4 * _t12);
-    highp float _t18 = _t13 * _t6 * 4.0;
-    highp float _t19 = _t8 * 3.0;
-    highp float _t20 = 6.28318548 * (t * 0.5);
-    highp float _t21 = _t20 * 0.5;
-    highp float _t22 = _t15 * (_t11 * _t16 + _t17 * _t14 - _t7 * (_t18 + _t19)) * _t21;
-    highp float _t23 = _t7 + _t22;
-    highp float _t24 = 4.0 * (_t10 * _t12);
-    highp float _t25 = _t18 + 3.0 * _t6;
-    highp float _t26 = (_t24 * _t11 + _t7 * _t17 - _t25 * _t14) * _t15 * _t21;
-    highp float _t27 = _t14 + _t26;
-    highp float _t28 = _t3 * 3.0;
-    highp float _t29 = _t21 * (_t15 * (_t7 * _t16 + _t24 * _t14 - _t11 * (_t18 + _t28)));
-    highp float _t30 = _t11 + _t29;
-    highp float _t31 = sqrt(_t23 * _t23 + _t27 * _t27 + _t30 * _t30);
-    highp float _t32 = _t25 + _t19 + _t28;
-    highp float _t33 = _t14 - _t26;
-    highp float _t34 = _t7 - _t22;
-    highp float _t35 = _t11 - _t29;
-    highp float _t36 = sqrt(_t33 * _t33 + (_t34 * _t34 + _t35 * _t35));
-    return (((abs(_t31) <= 7.00000715) ? _t31 : ((_t31 > 0.0) ? 7.00000715 : (-7.00000715))) * _t20 + _t32) * (_t32 - _t20 * ((abs(_t36) <= 7.00000715) ? _t36 : ((_t36 > 0.0) ? 7.00000715 : (-7.00000715))));
+    highp float _t7 = _t4 * _t6 * 4.0;
+    highp float _t8 = _t7 + 3.0 * _t6;
+    highp float _t9 = _t1 * 3.0;
+    highp float _t10 = _t3 * 3.0;
+    highp float _t11 = _t8 + _t9 + _t10;
+    highp float _t12 = 6.28318548 * (t * 0.5);
+    highp float _t13 = sin(_t5);
+    highp float _t14 = 3.0 * _t13 + 4.0 * (_t4 * _t13);
+    highp float _t15 = sin(_t2);
+    highp float _t16 = _t1 * _t15;
+    highp float _t17 = 4.0 * (_t16 * _t13);
+    highp float _t18 = 4.0 * (_t16 * _t6) + _t15 * 3.0;
+    highp float _t19 = sin(_t0);
+    highp float _t20 = _t19 * _t3;
+    highp float _t21 = _t19 * 3.0 + 4.0 * (_t20 * _t6);
+    highp float _t22 = 4.0 * (_t20 * _t13);
+    highp float _t23 = sqrt(_t18 * _t18 + _t21 * _t21 + _t14 * _t14);
+    highp float _t24 = 1.0 / _t23;
+    highp float _t25 = _t12 * 0.5;
+    highp float _t26 = (_t17 * _t18 + _t21 * _t22 - _t8 * _t14) * _t24 * _t25;
+    highp float _t27 = _t14 - _t26;
+    highp float _t28 = 4.0 * (_t6 * (_t19 * _t15));
+    highp float _t29 = _t24 * (_t18 * _t28 + _t22 * _t14 - _t21 * (_t7 + _t9)) * _t25;
+    highp float _t30 = _t21 - _t29;
+    highp float _t31 = _t25 * (_t24 * (_t21 * _t28 + _t17 * _t14 - _t18 * (_t7 + _t10)));
+    highp float _t32 = _t18 - _t31;
+    highp float _t33 = sqrt(_t27 * _t27 + (_t30 * _t30 + _t32 * _t32));
+    highp float _t34 = abs(_t12);
+    highp float _t35 = _t34 * 3.50000358 + _t23;
+    highp float _t36 = (_t35 <= 7.00000715) ? _t35 : 7.00000715;
+    highp float _t37 = _t23 - _t34 * 10.5000105;
+    highp float _t38 = ((-7.00000715) <= _t37) ? _t37 : (-7.00000715);
+    highp float _t39 = _t21 + _t29;
+    highp float _t40 = _t14 + _t26;
+    highp float _t41 = _t18 + _t31;
+    highp float _t42 = sqrt(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
+    return (_t11 - _t12 * ((_t33 <= _t36) ? ((_t38 <= _t33) ? _t33 : _t38) : _t36)) * (_t12 * ((_t42 <= _t36) ? ((_t38 <= _t42) ? _t42 : _t38) : _t36) + _t11);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 227.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 251.
 highp vec3 neovius_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -154,44 +167,57 @@ highp vec3 neovius_o2_normal(highp vec3 p, highp float h)
     highp float _t23 = _t15 * _t15;
     highp float _t24 = _t21 * _t21;
     highp float _t25 = _t22 + _t23 + _t24;
-    highp float _t26 = 1.0 / sqrt(_t25);
-    highp float _t27 = (_t7 * _t10 + _t15 * _t16 - _t19 * _t21) * _t26;
-    highp float _t28 = 6.28318548 * h;
-    highp float _t29 = _t28 * 0.5;
-    highp float _t30 = _t27 * _t29 - _t21;
-    highp float _t31 = _t11 * _t3;
-    highp float _t32 = 4.0 * (_t8 * _t31);
-    highp float _t33 = _t18 + _t12 * 3.0;
-    highp float _t34 = _t26 * (_t15 * _t32 + _t7 * _t21 - _t10 * _t33);
-    highp float _t35 = _t10 - _t34 * _t29;
-    highp float _t36 = _t18 + _t1 * 3.0;
-    highp float _t37 = _t26 * (_t10 * _t32 + _t16 * _t21 - _t15 * _t36);
-    highp float _t38 = _t15 - _t37 * _t29;
-    highp float _t39 = sqrt(_t30 * _t30 + (_t35 * _t35 + _t38 * _t38));
-    bool _t40 = abs(_t39) <= 7.00000715;
-    highp float _t41 = 1.0 / _t39;
-    highp float _t42 = _t6 * _t31 * 4.0;
-    highp float _t43 = _t32 + _t29 * (_t26 * (_t37 * _t34 + (_t32 * _t36 + (_t10 * _t14 + _t15 * _t9) + _t33 * _t32 - _t7 * _t16 - _t42 * _t21)));
-    highp float _t44 = _t20 * _t21;
-    highp float _t45 = _t10 * _t9;
-    highp float _t46 = _t32 * _t32;
-    highp float _t47 = _t16 * _t16;
-    highp float _t48 = _t16 + (_t27 * _t37 - (_t10 * _t42 + _t7 * _t32 - _t21 * _t14 - _t16 * _t36 - _t16 * _t19 - _t15 * _t20)) * _t26 * _t29;
-    highp float _t49 = (_t40) ? _t28 * (_t41 * (_t35 * _t43 + (_t29 * (_t26 * (_t44 + (_t45 + _t23) - _t46 - _t47 - _t36 * _t36 + _t37 * _t37)) - _t36) * _t38 - _t30 * _t48)) - _t15 : -_t15;
-    highp float _t50 = _t7 + (_t27 * _t34 + (_t9 * _t21 + _t10 * _t20 + _t7 * _t19 + _t7 * _t33 - _t16 * _t32 - _t15 * _t42)) * _t26 * _t29;
-    highp float _t51 = _t7 * _t7;
+    highp float _t26 = sqrt(_t25);
+    highp float _t27 = 1.0 / _t26;
+    highp float _t28 = (_t7 * _t10 + _t15 * _t16 - _t19 * _t21) * _t27;
+    highp float _t29 = 6.28318548 * h;
+    highp float _t30 = _t29 * 0.5;
+    highp float _t31 = _t28 * _t30 - _t21;
+    highp float _t32 = _t11 * _t3;
+    highp float _t33 = 4.0 * (_t8 * _t32);
+    highp float _t34 = _t18 + _t12 * 3.0;
+    highp float _t35 = _t27 * (_t15 * _t33 + _t7 * _t21 - _t10 * _t34);
+    highp float _t36 = _t10 - _t35 * _t30;
+    highp float _t37 = _t18 + _t1 * 3.0;
+    highp float _t38 = _t27 * (_t10 * _t33 + _t16 * _t21 - _t15 * _t37);
+    highp float _t39 = _t15 - _t38 * _t30;
+    highp float _t40 = sqrt(_t31 * _t31 + (_t36 * _t36 + _t39 * _t39));
+    highp float _t41 = abs(_t29);
+    highp float _t42 = _t41 * 3.50000358 + _t26;
+    bool _t43 = _t42 <= 7.00000715;
+    bool _t44 = _t40 <= ((_t43) ? _t42 : 7.00000715);
+    highp float _t45 = _t26 - _t41 * 10.5000105;
+    bool _t46 = (-7.00000715) <= _t45;
+    bool _t47 = ((_t46) ? _t45 : (-7.00000715)) <= _t40;
+    highp float _t48 = 1.0 / _t40;
+    highp float _t49 = _t6 * _t32 * 4.0;
+    highp float _t50 = _t7 + (_t28 * _t35 + (_t9 * _t21 + _t10 * _t20 + _t7 * _t19 + _t7 * _t34 - _t16 * _t33 - _t15 * _t49)) * _t27 * _t30;
+    highp float _t51 = _t10 * _t9;
     highp float _t52 = _t15 * _t14;
-    highp float _t53 = (_t40) ? -(_t28 * (_t41 * (_t50 * _t30 - _t35 * ((_t34 * _t34 - (_t46 + (_t33 * _t33 + _t51) - _t22 - _t52 - _t44)) * _t26 * _t29 - _t33) - _t38 * _t43)) + _t10) : -_t10;
-    highp float _t54 = (_t40) ? _t28 * (_t41 * (_t35 * _t50 + (_t19 - (_t27 * _t27 + (_t45 + _t52 + _t24 - _t51 - _t47 - _t19 * _t19)) * _t26 * _t29) * _t30 + _t38 * _t48)) - _t21 : -_t21;
-    highp float _t55 = _t49 * _t49 + _t53 * _t53 + _t54 * _t54;
-    bool _t56 = _t55 > 0.0;
-    bool _t57 = _t55 <= 1.00000002e+30;
-    highp float _t58 = 1.0 / sqrt(_t55);
-    highp float _t59 = (_t25 > 0.0) ? _t26 : 0.0;
-    highp float _t60 = -(_t59 * _t21);
-    highp float _t61 = -(_t10 * _t59);
-    highp float _t62 = -(_t15 * _t59);
-    return vec3((_t56) ? ((_t57) ? _t54 * _t58 : _t60) : _t60, (_t56) ? ((_t57) ? _t58 * _t53 : _t61) : _t61, (_t56) ? ((_t57) ? _t49 * _t58 : _t62) : _t62);
+    highp float _t53 = _t7 * _t7;
+    highp float _t54 = _t16 * _t16;
+    highp float _t55 = _t16 + (_t28 * _t38 - (_t10 * _t49 + _t7 * _t33 - _t21 * _t14 - _t16 * _t37 - _t16 * _t19 - _t15 * _t20)) * _t27 * _t30;
+    highp float _t56 = _t29 * _t28 - _t21;
+    highp float _t57 = -_t21;
+    highp float _t58 = (_t44) ? ((_t47) ? _t29 * (_t48 * (_t36 * _t50 + (_t19 - (_t28 * _t28 + (_t51 + _t52 + _t24 - _t53 - _t54 - _t19 * _t19)) * _t27 * _t30) * _t31 + _t39 * _t55)) - _t21 : ((_t46) ? _t56 : _t57)) : ((_t43) ? _t56 : _t57);
+    highp float _t59 = _t33 * _t33;
+    highp float _t60 = _t20 * _t21;
+    highp float _t61 = _t33 + _t30 * (_t27 * (_t38 * _t35 + (_t33 * _t37 + (_t10 * _t14 + _t15 * _t9) + _t34 * _t33 - _t7 * _t16 - _t49 * _t21)));
+    highp float _t62 = _t29 * _t35 - _t10;
+    highp float _t63 = -_t10;
+    highp float _t64 = (_t44) ? ((_t47) ? -(_t29 * (_t48 * (_t50 * _t31 - _t36 * ((_t35 * _t35 - (_t59 + (_t34 * _t34 + _t53) - _t22 - _t52 - _t60)) * _t27 * _t30 - _t34) - _t39 * _t61)) + _t10) : ((_t46) ? _t62 : _t63)) : ((_t43) ? _t62 : _t63);
+    highp float _t65 = _t29 * _t38 - _t15;
+    highp float _t66 = -_t15;
+    highp float _t67 = (_t44) ? ((_t47) ? _t29 * (_t48 * (_t36 * _t61 + (_t30 * (_t27 * (_t60 + (_t51 + _t23) - _t59 - _t54 - _t37 * _t37 + _t38 * _t38)) - _t37) * _t39 - _t31 * _t55)) - _t15 : ((_t46) ? _t65 : _t66)) : ((_t43) ? _t65 : _t66);
+    highp float _t68 = _t58 * _t58 + (_t64 * _t64 + _t67 * _t67);
+    bool _t69 = _t68 > 0.0;
+    bool _t70 = _t68 <= 1.00000002e+30;
+    highp float _t71 = 1.0 / sqrt(_t68);
+    highp float _t72 = (_t25 > 0.0) ? _t27 : 0.0;
+    highp float _t73 = -(_t72 * _t21);
+    highp float _t74 = -(_t10 * _t72);
+    highp float _t75 = -(_t15 * _t72);
+    return vec3((_t69) ? ((_t70) ? _t58 * _t71 : _t73) : _t73, (_t69) ? ((_t70) ? _t71 * _t64 : _t74) : _t74, (_t69) ? ((_t70) ? _t67 * _t71 : _t75) : _t75);
 }
 
 

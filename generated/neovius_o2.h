@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to neovius_o2_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 7.0000069999999992 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 7.0000069999999992 >= max |grad F|
+ *   and H = 7.0000070000000001 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    15
- *   offset   87
- *   shell    105
- *   normal   227
+ *   offset   95
+ *   shell    112
+ *   normal   251
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"ops":{"field":15,"offset":87,"shell":105,"normal":227}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":95,"shell":112,"normal":251}} */
 #ifndef OFFSETGEN_NEOVIUS_O2_H
 #define OFFSETGEN_NEOVIUS_O2_H
 
@@ -113,7 +116,7 @@ static inline double neovius_o2_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 87
+ * Total ops: 95
  */
 static inline double neovius_o2_offset(double x, double y, double z, double h)
 {
@@ -139,63 +142,75 @@ static inline double neovius_o2_offset(double x, double y, double z, double h)
     const double _t19 = _t17 * 3.0 + 4.0 * (_t18 * _t6);
     const double _t20 = 4.0 * (_t18 * _t14);
     const double _t21 = 3.0 * _t14 + 4.0 * (_t4 * _t14);
-    const double _t22 = 1.0 / sqrt(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
-    const double _t23 = _t11 * 0.5;
-    const double _t24 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t22 * _t23 - _t21;
-    const double _t25 = 4.0 * (_t6 * (_t17 * _t12));
-    const double _t26 = _t16 - _t22 * (_t19 * _t25 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t23;
-    const double _t27 = _t19 - _t22 * (_t16 * _t25 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t23;
-    const double _t28 = sqrt(_t24 * _t24 + (_t26 * _t26 + _t27 * _t27));
-    return _t8 + _t9 + _t10 - _t11 * ((fabs(_t28) <= 7.0000069999999992) ? _t28 : ((_t28 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992)));
+    const double _t22 = sqrt(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
+    const double _t23 = 1.0 / _t22;
+    const double _t24 = _t11 * 0.5;
+    const double _t25 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t23 * _t24 - _t21;
+    const double _t26 = 4.0 * (_t6 * (_t17 * _t12));
+    const double _t27 = _t16 - _t23 * (_t19 * _t26 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t24;
+    const double _t28 = _t19 - _t23 * (_t16 * _t26 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t24;
+    const double _t29 = sqrt(_t25 * _t25 + (_t27 * _t27 + _t28 * _t28));
+    const double _t30 = fabs(_t11);
+    const double _t31 = _t30 * 3.5000035 + _t22;
+    const double _t32 = (_t31 <= 7.0000069999999992) ? _t31 : 7.0000069999999992;
+    const double _t33 = _t22 - _t30 * 10.5000105;
+    const double _t34 = ((-7.0000069999999992) <= _t33) ? _t33 : (-7.0000069999999992);
+    return _t8 + _t9 + _t10 - _t11 * ((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 105
+ * Total ops: 112
  */
 static inline double neovius_o2_shell(double x, double y, double z, double t)
 {
     const double _t0 = z * 6.2831853071795862;
-    const double _t1 = offsetgen_sin(_t0);
+    const double _t1 = offsetgen_cos(_t0);
     const double _t2 = 6.2831853071795862 * y;
     const double _t3 = offsetgen_cos(_t2);
     const double _t4 = _t1 * _t3;
     const double _t5 = 6.2831853071795862 * x;
     const double _t6 = offsetgen_cos(_t5);
-    const double _t7 = _t1 * 3.0 + 4.0 * (_t4 * _t6);
-    const double _t8 = offsetgen_cos(_t0);
-    const double _t9 = offsetgen_sin(_t2);
-    const double _t10 = _t8 * _t9;
-    const double _t11 = 4.0 * (_t10 * _t6) + _t9 * 3.0;
-    const double _t12 = offsetgen_sin(_t5);
-    const double _t13 = _t8 * _t3;
-    const double _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
-    const double _t15 = 1.0 / sqrt(_t11 * _t11 + _t7 * _t7 + _t14 * _t14);
-    const double _t16 = 4.0 * (_t6 * (_t1 * _t9));
-    const double _t17 = 4.0 * (_t4 * _t12);
-    const double _t18 = _t13 * _t6 * 4.0;
-    const double _t19 = _t8 * 3.0;
-    const double _t20 = 6.2831853071795862 * (t * 0.5);
-    const double _t21 = _t20 * 0.5;
-    const double _t22 = _t15 * (_t11 * _t16 + _t17 * _t14 - _t7 * (_t18 + _t19)) * _t21;
-    const double _t23 = _t7 + _t22;
-    const double _t24 = 4.0 * (_t10 * _t12);
-    const double _t25 = _t18 + 3.0 * _t6;
-    const double _t26 = (_t24 * _t11 + _t7 * _t17 - _t25 * _t14) * _t15 * _t21;
-    const double _t27 = _t14 + _t26;
-    const double _t28 = _t3 * 3.0;
-    const double _t29 = _t21 * (_t15 * (_t7 * _t16 + _t24 * _t14 - _t11 * (_t18 + _t28)));
-    const double _t30 = _t11 + _t29;
-    const double _t31 = sqrt(_t23 * _t23 + _t27 * _t27 + _t30 * _t30);
-    const double _t32 = _t25 + _t19 + _t28;
-    const double _t33 = _t14 - _t26;
-    const double _t34 = _t7 - _t22;
-    const double _t35 = _t11 - _t29;
-    const double _t36 = sqrt(_t33 * _t33 + (_t34 * _t34 + _t35 * _t35));
-    return (((fabs(_t31) <= 7.0000069999999992) ? _t31 : ((_t31 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992))) * _t20 + _t32) * (_t32 - _t20 * ((fabs(_t36) <= 7.0000069999999992) ? _t36 : ((_t36 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992))));
+    const double _t7 = _t4 * _t6 * 4.0;
+    const double _t8 = _t7 + 3.0 * _t6;
+    const double _t9 = _t1 * 3.0;
+    const double _t10 = _t3 * 3.0;
+    const double _t11 = _t8 + _t9 + _t10;
+    const double _t12 = 6.2831853071795862 * (t * 0.5);
+    const double _t13 = offsetgen_sin(_t5);
+    const double _t14 = 3.0 * _t13 + 4.0 * (_t4 * _t13);
+    const double _t15 = offsetgen_sin(_t2);
+    const double _t16 = _t1 * _t15;
+    const double _t17 = 4.0 * (_t16 * _t13);
+    const double _t18 = 4.0 * (_t16 * _t6) + _t15 * 3.0;
+    const double _t19 = offsetgen_sin(_t0);
+    const double _t20 = _t19 * _t3;
+    const double _t21 = _t19 * 3.0 + 4.0 * (_t20 * _t6);
+    const double _t22 = 4.0 * (_t20 * _t13);
+    const double _t23 = sqrt(_t18 * _t18 + _t21 * _t21 + _t14 * _t14);
+    const double _t24 = 1.0 / _t23;
+    const double _t25 = _t12 * 0.5;
+    const double _t26 = (_t17 * _t18 + _t21 * _t22 - _t8 * _t14) * _t24 * _t25;
+    const double _t27 = _t14 - _t26;
+    const double _t28 = 4.0 * (_t6 * (_t19 * _t15));
+    const double _t29 = _t24 * (_t18 * _t28 + _t22 * _t14 - _t21 * (_t7 + _t9)) * _t25;
+    const double _t30 = _t21 - _t29;
+    const double _t31 = _t25 * (_t24 * (_t21 * _t28 + _t17 * _t14 - _t18 * (_t7 + _t10)));
+    const double _t32 = _t18 - _t31;
+    const double _t33 = sqrt(_t27 * _t27 + (_t30 * _t30 + _t32 * _t32));
+    const double _t34 = fabs(_t12);
+    const double _t35 = _t34 * 3.5000035 + _t23;
+    const double _t36 = (_t35 <= 7.0000069999999992) ? _t35 : 7.0000069999999992;
+    const double _t37 = _t23 - _t34 * 10.5000105;
+    const double _t38 = ((-7.0000069999999992) <= _t37) ? _t37 : (-7.0000069999999992);
+    const double _t39 = _t21 + _t29;
+    const double _t40 = _t14 + _t26;
+    const double _t41 = _t18 + _t31;
+    const double _t42 = sqrt(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
+    return (_t11 - _t12 * ((_t33 <= _t36) ? ((_t38 <= _t33) ? _t33 : _t38) : _t36)) * (_t12 * ((_t42 <= _t36) ? ((_t38 <= _t42) ? _t42 : _t38) : _t36) + _t11);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 227
+ * Total ops: 251
  */
 static inline void neovius_o2_normal(double x, double y, double z, double h, double n[3])
 {
@@ -225,46 +240,59 @@ static inline void neovius_o2_normal(double x, double y, double z, double h, dou
     const double _t23 = _t15 * _t15;
     const double _t24 = _t21 * _t21;
     const double _t25 = _t22 + _t23 + _t24;
-    const double _t26 = 1.0 / sqrt(_t25);
-    const double _t27 = (_t7 * _t10 + _t15 * _t16 - _t19 * _t21) * _t26;
-    const double _t28 = 6.2831853071795862 * h;
-    const double _t29 = _t28 * 0.5;
-    const double _t30 = _t27 * _t29 - _t21;
-    const double _t31 = _t11 * _t3;
-    const double _t32 = 4.0 * (_t8 * _t31);
-    const double _t33 = _t18 + _t12 * 3.0;
-    const double _t34 = _t26 * (_t15 * _t32 + _t7 * _t21 - _t10 * _t33);
-    const double _t35 = _t10 - _t34 * _t29;
-    const double _t36 = _t18 + _t1 * 3.0;
-    const double _t37 = _t26 * (_t10 * _t32 + _t16 * _t21 - _t15 * _t36);
-    const double _t38 = _t15 - _t37 * _t29;
-    const double _t39 = sqrt(_t30 * _t30 + (_t35 * _t35 + _t38 * _t38));
-    const int _t40 = fabs(_t39) <= 7.0000069999999992;
-    const double _t41 = 1.0 / _t39;
-    const double _t42 = _t6 * _t31 * 4.0;
-    const double _t43 = _t32 + _t29 * (_t26 * (_t37 * _t34 + (_t32 * _t36 + (_t10 * _t14 + _t15 * _t9) + _t33 * _t32 - _t7 * _t16 - _t42 * _t21)));
-    const double _t44 = _t20 * _t21;
-    const double _t45 = _t10 * _t9;
-    const double _t46 = _t32 * _t32;
-    const double _t47 = _t16 * _t16;
-    const double _t48 = _t16 + (_t27 * _t37 - (_t10 * _t42 + _t7 * _t32 - _t21 * _t14 - _t16 * _t36 - _t16 * _t19 - _t15 * _t20)) * _t26 * _t29;
-    const double _t49 = (_t40) ? _t28 * (_t41 * (_t35 * _t43 + (_t29 * (_t26 * (_t44 + (_t45 + _t23) - _t46 - _t47 - _t36 * _t36 + _t37 * _t37)) - _t36) * _t38 - _t30 * _t48)) - _t15 : -_t15;
-    const double _t50 = _t7 + (_t27 * _t34 + (_t9 * _t21 + _t10 * _t20 + _t7 * _t19 + _t7 * _t33 - _t16 * _t32 - _t15 * _t42)) * _t26 * _t29;
-    const double _t51 = _t7 * _t7;
+    const double _t26 = sqrt(_t25);
+    const double _t27 = 1.0 / _t26;
+    const double _t28 = (_t7 * _t10 + _t15 * _t16 - _t19 * _t21) * _t27;
+    const double _t29 = 6.2831853071795862 * h;
+    const double _t30 = _t29 * 0.5;
+    const double _t31 = _t28 * _t30 - _t21;
+    const double _t32 = _t11 * _t3;
+    const double _t33 = 4.0 * (_t8 * _t32);
+    const double _t34 = _t18 + _t12 * 3.0;
+    const double _t35 = _t27 * (_t15 * _t33 + _t7 * _t21 - _t10 * _t34);
+    const double _t36 = _t10 - _t35 * _t30;
+    const double _t37 = _t18 + _t1 * 3.0;
+    const double _t38 = _t27 * (_t10 * _t33 + _t16 * _t21 - _t15 * _t37);
+    const double _t39 = _t15 - _t38 * _t30;
+    const double _t40 = sqrt(_t31 * _t31 + (_t36 * _t36 + _t39 * _t39));
+    const double _t41 = fabs(_t29);
+    const double _t42 = _t41 * 3.5000035 + _t26;
+    const int _t43 = _t42 <= 7.0000069999999992;
+    const int _t44 = _t40 <= ((_t43) ? _t42 : 7.0000069999999992);
+    const double _t45 = _t26 - _t41 * 10.5000105;
+    const int _t46 = (-7.0000069999999992) <= _t45;
+    const int _t47 = ((_t46) ? _t45 : (-7.0000069999999992)) <= _t40;
+    const double _t48 = 1.0 / _t40;
+    const double _t49 = _t6 * _t32 * 4.0;
+    const double _t50 = _t7 + (_t28 * _t35 + (_t9 * _t21 + _t10 * _t20 + _t7 * _t19 + _t7 * _t34 - _t16 * _t33 - _t15 * _t49)) * _t27 * _t30;
+    const double _t51 = _t10 * _t9;
     const double _t52 = _t15 * _t14;
-    const double _t53 = (_t40) ? -(_t28 * (_t41 * (_t50 * _t30 - _t35 * ((_t34 * _t34 - (_t46 + (_t33 * _t33 + _t51) - _t22 - _t52 - _t44)) * _t26 * _t29 - _t33) - _t38 * _t43)) + _t10) : -_t10;
-    const double _t54 = (_t40) ? _t28 * (_t41 * (_t35 * _t50 + (_t19 - (_t27 * _t27 + (_t45 + _t52 + _t24 - _t51 - _t47 - _t19 * _t19)) * _t26 * _t29) * _t30 + _t38 * _t48)) - _t21 : -_t21;
-    const double _t55 = _t49 * _t49 + _t53 * _t53 + _t54 * _t54;
-    const int _t56 = _t55 > 0.0;
-    const int _t57 = _t55 <= 1.0e+30;
-    const double _t58 = 1.0 / sqrt(_t55);
-    const double _t59 = (_t25 > 0.0) ? _t26 : 0.0;
-    const double _t60 = -(_t59 * _t21);
-    const double _t61 = -(_t10 * _t59);
-    const double _t62 = -(_t15 * _t59);
-    n[0] = (_t56) ? ((_t57) ? _t54 * _t58 : _t60) : _t60;
-    n[1] = (_t56) ? ((_t57) ? _t58 * _t53 : _t61) : _t61;
-    n[2] = (_t56) ? ((_t57) ? _t49 * _t58 : _t62) : _t62;
+    const double _t53 = _t7 * _t7;
+    const double _t54 = _t16 * _t16;
+    const double _t55 = _t16 + (_t28 * _t38 - (_t10 * _t49 + _t7 * _t33 - _t21 * _t14 - _t16 * _t37 - _t16 * _t19 - _t15 * _t20)) * _t27 * _t30;
+    const double _t56 = _t29 * _t28 - _t21;
+    const double _t57 = -_t21;
+    const double _t58 = (_t44) ? ((_t47) ? _t29 * (_t48 * (_t36 * _t50 + (_t19 - (_t28 * _t28 + (_t51 + _t52 + _t24 - _t53 - _t54 - _t19 * _t19)) * _t27 * _t30) * _t31 + _t39 * _t55)) - _t21 : ((_t46) ? _t56 : _t57)) : ((_t43) ? _t56 : _t57);
+    const double _t59 = _t33 * _t33;
+    const double _t60 = _t20 * _t21;
+    const double _t61 = _t33 + _t30 * (_t27 * (_t38 * _t35 + (_t33 * _t37 + (_t10 * _t14 + _t15 * _t9) + _t34 * _t33 - _t7 * _t16 - _t49 * _t21)));
+    const double _t62 = _t29 * _t35 - _t10;
+    const double _t63 = -_t10;
+    const double _t64 = (_t44) ? ((_t47) ? -(_t29 * (_t48 * (_t50 * _t31 - _t36 * ((_t35 * _t35 - (_t59 + (_t34 * _t34 + _t53) - _t22 - _t52 - _t60)) * _t27 * _t30 - _t34) - _t39 * _t61)) + _t10) : ((_t46) ? _t62 : _t63)) : ((_t43) ? _t62 : _t63);
+    const double _t65 = _t29 * _t38 - _t15;
+    const double _t66 = -_t15;
+    const double _t67 = (_t44) ? ((_t47) ? _t29 * (_t48 * (_t36 * _t61 + (_t30 * (_t27 * (_t60 + (_t51 + _t23) - _t59 - _t54 - _t37 * _t37 + _t38 * _t38)) - _t37) * _t39 - _t31 * _t55)) - _t15 : ((_t46) ? _t65 : _t66)) : ((_t43) ? _t65 : _t66);
+    const double _t68 = _t58 * _t58 + (_t64 * _t64 + _t67 * _t67);
+    const int _t69 = _t68 > 0.0;
+    const int _t70 = _t68 <= 1.0e+30;
+    const double _t71 = 1.0 / sqrt(_t68);
+    const double _t72 = (_t25 > 0.0) ? _t27 : 0.0;
+    const double _t73 = -(_t72 * _t21);
+    const double _t74 = -(_t10 * _t72);
+    const double _t75 = -(_t15 * _t72);
+    n[0] = (_t69) ? ((_t70) ? _t58 * _t71 : _t73) : _t73;
+    n[1] = (_t69) ? ((_t70) ? _t71 * _t64 : _t74) : _t74;
+    n[2] = (_t69) ? ((_t70) ? _t67 * _t71 : _t75) : _t75;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -327,7 +355,7 @@ static inline float neovius_o2_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 87
+ * Total ops: 95
  */
 static inline float neovius_o2_offsetf(float x, float y, float z, float h)
 {
@@ -353,63 +381,75 @@ static inline float neovius_o2_offsetf(float x, float y, float z, float h)
     const float _t19 = _t17 * 3.0f + 4.0f * (_t18 * _t6);
     const float _t20 = 4.0f * (_t18 * _t14);
     const float _t21 = 3.0f * _t14 + 4.0f * (_t4 * _t14);
-    const float _t22 = 1.0f / sqrtf(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
-    const float _t23 = _t11 * 0.5f;
-    const float _t24 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t22 * _t23 - _t21;
-    const float _t25 = 4.0f * (_t6 * (_t17 * _t12));
-    const float _t26 = _t16 - _t22 * (_t19 * _t25 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t23;
-    const float _t27 = _t19 - _t22 * (_t16 * _t25 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t23;
-    const float _t28 = sqrtf(_t24 * _t24 + (_t26 * _t26 + _t27 * _t27));
-    return _t8 + _t9 + _t10 - _t11 * ((fabsf(_t28) <= 7.00000715f) ? _t28 : ((_t28 > 0.0f) ? 7.00000715f : (-7.00000715f)));
+    const float _t22 = sqrtf(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
+    const float _t23 = 1.0f / _t22;
+    const float _t24 = _t11 * 0.5f;
+    const float _t25 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t23 * _t24 - _t21;
+    const float _t26 = 4.0f * (_t6 * (_t17 * _t12));
+    const float _t27 = _t16 - _t23 * (_t19 * _t26 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t24;
+    const float _t28 = _t19 - _t23 * (_t16 * _t26 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t24;
+    const float _t29 = sqrtf(_t25 * _t25 + (_t27 * _t27 + _t28 * _t28));
+    const float _t30 = fabsf(_t11);
+    const float _t31 = _t30 * 3.50000358f + _t22;
+    const float _t32 = (_t31 <= 7.00000715f) ? _t31 : 7.00000715f;
+    const float _t33 = _t22 - _t30 * 10.5000105f;
+    const float _t34 = ((-7.00000715f) <= _t33) ? _t33 : (-7.00000715f);
+    return _t8 + _t9 + _t10 - _t11 * ((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 105
+ * Total ops: 112
  */
 static inline float neovius_o2_shellf(float x, float y, float z, float t)
 {
     const float _t0 = z * 6.28318548f;
-    const float _t1 = offsetgen_sinf(_t0);
+    const float _t1 = offsetgen_cosf(_t0);
     const float _t2 = 6.28318548f * y;
     const float _t3 = offsetgen_cosf(_t2);
     const float _t4 = _t1 * _t3;
     const float _t5 = 6.28318548f * x;
     const float _t6 = offsetgen_cosf(_t5);
-    const float _t7 = _t1 * 3.0f + 4.0f * (_t4 * _t6);
-    const float _t8 = offsetgen_cosf(_t0);
-    const float _t9 = offsetgen_sinf(_t2);
-    const float _t10 = _t8 * _t9;
-    const float _t11 = 4.0f * (_t10 * _t6) + _t9 * 3.0f;
-    const float _t12 = offsetgen_sinf(_t5);
-    const float _t13 = _t8 * _t3;
-    const float _t14 = 3.0f * _t12 + 4.0f * (_t13 * _t12);
-    const float _t15 = 1.0f / sqrtf(_t11 * _t11 + _t7 * _t7 + _t14 * _t14);
-    const float _t16 = 4.0f * (_t6 * (_t1 * _t9));
-    const float _t17 = 4.0f * (_t4 * _t12);
-    const float _t18 = _t13 * _t6 * 4.0f;
-    const float _t19 = _t8 * 3.0f;
-    const float _t20 = 6.28318548f * (t * 0.5f);
-    const float _t21 = _t20 * 0.5f;
-    const float _t22 = _t15 * (_t11 * _t16 + _t17 * _t14 - _t7 * (_t18 + _t19)) * _t21;
-    const float _t23 = _t7 + _t22;
-    const float _t24 = 4.0f * (_t10 * _t12);
-    const float _t25 = _t18 + 3.0f * _t6;
-    const float _t26 = (_t24 * _t11 + _t7 * _t17 - _t25 * _t14) * _t15 * _t21;
-    const float _t27 = _t14 + _t26;
-    const float _t28 = _t3 * 3.0f;
-    const float _t29 = _t21 * (_t15 * (_t7 * _t16 + _t24 * _t14 - _t11 * (_t18 + _t28)));
-    const float _t30 = _t11 + _t29;
-    const float _t31 = sqrtf(_t23 * _t23 + _t27 * _t27 + _t30 * _t30);
-    const float _t32 = _t25 + _t19 + _t28;
-    const float _t33 = _t14 - _t26;
-    const float _t34 = _t7 - _t22;
-    const float _t35 = _t11 - _t29;
-    const float _t36 = sqrtf(_t33 * _t33 + (_t34 * _t34 + _t35 * _t35));
-    return (((fabsf(_t31) <= 7.00000715f) ? _t31 : ((_t31 > 0.0f) ? 7.00000715f : (-7.00000715f))) * _t20 + _t32) * (_t32 - _t20 * ((fabsf(_t36) <= 7.00000715f) ? _t36 : ((_t36 > 0.0f) ? 7.00000715f : (-7.00000715f))));
+    const float _t7 = _t4 * _t6 * 4.0f;
+    const float _t8 = _t7 + 3.0f * _t6;
+    const float _t9 = _t1 * 3.0f;
+    const float _t10 = _t3 * 3.0f;
+    const float _t11 = _t8 + _t9 + _t10;
+    const float _t12 = 6.28318548f * (t * 0.5f);
+    const float _t13 = offsetgen_sinf(_t5);
+    const float _t14 = 3.0f * _t13 + 4.0f * (_t4 * _t13);
+    const float _t15 = offsetgen_sinf(_t2);
+    const float _t16 = _t1 * _t15;
+    const float _t17 = 4.0f * (_t16 * _t13);
+    const float _t18 = 4.0f * (_t16 * _t6) + _t15 * 3.0f;
+    const float _t19 = offsetgen_sinf(_t0);
+    const float _t20 = _t19 * _t3;
+    const float _t21 = _t19 * 3.0f + 4.0f * (_t20 * _t6);
+    const float _t22 = 4.0f * (_t20 * _t13);
+    const float _t23 = sqrtf(_t18 * _t18 + _t21 * _t21 + _t14 * _t14);
+    const float _t24 = 1.0f / _t23;
+    const float _t25 = _t12 * 0.5f;
+    const float _t26 = (_t17 * _t18 + _t21 * _t22 - _t8 * _t14) * _t24 * _t25;
+    const float _t27 = _t14 - _t26;
+    const float _t28 = 4.0f * (_t6 * (_t19 * _t15));
+    const float _t29 = _t24 * (_t18 * _t28 + _t22 * _t14 - _t21 * (_t7 + _t9)) * _t25;
+    const float _t30 = _t21 - _t29;
+    const float _t31 = _t25 * (_t24 * (_t21 * _t28 + _t17 * _t14 - _t18 * (_t7 + _t10)));
+    const float _t32 = _t18 - _t31;
+    const float _t33 = sqrtf(_t27 * _t27 + (_t30 * _t30 + _t32 * _t32));
+    const float _t34 = fabsf(_t12);
+    const float _t35 = _t34 * 3.50000358f + _t23;
+    const float _t36 = (_t35 <= 7.00000715f) ? _t35 : 7.00000715f;
+    const float _t37 = _t23 - _t34 * 10.5000105f;
+    const float _t38 = ((-7.00000715f) <= _t37) ? _t37 : (-7.00000715f);
+    const float _t39 = _t21 + _t29;
+    const float _t40 = _t14 + _t26;
+    const float _t41 = _t18 + _t31;
+    const float _t42 = sqrtf(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
+    return (_t11 - _t12 * ((_t33 <= _t36) ? ((_t38 <= _t33) ? _t33 : _t38) : _t36)) * (_t12 * ((_t42 <= _t36) ? ((_t38 <= _t42) ? _t42 : _t38) : _t36) + _t11);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 227
+ * Total ops: 251
  */
 static inline void neovius_o2_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -439,46 +479,59 @@ static inline void neovius_o2_normalf(float x, float y, float z, float h, float 
     const float _t23 = _t15 * _t15;
     const float _t24 = _t21 * _t21;
     const float _t25 = _t22 + _t23 + _t24;
-    const float _t26 = 1.0f / sqrtf(_t25);
-    const float _t27 = (_t7 * _t10 + _t15 * _t16 - _t19 * _t21) * _t26;
-    const float _t28 = 6.28318548f * h;
-    const float _t29 = _t28 * 0.5f;
-    const float _t30 = _t27 * _t29 - _t21;
-    const float _t31 = _t11 * _t3;
-    const float _t32 = 4.0f * (_t8 * _t31);
-    const float _t33 = _t18 + _t12 * 3.0f;
-    const float _t34 = _t26 * (_t15 * _t32 + _t7 * _t21 - _t10 * _t33);
-    const float _t35 = _t10 - _t34 * _t29;
-    const float _t36 = _t18 + _t1 * 3.0f;
-    const float _t37 = _t26 * (_t10 * _t32 + _t16 * _t21 - _t15 * _t36);
-    const float _t38 = _t15 - _t37 * _t29;
-    const float _t39 = sqrtf(_t30 * _t30 + (_t35 * _t35 + _t38 * _t38));
-    const int _t40 = fabsf(_t39) <= 7.00000715f;
-    const float _t41 = 1.0f / _t39;
-    const float _t42 = _t6 * _t31 * 4.0f;
-    const float _t43 = _t32 + _t29 * (_t26 * (_t37 * _t34 + (_t32 * _t36 + (_t10 * _t14 + _t15 * _t9) + _t33 * _t32 - _t7 * _t16 - _t42 * _t21)));
-    const float _t44 = _t20 * _t21;
-    const float _t45 = _t10 * _t9;
-    const float _t46 = _t32 * _t32;
-    const float _t47 = _t16 * _t16;
-    const float _t48 = _t16 + (_t27 * _t37 - (_t10 * _t42 + _t7 * _t32 - _t21 * _t14 - _t16 * _t36 - _t16 * _t19 - _t15 * _t20)) * _t26 * _t29;
-    const float _t49 = (_t40) ? _t28 * (_t41 * (_t35 * _t43 + (_t29 * (_t26 * (_t44 + (_t45 + _t23) - _t46 - _t47 - _t36 * _t36 + _t37 * _t37)) - _t36) * _t38 - _t30 * _t48)) - _t15 : -_t15;
-    const float _t50 = _t7 + (_t27 * _t34 + (_t9 * _t21 + _t10 * _t20 + _t7 * _t19 + _t7 * _t33 - _t16 * _t32 - _t15 * _t42)) * _t26 * _t29;
-    const float _t51 = _t7 * _t7;
+    const float _t26 = sqrtf(_t25);
+    const float _t27 = 1.0f / _t26;
+    const float _t28 = (_t7 * _t10 + _t15 * _t16 - _t19 * _t21) * _t27;
+    const float _t29 = 6.28318548f * h;
+    const float _t30 = _t29 * 0.5f;
+    const float _t31 = _t28 * _t30 - _t21;
+    const float _t32 = _t11 * _t3;
+    const float _t33 = 4.0f * (_t8 * _t32);
+    const float _t34 = _t18 + _t12 * 3.0f;
+    const float _t35 = _t27 * (_t15 * _t33 + _t7 * _t21 - _t10 * _t34);
+    const float _t36 = _t10 - _t35 * _t30;
+    const float _t37 = _t18 + _t1 * 3.0f;
+    const float _t38 = _t27 * (_t10 * _t33 + _t16 * _t21 - _t15 * _t37);
+    const float _t39 = _t15 - _t38 * _t30;
+    const float _t40 = sqrtf(_t31 * _t31 + (_t36 * _t36 + _t39 * _t39));
+    const float _t41 = fabsf(_t29);
+    const float _t42 = _t41 * 3.50000358f + _t26;
+    const int _t43 = _t42 <= 7.00000715f;
+    const int _t44 = _t40 <= ((_t43) ? _t42 : 7.00000715f);
+    const float _t45 = _t26 - _t41 * 10.5000105f;
+    const int _t46 = (-7.00000715f) <= _t45;
+    const int _t47 = ((_t46) ? _t45 : (-7.00000715f)) <= _t40;
+    const float _t48 = 1.0f / _t40;
+    const float _t49 = _t6 * _t32 * 4.0f;
+    const float _t50 = _t7 + (_t28 * _t35 + (_t9 * _t21 + _t10 * _t20 + _t7 * _t19 + _t7 * _t34 - _t16 * _t33 - _t15 * _t49)) * _t27 * _t30;
+    const float _t51 = _t10 * _t9;
     const float _t52 = _t15 * _t14;
-    const float _t53 = (_t40) ? -(_t28 * (_t41 * (_t50 * _t30 - _t35 * ((_t34 * _t34 - (_t46 + (_t33 * _t33 + _t51) - _t22 - _t52 - _t44)) * _t26 * _t29 - _t33) - _t38 * _t43)) + _t10) : -_t10;
-    const float _t54 = (_t40) ? _t28 * (_t41 * (_t35 * _t50 + (_t19 - (_t27 * _t27 + (_t45 + _t52 + _t24 - _t51 - _t47 - _t19 * _t19)) * _t26 * _t29) * _t30 + _t38 * _t48)) - _t21 : -_t21;
-    const float _t55 = _t49 * _t49 + _t53 * _t53 + _t54 * _t54;
-    const int _t56 = _t55 > 0.0f;
-    const int _t57 = _t55 <= 1.00000002e+30f;
-    const float _t58 = 1.0f / sqrtf(_t55);
-    const float _t59 = (_t25 > 0.0f) ? _t26 : 0.0f;
-    const float _t60 = -(_t59 * _t21);
-    const float _t61 = -(_t10 * _t59);
-    const float _t62 = -(_t15 * _t59);
-    n[0] = (_t56) ? ((_t57) ? _t54 * _t58 : _t60) : _t60;
-    n[1] = (_t56) ? ((_t57) ? _t58 * _t53 : _t61) : _t61;
-    n[2] = (_t56) ? ((_t57) ? _t49 * _t58 : _t62) : _t62;
+    const float _t53 = _t7 * _t7;
+    const float _t54 = _t16 * _t16;
+    const float _t55 = _t16 + (_t28 * _t38 - (_t10 * _t49 + _t7 * _t33 - _t21 * _t14 - _t16 * _t37 - _t16 * _t19 - _t15 * _t20)) * _t27 * _t30;
+    const float _t56 = _t29 * _t28 - _t21;
+    const float _t57 = -_t21;
+    const float _t58 = (_t44) ? ((_t47) ? _t29 * (_t48 * (_t36 * _t50 + (_t19 - (_t28 * _t28 + (_t51 + _t52 + _t24 - _t53 - _t54 - _t19 * _t19)) * _t27 * _t30) * _t31 + _t39 * _t55)) - _t21 : ((_t46) ? _t56 : _t57)) : ((_t43) ? _t56 : _t57);
+    const float _t59 = _t33 * _t33;
+    const float _t60 = _t20 * _t21;
+    const float _t61 = _t33 + _t30 * (_t27 * (_t38 * _t35 + (_t33 * _t37 + (_t10 * _t14 + _t15 * _t9) + _t34 * _t33 - _t7 * _t16 - _t49 * _t21)));
+    const float _t62 = _t29 * _t35 - _t10;
+    const float _t63 = -_t10;
+    const float _t64 = (_t44) ? ((_t47) ? -(_t29 * (_t48 * (_t50 * _t31 - _t36 * ((_t35 * _t35 - (_t59 + (_t34 * _t34 + _t53) - _t22 - _t52 - _t60)) * _t27 * _t30 - _t34) - _t39 * _t61)) + _t10) : ((_t46) ? _t62 : _t63)) : ((_t43) ? _t62 : _t63);
+    const float _t65 = _t29 * _t38 - _t15;
+    const float _t66 = -_t15;
+    const float _t67 = (_t44) ? ((_t47) ? _t29 * (_t48 * (_t36 * _t61 + (_t30 * (_t27 * (_t60 + (_t51 + _t23) - _t59 - _t54 - _t37 * _t37 + _t38 * _t38)) - _t37) * _t39 - _t31 * _t55)) - _t15 : ((_t46) ? _t65 : _t66)) : ((_t43) ? _t65 : _t66);
+    const float _t68 = _t58 * _t58 + (_t64 * _t64 + _t67 * _t67);
+    const int _t69 = _t68 > 0.0f;
+    const int _t70 = _t68 <= 1.00000002e+30f;
+    const float _t71 = 1.0f / sqrtf(_t68);
+    const float _t72 = (_t25 > 0.0f) ? _t27 : 0.0f;
+    const float _t73 = -(_t72 * _t21);
+    const float _t74 = -(_t10 * _t72);
+    const float _t75 = -(_t15 * _t72);
+    n[0] = (_t69) ? ((_t70) ? _t58 * _t71 : _t73) : _t73;
+    n[1] = (_t69) ? ((_t70) ? _t71 * _t64 : _t74) : _t74;
+    n[2] = (_t69) ? ((_t70) ? _t67 * _t71 : _t75) : _t75;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -605,14 +658,20 @@ static inline void neovius_o2_offset_n(size_t n, const double *x, const double *
         const double _t19 = _t17 * 3.0 + 4.0 * (_t18 * _t6);
         const double _t20 = 4.0 * (_t18 * _t14);
         const double _t21 = 3.0 * _t14 + 4.0 * (_t4 * _t14);
-        const double _t22 = 1.0 / sqrt(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
-        const double _t23 = _t11 * 0.5;
-        const double _t24 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t22 * _t23 - _t21;
-        const double _t25 = 4.0 * (_t6 * (_t17 * _t12));
-        const double _t26 = _t16 - _t22 * (_t19 * _t25 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t23;
-        const double _t27 = _t19 - _t22 * (_t16 * _t25 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t23;
-        const double _t28 = sqrt(_t24 * _t24 + (_t26 * _t26 + _t27 * _t27));
-        out[i] = _t8 + _t9 + _t10 - _t11 * ((fabs(_t28) <= 7.0000069999999992) ? _t28 : ((_t28 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992)));
+        const double _t22 = sqrt(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
+        const double _t23 = 1.0 / _t22;
+        const double _t24 = _t11 * 0.5;
+        const double _t25 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t23 * _t24 - _t21;
+        const double _t26 = 4.0 * (_t6 * (_t17 * _t12));
+        const double _t27 = _t16 - _t23 * (_t19 * _t26 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t24;
+        const double _t28 = _t19 - _t23 * (_t16 * _t26 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t24;
+        const double _t29 = sqrt(_t25 * _t25 + (_t27 * _t27 + _t28 * _t28));
+        const double _t30 = fabs(_t11);
+        const double _t31 = _t30 * 3.5000035 + _t22;
+        const double _t32 = (_t31 <= 7.0000069999999992) ? _t31 : 7.0000069999999992;
+        const double _t33 = _t22 - _t30 * 10.5000105;
+        const double _t34 = ((-7.0000069999999992) <= _t33) ? _t33 : (-7.0000069999999992);
+        out[i] = _t8 + _t9 + _t10 - _t11 * ((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_o2_offset(x[i], y[i], z[i], h[i]);
@@ -628,43 +687,49 @@ static inline void neovius_o2_shell_n(size_t n, const double *x, const double *y
     OFFSETGEN_SIMD_LOOP
     for (i = 0; i < n; ++i) {
         const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_sin(_t0);
+        const double _t1 = offsetgen_batch_cos(_t0);
         const double _t2 = 6.2831853071795862 * y[i];
         const double _t3 = offsetgen_batch_cos(_t2);
         const double _t4 = _t1 * _t3;
         const double _t5 = 6.2831853071795862 * x[i];
         const double _t6 = offsetgen_batch_cos(_t5);
-        const double _t7 = _t1 * 3.0 + 4.0 * (_t4 * _t6);
-        const double _t8 = offsetgen_batch_cos(_t0);
-        const double _t9 = offsetgen_batch_sin(_t2);
-        const double _t10 = _t8 * _t9;
-        const double _t11 = 4.0 * (_t10 * _t6) + _t9 * 3.0;
-        const double _t12 = offsetgen_batch_sin(_t5);
-        const double _t13 = _t8 * _t3;
-        const double _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
-        const double _t15 = 1.0 / sqrt(_t11 * _t11 + _t7 * _t7 + _t14 * _t14);
-        const double _t16 = 4.0 * (_t6 * (_t1 * _t9));
-        const double _t17 = 4.0 * (_t4 * _t12);
-        const double _t18 = _t13 * _t6 * 4.0;
-        const double _t19 = _t8 * 3.0;
-        const double _t20 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t21 = _t20 * 0.5;
-        const double _t22 = _t15 * (_t11 * _t16 + _t17 * _t14 - _t7 * (_t18 + _t19)) * _t21;
-        const double _t23 = _t7 + _t22;
-        const double _t24 = 4.0 * (_t10 * _t12);
-        const double _t25 = _t18 + 3.0 * _t6;
-        const double _t26 = (_t24 * _t11 + _t7 * _t17 - _t25 * _t14) * _t15 * _t21;
-        const double _t27 = _t14 + _t26;
-        const double _t28 = _t3 * 3.0;
-        const double _t29 = _t21 * (_t15 * (_t7 * _t16 + _t24 * _t14 - _t11 * (_t18 + _t28)));
-        const double _t30 = _t11 + _t29;
-        const double _t31 = sqrt(_t23 * _t23 + _t27 * _t27 + _t30 * _t30);
-        const double _t32 = _t25 + _t19 + _t28;
-        const double _t33 = _t14 - _t26;
-        const double _t34 = _t7 - _t22;
-        const double _t35 = _t11 - _t29;
-        const double _t36 = sqrt(_t33 * _t33 + (_t34 * _t34 + _t35 * _t35));
-        out[i] = (((fabs(_t31) <= 7.0000069999999992) ? _t31 : ((_t31 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992))) * _t20 + _t32) * (_t32 - _t20 * ((fabs(_t36) <= 7.0000069999999992) ? _t36 : ((_t36 > 0.0) ? 7.0000069999999992 : (-7.0000069999999992))));
+        const double _t7 = _t4 * _t6 * 4.0;
+        const double _t8 = _t7 + 3.0 * _t6;
+        const double _t9 = _t1 * 3.0;
+        const double _t10 = _t3 * 3.0;
+        const double _t11 = _t8 + _t9 + _t10;
+        const double _t12 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t13 = offsetgen_batch_sin(_t5);
+        const double _t14 = 3.0 * _t13 + 4.0 * (_t4 * _t13);
+        const double _t15 = offsetgen_batch_sin(_t2);
+        const double _t16 = _t1 * _t15;
+        const double _t17 = 4.0 * (_t16 * _t13);
+        const double _t18 = 4.0 * (_t16 * _t6) + _t15 * 3.0;
+        const double _t19 = offsetgen_batch_sin(_t0);
+        const double _t20 = _t19 * _t3;
+        const double _t21 = _t19 * 3.0 + 4.0 * (_t20 * _t6);
+        const double _t22 = 4.0 * (_t20 * _t13);
+        const double _t23 = sqrt(_t18 * _t18 + _t21 * _t21 + _t14 * _t14);
+        const double _t24 = 1.0 / _t23;
+        const double _t25 = _t12 * 0.5;
+        const double _t26 = (_t17 * _t18 + _t21 * _t22 - _t8 * _t14) * _t24 * _t25;
+        const double _t27 = _t14 - _t26;
+        const double _t28 = 4.0 * (_t6 * (_t19 * _t15));
+        const double _t29 = _t24 * (_t18 * _t28 + _t22 * _t14 - _t21 * (_t7 + _t9)) * _t25;
+        const double _t30 = _t21 - _t29;
+        const double _t31 = _t25 * (_t24 * (_t21 * _t28 + _t17 * _t14 - _t18 * (_t7 + _t10)));
+        const double _t32 = _t18 - _t31;
+        const double _t33 = sqrt(_t27 * _t27 + (_t30 * _t30 + _t32 * _t32));
+        const double _t34 = fabs(_t12);
+        const double _t35 = _t34 * 3.5000035 + _t23;
+        const double _t36 = (_t35 <= 7.0000069999999992) ? _t35 : 7.0000069999999992;
+        const double _t37 = _t23 - _t34 * 10.5000105;
+        const double _t38 = ((-7.0000069999999992) <= _t37) ? _t37 : (-7.0000069999999992);
+        const double _t39 = _t21 + _t29;
+        const double _t40 = _t14 + _t26;
+        const double _t41 = _t18 + _t31;
+        const double _t42 = sqrt(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
+        out[i] = (_t11 - _t12 * ((_t33 <= _t36) ? ((_t38 <= _t33) ? _t33 : _t38) : _t36)) * (_t12 * ((_t42 <= _t36) ? ((_t38 <= _t42) ? _t42 : _t38) : _t36) + _t11);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_o2_shell(x[i], y[i], z[i], t[i]);
@@ -701,14 +766,20 @@ static inline void neovius_o2_offsetf_n(size_t n, const float *x, const float *y
         const float _t19 = _t17 * 3.0f + 4.0f * (_t18 * _t6);
         const float _t20 = 4.0f * (_t18 * _t14);
         const float _t21 = 3.0f * _t14 + 4.0f * (_t4 * _t14);
-        const float _t22 = 1.0f / sqrtf(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
-        const float _t23 = _t11 * 0.5f;
-        const float _t24 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t22 * _t23 - _t21;
-        const float _t25 = 4.0f * (_t6 * (_t17 * _t12));
-        const float _t26 = _t16 - _t22 * (_t19 * _t25 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t23;
-        const float _t27 = _t19 - _t22 * (_t16 * _t25 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t23;
-        const float _t28 = sqrtf(_t24 * _t24 + (_t26 * _t26 + _t27 * _t27));
-        out[i] = _t8 + _t9 + _t10 - _t11 * ((fabsf(_t28) <= 7.00000715f) ? _t28 : ((_t28 > 0.0f) ? 7.00000715f : (-7.00000715f)));
+        const float _t22 = sqrtf(_t16 * _t16 + _t19 * _t19 + _t21 * _t21);
+        const float _t23 = 1.0f / _t22;
+        const float _t24 = _t11 * 0.5f;
+        const float _t25 = (_t15 * _t16 + _t19 * _t20 - _t8 * _t21) * _t23 * _t24 - _t21;
+        const float _t26 = 4.0f * (_t6 * (_t17 * _t12));
+        const float _t27 = _t16 - _t23 * (_t19 * _t26 + _t15 * _t21 - _t16 * (_t7 + _t10)) * _t24;
+        const float _t28 = _t19 - _t23 * (_t16 * _t26 + _t20 * _t21 - _t19 * (_t7 + _t9)) * _t24;
+        const float _t29 = sqrtf(_t25 * _t25 + (_t27 * _t27 + _t28 * _t28));
+        const float _t30 = fabsf(_t11);
+        const float _t31 = _t30 * 3.50000358f + _t22;
+        const float _t32 = (_t31 <= 7.00000715f) ? _t31 : 7.00000715f;
+        const float _t33 = _t22 - _t30 * 10.5000105f;
+        const float _t34 = ((-7.00000715f) <= _t33) ? _t33 : (-7.00000715f);
+        out[i] = _t8 + _t9 + _t10 - _t11 * ((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_o2_offsetf(x[i], y[i], z[i], h[i]);
@@ -724,43 +795,49 @@ static inline void neovius_o2_shellf_n(size_t n, const float *x, const float *y,
     OFFSETGEN_SIMD_LOOP
     for (i = 0; i < n; ++i) {
         const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_sinf(_t0);
+        const float _t1 = offsetgen_batch_cosf(_t0);
         const float _t2 = 6.28318548f * y[i];
         const float _t3 = offsetgen_batch_cosf(_t2);
         const float _t4 = _t1 * _t3;
         const float _t5 = 6.28318548f * x[i];
         const float _t6 = offsetgen_batch_cosf(_t5);
-        const float _t7 = _t1 * 3.0f + 4.0f * (_t4 * _t6);
-        const float _t8 = offsetgen_batch_cosf(_t0);
-        const float _t9 = offsetgen_batch_sinf(_t2);
-        const float _t10 = _t8 * _t9;
-        const float _t11 = 4.0f * (_t10 * _t6) + _t9 * 3.0f;
-        const float _t12 = offsetgen_batch_sinf(_t5);
-        const float _t13 = _t8 * _t3;
-        const float _t14 = 3.0f * _t12 + 4.0f * (_t13 * _t12);
-        const float _t15 = 1.0f / sqrtf(_t11 * _t11 + _t7 * _t7 + _t14 * _t14);
-        const float _t16 = 4.0f * (_t6 * (_t1 * _t9));
-        const float _t17 = 4.0f * (_t4 * _t12);
-        const float _t18 = _t13 * _t6 * 4.0f;
-        const float _t19 = _t8 * 3.0f;
-        const float _t20 = 6.28318548f * (t[i] * 0.5f);
-        const float _t21 = _t20 * 0.5f;
-        const float _t22 = _t15 * (_t11 * _t16 + _t17 * _t14 - _t7 * (_t18 + _t19)) * _t21;
-        const float _t23 = _t7 + _t22;
-        const float _t24 = 4.0f * (_t10 * _t12);
-        const float _t25 = _t18 + 3.0f * _t6;
-        const float _t26 = (_t24 * _t11 + _t7 * _t17 - _t25 * _t14) * _t15 * _t21;
-        const float _t27 = _t14 + _t26;
-        const float _t28 = _t3 * 3.0f;
-        const float _t29 = _t21 * (_t15 * (_t7 * _t16 + _t24 * _t14 - _t11 * (_t18 + _t28)));
-        const float _t30 = _t11 + _t29;
-        const float _t31 = sqrtf(_t23 * _t23 + _t27 * _t27 + _t30 * _t30);
-        const float _t32 = _t25 + _t19 + _t28;
-        const float _t33 = _t14 - _t26;
-        const float _t34 = _t7 - _t22;
-        const float _t35 = _t11 - _t29;
-        const float _t36 = sqrtf(_t33 * _t33 + (_t34 * _t34 + _t35 * _t35));
-        out[i] = (((fabsf(_t31) <= 7.00000715f) ? _t31 : ((_t31 > 0.0f) ? 7.00000715f : (-7.00000715f))) * _t20 + _t32) * (_t32 - _t20 * ((fabsf(_t36) <= 7.00000715f) ? _t36 : ((_t36 > 0.0f) ? 7.00000715f : (-7.00000715f))));
+        const float _t7 = _t4 * _t6 * 4.0f;
+        const float _t8 = _t7 + 3.0f * _t6;
+        const float _t9 = _t1 * 3.0f;
+        const float _t10 = _t3 * 3.0f;
+        const float _t11 = _t8 + _t9 + _t10;
+        const float _t12 = 6.28318548f * (t[i] * 0.5f);
+        const float _t13 = offsetgen_batch_sinf(_t5);
+        const float _t14 = 3.0f * _t13 + 4.0f * (_t4 * _t13);
+        const float _t15 = offsetgen_batch_sinf(_t2);
+        const float _t16 = _t1 * _t15;
+        const float _t17 = 4.0f * (_t16 * _t13);
+        const float _t18 = 4.0f * (_t16 * _t6) + _t15 * 3.0f;
+        const float _t19 = offsetgen_batch_sinf(_t0);
+        const float _t20 = _t19 * _t3;
+        const float _t21 = _t19 * 3.0f + 4.0f * (_t20 * _t6);
+        const float _t22 = 4.0f * (_t20 * _t13);
+        const float _t23 = sqrtf(_t18 * _t18 + _t21 * _t21 + _t14 * _t14);
+        const float _t24 = 1.0f / _t23;
+        const float _t25 = _t12 * 0.5f;
+        const float _t26 = (_t17 * _t18 + _t21 * _t22 - _t8 * _t14) * _t24 * _t25;
+        const float _t27 = _t14 - _t26;
+        const float _t28 = 4.0f * (_t6 * (_t19 * _t15));
+        const float _t29 = _t24 * (_t18 * _t28 + _t22 * _t14 - _t21 * (_t7 + _t9)) * _t25;
+        const float _t30 = _t21 - _t29;
+        const float _t31 = _t25 * (_t24 * (_t21 * _t28 + _t17 * _t14 - _t18 * (_t7 + _t10)));
+        const float _t32 = _t18 - _t31;
+        const float _t33 = sqrtf(_t27 * _t27 + (_t30 * _t30 + _t32 * _t32));
+        const float _t34 = fabsf(_t12);
+        const float _t35 = _t34 * 3.50000358f + _t23;
+        const float _t36 = (_t35 <= 7.00000715f) ? _t35 : 7.00000715f;
+        const float _t37 = _t23 - _t34 * 10.5000105f;
+        const float _t38 = ((-7.00000715f) <= _t37) ? _t37 : (-7.00000715f);
+        const float _t39 = _t21 + _t29;
+        const float _t40 = _t14 + _t26;
+        const float _t41 = _t18 + _t31;
+        const float _t42 = sqrtf(_t39 * _t39 + _t40 * _t40 + _t41 * _t41);
+        out[i] = (_t11 - _t12 * ((_t33 <= _t36) ? ((_t38 <= _t33) ? _t33 : _t38) : _t36)) * (_t12 * ((_t42 <= _t36) ? ((_t38 <= _t42) ? _t42 : _t38) : _t36) + _t11);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_o2_shellf(x[i], y[i], z[i], t[i]);

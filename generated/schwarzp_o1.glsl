@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^2) of the exact offset; relative thickness error ~ (h/L)^1.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: schwarzp_o1_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 1.00000101 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 8
-    - offset: 25
-    - shell: 28
-    - normal: 66
+    - offset: 24
+    - shell: 27
+    - normal: 69
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":25,"shell":28,"normal":66}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":24,"shell":27,"normal":69}} */
 #ifndef OFFSETGEN_SCHWARZP_O1_GLSL
 #define OFFSETGEN_SCHWARZP_O1_GLSL
 
@@ -44,7 +45,7 @@ highp float schwarzp_o1_field(highp vec3 p)
     return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 25.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 24.
 highp float schwarzp_o1_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -54,10 +55,10 @@ highp float schwarzp_o1_offset(highp vec3 p, highp float h)
     highp float _t4 = sin(_t0);
     highp float _t5 = sin(_t1);
     highp float _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return cos(_t0) + cos(_t1) + cos(_t2) - 6.28318548 * h * ((abs(_t6) <= 1.73205256) ? _t6 : ((_t6 > 0.0) ? 1.73205256 : (-1.73205256)));
+    return cos(_t0) + cos(_t1) + cos(_t2) - 6.28318548 * h * ((_t6 <= 1.73205256) ? (((-1.73205256) <= _t6) ? _t6 : (-1.73205256)) : 1.73205256);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 28.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 27.
 highp float schwarzp_o1_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -68,11 +69,11 @@ highp float schwarzp_o1_shell(highp vec3 p, highp float t)
     highp float _t5 = sin(_t0);
     highp float _t6 = sin(_t1);
     highp float _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-    highp float _t8 = 6.28318548 * (t * 0.5) * ((abs(_t7) <= 1.73205256) ? _t7 : ((_t7 > 0.0) ? 1.73205256 : (-1.73205256)));
+    highp float _t8 = 6.28318548 * (t * 0.5) * ((_t7 <= 1.73205256) ? (((-1.73205256) <= _t7) ? _t7 : (-1.73205256)) : 1.73205256);
     return (_t3 - _t8) * (_t3 + _t8);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 66.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 69.
 highp vec3 schwarzp_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.x;
@@ -83,21 +84,25 @@ highp vec3 schwarzp_o1_normal(highp vec3 p, highp float h)
     highp float _t5 = sin(_t4);
     highp float _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
     highp float _t7 = sqrt(_t6);
-    bool _t8 = abs(_t7) <= 1.73205256;
-    highp float _t9 = 6.28318548 * h;
-    highp float _t10 = 1.0 / _t7;
-    highp float _t11 = (_t8) ? -(_t9 * (cos(_t2) * _t3 * _t10) + _t3) : -_t3;
-    highp float _t12 = (_t8) ? -(_t5 + _t9 * (cos(_t4) * _t5 * _t10)) : -_t5;
-    highp float _t13 = (_t8) ? -(_t9 * (_t1 * cos(_t0) * _t10) + _t1) : -_t1;
-    highp float _t14 = _t11 * _t11 + _t12 * _t12 + _t13 * _t13;
-    bool _t15 = _t14 > 0.0;
-    bool _t16 = _t14 <= 1.00000002e+30;
-    highp float _t17 = 1.0 / sqrt(_t14);
-    highp float _t18 = (_t6 > 0.0) ? _t10 : 0.0;
-    highp float _t19 = -(_t18 * _t1);
-    highp float _t20 = -(_t5 * _t18);
-    highp float _t21 = -(_t3 * _t18);
-    return vec3((_t15) ? ((_t16) ? _t17 * _t13 : _t19) : _t19, (_t15) ? ((_t16) ? _t12 * _t17 : _t20) : _t20, (_t15) ? ((_t16) ? _t17 * _t11 : _t21) : _t21);
+    bool _t8 = _t7 <= 1.73205256;
+    bool _t9 = (-1.73205256) <= _t7;
+    highp float _t10 = 6.28318548 * h;
+    highp float _t11 = 1.0 / _t7;
+    highp float _t12 = -_t5;
+    highp float _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (cos(_t4) * _t5 * _t11)) : _t12) : _t12;
+    highp float _t14 = -_t1;
+    highp float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * cos(_t0) * _t11) + _t1) : _t14) : _t14;
+    highp float _t16 = -_t3;
+    highp float _t17 = (_t8) ? ((_t9) ? -(_t10 * (cos(_t2) * _t3 * _t11) + _t3) : _t16) : _t16;
+    highp float _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
+    bool _t19 = _t18 > 0.0;
+    bool _t20 = _t18 <= 1.00000002e+30;
+    highp float _t21 = 1.0 / sqrt(_t18);
+    highp float _t22 = (_t6 > 0.0) ? _t11 : 0.0;
+    highp float _t23 = -(_t22 * _t1);
+    highp float _t24 = -(_t5 * _t22);
+    highp float _t25 = -(_t3 * _t22);
+    return vec3((_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23, (_t19) ? ((_t20) ? _t21 * _t13 : _t24) : _t24, (_t19) ? ((_t20) ? _t21 * _t17 : _t25) : _t25);
 }
 
 

@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to schwarzp_o1_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 1.7320525396196846 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
+ *   and H = 1.0000010126065046 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   25
- *   shell    28
- *   normal   66
+ *   offset   24
+ *   shell    27
+ *   normal   69
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":25,"shell":28,"normal":66}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":24,"shell":27,"normal":69}} */
 #ifndef OFFSETGEN_SCHWARZP_O1_H
 #define OFFSETGEN_SCHWARZP_O1_H
 
@@ -110,7 +113,7 @@ static inline double schwarzp_o1_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 25
+ * Total ops: 24
  */
 static inline double schwarzp_o1_offset(double x, double y, double z, double h)
 {
@@ -121,11 +124,11 @@ static inline double schwarzp_o1_offset(double x, double y, double z, double h)
     const double _t4 = offsetgen_sin(_t0);
     const double _t5 = offsetgen_sin(_t1);
     const double _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return offsetgen_cos(_t0) + offsetgen_cos(_t1) + offsetgen_cos(_t2) - 6.2831853071795862 * h * ((fabs(_t6) <= 1.7320525396196846) ? _t6 : ((_t6 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    return offsetgen_cos(_t0) + offsetgen_cos(_t1) + offsetgen_cos(_t2) - 6.2831853071795862 * h * ((_t6 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t6) ? _t6 : (-1.7320525396196846)) : 1.7320525396196846);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 28
+ * Total ops: 27
  */
 static inline double schwarzp_o1_shell(double x, double y, double z, double t)
 {
@@ -137,12 +140,12 @@ static inline double schwarzp_o1_shell(double x, double y, double z, double t)
     const double _t5 = offsetgen_sin(_t0);
     const double _t6 = offsetgen_sin(_t1);
     const double _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-    const double _t8 = 6.2831853071795862 * (t * 0.5) * ((fabs(_t7) <= 1.7320525396196846) ? _t7 : ((_t7 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    const double _t8 = 6.2831853071795862 * (t * 0.5) * ((_t7 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t7) ? _t7 : (-1.7320525396196846)) : 1.7320525396196846);
     return (_t3 - _t8) * (_t3 + _t8);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 66
+ * Total ops: 69
  */
 static inline void schwarzp_o1_normal(double x, double y, double z, double h, double n[3])
 {
@@ -154,23 +157,27 @@ static inline void schwarzp_o1_normal(double x, double y, double z, double h, do
     const double _t5 = offsetgen_sin(_t4);
     const double _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
     const double _t7 = sqrt(_t6);
-    const int _t8 = fabs(_t7) <= 1.7320525396196846;
-    const double _t9 = 6.2831853071795862 * h;
-    const double _t10 = 1.0 / _t7;
-    const double _t11 = (_t8) ? -(_t9 * (offsetgen_cos(_t2) * _t3 * _t10) + _t3) : -_t3;
-    const double _t12 = (_t8) ? -(_t5 + _t9 * (offsetgen_cos(_t4) * _t5 * _t10)) : -_t5;
-    const double _t13 = (_t8) ? -(_t9 * (_t1 * offsetgen_cos(_t0) * _t10) + _t1) : -_t1;
-    const double _t14 = _t11 * _t11 + _t12 * _t12 + _t13 * _t13;
-    const int _t15 = _t14 > 0.0;
-    const int _t16 = _t14 <= 1.0e+30;
-    const double _t17 = 1.0 / sqrt(_t14);
-    const double _t18 = (_t6 > 0.0) ? _t10 : 0.0;
-    const double _t19 = -(_t18 * _t1);
-    const double _t20 = -(_t5 * _t18);
-    const double _t21 = -(_t3 * _t18);
-    n[0] = (_t15) ? ((_t16) ? _t17 * _t13 : _t19) : _t19;
-    n[1] = (_t15) ? ((_t16) ? _t12 * _t17 : _t20) : _t20;
-    n[2] = (_t15) ? ((_t16) ? _t17 * _t11 : _t21) : _t21;
+    const int _t8 = _t7 <= 1.7320525396196846;
+    const int _t9 = (-1.7320525396196846) <= _t7;
+    const double _t10 = 6.2831853071795862 * h;
+    const double _t11 = 1.0 / _t7;
+    const double _t12 = -_t5;
+    const double _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (offsetgen_cos(_t4) * _t5 * _t11)) : _t12) : _t12;
+    const double _t14 = -_t1;
+    const double _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * offsetgen_cos(_t0) * _t11) + _t1) : _t14) : _t14;
+    const double _t16 = -_t3;
+    const double _t17 = (_t8) ? ((_t9) ? -(_t10 * (offsetgen_cos(_t2) * _t3 * _t11) + _t3) : _t16) : _t16;
+    const double _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
+    const int _t19 = _t18 > 0.0;
+    const int _t20 = _t18 <= 1.0e+30;
+    const double _t21 = 1.0 / sqrt(_t18);
+    const double _t22 = (_t6 > 0.0) ? _t11 : 0.0;
+    const double _t23 = -(_t22 * _t1);
+    const double _t24 = -(_t5 * _t22);
+    const double _t25 = -(_t3 * _t22);
+    n[0] = (_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23;
+    n[1] = (_t19) ? ((_t20) ? _t21 * _t13 : _t24) : _t24;
+    n[2] = (_t19) ? ((_t20) ? _t21 * _t17 : _t25) : _t25;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -230,7 +237,7 @@ static inline float schwarzp_o1_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 25
+ * Total ops: 24
  */
 static inline float schwarzp_o1_offsetf(float x, float y, float z, float h)
 {
@@ -241,11 +248,11 @@ static inline float schwarzp_o1_offsetf(float x, float y, float z, float h)
     const float _t4 = offsetgen_sinf(_t0);
     const float _t5 = offsetgen_sinf(_t1);
     const float _t6 = sqrtf(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return offsetgen_cosf(_t0) + offsetgen_cosf(_t1) + offsetgen_cosf(_t2) - 6.28318548f * h * ((fabsf(_t6) <= 1.73205256f) ? _t6 : ((_t6 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    return offsetgen_cosf(_t0) + offsetgen_cosf(_t1) + offsetgen_cosf(_t2) - 6.28318548f * h * ((_t6 <= 1.73205256f) ? (((-1.73205256f) <= _t6) ? _t6 : (-1.73205256f)) : 1.73205256f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 28
+ * Total ops: 27
  */
 static inline float schwarzp_o1_shellf(float x, float y, float z, float t)
 {
@@ -257,12 +264,12 @@ static inline float schwarzp_o1_shellf(float x, float y, float z, float t)
     const float _t5 = offsetgen_sinf(_t0);
     const float _t6 = offsetgen_sinf(_t1);
     const float _t7 = sqrtf(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-    const float _t8 = 6.28318548f * (t * 0.5f) * ((fabsf(_t7) <= 1.73205256f) ? _t7 : ((_t7 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    const float _t8 = 6.28318548f * (t * 0.5f) * ((_t7 <= 1.73205256f) ? (((-1.73205256f) <= _t7) ? _t7 : (-1.73205256f)) : 1.73205256f);
     return (_t3 - _t8) * (_t3 + _t8);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 66
+ * Total ops: 69
  */
 static inline void schwarzp_o1_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -274,23 +281,27 @@ static inline void schwarzp_o1_normalf(float x, float y, float z, float h, float
     const float _t5 = offsetgen_sinf(_t4);
     const float _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
     const float _t7 = sqrtf(_t6);
-    const int _t8 = fabsf(_t7) <= 1.73205256f;
-    const float _t9 = 6.28318548f * h;
-    const float _t10 = 1.0f / _t7;
-    const float _t11 = (_t8) ? -(_t9 * (offsetgen_cosf(_t2) * _t3 * _t10) + _t3) : -_t3;
-    const float _t12 = (_t8) ? -(_t5 + _t9 * (offsetgen_cosf(_t4) * _t5 * _t10)) : -_t5;
-    const float _t13 = (_t8) ? -(_t9 * (_t1 * offsetgen_cosf(_t0) * _t10) + _t1) : -_t1;
-    const float _t14 = _t11 * _t11 + _t12 * _t12 + _t13 * _t13;
-    const int _t15 = _t14 > 0.0f;
-    const int _t16 = _t14 <= 1.00000002e+30f;
-    const float _t17 = 1.0f / sqrtf(_t14);
-    const float _t18 = (_t6 > 0.0f) ? _t10 : 0.0f;
-    const float _t19 = -(_t18 * _t1);
-    const float _t20 = -(_t5 * _t18);
-    const float _t21 = -(_t3 * _t18);
-    n[0] = (_t15) ? ((_t16) ? _t17 * _t13 : _t19) : _t19;
-    n[1] = (_t15) ? ((_t16) ? _t12 * _t17 : _t20) : _t20;
-    n[2] = (_t15) ? ((_t16) ? _t17 * _t11 : _t21) : _t21;
+    const int _t8 = _t7 <= 1.73205256f;
+    const int _t9 = (-1.73205256f) <= _t7;
+    const float _t10 = 6.28318548f * h;
+    const float _t11 = 1.0f / _t7;
+    const float _t12 = -_t5;
+    const float _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (offsetgen_cosf(_t4) * _t5 * _t11)) : _t12) : _t12;
+    const float _t14 = -_t1;
+    const float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * offsetgen_cosf(_t0) * _t11) + _t1) : _t14) : _t14;
+    const float _t16 = -_t3;
+    const float _t17 = (_t8) ? ((_t9) ? -(_t10 * (offsetgen_cosf(_t2) * _t3 * _t11) + _t3) : _t16) : _t16;
+    const float _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
+    const int _t19 = _t18 > 0.0f;
+    const int _t20 = _t18 <= 1.00000002e+30f;
+    const float _t21 = 1.0f / sqrtf(_t18);
+    const float _t22 = (_t6 > 0.0f) ? _t11 : 0.0f;
+    const float _t23 = -(_t22 * _t1);
+    const float _t24 = -(_t5 * _t22);
+    const float _t25 = -(_t3 * _t22);
+    n[0] = (_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23;
+    n[1] = (_t19) ? ((_t20) ? _t21 * _t13 : _t24) : _t24;
+    n[2] = (_t19) ? ((_t20) ? _t21 * _t17 : _t25) : _t25;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -402,7 +413,7 @@ static inline void schwarzp_o1_offset_n(size_t n, const double *x, const double 
         const double _t4 = offsetgen_batch_sin(_t0);
         const double _t5 = offsetgen_batch_sin(_t1);
         const double _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-        out[i] = offsetgen_batch_cos(_t0) + offsetgen_batch_cos(_t1) + offsetgen_batch_cos(_t2) - 6.2831853071795862 * h[i] * ((fabs(_t6) <= 1.7320525396196846) ? _t6 : ((_t6 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        out[i] = offsetgen_batch_cos(_t0) + offsetgen_batch_cos(_t1) + offsetgen_batch_cos(_t2) - 6.2831853071795862 * h[i] * ((_t6 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t6) ? _t6 : (-1.7320525396196846)) : 1.7320525396196846);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o1_offset(x[i], y[i], z[i], h[i]);
@@ -425,7 +436,7 @@ static inline void schwarzp_o1_shell_n(size_t n, const double *x, const double *
         const double _t5 = offsetgen_batch_sin(_t0);
         const double _t6 = offsetgen_batch_sin(_t1);
         const double _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-        const double _t8 = 6.2831853071795862 * (t[i] * 0.5) * ((fabs(_t7) <= 1.7320525396196846) ? _t7 : ((_t7 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        const double _t8 = 6.2831853071795862 * (t[i] * 0.5) * ((_t7 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t7) ? _t7 : (-1.7320525396196846)) : 1.7320525396196846);
         out[i] = (_t3 - _t8) * (_t3 + _t8);
     }
     for (i = 0; i < n; ++i) {
@@ -448,7 +459,7 @@ static inline void schwarzp_o1_offsetf_n(size_t n, const float *x, const float *
         const float _t4 = offsetgen_batch_sinf(_t0);
         const float _t5 = offsetgen_batch_sinf(_t1);
         const float _t6 = sqrtf(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-        out[i] = offsetgen_batch_cosf(_t0) + offsetgen_batch_cosf(_t1) + offsetgen_batch_cosf(_t2) - 6.28318548f * h[i] * ((fabsf(_t6) <= 1.73205256f) ? _t6 : ((_t6 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        out[i] = offsetgen_batch_cosf(_t0) + offsetgen_batch_cosf(_t1) + offsetgen_batch_cosf(_t2) - 6.28318548f * h[i] * ((_t6 <= 1.73205256f) ? (((-1.73205256f) <= _t6) ? _t6 : (-1.73205256f)) : 1.73205256f);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o1_offsetf(x[i], y[i], z[i], h[i]);
@@ -471,7 +482,7 @@ static inline void schwarzp_o1_shellf_n(size_t n, const float *x, const float *y
         const float _t5 = offsetgen_batch_sinf(_t0);
         const float _t6 = offsetgen_batch_sinf(_t1);
         const float _t7 = sqrtf(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-        const float _t8 = 6.28318548f * (t[i] * 0.5f) * ((fabsf(_t7) <= 1.73205256f) ? _t7 : ((_t7 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        const float _t8 = 6.28318548f * (t[i] * 0.5f) * ((_t7 <= 1.73205256f) ? (((-1.73205256f) <= _t7) ? _t7 : (-1.73205256f)) : 1.73205256f);
         out[i] = (_t3 - _t8) * (_t3 + _t8);
     }
     for (i = 0; i < n; ++i) {

@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^3) of the exact offset; relative thickness error ~ (h/L)^2.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: schwarzp_o2_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 1.00000101 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 8
-    - offset: 45
-    - shell: 63
-    - normal: 127
+    - offset: 53
+    - shell: 70
+    - normal: 154
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":45,"shell":63,"normal":127}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":53,"shell":70,"normal":154}} */
 #ifndef OFFSETGEN_SCHWARZP_O2_GLSL
 #define OFFSETGEN_SCHWARZP_O2_GLSL
 
@@ -44,7 +45,7 @@ highp float schwarzp_o2_field(highp vec3 p)
     return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 45.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 53.
 highp float schwarzp_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -57,46 +58,58 @@ highp float schwarzp_o2_offset(highp vec3 p, highp float h)
     highp float _t7 = sin(_t2);
     highp float _t8 = sin(_t4);
     highp float _t9 = sin(_t0);
-    highp float _t10 = 1.0 / sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-    highp float _t11 = _t6 * 0.5;
-    highp float _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
-    highp float _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
-    highp float _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
-    highp float _t15 = sqrt(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
-    return _t1 + _t3 + _t5 - _t6 * ((abs(_t15) <= 1.73205256) ? _t15 : ((_t15 > 0.0) ? 1.73205256 : (-1.73205256)));
+    highp float _t10 = sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+    highp float _t11 = 1.0 / _t10;
+    highp float _t12 = _t6 * 0.5;
+    highp float _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
+    highp float _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
+    highp float _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+    highp float _t16 = sqrt(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
+    highp float _t17 = abs(_t6);
+    highp float _t18 = _t10 + _t17 * 0.500000477;
+    highp float _t19 = (_t18 <= 1.73205256) ? _t18 : 1.73205256;
+    highp float _t20 = _t10 - _t17 * 1.50000155;
+    highp float _t21 = ((-1.73205256) <= _t20) ? _t20 : (-1.73205256);
+    return _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 63.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 70.
 highp float schwarzp_o2_shell(highp vec3 p, highp float t)
 {
-    highp float _t0 = 6.28318548 * (t * 0.5);
-    highp float _t1 = _t0 * 0.5;
+    highp float _t0 = p.z * 6.28318548;
+    highp float _t1 = cos(_t0);
     highp float _t2 = 6.28318548 * p.y;
     highp float _t3 = cos(_t2);
-    highp float _t4 = sin(_t2);
-    highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = sin(_t5);
-    highp float _t7 = p.z * 6.28318548;
-    highp float _t8 = sin(_t7);
-    highp float _t9 = 1.0 / sqrt(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
-    highp float _t10 = _t1 * (_t3 * _t4 * _t9);
-    highp float _t11 = _t10 - _t4;
-    highp float _t12 = cos(_t5);
-    highp float _t13 = _t6 * _t12 * _t9 * _t1;
-    highp float _t14 = _t13 - _t6;
-    highp float _t15 = cos(_t7);
-    highp float _t16 = _t1 * (_t15 * _t8 * _t9);
-    highp float _t17 = _t8 - _t16;
-    highp float _t18 = sqrt(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
-    highp float _t19 = _t15 + _t3 + _t12;
-    highp float _t20 = _t13 + _t6;
-    highp float _t21 = _t8 + _t16;
-    highp float _t22 = _t10 + _t4;
-    highp float _t23 = sqrt(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-    return (((abs(_t18) <= 1.73205256) ? _t18 : ((_t18 > 0.0) ? 1.73205256 : (-1.73205256))) * _t0 + _t19) * (_t19 - ((abs(_t23) <= 1.73205256) ? _t23 : ((_t23 > 0.0) ? 1.73205256 : (-1.73205256))) * _t0);
+    highp float _t4 = 6.28318548 * p.x;
+    highp float _t5 = cos(_t4);
+    highp float _t6 = _t1 + _t3 + _t5;
+    highp float _t7 = sin(_t4);
+    highp float _t8 = sin(_t0);
+    highp float _t9 = sin(_t2);
+    highp float _t10 = sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+    highp float _t11 = 1.0 / _t10;
+    highp float _t12 = 6.28318548 * (t * 0.5);
+    highp float _t13 = _t12 * 0.5;
+    highp float _t14 = _t7 * _t5 * _t11 * _t13;
+    highp float _t15 = _t14 + _t7;
+    highp float _t16 = _t13 * (_t1 * _t8 * _t11);
+    highp float _t17 = _t8 + _t16;
+    highp float _t18 = _t13 * (_t3 * _t9 * _t11);
+    highp float _t19 = _t18 + _t9;
+    highp float _t20 = sqrt(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
+    highp float _t21 = abs(_t12);
+    highp float _t22 = _t21 * 0.500000477 + _t10;
+    highp float _t23 = (_t22 <= 1.73205256) ? _t22 : 1.73205256;
+    highp float _t24 = _t10 - _t21 * 1.50000155;
+    highp float _t25 = ((-1.73205256) <= _t24) ? _t24 : (-1.73205256);
+    highp float _t26 = _t18 - _t9;
+    highp float _t27 = _t14 - _t7;
+    highp float _t28 = _t8 - _t16;
+    highp float _t29 = sqrt(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
+    return (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 127.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 154.
 highp vec3 schwarzp_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.y;
@@ -110,35 +123,48 @@ highp vec3 schwarzp_o2_normal(highp vec3 p, highp float h)
     highp float _t8 = _t7 * _t7;
     highp float _t9 = _t1 * _t1;
     highp float _t10 = _t5 + _t8 + _t9;
-    highp float _t11 = 1.0 / sqrt(_t10);
-    highp float _t12 = _t2 * _t1 * _t11;
-    highp float _t13 = 6.28318548 * h;
-    highp float _t14 = _t13 * 0.5;
-    highp float _t15 = _t1 + _t12 * _t14;
-    highp float _t16 = cos(_t3);
-    highp float _t17 = _t4 * _t16 * _t11;
-    highp float _t18 = _t17 * _t14 + _t4;
-    highp float _t19 = cos(_t6);
-    highp float _t20 = _t19 * _t7 * _t11;
-    highp float _t21 = _t20 * _t14 + _t7;
-    highp float _t22 = sqrt(_t15 * _t15 + _t18 * _t18 + _t21 * _t21);
-    bool _t23 = abs(_t22) <= 1.73205256;
-    highp float _t24 = 1.0 / _t22;
-    highp float _t25 = _t17 * _t12 * _t11 * _t14;
-    highp float _t26 = _t20 * _t12 * _t11 * _t14;
-    highp float _t27 = (_t23) ? -(_t13 * (_t24 * ((_t2 - (_t12 * _t12 - (_t2 * _t2 - _t9)) * _t11 * _t14) * _t15 - _t18 * _t25 - _t21 * _t26)) + _t1) : -_t1;
-    highp float _t28 = _t17 * _t20 * _t11 * _t14;
-    highp float _t29 = (_t23) ? -(_t13 * (_t24 * ((_t19 - (_t20 * _t20 - (_t19 * _t19 - _t8)) * _t11 * _t14) * _t21 - _t18 * _t28 - _t15 * _t26)) + _t7) : -_t7;
-    highp float _t30 = (_t23) ? _t13 * ((_t28 * _t21 + (_t25 * _t15 + _t18 * ((_t5 - _t16 * _t16 + _t17 * _t17) * _t11 * _t14 - _t16))) * _t24) - _t4 : -_t4;
-    highp float _t31 = _t27 * _t27 + (_t29 * _t29 + _t30 * _t30);
-    bool _t32 = _t31 > 0.0;
-    bool _t33 = _t31 <= 1.00000002e+30;
-    highp float _t34 = 1.0 / sqrt(_t31);
-    highp float _t35 = (_t10 > 0.0) ? _t11 : 0.0;
-    highp float _t36 = -(_t35 * _t4);
-    highp float _t37 = -(_t1 * _t35);
-    highp float _t38 = -(_t7 * _t35);
-    return vec3((_t32) ? ((_t33) ? _t34 * _t30 : _t36) : _t36, (_t32) ? ((_t33) ? _t34 * _t27 : _t37) : _t37, (_t32) ? ((_t33) ? _t34 * _t29 : _t38) : _t38);
+    highp float _t11 = sqrt(_t10);
+    highp float _t12 = 1.0 / _t11;
+    highp float _t13 = _t2 * _t1 * _t12;
+    highp float _t14 = 6.28318548 * h;
+    highp float _t15 = _t14 * 0.5;
+    highp float _t16 = _t1 + _t13 * _t15;
+    highp float _t17 = cos(_t3);
+    highp float _t18 = _t4 * _t17 * _t12;
+    highp float _t19 = _t18 * _t15 + _t4;
+    highp float _t20 = cos(_t6);
+    highp float _t21 = _t20 * _t7 * _t12;
+    highp float _t22 = _t21 * _t15 + _t7;
+    highp float _t23 = sqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
+    highp float _t24 = abs(_t14);
+    highp float _t25 = _t11 + _t24 * 0.500000477;
+    bool _t26 = _t25 <= 1.73205256;
+    bool _t27 = _t23 <= ((_t26) ? _t25 : 1.73205256);
+    highp float _t28 = _t11 - _t24 * 1.50000155;
+    bool _t29 = (-1.73205256) <= _t28;
+    bool _t30 = ((_t29) ? _t28 : (-1.73205256)) <= _t23;
+    highp float _t31 = 1.0 / _t23;
+    highp float _t32 = _t18 * _t13 * _t12 * _t15;
+    highp float _t33 = _t21 * _t13 * _t12 * _t15;
+    highp float _t34 = -(_t1 + _t14 * _t13);
+    highp float _t35 = -_t1;
+    highp float _t36 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t2 - (_t13 * _t13 - (_t2 * _t2 - _t9)) * _t12 * _t15) * _t16 - _t19 * _t32 - _t22 * _t33)) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
+    highp float _t37 = _t18 * _t21 * _t12 * _t15;
+    highp float _t38 = -(_t14 * _t18 + _t4);
+    highp float _t39 = -_t4;
+    highp float _t40 = (_t27) ? ((_t30) ? _t14 * ((_t37 * _t22 + (_t32 * _t16 + _t19 * ((_t5 - _t17 * _t17 + _t18 * _t18) * _t12 * _t15 - _t17))) * _t31) - _t4 : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
+    highp float _t41 = -(_t14 * _t21 + _t7);
+    highp float _t42 = -_t7;
+    highp float _t43 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t8)) * _t12 * _t15) * _t22 - _t19 * _t37 - _t16 * _t33)) + _t7) : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
+    highp float _t44 = _t36 * _t36 + (_t40 * _t40 + _t43 * _t43);
+    bool _t45 = _t44 > 0.0;
+    bool _t46 = _t44 <= 1.00000002e+30;
+    highp float _t47 = 1.0 / sqrt(_t44);
+    highp float _t48 = (_t10 > 0.0) ? _t12 : 0.0;
+    highp float _t49 = -(_t48 * _t4);
+    highp float _t50 = -(_t1 * _t48);
+    highp float _t51 = -(_t7 * _t48);
+    return vec3((_t45) ? ((_t46) ? _t40 * _t47 : _t49) : _t49, (_t45) ? ((_t46) ? _t36 * _t47 : _t50) : _t50, (_t45) ? ((_t46) ? _t43 * _t47 : _t51) : _t51);
 }
 
 

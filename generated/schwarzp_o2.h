@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to schwarzp_o2_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 1.7320525396196846 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
+ *   and H = 1.0000010126065046 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   45
- *   shell    63
- *   normal   127
+ *   offset   53
+ *   shell    70
+ *   normal   154
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":45,"shell":63,"normal":127}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":53,"shell":70,"normal":154}} */
 #ifndef OFFSETGEN_SCHWARZP_O2_H
 #define OFFSETGEN_SCHWARZP_O2_H
 
@@ -110,7 +113,7 @@ static inline double schwarzp_o2_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 45
+ * Total ops: 53
  */
 static inline double schwarzp_o2_offset(double x, double y, double z, double h)
 {
@@ -124,49 +127,61 @@ static inline double schwarzp_o2_offset(double x, double y, double z, double h)
     const double _t7 = offsetgen_sin(_t2);
     const double _t8 = offsetgen_sin(_t4);
     const double _t9 = offsetgen_sin(_t0);
-    const double _t10 = 1.0 / sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-    const double _t11 = _t6 * 0.5;
-    const double _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
-    const double _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
-    const double _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
-    const double _t15 = sqrt(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
-    return _t1 + _t3 + _t5 - _t6 * ((fabs(_t15) <= 1.7320525396196846) ? _t15 : ((_t15 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    const double _t10 = sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+    const double _t11 = 1.0 / _t10;
+    const double _t12 = _t6 * 0.5;
+    const double _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
+    const double _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
+    const double _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const double _t16 = sqrt(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
+    const double _t17 = fabs(_t6);
+    const double _t18 = _t10 + _t17 * 0.50000050630325232;
+    const double _t19 = (_t18 <= 1.7320525396196846) ? _t18 : 1.7320525396196846;
+    const double _t20 = _t10 - _t17 * 1.5000015189097571;
+    const double _t21 = ((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846);
+    return _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 63
+ * Total ops: 70
  */
 static inline double schwarzp_o2_shell(double x, double y, double z, double t)
 {
-    const double _t0 = 6.2831853071795862 * (t * 0.5);
-    const double _t1 = _t0 * 0.5;
+    const double _t0 = z * 6.2831853071795862;
+    const double _t1 = offsetgen_cos(_t0);
     const double _t2 = 6.2831853071795862 * y;
     const double _t3 = offsetgen_cos(_t2);
-    const double _t4 = offsetgen_sin(_t2);
-    const double _t5 = 6.2831853071795862 * x;
-    const double _t6 = offsetgen_sin(_t5);
-    const double _t7 = z * 6.2831853071795862;
-    const double _t8 = offsetgen_sin(_t7);
-    const double _t9 = 1.0 / sqrt(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
-    const double _t10 = _t1 * (_t3 * _t4 * _t9);
-    const double _t11 = _t10 - _t4;
-    const double _t12 = offsetgen_cos(_t5);
-    const double _t13 = _t6 * _t12 * _t9 * _t1;
-    const double _t14 = _t13 - _t6;
-    const double _t15 = offsetgen_cos(_t7);
-    const double _t16 = _t1 * (_t15 * _t8 * _t9);
-    const double _t17 = _t8 - _t16;
-    const double _t18 = sqrt(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
-    const double _t19 = _t15 + _t3 + _t12;
-    const double _t20 = _t13 + _t6;
-    const double _t21 = _t8 + _t16;
-    const double _t22 = _t10 + _t4;
-    const double _t23 = sqrt(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-    return (((fabs(_t18) <= 1.7320525396196846) ? _t18 : ((_t18 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t0 + _t19) * (_t19 - ((fabs(_t23) <= 1.7320525396196846) ? _t23 : ((_t23 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t0);
+    const double _t4 = 6.2831853071795862 * x;
+    const double _t5 = offsetgen_cos(_t4);
+    const double _t6 = _t1 + _t3 + _t5;
+    const double _t7 = offsetgen_sin(_t4);
+    const double _t8 = offsetgen_sin(_t0);
+    const double _t9 = offsetgen_sin(_t2);
+    const double _t10 = sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+    const double _t11 = 1.0 / _t10;
+    const double _t12 = 6.2831853071795862 * (t * 0.5);
+    const double _t13 = _t12 * 0.5;
+    const double _t14 = _t7 * _t5 * _t11 * _t13;
+    const double _t15 = _t14 + _t7;
+    const double _t16 = _t13 * (_t1 * _t8 * _t11);
+    const double _t17 = _t8 + _t16;
+    const double _t18 = _t13 * (_t3 * _t9 * _t11);
+    const double _t19 = _t18 + _t9;
+    const double _t20 = sqrt(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
+    const double _t21 = fabs(_t12);
+    const double _t22 = _t21 * 0.50000050630325232 + _t10;
+    const double _t23 = (_t22 <= 1.7320525396196846) ? _t22 : 1.7320525396196846;
+    const double _t24 = _t10 - _t21 * 1.5000015189097571;
+    const double _t25 = ((-1.7320525396196846) <= _t24) ? _t24 : (-1.7320525396196846);
+    const double _t26 = _t18 - _t9;
+    const double _t27 = _t14 - _t7;
+    const double _t28 = _t8 - _t16;
+    const double _t29 = sqrt(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
+    return (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 127
+ * Total ops: 154
  */
 static inline void schwarzp_o2_normal(double x, double y, double z, double h, double n[3])
 {
@@ -181,37 +196,50 @@ static inline void schwarzp_o2_normal(double x, double y, double z, double h, do
     const double _t8 = _t7 * _t7;
     const double _t9 = _t1 * _t1;
     const double _t10 = _t5 + _t8 + _t9;
-    const double _t11 = 1.0 / sqrt(_t10);
-    const double _t12 = _t2 * _t1 * _t11;
-    const double _t13 = 6.2831853071795862 * h;
-    const double _t14 = _t13 * 0.5;
-    const double _t15 = _t1 + _t12 * _t14;
-    const double _t16 = offsetgen_cos(_t3);
-    const double _t17 = _t4 * _t16 * _t11;
-    const double _t18 = _t17 * _t14 + _t4;
-    const double _t19 = offsetgen_cos(_t6);
-    const double _t20 = _t19 * _t7 * _t11;
-    const double _t21 = _t20 * _t14 + _t7;
-    const double _t22 = sqrt(_t15 * _t15 + _t18 * _t18 + _t21 * _t21);
-    const int _t23 = fabs(_t22) <= 1.7320525396196846;
-    const double _t24 = 1.0 / _t22;
-    const double _t25 = _t17 * _t12 * _t11 * _t14;
-    const double _t26 = _t20 * _t12 * _t11 * _t14;
-    const double _t27 = (_t23) ? -(_t13 * (_t24 * ((_t2 - (_t12 * _t12 - (_t2 * _t2 - _t9)) * _t11 * _t14) * _t15 - _t18 * _t25 - _t21 * _t26)) + _t1) : -_t1;
-    const double _t28 = _t17 * _t20 * _t11 * _t14;
-    const double _t29 = (_t23) ? -(_t13 * (_t24 * ((_t19 - (_t20 * _t20 - (_t19 * _t19 - _t8)) * _t11 * _t14) * _t21 - _t18 * _t28 - _t15 * _t26)) + _t7) : -_t7;
-    const double _t30 = (_t23) ? _t13 * ((_t28 * _t21 + (_t25 * _t15 + _t18 * ((_t5 - _t16 * _t16 + _t17 * _t17) * _t11 * _t14 - _t16))) * _t24) - _t4 : -_t4;
-    const double _t31 = _t27 * _t27 + (_t29 * _t29 + _t30 * _t30);
-    const int _t32 = _t31 > 0.0;
-    const int _t33 = _t31 <= 1.0e+30;
-    const double _t34 = 1.0 / sqrt(_t31);
-    const double _t35 = (_t10 > 0.0) ? _t11 : 0.0;
-    const double _t36 = -(_t35 * _t4);
-    const double _t37 = -(_t1 * _t35);
-    const double _t38 = -(_t7 * _t35);
-    n[0] = (_t32) ? ((_t33) ? _t34 * _t30 : _t36) : _t36;
-    n[1] = (_t32) ? ((_t33) ? _t34 * _t27 : _t37) : _t37;
-    n[2] = (_t32) ? ((_t33) ? _t34 * _t29 : _t38) : _t38;
+    const double _t11 = sqrt(_t10);
+    const double _t12 = 1.0 / _t11;
+    const double _t13 = _t2 * _t1 * _t12;
+    const double _t14 = 6.2831853071795862 * h;
+    const double _t15 = _t14 * 0.5;
+    const double _t16 = _t1 + _t13 * _t15;
+    const double _t17 = offsetgen_cos(_t3);
+    const double _t18 = _t4 * _t17 * _t12;
+    const double _t19 = _t18 * _t15 + _t4;
+    const double _t20 = offsetgen_cos(_t6);
+    const double _t21 = _t20 * _t7 * _t12;
+    const double _t22 = _t21 * _t15 + _t7;
+    const double _t23 = sqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
+    const double _t24 = fabs(_t14);
+    const double _t25 = _t11 + _t24 * 0.50000050630325232;
+    const int _t26 = _t25 <= 1.7320525396196846;
+    const int _t27 = _t23 <= ((_t26) ? _t25 : 1.7320525396196846);
+    const double _t28 = _t11 - _t24 * 1.5000015189097571;
+    const int _t29 = (-1.7320525396196846) <= _t28;
+    const int _t30 = ((_t29) ? _t28 : (-1.7320525396196846)) <= _t23;
+    const double _t31 = 1.0 / _t23;
+    const double _t32 = _t18 * _t13 * _t12 * _t15;
+    const double _t33 = _t21 * _t13 * _t12 * _t15;
+    const double _t34 = -(_t1 + _t14 * _t13);
+    const double _t35 = -_t1;
+    const double _t36 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t2 - (_t13 * _t13 - (_t2 * _t2 - _t9)) * _t12 * _t15) * _t16 - _t19 * _t32 - _t22 * _t33)) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
+    const double _t37 = _t18 * _t21 * _t12 * _t15;
+    const double _t38 = -(_t14 * _t18 + _t4);
+    const double _t39 = -_t4;
+    const double _t40 = (_t27) ? ((_t30) ? _t14 * ((_t37 * _t22 + (_t32 * _t16 + _t19 * ((_t5 - _t17 * _t17 + _t18 * _t18) * _t12 * _t15 - _t17))) * _t31) - _t4 : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
+    const double _t41 = -(_t14 * _t21 + _t7);
+    const double _t42 = -_t7;
+    const double _t43 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t8)) * _t12 * _t15) * _t22 - _t19 * _t37 - _t16 * _t33)) + _t7) : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
+    const double _t44 = _t36 * _t36 + (_t40 * _t40 + _t43 * _t43);
+    const int _t45 = _t44 > 0.0;
+    const int _t46 = _t44 <= 1.0e+30;
+    const double _t47 = 1.0 / sqrt(_t44);
+    const double _t48 = (_t10 > 0.0) ? _t12 : 0.0;
+    const double _t49 = -(_t48 * _t4);
+    const double _t50 = -(_t1 * _t48);
+    const double _t51 = -(_t7 * _t48);
+    n[0] = (_t45) ? ((_t46) ? _t40 * _t47 : _t49) : _t49;
+    n[1] = (_t45) ? ((_t46) ? _t36 * _t47 : _t50) : _t50;
+    n[2] = (_t45) ? ((_t46) ? _t43 * _t47 : _t51) : _t51;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -271,7 +299,7 @@ static inline float schwarzp_o2_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 45
+ * Total ops: 53
  */
 static inline float schwarzp_o2_offsetf(float x, float y, float z, float h)
 {
@@ -285,49 +313,61 @@ static inline float schwarzp_o2_offsetf(float x, float y, float z, float h)
     const float _t7 = offsetgen_sinf(_t2);
     const float _t8 = offsetgen_sinf(_t4);
     const float _t9 = offsetgen_sinf(_t0);
-    const float _t10 = 1.0f / sqrtf(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-    const float _t11 = _t6 * 0.5f;
-    const float _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
-    const float _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
-    const float _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
-    const float _t15 = sqrtf(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
-    return _t1 + _t3 + _t5 - _t6 * ((fabsf(_t15) <= 1.73205256f) ? _t15 : ((_t15 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    const float _t10 = sqrtf(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+    const float _t11 = 1.0f / _t10;
+    const float _t12 = _t6 * 0.5f;
+    const float _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
+    const float _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
+    const float _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const float _t16 = sqrtf(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
+    const float _t17 = fabsf(_t6);
+    const float _t18 = _t10 + _t17 * 0.500000477f;
+    const float _t19 = (_t18 <= 1.73205256f) ? _t18 : 1.73205256f;
+    const float _t20 = _t10 - _t17 * 1.50000155f;
+    const float _t21 = ((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f);
+    return _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 63
+ * Total ops: 70
  */
 static inline float schwarzp_o2_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = 6.28318548f * (t * 0.5f);
-    const float _t1 = _t0 * 0.5f;
+    const float _t0 = z * 6.28318548f;
+    const float _t1 = offsetgen_cosf(_t0);
     const float _t2 = 6.28318548f * y;
     const float _t3 = offsetgen_cosf(_t2);
-    const float _t4 = offsetgen_sinf(_t2);
-    const float _t5 = 6.28318548f * x;
-    const float _t6 = offsetgen_sinf(_t5);
-    const float _t7 = z * 6.28318548f;
-    const float _t8 = offsetgen_sinf(_t7);
-    const float _t9 = 1.0f / sqrtf(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
-    const float _t10 = _t1 * (_t3 * _t4 * _t9);
-    const float _t11 = _t10 - _t4;
-    const float _t12 = offsetgen_cosf(_t5);
-    const float _t13 = _t6 * _t12 * _t9 * _t1;
-    const float _t14 = _t13 - _t6;
-    const float _t15 = offsetgen_cosf(_t7);
-    const float _t16 = _t1 * (_t15 * _t8 * _t9);
-    const float _t17 = _t8 - _t16;
-    const float _t18 = sqrtf(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
-    const float _t19 = _t15 + _t3 + _t12;
-    const float _t20 = _t13 + _t6;
-    const float _t21 = _t8 + _t16;
-    const float _t22 = _t10 + _t4;
-    const float _t23 = sqrtf(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-    return (((fabsf(_t18) <= 1.73205256f) ? _t18 : ((_t18 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t0 + _t19) * (_t19 - ((fabsf(_t23) <= 1.73205256f) ? _t23 : ((_t23 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t0);
+    const float _t4 = 6.28318548f * x;
+    const float _t5 = offsetgen_cosf(_t4);
+    const float _t6 = _t1 + _t3 + _t5;
+    const float _t7 = offsetgen_sinf(_t4);
+    const float _t8 = offsetgen_sinf(_t0);
+    const float _t9 = offsetgen_sinf(_t2);
+    const float _t10 = sqrtf(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+    const float _t11 = 1.0f / _t10;
+    const float _t12 = 6.28318548f * (t * 0.5f);
+    const float _t13 = _t12 * 0.5f;
+    const float _t14 = _t7 * _t5 * _t11 * _t13;
+    const float _t15 = _t14 + _t7;
+    const float _t16 = _t13 * (_t1 * _t8 * _t11);
+    const float _t17 = _t8 + _t16;
+    const float _t18 = _t13 * (_t3 * _t9 * _t11);
+    const float _t19 = _t18 + _t9;
+    const float _t20 = sqrtf(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
+    const float _t21 = fabsf(_t12);
+    const float _t22 = _t21 * 0.500000477f + _t10;
+    const float _t23 = (_t22 <= 1.73205256f) ? _t22 : 1.73205256f;
+    const float _t24 = _t10 - _t21 * 1.50000155f;
+    const float _t25 = ((-1.73205256f) <= _t24) ? _t24 : (-1.73205256f);
+    const float _t26 = _t18 - _t9;
+    const float _t27 = _t14 - _t7;
+    const float _t28 = _t8 - _t16;
+    const float _t29 = sqrtf(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
+    return (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 127
+ * Total ops: 154
  */
 static inline void schwarzp_o2_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -342,37 +382,50 @@ static inline void schwarzp_o2_normalf(float x, float y, float z, float h, float
     const float _t8 = _t7 * _t7;
     const float _t9 = _t1 * _t1;
     const float _t10 = _t5 + _t8 + _t9;
-    const float _t11 = 1.0f / sqrtf(_t10);
-    const float _t12 = _t2 * _t1 * _t11;
-    const float _t13 = 6.28318548f * h;
-    const float _t14 = _t13 * 0.5f;
-    const float _t15 = _t1 + _t12 * _t14;
-    const float _t16 = offsetgen_cosf(_t3);
-    const float _t17 = _t4 * _t16 * _t11;
-    const float _t18 = _t17 * _t14 + _t4;
-    const float _t19 = offsetgen_cosf(_t6);
-    const float _t20 = _t19 * _t7 * _t11;
-    const float _t21 = _t20 * _t14 + _t7;
-    const float _t22 = sqrtf(_t15 * _t15 + _t18 * _t18 + _t21 * _t21);
-    const int _t23 = fabsf(_t22) <= 1.73205256f;
-    const float _t24 = 1.0f / _t22;
-    const float _t25 = _t17 * _t12 * _t11 * _t14;
-    const float _t26 = _t20 * _t12 * _t11 * _t14;
-    const float _t27 = (_t23) ? -(_t13 * (_t24 * ((_t2 - (_t12 * _t12 - (_t2 * _t2 - _t9)) * _t11 * _t14) * _t15 - _t18 * _t25 - _t21 * _t26)) + _t1) : -_t1;
-    const float _t28 = _t17 * _t20 * _t11 * _t14;
-    const float _t29 = (_t23) ? -(_t13 * (_t24 * ((_t19 - (_t20 * _t20 - (_t19 * _t19 - _t8)) * _t11 * _t14) * _t21 - _t18 * _t28 - _t15 * _t26)) + _t7) : -_t7;
-    const float _t30 = (_t23) ? _t13 * ((_t28 * _t21 + (_t25 * _t15 + _t18 * ((_t5 - _t16 * _t16 + _t17 * _t17) * _t11 * _t14 - _t16))) * _t24) - _t4 : -_t4;
-    const float _t31 = _t27 * _t27 + (_t29 * _t29 + _t30 * _t30);
-    const int _t32 = _t31 > 0.0f;
-    const int _t33 = _t31 <= 1.00000002e+30f;
-    const float _t34 = 1.0f / sqrtf(_t31);
-    const float _t35 = (_t10 > 0.0f) ? _t11 : 0.0f;
-    const float _t36 = -(_t35 * _t4);
-    const float _t37 = -(_t1 * _t35);
-    const float _t38 = -(_t7 * _t35);
-    n[0] = (_t32) ? ((_t33) ? _t34 * _t30 : _t36) : _t36;
-    n[1] = (_t32) ? ((_t33) ? _t34 * _t27 : _t37) : _t37;
-    n[2] = (_t32) ? ((_t33) ? _t34 * _t29 : _t38) : _t38;
+    const float _t11 = sqrtf(_t10);
+    const float _t12 = 1.0f / _t11;
+    const float _t13 = _t2 * _t1 * _t12;
+    const float _t14 = 6.28318548f * h;
+    const float _t15 = _t14 * 0.5f;
+    const float _t16 = _t1 + _t13 * _t15;
+    const float _t17 = offsetgen_cosf(_t3);
+    const float _t18 = _t4 * _t17 * _t12;
+    const float _t19 = _t18 * _t15 + _t4;
+    const float _t20 = offsetgen_cosf(_t6);
+    const float _t21 = _t20 * _t7 * _t12;
+    const float _t22 = _t21 * _t15 + _t7;
+    const float _t23 = sqrtf(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
+    const float _t24 = fabsf(_t14);
+    const float _t25 = _t11 + _t24 * 0.500000477f;
+    const int _t26 = _t25 <= 1.73205256f;
+    const int _t27 = _t23 <= ((_t26) ? _t25 : 1.73205256f);
+    const float _t28 = _t11 - _t24 * 1.50000155f;
+    const int _t29 = (-1.73205256f) <= _t28;
+    const int _t30 = ((_t29) ? _t28 : (-1.73205256f)) <= _t23;
+    const float _t31 = 1.0f / _t23;
+    const float _t32 = _t18 * _t13 * _t12 * _t15;
+    const float _t33 = _t21 * _t13 * _t12 * _t15;
+    const float _t34 = -(_t1 + _t14 * _t13);
+    const float _t35 = -_t1;
+    const float _t36 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t2 - (_t13 * _t13 - (_t2 * _t2 - _t9)) * _t12 * _t15) * _t16 - _t19 * _t32 - _t22 * _t33)) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
+    const float _t37 = _t18 * _t21 * _t12 * _t15;
+    const float _t38 = -(_t14 * _t18 + _t4);
+    const float _t39 = -_t4;
+    const float _t40 = (_t27) ? ((_t30) ? _t14 * ((_t37 * _t22 + (_t32 * _t16 + _t19 * ((_t5 - _t17 * _t17 + _t18 * _t18) * _t12 * _t15 - _t17))) * _t31) - _t4 : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
+    const float _t41 = -(_t14 * _t21 + _t7);
+    const float _t42 = -_t7;
+    const float _t43 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t8)) * _t12 * _t15) * _t22 - _t19 * _t37 - _t16 * _t33)) + _t7) : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
+    const float _t44 = _t36 * _t36 + (_t40 * _t40 + _t43 * _t43);
+    const int _t45 = _t44 > 0.0f;
+    const int _t46 = _t44 <= 1.00000002e+30f;
+    const float _t47 = 1.0f / sqrtf(_t44);
+    const float _t48 = (_t10 > 0.0f) ? _t12 : 0.0f;
+    const float _t49 = -(_t48 * _t4);
+    const float _t50 = -(_t1 * _t48);
+    const float _t51 = -(_t7 * _t48);
+    n[0] = (_t45) ? ((_t46) ? _t40 * _t47 : _t49) : _t49;
+    n[1] = (_t45) ? ((_t46) ? _t36 * _t47 : _t50) : _t50;
+    n[2] = (_t45) ? ((_t46) ? _t43 * _t47 : _t51) : _t51;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -487,13 +540,19 @@ static inline void schwarzp_o2_offset_n(size_t n, const double *x, const double 
         const double _t7 = offsetgen_batch_sin(_t2);
         const double _t8 = offsetgen_batch_sin(_t4);
         const double _t9 = offsetgen_batch_sin(_t0);
-        const double _t10 = 1.0 / sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-        const double _t11 = _t6 * 0.5;
-        const double _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
-        const double _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
-        const double _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
-        const double _t15 = sqrt(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
-        out[i] = _t1 + _t3 + _t5 - _t6 * ((fabs(_t15) <= 1.7320525396196846) ? _t15 : ((_t15 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        const double _t10 = sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+        const double _t11 = 1.0 / _t10;
+        const double _t12 = _t6 * 0.5;
+        const double _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
+        const double _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
+        const double _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+        const double _t16 = sqrt(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
+        const double _t17 = fabs(_t6);
+        const double _t18 = _t10 + _t17 * 0.50000050630325232;
+        const double _t19 = (_t18 <= 1.7320525396196846) ? _t18 : 1.7320525396196846;
+        const double _t20 = _t10 - _t17 * 1.5000015189097571;
+        const double _t21 = ((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846);
+        out[i] = _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o2_offset(x[i], y[i], z[i], h[i]);
@@ -508,31 +567,37 @@ static inline void schwarzp_o2_shell_n(size_t n, const double *x, const double *
     size_t i;
     OFFSETGEN_SIMD_LOOP
     for (i = 0; i < n; ++i) {
-        const double _t0 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t1 = _t0 * 0.5;
+        const double _t0 = z[i] * 6.2831853071795862;
+        const double _t1 = offsetgen_batch_cos(_t0);
         const double _t2 = 6.2831853071795862 * y[i];
         const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = offsetgen_batch_sin(_t2);
-        const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_sin(_t5);
-        const double _t7 = z[i] * 6.2831853071795862;
-        const double _t8 = offsetgen_batch_sin(_t7);
-        const double _t9 = 1.0 / sqrt(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
-        const double _t10 = _t1 * (_t3 * _t4 * _t9);
-        const double _t11 = _t10 - _t4;
-        const double _t12 = offsetgen_batch_cos(_t5);
-        const double _t13 = _t6 * _t12 * _t9 * _t1;
-        const double _t14 = _t13 - _t6;
-        const double _t15 = offsetgen_batch_cos(_t7);
-        const double _t16 = _t1 * (_t15 * _t8 * _t9);
-        const double _t17 = _t8 - _t16;
-        const double _t18 = sqrt(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
-        const double _t19 = _t15 + _t3 + _t12;
-        const double _t20 = _t13 + _t6;
-        const double _t21 = _t8 + _t16;
-        const double _t22 = _t10 + _t4;
-        const double _t23 = sqrt(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-        out[i] = (((fabs(_t18) <= 1.7320525396196846) ? _t18 : ((_t18 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t0 + _t19) * (_t19 - ((fabs(_t23) <= 1.7320525396196846) ? _t23 : ((_t23 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) * _t0);
+        const double _t4 = 6.2831853071795862 * x[i];
+        const double _t5 = offsetgen_batch_cos(_t4);
+        const double _t6 = _t1 + _t3 + _t5;
+        const double _t7 = offsetgen_batch_sin(_t4);
+        const double _t8 = offsetgen_batch_sin(_t0);
+        const double _t9 = offsetgen_batch_sin(_t2);
+        const double _t10 = sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+        const double _t11 = 1.0 / _t10;
+        const double _t12 = 6.2831853071795862 * (t[i] * 0.5);
+        const double _t13 = _t12 * 0.5;
+        const double _t14 = _t7 * _t5 * _t11 * _t13;
+        const double _t15 = _t14 + _t7;
+        const double _t16 = _t13 * (_t1 * _t8 * _t11);
+        const double _t17 = _t8 + _t16;
+        const double _t18 = _t13 * (_t3 * _t9 * _t11);
+        const double _t19 = _t18 + _t9;
+        const double _t20 = sqrt(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
+        const double _t21 = fabs(_t12);
+        const double _t22 = _t21 * 0.50000050630325232 + _t10;
+        const double _t23 = (_t22 <= 1.7320525396196846) ? _t22 : 1.7320525396196846;
+        const double _t24 = _t10 - _t21 * 1.5000015189097571;
+        const double _t25 = ((-1.7320525396196846) <= _t24) ? _t24 : (-1.7320525396196846);
+        const double _t26 = _t18 - _t9;
+        const double _t27 = _t14 - _t7;
+        const double _t28 = _t8 - _t16;
+        const double _t29 = sqrt(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
+        out[i] = (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o2_shell(x[i], y[i], z[i], t[i]);
@@ -557,13 +622,19 @@ static inline void schwarzp_o2_offsetf_n(size_t n, const float *x, const float *
         const float _t7 = offsetgen_batch_sinf(_t2);
         const float _t8 = offsetgen_batch_sinf(_t4);
         const float _t9 = offsetgen_batch_sinf(_t0);
-        const float _t10 = 1.0f / sqrtf(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-        const float _t11 = _t6 * 0.5f;
-        const float _t12 = _t7 + _t3 * _t7 * _t10 * _t11;
-        const float _t13 = _t8 * _t5 * _t10 * _t11 + _t8;
-        const float _t14 = _t1 * _t9 * _t10 * _t11 + _t9;
-        const float _t15 = sqrtf(_t12 * _t12 + _t13 * _t13 + _t14 * _t14);
-        out[i] = _t1 + _t3 + _t5 - _t6 * ((fabsf(_t15) <= 1.73205256f) ? _t15 : ((_t15 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        const float _t10 = sqrtf(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+        const float _t11 = 1.0f / _t10;
+        const float _t12 = _t6 * 0.5f;
+        const float _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
+        const float _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
+        const float _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+        const float _t16 = sqrtf(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
+        const float _t17 = fabsf(_t6);
+        const float _t18 = _t10 + _t17 * 0.500000477f;
+        const float _t19 = (_t18 <= 1.73205256f) ? _t18 : 1.73205256f;
+        const float _t20 = _t10 - _t17 * 1.50000155f;
+        const float _t21 = ((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f);
+        out[i] = _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o2_offsetf(x[i], y[i], z[i], h[i]);
@@ -578,31 +649,37 @@ static inline void schwarzp_o2_shellf_n(size_t n, const float *x, const float *y
     size_t i;
     OFFSETGEN_SIMD_LOOP
     for (i = 0; i < n; ++i) {
-        const float _t0 = 6.28318548f * (t[i] * 0.5f);
-        const float _t1 = _t0 * 0.5f;
+        const float _t0 = z[i] * 6.28318548f;
+        const float _t1 = offsetgen_batch_cosf(_t0);
         const float _t2 = 6.28318548f * y[i];
         const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = offsetgen_batch_sinf(_t2);
-        const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_sinf(_t5);
-        const float _t7 = z[i] * 6.28318548f;
-        const float _t8 = offsetgen_batch_sinf(_t7);
-        const float _t9 = 1.0f / sqrtf(_t6 * _t6 + _t8 * _t8 + _t4 * _t4);
-        const float _t10 = _t1 * (_t3 * _t4 * _t9);
-        const float _t11 = _t10 - _t4;
-        const float _t12 = offsetgen_batch_cosf(_t5);
-        const float _t13 = _t6 * _t12 * _t9 * _t1;
-        const float _t14 = _t13 - _t6;
-        const float _t15 = offsetgen_batch_cosf(_t7);
-        const float _t16 = _t1 * (_t15 * _t8 * _t9);
-        const float _t17 = _t8 - _t16;
-        const float _t18 = sqrtf(_t11 * _t11 + _t14 * _t14 + _t17 * _t17);
-        const float _t19 = _t15 + _t3 + _t12;
-        const float _t20 = _t13 + _t6;
-        const float _t21 = _t8 + _t16;
-        const float _t22 = _t10 + _t4;
-        const float _t23 = sqrtf(_t20 * _t20 + (_t21 * _t21 + _t22 * _t22));
-        out[i] = (((fabsf(_t18) <= 1.73205256f) ? _t18 : ((_t18 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t0 + _t19) * (_t19 - ((fabsf(_t23) <= 1.73205256f) ? _t23 : ((_t23 > 0.0f) ? 1.73205256f : (-1.73205256f))) * _t0);
+        const float _t4 = 6.28318548f * x[i];
+        const float _t5 = offsetgen_batch_cosf(_t4);
+        const float _t6 = _t1 + _t3 + _t5;
+        const float _t7 = offsetgen_batch_sinf(_t4);
+        const float _t8 = offsetgen_batch_sinf(_t0);
+        const float _t9 = offsetgen_batch_sinf(_t2);
+        const float _t10 = sqrtf(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
+        const float _t11 = 1.0f / _t10;
+        const float _t12 = 6.28318548f * (t[i] * 0.5f);
+        const float _t13 = _t12 * 0.5f;
+        const float _t14 = _t7 * _t5 * _t11 * _t13;
+        const float _t15 = _t14 + _t7;
+        const float _t16 = _t13 * (_t1 * _t8 * _t11);
+        const float _t17 = _t8 + _t16;
+        const float _t18 = _t13 * (_t3 * _t9 * _t11);
+        const float _t19 = _t18 + _t9;
+        const float _t20 = sqrtf(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
+        const float _t21 = fabsf(_t12);
+        const float _t22 = _t21 * 0.500000477f + _t10;
+        const float _t23 = (_t22 <= 1.73205256f) ? _t22 : 1.73205256f;
+        const float _t24 = _t10 - _t21 * 1.50000155f;
+        const float _t25 = ((-1.73205256f) <= _t24) ? _t24 : (-1.73205256f);
+        const float _t26 = _t18 - _t9;
+        const float _t27 = _t14 - _t7;
+        const float _t28 = _t8 - _t16;
+        const float _t29 = sqrtf(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
+        out[i] = (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o2_shellf(x[i], y[i], z[i], t[i]);

@@ -25,16 +25,17 @@ sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 
 accuracy: zero set within O(h^4) of the exact offset; relative thickness error ~ (h/L)^3.
     Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
 cell length L: schwarzp_o3_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254, so results are finite and never on the wrong side far from the surface.
+safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 1.00000101 * |h| (orders >= 2),
+    so results are finite and no phantom walls appear away from the surface.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 8
-    - offset: 123
-    - shell: 188
-    - normal: 374
+    - offset: 131
+    - shell: 195
+    - normal: 401
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":123,"shell":188,"normal":374}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":131,"shell":195,"normal":401}} */
 #ifndef OFFSETGEN_SCHWARZP_O3_GLSL
 #define OFFSETGEN_SCHWARZP_O3_GLSL
 
@@ -44,7 +45,7 @@ highp float schwarzp_o3_field(highp vec3 p)
     return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 123.
+// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 131.
 highp float schwarzp_o3_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
@@ -60,31 +61,37 @@ highp float schwarzp_o3_offset(highp vec3 p, highp float h)
     highp float _t10 = sin(_t0);
     highp float _t11 = _t10 * _t10;
     highp float _t12 = _t7 * _t7;
-    highp float _t13 = 1.0 / sqrt(_t9 + _t11 + _t12);
-    highp float _t14 = _t3 * _t7 * _t13;
-    highp float _t15 = _t6 * 0.333333343;
-    highp float _t16 = _t14 * _t15 + _t7;
-    highp float _t17 = _t8 * _t5 * _t13;
-    highp float _t18 = _t17 * _t15 + _t8;
-    highp float _t19 = _t1 * _t10 * _t13;
-    highp float _t20 = _t10 + _t19 * _t15;
-    highp float _t21 = sqrt(_t16 * _t16 + _t18 * _t18 + _t20 * _t20);
-    highp float _t22 = 1.0 / _t21;
-    highp float _t23 = _t17 * _t14 * _t13 * _t15;
-    highp float _t24 = _t19 * _t14 * _t13 * _t15;
-    highp float _t25 = _t22 * (_t18 * _t23 + _t24 * _t20 - (_t3 - (_t14 * _t14 - (_t3 * _t3 - _t12)) * _t13 * _t15) * _t16) * _t15 - _t16;
-    highp float _t26 = _t17 * _t19 * _t13 * _t15;
-    highp float _t27 = _t18 - _t22 * (_t20 * _t26 + (_t18 * ((_t9 - _t5 * _t5 + _t17 * _t17) * _t13 * _t15 - _t5) + _t23 * _t16)) * _t15;
-    highp float _t28 = _t20 - _t22 * (_t18 * _t26 + _t24 * _t16 - _t20 * (_t1 - (_t19 * _t19 - (_t1 * _t1 - _t11)) * _t13 * _t15)) * _t15;
-    highp float _t29 = _t6 * 0.5;
-    highp float _t30 = _t7 + _t14 * _t29;
-    highp float _t31 = _t17 * _t29 + _t8;
-    highp float _t32 = _t19 * _t29 + _t10;
-    highp float _t33 = 1.5 * (_t21 + sqrt(_t25 * _t25 + _t27 * _t27 + _t28 * _t28)) - sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32) * 2.0;
-    return _t1 + _t3 + _t5 - _t6 * ((abs(_t33) <= 1.73205256) ? _t33 : ((_t33 > 0.0) ? 1.73205256 : (-1.73205256)));
+    highp float _t13 = sqrt(_t9 + _t11 + _t12);
+    highp float _t14 = 1.0 / _t13;
+    highp float _t15 = _t3 * _t7 * _t14;
+    highp float _t16 = _t6 * 0.333333343;
+    highp float _t17 = _t15 * _t16 + _t7;
+    highp float _t18 = _t8 * _t5 * _t14;
+    highp float _t19 = _t18 * _t16 + _t8;
+    highp float _t20 = _t1 * _t10 * _t14;
+    highp float _t21 = _t10 + _t20 * _t16;
+    highp float _t22 = sqrt(_t17 * _t17 + _t19 * _t19 + _t21 * _t21);
+    highp float _t23 = 1.0 / _t22;
+    highp float _t24 = _t18 * _t15 * _t14 * _t16;
+    highp float _t25 = _t20 * _t15 * _t14 * _t16;
+    highp float _t26 = _t23 * (_t19 * _t24 + _t25 * _t21 - (_t3 - (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14 * _t16) * _t17) * _t16 - _t17;
+    highp float _t27 = _t18 * _t20 * _t14 * _t16;
+    highp float _t28 = _t19 - _t23 * (_t21 * _t27 + (_t19 * ((_t9 - _t5 * _t5 + _t18 * _t18) * _t14 * _t16 - _t5) + _t24 * _t17)) * _t16;
+    highp float _t29 = _t21 - _t23 * (_t19 * _t27 + _t25 * _t17 - _t21 * (_t1 - (_t20 * _t20 - (_t1 * _t1 - _t11)) * _t14 * _t16)) * _t16;
+    highp float _t30 = _t6 * 0.5;
+    highp float _t31 = _t7 + _t15 * _t30;
+    highp float _t32 = _t18 * _t30 + _t8;
+    highp float _t33 = _t20 * _t30 + _t10;
+    highp float _t34 = 1.5 * (_t22 + sqrt(_t26 * _t26 + _t28 * _t28 + _t29 * _t29)) - sqrt(_t31 * _t31 + _t32 * _t32 + _t33 * _t33) * 2.0;
+    highp float _t35 = abs(_t6);
+    highp float _t36 = _t13 + _t35 * 0.500000477;
+    highp float _t37 = (_t36 <= 1.73205256) ? _t36 : 1.73205256;
+    highp float _t38 = _t13 - _t35 * 1.50000155;
+    highp float _t39 = ((-1.73205256) <= _t38) ? _t38 : (-1.73205256);
+    return _t1 + _t3 + _t5 - _t6 * ((_t34 <= _t37) ? ((_t39 <= _t34) ? _t34 : _t39) : _t37);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 188.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 195.
 highp float schwarzp_o3_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = 6.28318548 * (t * 0.5);
@@ -98,55 +105,61 @@ highp float schwarzp_o3_shell(highp vec3 p, highp float t)
     highp float _t8 = 6.28318548 * p.y;
     highp float _t9 = sin(_t8);
     highp float _t10 = _t9 * _t9;
-    highp float _t11 = 1.0 / sqrt(_t6 + _t7 + _t10);
-    highp float _t12 = _t2 * _t3 * _t11;
-    highp float _t13 = cos(_t8);
-    highp float _t14 = _t13 * _t9 * _t11;
-    highp float _t15 = _t0 * 0.333333343;
-    highp float _t16 = _t12 * _t14 * _t11 * _t15;
-    highp float _t17 = _t14 * _t15;
-    highp float _t18 = _t9 - _t17;
-    highp float _t19 = (_t12 * _t12 - (_t2 * _t2 - _t7)) * _t11 * _t15;
-    highp float _t20 = _t12 * _t15;
-    highp float _t21 = _t3 - _t20;
-    highp float _t22 = cos(_t4);
-    highp float _t23 = _t5 * _t22 * _t11;
-    highp float _t24 = _t23 * _t12 * _t11 * _t15;
-    highp float _t25 = _t23 * _t15;
-    highp float _t26 = _t25 - _t5;
-    highp float _t27 = sqrt(_t18 * _t18 + _t26 * _t26 + _t21 * _t21);
-    highp float _t28 = 1.0 / _t27;
-    highp float _t29 = (_t16 * _t18 + (_t19 + _t2) * _t21 - _t24 * _t26) * _t28 * _t15 - _t21;
-    highp float _t30 = (_t14 * _t14 - (_t13 * _t13 - _t10)) * _t11 * _t15;
-    highp float _t31 = _t23 * _t14 * _t11 * _t15;
-    highp float _t32 = _t15 * ((_t16 * _t21 + (_t13 + _t30) * _t18 - _t31 * _t26) * _t28) - _t18;
-    highp float _t33 = (_t6 - _t22 * _t22 + _t23 * _t23) * _t11 * _t15;
-    highp float _t34 = (_t24 * _t21 + _t31 * _t18 - (_t33 + _t22) * _t26) * _t28 * _t15 + _t26;
-    highp float _t35 = _t0 * 0.5;
-    highp float _t36 = _t35 * _t14;
-    highp float _t37 = _t36 - _t9;
-    highp float _t38 = _t23 * _t35;
-    highp float _t39 = _t38 - _t5;
-    highp float _t40 = _t35 * _t12;
-    highp float _t41 = _t3 - _t40;
-    highp float _t42 = (sqrt(_t29 * _t29 + _t32 * _t32 + _t34 * _t34) + _t27) * 1.5 - 2.0 * sqrt(_t37 * _t37 + _t39 * _t39 + _t41 * _t41);
-    highp float _t43 = _t2 + _t13 + _t22;
-    highp float _t44 = _t9 + _t17;
-    highp float _t45 = _t3 + _t20;
-    highp float _t46 = _t25 + _t5;
-    highp float _t47 = sqrt(_t44 * _t44 + _t45 * _t45 + _t46 * _t46);
-    highp float _t48 = 1.0 / _t47;
-    highp float _t49 = _t15 * (((_t19 - _t2) * _t45 + _t16 * _t44 + _t24 * _t46) * _t48) - _t45;
-    highp float _t50 = _t44 - _t48 * (_t16 * _t45 + _t31 * _t46 - (_t13 - _t30) * _t44) * _t15;
-    highp float _t51 = (_t24 * _t45 + (_t33 - _t22) * _t46 + _t31 * _t44) * _t48 * _t15 - _t46;
-    highp float _t52 = _t38 + _t5;
-    highp float _t53 = _t3 + _t40;
-    highp float _t54 = _t36 + _t9;
-    highp float _t55 = (_t47 + sqrt(_t49 * _t49 + (_t50 * _t50 + _t51 * _t51))) * 1.5 - sqrt(_t52 * _t52 + (_t53 * _t53 + _t54 * _t54)) * 2.0;
-    return (_t0 * ((abs(_t42) <= 1.73205256) ? _t42 : ((_t42 > 0.0) ? 1.73205256 : (-1.73205256))) + _t43) * (_t43 - _t0 * ((abs(_t55) <= 1.73205256) ? _t55 : ((_t55 > 0.0) ? 1.73205256 : (-1.73205256))));
+    highp float _t11 = sqrt(_t6 + _t7 + _t10);
+    highp float _t12 = 1.0 / _t11;
+    highp float _t13 = _t2 * _t3 * _t12;
+    highp float _t14 = cos(_t8);
+    highp float _t15 = _t14 * _t9 * _t12;
+    highp float _t16 = _t0 * 0.333333343;
+    highp float _t17 = _t13 * _t15 * _t12 * _t16;
+    highp float _t18 = _t15 * _t16;
+    highp float _t19 = _t9 - _t18;
+    highp float _t20 = (_t13 * _t13 - (_t2 * _t2 - _t7)) * _t12 * _t16;
+    highp float _t21 = _t13 * _t16;
+    highp float _t22 = _t3 - _t21;
+    highp float _t23 = cos(_t4);
+    highp float _t24 = _t5 * _t23 * _t12;
+    highp float _t25 = _t24 * _t13 * _t12 * _t16;
+    highp float _t26 = _t24 * _t16;
+    highp float _t27 = _t26 - _t5;
+    highp float _t28 = sqrt(_t19 * _t19 + _t27 * _t27 + _t22 * _t22);
+    highp float _t29 = 1.0 / _t28;
+    highp float _t30 = (_t17 * _t19 + (_t20 + _t2) * _t22 - _t25 * _t27) * _t29 * _t16 - _t22;
+    highp float _t31 = (_t15 * _t15 - (_t14 * _t14 - _t10)) * _t12 * _t16;
+    highp float _t32 = _t24 * _t15 * _t12 * _t16;
+    highp float _t33 = _t16 * ((_t17 * _t22 + (_t14 + _t31) * _t19 - _t32 * _t27) * _t29) - _t19;
+    highp float _t34 = (_t6 - _t23 * _t23 + _t24 * _t24) * _t12 * _t16;
+    highp float _t35 = (_t25 * _t22 + _t32 * _t19 - (_t34 + _t23) * _t27) * _t29 * _t16 + _t27;
+    highp float _t36 = _t0 * 0.5;
+    highp float _t37 = _t36 * _t15;
+    highp float _t38 = _t37 - _t9;
+    highp float _t39 = _t24 * _t36;
+    highp float _t40 = _t39 - _t5;
+    highp float _t41 = _t36 * _t13;
+    highp float _t42 = _t3 - _t41;
+    highp float _t43 = (sqrt(_t30 * _t30 + _t33 * _t33 + _t35 * _t35) + _t28) * 1.5 - 2.0 * sqrt(_t38 * _t38 + _t40 * _t40 + _t42 * _t42);
+    highp float _t44 = abs(_t0);
+    highp float _t45 = _t44 * 0.500000477 + _t11;
+    highp float _t46 = (_t45 <= 1.73205256) ? _t45 : 1.73205256;
+    highp float _t47 = _t11 - _t44 * 1.50000155;
+    highp float _t48 = ((-1.73205256) <= _t47) ? _t47 : (-1.73205256);
+    highp float _t49 = _t2 + _t14 + _t23;
+    highp float _t50 = _t9 + _t18;
+    highp float _t51 = _t3 + _t21;
+    highp float _t52 = _t26 + _t5;
+    highp float _t53 = sqrt(_t50 * _t50 + _t51 * _t51 + _t52 * _t52);
+    highp float _t54 = 1.0 / _t53;
+    highp float _t55 = _t16 * (((_t20 - _t2) * _t51 + _t17 * _t50 + _t25 * _t52) * _t54) - _t51;
+    highp float _t56 = _t50 - _t54 * (_t17 * _t51 + _t32 * _t52 - (_t14 - _t31) * _t50) * _t16;
+    highp float _t57 = (_t25 * _t51 + (_t34 - _t23) * _t52 + _t32 * _t50) * _t54 * _t16 - _t52;
+    highp float _t58 = _t39 + _t5;
+    highp float _t59 = _t3 + _t41;
+    highp float _t60 = _t37 + _t9;
+    highp float _t61 = (_t53 + sqrt(_t55 * _t55 + (_t56 * _t56 + _t57 * _t57))) * 1.5 - sqrt(_t58 * _t58 + (_t59 * _t59 + _t60 * _t60)) * 2.0;
+    return (_t0 * ((_t43 <= _t46) ? ((_t48 <= _t43) ? _t43 : _t48) : _t46) + _t49) * (_t49 - ((_t61 <= _t46) ? ((_t48 <= _t61) ? _t61 : _t48) : _t46) * _t0);
 }
 
-// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 374.
+// unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 401.
 highp vec3 schwarzp_o3_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.y;
@@ -161,76 +174,90 @@ highp vec3 schwarzp_o3_normal(highp vec3 p, highp float h)
     highp float _t9 = _t8 * _t8;
     highp float _t10 = _t2 * _t2;
     highp float _t11 = _t6 + _t9 + _t10;
-    highp float _t12 = 1.0 / sqrt(_t11);
-    highp float _t13 = _t3 * _t12;
-    highp float _t14 = 6.28318548 * h;
-    highp float _t15 = _t14 * 0.333333343;
-    highp float _t16 = _t13 * _t15 + _t2;
-    highp float _t17 = cos(_t4);
-    highp float _t18 = _t5 * _t17;
-    highp float _t19 = _t18 * _t12;
-    highp float _t20 = _t19 * _t15 + _t5;
-    highp float _t21 = cos(_t7);
-    highp float _t22 = _t21 * _t8;
-    highp float _t23 = _t22 * _t12;
-    highp float _t24 = _t8 + _t23 * _t15;
-    highp float _t25 = sqrt(_t16 * _t16 + _t20 * _t20 + _t24 * _t24);
-    highp float _t26 = 1.0 / _t25;
-    highp float _t27 = _t19 * _t13 * _t12;
-    highp float _t28 = _t27 * _t15;
-    highp float _t29 = _t23 * _t13 * _t12;
-    highp float _t30 = _t29 * _t15;
-    highp float _t31 = (_t13 * _t13 - (_t1 * _t1 - _t10)) * _t12;
-    highp float _t32 = _t1 - _t31 * _t15;
-    highp float _t33 = _t26 * (_t20 * _t28 + _t30 * _t24 - _t32 * _t16);
-    highp float _t34 = _t33 * _t15 - _t16;
-    highp float _t35 = _t19 * _t23 * _t12;
-    highp float _t36 = _t35 * _t15;
-    highp float _t37 = (_t6 - _t17 * _t17 + _t19 * _t19) * _t12;
-    highp float _t38 = _t37 * _t15 - _t17;
-    highp float _t39 = _t26 * (_t24 * _t36 + (_t20 * _t38 + _t28 * _t16));
-    highp float _t40 = _t20 - _t39 * _t15;
-    highp float _t41 = (_t23 * _t23 - (_t21 * _t21 - _t9)) * _t12;
-    highp float _t42 = _t21 - _t41 * _t15;
-    highp float _t43 = _t26 * (_t20 * _t36 + _t30 * _t16 - _t24 * _t42);
-    highp float _t44 = _t24 - _t43 * _t15;
-    highp float _t45 = sqrt(_t34 * _t34 + _t40 * _t40 + _t44 * _t44);
-    highp float _t46 = _t14 * 0.5;
-    highp float _t47 = _t2 + _t13 * _t46;
-    highp float _t48 = _t19 * _t46 + _t5;
-    highp float _t49 = _t23 * _t46 + _t8;
-    highp float _t50 = sqrt(_t47 * _t47 + _t48 * _t48 + _t49 * _t49);
-    bool _t51 = abs(1.5 * (_t25 + _t45) - _t50 * 2.0) <= 1.73205256;
-    highp float _t52 = 1.0 / _t50;
-    highp float _t53 = _t35 * _t46;
-    highp float _t54 = _t29 * _t46;
-    highp float _t55 = 1.0 / _t45;
-    highp float _t56 = (_t19 * _t29 + (_t23 * _t27 + _t35 * _t13)) * _t12 * _t15;
-    highp float _t57 = (_t35 * _t23 * 2.0 + _t19 * _t41) * _t12 * _t15;
-    highp float _t58 = _t15 * ((_t37 * _t23 + _t19 * _t35 * 2.0) * _t12);
-    highp float _t59 = _t36 + _t26 * (_t39 * _t43 - (_t36 * _t38 + (_t56 * _t16 + (_t30 * _t28 + (_t24 * _t57 + _t20 * _t58))) - _t36 * _t42)) * _t15;
-    highp float _t60 = _t15 * ((_t31 * _t23 + _t29 * _t13 * 2.0) * _t12);
-    highp float _t61 = (_t41 * _t13 + _t29 * _t23 * 2.0) * _t12 * _t15;
-    highp float _t62 = _t30 + _t15 * (_t26 * (_t43 * _t33 - (_t20 * _t56 + _t16 * _t60 + _t36 * _t28 + _t24 * _t61 - _t30 * _t42 - _t30 * _t32)));
-    highp float _t63 = _t30 * _t30;
-    highp float _t64 = _t36 * _t36;
-    highp float _t65 = (_t51) ? _t14 * (_t52 * ((_t21 - _t41 * _t46) * _t49 - _t48 * _t53 - _t47 * _t54) * 2.0 + (_t43 + _t55 * (_t59 * _t40 - _t34 * _t62 - _t44 * (_t26 * (_t63 + (_t42 * _t42 + _t64) + _t20 * _t57 + _t61 * _t16 - _t24 * (_t8 - (_t41 * _t23 * 3.0 - (_t22 + _t22 * 3.0)) * _t12 * _t15) - _t43 * _t43) * _t15 + _t42))) * 1.5) - _t8 : -_t8;
-    highp float _t66 = (_t13 * _t27 * 2.0 + _t19 * _t31) * _t12 * _t15;
-    highp float _t67 = _t28 * _t28;
-    highp float _t68 = (_t19 * _t27 * 2.0 + _t37 * _t13) * _t12 * _t15;
-    highp float _t69 = _t26 * (_t39 * _t33 - (_t30 * _t36 + _t66 * _t16 + _t24 * _t56 + _t20 * _t68 + _t28 * _t38 - _t32 * _t28)) * _t15 + _t28;
-    highp float _t70 = _t27 * _t46;
-    highp float _t71 = (_t51) ? _t14 * ((_t33 + _t55 * ((_t26 * (_t32 * _t32 + (_t63 + (_t20 * _t66 + _t24 * _t60)) + _t67 - (_t2 - (_t31 * _t13 * 3.0 - (_t3 + _t3 * 3.0)) * _t12 * _t15) * _t16 - _t33 * _t33) * _t15 + _t32) * _t34 + (_t44 * _t62 + _t69 * _t40))) * 1.5 + _t52 * ((_t1 - _t31 * _t46) * _t47 - _t48 * _t70 - _t49 * _t54) * 2.0) - _t2 : -_t2;
-    highp float _t72 = (_t51) ? -(_t14 * ((_t53 * _t49 + (_t70 * _t47 + _t48 * (_t37 * _t46 - _t17))) * _t52 * 2.0 - 1.5 * (_t39 + _t55 * (_t59 * _t44 + (_t26 * (_t39 * _t39 - (_t24 * _t58 + (_t68 * _t16 + _t64) + _t67 + _t38 * _t38 - _t20 * (_t5 - (3.0 * (_t19 * _t37) - (3.0 * _t18 + _t18)) * _t12 * _t15))) * _t15 + _t38) * _t40 - _t69 * _t34))) + _t5) : -_t5;
-    highp float _t73 = _t65 * _t65 + _t71 * _t71 + _t72 * _t72;
-    bool _t74 = _t73 > 0.0;
-    bool _t75 = _t73 <= 1.00000002e+30;
-    highp float _t76 = 1.0 / sqrt(_t73);
-    highp float _t77 = (_t11 > 0.0) ? _t12 : 0.0;
-    highp float _t78 = -(_t77 * _t5);
-    highp float _t79 = -(_t2 * _t77);
-    highp float _t80 = -(_t8 * _t77);
-    return vec3((_t74) ? ((_t75) ? _t76 * _t72 : _t78) : _t78, (_t74) ? ((_t75) ? _t76 * _t71 : _t79) : _t79, (_t74) ? ((_t75) ? _t65 * _t76 : _t80) : _t80);
+    highp float _t12 = sqrt(_t11);
+    highp float _t13 = 1.0 / _t12;
+    highp float _t14 = _t3 * _t13;
+    highp float _t15 = 6.28318548 * h;
+    highp float _t16 = _t15 * 0.333333343;
+    highp float _t17 = _t14 * _t16 + _t2;
+    highp float _t18 = cos(_t4);
+    highp float _t19 = _t5 * _t18;
+    highp float _t20 = _t19 * _t13;
+    highp float _t21 = _t20 * _t16 + _t5;
+    highp float _t22 = cos(_t7);
+    highp float _t23 = _t22 * _t8;
+    highp float _t24 = _t23 * _t13;
+    highp float _t25 = _t8 + _t24 * _t16;
+    highp float _t26 = sqrt(_t17 * _t17 + _t21 * _t21 + _t25 * _t25);
+    highp float _t27 = 1.0 / _t26;
+    highp float _t28 = _t20 * _t14 * _t13;
+    highp float _t29 = _t28 * _t16;
+    highp float _t30 = _t24 * _t14 * _t13;
+    highp float _t31 = _t30 * _t16;
+    highp float _t32 = (_t14 * _t14 - (_t1 * _t1 - _t10)) * _t13;
+    highp float _t33 = _t1 - _t32 * _t16;
+    highp float _t34 = _t27 * (_t21 * _t29 + _t31 * _t25 - _t33 * _t17);
+    highp float _t35 = _t34 * _t16 - _t17;
+    highp float _t36 = _t20 * _t24 * _t13;
+    highp float _t37 = _t36 * _t16;
+    highp float _t38 = (_t6 - _t18 * _t18 + _t20 * _t20) * _t13;
+    highp float _t39 = _t38 * _t16 - _t18;
+    highp float _t40 = _t27 * (_t25 * _t37 + (_t21 * _t39 + _t29 * _t17));
+    highp float _t41 = _t21 - _t40 * _t16;
+    highp float _t42 = (_t24 * _t24 - (_t22 * _t22 - _t9)) * _t13;
+    highp float _t43 = _t22 - _t42 * _t16;
+    highp float _t44 = _t27 * (_t21 * _t37 + _t31 * _t17 - _t25 * _t43);
+    highp float _t45 = _t25 - _t44 * _t16;
+    highp float _t46 = sqrt(_t35 * _t35 + _t41 * _t41 + _t45 * _t45);
+    highp float _t47 = _t15 * 0.5;
+    highp float _t48 = _t2 + _t14 * _t47;
+    highp float _t49 = _t20 * _t47 + _t5;
+    highp float _t50 = _t24 * _t47 + _t8;
+    highp float _t51 = sqrt(_t48 * _t48 + _t49 * _t49 + _t50 * _t50);
+    highp float _t52 = 1.5 * (_t26 + _t46) - _t51 * 2.0;
+    highp float _t53 = abs(_t15);
+    highp float _t54 = _t12 + _t53 * 0.500000477;
+    bool _t55 = _t54 <= 1.73205256;
+    bool _t56 = _t52 <= ((_t55) ? _t54 : 1.73205256);
+    highp float _t57 = _t12 - _t53 * 1.50000155;
+    bool _t58 = (-1.73205256) <= _t57;
+    bool _t59 = ((_t58) ? _t57 : (-1.73205256)) <= _t52;
+    highp float _t60 = _t36 * _t47;
+    highp float _t61 = _t28 * _t47;
+    highp float _t62 = 1.0 / _t51;
+    highp float _t63 = 1.0 / _t46;
+    highp float _t64 = (_t20 * _t30 + (_t24 * _t28 + _t36 * _t14)) * _t13 * _t16;
+    highp float _t65 = (_t36 * _t24 * 2.0 + _t20 * _t42) * _t13 * _t16;
+    highp float _t66 = _t16 * ((_t38 * _t24 + _t20 * _t36 * 2.0) * _t13);
+    highp float _t67 = _t37 + _t27 * (_t40 * _t44 - (_t37 * _t39 + (_t64 * _t17 + (_t31 * _t29 + (_t25 * _t65 + _t21 * _t66))) - _t37 * _t43)) * _t16;
+    highp float _t68 = (_t20 * _t28 * 2.0 + _t38 * _t14) * _t13 * _t16;
+    highp float _t69 = _t37 * _t37;
+    highp float _t70 = _t29 * _t29;
+    highp float _t71 = (_t14 * _t28 * 2.0 + _t20 * _t32) * _t13 * _t16;
+    highp float _t72 = _t27 * (_t40 * _t34 - (_t31 * _t37 + _t71 * _t17 + _t25 * _t64 + _t21 * _t68 + _t29 * _t39 - _t33 * _t29)) * _t16 + _t29;
+    highp float _t73 = -(_t15 * _t20 + _t5);
+    highp float _t74 = -_t5;
+    highp float _t75 = (_t56) ? ((_t59) ? -(_t15 * ((_t60 * _t50 + (_t61 * _t48 + _t49 * (_t38 * _t47 - _t18))) * _t62 * 2.0 - 1.5 * (_t40 + _t63 * (_t67 * _t45 + (_t27 * (_t40 * _t40 - (_t25 * _t66 + (_t68 * _t17 + _t69) + _t70 + _t39 * _t39 - _t21 * (_t5 - (3.0 * (_t20 * _t38) - (3.0 * _t19 + _t19)) * _t13 * _t16))) * _t16 + _t39) * _t41 - _t72 * _t35))) + _t5) : ((_t58) ? _t73 : _t74)) : ((_t55) ? _t73 : _t74);
+    highp float _t76 = _t30 * _t47;
+    highp float _t77 = _t16 * ((_t32 * _t24 + _t30 * _t14 * 2.0) * _t13);
+    highp float _t78 = (_t42 * _t14 + _t30 * _t24 * 2.0) * _t13 * _t16;
+    highp float _t79 = _t31 + _t16 * (_t27 * (_t44 * _t34 - (_t21 * _t64 + _t17 * _t77 + _t37 * _t29 + _t25 * _t78 - _t31 * _t43 - _t31 * _t33)));
+    highp float _t80 = _t31 * _t31;
+    highp float _t81 = -(_t15 * _t24 + _t8);
+    highp float _t82 = -_t8;
+    highp float _t83 = (_t56) ? ((_t59) ? _t15 * (_t62 * ((_t22 - _t42 * _t47) * _t50 - _t49 * _t60 - _t48 * _t76) * 2.0 + (_t44 + _t63 * (_t67 * _t41 - _t35 * _t79 - _t45 * (_t27 * (_t80 + (_t43 * _t43 + _t69) + _t21 * _t65 + _t78 * _t17 - _t25 * (_t8 - (_t42 * _t24 * 3.0 - (_t23 + _t23 * 3.0)) * _t13 * _t16) - _t44 * _t44) * _t16 + _t43))) * 1.5) - _t8 : ((_t58) ? _t81 : _t82)) : ((_t55) ? _t81 : _t82);
+    highp float _t84 = -(_t2 + _t15 * _t14);
+    highp float _t85 = -_t2;
+    highp float _t86 = (_t56) ? ((_t59) ? _t15 * ((_t34 + _t63 * ((_t27 * (_t33 * _t33 + (_t80 + (_t21 * _t71 + _t25 * _t77)) + _t70 - (_t2 - (_t32 * _t14 * 3.0 - (_t3 + _t3 * 3.0)) * _t13 * _t16) * _t17 - _t34 * _t34) * _t16 + _t33) * _t35 + (_t45 * _t79 + _t72 * _t41))) * 1.5 + _t62 * ((_t1 - _t32 * _t47) * _t48 - _t49 * _t61 - _t50 * _t76) * 2.0) - _t2 : ((_t58) ? _t84 : _t85)) : ((_t55) ? _t84 : _t85);
+    highp float _t87 = _t75 * _t75 + _t83 * _t83 + _t86 * _t86;
+    bool _t88 = _t87 > 0.0;
+    bool _t89 = _t87 <= 1.00000002e+30;
+    highp float _t90 = 1.0 / sqrt(_t87);
+    highp float _t91 = (_t11 > 0.0) ? _t13 : 0.0;
+    highp float _t92 = -(_t91 * _t5);
+    highp float _t93 = -(_t2 * _t91);
+    highp float _t94 = -(_t8 * _t91);
+    return vec3((_t88) ? ((_t89) ? _t90 * _t75 : _t92) : _t92, (_t88) ? ((_t89) ? _t90 * _t86 : _t93) : _t93, (_t88) ? ((_t89) ? _t90 * _t83 : _t94) : _t94);
 }
 
 

@@ -33,18 +33,21 @@
  * Variable thickness: pass the local t(p) to schwarzp_o3_shell (or use --thickness for a _graded
  *   function). The derivation assumes constant h, so a varying thickness is accurate to second
  *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero. Here phi = F - h * G with G
- *   clamped to |G| <= M = 1.7320525396196846 (max |grad F| over the cell, in units of 2*pi/L scaled coordinates).
- *   Every function returns a finite value for finite input (do not compile with -ffinite-math-only),
- *   and phi has the sign of F wherever |F| > |h| * max|grad F|, so no phantom walls appear far from
- *   the surface. On the offset surface itself G = F / h <= M, so accuracy is untouched.
+ * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h * G with G clamped to
+ *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
+ *   and H = 1.0000010126065046 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
+ *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
+ *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
+ *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
+ *   itself G = F / h lies inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   123
- *   shell    188
- *   normal   374
+ *   offset   131
+ *   shell    195
+ *   normal   401
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"ops":{"field":8,"offset":123,"shell":188,"normal":374}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":131,"shell":195,"normal":401}} */
 #ifndef OFFSETGEN_SCHWARZP_O3_H
 #define OFFSETGEN_SCHWARZP_O3_H
 
@@ -110,7 +113,7 @@ static inline double schwarzp_o3_field(double x, double y, double z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 123
+ * Total ops: 131
  */
 static inline double schwarzp_o3_offset(double x, double y, double z, double h)
 {
@@ -127,32 +130,38 @@ static inline double schwarzp_o3_offset(double x, double y, double z, double h)
     const double _t10 = offsetgen_sin(_t0);
     const double _t11 = _t10 * _t10;
     const double _t12 = _t7 * _t7;
-    const double _t13 = 1.0 / sqrt(_t9 + _t11 + _t12);
-    const double _t14 = _t3 * _t7 * _t13;
-    const double _t15 = _t6 * 0.33333333333333331;
-    const double _t16 = _t14 * _t15 + _t7;
-    const double _t17 = _t8 * _t5 * _t13;
-    const double _t18 = _t17 * _t15 + _t8;
-    const double _t19 = _t1 * _t10 * _t13;
-    const double _t20 = _t10 + _t19 * _t15;
-    const double _t21 = sqrt(_t16 * _t16 + _t18 * _t18 + _t20 * _t20);
-    const double _t22 = 1.0 / _t21;
-    const double _t23 = _t17 * _t14 * _t13 * _t15;
-    const double _t24 = _t19 * _t14 * _t13 * _t15;
-    const double _t25 = _t22 * (_t18 * _t23 + _t24 * _t20 - (_t3 - (_t14 * _t14 - (_t3 * _t3 - _t12)) * _t13 * _t15) * _t16) * _t15 - _t16;
-    const double _t26 = _t17 * _t19 * _t13 * _t15;
-    const double _t27 = _t18 - _t22 * (_t20 * _t26 + (_t18 * ((_t9 - _t5 * _t5 + _t17 * _t17) * _t13 * _t15 - _t5) + _t23 * _t16)) * _t15;
-    const double _t28 = _t20 - _t22 * (_t18 * _t26 + _t24 * _t16 - _t20 * (_t1 - (_t19 * _t19 - (_t1 * _t1 - _t11)) * _t13 * _t15)) * _t15;
-    const double _t29 = _t6 * 0.5;
-    const double _t30 = _t7 + _t14 * _t29;
-    const double _t31 = _t17 * _t29 + _t8;
-    const double _t32 = _t19 * _t29 + _t10;
-    const double _t33 = 1.5 * (_t21 + sqrt(_t25 * _t25 + _t27 * _t27 + _t28 * _t28)) - sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32) * 2.0;
-    return _t1 + _t3 + _t5 - _t6 * ((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+    const double _t13 = sqrt(_t9 + _t11 + _t12);
+    const double _t14 = 1.0 / _t13;
+    const double _t15 = _t3 * _t7 * _t14;
+    const double _t16 = _t6 * 0.33333333333333331;
+    const double _t17 = _t15 * _t16 + _t7;
+    const double _t18 = _t8 * _t5 * _t14;
+    const double _t19 = _t18 * _t16 + _t8;
+    const double _t20 = _t1 * _t10 * _t14;
+    const double _t21 = _t10 + _t20 * _t16;
+    const double _t22 = sqrt(_t17 * _t17 + _t19 * _t19 + _t21 * _t21);
+    const double _t23 = 1.0 / _t22;
+    const double _t24 = _t18 * _t15 * _t14 * _t16;
+    const double _t25 = _t20 * _t15 * _t14 * _t16;
+    const double _t26 = _t23 * (_t19 * _t24 + _t25 * _t21 - (_t3 - (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14 * _t16) * _t17) * _t16 - _t17;
+    const double _t27 = _t18 * _t20 * _t14 * _t16;
+    const double _t28 = _t19 - _t23 * (_t21 * _t27 + (_t19 * ((_t9 - _t5 * _t5 + _t18 * _t18) * _t14 * _t16 - _t5) + _t24 * _t17)) * _t16;
+    const double _t29 = _t21 - _t23 * (_t19 * _t27 + _t25 * _t17 - _t21 * (_t1 - (_t20 * _t20 - (_t1 * _t1 - _t11)) * _t14 * _t16)) * _t16;
+    const double _t30 = _t6 * 0.5;
+    const double _t31 = _t7 + _t15 * _t30;
+    const double _t32 = _t18 * _t30 + _t8;
+    const double _t33 = _t20 * _t30 + _t10;
+    const double _t34 = 1.5 * (_t22 + sqrt(_t26 * _t26 + _t28 * _t28 + _t29 * _t29)) - sqrt(_t31 * _t31 + _t32 * _t32 + _t33 * _t33) * 2.0;
+    const double _t35 = fabs(_t6);
+    const double _t36 = _t13 + _t35 * 0.50000050630325232;
+    const double _t37 = (_t36 <= 1.7320525396196846) ? _t36 : 1.7320525396196846;
+    const double _t38 = _t13 - _t35 * 1.5000015189097571;
+    const double _t39 = ((-1.7320525396196846) <= _t38) ? _t38 : (-1.7320525396196846);
+    return _t1 + _t3 + _t5 - _t6 * ((_t34 <= _t37) ? ((_t39 <= _t34) ? _t34 : _t39) : _t37);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 188
+ * Total ops: 195
  */
 static inline double schwarzp_o3_shell(double x, double y, double z, double t)
 {
@@ -167,56 +176,62 @@ static inline double schwarzp_o3_shell(double x, double y, double z, double t)
     const double _t8 = 6.2831853071795862 * y;
     const double _t9 = offsetgen_sin(_t8);
     const double _t10 = _t9 * _t9;
-    const double _t11 = 1.0 / sqrt(_t6 + _t7 + _t10);
-    const double _t12 = _t2 * _t3 * _t11;
-    const double _t13 = offsetgen_cos(_t8);
-    const double _t14 = _t13 * _t9 * _t11;
-    const double _t15 = _t0 * 0.33333333333333331;
-    const double _t16 = _t12 * _t14 * _t11 * _t15;
-    const double _t17 = _t14 * _t15;
-    const double _t18 = _t9 - _t17;
-    const double _t19 = (_t12 * _t12 - (_t2 * _t2 - _t7)) * _t11 * _t15;
-    const double _t20 = _t12 * _t15;
-    const double _t21 = _t3 - _t20;
-    const double _t22 = offsetgen_cos(_t4);
-    const double _t23 = _t5 * _t22 * _t11;
-    const double _t24 = _t23 * _t12 * _t11 * _t15;
-    const double _t25 = _t23 * _t15;
-    const double _t26 = _t25 - _t5;
-    const double _t27 = sqrt(_t18 * _t18 + _t26 * _t26 + _t21 * _t21);
-    const double _t28 = 1.0 / _t27;
-    const double _t29 = (_t16 * _t18 + (_t19 + _t2) * _t21 - _t24 * _t26) * _t28 * _t15 - _t21;
-    const double _t30 = (_t14 * _t14 - (_t13 * _t13 - _t10)) * _t11 * _t15;
-    const double _t31 = _t23 * _t14 * _t11 * _t15;
-    const double _t32 = _t15 * ((_t16 * _t21 + (_t13 + _t30) * _t18 - _t31 * _t26) * _t28) - _t18;
-    const double _t33 = (_t6 - _t22 * _t22 + _t23 * _t23) * _t11 * _t15;
-    const double _t34 = (_t24 * _t21 + _t31 * _t18 - (_t33 + _t22) * _t26) * _t28 * _t15 + _t26;
-    const double _t35 = _t0 * 0.5;
-    const double _t36 = _t35 * _t14;
-    const double _t37 = _t36 - _t9;
-    const double _t38 = _t23 * _t35;
-    const double _t39 = _t38 - _t5;
-    const double _t40 = _t35 * _t12;
-    const double _t41 = _t3 - _t40;
-    const double _t42 = (sqrt(_t29 * _t29 + _t32 * _t32 + _t34 * _t34) + _t27) * 1.5 - 2.0 * sqrt(_t37 * _t37 + _t39 * _t39 + _t41 * _t41);
-    const double _t43 = _t2 + _t13 + _t22;
-    const double _t44 = _t9 + _t17;
-    const double _t45 = _t3 + _t20;
-    const double _t46 = _t25 + _t5;
-    const double _t47 = sqrt(_t44 * _t44 + _t45 * _t45 + _t46 * _t46);
-    const double _t48 = 1.0 / _t47;
-    const double _t49 = _t15 * (((_t19 - _t2) * _t45 + _t16 * _t44 + _t24 * _t46) * _t48) - _t45;
-    const double _t50 = _t44 - _t48 * (_t16 * _t45 + _t31 * _t46 - (_t13 - _t30) * _t44) * _t15;
-    const double _t51 = (_t24 * _t45 + (_t33 - _t22) * _t46 + _t31 * _t44) * _t48 * _t15 - _t46;
-    const double _t52 = _t38 + _t5;
-    const double _t53 = _t3 + _t40;
-    const double _t54 = _t36 + _t9;
-    const double _t55 = (_t47 + sqrt(_t49 * _t49 + (_t50 * _t50 + _t51 * _t51))) * 1.5 - sqrt(_t52 * _t52 + (_t53 * _t53 + _t54 * _t54)) * 2.0;
-    return (_t0 * ((fabs(_t42) <= 1.7320525396196846) ? _t42 : ((_t42 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) + _t43) * (_t43 - _t0 * ((fabs(_t55) <= 1.7320525396196846) ? _t55 : ((_t55 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))));
+    const double _t11 = sqrt(_t6 + _t7 + _t10);
+    const double _t12 = 1.0 / _t11;
+    const double _t13 = _t2 * _t3 * _t12;
+    const double _t14 = offsetgen_cos(_t8);
+    const double _t15 = _t14 * _t9 * _t12;
+    const double _t16 = _t0 * 0.33333333333333331;
+    const double _t17 = _t13 * _t15 * _t12 * _t16;
+    const double _t18 = _t15 * _t16;
+    const double _t19 = _t9 - _t18;
+    const double _t20 = (_t13 * _t13 - (_t2 * _t2 - _t7)) * _t12 * _t16;
+    const double _t21 = _t13 * _t16;
+    const double _t22 = _t3 - _t21;
+    const double _t23 = offsetgen_cos(_t4);
+    const double _t24 = _t5 * _t23 * _t12;
+    const double _t25 = _t24 * _t13 * _t12 * _t16;
+    const double _t26 = _t24 * _t16;
+    const double _t27 = _t26 - _t5;
+    const double _t28 = sqrt(_t19 * _t19 + _t27 * _t27 + _t22 * _t22);
+    const double _t29 = 1.0 / _t28;
+    const double _t30 = (_t17 * _t19 + (_t20 + _t2) * _t22 - _t25 * _t27) * _t29 * _t16 - _t22;
+    const double _t31 = (_t15 * _t15 - (_t14 * _t14 - _t10)) * _t12 * _t16;
+    const double _t32 = _t24 * _t15 * _t12 * _t16;
+    const double _t33 = _t16 * ((_t17 * _t22 + (_t14 + _t31) * _t19 - _t32 * _t27) * _t29) - _t19;
+    const double _t34 = (_t6 - _t23 * _t23 + _t24 * _t24) * _t12 * _t16;
+    const double _t35 = (_t25 * _t22 + _t32 * _t19 - (_t34 + _t23) * _t27) * _t29 * _t16 + _t27;
+    const double _t36 = _t0 * 0.5;
+    const double _t37 = _t36 * _t15;
+    const double _t38 = _t37 - _t9;
+    const double _t39 = _t24 * _t36;
+    const double _t40 = _t39 - _t5;
+    const double _t41 = _t36 * _t13;
+    const double _t42 = _t3 - _t41;
+    const double _t43 = (sqrt(_t30 * _t30 + _t33 * _t33 + _t35 * _t35) + _t28) * 1.5 - 2.0 * sqrt(_t38 * _t38 + _t40 * _t40 + _t42 * _t42);
+    const double _t44 = fabs(_t0);
+    const double _t45 = _t44 * 0.50000050630325232 + _t11;
+    const double _t46 = (_t45 <= 1.7320525396196846) ? _t45 : 1.7320525396196846;
+    const double _t47 = _t11 - _t44 * 1.5000015189097571;
+    const double _t48 = ((-1.7320525396196846) <= _t47) ? _t47 : (-1.7320525396196846);
+    const double _t49 = _t2 + _t14 + _t23;
+    const double _t50 = _t9 + _t18;
+    const double _t51 = _t3 + _t21;
+    const double _t52 = _t26 + _t5;
+    const double _t53 = sqrt(_t50 * _t50 + _t51 * _t51 + _t52 * _t52);
+    const double _t54 = 1.0 / _t53;
+    const double _t55 = _t16 * (((_t20 - _t2) * _t51 + _t17 * _t50 + _t25 * _t52) * _t54) - _t51;
+    const double _t56 = _t50 - _t54 * (_t17 * _t51 + _t32 * _t52 - (_t14 - _t31) * _t50) * _t16;
+    const double _t57 = (_t25 * _t51 + (_t34 - _t23) * _t52 + _t32 * _t50) * _t54 * _t16 - _t52;
+    const double _t58 = _t39 + _t5;
+    const double _t59 = _t3 + _t41;
+    const double _t60 = _t37 + _t9;
+    const double _t61 = (_t53 + sqrt(_t55 * _t55 + (_t56 * _t56 + _t57 * _t57))) * 1.5 - sqrt(_t58 * _t58 + (_t59 * _t59 + _t60 * _t60)) * 2.0;
+    return (_t0 * ((_t43 <= _t46) ? ((_t48 <= _t43) ? _t43 : _t48) : _t46) + _t49) * (_t49 - ((_t61 <= _t46) ? ((_t48 <= _t61) ? _t61 : _t48) : _t46) * _t0);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 374
+ * Total ops: 401
  */
 static inline void schwarzp_o3_normal(double x, double y, double z, double h, double n[3])
 {
@@ -232,78 +247,92 @@ static inline void schwarzp_o3_normal(double x, double y, double z, double h, do
     const double _t9 = _t8 * _t8;
     const double _t10 = _t2 * _t2;
     const double _t11 = _t6 + _t9 + _t10;
-    const double _t12 = 1.0 / sqrt(_t11);
-    const double _t13 = _t3 * _t12;
-    const double _t14 = 6.2831853071795862 * h;
-    const double _t15 = _t14 * 0.33333333333333331;
-    const double _t16 = _t13 * _t15 + _t2;
-    const double _t17 = offsetgen_cos(_t4);
-    const double _t18 = _t5 * _t17;
-    const double _t19 = _t18 * _t12;
-    const double _t20 = _t19 * _t15 + _t5;
-    const double _t21 = offsetgen_cos(_t7);
-    const double _t22 = _t21 * _t8;
-    const double _t23 = _t22 * _t12;
-    const double _t24 = _t8 + _t23 * _t15;
-    const double _t25 = sqrt(_t16 * _t16 + _t20 * _t20 + _t24 * _t24);
-    const double _t26 = 1.0 / _t25;
-    const double _t27 = _t19 * _t13 * _t12;
-    const double _t28 = _t27 * _t15;
-    const double _t29 = _t23 * _t13 * _t12;
-    const double _t30 = _t29 * _t15;
-    const double _t31 = (_t13 * _t13 - (_t1 * _t1 - _t10)) * _t12;
-    const double _t32 = _t1 - _t31 * _t15;
-    const double _t33 = _t26 * (_t20 * _t28 + _t30 * _t24 - _t32 * _t16);
-    const double _t34 = _t33 * _t15 - _t16;
-    const double _t35 = _t19 * _t23 * _t12;
-    const double _t36 = _t35 * _t15;
-    const double _t37 = (_t6 - _t17 * _t17 + _t19 * _t19) * _t12;
-    const double _t38 = _t37 * _t15 - _t17;
-    const double _t39 = _t26 * (_t24 * _t36 + (_t20 * _t38 + _t28 * _t16));
-    const double _t40 = _t20 - _t39 * _t15;
-    const double _t41 = (_t23 * _t23 - (_t21 * _t21 - _t9)) * _t12;
-    const double _t42 = _t21 - _t41 * _t15;
-    const double _t43 = _t26 * (_t20 * _t36 + _t30 * _t16 - _t24 * _t42);
-    const double _t44 = _t24 - _t43 * _t15;
-    const double _t45 = sqrt(_t34 * _t34 + _t40 * _t40 + _t44 * _t44);
-    const double _t46 = _t14 * 0.5;
-    const double _t47 = _t2 + _t13 * _t46;
-    const double _t48 = _t19 * _t46 + _t5;
-    const double _t49 = _t23 * _t46 + _t8;
-    const double _t50 = sqrt(_t47 * _t47 + _t48 * _t48 + _t49 * _t49);
-    const int _t51 = fabs(1.5 * (_t25 + _t45) - _t50 * 2.0) <= 1.7320525396196846;
-    const double _t52 = 1.0 / _t50;
-    const double _t53 = _t35 * _t46;
-    const double _t54 = _t29 * _t46;
-    const double _t55 = 1.0 / _t45;
-    const double _t56 = (_t19 * _t29 + (_t23 * _t27 + _t35 * _t13)) * _t12 * _t15;
-    const double _t57 = (_t35 * _t23 * 2.0 + _t19 * _t41) * _t12 * _t15;
-    const double _t58 = _t15 * ((_t37 * _t23 + _t19 * _t35 * 2.0) * _t12);
-    const double _t59 = _t36 + _t26 * (_t39 * _t43 - (_t36 * _t38 + (_t56 * _t16 + (_t30 * _t28 + (_t24 * _t57 + _t20 * _t58))) - _t36 * _t42)) * _t15;
-    const double _t60 = _t15 * ((_t31 * _t23 + _t29 * _t13 * 2.0) * _t12);
-    const double _t61 = (_t41 * _t13 + _t29 * _t23 * 2.0) * _t12 * _t15;
-    const double _t62 = _t30 + _t15 * (_t26 * (_t43 * _t33 - (_t20 * _t56 + _t16 * _t60 + _t36 * _t28 + _t24 * _t61 - _t30 * _t42 - _t30 * _t32)));
-    const double _t63 = _t30 * _t30;
-    const double _t64 = _t36 * _t36;
-    const double _t65 = (_t51) ? _t14 * (_t52 * ((_t21 - _t41 * _t46) * _t49 - _t48 * _t53 - _t47 * _t54) * 2.0 + (_t43 + _t55 * (_t59 * _t40 - _t34 * _t62 - _t44 * (_t26 * (_t63 + (_t42 * _t42 + _t64) + _t20 * _t57 + _t61 * _t16 - _t24 * (_t8 - (_t41 * _t23 * 3.0 - (_t22 + _t22 * 3.0)) * _t12 * _t15) - _t43 * _t43) * _t15 + _t42))) * 1.5) - _t8 : -_t8;
-    const double _t66 = (_t13 * _t27 * 2.0 + _t19 * _t31) * _t12 * _t15;
-    const double _t67 = _t28 * _t28;
-    const double _t68 = (_t19 * _t27 * 2.0 + _t37 * _t13) * _t12 * _t15;
-    const double _t69 = _t26 * (_t39 * _t33 - (_t30 * _t36 + _t66 * _t16 + _t24 * _t56 + _t20 * _t68 + _t28 * _t38 - _t32 * _t28)) * _t15 + _t28;
-    const double _t70 = _t27 * _t46;
-    const double _t71 = (_t51) ? _t14 * ((_t33 + _t55 * ((_t26 * (_t32 * _t32 + (_t63 + (_t20 * _t66 + _t24 * _t60)) + _t67 - (_t2 - (_t31 * _t13 * 3.0 - (_t3 + _t3 * 3.0)) * _t12 * _t15) * _t16 - _t33 * _t33) * _t15 + _t32) * _t34 + (_t44 * _t62 + _t69 * _t40))) * 1.5 + _t52 * ((_t1 - _t31 * _t46) * _t47 - _t48 * _t70 - _t49 * _t54) * 2.0) - _t2 : -_t2;
-    const double _t72 = (_t51) ? -(_t14 * ((_t53 * _t49 + (_t70 * _t47 + _t48 * (_t37 * _t46 - _t17))) * _t52 * 2.0 - 1.5 * (_t39 + _t55 * (_t59 * _t44 + (_t26 * (_t39 * _t39 - (_t24 * _t58 + (_t68 * _t16 + _t64) + _t67 + _t38 * _t38 - _t20 * (_t5 - (3.0 * (_t19 * _t37) - (3.0 * _t18 + _t18)) * _t12 * _t15))) * _t15 + _t38) * _t40 - _t69 * _t34))) + _t5) : -_t5;
-    const double _t73 = _t65 * _t65 + _t71 * _t71 + _t72 * _t72;
-    const int _t74 = _t73 > 0.0;
-    const int _t75 = _t73 <= 1.0e+30;
-    const double _t76 = 1.0 / sqrt(_t73);
-    const double _t77 = (_t11 > 0.0) ? _t12 : 0.0;
-    const double _t78 = -(_t77 * _t5);
-    const double _t79 = -(_t2 * _t77);
-    const double _t80 = -(_t8 * _t77);
-    n[0] = (_t74) ? ((_t75) ? _t76 * _t72 : _t78) : _t78;
-    n[1] = (_t74) ? ((_t75) ? _t76 * _t71 : _t79) : _t79;
-    n[2] = (_t74) ? ((_t75) ? _t65 * _t76 : _t80) : _t80;
+    const double _t12 = sqrt(_t11);
+    const double _t13 = 1.0 / _t12;
+    const double _t14 = _t3 * _t13;
+    const double _t15 = 6.2831853071795862 * h;
+    const double _t16 = _t15 * 0.33333333333333331;
+    const double _t17 = _t14 * _t16 + _t2;
+    const double _t18 = offsetgen_cos(_t4);
+    const double _t19 = _t5 * _t18;
+    const double _t20 = _t19 * _t13;
+    const double _t21 = _t20 * _t16 + _t5;
+    const double _t22 = offsetgen_cos(_t7);
+    const double _t23 = _t22 * _t8;
+    const double _t24 = _t23 * _t13;
+    const double _t25 = _t8 + _t24 * _t16;
+    const double _t26 = sqrt(_t17 * _t17 + _t21 * _t21 + _t25 * _t25);
+    const double _t27 = 1.0 / _t26;
+    const double _t28 = _t20 * _t14 * _t13;
+    const double _t29 = _t28 * _t16;
+    const double _t30 = _t24 * _t14 * _t13;
+    const double _t31 = _t30 * _t16;
+    const double _t32 = (_t14 * _t14 - (_t1 * _t1 - _t10)) * _t13;
+    const double _t33 = _t1 - _t32 * _t16;
+    const double _t34 = _t27 * (_t21 * _t29 + _t31 * _t25 - _t33 * _t17);
+    const double _t35 = _t34 * _t16 - _t17;
+    const double _t36 = _t20 * _t24 * _t13;
+    const double _t37 = _t36 * _t16;
+    const double _t38 = (_t6 - _t18 * _t18 + _t20 * _t20) * _t13;
+    const double _t39 = _t38 * _t16 - _t18;
+    const double _t40 = _t27 * (_t25 * _t37 + (_t21 * _t39 + _t29 * _t17));
+    const double _t41 = _t21 - _t40 * _t16;
+    const double _t42 = (_t24 * _t24 - (_t22 * _t22 - _t9)) * _t13;
+    const double _t43 = _t22 - _t42 * _t16;
+    const double _t44 = _t27 * (_t21 * _t37 + _t31 * _t17 - _t25 * _t43);
+    const double _t45 = _t25 - _t44 * _t16;
+    const double _t46 = sqrt(_t35 * _t35 + _t41 * _t41 + _t45 * _t45);
+    const double _t47 = _t15 * 0.5;
+    const double _t48 = _t2 + _t14 * _t47;
+    const double _t49 = _t20 * _t47 + _t5;
+    const double _t50 = _t24 * _t47 + _t8;
+    const double _t51 = sqrt(_t48 * _t48 + _t49 * _t49 + _t50 * _t50);
+    const double _t52 = 1.5 * (_t26 + _t46) - _t51 * 2.0;
+    const double _t53 = fabs(_t15);
+    const double _t54 = _t12 + _t53 * 0.50000050630325232;
+    const int _t55 = _t54 <= 1.7320525396196846;
+    const int _t56 = _t52 <= ((_t55) ? _t54 : 1.7320525396196846);
+    const double _t57 = _t12 - _t53 * 1.5000015189097571;
+    const int _t58 = (-1.7320525396196846) <= _t57;
+    const int _t59 = ((_t58) ? _t57 : (-1.7320525396196846)) <= _t52;
+    const double _t60 = _t36 * _t47;
+    const double _t61 = _t28 * _t47;
+    const double _t62 = 1.0 / _t51;
+    const double _t63 = 1.0 / _t46;
+    const double _t64 = (_t20 * _t30 + (_t24 * _t28 + _t36 * _t14)) * _t13 * _t16;
+    const double _t65 = (_t36 * _t24 * 2.0 + _t20 * _t42) * _t13 * _t16;
+    const double _t66 = _t16 * ((_t38 * _t24 + _t20 * _t36 * 2.0) * _t13);
+    const double _t67 = _t37 + _t27 * (_t40 * _t44 - (_t37 * _t39 + (_t64 * _t17 + (_t31 * _t29 + (_t25 * _t65 + _t21 * _t66))) - _t37 * _t43)) * _t16;
+    const double _t68 = (_t20 * _t28 * 2.0 + _t38 * _t14) * _t13 * _t16;
+    const double _t69 = _t37 * _t37;
+    const double _t70 = _t29 * _t29;
+    const double _t71 = (_t14 * _t28 * 2.0 + _t20 * _t32) * _t13 * _t16;
+    const double _t72 = _t27 * (_t40 * _t34 - (_t31 * _t37 + _t71 * _t17 + _t25 * _t64 + _t21 * _t68 + _t29 * _t39 - _t33 * _t29)) * _t16 + _t29;
+    const double _t73 = -(_t15 * _t20 + _t5);
+    const double _t74 = -_t5;
+    const double _t75 = (_t56) ? ((_t59) ? -(_t15 * ((_t60 * _t50 + (_t61 * _t48 + _t49 * (_t38 * _t47 - _t18))) * _t62 * 2.0 - 1.5 * (_t40 + _t63 * (_t67 * _t45 + (_t27 * (_t40 * _t40 - (_t25 * _t66 + (_t68 * _t17 + _t69) + _t70 + _t39 * _t39 - _t21 * (_t5 - (3.0 * (_t20 * _t38) - (3.0 * _t19 + _t19)) * _t13 * _t16))) * _t16 + _t39) * _t41 - _t72 * _t35))) + _t5) : ((_t58) ? _t73 : _t74)) : ((_t55) ? _t73 : _t74);
+    const double _t76 = _t30 * _t47;
+    const double _t77 = _t16 * ((_t32 * _t24 + _t30 * _t14 * 2.0) * _t13);
+    const double _t78 = (_t42 * _t14 + _t30 * _t24 * 2.0) * _t13 * _t16;
+    const double _t79 = _t31 + _t16 * (_t27 * (_t44 * _t34 - (_t21 * _t64 + _t17 * _t77 + _t37 * _t29 + _t25 * _t78 - _t31 * _t43 - _t31 * _t33)));
+    const double _t80 = _t31 * _t31;
+    const double _t81 = -(_t15 * _t24 + _t8);
+    const double _t82 = -_t8;
+    const double _t83 = (_t56) ? ((_t59) ? _t15 * (_t62 * ((_t22 - _t42 * _t47) * _t50 - _t49 * _t60 - _t48 * _t76) * 2.0 + (_t44 + _t63 * (_t67 * _t41 - _t35 * _t79 - _t45 * (_t27 * (_t80 + (_t43 * _t43 + _t69) + _t21 * _t65 + _t78 * _t17 - _t25 * (_t8 - (_t42 * _t24 * 3.0 - (_t23 + _t23 * 3.0)) * _t13 * _t16) - _t44 * _t44) * _t16 + _t43))) * 1.5) - _t8 : ((_t58) ? _t81 : _t82)) : ((_t55) ? _t81 : _t82);
+    const double _t84 = -(_t2 + _t15 * _t14);
+    const double _t85 = -_t2;
+    const double _t86 = (_t56) ? ((_t59) ? _t15 * ((_t34 + _t63 * ((_t27 * (_t33 * _t33 + (_t80 + (_t21 * _t71 + _t25 * _t77)) + _t70 - (_t2 - (_t32 * _t14 * 3.0 - (_t3 + _t3 * 3.0)) * _t13 * _t16) * _t17 - _t34 * _t34) * _t16 + _t33) * _t35 + (_t45 * _t79 + _t72 * _t41))) * 1.5 + _t62 * ((_t1 - _t32 * _t47) * _t48 - _t49 * _t61 - _t50 * _t76) * 2.0) - _t2 : ((_t58) ? _t84 : _t85)) : ((_t55) ? _t84 : _t85);
+    const double _t87 = _t75 * _t75 + _t83 * _t83 + _t86 * _t86;
+    const int _t88 = _t87 > 0.0;
+    const int _t89 = _t87 <= 1.0e+30;
+    const double _t90 = 1.0 / sqrt(_t87);
+    const double _t91 = (_t11 > 0.0) ? _t13 : 0.0;
+    const double _t92 = -(_t91 * _t5);
+    const double _t93 = -(_t2 * _t91);
+    const double _t94 = -(_t8 * _t91);
+    n[0] = (_t88) ? ((_t89) ? _t90 * _t75 : _t92) : _t92;
+    n[1] = (_t88) ? ((_t89) ? _t90 * _t86 : _t93) : _t93;
+    n[2] = (_t88) ? ((_t89) ? _t90 * _t83 : _t94) : _t94;
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
@@ -363,7 +392,7 @@ static inline float schwarzp_o3_fieldf(float x, float y, float z)
 }
 
 /* phi^(m)(p, h): zero on the surface moved by h along +grad F.
- * Total ops: 123
+ * Total ops: 131
  */
 static inline float schwarzp_o3_offsetf(float x, float y, float z, float h)
 {
@@ -380,32 +409,38 @@ static inline float schwarzp_o3_offsetf(float x, float y, float z, float h)
     const float _t10 = offsetgen_sinf(_t0);
     const float _t11 = _t10 * _t10;
     const float _t12 = _t7 * _t7;
-    const float _t13 = 1.0f / sqrtf(_t9 + _t11 + _t12);
-    const float _t14 = _t3 * _t7 * _t13;
-    const float _t15 = _t6 * 0.333333343f;
-    const float _t16 = _t14 * _t15 + _t7;
-    const float _t17 = _t8 * _t5 * _t13;
-    const float _t18 = _t17 * _t15 + _t8;
-    const float _t19 = _t1 * _t10 * _t13;
-    const float _t20 = _t10 + _t19 * _t15;
-    const float _t21 = sqrtf(_t16 * _t16 + _t18 * _t18 + _t20 * _t20);
-    const float _t22 = 1.0f / _t21;
-    const float _t23 = _t17 * _t14 * _t13 * _t15;
-    const float _t24 = _t19 * _t14 * _t13 * _t15;
-    const float _t25 = _t22 * (_t18 * _t23 + _t24 * _t20 - (_t3 - (_t14 * _t14 - (_t3 * _t3 - _t12)) * _t13 * _t15) * _t16) * _t15 - _t16;
-    const float _t26 = _t17 * _t19 * _t13 * _t15;
-    const float _t27 = _t18 - _t22 * (_t20 * _t26 + (_t18 * ((_t9 - _t5 * _t5 + _t17 * _t17) * _t13 * _t15 - _t5) + _t23 * _t16)) * _t15;
-    const float _t28 = _t20 - _t22 * (_t18 * _t26 + _t24 * _t16 - _t20 * (_t1 - (_t19 * _t19 - (_t1 * _t1 - _t11)) * _t13 * _t15)) * _t15;
-    const float _t29 = _t6 * 0.5f;
-    const float _t30 = _t7 + _t14 * _t29;
-    const float _t31 = _t17 * _t29 + _t8;
-    const float _t32 = _t19 * _t29 + _t10;
-    const float _t33 = 1.5f * (_t21 + sqrtf(_t25 * _t25 + _t27 * _t27 + _t28 * _t28)) - sqrtf(_t30 * _t30 + _t31 * _t31 + _t32 * _t32) * 2.0f;
-    return _t1 + _t3 + _t5 - _t6 * ((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+    const float _t13 = sqrtf(_t9 + _t11 + _t12);
+    const float _t14 = 1.0f / _t13;
+    const float _t15 = _t3 * _t7 * _t14;
+    const float _t16 = _t6 * 0.333333343f;
+    const float _t17 = _t15 * _t16 + _t7;
+    const float _t18 = _t8 * _t5 * _t14;
+    const float _t19 = _t18 * _t16 + _t8;
+    const float _t20 = _t1 * _t10 * _t14;
+    const float _t21 = _t10 + _t20 * _t16;
+    const float _t22 = sqrtf(_t17 * _t17 + _t19 * _t19 + _t21 * _t21);
+    const float _t23 = 1.0f / _t22;
+    const float _t24 = _t18 * _t15 * _t14 * _t16;
+    const float _t25 = _t20 * _t15 * _t14 * _t16;
+    const float _t26 = _t23 * (_t19 * _t24 + _t25 * _t21 - (_t3 - (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14 * _t16) * _t17) * _t16 - _t17;
+    const float _t27 = _t18 * _t20 * _t14 * _t16;
+    const float _t28 = _t19 - _t23 * (_t21 * _t27 + (_t19 * ((_t9 - _t5 * _t5 + _t18 * _t18) * _t14 * _t16 - _t5) + _t24 * _t17)) * _t16;
+    const float _t29 = _t21 - _t23 * (_t19 * _t27 + _t25 * _t17 - _t21 * (_t1 - (_t20 * _t20 - (_t1 * _t1 - _t11)) * _t14 * _t16)) * _t16;
+    const float _t30 = _t6 * 0.5f;
+    const float _t31 = _t7 + _t15 * _t30;
+    const float _t32 = _t18 * _t30 + _t8;
+    const float _t33 = _t20 * _t30 + _t10;
+    const float _t34 = 1.5f * (_t22 + sqrtf(_t26 * _t26 + _t28 * _t28 + _t29 * _t29)) - sqrtf(_t31 * _t31 + _t32 * _t32 + _t33 * _t33) * 2.0f;
+    const float _t35 = fabsf(_t6);
+    const float _t36 = _t13 + _t35 * 0.500000477f;
+    const float _t37 = (_t36 <= 1.73205256f) ? _t36 : 1.73205256f;
+    const float _t38 = _t13 - _t35 * 1.50000155f;
+    const float _t39 = ((-1.73205256f) <= _t38) ? _t38 : (-1.73205256f);
+    return _t1 + _t3 + _t5 - _t6 * ((_t34 <= _t37) ? ((_t39 <= _t34) ? _t34 : _t39) : _t37);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 188
+ * Total ops: 195
  */
 static inline float schwarzp_o3_shellf(float x, float y, float z, float t)
 {
@@ -420,56 +455,62 @@ static inline float schwarzp_o3_shellf(float x, float y, float z, float t)
     const float _t8 = 6.28318548f * y;
     const float _t9 = offsetgen_sinf(_t8);
     const float _t10 = _t9 * _t9;
-    const float _t11 = 1.0f / sqrtf(_t6 + _t7 + _t10);
-    const float _t12 = _t2 * _t3 * _t11;
-    const float _t13 = offsetgen_cosf(_t8);
-    const float _t14 = _t13 * _t9 * _t11;
-    const float _t15 = _t0 * 0.333333343f;
-    const float _t16 = _t12 * _t14 * _t11 * _t15;
-    const float _t17 = _t14 * _t15;
-    const float _t18 = _t9 - _t17;
-    const float _t19 = (_t12 * _t12 - (_t2 * _t2 - _t7)) * _t11 * _t15;
-    const float _t20 = _t12 * _t15;
-    const float _t21 = _t3 - _t20;
-    const float _t22 = offsetgen_cosf(_t4);
-    const float _t23 = _t5 * _t22 * _t11;
-    const float _t24 = _t23 * _t12 * _t11 * _t15;
-    const float _t25 = _t23 * _t15;
-    const float _t26 = _t25 - _t5;
-    const float _t27 = sqrtf(_t18 * _t18 + _t26 * _t26 + _t21 * _t21);
-    const float _t28 = 1.0f / _t27;
-    const float _t29 = (_t16 * _t18 + (_t19 + _t2) * _t21 - _t24 * _t26) * _t28 * _t15 - _t21;
-    const float _t30 = (_t14 * _t14 - (_t13 * _t13 - _t10)) * _t11 * _t15;
-    const float _t31 = _t23 * _t14 * _t11 * _t15;
-    const float _t32 = _t15 * ((_t16 * _t21 + (_t13 + _t30) * _t18 - _t31 * _t26) * _t28) - _t18;
-    const float _t33 = (_t6 - _t22 * _t22 + _t23 * _t23) * _t11 * _t15;
-    const float _t34 = (_t24 * _t21 + _t31 * _t18 - (_t33 + _t22) * _t26) * _t28 * _t15 + _t26;
-    const float _t35 = _t0 * 0.5f;
-    const float _t36 = _t35 * _t14;
-    const float _t37 = _t36 - _t9;
-    const float _t38 = _t23 * _t35;
-    const float _t39 = _t38 - _t5;
-    const float _t40 = _t35 * _t12;
-    const float _t41 = _t3 - _t40;
-    const float _t42 = (sqrtf(_t29 * _t29 + _t32 * _t32 + _t34 * _t34) + _t27) * 1.5f - 2.0f * sqrtf(_t37 * _t37 + _t39 * _t39 + _t41 * _t41);
-    const float _t43 = _t2 + _t13 + _t22;
-    const float _t44 = _t9 + _t17;
-    const float _t45 = _t3 + _t20;
-    const float _t46 = _t25 + _t5;
-    const float _t47 = sqrtf(_t44 * _t44 + _t45 * _t45 + _t46 * _t46);
-    const float _t48 = 1.0f / _t47;
-    const float _t49 = _t15 * (((_t19 - _t2) * _t45 + _t16 * _t44 + _t24 * _t46) * _t48) - _t45;
-    const float _t50 = _t44 - _t48 * (_t16 * _t45 + _t31 * _t46 - (_t13 - _t30) * _t44) * _t15;
-    const float _t51 = (_t24 * _t45 + (_t33 - _t22) * _t46 + _t31 * _t44) * _t48 * _t15 - _t46;
-    const float _t52 = _t38 + _t5;
-    const float _t53 = _t3 + _t40;
-    const float _t54 = _t36 + _t9;
-    const float _t55 = (_t47 + sqrtf(_t49 * _t49 + (_t50 * _t50 + _t51 * _t51))) * 1.5f - sqrtf(_t52 * _t52 + (_t53 * _t53 + _t54 * _t54)) * 2.0f;
-    return (_t0 * ((fabsf(_t42) <= 1.73205256f) ? _t42 : ((_t42 > 0.0f) ? 1.73205256f : (-1.73205256f))) + _t43) * (_t43 - _t0 * ((fabsf(_t55) <= 1.73205256f) ? _t55 : ((_t55 > 0.0f) ? 1.73205256f : (-1.73205256f))));
+    const float _t11 = sqrtf(_t6 + _t7 + _t10);
+    const float _t12 = 1.0f / _t11;
+    const float _t13 = _t2 * _t3 * _t12;
+    const float _t14 = offsetgen_cosf(_t8);
+    const float _t15 = _t14 * _t9 * _t12;
+    const float _t16 = _t0 * 0.333333343f;
+    const float _t17 = _t13 * _t15 * _t12 * _t16;
+    const float _t18 = _t15 * _t16;
+    const float _t19 = _t9 - _t18;
+    const float _t20 = (_t13 * _t13 - (_t2 * _t2 - _t7)) * _t12 * _t16;
+    const float _t21 = _t13 * _t16;
+    const float _t22 = _t3 - _t21;
+    const float _t23 = offsetgen_cosf(_t4);
+    const float _t24 = _t5 * _t23 * _t12;
+    const float _t25 = _t24 * _t13 * _t12 * _t16;
+    const float _t26 = _t24 * _t16;
+    const float _t27 = _t26 - _t5;
+    const float _t28 = sqrtf(_t19 * _t19 + _t27 * _t27 + _t22 * _t22);
+    const float _t29 = 1.0f / _t28;
+    const float _t30 = (_t17 * _t19 + (_t20 + _t2) * _t22 - _t25 * _t27) * _t29 * _t16 - _t22;
+    const float _t31 = (_t15 * _t15 - (_t14 * _t14 - _t10)) * _t12 * _t16;
+    const float _t32 = _t24 * _t15 * _t12 * _t16;
+    const float _t33 = _t16 * ((_t17 * _t22 + (_t14 + _t31) * _t19 - _t32 * _t27) * _t29) - _t19;
+    const float _t34 = (_t6 - _t23 * _t23 + _t24 * _t24) * _t12 * _t16;
+    const float _t35 = (_t25 * _t22 + _t32 * _t19 - (_t34 + _t23) * _t27) * _t29 * _t16 + _t27;
+    const float _t36 = _t0 * 0.5f;
+    const float _t37 = _t36 * _t15;
+    const float _t38 = _t37 - _t9;
+    const float _t39 = _t24 * _t36;
+    const float _t40 = _t39 - _t5;
+    const float _t41 = _t36 * _t13;
+    const float _t42 = _t3 - _t41;
+    const float _t43 = (sqrtf(_t30 * _t30 + _t33 * _t33 + _t35 * _t35) + _t28) * 1.5f - 2.0f * sqrtf(_t38 * _t38 + _t40 * _t40 + _t42 * _t42);
+    const float _t44 = fabsf(_t0);
+    const float _t45 = _t44 * 0.500000477f + _t11;
+    const float _t46 = (_t45 <= 1.73205256f) ? _t45 : 1.73205256f;
+    const float _t47 = _t11 - _t44 * 1.50000155f;
+    const float _t48 = ((-1.73205256f) <= _t47) ? _t47 : (-1.73205256f);
+    const float _t49 = _t2 + _t14 + _t23;
+    const float _t50 = _t9 + _t18;
+    const float _t51 = _t3 + _t21;
+    const float _t52 = _t26 + _t5;
+    const float _t53 = sqrtf(_t50 * _t50 + _t51 * _t51 + _t52 * _t52);
+    const float _t54 = 1.0f / _t53;
+    const float _t55 = _t16 * (((_t20 - _t2) * _t51 + _t17 * _t50 + _t25 * _t52) * _t54) - _t51;
+    const float _t56 = _t50 - _t54 * (_t17 * _t51 + _t32 * _t52 - (_t14 - _t31) * _t50) * _t16;
+    const float _t57 = (_t25 * _t51 + (_t34 - _t23) * _t52 + _t32 * _t50) * _t54 * _t16 - _t52;
+    const float _t58 = _t39 + _t5;
+    const float _t59 = _t3 + _t41;
+    const float _t60 = _t37 + _t9;
+    const float _t61 = (_t53 + sqrtf(_t55 * _t55 + (_t56 * _t56 + _t57 * _t57))) * 1.5f - sqrtf(_t58 * _t58 + (_t59 * _t59 + _t60 * _t60)) * 2.0f;
+    return (_t0 * ((_t43 <= _t46) ? ((_t48 <= _t43) ? _t43 : _t48) : _t46) + _t49) * (_t49 - ((_t61 <= _t46) ? ((_t48 <= _t61) ? _t61 : _t48) : _t46) * _t0);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
- * Total ops: 374
+ * Total ops: 401
  */
 static inline void schwarzp_o3_normalf(float x, float y, float z, float h, float n[3])
 {
@@ -485,78 +526,92 @@ static inline void schwarzp_o3_normalf(float x, float y, float z, float h, float
     const float _t9 = _t8 * _t8;
     const float _t10 = _t2 * _t2;
     const float _t11 = _t6 + _t9 + _t10;
-    const float _t12 = 1.0f / sqrtf(_t11);
-    const float _t13 = _t3 * _t12;
-    const float _t14 = 6.28318548f * h;
-    const float _t15 = _t14 * 0.333333343f;
-    const float _t16 = _t13 * _t15 + _t2;
-    const float _t17 = offsetgen_cosf(_t4);
-    const float _t18 = _t5 * _t17;
-    const float _t19 = _t18 * _t12;
-    const float _t20 = _t19 * _t15 + _t5;
-    const float _t21 = offsetgen_cosf(_t7);
-    const float _t22 = _t21 * _t8;
-    const float _t23 = _t22 * _t12;
-    const float _t24 = _t8 + _t23 * _t15;
-    const float _t25 = sqrtf(_t16 * _t16 + _t20 * _t20 + _t24 * _t24);
-    const float _t26 = 1.0f / _t25;
-    const float _t27 = _t19 * _t13 * _t12;
-    const float _t28 = _t27 * _t15;
-    const float _t29 = _t23 * _t13 * _t12;
-    const float _t30 = _t29 * _t15;
-    const float _t31 = (_t13 * _t13 - (_t1 * _t1 - _t10)) * _t12;
-    const float _t32 = _t1 - _t31 * _t15;
-    const float _t33 = _t26 * (_t20 * _t28 + _t30 * _t24 - _t32 * _t16);
-    const float _t34 = _t33 * _t15 - _t16;
-    const float _t35 = _t19 * _t23 * _t12;
-    const float _t36 = _t35 * _t15;
-    const float _t37 = (_t6 - _t17 * _t17 + _t19 * _t19) * _t12;
-    const float _t38 = _t37 * _t15 - _t17;
-    const float _t39 = _t26 * (_t24 * _t36 + (_t20 * _t38 + _t28 * _t16));
-    const float _t40 = _t20 - _t39 * _t15;
-    const float _t41 = (_t23 * _t23 - (_t21 * _t21 - _t9)) * _t12;
-    const float _t42 = _t21 - _t41 * _t15;
-    const float _t43 = _t26 * (_t20 * _t36 + _t30 * _t16 - _t24 * _t42);
-    const float _t44 = _t24 - _t43 * _t15;
-    const float _t45 = sqrtf(_t34 * _t34 + _t40 * _t40 + _t44 * _t44);
-    const float _t46 = _t14 * 0.5f;
-    const float _t47 = _t2 + _t13 * _t46;
-    const float _t48 = _t19 * _t46 + _t5;
-    const float _t49 = _t23 * _t46 + _t8;
-    const float _t50 = sqrtf(_t47 * _t47 + _t48 * _t48 + _t49 * _t49);
-    const int _t51 = fabsf(1.5f * (_t25 + _t45) - _t50 * 2.0f) <= 1.73205256f;
-    const float _t52 = 1.0f / _t50;
-    const float _t53 = _t35 * _t46;
-    const float _t54 = _t29 * _t46;
-    const float _t55 = 1.0f / _t45;
-    const float _t56 = (_t19 * _t29 + (_t23 * _t27 + _t35 * _t13)) * _t12 * _t15;
-    const float _t57 = (_t35 * _t23 * 2.0f + _t19 * _t41) * _t12 * _t15;
-    const float _t58 = _t15 * ((_t37 * _t23 + _t19 * _t35 * 2.0f) * _t12);
-    const float _t59 = _t36 + _t26 * (_t39 * _t43 - (_t36 * _t38 + (_t56 * _t16 + (_t30 * _t28 + (_t24 * _t57 + _t20 * _t58))) - _t36 * _t42)) * _t15;
-    const float _t60 = _t15 * ((_t31 * _t23 + _t29 * _t13 * 2.0f) * _t12);
-    const float _t61 = (_t41 * _t13 + _t29 * _t23 * 2.0f) * _t12 * _t15;
-    const float _t62 = _t30 + _t15 * (_t26 * (_t43 * _t33 - (_t20 * _t56 + _t16 * _t60 + _t36 * _t28 + _t24 * _t61 - _t30 * _t42 - _t30 * _t32)));
-    const float _t63 = _t30 * _t30;
-    const float _t64 = _t36 * _t36;
-    const float _t65 = (_t51) ? _t14 * (_t52 * ((_t21 - _t41 * _t46) * _t49 - _t48 * _t53 - _t47 * _t54) * 2.0f + (_t43 + _t55 * (_t59 * _t40 - _t34 * _t62 - _t44 * (_t26 * (_t63 + (_t42 * _t42 + _t64) + _t20 * _t57 + _t61 * _t16 - _t24 * (_t8 - (_t41 * _t23 * 3.0f - (_t22 + _t22 * 3.0f)) * _t12 * _t15) - _t43 * _t43) * _t15 + _t42))) * 1.5f) - _t8 : -_t8;
-    const float _t66 = (_t13 * _t27 * 2.0f + _t19 * _t31) * _t12 * _t15;
-    const float _t67 = _t28 * _t28;
-    const float _t68 = (_t19 * _t27 * 2.0f + _t37 * _t13) * _t12 * _t15;
-    const float _t69 = _t26 * (_t39 * _t33 - (_t30 * _t36 + _t66 * _t16 + _t24 * _t56 + _t20 * _t68 + _t28 * _t38 - _t32 * _t28)) * _t15 + _t28;
-    const float _t70 = _t27 * _t46;
-    const float _t71 = (_t51) ? _t14 * ((_t33 + _t55 * ((_t26 * (_t32 * _t32 + (_t63 + (_t20 * _t66 + _t24 * _t60)) + _t67 - (_t2 - (_t31 * _t13 * 3.0f - (_t3 + _t3 * 3.0f)) * _t12 * _t15) * _t16 - _t33 * _t33) * _t15 + _t32) * _t34 + (_t44 * _t62 + _t69 * _t40))) * 1.5f + _t52 * ((_t1 - _t31 * _t46) * _t47 - _t48 * _t70 - _t49 * _t54) * 2.0f) - _t2 : -_t2;
-    const float _t72 = (_t51) ? -(_t14 * ((_t53 * _t49 + (_t70 * _t47 + _t48 * (_t37 * _t46 - _t17))) * _t52 * 2.0f - 1.5f * (_t39 + _t55 * (_t59 * _t44 + (_t26 * (_t39 * _t39 - (_t24 * _t58 + (_t68 * _t16 + _t64) + _t67 + _t38 * _t38 - _t20 * (_t5 - (3.0f * (_t19 * _t37) - (3.0f * _t18 + _t18)) * _t12 * _t15))) * _t15 + _t38) * _t40 - _t69 * _t34))) + _t5) : -_t5;
-    const float _t73 = _t65 * _t65 + _t71 * _t71 + _t72 * _t72;
-    const int _t74 = _t73 > 0.0f;
-    const int _t75 = _t73 <= 1.00000002e+30f;
-    const float _t76 = 1.0f / sqrtf(_t73);
-    const float _t77 = (_t11 > 0.0f) ? _t12 : 0.0f;
-    const float _t78 = -(_t77 * _t5);
-    const float _t79 = -(_t2 * _t77);
-    const float _t80 = -(_t8 * _t77);
-    n[0] = (_t74) ? ((_t75) ? _t76 * _t72 : _t78) : _t78;
-    n[1] = (_t74) ? ((_t75) ? _t76 * _t71 : _t79) : _t79;
-    n[2] = (_t74) ? ((_t75) ? _t65 * _t76 : _t80) : _t80;
+    const float _t12 = sqrtf(_t11);
+    const float _t13 = 1.0f / _t12;
+    const float _t14 = _t3 * _t13;
+    const float _t15 = 6.28318548f * h;
+    const float _t16 = _t15 * 0.333333343f;
+    const float _t17 = _t14 * _t16 + _t2;
+    const float _t18 = offsetgen_cosf(_t4);
+    const float _t19 = _t5 * _t18;
+    const float _t20 = _t19 * _t13;
+    const float _t21 = _t20 * _t16 + _t5;
+    const float _t22 = offsetgen_cosf(_t7);
+    const float _t23 = _t22 * _t8;
+    const float _t24 = _t23 * _t13;
+    const float _t25 = _t8 + _t24 * _t16;
+    const float _t26 = sqrtf(_t17 * _t17 + _t21 * _t21 + _t25 * _t25);
+    const float _t27 = 1.0f / _t26;
+    const float _t28 = _t20 * _t14 * _t13;
+    const float _t29 = _t28 * _t16;
+    const float _t30 = _t24 * _t14 * _t13;
+    const float _t31 = _t30 * _t16;
+    const float _t32 = (_t14 * _t14 - (_t1 * _t1 - _t10)) * _t13;
+    const float _t33 = _t1 - _t32 * _t16;
+    const float _t34 = _t27 * (_t21 * _t29 + _t31 * _t25 - _t33 * _t17);
+    const float _t35 = _t34 * _t16 - _t17;
+    const float _t36 = _t20 * _t24 * _t13;
+    const float _t37 = _t36 * _t16;
+    const float _t38 = (_t6 - _t18 * _t18 + _t20 * _t20) * _t13;
+    const float _t39 = _t38 * _t16 - _t18;
+    const float _t40 = _t27 * (_t25 * _t37 + (_t21 * _t39 + _t29 * _t17));
+    const float _t41 = _t21 - _t40 * _t16;
+    const float _t42 = (_t24 * _t24 - (_t22 * _t22 - _t9)) * _t13;
+    const float _t43 = _t22 - _t42 * _t16;
+    const float _t44 = _t27 * (_t21 * _t37 + _t31 * _t17 - _t25 * _t43);
+    const float _t45 = _t25 - _t44 * _t16;
+    const float _t46 = sqrtf(_t35 * _t35 + _t41 * _t41 + _t45 * _t45);
+    const float _t47 = _t15 * 0.5f;
+    const float _t48 = _t2 + _t14 * _t47;
+    const float _t49 = _t20 * _t47 + _t5;
+    const float _t50 = _t24 * _t47 + _t8;
+    const float _t51 = sqrtf(_t48 * _t48 + _t49 * _t49 + _t50 * _t50);
+    const float _t52 = 1.5f * (_t26 + _t46) - _t51 * 2.0f;
+    const float _t53 = fabsf(_t15);
+    const float _t54 = _t12 + _t53 * 0.500000477f;
+    const int _t55 = _t54 <= 1.73205256f;
+    const int _t56 = _t52 <= ((_t55) ? _t54 : 1.73205256f);
+    const float _t57 = _t12 - _t53 * 1.50000155f;
+    const int _t58 = (-1.73205256f) <= _t57;
+    const int _t59 = ((_t58) ? _t57 : (-1.73205256f)) <= _t52;
+    const float _t60 = _t36 * _t47;
+    const float _t61 = _t28 * _t47;
+    const float _t62 = 1.0f / _t51;
+    const float _t63 = 1.0f / _t46;
+    const float _t64 = (_t20 * _t30 + (_t24 * _t28 + _t36 * _t14)) * _t13 * _t16;
+    const float _t65 = (_t36 * _t24 * 2.0f + _t20 * _t42) * _t13 * _t16;
+    const float _t66 = _t16 * ((_t38 * _t24 + _t20 * _t36 * 2.0f) * _t13);
+    const float _t67 = _t37 + _t27 * (_t40 * _t44 - (_t37 * _t39 + (_t64 * _t17 + (_t31 * _t29 + (_t25 * _t65 + _t21 * _t66))) - _t37 * _t43)) * _t16;
+    const float _t68 = (_t20 * _t28 * 2.0f + _t38 * _t14) * _t13 * _t16;
+    const float _t69 = _t37 * _t37;
+    const float _t70 = _t29 * _t29;
+    const float _t71 = (_t14 * _t28 * 2.0f + _t20 * _t32) * _t13 * _t16;
+    const float _t72 = _t27 * (_t40 * _t34 - (_t31 * _t37 + _t71 * _t17 + _t25 * _t64 + _t21 * _t68 + _t29 * _t39 - _t33 * _t29)) * _t16 + _t29;
+    const float _t73 = -(_t15 * _t20 + _t5);
+    const float _t74 = -_t5;
+    const float _t75 = (_t56) ? ((_t59) ? -(_t15 * ((_t60 * _t50 + (_t61 * _t48 + _t49 * (_t38 * _t47 - _t18))) * _t62 * 2.0f - 1.5f * (_t40 + _t63 * (_t67 * _t45 + (_t27 * (_t40 * _t40 - (_t25 * _t66 + (_t68 * _t17 + _t69) + _t70 + _t39 * _t39 - _t21 * (_t5 - (3.0f * (_t20 * _t38) - (3.0f * _t19 + _t19)) * _t13 * _t16))) * _t16 + _t39) * _t41 - _t72 * _t35))) + _t5) : ((_t58) ? _t73 : _t74)) : ((_t55) ? _t73 : _t74);
+    const float _t76 = _t30 * _t47;
+    const float _t77 = _t16 * ((_t32 * _t24 + _t30 * _t14 * 2.0f) * _t13);
+    const float _t78 = (_t42 * _t14 + _t30 * _t24 * 2.0f) * _t13 * _t16;
+    const float _t79 = _t31 + _t16 * (_t27 * (_t44 * _t34 - (_t21 * _t64 + _t17 * _t77 + _t37 * _t29 + _t25 * _t78 - _t31 * _t43 - _t31 * _t33)));
+    const float _t80 = _t31 * _t31;
+    const float _t81 = -(_t15 * _t24 + _t8);
+    const float _t82 = -_t8;
+    const float _t83 = (_t56) ? ((_t59) ? _t15 * (_t62 * ((_t22 - _t42 * _t47) * _t50 - _t49 * _t60 - _t48 * _t76) * 2.0f + (_t44 + _t63 * (_t67 * _t41 - _t35 * _t79 - _t45 * (_t27 * (_t80 + (_t43 * _t43 + _t69) + _t21 * _t65 + _t78 * _t17 - _t25 * (_t8 - (_t42 * _t24 * 3.0f - (_t23 + _t23 * 3.0f)) * _t13 * _t16) - _t44 * _t44) * _t16 + _t43))) * 1.5f) - _t8 : ((_t58) ? _t81 : _t82)) : ((_t55) ? _t81 : _t82);
+    const float _t84 = -(_t2 + _t15 * _t14);
+    const float _t85 = -_t2;
+    const float _t86 = (_t56) ? ((_t59) ? _t15 * ((_t34 + _t63 * ((_t27 * (_t33 * _t33 + (_t80 + (_t21 * _t71 + _t25 * _t77)) + _t70 - (_t2 - (_t32 * _t14 * 3.0f - (_t3 + _t3 * 3.0f)) * _t13 * _t16) * _t17 - _t34 * _t34) * _t16 + _t33) * _t35 + (_t45 * _t79 + _t72 * _t41))) * 1.5f + _t62 * ((_t1 - _t32 * _t47) * _t48 - _t49 * _t61 - _t50 * _t76) * 2.0f) - _t2 : ((_t58) ? _t84 : _t85)) : ((_t55) ? _t84 : _t85);
+    const float _t87 = _t75 * _t75 + _t83 * _t83 + _t86 * _t86;
+    const int _t88 = _t87 > 0.0f;
+    const int _t89 = _t87 <= 1.00000002e+30f;
+    const float _t90 = 1.0f / sqrtf(_t87);
+    const float _t91 = (_t11 > 0.0f) ? _t13 : 0.0f;
+    const float _t92 = -(_t91 * _t5);
+    const float _t93 = -(_t2 * _t91);
+    const float _t94 = -(_t8 * _t91);
+    n[0] = (_t88) ? ((_t89) ? _t90 * _t75 : _t92) : _t92;
+    n[1] = (_t88) ? ((_t89) ? _t90 * _t86 : _t93) : _t93;
+    n[2] = (_t88) ? ((_t89) ? _t90 * _t83 : _t94) : _t94;
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -674,28 +729,34 @@ static inline void schwarzp_o3_offset_n(size_t n, const double *x, const double 
         const double _t10 = offsetgen_batch_sin(_t0);
         const double _t11 = _t10 * _t10;
         const double _t12 = _t7 * _t7;
-        const double _t13 = 1.0 / sqrt(_t9 + _t11 + _t12);
-        const double _t14 = _t3 * _t7 * _t13;
-        const double _t15 = _t6 * 0.33333333333333331;
-        const double _t16 = _t14 * _t15 + _t7;
-        const double _t17 = _t8 * _t5 * _t13;
-        const double _t18 = _t17 * _t15 + _t8;
-        const double _t19 = _t1 * _t10 * _t13;
-        const double _t20 = _t10 + _t19 * _t15;
-        const double _t21 = sqrt(_t16 * _t16 + _t18 * _t18 + _t20 * _t20);
-        const double _t22 = 1.0 / _t21;
-        const double _t23 = _t17 * _t14 * _t13 * _t15;
-        const double _t24 = _t19 * _t14 * _t13 * _t15;
-        const double _t25 = _t22 * (_t18 * _t23 + _t24 * _t20 - (_t3 - (_t14 * _t14 - (_t3 * _t3 - _t12)) * _t13 * _t15) * _t16) * _t15 - _t16;
-        const double _t26 = _t17 * _t19 * _t13 * _t15;
-        const double _t27 = _t18 - _t22 * (_t20 * _t26 + (_t18 * ((_t9 - _t5 * _t5 + _t17 * _t17) * _t13 * _t15 - _t5) + _t23 * _t16)) * _t15;
-        const double _t28 = _t20 - _t22 * (_t18 * _t26 + _t24 * _t16 - _t20 * (_t1 - (_t19 * _t19 - (_t1 * _t1 - _t11)) * _t13 * _t15)) * _t15;
-        const double _t29 = _t6 * 0.5;
-        const double _t30 = _t7 + _t14 * _t29;
-        const double _t31 = _t17 * _t29 + _t8;
-        const double _t32 = _t19 * _t29 + _t10;
-        const double _t33 = 1.5 * (_t21 + sqrt(_t25 * _t25 + _t27 * _t27 + _t28 * _t28)) - sqrt(_t30 * _t30 + _t31 * _t31 + _t32 * _t32) * 2.0;
-        out[i] = _t1 + _t3 + _t5 - _t6 * ((fabs(_t33) <= 1.7320525396196846) ? _t33 : ((_t33 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846)));
+        const double _t13 = sqrt(_t9 + _t11 + _t12);
+        const double _t14 = 1.0 / _t13;
+        const double _t15 = _t3 * _t7 * _t14;
+        const double _t16 = _t6 * 0.33333333333333331;
+        const double _t17 = _t15 * _t16 + _t7;
+        const double _t18 = _t8 * _t5 * _t14;
+        const double _t19 = _t18 * _t16 + _t8;
+        const double _t20 = _t1 * _t10 * _t14;
+        const double _t21 = _t10 + _t20 * _t16;
+        const double _t22 = sqrt(_t17 * _t17 + _t19 * _t19 + _t21 * _t21);
+        const double _t23 = 1.0 / _t22;
+        const double _t24 = _t18 * _t15 * _t14 * _t16;
+        const double _t25 = _t20 * _t15 * _t14 * _t16;
+        const double _t26 = _t23 * (_t19 * _t24 + _t25 * _t21 - (_t3 - (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14 * _t16) * _t17) * _t16 - _t17;
+        const double _t27 = _t18 * _t20 * _t14 * _t16;
+        const double _t28 = _t19 - _t23 * (_t21 * _t27 + (_t19 * ((_t9 - _t5 * _t5 + _t18 * _t18) * _t14 * _t16 - _t5) + _t24 * _t17)) * _t16;
+        const double _t29 = _t21 - _t23 * (_t19 * _t27 + _t25 * _t17 - _t21 * (_t1 - (_t20 * _t20 - (_t1 * _t1 - _t11)) * _t14 * _t16)) * _t16;
+        const double _t30 = _t6 * 0.5;
+        const double _t31 = _t7 + _t15 * _t30;
+        const double _t32 = _t18 * _t30 + _t8;
+        const double _t33 = _t20 * _t30 + _t10;
+        const double _t34 = 1.5 * (_t22 + sqrt(_t26 * _t26 + _t28 * _t28 + _t29 * _t29)) - sqrt(_t31 * _t31 + _t32 * _t32 + _t33 * _t33) * 2.0;
+        const double _t35 = fabs(_t6);
+        const double _t36 = _t13 + _t35 * 0.50000050630325232;
+        const double _t37 = (_t36 <= 1.7320525396196846) ? _t36 : 1.7320525396196846;
+        const double _t38 = _t13 - _t35 * 1.5000015189097571;
+        const double _t39 = ((-1.7320525396196846) <= _t38) ? _t38 : (-1.7320525396196846);
+        out[i] = _t1 + _t3 + _t5 - _t6 * ((_t34 <= _t37) ? ((_t39 <= _t34) ? _t34 : _t39) : _t37);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o3_offset(x[i], y[i], z[i], h[i]);
@@ -721,52 +782,58 @@ static inline void schwarzp_o3_shell_n(size_t n, const double *x, const double *
         const double _t8 = 6.2831853071795862 * y[i];
         const double _t9 = offsetgen_batch_sin(_t8);
         const double _t10 = _t9 * _t9;
-        const double _t11 = 1.0 / sqrt(_t6 + _t7 + _t10);
-        const double _t12 = _t2 * _t3 * _t11;
-        const double _t13 = offsetgen_batch_cos(_t8);
-        const double _t14 = _t13 * _t9 * _t11;
-        const double _t15 = _t0 * 0.33333333333333331;
-        const double _t16 = _t12 * _t14 * _t11 * _t15;
-        const double _t17 = _t14 * _t15;
-        const double _t18 = _t9 - _t17;
-        const double _t19 = (_t12 * _t12 - (_t2 * _t2 - _t7)) * _t11 * _t15;
-        const double _t20 = _t12 * _t15;
-        const double _t21 = _t3 - _t20;
-        const double _t22 = offsetgen_batch_cos(_t4);
-        const double _t23 = _t5 * _t22 * _t11;
-        const double _t24 = _t23 * _t12 * _t11 * _t15;
-        const double _t25 = _t23 * _t15;
-        const double _t26 = _t25 - _t5;
-        const double _t27 = sqrt(_t18 * _t18 + _t26 * _t26 + _t21 * _t21);
-        const double _t28 = 1.0 / _t27;
-        const double _t29 = (_t16 * _t18 + (_t19 + _t2) * _t21 - _t24 * _t26) * _t28 * _t15 - _t21;
-        const double _t30 = (_t14 * _t14 - (_t13 * _t13 - _t10)) * _t11 * _t15;
-        const double _t31 = _t23 * _t14 * _t11 * _t15;
-        const double _t32 = _t15 * ((_t16 * _t21 + (_t13 + _t30) * _t18 - _t31 * _t26) * _t28) - _t18;
-        const double _t33 = (_t6 - _t22 * _t22 + _t23 * _t23) * _t11 * _t15;
-        const double _t34 = (_t24 * _t21 + _t31 * _t18 - (_t33 + _t22) * _t26) * _t28 * _t15 + _t26;
-        const double _t35 = _t0 * 0.5;
-        const double _t36 = _t35 * _t14;
-        const double _t37 = _t36 - _t9;
-        const double _t38 = _t23 * _t35;
-        const double _t39 = _t38 - _t5;
-        const double _t40 = _t35 * _t12;
-        const double _t41 = _t3 - _t40;
-        const double _t42 = (sqrt(_t29 * _t29 + _t32 * _t32 + _t34 * _t34) + _t27) * 1.5 - 2.0 * sqrt(_t37 * _t37 + _t39 * _t39 + _t41 * _t41);
-        const double _t43 = _t2 + _t13 + _t22;
-        const double _t44 = _t9 + _t17;
-        const double _t45 = _t3 + _t20;
-        const double _t46 = _t25 + _t5;
-        const double _t47 = sqrt(_t44 * _t44 + _t45 * _t45 + _t46 * _t46);
-        const double _t48 = 1.0 / _t47;
-        const double _t49 = _t15 * (((_t19 - _t2) * _t45 + _t16 * _t44 + _t24 * _t46) * _t48) - _t45;
-        const double _t50 = _t44 - _t48 * (_t16 * _t45 + _t31 * _t46 - (_t13 - _t30) * _t44) * _t15;
-        const double _t51 = (_t24 * _t45 + (_t33 - _t22) * _t46 + _t31 * _t44) * _t48 * _t15 - _t46;
-        const double _t52 = _t38 + _t5;
-        const double _t53 = _t3 + _t40;
-        const double _t54 = _t36 + _t9;
-        const double _t55 = (_t47 + sqrt(_t49 * _t49 + (_t50 * _t50 + _t51 * _t51))) * 1.5 - sqrt(_t52 * _t52 + (_t53 * _t53 + _t54 * _t54)) * 2.0;
-        out[i] = (_t0 * ((fabs(_t42) <= 1.7320525396196846) ? _t42 : ((_t42 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))) + _t43) * (_t43 - _t0 * ((fabs(_t55) <= 1.7320525396196846) ? _t55 : ((_t55 > 0.0) ? 1.7320525396196846 : (-1.7320525396196846))));
+        const double _t11 = sqrt(_t6 + _t7 + _t10);
+        const double _t12 = 1.0 / _t11;
+        const double _t13 = _t2 * _t3 * _t12;
+        const double _t14 = offsetgen_batch_cos(_t8);
+        const double _t15 = _t14 * _t9 * _t12;
+        const double _t16 = _t0 * 0.33333333333333331;
+        const double _t17 = _t13 * _t15 * _t12 * _t16;
+        const double _t18 = _t15 * _t16;
+        const double _t19 = _t9 - _t18;
+        const double _t20 = (_t13 * _t13 - (_t2 * _t2 - _t7)) * _t12 * _t16;
+        const double _t21 = _t13 * _t16;
+        const double _t22 = _t3 - _t21;
+        const double _t23 = offsetgen_batch_cos(_t4);
+        const double _t24 = _t5 * _t23 * _t12;
+        const double _t25 = _t24 * _t13 * _t12 * _t16;
+        const double _t26 = _t24 * _t16;
+        const double _t27 = _t26 - _t5;
+        const double _t28 = sqrt(_t19 * _t19 + _t27 * _t27 + _t22 * _t22);
+        const double _t29 = 1.0 / _t28;
+        const double _t30 = (_t17 * _t19 + (_t20 + _t2) * _t22 - _t25 * _t27) * _t29 * _t16 - _t22;
+        const double _t31 = (_t15 * _t15 - (_t14 * _t14 - _t10)) * _t12 * _t16;
+        const double _t32 = _t24 * _t15 * _t12 * _t16;
+        const double _t33 = _t16 * ((_t17 * _t22 + (_t14 + _t31) * _t19 - _t32 * _t27) * _t29) - _t19;
+        const double _t34 = (_t6 - _t23 * _t23 + _t24 * _t24) * _t12 * _t16;
+        const double _t35 = (_t25 * _t22 + _t32 * _t19 - (_t34 + _t23) * _t27) * _t29 * _t16 + _t27;
+        const double _t36 = _t0 * 0.5;
+        const double _t37 = _t36 * _t15;
+        const double _t38 = _t37 - _t9;
+        const double _t39 = _t24 * _t36;
+        const double _t40 = _t39 - _t5;
+        const double _t41 = _t36 * _t13;
+        const double _t42 = _t3 - _t41;
+        const double _t43 = (sqrt(_t30 * _t30 + _t33 * _t33 + _t35 * _t35) + _t28) * 1.5 - 2.0 * sqrt(_t38 * _t38 + _t40 * _t40 + _t42 * _t42);
+        const double _t44 = fabs(_t0);
+        const double _t45 = _t44 * 0.50000050630325232 + _t11;
+        const double _t46 = (_t45 <= 1.7320525396196846) ? _t45 : 1.7320525396196846;
+        const double _t47 = _t11 - _t44 * 1.5000015189097571;
+        const double _t48 = ((-1.7320525396196846) <= _t47) ? _t47 : (-1.7320525396196846);
+        const double _t49 = _t2 + _t14 + _t23;
+        const double _t50 = _t9 + _t18;
+        const double _t51 = _t3 + _t21;
+        const double _t52 = _t26 + _t5;
+        const double _t53 = sqrt(_t50 * _t50 + _t51 * _t51 + _t52 * _t52);
+        const double _t54 = 1.0 / _t53;
+        const double _t55 = _t16 * (((_t20 - _t2) * _t51 + _t17 * _t50 + _t25 * _t52) * _t54) - _t51;
+        const double _t56 = _t50 - _t54 * (_t17 * _t51 + _t32 * _t52 - (_t14 - _t31) * _t50) * _t16;
+        const double _t57 = (_t25 * _t51 + (_t34 - _t23) * _t52 + _t32 * _t50) * _t54 * _t16 - _t52;
+        const double _t58 = _t39 + _t5;
+        const double _t59 = _t3 + _t41;
+        const double _t60 = _t37 + _t9;
+        const double _t61 = (_t53 + sqrt(_t55 * _t55 + (_t56 * _t56 + _t57 * _t57))) * 1.5 - sqrt(_t58 * _t58 + (_t59 * _t59 + _t60 * _t60)) * 2.0;
+        out[i] = (_t0 * ((_t43 <= _t46) ? ((_t48 <= _t43) ? _t43 : _t48) : _t46) + _t49) * (_t49 - ((_t61 <= _t46) ? ((_t48 <= _t61) ? _t61 : _t48) : _t46) * _t0);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o3_shell(x[i], y[i], z[i], t[i]);
@@ -794,28 +861,34 @@ static inline void schwarzp_o3_offsetf_n(size_t n, const float *x, const float *
         const float _t10 = offsetgen_batch_sinf(_t0);
         const float _t11 = _t10 * _t10;
         const float _t12 = _t7 * _t7;
-        const float _t13 = 1.0f / sqrtf(_t9 + _t11 + _t12);
-        const float _t14 = _t3 * _t7 * _t13;
-        const float _t15 = _t6 * 0.333333343f;
-        const float _t16 = _t14 * _t15 + _t7;
-        const float _t17 = _t8 * _t5 * _t13;
-        const float _t18 = _t17 * _t15 + _t8;
-        const float _t19 = _t1 * _t10 * _t13;
-        const float _t20 = _t10 + _t19 * _t15;
-        const float _t21 = sqrtf(_t16 * _t16 + _t18 * _t18 + _t20 * _t20);
-        const float _t22 = 1.0f / _t21;
-        const float _t23 = _t17 * _t14 * _t13 * _t15;
-        const float _t24 = _t19 * _t14 * _t13 * _t15;
-        const float _t25 = _t22 * (_t18 * _t23 + _t24 * _t20 - (_t3 - (_t14 * _t14 - (_t3 * _t3 - _t12)) * _t13 * _t15) * _t16) * _t15 - _t16;
-        const float _t26 = _t17 * _t19 * _t13 * _t15;
-        const float _t27 = _t18 - _t22 * (_t20 * _t26 + (_t18 * ((_t9 - _t5 * _t5 + _t17 * _t17) * _t13 * _t15 - _t5) + _t23 * _t16)) * _t15;
-        const float _t28 = _t20 - _t22 * (_t18 * _t26 + _t24 * _t16 - _t20 * (_t1 - (_t19 * _t19 - (_t1 * _t1 - _t11)) * _t13 * _t15)) * _t15;
-        const float _t29 = _t6 * 0.5f;
-        const float _t30 = _t7 + _t14 * _t29;
-        const float _t31 = _t17 * _t29 + _t8;
-        const float _t32 = _t19 * _t29 + _t10;
-        const float _t33 = 1.5f * (_t21 + sqrtf(_t25 * _t25 + _t27 * _t27 + _t28 * _t28)) - sqrtf(_t30 * _t30 + _t31 * _t31 + _t32 * _t32) * 2.0f;
-        out[i] = _t1 + _t3 + _t5 - _t6 * ((fabsf(_t33) <= 1.73205256f) ? _t33 : ((_t33 > 0.0f) ? 1.73205256f : (-1.73205256f)));
+        const float _t13 = sqrtf(_t9 + _t11 + _t12);
+        const float _t14 = 1.0f / _t13;
+        const float _t15 = _t3 * _t7 * _t14;
+        const float _t16 = _t6 * 0.333333343f;
+        const float _t17 = _t15 * _t16 + _t7;
+        const float _t18 = _t8 * _t5 * _t14;
+        const float _t19 = _t18 * _t16 + _t8;
+        const float _t20 = _t1 * _t10 * _t14;
+        const float _t21 = _t10 + _t20 * _t16;
+        const float _t22 = sqrtf(_t17 * _t17 + _t19 * _t19 + _t21 * _t21);
+        const float _t23 = 1.0f / _t22;
+        const float _t24 = _t18 * _t15 * _t14 * _t16;
+        const float _t25 = _t20 * _t15 * _t14 * _t16;
+        const float _t26 = _t23 * (_t19 * _t24 + _t25 * _t21 - (_t3 - (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14 * _t16) * _t17) * _t16 - _t17;
+        const float _t27 = _t18 * _t20 * _t14 * _t16;
+        const float _t28 = _t19 - _t23 * (_t21 * _t27 + (_t19 * ((_t9 - _t5 * _t5 + _t18 * _t18) * _t14 * _t16 - _t5) + _t24 * _t17)) * _t16;
+        const float _t29 = _t21 - _t23 * (_t19 * _t27 + _t25 * _t17 - _t21 * (_t1 - (_t20 * _t20 - (_t1 * _t1 - _t11)) * _t14 * _t16)) * _t16;
+        const float _t30 = _t6 * 0.5f;
+        const float _t31 = _t7 + _t15 * _t30;
+        const float _t32 = _t18 * _t30 + _t8;
+        const float _t33 = _t20 * _t30 + _t10;
+        const float _t34 = 1.5f * (_t22 + sqrtf(_t26 * _t26 + _t28 * _t28 + _t29 * _t29)) - sqrtf(_t31 * _t31 + _t32 * _t32 + _t33 * _t33) * 2.0f;
+        const float _t35 = fabsf(_t6);
+        const float _t36 = _t13 + _t35 * 0.500000477f;
+        const float _t37 = (_t36 <= 1.73205256f) ? _t36 : 1.73205256f;
+        const float _t38 = _t13 - _t35 * 1.50000155f;
+        const float _t39 = ((-1.73205256f) <= _t38) ? _t38 : (-1.73205256f);
+        out[i] = _t1 + _t3 + _t5 - _t6 * ((_t34 <= _t37) ? ((_t39 <= _t34) ? _t34 : _t39) : _t37);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o3_offsetf(x[i], y[i], z[i], h[i]);
@@ -841,52 +914,58 @@ static inline void schwarzp_o3_shellf_n(size_t n, const float *x, const float *y
         const float _t8 = 6.28318548f * y[i];
         const float _t9 = offsetgen_batch_sinf(_t8);
         const float _t10 = _t9 * _t9;
-        const float _t11 = 1.0f / sqrtf(_t6 + _t7 + _t10);
-        const float _t12 = _t2 * _t3 * _t11;
-        const float _t13 = offsetgen_batch_cosf(_t8);
-        const float _t14 = _t13 * _t9 * _t11;
-        const float _t15 = _t0 * 0.333333343f;
-        const float _t16 = _t12 * _t14 * _t11 * _t15;
-        const float _t17 = _t14 * _t15;
-        const float _t18 = _t9 - _t17;
-        const float _t19 = (_t12 * _t12 - (_t2 * _t2 - _t7)) * _t11 * _t15;
-        const float _t20 = _t12 * _t15;
-        const float _t21 = _t3 - _t20;
-        const float _t22 = offsetgen_batch_cosf(_t4);
-        const float _t23 = _t5 * _t22 * _t11;
-        const float _t24 = _t23 * _t12 * _t11 * _t15;
-        const float _t25 = _t23 * _t15;
-        const float _t26 = _t25 - _t5;
-        const float _t27 = sqrtf(_t18 * _t18 + _t26 * _t26 + _t21 * _t21);
-        const float _t28 = 1.0f / _t27;
-        const float _t29 = (_t16 * _t18 + (_t19 + _t2) * _t21 - _t24 * _t26) * _t28 * _t15 - _t21;
-        const float _t30 = (_t14 * _t14 - (_t13 * _t13 - _t10)) * _t11 * _t15;
-        const float _t31 = _t23 * _t14 * _t11 * _t15;
-        const float _t32 = _t15 * ((_t16 * _t21 + (_t13 + _t30) * _t18 - _t31 * _t26) * _t28) - _t18;
-        const float _t33 = (_t6 - _t22 * _t22 + _t23 * _t23) * _t11 * _t15;
-        const float _t34 = (_t24 * _t21 + _t31 * _t18 - (_t33 + _t22) * _t26) * _t28 * _t15 + _t26;
-        const float _t35 = _t0 * 0.5f;
-        const float _t36 = _t35 * _t14;
-        const float _t37 = _t36 - _t9;
-        const float _t38 = _t23 * _t35;
-        const float _t39 = _t38 - _t5;
-        const float _t40 = _t35 * _t12;
-        const float _t41 = _t3 - _t40;
-        const float _t42 = (sqrtf(_t29 * _t29 + _t32 * _t32 + _t34 * _t34) + _t27) * 1.5f - 2.0f * sqrtf(_t37 * _t37 + _t39 * _t39 + _t41 * _t41);
-        const float _t43 = _t2 + _t13 + _t22;
-        const float _t44 = _t9 + _t17;
-        const float _t45 = _t3 + _t20;
-        const float _t46 = _t25 + _t5;
-        const float _t47 = sqrtf(_t44 * _t44 + _t45 * _t45 + _t46 * _t46);
-        const float _t48 = 1.0f / _t47;
-        const float _t49 = _t15 * (((_t19 - _t2) * _t45 + _t16 * _t44 + _t24 * _t46) * _t48) - _t45;
-        const float _t50 = _t44 - _t48 * (_t16 * _t45 + _t31 * _t46 - (_t13 - _t30) * _t44) * _t15;
-        const float _t51 = (_t24 * _t45 + (_t33 - _t22) * _t46 + _t31 * _t44) * _t48 * _t15 - _t46;
-        const float _t52 = _t38 + _t5;
-        const float _t53 = _t3 + _t40;
-        const float _t54 = _t36 + _t9;
-        const float _t55 = (_t47 + sqrtf(_t49 * _t49 + (_t50 * _t50 + _t51 * _t51))) * 1.5f - sqrtf(_t52 * _t52 + (_t53 * _t53 + _t54 * _t54)) * 2.0f;
-        out[i] = (_t0 * ((fabsf(_t42) <= 1.73205256f) ? _t42 : ((_t42 > 0.0f) ? 1.73205256f : (-1.73205256f))) + _t43) * (_t43 - _t0 * ((fabsf(_t55) <= 1.73205256f) ? _t55 : ((_t55 > 0.0f) ? 1.73205256f : (-1.73205256f))));
+        const float _t11 = sqrtf(_t6 + _t7 + _t10);
+        const float _t12 = 1.0f / _t11;
+        const float _t13 = _t2 * _t3 * _t12;
+        const float _t14 = offsetgen_batch_cosf(_t8);
+        const float _t15 = _t14 * _t9 * _t12;
+        const float _t16 = _t0 * 0.333333343f;
+        const float _t17 = _t13 * _t15 * _t12 * _t16;
+        const float _t18 = _t15 * _t16;
+        const float _t19 = _t9 - _t18;
+        const float _t20 = (_t13 * _t13 - (_t2 * _t2 - _t7)) * _t12 * _t16;
+        const float _t21 = _t13 * _t16;
+        const float _t22 = _t3 - _t21;
+        const float _t23 = offsetgen_batch_cosf(_t4);
+        const float _t24 = _t5 * _t23 * _t12;
+        const float _t25 = _t24 * _t13 * _t12 * _t16;
+        const float _t26 = _t24 * _t16;
+        const float _t27 = _t26 - _t5;
+        const float _t28 = sqrtf(_t19 * _t19 + _t27 * _t27 + _t22 * _t22);
+        const float _t29 = 1.0f / _t28;
+        const float _t30 = (_t17 * _t19 + (_t20 + _t2) * _t22 - _t25 * _t27) * _t29 * _t16 - _t22;
+        const float _t31 = (_t15 * _t15 - (_t14 * _t14 - _t10)) * _t12 * _t16;
+        const float _t32 = _t24 * _t15 * _t12 * _t16;
+        const float _t33 = _t16 * ((_t17 * _t22 + (_t14 + _t31) * _t19 - _t32 * _t27) * _t29) - _t19;
+        const float _t34 = (_t6 - _t23 * _t23 + _t24 * _t24) * _t12 * _t16;
+        const float _t35 = (_t25 * _t22 + _t32 * _t19 - (_t34 + _t23) * _t27) * _t29 * _t16 + _t27;
+        const float _t36 = _t0 * 0.5f;
+        const float _t37 = _t36 * _t15;
+        const float _t38 = _t37 - _t9;
+        const float _t39 = _t24 * _t36;
+        const float _t40 = _t39 - _t5;
+        const float _t41 = _t36 * _t13;
+        const float _t42 = _t3 - _t41;
+        const float _t43 = (sqrtf(_t30 * _t30 + _t33 * _t33 + _t35 * _t35) + _t28) * 1.5f - 2.0f * sqrtf(_t38 * _t38 + _t40 * _t40 + _t42 * _t42);
+        const float _t44 = fabsf(_t0);
+        const float _t45 = _t44 * 0.500000477f + _t11;
+        const float _t46 = (_t45 <= 1.73205256f) ? _t45 : 1.73205256f;
+        const float _t47 = _t11 - _t44 * 1.50000155f;
+        const float _t48 = ((-1.73205256f) <= _t47) ? _t47 : (-1.73205256f);
+        const float _t49 = _t2 + _t14 + _t23;
+        const float _t50 = _t9 + _t18;
+        const float _t51 = _t3 + _t21;
+        const float _t52 = _t26 + _t5;
+        const float _t53 = sqrtf(_t50 * _t50 + _t51 * _t51 + _t52 * _t52);
+        const float _t54 = 1.0f / _t53;
+        const float _t55 = _t16 * (((_t20 - _t2) * _t51 + _t17 * _t50 + _t25 * _t52) * _t54) - _t51;
+        const float _t56 = _t50 - _t54 * (_t17 * _t51 + _t32 * _t52 - (_t14 - _t31) * _t50) * _t16;
+        const float _t57 = (_t25 * _t51 + (_t34 - _t23) * _t52 + _t32 * _t50) * _t54 * _t16 - _t52;
+        const float _t58 = _t39 + _t5;
+        const float _t59 = _t3 + _t41;
+        const float _t60 = _t37 + _t9;
+        const float _t61 = (_t53 + sqrtf(_t55 * _t55 + (_t56 * _t56 + _t57 * _t57))) * 1.5f - sqrtf(_t58 * _t58 + (_t59 * _t59 + _t60 * _t60)) * 2.0f;
+        out[i] = (_t0 * ((_t43 <= _t46) ? ((_t48 <= _t43) ? _t43 : _t48) : _t46) + _t49) * (_t49 - ((_t61 <= _t46) ? ((_t48 <= _t61) ? _t61 : _t48) : _t46) * _t0);
     }
     for (i = 0; i < n; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o3_shellf(x[i], y[i], z[i], t[i]);

@@ -9,10 +9,8 @@
 # into render_shell's fragment shader, and writes:
 #   docs/images/gyroid_shell.png    gyroid, one cell, t = 0.1, order 4        (paper Figure 2)
 #   docs/images/schwarzp_shell.png  Schwarz P, one cell, t = 0.1, order 4     (paper Figure 4)
-#   docs/images/neovius_shell.png   Neovius, one cell, t = 0.1, order 3       (paper Figure 6)
+#   docs/images/neovius_shell.png   Neovius, one cell, t = 0.1, order 4       (paper Figure 6)
 #   docs/images/gyroid_graded.png   gyroid, 3 cells along x, t = 0.02 + 0.04 x, order 4 (Figure 9)
-# Neovius uses order 3 like the paper: at t = 0.1 its order-4 offset has small phantom wall slivers
-# near the critical points of F (see docs/glsl.md, "Known limitations").
 #
 # Deterministic: the same offsetgen and the same Mesa/LLVM give the same bytes (llvmpipe is
 # bit-reproducible, the PNG writer stores no timestamp). Renders in 5-25 s on 2 cores once built.
@@ -52,12 +50,12 @@ render() {
 
 snippet gyroid_o4 gyroid 4
 snippet schwarzp_o4 schwarzp 4
-snippet neovius_o3 neovius 3
+snippet neovius_o4 neovius 4
 snippet gyroid_graded_o4 gyroid 4 --thickness "0.02 + 0.04*x"
 
 render gyroid_shell.png gyroid_o4 --thickness 0.1 --size 480x480
 render schwarzp_shell.png schwarzp_o4 --thickness 0.1 --size 480x480
-render neovius_shell.png neovius_o3 --thickness 0.1 --size 480x480
+render neovius_shell.png neovius_o4 --thickness 0.1 --size 480x480
 render gyroid_graded.png gyroid_graded_o4 --graded --thickness 0.02 --box 3x1x1 \
   --view 0.22 -0.95 0.3 --size 960x360
 

@@ -55,7 +55,7 @@ GiNaC::numeric exact(double value) {
 ValueReport check_values(const LoadedFunctions& f, const Reference& reference, const FileMetadata& meta,
                          const std::optional<GiNaC::ex>& thickness, const ValueCheckOptions& options) {
   const Generation& g = reference.generation;
-  HighPrecisionEvaluator hp(g.surface, g.model, meta.gradient_bound, options.digits);
+  HighPrecisionEvaluator hp(g.surface, g.model, {meta.gradient_bound, g.programs.hessian_bound}, options.digits);
   const int dims = meta.dims;
   std::mt19937_64 rng(options.seed);
   std::uniform_real_distribution<double> coordinate(0.0, 1.0);

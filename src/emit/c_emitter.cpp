@@ -86,7 +86,8 @@ std::string emit_c_header(const FileFacts& facts, const std::vector<EmittedFunct
       fmt::arg("version", OFFSETGEN_VERSION), fmt::arg("command", facts.command), fmt::arg("order", facts.order),
       fmt::arg("order_plus_one", facts.order + 1), fmt::arg("title", s.title), fmt::arg("formula", s.formula),
       fmt::arg("citation", s.citation), fmt::arg("function_list", function_list), fmt::arg("prefix", facts.prefix),
-      fmt::arg("bound", fmt::format("{:.17g}", facts.gradient_bound)), fmt::arg("ops_list", ops_list),
+      fmt::arg("bound", fmt::format("{:.17g}", facts.gradient_bound)),
+      fmt::arg("hessian_bound", fmt::format("{:.17g}", facts.hessian_bound)), fmt::arg("ops_list", ops_list),
       fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "h")),
       fmt::arg("functions", rendered));
 }

@@ -29,6 +29,7 @@ struct FileFacts {
   int dims = 3;
   const Surface* surface = nullptr;
   double gradient_bound = 0;
+  double hessian_bound = 0;
   std::string metadata_json;      // one line
 };
 

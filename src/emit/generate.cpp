@@ -38,6 +38,7 @@ nlohmann::ordered_json metadata(const GenerationRequest& request, const Generati
   for (auto p : request.precisions) precisions.push_back(p == Precision::Double ? "double" : "float");
   j["precisions"] = precisions;
   j["gradient_bound"] = g.programs.gradient_bound;
+  j["hessian_bound"] = g.programs.hessian_bound;
   nlohmann::ordered_json ops;
   for (const auto& f : emitted_functions(g.programs, g.surface.dims)) ops[f.suffix] = count_ops(*f.program);
   j["ops"] = ops;
@@ -86,6 +87,7 @@ Generation generate(const GenerationRequest& request) {
   facts.dims = g.surface.dims;
   facts.surface = &g.surface;
   facts.gradient_bound = g.programs.gradient_bound;
+  facts.hessian_bound = g.programs.hessian_bound;
   facts.metadata_json = g.metadata_json;
   auto functions = emitted_functions(g.programs, g.surface.dims);
   if (request.c) {

@@ -66,6 +66,7 @@ std::string emit_glsl_snippet(const FileFacts& facts, const std::vector<EmittedF
       fmt::arg("order_plus_one", facts.order + 1), fmt::arg("title", s.title), fmt::arg("formula", s.formula),
       fmt::arg("citation", s.citation), fmt::arg("use_list", use_list), fmt::arg("io_list", io_list),
       fmt::arg("prefix", facts.prefix), fmt::arg("bound", fmt::format("{:.9g}", facts.gradient_bound)),
+      fmt::arg("hessian_bound", fmt::format("{:.9g}", facts.hessian_bound)),
       fmt::arg("ops_list", ops_list), fmt::arg("metadata", facts.metadata_json),
       fmt::arg("guard", guard_name(facts.prefix, "glsl")), fmt::arg("functions", rendered));
 }

@@ -1,5 +1,6 @@
 #include "offset/high_precision.h"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -24,11 +25,18 @@ GiNaC::numeric as_numeric(const GiNaC::ex& e) {
   return GiNaC::ex_to<GiNaC::numeric>(v);
 }
 
+bool numeric_less(const GiNaC::numeric& a, const GiNaC::numeric& b) { return a < b; }
+
 }  // namespace
 
-HighPrecisionEvaluator::HighPrecisionEvaluator(const Surface& surface, const OffsetModel& model, double gradient_bound,
+HighPrecisionEvaluator::HighPrecisionEvaluator(const Surface& surface, const OffsetModel& model, SafeguardBounds bounds,
                                                int digits)
-    : surface_(surface), model_(model), bound_(gradient_bound), clamp_(gradient_bound > 0), digits_(digits) {
+    : surface_(surface),
+      model_(model),
+      bound_(bounds.gradient),
+      hessian_bound_(bounds.hessian),
+      clamp_(bounds.gradient > 0),
+      digits_(digits) {
   DigitsGuard guard(digits_);
   scale_ = as_numeric(surface.scale);
 }
@@ -117,8 +125,22 @@ GiNaC::numeric HighPrecisionEvaluator::offset(const std::vector<GiNaC::numeric>&
   DigitsGuard guard(digits_);
   const GiNaC::numeric h = scale_ * h_cell;
   GiNaC::numeric g = eval_sum(model_.weighted_norms, x_cell, h);
-  if (clamp_ && GiNaC::abs(g) > bound_) g = g > 0 ? bound_ : -bound_;
   Scope scope = coordinates(x_cell);
+  if (clamp_) {
+    GiNaC::numeric lo = -bound_, hi = bound_;
+    if (model_.order > 1 && hessian_bound_ > 0) {
+      const GiNaC::numeric norm = eval(model_.field_gradient_norm, scope, scope);
+      const GiNaC::numeric spread = hessian_bound_ * GiNaC::abs(h);
+      lo = std::max(lo, norm - GiNaC::numeric(kSafeguardBelow) * spread, numeric_less);
+      hi = std::min(hi, norm + GiNaC::numeric(kSafeguardAbove) * spread, numeric_less);
+    }
+    // In the order the emitted selects test it (lowering/surface_programs.cpp).
+    if (!(g <= hi)) {
+      g = hi;
+    } else if (!(lo <= g)) {
+      g = lo;
+    }
+  }
   return eval(model_.field, scope, scope) - h * g;
 }
 

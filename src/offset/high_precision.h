@@ -15,9 +15,8 @@ namespace offsetgen {
 
 class HighPrecisionEvaluator {
  public:
-  // gradient_bound is the safeguard's M (see lowering/surface_programs.h); <= 0 evaluates the raw
-  // formulas without the clamp.
-  HighPrecisionEvaluator(const Surface& surface, const OffsetModel& model, double gradient_bound, int digits = 40);
+  // `bounds` are the safeguard's (offset_model.h); bounds.gradient <= 0 evaluates the raw formulas.
+  HighPrecisionEvaluator(const Surface& surface, const OffsetModel& model, SafeguardBounds bounds, int digits = 40);
 
   GiNaC::numeric field(const std::vector<GiNaC::numeric>& x_cell);
   std::vector<GiNaC::numeric> field_gradient(const std::vector<GiNaC::numeric>& x_cell);  // d F / d x_cell
@@ -37,7 +36,7 @@ class HighPrecisionEvaluator {
 
   const Surface& surface_;
   const OffsetModel& model_;
-  GiNaC::numeric bound_;
+  GiNaC::numeric bound_, hessian_bound_;
   bool clamp_;
   int digits_;
   GiNaC::numeric scale_;

@@ -110,6 +110,16 @@ OffsetModel build_offset_model(const Surface& surface, int order, bool with_grad
   ChainBuilder chains(surface, depth, model.atoms);
 
   for (int i = 0; i < surface.dims; ++i) model.field_gradient.push_back(chains.derivatives(0).at(unit_index(i)));
+  model.field_gradient_norm = chains.norms(0).at({0, 0, 0});
+  if (with_gradient)
+    for (int i = 0; i < surface.dims; ++i) model.field_gradient_norm_gradient.push_back(chains.norms(0).at(unit_index(i)));
+  if (depth >= 2) {
+    model.field_hessian.assign(static_cast<size_t>(surface.dims), {});
+    for (int i = 0; i < surface.dims; ++i)
+      for (int j = 0; j < surface.dims; ++j)
+        model.field_hessian[static_cast<size_t>(i)].push_back(
+            chains.derivatives(0).at(unit_index(i) + unit_index(j)));
+  }
 
   const auto weights = richardson_weights(order);
   auto add_terms = [&](const MultiIndex& alpha, ChainSum& sum) {

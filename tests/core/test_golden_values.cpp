@@ -47,7 +47,7 @@ TEST(GoldenValues, CompiledHeadersMatchThe40DigitReference) {
   std::uniform_real_distribution<double> unit(0.0, 1.0), step(-0.05, 0.05);
   for (const Emitted& e : kGolden) {
     auto b = testing::build(e.surface, e.order);
-    HighPrecisionEvaluator reference(b->surface, b->model, b->programs.gradient_bound);
+    HighPrecisionEvaluator reference(b->surface, b->model, {b->programs.gradient_bound, b->programs.hessian_bound});
     double worst = 0, worst_float = 0, worst_normal = 0;
     Evaluator normal(b->programs.normal);
     for (int i = 0; i < 20; ++i) {

@@ -18,7 +18,7 @@ TEST(CircleIdentities, FirstOrderIsMinusHSquaredAndSecondOrderIsExact) {
   Surface circle = parse_user_expression("x^2 + y^2 - 9", {}, "circle");
   for (int order : {1, 2}) {
     OffsetModel model = build_offset_model(circle, order, false);
-    HighPrecisionEvaluator exact(circle, model, /*gradient_bound=*/0);
+    HighPrecisionEvaluator exact(circle, model, SafeguardBounds{});
     for (auto h : {GiNaC::numeric(1, 10), GiNaC::numeric(-1, 7), GiNaC::numeric(3, 5)}) {
       GiNaC::numeric phi = exact.offset({3 + h, 0}, h);
       EXPECT_TRUE(phi.is_rational()) << phi;
@@ -53,7 +53,7 @@ TEST(OffsetModel, JetChainsEqualNaiveNestedDifferentiation) {
     Surface s = catalog_surface(name);
     for (int order = 1; order <= 3; ++order) {
       OffsetModel model = build_offset_model(s, order, false);
-      HighPrecisionEvaluator jets(s, model, 0, 30);
+      HighPrecisionEvaluator jets(s, model, SafeguardBounds{}, 30);
       GiNaC::ex naive = naive_offset(s, order, h);
       for (int trial = 0; trial < 3; ++trial) {
         GiNaC::numeric x(1 + trial, 10), y(2 + trial, 7), z(3, 11 + trial), hv(trial - 1, 50);
@@ -76,7 +76,7 @@ TEST(Lowering, ProgramMatches40DigitReference) {
   for (const char* name : {"gyroid", "schwarzp", "neovius"}) {
     for (int order = 1; order <= 6; ++order) {
       auto b = testing::build(name, order);
-      HighPrecisionEvaluator reference(b->surface, b->model, b->programs.gradient_bound);
+      HighPrecisionEvaluator reference(b->surface, b->model, {b->programs.gradient_bound, b->programs.hessian_bound});
       Evaluator offset(b->programs.offset);
       double worst = 0;
       for (int i = 0; i < 12; ++i) {
@@ -122,7 +122,7 @@ TEST(OffsetModel, RawFormulasBlowUpWhereTheGradientVanishes) {
   // Gyroid at (1/8, 1/8, 1/8): grad F = 0. The unclamped G is undefined there;
   // this is what the safeguard exists for (tests/core/test_safeguard.cpp).
   auto b = testing::build("gyroid", 4);
-  HighPrecisionEvaluator raw(b->surface, b->model, 0, 40);
+  HighPrecisionEvaluator raw(b->surface, b->model, SafeguardBounds{}, 40);
   GiNaC::numeric eighth(1, 8);
   // At 40 digits the gradient cancels to exactly zero there, and the raw chain divides by it.
   EXPECT_THROW(raw.weighted_norms({eighth, eighth, eighth}, GiNaC::numeric(1, 20)), std::exception);
