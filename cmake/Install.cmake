@@ -16,20 +16,36 @@ set(OFFSETGEN_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/offsetgen" CACHE S
     "Where to install offsetgen's CMake package, relative to the prefix")
 mark_as_advanced(OFFSETGEN_INSTALL_CMAKEDIR)
 
-# The highest order the executable accepts (kMaxOrder), so offsetgen_generate() can reject others at
-# configure time.
-set(OFFSETGEN_MAX_ORDER 12)
-file(STRINGS "${PROJECT_SOURCE_DIR}/src/emit/generate.h" _offsetgen_max_order_line
-     REGEX "kMaxOrder[ \t]*=[ \t]*[0-9]+")
-if(_offsetgen_max_order_line MATCHES "kMaxOrder[ \t]*=[ \t]*([0-9]+)")
-  set(OFFSETGEN_MAX_ORDER ${CMAKE_MATCH_1})
+# The offset methods (the registry in src/offset/method_registry.cpp: one *_method.cpp each) with
+# their highest order and whether they build even orders only, as "name:max_order:even" entries, so
+# offsetgen_generate() can check METHOD and ORDERS and name the files at configure time.
+set(OFFSETGEN_METHODS "")
+file(GLOB _offsetgen_method_files "${PROJECT_SOURCE_DIR}/src/offset/*_method.cpp")
+foreach(_file IN LISTS _offsetgen_method_files)
+  file(STRINGS "${_file}" _lines REGEX "kMethod(Name|MaxOrder|EvenOrdersOnly) = ")
+  if(_lines MATCHES "kMethodName = \"([a-z]+)\"" )
+    set(_name ${CMAKE_MATCH_1})
+    string(REGEX MATCH "kMethodMaxOrder = ([0-9]+)" _ "${_lines}")
+    set(_max ${CMAKE_MATCH_1})
+    string(REGEX MATCH "kMethodEvenOrdersOnly = (true|false)" _ "${_lines}")
+    list(APPEND OFFSETGEN_METHODS "${_name}:${_max}:${CMAKE_MATCH_1}")
+  endif()
+endforeach()
+list(SORT OFFSETGEN_METHODS)
+if(NOT OFFSETGEN_METHODS)
+  message(FATAL_ERROR "offsetgen: no offset method found under src/offset/*_method.cpp")
 endif()
-unset(_offsetgen_max_order_line)
+file(STRINGS "${PROJECT_SOURCE_DIR}/src/offset/method.h" _lines REGEX "kDefaultMethod = ")
+string(REGEX MATCH "kDefaultMethod = \"([a-z]+)\"" _ "${_lines}")
+set(OFFSETGEN_DEFAULT_METHOD ${CMAKE_MATCH_1})
+unset(_offsetgen_method_files)
+unset(_lines)
 
 # --- The same names inside this build (add_subdirectory / FetchContent users, and our tests) -------
 add_executable(offsetgen::offsetgen ALIAS offsetgen)
 file(GLOB _offsetgen_templates "${PROJECT_SOURCE_DIR}/templates/*.in")
-set_property(GLOBAL PROPERTY OFFSETGEN_MAX_ORDER ${OFFSETGEN_MAX_ORDER})
+set_property(GLOBAL PROPERTY OFFSETGEN_METHODS "${OFFSETGEN_METHODS}")
+set_property(GLOBAL PROPERTY OFFSETGEN_DEFAULT_METHOD "${OFFSETGEN_DEFAULT_METHOD}")
 set_property(GLOBAL PROPERTY OFFSETGEN_TEMPLATE_FILES ${_offsetgen_templates})
 unset(_offsetgen_templates)
 include("${CMAKE_CURRENT_LIST_DIR}/offsetgenGenerate.cmake")

@@ -3,7 +3,8 @@
 #   offsetgen_generate(TARGET <name>
 #                      SURFACE <catalog-name>                    # or:
 #                      EXPR "<F(x, y[, z])>" NAME <stem> [PARAMS a=0.3 ...]
-#                      ORDERS <m> [<m> ...]                      # 1..12
+#                      ORDERS <m> [<m> ...]                      # richardson 1..12, projection 1..16
+#                      [METHOD richardson|projection]            # default: offsetgen's default method
 #                      [LANG c glsl glsl_string]                 # default: c
 #                      [PRECISION double float]                  # default: double (C only)
 #                      [THICKNESS "<t(x, y, z)>"]                # adds <prefix>_graded
@@ -11,7 +12,7 @@
 #                      [OUTPUT_DIR <dir>])                       # default: ${CMAKE_CURRENT_BINARY_DIR}/<name>
 #
 # For every order m it generates, in OUTPUT_DIR, the files of prefix <stem>_o<m> (stem = NAME, else
-# SURFACE): <prefix>.h (LANG c), <prefix>.glsl (LANG glsl or glsl_string) and <prefix>_glsl.h
+# SURFACE; m is the order the method builds: projection rounds odd orders up to the next even one): <prefix>.h (LANG c), <prefix>.glsl (LANG glsl or glsl_string) and <prefix>_glsl.h
 # (LANG glsl_string: `static const char <prefix>_glsl[]`, the snippet as a C string).
 #
 # It creates
@@ -55,8 +56,8 @@ function(_offsetgen_write_if_changed path content)
 endfunction()
 
 function(offsetgen_generate)
-  set(keywords TARGET SURFACE EXPR NAME THICKNESS OUTPUT_DIR ORDERS LANG PRECISION PARAMS)
-  cmake_parse_arguments(PARSE_ARGV 0 OG "" "TARGET;SURFACE;EXPR;NAME;THICKNESS;OUTPUT_DIR"
+  set(keywords TARGET SURFACE EXPR NAME METHOD THICKNESS OUTPUT_DIR ORDERS LANG PRECISION PARAMS)
+  cmake_parse_arguments(PARSE_ARGV 0 OG "" "TARGET;SURFACE;EXPR;NAME;METHOD;THICKNESS;OUTPUT_DIR"
                         "ORDERS;LANG;PRECISION;PARAMS")
   set(target "")
   if(DEFINED OG_TARGET)
@@ -115,17 +116,38 @@ function(offsetgen_generate)
     set(stem "${OG_NAME}")
   endif()
 
-  get_property(max_order GLOBAL PROPERTY OFFSETGEN_MAX_ORDER)
-  if(NOT max_order)
-    set(max_order 12)
+  # The method and its orders, from offsetgen's method registry (see Install.cmake).
+  get_property(methods GLOBAL PROPERTY OFFSETGEN_METHODS)
+  get_property(method GLOBAL PROPERTY OFFSETGEN_DEFAULT_METHOD)
+  if(DEFINED OG_METHOD)
+    set(method "${OG_METHOD}")
+  endif()
+  set(max_order "")
+  set(method_names "")
+  foreach(entry IN LISTS methods)
+    string(REPLACE ":" ";" fields "${entry}")
+    list(GET fields 0 name)
+    list(APPEND method_names ${name})
+    if(name STREQUAL method)
+      list(GET fields 1 max_order)
+      list(GET fields 2 even_only)
+    endif()
+  endforeach()
+  string(REPLACE ";" ", " method_names "${method_names}")
+  if(max_order STREQUAL "")
+    _offsetgen_fail("${target}" "METHOD: unknown method '${method}'; expected one of ${method_names}")
+  endif()
+  set(method_args "")
+  if(DEFINED OG_METHOD)
+    set(method_args --method "${method}")
   endif()
   if(NOT DEFINED OG_ORDERS)
-    _offsetgen_fail("${target}" "ORDERS <m> ... is required (orders 1 to ${max_order})")
+    _offsetgen_fail("${target}" "ORDERS <m> ... is required (orders 1 to ${max_order} with the ${method} method)")
   endif()
   set(orders "")
   foreach(order IN LISTS OG_ORDERS)
     if(NOT order MATCHES "^[0-9]+$" OR order LESS 1 OR order GREATER max_order)
-      _offsetgen_fail("${target}" "ORDERS: order '${order}' is out of range; offsetgen supports orders 1 to ${max_order}")
+      _offsetgen_fail("${target}" "ORDERS: order '${order}' is out of range; the ${method} method supports orders 1 to ${max_order}")
     endif()
     math(EXPR order "${order}")  # 04 -> 4, as offsetgen names the files
     list(APPEND orders ${order})
@@ -228,13 +250,22 @@ function(offsetgen_generate)
   set(glsl_files "")
   set(glsl_string_headers "")
   set(all_outputs "")
+  set(done_prefixes "")
   foreach(order IN LISTS orders)
-    set(prefix "${stem}_o${order}")
+    set(built_order ${order})
+    if(even_only STREQUAL "true")
+      math(EXPR built_order "(${order} + 1) / 2 * 2")  # the order the method builds, in the file name
+    endif()
+    set(prefix "${stem}_o${built_order}")
+    if(prefix IN_LIST done_prefixes)  # projection: orders 3 and 4 are the same file
+      continue()
+    endif()
+    list(APPEND done_prefixes ${prefix})
     set(name_args "")
     if(DEFINED OG_NAME)
       set(name_args --name "${prefix}")
     endif()
-    set(args generate ${source_args} ${param_args} ${name_args} --order ${order} --lang ${lang_arg}
+    set(args generate ${source_args} ${param_args} ${name_args} ${method_args} --order ${order} --lang ${lang_arg}
              ${precision_args} ${thickness_args} --out-dir "${output_dir}")
 
     # The stamp is the primary output, touched on every run, while offsetgen (and the glsl_string

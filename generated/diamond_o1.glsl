@@ -6,7 +6,10 @@ contributors: offsetgen (generated, do not edit)
 description: |
     Offset functions of order 1 for the Schwarz diamond (D), F = sin(X)*sin(Y)*sin(Z) + sin(X)*cos(Y)*cos(Z) + cos(X)*sin(Y)*cos(Z) + cos(X)*cos(Y)*sin(Z)   with X = 2*pi*x, Y = 2*pi*y, Z = 2*pi*z.
     Source: Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
-    Method: Geier & Alihussein, Algorithms 14(4):125 (2021), extended Richardson order 1.
+    Method: extended Richardson extrapolation of order 1: recursive first-order offsets F - h |grad
+    F| combined so that the error terms below h^2 cancel. Geier & Alihussein, "Computation of
+    Implicit Representation of Volumetric Shells with Predefined Thickness", Algorithms 14(4):125
+    (2021).
 use:
     - <float> diamond_o1_field(<vec3 p>)
     - <float> diamond_o1_offset(<vec3 p, float h>)
@@ -22,11 +25,20 @@ inputs and outputs:
       meaningful), _normal a unit vector
 sign convention: _offset(p, h) = 0 is the surface moved by h along +grad F (h > 0 towards F > 0);
     _shell(p, t) < 0 inside the wall of total thickness t centred on F = 0.
-accuracy: zero set within O(h^2) of the exact offset; relative thickness error ~ (h/L)^1.
-    Valid while |h| is small against the radius of curvature. Variable thickness: second order at best.
+accuracy: the zero set of _offset lies within O(h^2) of the exact offset surface, so the relative
+    thickness error falls as (h/L)^1.
 cell length L: diamond_o1_offset(p / L, h / L) is exact for a cell of length L.
-safeguard: G clamped to |G| <= 1.73205254 and to |grad F| + [-1.5, 0.5] * 2.000002 * |h| (orders >= 2),
-    so results are finite and no phantom walls appear away from the surface.
+variable thickness: pass the local t(p) to _shell (or use --thickness for a _graded function). The
+    derivation assumes a constant h, so a varying thickness is accurate to second order at best,
+    whatever the order of this file.
+safety: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+    high-order terms blow up. Here phi = F - h G with G clamped to [max(|grad F| - 1.5 H |h|, -M),
+    min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F| and H =
+    2.0000020000000061 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them too; at
+    order 1 only the M clamp). Every function returns a finite value for finite input (do not
+    compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| M, and |phi - (F - h
+    |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface itself G = F/h lies
+    inside the interval, so accuracy is untouched.
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 20
@@ -35,7 +47,7 @@ total ops after CSE:
     - normal: 104
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":46,"shell":49,"normal":104}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":1,"graded_order":1,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":46,"shell":49,"normal":104}} */
 #ifndef OFFSETGEN_DIAMOND_O1_GLSL
 #define OFFSETGEN_DIAMOND_O1_GLSL
 
@@ -54,7 +66,7 @@ highp float diamond_o1_field(highp vec3 p)
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi^(m)(p, h): zero on the surface moved by h along +grad F. Total ops: 46.
+// phi(p, h) of order 1: zero on the surface moved by h along +grad F. Total ops: 46.
 highp float diamond_o1_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;

@@ -6,48 +6,49 @@
  *
  * Surface: F = sin(X)*cos(Y) + sin(Y)*cos(Z) + sin(Z)*cos(X)   with X = 2*pi*x, Y = 2*pi*y, Z = 2*pi*z
  * Source:  Schoen 1970, NASA TN D-5541; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
- * Method:  Geier & Alihussein, "Computation of Implicit Representation of Volumetric Shells with
- *          Predefined Thickness", Algorithms 14(4):125 (2021): recursive first-order offsets combined
- *          by extended Richardson extrapolation of order 2.
+ * Method:  extended Richardson extrapolation of order 2: recursive first-order offsets F - h |grad
+ *          F| combined so that the error terms below h^3 cancel.
+ *          Geier & Alihussein, "Computation of Implicit Representation of Volumetric Shells with
+ *          Predefined Thickness", Algorithms 14(4):125 (2021).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
  *   double gyroid_o2_field(x, y, z)            F, the field; the surface is F = 0.
- *   double gyroid_o2_offset(x, y, z, h)        phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ *   double gyroid_o2_offset(x, y, z, h)        phi(p, h) of order 2: zero on the surface moved by h along +grad F.
  *   double gyroid_o2_shell(x, y, z, t)         phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  *   void gyroid_o2_normal(x, y, z, h, n)       unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
  *   float gyroid_o2_fieldf(x, y, z)            F, the field; the surface is F = 0.
- *   float gyroid_o2_offsetf(x, y, z, h)        phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ *   float gyroid_o2_offsetf(x, y, z, h)        phi(p, h) of order 2: zero on the surface moved by h along +grad F.
  *   float gyroid_o2_shellf(x, y, z, t)         phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  *   void gyroid_o2_normalf(x, y, z, h, n)      unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
  *
  * Sign convention: gyroid_o2_offset(p, h) = 0 is the surface moved a distance h along +grad F, so for
  *   h > 0 it lies on the side where F > 0. gyroid_o2_shell(p, t) < 0 inside the solid wall of total
  *   thickness t centred on F = 0, and > 0 outside it.
- * Accuracy: the zero set of gyroid_o2_offset lies within O(h^3) of the exact offset surface, so
- *   the relative thickness error falls as (h/L)^2 (order 4 on the gyroid: < 1e-6 at h = 0.01 L).
+ * Accuracy: the zero set of _offset lies within O(h^3) of the exact offset surface, so the relative
+ *   thickness error falls as (h/L)^2.
  *   Measure it for this file with: offsetgen check gyroid_o2.h
- * Validity: |h| (and t/2) must stay small against the local radius of curvature of the surface; the
- *   method does not detect self-intersecting offsets (paper section 4.2).
+ * Validity: |h| (and t/2) must stay small against the local radius of curvature of the surface;
+ *   self-intersecting offsets are not detected (paper section 4.2).
  * Cell length L: phi_L(p, h) = gyroid_o2_offset(p / L, h / L), exactly, at every order; likewise
  *   gyroid_o2_shell(p / L, t / L). Nothing needs regenerating.
- * Variable thickness: pass the local t(p) to gyroid_o2_shell (or use --thickness for a _graded
- *   function). The derivation assumes constant h, so a varying thickness is accurate to second
- *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
- *   high-order terms blow up. Here phi = F - h * G with G clamped to
- *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
- *   and H = 2.0000020000000003 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
- *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
- *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
- *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
- *   itself G = F / h lies inside the interval, so accuracy is untouched.
+ * Variable thickness: pass the local t(p) to _shell (or use --thickness for a _graded function).
+ *   The derivation assumes a constant h, so a varying thickness is accurate to second order at
+ *   best, whatever the order of this file.
+ * Safety: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h G with G clamped to [max(|grad F| - 1.5 H |h|, -M),
+ *   min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F| and H =
+ *   2.0000020000000003 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them too;
+ *   at order 1 only the M clamp). Every function returns a finite value for finite input (do not
+ *   compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| M, and |phi - (F - h
+ *   |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface itself G = F/h lies
+ *   inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    14
  *   offset   82
  *   shell    99
  *   normal   232
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":2,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":82,"shell":99,"normal":232}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":2,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":82,"shell":99,"normal":232}} */
 #ifndef OFFSETGEN_GYROID_O2_H
 #define OFFSETGEN_GYROID_O2_H
 
@@ -115,7 +116,7 @@ static inline double gyroid_o2_field(double x, double y, double z)
     return offsetgen_cos(_t0) * offsetgen_sin(_t1) + offsetgen_sin(_t0) * offsetgen_cos(_t2) + offsetgen_cos(_t1) * offsetgen_sin(_t2);
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
  * Total ops: 82
  */
 static inline double gyroid_o2_offset(double x, double y, double z, double h)
@@ -344,7 +345,7 @@ static inline float gyroid_o2_fieldf(float x, float y, float z)
     return offsetgen_cosf(_t0) * offsetgen_sinf(_t1) + offsetgen_sinf(_t0) * offsetgen_cosf(_t2) + offsetgen_cosf(_t1) * offsetgen_sinf(_t2);
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
  * Total ops: 82
  */
 static inline float gyroid_o2_offsetf(float x, float y, float z, float h)
@@ -608,7 +609,7 @@ static inline float offsetgen_batch_cosf(float a)
 #endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
 
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
  * Batch form of gyroid_o2_offset: out[i] = gyroid_o2_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
 static inline void gyroid_o2_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
@@ -710,7 +711,7 @@ static inline void gyroid_o2_shell_n(size_t n, const double *x, const double *y,
     }
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
  * Batch form of gyroid_o2_offsetf: out[i] = gyroid_o2_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
 static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)

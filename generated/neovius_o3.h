@@ -6,48 +6,49 @@
  *
  * Surface: F = 3*(cos(X) + cos(Y) + cos(Z)) + 4*cos(X)*cos(Y)*cos(Z)   with X = 2*pi*x, Y = 2*pi*y, Z = 2*pi*z
  * Source:  Neovius 1883; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
- * Method:  Geier & Alihussein, "Computation of Implicit Representation of Volumetric Shells with
- *          Predefined Thickness", Algorithms 14(4):125 (2021): recursive first-order offsets combined
- *          by extended Richardson extrapolation of order 3.
+ * Method:  extended Richardson extrapolation of order 3: recursive first-order offsets F - h |grad
+ *          F| combined so that the error terms below h^4 cancel.
+ *          Geier & Alihussein, "Computation of Implicit Representation of Volumetric Shells with
+ *          Predefined Thickness", Algorithms 14(4):125 (2021).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
  *   double neovius_o3_field(x, y, z)           F, the field; the surface is F = 0.
- *   double neovius_o3_offset(x, y, z, h)       phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ *   double neovius_o3_offset(x, y, z, h)       phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  *   double neovius_o3_shell(x, y, z, t)        phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  *   void neovius_o3_normal(x, y, z, h, n)      unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
  *   float neovius_o3_fieldf(x, y, z)           F, the field; the surface is F = 0.
- *   float neovius_o3_offsetf(x, y, z, h)       phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ *   float neovius_o3_offsetf(x, y, z, h)       phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  *   float neovius_o3_shellf(x, y, z, t)        phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  *   void neovius_o3_normalf(x, y, z, h, n)     unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
  *
  * Sign convention: neovius_o3_offset(p, h) = 0 is the surface moved a distance h along +grad F, so for
  *   h > 0 it lies on the side where F > 0. neovius_o3_shell(p, t) < 0 inside the solid wall of total
  *   thickness t centred on F = 0, and > 0 outside it.
- * Accuracy: the zero set of neovius_o3_offset lies within O(h^4) of the exact offset surface, so
- *   the relative thickness error falls as (h/L)^3 (order 4 on the gyroid: < 1e-6 at h = 0.01 L).
+ * Accuracy: the zero set of _offset lies within O(h^4) of the exact offset surface, so the relative
+ *   thickness error falls as (h/L)^3.
  *   Measure it for this file with: offsetgen check neovius_o3.h
- * Validity: |h| (and t/2) must stay small against the local radius of curvature of the surface; the
- *   method does not detect self-intersecting offsets (paper section 4.2).
+ * Validity: |h| (and t/2) must stay small against the local radius of curvature of the surface;
+ *   self-intersecting offsets are not detected (paper section 4.2).
  * Cell length L: phi_L(p, h) = neovius_o3_offset(p / L, h / L), exactly, at every order; likewise
  *   neovius_o3_shell(p / L, t / L). Nothing needs regenerating.
- * Variable thickness: pass the local t(p) to neovius_o3_shell (or use --thickness for a _graded
- *   function). The derivation assumes constant h, so a varying thickness is accurate to second
- *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
- *   high-order terms blow up. Here phi = F - h * G with G clamped to
- *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 7.0000069999999992 >= max |grad F|
- *   and H = 7.0000070000000001 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
- *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
- *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
- *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
- *   itself G = F / h lies inside the interval, so accuracy is untouched.
+ * Variable thickness: pass the local t(p) to _shell (or use --thickness for a _graded function).
+ *   The derivation assumes a constant h, so a varying thickness is accurate to second order at
+ *   best, whatever the order of this file.
+ * Safety: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h G with G clamped to [max(|grad F| - 1.5 H |h|, -M),
+ *   min(|grad F| + 0.5 H |h|, M)], where M = 7.0000069999999992 >= max |grad F| and H =
+ *   7.0000070000000001 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them too;
+ *   at order 1 only the M clamp). Every function returns a finite value for finite input (do not
+ *   compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| M, and |phi - (F - h
+ *   |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface itself G = F/h lies
+ *   inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    15
  *   offset   232
  *   shell    300
  *   normal   635
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o3","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":232,"shell":300,"normal":635}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o3","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":3,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":232,"shell":300,"normal":635}} */
 #ifndef OFFSETGEN_NEOVIUS_O3_H
 #define OFFSETGEN_NEOVIUS_O3_H
 
@@ -115,7 +116,7 @@ static inline double neovius_o3_field(double x, double y, double z)
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  * Total ops: 232
  */
 static inline double neovius_o3_offset(double x, double y, double z, double h)
@@ -505,7 +506,7 @@ static inline float neovius_o3_fieldf(float x, float y, float z)
     return _t0 * _t1 * _t2 * 4.0f + 3.0f * _t2 + _t0 * 3.0f + _t1 * 3.0f;
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  * Total ops: 232
  */
 static inline float neovius_o3_offsetf(float x, float y, float z, float h)
@@ -930,7 +931,7 @@ static inline float offsetgen_batch_cosf(float a)
 #endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
 
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  * Batch form of neovius_o3_offset: out[i] = neovius_o3_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
 static inline void neovius_o3_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
@@ -1120,7 +1121,7 @@ static inline void neovius_o3_shell_n(size_t n, const double *x, const double *y
     }
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  * Batch form of neovius_o3_offsetf: out[i] = neovius_o3_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
 static inline void neovius_o3_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)

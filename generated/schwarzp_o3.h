@@ -6,48 +6,49 @@
  *
  * Surface: F = cos(X) + cos(Y) + cos(Z)   with X = 2*pi*x, Y = 2*pi*y, Z = 2*pi*z
  * Source:  Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
- * Method:  Geier & Alihussein, "Computation of Implicit Representation of Volumetric Shells with
- *          Predefined Thickness", Algorithms 14(4):125 (2021): recursive first-order offsets combined
- *          by extended Richardson extrapolation of order 3.
+ * Method:  extended Richardson extrapolation of order 3: recursive first-order offsets F - h |grad
+ *          F| combined so that the error terms below h^4 cancel.
+ *          Geier & Alihussein, "Computation of Implicit Representation of Volumetric Shells with
+ *          Predefined Thickness", Algorithms 14(4):125 (2021).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
  *   double schwarzp_o3_field(x, y, z)          F, the field; the surface is F = 0.
- *   double schwarzp_o3_offset(x, y, z, h)      phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ *   double schwarzp_o3_offset(x, y, z, h)      phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  *   double schwarzp_o3_shell(x, y, z, t)       phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  *   void schwarzp_o3_normal(x, y, z, h, n)     unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
  *   float schwarzp_o3_fieldf(x, y, z)          F, the field; the surface is F = 0.
- *   float schwarzp_o3_offsetf(x, y, z, h)      phi^(m)(p, h): zero on the surface moved by h along +grad F.
+ *   float schwarzp_o3_offsetf(x, y, z, h)      phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  *   float schwarzp_o3_shellf(x, y, z, t)       phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  *   void schwarzp_o3_normalf(x, y, z, h, n)    unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
  *
  * Sign convention: schwarzp_o3_offset(p, h) = 0 is the surface moved a distance h along +grad F, so for
  *   h > 0 it lies on the side where F > 0. schwarzp_o3_shell(p, t) < 0 inside the solid wall of total
  *   thickness t centred on F = 0, and > 0 outside it.
- * Accuracy: the zero set of schwarzp_o3_offset lies within O(h^4) of the exact offset surface, so
- *   the relative thickness error falls as (h/L)^3 (order 4 on the gyroid: < 1e-6 at h = 0.01 L).
+ * Accuracy: the zero set of _offset lies within O(h^4) of the exact offset surface, so the relative
+ *   thickness error falls as (h/L)^3.
  *   Measure it for this file with: offsetgen check schwarzp_o3.h
- * Validity: |h| (and t/2) must stay small against the local radius of curvature of the surface; the
- *   method does not detect self-intersecting offsets (paper section 4.2).
+ * Validity: |h| (and t/2) must stay small against the local radius of curvature of the surface;
+ *   self-intersecting offsets are not detected (paper section 4.2).
  * Cell length L: phi_L(p, h) = schwarzp_o3_offset(p / L, h / L), exactly, at every order; likewise
  *   schwarzp_o3_shell(p / L, t / L). Nothing needs regenerating.
- * Variable thickness: pass the local t(p) to schwarzp_o3_shell (or use --thickness for a _graded
- *   function). The derivation assumes constant h, so a varying thickness is accurate to second
- *   order at best, whatever the order of this file.
- * Safeguard: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
- *   high-order terms blow up. Here phi = F - h * G with G clamped to
- *   [max(|grad F| - 1.5 H |h|, -M), min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F|
- *   and H = 1.0000010126065046 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them
- *   too; at order 1 only the M clamp). Every function returns a finite value for finite input (do
- *   not compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| * max|grad F|,
- *   and |phi - (F - h |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface
- *   itself G = F / h lies inside the interval, so accuracy is untouched.
+ * Variable thickness: pass the local t(p) to _shell (or use --thickness for a _graded function).
+ *   The derivation assumes a constant h, so a varying thickness is accurate to second order at
+ *   best, whatever the order of this file.
+ * Safety: where grad F vanishes the raw formulas divide by zero, and next to saddles of F the
+ *   high-order terms blow up. Here phi = F - h G with G clamped to [max(|grad F| - 1.5 H |h|, -M),
+ *   min(|grad F| + 0.5 H |h|, M)], where M = 1.7320525396196846 >= max |grad F| and H =
+ *   1.0000010126065046 >= max ||Hess F|| over the cell (2*pi/L scaled coordinates, h in them too;
+ *   at order 1 only the M clamp). Every function returns a finite value for finite input (do not
+ *   compile with -ffinite-math-only); phi has the sign of F wherever |F| > |h| M, and |phi - (F - h
+ *   |grad F|)| <= 1.5 H h^2, so no phantom walls appear. On the offset surface itself G = F/h lies
+ *   inside the interval, so accuracy is untouched.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
  *   offset   131
  *   shell    195
  *   normal   401
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"order":3,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":131,"shell":195,"normal":401}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":3,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":131,"shell":195,"normal":401}} */
 #ifndef OFFSETGEN_SCHWARZP_O3_H
 #define OFFSETGEN_SCHWARZP_O3_H
 
@@ -112,7 +113,7 @@ static inline double schwarzp_o3_field(double x, double y, double z)
     return offsetgen_cos(z * 6.2831853071795862) + offsetgen_cos(6.2831853071795862 * y) + offsetgen_cos(6.2831853071795862 * x);
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  * Total ops: 131
  */
 static inline double schwarzp_o3_offset(double x, double y, double z, double h)
@@ -391,7 +392,7 @@ static inline float schwarzp_o3_fieldf(float x, float y, float z)
     return offsetgen_cosf(z * 6.28318548f) + offsetgen_cosf(6.28318548f * y) + offsetgen_cosf(6.28318548f * x);
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  * Total ops: 131
  */
 static inline float schwarzp_o3_offsetf(float x, float y, float z, float h)
@@ -708,7 +709,7 @@ static inline float offsetgen_batch_cosf(float a)
 #endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
 
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  * Batch form of schwarzp_o3_offset: out[i] = schwarzp_o3_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
 static inline void schwarzp_o3_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
@@ -840,7 +841,7 @@ static inline void schwarzp_o3_shell_n(size_t n, const double *x, const double *
     }
 }
 
-/* phi^(m)(p, h): zero on the surface moved by h along +grad F.
+/* phi(p, h) of order 3: zero on the surface moved by h along +grad F.
  * Batch form of schwarzp_o3_offsetf: out[i] = schwarzp_o3_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
 static inline void schwarzp_o3_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)

@@ -51,8 +51,8 @@ struct CheckReport {
   std::vector<std::string> warnings;
   std::string surface_title;
   std::string toolchain;
-  CompileResult compile;                       // C files
-  std::vector<GlslCompileResult> glsl;         // GLSL files
+  CompileResult compile;                // C files
+  std::vector<GlslCompileResult> glsl;  // GLSL files
   std::optional<ValueReport> values;
   std::optional<ThicknessReport> thickness;
   bool thickness_float_only = false;

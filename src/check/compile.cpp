@@ -6,13 +6,13 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <chrono>
-#include <future>
 #include <cstdlib>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
+#include <future>
 
 namespace offsetgen::check {
 namespace {
@@ -26,7 +26,8 @@ class ScratchDir {
  public:
   ScratchDir() {
     std::string pattern = (fs::temp_directory_path() / "offsetgen-check-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
+    if (::mkdtemp(pattern.data()) == nullptr)
+      throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
     path_ = pattern;
   }
   ~ScratchDir() {
@@ -51,7 +52,8 @@ std::vector<std::string> first_found(const char* env, std::initializer_list<cons
       std::string exe = find_on_path(words[0]);
       if (exe.empty()) {
         if (required)
-          throw InputError(fmt::format("${} is set to '{}', but '{}' is not an executable on PATH", env, value, words[0]));
+          throw InputError(
+              fmt::format("${} is set to '{}', but '{}' is not an executable on PATH", env, value, words[0]));
         return {};
       }
       origin = std::string("$") + env;
@@ -68,9 +70,10 @@ std::vector<std::string> first_found(const char* env, std::initializer_list<cons
   if (required) {
     std::string tried;
     for (const char* name : names) tried += std::string(tried.empty() ? "" : ", ") + name;
-    throw InputError(fmt::format("no {} on PATH (looked for {}; set ${} to choose one). `offsetgen check` compiles "
-                                 "the header with the system compiler; install one with `apt-get install gcc`.",
-                                 what, tried, env));
+    throw InputError(
+        fmt::format("no {} on PATH (looked for {}; set ${} to choose one). `offsetgen check` compiles "
+                    "the header with the system compiler; install one with `apt-get install gcc`.",
+                    what, tried, env));
   }
   return {};
 }
@@ -121,8 +124,8 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
     s += fmt::format("{0} offsetgen_check_field{1}(const {0}* p);\n", t, fs);
     s += fmt::format("{0} offsetgen_check_field{1}(const {0}* p) {{ return {2}_field{1}({3}); }}\n", t, fs, p, args);
     s += fmt::format("{0} offsetgen_check_offset{1}(const {0}* p, {0} h);\n", t, fs);
-    s += fmt::format("{0} offsetgen_check_offset{1}(const {0}* p, {0} h) {{ return {2}_offset{1}({3}, h); }}\n", t, fs, p,
-                     args);
+    s += fmt::format("{0} offsetgen_check_offset{1}(const {0}* p, {0} h) {{ return {2}_offset{1}({3}, h); }}\n", t, fs,
+                     p, args);
     s += fmt::format("{0} offsetgen_check_shell{1}(const {0}* p, {0} t);\n", t, fs);
     s += fmt::format("{0} offsetgen_check_shell{1}(const {0}* p, {0} t) {{ return {2}_shell{1}({3}, t); }}\n", t, fs, p,
                      args);
@@ -131,7 +134,8 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
                      fs, p, args);
     if (meta.thickness) {
       s += fmt::format("{0} offsetgen_check_graded{1}(const {0}* p);\n", t, fs);
-      s += fmt::format("{0} offsetgen_check_graded{1}(const {0}* p) {{ return {2}_graded{1}({3}); }}\n", t, fs, p, args);
+      s +=
+          fmt::format("{0} offsetgen_check_graded{1}(const {0}* p) {{ return {2}_graded{1}({3}); }}\n", t, fs, p, args);
     }
     (void)suffix;
   };
@@ -164,10 +168,12 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
   // needs minutes while -O0 gives the same IEEE results (no -ffast-math, no contraction) in seconds.
   int largest = 0;
   for (const auto& [name, ops] : meta.ops) largest = std::max(largest, ops);
-  const std::string opt = !options.optimization.empty() ? options.optimization : (largest > kLargeFunctionOps ? "-O0" : "-O2");
+  const std::string opt =
+      !options.optimization.empty() ? options.optimization : (largest > kLargeFunctionOps ? "-O0" : "-O2");
   result.optimization = opt;
   if (opt == "-O0" && options.optimization.empty())
-    result.note = fmt::format("built at -O0: the largest function has {} ops (gcc -O2 takes minutes at this size)", largest);
+    result.note =
+        fmt::format("built at -O0: the largest function has {} ops (gcc -O2 takes minutes at this size)", largest);
 
   // 1. Strict C99; this step also builds the shared object that gets loaded. 2. Strict C++17
   // (compiled, not linked). The two run in parallel.
@@ -190,8 +196,8 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
     std::vector<std::string> cxx = tools.cxx;
     cxx.insert(cxx.end(), {"-std=c++17"});
     cxx.insert(cxx.end(), std::begin(kStrictWarnings), std::end(kStrictWarnings));
-    cxx.insert(cxx.end(), {opt, "-I" + include_dir, "-I" + scratch.path().string(), "-x", "c++", "-c",
-                           source.string(), "-o", (scratch.path() / "cxx17.o").string()});
+    cxx.insert(cxx.end(), {opt, "-I" + include_dir, "-I" + scratch.path().string(), "-x", "c++", "-c", source.string(),
+                           "-o", (scratch.path() / "cxx17.o").string()});
     cxx_step = run_step("C++17 strict", cxx);
   }
   result.steps.push_back(c_step.get());

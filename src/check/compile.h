@@ -26,8 +26,8 @@ struct CompileStep {
   std::string name;                  // "C99 strict", "C++17 strict", "shared object", "dlopen"
   std::vector<std::string> command;  // empty for dlopen
   bool ok = false;
-  bool skipped = false;              // e.g. no C++ compiler
-  std::string output;                // compiler output, verbatim
+  bool skipped = false;  // e.g. no C++ compiler
+  std::string output;    // compiler output, verbatim
   double seconds = 0;
 };
 
@@ -65,8 +65,8 @@ constexpr int kLargeFunctionOps = 5000;
 
 struct CompileResult {
   std::vector<CompileStep> steps;
-  std::string optimization;  // "-O2" or "-O0"
-  std::string note;          // why -O0, when it is
+  std::string optimization;                // "-O2" or "-O0"
+  std::string note;                        // why -O0, when it is
   bool ok = false;                         // every step that ran succeeded and the code is loaded
   std::unique_ptr<LoadedLibrary> library;  // set when ok
 };

@@ -1,8 +1,8 @@
 #include "check/convergence.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <numeric>
 #include <utility>
 
@@ -49,7 +49,8 @@ OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& erro
   std::vector<std::pair<double, double>> chosen;
   for (const auto& p : usable)
     if (p.first <= split * (1 + 1e-12)) chosen.push_back(p);
-  if (chosen.size() < 3) chosen.assign(usable.begin(), usable.begin() + static_cast<long>(std::min<size_t>(3, usable.size())));
+  if (chosen.size() < 3)
+    chosen.assign(usable.begin(), usable.begin() + static_cast<long>(std::min<size_t>(3, usable.size())));
   std::vector<double> xs, ys;
   for (const auto& [x, y] : chosen) {
     xs.push_back(x);

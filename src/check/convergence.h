@@ -16,7 +16,7 @@ struct OrderFit {
   double slope = 0;
   double h_min = 0, h_max = 0;  // range of h actually used
   int points = 0;
-  std::string note;             // why not fitted, or what was left out
+  std::string note;  // why not fitted, or what was left out
 };
 
 // Points with h <= sqrt(min h * max h) ("the small-h half", on a log scale) and error above the floor;

@@ -5,12 +5,12 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
-#include <unistd.h>
 
 namespace offsetgen::check {
 namespace {
@@ -19,10 +19,14 @@ namespace fs = std::filesystem;
 
 std::string prologue(GlslTarget t) {
   switch (t) {
-    case GlslTarget::Es300: return "#version 300 es\nprecision highp float;\nprecision highp int;\nout highp vec4 o_color;\n";
-    case GlslTarget::Gl330: return "#version 330 core\nout vec4 o_color;\n";
-    case GlslTarget::Gl450: return "#version 450 core\nout vec4 o_color;\n";
-    case GlslTarget::Vulkan: return "#version 450\nlayout(location = 0) out vec4 o_color;\n";
+    case GlslTarget::Es300:
+      return "#version 300 es\nprecision highp float;\nprecision highp int;\nout highp vec4 o_color;\n";
+    case GlslTarget::Gl330:
+      return "#version 330 core\nout vec4 o_color;\n";
+    case GlslTarget::Gl450:
+      return "#version 450 core\nout vec4 o_color;\n";
+    case GlslTarget::Vulkan:
+      return "#version 450\nlayout(location = 0) out vec4 o_color;\n";
   }
   return "";
 }
@@ -55,10 +59,14 @@ std::string annotate(const std::string& log, int first, int snippet_lines, const
 
 std::string glsl_target_name(GlslTarget t) {
   switch (t) {
-    case GlslTarget::Es300: return "GLSL ES 3.00 (WebGL2)";
-    case GlslTarget::Gl330: return "GLSL 3.30 core";
-    case GlslTarget::Gl450: return "GLSL 4.50 core";
-    case GlslTarget::Vulkan: return "Vulkan GLSL 450 -> SPIR-V";
+    case GlslTarget::Es300:
+      return "GLSL ES 3.00 (WebGL2)";
+    case GlslTarget::Gl330:
+      return "GLSL 3.30 core";
+    case GlslTarget::Gl450:
+      return "GLSL 4.50 core";
+    case GlslTarget::Vulkan:
+      return "Vulkan GLSL 450 -> SPIR-V";
   }
   return "?";
 }
@@ -87,8 +95,9 @@ std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const Fi
                                             const std::string& display_name) {
   const std::string validator = find_on_path("glslangValidator");
   if (validator.empty())
-    throw InputError("glslangValidator is not on PATH: `offsetgen check` compiles GLSL snippets with it "
-                     "(Debian: apt-get install glslang-tools)");
+    throw InputError(
+        "glslangValidator is not on PATH: `offsetgen check` compiles GLSL snippets with it "
+        "(Debian: apt-get install glslang-tools)");
   std::string dir_pattern = (fs::temp_directory_path() / "offsetgen-glsl-XXXXXX").string();
   if (::mkdtemp(dir_pattern.data()) == nullptr) throw std::runtime_error("cannot create a scratch directory");
   const fs::path dir = dir_pattern;

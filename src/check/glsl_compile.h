@@ -14,10 +14,10 @@ enum class GlslTarget { Es300, Gl330, Gl450, Vulkan };
 
 struct GlslCompileResult {
   GlslTarget target{};
-  std::string name;           // "GLSL ES 3.00 (fragment)"
+  std::string name;  // "GLSL ES 3.00 (fragment)"
   std::vector<std::string> command;
   bool ok = false;
-  std::string output;         // glslangValidator's log, verbatim, then "snippet line N: ..." notes
+  std::string output;  // glslangValidator's log, verbatim, then "snippet line N: ..." notes
 };
 
 std::string glsl_target_name(GlslTarget target);

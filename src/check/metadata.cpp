@@ -17,8 +17,10 @@ constexpr const char* kMarker = "offsetgen-metadata";
 constexpr int kMaxSupportedOrder = 64;
 
 [[noreturn]] void damaged(const std::string& what) {
-  throw InputError(fmt::format("the offsetgen-metadata block is damaged: {}. Regenerate the file with "
-                               "`offsetgen generate` (the command is in its banner).", what));
+  throw InputError(
+      fmt::format("the offsetgen-metadata block is damaged: {}. Regenerate the file with "
+                  "`offsetgen generate` (the command is in its banner).",
+                  what));
 }
 
 using json = nlohmann::json;
@@ -110,9 +112,10 @@ FileMetadata parse_metadata(const std::string& text, FileKind kind) {
 
   m.format = int_field(j, "format", 0, 1000);
   if (m.format != 1)
-    throw InputError(fmt::format("the offsetgen-metadata block has format {}, but this offsetgen reads format 1; "
-                                 "use the offsetgen version that wrote the file",
-                                 m.format));
+    throw InputError(
+        fmt::format("the offsetgen-metadata block has format {}, but this offsetgen reads format 1; "
+                    "use the offsetgen version that wrote the file",
+                    m.format));
   m.generator = string_field(j, "generator");
   if (m.generator.rfind("offsetgen", 0) != 0) damaged("field \"generator\" does not name offsetgen");
   m.prefix = string_field(j, "prefix");
@@ -130,7 +133,10 @@ FileMetadata parse_metadata(const std::string& text, FileKind kind) {
   }
   m.scale = positive_number_field(j, "scale");
   m.dims = int_field(j, "dims", 2, 3);
+  // Files from before the method choice were all made by the paper's construction.
+  m.method = optional_string_field(j, "method").value_or("richardson");
   m.order = int_field(j, "order", 1, kMaxSupportedOrder);
+  if (auto graded = j.find("graded_order"); graded != j.end()) m.graded_order = int_field(j, "graded_order", 1, 64);
   m.thickness = optional_string_field(j, "thickness");
   const json& precisions = field(j, "precisions");
   if (!precisions.is_array() || precisions.empty()) damaged("field \"precisions\" must be a non-empty list");

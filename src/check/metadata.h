@@ -22,13 +22,15 @@ struct FileMetadata {
   std::map<std::string, std::string> params;  // --param values
   double scale = 1;                           // k of X = k x
   int dims = 3;
-  int order = 1;
-  std::optional<std::string> thickness;       // --thickness (total wall thickness), if any
-  bool has_double = true;                     // C precisions present
+  std::string method = "richardson";     // the offset method (offset/method.h registry)
+  int order = 1;                         // the order the file was built with
+  int graded_order = 0;                  // order of its graded walls; 0 when not recorded
+  std::optional<std::string> thickness;  // --thickness (total wall thickness), if any
+  bool has_double = true;                // C precisions present
   bool has_float = false;
-  double gradient_bound = 0;                  // the safeguard's M (natural units)
-  std::map<std::string, int> ops;             // per function, when present
-  std::string json;                           // the block's JSON text as found
+  double gradient_bound = 0;       // the safeguard's M (natural units)
+  std::map<std::string, int> ops;  // per function, when present
+  std::string json;                // the block's JSON text as found
 };
 
 // Parses the metadata out of a file's text. Throws offsetgen::InputError saying that the file was

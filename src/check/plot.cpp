@@ -51,8 +51,9 @@ std::string find_python() {
 
 void render_plot(const nlohmann::json& spec, const std::string& png, const std::string& script) {
   if (script.empty())
-    throw InputError("--plot: tools/plot_convergence.py not found (looked at --plot-script, $OFFSETGEN_PLOT_SCRIPT, "
-                     "<prefix>/share/offsetgen/tools and the source tree); pass its path with --plot-script");
+    throw InputError(
+        "--plot: tools/plot_convergence.py not found (looked at --plot-script, $OFFSETGEN_PLOT_SCRIPT, "
+        "<prefix>/share/offsetgen/tools and the source tree); pass its path with --plot-script");
   const std::string python = find_python();
   if (python.empty()) throw InputError("--plot: no python3 found (Debian: apt-get install python3-matplotlib)");
   std::string pattern = (fs::temp_directory_path() / "offsetgen-plot-XXXXXX.json").string();

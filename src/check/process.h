@@ -7,9 +7,9 @@
 namespace offsetgen::check {
 
 struct ProcessResult {
-  bool started = false;   // false when the program could not be executed at all
-  int exit_code = -1;     // exit status, or 128 + signal number
-  std::string output;     // stdout and stderr together, verbatim
+  bool started = false;  // false when the program could not be executed at all
+  int exit_code = -1;    // exit status, or 128 + signal number
+  std::string output;    // stdout and stderr together, verbatim
 };
 
 // Runs argv[0] (looked up on PATH when it has no '/') with the given arguments and waits.

@@ -1,9 +1,9 @@
 #include "check/reference.h"
 
-#include "surfaces/expression_syntax.h"
 #include "lowering/lower.h"
 #include "offset/atom_table.h"
 #include "surfaces/expression_input.h"
+#include "surfaces/expression_syntax.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -24,16 +24,15 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
   if (meta.expression) request.expression = *meta.expression;
   request.params = meta.params;
   request.order = meta.order;
+  request.method = meta.method;
   request.thickness = meta.thickness;
-  request.c = true;
-  request.glsl = false;
   const std::string default_prefix = meta.surface ? fmt::format("{}_o{}", *meta.surface, meta.order) : "";
   if (meta.expression || meta.prefix != default_prefix) request.name = meta.prefix;
   if (meta.expression && meta.prefix.empty()) request.name = "surface";
 
   auto ref = std::make_unique<Reference>();
   try {
-    ref->generation = generate(request);
+    ref->generation = build_generation(request);
   } catch (const InputError& e) {
     throw InputError(fmt::format("the file's metadata cannot be rebuilt by this offsetgen: {}", e.what()));
   }
@@ -43,24 +42,31 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
                                  meta.dims, g.surface.dims));
   const double scale = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(g.surface.scale)).to_double();
   if (!close(scale, meta.scale, 1e-15))
-    throw InputError(fmt::format("the metadata block is inconsistent: scale {} but the surface has k = {}", meta.scale,
-                                 scale));
-  if (!close(g.programs.gradient_bound, meta.gradient_bound, 1e-12))
-    ref->warnings.push_back(fmt::format("gradient bound differs: file M = {:.17g}, regenerated M = {:.17g}; the file's "
-                                        "M is used as the reference's clamp",
-                                        meta.gradient_bound, g.programs.gradient_bound));
+    throw InputError(
+        fmt::format("the metadata block is inconsistent: scale {} but the surface has k = {}", meta.scale, scale));
+  if (g.order() != meta.order)
+    throw InputError(
+        fmt::format("the metadata block is inconsistent: order {} but the {} method builds order {} "
+                    "for it",
+                    meta.order, meta.method, g.order()));
+  if (!close(g.construction->bounds().gradient, meta.gradient_bound, 1e-12))
+    ref->warnings.push_back(
+        fmt::format("gradient bound differs: file M = {:.17g}, regenerated M = {:.17g}; the "
+                    "regenerated model is the reference",
+                    meta.gradient_bound, g.construction->bounds().gradient));
   if (!meta.generator.empty() && meta.generator != std::string("offsetgen ") + OFFSETGEN_VERSION)
-    ref->warnings.push_back(fmt::format("the file was written by {}, this is offsetgen {}", meta.generator,
-                                        OFFSETGEN_VERSION));
+    ref->warnings.push_back(
+        fmt::format("the file was written by {}, this is offsetgen {}", meta.generator, OFFSETGEN_VERSION));
   if (!meta.ops.empty()) {
     nlohmann::json regenerated = nlohmann::json::parse(g.metadata_json);
     if (auto it = regenerated.find("ops"); it != regenerated.end()) {
       for (const auto& [name, count] : meta.ops) {
         auto r = it->find(name);
         if (r != it->end() && r->is_number_integer() && r->get<int>() != count) {
-          ref->warnings.push_back(fmt::format("op counts differ from a fresh generation ({}: file {}, now {}): the file "
-                                              "was made by another version or edited by hand",
-                                              name, count, r->get<int>()));
+          ref->warnings.push_back(
+              fmt::format("op counts differ from a fresh generation ({}: file {}, now {}): the file "
+                          "was made by another version or edited by hand",
+                          name, count, r->get<int>()));
           break;
         }
       }

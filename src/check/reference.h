@@ -3,8 +3,8 @@
 #pragma once
 
 #include "check/metadata.h"
-#include "emit/generate.h"
 #include "lowering/program.h"
+#include "pipeline/generate.h"
 
 #include <ginac/ginac.h>
 

@@ -221,7 +221,8 @@ GradedRow measure_graded_row(const Probe& probe, ThicknessFunction& thickness, c
   row.lambda = lambda;
   row.compiled_graded = compiled;
   auto h_at = [&](const double* q) { return 0.5 * lambda * thickness(q); };
-  auto wall = [&](double sign) {
+  auto wall = [&](double sign) -> std::function<double(const double*)> {
+    if (probe.graded_wall) return [&, sign](const double* q) { return probe.graded_wall(q, sign * lambda); };
     return [&, sign](const double* q) { return probe.offset(q, sign * h_at(q)); };
   };
   const auto w_plus = wall(+1), w_minus = wall(-1);
@@ -336,8 +337,8 @@ GradedReport measure_graded(const Probe& probe, ThicknessFunction& thickness, co
     out.rows.push_back(row);
   }
   report(options, "graded: as given");
-  GradedRow given = measure_graded_row(probe, thickness, on_f, normals, 1.0, use_compiled_graded && probe.graded != nullptr,
-                                       options);
+  GradedRow given =
+      measure_graded_row(probe, thickness, on_f, normals, 1.0, use_compiled_graded && probe.graded != nullptr, options);
   given.as_given = true;
   given.h_max = peak / 2;
   out.rows.push_back(given);

@@ -30,6 +30,10 @@ struct Probe {
   std::function<double(const double*, double)> shell;
   std::function<void(const double*, double, double*)> normal;
   std::function<double(const double*)> graded;  // empty when the file has none
+  // One graded wall with the half thickness s t(.)/2 read where the method reads it (s = +-lambda):
+  // an in-process evaluation of the same lowered construction as _graded, for the thickness sweep.
+  // Empty: the wall is phi(q, s t(q)/2), the thickness read at q.
+  std::function<double(const double*, double)> graded_wall;
 };
 Probe make_probe(const LoadedFunctions& functions);
 
@@ -46,26 +50,26 @@ std::optional<double> ray_crossing(const std::function<double(const double*)>& g
 // Relative errors over all rays of one measurement. Rays without a crossing are counted in `missed`
 // and listed (first few) in `missed_at`; they are never dropped silently.
 struct ErrorStats {
-  int rays = 0;       // rays shot (points used)
-  int crossed = 0;    // rays that found the other surface (mean and max are over these)
-  int missed = 0;     // rays without a crossing within reach (or with a zero normal)
-  int skipped = 0;    // points not used at all, with the reason in `skipped_reason` (e.g. target <= 0)
+  int rays = 0;     // rays shot (points used)
+  int crossed = 0;  // rays that found the other surface (mean and max are over these)
+  int missed = 0;   // rays without a crossing within reach (or with a zero normal)
+  int skipped = 0;  // points not used at all, with the reason in `skipped_reason` (e.g. target <= 0)
   std::string skipped_reason;
   double mean = NAN;
   double max = NAN;
-  Point worst{};      // the sample point with the largest error
+  Point worst{};  // the sample point with the largest error
   std::vector<Point> missed_at;
-  double sum = 0;     // running sum, for `mean`
+  double sum = 0;  // running sum, for `mean`
   void add(double relative_error, const Point& where);
   void miss(const Point& where);
   void finish();
 };
 
 struct SweepRow {
-  double h = 0;            // offset distance (cell units); the shell uses t = 2h
-  ErrorStats f_to_phi;     // rays from F = 0 along grad F to phi(., h) = 0, vs h
-  ErrorStats phi_to_f;     // rays from phi(., h) = 0 along grad phi to F = 0, vs h
-  ErrorStats shell;        // rays from F = 0 both ways to the walls of Phi(., 2h) = 0: total vs t = 2h
+  double h = 0;         // offset distance (cell units); the shell uses t = 2h
+  ErrorStats f_to_phi;  // rays from F = 0 along grad F to phi(., h) = 0, vs h
+  ErrorStats phi_to_f;  // rays from phi(., h) = 0 along grad phi to F = 0, vs h
+  ErrorStats shell;     // rays from F = 0 both ways to the walls of Phi(., 2h) = 0: total vs t = 2h
 };
 
 // Graded wall t(x) (total thickness), h(x) = t(x) / 2, walls W+- = phi(x, +-h(x)) = 0:
@@ -76,9 +80,9 @@ struct SweepRow {
 //  paper:     the paper's Figure 8: rays from points q on W+- = 0 along grad W+- (the wall's own
 //             normal, through the chain rule including grad h) back to F = 0, vs h(q). Second order.
 struct GradedRow {
-  double h_max = 0;    // max over the cell of h(x) = lambda t(x) / 2
-  double lambda = 1;   // scale applied to the thickness expression
-  bool as_given = false;  // lambda = 1: the expression exactly as given
+  double h_max = 0;              // max over the cell of h(x) = lambda t(x) / 2
+  double lambda = 1;             // scale applied to the thickness expression
+  bool as_given = false;         // lambda = 1: the expression exactly as given
   bool compiled_graded = false;  // `total` measured on the compiled _graded function
   ErrorStats total, one_sided, paper;
 };
@@ -101,8 +105,11 @@ struct ThicknessReport {
 ThicknessReport measure_constant(const Probe& probe, const ThicknessOptions& options);
 
 struct GradedReport {
-  std::string expression;   // total thickness t(x), cell units
-  double t_peak = 0;        // max t over the cell
+  std::string expression;  // total thickness t(x), cell units
+  // The orders the file's method promises for the three measures (MethodFacts), and what it reads.
+  int expected_total = 2, expected_one_sided = 1, expected_paper = 2;
+  std::string method_reads;     // where the method reads the thickness, for the report
+  double t_peak = 0;            // max t over the cell
   std::vector<GradedRow> rows;  // the sweep (scaled), then the as-given row
   OrderFit fit_total, fit_one_sided, fit_paper;
 };

@@ -1,6 +1,6 @@
 #include "check/value_check.h"
 
-#include "offset/high_precision.h"
+#include "offset/offset_reference.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,7 +55,7 @@ GiNaC::numeric exact(double value) {
 ValueReport check_values(const LoadedFunctions& f, const Reference& reference, const FileMetadata& meta,
                          const std::optional<GiNaC::ex>& thickness, const ValueCheckOptions& options) {
   const Generation& g = reference.generation;
-  HighPrecisionEvaluator hp(g.surface, g.model, {meta.gradient_bound, g.programs.hessian_bound}, options.digits);
+  OffsetReference hp(g.surface, *g.construction, options.digits);
   const int dims = meta.dims;
   std::mt19937_64 rng(options.seed);
   std::uniform_real_distribution<double> coordinate(0.0, 1.0);
@@ -75,7 +75,6 @@ ValueReport check_values(const LoadedFunctions& f, const Reference& reference, c
   std::vector<double> p(static_cast<size_t>(dims));
   std::vector<float> pf(static_cast<size_t>(dims));
   std::vector<GiNaC::numeric> x(static_cast<size_t>(dims));
-  const GiNaC::numeric fd_step = GiNaC::numeric(1, 1000000000000L);  // 1e-12: O(1e-24) truncation at 40 digits
 
   const int points = options.points > 0 ? options.points : default_value_points(meta.order);
   const int stride = std::max(1, options.normal_stride);
@@ -109,22 +108,15 @@ ValueReport check_values(const LoadedFunctions& f, const Reference& reference, c
     if (f.offset) offset.add(std::fabs(f.offset(p.data(), h) - phi) / grad_norm, where);
     if (f.offsetf) offsetf.add(std::fabs(double(f.offsetf(pf.data(), static_cast<float>(h))) - phi) / grad_norm, where);
 
-    // the unit normal of phi(., h): 40-digit central differences
+    // the unit normal, from the method's own reference
     if ((f.normal || f.normalf) && i % stride == 0) {
-      std::vector<double> n_ref(static_cast<size_t>(dims));
+      std::vector<double> n_ref;
       double len2 = 0;
-      for (int k = 0; k < dims; ++k) {
-        auto xp = x, xm = x;
-        xp[static_cast<size_t>(k)] += fd_step;
-        xm[static_cast<size_t>(k)] -= fd_step;
-        DigitsScope digits(options.digits);
-        const GiNaC::numeric d = (hp.offset(xp, hn) - hp.offset(xm, hn)) / (2 * fd_step);
-        n_ref[static_cast<size_t>(k)] = dbl(d);
-        len2 += n_ref[static_cast<size_t>(k)] * n_ref[static_cast<size_t>(k)];
+      for (const auto& c : hp.normal(x, hn)) {
+        n_ref.push_back(dbl(c));
+        len2 += n_ref.back() * n_ref.back();
       }
-      const double len = std::sqrt(len2);
-      if (len > 0) {
-        for (auto& c : n_ref) c /= len;
+      if (len2 > 0) {
         if (f.normal) {
           std::vector<double> n(static_cast<size_t>(dims));
           f.normal(p.data(), h, n.data());
@@ -158,8 +150,9 @@ ValueReport check_values(const LoadedFunctions& f, const Reference& reference, c
         for (int k = 0; k < dims; ++k) subs[Symbols::get().cell(k)] = x[static_cast<size_t>(k)];
         tx = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(thickness->subs(subs)));
       }
+      // The scale of the shell's rounding: phi at +-t(p)/2 (the graded walls read t where the method does).
       const GiNaC::numeric gp = hp.offset(x, tx / 2), gm = hp.offset(x, -tx / 2);
-      const double G = dbl(gp * gm);
+      const double G = dbl(hp.graded(x, *thickness));
       const double gscale = grad_norm * (std::fabs(dbl(gp)) + std::fabs(dbl(gm)));
       where.back() = dbl(tx);
       if (f.graded) graded.add(std::fabs(f.graded(p.data()) - G) / gscale, where);

@@ -25,20 +25,20 @@ struct ValueCheckOptions {
 };
 
 struct FunctionDeviation {
-  std::string function;         // "offset", "shellf", ...
+  std::string function;  // "offset", "shellf", ...
   bool is_float = false;
   int points = 0;
-  double max_shift = 0;         // max |delta| / |grad| (cell units); for the normal: max |delta n|
+  double max_shift = 0;  // max |delta| / |grad| (cell units); for the normal: max |delta n|
   double mean_shift = 0;
   std::vector<double> worst_point;  // where max_shift occurs (cell units), then h or t when used
-  std::string measure;          // how the shift is defined, for the report
+  std::string measure;              // how the shift is defined, for the report
 };
 
 struct ValueReport {
   std::vector<FunctionDeviation> functions;
   double max_shift_double = 0;  // over field, offset, shell, graded (double)
   double max_normal_double = 0;
-  double max_shift_float = 0;   // informational: float32 cannot meet 1e-12
+  double max_shift_float = 0;  // informational: float32 cannot meet 1e-12
   double tolerance = 0;
   int digits = 40;
   bool has_double = true;  // false for float-only files: nothing is judged

@@ -20,7 +20,8 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
       "Check an emitted file: compile it (C99 strict, C++17, dlopen), compare its values with a 40-digit\n"
       "evaluation, and measure the wall thickness it produces (paper section 5.2.1). GLSL: glslang compile.");
   cmd->add_option("file", o.file, "Header (.h) or GLSL snippet (.glsl) written by `offsetgen generate`")->required();
-  cmd->add_option("--h", o.h_list, "Offsets to measure, comma-separated, cell units (default 0.001..0.1, 9 log-spaced)");
+  cmd->add_option("--h", o.h_list,
+                  "Offsets to measure, comma-separated, cell units (default 0.001..0.1, 9 log-spaced)");
   cmd->add_option("--json", o.json_path, "Write every number to this JSON file");
   cmd->add_option("--plot", o.plot_path, "Write a log-log convergence figure (PNG) via tools/plot_convergence.py");
   cmd->add_option("--plot-script", o.plot_script,
@@ -31,8 +32,10 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
   cmd->add_option("-p,--param", o.params, "NAME=VALUE for the thickness expression (repeatable)");
   cmd->add_option("--grid", o.grid, "Sample grid points per axis on [0, 1] (21: step 0.05 as in the paper)")
       ->check(CLI::Range(2, 401));
-  cmd->add_option("--scan", o.scan, "Bracketing sub-intervals along z when sampling a surface")->check(CLI::Range(4, 100000));
-  cmd->add_option("--points", o.points, "Random points of the 40-digit value check (default 200; 60 at orders 5-6, 16 above)")
+  cmd->add_option("--scan", o.scan, "Bracketing sub-intervals along z when sampling a surface")
+      ->check(CLI::Range(4, 100000));
+  cmd->add_option("--points", o.points,
+                  "Random points of the 40-digit value check (default 200; 60 at orders 5-6, 16 above)")
       ->check(CLI::Range(0, 1000000));
   cmd->add_option("--seed", o.seed, "Seed of the random points");
   cmd->add_option("--tolerance", o.tolerance, "Max zero-set shift of the value check (cell units)");
@@ -67,9 +70,10 @@ int run_check(const CheckOptions& o) {
   if (!s.plot_path.empty()) {
     script = check::find_plot_script(s.plot_script);
     if (script.empty())
-      throw InputError(fmt::format("--plot: plot_convergence.py not found{}; pass --plot-script PATH or set "
-                                   "$OFFSETGEN_PLOT_SCRIPT",
-                                   s.plot_script.empty() ? "" : " at " + s.plot_script));
+      throw InputError(
+          fmt::format("--plot: plot_convergence.py not found{}; pass --plot-script PATH or set "
+                      "$OFFSETGEN_PLOT_SCRIPT",
+                      s.plot_script.empty() ? "" : " at " + s.plot_script));
   }
 
   check::CheckReport report = check::run_checks(s);

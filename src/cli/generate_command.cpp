@@ -3,7 +3,7 @@
 #include "cli/command_line.h"
 #include "emit/emitted_api.h"
 #include "emit/file_writer.h"
-#include "emit/generate.h"
+#include "pipeline/generate.h"
 #include "surfaces/expression_input.h"
 
 #include <fmt/format.h>
@@ -20,19 +20,29 @@ namespace fs = std::filesystem;
 void add_generate_command(CLI::App& app, GenerateOptions& o) {
   auto* cmd = app.add_subcommand("generate", "Generate offset functions as a C header and/or GLSL snippet");
   cmd->add_option("-s,--surface", o.surface, "Catalog surface (see `offsetgen list`)");
-  cmd->add_option("-e,--expr", o.expression, "Your own F(x, y[, z]) in cell units, e.g. \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\"");
+  cmd->add_option("-e,--expr", o.expression,
+                  "Your own F(x, y[, z]) in cell units, e.g. \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\"");
   cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
   cmd->add_option("-n,--name", o.name, "Function prefix (default <surface>_o<order>; required with --expr)");
-  cmd->add_option("-m,--order", o.order, "Approximation order m (1-" + std::to_string(kMaxOrder) + ")")
+  std::string methods, orders;
+  for (const OffsetMethod* m : offset_methods()) {
+    methods += fmt::format("\n  {}: {}", m->name(), m->description());
+    orders += fmt::format("{}{} 1-{}", orders.empty() ? "" : ", ", m->name(), m->max_order());
+  }
+  cmd->add_option("-M,--method", o.method,
+                  "Offset construction (default " + std::string(kDefaultMethod) + "):" + methods)
       ->capture_default_str();
+  cmd->add_option("-m,--order", o.order, "Approximation order m (" + orders + ")")->capture_default_str();
   cmd->add_option("-l,--lang", o.lang, "Output language: c, glsl or all")
       ->check(CLI::IsMember({"c", "glsl", "all"}))
       ->capture_default_str();
   cmd->add_option("--precision", o.precision, "C precision: double, float (f-suffixed names) or both")
       ->check(CLI::IsMember({"double", "float", "both"}))
       ->capture_default_str();
-  cmd->add_option("-t,--thickness", o.thickness, "Graded wall: total thickness t(x, y, z) in cell units; adds <prefix>_graded");
-  cmd->add_option("-o,--output", o.output, "Output file (with --lang all: the .h; the .glsl goes beside it); - for stdout");
+  cmd->add_option("-t,--thickness", o.thickness,
+                  "Graded wall: total thickness t(x, y, z) in cell units; adds <prefix>_graded");
+  cmd->add_option("-o,--output", o.output,
+                  "Output file (with --lang all: the .h; the .glsl goes beside it); - for stdout");
   cmd->add_option("--out-dir", o.out_dir, "Directory for <prefix>.h / <prefix>.glsl when -o is not given");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
 }
@@ -52,6 +62,7 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   request.expression = o.expression;
   request.name = o.name;
   request.order = o.order;
+  request.method = o.method;
   request.c = o.lang == "c" || o.lang == "all";
   request.glsl = o.lang == "glsl" || o.lang == "all";
   if (o.precision == "double") request.precisions = {Precision::Double};
@@ -69,7 +80,7 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
 
   // Resolve the prefix first: default file names depend on it.
   std::string prefix = o.name;
-  if (prefix.empty()) prefix = fmt::format("{}_o{}", resolve_surface(request).name, o.order);
+  if (prefix.empty()) prefix = default_prefix(request);
   const std::string dir = o.out_dir.empty() ? "" : o.out_dir;
   std::string c_path, glsl_path;
   if (request.c) c_path = !o.output.empty() ? o.output : (fs::path(dir) / (prefix + ".h")).string();
@@ -106,10 +117,16 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   if (!o.quiet && o.output != "-") {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::string ops;
-    for (const auto& f : emitted_functions(g.programs, g.surface.dims))
+    for (const auto& f : emitted_functions(g.programs, g.surface.dims, g.method()))
       ops += fmt::format("{}{} {}", ops.empty() ? "" : ", ", f.suffix, count_ops(*f.program));
-    fmt::print("offsetgen: {} — {}, order {}, {}D, max|grad F| = {:.6g} (natural units)\n", fmt::join(report, "; "),
-               g.surface.title, o.order, g.surface.dims, g.programs.gradient_bound);
+    const MethodFacts& method = g.method();
+    const std::string rounded =
+        method.order != method.requested_order
+            ? fmt::format(" (order {} rounded up: {} builds even orders)", method.requested_order, method.method)
+            : "";
+    fmt::print("offsetgen: {} — {}, {} order {}{}, {}D, max|grad F| = {:.6g} (natural units)\n",
+               fmt::join(report, "; "), g.surface.title, method.method, method.order, rounded, g.surface.dims,
+               g.construction->bounds().gradient);
     fmt::print("offsetgen: ops after CSE: {}; generated in {:.1f} ms\n", ops, ms);
   }
   return kExitOk;

@@ -1,6 +1,8 @@
 // `offsetgen generate`: options and the run.
 #pragma once
 
+#include "offset/method.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -13,6 +15,7 @@ struct GenerateOptions {
   std::vector<std::string> params;
   std::string thickness;
   int order = 4;
+  std::string method = kDefaultMethod;
   bool quiet = false;
 };
 

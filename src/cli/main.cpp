@@ -7,9 +7,9 @@
 #endif
 #include "surfaces/surface.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <ginac/ginac.h>
+#include <CLI/CLI.hpp>
 
 #include <exception>
 #include <string>
@@ -19,16 +19,18 @@ int main(int argc, char** argv) {
   using namespace offsetgen;
   std::vector<std::string> args(argv, argv + argc);
 
-  CLI::App app{"offsetgen: turns an implicit surface F = 0 (e.g. a TPMS such as the gyroid) into closed-form\n"
-               "offset functions phi^(m)(x, h) of any order, emitted as C headers and GLSL snippets.\n"
-               "Method: Geier & Alihussein, Algorithms 14(4):125 (2021).",
-               "offsetgen"};
-  app.set_version_flag("-V,--version", fmt::format("offsetgen {} (GiNaC {}.{}.{}, CLN)", OFFSETGEN_VERSION,
-                                                   GINACLIB_MAJOR_VERSION, GINACLIB_MINOR_VERSION,
-                                                   GINACLIB_MICRO_VERSION));
+  CLI::App app{
+      "offsetgen: turns an implicit surface F = 0 (e.g. a TPMS such as the gyroid) into closed-form\n"
+      "offset functions phi^(m)(x, h) of any order, emitted as C headers and GLSL snippets.\n"
+      "Method: Geier & Alihussein, Algorithms 14(4):125 (2021).",
+      "offsetgen"};
+  app.set_version_flag("-V,--version",
+                       fmt::format("offsetgen {} (GiNaC {}.{}.{}, CLN)", OFFSETGEN_VERSION, GINACLIB_MAJOR_VERSION,
+                                   GINACLIB_MINOR_VERSION, GINACLIB_MICRO_VERSION));
   app.require_subcommand(1);
-  app.footer("Exit status: 0 success, 1 a check failed, 2 usage or input error, 3 internal error.\n"
-             "Example: offsetgen generate --surface gyroid --order 4 --lang c -o gyroid_o4.h");
+  app.footer(
+      "Exit status: 0 success, 1 a check failed, 2 usage or input error, 3 internal error.\n"
+      "Example: offsetgen generate --surface gyroid --order 4 --lang c -o gyroid_o4.h");
 
   GenerateOptions generate;
   add_generate_command(app, generate);

@@ -13,7 +13,6 @@
 namespace offsetgen {
 namespace {
 
-
 bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 std::string join(const std::vector<std::string>& parts, const char* separator) {
@@ -61,8 +60,9 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
   for (Precision precision : precisions) {
     const Dialect d{Language::C, precision};
     const std::string real = d.real_type();
-    support += fmt::format(fmt::runtime(sections.at(precision == Precision::Double ? "support_double" : "support_float")),
-                           fmt::arg("range_double", kTrigRangeDouble), fmt::arg("range_float", kTrigRangeFloat));
+    support +=
+        fmt::format(fmt::runtime(sections.at(precision == Precision::Double ? "support_double" : "support_float")),
+                    fmt::arg("range_double", kTrigRangeDouble), fmt::arg("range_float", kTrigRangeFloat));
     for (const auto& f : functions) {
       if (!batched(f)) continue;
       std::vector<std::string> inputs = coordinates;
@@ -80,12 +80,12 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
       const std::string scalar = facts.prefix + "_" + f.suffix + d.suffix();
       const std::string name = scalar + "_n";
       list += fmt::format(" *   void {}(n, {}, out)\n", name, join(inputs, ", "));
-      rendered += fmt::format(
-          fmt::runtime(sections.at("function")), fmt::arg("doc", f.doc), fmt::arg("scalar", scalar),
-          fmt::arg("name", name), fmt::arg("call", join(elements, ", ")),
-          fmt::arg("array_params", join(array_params, ", ")), fmt::arg("real", real),
-          fmt::arg("body", rename_trig_calls(body, "offsetgen_batch_")), fmt::arg("abs", d.abs_name()),
-          fmt::arg("huge", precision == Precision::Double ? "HUGE_VAL" : "HUGE_VALF"));
+      rendered +=
+          fmt::format(fmt::runtime(sections.at("function")), fmt::arg("doc", f.doc), fmt::arg("scalar", scalar),
+                      fmt::arg("name", name), fmt::arg("call", join(elements, ", ")),
+                      fmt::arg("array_params", join(array_params, ", ")), fmt::arg("real", real),
+                      fmt::arg("body", rename_trig_calls(body, "offsetgen_batch_")), fmt::arg("abs", d.abs_name()),
+                      fmt::arg("huge", precision == Precision::Double ? "HUGE_VAL" : "HUGE_VALF"));
     }
   }
   if (!list.empty()) list.pop_back();

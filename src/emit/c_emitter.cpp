@@ -67,10 +67,9 @@ std::string emit_c_header(const FileFacts& facts, const std::vector<EmittedFunct
     std::string scalar_functions;
     for (const auto& f : functions) {
       scalar_functions += render_function(skeleton, facts, f, d);
-      std::string call = fmt::format("{} {}{}", f.vector_result ? "void" : d.real_type(),
-                                     function_name(facts, f, d),
-                                     f.vector_result ? f.signature_doc.substr(0, f.signature_doc.size() - 1) + ", n)"
-                                                     : f.signature_doc);
+      std::string call = fmt::format(
+          "{} {}{}", f.vector_result ? "void" : d.real_type(), function_name(facts, f, d),
+          f.vector_result ? f.signature_doc.substr(0, f.signature_doc.size() - 1) + ", n)" : f.signature_doc);
       function_list += fmt::format(" *   {:<42} {}\n", call, f.doc);
     }
     rendered += with_scalar_trig(scalar_functions, precision);
@@ -81,15 +80,22 @@ std::string emit_c_header(const FileFacts& facts, const std::vector<EmittedFunct
   ops_list.pop_back();
 
   const Surface& s = *facts.surface;
-  return fmt::format(
-      fmt::runtime(load_template("c_header.h.in")), fmt::arg("file_name", facts.file_name),
-      fmt::arg("version", OFFSETGEN_VERSION), fmt::arg("command", facts.command), fmt::arg("order", facts.order),
-      fmt::arg("order_plus_one", facts.order + 1), fmt::arg("title", s.title), fmt::arg("formula", s.formula),
-      fmt::arg("citation", s.citation), fmt::arg("function_list", function_list), fmt::arg("prefix", facts.prefix),
-      fmt::arg("bound", fmt::format("{:.17g}", facts.gradient_bound)),
-      fmt::arg("hessian_bound", fmt::format("{:.17g}", facts.hessian_bound)), fmt::arg("ops_list", ops_list),
-      fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "h")),
-      fmt::arg("functions", rendered));
+  const MethodFacts& m = *facts.method;
+  auto paragraph = [](const std::string& label, const std::string& text) {
+    return wrap_paragraph(label + " " + text, " * ", " *   ");
+  };
+  const std::string method = wrap_paragraph(m.summary, " * Method:  ", " *          ") + "\n" +
+                             wrap_paragraph(m.citation, " *          ", " *          ");
+  return fmt::format(fmt::runtime(load_template("c_header.h.in")), fmt::arg("file_name", facts.file_name),
+                     fmt::arg("version", OFFSETGEN_VERSION), fmt::arg("command", facts.command),
+                     fmt::arg("order", m.order), fmt::arg("title", s.title), fmt::arg("formula", s.formula),
+                     fmt::arg("citation", s.citation), fmt::arg("method", method),
+                     fmt::arg("function_list", function_list), fmt::arg("prefix", facts.prefix),
+                     fmt::arg("accuracy", paragraph("Accuracy:", m.accuracy)),
+                     fmt::arg("variable_thickness", paragraph("Variable thickness:", m.variable_thickness)),
+                     fmt::arg("safety", paragraph("Safety:", m.safety)), fmt::arg("ops_list", ops_list),
+                     fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "h")),
+                     fmt::arg("functions", rendered));
 }
 
 }  // namespace offsetgen

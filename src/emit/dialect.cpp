@@ -28,9 +28,7 @@ std::string Dialect::local_decl() const {
 
 std::string Dialect::bool_decl() const { return language == Language::Glsl ? "bool" : "const int"; }
 
-std::string Dialect::suffix() const {
-  return language == Language::C && precision == Precision::Float ? "f" : "";
-}
+std::string Dialect::suffix() const { return language == Language::C && precision == Precision::Float ? "f" : ""; }
 
 std::string Dialect::literal(double value) const {
   std::string text;

@@ -1,24 +1,22 @@
 #include "emit/emitted_api.h"
 
 #include <cctype>
+#include <sstream>
 
 namespace offsetgen {
 
-std::vector<EmittedFunction> emitted_functions(const SurfacePrograms& programs, int dims) {
+std::vector<EmittedFunction> emitted_functions(const SurfacePrograms& programs, int dims, const MethodFacts& method) {
   const std::string coords = dims == 3 ? "x, y, z" : "x, y";
   std::vector<EmittedFunction> functions = {
       {"field", &programs.field, "", false, "F, the field; the surface is F = 0.", "(" + coords + ")"},
       {"offset", &programs.offset, "h", false,
-       "phi^(m)(p, h): zero on the surface moved by h along +grad F.", "(" + coords + ", h)"},
+       "phi(p, h) of order " + std::to_string(method.order) + ": zero on the surface moved by h along +grad F.",
+       "(" + coords + ", h)"},
       {"shell", &programs.shell, "t", false,
        "phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.", "(" + coords + ", t)"},
   };
-  if (!programs.normal.outputs().empty()) {
-    functions.push_back({"normal", &programs.normal, "h", true,
-                         "unit normal (direction of +grad phi) of the offset surface at distance h, derived "
-                         "analytically; zero where the gradient vanishes.",
-                         "(" + coords + ", h" + ")"});
-  }
+  if (!programs.normal.outputs().empty())
+    functions.push_back({"normal", &programs.normal, "h", true, method.normal, "(" + coords + ", h" + ")"});
   if (programs.graded) {
     functions.push_back({"graded", &*programs.graded, "", false,
                          "the shell with the --thickness t(p) baked in: negative inside the graded wall.",
@@ -29,8 +27,26 @@ std::vector<EmittedFunction> emitted_functions(const SurfacePrograms& programs, 
 
 std::string guard_name(const std::string& prefix, const std::string& extension) {
   std::string guard = "OFFSETGEN_";
-  for (char c : prefix + "_" + extension) guard += static_cast<char>(std::isalnum(static_cast<unsigned char>(c)) ? std::toupper(static_cast<unsigned char>(c)) : '_');
+  for (char c : prefix + "_" + extension)
+    guard += static_cast<char>(std::isalnum(static_cast<unsigned char>(c)) ? std::toupper(static_cast<unsigned char>(c))
+                                                                           : '_');
   return guard;
+}
+
+std::string wrap_paragraph(const std::string& text, const std::string& first, const std::string& rest, size_t width) {
+  std::istringstream words(text);
+  std::string out, line = first, word;
+  bool empty = true;
+  while (words >> word) {
+    if (!empty && line.size() + 1 + word.size() > width) {
+      out += line + "\n";
+      line = rest;
+      empty = true;
+    }
+    line += (empty ? "" : " ") + word;
+    empty = false;
+  }
+  return out + line;
 }
 
 }  // namespace offsetgen

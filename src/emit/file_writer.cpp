@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -9,7 +10,6 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace offsetgen {
 namespace fs = std::filesystem;
@@ -56,7 +56,8 @@ bool write_file_if_changed(const std::string& path, const std::string& content) 
   if (file) std::fclose(file);
   if (ok) {
     // mkstemp creates 0600; generated sources should read like any other file.
-    fs::permissions(tmp, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read);
+    fs::permissions(tmp,
+                    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read);
   }
   if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
     int err = errno;

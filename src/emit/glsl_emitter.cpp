@@ -47,7 +47,8 @@ std::string emit_glsl_snippet(const FileFacts& facts, const std::vector<EmittedF
   for (const auto& f : functions) {
     rendered += render_function(skeleton, facts, f, d);
     std::string ret = f.vector_result ? vector_type(facts.dims) : "float";
-    std::string args = vector_type(facts.dims) + " p" + (f.extra_parameter.empty() ? "" : ", float " + f.extra_parameter);
+    std::string args =
+        vector_type(facts.dims) + " p" + (f.extra_parameter.empty() ? "" : ", float " + f.extra_parameter);
     use_list += fmt::format("    - <{}> {}_{}(<{}>)\n", ret, facts.prefix, f.suffix, args);
     ops_list += fmt::format("    - {}: {}\n", f.suffix, count_ops(*f.program));
   }
@@ -60,15 +61,21 @@ std::string emit_glsl_snippet(const FileFacts& facts, const std::vector<EmittedF
   use_list.pop_back();
   ops_list.pop_back();
   const Surface& s = *facts.surface;
-  return fmt::format(
-      fmt::runtime(load_template("glsl_snippet.glsl.in")), fmt::arg("file_name", facts.file_name),
-      fmt::arg("version", OFFSETGEN_VERSION), fmt::arg("command", facts.command), fmt::arg("order", facts.order),
-      fmt::arg("order_plus_one", facts.order + 1), fmt::arg("title", s.title), fmt::arg("formula", s.formula),
-      fmt::arg("citation", s.citation), fmt::arg("use_list", use_list), fmt::arg("io_list", io_list),
-      fmt::arg("prefix", facts.prefix), fmt::arg("bound", fmt::format("{:.9g}", facts.gradient_bound)),
-      fmt::arg("hessian_bound", fmt::format("{:.9g}", facts.hessian_bound)),
-      fmt::arg("ops_list", ops_list), fmt::arg("metadata", facts.metadata_json),
-      fmt::arg("guard", guard_name(facts.prefix, "glsl")), fmt::arg("functions", rendered));
+  const MethodFacts& m = *facts.method;
+  auto paragraph = [](const std::string& label, const std::string& text) {
+    return wrap_paragraph(label + " " + text, "", "    ");
+  };
+  const std::string method = wrap_paragraph("Method: " + m.summary + " " + m.citation, "    ", "    ");
+  return fmt::format(fmt::runtime(load_template("glsl_snippet.glsl.in")), fmt::arg("file_name", facts.file_name),
+                     fmt::arg("version", OFFSETGEN_VERSION), fmt::arg("command", facts.command),
+                     fmt::arg("order", m.order), fmt::arg("title", s.title), fmt::arg("formula", s.formula),
+                     fmt::arg("citation", s.citation), fmt::arg("method", method), fmt::arg("use_list", use_list),
+                     fmt::arg("io_list", io_list), fmt::arg("prefix", facts.prefix),
+                     fmt::arg("accuracy", paragraph("accuracy:", m.accuracy)),
+                     fmt::arg("variable_thickness", paragraph("variable thickness:", m.variable_thickness)),
+                     fmt::arg("safety", paragraph("safety:", m.safety)), fmt::arg("ops_list", ops_list),
+                     fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "glsl")),
+                     fmt::arg("functions", rendered));
 }
 
 }  // namespace offsetgen

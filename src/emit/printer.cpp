@@ -12,15 +12,21 @@ enum Precedence { kSelect = 0, kCompare = 1, kSum = 2, kProduct = 3, kUnary = 4,
 
 Precedence precedence_of(Op op) {
   switch (op) {
-    case Op::Select: return kSelect;
+    case Op::Select:
+      return kSelect;
     case Op::LessEq:
-    case Op::Greater: return kCompare;
+    case Op::Greater:
+      return kCompare;
     case Op::Add:
-    case Op::Sub: return kSum;
+    case Op::Sub:
+      return kSum;
     case Op::Mul:
-    case Op::Div: return kProduct;
-    case Op::Neg: return kUnary;
-    default: return kAtom;
+    case Op::Div:
+      return kProduct;
+    case Op::Neg:
+      return kUnary;
+    default:
+      return kAtom;
   }
 }
 
@@ -68,19 +74,32 @@ class BodyPrinter {
   std::string expression_of(NodeId id, Precedence /*context*/) {
     const Node& n = program_.node(id);
     switch (n.op) {
-      case Op::Input: return input_names_.at(static_cast<size_t>(n.input));
-      case Op::Const: return dialect_.literal(n.value);
-      case Op::Add: return text(n.a, kSum) + " + " + text(n.b, kProduct);  // left-associative
-      case Op::Sub: return text(n.a, kSum) + " - " + text(n.b, kProduct);
-      case Op::Mul: return text(n.a, kProduct) + " * " + text(n.b, kUnary);
-      case Op::Div: return text(n.a, kProduct) + " / " + text(n.b, kUnary);
-      case Op::Neg: return "-" + text(n.a, kAtom);
-      case Op::Sqrt: return dialect_.sqrt_name() + "(" + text(n.a, kSelect) + ")";
-      case Op::Abs: return dialect_.abs_name() + "(" + text(n.a, kSelect) + ")";
-      case Op::Call: return dialect_.function(n.fn) + "(" + text(n.a, kSelect) + ")";
-      case Op::Pow: return dialect_.pow_name() + "(" + text(n.a, kSelect) + ", " + text(n.b, kSelect) + ")";
-      case Op::LessEq: return text(n.a, kSum) + " <= " + text(n.b, kSum);
-      case Op::Greater: return text(n.a, kSum) + " > " + text(n.b, kSum);
+      case Op::Input:
+        return input_names_.at(static_cast<size_t>(n.input));
+      case Op::Const:
+        return dialect_.literal(n.value);
+      case Op::Add:
+        return text(n.a, kSum) + " + " + text(n.b, kProduct);  // left-associative
+      case Op::Sub:
+        return text(n.a, kSum) + " - " + text(n.b, kProduct);
+      case Op::Mul:
+        return text(n.a, kProduct) + " * " + text(n.b, kUnary);
+      case Op::Div:
+        return text(n.a, kProduct) + " / " + text(n.b, kUnary);
+      case Op::Neg:
+        return "-" + text(n.a, kAtom);
+      case Op::Sqrt:
+        return dialect_.sqrt_name() + "(" + text(n.a, kSelect) + ")";
+      case Op::Abs:
+        return dialect_.abs_name() + "(" + text(n.a, kSelect) + ")";
+      case Op::Call:
+        return dialect_.function(n.fn) + "(" + text(n.a, kSelect) + ")";
+      case Op::Pow:
+        return dialect_.pow_name() + "(" + text(n.a, kSelect) + ", " + text(n.b, kSelect) + ")";
+      case Op::LessEq:
+        return text(n.a, kSum) + " <= " + text(n.b, kSum);
+      case Op::Greater:
+        return text(n.a, kSum) + " > " + text(n.b, kSum);
       case Op::Select:
         return "(" + text(n.a, kCompare) + ") ? " + text(n.b, kCompare) + " : " + text(n.c, kCompare);
     }

@@ -1,5 +1,8 @@
 #include "lowering/lower.h"
 
+#include "surfaces/surface.h"
+
+#include <cstdlib>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -8,16 +11,18 @@ namespace offsetgen {
 namespace {
 
 Fn function_of(const std::string& name) {
-  static const std::map<std::string, Fn> table = {
-      {"sin", Fn::Sin},   {"cos", Fn::Cos},   {"tan", Fn::Tan},   {"exp", Fn::Exp},
-      {"log", Fn::Log},   {"sinh", Fn::Sinh}, {"cosh", Fn::Cosh}, {"tanh", Fn::Tanh},
-      {"atan", Fn::Atan}, {"asin", Fn::Asin}, {"acos", Fn::Acos}};
+  static const std::map<std::string, Fn> table = {{"sin", Fn::Sin},   {"cos", Fn::Cos},   {"tan", Fn::Tan},
+                                                  {"exp", Fn::Exp},   {"log", Fn::Log},   {"sinh", Fn::Sinh},
+                                                  {"cosh", Fn::Cosh}, {"tanh", Fn::Tanh}, {"atan", Fn::Atan},
+                                                  {"asin", Fn::Asin}, {"acos", Fn::Acos}};
   auto it = table.find(name);
   if (it == table.end()) throw std::invalid_argument("cannot lower function '" + name + "'");
   return it->second;
 }
 
-bool is_integer(const GiNaC::ex& e) { return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_integer(); }
+bool is_integer(const GiNaC::ex& e) {
+  return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_integer();
+}
 
 bool is_half_integer(const GiNaC::ex& e) {
   if (!GiNaC::is_a<GiNaC::numeric>(e)) return false;
@@ -118,9 +123,129 @@ NodeId Lowerer::half_power(NodeId base, int numerator) {
 NodeId Lowerer::lower_function(const GiNaC::ex& e, const Environment& env) {
   const auto& f = GiNaC::ex_to<GiNaC::function>(e);
   if (e.nops() != 1) throw std::invalid_argument("cannot lower function '" + f.get_name() + "' of several arguments");
+  if (env.displaced_from && (f.get_name() == "sin" || f.get_name() == "cos")) {
+    if (auto sc = displaced_sincos(e.op(0), env)) return f.get_name() == "sin" ? sc->first : sc->second;
+  }
   NodeId argument = lower(e.op(0), env);
   if (f.get_name() == "abs") return program_.abs(argument);
   return program_.call(function_of(f.get_name()), argument);
+}
+
+namespace {
+
+constexpr long kMaxAngleMultiple = 8;  // sin(a X) at a displaced point: a - 1 angle additions
+
+bool is_natural_coordinate(const GiNaC::ex& e) {
+  const Symbols& sym = Symbols::get();
+  return e.is_equal(sym.X) || e.is_equal(sym.Y) || e.is_equal(sym.Z);
+}
+
+bool is_coordinate_multiple(const GiNaC::ex& e) {
+  if (is_natural_coordinate(e)) return true;
+  if (!GiNaC::is_a<GiNaC::mul>(e) || e.nops() != 2) return false;
+  for (size_t i = 0; i < 2; ++i) {
+    if (is_integer(e.op(i)) && is_natural_coordinate(e.op(1 - i)))
+      return std::labs(GiNaC::ex_to<GiNaC::numeric>(e.op(i)).to_long()) <= kMaxAngleMultiple;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool is_trigonometric_polynomial(const GiNaC::ex& e) {
+  if (is_natural_coordinate(e)) return false;
+  if (GiNaC::is_a<GiNaC::function>(e)) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if ((name == "sin" || name == "cos") && is_coordinate_multiple(e.op(0))) return true;
+  }
+  for (size_t i = 0; i < e.nops(); ++i)
+    if (!is_trigonometric_polynomial(e.op(i))) return false;
+  return true;
+}
+
+// sin(d) = d S(d^2) and cos(d) = C(d^2) for |d| <= kSmallAngleMax = 1: near-minimax polynomials
+// of degree 7 in z = d^2 (tools/small_angle_fit.py; max error 9e-18 and 1.1e-17), evaluated by
+// Estrin's scheme for short dependency chains (the projection's steps are serial).
+std::pair<NodeId, NodeId> Lowerer::small_angle_sincos(NodeId d, NodeId d_squared) {
+  static const std::vector<double> kSin = {1.0,
+                                           -0.16666666666666666,
+                                           0.0083333333333333,
+                                           -0.00019841269841216566,
+                                           2.755731919201122e-06,
+                                           -2.5052099244914114e-08,
+                                           1.6057701922579786e-10,
+                                           -7.549371704181243e-13};
+  static const std::vector<double> kCos = {1.0,
+                                           -0.5,
+                                           0.0416666666666661,
+                                           -0.0013888888888798428,
+                                           2.4801587247292686e-05,
+                                           -2.755730370192223e-07,
+                                           2.0874477943664777e-09,
+                                           -1.1304620460700782e-11};
+  Program& p = program_;
+  const NodeId z = d_squared;
+  auto estrin = [&](const std::vector<double>& c) {
+    // Pairs c0 + c1 z, then (.) + (.) z^2, (.) + (.) z^4, ...
+    std::vector<NodeId> level;
+    for (size_t i = 0; i < c.size(); i += 2) {
+      NodeId term = p.constant(c[i]);
+      if (i + 1 < c.size()) term = p.add(term, p.mul(p.constant(c[i + 1]), z));
+      level.push_back(term);
+    }
+    NodeId power = z;
+    while (level.size() > 1) {
+      power = p.mul(power, power);
+      std::vector<NodeId> next;
+      for (size_t i = 0; i < level.size(); i += 2)
+        next.push_back(i + 1 < level.size() ? p.add(level[i], p.mul(level[i + 1], power)) : level[i]);
+      level = std::move(next);
+    }
+    return level.front();
+  };
+  return {p.mul(d, estrin(kSin)), estrin(kCos)};
+}
+
+std::optional<std::pair<NodeId, NodeId>> Lowerer::displaced_sincos(const GiNaC::ex& argument, const Environment& env) {
+  // argument = a * X with a a nonzero integer and X a displaced coordinate
+  GiNaC::ex symbol = argument;
+  long multiple = 1;
+  if (GiNaC::is_a<GiNaC::mul>(argument) && argument.nops() == 2) {
+    for (size_t i = 0; i < 2; ++i) {
+      if (is_integer(argument.op(i)) && GiNaC::is_a<GiNaC::symbol>(argument.op(1 - i))) {
+        multiple = GiNaC::ex_to<GiNaC::numeric>(argument.op(i)).to_long();
+        symbol = argument.op(1 - i);
+      }
+    }
+  }
+  if (!GiNaC::is_a<GiNaC::symbol>(symbol) || multiple == 0 || std::labs(multiple) > kMaxAngleMultiple)
+    return std::nullopt;
+  const Environment::Displacement* d = nullptr;
+  for (const auto& entry : env.displacement)
+    if (entry.coordinate.is_equal(symbol)) d = &entry;
+  if (!d) return std::nullopt;
+
+  // sin(X - d) = sin X cos d - cos X sin d, cos(X - d) = cos X cos d + sin X sin d, from p.
+  const Environment& base = *env.displaced_from;
+  NodeId sin_p = lower(GiNaC::sin(symbol), base), cos_p = lower(GiNaC::cos(symbol), base);
+  auto [sin_d, cos_d] = small_angle_sincos(d->d, d->d_squared);
+  Program& p = program_;
+  NodeId s1 = p.sub(p.mul(sin_p, cos_d), p.mul(cos_p, sin_d));
+  NodeId c1 = p.add(p.mul(cos_p, cos_d), p.mul(sin_p, sin_d));
+  // Multiples by repeated angle addition; a double angle as 2 s c and c^2 - s^2.
+  NodeId s = s1, c = c1;
+  for (long k = 1; k < std::labs(multiple); ++k) {
+    if (k == 1) {
+      s = p.mul(p.constant(2), p.mul(s1, c1));
+      c = p.sub(p.mul(c1, c1), p.mul(s1, s1));
+    } else {
+      NodeId next_s = p.add(p.mul(s, c1), p.mul(c, s1));
+      c = p.sub(p.mul(c, c1), p.mul(s, s1));
+      s = next_s;
+    }
+  }
+  if (multiple < 0) s = p.neg(s);
+  return std::make_pair(s, c);
 }
 
 }  // namespace offsetgen

@@ -6,7 +6,9 @@
 
 #include <ginac/ginac.h>
 
+#include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace offsetgen {
@@ -18,7 +20,26 @@ struct Environment {
   int id = 0;         // memo key; distinct per binding of s and h
   int shared_id = 0;  // memo key for step-independent atoms (same coordinates, any s)
   std::vector<std::pair<GiNaC::ex, NodeId>> bindings;
+  // A point q = p - d given by its displacement from the point of `displaced_from`: sin and cos of
+  // an integer multiple of one natural coordinate are then rebuilt from their values at p by angle
+  // addition, with short polynomials in the small angle d_i (cheaper than reducing a new argument).
+  // The caller guarantees |d_i| <= kSmallAngleMax.
+  const Environment* displaced_from = nullptr;
+  struct Displacement {
+    GiNaC::ex coordinate;  // a natural coordinate symbol
+    NodeId d;              // q_i = p_i - d
+    NodeId d_squared;      // d^2, possibly computed on a shorter path than d * d
+  };
+  std::vector<Displacement> displacement;
 };
+
+// The largest |d| the small-angle polynomials of displaced environments are exact for (within
+// 1.1e-17 of sin d and cos d; tools/small_angle_fit.py).
+inline constexpr double kSmallAngleMax = 1.0;
+
+// Whether the natural coordinates occur in `e` only inside sin and cos of integer multiples of one
+// coordinate (the catalog TPMS): then displaced environments never evaluate trig of a new argument.
+bool is_trigonometric_polynomial(const GiNaC::ex& e);
 
 class Lowerer {
  public:
@@ -34,6 +55,10 @@ class Lowerer {
   NodeId lower_numeric(const GiNaC::ex& e);
   // base^(p/2) for odd p, through one shared 1/sqrt(base).
   NodeId half_power(NodeId base, int numerator);
+  // sin and cos of a * X at a displaced point (Environment::displacement); nullopt when the argument
+  // is not an integer multiple of one displaced coordinate.
+  std::optional<std::pair<NodeId, NodeId>> displaced_sincos(const GiNaC::ex& argument, const Environment& env);
+  std::pair<NodeId, NodeId> small_angle_sincos(NodeId d, NodeId d_squared);
 
   Program& program_;
   const AtomTable& atoms_;

@@ -29,18 +29,30 @@ bool same_node(const Node& x, const Node& y) {
 
 double apply(Fn fn, double v) {
   switch (fn) {
-    case Fn::Sin: return std::sin(v);
-    case Fn::Cos: return std::cos(v);
-    case Fn::Tan: return std::tan(v);
-    case Fn::Exp: return std::exp(v);
-    case Fn::Log: return std::log(v);
-    case Fn::Sinh: return std::sinh(v);
-    case Fn::Cosh: return std::cosh(v);
-    case Fn::Tanh: return std::tanh(v);
-    case Fn::Atan: return std::atan(v);
-    case Fn::Asin: return std::asin(v);
-    case Fn::Acos: return std::acos(v);
-    case Fn::None: break;
+    case Fn::Sin:
+      return std::sin(v);
+    case Fn::Cos:
+      return std::cos(v);
+    case Fn::Tan:
+      return std::tan(v);
+    case Fn::Exp:
+      return std::exp(v);
+    case Fn::Log:
+      return std::log(v);
+    case Fn::Sinh:
+      return std::sinh(v);
+    case Fn::Cosh:
+      return std::cosh(v);
+    case Fn::Tanh:
+      return std::tanh(v);
+    case Fn::Atan:
+      return std::atan(v);
+    case Fn::Asin:
+      return std::asin(v);
+    case Fn::Acos:
+      return std::acos(v);
+    case Fn::None:
+      break;
   }
   throw std::logic_error("apply: no function");
 }
@@ -49,18 +61,30 @@ double apply(Fn fn, double v) {
 
 const char* function_name(Fn fn) {
   switch (fn) {
-    case Fn::Sin: return "sin";
-    case Fn::Cos: return "cos";
-    case Fn::Tan: return "tan";
-    case Fn::Exp: return "exp";
-    case Fn::Log: return "log";
-    case Fn::Sinh: return "sinh";
-    case Fn::Cosh: return "cosh";
-    case Fn::Tanh: return "tanh";
-    case Fn::Atan: return "atan";
-    case Fn::Asin: return "asin";
-    case Fn::Acos: return "acos";
-    case Fn::None: break;
+    case Fn::Sin:
+      return "sin";
+    case Fn::Cos:
+      return "cos";
+    case Fn::Tan:
+      return "tan";
+    case Fn::Exp:
+      return "exp";
+    case Fn::Log:
+      return "log";
+    case Fn::Sinh:
+      return "sinh";
+    case Fn::Cosh:
+      return "cosh";
+    case Fn::Tanh:
+      return "tanh";
+    case Fn::Atan:
+      return "atan";
+    case Fn::Asin:
+      return "asin";
+    case Fn::Acos:
+      return "acos";
+    case Fn::None:
+      break;
   }
   return "?";
 }
@@ -346,20 +370,48 @@ const std::vector<double>& Evaluator::operator()(const std::vector<double>& inpu
     auto B = [&] { return v[static_cast<size_t>(n.b)]; };
     double r = 0;
     switch (n.op) {
-      case Op::Input: r = inputs.at(static_cast<size_t>(n.input)); break;
-      case Op::Const: r = n.value; break;
-      case Op::Add: r = A() + B(); break;
-      case Op::Sub: r = A() - B(); break;
-      case Op::Mul: r = A() * B(); break;
-      case Op::Div: r = A() / B(); break;
-      case Op::Neg: r = -A(); break;
-      case Op::Sqrt: r = std::sqrt(A()); break;
-      case Op::Abs: r = std::fabs(A()); break;
-      case Op::Call: r = apply(n.fn, A()); break;
-      case Op::Pow: r = std::pow(A(), B()); break;
-      case Op::LessEq: r = A() <= B() ? 1.0 : 0.0; break;
-      case Op::Greater: r = A() > B() ? 1.0 : 0.0; break;
-      case Op::Select: r = A() != 0.0 ? B() : v[static_cast<size_t>(n.c)]; break;
+      case Op::Input:
+        r = inputs.at(static_cast<size_t>(n.input));
+        break;
+      case Op::Const:
+        r = n.value;
+        break;
+      case Op::Add:
+        r = A() + B();
+        break;
+      case Op::Sub:
+        r = A() - B();
+        break;
+      case Op::Mul:
+        r = A() * B();
+        break;
+      case Op::Div:
+        r = A() / B();
+        break;
+      case Op::Neg:
+        r = -A();
+        break;
+      case Op::Sqrt:
+        r = std::sqrt(A());
+        break;
+      case Op::Abs:
+        r = std::fabs(A());
+        break;
+      case Op::Call:
+        r = apply(n.fn, A());
+        break;
+      case Op::Pow:
+        r = std::pow(A(), B());
+        break;
+      case Op::LessEq:
+        r = A() <= B() ? 1.0 : 0.0;
+        break;
+      case Op::Greater:
+        r = A() > B() ? 1.0 : 0.0;
+        break;
+      case Op::Select:
+        r = A() != 0.0 ? B() : v[static_cast<size_t>(n.c)];
+        break;
     }
     v[static_cast<size_t>(id)] = r;
   }

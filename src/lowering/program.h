@@ -11,10 +11,20 @@
 namespace offsetgen {
 
 enum class Op : uint8_t {
-  Input, Const,
-  Add, Sub, Mul, Div, Neg,
-  Sqrt, Abs, Call, Pow,
-  LessEq, Greater, Select,   // comparisons yield booleans; Select(c, a, b) = c ? a : b
+  Input,
+  Const,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Neg,
+  Sqrt,
+  Abs,
+  Call,
+  Pow,
+  LessEq,
+  Greater,
+  Select,  // comparisons yield booleans; Select(c, a, b) = c ? a : b
 };
 
 enum class Fn : uint8_t { None, Sin, Cos, Tan, Exp, Log, Sinh, Cosh, Tanh, Atan, Asin, Acos };

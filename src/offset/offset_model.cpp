@@ -2,7 +2,6 @@
 
 #include "offset/multi_index.h"
 #include "offset/richardson.h"
-#include "offset/symbolic_diff.h"
 
 #include <fmt/format.h>
 
@@ -16,17 +15,8 @@ using Jet = std::map<MultiIndex, GiNaC::ex>;
 
 class ChainBuilder {
  public:
-  ChainBuilder(const Surface& surface, int depth, AtomTable& atoms)
-      : dims_(surface.dims), depth_(depth), atoms_(atoms) {
-    const Symbols& sym = Symbols::get();
-    std::vector<GiNaC::symbol> vars;
-    for (int i = 0; i < dims_; ++i) vars.push_back(sym.natural(i));
-    MemoDiff differ(vars);
-    Jet p0;
-    for (const auto& alpha : indices_up_to(dims_, depth_)) {
-      p0[alpha] = atoms_.define("F" + index_label(alpha), differ.partial(surface.field, alpha), 0);
-    }
-    derivatives_.push_back(std::move(p0));
+  ChainBuilder(const FieldAtoms& field, int depth, AtomTable& atoms) : dims_(field.dims), depth_(depth), atoms_(atoms) {
+    derivatives_.push_back(field.jet);  // P_0 = D^alpha F
   }
 
   // |grad psi_k| and its derivatives up to the order the chain still needs at level k.
@@ -84,8 +74,8 @@ class ChainBuilder {
       const GiNaC::symbol& s = Symbols::get().s;
       Jet next;
       for (const auto& alpha : indices) {
-        next[alpha] = atoms_.define(fmt::format("P{}_{}", level + 1, index_label(alpha)),
-                                    p.at(alpha) - s * n.at(alpha), level + 1);
+        next[alpha] = atoms_.define(fmt::format("P{}_{}", level + 1, index_label(alpha)), p.at(alpha) - s * n.at(alpha),
+                                    level + 1);
       }
       derivatives_.push_back(std::move(next));
     }
@@ -107,18 +97,19 @@ OffsetModel build_offset_model(const Surface& surface, int order, bool with_grad
   model.dims = surface.dims;
   model.field = surface.field;
   const int depth = order + (with_gradient ? 1 : 0);
-  ChainBuilder chains(surface, depth, model.atoms);
+  model.field_atoms = define_field_atoms(surface, depth, model.atoms);
+  ChainBuilder chains(model.field_atoms, depth, model.atoms);
 
   for (int i = 0; i < surface.dims; ++i) model.field_gradient.push_back(chains.derivatives(0).at(unit_index(i)));
   model.field_gradient_norm = chains.norms(0).at({0, 0, 0});
   if (with_gradient)
-    for (int i = 0; i < surface.dims; ++i) model.field_gradient_norm_gradient.push_back(chains.norms(0).at(unit_index(i)));
+    for (int i = 0; i < surface.dims; ++i)
+      model.field_gradient_norm_gradient.push_back(chains.norms(0).at(unit_index(i)));
   if (depth >= 2) {
     model.field_hessian.assign(static_cast<size_t>(surface.dims), {});
     for (int i = 0; i < surface.dims; ++i)
       for (int j = 0; j < surface.dims; ++j)
-        model.field_hessian[static_cast<size_t>(i)].push_back(
-            chains.derivatives(0).at(unit_index(i) + unit_index(j)));
+        model.field_hessian[static_cast<size_t>(i)].push_back(chains.derivatives(0).at(unit_index(i) + unit_index(j)));
   }
 
   const auto weights = richardson_weights(order);
@@ -135,7 +126,8 @@ OffsetModel build_offset_model(const Surface& surface, int order, bool with_grad
   add_terms({0, 0, 0}, model.weighted_norms);
   if (with_gradient) {
     model.weighted_norms_gradient.resize(static_cast<size_t>(surface.dims));
-    for (int i = 0; i < surface.dims; ++i) add_terms(unit_index(i), model.weighted_norms_gradient[static_cast<size_t>(i)]);
+    for (int i = 0; i < surface.dims; ++i)
+      add_terms(unit_index(i), model.weighted_norms_gradient[static_cast<size_t>(i)]);
   }
   return model;
 }

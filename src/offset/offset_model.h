@@ -2,6 +2,7 @@
 #pragma once
 
 #include "offset/atom_table.h"
+#include "offset/field_atoms.h"
 #include "surfaces/surface.h"
 
 #include <ginac/ginac.h>
@@ -25,13 +26,14 @@ using ChainSum = std::vector<ChainTerm>;
 struct OffsetModel {
   int order = 1;
   int dims = 3;
-  GiNaC::ex field;                          // F
-  std::vector<GiNaC::ex> field_gradient;    // dF/dX_i
-  GiNaC::ex field_gradient_norm;            // |grad F|, the chains' first norm (shared atom)
+  GiNaC::ex field;                                      // F
+  std::vector<GiNaC::ex> field_gradient;                // dF/dX_i
+  GiNaC::ex field_gradient_norm;                        // |grad F|, the chains' first norm (shared atom)
   std::vector<GiNaC::ex> field_gradient_norm_gradient;  // d|grad F|/dX_i, only when built with_gradient
-  std::vector<std::vector<GiNaC::ex>> field_hessian;  // d2F/dX_i dX_j; empty at order 1 without gradient
-  ChainSum weighted_norms;                  // G
-  std::vector<ChainSum> weighted_norms_gradient;  // dG/dX_i, only when built with_gradient
+  std::vector<std::vector<GiNaC::ex>> field_hessian;    // d2F/dX_i dX_j; empty at order 1 without gradient
+  FieldAtoms field_atoms;                               // D^alpha F, |alpha| <= order (+1 with gradient)
+  ChainSum weighted_norms;                              // G
+  std::vector<ChainSum> weighted_norms_gradient;        // dG/dX_i, only when built with_gradient
   AtomTable atoms;
 };
 

@@ -28,8 +28,8 @@ class MemoDiff {
 
   std::vector<GiNaC::symbol> variables_;
   std::vector<std::unordered_map<GiNaC::ex, GiNaC::ex>> cache_;  // one per variable
-  std::map<std::pair<GiNaC::ex, MultiIndex>, GiNaC::ex, bool (*)(const std::pair<GiNaC::ex, MultiIndex>&,
-                                                                  const std::pair<GiNaC::ex, MultiIndex>&)>
+  std::map<std::pair<GiNaC::ex, MultiIndex>, GiNaC::ex,
+           bool (*)(const std::pair<GiNaC::ex, MultiIndex>&, const std::pair<GiNaC::ex, MultiIndex>&)>
       partials_;
 };
 

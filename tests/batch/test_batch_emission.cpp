@@ -1,7 +1,7 @@
 // What the C emitter writes for the batch API: which `_n` functions, their signatures, the helpers
 // per precision, and the sin/cos rewrite of the loop bodies.
 #include "emit/c_batch.h"
-#include "emit/generate.h"
+#include "pipeline/generate.h"
 
 #include <gtest/gtest.h>
 
@@ -28,17 +28,20 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 TEST(BatchEmission, RewritesOnlySinAndCosCalls) {
   EXPECT_EQ(rename_trig_calls("sin(a) + cos(b) * sinf(c) - cosf(d)", "offsetgen_batch_"),
             "offsetgen_batch_sin(a) + offsetgen_batch_cos(b) * offsetgen_batch_sinf(c) - offsetgen_batch_cosf(d)");
-  EXPECT_EQ(rename_trig_calls("asin(a) + acos(b) + sinh(c) + cosh(d) + _tsin(e) + x_cos(f) + sin + cos", "offsetgen_batch_"),
-            "asin(a) + acos(b) + sinh(c) + cosh(d) + _tsin(e) + x_cos(f) + sin + cos");
+  EXPECT_EQ(
+      rename_trig_calls("asin(a) + acos(b) + sinh(c) + cosh(d) + _tsin(e) + x_cos(f) + sin + cos", "offsetgen_batch_"),
+      "asin(a) + acos(b) + sinh(c) + cosh(d) + _tsin(e) + x_cos(f) + sin + cos");
   EXPECT_EQ(rename_trig_calls("(sin(cos(x)))", "offsetgen_batch_"), "(offsetgen_batch_sin(offsetgen_batch_cos(x)))");
 }
 
 TEST(BatchEmission, DoubleOnlyHeaderHasDoubleBatchFunctions) {
   const std::string h = header("schwarzp", 2, {Precision::Double});
-  EXPECT_TRUE(has(h, "static inline void schwarzp_o2_offset_n(size_t n, const double *x, const double *y, "
-                     "const double *z, const double *h, double *out)"));
-  EXPECT_TRUE(has(h, "static inline void schwarzp_o2_shell_n(size_t n, const double *x, const double *y, "
-                     "const double *z, const double *t, double *out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void schwarzp_o2_offset_n(size_t n, const double *x, const double *y, "
+                  "const double *z, const double *h, double *out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void schwarzp_o2_shell_n(size_t n, const double *x, const double *y, "
+                  "const double *z, const double *t, double *out)"));
   EXPECT_TRUE(has(h, "OFFSETGEN_BATCH_TRIG_DOUBLE_V1"));
   EXPECT_FALSE(has(h, "OFFSETGEN_BATCH_TRIG_FLOAT_V1"));
   EXPECT_FALSE(has(h, "_offsetf_n"));
@@ -54,10 +57,12 @@ TEST(BatchEmission, DoubleOnlyHeaderHasDoubleBatchFunctions) {
 
 TEST(BatchEmission, BothPrecisionsGiveFloatTwins) {
   const std::string h = header("gyroid", 2, {Precision::Double, Precision::Float});
-  EXPECT_TRUE(has(h, "static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y, "
-                     "const float *z, const float *h, float *out)"));
-  EXPECT_TRUE(has(h, "static inline void gyroid_o2_shellf_n(size_t n, const float *x, const float *y, "
-                     "const float *z, const float *t, float *out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y, "
+                  "const float *z, const float *h, float *out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void gyroid_o2_shellf_n(size_t n, const float *x, const float *y, "
+                  "const float *z, const float *t, float *out)"));
   EXPECT_TRUE(has(h, "OFFSETGEN_BATCH_TRIG_FLOAT_V1"));
   EXPECT_TRUE(has(h, "if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o2_shellf(x[i], y[i], z[i], t[i]);"));
   // Batch functions come after every scalar function they fall back on, before the guard's end.
@@ -74,8 +79,9 @@ TEST(BatchEmission, FloatOnlyHeaderHasOnlyFloatBatch) {
 
 TEST(BatchEmission, TwoDimensionalSignatureHasNoZ) {
   const std::string h = header("", 2, {Precision::Double}, "cos(2*Pi*x) + 0.5*sin(2*Pi*y)", "wave");
-  EXPECT_TRUE(has(h, "static inline void wave_offset_n(size_t n, const double *x, const double *y, "
-                     "const double *h, double *out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void wave_offset_n(size_t n, const double *x, const double *y, "
+                  "const double *h, double *out)"));
 }
 
 TEST(BatchEmission, Deterministic) {

@@ -3,7 +3,7 @@
 
 #include "check/compile.h"
 #include "check/metadata.h"
-#include "emit/generate.h"
+#include "pipeline/generate.h"
 
 #include <memory>
 #include <string>

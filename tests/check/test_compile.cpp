@@ -2,8 +2,8 @@
 #include "check/compile.h"
 #include "check/process.h"
 #include "check_test_support.h"
-#include "emit/generate.h"
 #include "lowering/program.h"
+#include "pipeline/generate.h"
 #include "surfaces/surface.h"
 
 #include <gtest/gtest.h>

@@ -58,8 +58,8 @@ TEST(Metadata, TheModelRebuildsFromTheMetadataAlone) {
   FileMetadata m = parse_metadata(generated_header(), FileKind::C);
   auto ref = rebuild_reference(m);
   EXPECT_EQ(ref->generation.prefix, "gyroid_o3");
-  EXPECT_EQ(ref->generation.model.order, 3);
-  EXPECT_DOUBLE_EQ(ref->generation.programs.gradient_bound, m.gradient_bound);
+  EXPECT_EQ(ref->generation.order(), 3);
+  EXPECT_DOUBLE_EQ(ref->generation.construction->bounds().gradient, m.gradient_bound);
   EXPECT_TRUE(ref->warnings.empty()) << ref->warnings.front();
 }
 
@@ -103,8 +103,8 @@ TEST(Metadata, AnUnknownFormatIsRefused) {
 }
 
 TEST(Metadata, AMetadataSurfaceThisOffsetgenDoesNotKnowIsAnInputError) {
-  FileMetadata m = parse_metadata(replace(generated_header(), "\"surface\":\"gyroid\"", "\"surface\":\"nosuch\""),
-                                  FileKind::C);
+  FileMetadata m =
+      parse_metadata(replace(generated_header(), "\"surface\":\"gyroid\"", "\"surface\":\"nosuch\""), FileKind::C);
   try {
     rebuild_reference(m);
     FAIL() << "expected an InputError";
@@ -121,7 +121,9 @@ TEST(Metadata, KindFollowsTheExtension) {
 
 TEST(Metadata, BinaryAndMissingFilesAreInputErrors) {
   const std::string dir = testing::scratch_dir("metadata-binary");
-  testing::write_text(dir + "/bin.h", std::string("\x7f" "ELF\0\0\0", 7));
+  testing::write_text(dir + "/bin.h", std::string("\x7f"
+                                                  "ELF\0\0\0",
+                                                  7));
   EXPECT_THROW(read_metadata(dir + "/bin.h"), InputError);
   EXPECT_THROW(read_metadata(dir + "/missing.h"), InputError);
 }

@@ -20,7 +20,8 @@ TEST(Cli, HelpVersionAndList) {
   EXPECT_NE(version.output.find(std::string("offsetgen ") + OFFSETGEN_VERSION), std::string::npos) << version.output;
   auto list = run_offsetgen("list");
   EXPECT_EQ(list.exit_code, 0);
-  for (const char* name : {"gyroid", "schwarzp", "diamond", "neovius", "iwp", "fischerkoch", "lidinoid", "splitp", "frd"})
+  for (const char* name :
+       {"gyroid", "schwarzp", "diamond", "neovius", "iwp", "fischerkoch", "lidinoid", "splitp", "frd"})
     EXPECT_NE(list.output.find(name), std::string::npos) << name;
   EXPECT_EQ(run_offsetgen("").exit_code, 2);
   EXPECT_EQ(run_offsetgen("generate --no-such-option").exit_code, 2);
@@ -44,8 +45,10 @@ TEST(Cli, GeneratesAHeaderWithTheDocumentedApiAndNoTimestamp) {
 
 TEST(Cli, UserExpressionTwoDimensionsAndGradedThickness) {
   std::string dir = testing::fresh_directory("cli_expr");
-  auto r = run_offsetgen("generate --expr \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\" --param a=0.3 --name mysurf "
-                         "--order 3 --thickness \"0.01 + 0.02*x\" -o " + dir + "/mysurf.h");
+  auto r = run_offsetgen(
+      "generate --expr \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\" --param a=0.3 --name mysurf "
+      "--order 3 --thickness \"0.01 + 0.02*x\" -o " +
+      dir + "/mysurf.h");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::string h = testing::read_file(dir + "/mysurf.h");
   EXPECT_NE(h.find("static inline double mysurf_graded(double x, double y, double z)"), std::string::npos);
@@ -87,20 +90,21 @@ TEST_P(CliBadInput, ExitsTwoWithAMessageAndTouchesNoFile) {
 
 INSTANTIATE_TEST_SUITE_P(
     EveryCase, CliBadInput,
-    ::testing::Values(
-        BadInput{"generate --surface gyroide --order 2", "unknown surface 'gyroide'; known surfaces: gyroid, schwarzp"},
-        BadInput{"generate --expr \"cos(2*x\" --name s", "cannot parse expression"},
-        BadInput{"generate --expr \"3*a\" --param a=2 --name s", "does not depend on x, y or z"},
-        BadInput{"generate --expr \"abs(x) + y\" --name s", "non-smooth function 'abs'"},
-        BadInput{"generate --expr \"floor(x) + y\" --name s", "non-smooth function 'floor'"},
-        BadInput{"generate --expr \"a*x + y\" --name s", "unknown parameter 'a'"},
-        BadInput{"generate --expr \"a*x + y\" --param a= --name s", "malformed parameter"},
-        BadInput{"generate --surface gyroid --order 0", "order 0 is out of range"},
-        BadInput{"generate --surface gyroid --order 13", "order 13 is out of range: offsetgen supports orders 1 to 12"},
-        BadInput{"generate --surface gyroid --order 2 -o /nonexistent-dir/x.h", "does not exist"},
-        BadInput{"generate --surface gyroid --order 2 --thickness \"0.1 + * x\"", "thickness"},
-        BadInput{"generate --expr \"x + y\" --order 2", "--expr needs --name"},
-        BadInput{"generate --surface gyroid --lang fortran", "fortran"}),
+    ::testing::Values(BadInput{"generate --surface gyroide --order 2",
+                               "unknown surface 'gyroide'; known surfaces: gyroid, schwarzp"},
+                      BadInput{"generate --expr \"cos(2*x\" --name s", "cannot parse expression"},
+                      BadInput{"generate --expr \"3*a\" --param a=2 --name s", "does not depend on x, y or z"},
+                      BadInput{"generate --expr \"abs(x) + y\" --name s", "non-smooth function 'abs'"},
+                      BadInput{"generate --expr \"floor(x) + y\" --name s", "non-smooth function 'floor'"},
+                      BadInput{"generate --expr \"a*x + y\" --name s", "unknown parameter 'a'"},
+                      BadInput{"generate --expr \"a*x + y\" --param a= --name s", "malformed parameter"},
+                      BadInput{"generate --surface gyroid --order 0", "order 0 is out of range"},
+                      BadInput{"generate --surface gyroid --order 13",
+                               "order 13 is out of range: the richardson method supports orders 1 to 12"},
+                      BadInput{"generate --surface gyroid --order 2 -o /nonexistent-dir/x.h", "does not exist"},
+                      BadInput{"generate --surface gyroid --order 2 --thickness \"0.1 + * x\"", "thickness"},
+                      BadInput{"generate --expr \"x + y\" --order 2", "--expr needs --name"},
+                      BadInput{"generate --surface gyroid --lang fortran", "fortran"}),
     [](const auto& p) { return "case" + std::to_string(p.index); });
 
 TEST(Cli, WritesOnlyWhenTheContentChanges) {

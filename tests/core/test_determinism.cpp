@@ -1,4 +1,4 @@
-#include "emit/generate.h"
+#include "pipeline/generate.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Compiles the committed golden headers (as C++ here; as strict C99 by the golden_c99_* tests) and
 // checks their values against the 40-digit symbolic reference, and the float twins against double.
-#include "offset/high_precision.h"
+#include "offset/offset_reference.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -8,22 +8,22 @@
 #include <cmath>
 #include <random>
 
-#include "gyroid_o1.h"
-#include "gyroid_o2.h"
-#include "gyroid_o3.h"
-#include "gyroid_o4.h"
-#include "schwarzp_o1.h"
-#include "schwarzp_o2.h"
-#include "schwarzp_o3.h"
-#include "schwarzp_o4.h"
-#include "neovius_o1.h"
-#include "neovius_o2.h"
-#include "neovius_o3.h"
-#include "neovius_o4.h"
 #include "diamond_o1.h"
 #include "diamond_o2.h"
 #include "diamond_o3.h"
 #include "diamond_o4.h"
+#include "gyroid_o1.h"
+#include "gyroid_o2.h"
+#include "gyroid_o3.h"
+#include "gyroid_o4.h"
+#include "neovius_o1.h"
+#include "neovius_o2.h"
+#include "neovius_o3.h"
+#include "neovius_o4.h"
+#include "schwarzp_o1.h"
+#include "schwarzp_o2.h"
+#include "schwarzp_o3.h"
+#include "schwarzp_o4.h"
 
 namespace offsetgen {
 namespace {
@@ -37,7 +37,8 @@ struct Emitted {
   void (*normal)(double, double, double, double, double*);
 };
 
-#define OFFSETGEN_ENTRY(s, m) Emitted{#s, m, s##_o##m##_offset, s##_o##m##_shell, s##_o##m##_offsetf, s##_o##m##_normal}
+#define OFFSETGEN_ENTRY(s, m) \
+  Emitted { #s, m, s##_o##m##_offset, s##_o##m##_shell, s##_o##m##_offsetf, s##_o##m##_normal }
 #define OFFSETGEN_ORDERS(s) OFFSETGEN_ENTRY(s, 1), OFFSETGEN_ENTRY(s, 2), OFFSETGEN_ENTRY(s, 3), OFFSETGEN_ENTRY(s, 4)
 const Emitted kGolden[] = {OFFSETGEN_ORDERS(gyroid), OFFSETGEN_ORDERS(schwarzp), OFFSETGEN_ORDERS(neovius),
                            OFFSETGEN_ORDERS(diamond)};
@@ -47,7 +48,7 @@ TEST(GoldenValues, CompiledHeadersMatchThe40DigitReference) {
   std::uniform_real_distribution<double> unit(0.0, 1.0), step(-0.05, 0.05);
   for (const Emitted& e : kGolden) {
     auto b = testing::build(e.surface, e.order);
-    HighPrecisionEvaluator reference(b->surface, b->model, {b->programs.gradient_bound, b->programs.hessian_bound});
+    OffsetReference reference(b->surface, *b->construction);
     double worst = 0, worst_float = 0, worst_normal = 0;
     Evaluator normal(b->programs.normal);
     for (int i = 0; i < 20; ++i) {
@@ -59,17 +60,20 @@ TEST(GoldenValues, CompiledHeadersMatchThe40DigitReference) {
       const double got = e.offset(x, y, z, h);
       worst = std::max(worst, std::fabs(got - ref) / std::max(std::sqrt(grad), 1.0));
       worst_float = std::max(worst_float, std::fabs(double(e.offsetf(float(x), float(y), float(z), float(h))) - got));
-      EXPECT_NEAR(e.shell(x, y, z, 2 * std::fabs(h)), e.offset(x, y, z, std::fabs(h)) * e.offset(x, y, z, -std::fabs(h)), 1e-12);
+      EXPECT_NEAR(e.shell(x, y, z, 2 * std::fabs(h)),
+                  e.offset(x, y, z, std::fabs(h)) * e.offset(x, y, z, -std::fabs(h)), 1e-12);
       double n[3];
       e.normal(x, y, z, h, n);
       auto expected = normal({x, y, z, h});
-      for (int c = 0; c < 3; ++c) worst_normal = std::max(worst_normal, std::fabs(n[c] - expected[static_cast<size_t>(c)]));
+      for (int c = 0; c < 3; ++c)
+        worst_normal = std::max(worst_normal, std::fabs(n[c] - expected[static_cast<size_t>(c)]));
       EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-12);
     }
     EXPECT_LT(worst, 1e-12) << e.surface << " o" << e.order;
     EXPECT_LT(worst_float, 2e-5) << e.surface << " o" << e.order;
     EXPECT_LT(worst_normal, 1e-13) << e.surface << " o" << e.order;
-    std::cout << e.surface << " o" << e.order << ": zero-set shift " << worst << ", float deviation " << worst_float << "\n";
+    std::cout << e.surface << " o" << e.order << ": zero-set shift " << worst << ", float deviation " << worst_float
+              << "\n";
   }
 }
 

@@ -1,6 +1,7 @@
 // The symbolic construction against independent derivations, and the lowering against it.
-#include "offset/high_precision.h"
+#include "offset/offset_reference.h"
 #include "offset/richardson.h"
+#include "offset/richardson_method.h"
 #include "surfaces/expression_input.h"
 #include "test_support.h"
 
@@ -17,8 +18,8 @@ namespace {
 TEST(CircleIdentities, FirstOrderIsMinusHSquaredAndSecondOrderIsExact) {
   Surface circle = parse_user_expression("x^2 + y^2 - 9", {}, "circle");
   for (int order : {1, 2}) {
-    OffsetModel model = build_offset_model(circle, order, false);
-    HighPrecisionEvaluator exact(circle, model, SafeguardBounds{});
+    auto raw = build_richardson(circle, order, CellBounds{});
+    OffsetReference exact(circle, *raw);
     for (auto h : {GiNaC::numeric(1, 10), GiNaC::numeric(-1, 7), GiNaC::numeric(3, 5)}) {
       GiNaC::numeric phi = exact.offset({3 + h, 0}, h);
       EXPECT_TRUE(phi.is_rational()) << phi;
@@ -52,8 +53,8 @@ TEST(OffsetModel, JetChainsEqualNaiveNestedDifferentiation) {
   for (const char* name : {"gyroid", "neovius", "iwp"}) {
     Surface s = catalog_surface(name);
     for (int order = 1; order <= 3; ++order) {
-      OffsetModel model = build_offset_model(s, order, false);
-      HighPrecisionEvaluator jets(s, model, SafeguardBounds{}, 30);
+      auto raw = build_richardson(s, order, CellBounds{});
+      OffsetReference jets(s, *raw, 30);
       GiNaC::ex naive = naive_offset(s, order, h);
       for (int trial = 0; trial < 3; ++trial) {
         GiNaC::numeric x(1 + trial, 10), y(2 + trial, 7), z(3, 11 + trial), hv(trial - 1, 50);
@@ -61,7 +62,8 @@ TEST(OffsetModel, JetChainsEqualNaiveNestedDifferentiation) {
         GiNaC::ex value = naive.subs(GiNaC::lst{sym.X == k * x, sym.Y == k * y, sym.Z == k * z, h == k * hv}).evalf();
         GiNaC::numeric expected = GiNaC::ex_to<GiNaC::numeric>(value);
         GiNaC::numeric got = jets.offset({x, y, z}, hv);
-        EXPECT_LT(GiNaC::abs(got - expected).to_double(), 1e-25) << name << " order " << order << " got " << got << " expected " << expected;
+        EXPECT_LT(GiNaC::abs(got - expected).to_double(), 1e-25)
+            << name << " order " << order << " got " << got << " expected " << expected;
       }
     }
   }
@@ -76,7 +78,7 @@ TEST(Lowering, ProgramMatches40DigitReference) {
   for (const char* name : {"gyroid", "schwarzp", "neovius"}) {
     for (int order = 1; order <= 6; ++order) {
       auto b = testing::build(name, order);
-      HighPrecisionEvaluator reference(b->surface, b->model, {b->programs.gradient_bound, b->programs.hessian_bound});
+      OffsetReference reference(b->surface, *b->construction);
       Evaluator offset(b->programs.offset);
       double worst = 0;
       for (int i = 0; i < 12; ++i) {
@@ -97,8 +99,8 @@ TEST(Lowering, ProgramMatches40DigitReference) {
 TEST(Lowering, CellLengthScalingIsExact) {
   // Schwarz P with cell length L = 2 written by hand equals the catalog function at (p/L, h/L).
   Surface big = parse_user_expression("cos(Pi*x) + cos(Pi*y) + cos(Pi*z)", {}, "big");
-  OffsetModel model = build_offset_model(big, 4, true);
-  SurfacePrograms programs = lower_surface(big, model, {});
+  auto construction = offset_method("richardson").build(big, 4);
+  SurfacePrograms programs = lower_surface(big, *construction, {});
   auto unit = testing::build("schwarzp", 4);
   Evaluator scaled(programs.offset), reference(unit->programs.offset);
   for (double x : {0.1, 0.7, 1.3}) {
@@ -122,10 +124,11 @@ TEST(OffsetModel, RawFormulasBlowUpWhereTheGradientVanishes) {
   // Gyroid at (1/8, 1/8, 1/8): grad F = 0. The unclamped G is undefined there;
   // this is what the safeguard exists for (tests/core/test_safeguard.cpp).
   auto b = testing::build("gyroid", 4);
-  HighPrecisionEvaluator raw(b->surface, b->model, SafeguardBounds{}, 40);
+  auto unclamped = build_richardson(b->surface, 4, CellBounds{});
+  OffsetReference raw(b->surface, *unclamped, 40);
   GiNaC::numeric eighth(1, 8);
   // At 40 digits the gradient cancels to exactly zero there, and the raw chain divides by it.
-  EXPECT_THROW(raw.weighted_norms({eighth, eighth, eighth}, GiNaC::numeric(1, 20)), std::exception);
+  EXPECT_THROW(raw.offset({eighth, eighth, eighth}, GiNaC::numeric(1, 20)), std::exception);
   Evaluator safe(b->programs.offset);
   double phi = safe({0.125, 0.125, 0.125, 0.05})[0];
   EXPECT_TRUE(std::isfinite(phi));

@@ -2,6 +2,7 @@
 // points (multiples of 1/8) where gradients vanish, for every catalog surface and orders 1-8.
 // The programs checked here are the ones the emitters print; tests/core/test_golden_values.cpp and
 // the check stage tie the printed C to them.
+#include "offset/offset_model.h"
 #include "test_support.h"
 
 #include "surfaces/expression_input.h"
@@ -41,7 +42,7 @@ TEST_P(Safeguard, FiniteEverywhereAndNeverTheWrongSideFarFromTheSurface) {
   const auto& [name, order] = GetParam();
   auto b = testing::build(name, order);
   const double max_gradient = estimated_max_gradient(b->programs.field, 40);
-  EXPECT_LE(max_gradient, b->programs.gradient_bound * 6.2831853071795862 * (1 + 1e-6));
+  EXPECT_LE(max_gradient, b->bounds().gradient * 6.2831853071795862 * (1 + 1e-6));
 
   Evaluator field(b->programs.field), offset(b->programs.offset), shell(b->programs.shell), normal(b->programs.normal);
   const int n = order <= 4 ? 24 : 16;  // both contain every multiple of 1/8
@@ -57,7 +58,8 @@ TEST_P(Safeguard, FiniteEverywhereAndNeverTheWrongSideFarFromTheSurface) {
           const bool far = std::fabs(F) > t / 2 * max_gradient;
           if (far) {
             ++checked_far;
-            ASSERT_GT(Phi, 0) << name << " o" << order << " phantom wall at " << x << "," << y << "," << z << " t " << t;
+            ASSERT_GT(Phi, 0) << name << " o" << order << " phantom wall at " << x << "," << y << "," << z << " t "
+                              << t;
           }
           const bool lattice = i % (n / 8) == 0 && j % (n / 8) == 0 && k % (n / 8) == 0;
           if (!lattice && order > 4) continue;  // offsets and normals: every point up to order 4
@@ -83,7 +85,7 @@ TEST_P(Safeguard, ZeroSetsStayNextToTheFirstOrderOffset) {
   const auto& [name, order] = GetParam();
   if (order < 2 || order > 6) GTEST_SKIP() << "order 1 has no interval; orders 7-8 are costly here";
   auto b = testing::build(name, order);
-  const double H = b->programs.hessian_bound;
+  const double H = b->bounds().hessian;
   ASSERT_GT(H, 0);
   Evaluator field(b->programs.field), offset(b->programs.offset);
   const double scale = 6.2831853071795862, d = 1e-6;
@@ -126,14 +128,14 @@ TEST(SafeguardInterval, NeoviusOrder4HasNoPhantomWallNextToItsSaddle) {
 TEST(SafeguardBound, FiniteForGradientsWithPolesInTheCell) {
   for (const char* text : {"x^y", "log(x) + y", "1/(x + 0.001) + y"}) {
     const Surface surface = parse_user_expression(text, {}, "pole");
-    const OffsetModel model = build_offset_model(surface, 1, true);
-    const double bound = max_gradient_norm(surface, model);
+    const auto construction = offset_method("richardson").build(surface, 1);
+    const double bound = construction->bounds().gradient;
     EXPECT_TRUE(std::isfinite(bound)) << text;
     EXPECT_GT(bound, 1.0) << text;
   }
   // The smooth quarter circle's gradient (2x, 2y) peaks at (1, 1): |grad F| = 2 sqrt(2).
   const Surface circle = parse_user_expression("x^2 + y^2 - 0.25", {}, "circle");
-  EXPECT_NEAR(max_gradient_norm(circle, build_offset_model(circle, 1, true)), 2 * std::sqrt(2.0), 1e-5);
+  EXPECT_NEAR(offset_method("richardson").build(circle, 1)->bounds().gradient, 2 * std::sqrt(2.0), 1e-5);
 }
 
 std::vector<Case> all_cases() {

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "lowering/surface_programs.h"
-#include "offset/offset_model.h"
+#include "offset/method.h"
 #include "surfaces/catalog.h"
 
 #include <memory>
@@ -12,15 +12,16 @@ namespace offsetgen::testing {
 
 struct Built {
   Surface surface;
-  OffsetModel model;
+  std::unique_ptr<OffsetConstruction> construction;
   SurfacePrograms programs;
+  const CellBounds& bounds() const { return construction->bounds(); }
 };
 
-inline std::unique_ptr<Built> build(const std::string& name, int order) {
+inline std::unique_ptr<Built> build(const std::string& name, int order, const std::string& method = "richardson") {
   auto b = std::make_unique<Built>();
   b->surface = catalog_surface(name);
-  b->model = build_offset_model(b->surface, order, true);
-  b->programs = lower_surface(b->surface, b->model, {});
+  b->construction = offset_method(method).build(b->surface, order);
+  b->programs = lower_surface(b->surface, *b->construction, {});
   return b;
 }
 

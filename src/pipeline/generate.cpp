@@ -1,4 +1,4 @@
-#include "emit/generate.h"
+#include "pipeline/generate.h"
 
 #include "emit/c_emitter.h"
 #include "emit/emitted_api.h"
@@ -11,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cctype>
-#include <sstream>
 
 namespace offsetgen {
 namespace {
@@ -23,6 +22,7 @@ void require_identifier(const std::string& name) {
 }
 
 nlohmann::ordered_json metadata(const GenerationRequest& request, const Generation& g) {
+  const MethodFacts& method = g.method();
   nlohmann::ordered_json j;
   j["format"] = 1;
   j["generator"] = std::string("offsetgen ") + OFFSETGEN_VERSION;
@@ -32,15 +32,20 @@ nlohmann::ordered_json metadata(const GenerationRequest& request, const Generati
   j["params"] = request.params;
   j["scale"] = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(g.surface.scale)).to_double();
   j["dims"] = g.surface.dims;
-  j["order"] = request.order;
+  j["method"] = method.method;
+  j["order"] = method.order;
+  if (method.requested_order != method.order) j["requested_order"] = method.requested_order;
+  j["graded_order"] = method.graded_order;
+  j["graded_wall_order"] = method.graded_wall_order;
+  for (const auto& [key, value] : method.metadata.items()) j[key] = value;
   j["thickness"] = request.thickness ? nlohmann::ordered_json(*request.thickness) : nlohmann::ordered_json();
   std::vector<std::string> precisions;
   for (auto p : request.precisions) precisions.push_back(p == Precision::Double ? "double" : "float");
   j["precisions"] = precisions;
-  j["gradient_bound"] = g.programs.gradient_bound;
-  j["hessian_bound"] = g.programs.hessian_bound;
+  j["gradient_bound"] = g.construction->bounds().gradient;
+  j["hessian_bound"] = g.construction->bounds().hessian;
   nlohmann::ordered_json ops;
-  for (const auto& f : emitted_functions(g.programs, g.surface.dims)) ops[f.suffix] = count_ops(*f.program);
+  for (const auto& f : emitted_functions(g.programs, g.surface.dims, method)) ops[f.suffix] = count_ops(*f.program);
   j["ops"] = ops;
   return j;
 }
@@ -65,31 +70,47 @@ Surface resolve_surface(const GenerationRequest& request) {
   return parse_user_expression(request.expression, surface_params, request.name);
 }
 
-Generation generate(const GenerationRequest& request) {
-  if (request.order < 1 || request.order > kMaxOrder)
-    throw InputError(fmt::format("order {} is out of range: offsetgen supports orders 1 to {}", request.order, kMaxOrder));
+const OffsetMethod& resolve_method(const GenerationRequest& request) {
+  const OffsetMethod& method = offset_method(request.method);
+  if (request.order < 1 || request.order > method.max_order())
+    throw InputError(fmt::format("order {} is out of range: the {} method supports orders 1 to {}", request.order,
+                                 method.name(), method.max_order()));
+  return method;
+}
+
+std::string default_prefix(const GenerationRequest& request) {
+  const int order = resolve_method(request).effective_order(request.order);
+  return fmt::format("{}_o{}", resolve_surface(request).name, order);
+}
+
+Generation build_generation(const GenerationRequest& request) {
+  const OffsetMethod& method = resolve_method(request);
   if (!request.name.empty()) require_identifier(request.name);
   Generation g;
   g.surface = resolve_surface(request);
-  g.prefix = request.name.empty() ? fmt::format("{}_o{}", g.surface.name, request.order) : request.name;
+  g.prefix = request.name.empty() ? fmt::format("{}_o{}", g.surface.name, method.effective_order(request.order))
+                                  : request.name;
 
   LoweringOptions options;
-  if (request.thickness) options.thickness = parse_thickness_expression(*request.thickness, request.params, g.surface.dims);
+  if (request.thickness)
+    options.thickness = parse_thickness_expression(*request.thickness, request.params, g.surface.dims);
 
-  g.model = build_offset_model(g.surface, request.order, /*with_gradient=*/true);
-  g.programs = lower_surface(g.surface, g.model, options);
+  g.construction = method.build(g.surface, request.order);
+  g.programs = lower_surface(g.surface, *g.construction, options);
   g.metadata_json = metadata(request, g).dump();
+  return g;
+}
 
+Generation generate(const GenerationRequest& request) {
+  Generation g = build_generation(request);
   FileFacts facts;
   facts.prefix = g.prefix;
   facts.command = request.command;
-  facts.order = request.order;
   facts.dims = g.surface.dims;
   facts.surface = &g.surface;
-  facts.gradient_bound = g.programs.gradient_bound;
-  facts.hessian_bound = g.programs.hessian_bound;
+  facts.method = &g.method();
   facts.metadata_json = g.metadata_json;
-  auto functions = emitted_functions(g.programs, g.surface.dims);
+  auto functions = emitted_functions(g.programs, g.surface.dims, g.method());
   if (request.c) {
     facts.file_name = request.c_file_name.empty() ? g.prefix + ".h" : request.c_file_name;
     g.c_header = emit_c_header(facts, functions, request.precisions);

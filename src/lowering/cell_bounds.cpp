@@ -1,0 +1,142 @@
+#include "lowering/cell_bounds.h"
+
+#include "lowering/lower.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace offsetgen {
+namespace {
+
+double numeric_value(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double(); }
+
+}  // namespace
+
+namespace {
+
+// Per start of the compass search; a smooth maximum needs a few hundred.
+constexpr int kMaxSearchEvaluations = 20000;
+
+// The maximum of f over one cell [0, extent]^dims: a grid, then compass refinement from the 8 best
+// samples. Non-finite values (poles of log, 1/x, ...) are skipped and the refinement is capped, so
+// a pole cannot stall it.
+double maximum_over_cell(int dims, double extent, const std::function<double(const std::vector<double>&)>& f,
+                         const char* what) {
+  const int n = dims == 3 ? 24 : 96;
+  std::vector<std::pair<double, std::vector<double>>> best;
+  std::vector<double> p(static_cast<size_t>(dims));
+  const int total = dims == 3 ? n * n * n : n * n;
+  for (int index = 0; index < total; ++index) {
+    int rest = index;
+    for (int i = 0; i < dims; ++i) {
+      p[static_cast<size_t>(i)] = extent * (rest % n + 0.5) / n;
+      rest /= n;
+    }
+    const double value = f(p);
+    if (std::isfinite(value)) best.push_back({value, p});
+  }
+  if (best.empty())
+    throw std::runtime_error(std::string(what) +
+                             " is not finite anywhere on the sampled cell, so the safeguard has "
+                             "no bound");
+  const size_t starts = std::min<size_t>(8, best.size());
+  std::partial_sort(best.begin(), best.begin() + static_cast<long>(starts), best.end(),
+                    [](const auto& a, const auto& b) { return a.first > b.first; });
+
+  double maximum = best.front().first;
+  for (size_t s = 0; s < starts; ++s) {
+    auto [value, point] = best[s];
+    int evaluations = 0;
+    for (double step = extent / n; step > extent * 1e-13 && evaluations < kMaxSearchEvaluations;) {
+      bool improved = false;
+      for (int i = 0; i < dims && !improved; ++i) {
+        for (double direction : {1.0, -1.0}) {
+          auto trial = point;
+          trial[static_cast<size_t>(i)] = std::clamp(trial[static_cast<size_t>(i)] + direction * step, 0.0, extent);
+          const double v = f(trial);
+          ++evaluations;
+          if (std::isfinite(v) && v > value) {
+            value = v;
+            point = trial;
+            improved = true;
+            break;
+          }
+        }
+      }
+      if (!improved) step *= 0.5;
+    }
+    maximum = std::max(maximum, value);
+  }
+  return maximum;
+}
+
+// Largest |eigenvalue| of a symmetric 2x2 or 3x3 matrix (row-major), in closed form.
+double symmetric_spectral_norm(const std::vector<double>& a, int dims) {
+  if (dims == 2) {
+    const double mean = (a[0] + a[3]) / 2, radius = std::hypot((a[0] - a[3]) / 2, a[1]);
+    return std::fabs(mean) + radius;
+  }
+  const double off = a[1] * a[1] + a[2] * a[2] + a[5] * a[5];
+  const double q = (a[0] + a[4] + a[8]) / 3;
+  const double d0 = a[0] - q, d1 = a[4] - q, d2 = a[8] - q;
+  const double p = std::sqrt((d0 * d0 + d1 * d1 + d2 * d2 + 2 * off) / 6);
+  if (!(p > 0)) return std::fabs(q);
+  // Eigenvalues q + 2p cos(theta + 2 pi k / 3), theta = acos(det((A - q I) / p) / 2) / 3.
+  const double det = d0 * (d1 * d2 - a[5] * a[5]) - a[1] * (a[1] * d2 - a[5] * a[2]) + a[2] * (a[1] * a[5] - d1 * a[2]);
+  const double r = std::clamp(det / (2 * p * p * p), -1.0, 1.0);
+  const double theta = std::acos(r) / 3;
+  const double largest = q + 2 * p * std::cos(theta);
+  const double smallest = q + 2 * p * std::cos(theta + 2.0943951023931957);
+  return std::max(std::fabs(largest), std::fabs(smallest));
+}
+
+// Lowers expressions of the natural coordinates into one program with one output each.
+Program natural_program(const AtomTable& atoms, int dims, const std::vector<GiNaC::ex>& outputs) {
+  std::vector<std::string> names = {"x", "y"};
+  if (dims == 3) names.push_back("z");
+  Program program(names);
+  Lowerer lowerer(program, atoms);
+  Environment env;
+  const Symbols& sym = Symbols::get();
+  for (int i = 0; i < dims; ++i) env.bindings.emplace_back(sym.natural(i), program.input(i));
+  for (size_t k = 0; k < outputs.size(); ++k)
+    program.add_output("o" + std::to_string(k), lowerer.lower(outputs[k], env));
+  return program;
+}
+
+}  // namespace
+
+double max_gradient_norm(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field) {
+  const Program program = natural_program(atoms, surface.dims, field.gradient());
+  Evaluator gradient(program);  // keeps a reference to the program
+  auto norm2 = [&](const std::vector<double>& p) {
+    double sum = 0;
+    for (double g : gradient(p)) sum += g * g;
+    return sum;
+  };
+  const double maximum = maximum_over_cell(surface.dims, numeric_value(surface.scale), norm2, "the gradient of F");
+  // A relative margin well above the refinement's resolution keeps M an upper bound, also after
+  // rounding to float.
+  return std::sqrt(maximum) * (1 + 1e-6);
+}
+
+double max_hessian_norm(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field) {
+  if (!field.has_hessian()) return 0;
+  std::vector<GiNaC::ex> entries;
+  for (int i = 0; i < field.dims; ++i)
+    for (int j = 0; j < field.dims; ++j) entries.push_back(field.hessian(i, j));
+  const Program program = natural_program(atoms, surface.dims, entries);
+  Evaluator hessian(program);
+  auto norm = [&](const std::vector<double>& p) { return symmetric_spectral_norm(hessian(p), surface.dims); };
+  return maximum_over_cell(surface.dims, numeric_value(surface.scale), norm, "the Hessian of F") * (1 + 1e-6);
+}
+
+CellBounds cell_bounds(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field) {
+  return {max_gradient_norm(surface, atoms, field), max_hessian_norm(surface, atoms, field)};
+}
+
+}  // namespace offsetgen
