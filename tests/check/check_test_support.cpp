@@ -21,10 +21,11 @@ std::string scratch_dir(const std::string& name) {
 }
 
 std::string write_header(const std::string& dir, const std::string& surface, int order, const std::string& thickness,
-                         bool glsl) {
+                         bool glsl, const std::string& method) {
   GenerationRequest request;
   request.surface = surface;
   request.order = order;
+  request.method = method;
   request.c = !glsl;
   request.glsl = glsl;
   if (!thickness.empty()) request.thickness = thickness;
@@ -47,10 +48,11 @@ void write_text(const std::string& path, const std::string& text) {
   out << text;
 }
 
-std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order, const std::string& thickness) {
+std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order, const std::string& thickness,
+                                          const std::string& method) {
   auto c = std::make_unique<Compiled>();
-  const std::string dir = scratch_dir(surface + std::to_string(order) + (thickness.empty() ? "" : "g"));
-  c->path = write_header(dir, surface, order, thickness);
+  const std::string dir = scratch_dir(method + "-" + surface + std::to_string(order) + (thickness.empty() ? "" : "g"));
+  c->path = write_header(dir, surface, order, thickness, false, method);
   c->meta = read_metadata(c->path);
   CompileOptions options;
   options.optimization = "-O0";

@@ -17,7 +17,8 @@ std::string scratch_dir(const std::string& name);
 // Generates `surface` at `order` (optionally graded) and writes the C header (or the GLSL snippet)
 // into `dir`; returns the path.
 std::string write_header(const std::string& dir, const std::string& surface, int order,
-                         const std::string& thickness = "", bool glsl = false);
+                         const std::string& thickness = "", bool glsl = false,
+                         const std::string& method = kDefaultMethod);
 
 std::string read_text(const std::string& path);
 void write_text(const std::string& path, const std::string& text);
@@ -29,7 +30,8 @@ struct Compiled {
   CompileResult result;
   const LoadedFunctions& functions() const { return result.library->functions(); }
 };
-std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order, const std::string& thickness = "");
+std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order, const std::string& thickness = "",
+                                          const std::string& method = kDefaultMethod);
 
 struct CliResult {
   int exit_code = -1;
