@@ -12,6 +12,22 @@
 #include "diamond_o2.h"
 #include "diamond_o3.h"
 #include "diamond_o4.h"
+#include "gyroid_proj_o2.h"
+#include "gyroid_proj_o4.h"
+#include "gyroid_proj_o6.h"
+#include "gyroid_proj_o8.h"
+#include "schwarzp_proj_o2.h"
+#include "schwarzp_proj_o4.h"
+#include "schwarzp_proj_o6.h"
+#include "schwarzp_proj_o8.h"
+#include "neovius_proj_o2.h"
+#include "neovius_proj_o4.h"
+#include "neovius_proj_o6.h"
+#include "neovius_proj_o8.h"
+#include "diamond_proj_o2.h"
+#include "diamond_proj_o4.h"
+#include "diamond_proj_o6.h"
+#include "diamond_proj_o8.h"
 #include "gyroid_o1.h"
 #include "gyroid_o2.h"
 #include "gyroid_o3.h"
@@ -29,6 +45,7 @@ namespace offsetgen {
 namespace {
 
 struct Emitted {
+  const char* method;
   const char* surface;
   int order;
   double (*offset)(double, double, double, double);
@@ -38,16 +55,24 @@ struct Emitted {
 };
 
 #define OFFSETGEN_ENTRY(s, m) \
-  Emitted { #s, m, s##_o##m##_offset, s##_o##m##_shell, s##_o##m##_offsetf, s##_o##m##_normal }
+  Emitted{"richardson", #s, m, s##_o##m##_offset, s##_o##m##_shell, s##_o##m##_offsetf, s##_o##m##_normal}
 #define OFFSETGEN_ORDERS(s) OFFSETGEN_ENTRY(s, 1), OFFSETGEN_ENTRY(s, 2), OFFSETGEN_ENTRY(s, 3), OFFSETGEN_ENTRY(s, 4)
-const Emitted kGolden[] = {OFFSETGEN_ORDERS(gyroid), OFFSETGEN_ORDERS(schwarzp), OFFSETGEN_ORDERS(neovius),
-                           OFFSETGEN_ORDERS(diamond)};
+#define OFFSETGEN_PROJ(s, m)                                                                             \
+  Emitted{"projection", #s, m, s##_proj_o##m##_offset, s##_proj_o##m##_shell, s##_proj_o##m##_offsetf, \
+          s##_proj_o##m##_normal}
+#define OFFSETGEN_PROJ_ORDERS(s) OFFSETGEN_PROJ(s, 2), OFFSETGEN_PROJ(s, 4), OFFSETGEN_PROJ(s, 6), OFFSETGEN_PROJ(s, 8)
+// clang-format off
+const Emitted kGolden[] = {
+    OFFSETGEN_ORDERS(gyroid), OFFSETGEN_ORDERS(schwarzp), OFFSETGEN_ORDERS(neovius), OFFSETGEN_ORDERS(diamond),
+    OFFSETGEN_PROJ_ORDERS(gyroid), OFFSETGEN_PROJ_ORDERS(schwarzp), OFFSETGEN_PROJ_ORDERS(neovius),
+    OFFSETGEN_PROJ_ORDERS(diamond)};
+// clang-format on
 
 TEST(GoldenValues, CompiledHeadersMatchThe40DigitReference) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0), step(-0.05, 0.05);
   for (const Emitted& e : kGolden) {
-    auto b = testing::build(e.surface, e.order);
+    auto b = testing::build(e.surface, e.order, e.method);
     OffsetReference reference(b->surface, *b->construction);
     double worst = 0, worst_float = 0, worst_normal = 0;
     Evaluator normal(b->programs.normal);
@@ -69,9 +94,9 @@ TEST(GoldenValues, CompiledHeadersMatchThe40DigitReference) {
         worst_normal = std::max(worst_normal, std::fabs(n[c] - expected[static_cast<size_t>(c)]));
       EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-12);
     }
-    EXPECT_LT(worst, 1e-12) << e.surface << " o" << e.order;
-    EXPECT_LT(worst_float, 2e-5) << e.surface << " o" << e.order;
-    EXPECT_LT(worst_normal, 1e-13) << e.surface << " o" << e.order;
+    EXPECT_LT(worst, 1e-12) << e.method << " " << e.surface << " o" << e.order;
+    EXPECT_LT(worst_float, 2e-5) << e.method << " " << e.surface << " o" << e.order;
+    EXPECT_LT(worst_normal, 1e-13) << e.method << " " << e.surface << " o" << e.order;
     std::cout << e.surface << " o" << e.order << ": zero-set shift " << worst << ", float deviation " << worst_float
               << "\n";
   }
