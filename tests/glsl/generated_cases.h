@@ -12,8 +12,9 @@ namespace offsetgen::glsl_test {
 
 struct GeneratedCase {
   const char* surface;  // catalog name, e.g. "gyroid"
-  int order;            // 1..4
-  const char* prefix;   // function prefix, e.g. "gyroid_o4"
+  int order;            // 1..4 (richardson), 2..8 (projection)
+  const char* method;   // the offset method, e.g. "richardson"
+  const char* prefix;   // function prefix, e.g. "gyroid_o4", "gyroid_proj_o4"
   const char* header;   // absolute path of the generated .h
   const char* snippet;  // absolute path of the generated .glsl
   double (*field)(double, double, double);
@@ -28,7 +29,7 @@ struct GeneratedCase {
   float (*gradedf)(float, float, float);
 };
 
-// Catalog surfaces x orders 1-4, in CMake's order (surface-major).
+// Catalog surfaces x orders 1-4 (richardson), then x orders 2-8 (projection), in CMake's order.
 const std::vector<GeneratedCase>& generated_cases();
 // gyroid order 4 generated with --thickness graded_thickness_expression().
 const GeneratedCase& graded_case();
