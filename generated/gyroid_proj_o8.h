@@ -43,13 +43,19 @@
  *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
  *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
  *   keeps |q_K - p| <= |h| and so the bound above.
+ * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
+ *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
+ *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
+ *   <= 2 M |h| (H = 2 >= max ||Hess F||); in cell units: |h| <= 0.005: 11.5; |h| <= 0.01: 12.25;
+ *   |h| <= 0.025: 15.8; |h| <= 0.05: none (none: the band may hold a critical point of F).
+ *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    14
  *   offset   646
  *   shell    1153
  *   normal   664
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o8","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":646,"shell":1153,"normal":664}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o8","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":646,"shell":1153,"normal":664}} */
 #ifndef OFFSETGEN_GYROID_PROJ_O8_H
 #define OFFSETGEN_GYROID_PROJ_O8_H
 

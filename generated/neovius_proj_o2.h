@@ -43,13 +43,19 @@
  *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
  *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
  *   keeps |q_K - p| <= |h| and so the bound above.
+ * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
+ *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
+ *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
+ *   <= 2 M |h| (H = 7.00001 >= max ||Hess F||); in cell units: |h| <= 0.005: none; |h| <= 0.01:
+ *   none; |h| <= 0.025: none; |h| <= 0.05: none (none: the band may hold a critical point of F).
+ *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    15
  *   offset   175
  *   shell    204
  *   normal   205
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_proj_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":175,"shell":204,"normal":205}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_proj_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":175,"shell":204,"normal":205}} */
 #ifndef OFFSETGEN_NEOVIUS_PROJ_O2_H
 #define OFFSETGEN_NEOVIUS_PROJ_O2_H
 

@@ -43,13 +43,19 @@
  *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
  *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
  *   keeps |q_K - p| <= |h| and so the bound above.
+ * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
+ *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
+ *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
+ *   <= 2 M |h| (H = 1 >= max ||Hess F||); in cell units: |h| <= 0.005: 11.28; |h| <= 0.01: 11.73;
+ *   |h| <= 0.025: 13.74; |h| <= 0.05: none (none: the band may hold a critical point of F).
+ *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
  *   offset   576
  *   shell    1012
  *   normal   589
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":576,"shell":1012,"normal":589}} */
+/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":576,"shell":1012,"normal":589}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O8_H
 #define OFFSETGEN_SCHWARZP_PROJ_O8_H
 

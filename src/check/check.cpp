@@ -175,6 +175,15 @@ CheckReport run_checks(const CheckSettings& s) {
     }
     report.verdicts.push_back(missed_verdict("crossings", rays, h_limit));
 
+    const MethodFacts& facts = reference->generation.method();
+    report.lipschitz = measure_lipschitz(probe, facts.lipschitz_bounds,
+                                         reference->generation.construction->bounds().gradient, meta.scale);
+    for (const LipschitzRow& row : report.lipschitz)
+      report.verdicts.push_back({fmt::format("lipschitz |h| <= {:g}", row.h), row.pass, !probe.float_only,
+                                 fmt::format("max |grad phi| {:.4g} over {} points of the band |F| <= M|h|, "
+                                             "documented bound {:.4g}",
+                                             row.measured, row.points, row.bound)});
+
     if (thickness_ex) {
       ThicknessFunction tfun(*thickness_ex, meta.dims);
       const Generation& g0 = reference->generation;

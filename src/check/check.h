@@ -5,6 +5,7 @@
 
 #include "check/compile.h"
 #include "check/glsl_compile.h"
+#include "check/lipschitz.h"
 #include "check/metadata.h"
 #include "check/thickness.h"
 #include "check/value_check.h"
@@ -57,6 +58,7 @@ struct CheckReport {
   std::optional<ThicknessReport> thickness;
   bool thickness_float_only = false;
   std::optional<GradedReport> graded;
+  std::vector<LipschitzRow> lipschitz;  // the method's documented bounds, measured
   std::vector<Verdict> verdicts;
   std::vector<double> sweep;
   bool pass = false;

@@ -93,9 +93,10 @@ std::string emit_c_header(const FileFacts& facts, const std::vector<EmittedFunct
                      fmt::arg("function_list", function_list), fmt::arg("prefix", facts.prefix),
                      fmt::arg("accuracy", paragraph("Accuracy:", m.accuracy)),
                      fmt::arg("variable_thickness", paragraph("Variable thickness:", m.variable_thickness)),
-                     fmt::arg("safety", paragraph("Safety:", m.safety)), fmt::arg("ops_list", ops_list),
-                     fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "h")),
-                     fmt::arg("functions", rendered));
+                     fmt::arg("safety", paragraph("Safety:", m.safety) +
+                                            (m.lipschitz.empty() ? "" : "\n" + paragraph("Lipschitz:", m.lipschitz))),
+                     fmt::arg("ops_list", ops_list), fmt::arg("metadata", facts.metadata_json),
+                     fmt::arg("guard", guard_name(facts.prefix, "h")), fmt::arg("functions", rendered));
 }
 
 }  // namespace offsetgen

@@ -73,9 +73,10 @@ std::string emit_glsl_snippet(const FileFacts& facts, const std::vector<EmittedF
                      fmt::arg("io_list", io_list), fmt::arg("prefix", facts.prefix),
                      fmt::arg("accuracy", paragraph("accuracy:", m.accuracy)),
                      fmt::arg("variable_thickness", paragraph("variable thickness:", m.variable_thickness)),
-                     fmt::arg("safety", paragraph("safety:", m.safety)), fmt::arg("ops_list", ops_list),
-                     fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "glsl")),
-                     fmt::arg("functions", rendered));
+                     fmt::arg("safety", paragraph("safety:", m.safety) +
+                                            (m.lipschitz.empty() ? "" : "\n" + paragraph("lipschitz:", m.lipschitz))),
+                     fmt::arg("ops_list", ops_list), fmt::arg("metadata", facts.metadata_json),
+                     fmt::arg("guard", guard_name(facts.prefix, "glsl")), fmt::arg("functions", rendered));
 }
 
 }  // namespace offsetgen

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
+#include <queue>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -133,6 +135,69 @@ double max_hessian_norm(const Surface& surface, const AtomTable& atoms, const Fi
   Evaluator hessian(program);
   auto norm = [&](const std::vector<double>& p) { return symmetric_spectral_norm(hessian(p), surface.dims); };
   return maximum_over_cell(surface.dims, numeric_value(surface.scale), norm, "the Hessian of F") * (1 + 1e-6);
+}
+
+std::vector<double> min_gradient_in_bands(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field,
+                                          const CellBounds& bounds, const std::vector<double>& levels) {
+  std::vector<GiNaC::ex> outputs = {field.field()};
+  for (int i = 0; i < surface.dims; ++i) outputs.push_back(field.gradient(i));
+  const Program program = natural_program(atoms, surface.dims, outputs);
+  Evaluator evaluate(program);
+  const int dims = surface.dims;
+  const double extent = numeric_value(surface.scale);
+  std::vector<double> lowest(levels.size(), INFINITY);
+  // Best-first branch and bound over boxes (centre c, half side a, half-diagonal r): every point of a
+  // box has |F| >= |F(c)| - M r and |grad F| >= |grad F(c)| - H r. Per band, the box with the lowest
+  // such bound is split until that bound is within 1/8 of the least |grad F| seen at a centre in the
+  // band, or an evaluation budget runs out; the lowest bound left is the answer.
+  constexpr int kCoarse = 16;
+  constexpr size_t kBudget = 60000;  // per band
+  struct Box {
+    double lower;  // lower bound of |grad F| in the box
+    double half;
+    std::vector<double> c;
+    bool operator<(const Box& o) const { return lower > o.lower; }  // a min-heap in std::priority_queue
+  };
+  auto probe = [&](std::vector<double> c, double half, double level, double& seen) -> std::optional<Box> {
+    const double r = half * std::sqrt(static_cast<double>(dims));
+    const auto& v = evaluate(c);
+    const double f = std::fabs(v[0]);
+    if (f - bounds.gradient * r > level) return std::nullopt;  // not in the band
+    double g2 = 0;
+    for (size_t i = 1; i < v.size(); ++i) g2 += v[i] * v[i];
+    const double g = std::sqrt(g2);
+    if (f <= level) seen = std::min(seen, g);
+    return Box{g - bounds.hessian * r, half, std::move(c)};
+  };
+  for (size_t k = 0; k < levels.size(); ++k) {
+    std::priority_queue<Box> queue;
+    double seen = INFINITY;
+    const double half0 = extent / kCoarse / 2;
+    const int total = dims == 3 ? kCoarse * kCoarse * kCoarse : kCoarse * kCoarse;
+    for (int index = 0; index < total; ++index) {
+      std::vector<double> c(static_cast<size_t>(dims));
+      int rest = index;
+      for (int i = 0; i < dims; ++i) {
+        c[static_cast<size_t>(i)] = (2 * (rest % kCoarse) + 1) * half0;
+        rest /= kCoarse;
+      }
+      if (auto b = probe(std::move(c), half0, levels[k], seen)) queue.push(std::move(*b));
+    }
+    size_t evaluations = static_cast<size_t>(total);
+    while (!queue.empty() && queue.top().lower < seen * 7 / 8 && evaluations < kBudget) {
+      Box b = queue.top();
+      queue.pop();
+      for (int corner = 0; corner < (1 << dims); ++corner) {
+        std::vector<double> c = b.c;
+        for (int i = 0; i < dims; ++i) c[static_cast<size_t>(i)] += ((corner >> i) & 1 ? b.half : -b.half) / 2;
+        if (auto child = probe(std::move(c), b.half / 2, levels[k], seen)) queue.push(std::move(*child));
+        ++evaluations;
+      }
+    }
+    lowest[k] = queue.empty() ? seen : queue.top().lower;
+  }
+  for (double& g : lowest) g = std::isfinite(g) ? std::max(0.0, g) : 0.0;
+  return lowest;
 }
 
 CellBounds cell_bounds(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field) {

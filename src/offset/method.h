@@ -41,8 +41,15 @@ struct MethodFacts {
   std::string citation;        // where the method comes from
   std::string accuracy;        // what the zero set's accuracy is
   std::string variable_thickness;
-  std::string safety;  // what keeps the functions finite and free of phantom walls
-  std::string normal;  // what _normal returns
+  std::string safety;     // what keeps the functions finite and free of phantom walls
+  std::string normal;     // what _normal returns
+  std::string lipschitz;  // a bound on |grad phi| where a sphere tracer or mesher needs one ("" if none)
+  // The same as numbers, for `check` to measure: |grad phi| <= bound (cell units) at every point p with
+  // |F(p)| <= M |h| (natural units) for |h| <= h (cell units); bound 0 where the method gives none.
+  struct LipschitzBound {
+    double h = 0, bound = 0;
+  };
+  std::vector<LipschitzBound> lipschitz_bounds;
   nlohmann::ordered_json metadata = nlohmann::ordered_json::object();  // method-specific fields
 };
 

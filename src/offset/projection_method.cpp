@@ -80,6 +80,7 @@ class Projection final : public OffsetConstruction {
     field_ = define_field_atoms(surface, 2, atoms_);  // second derivatives for the cell bounds
     bounds_ = cell_bounds(surface, atoms_, field_);
     facts_ = describe(requested_order, projections_, bounds_, angle_addition_);
+    add_lipschitz_bounds(surface);
   }
 
   const MethodFacts& facts() const override { return facts_; }
@@ -198,6 +199,34 @@ class Projection final : public OffsetConstruction {
       estimate = std::move(next);
     }
     return estimate;
+  }
+
+  // In the band |F(p)| <= M|h| that holds the zero set, the estimates q_j lie within |h| of p, so
+  // |F(q_j)| <= 2M|h|. With g <= |grad F| there, |Dn| <= H/g and |D q_K| <= 1/(1 - |h| H/g), so
+  // |grad phi| <= M/(1 - |h| H/g). Outside the band phi has F's sign and |phi| >= |F| - M|h|.
+  void add_lipschitz_bounds(const Surface& surface) {
+    const double k = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(surface.scale)).to_double();
+    const std::vector<double> hs = {0.005, 0.01, 0.025, 0.05};  // cell units: walls of 0.01 to 0.1 cell
+    std::vector<double> levels;
+    for (double h : hs) levels.push_back(2 * bounds_.gradient * k * h);
+    const std::vector<double> g = min_gradient_in_bands(surface, atoms_, field_, bounds_, levels);
+    std::string table;
+    nlohmann::ordered_json json = nlohmann::ordered_json::array();
+    for (size_t i = 0; i < hs.size(); ++i) {
+      const double r = k * hs[i] * bounds_.hessian / g[i];
+      const double bound = g[i] > 0 && r < 1 ? k * bounds_.gradient / (1 - r) * (1 + 1e-9) : 0;
+      facts_.lipschitz_bounds.push_back({hs[i], bound});
+      table +=
+          fmt::format("{}|h| <= {:g}: {}", i ? "; " : "", hs[i], bound > 0 ? fmt::format("{:.4g}", bound) : "none");
+      json.push_back({{"h", hs[i]}, {"bound", bound > 0 ? nlohmann::ordered_json(bound) : nlohmann::ordered_json()}});
+    }
+    facts_.lipschitz = fmt::format(
+        "away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is at least "
+        "(|F(p)| - M |h|) / (k M) cell away (M as below, k = {:.17g} the scale of X = k x). Inside that band "
+        "|grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2 M |h| (H = {:.6g} >= max ||Hess "
+        "F||); in cell units: {} (none: the band may hold a critical point of F). `offsetgen check` measures it.",
+        k, bounds_.hessian, table);
+    facts_.metadata["lipschitz"] = json;
   }
 
   int projections_;
