@@ -12,10 +12,12 @@ What runs:
     phi -> F, paper Algorithms 1 and 2 on the paper's 21 x 21 grid) and for the shell;
   * the graded-thickness study (paper section 6, Figure 8) at orders 1-4: t(x) = 0.01 x as generated
     (h up to 0.005 L) and the same shape scaled to h_max = 1e-4 .. 0.1;
-  * the acceptance numbers of issue 4, judged at the end (exit status 1 when one fails).
+  * the same for the foot-point projection method (--method projection) at orders 2, 4, 6, 8, 12 and
+    16, graded at orders 2-8, side by side with the paper's construction;
+  * the acceptance numbers of issues 4 and 10, judged at the end (exit status 1 when one fails).
 
 Needs the built offsetgen (with the check stage), a C compiler and python3-matplotlib.
-Takes 2-3 minutes on 2 cores (order 8 dominates).
+Takes 3-5 minutes on 2 cores (Richardson's order 8 dominates).
 """
 
 import argparse
@@ -31,6 +33,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SURFACES = [("gyroid", "Gyroid"), ("schwarzp", "Schwarz P"), ("neovius", "Neovius")]
 ORDERS = [1, 2, 3, 4, 6, 8]
 GRADED_ORDERS = [1, 2, 3, 4]
+PROJECTION_ORDERS = [2, 4, 6, 8, 12, 16]
+PROJECTION_GRADED_ORDERS = [2, 4, 6, 8]
 GRADED_THICKNESS = "0.01*x"   # total thickness, 0 at x = 0 to 0.01 L at x = L: h_max = 0.005 L
 SWEEP = [float("%.3g" % (10 ** (-4 + k / 4))) for k in range(13)]   # 1e-4 .. 0.1
 FLOOR = 1e-11        # below this a relative error is roundoff (see src/check/convergence.h)
@@ -47,11 +51,12 @@ def find_offsetgen(explicit):
     sys.exit("reproduce_paper: offsetgen executable not found; build it (cmake --build build) or pass --offsetgen")
 
 
-def run_one(offsetgen, work, surface, order, graded, grid):
+def run_one(offsetgen, work, method, surface, order, graded, grid):
     """Generates one header and checks it; returns the check's JSON."""
-    stem = "%s_o%d%s" % (surface, order, "_graded" if graded else "")
+    stem = "%s_%s_o%d%s" % (surface, method, order, "_graded" if graded else "")
     header = os.path.join(work, stem + ".h")
-    cmd = [offsetgen, "generate", "--surface", surface, "--order", str(order), "--name", stem, "-q", "-o", header]
+    cmd = [offsetgen, "generate", "--surface", surface, "--order", str(order), "--method", method, "--name", stem,
+           "-q", "-o", header]
     if graded:
         cmd += ["--thickness", GRADED_THICKNESS]
     subprocess.run(cmd, check=True)
@@ -100,31 +105,38 @@ def plot(spec, png, script):
         os.unlink(name)
 
 
-def series(results, surface, orders, direction, graded=False, measure="total"):
+def series(results, surface, orders, direction, graded=False, measure="total", method="richardson"):
     out = []
     for m in orders:
-        r = results[(surface, m, graded)]
+        r = results[(method, surface, m, graded)]
         if graded:
             rows = [x for x in r["graded"]["rows"] if not x["as_given"]]
             xs = [x["h_max"] for x in rows]
             ys = [mean(x[measure]) for x in rows]
-            order = 1 if measure == "one_sided" else min(m, 2)
+            promised = r["metadata"]
+            if measure == "one_sided":
+                order = promised.get("graded_wall_order", 1)
+            elif measure == "total":
+                order = promised.get("graded_order", min(m, 2))
+            else:
+                order = 1 if method == "projection" else min(m, 2)
         else:
             rows = r["thickness"]["rows"]
             xs = [x["h"] for x in rows]
             ys = [mean(x[direction]) for x in rows]
             order = m
         ys = [y if (y is not None and y > PLOT_FLOOR) else None for y in ys]
-        label = "order %d" % m
+        label = ("projection order %d" if method == "projection" else "order %d") % m
         if graded:
             label += {"total": ", total", "paper": ", paper (Fig. 8)", "one_sided": ", one-sided"}[measure]
         out.append({"label": label, "order": order, "x": xs, "y": ys})
     return out
 
 
-def constant_result(results, surface, m):
-    """Orders 1-4 were measured on the graded headers (their constant sweep is the same); 6, 8 alone."""
-    return results[(surface, m, True)] if m in GRADED_ORDERS else results[(surface, m, False)]
+def constant_result(results, surface, m, method="richardson"):
+    """Orders with a graded header were measured on it (their constant sweep is the same)."""
+    graded = GRADED_ORDERS if method == "richardson" else PROJECTION_GRADED_ORDERS
+    return results[(method, surface, m, m in graded)]
 
 
 def main(argv=None):
@@ -146,24 +158,29 @@ def main(argv=None):
     jobs = []
     for surface, _ in SURFACES:
         for m in ORDERS:
-            jobs.append((surface, m, m in GRADED_ORDERS))
-    # longest first, so the two cores stay busy
-    jobs.sort(key=lambda j: -j[1])
+            jobs.append(("richardson", surface, m, m in GRADED_ORDERS))
+        for m in PROJECTION_ORDERS:
+            jobs.append(("projection", surface, m, m in PROJECTION_GRADED_ORDERS))
+    # longest first (Richardson's high orders), so the two cores stay busy
+    jobs.sort(key=lambda j: -(j[2] if j[0] == "richardson" else j[2] / 4))
     results = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        futures = {pool.submit(run_one, offsetgen, work, s, m, g, args.grid): (s, m, g) for s, m, g in jobs}
+        futures = {pool.submit(run_one, offsetgen, work, method, s, m, g, args.grid): (method, s, m, g)
+                   for method, s, m, g in jobs}
         for n, fut in enumerate(concurrent.futures.as_completed(futures), 1):
             key = futures[fut]
             results[key] = fut.result()
-            print("reproduce_paper: [%d/%d] %s order %d%s done" % (n, len(jobs), key[0], key[1],
-                                                                    " (graded)" if key[2] else ""), flush=True)
+            print("reproduce_paper: [%d/%d] %s %s order %d%s done" % (n, len(jobs), key[0], key[1], key[2],
+                                                                       " (graded)" if key[3] else ""), flush=True)
 
-    # index by (surface, order, graded) with the graded headers standing in for constant orders 1-4
+    # index by (method, surface, order, graded), graded headers standing in for their constant orders
     for surface, _ in SURFACES:
         for m in GRADED_ORDERS:
-            results[(surface, m, False)] = results[(surface, m, True)]
+            results[("richardson", surface, m, False)] = results[("richardson", surface, m, True)]
+        for m in PROJECTION_GRADED_ORDERS:
+            results[("projection", surface, m, False)] = results[("projection", surface, m, True)]
 
-    version = results[(SURFACES[0][0], 1, True)]["metadata"]["generator"]
+    version = results[("richardson", SURFACES[0][0], 1, True)]["metadata"]["generator"]
     md = []
     w = md.append
     w("# Convergence study: the paper's measurements, regenerated")
@@ -200,8 +217,8 @@ def main(argv=None):
                 accept("slope %s order %d %s" % (title, m, "F→φ" if d == "f_to_phi" else "φ→F"), ok,
                        "%.2f (h = %g..%g)" % (f["slope"], f["h_min"], f["h_max"]) if f["fitted"] else f["note"])
 
-    def at(surface, m, h, d="f_to_phi"):
-        r = row_at(constant_result(results, surface, m)["thickness"]["rows"], h)
+    def at(surface, m, h, d="f_to_phi", method="richardson"):
+        r = row_at(constant_result(results, surface, m, method)["thickness"]["rows"], h)
         return mean(r[d]) if r else None
 
     e = max(at("gyroid", 4, 0.01), at("gyroid", 4, 0.01, "phi_to_f"))
@@ -210,10 +227,38 @@ def main(argv=None):
         e = max(at(surface, 6, 0.01), at(surface, 6, 0.01, "phi_to_f"))
         accept("order 6 %s < 1e-9 at h = 0.01 L" % title, e < 1e-9, sci(e))
     for surface, title in SURFACES:
-        g = results[(surface, 2, True)]["graded"]
+        g = results[("richardson", surface, 2, True)]["graded"]
         given = [x for x in g["rows"] if x["as_given"]][0]
         e = mean(given["total"])
         accept("graded order 2 %s < 3e-4 at total thickness 0.01 L (h ≤ 0.005 L)" % title, e < 3e-4, sci(e))
+    # The projection method (issue 10).
+    for surface, title in SURFACES:
+        for m in [2, 4, 6, 8]:
+            fits = constant_result(results, surface, m, "projection")["thickness"]["fits"]
+            for d in ["f_to_phi", "phi_to_f"]:
+                f = fits[d]
+                ok = f["fitted"] and abs(f["slope"] - m) <= 0.3
+                accept("projection slope %s order %d %s" % (title, m, "F→φ" if d == "f_to_phi" else "φ→F"), ok,
+                       "%.2f (h = %g..%g)" % (f["slope"], f["h_min"], f["h_max"]) if f["fitted"] else f["note"])
+
+    def worst_at(surface, m, method="projection"):
+        return max(at(surface, m, 0.01, "f_to_phi", method), at(surface, m, 0.01, "phi_to_f", method))
+
+    e = worst_at("gyroid", 4)
+    accept("projection order 4 gyroid ≤ 1e-7 at h = 0.01 L", e <= 1e-7, sci(e))
+    for surface, title, limit in [("gyroid", "Gyroid", 1e-12), ("schwarzp", "Schwarz P", 1e-12), ("neovius", "Neovius", 2e-9)]:
+        e = worst_at(surface, 8)
+        accept("projection order 8 %s ≤ %g at h = 0.01 L" % (title, limit), e <= limit, sci(e))
+    for surface, title in SURFACES:
+        best = min(worst_at(surface, m) for m in PROJECTION_ORDERS)
+        accept("projection, best order ≤ 16: %s ≤ 1e-13 at h = 0.01 L" % title, best <= 1e-13, sci(best))
+    g = results[("projection", "gyroid", 8, True)]["graded"]
+    given = [x for x in g["rows"] if x["as_given"]][0]
+    f = g["fits"]["one_sided"]
+    accept("projection order 8 gyroid graded (total 0.01 L at the thick end): each wall slope ≥ 3.8",
+           f["fitted"] and f["slope"] >= 3.8, "%.2f" % f["slope"] if f["fitted"] else f["note"])
+    accept("projection order 8 gyroid graded: mean error ≤ 1e-7", mean(given["one_sided"]) <= 1e-7,
+           sci(mean(given["one_sided"])))
 
     w("## Acceptance")
     w("")
@@ -256,6 +301,12 @@ def main(argv=None):
                   "ylabel": "mean |h_m - h| / h", "slope_triangles": True,
                   "hline": [{"y": 1e-6, "label": "1e-6"}],
                   "series": series(results, surface, ORDERS, direction)},
+                 os.path.join(images, png), script)
+            png = "convergence_projection_%s%s.png" % (surface, "" if direction == "f_to_phi" else "_reverse")
+            plot({"title": "%s, projection: %s, mean relative error" % (title, label), "xlabel": "h/L",
+                  "ylabel": "mean |h_m - h| / h", "slope_triangles": True,
+                  "hline": [{"y": 1e-6, "label": "1e-6"}],
+                  "series": series(results, surface, PROJECTION_ORDERS[:4], direction, method="projection")},
                  os.path.join(images, png), script)
         w("### %s" % title)
         w("")
@@ -315,6 +366,17 @@ def main(argv=None):
             cells.append(sci(v["max_shift_double"], 1) if v else "–")
         w("| %s | %s |" % (title, " | ".join(cells)))
     w("")
+    w("The projection method, same measure:")
+    w("")
+    w("| surface | " + " | ".join("order %d" % m for m in PROJECTION_ORDERS) + " |")
+    w("|---|" + "---|" * len(PROJECTION_ORDERS))
+    for surface, title in SURFACES:
+        cells = []
+        for m in PROJECTION_ORDERS:
+            v = constant_result(results, surface, m, "projection").get("values")
+            cells.append(sci(v["max_shift_double"], 1) if v else "–")
+        w("| %s | %s |" % (title, " | ".join(cells)))
+    w("")
 
     # ---- graded -------------------------------------------------------------------------------------
     w("## Graded walls (paper section 6, Figure 8)")
@@ -335,7 +397,7 @@ def main(argv=None):
     w("|---|---|---|---|---|---|---|")
     for surface, title in SURFACES:
         for m in GRADED_ORDERS:
-            g = results[(surface, m, True)]["graded"]
+            g = results[("richardson", surface, m, True)]["graded"]
             given = [x for x in g["rows"] if x["as_given"]][0]
             r01 = row_at([x for x in g["rows"] if not x["as_given"]], 0.01, "h_max")
             fits = g["fits"]
@@ -357,11 +419,67 @@ def main(argv=None):
              os.path.join(images, "convergence_graded_%s.png" % surface), script)
         w("![%s, graded](images/convergence_graded_%s.png)" % (title, surface))
     w("")
+    # ---- the projection method ------------------------------------------------------------------
+    w("## The projection method beside the paper's construction")
+    w("")
+    w("`--method projection` (docs/projection.md): φ = F(q_K) at the K-th foot-point estimate, order")
+    w("2(K+1). Same measurement, same sweep, same grid. Fitted orders (F → φ / φ → F / shell):")
+    w("")
+    w("| surface | " + " | ".join("order %d" % m for m in PROJECTION_ORDERS) + " |")
+    w("|---|" + "---|" * len(PROJECTION_ORDERS))
+    for surface, title in SURFACES:
+        cells = []
+        for m in PROJECTION_ORDERS:
+            fits = constant_result(results, surface, m, "projection")["thickness"]["fits"]
+            cells.append(" / ".join("%.2f" % fits[d]["slope"] if fits[d]["fitted"] else "floor"
+                                    for d in ["f_to_phi", "phi_to_f", "shell"]))
+        w("| %s | %s |" % (title, " | ".join(cells)))
+    w("")
+    w("Mean relative error at h = 0.01 L (worse of F → φ and φ → F), both methods:")
+    w("")
+    both = sorted(set(ORDERS) | set(PROJECTION_ORDERS))
+    w("| surface | method | " + " | ".join("order %d" % m for m in both) + " |")
+    w("|---|---|" + "---|" * len(both))
+    for surface, title in SURFACES:
+        for method, orders in [("richardson", ORDERS), ("projection", PROJECTION_ORDERS)]:
+            cells = [sci(worst_at(surface, m, method)) if m in orders else "" for m in both]
+            w("| %s | %s | %s |" % (title, method, " | ".join(cells)))
+    w("")
+    for surface, title in SURFACES:
+        w("![%s, projection, F → φ](images/convergence_projection_%s.png) "
+          "![%s, projection, φ → F](images/convergence_projection_%s_reverse.png)" % (title, surface, title, surface))
+        w("")
+    w("### Graded walls with the thickness read at the foot point")
+    w("")
+    w("The projection's _graded reads h at each foot-point estimate (h_0 = h(p), h_(j+1) = h(q_j)). Against")
+    w("the thickness at the foot point p0 (the **one-sided** measure above) each wall converges at order")
+    w("K + 1; the total thickness at the next even order. The paper's measure reads h at the wall point")
+    w("instead, which is not where this construction puts it: first order.")
+    w("")
+    w("| surface | order (K) | one-sided, as generated | total, as generated | paper, as generated | fitted: one-sided / total / paper |")
+    w("|---|---|---|---|---|---|")
+    for surface, title in SURFACES:
+        for m in PROJECTION_GRADED_ORDERS:
+            g = results[("projection", surface, m, True)]["graded"]
+            given = [x for x in g["rows"] if x["as_given"]][0]
+            fits = g["fits"]
+            fit = " / ".join("%.2f" % fits[k]["slope"] if fits[k]["fitted"] else "–" for k in ["one_sided", "total", "paper"])
+            w("| %s | %d (%d) | %s | %s | %s | %s |" % (title, m, m // 2 - 1, sci(mean(given["one_sided"])),
+                                                         sci(mean(given["total"])), sci(mean(given["paper"])), fit))
+    w("")
+    for surface, title in SURFACES:
+        curves = series(results, surface, PROJECTION_GRADED_ORDERS, None, graded=True, measure="one_sided",
+                        method="projection")
+        plot({"title": "%s, projection, graded wall h = h_max x / L (each wall vs t at its foot point)" % title,
+              "xlabel": "h_max/L", "ylabel": "mean relative error", "slope_triangles": True, "series": curves},
+             os.path.join(images, "convergence_projection_graded_%s.png" % surface), script)
+        w("![%s, projection, graded](images/convergence_projection_graded_%s.png)" % (title, surface))
+    w("")
     w("## Reproduce")
     w("")
     w("```sh")
     w("cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j2")
-    w("/usr/bin/python3 tools/reproduce_paper.py --offsetgen build/offsetgen   # ~2-3 min on 2 cores")
+    w("/usr/bin/python3 tools/reproduce_paper.py --offsetgen build/offsetgen   # ~3-5 min on 2 cores")
     w("```")
     w("")
     w("One file at a time: `offsetgen check gyroid_o4.h --json out.json --plot out.png`.")
@@ -371,7 +489,7 @@ def main(argv=None):
     with open(path + ".tmp", "w") as f:
         f.write("\n".join(md))
     os.replace(path + ".tmp", path)
-    print("reproduce_paper: wrote %s and %d figures in %s (raw results in %s)" % (path, 3 * 3, images, work))
+    print("reproduce_paper: wrote %s and %d figures in %s (raw results in %s)" % (path, 3 * 6, images, work))
     failed = [c for c in checks if not c[1]]
     for name, _, detail in failed:
         print("reproduce_paper: acceptance FAILED: %s: %s" % (name, detail), file=sys.stderr)

@@ -33,7 +33,9 @@ MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addit
   // walls of order 1, 2, 3, 4 and totals of order 2, 2, 4, 4 (docs/projection.md).
   f.graded_wall_order = k + 1;
   f.graded_order = (k + 2) / 2 * 2;
-  f.graded_paper_order = 1;  // the paper's measure reads t at the wall point, not at the foot point
+  // The paper's measure reads t at the wall point, not at the foot point: first order once t is read
+  // at an estimate of the foot point (K >= 1), second at K = 0, where it is read at p.
+  f.graded_paper_order = k == 0 ? 2 : 1;
   f.summary = fmt::format(
       "foot-point projection with K = {} projection step{}: q_0 = p - h n(p), q_(j+1) = p - h n(q_j), "
       "phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order 2(K+1) = {}{}.",
