@@ -5,6 +5,9 @@
 #ifdef OFFSETGEN_HAVE_CHECK
 #include "cli/check_command.h"
 #endif
+#ifdef OFFSETGEN_HAVE_MESH
+#include "cli/mesh_command.h"
+#endif
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -40,6 +43,10 @@ int main(int argc, char** argv) {
   CheckOptions check;
   add_check_command(app, check);
 #endif
+#ifdef OFFSETGEN_HAVE_MESH
+  MeshOptions mesh;
+  add_mesh_command(app, mesh);
+#endif
 
   try {
     app.parse(argc, argv);
@@ -53,6 +60,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("list")) return run_list(list_json);
 #ifdef OFFSETGEN_HAVE_CHECK
     if (app.got_subcommand("check")) return run_check(check);
+#endif
+#ifdef OFFSETGEN_HAVE_MESH
+    if (app.got_subcommand("mesh")) return run_mesh_command(mesh);
 #endif
   } catch (const InputError& e) {
     fmt::print(stderr, "offsetgen: error: {}\n", e.what());

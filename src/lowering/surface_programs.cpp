@@ -30,6 +30,7 @@ class FunctionLowering {
     return program_.mul(offset(half), offset(program_.neg(half)));
   }
   std::vector<NodeId> normal(NodeId h_cell) { return construction_.lower_normal(at_, at_.natural(h_cell)); }
+  NodeId thickness(const GiNaC::ex& t) { return at_.cell_expression(t, at_.point()); }
 
   // One wall of thickness t(.): h(q) = factor t(q), natural units, read where the method asks.
   NodeId graded_wall(const GiNaC::ex& thickness, NodeId factor) {
@@ -86,6 +87,12 @@ Program lower_graded_wall(const Surface& surface, const OffsetConstruction& cons
   Program program(inputs(surface.dims, "s"));
   FunctionLowering f(program, surface, construction);
   program.add_output("phi", f.graded_wall(thickness, program.mul(program.constant(0.5), f.extra_input())));
+  return program;
+}
+
+Program lower_thickness(const Surface& surface, const OffsetConstruction& construction, const GiNaC::ex& thickness) {
+  Program program(inputs(surface.dims));
+  program.add_output("t", FunctionLowering(program, surface, construction).thickness(thickness));
   return program;
 }
 

@@ -34,4 +34,8 @@ SurfacePrograms lower_surface(const Surface& surface, const OffsetConstruction& 
 // measure the graded walls' convergence with the construction the emitted _graded comes from.
 Program lower_graded_wall(const Surface& surface, const OffsetConstruction& construction, const GiNaC::ex& thickness);
 
+// The wall thickness t(x, y[, z]) itself (cell units in and out), for a mesher that reads the local
+// thickness at each sample.
+Program lower_thickness(const Surface& surface, const OffsetConstruction& construction, const GiNaC::ex& thickness);
+
 }  // namespace offsetgen

@@ -1,0 +1,141 @@
+#include "cli/mesh_command.h"
+
+#include "cli/command_line.h"
+#include "mesh/mesher.h"
+#include "surfaces/expression_input.h"
+#include "surfaces/surface.h"
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace offsetgen {
+namespace {
+
+// One line on stderr, redrawn in place; only on a terminal.
+class ProgressBar {
+ public:
+  ProgressBar() : enabled_(::isatty(STDERR_FILENO) == 1) {}
+  ~ProgressBar() { clear(); }
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+
+  void update(const std::string& stage, double fraction) {
+    if (!enabled_) return;
+    std::string line = "[offsetgen mesh] " + stage;
+    if (fraction >= 0) {
+      constexpr int kWidth = 30;
+      const int filled = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * kWidth);
+      line += fmt::format(" [{}{}] {:3.0f}%", std::string(static_cast<size_t>(filled), '#'),
+                          std::string(static_cast<size_t>(kWidth - filled), ' '), 100 * fraction);
+    }
+    if (line == last_) return;
+    last_ = line;
+    std::fprintf(stderr, "\r\033[K%s", line.c_str());
+    std::fflush(stderr);
+  }
+  void clear() {
+    if (!enabled_ || last_.empty()) return;
+    std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+    last_.clear();
+  }
+
+ private:
+  bool enabled_;
+  std::string last_;
+};
+
+}  // namespace
+
+std::array<int, 3> parse_cells(const std::string& text) {
+  std::vector<int> n;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, 'x')) {
+    size_t used = 0;
+    int value = 0;
+    try {
+      value = std::stoi(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (part.empty() || used != part.size())
+      throw InputError(fmt::format("--cells '{}': expected NX, NXxNY or NXxNYxNZ (positive integers)", text));
+    if (value < 1) throw InputError(fmt::format("--cells '{}': {} is not a positive number of cells", text, value));
+    n.push_back(value);
+  }
+  if (n.empty() || n.size() > 3 || text.back() == 'x')
+    throw InputError(fmt::format("--cells '{}': expected NX, NXxNY or NXxNYxNZ (positive integers)", text));
+  while (n.size() < 3) n.push_back(n.back());
+  return {n[0], n[1], n[2]};
+}
+
+void add_mesh_command(CLI::App& app, MeshOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "mesh",
+      "Mesh a block of cells of a wall solid (walls of thickness t around F = 0, capped by the block) as a\n"
+      "closed, outward-oriented triangle mesh in millimetres, ready for a slicer (OpenVDB volumeToMesh)");
+  cmd->add_option("-s,--surface", o.surface, "Catalog surface (see `offsetgen list`)");
+  cmd->add_option("-e,--expr", o.expression, "Your own F(x, y, z) in cell units, as in `generate`");
+  cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
+  cmd->add_option("-n,--name", o.name, "Function prefix of the generated functions (default <surface>_o<order>)");
+  std::string methods;
+  for (const OffsetMethod* m : offset_methods()) methods += fmt::format("{}{}", methods.empty() ? "" : ", ", m->name());
+  cmd->add_option("-M,--method", o.method, "Offset construction: " + methods)->capture_default_str();
+  cmd->add_option("-m,--order", o.order, "Approximation order")->capture_default_str();
+  cmd->add_option("-t,--thickness", o.thickness,
+                  "Total wall thickness in cell units: a number, or an expression of x, y, z (x runs over [0, NX])");
+  cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
+  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
+  cmd->add_option("-r,--resolution", o.resolution,
+                  "Voxels per cell (default: the thinnest wall spans 4 voxels; at least 2 are required)");
+  cmd->add_option("-a,--adaptivity", o.adaptivity,
+                  "Merge flat regions into larger triangles, 0 (off) to 1: smaller files")
+      ->capture_default_str();
+  cmd->add_option("--min-piece", o.min_piece,
+                  "Drop disconnected pieces with less than this fraction of the largest piece's volume")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", o.output, "Output mesh: .stl (binary STL) or .ply (binary PLY)");
+  cmd->add_option("-j,--threads", o.threads, "Sampling threads (default: one per hardware thread)");
+  cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
+  cmd->footer(
+      "Exit status: 0 success, 2 usage or input error (no file is written then), 3 internal error.\n"
+      "Example: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl");
+}
+
+int run_mesh_command(const MeshOptions& o) {
+  mesh::MeshSettings s;
+  s.wall.generation.surface = o.surface;
+  s.wall.generation.expression = o.expression;
+  s.wall.generation.name = o.name;
+  s.wall.generation.method = o.method;
+  s.wall.generation.order = o.order;
+  for (const auto& p : o.params) {
+    auto [key, value] = split_param(p);
+    if (s.wall.generation.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
+    s.wall.generation.params[key] = value;
+  }
+  s.wall.thickness = o.thickness;
+  s.cells = parse_cells(o.cells);
+  s.cell_size = o.cell_size;
+  s.resolution = o.resolution;
+  s.adaptivity = o.adaptivity;
+  s.min_piece = o.min_piece;
+  s.output = o.output;
+  s.threads = o.threads;
+  // Cheap checks first: a missing wall or surface fails before anything is generated.
+  if (o.thickness.empty())
+    throw InputError("no wall given: use --thickness T (cell units; a number or an expression of x, y, z)");
+  ProgressBar bar;
+  mesh::MeshSummary summary = mesh::run_mesh(s, [&](const std::string& stage, double f) { bar.update(stage, f); });
+  bar.clear();
+  if (!o.quiet) std::fputs(mesh::format_summary(summary).c_str(), stdout);
+  return kExitOk;
+}
+
+}  // namespace offsetgen

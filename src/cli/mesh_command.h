@@ -1,0 +1,32 @@
+// `offsetgen mesh`: options and the run.
+#pragma once
+
+#include "offset/method.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace offsetgen {
+
+struct MeshOptions {
+  std::string surface, expression, name, thickness, cells = "1", output;
+  std::vector<std::string> params;
+  std::string method = kDefaultMethod;
+  int order = 4;
+  double cell_size = 10;
+  int resolution = 0;
+  double adaptivity = 0;
+  double min_piece = 0.01;
+  int threads = 0;
+  bool quiet = false;
+};
+
+void add_mesh_command(CLI::App& app, MeshOptions& options);
+int run_mesh_command(const MeshOptions& options);
+
+// "3" -> {3, 3, 3}; "4x2" -> {4, 2, 2}; "2x3x4" -> {2, 3, 4}. Throws InputError.
+std::array<int, 3> parse_cells(const std::string& text);
+
+}  // namespace offsetgen

@@ -1,0 +1,84 @@
+#include "mesh/mesh_files.h"
+
+#include "surfaces/surface.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "mesh files are written little-endian by memcpy");
+
+namespace offsetgen::mesh {
+namespace {
+
+template <typename T>
+void put(std::string& out, T value) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+std::string binary_stl(const TriangleMesh& mesh, const std::string& description) {
+  std::string out;
+  out.reserve(84 + 50 * mesh.triangles.size());
+  // The header must not start with "solid": readers would take the file for ASCII STL.
+  std::string header = "binary STL: " + description;
+  header.resize(80, ' ');
+  out += header;
+  put<uint32_t>(out, static_cast<uint32_t>(mesh.triangles.size()));
+  for (const auto& t : mesh.triangles) {
+    const auto& a = mesh.points[t[0]];
+    const auto& b = mesh.points[t[1]];
+    const auto& c = mesh.points[t[2]];
+    const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+    const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+    double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& x : n) x = length > 0 ? x / length : 0.0;
+    for (double x : n) put<float>(out, static_cast<float>(x));
+    for (uint32_t i : t)
+      for (float x : mesh.points[i]) put<float>(out, x);
+    put<uint16_t>(out, 0);
+  }
+  return out;
+}
+
+std::string binary_ply(const TriangleMesh& mesh, const std::string& description) {
+  std::string comment = description;
+  std::replace(comment.begin(), comment.end(), '\n', ' ');
+  std::string out = fmt::format(
+      "ply\nformat binary_little_endian 1.0\ncomment {}\nelement vertex {}\nproperty float x\nproperty float y\n"
+      "property float z\nelement face {}\nproperty list uchar uint vertex_indices\nend_header\n",
+      comment, mesh.points.size(), mesh.triangles.size());
+  out.reserve(out.size() + 12 * mesh.points.size() + 13 * mesh.triangles.size());
+  for (const auto& p : mesh.points)
+    for (float x : p) put<float>(out, x);
+  for (const auto& t : mesh.triangles) {
+    put<uint8_t>(out, 3);
+    for (uint32_t i : t) put<uint32_t>(out, i);
+  }
+  return out;
+}
+
+}  // namespace
+
+MeshFormat format_for_path(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".stl") return MeshFormat::Stl;
+  if (ext == ".ply") return MeshFormat::Ply;
+  throw InputError(
+      fmt::format("-o '{}': unknown mesh format '{}' (use .stl for binary STL or .ply for binary PLY)", path, ext));
+}
+
+const char* format_name(MeshFormat format) { return format == MeshFormat::Stl ? "binary STL" : "binary PLY"; }
+
+std::string encode_mesh(const TriangleMesh& mesh, MeshFormat format, const std::string& description) {
+  return format == MeshFormat::Stl ? binary_stl(mesh, description) : binary_ply(mesh, description);
+}
+
+}  // namespace offsetgen::mesh

@@ -1,0 +1,44 @@
+// Sampling the solid's level set in a narrow band around its surface, in blocks of 8^3 voxels (the
+// leaf size of OpenVDB's trees). Voxel i of an axis sits at (i + 0.5) * voxel, so no sample lies on
+// a face of the box [0, N] (cells).
+#pragma once
+
+#include "mesh/wall_field.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace offsetgen::mesh {
+
+inline constexpr int kBlock = 8;
+inline constexpr int kBlockVoxels = kBlock * kBlock * kBlock;
+// Voxels of a block are stored x-major: (x * 8 + y) * 8 + z, as in an OpenVDB leaf.
+inline constexpr int block_offset(int x, int y, int z) { return (x * kBlock + y) * kBlock + z; }
+
+struct VoxelGrid {
+  std::array<int, 3> cells{1, 1, 1};
+  int resolution = 32;  // voxels per cell
+  double voxel() const { return 1.0 / resolution; }
+};
+
+// The sampled band. Values are in voxel units (roughly the distance to the solid's surface),
+// negative inside the solid: max(w, box), so the box caps the walls with flat faces. Voxels that
+// are not active hold `background` (outside, and at least 2 voxels from the surface).
+struct SampledBand {
+  std::vector<std::array<int, 3>> origins;  // index coordinates of each block's first voxel
+  std::vector<float> values;                // kBlockVoxels per block
+  std::vector<uint8_t> active;              // kBlockVoxels per block
+  float background = 3.0f;
+  size_t blocks_tested = 0;  // blocks of the padded box
+  size_t wall_samples = 0;   // voxels where the walls were evaluated
+  size_t skipped_voxels = 0;  // voxels ruled out by F at the centre of their block or sub-block
+};
+
+// Samples the band with `threads` threads; `progress(fraction)` is called from the calling thread.
+SampledBand sample_band(const WallField& field, const VoxelGrid& grid, double max_thickness, int threads,
+                        const std::function<void(double)>& progress);
+
+}  // namespace offsetgen::mesh

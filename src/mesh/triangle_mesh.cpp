@@ -1,0 +1,99 @@
+#include "mesh/triangle_mesh.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace offsetgen::mesh {
+namespace {
+
+double triangle_volume(const TriangleMesh& mesh, const std::array<uint32_t, 3>& t) {
+  const auto& a = mesh.points[t[0]];
+  const auto& b = mesh.points[t[1]];
+  const auto& c = mesh.points[t[2]];
+  // a . (b x c) / 6, in double.
+  const double bx = b[0], by = b[1], bz = b[2], cx = c[0], cy = c[1], cz = c[2];
+  return (a[0] * (by * cz - bz * cy) + a[1] * (bz * cx - bx * cz) + a[2] * (bx * cy - by * cx)) / 6.0;
+}
+
+class DisjointSets {
+ public:
+  explicit DisjointSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
+  uint32_t find(uint32_t a) {
+    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
+    return a;
+  }
+  void unite(uint32_t a, uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<uint32_t> parent_;
+};
+
+}  // namespace
+
+double signed_volume(const TriangleMesh& mesh) {
+  double v = 0;
+  for (const auto& t : mesh.triangles) v += triangle_volume(mesh, t);
+  return v;
+}
+
+PieceReport keep_large_pieces(TriangleMesh& mesh, double min_fraction) {
+  PieceReport report;
+  if (signed_volume(mesh) < 0)
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+
+  // Connected surfaces: triangles sharing a point.
+  DisjointSets sets(mesh.points.size());
+  for (const auto& t : mesh.triangles) {
+    sets.unite(t[0], t[1]);
+    sets.unite(t[0], t[2]);
+  }
+  std::vector<double> volume(mesh.points.size(), 0.0);
+  std::vector<uint8_t> has_triangles(mesh.points.size(), 0);
+  for (const auto& t : mesh.triangles) {
+    volume[sets.find(t[0])] += triangle_volume(mesh, t);
+    has_triangles[sets.find(t[0])] = 1;
+  }
+  double largest = 0;
+  for (double v : volume) largest = std::max(largest, v);
+  std::vector<uint8_t> keep(mesh.points.size(), 1);
+  for (size_t root = 0; root < volume.size(); ++root) {
+    if (!has_triangles[root]) continue;
+    const double v = volume[root];
+    if (v >= 0 && v < min_fraction * largest) {  // includes flat debris enclosing nothing
+      keep[root] = 0;
+      ++report.dropped;
+      report.dropped_volume += v;
+    } else if (v > 0) {
+      ++report.kept;
+    } else if (v < 0) {
+      ++report.cavities;
+    }
+  }
+
+  // Compact: surviving triangles in their order, points in order of first use.
+  std::vector<uint32_t> renumber(mesh.points.size(), UINT32_MAX);
+  TriangleMesh out;
+  out.triangles.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    if (!keep[sets.find(t[0])]) continue;
+    std::array<uint32_t, 3> u{};
+    for (int k = 0; k < 3; ++k) {
+      uint32_t& r = renumber[t[static_cast<size_t>(k)]];
+      if (r == UINT32_MAX) {
+        r = static_cast<uint32_t>(out.points.size());
+        out.points.push_back(mesh.points[t[static_cast<size_t>(k)]]);
+      }
+      u[static_cast<size_t>(k)] = r;
+    }
+    out.triangles.push_back(u);
+  }
+  mesh = std::move(out);
+  report.volume = signed_volume(mesh);
+  return report;
+}
+
+}  // namespace offsetgen::mesh

@@ -1,0 +1,32 @@
+// An indexed triangle mesh and what `mesh` does to it after extraction: closed pieces, their
+// volumes, outward orientation, dropping small pieces.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace offsetgen::mesh {
+
+struct TriangleMesh {
+  std::vector<std::array<float, 3>> points;
+  std::vector<std::array<uint32_t, 3>> triangles;
+};
+
+// Volume enclosed by the triangles (divergence theorem), positive when they face outward.
+double signed_volume(const TriangleMesh& mesh);
+
+struct PieceReport {
+  int kept = 0;          // pieces (closed surfaces enclosing material) written
+  int dropped = 0;       // pieces below the volume threshold, removed
+  int cavities = 0;      // closed surfaces bounding voids inside a piece (negative volume), kept
+  double dropped_volume = 0;
+  double volume = 0;     // of what is kept
+};
+
+// Orients the whole mesh outward, then removes every connected piece whose volume is below
+// `min_fraction` of the largest piece's, and points no triangle uses. Deterministic.
+PieceReport keep_large_pieces(TriangleMesh& mesh, double min_fraction);
+
+}  // namespace offsetgen::mesh

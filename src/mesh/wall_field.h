@@ -1,0 +1,77 @@
+// The solid to mesh as a level set: w(p) < 0 inside the wall between the offset surfaces at -t/2
+// and +t/2. w is evaluated through the functions a user gets: the C header of `generate` (batch
+// API, <prefix>_offset_n), compiled with the system C compiler and loaded with dlopen as `check`
+// does.
+#pragma once
+
+#include "lowering/program.h"
+#include "pipeline/generate.h"
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace offsetgen::mesh {
+
+struct WallRequest {
+  GenerationRequest generation;  // surface or expression, params, method, order
+  std::string thickness;         // total wall thickness: a number or an expression of x, y, z (cell units)
+};
+
+class WallField {
+ public:
+  // Generates the header, compiles and loads it. Throws InputError for bad input (unknown surface,
+  // a 2D surface, a bad thickness) and std::runtime_error when the compiler fails.
+  explicit WallField(const WallRequest& request);
+  ~WallField();
+  WallField(const WallField&) = delete;
+  WallField& operator=(const WallField&) = delete;
+
+  // Per-thread scratch space (the thickness evaluator is not reentrant).
+  class Worker {
+   public:
+    explicit Worker(const WallField& field);
+    ~Worker();
+
+   private:
+    friend class WallField;
+    std::unique_ptr<Evaluator> thickness;
+    std::vector<double> input, plus, minus, h_plus, h_minus;
+  };
+
+  // w at n points (cell coordinates): max(phi(p, t/2), -phi(p, -t/2)) / (k M), so roughly a distance
+  // in cell units, negative inside the wall. Thread-safe with one Worker per thread.
+  void walls(size_t n, const double* x, const double* y, const double* z, double* w, Worker& worker) const;
+  // F(p) (the emitted _field), and a bound of |grad F| in cell units: k M.
+  double field(double x, double y, double z) const { return field_(x, y, z); }
+  double field_lipschitz() const { return lipschitz_; }
+
+  // The thickness at one point, and its smallest and largest value sampled over a box of cells
+  // (8 samples per cell and axis). Throws InputError where it is not positive and finite.
+  double thickness_at(double x, double y, double z, Worker& worker) const;
+  std::array<double, 2> thickness_range(const std::array<int, 3>& cells) const;
+  bool graded() const { return graded_; }
+
+  const Generation& generation() const { return generation_; }
+  double generate_seconds() const { return generate_seconds_; }
+  double compile_seconds() const { return compile_seconds_; }
+  const std::string& compile_flags() const { return compile_flags_; }
+
+ private:
+  Generation generation_;
+  bool graded_ = false;
+  double uniform_thickness_ = 0;
+  Program thickness_program_;
+  double lipschitz_ = 0, distance_scale_ = 0;
+  double generate_seconds_ = 0, compile_seconds_ = 0;
+  std::string compile_flags_;
+  void* library_ = nullptr;
+  using OffsetN = void (*)(size_t, const double*, const double*, const double*, const double*, double*);
+  using Field = double (*)(double, double, double);
+  OffsetN offset_n_ = nullptr;
+  Field field_ = nullptr;
+};
+
+}  // namespace offsetgen::mesh

@@ -1,0 +1,142 @@
+#include "mesh_test_support.h"
+
+#include "check/metadata.h"
+#include "check/process.h"
+#include "pipeline/generate.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace offsetgen::mesh::testing {
+namespace fs = std::filesystem;
+
+std::string scratch_dir(const std::string& name) {
+  fs::path dir = fs::path(OFFSETGEN_MESH_TEST_TMP) / (name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+Run run_offsetgen(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {OFFSETGEN_EXE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  check::ProcessResult r = check::run_process(argv);
+  return {r.exit_code, r.output};
+}
+
+std::vector<std::array<std::array<float, 3>, 3>> read_stl(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.size() < 84) throw std::runtime_error(path + ": too short for binary STL");
+  uint32_t n = 0;
+  std::memcpy(&n, bytes.data() + 80, 4);
+  if (bytes.size() != 84 + 50 * size_t(n)) throw std::runtime_error(path + ": size does not match the facet count");
+  std::vector<std::array<std::array<float, 3>, 3>> facets(n);
+  for (size_t i = 0; i < n; ++i) std::memcpy(facets[i].data(), bytes.data() + 84 + 50 * i + 12, 36);
+  return facets;
+}
+
+double stl_volume(const std::vector<std::array<std::array<float, 3>, 3>>& facets) {
+  double v = 0;
+  for (const auto& f : facets) {
+    const auto &a = f[0], &b = f[1], &c = f[2];
+    v += (a[0] * (double(b[1]) * c[2] - double(b[2]) * c[1]) + a[1] * (double(b[2]) * c[0] - double(b[0]) * c[2]) +
+          a[2] * (double(b[0]) * c[1] - double(b[1]) * c[0])) /
+         6.0;
+  }
+  return v;
+}
+
+std::map<std::string, double> admesh_report(const std::string& stl, std::string* raw) {
+  check::ProcessResult r = check::run_process({"admesh", stl});
+  if (!r.started || r.exit_code != 0) throw std::runtime_error("admesh failed: " + r.output);
+  if (raw) *raw = r.output;
+  std::map<std::string, double> out;
+  // admesh prints the initial check ("Number of facets", "Total disconnected facets") and then the
+  // results after its fixes, with the same labels; the first occurrence is the file as written.
+  const std::vector<std::pair<std::string, std::string>> labels = {
+      {"facets", "Number of facets"},          {"disconnected facets", "Total disconnected facets"},
+      {"parts", "Number of parts"},            {"degenerate facets", "Degenerate facets"},
+      {"edges fixed", "Edges fixed"},          {"facets removed", "Facets removed"},
+      {"facets added", "Facets added"},        {"facets reversed", "Facets reversed"},
+      {"backwards edges", "Backwards edges"},  {"normals fixed", "Normals fixed"}};
+  for (const auto& [key, label] : labels) {
+    std::regex re(label + R"(\s*:\s*(-?[0-9.]+))");
+    std::smatch m;
+    if (std::regex_search(r.output, m, re)) out[key] = std::stod(m[1]);
+  }
+  return out;
+}
+
+ExactWalls::ExactWalls(const std::string& surface, int order, double thickness) : t_(thickness) {
+  GenerationRequest request;
+  request.surface = surface;
+  request.order = order;
+  Generation g = generate(request);
+  const std::string dir = scratch_dir("exact-" + surface);
+  const std::string path = dir + "/" + g.prefix + ".h";
+  std::ofstream(path) << g.c_header;
+  check::FileMetadata meta = check::read_metadata(path);
+  check::CompileOptions options;
+  options.optimization = "-O2";
+  options.cxx = false;
+  compiled_ = std::make_unique<check::CompileResult>(
+      check::compile_and_load(path, meta, check::find_toolchain(), options));
+  if (!compiled_->ok) throw std::runtime_error("cannot compile " + path);
+}
+
+double ExactWalls::phi(const double p[3], double h) const { return compiled_->library->functions().offset(p, h); }
+
+double ExactWalls::w(const double p[3]) const { return std::max(phi(p, 0.5 * t_), -phi(p, -0.5 * t_)); }
+
+double wall_volume_per_cell(const ExactWalls& walls, int n, int scan) {
+  double total = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      double p[3] = {(i + 0.5) / n, (j + 0.5) / n, 0};
+      auto w_at = [&](double z) {
+        p[2] = z;
+        return walls.w(p);
+      };
+      auto crossing = [&](double a, double b, double wa) {
+        for (int k = 0; k < 60 && b - a > 1e-13; ++k) {
+          const double m = 0.5 * (a + b);
+          const double wm = w_at(m);
+          if ((wm <= 0) == (wa <= 0)) {
+            a = m;
+            wa = wm;
+          } else {
+            b = m;
+          }
+        }
+        return 0.5 * (a + b);
+      };
+      double length = 0, z0 = 0, w0 = w_at(0);
+      double start = w0 <= 0 ? 0 : -1;
+      for (int k = 1; k <= scan; ++k) {
+        const double z1 = double(k) / scan, w1 = w_at(z1);
+        if ((w0 <= 0) != (w1 <= 0)) {
+          const double z = crossing(z0, z1, w0);
+          if (w1 <= 0) {
+            start = z;
+          } else {
+            length += z - start;
+          }
+        }
+        z0 = z1;
+        w0 = w1;
+      }
+      if (w0 <= 0) length += 1 - start;
+      total += length;
+    }
+  return total / (double(n) * n);
+}
+
+}  // namespace offsetgen::mesh::testing

@@ -1,0 +1,51 @@
+// Helpers of the mesh tests: run `offsetgen mesh`, read binary STL, ask admesh, and the exact walls
+// of a catalog surface through its generated header (compiled at -O2 and loaded).
+#pragma once
+
+#include "check/compile.h"
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace offsetgen::mesh::testing {
+
+std::string scratch_dir(const std::string& name);
+
+struct Run {
+  int exit_code = -1;
+  std::string output;
+};
+Run run_offsetgen(const std::vector<std::string>& args);
+
+// Facets of a binary STL (3 vertices each); throws when the file is not one.
+std::vector<std::array<std::array<float, 3>, 3>> read_stl(const std::string& path);
+double stl_volume(const std::vector<std::array<std::array<float, 3>, 3>>& facets);
+
+// admesh's report of a file, as "name" -> number, from its (default: check and fix all) run:
+// "parts", "backwards edges", "disconnected facets" (before fixing), "facets added" (holes filled),
+// "degenerate facets", "facets removed", "facets reversed", "edges fixed", "facets" (before fixing).
+std::map<std::string, double> admesh_report(const std::string& stl, std::string* raw = nullptr);
+
+// The walls of a catalog surface: phi(p, +t/2) and phi(p, -t/2) of the generated header.
+class ExactWalls {
+ public:
+  ExactWalls(const std::string& surface, int order, double thickness);
+  // max(phi(p, t/2), -phi(p, -t/2)): <= 0 in the wall.
+  double w(const double p[3]) const;
+  double phi(const double p[3], double h) const;
+  double thickness() const { return t_; }
+
+ private:
+  std::unique_ptr<check::CompileResult> compiled_;
+  double t_;
+};
+
+// Volume of the wall inside [0, 1]^3 by column integration: an n x n midpoint grid in (x, y); along
+// each column z in [0, 1] the wall's intervals are bracketed by a scan of `scan` steps and their ends
+// refined by bisection to 1e-13.
+double wall_volume_per_cell(const ExactWalls& walls, int n, int scan);
+
+}  // namespace offsetgen::mesh::testing

@@ -1,0 +1,257 @@
+// `offsetgen mesh` as a user runs it: the parts are closed, oriented, one piece (admesh), their
+// volume matches the exact wall volume, vertices lie on the exact walls; bad input exits 2 and
+// writes nothing.
+#include "mesh_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include <unistd.h>
+
+namespace offsetgen::mesh::testing {
+namespace {
+namespace fs = std::filesystem;
+
+struct Case {
+  std::string name;
+  std::vector<std::string> args;  // surface and wall
+};
+
+// Cells of 10 mm; the summary's resolution is read back from the output.
+int resolution_of(const std::string& output) {
+  std::smatch m;
+  const std::regex re(R"((\d+) voxels per cell)");
+  return std::regex_search(output, m, re) ? std::stoi(m[1]) : 0;
+}
+
+class MeshAdmesh : public ::testing::TestWithParam<Case> {};
+
+TEST_P(MeshAdmesh, IsClosedConsistentlyOrientedAndOnePart) {
+  const Case& c = GetParam();
+  const std::string dir = scratch_dir("admesh-" + c.name);
+  const std::string stl = dir + "/part.stl";
+  std::vector<std::string> args = {"mesh", "--cells", "3", "--cell-size", "10", "-o", stl};
+  args.insert(args.end(), c.args.begin(), c.args.end());
+  Run r = run_offsetgen(args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::string raw;
+  auto report = admesh_report(stl, &raw);
+  EXPECT_GT(report["facets"], 1000) << raw;
+  EXPECT_EQ(report["disconnected facets"], 0) << raw;
+  EXPECT_EQ(report["facets added"], 0) << "holes\n" << raw;
+  EXPECT_EQ(report["backwards edges"], 0) << raw;
+  EXPECT_EQ(report["facets reversed"], 0) << raw;
+  EXPECT_EQ(report["parts"], 1) << raw;
+  EXPECT_GT(stl_volume(read_stl(stl)), 0) << "facets face inward";
+  std::cout << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Parts, MeshAdmesh,
+    ::testing::Values(Case{"gyroid", {"--surface", "gyroid", "--thickness", "0.1"}},
+                      Case{"schwarzp", {"--surface", "schwarzp", "--thickness", "0.1"}},
+                      Case{"diamond", {"--surface", "diamond", "--thickness", "0.1"}},
+                      Case{"gyroid_graded", {"--surface", "gyroid", "--thickness", "0.05 + 0.1*x/3"}},
+                      Case{"user_expression",
+                           {"--expr", "cos(2*Pi*x) + cos(2*Pi*y) + cos(2*Pi*z) + a*cos(2*Pi*x)*cos(2*Pi*y)*cos(2*Pi*z)",
+                            "--param", "a=0.5", "--name", "warped_p", "--thickness", "0.12"}}),
+    [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+// The gyroid block at t = 0.1 against its exact walls (the generated order-4 functions).
+class MeshAccuracy : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new std::string(scratch_dir("accuracy"));
+    const std::string stl = *dir_ + "/gyroid.stl";
+    Run r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.1", "--cells", "2", "--cell-size", "10",
+                           "-o", stl});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    resolution_ = resolution_of(r.output);
+    facets_ = new std::vector<std::array<std::array<float, 3>, 3>>(read_stl(stl));
+    walls_ = new ExactWalls("gyroid", 4, 0.1);
+  }
+  static void TearDownTestSuite() {
+    delete dir_;
+    delete facets_;
+    delete walls_;
+  }
+  static std::string* dir_;
+  static std::vector<std::array<std::array<float, 3>, 3>>* facets_;
+  static ExactWalls* walls_;
+  static int resolution_;
+};
+std::string* MeshAccuracy::dir_ = nullptr;
+std::vector<std::array<std::array<float, 3>, 3>>* MeshAccuracy::facets_ = nullptr;
+ExactWalls* MeshAccuracy::walls_ = nullptr;
+int MeshAccuracy::resolution_ = 0;
+
+TEST_F(MeshAccuracy, VolumeIsWithinHalfAPercentOfTheExactWallVolume) {
+  // The block is 2^3 whole cells of the periodic walls: its exact volume is 8 cells' worth.
+  // Column integration at n = 200 and 400 columns per axis; their difference bounds the error.
+  const double coarse = wall_volume_per_cell(*walls_, 200, 200);
+  const double fine = wall_volume_per_cell(*walls_, 400, 200);
+  const double exact = 8 * fine * 1000;  // mm^3: cells of 10 mm
+  const double quadrature_error = 8 * std::abs(fine - coarse) * 1000;
+  const double mesh = stl_volume(*facets_);
+  const double relative = (mesh - exact) / exact;
+  std::cout << "exact wall volume " << exact << " mm^3 (quadrature difference " << quadrature_error
+            << "), mesh " << mesh << " mm^3, relative error " << relative << " at " << resolution_
+            << " voxels per cell\n";
+  EXPECT_LT(quadrature_error / exact, 1e-3);
+  EXPECT_LT(std::abs(relative), 0.005);
+}
+
+TEST_F(MeshAccuracy, VerticesLieWithinHalfAVoxelOfTheExactWalls) {
+  ASSERT_GT(resolution_, 0);
+  const double voxel = 1.0 / resolution_, half = 0.5 * voxel;
+  std::vector<std::array<float, 3>> points;
+  for (const auto& f : *facets_)
+    for (const auto& p : f) points.push_back(p);
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  size_t far = 0;
+  double worst = 0;
+  for (const auto& pf : points) {
+    const double p[3] = {pf[0] / 10.0, pf[1] / 10.0, pf[2] / 10.0};  // cell units
+    double box = HUGE_VAL;
+    for (int a = 0; a < 3; ++a) box = std::min({box, std::abs(p[a]), std::abs(p[a] - 2)});
+    // Distance to each wall: the gradient line through p crosses the wall within the bracket
+    // [p - d g, p + d g] iff phi changes sign on it; the smallest such d is an upper bound.
+    double nearest = box;
+    for (double h : {0.05, -0.05}) {
+      double g[3], length = 0;
+      for (int a = 0; a < 3; ++a) {
+        double q1[3] = {p[0], p[1], p[2]}, q2[3] = {p[0], p[1], p[2]};
+        q1[a] += 1e-6;
+        q2[a] -= 1e-6;
+        g[a] = (walls_->phi(q1, h) - walls_->phi(q2, h)) / 2e-6;
+        length += g[a] * g[a];
+      }
+      length = std::sqrt(length);
+      if (!(length > 0)) continue;
+      const double estimate = std::abs(walls_->phi(p, h)) / length;
+      for (double d : {estimate * 1.01 + 1e-9, half}) {
+        double lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+          lo[a] = p[a] - d * g[a] / length;
+          hi[a] = p[a] + d * g[a] / length;
+        }
+        if ((walls_->phi(lo, h) <= 0) != (walls_->phi(hi, h) <= 0)) {
+          nearest = std::min(nearest, d);
+          break;
+        }
+      }
+    }
+    worst = std::max(worst, nearest);
+    if (nearest > half) ++far;
+  }
+  std::cout << points.size() << " vertices; the farthest lies " << worst / voxel << " voxel from the walls\n";
+  EXPECT_EQ(far, 0u) << "of " << points.size() << " vertices; worst " << worst / voxel << " voxel";
+}
+
+// Bad input: a clear message, exit 2, and the output file untouched (absent, or its old bytes).
+struct BadCase {
+  std::string name;
+  std::vector<std::string> args;
+  std::string message;
+};
+
+class MeshBadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(MeshBadInput, ExitsWith2NamingTheProblemAndWritesNothing) {
+  const BadCase& c = GetParam();
+  const std::string dir = scratch_dir("bad-" + c.name);
+  const std::string fresh = dir + "/fresh.stl", existing = dir + "/existing.stl";
+  std::ofstream(existing) << "old bytes";
+  for (const std::string& out : {fresh, existing}) {
+    std::vector<std::string> args = {"mesh", "-o", out};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    for (auto& a : args)
+      if (a == "OUT") a = out;
+    Run r = run_offsetgen(args);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << "expected '" << c.message << "' in\n" << r.output;
+  }
+  EXPECT_FALSE(fs::exists(fresh));
+  std::ifstream in(existing);
+  std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(kept, "old bytes");
+  for (const auto& entry : fs::directory_iterator(dir))  // no temporary left behind
+    EXPECT_TRUE(entry.path() == fresh || entry.path() == existing) << entry.path();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, MeshBadInput,
+    ::testing::Values(
+        BadCase{"no_wall", {"--surface", "gyroid"}, "no wall given"},
+        BadCase{"zero_thickness", {"--surface", "gyroid", "--thickness", "0"}, "not a positive wall thickness"},
+        BadCase{"negative_graded_thickness",
+                {"--surface", "gyroid", "--thickness", "0.1 - 0.1*x", "--cells", "2"},
+                "must be positive"},
+        BadCase{"zero_cell_size", {"--surface", "gyroid", "--thickness", "0.1", "--cell-size", "0"},
+                "--cell-size 0 is not a positive length"},
+        BadCase{"negative_cell_size", {"--surface", "gyroid", "--thickness", "0.1", "--cell-size", "-5"},
+                "is not a positive length"},
+        BadCase{"zero_cells", {"--surface", "gyroid", "--thickness", "0.1", "--cells", "2x0"},
+                "is not a positive number of cells"},
+        BadCase{"wall_below_two_voxels", {"--surface", "gyroid", "--thickness", "0.1", "--resolution", "15"},
+                "walls need at least 2 voxels"},
+        BadCase{"unknown_surface", {"--surface", "nosuch", "--thickness", "0.1"}, "nosuch"},
+        BadCase{"two_d_surface",
+                {"--expr", "cos(2*Pi*x) + cos(2*Pi*y)", "--name", "flat", "--thickness", "0.1"},
+                "2D surface"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) { return info.param.name; });
+
+TEST(MeshBadOutput, AnUnwritableOrUnknownPathExitsWith2BeforeAnyWork) {
+  const std::string dir = scratch_dir("bad-output");
+  Run r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.1", "-o", dir + "/missing/part.stl"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+  r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.1", "-o", dir + "/part.obj"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("unknown mesh format"), std::string::npos) << r.output;
+  fs::create_directories(dir + "/locked");
+  fs::permissions(dir + "/locked", fs::perms::owner_read | fs::perms::owner_exec);
+  r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.1", "-o", dir + "/locked/part.stl"});
+  if (::geteuid() != 0) {  // root writes anywhere
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("not writable"), std::string::npos) << r.output;
+  }
+  fs::permissions(dir + "/locked", fs::perms::owner_all);
+}
+
+TEST(MeshOutput, SameInputsGiveTheSameBytesAndPlyMatchesStl) {
+  const std::string dir = scratch_dir("determinism");
+  const std::vector<std::string> base = {"mesh", "--surface", "schwarzp", "--thickness", "0.2", "--cells", "1x1x2",
+                                         "--resolution", "24"};
+  auto with = [&](const std::string& out, std::vector<std::string> extra = {}) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), {"-o", out});
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run_offsetgen(a);
+  };
+  ASSERT_EQ(with(dir + "/a.stl", {"--threads", "1"}).exit_code, 0);
+  ASSERT_EQ(with(dir + "/b.stl", {"--threads", "2"}).exit_code, 0);
+  Run ply = with(dir + "/c.ply");
+  ASSERT_EQ(ply.exit_code, 0) << ply.output;
+  std::ifstream a(dir + "/a.stl", std::ios::binary), b(dir + "/b.stl", std::ios::binary);
+  std::string sa((std::istreambuf_iterator<char>(a)), {}), sb((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_EQ(sa, sb);
+  EXPECT_NE(ply.output.find("binary PLY"), std::string::npos);
+  EXPECT_LT(fs::file_size(dir + "/c.ply"), fs::file_size(dir + "/a.stl"));
+  Run adaptive = with(dir + "/d.stl", {"--adaptivity", "0.5"});
+  ASSERT_EQ(adaptive.exit_code, 0) << adaptive.output;
+  EXPECT_LT(fs::file_size(dir + "/d.stl"), fs::file_size(dir + "/a.stl"));
+  auto report = admesh_report(dir + "/d.stl");
+  EXPECT_EQ(report["facets added"], 0);
+  EXPECT_EQ(report["backwards edges"], 0);
+  EXPECT_EQ(report["disconnected facets"], 0);
+}
+
+}  // namespace
+}  // namespace offsetgen::mesh::testing
