@@ -46,6 +46,11 @@ bool write_file_if_changed(const std::string& path, const std::string& content) 
       if (old.str() == content) return false;
     }
   }
+  write_file_atomically(path, content);
+  return true;
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
   require_writable(path);
   std::string tmp = (directory_of(path) / ("." + fs::path(path).filename().string() + ".tmpXXXXXX")).string();
   int fd = mkstemp(tmp.data());
@@ -64,7 +69,6 @@ bool write_file_if_changed(const std::string& path, const std::string& content) 
     std::remove(tmp.c_str());
     throw std::runtime_error(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
   }
-  return true;
 }
 
 }  // namespace offsetgen

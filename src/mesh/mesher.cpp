@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -47,6 +48,13 @@ std::string description(const MeshSettings& s, const MeshSummary& m, const std::
 
 }  // namespace
 
+int automatic_resolution(const std::array<int, 3>& cells, double min_thickness) {
+  const int per_wall = static_cast<int>(std::ceil(kDefaultVoxelsPerWall / min_thickness - 1e-9));
+  const int largest = *std::max_element(cells.begin(), cells.end());
+  const int per_block = (kDefaultBlockVoxels + largest - 1) / largest;
+  return std::max(per_wall, per_block);
+}
+
 MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress) {
   validate(s);
   MeshSummary m;
@@ -60,20 +68,15 @@ MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress) {
     throw InputError(e.what());
   }
 
-  progress("generating and compiling the functions", -1);
+  progress("generating the functions", -1);
   WallField field(s.wall);
   m.stages.push_back({"generate", field.generate_seconds()});
-  m.stages.push_back({"compile", field.compile_seconds()});
-  m.compile_flags = field.compile_flags();
-  StageClock clock(m.stages);
 
   const auto range = field.thickness_range(s.cells);
   m.min_thickness = range[0];
   m.max_thickness = range[1];
   m.automatic_resolution = s.resolution == 0;
-  m.resolution = m.automatic_resolution
-                     ? std::max(8, static_cast<int>(std::ceil(kDefaultVoxelsPerWall / m.min_thickness - 1e-9)))
-                     : s.resolution;
+  m.resolution = m.automatic_resolution ? automatic_resolution(s.cells, m.min_thickness) : s.resolution;
   if (m.min_thickness * m.resolution < kMinVoxelsPerWall)
     throw InputError(fmt::format(
         "the thinnest wall ({:.4g} cell) spans {:.3g} voxels at --resolution {}: walls need at least {} voxels; "
@@ -86,6 +89,12 @@ MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress) {
     throw InputError(fmt::format("{}x{}x{} cells at {} voxels per cell is {:.3g} voxels, above the limit of {:.3g}; "
                                  "lower --resolution or --cells",
                                  s.cells[0], s.cells[1], s.cells[2], m.resolution, voxels, kMaxVoxels));
+
+  progress("compiling the functions", -1);
+  field.compile();
+  m.stages.push_back({"compile", field.compile_seconds()});
+  m.compile_flags = field.compile_flags();
+  StageClock clock(m.stages);
 
   VoxelGrid grid;
   grid.cells = s.cells;
@@ -123,7 +132,7 @@ MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress) {
   progress("writing " + s.output, -1);
   const std::string bytes = encode_mesh(mesh, m.format, description(s, m, field.generation().surface.name));
   m.file_bytes = bytes.size();
-  m.written = write_file_if_changed(s.output, bytes);
+  write_file_atomically(s.output, bytes);
   clock.done("write");
   return m;
 }
@@ -136,8 +145,8 @@ std::string format_summary(const MeshSummary& m) {
     total += st.seconds;
     stages += fmt::format("{}{} {:.2f} s", stages.empty() ? "" : ", ", st.name, st.seconds);
   }
-  s += fmt::format("offsetgen mesh: {} {} ({}, {:.1f} MB)\n", m.output, m.written ? "written" : "unchanged",
-                   format_name(m.format), static_cast<double>(m.file_bytes) / 1e6);
+  s += fmt::format("offsetgen mesh: {} written ({}, {:.1f} MB)\n", m.output, format_name(m.format),
+                   static_cast<double>(m.file_bytes) / 1e6);
   s += fmt::format("  block:      {}x{}x{} cells of {:g} mm, {} voxels per cell{}, wall {:.4g}{} cell\n", m.cells[0],
                    m.cells[1], m.cells[2], m.cell_size, m.resolution, m.automatic_resolution ? " (automatic)" : "",
                    m.min_thickness,

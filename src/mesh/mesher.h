@@ -19,7 +19,7 @@ struct MeshSettings {
   WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};
   double cell_size = 10;  // mm
-  int resolution = 0;     // voxels per cell; 0 picks one: the thinnest wall spans >= 4 voxels
+  int resolution = 0;     // voxels per cell; 0 picks automatic_resolution()
   double adaptivity = 0;  // OpenVDB volumeToMesh adaptivity, [0, 1]
   double min_piece = 0.01;  // pieces below this fraction of the largest piece's volume are dropped
   std::string output;
@@ -27,7 +27,10 @@ struct MeshSettings {
 };
 
 inline constexpr int kMinVoxelsPerWall = 2;       // thinner walls are refused
-inline constexpr int kDefaultVoxelsPerWall = 4;   // the automatic resolution
+// The automatic resolution: the thinnest wall spans 4 voxels, and the block's longest side at least
+// 128, since the faces where the box cuts the walls lose O(voxel^2) of volume along every cut edge.
+inline constexpr int kDefaultVoxelsPerWall = 4;
+inline constexpr int kDefaultBlockVoxels = 128;
 inline constexpr double kMaxVoxels = 4.0e9;       // the padded block, a guard against typos
 
 struct StageTime {
@@ -50,11 +53,12 @@ struct MeshSummary {
   PieceReport pieces;
   std::string compile_flags;
   std::vector<StageTime> stages;
-  bool written = true;  // false when the file already held these bytes
 };
 
 // Called with a stage name and a fraction in [0, 1] (negative: no fraction known).
 using ProgressCallback = std::function<void(const std::string& stage, double fraction)>;
+
+int automatic_resolution(const std::array<int, 3>& cells, double min_thickness);
 
 // Throws InputError for bad settings before any file is touched.
 MeshSummary run_mesh(const MeshSettings& settings, const ProgressCallback& progress);

@@ -13,8 +13,7 @@ namespace {
 double axis_distance(double x, double length) { return std::max(-x, x - length); }
 
 struct BlockResult {
-  std::vector<float> values;
-  std::vector<uint8_t> active;
+  BandBlock block;
   size_t wall_samples = 0, skipped_voxels = 0;
   bool any = false;
 };
@@ -33,6 +32,7 @@ class BlockSampler {
 
   void sample(const std::array<int, 3>& origin, BlockResult& out) {
     out = BlockResult{};
+    out.block.origin = origin;
     double lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
       lo[a] = (origin[a] + 0.5) * v_;
@@ -51,8 +51,8 @@ class BlockSampler {
       return;
     }
 
-    out.values.assign(kBlockVoxels, background_);
-    out.active.assign(kBlockVoxels, 0);
+    out.block.values.assign(kBlockVoxels, background_);
+    out.block.active.assign(kBlockVoxels, 0);
     x_.clear();
     y_.clear();
     z_.clear();
@@ -91,8 +91,8 @@ class BlockSampler {
     w_.resize(n);
     field_.walls(n, x_.data(), y_.data(), z_.data(), w_.data(), worker_);
     for (size_t s = 0; s < n; ++s) {
-      out.values[static_cast<size_t>(slot_[s])] = static_cast<float>(std::max(w_[s], box_[s]) / v_);
-      out.active[static_cast<size_t>(slot_[s])] = 1;
+      out.block.values[static_cast<size_t>(slot_[s])] = static_cast<float>(std::max(w_[s], box_[s]) / v_);
+      out.block.active[static_cast<size_t>(slot_[s])] = 1;
     }
     out.any = true;
   }
@@ -150,11 +150,7 @@ SampledBand sample_band(const WallField& field, const VoxelGrid& grid, double ma
   for (size_t b = 0; b < origins.size(); ++b) {
     band.wall_samples += results[b].wall_samples;
     band.skipped_voxels += results[b].skipped_voxels;
-    if (!results[b].any) continue;
-    band.origins.push_back(origins[b]);
-    band.values.insert(band.values.end(), results[b].values.begin(), results[b].values.end());
-    band.active.insert(band.active.end(), results[b].active.begin(), results[b].active.end());
-    results[b] = BlockResult{};
+    if (results[b].any) band.blocks.push_back(std::move(results[b].block));
   }
   return band;
 }

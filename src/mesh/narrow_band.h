@@ -27,10 +27,14 @@ struct VoxelGrid {
 // The sampled band. Values are in voxel units (roughly the distance to the solid's surface),
 // negative inside the solid: max(w, box), so the box caps the walls with flat faces. Voxels that
 // are not active hold `background` (outside, and at least 2 voxels from the surface).
+struct BandBlock {
+  std::array<int, 3> origin{};  // index coordinates of the block's first voxel
+  std::vector<float> values;    // kBlockVoxels
+  std::vector<uint8_t> active;  // kBlockVoxels
+};
+
 struct SampledBand {
-  std::vector<std::array<int, 3>> origins;  // index coordinates of each block's first voxel
-  std::vector<float> values;                // kBlockVoxels per block
-  std::vector<uint8_t> active;              // kBlockVoxels per block
+  std::vector<BandBlock> blocks;  // those with an active voxel, in a fixed order
   float background = 3.0f;
   size_t blocks_tested = 0;  // blocks of the padded box
   size_t wall_samples = 0;   // voxels where the walls were evaluated

@@ -10,15 +10,14 @@ TriangleMesh extract_surface(const SampledBand& band, double adaptivity) {
   openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(band.background);
   grid->setGridClass(openvdb::GRID_LEVEL_SET);
   openvdb::FloatTree& tree = grid->tree();
-  for (size_t b = 0; b < band.origins.size(); ++b) {
-    const auto& o = band.origins[b];
+  for (const BandBlock& block : band.blocks) {
+    const auto& o = block.origin;
     openvdb::FloatTree::LeafNodeType* leaf = tree.touchLeaf(openvdb::Coord(o[0], o[1], o[2]));
-    const size_t base = b * kBlockVoxels;
     // Our block layout is the leaf's linear offset ((x * 8 + y) * 8 + z).
     static_assert(openvdb::FloatTree::LeafNodeType::DIM == kBlock, "blocks are OpenVDB leaves");
     for (openvdb::Index i = 0; i < static_cast<openvdb::Index>(kBlockVoxels); ++i) {
-      if (band.active[base + i]) {
-        leaf->setValueOn(i, band.values[base + i]);
+      if (block.active[i]) {
+        leaf->setValueOn(i, block.values[i]);
       } else {
         leaf->setValueOff(i, band.background);
       }

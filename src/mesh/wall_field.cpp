@@ -107,11 +107,13 @@ WallField::WallField(const WallRequest& request) {
     throw InputError(fmt::format("the gradient of '{}' has no finite positive bound over the cell", surface.name));
   distance_scale_ = 1.0 / lipschitz_;
   generate_seconds_ = seconds_since(start);
+}
 
+void WallField::compile() {
   // The header's documented build of the batch API (-O3 -march=native -fno-math-errno: the loops
   // vectorise; ~8x faster than -O2 for the gyroid at order 4), without contraction into FMA so the
   // values, and the mesh, do not depend on the CPU. -O0 for very large functions, as `check` does.
-  start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   check::Toolchain tools = check::find_toolchain();
   const bool large = count_ops(generation_.programs.offset) > check::kLargeFunctionOps;
   compile_flags_ = large ? "-O0" : "-O3 -march=native -fno-math-errno";

@@ -22,9 +22,12 @@ struct WallRequest {
 
 class WallField {
  public:
-  // Generates the header, compiles and loads it. Throws InputError for bad input (unknown surface,
-  // a 2D surface, a bad thickness) and std::runtime_error when the compiler fails.
+  // Generates the header and reads the thickness. Throws InputError for bad input (unknown surface,
+  // a 2D surface, a bad thickness).
   explicit WallField(const WallRequest& request);
+  // Compiles the header and loads it (walls() and field() need it). Throws InputError when there is
+  // no C compiler, std::runtime_error when it fails.
+  void compile();
   ~WallField();
   WallField(const WallField&) = delete;
   WallField& operator=(const WallField&) = delete;

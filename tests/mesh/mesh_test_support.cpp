@@ -4,12 +4,14 @@
 #include "check/process.h"
 #include "pipeline/generate.h"
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -24,7 +26,7 @@ std::string scratch_dir(const std::string& name) {
   return dir.string();
 }
 
-Run run_offsetgen(const std::vector<std::string>& args) {
+CliRun run_offsetgen(const std::vector<std::string>& args) {
   std::vector<std::string> argv = {OFFSETGEN_EXE};
   argv.insert(argv.end(), args.begin(), args.end());
   check::ProcessResult r = check::run_process(argv);
@@ -137,6 +139,25 @@ double wall_volume_per_cell(const ExactWalls& walls, int n, int scan) {
       total += length;
     }
   return total / (double(n) * n);
+}
+
+void expect_clean_part(const Case& c) {
+  const std::string dir = scratch_dir("admesh-" + c.name);
+  const std::string stl = dir + "/part.stl";
+  std::vector<std::string> args = {"mesh", "--cells", "3", "--cell-size", "10", "-o", stl};
+  args.insert(args.end(), c.args.begin(), c.args.end());
+  CliRun r = run_offsetgen(args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::string raw;
+  auto report = admesh_report(stl, &raw);
+  EXPECT_GT(report["facets"], 1000) << raw;
+  EXPECT_EQ(report["disconnected facets"], 0) << raw;
+  EXPECT_EQ(report["facets added"], 0) << "holes\n" << raw;
+  EXPECT_EQ(report["backwards edges"], 0) << raw;
+  EXPECT_EQ(report["facets reversed"], 0) << raw;
+  EXPECT_EQ(report["parts"], 1) << raw;
+  EXPECT_GT(stl_volume(read_stl(stl)), 0) << "facets face inward";
+  std::cout << r.output;
 }
 
 }  // namespace offsetgen::mesh::testing

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <map>
+#include <ostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,11 +15,22 @@ namespace offsetgen::mesh::testing {
 
 std::string scratch_dir(const std::string& name);
 
-struct Run {
+// A part meshed with --cells 3 --cell-size 10 plus `args` (surface and wall).
+struct Case {
+  std::string name;
+  std::vector<std::string> args;
+};
+inline void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+// Meshes the case and expects admesh to find no hole, no disconnected facet, no backwards edge and
+// one part, and the facets to face outward.
+void expect_clean_part(const Case& c);
+
+struct CliRun {
   int exit_code = -1;
   std::string output;
 };
-Run run_offsetgen(const std::vector<std::string>& args);
+CliRun run_offsetgen(const std::vector<std::string>& args);
 
 // Facets of a binary STL (3 vertices each); throws when the file is not one.
 std::vector<std::array<std::array<float, 3>, 3>> read_stl(const std::string& path);
