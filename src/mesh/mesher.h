@@ -18,20 +18,20 @@ namespace offsetgen::mesh {
 struct MeshSettings {
   WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};
-  double cell_size = 10;  // mm
-  int resolution = 0;     // voxels per cell; 0 picks automatic_resolution()
-  double adaptivity = 0;  // OpenVDB volumeToMesh adaptivity, [0, 1]
+  double cell_size = 10;    // mm
+  int resolution = 0;       // voxels per cell; 0 picks automatic_resolution()
+  double adaptivity = 0;    // OpenVDB volumeToMesh adaptivity, [0, 1]
   double min_piece = 0.01;  // pieces below this fraction of the largest piece's volume are dropped
   std::string output;
   int threads = 0;  // 0: one per hardware thread
 };
 
-inline constexpr int kMinVoxelsPerWall = 2;       // thinner walls are refused
+inline constexpr int kMinVoxelsPerWall = 2;  // thinner walls are refused
 // The automatic resolution: the thinnest wall spans 4 voxels, and the block's longest side at least
 // 128, since the faces where the box cuts the walls lose O(voxel^2) of volume along every cut edge.
 inline constexpr int kDefaultVoxelsPerWall = 4;
 inline constexpr int kDefaultBlockVoxels = 128;
-inline constexpr double kMaxVoxels = 4.0e9;       // the padded block, a guard against typos
+inline constexpr double kMaxVoxels = 4.0e9;  // the padded block, a guard against typos
 
 struct StageTime {
   std::string name;
@@ -47,6 +47,7 @@ struct MeshSummary {
   bool automatic_resolution = false;
   double min_thickness = 0, max_thickness = 0;  // cell units
   size_t wall_samples = 0, skipped_voxels = 0;
+  bool field_bound_used = true;   // blocks ruled out by F (narrow_band.h)
   double samples_per_second = 0;  // wall samples (each two _offset values) per second of the sample stage
   size_t points = 0, triangles = 0, file_bytes = 0;
   double volume = 0, box_volume = 0;  // mm^3

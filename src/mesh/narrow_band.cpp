@@ -9,6 +9,8 @@
 namespace offsetgen::mesh {
 namespace {
 
+constexpr float kActiveBand = 2.0f;  // voxels
+
 // Box distance along one axis: max(-x, x - length), negative inside [0, length].
 double axis_distance(double x, double length) { return std::max(-x, x - length); }
 
@@ -20,14 +22,17 @@ struct BlockResult {
 
 class BlockSampler {
  public:
-  BlockSampler(const WallField& field, const VoxelGrid& grid, double max_thickness, float background)
-      : field_(field), grid_(grid), worker_(field), background_(background) {
+  BlockSampler(const WallField& field, const VoxelGrid& grid, double max_thickness, bool use_field_bound,
+               float background)
+      : field_(field), worker_(field), background_(background) {
     v_ = grid.voxel();
     for (int a = 0; a < 3; ++a) length_[a] = grid.cells[a];
     // A point q with |F(q)| > L h_max is outside the wall: both offsets have the sign of F there (the
     // methods' safeguards guarantee it, see the headers' SAFETY notes). So a voxel with
-    // |F| > L (h_max + 2 voxels) is outside with all its neighbours within 2 voxels.
-    far_ = field.field_lipschitz() * (0.5 * max_thickness + 2 * v_);
+    // |F| > L (h_max + 2 voxels) is outside with all its neighbours within 2 voxels. L = k M bounds
+    // |grad F| only where M was computed: the unit cell, so everywhere for periodic (catalog) surfaces.
+    lipschitz_ = use_field_bound ? field.field_lipschitz() : 0;
+    far_ = lipschitz_ * (0.5 * max_thickness + 2 * v_);
   }
 
   void sample(const std::array<int, 3>& origin, BlockResult& out) {
@@ -46,7 +51,7 @@ class BlockSampler {
     // The whole block far from F = 0?
     const double c[3] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
     const double radius = 0.5 * std::sqrt(3.0) * (kBlock - 1) * v_;
-    if (std::abs(field_.field(c[0], c[1], c[2])) > far_ + field_.field_lipschitz() * radius) {
+    if (lipschitz_ > 0 && std::abs(field_.field(c[0], c[1], c[2])) > far_ + lipschitz_ * radius) {
       out.skipped_voxels = kBlockVoxels;
       return;
     }
@@ -66,7 +71,7 @@ class BlockSampler {
         for (int sl = 0; sl < kBlock; sl += kSub) {
           const double sc[3] = {(origin[0] + si + 0.5 * kSub) * v_, (origin[1] + sj + 0.5 * kSub) * v_,
                                 (origin[2] + sl + 0.5 * kSub) * v_};
-          if (std::abs(field_.field(sc[0], sc[1], sc[2])) > far_ + field_.field_lipschitz() * sub_radius) {
+          if (lipschitz_ > 0 && std::abs(field_.field(sc[0], sc[1], sc[2])) > far_ + lipschitz_ * sub_radius) {
             out.skipped_voxels += kSub * kSub * kSub;
             continue;
           }
@@ -90,19 +95,26 @@ class BlockSampler {
     if (n == 0) return;
     w_.resize(n);
     field_.walls(n, x_.data(), y_.data(), z_.data(), w_.data(), worker_);
+    // Only voxels near the surface are active: OpenVDB looks for crossings around active voxels and
+    // reads the stored values of inactive ones. |grad w| stays near 1 (w = phi / (k M), and |grad phi|
+    // <= k M (1 + O(|h| H / M))), so |value| >= 2 leaves every edge to a neighbour on one side. (The
+    // plain 4x4x4 gyroid mesh came out byte-identical with all evaluated voxels active.)
     for (size_t s = 0; s < n; ++s) {
-      out.block.values[static_cast<size_t>(slot_[s])] = static_cast<float>(std::max(w_[s], box_[s]) / v_);
-      out.block.active[static_cast<size_t>(slot_[s])] = 1;
+      const float value = static_cast<float>(std::max(w_[s], box_[s]) / v_);
+      const size_t slot = static_cast<size_t>(slot_[s]);
+      out.block.values[slot] = std::clamp(value, -background_, background_);
+      if (std::abs(value) < kActiveBand) {
+        out.block.active[slot] = 1;
+        out.any = true;
+      }
     }
-    out.any = true;
   }
 
  private:
   const WallField& field_;
-  const VoxelGrid& grid_;
   WallField::Worker worker_;
   float background_;
-  double v_ = 0, far_ = 0;
+  double v_ = 0, lipschitz_ = 0, far_ = 0;
   double length_[3] = {0, 0, 0};
   std::vector<double> x_, y_, z_, box_, w_;
   std::vector<int> slot_;
@@ -110,8 +122,8 @@ class BlockSampler {
 
 }  // namespace
 
-SampledBand sample_band(const WallField& field, const VoxelGrid& grid, double max_thickness, int threads,
-                        const std::function<void(double)>& progress) {
+SampledBand sample_band(const WallField& field, const VoxelGrid& grid, double max_thickness, bool use_field_bound,
+                        int threads, const std::function<void(double)>& progress) {
   SampledBand band;
   // Blocks cover voxel indices [-2, N + 2) on each axis, aligned to multiples of 8.
   std::vector<std::array<int, 3>> origins;
@@ -129,7 +141,7 @@ SampledBand sample_band(const WallField& field, const VoxelGrid& grid, double ma
   std::vector<BlockResult> results(origins.size());
   std::atomic<size_t> next{0}, done{0};
   auto work = [&] {
-    BlockSampler sampler(field, grid, max_thickness, band.background);
+    BlockSampler sampler(field, grid, max_thickness, use_field_bound, band.background);
     for (size_t b = next++; b < origins.size(); b = next++) {
       sampler.sample(origins[b], results[b]);
       ++done;

@@ -24,9 +24,10 @@ struct VoxelGrid {
   double voxel() const { return 1.0 / resolution; }
 };
 
-// The sampled band. Values are in voxel units (roughly the distance to the solid's surface),
-// negative inside the solid: max(w, box), so the box caps the walls with flat faces. Voxels that
-// are not active hold `background` (outside, and at least 2 voxels from the surface).
+// The sampled band. Values are in voxel units (roughly the distance to the solid's surface), negative
+// inside the solid: max(w, box), so the box caps the walls with flat faces; clamped to +-background.
+// Active voxels are those within 2 voxels of the surface; the others hold their value (or
+// `background` where the walls were not evaluated: outside, at least 2 voxels from the surface).
 struct BandBlock {
   std::array<int, 3> origin{};  // index coordinates of the block's first voxel
   std::vector<float> values;    // kBlockVoxels
@@ -36,13 +37,15 @@ struct BandBlock {
 struct SampledBand {
   std::vector<BandBlock> blocks;  // those with an active voxel, in a fixed order
   float background = 3.0f;
-  size_t blocks_tested = 0;  // blocks of the padded box
-  size_t wall_samples = 0;   // voxels where the walls were evaluated
+  size_t blocks_tested = 0;   // blocks of the padded box
+  size_t wall_samples = 0;    // voxels where the walls were evaluated
   size_t skipped_voxels = 0;  // voxels ruled out by F at the centre of their block or sub-block
 };
 
 // Samples the band with `threads` threads; `progress(fraction)` is called from the calling thread.
-SampledBand sample_band(const WallField& field, const VoxelGrid& grid, double max_thickness, int threads,
-                        const std::function<void(double)>& progress);
+// With use_field_bound, blocks whose F value rules out any wall nearby are skipped; that needs the
+// header's bound M on |grad F| to hold in the whole block (periodic surfaces, or a single cell).
+SampledBand sample_band(const WallField& field, const VoxelGrid& grid, double max_thickness, bool use_field_bound,
+                        int threads, const std::function<void(double)>& progress);
 
 }  // namespace offsetgen::mesh

@@ -18,11 +18,11 @@ struct TriangleMesh {
 double signed_volume(const TriangleMesh& mesh);
 
 struct PieceReport {
-  int kept = 0;          // pieces (closed surfaces enclosing material) written
-  int dropped = 0;       // pieces below the volume threshold, removed
-  int cavities = 0;      // closed surfaces bounding voids inside a piece (negative volume), kept
+  int kept = 0;      // pieces (closed surfaces enclosing material) written
+  int dropped = 0;   // pieces below the volume threshold, removed
+  int cavities = 0;  // closed surfaces bounding voids inside a piece (negative volume), kept
   double dropped_volume = 0;
-  double volume = 0;     // of what is kept
+  double volume = 0;  // of what is kept
 };
 
 // Orients the whole mesh outward, then removes every connected piece whose volume is below

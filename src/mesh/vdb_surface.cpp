@@ -19,7 +19,7 @@ TriangleMesh extract_surface(const SampledBand& band, double adaptivity) {
       if (block.active[i]) {
         leaf->setValueOn(i, block.values[i]);
       } else {
-        leaf->setValueOff(i, band.background);
+        leaf->setValueOff(i, block.values[i]);
       }
     }
   }

@@ -124,13 +124,12 @@ void WallField::compile() {
   const fs::path library = scratch.path / "wrapper.so";
   std::vector<std::string> command = tools.c;
   for (const std::string& flag : check::split_words(compile_flags_)) command.push_back(flag);
-  command.insert(command.end(), {"-std=c99", "-ffp-contract=off", "-fPIC", "-shared",
-                                 "-I" + scratch.path.string(), (scratch.path / "wrapper.c").string(), "-o",
-                                 library.string(), "-lm"});
+  command.insert(command.end(), {"-std=c99", "-ffp-contract=off", "-fPIC", "-shared", "-I" + scratch.path.string(),
+                                 (scratch.path / "wrapper.c").string(), "-o", library.string(), "-lm"});
   check::ProcessResult compiled = check::run_process(command);
   if (!compiled.started || compiled.exit_code != 0)
-    throw std::runtime_error(fmt::format("compiling the generated header failed ({}):\n{}", command.front(),
-                                         compiled.output));
+    throw std::runtime_error(
+        fmt::format("compiling the generated header failed ({}):\n{}", command.front(), compiled.output));
   library_ = ::dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (library_ == nullptr) throw std::runtime_error(fmt::format("dlopen: {}", ::dlerror()));
   offset_n_ = reinterpret_cast<OffsetN>(::dlsym(library_, "offsetgen_mesh_offset_n"));
@@ -168,17 +167,17 @@ std::array<double, 2> WallField::thickness_range(const std::array<int, 3>& cells
         const double x = double(i) / kPerCell, y = double(j) / kPerCell, z = double(l) / kPerCell;
         const double t = thickness_at(x, y, z, worker);
         if (!(t > 0) || !std::isfinite(t))
-          throw InputError(fmt::format("the wall thickness is {} at (x, y, z) = ({}, {}, {}): it must be positive "
-                                       "everywhere in the block",
-                                       t, x, y, z));
+          throw InputError(
+              fmt::format("the wall thickness is {} at (x, y, z) = ({}, {}, {}): it must be positive "
+                          "everywhere in the block",
+                          t, x, y, z));
         lo = std::min(lo, t);
         hi = std::max(hi, t);
       }
   return {lo, hi};
 }
 
-void WallField::walls(size_t n, const double* x, const double* y, const double* z, double* w,
-                      Worker& worker) const {
+void WallField::walls(size_t n, const double* x, const double* y, const double* z, double* w, Worker& worker) const {
   worker.h_plus.resize(n);
   worker.h_minus.resize(n);
   worker.plus.resize(n);

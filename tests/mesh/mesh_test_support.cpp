@@ -64,11 +64,11 @@ std::map<std::string, double> admesh_report(const std::string& stl, std::string*
   // admesh prints the initial check ("Number of facets", "Total disconnected facets") and then the
   // results after its fixes, with the same labels; the first occurrence is the file as written.
   const std::vector<std::pair<std::string, std::string>> labels = {
-      {"facets", "Number of facets"},          {"disconnected facets", "Total disconnected facets"},
-      {"parts", "Number of parts"},            {"degenerate facets", "Degenerate facets"},
-      {"edges fixed", "Edges fixed"},          {"facets removed", "Facets removed"},
-      {"facets added", "Facets added"},        {"facets reversed", "Facets reversed"},
-      {"backwards edges", "Backwards edges"},  {"normals fixed", "Normals fixed"}};
+      {"facets", "Number of facets"},         {"disconnected facets", "Total disconnected facets"},
+      {"parts", "Number of parts"},           {"degenerate facets", "Degenerate facets"},
+      {"edges fixed", "Edges fixed"},         {"facets removed", "Facets removed"},
+      {"facets added", "Facets added"},       {"facets reversed", "Facets reversed"},
+      {"backwards edges", "Backwards edges"}, {"normals fixed", "Normals fixed"}};
   for (const auto& [key, label] : labels) {
     std::regex re(label + R"(\s*:\s*(-?[0-9.]+))");
     std::smatch m;
@@ -89,8 +89,8 @@ ExactWalls::ExactWalls(const std::string& surface, int order, double thickness) 
   check::CompileOptions options;
   options.optimization = "-O2";
   options.cxx = false;
-  compiled_ = std::make_unique<check::CompileResult>(
-      check::compile_and_load(path, meta, check::find_toolchain(), options));
+  compiled_ =
+      std::make_unique<check::CompileResult>(check::compile_and_load(path, meta, check::find_toolchain(), options));
   if (!compiled_->ok) throw std::runtime_error("cannot compile " + path);
 }
 

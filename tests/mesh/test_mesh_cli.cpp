@@ -17,7 +17,6 @@ namespace offsetgen::mesh::testing {
 namespace {
 namespace fs = std::filesystem;
 
-
 // Cells of 10 mm; the summary's resolution is read back from the output.
 int resolution_of(const std::string& output) {
   std::smatch m;
@@ -48,8 +47,8 @@ class MeshAccuracy : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = new std::string(scratch_dir("accuracy"));
     const std::string stl = *dir_ + "/gyroid.stl";
-    CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.1", "--cells", "2", "--cell-size", "10",
-                           "-o", stl});
+    CliRun r = run_offsetgen(
+        {"mesh", "--surface", "gyroid", "--thickness", "0.1", "--cells", "2", "--cell-size", "10", "-o", stl});
     ASSERT_EQ(r.exit_code, 0) << r.output;
     resolution_ = resolution_of(r.output);
     facets_ = new std::vector<std::array<std::array<float, 3>, 3>>(read_stl(stl));
@@ -79,9 +78,8 @@ TEST_F(MeshAccuracy, VolumeIsWithinHalfAPercentOfTheExactWallVolume) {
   const double quadrature_error = 8 * std::abs(fine - coarse) * 1000;
   const double mesh = stl_volume(*facets_);
   const double relative = (mesh - exact) / exact;
-  std::cout << "exact wall volume " << exact << " mm^3 (quadrature difference " << quadrature_error
-            << "), mesh " << mesh << " mm^3, relative error " << relative << " at " << resolution_
-            << " voxels per cell\n";
+  std::cout << "exact wall volume " << exact << " mm^3 (quadrature difference " << quadrature_error << "), mesh "
+            << mesh << " mm^3, relative error " << relative << " at " << resolution_ << " voxels per cell\n";
   EXPECT_LT(quadrature_error / exact, 1e-3);
   EXPECT_LT(std::abs(relative), 0.005);
 }
@@ -174,13 +172,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"negative_graded_thickness",
                 {"--surface", "gyroid", "--thickness", "0.1 - 0.1*x", "--cells", "2"},
                 "must be positive"},
-        BadCase{"zero_cell_size", {"--surface", "gyroid", "--thickness", "0.1", "--cell-size", "0"},
+        BadCase{"zero_cell_size",
+                {"--surface", "gyroid", "--thickness", "0.1", "--cell-size", "0"},
                 "--cell-size 0 is not a positive length"},
-        BadCase{"negative_cell_size", {"--surface", "gyroid", "--thickness", "0.1", "--cell-size", "-5"},
+        BadCase{"negative_cell_size",
+                {"--surface", "gyroid", "--thickness", "0.1", "--cell-size", "-5"},
                 "is not a positive length"},
-        BadCase{"zero_cells", {"--surface", "gyroid", "--thickness", "0.1", "--cells", "2x0"},
+        BadCase{"zero_cells",
+                {"--surface", "gyroid", "--thickness", "0.1", "--cells", "2x0"},
                 "is not a positive number of cells"},
-        BadCase{"wall_below_two_voxels", {"--surface", "gyroid", "--thickness", "0.1", "--resolution", "15"},
+        BadCase{"wall_below_two_voxels",
+                {"--surface", "gyroid", "--thickness", "0.1", "--resolution", "15"},
                 "walls need at least 2 voxels"},
         BadCase{"unknown_surface", {"--surface", "nosuch", "--thickness", "0.1"}, "nosuch"},
         BadCase{"two_d_surface",
@@ -208,8 +210,8 @@ TEST(MeshBadOutput, AnUnwritableOrUnknownPathExitsWith2BeforeAnyWork) {
 
 TEST(MeshOutput, SameInputsGiveTheSameBytesAndPlyMatchesStl) {
   const std::string dir = scratch_dir("determinism");
-  const std::vector<std::string> base = {"mesh", "--surface", "schwarzp", "--thickness", "0.2", "--cells", "1x1x2",
-                                         "--resolution", "24"};
+  const std::vector<std::string> base = {"mesh",    "--surface", "schwarzp",     "--thickness", "0.2",
+                                         "--cells", "1x1x2",     "--resolution", "24"};
   auto with = [&](const std::string& out, std::vector<std::string> extra = {}) {
     std::vector<std::string> a = base;
     a.insert(a.end(), {"-o", out});

@@ -41,9 +41,9 @@ TEST(MeshPieces, InwardMeshIsTurnedOutward) {
 
 TEST(MeshPieces, SmallPiecesAreDroppedAndCounted) {
   TriangleMesh m;
-  add_cube(m, 0, 1);       // volume 1
-  add_cube(m, 5, 0.1f);    // 0.001: below 1%
-  add_cube(m, 10, 0.5f);   // 0.125: kept
+  add_cube(m, 0, 1);      // volume 1
+  add_cube(m, 5, 0.1f);   // 0.001: below 1%
+  add_cube(m, 10, 0.5f);  // 0.125: kept
   PieceReport r = keep_large_pieces(m, 0.01);
   EXPECT_EQ(r.kept, 2);
   EXPECT_EQ(r.dropped, 1);
