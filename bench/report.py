@@ -9,7 +9,10 @@ Inputs (all in --results):
   sympy.jsonl          tools/sympy_baseline.py runs (+ wall_seconds, maxrss_kb)
   count_ops.jsonl      tools/count_ops_c.py on our offset/shell functions
   eval_<flags>.json    Google Benchmark output (median aggregates) per flag set
-Every figure is a median over repetitions.
+  mesh/                the meshing stage (optional): machine.txt, runs.tsv (adaptivity rep wall_s user_s
+                       sys_s maxrss_kb), summary_a<A>.txt (offsetgen mesh's summary), admesh_a<A>.txt
+Every figure is a median over repetitions. With --splice-mesh only the "Meshing" section of the existing
+--output file is replaced (or inserted before "How to reproduce"); the other sections stay as they are.
 """
 
 import argparse
@@ -151,6 +154,101 @@ def load_agreement(results):
         return [line.rstrip() for line in f if line.startswith("  ") and "within" in line]
 
 
+MESH_HEADING = "## Meshing (issue 16): `offsetgen mesh`, gyroid 4x4x4 cells at 64 voxels per cell"
+MESH_TARGET_SECONDS = 10
+MESH_TARGET_KB = 2 * 1024 * 1024
+
+
+def mesh_section(results):
+    """The Meshing section as a list of lines, or [] when the run has no meshing results."""
+    d = os.path.join(results, "mesh")
+    if not os.path.exists(os.path.join(d, "runs.tsv")):
+        return []
+    facts = {}
+    with open(os.path.join(d, "machine.txt")) as f:
+        for line in f:
+            if "=" in line:
+                k, v = line.rstrip("\n").split("=", 1)
+                facts[k] = v
+    runs = collections.defaultdict(list)
+    with open(os.path.join(d, "runs.tsv")) as f:
+        next(f)
+        for line in f:
+            a, _rep, wall, user, sys_s, rss = line.rstrip("\n").split("\t")
+            runs[a].append((float(wall), float(user), float(sys_s), int(rss)))
+
+    def summary(a):
+        path = os.path.join(d, "summary_a%s.txt" % a)
+        text = open(path).read() if os.path.exists(path) else ""
+
+        def grab(pattern):
+            m = re.search(pattern, text)
+            return m.group(1) if m else "?"
+        return {"triangles": grab(r"mesh: +(\d+) triangles"), "mb": grab(r"\(binary STL, ([0-9.]+) MB\)"),
+                "volume": grab(r"volume: +([0-9.e+]+) mm\^3"), "density": grab(r"relative density ([0-9.]+)"),
+                "pieces": grab(r"pieces: +(.*)"), "samples": grab(r"evaluation: +(\d+) wall samples"),
+                "rate": grab(r"([0-9.e+]+) samples/s"), "stages": grab(r"time: +[0-9.]+ s \((.*)\)")}
+
+    def admesh(a):
+        path = os.path.join(d, "admesh_a%s.txt" % a)
+        if not os.path.exists(path):
+            return "not run"
+        text = open(path).read()
+        out = []
+        for label, name in (("Total disconnected facets", "disconnected facets"), ("Facets added", "holes filled"),
+                            ("Backwards edges", "backwards edges"), ("Number of parts", "parts")):
+            m = re.search(label + r"\s*:\s*(\d+)", text)
+            out.append("%s %s" % (name, m.group(1) if m else "?"))
+        return ", ".join(out)
+
+    lines = [MESH_HEADING, ""]
+    lines.append("`offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 --resolution 64 "
+                 "--adaptivity A -o part.stl` (a 40 mm cube, 256^3 voxels), run by `tools/run_benchmarks.sh` "
+                 "(`--mesh-only` reruns just this section). Wall time and peak RSS are the medians of %d runs "
+                 "(bench/time_cli.py; the compiler that builds the header is a child process, included). "
+                 "%s, %s cores, %s, commit %s, load average %s at start and %s at end." % (
+                     len(next(iter(runs.values()))), facts.get("cpu", "?"), facts.get("cores", "?"),
+                     facts.get("date", "?"), facts.get("commit", "?"), facts.get("load_start", "?"),
+                     facts.get("load_end", "?")))
+    lines.append("")
+    rows = []
+    for a in sorted(runs, key=float):
+        r = runs[a]
+        wall = median([x[0] for x in r])
+        rss = median([x[3] for x in r])
+        sm = summary(a)
+        ok = wall <= MESH_TARGET_SECONDS and rss <= MESH_TARGET_KB
+        rows.append([a, "%.2f (%.2f-%.2f)" % (wall, min(x[0] for x in r), max(x[0] for x in r)),
+                     "%.2f / %.2f" % (median([x[1] for x in r]), median([x[2] for x in r])),
+                     "%.0f" % (rss / 1024), sm["triangles"], sm["mb"], sm["volume"], sm["density"],
+                     verdict(ok)])
+    lines.append(table(["adaptivity", "wall s, median (min-max)", "user / sys s", "peak RSS MB", "triangles",
+                        "STL MB", "volume mm^3", "relative density",
+                        "target <= %d s, <= 2 GB" % MESH_TARGET_SECONDS], rows))
+    lines.append("")
+    for a in sorted(runs, key=float):
+        sm = summary(a)
+        lines.append("- adaptivity %s, one run: stages %s; %s wall samples at %s samples/s (each two "
+                     "`gyroid_o4_offset_n` values); pieces %s; admesh: %s." % (
+                         a, sm["stages"], sm["samples"], sm["rate"], sm["pieces"], admesh(a)))
+    lines.append("")
+    return lines
+
+
+def splice_mesh(output, section):
+    """Replaces the Meshing section of `output` (or inserts it before "How to reproduce")."""
+    with open(output) as f:
+        text = f.read().split("\n")
+    start = next((i for i, l in enumerate(text) if l.startswith("## Meshing")), None)
+    if start is not None:
+        end = next((i for i in range(start + 1, len(text)) if text[i].startswith("## ")), len(text))
+    else:
+        start = end = next((i for i, l in enumerate(text) if l.startswith("## How to reproduce")), len(text))
+    text[start:end] = section
+    with open(output, "w") as f:
+        f.write("\n".join(text))
+
+
 def verdict(ok):
     return "**met**" if ok else "**missed**"
 
@@ -159,8 +257,17 @@ def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--results", required=True)
     p.add_argument("--output", required=True)
+    p.add_argument("--splice-mesh", action="store_true",
+                   help="replace only the Meshing section of the existing --output file")
     args = p.parse_args(argv)
     R = args.results
+    if args.splice_mesh:
+        section = mesh_section(R)
+        if not section:
+            sys.stderr.write("report.py: no meshing results in %s\n" % R)
+            return 2
+        splice_mesh(args.output, section)
+        return 0
 
     machine = load_machine(R)
     gen = load_gen(R)
@@ -484,10 +591,12 @@ def main(argv=None):
     w(table(["surface", "order", "function", "scalar double", "scalar float", "float / double", "batch double",
              "batch float", "float / double"], rows))
     w("")
+    md.extend(mesh_section(R))
     w("## How to reproduce")
     w("")
     w("```sh\ntools/run_benchmarks.sh              # builds build-bench/, runs everything, rewrites BENCHMARKS.md\n"
-      "tools/run_benchmarks.sh --sympy-o5   # adds SymPy's gyroid order 5 (~76 s)\n```")
+      "tools/run_benchmarks.sh --sympy-o5   # adds SymPy's gyroid order 5 (~76 s)\n"
+      "tools/run_benchmarks.sh --mesh-only --build-dir build   # reruns only the Meshing section\n```")
     w("")
     w("Raw results (TSV, JSON lines, Google Benchmark JSON) stay in `build-bench/bench/results/`.")
     with open(args.output, "w") as f:

@@ -11,6 +11,9 @@
 #   docs/images/schwarzp_shell.png  Schwarz P, one cell, t = 0.1, order 4     (paper Figure 4)
 #   docs/images/neovius_shell.png   Neovius, one cell, t = 0.1, order 4       (paper Figure 6)
 #   docs/images/gyroid_graded.png   gyroid, 3 cells along x, t = 0.02 + 0.04 x, order 4 (Figure 9)
+#   docs/images/gyroid_graded_mesh.png  the STL of `offsetgen mesh` (gyroid, 3x2x2 cells of 10 mm,
+#                                   t = 0.04 + 0.04 x, adaptivity 0.1), drawn by tools/render_stl.py
+#                                   (matplotlib); skipped when offsetgen was built without mesh
 #
 # Deterministic: the same offsetgen and the same Mesa/LLVM give the same bytes (llvmpipe is
 # bit-reproducible, the PNG writer stores no timestamp). Renders in 5-25 s on 2 cores once built.
@@ -58,5 +61,15 @@ render schwarzp_shell.png schwarzp_o4 --thickness 0.1 --size 480x480
 render neovius_shell.png neovius_o4 --thickness 0.1 --size 480x480
 render gyroid_graded.png gyroid_graded_o4 --graded --thickness 0.02 --box 3x1x1 \
   --view 0.22 -0.95 0.3 --size 960x360
+
+# The meshed part: the STL itself, not the GLSL.
+if "$offsetgen" mesh --help >/dev/null 2>&1; then
+  "$offsetgen" mesh --surface gyroid --thickness "0.04 + 0.04*x" --cells 3x2x2 --cell-size 10 \
+    --adaptivity 0.1 -o "$tmp/gyroid_graded.stl" --quiet
+  /usr/bin/python3 tools/render_stl.py "$tmp/gyroid_graded.stl" "$out/gyroid_graded_mesh.png" --azimuth 300 \
+    --title "offsetgen mesh: gyroid, wall 0.04 to 0.16 cell along x, 3x2x2 cells of 10 mm"
+else
+  echo "render_readme_images: offsetgen has no mesh command (OpenVDB missing): gyroid_graded_mesh.png skipped" >&2
+fi
 
 ls -l "$out"/*.png

@@ -3,12 +3,15 @@
 #   generation time and peak memory per catalog surface and order (end to end through the CLI),
 #   the naive nested-GiNaC-diff baseline, SymPy's pipeline, op counts (ours, ours under SymPy's
 #   count_ops rules, SymPy's cse), ns per point of the scalar functions at -O2 and -O3 -march=native
-#   against SymPy's C and nested AD, the batch API, and the float path.
+#   against SymPy's C and nested AD, the batch API, the float path, and `offsetgen mesh` on a 4x4x4
+#   gyroid block at 64 voxels per cell (plain and adaptive, when offsetgen is built with OpenVDB).
 # Every timing is the median of repetitions (the machine is shared and noisy).
 #
-# Usage: tools/run_benchmarks.sh [--quick] [--sympy-o5] [--build-dir DIR] [--output FILE]
+# Usage: tools/run_benchmarks.sh [--quick] [--sympy-o5] [--mesh-only] [--build-dir DIR] [--output FILE]
 #   --quick      fewer repetitions (a smoke run, ~5 minutes after the build)
 #   --sympy-o5   also run SymPy's pipeline for the gyroid at order 5 once (~76 s more)
+#   --mesh-only  build offsetgen only, run the meshing stage only, and replace the "Meshing" section
+#                of the existing output file, keeping the others (~2 minutes)
 # Needs the packages of tools/install_deps.sh (libbenchmark-dev, python3-sympy, time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,10 +20,12 @@ build=build-bench
 output=BENCHMARKS.md
 quick=0
 sympy_o5=0
+mesh_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
     --sympy-o5) sympy_o5=1 ;;
+    --mesh-only) mesh_only=1 ;;
     --build-dir) build=$2; shift ;;
     --output) output=$2; shift ;;
     -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
@@ -30,14 +35,60 @@ while [ $# -gt 0 ]; do
 done
 
 py=/usr/bin/python3   # Debian's python, the one with sympy
-gen_reps=7; naive_reps=3; sympy_reps=3; bench_reps=7; min_time=0.1
-if [ $quick -eq 1 ]; then gen_reps=3; naive_reps=1; sympy_reps=1; bench_reps=3; min_time=0.05; fi
+gen_reps=7; naive_reps=3; sympy_reps=3; bench_reps=7; min_time=0.1; mesh_reps=5
+if [ $quick -eq 1 ]; then gen_reps=3; naive_reps=1; sympy_reps=1; bench_reps=3; min_time=0.05; mesh_reps=3; fi
 naive_cap=120   # seconds; the naive baseline grows ~25x per order
 jobs=$(nproc)
 
 results=$build/bench/results
 started=$(date +%s)
 stamp() { echo "[run_benchmarks $(( $(date +%s) - started ))s] $*"; }
+
+# `offsetgen mesh` on a 4x4x4 gyroid block (t = 0.1 cell) at 64 voxels per cell, plain and adaptive:
+# one run for the summary and admesh, then mesh_reps timed runs each (tools/../bench/time_cli.py).
+mesh_stage() {
+  if ! "$offsetgen" mesh --help > /dev/null 2>&1; then
+    stamp "meshing: skipped (offsetgen was built without OpenVDB)"
+    return
+  fi
+  stamp "meshing: gyroid 4x4x4 cells at 64 voxels per cell, adaptivity 0 and 0.1, $mesh_reps runs each"
+  rm -rf "$results/mesh"
+  mkdir -p "$results/mesh"
+  {
+    echo "date=$(date -u '+%Y-%m-%d %H:%M UTC')"
+    echo "commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src 2>/dev/null || echo '+local changes')"
+    echo "cpu=$(lscpu | sed -n 's/^Model name: *//p' | head -1)"
+    echo "cores=$(nproc)"
+    echo "load_start=$(cut -d' ' -f1-3 /proc/loadavg)"
+  } > "$results/mesh/machine.txt"
+  echo -e "adaptivity\trep\twall_s\tuser_s\tsys_s\tmaxrss_kb" > "$results/mesh/runs.tsv"
+  for adaptivity in 0 0.1; do
+    local stl="$results/mesh/gyroid_a$adaptivity.stl"
+    local args=(mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 --resolution 64
+                --adaptivity "$adaptivity" -o "$stl")
+    "$offsetgen" "${args[@]}" > "$results/mesh/summary_a$adaptivity.txt"
+    if command -v admesh > /dev/null; then admesh "$stl" > "$results/mesh/admesh_a$adaptivity.txt"; fi
+    $py bench/time_cli.py --runs "$mesh_reps" --prefix "$adaptivity\t" -- "$offsetgen" "${args[@]}" --quiet \
+      >> "$results/mesh/runs.tsv"
+    rm -f "$stl"
+  done
+  echo "load_end=$(cut -d' ' -f1-3 /proc/loadavg)" >> "$results/mesh/machine.txt"
+}
+
+if [ $mesh_only -eq 1 ]; then
+  stamp "build offsetgen ($build)"
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build "$build" -j"$jobs" --target offsetgen > "$build/mesh_build.log" 2>&1 ||
+    { tail -30 "$build/mesh_build.log" >&2; exit 1; }
+  results=$build/bench/results
+  offsetgen=$build/offsetgen
+  mkdir -p "$results"
+  mesh_stage
+  stamp "replacing the Meshing section of $output"
+  $py bench/report.py --results "$results" --output "$output" --splice-mesh
+  stamp "done: $output"
+  exit 0
+fi
 
 stamp "configure and build ($build)"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DOFFSETGEN_BUILD_BENCHMARKS=ON -DOFFSETGEN_BUILD_TESTS=ON > /dev/null
@@ -146,6 +197,7 @@ done
 stamp "batch agreement (tests/batch)"
 "$build/tests/batch/batch_tests" --gtest_filter='BatchAgreement.*' > "$results/batch_agreement.txt" 2>&1 ||
   echo "run_benchmarks: batch agreement test FAILED (see $results/batch_agreement.txt)" >&2
+mesh_stage
 echo "load_end=$(cut -d' ' -f1-3 /proc/loadavg)" >> "$results/machine.txt"
 echo "total_seconds=$(( $(date +%s) - started ))" >> "$results/machine.txt"
 

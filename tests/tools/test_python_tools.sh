@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Self-test of the Python helper tools (tools/sympy_baseline.py, tools/count_ops_c.py,
-# tools/plot_convergence.py). Needs Debian's /usr/bin/python3 (sympy, matplotlib) and gcc.
+# tools/plot_convergence.py, tools/render_stl.py). Needs Debian's /usr/bin/python3 (sympy, matplotlib) and gcc.
 # Prints "N passed, M failed" last; exits non-zero if anything failed. Runs in ~10 s.
 #
 #   bash tests/tools/test_python_tools.sh
@@ -145,8 +145,32 @@ EOF
   check "bad plot input leaves no file" [ ! -e "$TMP/bad.png" ]
 }
 
+# ------------------------------------------------------------ render_stl.py
+test_render_stl() {
+  # A unit cube as 12 outward facets of binary STL.
+  "$PY" - "$TMP/cube.stl" <<'PYEOF'
+import struct, sys
+v = [(i & 1, (i >> 1) & 1, (i >> 2) & 1) for i in range(8)]
+faces = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+tris = [t for a, b, c, d in faces for t in ((a, b, c), (a, c, d))]
+with open(sys.argv[1], "wb") as f:
+    f.write(b"binary STL: cube".ljust(80) + struct.pack("<I", len(tris)))
+    for t in tris:
+        f.write(struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *v[i]) for i in t) + b"\0\0")
+PYEOF
+  "$PY" "$ROOT/tools/render_stl.py" "$TMP/cube.stl" "$TMP/cube.png" --size 200 >"$TMP/render.out" 2>&1
+  check "render_stl exits 0" [ $? -eq 0 ]
+  check "render_stl draws the 6 facets facing the viewer" grep -q "(6 visible facets of 12)" "$TMP/render.out"
+  check "render_stl PNG signature" [ "$(head -c 4 "$TMP/cube.png" | tail -c 3)" = PNG ]
+  head -c 300 "$TMP/cube.stl" >"$TMP/cut.stl"
+  "$PY" "$ROOT/tools/render_stl.py" "$TMP/cut.stl" "$TMP/cut.png" >/dev/null 2>&1
+  check "render_stl: a truncated STL exits 2" [ $? -eq 2 ]
+  check "render_stl: a truncated STL leaves no file" [ ! -e "$TMP/cut.png" ]
+}
+
 test_sympy_baseline
 test_count_ops_c
 test_plot_convergence
+test_render_stl
 echo "$PASS passed, $FAIL failed"
 [ "$FAIL" -eq 0 ]
