@@ -46,6 +46,11 @@ int main(int argc, char** argv) {
 #ifdef OFFSETGEN_HAVE_MESH
   MeshOptions mesh;
   add_mesh_command(app, mesh);
+#else
+  // Named, so that asking for it gets a reason rather than "unknown subcommand".
+  app.add_subcommand("mesh", "(not in this build: offsetgen was configured without OpenVDB)")
+      ->allow_extras()
+      ->group("");
 #endif
 
   try {
@@ -63,6 +68,11 @@ int main(int argc, char** argv) {
 #endif
 #ifdef OFFSETGEN_HAVE_MESH
     if (app.got_subcommand("mesh")) return run_mesh_command(mesh);
+#else
+    if (app.got_subcommand("mesh"))
+      throw InputError(
+          "this offsetgen was built without `mesh`: it needs OpenVDB (apt-get install libopenvdb-dev "
+          "libboost-iostreams-dev, then reconfigure; -DOFFSETGEN_BUILD_MESH=ON insists)");
 #endif
   } catch (const InputError& e) {
     fmt::print(stderr, "offsetgen: error: {}\n", e.what());
