@@ -148,6 +148,7 @@ void expect_clean_part(const Case& c) {
   args.insert(args.end(), c.args.begin(), c.args.end());
   CliRun r = run_offsetgen(args);
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find('\r'), std::string::npos) << "a progress bar, though stderr is not a terminal";
   std::string raw;
   auto report = admesh_report(stl, &raw);
   EXPECT_GT(report["facets"], 1000) << raw;
