@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 namespace offsetgen {
 namespace {
@@ -27,8 +28,21 @@ TEST(Cli, HelpVersionAndList) {
   EXPECT_EQ(run_offsetgen("generate --no-such-option").exit_code, 2);
 }
 
+// A calendar date (2026-11-21, 21.11.2026, 11/21/26 style with a 4-digit year), a time of day
+// (07:36, 07:36:12) or a month name followed by a day, as `date`, __DATE__ and ISO stamps print them.
+const std::regex kDateOrTime(R"((\b(19|20)\d\d[-/.]\d\d?[-/.]\d\d?\b)|(\b\d\d?[-/.]\d\d?[-/.](19|20)\d\d\b)|)"
+                             R"((\b\d\d?:\d\d(:\d\d)?\b)|(\b(Jan|Feb|Mar|Apr|May|Jun|Jul|Aug|Sep|Oct|Nov|Dec) +\d\d?\b))");
+
+TEST(Cli, DatePatternRecognisesTimestamps) {
+  for (const char* stamp : {"2026-11-21", "2031/01/05", "21.11.2026", "07:36", "generated at 23:59:59",
+                            "Sat Nov 21 07:36:12 UTC 2026", "Nov 21 2026"})
+    EXPECT_TRUE(std::regex_search(std::string(stamp), kDateOrTime)) << stamp;
+  for (const char* number : {"1.7320525396196846", "6.2831853071795862", "\"order\":2,\"dims\":3", "offsetgen 0.1.0"})
+    EXPECT_FALSE(std::regex_search(std::string(number), kDateOrTime)) << number;
+}
+
 TEST(Cli, GeneratesAHeaderWithTheDocumentedApiAndNoTimestamp) {
-  std::string dir = testing::fresh_directory("cli_generate");
+  std::string dir = testing::scratch_dir("cli_generate");
   auto r = run_offsetgen("generate --surface gyroid --order 2 -o " + dir + "/g.h");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::string h = testing::read_file(dir + "/g.h");
@@ -40,15 +54,14 @@ TEST(Cli, GeneratesAHeaderWithTheDocumentedApiAndNoTimestamp) {
                              "Command: offsetgen generate --surface gyroid --order 2 -o g.h", "offsetgen-metadata"})
     EXPECT_NE(h.find(needle), std::string::npos) << needle;
   EXPECT_EQ(h.find("pow("), std::string::npos);
-  EXPECT_EQ(h.find("2026"), std::string::npos);  // no dates or times
+  std::smatch stamp;
+  EXPECT_FALSE(std::regex_search(h, stamp, kDateOrTime)) << "a date or time in the header: " << stamp.str();
 }
 
 TEST(Cli, UserExpressionTwoDimensionsAndGradedThickness) {
-  std::string dir = testing::fresh_directory("cli_expr");
-  auto r = run_offsetgen(
-      "generate --expr \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\" --param a=0.3 --name mysurf "
-      "--order 3 --thickness \"0.01 + 0.02*x\" -o " +
-      dir + "/mysurf.h");
+  std::string dir = testing::scratch_dir("cli_expr");
+  auto r = run_offsetgen("generate --expr \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\" --param a=0.3 --name mysurf "
+                         "--order 3 --thickness \"0.01 + 0.02*x\" -o " + dir + "/mysurf.h");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::string h = testing::read_file(dir + "/mysurf.h");
   EXPECT_NE(h.find("static inline double mysurf_graded(double x, double y, double z)"), std::string::npos);
@@ -71,7 +84,7 @@ TEST_P(CliBadInput, ExitsTwoWithAMessageAndTouchesNoFile) {
   // One directory per case: ctest runs the cases in parallel processes.
   std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
   for (char& c : name) c = c == '/' ? '_' : c;
-  std::string dir = testing::fresh_directory("cli_bad_" + name);
+  std::string dir = testing::scratch_dir("cli_bad_" + name);
   std::string target = dir + "/out.h";
   {
     std::ofstream keep(target);
@@ -108,7 +121,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& p) { return "case" + std::to_string(p.index); });
 
 TEST(Cli, WritesOnlyWhenTheContentChanges) {
-  std::string dir = testing::fresh_directory("cli_unchanged");
+  std::string dir = testing::scratch_dir("cli_unchanged");
   std::string file = dir + "/g.h";
   ASSERT_EQ(run_offsetgen("generate --surface schwarzp --order 1 -o " + file).exit_code, 0);
   auto old_time = fs::last_write_time(file) - std::chrono::hours(1);
