@@ -6,6 +6,7 @@
 #include "offset/offset_model.h"
 #include "surfaces/surface.h"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -28,6 +29,7 @@ struct GenerationRequest {
   std::string command;                        // the exact command, for the banner
   std::string c_file_name;                    // names printed in the banners
   std::string glsl_file_name;
+  std::function<void(const std::string&)> notice;  // announces a long run with a time estimate; may be empty
 };
 
 struct Generation {
@@ -37,7 +39,7 @@ struct Generation {
   std::string prefix;
   std::string c_header;       // empty unless requested
   std::string glsl_snippet;   // empty unless requested
-  std::string metadata_json;
+  std::string metadata_json;  // the C header's block; the GLSL snippet's says "language":"glsl"
 };
 
 // Resolves the surface (catalog or expression), validates every input, builds and lowers the
