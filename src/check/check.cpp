@@ -2,6 +2,7 @@
 
 #include "check/progress.h"
 #include "check/reference.h"
+#include "validate/cell_domain.h"
 #ifdef OFFSETGEN_CHECK_HAVE_GL
 #include "check/glsl_executor.h"
 #endif
@@ -162,6 +163,7 @@ CheckReport run_checks(const CheckSettings& s) {
   std::optional<GiNaC::ex> thickness_ex;
   std::optional<std::string> thickness_text = s.thickness ? s.thickness : meta.thickness;
   if (thickness_text) thickness_ex = parse_thickness(*thickness_text, meta, s.params);
+  if (s.thickness) require_positive_thickness(*thickness_ex, meta.dims, *s.thickness);  // as generate does
   std::optional<GiNaC::ex> file_thickness;
   if (meta.thickness) file_thickness = parse_thickness(*meta.thickness, meta, {});
   if (meta.kind == FileKind::Glsl) {

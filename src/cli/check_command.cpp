@@ -29,7 +29,8 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
                   "Path of plot_convergence.py (default: $OFFSETGEN_PLOT_SCRIPT, <prefix>/share/offsetgen/tools, "
                   "the source tree)");
   cmd->add_option("-t,--thickness", o.thickness,
-                  "Graded wall: total thickness t(x, y, z) in cell units, e.g. \"0.1*x\" (default: the file's)");
+                  "Graded wall: total thickness t(x, y, z) > 0 in cell units, e.g. \"0.1*x\" (default: the file's)")
+      ->each([&o](const std::string&) { o.thickness_given = true; });
   cmd->add_option("-p,--param", o.params, "NAME=VALUE for the thickness expression (repeatable)");
   cmd->add_option("--grid", o.grid, "Sample grid points per axis on [0, 1] (21: step 0.05 as in the paper)")
       ->check(CLI::Range(2, 401));
@@ -58,7 +59,7 @@ int run_check(const CheckOptions& o) {
   check::CheckSettings s;
   s.file = o.file;
   if (!o.h_list.empty()) s.h = check::parse_h_list(o.h_list);
-  if (!o.thickness.empty()) s.thickness = o.thickness;
+  if (o.thickness_given) s.thickness = o.thickness;
   for (const auto& p : o.params) s.params.insert(split_param(p));
   s.json_path = o.json_path;
   s.plot_path = o.plot_path;

@@ -15,6 +15,7 @@ struct CheckOptions {
   std::string plot_path;
   std::string plot_script;
   std::string thickness;
+  bool thickness_given = false;  // an empty --thickness is refused, not ignored
   std::vector<std::string> params;
   int grid = 21;
   int scan = 200;

@@ -176,13 +176,136 @@ std::string without_source_location(const std::string& message) {
   return out;
 }
 
-// `original` is the text as the user gave it (for messages), `rewritten` what GiNaC reads.
+// A power of two numbers is computed exactly by GiNaC: beyond this many bits it would take minutes and
+// gigabytes (33333^33333333332 did, found by fuzzing), and no such constant fits a double anyway.
+constexpr long kMaxConstantBits = 100000;
+
+// b^e, refusing exponents beyond kMaxIntegerExponent and exact numbers beyond kMaxConstantBits.
+GiNaC::ex checked_power(const GiNaC::ex& base, const GiNaC::ex& exponent, const std::string& what) {
+  if (GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_rational()) {
+    const auto& e = GiNaC::ex_to<GiNaC::numeric>(exponent);
+    const GiNaC::numeric limit(kMaxIntegerExponent);
+    if (GiNaC::abs(e.numer()) > limit || e.denom() > limit)
+      throw InputError(fmt::format("{}: the exponent {} is too large (at most {} in magnitude)", what, to_text(e),
+                                   kMaxIntegerExponent));
+    if (GiNaC::is_a<GiNaC::numeric>(base) && GiNaC::ex_to<GiNaC::numeric>(base).is_rational()) {
+      const auto& b = GiNaC::ex_to<GiNaC::numeric>(base);
+      const long bits = std::max(b.numer().int_length(), b.denom().int_length());
+      if (static_cast<double>(bits) * GiNaC::abs(e.numer()).to_double() > static_cast<double>(kMaxConstantBits))
+        throw InputError(fmt::format("{}: the number {}^{} is too large to compute exactly", what, to_text(b), to_text(e)));
+    }
+  }
+  return GiNaC::pow(base, exponent);
+}
+
+// Builds the expression from text that find_syntax_problem accepted and scan_expression rewrote
+// (decimals as (p/q), ** as ^): the same grammar, with every power checked before GiNaC computes it.
+class ExpressionBuilder {
+ public:
+  ExpressionBuilder(const std::string& text, const GiNaC::symtab& table, const std::string& what)
+      : s_(text), table_(table), what_(what) {}
+  GiNaC::ex build() { return expression(); }
+
+ private:
+  char peek() {
+    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+    return i_ < s_.size() ? s_[i_] : '\0';
+  }
+  GiNaC::ex expression() {
+    GiNaC::ex acc = term();
+    for (char c = peek(); c == '+' || c == '-'; c = peek()) {
+      ++i_;
+      const GiNaC::ex t = term();
+      acc = c == '+' ? acc + t : acc - t;
+    }
+    return acc;
+  }
+  GiNaC::ex term() {
+    GiNaC::ex acc = unary();
+    for (char c = peek(); c == '*' || c == '/'; c = peek()) {
+      ++i_;
+      const GiNaC::ex u = unary();
+      acc = c == '*' ? acc * u : acc / u;
+    }
+    return acc;
+  }
+  GiNaC::ex unary() {
+    const char c = peek();
+    if (c == '+' || c == '-') {
+      ++i_;
+      const GiNaC::ex u = unary();
+      return c == '+' ? u : -u;
+    }
+    return power();
+  }
+  GiNaC::ex power() {
+    const GiNaC::ex base = primary();
+    if (peek() != '^') return base;
+    ++i_;
+    return checked_power(base, unary(), what_);
+  }
+  GiNaC::ex primary() {
+    const char c = peek();
+    if (c == '(') {
+      ++i_;
+      const GiNaC::ex e = expression();
+      peek();
+      ++i_;  // ')'
+      return e;
+    }
+    const size_t start = i_;
+    if (std::isdigit(static_cast<unsigned char>(c))) {
+      while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
+      return GiNaC::numeric(s_.substr(start, i_ - start).c_str());
+    }
+    while (i_ < s_.size() && is_ident_char(s_[i_])) ++i_;
+    const std::string name = s_.substr(start, i_ - start);
+    if (peek() != '(') return table_.at(name);
+    ++i_;
+    std::vector<GiNaC::ex> args = {expression()};
+    while (peek() == ',') {
+      ++i_;
+      args.push_back(expression());
+    }
+    peek();
+    ++i_;  // ')'
+    if (args.size() != 1) throw InputError(fmt::format("{}: {}() takes one argument", what_, name));
+    return call(name, args[0]);
+  }
+  static GiNaC::ex call(const std::string& name, const GiNaC::ex& a) {
+    if (name == "sin") return GiNaC::sin(a);
+    if (name == "cos") return GiNaC::cos(a);
+    if (name == "tan") return GiNaC::tan(a);
+    if (name == "exp") return GiNaC::exp(a);
+    if (name == "log") return GiNaC::log(a);
+    if (name == "sqrt") return GiNaC::sqrt(a);
+    if (name == "sinh") return GiNaC::sinh(a);
+    if (name == "cosh") return GiNaC::cosh(a);
+    if (name == "tanh") return GiNaC::tanh(a);
+    if (name == "atan") return GiNaC::atan(a);
+    if (name == "asin") return GiNaC::asin(a);
+    if (name == "acos") return GiNaC::acos(a);
+    throw std::logic_error("ExpressionBuilder: function '" + name + "' passed the scan");
+  }
+
+  const std::string& s_;
+  const GiNaC::symtab& table_;
+  const std::string& what_;
+  size_t i_ = 0;
+};
+
+// `original` is the text as the user gave it (for messages), `rewritten` what the builder reads.
 GiNaC::ex parse_with(const std::string& original, const std::string& rewritten, const GiNaC::symtab& table,
                      const std::string& what) {
   try {
-    GiNaC::parser reader(table, true);
-    return reader(rewritten);
-  } catch (const std::exception& e) {
+    return ExpressionBuilder(rewritten, table, what).build();
+  } catch (const InputError&) {
+    throw;
+  } catch (const GiNaC::pole_error& e) {  // log(0), tan(Pi/2)
+    throw InputError(fmt::format("cannot evaluate {} '{}': a function meets a pole at a constant argument, where its "
+                                 "value is infinite ({})",
+                                 what, printable(original), without_source_location(e.what())));
+  } catch (const std::exception& e) {  // GiNaC's own, e.g. power::eval(): division by zero
     throw InputError(fmt::format("cannot parse {} '{}': {}", what, printable(original), without_source_location(e.what())));
   }
 }
@@ -324,7 +447,8 @@ Surface parse_natural_expression(const std::string& text) {
   table["Y"] = sym.Y;
   table["Z"] = sym.Z;
   Surface surface;
-  surface.field = parse_with(text, text, table, "catalog formula");
+  GiNaC::parser reader(table, true);  // the catalog's own formulas
+  surface.field = reader(text);
   surface.scale = 2 * GiNaC::Pi;
   surface.dims = surface.field.has(sym.Z) ? 3 : 2;
   surface.source_expr = text;

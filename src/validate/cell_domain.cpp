@@ -102,22 +102,39 @@ void sample(const std::vector<GiNaC::ex>& outputs, const std::vector<std::string
 }  // namespace
 
 void require_defined_on_cell(const Surface& surface) {
+  // F, its gradient and its Hessian: the model needs all three (the safeguard bounds the last two).
   const Symbols& sym = Symbols::get();
+  const int d = surface.dims;
   std::vector<GiNaC::ex> symbols, outputs = {surface.field};
   std::vector<std::string> names = {"F"};
-  for (int i = 0; i < surface.dims; ++i) {
+  for (int i = 0; i < d; ++i) {
     symbols.push_back(sym.natural(i));
     outputs.push_back(surface.field.diff(sym.natural(i)));
     names.push_back(std::string("the derivative dF/d") + "xyz"[i] + " of F");
   }
+  for (int i = 0; i < d; ++i) {
+    for (int j = i; j < d; ++j) {
+      outputs.push_back(outputs[static_cast<size_t>(1 + i)].diff(sym.natural(j)));
+      names.push_back(fmt::format("the second derivative d2F/d{}d{} of F", "xyz"[i], "xyz"[j]));
+    }
+  }
   const double scale = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(surface.scale)).to_double();
-  bool finite_somewhere = false;
-  sample(outputs, names, symbols, scale, surface.dims, [&](const std::vector<double>&, const std::vector<double>& v) {
-    finite_somewhere = finite_somewhere || std::isfinite(v[0]);
+  bool value = false, gradient = false, hessian = false;  // finite somewhere
+  auto all_finite = [](const std::vector<double>& v, size_t from, size_t to) {
+    for (size_t k = from; k < to; ++k)
+      if (!std::isfinite(v[k])) return false;
+    return true;
+  };
+  const size_t n_gradient = 1 + static_cast<size_t>(d);
+  sample(outputs, names, symbols, scale, d, [&](const std::vector<double>&, const std::vector<double>& v) {
+    value = value || std::isfinite(v[0]);
+    gradient = gradient || all_finite(v, 1, n_gradient);
+    hessian = hessian || all_finite(v, n_gradient, v.size());
   });
-  if (!finite_somewhere)
-    throw InputError(fmt::format("F is infinite at every sample of the cell [0, 1]^{}: it overflows double precision",
-                                 surface.dims));
+  const char* what = !value ? "F" : (!gradient ? "the gradient of F" : (!hessian ? "the Hessian of F" : nullptr));
+  if (what)
+    throw InputError(fmt::format("{} is infinite at every sample of the cell [0, 1]^{}: it overflows double precision",
+                                 what, d));
 }
 
 void require_positive_thickness(const GiNaC::ex& thickness, int dims, const std::string& text) {

@@ -114,6 +114,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"generate --expr \"sqrt(x - 0.5) + y\" --name s", "the square root of a negative number"},
         BadInput{"generate --expr \"x + y + z - b\" --param b=1e400 --name s", "b=1e400 is beyond the range of double"},
         BadInput{"generate --expr \"x + 1e99999999999999999999\" --name s", "out of range"},
+        BadInput{"generate --expr \" z -33333^33333333332\" --name s", "the exponent 33333333332 is too large"},
+        BadInput{"generate --expr \"z - 2^(9999*9999)\" --name s", "the exponent 99980001 is too large"},
+        BadInput{"generate --expr \"x/(1-1) + y\" --name s", "division by zero"},
+        BadInput{"generate --expr \"tan(Pi/2) + x + y\" --name s", "meets a pole at a constant argument"},
+        BadInput{"generate --expr \"atan(1e300*x) + y\" --name s", "d2F/dxdx of F is not defined everywhere"},
         BadInput{"generate --expr \"1/x + y - 3\" --name s --precision float", "beyond the float range"},
         BadInput{"generate --expr \"1/x + y - 3\" --name s --lang glsl", "beyond the float range"},
         // Names: accepted functions only, by name; Pi, not pi.
