@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace offsetgen {
 namespace {
@@ -180,8 +181,13 @@ std::string without_source_location(const std::string& message) {
 // gigabytes (33333^33333333332 did, found by fuzzing), and no such constant fits a double anyway.
 constexpr long kMaxConstantBits = 100000;
 
-// b^e, refusing exponents beyond kMaxIntegerExponent and exact numbers beyond kMaxConstantBits.
+// b^e, refusing exponents beyond kMaxIntegerExponent and exact numbers beyond kMaxConstantBits, and
+// 0 to a negative power before GiNaC throws from inside its evaluation (where it leaks the object).
 GiNaC::ex checked_power(const GiNaC::ex& base, const GiNaC::ex& exponent, const std::string& what) {
+  if (base.is_zero() && GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_real() &&
+      !GiNaC::ex_to<GiNaC::numeric>(exponent).is_positive())
+    throw std::domain_error(exponent.is_zero() ? std::string("0^0 is undefined")
+                                               : fmt::format("division by zero (0^{})", to_text(exponent)));
   if (GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_rational()) {
     const auto& e = GiNaC::ex_to<GiNaC::numeric>(exponent);
     const GiNaC::numeric limit(kMaxIntegerExponent);
@@ -225,6 +231,7 @@ class ExpressionBuilder {
     for (char c = peek(); c == '*' || c == '/'; c = peek()) {
       ++i_;
       const GiNaC::ex u = unary();
+      if (c == '/' && u.is_zero()) throw std::domain_error("division by zero");
       acc = c == '*' ? acc * u : acc / u;
     }
     return acc;
