@@ -12,6 +12,9 @@
 namespace offsetgen {
 namespace {
 
+// Entries of the Hessian above this everywhere leave the safeguard without a bound.
+constexpr double kMaxHessianEntry = 1e100;
+
 // Cell-centred samples, as dense as the safeguard's bound search: 24^3 in 3D, 96^2 in 2D. They avoid
 // the cell's faces, where log(x) or 1/x have their poles.
 std::vector<std::vector<double>> cell_samples(int dims) {
@@ -120,21 +123,33 @@ void require_defined_on_cell(const Surface& surface) {
   }
   const double scale = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(surface.scale)).to_double();
   bool value = false, gradient = false, hessian = false;  // finite somewhere
+  // The safeguard's bound search (and the emitted normal) sums squares: |grad F|^2 and the Hessian's
+  // squared entries must not overflow either (a gradient of 1e211 has a finite value but an infinite
+  // square: a fuzz finding).
   auto all_finite = [](const std::vector<double>& v, size_t from, size_t to) {
-    for (size_t k = from; k < to; ++k)
-      if (!std::isfinite(v[k])) return false;
-    return true;
+    double squares = 0;
+    for (size_t k = from; k < to; ++k) squares += v[k] * v[k];
+    return std::isfinite(squares);
   };
   const size_t n_gradient = 1 + static_cast<size_t>(d);
+  // The bound of the Hessian's spectral norm is computed in closed form, which cubes its entries.
+  auto tame = [](const std::vector<double>& v, size_t from, size_t to) {
+    for (size_t k = from; k < to; ++k)
+      if (!(std::fabs(v[k]) <= kMaxHessianEntry)) return false;
+    return true;
+  };
   sample(outputs, names, symbols, scale, d, [&](const std::vector<double>&, const std::vector<double>& v) {
     value = value || std::isfinite(v[0]);
     gradient = gradient || all_finite(v, 1, n_gradient);
-    hessian = hessian || all_finite(v, n_gradient, v.size());
+    hessian = hessian || tame(v, n_gradient, v.size());
   });
   const char* what = !value ? "F" : (!gradient ? "the gradient of F" : (!hessian ? "the Hessian of F" : nullptr));
   if (what)
-    throw InputError(fmt::format("{} is infinite at every sample of the cell [0, 1]^{}: it overflows double precision",
-                                 what, d));
+    throw InputError(fmt::format("{} is infinite at every sample of the cell [0, 1]^{}, or so large that {}: it "
+                                 "overflows double precision",
+                                 what, d,
+                                 what == std::string("the Hessian of F") ? "an entry exceeds 1e100 (its cube overflows)"
+                                                                        : "its square overflows"));
 }
 
 void require_positive_thickness(const GiNaC::ex& thickness, int dims, const std::string& text) {

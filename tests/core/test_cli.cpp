@@ -119,6 +119,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"generate --expr \"x/(1-1) + y\" --name s", "division by zero"},
         BadInput{"generate --expr \"tan(Pi/2) + x + y\" --name s", "meets a pole at a constant argument"},
         BadInput{"generate --expr \"atan(1e300*x) + y\" --name s", "d2F/dxdx of F is not defined everywhere"},
+        BadInput{"generate --expr \"x + 1e211*y\" --name s", "the gradient of F is infinite at every sample of the cell "
+                                                            "[0, 1]^2, or so large that its square overflows"},
+        BadInput{"generate --expr \"1e110*z^2 + x + y\" --name s", "an entry exceeds 1e100"},
         BadInput{"generate --expr \"1/x + y - 3\" --name s --precision float", "beyond the float range"},
         BadInput{"generate --expr \"1/x + y - 3\" --name s --lang glsl", "beyond the float range"},
         // Names: accepted functions only, by name; Pi, not pi.
