@@ -25,8 +25,9 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
   request.params = meta.params;
   request.order = meta.order;
   request.thickness = meta.thickness;
-  request.c = true;
-  request.glsl = false;
+  // The file's own language: its names need only be valid there.
+  request.c = meta.kind == FileKind::C;
+  request.glsl = meta.kind == FileKind::Glsl;
   const std::string default_prefix = meta.surface ? fmt::format("{}_o{}", *meta.surface, meta.order) : "";
   if (meta.expression || meta.prefix != default_prefix) request.name = meta.prefix;
   if (meta.expression && meta.prefix.empty()) request.name = "surface";

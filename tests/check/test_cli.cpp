@@ -207,6 +207,18 @@ TEST_F(CheckCli, GlslFilesAreCompiledForFourTargets) {
   EXPECT_EQ(bad.exit_code, 1) << bad.output;
 }
 
+// A snippet's names are checked against GLSL's rules only: offsetgen_* is reserved in C (the header's helpers), not in GLSL.
+TEST_F(CheckCli, ASnippetWithANameOnlyCReservesIsChecked) {
+  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  const std::string dir = *dir_ + "/underscore";
+  std::filesystem::create_directories(dir);
+  auto gen = testing::run_offsetgen(
+      {"generate", "--surface", "gyroid", "--order", "1", "--lang", "glsl", "--name", "offsetgen_g1", "--out-dir", dir, "-q"});
+  ASSERT_EQ(gen.exit_code, 0) << gen.output;
+  auto r = testing::run_offsetgen({"check", dir + "/offsetgen_g1.glsl", "--points", "20"});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
 // The snippet runs on Mesa llvmpipe and each function is judged against the 40-digit reference:
 // a wrong constant that still compiles fails (before, GLSL was compiled only).
 TEST_F(CheckCli, AGlslSnippetWithAWrongConstantFailsOnLlvmpipe) {
