@@ -76,8 +76,21 @@ def load_gen(results):
     return gen
 
 
-def load_metadata_ops(results, surface, order):
-    path = os.path.join(results, "gen", "%s_o%d.h" % (surface, order))
+def load_gen_tsv(path):
+    runs = collections.defaultdict(list)
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        next(f)
+        for line in f:
+            s, m, rep, wall, user, sys_, rss = line.split("\t")
+            runs[(s, int(m))].append((float(wall), float(user) + float(sys_), int(rss)))
+    return {key: {"wall": median([r[0] for r in rs]), "cpu": median([r[1] for r in rs]),
+                  "rss_mb": max(r[2] for r in rs) / 1024.0, "runs": len(rs)} for key, rs in runs.items()}
+
+
+def load_metadata_ops(results, surface, order, stem=None):
+    path = os.path.join(results, "gen", "%s_o%d.h" % (stem or surface, order))
     if not os.path.exists(path):
         return None
     with open(path) as f:
@@ -96,23 +109,115 @@ def load_jsonl(results, name):
         return [json.loads(line) for line in f if line.strip()]
 
 
+def load_benchmark_json(path):
+    """{benchmark name: ns per point (median cpu time / points)}, or None"""
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        data = json.load(f)
+    times = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b.get("time_unit", "ns")]
+        times[b["run_name"]] = b["cpu_time"] * scale / b["points"]
+    return times
+
+
 def load_eval(results):
     """{flag_set: {benchmark name: ns per point (median cpu time / points)}}"""
     out = {}
     for flags, _ in FLAG_SETS:
-        path = os.path.join(results, "eval_%s.json" % flags)
-        if not os.path.exists(path):
-            continue
-        with open(path) as f:
-            data = json.load(f)
-        times = {}
-        for b in data["benchmarks"]:
-            if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
-                continue
-            scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b.get("time_unit", "ns")]
-            times[b["run_name"]] = b["cpu_time"] * scale / b["points"]
-        out[flags] = times
+        times = load_benchmark_json(os.path.join(results, "eval_%s.json" % flags))
+        if times is not None:
+            out[flags] = times
     return out
+
+
+def methods_section(results, gen):
+    """Markdown lines: Richardson and projection side by side (issue 10), or [] without the data."""
+    t = load_benchmark_json(os.path.join(results, "methods.json"))
+    if not t:
+        return []
+    gen_proj = load_gen_tsv(os.path.join(results, "gen_projection.tsv"))
+    keys = sorted({(parts[2], int(parts[3][1:])) for parts in (n.split("/") for n in t)},
+                  key=lambda k: (SYMPY_SURFACES.index(k[0]) if k[0] in SYMPY_SURFACES else 99, k[1]))
+    md = []
+    w = md.append
+    w("## Two offset methods side by side (issue 10)")
+    w("")
+    w("The same surfaces and orders generated with `--method richardson` and `--method projection`, compiled "
+      "into one executable (`bench_methods`, `-O3 -march=native`), ns per point (median CPU time). Ratio = "
+      "projection / Richardson: below 1 projection is faster. ops = the metadata's op count after CSE.")
+    w("")
+
+    def cost(method, s, m, mode, function):
+        return ns(t, mode, method, s, m, function, "double")
+
+    rows = []
+    targets = []
+    for (s, m) in keys:
+        r_ops = load_metadata_ops(results, s, m, "%s_richardson" % s) or {}
+        p_ops = load_metadata_ops(results, s, m, "%s_projection" % s) or {}
+        cells = [s, m, "%s / %s" % (r_ops.get("offset", "-"), p_ops.get("offset", "-"))]
+        for mode, function in (("scalar", "offset"), ("scalar", "shell"), ("batch", "offset"), ("batch", "shell")):
+            r = cost("richardson", s, m, mode, function)
+            p = cost("projection", s, m, mode, function)
+            cells.append("%s / %s (%s)" % (fmt(r), fmt(p), ratio(p, r)) if r and p else
+                         ("- / %s" % fmt(p) if p else "-"))
+        rows.append(cells)
+    w(table(["surface", "order", "ops _offset (R / P)", "scalar offset (R / P)", "scalar shell", "batch offset",
+             "batch shell"], rows))
+    w("")
+    for m, limit_scalar, limit_batch in ((4, 0.7, 0.5), (8, 0.1, 0.1)):
+        for mode, limit in (("scalar", limit_scalar), ("batch", limit_batch)):
+            ratios = []
+            for (s, mm) in keys:
+                if mm != m:
+                    continue
+                r = cost("richardson", s, m, mode, "offset")
+                p = cost("projection", s, m, mode, "offset")
+                if r and p:
+                    ratios.append((p / r, s))
+            if not ratios:
+                continue
+            gy = [x for x, s in ratios if s == "gyroid"]
+            worst = max(ratios)
+            targets.append(["projection o%d / Richardson o%d, %s offset" % (m, m, mode), "<= %gx" % limit,
+                            "gyroid %s; all surfaces %s..%s (worst: %s)" % (
+                                fmt(gy[0]) if gy else "-", fmt(min(ratios)[0]), fmt(worst[0]), worst[1]),
+                            verdict(bool(gy) and gy[0] <= limit)])
+    if gen_proj:
+        o16 = [(v["wall"], s) for (s, m), v in gen_proj.items() if m == 16]
+        if o16:
+            worst = max(o16)
+            targets.append(["generation, projection order 16, every catalog surface", "< 1 s",
+                            "%s s (slowest: %s)" % (fmt(worst[0]), worst[1]), verdict(worst[0] < 1.0)])
+    if targets:
+        w("Targets (issue 10), `-O3 -march=native`, double:")
+        w("")
+        w(table(["what", "target", "measured", ""], targets))
+        w("")
+    if gen_proj:
+        w("Generation time, end to end through the CLI (`--method projection`, median wall ms), with "
+          "Richardson's at the same order where it was measured above:")
+        w("")
+        surfaces = []
+        for (s, _m) in gen_proj:
+            if s not in surfaces:
+                surfaces.append(s)
+        orders = sorted({m for (_s, m) in gen_proj})
+        rows = []
+        for s in surfaces:
+            row = [s]
+            for m in orders:
+                p = gen_proj.get((s, m))
+                r = gen.get((s, m))
+                row.append("%s%s" % (fmt(p["wall"] * 1e3) if p else "-", " (R %s)" % fmt(r["wall"] * 1e3) if r else ""))
+            rows.append(row)
+        w(table(["surface"] + ["o%d" % m for m in orders], rows))
+        w("")
+    return md
 
 
 def ns(times, mode, impl, surface, order, function, precision):
@@ -517,6 +622,7 @@ def main(argv=None):
     w(table(["surface", "order", "function", "scalar double", "scalar float", "float / double", "batch double",
              "batch float", "float / double"], rows))
     w("")
+    md.extend(methods_section(R, gen))
     w("## How to reproduce")
     w("")
     w("```sh\ntools/run_benchmarks.sh              # builds build-bench/, runs everything, rewrites BENCHMARKS.md\n"

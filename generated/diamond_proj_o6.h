@@ -55,7 +55,7 @@
  *   shell    889
  *   normal   537
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_proj_o6","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":517,"shell":889,"normal":537}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o6","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":517,"shell":889,"normal":537}} */
 #ifndef OFFSETGEN_DIAMOND_PROJ_O6_H
 #define OFFSETGEN_DIAMOND_PROJ_O6_H
 
@@ -1319,24 +1319,33 @@ static inline void diamond_proj_o6_normalf(float x, float y, float z, float h, f
  *   void diamond_proj_o6_shellf_n(n, x, y, z, t, out)
  *
  * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
- * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
- * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
- * selects (blends), and there are no calls left for the vectoriser to stumble over.
- *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
- *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
- *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
- *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * body is the same straight-line program as the scalar function, written so that GCC (12 and later)
+ * and Clang (14 and later) vectorise it with the flags you already use, -O2 or -O3 with or without
+ * -march (SSE2 to AVX-512), and without -fno-math-errno or any other change to floating-point
+ * semantics. What stands in the way of a vectoriser is replaced by plain arithmetic:
+ *   - sin and cos: branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm);
+ *   - sqrt: offsetgen_batch_sqrt, a bit-level seed and Newton steps (within 1 ulp of sqrt, which
+ *     cannot vectorise while it may set errno; see there for subnormal inputs);
+ *   - quadrant and special-case selection: integer masks, so there is no branch to convert;
+ *   - the points go in blocks of a fixed size: a loop with a constant trip count is what GCC
+ *     vectorises at -O2.
+ * -march=native gives wider vectors. Optionally: -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp:
+ * the block loop then carries `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang).
+ * Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
  * The results agree with the scalar functions to about 1e-15 of the field's scale: both use the
- * same sin/cos reduction and polynomials, so only the compiler's vector contraction and ordering of
- * the same operations can differ. Points whose sin/cos arguments lie beyond the
- * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
- * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
- * function's finite value. `out` must not overlap the input arrays. Other elementary functions
- * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
- * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ * same sin/cos reduction and polynomials, sqrt differs by at most 1 ulp, and the compiler may
+ * contract the same operations differently in vector and scalar code. Points whose sin/cos
+ * arguments lie beyond the polynomials' range (1.0e8 in double, 8192.0 in float, in
+ * radians), and non-finite inputs, are recomputed by the scalar function, and so are the last
+ * n % block points, so every finite input still gives the scalar function's finite value. `out` must
+ * not overlap the input arrays. Other elementary functions (exp, tan, ...) in a user expression stay
+ * libm calls; such loops are correct but need a vector math library (e.g. -ffast-math with glibc's
+ * libmvec) to vectorise.
  */
+#include <stdint.h>
+#include <string.h>
 #ifndef OFFSETGEN_SIMD_LOOP
-/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno sqrt calls. */
+/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno libm calls. */
 #if (defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)) && (!defined(__clang__) || defined(__NO_MATH_ERRNO__))
 #define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
 #elif defined(__GNUC__) && !defined(__clang__)
@@ -1345,895 +1354,1010 @@ static inline void diamond_proj_o6_normalf(float x, float y, float z, float h, f
 #define OFFSETGEN_SIMD_LOOP
 #endif
 #endif
-#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
- * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
- * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
- * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
- * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
-static inline double offsetgen_batch_sin(double a)
+#ifndef OFFSETGEN_RESTRICT
+/* `out` aliases no input: without this Clang checks overlap at run time and keeps short loops scalar. */
+#ifdef __cplusplus
+#define OFFSETGEN_RESTRICT __restrict
+#else
+#define OFFSETGEN_RESTRICT restrict
+#endif
+#endif
+/* The rounding by adding and subtracting 1.5 * 2^52 needs IEEE evaluation in the declared type. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_BATCH_RINT_
+#endif
+#ifndef OFFSETGEN_BATCH_MATH_DOUBLE_V2
+#define OFFSETGEN_BATCH_MATH_DOUBLE_V2
+/* A double's bits and back (memcpy is how C and C++ both allow it; compilers emit no call). */
+static inline uint64_t offsetgen_batch_bits(double d)
 {
+    uint64_t b;
+    memcpy(&b, &d, sizeof b);
+    return b;
+}
+
+static inline double offsetgen_batch_real(uint64_t b)
+{
+    double d;
+    memcpy(&d, &b, sizeof d);
+    return d;
+}
+
+/* All ones where b > limit, else 0 (both below 2^63): the borrow of limit - b. Integer masks like
+ * this one vectorise at every SIMD level, where a select on a comparison may not. */
+static inline uint64_t offsetgen_batch_above(uint64_t b, uint64_t limit)
+{
+    return UINT64_C(0) - ((limit - b) >> 63);
+}
+
+/* sin (cosine = 0) or cos (cosine = 1) for the batch loops: Cody-Waite reduction by pi/2
+ * (three-part constant, exact for |a| < 1.0e8) and Cephes' minimax polynomials on
+ * [-pi/4, pi/4]; within 1.5 ulp of libm, the same arithmetic as offsetgen_sin/cos. Adding 1.5 * 2^52
+ * rounds a * 2/pi to an integer whose low bits are the quadrant, which picks the polynomial and the
+ * sign through bit masks: straight-line code that vectorises. Beyond the range (or for NaN and
+ * infinite a) the result is NaN, which makes the batch loop fall back to the scalar function. A sin
+ * and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sincos(double a, uint64_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const double q = rint(a * 0.63661977236758138);
+    const double t = q + 6755399441055744.0;
+#else
+    const double t = a * 0.63661977236758138 + 6755399441055744.0;
+    const double q = t - 6755399441055744.0;
+#endif
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : HUGE_VAL - HUGE_VAL;  /* NaN, as a double */
+    const uint64_t quadrant = offsetgen_batch_bits(t) + cosine;     /* cos(a) = sin(a + pi/2) */
+    const uint64_t odd = UINT64_C(0) - (quadrant & 1u);             /* odd quadrants take the other polynomial */
+    const uint64_t value = (offsetgen_batch_bits(c) & odd) | (offsetgen_batch_bits(s) & ~odd);
+    const uint64_t far = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff), UINT64_C(0x4197d78400000000));
+    return offsetgen_batch_real((value ^ ((quadrant & 2u) << 62)) | (far & UINT64_C(0x7ff8000000000000)));
 }
 
-static inline double offsetgen_batch_cos(double a)
+static inline double offsetgen_batch_sin(double a) { return offsetgen_batch_sincos(a, 0u); }
+static inline double offsetgen_batch_cos(double a) { return offsetgen_batch_sincos(a, 1u); }
+
+/* sqrt for the batch loops, without errno: the bit-level seed of 1/sqrt (3.4% off), three Newton
+ * steps (2e-11), then one Newton step on sqrt itself. Equal to sqrt but in about 1e-6 of the cases
+ * where the target has FMA (the residual is then exact), within 1 ulp otherwise (13% off by one).
+ * +-0, +inf and NaN come back as sqrt returns them, negative numbers give NaN. Subnormal inputs
+ * (below 2.2e-308, which have no usable exponent for the seed) come back within 6e-156 of their
+ * square root, not to the last bit: scaling them would cost a select and two multiplications on
+ * every call, about 5% of a loop at -O2. */
+static inline double offsetgen_batch_sqrt(double a)
 {
-    const double q = rint(a * 0.63661977236758138);
-    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
-    const double z = r * r;
-    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
-    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
-    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : HUGE_VAL - HUGE_VAL;
+    const double half = 0.5 * a;
+    const uint64_t special = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff),
+                                                   UINT64_C(0x7fefffffffffffff));  /* inf, NaN */
+    const uint64_t negative = offsetgen_batch_bits((a < 0.0) ? offsetgen_batch_real(UINT64_C(0x7ff8000000000000)) : 0.0);
+    double y = offsetgen_batch_real(UINT64_C(0x5fe6eb50c7b537a9) - (offsetgen_batch_bits(a) >> 1));
+    double s;
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5 * y) * fma(-s, s, a);  /* exact residual: sqrt's rounding */
+#else
+    s = s + (0.5 * y) * (a - s * s);
+#endif
+    return offsetgen_batch_real((offsetgen_batch_bits(s) & ~special) | (offsetgen_batch_bits(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
-#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
-#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
-/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
- * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
-static inline float offsetgen_batch_sinf(float a)
+#endif /* OFFSETGEN_BATCH_MATH_DOUBLE_V2 */
+#ifndef OFFSETGEN_BATCH_MATH_FLOAT_V2
+#define OFFSETGEN_BATCH_MATH_FLOAT_V2
+/* The float twins of the double helpers: 1.5 * 2^23 for the rounding (|a| < 8192.0), Cephes'
+ * sinf/cosf polynomials, two Newton steps for 1/sqrt (subnormal inputs, below 1.2e-38, come back
+ * within 2e-20 of their square root). */
+static inline uint32_t offsetgen_batch_bitsf(float f)
 {
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+static inline float offsetgen_batch_realf(uint32_t b)
+{
+    float f;
+    memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+static inline uint32_t offsetgen_batch_abovef(uint32_t b, uint32_t limit)
+{
+    return 0u - ((limit - b) >> 31);
+}
+
+static inline float offsetgen_batch_sincosf(float a, uint32_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const float q = rintf(a * 0.636619772f);
+    const float t = q + 12582912.0f;
+#else
+    const float t = a * 0.636619772f + 12582912.0f;
+    const float q = t - 12582912.0f;
+#endif
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
-    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+    const uint32_t quadrant = offsetgen_batch_bitsf(t) + cosine;
+    const uint32_t odd = 0u - (quadrant & 1u);
+    const uint32_t value = (offsetgen_batch_bitsf(c) & odd) | (offsetgen_batch_bitsf(s) & ~odd);
+    const uint32_t far = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x46000000u);
+    return offsetgen_batch_realf((value ^ ((quadrant & 2u) << 30)) | (far & 0x7fc00000u));
 }
 
-static inline float offsetgen_batch_cosf(float a)
+static inline float offsetgen_batch_sinf(float a) { return offsetgen_batch_sincosf(a, 0u); }
+static inline float offsetgen_batch_cosf(float a) { return offsetgen_batch_sincosf(a, 1u); }
+
+static inline float offsetgen_batch_sqrtf(float a)
 {
-    const float q = rintf(a * 0.636619772f);
-    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
-    const float z = r * r;
-    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
-    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
-    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+    const float half = 0.5f * a;
+    const uint32_t special = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x7f7fffffu);
+    const uint32_t negative = offsetgen_batch_bitsf((a < 0.0f) ? offsetgen_batch_realf(0x7fc00000u) : 0.0f);
+    float y = offsetgen_batch_realf(0x5f375a86u - (offsetgen_batch_bitsf(a) >> 1));
+    float s;
+    y = y * (1.5f - (half * y) * y);
+    y = y * (1.5f - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5f * y) * fmaf(-s, s, a);
+#else
+    s = s + (0.5f * y) * (a - s * s);
+#endif
+    return offsetgen_batch_realf((offsetgen_batch_bitsf(s) & ~special) | (offsetgen_batch_bitsf(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+#endif /* OFFSETGEN_BATCH_MATH_FLOAT_V2 */
 
 
 /* phi(p, h) of order 6: zero on the surface moved by h along +grad F.
  * Batch form of diamond_proj_o6_offset: out[i] = diamond_proj_o6_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void diamond_proj_o6_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+static inline void diamond_proj_o6_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_sin(_t0);
-        const double _t2 = 6.2831853071795862 * h[i];
-        const double _t3 = offsetgen_batch_cos(_t0);
-        const double _t4 = 6.2831853071795862 * y[i];
-        const double _t5 = offsetgen_batch_cos(_t4);
-        const double _t6 = 6.2831853071795862 * x[i];
-        const double _t7 = offsetgen_batch_cos(_t6);
-        const double _t8 = _t3 * _t5 * _t7;
-        const double _t9 = offsetgen_batch_sin(_t4);
-        const double _t10 = offsetgen_batch_sin(_t6);
-        const double _t11 = _t3 * _t9 * _t10;
-        const double _t12 = _t1 * _t5 * _t10;
-        const double _t13 = _t7 * (_t1 * _t9);
-        const double _t14 = _t8 + _t11 - _t12 - _t13;
-        const double _t15 = _t2 * _t14;
-        const double _t16 = _t8 + _t13 - _t12 - _t11;
-        const double _t17 = _t8 + _t12 - _t11 - _t13;
-        const double _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-        const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-        const double _t20 = _t15 * _t15 * _t19;
-        const int _t21 = _t20 <= 1.0;
-        const double _t22 = (_t21) ? _t20 : 1.0;
-        const double _t23 = _t22 * _t22;
-        const double _t24 = _t23 * _t23;
-        const double _t25 = _t24 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23);
-        const double _t26 = sqrt(_t19);
-        const double _t27 = _t26 * _t15;
-        const double _t28 = ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (_t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
-        const double _t29 = _t1 * _t25 - _t3 * _t28;
-        const double _t30 = _t2 * _t17;
-        const double _t31 = _t30 * _t30 * _t19;
-        const int _t32 = _t31 <= 1.0;
-        const double _t33 = (_t32) ? _t31 : 1.0;
-        const double _t34 = _t33 * _t33;
-        const double _t35 = _t34 * _t34;
-        const double _t36 = (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07 + _t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11)) * _t35 + (_t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + (1.0 - _t33 * 0.5));
-        const double _t37 = _t26 * _t30;
-        const double _t38 = ((_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08)) * _t35 + ((0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + (1.0 - _t33 * 0.16666666666666666))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
-        const double _t39 = _t36 * _t9 - _t5 * _t38;
-        const double _t40 = _t2 * _t16;
-        const double _t41 = _t40 * _t40 * _t19;
-        const int _t42 = _t41 <= 1.0;
-        const double _t43 = (_t42) ? _t41 : 1.0;
-        const double _t44 = _t43 * _t43;
-        const double _t45 = _t44 * _t44;
-        const double _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.041666666666666102 - _t43 * 0.0013888888888798428) + ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45;
-        const double _t47 = _t26 * _t40;
-        const double _t48 = ((2.755731919201122e-06 - _t43 * 2.5052099244914114e-08 + _t44 * (1.6057701922579786e-10 - _t43 * 7.549371704181243e-13)) * _t45 + (1.0 - _t43 * 0.16666666666666666 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
-        const double _t49 = _t46 * _t7 + _t48 * _t10;
-        const double _t50 = _t29 * _t39 * _t49;
-        const double _t51 = _t46 * _t10 - _t48 * _t7;
-        const double _t52 = _t9 * _t38 + _t5 * _t36;
-        const double _t53 = _t29 * (_t51 * _t52);
-        const double _t54 = _t3 * _t25 + _t1 * _t28;
-        const double _t55 = _t49 * (_t52 * _t54);
-        const double _t56 = _t51 * _t54 * _t39;
-        const double _t57 = _t50 + _t53 - _t55 - _t56;
-        const double _t58 = _t50 + _t56 - _t55 - _t53;
-        const double _t59 = _t50 + _t55 - _t53 - _t56;
-        const double _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
-        const double _t61 = (_t60 > 0.0) ? 1.0 / _t60 : 0.0;
-        const double _t62 = _t2 * _t57;
-        const double _t63 = _t61 * (_t62 * _t62);
-        const int _t64 = _t63 <= 1.0;
-        const double _t65 = (_t64) ? _t63 : 1.0;
-        const double _t66 = _t65 * _t65;
-        const double _t67 = _t66 * _t66;
-        const double _t68 = ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t65) * _t66 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t65)) * _t67 + (1.0 - 0.5 * _t65 + (0.041666666666666102 - 0.0013888888888798428 * _t65) * _t66);
-        const double _t69 = sqrt(_t61);
-        const double _t70 = -(_t69 * _t62);
-        const double _t71 = ((_t64) ? _t70 : ((_t70 > 0.0) ? 1.0 : (-1.0))) * (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t65) * _t66 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t65)) * _t67 + (1.0 - 0.16666666666666666 * _t65 + (0.0083333333333333003 - 0.00019841269841216566 * _t65) * _t66));
-        const double _t72 = _t1 * _t68 - _t3 * _t71;
-        const double _t73 = _t2 * _t59;
-        const double _t74 = _t61 * (_t73 * _t73);
-        const int _t75 = _t74 <= 1.0;
-        const double _t76 = _t69 * _t73;
-        const double _t77 = (_t75) ? _t74 : 1.0;
-        const double _t78 = _t77 * _t77;
-        const double _t79 = _t78 * _t78;
-        const double _t80 = ((_t75) ? _t76 : ((_t76 > 0.0) ? 1.0 : (-1.0))) * (_t79 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t77) * _t78 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t77)) + ((0.0083333333333333003 - 0.00019841269841216566 * _t77) * _t78 + (1.0 - 0.16666666666666666 * _t77)));
-        const double _t81 = 1.0 - _t77 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t77) * _t78 + _t79 * (2.4801587247292686e-05 - _t77 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t77) * _t78);
-        const double _t82 = _t10 * _t80 + _t81 * _t7;
-        const double _t83 = _t58 * _t2;
-        const double _t84 = _t61 * (_t83 * _t83);
-        const int _t85 = _t84 <= 1.0;
-        const double _t86 = (_t85) ? _t84 : 1.0;
-        const double _t87 = _t86 * _t86;
-        const double _t88 = _t87 * _t87;
-        const double _t89 = 1.0 - _t86 * 0.5 + (0.041666666666666102 - _t86 * 0.0013888888888798428) * _t87 + _t88 * (2.4801587247292686e-05 - _t86 * 2.7557303701922228e-07 + _t87 * (2.0874477943664777e-09 - _t86 * 1.1304620460700782e-11));
-        const double _t90 = -(_t69 * _t83);
-        const double _t91 = ((_t85) ? _t90 : ((_t90 > 0.0) ? 1.0 : (-1.0))) * (_t88 * (2.755731919201122e-06 - _t86 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t86 * 7.549371704181243e-13) * _t87) + ((0.0083333333333333003 - _t86 * 0.00019841269841216566) * _t87 + (1.0 - _t86 * 0.16666666666666666)));
-        const double _t92 = _t89 * _t9 - _t5 * _t91;
-        const double _t93 = _t72 * _t82 * _t92;
-        const double _t94 = _t9 * _t91 + _t89 * _t5;
-        const double _t95 = _t3 * _t68 + _t1 * _t71;
-        const double _t96 = _t94 * _t95 * _t82;
-        const double _t97 = _t81 * _t10 - _t7 * _t80;
-        const double _t98 = _t72 * (_t94 * _t97);
-        const double _t99 = _t97 * _t95 * _t92;
-        const double _t100 = _t93 + _t96 - _t98 - _t99;
-        const double _t101 = _t93 + _t98 - _t96 - _t99;
-        const double _t102 = _t93 + _t99 - _t96 - _t98;
-        const double _t103 = _t100 * _t100 + _t101 * _t101 + _t102 * _t102;
-        const double _t104 = (_t103 > 0.0) ? 1.0 / _t103 : 0.0;
-        const double _t105 = _t2 * _t101;
-        const double _t106 = _t104 * (_t105 * _t105);
-        const int _t107 = _t106 <= 1.0;
-        const double _t108 = (_t107) ? _t106 : 1.0;
-        const double _t109 = _t108 * _t108;
-        const double _t110 = _t109 * _t109;
-        const double _t111 = 1.0 - _t108 * 0.5 + (0.041666666666666102 - _t108 * 0.0013888888888798428) * _t109 + _t110 * ((2.0874477943664777e-09 - _t108 * 1.1304620460700782e-11) * _t109 + (2.4801587247292686e-05 - _t108 * 2.7557303701922228e-07));
-        const double _t112 = sqrt(_t104);
-        const double _t113 = -(_t105 * _t112);
-        const double _t114 = ((_t107) ? _t113 : ((_t113 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t108 * 0.16666666666666666 + (0.0083333333333333003 - _t108 * 0.00019841269841216566) * _t109 + _t110 * (2.755731919201122e-06 - _t108 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t108 * 7.549371704181243e-13) * _t109));
-        const double _t115 = _t1 * _t111 - _t3 * _t114;
-        const double _t116 = _t2 * _t102;
-        const double _t117 = _t104 * (_t116 * _t116);
-        const int _t118 = _t117 <= 1.0;
-        const double _t119 = (_t118) ? _t117 : 1.0;
-        const double _t120 = _t119 * _t119;
-        const double _t121 = _t120 * _t120;
-        const double _t122 = _t120 * (0.041666666666666102 - 0.0013888888888798428 * _t119) + (1.0 - _t119 * 0.5) + (_t120 * (2.0874477943664777e-09 - _t119 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t119 * 2.7557303701922228e-07)) * _t121;
-        const double _t123 = -(_t112 * _t116);
-        const double _t124 = (_t121 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t119 + _t120 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t119)) + (_t120 * (0.0083333333333333003 - _t119 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t119))) * ((_t118) ? _t123 : ((_t123 > 0.0) ? 1.0 : (-1.0)));
-        const double _t125 = _t122 * _t9 - _t5 * _t124;
-        const double _t126 = _t2 * _t100;
-        const double _t127 = _t126 * _t126 * _t104;
-        const int _t128 = _t127 <= 1.0;
-        const double _t129 = (_t128) ? _t127 : 1.0;
-        const double _t130 = _t129 * _t129;
-        const double _t131 = _t130 * _t130;
-        const double _t132 = (0.041666666666666102 - _t129 * 0.0013888888888798428) * _t130 + (1.0 - _t129 * 0.5) + _t131 * ((2.0874477943664777e-09 - _t129 * 1.1304620460700782e-11) * _t130 + (2.4801587247292686e-05 - _t129 * 2.7557303701922228e-07));
-        const double _t133 = _t126 * _t112;
-        const double _t134 = ((_t128) ? _t133 : ((_t133 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t129 * 0.16666666666666666 + (0.0083333333333333003 - _t129 * 0.00019841269841216566) * _t130 + _t131 * ((1.6057701922579786e-10 - _t129 * 7.549371704181243e-13) * _t130 + (2.755731919201122e-06 - _t129 * 2.5052099244914114e-08)));
-        const double _t135 = _t132 * _t10 - _t134 * _t7;
-        const double _t136 = _t134 * _t10 + _t132 * _t7;
-        const double _t137 = _t5 * _t122 + _t9 * _t124;
-        const double _t138 = _t3 * _t111 + _t114 * _t1;
-        out[i] = _t115 * (_t125 * _t135) + _t136 * (_t137 * _t115) + _t138 * _t125 * _t136 + _t135 * (_t137 * _t138);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_sin(_t0);
+            const double _t2 = 6.2831853071795862 * h[i + j];
+            const double _t3 = offsetgen_batch_cos(_t0);
+            const double _t4 = 6.2831853071795862 * y[i + j];
+            const double _t5 = offsetgen_batch_cos(_t4);
+            const double _t6 = 6.2831853071795862 * x[i + j];
+            const double _t7 = offsetgen_batch_cos(_t6);
+            const double _t8 = _t3 * _t5 * _t7;
+            const double _t9 = offsetgen_batch_sin(_t4);
+            const double _t10 = offsetgen_batch_sin(_t6);
+            const double _t11 = _t3 * _t9 * _t10;
+            const double _t12 = _t1 * _t5 * _t10;
+            const double _t13 = _t7 * (_t1 * _t9);
+            const double _t14 = _t8 + _t11 - _t12 - _t13;
+            const double _t15 = _t2 * _t14;
+            const double _t16 = _t8 + _t13 - _t12 - _t11;
+            const double _t17 = _t8 + _t12 - _t11 - _t13;
+            const double _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
+            const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
+            const double _t20 = _t15 * _t15 * _t19;
+            const int _t21 = _t20 <= 1.0;
+            const double _t22 = (_t21) ? _t20 : 1.0;
+            const double _t23 = _t22 * _t22;
+            const double _t24 = _t23 * _t23;
+            const double _t25 = _t24 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23);
+            const double _t26 = offsetgen_batch_sqrt(_t19);
+            const double _t27 = _t26 * _t15;
+            const double _t28 = ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (_t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
+            const double _t29 = _t1 * _t25 - _t3 * _t28;
+            const double _t30 = _t2 * _t17;
+            const double _t31 = _t30 * _t30 * _t19;
+            const int _t32 = _t31 <= 1.0;
+            const double _t33 = (_t32) ? _t31 : 1.0;
+            const double _t34 = _t33 * _t33;
+            const double _t35 = _t34 * _t34;
+            const double _t36 = (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07 + _t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11)) * _t35 + (_t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + (1.0 - _t33 * 0.5));
+            const double _t37 = _t26 * _t30;
+            const double _t38 = ((_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08)) * _t35 + ((0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + (1.0 - _t33 * 0.16666666666666666))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
+            const double _t39 = _t36 * _t9 - _t5 * _t38;
+            const double _t40 = _t2 * _t16;
+            const double _t41 = _t40 * _t40 * _t19;
+            const int _t42 = _t41 <= 1.0;
+            const double _t43 = (_t42) ? _t41 : 1.0;
+            const double _t44 = _t43 * _t43;
+            const double _t45 = _t44 * _t44;
+            const double _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.041666666666666102 - _t43 * 0.0013888888888798428) + ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45;
+            const double _t47 = _t26 * _t40;
+            const double _t48 = ((2.755731919201122e-06 - _t43 * 2.5052099244914114e-08 + _t44 * (1.6057701922579786e-10 - _t43 * 7.549371704181243e-13)) * _t45 + (1.0 - _t43 * 0.16666666666666666 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
+            const double _t49 = _t46 * _t7 + _t48 * _t10;
+            const double _t50 = _t29 * _t39 * _t49;
+            const double _t51 = _t46 * _t10 - _t48 * _t7;
+            const double _t52 = _t9 * _t38 + _t5 * _t36;
+            const double _t53 = _t29 * (_t51 * _t52);
+            const double _t54 = _t3 * _t25 + _t1 * _t28;
+            const double _t55 = _t49 * (_t52 * _t54);
+            const double _t56 = _t51 * _t54 * _t39;
+            const double _t57 = _t50 + _t53 - _t55 - _t56;
+            const double _t58 = _t50 + _t56 - _t55 - _t53;
+            const double _t59 = _t50 + _t55 - _t53 - _t56;
+            const double _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
+            const double _t61 = (_t60 > 0.0) ? 1.0 / _t60 : 0.0;
+            const double _t62 = _t2 * _t57;
+            const double _t63 = _t61 * (_t62 * _t62);
+            const int _t64 = _t63 <= 1.0;
+            const double _t65 = (_t64) ? _t63 : 1.0;
+            const double _t66 = _t65 * _t65;
+            const double _t67 = _t66 * _t66;
+            const double _t68 = ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t65) * _t66 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t65)) * _t67 + (1.0 - 0.5 * _t65 + (0.041666666666666102 - 0.0013888888888798428 * _t65) * _t66);
+            const double _t69 = offsetgen_batch_sqrt(_t61);
+            const double _t70 = -(_t69 * _t62);
+            const double _t71 = ((_t64) ? _t70 : ((_t70 > 0.0) ? 1.0 : (-1.0))) * (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t65) * _t66 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t65)) * _t67 + (1.0 - 0.16666666666666666 * _t65 + (0.0083333333333333003 - 0.00019841269841216566 * _t65) * _t66));
+            const double _t72 = _t1 * _t68 - _t3 * _t71;
+            const double _t73 = _t2 * _t59;
+            const double _t74 = _t61 * (_t73 * _t73);
+            const int _t75 = _t74 <= 1.0;
+            const double _t76 = _t69 * _t73;
+            const double _t77 = (_t75) ? _t74 : 1.0;
+            const double _t78 = _t77 * _t77;
+            const double _t79 = _t78 * _t78;
+            const double _t80 = ((_t75) ? _t76 : ((_t76 > 0.0) ? 1.0 : (-1.0))) * (_t79 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t77) * _t78 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t77)) + ((0.0083333333333333003 - 0.00019841269841216566 * _t77) * _t78 + (1.0 - 0.16666666666666666 * _t77)));
+            const double _t81 = 1.0 - _t77 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t77) * _t78 + _t79 * (2.4801587247292686e-05 - _t77 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t77) * _t78);
+            const double _t82 = _t10 * _t80 + _t81 * _t7;
+            const double _t83 = _t58 * _t2;
+            const double _t84 = _t61 * (_t83 * _t83);
+            const int _t85 = _t84 <= 1.0;
+            const double _t86 = (_t85) ? _t84 : 1.0;
+            const double _t87 = _t86 * _t86;
+            const double _t88 = _t87 * _t87;
+            const double _t89 = 1.0 - _t86 * 0.5 + (0.041666666666666102 - _t86 * 0.0013888888888798428) * _t87 + _t88 * (2.4801587247292686e-05 - _t86 * 2.7557303701922228e-07 + _t87 * (2.0874477943664777e-09 - _t86 * 1.1304620460700782e-11));
+            const double _t90 = -(_t69 * _t83);
+            const double _t91 = ((_t85) ? _t90 : ((_t90 > 0.0) ? 1.0 : (-1.0))) * (_t88 * (2.755731919201122e-06 - _t86 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t86 * 7.549371704181243e-13) * _t87) + ((0.0083333333333333003 - _t86 * 0.00019841269841216566) * _t87 + (1.0 - _t86 * 0.16666666666666666)));
+            const double _t92 = _t89 * _t9 - _t5 * _t91;
+            const double _t93 = _t72 * _t82 * _t92;
+            const double _t94 = _t9 * _t91 + _t89 * _t5;
+            const double _t95 = _t3 * _t68 + _t1 * _t71;
+            const double _t96 = _t94 * _t95 * _t82;
+            const double _t97 = _t81 * _t10 - _t7 * _t80;
+            const double _t98 = _t72 * (_t94 * _t97);
+            const double _t99 = _t97 * _t95 * _t92;
+            const double _t100 = _t93 + _t96 - _t98 - _t99;
+            const double _t101 = _t93 + _t98 - _t96 - _t99;
+            const double _t102 = _t93 + _t99 - _t96 - _t98;
+            const double _t103 = _t100 * _t100 + _t101 * _t101 + _t102 * _t102;
+            const double _t104 = (_t103 > 0.0) ? 1.0 / _t103 : 0.0;
+            const double _t105 = _t2 * _t101;
+            const double _t106 = _t104 * (_t105 * _t105);
+            const int _t107 = _t106 <= 1.0;
+            const double _t108 = (_t107) ? _t106 : 1.0;
+            const double _t109 = _t108 * _t108;
+            const double _t110 = _t109 * _t109;
+            const double _t111 = 1.0 - _t108 * 0.5 + (0.041666666666666102 - _t108 * 0.0013888888888798428) * _t109 + _t110 * ((2.0874477943664777e-09 - _t108 * 1.1304620460700782e-11) * _t109 + (2.4801587247292686e-05 - _t108 * 2.7557303701922228e-07));
+            const double _t112 = offsetgen_batch_sqrt(_t104);
+            const double _t113 = -(_t105 * _t112);
+            const double _t114 = ((_t107) ? _t113 : ((_t113 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t108 * 0.16666666666666666 + (0.0083333333333333003 - _t108 * 0.00019841269841216566) * _t109 + _t110 * (2.755731919201122e-06 - _t108 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t108 * 7.549371704181243e-13) * _t109));
+            const double _t115 = _t1 * _t111 - _t3 * _t114;
+            const double _t116 = _t2 * _t102;
+            const double _t117 = _t104 * (_t116 * _t116);
+            const int _t118 = _t117 <= 1.0;
+            const double _t119 = (_t118) ? _t117 : 1.0;
+            const double _t120 = _t119 * _t119;
+            const double _t121 = _t120 * _t120;
+            const double _t122 = _t120 * (0.041666666666666102 - 0.0013888888888798428 * _t119) + (1.0 - _t119 * 0.5) + (_t120 * (2.0874477943664777e-09 - _t119 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t119 * 2.7557303701922228e-07)) * _t121;
+            const double _t123 = -(_t112 * _t116);
+            const double _t124 = (_t121 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t119 + _t120 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t119)) + (_t120 * (0.0083333333333333003 - _t119 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t119))) * ((_t118) ? _t123 : ((_t123 > 0.0) ? 1.0 : (-1.0)));
+            const double _t125 = _t122 * _t9 - _t5 * _t124;
+            const double _t126 = _t2 * _t100;
+            const double _t127 = _t126 * _t126 * _t104;
+            const int _t128 = _t127 <= 1.0;
+            const double _t129 = (_t128) ? _t127 : 1.0;
+            const double _t130 = _t129 * _t129;
+            const double _t131 = _t130 * _t130;
+            const double _t132 = (0.041666666666666102 - _t129 * 0.0013888888888798428) * _t130 + (1.0 - _t129 * 0.5) + _t131 * ((2.0874477943664777e-09 - _t129 * 1.1304620460700782e-11) * _t130 + (2.4801587247292686e-05 - _t129 * 2.7557303701922228e-07));
+            const double _t133 = _t126 * _t112;
+            const double _t134 = ((_t128) ? _t133 : ((_t133 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t129 * 0.16666666666666666 + (0.0083333333333333003 - _t129 * 0.00019841269841216566) * _t130 + _t131 * ((1.6057701922579786e-10 - _t129 * 7.549371704181243e-13) * _t130 + (2.755731919201122e-06 - _t129 * 2.5052099244914114e-08)));
+            const double _t135 = _t132 * _t10 - _t134 * _t7;
+            const double _t136 = _t134 * _t10 + _t132 * _t7;
+            const double _t137 = _t5 * _t122 + _t9 * _t124;
+            const double _t138 = _t3 * _t111 + _t114 * _t1;
+            out[i + j] = _t115 * (_t125 * _t135) + _t136 * (_t137 * _t115) + _t138 * _t125 * _t136 + _t135 * (_t137 * _t138);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_proj_o6_offset(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = diamond_proj_o6_offset(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of diamond_proj_o6_shell: out[i] = diamond_proj_o6_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void diamond_proj_o6_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+static inline void diamond_proj_o6_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t1 = 6.2831853071795862 * y[i];
-        const double _t2 = offsetgen_batch_sin(_t1);
-        const double _t3 = offsetgen_batch_cos(_t1);
-        const double _t4 = z[i] * 6.2831853071795862;
-        const double _t5 = offsetgen_batch_cos(_t4);
-        const double _t6 = 6.2831853071795862 * x[i];
-        const double _t7 = offsetgen_batch_cos(_t6);
-        const double _t8 = _t5 * _t3 * _t7;
-        const double _t9 = offsetgen_batch_sin(_t4);
-        const double _t10 = offsetgen_batch_sin(_t6);
-        const double _t11 = _t9 * _t3 * _t10;
-        const double _t12 = _t5 * _t2 * _t10;
-        const double _t13 = _t7 * (_t9 * _t2);
-        const double _t14 = _t8 + _t11 - _t12 - _t13;
-        const double _t15 = _t14 * _t0;
-        const double _t16 = _t8 + _t12 - _t11 - _t13;
-        const double _t17 = _t8 + _t13 - _t11 - _t12;
-        const double _t18 = _t16 * _t16 + _t17 * _t17 + _t14 * _t14;
-        const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-        const double _t20 = _t15 * _t15 * _t19;
-        const int _t21 = _t20 <= 1.0;
-        const double _t22 = (_t21) ? _t20 : 1.0;
-        const double _t23 = _t22 * _t22;
-        const double _t24 = _t23 * _t23;
-        const double _t25 = _t23 * (0.041666666666666102 - 0.0013888888888798428 * _t22) + (1.0 - _t22 * 0.5) + (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + _t23 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22)) * _t24;
-        const double _t26 = _t3 * _t25;
-        const double _t27 = sqrt(_t19);
-        const double _t28 = _t27 * _t15;
-        const double _t29 = -_t28;
-        const double _t30 = _t23 * (0.0083333333333333003 - 0.00019841269841216566 * _t22) + (1.0 - 0.16666666666666666 * _t22) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) * _t23 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22)) * _t24;
-        const double _t31 = ((_t21) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0))) * _t30;
-        const double _t32 = _t26 + _t31 * _t2;
-        const double _t33 = _t0 * _t17;
-        const double _t34 = _t33 * _t33 * _t19;
-        const int _t35 = _t34 <= 1.0;
-        const double _t36 = (_t35) ? _t34 : 1.0;
-        const double _t37 = _t36 * _t36;
-        const double _t38 = _t37 * _t37;
-        const double _t39 = (2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + _t37 * (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11)) * _t38 + (1.0 - _t36 * 0.5 + _t37 * (0.041666666666666102 - _t36 * 0.0013888888888798428));
-        const double _t40 = _t39 * _t7;
-        const double _t41 = 1.0 - _t36 * 0.16666666666666666 + (0.0083333333333333003 - _t36 * 0.00019841269841216566) * _t37 + (2.755731919201122e-06 - _t36 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t36 * 7.549371704181243e-13) * _t37) * _t38;
-        const double _t42 = _t27 * _t33;
-        const double _t43 = -_t42;
-        const double _t44 = _t41 * ((_t35) ? _t43 : ((_t43 > 0.0) ? 1.0 : (-1.0)));
-        const double _t45 = _t40 + _t44 * _t10;
-        const double _t46 = _t0 * _t16;
-        const double _t47 = _t46 * _t46 * _t19;
-        const int _t48 = _t47 <= 1.0;
-        const double _t49 = (_t48) ? _t47 : 1.0;
-        const double _t50 = _t49 * _t49;
-        const double _t51 = _t50 * _t50;
-        const double _t52 = _t50 * (0.0083333333333333003 - _t49 * 0.00019841269841216566) + (1.0 - _t49 * 0.16666666666666666) + _t51 * (2.755731919201122e-06 - _t49 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t49 * 7.549371704181243e-13) * _t50);
-        const double _t53 = _t27 * _t46;
-        const double _t54 = -_t53;
-        const double _t55 = _t52 * ((_t48) ? _t54 : ((_t54 > 0.0) ? 1.0 : (-1.0)));
-        const double _t56 = _t51 * (2.4801587247292686e-05 - _t49 * 2.7557303701922228e-07 + _t50 * (2.0874477943664777e-09 - _t49 * 1.1304620460700782e-11)) + (_t50 * (0.041666666666666102 - _t49 * 0.0013888888888798428) + (1.0 - _t49 * 0.5));
-        const double _t57 = _t5 * _t56;
-        const double _t58 = _t9 * _t55 + _t57;
-        const double _t59 = _t32 * _t45 * _t58;
-        const double _t60 = _t39 * _t10;
-        const double _t61 = _t60 - _t44 * _t7;
-        const double _t62 = _t9 * _t56;
-        const double _t63 = _t62 - _t5 * _t55;
-        const double _t64 = _t32 * _t61 * _t63;
-        const double _t65 = _t2 * _t25;
-        const double _t66 = _t65 - _t3 * _t31;
-        const double _t67 = _t66 * _t61 * _t58;
-        const double _t68 = _t63 * (_t66 * _t45);
-        const double _t69 = _t59 + _t64 - _t67 - _t68;
-        const double _t70 = _t69 * _t0;
-        const double _t71 = _t59 + _t67 - _t64 - _t68;
-        const double _t72 = _t59 + _t68 - _t67 - _t64;
-        const double _t73 = _t69 * _t69 + _t71 * _t71 + _t72 * _t72;
-        const double _t74 = (_t73 > 0.0) ? 1.0 / _t73 : 0.0;
-        const double _t75 = _t70 * _t70 * _t74;
-        const int _t76 = _t75 <= 1.0;
-        const double _t77 = (_t76) ? _t75 : 1.0;
-        const double _t78 = _t77 * _t77;
-        const double _t79 = _t78 * _t78;
-        const double _t80 = ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t77) * _t78 + (2.4801587247292686e-05 - _t77 * 2.7557303701922228e-07)) * _t79 + ((0.041666666666666102 - 0.0013888888888798428 * _t77) * _t78 + (1.0 - _t77 * 0.5));
-        const double _t81 = sqrt(_t74);
-        const double _t82 = -(_t81 * _t70);
-        const double _t83 = ((_t76) ? _t82 : ((_t82 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t77 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t77) * _t78) * _t79 + ((0.0083333333333333003 - 0.00019841269841216566 * _t77) * _t78 + (1.0 - 0.16666666666666666 * _t77)));
-        const double _t84 = _t2 * _t80 - _t3 * _t83;
-        const double _t85 = _t72 * _t0;
-        const double _t86 = _t85 * _t85 * _t74;
-        const int _t87 = _t86 <= 1.0;
-        const double _t88 = (_t87) ? _t86 : 1.0;
-        const double _t89 = _t88 * _t88;
-        const double _t90 = _t89 * _t89;
-        const double _t91 = _t89 * (0.041666666666666102 - _t88 * 0.0013888888888798428) + (1.0 - _t88 * 0.5) + (2.4801587247292686e-05 - _t88 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t88 * 1.1304620460700782e-11) * _t89) * _t90;
-        const double _t92 = -(_t81 * _t85);
-        const double _t93 = ((2.755731919201122e-06 - _t88 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t88 * 7.549371704181243e-13) * _t89) * _t90 + (1.0 - _t88 * 0.16666666666666666 + (0.0083333333333333003 - _t88 * 0.00019841269841216566) * _t89)) * ((_t87) ? _t92 : ((_t92 > 0.0) ? 1.0 : (-1.0)));
-        const double _t94 = _t91 * _t10 - _t93 * _t7;
-        const double _t95 = _t71 * _t0;
-        const double _t96 = _t95 * _t95 * _t74;
-        const int _t97 = _t96 <= 1.0;
-        const double _t98 = -(_t81 * _t95);
-        const double _t99 = (_t97) ? _t96 : 1.0;
-        const double _t100 = _t99 * _t99;
-        const double _t101 = _t100 * _t100;
-        const double _t102 = ((_t97) ? _t98 : ((_t98 > 0.0) ? 1.0 : (-1.0))) * (_t100 * (0.0083333333333333003 - 0.00019841269841216566 * _t99) + (1.0 - 0.16666666666666666 * _t99) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t99 + _t100 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t99)) * _t101);
-        const double _t103 = _t100 * (0.041666666666666102 - 0.0013888888888798428 * _t99) + (1.0 - 0.5 * _t99) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t99 + _t100 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t99)) * _t101;
-        const double _t104 = _t9 * _t102 + _t5 * _t103;
-        const double _t105 = _t84 * (_t94 * _t104);
-        const double _t106 = _t93 * _t10 + _t91 * _t7;
-        const double _t107 = _t9 * _t103 - _t5 * _t102;
-        const double _t108 = _t84 * _t106 * _t107;
-        const double _t109 = _t3 * _t80 + _t2 * _t83;
-        const double _t110 = _t94 * _t109 * _t107;
-        const double _t111 = _t104 * _t106 * _t109;
-        const double _t112 = _t105 + _t108 - _t110 - _t111;
-        const double _t113 = _t0 * _t112;
-        const double _t114 = _t105 + _t110 - _t111 - _t108;
-        const double _t115 = _t105 + _t111 - _t110 - _t108;
-        const double _t116 = _t114 * _t114 + _t115 * _t115 + _t112 * _t112;
-        const double _t117 = (_t116 > 0.0) ? 1.0 / _t116 : 0.0;
-        const double _t118 = _t113 * _t113 * _t117;
-        const int _t119 = _t118 <= 1.0;
-        const double _t120 = (_t119) ? _t118 : 1.0;
-        const double _t121 = _t120 * _t120;
-        const double _t122 = _t121 * _t121;
-        const double _t123 = (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t120 + _t121 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t120)) * _t122 + ((0.041666666666666102 - 0.0013888888888798428 * _t120) * _t121 + (1.0 - _t120 * 0.5));
-        const double _t124 = sqrt(_t117);
-        const double _t125 = _t124 * _t113;
-        const double _t126 = ((0.0083333333333333003 - 0.00019841269841216566 * _t120) * _t121 + (1.0 - 0.16666666666666666 * _t120) + _t122 * (_t121 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t120) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t120))) * ((_t119) ? _t125 : ((_t125 > 0.0) ? 1.0 : (-1.0)));
-        const double _t127 = _t123 * _t3 + _t2 * _t126;
-        const double _t128 = _t0 * _t115;
-        const double _t129 = _t117 * (_t128 * _t128);
-        const int _t130 = _t129 <= 1.0;
-        const double _t131 = (_t130) ? _t129 : 1.0;
-        const double _t132 = _t131 * _t131;
-        const double _t133 = _t132 * _t132;
-        const double _t134 = _t133 * (2.4801587247292686e-05 - _t131 * 2.7557303701922228e-07 + _t132 * (2.0874477943664777e-09 - _t131 * 1.1304620460700782e-11)) + (_t132 * (0.041666666666666102 - 0.0013888888888798428 * _t131) + (1.0 - _t131 * 0.5));
-        const double _t135 = -(_t124 * _t128);
-        const double _t136 = ((_t130) ? _t135 : ((_t135 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - 0.00019841269841216566 * _t131) * _t132 + (1.0 - 0.16666666666666666 * _t131) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t131 + _t132 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t131)) * _t133);
-        const double _t137 = _t134 * _t9 - _t5 * _t136;
-        const double _t138 = _t0 * _t114;
-        const double _t139 = _t138 * _t138 * _t117;
-        const int _t140 = _t139 <= 1.0;
-        const double _t141 = (_t140) ? _t139 : 1.0;
-        const double _t142 = _t141 * _t141;
-        const double _t143 = _t142 * _t142;
-        const double _t144 = _t138 * _t124;
-        const double _t145 = ((0.0083333333333333003 - 0.00019841269841216566 * _t141) * _t142 + (1.0 - 0.16666666666666666 * _t141) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t141 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t141) * _t142) * _t143) * ((_t140) ? _t144 : ((_t144 > 0.0) ? 1.0 : (-1.0)));
-        const double _t146 = 1.0 - _t141 * 0.5 + _t142 * (0.041666666666666102 - 0.0013888888888798428 * _t141) + ((2.0874477943664777e-09 - _t141 * 1.1304620460700782e-11) * _t142 + (2.4801587247292686e-05 - _t141 * 2.7557303701922228e-07)) * _t143;
-        const double _t147 = _t145 * _t10 + _t146 * _t7;
-        const double _t148 = _t134 * _t5 + _t9 * _t136;
-        const double _t149 = _t146 * _t10 - _t145 * _t7;
-        const double _t150 = _t123 * _t2 - _t3 * _t126;
-        const double _t151 = ((_t21) ? _t28 : ((_t28 > 0.0) ? 1.0 : (-1.0))) * _t30;
-        const double _t152 = _t65 - _t3 * _t151;
-        const double _t153 = _t41 * ((_t35) ? _t42 : ((_t42 > 0.0) ? 1.0 : (-1.0)));
-        const double _t154 = _t60 - _t153 * _t7;
-        const double _t155 = ((_t48) ? _t53 : ((_t53 > 0.0) ? 1.0 : (-1.0))) * _t52;
-        const double _t156 = _t57 + _t9 * _t155;
-        const double _t157 = _t152 * _t154 * _t156;
-        const double _t158 = _t40 + _t153 * _t10;
-        const double _t159 = _t62 - _t5 * _t155;
-        const double _t160 = _t158 * _t152 * _t159;
-        const double _t161 = _t26 + _t2 * _t151;
-        const double _t162 = _t156 * (_t158 * _t161);
-        const double _t163 = _t161 * _t154 * _t159;
-        const double _t164 = _t157 + _t160 - _t162 - _t163;
-        const double _t165 = _t157 + _t163 - _t162 - _t160;
-        const double _t166 = _t157 + _t162 - _t160 - _t163;
-        const double _t167 = _t164 * _t164 + _t165 * _t165 + _t166 * _t166;
-        const double _t168 = (_t167 > 0.0) ? 1.0 / _t167 : 0.0;
-        const double _t169 = _t0 * _t166;
-        const double _t170 = _t168 * (_t169 * _t169);
-        const int _t171 = _t170 <= 1.0;
-        const double _t172 = (_t171) ? _t170 : 1.0;
-        const double _t173 = _t172 * _t172;
-        const double _t174 = _t173 * _t173;
-        const double _t175 = _t174 * (2.4801587247292686e-05 - _t172 * 2.7557303701922228e-07 + _t173 * (2.0874477943664777e-09 - _t172 * 1.1304620460700782e-11)) + (1.0 - _t172 * 0.5 + _t173 * (0.041666666666666102 - _t172 * 0.0013888888888798428));
-        const double _t176 = sqrt(_t168);
-        const double _t177 = _t176 * _t169;
-        const double _t178 = (1.0 - _t172 * 0.16666666666666666 + (0.0083333333333333003 - _t172 * 0.00019841269841216566) * _t173 + _t174 * (2.755731919201122e-06 - _t172 * 2.5052099244914114e-08 + _t173 * (1.6057701922579786e-10 - _t172 * 7.549371704181243e-13))) * ((_t171) ? _t177 : ((_t177 > 0.0) ? 1.0 : (-1.0)));
-        const double _t179 = _t175 * _t9 - _t178 * _t5;
-        const double _t180 = _t164 * _t0;
-        const double _t181 = _t168 * (_t180 * _t180);
-        const int _t182 = _t181 <= 1.0;
-        const double _t183 = (_t182) ? _t181 : 1.0;
-        const double _t184 = _t183 * _t183;
-        const double _t185 = _t184 * _t184;
-        const double _t186 = 1.0 - _t183 * 0.5 + (0.041666666666666102 - _t183 * 0.0013888888888798428) * _t184 + ((2.0874477943664777e-09 - _t183 * 1.1304620460700782e-11) * _t184 + (2.4801587247292686e-05 - _t183 * 2.7557303701922228e-07)) * _t185;
-        const double _t187 = -(_t176 * _t180);
-        const double _t188 = ((_t182) ? _t187 : ((_t187 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t183 * 0.16666666666666666 + _t184 * (0.0083333333333333003 - _t183 * 0.00019841269841216566) + (_t184 * (1.6057701922579786e-10 - _t183 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t183 * 2.5052099244914114e-08)) * _t185);
-        const double _t189 = _t186 * _t3 + _t2 * _t188;
-        const double _t190 = _t165 * _t0;
-        const double _t191 = _t168 * (_t190 * _t190);
-        const int _t192 = _t191 <= 1.0;
-        const double _t193 = (_t192) ? _t191 : 1.0;
-        const double _t194 = _t193 * _t193;
-        const double _t195 = _t194 * _t194;
-        const double _t196 = _t194 * (0.041666666666666102 - 0.0013888888888798428 * _t193) + (1.0 - _t193 * 0.5) + _t195 * (_t194 * (2.0874477943664777e-09 - _t193 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t193 * 2.7557303701922228e-07));
-        const double _t197 = -(_t176 * _t190);
-        const double _t198 = ((_t192) ? _t197 : ((_t197 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t193 + _t194 * (0.0083333333333333003 - _t193 * 0.00019841269841216566) + (_t194 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t193) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t193)) * _t195);
-        const double _t199 = _t196 * _t10 - _t198 * _t7;
-        const double _t200 = _t179 * _t189 * _t199;
-        const double _t201 = _t178 * _t9 + _t175 * _t5;
-        const double _t202 = _t186 * _t2 - _t3 * _t188;
-        const double _t203 = _t201 * _t202 * _t199;
-        const double _t204 = _t196 * _t7 + _t198 * _t10;
-        const double _t205 = _t202 * _t204 * _t179;
-        const double _t206 = _t189 * (_t201 * _t204);
-        const double _t207 = _t200 + _t203 - _t205 - _t206;
-        const double _t208 = _t200 + _t205 - _t203 - _t206;
-        const double _t209 = _t200 + _t206 - _t203 - _t205;
-        const double _t210 = _t207 * _t207 + _t208 * _t208 + _t209 * _t209;
-        const double _t211 = (_t210 > 0.0) ? 1.0 / _t210 : 0.0;
-        const double _t212 = _t208 * _t0;
-        const double _t213 = _t211 * (_t212 * _t212);
-        const int _t214 = _t213 <= 1.0;
-        const double _t215 = (_t214) ? _t213 : 1.0;
-        const double _t216 = _t215 * _t215;
-        const double _t217 = _t216 * _t216;
-        const double _t218 = _t217 * (_t216 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t215) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t215)) + ((0.041666666666666102 - 0.0013888888888798428 * _t215) * _t216 + (1.0 - _t215 * 0.5));
-        const double _t219 = sqrt(_t211);
-        const double _t220 = -(_t219 * _t212);
-        const double _t221 = (_t217 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t215 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t215) * _t216) + ((0.0083333333333333003 - 0.00019841269841216566 * _t215) * _t216 + (1.0 - 0.16666666666666666 * _t215))) * ((_t214) ? _t220 : ((_t220 > 0.0) ? 1.0 : (-1.0)));
-        const double _t222 = _t9 * _t218 - _t5 * _t221;
-        const double _t223 = _t209 * _t0;
-        const double _t224 = _t211 * (_t223 * _t223);
-        const int _t225 = _t224 <= 1.0;
-        const double _t226 = (_t225) ? _t224 : 1.0;
-        const double _t227 = _t226 * _t226;
-        const double _t228 = _t227 * _t227;
-        const double _t229 = 1.0 - _t226 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t226) * _t227 + (2.4801587247292686e-05 - _t226 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t226 * 1.1304620460700782e-11) * _t227) * _t228;
-        const double _t230 = _t219 * _t223;
-        const double _t231 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t226 + _t227 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t226)) * _t228 + (1.0 - 0.16666666666666666 * _t226 + _t227 * (0.0083333333333333003 - _t226 * 0.00019841269841216566))) * ((_t225) ? _t230 : ((_t230 > 0.0) ? 1.0 : (-1.0)));
-        const double _t232 = _t229 * _t2 - _t3 * _t231;
-        const double _t233 = _t0 * _t207;
-        const double _t234 = _t211 * (_t233 * _t233);
-        const int _t235 = _t234 <= 1.0;
-        const double _t236 = (_t235) ? _t234 : 1.0;
-        const double _t237 = _t236 * _t236;
-        const double _t238 = _t237 * _t237;
-        const double _t239 = _t238 * (2.4801587247292686e-05 - _t236 * 2.7557303701922228e-07 + _t237 * (2.0874477943664777e-09 - _t236 * 1.1304620460700782e-11)) + (1.0 - _t236 * 0.5 + (0.041666666666666102 - _t236 * 0.0013888888888798428) * _t237);
-        const double _t240 = -(_t219 * _t233);
-        const double _t241 = (1.0 - _t236 * 0.16666666666666666 + (0.0083333333333333003 - _t236 * 0.00019841269841216566) * _t237 + _t238 * (_t237 * (1.6057701922579786e-10 - _t236 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t236 * 2.5052099244914114e-08))) * ((_t235) ? _t240 : ((_t240 > 0.0) ? 1.0 : (-1.0)));
-        const double _t242 = _t239 * _t10 - _t241 * _t7;
-        const double _t243 = _t2 * _t231 + _t3 * _t229;
-        const double _t244 = _t239 * _t7 + _t241 * _t10;
-        const double _t245 = _t9 * _t221 + _t5 * _t218;
-        out[i] = (_t127 * _t137 * _t147 + _t127 * _t148 * _t149 + _t149 * (_t150 * _t137) + _t150 * _t148 * _t147) * (_t222 * _t232 * _t242 + _t222 * _t243 * _t244 + _t244 * _t245 * _t232 + _t243 * _t245 * _t242);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t1 = 6.2831853071795862 * y[i + j];
+            const double _t2 = offsetgen_batch_sin(_t1);
+            const double _t3 = offsetgen_batch_cos(_t1);
+            const double _t4 = z[i + j] * 6.2831853071795862;
+            const double _t5 = offsetgen_batch_cos(_t4);
+            const double _t6 = 6.2831853071795862 * x[i + j];
+            const double _t7 = offsetgen_batch_cos(_t6);
+            const double _t8 = _t5 * _t3 * _t7;
+            const double _t9 = offsetgen_batch_sin(_t4);
+            const double _t10 = offsetgen_batch_sin(_t6);
+            const double _t11 = _t9 * _t3 * _t10;
+            const double _t12 = _t5 * _t2 * _t10;
+            const double _t13 = _t7 * (_t9 * _t2);
+            const double _t14 = _t8 + _t11 - _t12 - _t13;
+            const double _t15 = _t14 * _t0;
+            const double _t16 = _t8 + _t12 - _t11 - _t13;
+            const double _t17 = _t8 + _t13 - _t11 - _t12;
+            const double _t18 = _t16 * _t16 + _t17 * _t17 + _t14 * _t14;
+            const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
+            const double _t20 = _t15 * _t15 * _t19;
+            const int _t21 = _t20 <= 1.0;
+            const double _t22 = (_t21) ? _t20 : 1.0;
+            const double _t23 = _t22 * _t22;
+            const double _t24 = _t23 * _t23;
+            const double _t25 = _t23 * (0.041666666666666102 - 0.0013888888888798428 * _t22) + (1.0 - _t22 * 0.5) + (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + _t23 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22)) * _t24;
+            const double _t26 = _t3 * _t25;
+            const double _t27 = offsetgen_batch_sqrt(_t19);
+            const double _t28 = _t27 * _t15;
+            const double _t29 = -_t28;
+            const double _t30 = _t23 * (0.0083333333333333003 - 0.00019841269841216566 * _t22) + (1.0 - 0.16666666666666666 * _t22) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) * _t23 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22)) * _t24;
+            const double _t31 = ((_t21) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0))) * _t30;
+            const double _t32 = _t26 + _t31 * _t2;
+            const double _t33 = _t0 * _t17;
+            const double _t34 = _t33 * _t33 * _t19;
+            const int _t35 = _t34 <= 1.0;
+            const double _t36 = (_t35) ? _t34 : 1.0;
+            const double _t37 = _t36 * _t36;
+            const double _t38 = _t37 * _t37;
+            const double _t39 = (2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + _t37 * (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11)) * _t38 + (1.0 - _t36 * 0.5 + _t37 * (0.041666666666666102 - _t36 * 0.0013888888888798428));
+            const double _t40 = _t39 * _t7;
+            const double _t41 = 1.0 - _t36 * 0.16666666666666666 + (0.0083333333333333003 - _t36 * 0.00019841269841216566) * _t37 + (2.755731919201122e-06 - _t36 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t36 * 7.549371704181243e-13) * _t37) * _t38;
+            const double _t42 = _t27 * _t33;
+            const double _t43 = -_t42;
+            const double _t44 = _t41 * ((_t35) ? _t43 : ((_t43 > 0.0) ? 1.0 : (-1.0)));
+            const double _t45 = _t40 + _t44 * _t10;
+            const double _t46 = _t0 * _t16;
+            const double _t47 = _t46 * _t46 * _t19;
+            const int _t48 = _t47 <= 1.0;
+            const double _t49 = (_t48) ? _t47 : 1.0;
+            const double _t50 = _t49 * _t49;
+            const double _t51 = _t50 * _t50;
+            const double _t52 = _t50 * (0.0083333333333333003 - _t49 * 0.00019841269841216566) + (1.0 - _t49 * 0.16666666666666666) + _t51 * (2.755731919201122e-06 - _t49 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t49 * 7.549371704181243e-13) * _t50);
+            const double _t53 = _t27 * _t46;
+            const double _t54 = -_t53;
+            const double _t55 = _t52 * ((_t48) ? _t54 : ((_t54 > 0.0) ? 1.0 : (-1.0)));
+            const double _t56 = _t51 * (2.4801587247292686e-05 - _t49 * 2.7557303701922228e-07 + _t50 * (2.0874477943664777e-09 - _t49 * 1.1304620460700782e-11)) + (_t50 * (0.041666666666666102 - _t49 * 0.0013888888888798428) + (1.0 - _t49 * 0.5));
+            const double _t57 = _t5 * _t56;
+            const double _t58 = _t9 * _t55 + _t57;
+            const double _t59 = _t32 * _t45 * _t58;
+            const double _t60 = _t39 * _t10;
+            const double _t61 = _t60 - _t44 * _t7;
+            const double _t62 = _t9 * _t56;
+            const double _t63 = _t62 - _t5 * _t55;
+            const double _t64 = _t32 * _t61 * _t63;
+            const double _t65 = _t2 * _t25;
+            const double _t66 = _t65 - _t3 * _t31;
+            const double _t67 = _t66 * _t61 * _t58;
+            const double _t68 = _t63 * (_t66 * _t45);
+            const double _t69 = _t59 + _t64 - _t67 - _t68;
+            const double _t70 = _t69 * _t0;
+            const double _t71 = _t59 + _t67 - _t64 - _t68;
+            const double _t72 = _t59 + _t68 - _t67 - _t64;
+            const double _t73 = _t69 * _t69 + _t71 * _t71 + _t72 * _t72;
+            const double _t74 = (_t73 > 0.0) ? 1.0 / _t73 : 0.0;
+            const double _t75 = _t70 * _t70 * _t74;
+            const int _t76 = _t75 <= 1.0;
+            const double _t77 = (_t76) ? _t75 : 1.0;
+            const double _t78 = _t77 * _t77;
+            const double _t79 = _t78 * _t78;
+            const double _t80 = ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t77) * _t78 + (2.4801587247292686e-05 - _t77 * 2.7557303701922228e-07)) * _t79 + ((0.041666666666666102 - 0.0013888888888798428 * _t77) * _t78 + (1.0 - _t77 * 0.5));
+            const double _t81 = offsetgen_batch_sqrt(_t74);
+            const double _t82 = -(_t81 * _t70);
+            const double _t83 = ((_t76) ? _t82 : ((_t82 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t77 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t77) * _t78) * _t79 + ((0.0083333333333333003 - 0.00019841269841216566 * _t77) * _t78 + (1.0 - 0.16666666666666666 * _t77)));
+            const double _t84 = _t2 * _t80 - _t3 * _t83;
+            const double _t85 = _t72 * _t0;
+            const double _t86 = _t85 * _t85 * _t74;
+            const int _t87 = _t86 <= 1.0;
+            const double _t88 = (_t87) ? _t86 : 1.0;
+            const double _t89 = _t88 * _t88;
+            const double _t90 = _t89 * _t89;
+            const double _t91 = _t89 * (0.041666666666666102 - _t88 * 0.0013888888888798428) + (1.0 - _t88 * 0.5) + (2.4801587247292686e-05 - _t88 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t88 * 1.1304620460700782e-11) * _t89) * _t90;
+            const double _t92 = -(_t81 * _t85);
+            const double _t93 = ((2.755731919201122e-06 - _t88 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t88 * 7.549371704181243e-13) * _t89) * _t90 + (1.0 - _t88 * 0.16666666666666666 + (0.0083333333333333003 - _t88 * 0.00019841269841216566) * _t89)) * ((_t87) ? _t92 : ((_t92 > 0.0) ? 1.0 : (-1.0)));
+            const double _t94 = _t91 * _t10 - _t93 * _t7;
+            const double _t95 = _t71 * _t0;
+            const double _t96 = _t95 * _t95 * _t74;
+            const int _t97 = _t96 <= 1.0;
+            const double _t98 = -(_t81 * _t95);
+            const double _t99 = (_t97) ? _t96 : 1.0;
+            const double _t100 = _t99 * _t99;
+            const double _t101 = _t100 * _t100;
+            const double _t102 = ((_t97) ? _t98 : ((_t98 > 0.0) ? 1.0 : (-1.0))) * (_t100 * (0.0083333333333333003 - 0.00019841269841216566 * _t99) + (1.0 - 0.16666666666666666 * _t99) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t99 + _t100 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t99)) * _t101);
+            const double _t103 = _t100 * (0.041666666666666102 - 0.0013888888888798428 * _t99) + (1.0 - 0.5 * _t99) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t99 + _t100 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t99)) * _t101;
+            const double _t104 = _t9 * _t102 + _t5 * _t103;
+            const double _t105 = _t84 * (_t94 * _t104);
+            const double _t106 = _t93 * _t10 + _t91 * _t7;
+            const double _t107 = _t9 * _t103 - _t5 * _t102;
+            const double _t108 = _t84 * _t106 * _t107;
+            const double _t109 = _t3 * _t80 + _t2 * _t83;
+            const double _t110 = _t94 * _t109 * _t107;
+            const double _t111 = _t104 * _t106 * _t109;
+            const double _t112 = _t105 + _t108 - _t110 - _t111;
+            const double _t113 = _t0 * _t112;
+            const double _t114 = _t105 + _t110 - _t111 - _t108;
+            const double _t115 = _t105 + _t111 - _t110 - _t108;
+            const double _t116 = _t114 * _t114 + _t115 * _t115 + _t112 * _t112;
+            const double _t117 = (_t116 > 0.0) ? 1.0 / _t116 : 0.0;
+            const double _t118 = _t113 * _t113 * _t117;
+            const int _t119 = _t118 <= 1.0;
+            const double _t120 = (_t119) ? _t118 : 1.0;
+            const double _t121 = _t120 * _t120;
+            const double _t122 = _t121 * _t121;
+            const double _t123 = (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t120 + _t121 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t120)) * _t122 + ((0.041666666666666102 - 0.0013888888888798428 * _t120) * _t121 + (1.0 - _t120 * 0.5));
+            const double _t124 = offsetgen_batch_sqrt(_t117);
+            const double _t125 = _t124 * _t113;
+            const double _t126 = ((0.0083333333333333003 - 0.00019841269841216566 * _t120) * _t121 + (1.0 - 0.16666666666666666 * _t120) + _t122 * (_t121 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t120) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t120))) * ((_t119) ? _t125 : ((_t125 > 0.0) ? 1.0 : (-1.0)));
+            const double _t127 = _t123 * _t3 + _t2 * _t126;
+            const double _t128 = _t0 * _t115;
+            const double _t129 = _t117 * (_t128 * _t128);
+            const int _t130 = _t129 <= 1.0;
+            const double _t131 = (_t130) ? _t129 : 1.0;
+            const double _t132 = _t131 * _t131;
+            const double _t133 = _t132 * _t132;
+            const double _t134 = _t133 * (2.4801587247292686e-05 - _t131 * 2.7557303701922228e-07 + _t132 * (2.0874477943664777e-09 - _t131 * 1.1304620460700782e-11)) + (_t132 * (0.041666666666666102 - 0.0013888888888798428 * _t131) + (1.0 - _t131 * 0.5));
+            const double _t135 = -(_t124 * _t128);
+            const double _t136 = ((_t130) ? _t135 : ((_t135 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - 0.00019841269841216566 * _t131) * _t132 + (1.0 - 0.16666666666666666 * _t131) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t131 + _t132 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t131)) * _t133);
+            const double _t137 = _t134 * _t9 - _t5 * _t136;
+            const double _t138 = _t0 * _t114;
+            const double _t139 = _t138 * _t138 * _t117;
+            const int _t140 = _t139 <= 1.0;
+            const double _t141 = (_t140) ? _t139 : 1.0;
+            const double _t142 = _t141 * _t141;
+            const double _t143 = _t142 * _t142;
+            const double _t144 = _t138 * _t124;
+            const double _t145 = ((0.0083333333333333003 - 0.00019841269841216566 * _t141) * _t142 + (1.0 - 0.16666666666666666 * _t141) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t141 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t141) * _t142) * _t143) * ((_t140) ? _t144 : ((_t144 > 0.0) ? 1.0 : (-1.0)));
+            const double _t146 = 1.0 - _t141 * 0.5 + _t142 * (0.041666666666666102 - 0.0013888888888798428 * _t141) + ((2.0874477943664777e-09 - _t141 * 1.1304620460700782e-11) * _t142 + (2.4801587247292686e-05 - _t141 * 2.7557303701922228e-07)) * _t143;
+            const double _t147 = _t145 * _t10 + _t146 * _t7;
+            const double _t148 = _t134 * _t5 + _t9 * _t136;
+            const double _t149 = _t146 * _t10 - _t145 * _t7;
+            const double _t150 = _t123 * _t2 - _t3 * _t126;
+            const double _t151 = ((_t21) ? _t28 : ((_t28 > 0.0) ? 1.0 : (-1.0))) * _t30;
+            const double _t152 = _t65 - _t3 * _t151;
+            const double _t153 = _t41 * ((_t35) ? _t42 : ((_t42 > 0.0) ? 1.0 : (-1.0)));
+            const double _t154 = _t60 - _t153 * _t7;
+            const double _t155 = ((_t48) ? _t53 : ((_t53 > 0.0) ? 1.0 : (-1.0))) * _t52;
+            const double _t156 = _t57 + _t9 * _t155;
+            const double _t157 = _t152 * _t154 * _t156;
+            const double _t158 = _t40 + _t153 * _t10;
+            const double _t159 = _t62 - _t5 * _t155;
+            const double _t160 = _t158 * _t152 * _t159;
+            const double _t161 = _t26 + _t2 * _t151;
+            const double _t162 = _t156 * (_t158 * _t161);
+            const double _t163 = _t161 * _t154 * _t159;
+            const double _t164 = _t157 + _t160 - _t162 - _t163;
+            const double _t165 = _t157 + _t163 - _t162 - _t160;
+            const double _t166 = _t157 + _t162 - _t160 - _t163;
+            const double _t167 = _t164 * _t164 + _t165 * _t165 + _t166 * _t166;
+            const double _t168 = (_t167 > 0.0) ? 1.0 / _t167 : 0.0;
+            const double _t169 = _t0 * _t166;
+            const double _t170 = _t168 * (_t169 * _t169);
+            const int _t171 = _t170 <= 1.0;
+            const double _t172 = (_t171) ? _t170 : 1.0;
+            const double _t173 = _t172 * _t172;
+            const double _t174 = _t173 * _t173;
+            const double _t175 = _t174 * (2.4801587247292686e-05 - _t172 * 2.7557303701922228e-07 + _t173 * (2.0874477943664777e-09 - _t172 * 1.1304620460700782e-11)) + (1.0 - _t172 * 0.5 + _t173 * (0.041666666666666102 - _t172 * 0.0013888888888798428));
+            const double _t176 = offsetgen_batch_sqrt(_t168);
+            const double _t177 = _t176 * _t169;
+            const double _t178 = (1.0 - _t172 * 0.16666666666666666 + (0.0083333333333333003 - _t172 * 0.00019841269841216566) * _t173 + _t174 * (2.755731919201122e-06 - _t172 * 2.5052099244914114e-08 + _t173 * (1.6057701922579786e-10 - _t172 * 7.549371704181243e-13))) * ((_t171) ? _t177 : ((_t177 > 0.0) ? 1.0 : (-1.0)));
+            const double _t179 = _t175 * _t9 - _t178 * _t5;
+            const double _t180 = _t164 * _t0;
+            const double _t181 = _t168 * (_t180 * _t180);
+            const int _t182 = _t181 <= 1.0;
+            const double _t183 = (_t182) ? _t181 : 1.0;
+            const double _t184 = _t183 * _t183;
+            const double _t185 = _t184 * _t184;
+            const double _t186 = 1.0 - _t183 * 0.5 + (0.041666666666666102 - _t183 * 0.0013888888888798428) * _t184 + ((2.0874477943664777e-09 - _t183 * 1.1304620460700782e-11) * _t184 + (2.4801587247292686e-05 - _t183 * 2.7557303701922228e-07)) * _t185;
+            const double _t187 = -(_t176 * _t180);
+            const double _t188 = ((_t182) ? _t187 : ((_t187 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t183 * 0.16666666666666666 + _t184 * (0.0083333333333333003 - _t183 * 0.00019841269841216566) + (_t184 * (1.6057701922579786e-10 - _t183 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t183 * 2.5052099244914114e-08)) * _t185);
+            const double _t189 = _t186 * _t3 + _t2 * _t188;
+            const double _t190 = _t165 * _t0;
+            const double _t191 = _t168 * (_t190 * _t190);
+            const int _t192 = _t191 <= 1.0;
+            const double _t193 = (_t192) ? _t191 : 1.0;
+            const double _t194 = _t193 * _t193;
+            const double _t195 = _t194 * _t194;
+            const double _t196 = _t194 * (0.041666666666666102 - 0.0013888888888798428 * _t193) + (1.0 - _t193 * 0.5) + _t195 * (_t194 * (2.0874477943664777e-09 - _t193 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t193 * 2.7557303701922228e-07));
+            const double _t197 = -(_t176 * _t190);
+            const double _t198 = ((_t192) ? _t197 : ((_t197 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t193 + _t194 * (0.0083333333333333003 - _t193 * 0.00019841269841216566) + (_t194 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t193) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t193)) * _t195);
+            const double _t199 = _t196 * _t10 - _t198 * _t7;
+            const double _t200 = _t179 * _t189 * _t199;
+            const double _t201 = _t178 * _t9 + _t175 * _t5;
+            const double _t202 = _t186 * _t2 - _t3 * _t188;
+            const double _t203 = _t201 * _t202 * _t199;
+            const double _t204 = _t196 * _t7 + _t198 * _t10;
+            const double _t205 = _t202 * _t204 * _t179;
+            const double _t206 = _t189 * (_t201 * _t204);
+            const double _t207 = _t200 + _t203 - _t205 - _t206;
+            const double _t208 = _t200 + _t205 - _t203 - _t206;
+            const double _t209 = _t200 + _t206 - _t203 - _t205;
+            const double _t210 = _t207 * _t207 + _t208 * _t208 + _t209 * _t209;
+            const double _t211 = (_t210 > 0.0) ? 1.0 / _t210 : 0.0;
+            const double _t212 = _t208 * _t0;
+            const double _t213 = _t211 * (_t212 * _t212);
+            const int _t214 = _t213 <= 1.0;
+            const double _t215 = (_t214) ? _t213 : 1.0;
+            const double _t216 = _t215 * _t215;
+            const double _t217 = _t216 * _t216;
+            const double _t218 = _t217 * (_t216 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t215) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t215)) + ((0.041666666666666102 - 0.0013888888888798428 * _t215) * _t216 + (1.0 - _t215 * 0.5));
+            const double _t219 = offsetgen_batch_sqrt(_t211);
+            const double _t220 = -(_t219 * _t212);
+            const double _t221 = (_t217 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t215 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t215) * _t216) + ((0.0083333333333333003 - 0.00019841269841216566 * _t215) * _t216 + (1.0 - 0.16666666666666666 * _t215))) * ((_t214) ? _t220 : ((_t220 > 0.0) ? 1.0 : (-1.0)));
+            const double _t222 = _t9 * _t218 - _t5 * _t221;
+            const double _t223 = _t209 * _t0;
+            const double _t224 = _t211 * (_t223 * _t223);
+            const int _t225 = _t224 <= 1.0;
+            const double _t226 = (_t225) ? _t224 : 1.0;
+            const double _t227 = _t226 * _t226;
+            const double _t228 = _t227 * _t227;
+            const double _t229 = 1.0 - _t226 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t226) * _t227 + (2.4801587247292686e-05 - _t226 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t226 * 1.1304620460700782e-11) * _t227) * _t228;
+            const double _t230 = _t219 * _t223;
+            const double _t231 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t226 + _t227 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t226)) * _t228 + (1.0 - 0.16666666666666666 * _t226 + _t227 * (0.0083333333333333003 - _t226 * 0.00019841269841216566))) * ((_t225) ? _t230 : ((_t230 > 0.0) ? 1.0 : (-1.0)));
+            const double _t232 = _t229 * _t2 - _t3 * _t231;
+            const double _t233 = _t0 * _t207;
+            const double _t234 = _t211 * (_t233 * _t233);
+            const int _t235 = _t234 <= 1.0;
+            const double _t236 = (_t235) ? _t234 : 1.0;
+            const double _t237 = _t236 * _t236;
+            const double _t238 = _t237 * _t237;
+            const double _t239 = _t238 * (2.4801587247292686e-05 - _t236 * 2.7557303701922228e-07 + _t237 * (2.0874477943664777e-09 - _t236 * 1.1304620460700782e-11)) + (1.0 - _t236 * 0.5 + (0.041666666666666102 - _t236 * 0.0013888888888798428) * _t237);
+            const double _t240 = -(_t219 * _t233);
+            const double _t241 = (1.0 - _t236 * 0.16666666666666666 + (0.0083333333333333003 - _t236 * 0.00019841269841216566) * _t237 + _t238 * (_t237 * (1.6057701922579786e-10 - _t236 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t236 * 2.5052099244914114e-08))) * ((_t235) ? _t240 : ((_t240 > 0.0) ? 1.0 : (-1.0)));
+            const double _t242 = _t239 * _t10 - _t241 * _t7;
+            const double _t243 = _t2 * _t231 + _t3 * _t229;
+            const double _t244 = _t239 * _t7 + _t241 * _t10;
+            const double _t245 = _t9 * _t221 + _t5 * _t218;
+            out[i + j] = (_t127 * _t137 * _t147 + _t127 * _t148 * _t149 + _t149 * (_t150 * _t137) + _t150 * _t148 * _t147) * (_t222 * _t232 * _t242 + _t222 * _t243 * _t244 + _t244 * _t245 * _t232 + _t243 * _t245 * _t242);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_proj_o6_shell(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = diamond_proj_o6_shell(x[i], y[i], z[i], t[i]);
 }
 
 /* phi(p, h) of order 6: zero on the surface moved by h along +grad F.
  * Batch form of diamond_proj_o6_offsetf: out[i] = diamond_proj_o6_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void diamond_proj_o6_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+static inline void diamond_proj_o6_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_sinf(_t0);
-        const float _t2 = 6.28318548f * h[i];
-        const float _t3 = offsetgen_batch_cosf(_t0);
-        const float _t4 = 6.28318548f * y[i];
-        const float _t5 = offsetgen_batch_cosf(_t4);
-        const float _t6 = 6.28318548f * x[i];
-        const float _t7 = offsetgen_batch_cosf(_t6);
-        const float _t8 = _t3 * _t5 * _t7;
-        const float _t9 = offsetgen_batch_sinf(_t4);
-        const float _t10 = offsetgen_batch_sinf(_t6);
-        const float _t11 = _t3 * _t9 * _t10;
-        const float _t12 = _t1 * _t5 * _t10;
-        const float _t13 = _t7 * (_t1 * _t9);
-        const float _t14 = _t8 + _t11 - _t12 - _t13;
-        const float _t15 = _t2 * _t14;
-        const float _t16 = _t8 + _t13 - _t12 - _t11;
-        const float _t17 = _t8 + _t12 - _t11 - _t13;
-        const float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-        const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-        const float _t20 = _t15 * _t15 * _t19;
-        const int _t21 = _t20 <= 1.0f;
-        const float _t22 = (_t21) ? _t20 : 1.0f;
-        const float _t23 = _t22 * _t22;
-        const float _t24 = _t23 * _t23;
-        const float _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
-        const float _t26 = sqrtf(_t19);
-        const float _t27 = _t26 * _t15;
-        const float _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t29 = _t1 * _t25 - _t3 * _t28;
-        const float _t30 = _t2 * _t17;
-        const float _t31 = _t30 * _t30 * _t19;
-        const int _t32 = _t31 <= 1.0f;
-        const float _t33 = (_t32) ? _t31 : 1.0f;
-        const float _t34 = _t33 * _t33;
-        const float _t35 = _t34 * _t34;
-        const float _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
-        const float _t37 = _t26 * _t30;
-        const float _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t39 = _t36 * _t9 - _t5 * _t38;
-        const float _t40 = _t2 * _t16;
-        const float _t41 = _t40 * _t40 * _t19;
-        const int _t42 = _t41 <= 1.0f;
-        const float _t43 = (_t42) ? _t41 : 1.0f;
-        const float _t44 = _t43 * _t43;
-        const float _t45 = _t44 * _t44;
-        const float _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
-        const float _t47 = _t26 * _t40;
-        const float _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t49 = _t46 * _t7 + _t48 * _t10;
-        const float _t50 = _t29 * _t39 * _t49;
-        const float _t51 = _t46 * _t10 - _t48 * _t7;
-        const float _t52 = _t9 * _t38 + _t5 * _t36;
-        const float _t53 = _t29 * (_t51 * _t52);
-        const float _t54 = _t3 * _t25 + _t1 * _t28;
-        const float _t55 = _t49 * (_t52 * _t54);
-        const float _t56 = _t51 * _t54 * _t39;
-        const float _t57 = _t50 + _t53 - _t55 - _t56;
-        const float _t58 = _t50 + _t56 - _t55 - _t53;
-        const float _t59 = _t50 + _t55 - _t53 - _t56;
-        const float _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
-        const float _t61 = (_t60 > 0.0f) ? 1.0f / _t60 : 0.0f;
-        const float _t62 = _t2 * _t57;
-        const float _t63 = _t61 * (_t62 * _t62);
-        const int _t64 = _t63 <= 1.0f;
-        const float _t65 = (_t64) ? _t63 : 1.0f;
-        const float _t66 = _t65 * _t65;
-        const float _t67 = _t66 * _t66;
-        const float _t68 = ((2.08744777e-09f - 1.13046204e-11f * _t65) * _t66 + (2.48015876e-05f - 2.75573029e-07f * _t65)) * _t67 + (1.0f - 0.5f * _t65 + (0.0416666679f - 0.00138888892f * _t65) * _t66);
-        const float _t69 = sqrtf(_t61);
-        const float _t70 = -(_t69 * _t62);
-        const float _t71 = ((_t64) ? _t70 : ((_t70 > 0.0f) ? 1.0f : (-1.0f))) * (((1.60577024e-10f - 7.54937183e-13f * _t65) * _t66 + (2.75573188e-06f - 2.50520991e-08f * _t65)) * _t67 + (1.0f - 0.166666672f * _t65 + (0.00833333377f - 0.000198412701f * _t65) * _t66));
-        const float _t72 = _t1 * _t68 - _t3 * _t71;
-        const float _t73 = _t2 * _t59;
-        const float _t74 = _t61 * (_t73 * _t73);
-        const int _t75 = _t74 <= 1.0f;
-        const float _t76 = _t69 * _t73;
-        const float _t77 = (_t75) ? _t74 : 1.0f;
-        const float _t78 = _t77 * _t77;
-        const float _t79 = _t78 * _t78;
-        const float _t80 = ((_t75) ? _t76 : ((_t76 > 0.0f) ? 1.0f : (-1.0f))) * (_t79 * ((1.60577024e-10f - 7.54937183e-13f * _t77) * _t78 + (2.75573188e-06f - 2.50520991e-08f * _t77)) + ((0.00833333377f - 0.000198412701f * _t77) * _t78 + (1.0f - 0.166666672f * _t77)));
-        const float _t81 = 1.0f - _t77 * 0.5f + (0.0416666679f - 0.00138888892f * _t77) * _t78 + _t79 * (2.48015876e-05f - _t77 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t77) * _t78);
-        const float _t82 = _t10 * _t80 + _t81 * _t7;
-        const float _t83 = _t58 * _t2;
-        const float _t84 = _t61 * (_t83 * _t83);
-        const int _t85 = _t84 <= 1.0f;
-        const float _t86 = (_t85) ? _t84 : 1.0f;
-        const float _t87 = _t86 * _t86;
-        const float _t88 = _t87 * _t87;
-        const float _t89 = 1.0f - _t86 * 0.5f + (0.0416666679f - _t86 * 0.00138888892f) * _t87 + _t88 * (2.48015876e-05f - _t86 * 2.75573029e-07f + _t87 * (2.08744777e-09f - _t86 * 1.13046204e-11f));
-        const float _t90 = -(_t69 * _t83);
-        const float _t91 = ((_t85) ? _t90 : ((_t90 > 0.0f) ? 1.0f : (-1.0f))) * (_t88 * (2.75573188e-06f - _t86 * 2.50520991e-08f + (1.60577024e-10f - _t86 * 7.54937183e-13f) * _t87) + ((0.00833333377f - _t86 * 0.000198412701f) * _t87 + (1.0f - _t86 * 0.166666672f)));
-        const float _t92 = _t89 * _t9 - _t5 * _t91;
-        const float _t93 = _t72 * _t82 * _t92;
-        const float _t94 = _t9 * _t91 + _t89 * _t5;
-        const float _t95 = _t3 * _t68 + _t1 * _t71;
-        const float _t96 = _t94 * _t95 * _t82;
-        const float _t97 = _t81 * _t10 - _t7 * _t80;
-        const float _t98 = _t72 * (_t94 * _t97);
-        const float _t99 = _t97 * _t95 * _t92;
-        const float _t100 = _t93 + _t96 - _t98 - _t99;
-        const float _t101 = _t93 + _t98 - _t96 - _t99;
-        const float _t102 = _t93 + _t99 - _t96 - _t98;
-        const float _t103 = _t100 * _t100 + _t101 * _t101 + _t102 * _t102;
-        const float _t104 = (_t103 > 0.0f) ? 1.0f / _t103 : 0.0f;
-        const float _t105 = _t2 * _t101;
-        const float _t106 = _t104 * (_t105 * _t105);
-        const int _t107 = _t106 <= 1.0f;
-        const float _t108 = (_t107) ? _t106 : 1.0f;
-        const float _t109 = _t108 * _t108;
-        const float _t110 = _t109 * _t109;
-        const float _t111 = 1.0f - _t108 * 0.5f + (0.0416666679f - _t108 * 0.00138888892f) * _t109 + _t110 * ((2.08744777e-09f - _t108 * 1.13046204e-11f) * _t109 + (2.48015876e-05f - _t108 * 2.75573029e-07f));
-        const float _t112 = sqrtf(_t104);
-        const float _t113 = -(_t105 * _t112);
-        const float _t114 = ((_t107) ? _t113 : ((_t113 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t108 * 0.166666672f + (0.00833333377f - _t108 * 0.000198412701f) * _t109 + _t110 * (2.75573188e-06f - _t108 * 2.50520991e-08f + (1.60577024e-10f - _t108 * 7.54937183e-13f) * _t109));
-        const float _t115 = _t1 * _t111 - _t3 * _t114;
-        const float _t116 = _t2 * _t102;
-        const float _t117 = _t104 * (_t116 * _t116);
-        const int _t118 = _t117 <= 1.0f;
-        const float _t119 = (_t118) ? _t117 : 1.0f;
-        const float _t120 = _t119 * _t119;
-        const float _t121 = _t120 * _t120;
-        const float _t122 = _t120 * (0.0416666679f - 0.00138888892f * _t119) + (1.0f - _t119 * 0.5f) + (_t120 * (2.08744777e-09f - _t119 * 1.13046204e-11f) + (2.48015876e-05f - _t119 * 2.75573029e-07f)) * _t121;
-        const float _t123 = -(_t112 * _t116);
-        const float _t124 = (_t121 * (2.75573188e-06f - 2.50520991e-08f * _t119 + _t120 * (1.60577024e-10f - 7.54937183e-13f * _t119)) + (_t120 * (0.00833333377f - _t119 * 0.000198412701f) + (1.0f - 0.166666672f * _t119))) * ((_t118) ? _t123 : ((_t123 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t125 = _t122 * _t9 - _t5 * _t124;
-        const float _t126 = _t2 * _t100;
-        const float _t127 = _t126 * _t126 * _t104;
-        const int _t128 = _t127 <= 1.0f;
-        const float _t129 = (_t128) ? _t127 : 1.0f;
-        const float _t130 = _t129 * _t129;
-        const float _t131 = _t130 * _t130;
-        const float _t132 = (0.0416666679f - _t129 * 0.00138888892f) * _t130 + (1.0f - _t129 * 0.5f) + _t131 * ((2.08744777e-09f - _t129 * 1.13046204e-11f) * _t130 + (2.48015876e-05f - _t129 * 2.75573029e-07f));
-        const float _t133 = _t126 * _t112;
-        const float _t134 = ((_t128) ? _t133 : ((_t133 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t129 * 0.166666672f + (0.00833333377f - _t129 * 0.000198412701f) * _t130 + _t131 * ((1.60577024e-10f - _t129 * 7.54937183e-13f) * _t130 + (2.75573188e-06f - _t129 * 2.50520991e-08f)));
-        const float _t135 = _t132 * _t10 - _t134 * _t7;
-        const float _t136 = _t134 * _t10 + _t132 * _t7;
-        const float _t137 = _t5 * _t122 + _t9 * _t124;
-        const float _t138 = _t3 * _t111 + _t114 * _t1;
-        out[i] = _t115 * (_t125 * _t135) + _t136 * (_t137 * _t115) + _t138 * _t125 * _t136 + _t135 * (_t137 * _t138);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_sinf(_t0);
+            const float _t2 = 6.28318548f * h[i + j];
+            const float _t3 = offsetgen_batch_cosf(_t0);
+            const float _t4 = 6.28318548f * y[i + j];
+            const float _t5 = offsetgen_batch_cosf(_t4);
+            const float _t6 = 6.28318548f * x[i + j];
+            const float _t7 = offsetgen_batch_cosf(_t6);
+            const float _t8 = _t3 * _t5 * _t7;
+            const float _t9 = offsetgen_batch_sinf(_t4);
+            const float _t10 = offsetgen_batch_sinf(_t6);
+            const float _t11 = _t3 * _t9 * _t10;
+            const float _t12 = _t1 * _t5 * _t10;
+            const float _t13 = _t7 * (_t1 * _t9);
+            const float _t14 = _t8 + _t11 - _t12 - _t13;
+            const float _t15 = _t2 * _t14;
+            const float _t16 = _t8 + _t13 - _t12 - _t11;
+            const float _t17 = _t8 + _t12 - _t11 - _t13;
+            const float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
+            const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
+            const float _t20 = _t15 * _t15 * _t19;
+            const int _t21 = _t20 <= 1.0f;
+            const float _t22 = (_t21) ? _t20 : 1.0f;
+            const float _t23 = _t22 * _t22;
+            const float _t24 = _t23 * _t23;
+            const float _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
+            const float _t26 = offsetgen_batch_sqrtf(_t19);
+            const float _t27 = _t26 * _t15;
+            const float _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t29 = _t1 * _t25 - _t3 * _t28;
+            const float _t30 = _t2 * _t17;
+            const float _t31 = _t30 * _t30 * _t19;
+            const int _t32 = _t31 <= 1.0f;
+            const float _t33 = (_t32) ? _t31 : 1.0f;
+            const float _t34 = _t33 * _t33;
+            const float _t35 = _t34 * _t34;
+            const float _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
+            const float _t37 = _t26 * _t30;
+            const float _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t39 = _t36 * _t9 - _t5 * _t38;
+            const float _t40 = _t2 * _t16;
+            const float _t41 = _t40 * _t40 * _t19;
+            const int _t42 = _t41 <= 1.0f;
+            const float _t43 = (_t42) ? _t41 : 1.0f;
+            const float _t44 = _t43 * _t43;
+            const float _t45 = _t44 * _t44;
+            const float _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
+            const float _t47 = _t26 * _t40;
+            const float _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t49 = _t46 * _t7 + _t48 * _t10;
+            const float _t50 = _t29 * _t39 * _t49;
+            const float _t51 = _t46 * _t10 - _t48 * _t7;
+            const float _t52 = _t9 * _t38 + _t5 * _t36;
+            const float _t53 = _t29 * (_t51 * _t52);
+            const float _t54 = _t3 * _t25 + _t1 * _t28;
+            const float _t55 = _t49 * (_t52 * _t54);
+            const float _t56 = _t51 * _t54 * _t39;
+            const float _t57 = _t50 + _t53 - _t55 - _t56;
+            const float _t58 = _t50 + _t56 - _t55 - _t53;
+            const float _t59 = _t50 + _t55 - _t53 - _t56;
+            const float _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
+            const float _t61 = (_t60 > 0.0f) ? 1.0f / _t60 : 0.0f;
+            const float _t62 = _t2 * _t57;
+            const float _t63 = _t61 * (_t62 * _t62);
+            const int _t64 = _t63 <= 1.0f;
+            const float _t65 = (_t64) ? _t63 : 1.0f;
+            const float _t66 = _t65 * _t65;
+            const float _t67 = _t66 * _t66;
+            const float _t68 = ((2.08744777e-09f - 1.13046204e-11f * _t65) * _t66 + (2.48015876e-05f - 2.75573029e-07f * _t65)) * _t67 + (1.0f - 0.5f * _t65 + (0.0416666679f - 0.00138888892f * _t65) * _t66);
+            const float _t69 = offsetgen_batch_sqrtf(_t61);
+            const float _t70 = -(_t69 * _t62);
+            const float _t71 = ((_t64) ? _t70 : ((_t70 > 0.0f) ? 1.0f : (-1.0f))) * (((1.60577024e-10f - 7.54937183e-13f * _t65) * _t66 + (2.75573188e-06f - 2.50520991e-08f * _t65)) * _t67 + (1.0f - 0.166666672f * _t65 + (0.00833333377f - 0.000198412701f * _t65) * _t66));
+            const float _t72 = _t1 * _t68 - _t3 * _t71;
+            const float _t73 = _t2 * _t59;
+            const float _t74 = _t61 * (_t73 * _t73);
+            const int _t75 = _t74 <= 1.0f;
+            const float _t76 = _t69 * _t73;
+            const float _t77 = (_t75) ? _t74 : 1.0f;
+            const float _t78 = _t77 * _t77;
+            const float _t79 = _t78 * _t78;
+            const float _t80 = ((_t75) ? _t76 : ((_t76 > 0.0f) ? 1.0f : (-1.0f))) * (_t79 * ((1.60577024e-10f - 7.54937183e-13f * _t77) * _t78 + (2.75573188e-06f - 2.50520991e-08f * _t77)) + ((0.00833333377f - 0.000198412701f * _t77) * _t78 + (1.0f - 0.166666672f * _t77)));
+            const float _t81 = 1.0f - _t77 * 0.5f + (0.0416666679f - 0.00138888892f * _t77) * _t78 + _t79 * (2.48015876e-05f - _t77 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t77) * _t78);
+            const float _t82 = _t10 * _t80 + _t81 * _t7;
+            const float _t83 = _t58 * _t2;
+            const float _t84 = _t61 * (_t83 * _t83);
+            const int _t85 = _t84 <= 1.0f;
+            const float _t86 = (_t85) ? _t84 : 1.0f;
+            const float _t87 = _t86 * _t86;
+            const float _t88 = _t87 * _t87;
+            const float _t89 = 1.0f - _t86 * 0.5f + (0.0416666679f - _t86 * 0.00138888892f) * _t87 + _t88 * (2.48015876e-05f - _t86 * 2.75573029e-07f + _t87 * (2.08744777e-09f - _t86 * 1.13046204e-11f));
+            const float _t90 = -(_t69 * _t83);
+            const float _t91 = ((_t85) ? _t90 : ((_t90 > 0.0f) ? 1.0f : (-1.0f))) * (_t88 * (2.75573188e-06f - _t86 * 2.50520991e-08f + (1.60577024e-10f - _t86 * 7.54937183e-13f) * _t87) + ((0.00833333377f - _t86 * 0.000198412701f) * _t87 + (1.0f - _t86 * 0.166666672f)));
+            const float _t92 = _t89 * _t9 - _t5 * _t91;
+            const float _t93 = _t72 * _t82 * _t92;
+            const float _t94 = _t9 * _t91 + _t89 * _t5;
+            const float _t95 = _t3 * _t68 + _t1 * _t71;
+            const float _t96 = _t94 * _t95 * _t82;
+            const float _t97 = _t81 * _t10 - _t7 * _t80;
+            const float _t98 = _t72 * (_t94 * _t97);
+            const float _t99 = _t97 * _t95 * _t92;
+            const float _t100 = _t93 + _t96 - _t98 - _t99;
+            const float _t101 = _t93 + _t98 - _t96 - _t99;
+            const float _t102 = _t93 + _t99 - _t96 - _t98;
+            const float _t103 = _t100 * _t100 + _t101 * _t101 + _t102 * _t102;
+            const float _t104 = (_t103 > 0.0f) ? 1.0f / _t103 : 0.0f;
+            const float _t105 = _t2 * _t101;
+            const float _t106 = _t104 * (_t105 * _t105);
+            const int _t107 = _t106 <= 1.0f;
+            const float _t108 = (_t107) ? _t106 : 1.0f;
+            const float _t109 = _t108 * _t108;
+            const float _t110 = _t109 * _t109;
+            const float _t111 = 1.0f - _t108 * 0.5f + (0.0416666679f - _t108 * 0.00138888892f) * _t109 + _t110 * ((2.08744777e-09f - _t108 * 1.13046204e-11f) * _t109 + (2.48015876e-05f - _t108 * 2.75573029e-07f));
+            const float _t112 = offsetgen_batch_sqrtf(_t104);
+            const float _t113 = -(_t105 * _t112);
+            const float _t114 = ((_t107) ? _t113 : ((_t113 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t108 * 0.166666672f + (0.00833333377f - _t108 * 0.000198412701f) * _t109 + _t110 * (2.75573188e-06f - _t108 * 2.50520991e-08f + (1.60577024e-10f - _t108 * 7.54937183e-13f) * _t109));
+            const float _t115 = _t1 * _t111 - _t3 * _t114;
+            const float _t116 = _t2 * _t102;
+            const float _t117 = _t104 * (_t116 * _t116);
+            const int _t118 = _t117 <= 1.0f;
+            const float _t119 = (_t118) ? _t117 : 1.0f;
+            const float _t120 = _t119 * _t119;
+            const float _t121 = _t120 * _t120;
+            const float _t122 = _t120 * (0.0416666679f - 0.00138888892f * _t119) + (1.0f - _t119 * 0.5f) + (_t120 * (2.08744777e-09f - _t119 * 1.13046204e-11f) + (2.48015876e-05f - _t119 * 2.75573029e-07f)) * _t121;
+            const float _t123 = -(_t112 * _t116);
+            const float _t124 = (_t121 * (2.75573188e-06f - 2.50520991e-08f * _t119 + _t120 * (1.60577024e-10f - 7.54937183e-13f * _t119)) + (_t120 * (0.00833333377f - _t119 * 0.000198412701f) + (1.0f - 0.166666672f * _t119))) * ((_t118) ? _t123 : ((_t123 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t125 = _t122 * _t9 - _t5 * _t124;
+            const float _t126 = _t2 * _t100;
+            const float _t127 = _t126 * _t126 * _t104;
+            const int _t128 = _t127 <= 1.0f;
+            const float _t129 = (_t128) ? _t127 : 1.0f;
+            const float _t130 = _t129 * _t129;
+            const float _t131 = _t130 * _t130;
+            const float _t132 = (0.0416666679f - _t129 * 0.00138888892f) * _t130 + (1.0f - _t129 * 0.5f) + _t131 * ((2.08744777e-09f - _t129 * 1.13046204e-11f) * _t130 + (2.48015876e-05f - _t129 * 2.75573029e-07f));
+            const float _t133 = _t126 * _t112;
+            const float _t134 = ((_t128) ? _t133 : ((_t133 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t129 * 0.166666672f + (0.00833333377f - _t129 * 0.000198412701f) * _t130 + _t131 * ((1.60577024e-10f - _t129 * 7.54937183e-13f) * _t130 + (2.75573188e-06f - _t129 * 2.50520991e-08f)));
+            const float _t135 = _t132 * _t10 - _t134 * _t7;
+            const float _t136 = _t134 * _t10 + _t132 * _t7;
+            const float _t137 = _t5 * _t122 + _t9 * _t124;
+            const float _t138 = _t3 * _t111 + _t114 * _t1;
+            out[i + j] = _t115 * (_t125 * _t135) + _t136 * (_t137 * _t115) + _t138 * _t125 * _t136 + _t135 * (_t137 * _t138);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_proj_o6_offsetf(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = diamond_proj_o6_offsetf(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of diamond_proj_o6_shellf: out[i] = diamond_proj_o6_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void diamond_proj_o6_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+static inline void diamond_proj_o6_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = 6.28318548f * (t[i] * 0.5f);
-        const float _t1 = 6.28318548f * y[i];
-        const float _t2 = offsetgen_batch_sinf(_t1);
-        const float _t3 = offsetgen_batch_cosf(_t1);
-        const float _t4 = z[i] * 6.28318548f;
-        const float _t5 = offsetgen_batch_cosf(_t4);
-        const float _t6 = 6.28318548f * x[i];
-        const float _t7 = offsetgen_batch_cosf(_t6);
-        const float _t8 = _t5 * _t3 * _t7;
-        const float _t9 = offsetgen_batch_sinf(_t4);
-        const float _t10 = offsetgen_batch_sinf(_t6);
-        const float _t11 = _t9 * _t3 * _t10;
-        const float _t12 = _t5 * _t2 * _t10;
-        const float _t13 = _t7 * (_t9 * _t2);
-        const float _t14 = _t8 + _t11 - _t12 - _t13;
-        const float _t15 = _t14 * _t0;
-        const float _t16 = _t8 + _t12 - _t11 - _t13;
-        const float _t17 = _t8 + _t13 - _t11 - _t12;
-        const float _t18 = _t16 * _t16 + _t17 * _t17 + _t14 * _t14;
-        const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-        const float _t20 = _t15 * _t15 * _t19;
-        const int _t21 = _t20 <= 1.0f;
-        const float _t22 = (_t21) ? _t20 : 1.0f;
-        const float _t23 = _t22 * _t22;
-        const float _t24 = _t23 * _t23;
-        const float _t25 = _t23 * (0.0416666679f - 0.00138888892f * _t22) + (1.0f - _t22 * 0.5f) + (2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - 1.13046204e-11f * _t22)) * _t24;
-        const float _t26 = _t3 * _t25;
-        const float _t27 = sqrtf(_t19);
-        const float _t28 = _t27 * _t15;
-        const float _t29 = -_t28;
-        const float _t30 = _t23 * (0.00833333377f - 0.000198412701f * _t22) + (1.0f - 0.166666672f * _t22) + ((1.60577024e-10f - 7.54937183e-13f * _t22) * _t23 + (2.75573188e-06f - 2.50520991e-08f * _t22)) * _t24;
-        const float _t31 = ((_t21) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f))) * _t30;
-        const float _t32 = _t26 + _t31 * _t2;
-        const float _t33 = _t0 * _t17;
-        const float _t34 = _t33 * _t33 * _t19;
-        const int _t35 = _t34 <= 1.0f;
-        const float _t36 = (_t35) ? _t34 : 1.0f;
-        const float _t37 = _t36 * _t36;
-        const float _t38 = _t37 * _t37;
-        const float _t39 = (2.48015876e-05f - _t36 * 2.75573029e-07f + _t37 * (2.08744777e-09f - _t36 * 1.13046204e-11f)) * _t38 + (1.0f - _t36 * 0.5f + _t37 * (0.0416666679f - _t36 * 0.00138888892f));
-        const float _t40 = _t39 * _t7;
-        const float _t41 = 1.0f - _t36 * 0.166666672f + (0.00833333377f - _t36 * 0.000198412701f) * _t37 + (2.75573188e-06f - _t36 * 2.50520991e-08f + (1.60577024e-10f - _t36 * 7.54937183e-13f) * _t37) * _t38;
-        const float _t42 = _t27 * _t33;
-        const float _t43 = -_t42;
-        const float _t44 = _t41 * ((_t35) ? _t43 : ((_t43 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t45 = _t40 + _t44 * _t10;
-        const float _t46 = _t0 * _t16;
-        const float _t47 = _t46 * _t46 * _t19;
-        const int _t48 = _t47 <= 1.0f;
-        const float _t49 = (_t48) ? _t47 : 1.0f;
-        const float _t50 = _t49 * _t49;
-        const float _t51 = _t50 * _t50;
-        const float _t52 = _t50 * (0.00833333377f - _t49 * 0.000198412701f) + (1.0f - _t49 * 0.166666672f) + _t51 * (2.75573188e-06f - _t49 * 2.50520991e-08f + (1.60577024e-10f - _t49 * 7.54937183e-13f) * _t50);
-        const float _t53 = _t27 * _t46;
-        const float _t54 = -_t53;
-        const float _t55 = _t52 * ((_t48) ? _t54 : ((_t54 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t56 = _t51 * (2.48015876e-05f - _t49 * 2.75573029e-07f + _t50 * (2.08744777e-09f - _t49 * 1.13046204e-11f)) + (_t50 * (0.0416666679f - _t49 * 0.00138888892f) + (1.0f - _t49 * 0.5f));
-        const float _t57 = _t5 * _t56;
-        const float _t58 = _t9 * _t55 + _t57;
-        const float _t59 = _t32 * _t45 * _t58;
-        const float _t60 = _t39 * _t10;
-        const float _t61 = _t60 - _t44 * _t7;
-        const float _t62 = _t9 * _t56;
-        const float _t63 = _t62 - _t5 * _t55;
-        const float _t64 = _t32 * _t61 * _t63;
-        const float _t65 = _t2 * _t25;
-        const float _t66 = _t65 - _t3 * _t31;
-        const float _t67 = _t66 * _t61 * _t58;
-        const float _t68 = _t63 * (_t66 * _t45);
-        const float _t69 = _t59 + _t64 - _t67 - _t68;
-        const float _t70 = _t69 * _t0;
-        const float _t71 = _t59 + _t67 - _t64 - _t68;
-        const float _t72 = _t59 + _t68 - _t67 - _t64;
-        const float _t73 = _t69 * _t69 + _t71 * _t71 + _t72 * _t72;
-        const float _t74 = (_t73 > 0.0f) ? 1.0f / _t73 : 0.0f;
-        const float _t75 = _t70 * _t70 * _t74;
-        const int _t76 = _t75 <= 1.0f;
-        const float _t77 = (_t76) ? _t75 : 1.0f;
-        const float _t78 = _t77 * _t77;
-        const float _t79 = _t78 * _t78;
-        const float _t80 = ((2.08744777e-09f - 1.13046204e-11f * _t77) * _t78 + (2.48015876e-05f - _t77 * 2.75573029e-07f)) * _t79 + ((0.0416666679f - 0.00138888892f * _t77) * _t78 + (1.0f - _t77 * 0.5f));
-        const float _t81 = sqrtf(_t74);
-        const float _t82 = -(_t81 * _t70);
-        const float _t83 = ((_t76) ? _t82 : ((_t82 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - 2.50520991e-08f * _t77 + (1.60577024e-10f - 7.54937183e-13f * _t77) * _t78) * _t79 + ((0.00833333377f - 0.000198412701f * _t77) * _t78 + (1.0f - 0.166666672f * _t77)));
-        const float _t84 = _t2 * _t80 - _t3 * _t83;
-        const float _t85 = _t72 * _t0;
-        const float _t86 = _t85 * _t85 * _t74;
-        const int _t87 = _t86 <= 1.0f;
-        const float _t88 = (_t87) ? _t86 : 1.0f;
-        const float _t89 = _t88 * _t88;
-        const float _t90 = _t89 * _t89;
-        const float _t91 = _t89 * (0.0416666679f - _t88 * 0.00138888892f) + (1.0f - _t88 * 0.5f) + (2.48015876e-05f - _t88 * 2.75573029e-07f + (2.08744777e-09f - _t88 * 1.13046204e-11f) * _t89) * _t90;
-        const float _t92 = -(_t81 * _t85);
-        const float _t93 = ((2.75573188e-06f - _t88 * 2.50520991e-08f + (1.60577024e-10f - _t88 * 7.54937183e-13f) * _t89) * _t90 + (1.0f - _t88 * 0.166666672f + (0.00833333377f - _t88 * 0.000198412701f) * _t89)) * ((_t87) ? _t92 : ((_t92 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t94 = _t91 * _t10 - _t93 * _t7;
-        const float _t95 = _t71 * _t0;
-        const float _t96 = _t95 * _t95 * _t74;
-        const int _t97 = _t96 <= 1.0f;
-        const float _t98 = -(_t81 * _t95);
-        const float _t99 = (_t97) ? _t96 : 1.0f;
-        const float _t100 = _t99 * _t99;
-        const float _t101 = _t100 * _t100;
-        const float _t102 = ((_t97) ? _t98 : ((_t98 > 0.0f) ? 1.0f : (-1.0f))) * (_t100 * (0.00833333377f - 0.000198412701f * _t99) + (1.0f - 0.166666672f * _t99) + (2.75573188e-06f - 2.50520991e-08f * _t99 + _t100 * (1.60577024e-10f - 7.54937183e-13f * _t99)) * _t101);
-        const float _t103 = _t100 * (0.0416666679f - 0.00138888892f * _t99) + (1.0f - 0.5f * _t99) + (2.48015876e-05f - 2.75573029e-07f * _t99 + _t100 * (2.08744777e-09f - 1.13046204e-11f * _t99)) * _t101;
-        const float _t104 = _t9 * _t102 + _t5 * _t103;
-        const float _t105 = _t84 * (_t94 * _t104);
-        const float _t106 = _t93 * _t10 + _t91 * _t7;
-        const float _t107 = _t9 * _t103 - _t5 * _t102;
-        const float _t108 = _t84 * _t106 * _t107;
-        const float _t109 = _t3 * _t80 + _t2 * _t83;
-        const float _t110 = _t94 * _t109 * _t107;
-        const float _t111 = _t104 * _t106 * _t109;
-        const float _t112 = _t105 + _t108 - _t110 - _t111;
-        const float _t113 = _t0 * _t112;
-        const float _t114 = _t105 + _t110 - _t111 - _t108;
-        const float _t115 = _t105 + _t111 - _t110 - _t108;
-        const float _t116 = _t114 * _t114 + _t115 * _t115 + _t112 * _t112;
-        const float _t117 = (_t116 > 0.0f) ? 1.0f / _t116 : 0.0f;
-        const float _t118 = _t113 * _t113 * _t117;
-        const int _t119 = _t118 <= 1.0f;
-        const float _t120 = (_t119) ? _t118 : 1.0f;
-        const float _t121 = _t120 * _t120;
-        const float _t122 = _t121 * _t121;
-        const float _t123 = (2.48015876e-05f - 2.75573029e-07f * _t120 + _t121 * (2.08744777e-09f - 1.13046204e-11f * _t120)) * _t122 + ((0.0416666679f - 0.00138888892f * _t120) * _t121 + (1.0f - _t120 * 0.5f));
-        const float _t124 = sqrtf(_t117);
-        const float _t125 = _t124 * _t113;
-        const float _t126 = ((0.00833333377f - 0.000198412701f * _t120) * _t121 + (1.0f - 0.166666672f * _t120) + _t122 * (_t121 * (1.60577024e-10f - 7.54937183e-13f * _t120) + (2.75573188e-06f - 2.50520991e-08f * _t120))) * ((_t119) ? _t125 : ((_t125 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t127 = _t123 * _t3 + _t2 * _t126;
-        const float _t128 = _t0 * _t115;
-        const float _t129 = _t117 * (_t128 * _t128);
-        const int _t130 = _t129 <= 1.0f;
-        const float _t131 = (_t130) ? _t129 : 1.0f;
-        const float _t132 = _t131 * _t131;
-        const float _t133 = _t132 * _t132;
-        const float _t134 = _t133 * (2.48015876e-05f - _t131 * 2.75573029e-07f + _t132 * (2.08744777e-09f - _t131 * 1.13046204e-11f)) + (_t132 * (0.0416666679f - 0.00138888892f * _t131) + (1.0f - _t131 * 0.5f));
-        const float _t135 = -(_t124 * _t128);
-        const float _t136 = ((_t130) ? _t135 : ((_t135 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - 0.000198412701f * _t131) * _t132 + (1.0f - 0.166666672f * _t131) + (2.75573188e-06f - 2.50520991e-08f * _t131 + _t132 * (1.60577024e-10f - 7.54937183e-13f * _t131)) * _t133);
-        const float _t137 = _t134 * _t9 - _t5 * _t136;
-        const float _t138 = _t0 * _t114;
-        const float _t139 = _t138 * _t138 * _t117;
-        const int _t140 = _t139 <= 1.0f;
-        const float _t141 = (_t140) ? _t139 : 1.0f;
-        const float _t142 = _t141 * _t141;
-        const float _t143 = _t142 * _t142;
-        const float _t144 = _t138 * _t124;
-        const float _t145 = ((0.00833333377f - 0.000198412701f * _t141) * _t142 + (1.0f - 0.166666672f * _t141) + (2.75573188e-06f - 2.50520991e-08f * _t141 + (1.60577024e-10f - 7.54937183e-13f * _t141) * _t142) * _t143) * ((_t140) ? _t144 : ((_t144 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t146 = 1.0f - _t141 * 0.5f + _t142 * (0.0416666679f - 0.00138888892f * _t141) + ((2.08744777e-09f - _t141 * 1.13046204e-11f) * _t142 + (2.48015876e-05f - _t141 * 2.75573029e-07f)) * _t143;
-        const float _t147 = _t145 * _t10 + _t146 * _t7;
-        const float _t148 = _t134 * _t5 + _t9 * _t136;
-        const float _t149 = _t146 * _t10 - _t145 * _t7;
-        const float _t150 = _t123 * _t2 - _t3 * _t126;
-        const float _t151 = ((_t21) ? _t28 : ((_t28 > 0.0f) ? 1.0f : (-1.0f))) * _t30;
-        const float _t152 = _t65 - _t3 * _t151;
-        const float _t153 = _t41 * ((_t35) ? _t42 : ((_t42 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t154 = _t60 - _t153 * _t7;
-        const float _t155 = ((_t48) ? _t53 : ((_t53 > 0.0f) ? 1.0f : (-1.0f))) * _t52;
-        const float _t156 = _t57 + _t9 * _t155;
-        const float _t157 = _t152 * _t154 * _t156;
-        const float _t158 = _t40 + _t153 * _t10;
-        const float _t159 = _t62 - _t5 * _t155;
-        const float _t160 = _t158 * _t152 * _t159;
-        const float _t161 = _t26 + _t2 * _t151;
-        const float _t162 = _t156 * (_t158 * _t161);
-        const float _t163 = _t161 * _t154 * _t159;
-        const float _t164 = _t157 + _t160 - _t162 - _t163;
-        const float _t165 = _t157 + _t163 - _t162 - _t160;
-        const float _t166 = _t157 + _t162 - _t160 - _t163;
-        const float _t167 = _t164 * _t164 + _t165 * _t165 + _t166 * _t166;
-        const float _t168 = (_t167 > 0.0f) ? 1.0f / _t167 : 0.0f;
-        const float _t169 = _t0 * _t166;
-        const float _t170 = _t168 * (_t169 * _t169);
-        const int _t171 = _t170 <= 1.0f;
-        const float _t172 = (_t171) ? _t170 : 1.0f;
-        const float _t173 = _t172 * _t172;
-        const float _t174 = _t173 * _t173;
-        const float _t175 = _t174 * (2.48015876e-05f - _t172 * 2.75573029e-07f + _t173 * (2.08744777e-09f - _t172 * 1.13046204e-11f)) + (1.0f - _t172 * 0.5f + _t173 * (0.0416666679f - _t172 * 0.00138888892f));
-        const float _t176 = sqrtf(_t168);
-        const float _t177 = _t176 * _t169;
-        const float _t178 = (1.0f - _t172 * 0.166666672f + (0.00833333377f - _t172 * 0.000198412701f) * _t173 + _t174 * (2.75573188e-06f - _t172 * 2.50520991e-08f + _t173 * (1.60577024e-10f - _t172 * 7.54937183e-13f))) * ((_t171) ? _t177 : ((_t177 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t179 = _t175 * _t9 - _t178 * _t5;
-        const float _t180 = _t164 * _t0;
-        const float _t181 = _t168 * (_t180 * _t180);
-        const int _t182 = _t181 <= 1.0f;
-        const float _t183 = (_t182) ? _t181 : 1.0f;
-        const float _t184 = _t183 * _t183;
-        const float _t185 = _t184 * _t184;
-        const float _t186 = 1.0f - _t183 * 0.5f + (0.0416666679f - _t183 * 0.00138888892f) * _t184 + ((2.08744777e-09f - _t183 * 1.13046204e-11f) * _t184 + (2.48015876e-05f - _t183 * 2.75573029e-07f)) * _t185;
-        const float _t187 = -(_t176 * _t180);
-        const float _t188 = ((_t182) ? _t187 : ((_t187 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t183 * 0.166666672f + _t184 * (0.00833333377f - _t183 * 0.000198412701f) + (_t184 * (1.60577024e-10f - _t183 * 7.54937183e-13f) + (2.75573188e-06f - _t183 * 2.50520991e-08f)) * _t185);
-        const float _t189 = _t186 * _t3 + _t2 * _t188;
-        const float _t190 = _t165 * _t0;
-        const float _t191 = _t168 * (_t190 * _t190);
-        const int _t192 = _t191 <= 1.0f;
-        const float _t193 = (_t192) ? _t191 : 1.0f;
-        const float _t194 = _t193 * _t193;
-        const float _t195 = _t194 * _t194;
-        const float _t196 = _t194 * (0.0416666679f - 0.00138888892f * _t193) + (1.0f - _t193 * 0.5f) + _t195 * (_t194 * (2.08744777e-09f - _t193 * 1.13046204e-11f) + (2.48015876e-05f - _t193 * 2.75573029e-07f));
-        const float _t197 = -(_t176 * _t190);
-        const float _t198 = ((_t192) ? _t197 : ((_t197 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t193 + _t194 * (0.00833333377f - _t193 * 0.000198412701f) + (_t194 * (1.60577024e-10f - 7.54937183e-13f * _t193) + (2.75573188e-06f - 2.50520991e-08f * _t193)) * _t195);
-        const float _t199 = _t196 * _t10 - _t198 * _t7;
-        const float _t200 = _t179 * _t189 * _t199;
-        const float _t201 = _t178 * _t9 + _t175 * _t5;
-        const float _t202 = _t186 * _t2 - _t3 * _t188;
-        const float _t203 = _t201 * _t202 * _t199;
-        const float _t204 = _t196 * _t7 + _t198 * _t10;
-        const float _t205 = _t202 * _t204 * _t179;
-        const float _t206 = _t189 * (_t201 * _t204);
-        const float _t207 = _t200 + _t203 - _t205 - _t206;
-        const float _t208 = _t200 + _t205 - _t203 - _t206;
-        const float _t209 = _t200 + _t206 - _t203 - _t205;
-        const float _t210 = _t207 * _t207 + _t208 * _t208 + _t209 * _t209;
-        const float _t211 = (_t210 > 0.0f) ? 1.0f / _t210 : 0.0f;
-        const float _t212 = _t208 * _t0;
-        const float _t213 = _t211 * (_t212 * _t212);
-        const int _t214 = _t213 <= 1.0f;
-        const float _t215 = (_t214) ? _t213 : 1.0f;
-        const float _t216 = _t215 * _t215;
-        const float _t217 = _t216 * _t216;
-        const float _t218 = _t217 * (_t216 * (2.08744777e-09f - 1.13046204e-11f * _t215) + (2.48015876e-05f - 2.75573029e-07f * _t215)) + ((0.0416666679f - 0.00138888892f * _t215) * _t216 + (1.0f - _t215 * 0.5f));
-        const float _t219 = sqrtf(_t211);
-        const float _t220 = -(_t219 * _t212);
-        const float _t221 = (_t217 * (2.75573188e-06f - 2.50520991e-08f * _t215 + (1.60577024e-10f - 7.54937183e-13f * _t215) * _t216) + ((0.00833333377f - 0.000198412701f * _t215) * _t216 + (1.0f - 0.166666672f * _t215))) * ((_t214) ? _t220 : ((_t220 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t222 = _t9 * _t218 - _t5 * _t221;
-        const float _t223 = _t209 * _t0;
-        const float _t224 = _t211 * (_t223 * _t223);
-        const int _t225 = _t224 <= 1.0f;
-        const float _t226 = (_t225) ? _t224 : 1.0f;
-        const float _t227 = _t226 * _t226;
-        const float _t228 = _t227 * _t227;
-        const float _t229 = 1.0f - _t226 * 0.5f + (0.0416666679f - 0.00138888892f * _t226) * _t227 + (2.48015876e-05f - _t226 * 2.75573029e-07f + (2.08744777e-09f - _t226 * 1.13046204e-11f) * _t227) * _t228;
-        const float _t230 = _t219 * _t223;
-        const float _t231 = ((2.75573188e-06f - 2.50520991e-08f * _t226 + _t227 * (1.60577024e-10f - 7.54937183e-13f * _t226)) * _t228 + (1.0f - 0.166666672f * _t226 + _t227 * (0.00833333377f - _t226 * 0.000198412701f))) * ((_t225) ? _t230 : ((_t230 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t232 = _t229 * _t2 - _t3 * _t231;
-        const float _t233 = _t0 * _t207;
-        const float _t234 = _t211 * (_t233 * _t233);
-        const int _t235 = _t234 <= 1.0f;
-        const float _t236 = (_t235) ? _t234 : 1.0f;
-        const float _t237 = _t236 * _t236;
-        const float _t238 = _t237 * _t237;
-        const float _t239 = _t238 * (2.48015876e-05f - _t236 * 2.75573029e-07f + _t237 * (2.08744777e-09f - _t236 * 1.13046204e-11f)) + (1.0f - _t236 * 0.5f + (0.0416666679f - _t236 * 0.00138888892f) * _t237);
-        const float _t240 = -(_t219 * _t233);
-        const float _t241 = (1.0f - _t236 * 0.166666672f + (0.00833333377f - _t236 * 0.000198412701f) * _t237 + _t238 * (_t237 * (1.60577024e-10f - _t236 * 7.54937183e-13f) + (2.75573188e-06f - _t236 * 2.50520991e-08f))) * ((_t235) ? _t240 : ((_t240 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t242 = _t239 * _t10 - _t241 * _t7;
-        const float _t243 = _t2 * _t231 + _t3 * _t229;
-        const float _t244 = _t239 * _t7 + _t241 * _t10;
-        const float _t245 = _t9 * _t221 + _t5 * _t218;
-        out[i] = (_t127 * _t137 * _t147 + _t127 * _t148 * _t149 + _t149 * (_t150 * _t137) + _t150 * _t148 * _t147) * (_t222 * _t232 * _t242 + _t222 * _t243 * _t244 + _t244 * _t245 * _t232 + _t243 * _t245 * _t242);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t1 = 6.28318548f * y[i + j];
+            const float _t2 = offsetgen_batch_sinf(_t1);
+            const float _t3 = offsetgen_batch_cosf(_t1);
+            const float _t4 = z[i + j] * 6.28318548f;
+            const float _t5 = offsetgen_batch_cosf(_t4);
+            const float _t6 = 6.28318548f * x[i + j];
+            const float _t7 = offsetgen_batch_cosf(_t6);
+            const float _t8 = _t5 * _t3 * _t7;
+            const float _t9 = offsetgen_batch_sinf(_t4);
+            const float _t10 = offsetgen_batch_sinf(_t6);
+            const float _t11 = _t9 * _t3 * _t10;
+            const float _t12 = _t5 * _t2 * _t10;
+            const float _t13 = _t7 * (_t9 * _t2);
+            const float _t14 = _t8 + _t11 - _t12 - _t13;
+            const float _t15 = _t14 * _t0;
+            const float _t16 = _t8 + _t12 - _t11 - _t13;
+            const float _t17 = _t8 + _t13 - _t11 - _t12;
+            const float _t18 = _t16 * _t16 + _t17 * _t17 + _t14 * _t14;
+            const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
+            const float _t20 = _t15 * _t15 * _t19;
+            const int _t21 = _t20 <= 1.0f;
+            const float _t22 = (_t21) ? _t20 : 1.0f;
+            const float _t23 = _t22 * _t22;
+            const float _t24 = _t23 * _t23;
+            const float _t25 = _t23 * (0.0416666679f - 0.00138888892f * _t22) + (1.0f - _t22 * 0.5f) + (2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - 1.13046204e-11f * _t22)) * _t24;
+            const float _t26 = _t3 * _t25;
+            const float _t27 = offsetgen_batch_sqrtf(_t19);
+            const float _t28 = _t27 * _t15;
+            const float _t29 = -_t28;
+            const float _t30 = _t23 * (0.00833333377f - 0.000198412701f * _t22) + (1.0f - 0.166666672f * _t22) + ((1.60577024e-10f - 7.54937183e-13f * _t22) * _t23 + (2.75573188e-06f - 2.50520991e-08f * _t22)) * _t24;
+            const float _t31 = ((_t21) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f))) * _t30;
+            const float _t32 = _t26 + _t31 * _t2;
+            const float _t33 = _t0 * _t17;
+            const float _t34 = _t33 * _t33 * _t19;
+            const int _t35 = _t34 <= 1.0f;
+            const float _t36 = (_t35) ? _t34 : 1.0f;
+            const float _t37 = _t36 * _t36;
+            const float _t38 = _t37 * _t37;
+            const float _t39 = (2.48015876e-05f - _t36 * 2.75573029e-07f + _t37 * (2.08744777e-09f - _t36 * 1.13046204e-11f)) * _t38 + (1.0f - _t36 * 0.5f + _t37 * (0.0416666679f - _t36 * 0.00138888892f));
+            const float _t40 = _t39 * _t7;
+            const float _t41 = 1.0f - _t36 * 0.166666672f + (0.00833333377f - _t36 * 0.000198412701f) * _t37 + (2.75573188e-06f - _t36 * 2.50520991e-08f + (1.60577024e-10f - _t36 * 7.54937183e-13f) * _t37) * _t38;
+            const float _t42 = _t27 * _t33;
+            const float _t43 = -_t42;
+            const float _t44 = _t41 * ((_t35) ? _t43 : ((_t43 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t45 = _t40 + _t44 * _t10;
+            const float _t46 = _t0 * _t16;
+            const float _t47 = _t46 * _t46 * _t19;
+            const int _t48 = _t47 <= 1.0f;
+            const float _t49 = (_t48) ? _t47 : 1.0f;
+            const float _t50 = _t49 * _t49;
+            const float _t51 = _t50 * _t50;
+            const float _t52 = _t50 * (0.00833333377f - _t49 * 0.000198412701f) + (1.0f - _t49 * 0.166666672f) + _t51 * (2.75573188e-06f - _t49 * 2.50520991e-08f + (1.60577024e-10f - _t49 * 7.54937183e-13f) * _t50);
+            const float _t53 = _t27 * _t46;
+            const float _t54 = -_t53;
+            const float _t55 = _t52 * ((_t48) ? _t54 : ((_t54 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t56 = _t51 * (2.48015876e-05f - _t49 * 2.75573029e-07f + _t50 * (2.08744777e-09f - _t49 * 1.13046204e-11f)) + (_t50 * (0.0416666679f - _t49 * 0.00138888892f) + (1.0f - _t49 * 0.5f));
+            const float _t57 = _t5 * _t56;
+            const float _t58 = _t9 * _t55 + _t57;
+            const float _t59 = _t32 * _t45 * _t58;
+            const float _t60 = _t39 * _t10;
+            const float _t61 = _t60 - _t44 * _t7;
+            const float _t62 = _t9 * _t56;
+            const float _t63 = _t62 - _t5 * _t55;
+            const float _t64 = _t32 * _t61 * _t63;
+            const float _t65 = _t2 * _t25;
+            const float _t66 = _t65 - _t3 * _t31;
+            const float _t67 = _t66 * _t61 * _t58;
+            const float _t68 = _t63 * (_t66 * _t45);
+            const float _t69 = _t59 + _t64 - _t67 - _t68;
+            const float _t70 = _t69 * _t0;
+            const float _t71 = _t59 + _t67 - _t64 - _t68;
+            const float _t72 = _t59 + _t68 - _t67 - _t64;
+            const float _t73 = _t69 * _t69 + _t71 * _t71 + _t72 * _t72;
+            const float _t74 = (_t73 > 0.0f) ? 1.0f / _t73 : 0.0f;
+            const float _t75 = _t70 * _t70 * _t74;
+            const int _t76 = _t75 <= 1.0f;
+            const float _t77 = (_t76) ? _t75 : 1.0f;
+            const float _t78 = _t77 * _t77;
+            const float _t79 = _t78 * _t78;
+            const float _t80 = ((2.08744777e-09f - 1.13046204e-11f * _t77) * _t78 + (2.48015876e-05f - _t77 * 2.75573029e-07f)) * _t79 + ((0.0416666679f - 0.00138888892f * _t77) * _t78 + (1.0f - _t77 * 0.5f));
+            const float _t81 = offsetgen_batch_sqrtf(_t74);
+            const float _t82 = -(_t81 * _t70);
+            const float _t83 = ((_t76) ? _t82 : ((_t82 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - 2.50520991e-08f * _t77 + (1.60577024e-10f - 7.54937183e-13f * _t77) * _t78) * _t79 + ((0.00833333377f - 0.000198412701f * _t77) * _t78 + (1.0f - 0.166666672f * _t77)));
+            const float _t84 = _t2 * _t80 - _t3 * _t83;
+            const float _t85 = _t72 * _t0;
+            const float _t86 = _t85 * _t85 * _t74;
+            const int _t87 = _t86 <= 1.0f;
+            const float _t88 = (_t87) ? _t86 : 1.0f;
+            const float _t89 = _t88 * _t88;
+            const float _t90 = _t89 * _t89;
+            const float _t91 = _t89 * (0.0416666679f - _t88 * 0.00138888892f) + (1.0f - _t88 * 0.5f) + (2.48015876e-05f - _t88 * 2.75573029e-07f + (2.08744777e-09f - _t88 * 1.13046204e-11f) * _t89) * _t90;
+            const float _t92 = -(_t81 * _t85);
+            const float _t93 = ((2.75573188e-06f - _t88 * 2.50520991e-08f + (1.60577024e-10f - _t88 * 7.54937183e-13f) * _t89) * _t90 + (1.0f - _t88 * 0.166666672f + (0.00833333377f - _t88 * 0.000198412701f) * _t89)) * ((_t87) ? _t92 : ((_t92 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t94 = _t91 * _t10 - _t93 * _t7;
+            const float _t95 = _t71 * _t0;
+            const float _t96 = _t95 * _t95 * _t74;
+            const int _t97 = _t96 <= 1.0f;
+            const float _t98 = -(_t81 * _t95);
+            const float _t99 = (_t97) ? _t96 : 1.0f;
+            const float _t100 = _t99 * _t99;
+            const float _t101 = _t100 * _t100;
+            const float _t102 = ((_t97) ? _t98 : ((_t98 > 0.0f) ? 1.0f : (-1.0f))) * (_t100 * (0.00833333377f - 0.000198412701f * _t99) + (1.0f - 0.166666672f * _t99) + (2.75573188e-06f - 2.50520991e-08f * _t99 + _t100 * (1.60577024e-10f - 7.54937183e-13f * _t99)) * _t101);
+            const float _t103 = _t100 * (0.0416666679f - 0.00138888892f * _t99) + (1.0f - 0.5f * _t99) + (2.48015876e-05f - 2.75573029e-07f * _t99 + _t100 * (2.08744777e-09f - 1.13046204e-11f * _t99)) * _t101;
+            const float _t104 = _t9 * _t102 + _t5 * _t103;
+            const float _t105 = _t84 * (_t94 * _t104);
+            const float _t106 = _t93 * _t10 + _t91 * _t7;
+            const float _t107 = _t9 * _t103 - _t5 * _t102;
+            const float _t108 = _t84 * _t106 * _t107;
+            const float _t109 = _t3 * _t80 + _t2 * _t83;
+            const float _t110 = _t94 * _t109 * _t107;
+            const float _t111 = _t104 * _t106 * _t109;
+            const float _t112 = _t105 + _t108 - _t110 - _t111;
+            const float _t113 = _t0 * _t112;
+            const float _t114 = _t105 + _t110 - _t111 - _t108;
+            const float _t115 = _t105 + _t111 - _t110 - _t108;
+            const float _t116 = _t114 * _t114 + _t115 * _t115 + _t112 * _t112;
+            const float _t117 = (_t116 > 0.0f) ? 1.0f / _t116 : 0.0f;
+            const float _t118 = _t113 * _t113 * _t117;
+            const int _t119 = _t118 <= 1.0f;
+            const float _t120 = (_t119) ? _t118 : 1.0f;
+            const float _t121 = _t120 * _t120;
+            const float _t122 = _t121 * _t121;
+            const float _t123 = (2.48015876e-05f - 2.75573029e-07f * _t120 + _t121 * (2.08744777e-09f - 1.13046204e-11f * _t120)) * _t122 + ((0.0416666679f - 0.00138888892f * _t120) * _t121 + (1.0f - _t120 * 0.5f));
+            const float _t124 = offsetgen_batch_sqrtf(_t117);
+            const float _t125 = _t124 * _t113;
+            const float _t126 = ((0.00833333377f - 0.000198412701f * _t120) * _t121 + (1.0f - 0.166666672f * _t120) + _t122 * (_t121 * (1.60577024e-10f - 7.54937183e-13f * _t120) + (2.75573188e-06f - 2.50520991e-08f * _t120))) * ((_t119) ? _t125 : ((_t125 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t127 = _t123 * _t3 + _t2 * _t126;
+            const float _t128 = _t0 * _t115;
+            const float _t129 = _t117 * (_t128 * _t128);
+            const int _t130 = _t129 <= 1.0f;
+            const float _t131 = (_t130) ? _t129 : 1.0f;
+            const float _t132 = _t131 * _t131;
+            const float _t133 = _t132 * _t132;
+            const float _t134 = _t133 * (2.48015876e-05f - _t131 * 2.75573029e-07f + _t132 * (2.08744777e-09f - _t131 * 1.13046204e-11f)) + (_t132 * (0.0416666679f - 0.00138888892f * _t131) + (1.0f - _t131 * 0.5f));
+            const float _t135 = -(_t124 * _t128);
+            const float _t136 = ((_t130) ? _t135 : ((_t135 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - 0.000198412701f * _t131) * _t132 + (1.0f - 0.166666672f * _t131) + (2.75573188e-06f - 2.50520991e-08f * _t131 + _t132 * (1.60577024e-10f - 7.54937183e-13f * _t131)) * _t133);
+            const float _t137 = _t134 * _t9 - _t5 * _t136;
+            const float _t138 = _t0 * _t114;
+            const float _t139 = _t138 * _t138 * _t117;
+            const int _t140 = _t139 <= 1.0f;
+            const float _t141 = (_t140) ? _t139 : 1.0f;
+            const float _t142 = _t141 * _t141;
+            const float _t143 = _t142 * _t142;
+            const float _t144 = _t138 * _t124;
+            const float _t145 = ((0.00833333377f - 0.000198412701f * _t141) * _t142 + (1.0f - 0.166666672f * _t141) + (2.75573188e-06f - 2.50520991e-08f * _t141 + (1.60577024e-10f - 7.54937183e-13f * _t141) * _t142) * _t143) * ((_t140) ? _t144 : ((_t144 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t146 = 1.0f - _t141 * 0.5f + _t142 * (0.0416666679f - 0.00138888892f * _t141) + ((2.08744777e-09f - _t141 * 1.13046204e-11f) * _t142 + (2.48015876e-05f - _t141 * 2.75573029e-07f)) * _t143;
+            const float _t147 = _t145 * _t10 + _t146 * _t7;
+            const float _t148 = _t134 * _t5 + _t9 * _t136;
+            const float _t149 = _t146 * _t10 - _t145 * _t7;
+            const float _t150 = _t123 * _t2 - _t3 * _t126;
+            const float _t151 = ((_t21) ? _t28 : ((_t28 > 0.0f) ? 1.0f : (-1.0f))) * _t30;
+            const float _t152 = _t65 - _t3 * _t151;
+            const float _t153 = _t41 * ((_t35) ? _t42 : ((_t42 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t154 = _t60 - _t153 * _t7;
+            const float _t155 = ((_t48) ? _t53 : ((_t53 > 0.0f) ? 1.0f : (-1.0f))) * _t52;
+            const float _t156 = _t57 + _t9 * _t155;
+            const float _t157 = _t152 * _t154 * _t156;
+            const float _t158 = _t40 + _t153 * _t10;
+            const float _t159 = _t62 - _t5 * _t155;
+            const float _t160 = _t158 * _t152 * _t159;
+            const float _t161 = _t26 + _t2 * _t151;
+            const float _t162 = _t156 * (_t158 * _t161);
+            const float _t163 = _t161 * _t154 * _t159;
+            const float _t164 = _t157 + _t160 - _t162 - _t163;
+            const float _t165 = _t157 + _t163 - _t162 - _t160;
+            const float _t166 = _t157 + _t162 - _t160 - _t163;
+            const float _t167 = _t164 * _t164 + _t165 * _t165 + _t166 * _t166;
+            const float _t168 = (_t167 > 0.0f) ? 1.0f / _t167 : 0.0f;
+            const float _t169 = _t0 * _t166;
+            const float _t170 = _t168 * (_t169 * _t169);
+            const int _t171 = _t170 <= 1.0f;
+            const float _t172 = (_t171) ? _t170 : 1.0f;
+            const float _t173 = _t172 * _t172;
+            const float _t174 = _t173 * _t173;
+            const float _t175 = _t174 * (2.48015876e-05f - _t172 * 2.75573029e-07f + _t173 * (2.08744777e-09f - _t172 * 1.13046204e-11f)) + (1.0f - _t172 * 0.5f + _t173 * (0.0416666679f - _t172 * 0.00138888892f));
+            const float _t176 = offsetgen_batch_sqrtf(_t168);
+            const float _t177 = _t176 * _t169;
+            const float _t178 = (1.0f - _t172 * 0.166666672f + (0.00833333377f - _t172 * 0.000198412701f) * _t173 + _t174 * (2.75573188e-06f - _t172 * 2.50520991e-08f + _t173 * (1.60577024e-10f - _t172 * 7.54937183e-13f))) * ((_t171) ? _t177 : ((_t177 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t179 = _t175 * _t9 - _t178 * _t5;
+            const float _t180 = _t164 * _t0;
+            const float _t181 = _t168 * (_t180 * _t180);
+            const int _t182 = _t181 <= 1.0f;
+            const float _t183 = (_t182) ? _t181 : 1.0f;
+            const float _t184 = _t183 * _t183;
+            const float _t185 = _t184 * _t184;
+            const float _t186 = 1.0f - _t183 * 0.5f + (0.0416666679f - _t183 * 0.00138888892f) * _t184 + ((2.08744777e-09f - _t183 * 1.13046204e-11f) * _t184 + (2.48015876e-05f - _t183 * 2.75573029e-07f)) * _t185;
+            const float _t187 = -(_t176 * _t180);
+            const float _t188 = ((_t182) ? _t187 : ((_t187 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t183 * 0.166666672f + _t184 * (0.00833333377f - _t183 * 0.000198412701f) + (_t184 * (1.60577024e-10f - _t183 * 7.54937183e-13f) + (2.75573188e-06f - _t183 * 2.50520991e-08f)) * _t185);
+            const float _t189 = _t186 * _t3 + _t2 * _t188;
+            const float _t190 = _t165 * _t0;
+            const float _t191 = _t168 * (_t190 * _t190);
+            const int _t192 = _t191 <= 1.0f;
+            const float _t193 = (_t192) ? _t191 : 1.0f;
+            const float _t194 = _t193 * _t193;
+            const float _t195 = _t194 * _t194;
+            const float _t196 = _t194 * (0.0416666679f - 0.00138888892f * _t193) + (1.0f - _t193 * 0.5f) + _t195 * (_t194 * (2.08744777e-09f - _t193 * 1.13046204e-11f) + (2.48015876e-05f - _t193 * 2.75573029e-07f));
+            const float _t197 = -(_t176 * _t190);
+            const float _t198 = ((_t192) ? _t197 : ((_t197 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t193 + _t194 * (0.00833333377f - _t193 * 0.000198412701f) + (_t194 * (1.60577024e-10f - 7.54937183e-13f * _t193) + (2.75573188e-06f - 2.50520991e-08f * _t193)) * _t195);
+            const float _t199 = _t196 * _t10 - _t198 * _t7;
+            const float _t200 = _t179 * _t189 * _t199;
+            const float _t201 = _t178 * _t9 + _t175 * _t5;
+            const float _t202 = _t186 * _t2 - _t3 * _t188;
+            const float _t203 = _t201 * _t202 * _t199;
+            const float _t204 = _t196 * _t7 + _t198 * _t10;
+            const float _t205 = _t202 * _t204 * _t179;
+            const float _t206 = _t189 * (_t201 * _t204);
+            const float _t207 = _t200 + _t203 - _t205 - _t206;
+            const float _t208 = _t200 + _t205 - _t203 - _t206;
+            const float _t209 = _t200 + _t206 - _t203 - _t205;
+            const float _t210 = _t207 * _t207 + _t208 * _t208 + _t209 * _t209;
+            const float _t211 = (_t210 > 0.0f) ? 1.0f / _t210 : 0.0f;
+            const float _t212 = _t208 * _t0;
+            const float _t213 = _t211 * (_t212 * _t212);
+            const int _t214 = _t213 <= 1.0f;
+            const float _t215 = (_t214) ? _t213 : 1.0f;
+            const float _t216 = _t215 * _t215;
+            const float _t217 = _t216 * _t216;
+            const float _t218 = _t217 * (_t216 * (2.08744777e-09f - 1.13046204e-11f * _t215) + (2.48015876e-05f - 2.75573029e-07f * _t215)) + ((0.0416666679f - 0.00138888892f * _t215) * _t216 + (1.0f - _t215 * 0.5f));
+            const float _t219 = offsetgen_batch_sqrtf(_t211);
+            const float _t220 = -(_t219 * _t212);
+            const float _t221 = (_t217 * (2.75573188e-06f - 2.50520991e-08f * _t215 + (1.60577024e-10f - 7.54937183e-13f * _t215) * _t216) + ((0.00833333377f - 0.000198412701f * _t215) * _t216 + (1.0f - 0.166666672f * _t215))) * ((_t214) ? _t220 : ((_t220 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t222 = _t9 * _t218 - _t5 * _t221;
+            const float _t223 = _t209 * _t0;
+            const float _t224 = _t211 * (_t223 * _t223);
+            const int _t225 = _t224 <= 1.0f;
+            const float _t226 = (_t225) ? _t224 : 1.0f;
+            const float _t227 = _t226 * _t226;
+            const float _t228 = _t227 * _t227;
+            const float _t229 = 1.0f - _t226 * 0.5f + (0.0416666679f - 0.00138888892f * _t226) * _t227 + (2.48015876e-05f - _t226 * 2.75573029e-07f + (2.08744777e-09f - _t226 * 1.13046204e-11f) * _t227) * _t228;
+            const float _t230 = _t219 * _t223;
+            const float _t231 = ((2.75573188e-06f - 2.50520991e-08f * _t226 + _t227 * (1.60577024e-10f - 7.54937183e-13f * _t226)) * _t228 + (1.0f - 0.166666672f * _t226 + _t227 * (0.00833333377f - _t226 * 0.000198412701f))) * ((_t225) ? _t230 : ((_t230 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t232 = _t229 * _t2 - _t3 * _t231;
+            const float _t233 = _t0 * _t207;
+            const float _t234 = _t211 * (_t233 * _t233);
+            const int _t235 = _t234 <= 1.0f;
+            const float _t236 = (_t235) ? _t234 : 1.0f;
+            const float _t237 = _t236 * _t236;
+            const float _t238 = _t237 * _t237;
+            const float _t239 = _t238 * (2.48015876e-05f - _t236 * 2.75573029e-07f + _t237 * (2.08744777e-09f - _t236 * 1.13046204e-11f)) + (1.0f - _t236 * 0.5f + (0.0416666679f - _t236 * 0.00138888892f) * _t237);
+            const float _t240 = -(_t219 * _t233);
+            const float _t241 = (1.0f - _t236 * 0.166666672f + (0.00833333377f - _t236 * 0.000198412701f) * _t237 + _t238 * (_t237 * (1.60577024e-10f - _t236 * 7.54937183e-13f) + (2.75573188e-06f - _t236 * 2.50520991e-08f))) * ((_t235) ? _t240 : ((_t240 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t242 = _t239 * _t10 - _t241 * _t7;
+            const float _t243 = _t2 * _t231 + _t3 * _t229;
+            const float _t244 = _t239 * _t7 + _t241 * _t10;
+            const float _t245 = _t9 * _t221 + _t5 * _t218;
+            out[i + j] = (_t127 * _t137 * _t147 + _t127 * _t148 * _t149 + _t149 * (_t150 * _t137) + _t150 * _t148 * _t147) * (_t222 * _t232 * _t242 + _t222 * _t243 * _t244 + _t244 * _t245 * _t232 + _t243 * _t245 * _t242);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_proj_o6_shellf(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = diamond_proj_o6_shellf(x[i], y[i], z[i], t[i]);
 }
 
 

@@ -55,7 +55,7 @@
  *   shell    855
  *   normal   535
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_proj_o6","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":505,"shell":855,"normal":535}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o6","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":505,"shell":855,"normal":535}} */
 #ifndef OFFSETGEN_NEOVIUS_PROJ_O6_H
 #define OFFSETGEN_NEOVIUS_PROJ_O6_H
 
@@ -1157,24 +1157,33 @@ static inline void neovius_proj_o6_normalf(float x, float y, float z, float h, f
  *   void neovius_proj_o6_shellf_n(n, x, y, z, t, out)
  *
  * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
- * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
- * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
- * selects (blends), and there are no calls left for the vectoriser to stumble over.
- *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
- *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
- *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
- *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * body is the same straight-line program as the scalar function, written so that GCC (12 and later)
+ * and Clang (14 and later) vectorise it with the flags you already use, -O2 or -O3 with or without
+ * -march (SSE2 to AVX-512), and without -fno-math-errno or any other change to floating-point
+ * semantics. What stands in the way of a vectoriser is replaced by plain arithmetic:
+ *   - sin and cos: branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm);
+ *   - sqrt: offsetgen_batch_sqrt, a bit-level seed and Newton steps (within 1 ulp of sqrt, which
+ *     cannot vectorise while it may set errno; see there for subnormal inputs);
+ *   - quadrant and special-case selection: integer masks, so there is no branch to convert;
+ *   - the points go in blocks of a fixed size: a loop with a constant trip count is what GCC
+ *     vectorises at -O2.
+ * -march=native gives wider vectors. Optionally: -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp:
+ * the block loop then carries `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang).
+ * Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
  * The results agree with the scalar functions to about 1e-15 of the field's scale: both use the
- * same sin/cos reduction and polynomials, so only the compiler's vector contraction and ordering of
- * the same operations can differ. Points whose sin/cos arguments lie beyond the
- * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
- * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
- * function's finite value. `out` must not overlap the input arrays. Other elementary functions
- * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
- * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ * same sin/cos reduction and polynomials, sqrt differs by at most 1 ulp, and the compiler may
+ * contract the same operations differently in vector and scalar code. Points whose sin/cos
+ * arguments lie beyond the polynomials' range (1.0e8 in double, 8192.0 in float, in
+ * radians), and non-finite inputs, are recomputed by the scalar function, and so are the last
+ * n % block points, so every finite input still gives the scalar function's finite value. `out` must
+ * not overlap the input arrays. Other elementary functions (exp, tan, ...) in a user expression stay
+ * libm calls; such loops are correct but need a vector math library (e.g. -ffast-math with glibc's
+ * libmvec) to vectorise.
  */
+#include <stdint.h>
+#include <string.h>
 #ifndef OFFSETGEN_SIMD_LOOP
-/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno sqrt calls. */
+/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno libm calls. */
 #if (defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)) && (!defined(__clang__) || defined(__NO_MATH_ERRNO__))
 #define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
 #elif defined(__GNUC__) && !defined(__clang__)
@@ -1183,777 +1192,892 @@ static inline void neovius_proj_o6_normalf(float x, float y, float z, float h, f
 #define OFFSETGEN_SIMD_LOOP
 #endif
 #endif
-#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
- * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
- * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
- * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
- * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
-static inline double offsetgen_batch_sin(double a)
+#ifndef OFFSETGEN_RESTRICT
+/* `out` aliases no input: without this Clang checks overlap at run time and keeps short loops scalar. */
+#ifdef __cplusplus
+#define OFFSETGEN_RESTRICT __restrict
+#else
+#define OFFSETGEN_RESTRICT restrict
+#endif
+#endif
+/* The rounding by adding and subtracting 1.5 * 2^52 needs IEEE evaluation in the declared type. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_BATCH_RINT_
+#endif
+#ifndef OFFSETGEN_BATCH_MATH_DOUBLE_V2
+#define OFFSETGEN_BATCH_MATH_DOUBLE_V2
+/* A double's bits and back (memcpy is how C and C++ both allow it; compilers emit no call). */
+static inline uint64_t offsetgen_batch_bits(double d)
 {
+    uint64_t b;
+    memcpy(&b, &d, sizeof b);
+    return b;
+}
+
+static inline double offsetgen_batch_real(uint64_t b)
+{
+    double d;
+    memcpy(&d, &b, sizeof d);
+    return d;
+}
+
+/* All ones where b > limit, else 0 (both below 2^63): the borrow of limit - b. Integer masks like
+ * this one vectorise at every SIMD level, where a select on a comparison may not. */
+static inline uint64_t offsetgen_batch_above(uint64_t b, uint64_t limit)
+{
+    return UINT64_C(0) - ((limit - b) >> 63);
+}
+
+/* sin (cosine = 0) or cos (cosine = 1) for the batch loops: Cody-Waite reduction by pi/2
+ * (three-part constant, exact for |a| < 1.0e8) and Cephes' minimax polynomials on
+ * [-pi/4, pi/4]; within 1.5 ulp of libm, the same arithmetic as offsetgen_sin/cos. Adding 1.5 * 2^52
+ * rounds a * 2/pi to an integer whose low bits are the quadrant, which picks the polynomial and the
+ * sign through bit masks: straight-line code that vectorises. Beyond the range (or for NaN and
+ * infinite a) the result is NaN, which makes the batch loop fall back to the scalar function. A sin
+ * and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sincos(double a, uint64_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const double q = rint(a * 0.63661977236758138);
+    const double t = q + 6755399441055744.0;
+#else
+    const double t = a * 0.63661977236758138 + 6755399441055744.0;
+    const double q = t - 6755399441055744.0;
+#endif
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : HUGE_VAL - HUGE_VAL;  /* NaN, as a double */
+    const uint64_t quadrant = offsetgen_batch_bits(t) + cosine;     /* cos(a) = sin(a + pi/2) */
+    const uint64_t odd = UINT64_C(0) - (quadrant & 1u);             /* odd quadrants take the other polynomial */
+    const uint64_t value = (offsetgen_batch_bits(c) & odd) | (offsetgen_batch_bits(s) & ~odd);
+    const uint64_t far = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff), UINT64_C(0x4197d78400000000));
+    return offsetgen_batch_real((value ^ ((quadrant & 2u) << 62)) | (far & UINT64_C(0x7ff8000000000000)));
 }
 
-static inline double offsetgen_batch_cos(double a)
+static inline double offsetgen_batch_sin(double a) { return offsetgen_batch_sincos(a, 0u); }
+static inline double offsetgen_batch_cos(double a) { return offsetgen_batch_sincos(a, 1u); }
+
+/* sqrt for the batch loops, without errno: the bit-level seed of 1/sqrt (3.4% off), three Newton
+ * steps (2e-11), then one Newton step on sqrt itself. Equal to sqrt but in about 1e-6 of the cases
+ * where the target has FMA (the residual is then exact), within 1 ulp otherwise (13% off by one).
+ * +-0, +inf and NaN come back as sqrt returns them, negative numbers give NaN. Subnormal inputs
+ * (below 2.2e-308, which have no usable exponent for the seed) come back within 6e-156 of their
+ * square root, not to the last bit: scaling them would cost a select and two multiplications on
+ * every call, about 5% of a loop at -O2. */
+static inline double offsetgen_batch_sqrt(double a)
 {
-    const double q = rint(a * 0.63661977236758138);
-    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
-    const double z = r * r;
-    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
-    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
-    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : HUGE_VAL - HUGE_VAL;
+    const double half = 0.5 * a;
+    const uint64_t special = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff),
+                                                   UINT64_C(0x7fefffffffffffff));  /* inf, NaN */
+    const uint64_t negative = offsetgen_batch_bits((a < 0.0) ? offsetgen_batch_real(UINT64_C(0x7ff8000000000000)) : 0.0);
+    double y = offsetgen_batch_real(UINT64_C(0x5fe6eb50c7b537a9) - (offsetgen_batch_bits(a) >> 1));
+    double s;
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5 * y) * fma(-s, s, a);  /* exact residual: sqrt's rounding */
+#else
+    s = s + (0.5 * y) * (a - s * s);
+#endif
+    return offsetgen_batch_real((offsetgen_batch_bits(s) & ~special) | (offsetgen_batch_bits(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
-#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
-#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
-/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
- * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
-static inline float offsetgen_batch_sinf(float a)
+#endif /* OFFSETGEN_BATCH_MATH_DOUBLE_V2 */
+#ifndef OFFSETGEN_BATCH_MATH_FLOAT_V2
+#define OFFSETGEN_BATCH_MATH_FLOAT_V2
+/* The float twins of the double helpers: 1.5 * 2^23 for the rounding (|a| < 8192.0), Cephes'
+ * sinf/cosf polynomials, two Newton steps for 1/sqrt (subnormal inputs, below 1.2e-38, come back
+ * within 2e-20 of their square root). */
+static inline uint32_t offsetgen_batch_bitsf(float f)
 {
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+static inline float offsetgen_batch_realf(uint32_t b)
+{
+    float f;
+    memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+static inline uint32_t offsetgen_batch_abovef(uint32_t b, uint32_t limit)
+{
+    return 0u - ((limit - b) >> 31);
+}
+
+static inline float offsetgen_batch_sincosf(float a, uint32_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const float q = rintf(a * 0.636619772f);
+    const float t = q + 12582912.0f;
+#else
+    const float t = a * 0.636619772f + 12582912.0f;
+    const float q = t - 12582912.0f;
+#endif
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
-    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+    const uint32_t quadrant = offsetgen_batch_bitsf(t) + cosine;
+    const uint32_t odd = 0u - (quadrant & 1u);
+    const uint32_t value = (offsetgen_batch_bitsf(c) & odd) | (offsetgen_batch_bitsf(s) & ~odd);
+    const uint32_t far = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x46000000u);
+    return offsetgen_batch_realf((value ^ ((quadrant & 2u) << 30)) | (far & 0x7fc00000u));
 }
 
-static inline float offsetgen_batch_cosf(float a)
+static inline float offsetgen_batch_sinf(float a) { return offsetgen_batch_sincosf(a, 0u); }
+static inline float offsetgen_batch_cosf(float a) { return offsetgen_batch_sincosf(a, 1u); }
+
+static inline float offsetgen_batch_sqrtf(float a)
 {
-    const float q = rintf(a * 0.636619772f);
-    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
-    const float z = r * r;
-    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
-    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
-    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+    const float half = 0.5f * a;
+    const uint32_t special = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x7f7fffffu);
+    const uint32_t negative = offsetgen_batch_bitsf((a < 0.0f) ? offsetgen_batch_realf(0x7fc00000u) : 0.0f);
+    float y = offsetgen_batch_realf(0x5f375a86u - (offsetgen_batch_bitsf(a) >> 1));
+    float s;
+    y = y * (1.5f - (half * y) * y);
+    y = y * (1.5f - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5f * y) * fmaf(-s, s, a);
+#else
+    s = s + (0.5f * y) * (a - s * s);
+#endif
+    return offsetgen_batch_realf((offsetgen_batch_bitsf(s) & ~special) | (offsetgen_batch_bitsf(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+#endif /* OFFSETGEN_BATCH_MATH_FLOAT_V2 */
 
 
 /* phi(p, h) of order 6: zero on the surface moved by h along +grad F.
  * Batch form of neovius_proj_o6_offset: out[i] = neovius_proj_o6_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void neovius_proj_o6_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+static inline void neovius_proj_o6_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_cos(_t0);
-        const double _t2 = offsetgen_batch_sin(_t0);
-        const double _t3 = 6.2831853071795862 * y[i];
-        const double _t4 = offsetgen_batch_cos(_t3);
-        const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_cos(_t5);
-        const double _t7 = _t2 * 3.0 + 4.0 * (_t2 * _t4 * _t6);
-        const double _t8 = 6.2831853071795862 * h[i];
-        const double _t9 = _t7 * _t8;
-        const double _t10 = offsetgen_batch_sin(_t3);
-        const double _t11 = 4.0 * (_t1 * _t10 * _t6) + _t10 * 3.0;
-        const double _t12 = offsetgen_batch_sin(_t5);
-        const double _t13 = 3.0 * _t12 + 4.0 * (_t1 * _t4 * _t12);
-        const double _t14 = _t11 * _t11 + _t7 * _t7 + _t13 * _t13;
-        const double _t15 = (_t14 > 0.0) ? 1.0 / _t14 : 0.0;
-        const double _t16 = _t9 * _t9 * _t15;
-        const int _t17 = _t16 <= 1.0;
-        const double _t18 = (_t17) ? _t16 : 1.0;
-        const double _t19 = _t18 * _t18;
-        const double _t20 = _t19 * _t19;
-        const double _t21 = _t20 * (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + _t19 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t18)) + (1.0 - _t18 * 0.5 + _t19 * (0.041666666666666102 - 0.0013888888888798428 * _t18));
-        const double _t22 = sqrt(_t15);
-        const double _t23 = -(_t9 * _t22);
-        const double _t24 = ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t18 + _t19 * (0.0083333333333333003 - 0.00019841269841216566 * _t18) + _t20 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t18 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)));
-        const double _t25 = _t2 * _t21 - _t1 * _t24;
-        const double _t26 = _t8 * _t11;
-        const double _t27 = _t15 * (_t26 * _t26);
-        const int _t28 = _t27 <= 1.0;
-        const double _t29 = (_t28) ? _t27 : 1.0;
-        const double _t30 = _t29 * _t29;
-        const double _t31 = _t30 * _t30;
-        const double _t32 = (_t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07)) * _t31 + (_t30 * (0.041666666666666102 - 0.0013888888888798428 * _t29) + (1.0 - _t29 * 0.5));
-        const double _t33 = -(_t26 * _t22);
-        const double _t34 = ((_t28) ? _t33 : ((_t33 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - _t29 * 0.00019841269841216566) * _t30 + (1.0 - _t29 * 0.16666666666666666) + (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t29)) * _t31);
-        const double _t35 = _t4 * _t32 + _t10 * _t34;
-        const double _t36 = _t8 * _t13;
-        const double _t37 = _t15 * (_t36 * _t36);
-        const int _t38 = _t37 <= 1.0;
-        const double _t39 = (_t38) ? _t37 : 1.0;
-        const double _t40 = _t39 * _t39;
-        const double _t41 = _t40 * _t40;
-        const double _t42 = -(_t22 * _t36);
-        const double _t43 = ((_t40 * (1.6057701922579786e-10 - _t39 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t39 * 2.5052099244914114e-08)) * _t41 + (_t40 * (0.0083333333333333003 - _t39 * 0.00019841269841216566) + (1.0 - _t39 * 0.16666666666666666))) * ((_t38) ? _t42 : ((_t42 > 0.0) ? 1.0 : (-1.0)));
-        const double _t44 = 1.0 - _t39 * 0.5 + (0.041666666666666102 - _t39 * 0.0013888888888798428) * _t40 + _t41 * ((2.0874477943664777e-09 - _t39 * 1.1304620460700782e-11) * _t40 + (2.4801587247292686e-05 - _t39 * 2.7557303701922228e-07));
-        const double _t45 = _t43 * _t12 + _t44 * _t6;
-        const double _t46 = 3.0 * _t25 + 4.0 * (_t25 * (_t35 * _t45));
-        const double _t47 = _t44 * _t12 - _t43 * _t6;
-        const double _t48 = _t2 * _t24 + _t1 * _t21;
-        const double _t49 = 3.0 * _t47 + 4.0 * (_t35 * _t48 * _t47);
-        const double _t50 = _t10 * _t32 - _t4 * _t34;
-        const double _t51 = 4.0 * (_t45 * (_t48 * _t50)) + _t50 * 3.0;
-        const double _t52 = _t46 * _t46 + (_t49 * _t49 + _t51 * _t51);
-        const double _t53 = (_t52 > 0.0) ? 1.0 / _t52 : 0.0;
-        const double _t54 = _t8 * _t46;
-        const double _t55 = _t53 * (_t54 * _t54);
-        const int _t56 = _t55 <= 1.0;
-        const double _t57 = (_t56) ? _t55 : 1.0;
-        const double _t58 = _t57 * _t57;
-        const double _t59 = _t58 * _t58;
-        const double _t60 = (_t58 * (2.0874477943664777e-09 - _t57 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)) * _t59 + (1.0 - _t57 * 0.5 + _t58 * (0.041666666666666102 - _t57 * 0.0013888888888798428));
-        const double _t61 = sqrt(_t53);
-        const double _t62 = -(_t54 * _t61);
-        const double _t63 = ((_t58 * (1.6057701922579786e-10 - _t57 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t57 * 2.5052099244914114e-08)) * _t59 + (1.0 - _t57 * 0.16666666666666666 + _t58 * (0.0083333333333333003 - _t57 * 0.00019841269841216566))) * ((_t56) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0)));
-        const double _t64 = _t1 * _t60 + _t2 * _t63;
-        const double _t65 = _t8 * _t51;
-        const double _t66 = _t53 * (_t65 * _t65);
-        const int _t67 = _t66 <= 1.0;
-        const double _t68 = (_t67) ? _t66 : 1.0;
-        const double _t69 = _t68 * _t68;
-        const double _t70 = _t69 * _t69;
-        const double _t71 = _t70 * (2.4801587247292686e-05 - _t68 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t68 * 1.1304620460700782e-11) * _t69) + (1.0 - _t68 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t68) * _t69);
-        const double _t72 = -(_t65 * _t61);
-        const double _t73 = ((_t67) ? _t72 : ((_t72 > 0.0) ? 1.0 : (-1.0))) * (_t69 * (0.0083333333333333003 - 0.00019841269841216566 * _t68) + (1.0 - 0.16666666666666666 * _t68) + _t70 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t68 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t68) * _t69));
-        const double _t74 = _t71 * _t10 - _t4 * _t73;
-        const double _t75 = _t8 * _t49;
-        const double _t76 = _t75 * _t75 * _t53;
-        const int _t77 = _t76 <= 1.0;
-        const double _t78 = (_t77) ? _t76 : 1.0;
-        const double _t79 = _t78 * _t78;
-        const double _t80 = _t79 * _t79;
-        const double _t81 = -(_t75 * _t61);
-        const double _t82 = (1.0 - 0.16666666666666666 * _t78 + (0.0083333333333333003 - _t78 * 0.00019841269841216566) * _t79 + _t80 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t78 + _t79 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t78))) * ((_t77) ? _t81 : ((_t81 > 0.0) ? 1.0 : (-1.0)));
-        const double _t83 = _t79 * (0.041666666666666102 - 0.0013888888888798428 * _t78) + (1.0 - _t78 * 0.5) + _t80 * (_t79 * (2.0874477943664777e-09 - _t78 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t78 * 2.7557303701922228e-07));
-        const double _t84 = _t82 * _t12 + _t83 * _t6;
-        const double _t85 = 4.0 * (_t64 * _t74 * _t84) + _t74 * 3.0;
-        const double _t86 = _t83 * _t12 - _t82 * _t6;
-        const double _t87 = _t73 * _t10 + _t71 * _t4;
-        const double _t88 = _t86 * 3.0 + _t64 * _t86 * _t87 * 4.0;
-        const double _t89 = _t2 * _t60 - _t1 * _t63;
-        const double _t90 = 3.0 * _t89 + 4.0 * (_t87 * _t84 * _t89);
-        const double _t91 = _t85 * _t85 + _t88 * _t88 + _t90 * _t90;
-        const double _t92 = (_t91 > 0.0) ? 1.0 / _t91 : 0.0;
-        const double _t93 = _t8 * _t88;
-        const double _t94 = _t92 * (_t93 * _t93);
-        const int _t95 = _t94 <= 1.0;
-        const double _t96 = sqrt(_t92);
-        const double _t97 = -(_t96 * _t93);
-        const double _t98 = (_t95) ? _t94 : 1.0;
-        const double _t99 = _t98 * _t98;
-        const double _t100 = _t99 * _t99;
-        const double _t101 = ((_t95) ? _t97 : ((_t97 > 0.0) ? 1.0 : (-1.0))) * (_t100 * ((1.6057701922579786e-10 - _t98 * 7.549371704181243e-13) * _t99 + (2.755731919201122e-06 - _t98 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t98 * 0.00019841269841216566) * _t99 + (1.0 - _t98 * 0.16666666666666666))) * _t12 + ((0.041666666666666102 - _t98 * 0.0013888888888798428) * _t99 + (1.0 - _t98 * 0.5) + _t100 * ((2.0874477943664777e-09 - _t98 * 1.1304620460700782e-11) * _t99 + (2.4801587247292686e-05 - _t98 * 2.7557303701922228e-07))) * _t6;
-        const double _t102 = _t8 * _t90;
-        const double _t103 = _t92 * (_t102 * _t102);
-        const int _t104 = _t103 <= 1.0;
-        const double _t105 = -(_t102 * _t96);
-        const double _t106 = (_t104) ? _t103 : 1.0;
-        const double _t107 = _t106 * _t106;
-        const double _t108 = _t107 * _t107;
-        const double _t109 = _t2 * (((_t104) ? _t105 : ((_t105 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - _t106 * 2.5052099244914114e-08 + _t107 * (1.6057701922579786e-10 - _t106 * 7.549371704181243e-13)) * _t108 + (1.0 - _t106 * 0.16666666666666666 + _t107 * (0.0083333333333333003 - _t106 * 0.00019841269841216566)))) + _t1 * ((_t107 * (2.0874477943664777e-09 - _t106 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t106 * 2.7557303701922228e-07)) * _t108 + (1.0 - _t106 * 0.5 + _t107 * (0.041666666666666102 - _t106 * 0.0013888888888798428)));
-        const double _t110 = _t8 * _t85;
-        const double _t111 = _t92 * (_t110 * _t110);
-        const int _t112 = _t111 <= 1.0;
-        const double _t113 = (_t112) ? _t111 : 1.0;
-        const double _t114 = _t113 * _t113;
-        const double _t115 = _t114 * _t114;
-        const double _t116 = -(_t110 * _t96);
-        const double _t117 = _t4 * (1.0 - _t113 * 0.5 + _t114 * (0.041666666666666102 - _t113 * 0.0013888888888798428) + (_t114 * (2.0874477943664777e-09 - _t113 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t113 * 2.7557303701922228e-07)) * _t115) + ((_t112) ? _t116 : ((_t116 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - _t113 * 0.00019841269841216566) * _t114 + (1.0 - _t113 * 0.16666666666666666) + (_t114 * (1.6057701922579786e-10 - _t113 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t113 * 2.5052099244914114e-08)) * _t115) * _t10;
-        out[i] = 3.0 * _t101 + (_t109 * 3.0 + 3.0 * _t117) + 4.0 * (_t109 * _t101 * _t117);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = offsetgen_batch_sin(_t0);
+            const double _t3 = 6.2831853071795862 * y[i + j];
+            const double _t4 = offsetgen_batch_cos(_t3);
+            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t6 = offsetgen_batch_cos(_t5);
+            const double _t7 = _t2 * 3.0 + 4.0 * (_t2 * _t4 * _t6);
+            const double _t8 = 6.2831853071795862 * h[i + j];
+            const double _t9 = _t7 * _t8;
+            const double _t10 = offsetgen_batch_sin(_t3);
+            const double _t11 = 4.0 * (_t1 * _t10 * _t6) + _t10 * 3.0;
+            const double _t12 = offsetgen_batch_sin(_t5);
+            const double _t13 = 3.0 * _t12 + 4.0 * (_t1 * _t4 * _t12);
+            const double _t14 = _t11 * _t11 + _t7 * _t7 + _t13 * _t13;
+            const double _t15 = (_t14 > 0.0) ? 1.0 / _t14 : 0.0;
+            const double _t16 = _t9 * _t9 * _t15;
+            const int _t17 = _t16 <= 1.0;
+            const double _t18 = (_t17) ? _t16 : 1.0;
+            const double _t19 = _t18 * _t18;
+            const double _t20 = _t19 * _t19;
+            const double _t21 = _t20 * (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + _t19 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t18)) + (1.0 - _t18 * 0.5 + _t19 * (0.041666666666666102 - 0.0013888888888798428 * _t18));
+            const double _t22 = offsetgen_batch_sqrt(_t15);
+            const double _t23 = -(_t9 * _t22);
+            const double _t24 = ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t18 + _t19 * (0.0083333333333333003 - 0.00019841269841216566 * _t18) + _t20 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t18 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)));
+            const double _t25 = _t2 * _t21 - _t1 * _t24;
+            const double _t26 = _t8 * _t11;
+            const double _t27 = _t15 * (_t26 * _t26);
+            const int _t28 = _t27 <= 1.0;
+            const double _t29 = (_t28) ? _t27 : 1.0;
+            const double _t30 = _t29 * _t29;
+            const double _t31 = _t30 * _t30;
+            const double _t32 = (_t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07)) * _t31 + (_t30 * (0.041666666666666102 - 0.0013888888888798428 * _t29) + (1.0 - _t29 * 0.5));
+            const double _t33 = -(_t26 * _t22);
+            const double _t34 = ((_t28) ? _t33 : ((_t33 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - _t29 * 0.00019841269841216566) * _t30 + (1.0 - _t29 * 0.16666666666666666) + (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t29)) * _t31);
+            const double _t35 = _t4 * _t32 + _t10 * _t34;
+            const double _t36 = _t8 * _t13;
+            const double _t37 = _t15 * (_t36 * _t36);
+            const int _t38 = _t37 <= 1.0;
+            const double _t39 = (_t38) ? _t37 : 1.0;
+            const double _t40 = _t39 * _t39;
+            const double _t41 = _t40 * _t40;
+            const double _t42 = -(_t22 * _t36);
+            const double _t43 = ((_t40 * (1.6057701922579786e-10 - _t39 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t39 * 2.5052099244914114e-08)) * _t41 + (_t40 * (0.0083333333333333003 - _t39 * 0.00019841269841216566) + (1.0 - _t39 * 0.16666666666666666))) * ((_t38) ? _t42 : ((_t42 > 0.0) ? 1.0 : (-1.0)));
+            const double _t44 = 1.0 - _t39 * 0.5 + (0.041666666666666102 - _t39 * 0.0013888888888798428) * _t40 + _t41 * ((2.0874477943664777e-09 - _t39 * 1.1304620460700782e-11) * _t40 + (2.4801587247292686e-05 - _t39 * 2.7557303701922228e-07));
+            const double _t45 = _t43 * _t12 + _t44 * _t6;
+            const double _t46 = 3.0 * _t25 + 4.0 * (_t25 * (_t35 * _t45));
+            const double _t47 = _t44 * _t12 - _t43 * _t6;
+            const double _t48 = _t2 * _t24 + _t1 * _t21;
+            const double _t49 = 3.0 * _t47 + 4.0 * (_t35 * _t48 * _t47);
+            const double _t50 = _t10 * _t32 - _t4 * _t34;
+            const double _t51 = 4.0 * (_t45 * (_t48 * _t50)) + _t50 * 3.0;
+            const double _t52 = _t46 * _t46 + (_t49 * _t49 + _t51 * _t51);
+            const double _t53 = (_t52 > 0.0) ? 1.0 / _t52 : 0.0;
+            const double _t54 = _t8 * _t46;
+            const double _t55 = _t53 * (_t54 * _t54);
+            const int _t56 = _t55 <= 1.0;
+            const double _t57 = (_t56) ? _t55 : 1.0;
+            const double _t58 = _t57 * _t57;
+            const double _t59 = _t58 * _t58;
+            const double _t60 = (_t58 * (2.0874477943664777e-09 - _t57 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)) * _t59 + (1.0 - _t57 * 0.5 + _t58 * (0.041666666666666102 - _t57 * 0.0013888888888798428));
+            const double _t61 = offsetgen_batch_sqrt(_t53);
+            const double _t62 = -(_t54 * _t61);
+            const double _t63 = ((_t58 * (1.6057701922579786e-10 - _t57 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t57 * 2.5052099244914114e-08)) * _t59 + (1.0 - _t57 * 0.16666666666666666 + _t58 * (0.0083333333333333003 - _t57 * 0.00019841269841216566))) * ((_t56) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0)));
+            const double _t64 = _t1 * _t60 + _t2 * _t63;
+            const double _t65 = _t8 * _t51;
+            const double _t66 = _t53 * (_t65 * _t65);
+            const int _t67 = _t66 <= 1.0;
+            const double _t68 = (_t67) ? _t66 : 1.0;
+            const double _t69 = _t68 * _t68;
+            const double _t70 = _t69 * _t69;
+            const double _t71 = _t70 * (2.4801587247292686e-05 - _t68 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t68 * 1.1304620460700782e-11) * _t69) + (1.0 - _t68 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t68) * _t69);
+            const double _t72 = -(_t65 * _t61);
+            const double _t73 = ((_t67) ? _t72 : ((_t72 > 0.0) ? 1.0 : (-1.0))) * (_t69 * (0.0083333333333333003 - 0.00019841269841216566 * _t68) + (1.0 - 0.16666666666666666 * _t68) + _t70 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t68 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t68) * _t69));
+            const double _t74 = _t71 * _t10 - _t4 * _t73;
+            const double _t75 = _t8 * _t49;
+            const double _t76 = _t75 * _t75 * _t53;
+            const int _t77 = _t76 <= 1.0;
+            const double _t78 = (_t77) ? _t76 : 1.0;
+            const double _t79 = _t78 * _t78;
+            const double _t80 = _t79 * _t79;
+            const double _t81 = -(_t75 * _t61);
+            const double _t82 = (1.0 - 0.16666666666666666 * _t78 + (0.0083333333333333003 - _t78 * 0.00019841269841216566) * _t79 + _t80 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t78 + _t79 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t78))) * ((_t77) ? _t81 : ((_t81 > 0.0) ? 1.0 : (-1.0)));
+            const double _t83 = _t79 * (0.041666666666666102 - 0.0013888888888798428 * _t78) + (1.0 - _t78 * 0.5) + _t80 * (_t79 * (2.0874477943664777e-09 - _t78 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t78 * 2.7557303701922228e-07));
+            const double _t84 = _t82 * _t12 + _t83 * _t6;
+            const double _t85 = 4.0 * (_t64 * _t74 * _t84) + _t74 * 3.0;
+            const double _t86 = _t83 * _t12 - _t82 * _t6;
+            const double _t87 = _t73 * _t10 + _t71 * _t4;
+            const double _t88 = _t86 * 3.0 + _t64 * _t86 * _t87 * 4.0;
+            const double _t89 = _t2 * _t60 - _t1 * _t63;
+            const double _t90 = 3.0 * _t89 + 4.0 * (_t87 * _t84 * _t89);
+            const double _t91 = _t85 * _t85 + _t88 * _t88 + _t90 * _t90;
+            const double _t92 = (_t91 > 0.0) ? 1.0 / _t91 : 0.0;
+            const double _t93 = _t8 * _t88;
+            const double _t94 = _t92 * (_t93 * _t93);
+            const int _t95 = _t94 <= 1.0;
+            const double _t96 = offsetgen_batch_sqrt(_t92);
+            const double _t97 = -(_t96 * _t93);
+            const double _t98 = (_t95) ? _t94 : 1.0;
+            const double _t99 = _t98 * _t98;
+            const double _t100 = _t99 * _t99;
+            const double _t101 = ((_t95) ? _t97 : ((_t97 > 0.0) ? 1.0 : (-1.0))) * (_t100 * ((1.6057701922579786e-10 - _t98 * 7.549371704181243e-13) * _t99 + (2.755731919201122e-06 - _t98 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t98 * 0.00019841269841216566) * _t99 + (1.0 - _t98 * 0.16666666666666666))) * _t12 + ((0.041666666666666102 - _t98 * 0.0013888888888798428) * _t99 + (1.0 - _t98 * 0.5) + _t100 * ((2.0874477943664777e-09 - _t98 * 1.1304620460700782e-11) * _t99 + (2.4801587247292686e-05 - _t98 * 2.7557303701922228e-07))) * _t6;
+            const double _t102 = _t8 * _t90;
+            const double _t103 = _t92 * (_t102 * _t102);
+            const int _t104 = _t103 <= 1.0;
+            const double _t105 = -(_t102 * _t96);
+            const double _t106 = (_t104) ? _t103 : 1.0;
+            const double _t107 = _t106 * _t106;
+            const double _t108 = _t107 * _t107;
+            const double _t109 = _t2 * (((_t104) ? _t105 : ((_t105 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - _t106 * 2.5052099244914114e-08 + _t107 * (1.6057701922579786e-10 - _t106 * 7.549371704181243e-13)) * _t108 + (1.0 - _t106 * 0.16666666666666666 + _t107 * (0.0083333333333333003 - _t106 * 0.00019841269841216566)))) + _t1 * ((_t107 * (2.0874477943664777e-09 - _t106 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t106 * 2.7557303701922228e-07)) * _t108 + (1.0 - _t106 * 0.5 + _t107 * (0.041666666666666102 - _t106 * 0.0013888888888798428)));
+            const double _t110 = _t8 * _t85;
+            const double _t111 = _t92 * (_t110 * _t110);
+            const int _t112 = _t111 <= 1.0;
+            const double _t113 = (_t112) ? _t111 : 1.0;
+            const double _t114 = _t113 * _t113;
+            const double _t115 = _t114 * _t114;
+            const double _t116 = -(_t110 * _t96);
+            const double _t117 = _t4 * (1.0 - _t113 * 0.5 + _t114 * (0.041666666666666102 - _t113 * 0.0013888888888798428) + (_t114 * (2.0874477943664777e-09 - _t113 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t113 * 2.7557303701922228e-07)) * _t115) + ((_t112) ? _t116 : ((_t116 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - _t113 * 0.00019841269841216566) * _t114 + (1.0 - _t113 * 0.16666666666666666) + (_t114 * (1.6057701922579786e-10 - _t113 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t113 * 2.5052099244914114e-08)) * _t115) * _t10;
+            out[i + j] = 3.0 * _t101 + (_t109 * 3.0 + 3.0 * _t117) + 4.0 * (_t109 * _t101 * _t117);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_proj_o6_offset(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = neovius_proj_o6_offset(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of neovius_proj_o6_shell: out[i] = neovius_proj_o6_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void neovius_proj_o6_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+static inline void neovius_proj_o6_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_sin(_t0);
-        const double _t2 = offsetgen_batch_cos(_t0);
-        const double _t3 = 6.2831853071795862 * y[i];
-        const double _t4 = offsetgen_batch_sin(_t3);
-        const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_cos(_t5);
-        const double _t7 = 4.0 * (_t2 * _t4 * _t6) + _t4 * 3.0;
-        const double _t8 = offsetgen_batch_cos(_t3);
-        const double _t9 = _t1 * 3.0 + 4.0 * (_t1 * _t8 * _t6);
-        const double _t10 = offsetgen_batch_sin(_t5);
-        const double _t11 = 3.0 * _t10 + 4.0 * (_t2 * _t8 * _t10);
-        const double _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
-        const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-        const double _t14 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t15 = _t7 * _t14;
-        const double _t16 = _t13 * (_t15 * _t15);
-        const int _t17 = _t16 <= 1.0;
-        const double _t18 = (_t17) ? _t16 : 1.0;
-        const double _t19 = _t18 * _t18;
-        const double _t20 = _t19 * _t19;
-        const double _t21 = _t19 * (0.041666666666666102 - _t18 * 0.0013888888888798428) + (1.0 - _t18 * 0.5) + _t20 * (_t19 * (2.0874477943664777e-09 - _t18 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07));
-        const double _t22 = _t21 * _t4;
-        const double _t23 = _t19 * (0.0083333333333333003 - _t18 * 0.00019841269841216566) + (1.0 - _t18 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t18 * 7.549371704181243e-13) * _t19 + (2.755731919201122e-06 - _t18 * 2.5052099244914114e-08)) * _t20;
-        const double _t24 = sqrt(_t13);
-        const double _t25 = _t24 * _t15;
-        const double _t26 = _t23 * ((_t17) ? _t25 : ((_t25 > 0.0) ? 1.0 : (-1.0)));
-        const double _t27 = _t22 - _t8 * _t26;
-        const double _t28 = _t9 * _t14;
-        const double _t29 = _t28 * _t28 * _t13;
-        const int _t30 = _t29 <= 1.0;
-        const double _t31 = (_t30) ? _t29 : 1.0;
-        const double _t32 = _t31 * _t31;
-        const double _t33 = _t32 * _t32;
-        const double _t34 = ((1.6057701922579786e-10 - _t31 * 7.549371704181243e-13) * _t32 + (2.755731919201122e-06 - _t31 * 2.5052099244914114e-08)) * _t33 + ((0.0083333333333333003 - _t31 * 0.00019841269841216566) * _t32 + (1.0 - _t31 * 0.16666666666666666));
-        const double _t35 = _t24 * _t28;
-        const double _t36 = _t34 * ((_t30) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0)));
-        const double _t37 = _t33 * ((2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11) * _t32 + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07)) + ((0.041666666666666102 - _t31 * 0.0013888888888798428) * _t32 + (1.0 - _t31 * 0.5));
-        const double _t38 = _t2 * _t37;
-        const double _t39 = _t1 * _t36 + _t38;
-        const double _t40 = _t14 * _t11;
-        const double _t41 = _t13 * (_t40 * _t40);
-        const int _t42 = _t41 <= 1.0;
-        const double _t43 = (_t42) ? _t41 : 1.0;
-        const double _t44 = _t43 * _t43;
-        const double _t45 = _t44 * _t44;
-        const double _t46 = (0.041666666666666102 - 0.0013888888888798428 * _t43) * _t44 + (1.0 - _t43 * 0.5) + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t43) * _t44) * _t45;
-        const double _t47 = _t6 * _t46;
-        const double _t48 = _t24 * _t40;
-        const double _t49 = (2.755731919201122e-06 - 2.5052099244914114e-08 * _t43 + _t44 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t43)) * _t45 + (_t44 * (0.0083333333333333003 - 0.00019841269841216566 * _t43) + (1.0 - 0.16666666666666666 * _t43));
-        const double _t50 = ((_t42) ? _t48 : ((_t48 > 0.0) ? 1.0 : (-1.0))) * _t49;
-        const double _t51 = _t47 + _t50 * _t10;
-        const double _t52 = 3.0 * _t27 + 4.0 * (_t39 * _t27 * _t51);
-        const double _t53 = _t10 * _t46;
-        const double _t54 = _t53 - _t50 * _t6;
-        const double _t55 = _t21 * _t8;
-        const double _t56 = _t55 + _t26 * _t4;
-        const double _t57 = 4.0 * (_t54 * _t56 * _t39) + _t54 * 3.0;
-        const double _t58 = _t1 * _t37;
-        const double _t59 = _t58 - _t2 * _t36;
-        const double _t60 = 4.0 * (_t56 * _t59 * _t51) + 3.0 * _t59;
-        const double _t61 = _t52 * _t52 + _t57 * _t57 + _t60 * _t60;
-        const double _t62 = (_t61 > 0.0) ? 1.0 / _t61 : 0.0;
-        const double _t63 = _t14 * _t60;
-        const double _t64 = _t62 * (_t63 * _t63);
-        const int _t65 = _t64 <= 1.0;
-        const double _t66 = (_t65) ? _t64 : 1.0;
-        const double _t67 = _t66 * _t66;
-        const double _t68 = _t67 * _t67;
-        const double _t69 = 1.0 - _t66 * 0.5 + _t67 * (0.041666666666666102 - _t66 * 0.0013888888888798428) + (2.4801587247292686e-05 - _t66 * 2.7557303701922228e-07 + _t67 * (2.0874477943664777e-09 - _t66 * 1.1304620460700782e-11)) * _t68;
-        const double _t70 = sqrt(_t62);
-        const double _t71 = _t70 * _t63;
-        const double _t72 = ((_t65) ? _t71 : ((_t71 > 0.0) ? 1.0 : (-1.0))) * ((_t67 * (1.6057701922579786e-10 - _t66 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t66 * 2.5052099244914114e-08)) * _t68 + (1.0 - _t66 * 0.16666666666666666 + _t67 * (0.0083333333333333003 - _t66 * 0.00019841269841216566)));
-        const double _t73 = _t1 * _t69 - _t2 * _t72;
-        const double _t74 = _t14 * _t52;
-        const double _t75 = _t74 * _t74 * _t62;
-        const int _t76 = _t75 <= 1.0;
-        const double _t77 = (_t76) ? _t75 : 1.0;
-        const double _t78 = _t77 * _t77;
-        const double _t79 = _t78 * _t78;
-        const double _t80 = 1.0 - _t77 * 0.5 + (0.041666666666666102 - _t77 * 0.0013888888888798428) * _t78 + (_t78 * (2.0874477943664777e-09 - _t77 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t77 * 2.7557303701922228e-07)) * _t79;
-        const double _t81 = _t70 * _t74;
-        const double _t82 = ((_t76) ? _t81 : ((_t81 > 0.0) ? 1.0 : (-1.0))) * (_t78 * (0.0083333333333333003 - _t77 * 0.00019841269841216566) + (1.0 - _t77 * 0.16666666666666666) + (2.755731919201122e-06 - _t77 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t77 * 7.549371704181243e-13) * _t78) * _t79);
-        const double _t83 = _t80 * _t8 + _t4 * _t82;
-        const double _t84 = _t57 * _t14;
-        const double _t85 = _t84 * _t84 * _t62;
-        const int _t86 = _t85 <= 1.0;
-        const double _t87 = (_t86) ? _t85 : 1.0;
-        const double _t88 = _t87 * _t87;
-        const double _t89 = _t88 * _t88;
-        const double _t90 = _t89 * (2.4801587247292686e-05 - _t87 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t87 * 1.1304620460700782e-11) * _t88) + (_t88 * (0.041666666666666102 - _t87 * 0.0013888888888798428) + (1.0 - _t87 * 0.5));
-        const double _t91 = _t84 * _t70;
-        const double _t92 = ((_t86) ? _t91 : ((_t91 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - _t87 * 2.5052099244914114e-08 + _t88 * (1.6057701922579786e-10 - _t87 * 7.549371704181243e-13)) * _t89 + ((0.0083333333333333003 - _t87 * 0.00019841269841216566) * _t88 + (1.0 - _t87 * 0.16666666666666666)));
-        const double _t93 = _t90 * _t6 + _t92 * _t10;
-        const double _t94 = _t73 * 3.0 + _t73 * _t83 * _t93 * 4.0;
-        const double _t95 = _t80 * _t4 - _t8 * _t82;
-        const double _t96 = _t2 * _t69 + _t1 * _t72;
-        const double _t97 = _t95 * 3.0 + _t96 * _t95 * _t93 * 4.0;
-        const double _t98 = _t90 * _t10 - _t92 * _t6;
-        const double _t99 = 4.0 * (_t98 * (_t96 * _t83)) + 3.0 * _t98;
-        const double _t100 = _t94 * _t94 + _t97 * _t97 + _t99 * _t99;
-        const double _t101 = (_t100 > 0.0) ? 1.0 / _t100 : 0.0;
-        const double _t102 = _t14 * _t99;
-        const double _t103 = _t101 * (_t102 * _t102);
-        const int _t104 = _t103 <= 1.0;
-        const double _t105 = (_t104) ? _t103 : 1.0;
-        const double _t106 = _t105 * _t105;
-        const double _t107 = _t106 * _t106;
-        const double _t108 = sqrt(_t101);
-        const double _t109 = _t102 * _t108;
-        const double _t110 = (1.0 - _t105 * 0.16666666666666666 + (0.0083333333333333003 - _t105 * 0.00019841269841216566) * _t106 + _t107 * (2.755731919201122e-06 - _t105 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t105 * 7.549371704181243e-13) * _t106)) * ((_t104) ? _t109 : ((_t109 > 0.0) ? 1.0 : (-1.0))) * _t10 + (1.0 - _t105 * 0.5 + _t106 * (0.041666666666666102 - _t105 * 0.0013888888888798428) + (2.4801587247292686e-05 - _t105 * 2.7557303701922228e-07 + _t106 * (2.0874477943664777e-09 - _t105 * 1.1304620460700782e-11)) * _t107) * _t6;
-        const double _t111 = _t97 * _t14;
-        const double _t112 = _t101 * (_t111 * _t111);
-        const int _t113 = _t112 <= 1.0;
-        const double _t114 = (_t113) ? _t112 : 1.0;
-        const double _t115 = _t114 * _t114;
-        const double _t116 = _t115 * _t115;
-        const double _t117 = _t111 * _t108;
-        const double _t118 = _t8 * ((2.4801587247292686e-05 - _t114 * 2.7557303701922228e-07 + _t115 * (2.0874477943664777e-09 - _t114 * 1.1304620460700782e-11)) * _t116 + (_t115 * (0.041666666666666102 - _t114 * 0.0013888888888798428) + (1.0 - _t114 * 0.5))) + ((_t113) ? _t117 : ((_t117 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - _t114 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t114 * 7.549371704181243e-13) * _t115) * _t116 + (_t115 * (0.0083333333333333003 - _t114 * 0.00019841269841216566) + (1.0 - _t114 * 0.16666666666666666))) * _t4;
-        const double _t119 = _t14 * _t94;
-        const double _t120 = _t101 * (_t119 * _t119);
-        const int _t121 = _t120 <= 1.0;
-        const double _t122 = (_t121) ? _t120 : 1.0;
-        const double _t123 = _t122 * _t122;
-        const double _t124 = _t123 * _t123;
-        const double _t125 = _t119 * _t108;
-        const double _t126 = _t1 * ((_t124 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t122 + _t123 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t122)) + (1.0 - 0.16666666666666666 * _t122 + (0.0083333333333333003 - 0.00019841269841216566 * _t122) * _t123)) * ((_t121) ? _t125 : ((_t125 > 0.0) ? 1.0 : (-1.0)))) + _t2 * (_t124 * (_t123 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t122) + (2.4801587247292686e-05 - _t122 * 2.7557303701922228e-07)) + (1.0 - _t122 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t122) * _t123));
-        const double _t127 = -_t25;
-        const double _t128 = ((_t17) ? _t127 : ((_t127 > 0.0) ? 1.0 : (-1.0))) * _t23;
-        const double _t129 = _t55 + _t4 * _t128;
-        const double _t130 = -_t48;
-        const double _t131 = ((_t42) ? _t130 : ((_t130 > 0.0) ? 1.0 : (-1.0))) * _t49;
-        const double _t132 = _t53 - _t131 * _t6;
-        const double _t133 = -_t35;
-        const double _t134 = _t34 * ((_t30) ? _t133 : ((_t133 > 0.0) ? 1.0 : (-1.0)));
-        const double _t135 = _t1 * _t134 + _t38;
-        const double _t136 = 4.0 * (_t129 * _t132 * _t135) + _t132 * 3.0;
-        const double _t137 = _t58 - _t2 * _t134;
-        const double _t138 = _t47 + _t131 * _t10;
-        const double _t139 = 3.0 * _t137 + 4.0 * (_t137 * (_t129 * _t138));
-        const double _t140 = _t22 - _t8 * _t128;
-        const double _t141 = 4.0 * (_t140 * (_t138 * _t135)) + 3.0 * _t140;
-        const double _t142 = _t136 * _t136 + _t139 * _t139 + _t141 * _t141;
-        const double _t143 = (_t142 > 0.0) ? 1.0 / _t142 : 0.0;
-        const double _t144 = _t14 * _t136;
-        const double _t145 = _t143 * (_t144 * _t144);
-        const int _t146 = _t145 <= 1.0;
-        const double _t147 = (_t146) ? _t145 : 1.0;
-        const double _t148 = _t147 * _t147;
-        const double _t149 = _t148 * _t148;
-        const double _t150 = (2.4801587247292686e-05 - _t147 * 2.7557303701922228e-07 + _t148 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t147)) * _t149 + (1.0 - _t147 * 0.5 + _t148 * (0.041666666666666102 - 0.0013888888888798428 * _t147));
-        const double _t151 = sqrt(_t143);
-        const double _t152 = -(_t151 * _t144);
-        const double _t153 = ((_t146) ? _t152 : ((_t152 > 0.0) ? 1.0 : (-1.0))) * (_t148 * (0.0083333333333333003 - 0.00019841269841216566 * _t147) + (1.0 - 0.16666666666666666 * _t147) + _t149 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t147) * _t148 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t147)));
-        const double _t154 = _t150 * _t10 - _t153 * _t6;
-        const double _t155 = _t139 * _t14;
-        const double _t156 = _t143 * (_t155 * _t155);
-        const int _t157 = _t156 <= 1.0;
-        const double _t158 = (_t157) ? _t156 : 1.0;
-        const double _t159 = _t158 * _t158;
-        const double _t160 = _t159 * _t159;
-        const double _t161 = (0.041666666666666102 - 0.0013888888888798428 * _t158) * _t159 + (1.0 - _t158 * 0.5) + _t160 * (_t159 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t158) + (2.4801587247292686e-05 - _t158 * 2.7557303701922228e-07));
-        const double _t162 = -(_t151 * _t155);
-        const double _t163 = (_t159 * (0.0083333333333333003 - 0.00019841269841216566 * _t158) + (1.0 - 0.16666666666666666 * _t158) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t158 + _t159 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t158)) * _t160) * ((_t157) ? _t162 : ((_t162 > 0.0) ? 1.0 : (-1.0)));
-        const double _t164 = _t161 * _t2 + _t163 * _t1;
-        const double _t165 = _t141 * _t14;
-        const double _t166 = _t143 * (_t165 * _t165);
-        const int _t167 = _t166 <= 1.0;
-        const double _t168 = (_t167) ? _t166 : 1.0;
-        const double _t169 = _t168 * _t168;
-        const double _t170 = _t169 * _t169;
-        const double _t171 = _t169 * (0.041666666666666102 - _t168 * 0.0013888888888798428) + (1.0 - _t168 * 0.5) + (_t169 * (2.0874477943664777e-09 - _t168 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t168 * 2.7557303701922228e-07)) * _t170;
-        const double _t172 = -(_t151 * _t165);
-        const double _t173 = ((_t169 * (1.6057701922579786e-10 - _t168 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t168 * 2.5052099244914114e-08)) * _t170 + (_t169 * (0.0083333333333333003 - _t168 * 0.00019841269841216566) + (1.0 - _t168 * 0.16666666666666666))) * ((_t167) ? _t172 : ((_t172 > 0.0) ? 1.0 : (-1.0)));
-        const double _t174 = _t8 * _t171 + _t173 * _t4;
-        const double _t175 = 3.0 * _t154 + 4.0 * (_t164 * _t174 * _t154);
-        const double _t176 = _t14 * _t175;
-        const double _t177 = _t161 * _t1 - _t163 * _t2;
-        const double _t178 = _t153 * _t10 + _t150 * _t6;
-        const double _t179 = _t177 * 3.0 + 4.0 * (_t177 * _t178 * _t174);
-        const double _t180 = _t171 * _t4 - _t8 * _t173;
-        const double _t181 = _t180 * 3.0 + 4.0 * (_t178 * (_t164 * _t180));
-        const double _t182 = _t179 * _t179 + _t175 * _t175 + _t181 * _t181;
-        const double _t183 = (_t182 > 0.0) ? 1.0 / _t182 : 0.0;
-        const double _t184 = _t176 * _t176 * _t183;
-        const int _t185 = _t184 <= 1.0;
-        const double _t186 = (_t185) ? _t184 : 1.0;
-        const double _t187 = _t186 * _t186;
-        const double _t188 = _t187 * _t187;
-        const double _t189 = sqrt(_t183);
-        const double _t190 = -(_t189 * _t176);
-        const double _t191 = ((_t187 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t186) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t186)) * _t188 + (1.0 - _t186 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t186) * _t187)) * _t6 + (1.0 - 0.16666666666666666 * _t186 + _t187 * (0.0083333333333333003 - 0.00019841269841216566 * _t186) + (_t187 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t186) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t186)) * _t188) * ((_t185) ? _t190 : ((_t190 > 0.0) ? 1.0 : (-1.0))) * _t10;
-        const double _t192 = _t14 * _t181;
-        const double _t193 = _t192 * _t192 * _t183;
-        const int _t194 = _t193 <= 1.0;
-        const double _t195 = (_t194) ? _t193 : 1.0;
-        const double _t196 = _t195 * _t195;
-        const double _t197 = _t196 * _t196;
-        const double _t198 = -(_t189 * _t192);
-        const double _t199 = _t8 * ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t195 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t195) * _t196) * _t197 + ((0.041666666666666102 - 0.0013888888888798428 * _t195) * _t196 + (1.0 - _t195 * 0.5))) + (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t195) * _t196 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t195)) * _t197 + (1.0 - 0.16666666666666666 * _t195 + (0.0083333333333333003 - 0.00019841269841216566 * _t195) * _t196)) * ((_t194) ? _t198 : ((_t198 > 0.0) ? 1.0 : (-1.0))) * _t4;
-        const double _t200 = _t179 * _t14;
-        const double _t201 = _t200 * _t200 * _t183;
-        const int _t202 = _t201 <= 1.0;
-        const double _t203 = (_t202) ? _t201 : 1.0;
-        const double _t204 = _t203 * _t203;
-        const double _t205 = _t204 * _t204;
-        const double _t206 = -(_t189 * _t200);
-        const double _t207 = _t2 * ((2.4801587247292686e-05 - _t203 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t203) * _t204) * _t205 + (_t204 * (0.041666666666666102 - 0.0013888888888798428 * _t203) + (1.0 - _t203 * 0.5))) + _t1 * ((1.0 - 0.16666666666666666 * _t203 + (0.0083333333333333003 - 0.00019841269841216566 * _t203) * _t204 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t203 + _t204 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t203)) * _t205) * ((_t202) ? _t206 : ((_t206 > 0.0) ? 1.0 : (-1.0))));
-        out[i] = (4.0 * (_t110 * _t118 * _t126) + (_t110 * 3.0 + _t118 * 3.0 + _t126 * 3.0)) * (_t191 * 3.0 + _t199 * 3.0 + 3.0 * _t207 + 4.0 * (_t191 * _t199 * _t207));
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_sin(_t0);
+            const double _t2 = offsetgen_batch_cos(_t0);
+            const double _t3 = 6.2831853071795862 * y[i + j];
+            const double _t4 = offsetgen_batch_sin(_t3);
+            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t6 = offsetgen_batch_cos(_t5);
+            const double _t7 = 4.0 * (_t2 * _t4 * _t6) + _t4 * 3.0;
+            const double _t8 = offsetgen_batch_cos(_t3);
+            const double _t9 = _t1 * 3.0 + 4.0 * (_t1 * _t8 * _t6);
+            const double _t10 = offsetgen_batch_sin(_t5);
+            const double _t11 = 3.0 * _t10 + 4.0 * (_t2 * _t8 * _t10);
+            const double _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
+            const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
+            const double _t14 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t15 = _t7 * _t14;
+            const double _t16 = _t13 * (_t15 * _t15);
+            const int _t17 = _t16 <= 1.0;
+            const double _t18 = (_t17) ? _t16 : 1.0;
+            const double _t19 = _t18 * _t18;
+            const double _t20 = _t19 * _t19;
+            const double _t21 = _t19 * (0.041666666666666102 - _t18 * 0.0013888888888798428) + (1.0 - _t18 * 0.5) + _t20 * (_t19 * (2.0874477943664777e-09 - _t18 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07));
+            const double _t22 = _t21 * _t4;
+            const double _t23 = _t19 * (0.0083333333333333003 - _t18 * 0.00019841269841216566) + (1.0 - _t18 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t18 * 7.549371704181243e-13) * _t19 + (2.755731919201122e-06 - _t18 * 2.5052099244914114e-08)) * _t20;
+            const double _t24 = offsetgen_batch_sqrt(_t13);
+            const double _t25 = _t24 * _t15;
+            const double _t26 = _t23 * ((_t17) ? _t25 : ((_t25 > 0.0) ? 1.0 : (-1.0)));
+            const double _t27 = _t22 - _t8 * _t26;
+            const double _t28 = _t9 * _t14;
+            const double _t29 = _t28 * _t28 * _t13;
+            const int _t30 = _t29 <= 1.0;
+            const double _t31 = (_t30) ? _t29 : 1.0;
+            const double _t32 = _t31 * _t31;
+            const double _t33 = _t32 * _t32;
+            const double _t34 = ((1.6057701922579786e-10 - _t31 * 7.549371704181243e-13) * _t32 + (2.755731919201122e-06 - _t31 * 2.5052099244914114e-08)) * _t33 + ((0.0083333333333333003 - _t31 * 0.00019841269841216566) * _t32 + (1.0 - _t31 * 0.16666666666666666));
+            const double _t35 = _t24 * _t28;
+            const double _t36 = _t34 * ((_t30) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0)));
+            const double _t37 = _t33 * ((2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11) * _t32 + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07)) + ((0.041666666666666102 - _t31 * 0.0013888888888798428) * _t32 + (1.0 - _t31 * 0.5));
+            const double _t38 = _t2 * _t37;
+            const double _t39 = _t1 * _t36 + _t38;
+            const double _t40 = _t14 * _t11;
+            const double _t41 = _t13 * (_t40 * _t40);
+            const int _t42 = _t41 <= 1.0;
+            const double _t43 = (_t42) ? _t41 : 1.0;
+            const double _t44 = _t43 * _t43;
+            const double _t45 = _t44 * _t44;
+            const double _t46 = (0.041666666666666102 - 0.0013888888888798428 * _t43) * _t44 + (1.0 - _t43 * 0.5) + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t43) * _t44) * _t45;
+            const double _t47 = _t6 * _t46;
+            const double _t48 = _t24 * _t40;
+            const double _t49 = (2.755731919201122e-06 - 2.5052099244914114e-08 * _t43 + _t44 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t43)) * _t45 + (_t44 * (0.0083333333333333003 - 0.00019841269841216566 * _t43) + (1.0 - 0.16666666666666666 * _t43));
+            const double _t50 = ((_t42) ? _t48 : ((_t48 > 0.0) ? 1.0 : (-1.0))) * _t49;
+            const double _t51 = _t47 + _t50 * _t10;
+            const double _t52 = 3.0 * _t27 + 4.0 * (_t39 * _t27 * _t51);
+            const double _t53 = _t10 * _t46;
+            const double _t54 = _t53 - _t50 * _t6;
+            const double _t55 = _t21 * _t8;
+            const double _t56 = _t55 + _t26 * _t4;
+            const double _t57 = 4.0 * (_t54 * _t56 * _t39) + _t54 * 3.0;
+            const double _t58 = _t1 * _t37;
+            const double _t59 = _t58 - _t2 * _t36;
+            const double _t60 = 4.0 * (_t56 * _t59 * _t51) + 3.0 * _t59;
+            const double _t61 = _t52 * _t52 + _t57 * _t57 + _t60 * _t60;
+            const double _t62 = (_t61 > 0.0) ? 1.0 / _t61 : 0.0;
+            const double _t63 = _t14 * _t60;
+            const double _t64 = _t62 * (_t63 * _t63);
+            const int _t65 = _t64 <= 1.0;
+            const double _t66 = (_t65) ? _t64 : 1.0;
+            const double _t67 = _t66 * _t66;
+            const double _t68 = _t67 * _t67;
+            const double _t69 = 1.0 - _t66 * 0.5 + _t67 * (0.041666666666666102 - _t66 * 0.0013888888888798428) + (2.4801587247292686e-05 - _t66 * 2.7557303701922228e-07 + _t67 * (2.0874477943664777e-09 - _t66 * 1.1304620460700782e-11)) * _t68;
+            const double _t70 = offsetgen_batch_sqrt(_t62);
+            const double _t71 = _t70 * _t63;
+            const double _t72 = ((_t65) ? _t71 : ((_t71 > 0.0) ? 1.0 : (-1.0))) * ((_t67 * (1.6057701922579786e-10 - _t66 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t66 * 2.5052099244914114e-08)) * _t68 + (1.0 - _t66 * 0.16666666666666666 + _t67 * (0.0083333333333333003 - _t66 * 0.00019841269841216566)));
+            const double _t73 = _t1 * _t69 - _t2 * _t72;
+            const double _t74 = _t14 * _t52;
+            const double _t75 = _t74 * _t74 * _t62;
+            const int _t76 = _t75 <= 1.0;
+            const double _t77 = (_t76) ? _t75 : 1.0;
+            const double _t78 = _t77 * _t77;
+            const double _t79 = _t78 * _t78;
+            const double _t80 = 1.0 - _t77 * 0.5 + (0.041666666666666102 - _t77 * 0.0013888888888798428) * _t78 + (_t78 * (2.0874477943664777e-09 - _t77 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t77 * 2.7557303701922228e-07)) * _t79;
+            const double _t81 = _t70 * _t74;
+            const double _t82 = ((_t76) ? _t81 : ((_t81 > 0.0) ? 1.0 : (-1.0))) * (_t78 * (0.0083333333333333003 - _t77 * 0.00019841269841216566) + (1.0 - _t77 * 0.16666666666666666) + (2.755731919201122e-06 - _t77 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t77 * 7.549371704181243e-13) * _t78) * _t79);
+            const double _t83 = _t80 * _t8 + _t4 * _t82;
+            const double _t84 = _t57 * _t14;
+            const double _t85 = _t84 * _t84 * _t62;
+            const int _t86 = _t85 <= 1.0;
+            const double _t87 = (_t86) ? _t85 : 1.0;
+            const double _t88 = _t87 * _t87;
+            const double _t89 = _t88 * _t88;
+            const double _t90 = _t89 * (2.4801587247292686e-05 - _t87 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t87 * 1.1304620460700782e-11) * _t88) + (_t88 * (0.041666666666666102 - _t87 * 0.0013888888888798428) + (1.0 - _t87 * 0.5));
+            const double _t91 = _t84 * _t70;
+            const double _t92 = ((_t86) ? _t91 : ((_t91 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - _t87 * 2.5052099244914114e-08 + _t88 * (1.6057701922579786e-10 - _t87 * 7.549371704181243e-13)) * _t89 + ((0.0083333333333333003 - _t87 * 0.00019841269841216566) * _t88 + (1.0 - _t87 * 0.16666666666666666)));
+            const double _t93 = _t90 * _t6 + _t92 * _t10;
+            const double _t94 = _t73 * 3.0 + _t73 * _t83 * _t93 * 4.0;
+            const double _t95 = _t80 * _t4 - _t8 * _t82;
+            const double _t96 = _t2 * _t69 + _t1 * _t72;
+            const double _t97 = _t95 * 3.0 + _t96 * _t95 * _t93 * 4.0;
+            const double _t98 = _t90 * _t10 - _t92 * _t6;
+            const double _t99 = 4.0 * (_t98 * (_t96 * _t83)) + 3.0 * _t98;
+            const double _t100 = _t94 * _t94 + _t97 * _t97 + _t99 * _t99;
+            const double _t101 = (_t100 > 0.0) ? 1.0 / _t100 : 0.0;
+            const double _t102 = _t14 * _t99;
+            const double _t103 = _t101 * (_t102 * _t102);
+            const int _t104 = _t103 <= 1.0;
+            const double _t105 = (_t104) ? _t103 : 1.0;
+            const double _t106 = _t105 * _t105;
+            const double _t107 = _t106 * _t106;
+            const double _t108 = offsetgen_batch_sqrt(_t101);
+            const double _t109 = _t102 * _t108;
+            const double _t110 = (1.0 - _t105 * 0.16666666666666666 + (0.0083333333333333003 - _t105 * 0.00019841269841216566) * _t106 + _t107 * (2.755731919201122e-06 - _t105 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t105 * 7.549371704181243e-13) * _t106)) * ((_t104) ? _t109 : ((_t109 > 0.0) ? 1.0 : (-1.0))) * _t10 + (1.0 - _t105 * 0.5 + _t106 * (0.041666666666666102 - _t105 * 0.0013888888888798428) + (2.4801587247292686e-05 - _t105 * 2.7557303701922228e-07 + _t106 * (2.0874477943664777e-09 - _t105 * 1.1304620460700782e-11)) * _t107) * _t6;
+            const double _t111 = _t97 * _t14;
+            const double _t112 = _t101 * (_t111 * _t111);
+            const int _t113 = _t112 <= 1.0;
+            const double _t114 = (_t113) ? _t112 : 1.0;
+            const double _t115 = _t114 * _t114;
+            const double _t116 = _t115 * _t115;
+            const double _t117 = _t111 * _t108;
+            const double _t118 = _t8 * ((2.4801587247292686e-05 - _t114 * 2.7557303701922228e-07 + _t115 * (2.0874477943664777e-09 - _t114 * 1.1304620460700782e-11)) * _t116 + (_t115 * (0.041666666666666102 - _t114 * 0.0013888888888798428) + (1.0 - _t114 * 0.5))) + ((_t113) ? _t117 : ((_t117 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - _t114 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t114 * 7.549371704181243e-13) * _t115) * _t116 + (_t115 * (0.0083333333333333003 - _t114 * 0.00019841269841216566) + (1.0 - _t114 * 0.16666666666666666))) * _t4;
+            const double _t119 = _t14 * _t94;
+            const double _t120 = _t101 * (_t119 * _t119);
+            const int _t121 = _t120 <= 1.0;
+            const double _t122 = (_t121) ? _t120 : 1.0;
+            const double _t123 = _t122 * _t122;
+            const double _t124 = _t123 * _t123;
+            const double _t125 = _t119 * _t108;
+            const double _t126 = _t1 * ((_t124 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t122 + _t123 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t122)) + (1.0 - 0.16666666666666666 * _t122 + (0.0083333333333333003 - 0.00019841269841216566 * _t122) * _t123)) * ((_t121) ? _t125 : ((_t125 > 0.0) ? 1.0 : (-1.0)))) + _t2 * (_t124 * (_t123 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t122) + (2.4801587247292686e-05 - _t122 * 2.7557303701922228e-07)) + (1.0 - _t122 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t122) * _t123));
+            const double _t127 = -_t25;
+            const double _t128 = ((_t17) ? _t127 : ((_t127 > 0.0) ? 1.0 : (-1.0))) * _t23;
+            const double _t129 = _t55 + _t4 * _t128;
+            const double _t130 = -_t48;
+            const double _t131 = ((_t42) ? _t130 : ((_t130 > 0.0) ? 1.0 : (-1.0))) * _t49;
+            const double _t132 = _t53 - _t131 * _t6;
+            const double _t133 = -_t35;
+            const double _t134 = _t34 * ((_t30) ? _t133 : ((_t133 > 0.0) ? 1.0 : (-1.0)));
+            const double _t135 = _t1 * _t134 + _t38;
+            const double _t136 = 4.0 * (_t129 * _t132 * _t135) + _t132 * 3.0;
+            const double _t137 = _t58 - _t2 * _t134;
+            const double _t138 = _t47 + _t131 * _t10;
+            const double _t139 = 3.0 * _t137 + 4.0 * (_t137 * (_t129 * _t138));
+            const double _t140 = _t22 - _t8 * _t128;
+            const double _t141 = 4.0 * (_t140 * (_t138 * _t135)) + 3.0 * _t140;
+            const double _t142 = _t136 * _t136 + _t139 * _t139 + _t141 * _t141;
+            const double _t143 = (_t142 > 0.0) ? 1.0 / _t142 : 0.0;
+            const double _t144 = _t14 * _t136;
+            const double _t145 = _t143 * (_t144 * _t144);
+            const int _t146 = _t145 <= 1.0;
+            const double _t147 = (_t146) ? _t145 : 1.0;
+            const double _t148 = _t147 * _t147;
+            const double _t149 = _t148 * _t148;
+            const double _t150 = (2.4801587247292686e-05 - _t147 * 2.7557303701922228e-07 + _t148 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t147)) * _t149 + (1.0 - _t147 * 0.5 + _t148 * (0.041666666666666102 - 0.0013888888888798428 * _t147));
+            const double _t151 = offsetgen_batch_sqrt(_t143);
+            const double _t152 = -(_t151 * _t144);
+            const double _t153 = ((_t146) ? _t152 : ((_t152 > 0.0) ? 1.0 : (-1.0))) * (_t148 * (0.0083333333333333003 - 0.00019841269841216566 * _t147) + (1.0 - 0.16666666666666666 * _t147) + _t149 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t147) * _t148 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t147)));
+            const double _t154 = _t150 * _t10 - _t153 * _t6;
+            const double _t155 = _t139 * _t14;
+            const double _t156 = _t143 * (_t155 * _t155);
+            const int _t157 = _t156 <= 1.0;
+            const double _t158 = (_t157) ? _t156 : 1.0;
+            const double _t159 = _t158 * _t158;
+            const double _t160 = _t159 * _t159;
+            const double _t161 = (0.041666666666666102 - 0.0013888888888798428 * _t158) * _t159 + (1.0 - _t158 * 0.5) + _t160 * (_t159 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t158) + (2.4801587247292686e-05 - _t158 * 2.7557303701922228e-07));
+            const double _t162 = -(_t151 * _t155);
+            const double _t163 = (_t159 * (0.0083333333333333003 - 0.00019841269841216566 * _t158) + (1.0 - 0.16666666666666666 * _t158) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t158 + _t159 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t158)) * _t160) * ((_t157) ? _t162 : ((_t162 > 0.0) ? 1.0 : (-1.0)));
+            const double _t164 = _t161 * _t2 + _t163 * _t1;
+            const double _t165 = _t141 * _t14;
+            const double _t166 = _t143 * (_t165 * _t165);
+            const int _t167 = _t166 <= 1.0;
+            const double _t168 = (_t167) ? _t166 : 1.0;
+            const double _t169 = _t168 * _t168;
+            const double _t170 = _t169 * _t169;
+            const double _t171 = _t169 * (0.041666666666666102 - _t168 * 0.0013888888888798428) + (1.0 - _t168 * 0.5) + (_t169 * (2.0874477943664777e-09 - _t168 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t168 * 2.7557303701922228e-07)) * _t170;
+            const double _t172 = -(_t151 * _t165);
+            const double _t173 = ((_t169 * (1.6057701922579786e-10 - _t168 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t168 * 2.5052099244914114e-08)) * _t170 + (_t169 * (0.0083333333333333003 - _t168 * 0.00019841269841216566) + (1.0 - _t168 * 0.16666666666666666))) * ((_t167) ? _t172 : ((_t172 > 0.0) ? 1.0 : (-1.0)));
+            const double _t174 = _t8 * _t171 + _t173 * _t4;
+            const double _t175 = 3.0 * _t154 + 4.0 * (_t164 * _t174 * _t154);
+            const double _t176 = _t14 * _t175;
+            const double _t177 = _t161 * _t1 - _t163 * _t2;
+            const double _t178 = _t153 * _t10 + _t150 * _t6;
+            const double _t179 = _t177 * 3.0 + 4.0 * (_t177 * _t178 * _t174);
+            const double _t180 = _t171 * _t4 - _t8 * _t173;
+            const double _t181 = _t180 * 3.0 + 4.0 * (_t178 * (_t164 * _t180));
+            const double _t182 = _t179 * _t179 + _t175 * _t175 + _t181 * _t181;
+            const double _t183 = (_t182 > 0.0) ? 1.0 / _t182 : 0.0;
+            const double _t184 = _t176 * _t176 * _t183;
+            const int _t185 = _t184 <= 1.0;
+            const double _t186 = (_t185) ? _t184 : 1.0;
+            const double _t187 = _t186 * _t186;
+            const double _t188 = _t187 * _t187;
+            const double _t189 = offsetgen_batch_sqrt(_t183);
+            const double _t190 = -(_t189 * _t176);
+            const double _t191 = ((_t187 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t186) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t186)) * _t188 + (1.0 - _t186 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t186) * _t187)) * _t6 + (1.0 - 0.16666666666666666 * _t186 + _t187 * (0.0083333333333333003 - 0.00019841269841216566 * _t186) + (_t187 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t186) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t186)) * _t188) * ((_t185) ? _t190 : ((_t190 > 0.0) ? 1.0 : (-1.0))) * _t10;
+            const double _t192 = _t14 * _t181;
+            const double _t193 = _t192 * _t192 * _t183;
+            const int _t194 = _t193 <= 1.0;
+            const double _t195 = (_t194) ? _t193 : 1.0;
+            const double _t196 = _t195 * _t195;
+            const double _t197 = _t196 * _t196;
+            const double _t198 = -(_t189 * _t192);
+            const double _t199 = _t8 * ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t195 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t195) * _t196) * _t197 + ((0.041666666666666102 - 0.0013888888888798428 * _t195) * _t196 + (1.0 - _t195 * 0.5))) + (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t195) * _t196 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t195)) * _t197 + (1.0 - 0.16666666666666666 * _t195 + (0.0083333333333333003 - 0.00019841269841216566 * _t195) * _t196)) * ((_t194) ? _t198 : ((_t198 > 0.0) ? 1.0 : (-1.0))) * _t4;
+            const double _t200 = _t179 * _t14;
+            const double _t201 = _t200 * _t200 * _t183;
+            const int _t202 = _t201 <= 1.0;
+            const double _t203 = (_t202) ? _t201 : 1.0;
+            const double _t204 = _t203 * _t203;
+            const double _t205 = _t204 * _t204;
+            const double _t206 = -(_t189 * _t200);
+            const double _t207 = _t2 * ((2.4801587247292686e-05 - _t203 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t203) * _t204) * _t205 + (_t204 * (0.041666666666666102 - 0.0013888888888798428 * _t203) + (1.0 - _t203 * 0.5))) + _t1 * ((1.0 - 0.16666666666666666 * _t203 + (0.0083333333333333003 - 0.00019841269841216566 * _t203) * _t204 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t203 + _t204 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t203)) * _t205) * ((_t202) ? _t206 : ((_t206 > 0.0) ? 1.0 : (-1.0))));
+            out[i + j] = (4.0 * (_t110 * _t118 * _t126) + (_t110 * 3.0 + _t118 * 3.0 + _t126 * 3.0)) * (_t191 * 3.0 + _t199 * 3.0 + 3.0 * _t207 + 4.0 * (_t191 * _t199 * _t207));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_proj_o6_shell(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = neovius_proj_o6_shell(x[i], y[i], z[i], t[i]);
 }
 
 /* phi(p, h) of order 6: zero on the surface moved by h along +grad F.
  * Batch form of neovius_proj_o6_offsetf: out[i] = neovius_proj_o6_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void neovius_proj_o6_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+static inline void neovius_proj_o6_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_cosf(_t0);
-        const float _t2 = offsetgen_batch_sinf(_t0);
-        const float _t3 = 6.28318548f * y[i];
-        const float _t4 = offsetgen_batch_cosf(_t3);
-        const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_cosf(_t5);
-        const float _t7 = _t2 * 3.0f + 4.0f * (_t2 * _t4 * _t6);
-        const float _t8 = 6.28318548f * h[i];
-        const float _t9 = _t7 * _t8;
-        const float _t10 = offsetgen_batch_sinf(_t3);
-        const float _t11 = 4.0f * (_t1 * _t10 * _t6) + _t10 * 3.0f;
-        const float _t12 = offsetgen_batch_sinf(_t5);
-        const float _t13 = 3.0f * _t12 + 4.0f * (_t1 * _t4 * _t12);
-        const float _t14 = _t11 * _t11 + _t7 * _t7 + _t13 * _t13;
-        const float _t15 = (_t14 > 0.0f) ? 1.0f / _t14 : 0.0f;
-        const float _t16 = _t9 * _t9 * _t15;
-        const int _t17 = _t16 <= 1.0f;
-        const float _t18 = (_t17) ? _t16 : 1.0f;
-        const float _t19 = _t18 * _t18;
-        const float _t20 = _t19 * _t19;
-        const float _t21 = _t20 * (2.48015876e-05f - _t18 * 2.75573029e-07f + _t19 * (2.08744777e-09f - 1.13046204e-11f * _t18)) + (1.0f - _t18 * 0.5f + _t19 * (0.0416666679f - 0.00138888892f * _t18));
-        const float _t22 = sqrtf(_t15);
-        const float _t23 = -(_t9 * _t22);
-        const float _t24 = ((_t17) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t18 + _t19 * (0.00833333377f - 0.000198412701f * _t18) + _t20 * (2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)));
-        const float _t25 = _t2 * _t21 - _t1 * _t24;
-        const float _t26 = _t8 * _t11;
-        const float _t27 = _t15 * (_t26 * _t26);
-        const int _t28 = _t27 <= 1.0f;
-        const float _t29 = (_t28) ? _t27 : 1.0f;
-        const float _t30 = _t29 * _t29;
-        const float _t31 = _t30 * _t30;
-        const float _t32 = (_t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f) + (2.48015876e-05f - _t29 * 2.75573029e-07f)) * _t31 + (_t30 * (0.0416666679f - 0.00138888892f * _t29) + (1.0f - _t29 * 0.5f));
-        const float _t33 = -(_t26 * _t22);
-        const float _t34 = ((_t28) ? _t33 : ((_t33 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - _t29 * 0.000198412701f) * _t30 + (1.0f - _t29 * 0.166666672f) + (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - 7.54937183e-13f * _t29)) * _t31);
-        const float _t35 = _t4 * _t32 + _t10 * _t34;
-        const float _t36 = _t8 * _t13;
-        const float _t37 = _t15 * (_t36 * _t36);
-        const int _t38 = _t37 <= 1.0f;
-        const float _t39 = (_t38) ? _t37 : 1.0f;
-        const float _t40 = _t39 * _t39;
-        const float _t41 = _t40 * _t40;
-        const float _t42 = -(_t22 * _t36);
-        const float _t43 = ((_t40 * (1.60577024e-10f - _t39 * 7.54937183e-13f) + (2.75573188e-06f - _t39 * 2.50520991e-08f)) * _t41 + (_t40 * (0.00833333377f - _t39 * 0.000198412701f) + (1.0f - _t39 * 0.166666672f))) * ((_t38) ? _t42 : ((_t42 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t44 = 1.0f - _t39 * 0.5f + (0.0416666679f - _t39 * 0.00138888892f) * _t40 + _t41 * ((2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40 + (2.48015876e-05f - _t39 * 2.75573029e-07f));
-        const float _t45 = _t43 * _t12 + _t44 * _t6;
-        const float _t46 = 3.0f * _t25 + 4.0f * (_t25 * (_t35 * _t45));
-        const float _t47 = _t44 * _t12 - _t43 * _t6;
-        const float _t48 = _t2 * _t24 + _t1 * _t21;
-        const float _t49 = 3.0f * _t47 + 4.0f * (_t35 * _t48 * _t47);
-        const float _t50 = _t10 * _t32 - _t4 * _t34;
-        const float _t51 = 4.0f * (_t45 * (_t48 * _t50)) + _t50 * 3.0f;
-        const float _t52 = _t46 * _t46 + (_t49 * _t49 + _t51 * _t51);
-        const float _t53 = (_t52 > 0.0f) ? 1.0f / _t52 : 0.0f;
-        const float _t54 = _t8 * _t46;
-        const float _t55 = _t53 * (_t54 * _t54);
-        const int _t56 = _t55 <= 1.0f;
-        const float _t57 = (_t56) ? _t55 : 1.0f;
-        const float _t58 = _t57 * _t57;
-        const float _t59 = _t58 * _t58;
-        const float _t60 = (_t58 * (2.08744777e-09f - _t57 * 1.13046204e-11f) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59 + (1.0f - _t57 * 0.5f + _t58 * (0.0416666679f - _t57 * 0.00138888892f));
-        const float _t61 = sqrtf(_t53);
-        const float _t62 = -(_t54 * _t61);
-        const float _t63 = ((_t58 * (1.60577024e-10f - _t57 * 7.54937183e-13f) + (2.75573188e-06f - _t57 * 2.50520991e-08f)) * _t59 + (1.0f - _t57 * 0.166666672f + _t58 * (0.00833333377f - _t57 * 0.000198412701f))) * ((_t56) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t64 = _t1 * _t60 + _t2 * _t63;
-        const float _t65 = _t8 * _t51;
-        const float _t66 = _t53 * (_t65 * _t65);
-        const int _t67 = _t66 <= 1.0f;
-        const float _t68 = (_t67) ? _t66 : 1.0f;
-        const float _t69 = _t68 * _t68;
-        const float _t70 = _t69 * _t69;
-        const float _t71 = _t70 * (2.48015876e-05f - _t68 * 2.75573029e-07f + (2.08744777e-09f - _t68 * 1.13046204e-11f) * _t69) + (1.0f - _t68 * 0.5f + (0.0416666679f - 0.00138888892f * _t68) * _t69);
-        const float _t72 = -(_t65 * _t61);
-        const float _t73 = ((_t67) ? _t72 : ((_t72 > 0.0f) ? 1.0f : (-1.0f))) * (_t69 * (0.00833333377f - 0.000198412701f * _t68) + (1.0f - 0.166666672f * _t68) + _t70 * (2.75573188e-06f - 2.50520991e-08f * _t68 + (1.60577024e-10f - 7.54937183e-13f * _t68) * _t69));
-        const float _t74 = _t71 * _t10 - _t4 * _t73;
-        const float _t75 = _t8 * _t49;
-        const float _t76 = _t75 * _t75 * _t53;
-        const int _t77 = _t76 <= 1.0f;
-        const float _t78 = (_t77) ? _t76 : 1.0f;
-        const float _t79 = _t78 * _t78;
-        const float _t80 = _t79 * _t79;
-        const float _t81 = -(_t75 * _t61);
-        const float _t82 = (1.0f - 0.166666672f * _t78 + (0.00833333377f - _t78 * 0.000198412701f) * _t79 + _t80 * (2.75573188e-06f - 2.50520991e-08f * _t78 + _t79 * (1.60577024e-10f - 7.54937183e-13f * _t78))) * ((_t77) ? _t81 : ((_t81 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t83 = _t79 * (0.0416666679f - 0.00138888892f * _t78) + (1.0f - _t78 * 0.5f) + _t80 * (_t79 * (2.08744777e-09f - _t78 * 1.13046204e-11f) + (2.48015876e-05f - _t78 * 2.75573029e-07f));
-        const float _t84 = _t82 * _t12 + _t83 * _t6;
-        const float _t85 = 4.0f * (_t64 * _t74 * _t84) + _t74 * 3.0f;
-        const float _t86 = _t83 * _t12 - _t82 * _t6;
-        const float _t87 = _t73 * _t10 + _t71 * _t4;
-        const float _t88 = _t86 * 3.0f + _t64 * _t86 * _t87 * 4.0f;
-        const float _t89 = _t2 * _t60 - _t1 * _t63;
-        const float _t90 = 3.0f * _t89 + 4.0f * (_t87 * _t84 * _t89);
-        const float _t91 = _t85 * _t85 + _t88 * _t88 + _t90 * _t90;
-        const float _t92 = (_t91 > 0.0f) ? 1.0f / _t91 : 0.0f;
-        const float _t93 = _t8 * _t88;
-        const float _t94 = _t92 * (_t93 * _t93);
-        const int _t95 = _t94 <= 1.0f;
-        const float _t96 = sqrtf(_t92);
-        const float _t97 = -(_t96 * _t93);
-        const float _t98 = (_t95) ? _t94 : 1.0f;
-        const float _t99 = _t98 * _t98;
-        const float _t100 = _t99 * _t99;
-        const float _t101 = ((_t95) ? _t97 : ((_t97 > 0.0f) ? 1.0f : (-1.0f))) * (_t100 * ((1.60577024e-10f - _t98 * 7.54937183e-13f) * _t99 + (2.75573188e-06f - _t98 * 2.50520991e-08f)) + ((0.00833333377f - _t98 * 0.000198412701f) * _t99 + (1.0f - _t98 * 0.166666672f))) * _t12 + ((0.0416666679f - _t98 * 0.00138888892f) * _t99 + (1.0f - _t98 * 0.5f) + _t100 * ((2.08744777e-09f - _t98 * 1.13046204e-11f) * _t99 + (2.48015876e-05f - _t98 * 2.75573029e-07f))) * _t6;
-        const float _t102 = _t8 * _t90;
-        const float _t103 = _t92 * (_t102 * _t102);
-        const int _t104 = _t103 <= 1.0f;
-        const float _t105 = -(_t102 * _t96);
-        const float _t106 = (_t104) ? _t103 : 1.0f;
-        const float _t107 = _t106 * _t106;
-        const float _t108 = _t107 * _t107;
-        const float _t109 = _t2 * (((_t104) ? _t105 : ((_t105 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - _t106 * 2.50520991e-08f + _t107 * (1.60577024e-10f - _t106 * 7.54937183e-13f)) * _t108 + (1.0f - _t106 * 0.166666672f + _t107 * (0.00833333377f - _t106 * 0.000198412701f)))) + _t1 * ((_t107 * (2.08744777e-09f - _t106 * 1.13046204e-11f) + (2.48015876e-05f - _t106 * 2.75573029e-07f)) * _t108 + (1.0f - _t106 * 0.5f + _t107 * (0.0416666679f - _t106 * 0.00138888892f)));
-        const float _t110 = _t8 * _t85;
-        const float _t111 = _t92 * (_t110 * _t110);
-        const int _t112 = _t111 <= 1.0f;
-        const float _t113 = (_t112) ? _t111 : 1.0f;
-        const float _t114 = _t113 * _t113;
-        const float _t115 = _t114 * _t114;
-        const float _t116 = -(_t110 * _t96);
-        const float _t117 = _t4 * (1.0f - _t113 * 0.5f + _t114 * (0.0416666679f - _t113 * 0.00138888892f) + (_t114 * (2.08744777e-09f - _t113 * 1.13046204e-11f) + (2.48015876e-05f - _t113 * 2.75573029e-07f)) * _t115) + ((_t112) ? _t116 : ((_t116 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - _t113 * 0.000198412701f) * _t114 + (1.0f - _t113 * 0.166666672f) + (_t114 * (1.60577024e-10f - _t113 * 7.54937183e-13f) + (2.75573188e-06f - _t113 * 2.50520991e-08f)) * _t115) * _t10;
-        out[i] = 3.0f * _t101 + (_t109 * 3.0f + 3.0f * _t117) + 4.0f * (_t109 * _t101 * _t117);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = offsetgen_batch_sinf(_t0);
+            const float _t3 = 6.28318548f * y[i + j];
+            const float _t4 = offsetgen_batch_cosf(_t3);
+            const float _t5 = 6.28318548f * x[i + j];
+            const float _t6 = offsetgen_batch_cosf(_t5);
+            const float _t7 = _t2 * 3.0f + 4.0f * (_t2 * _t4 * _t6);
+            const float _t8 = 6.28318548f * h[i + j];
+            const float _t9 = _t7 * _t8;
+            const float _t10 = offsetgen_batch_sinf(_t3);
+            const float _t11 = 4.0f * (_t1 * _t10 * _t6) + _t10 * 3.0f;
+            const float _t12 = offsetgen_batch_sinf(_t5);
+            const float _t13 = 3.0f * _t12 + 4.0f * (_t1 * _t4 * _t12);
+            const float _t14 = _t11 * _t11 + _t7 * _t7 + _t13 * _t13;
+            const float _t15 = (_t14 > 0.0f) ? 1.0f / _t14 : 0.0f;
+            const float _t16 = _t9 * _t9 * _t15;
+            const int _t17 = _t16 <= 1.0f;
+            const float _t18 = (_t17) ? _t16 : 1.0f;
+            const float _t19 = _t18 * _t18;
+            const float _t20 = _t19 * _t19;
+            const float _t21 = _t20 * (2.48015876e-05f - _t18 * 2.75573029e-07f + _t19 * (2.08744777e-09f - 1.13046204e-11f * _t18)) + (1.0f - _t18 * 0.5f + _t19 * (0.0416666679f - 0.00138888892f * _t18));
+            const float _t22 = offsetgen_batch_sqrtf(_t15);
+            const float _t23 = -(_t9 * _t22);
+            const float _t24 = ((_t17) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t18 + _t19 * (0.00833333377f - 0.000198412701f * _t18) + _t20 * (2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)));
+            const float _t25 = _t2 * _t21 - _t1 * _t24;
+            const float _t26 = _t8 * _t11;
+            const float _t27 = _t15 * (_t26 * _t26);
+            const int _t28 = _t27 <= 1.0f;
+            const float _t29 = (_t28) ? _t27 : 1.0f;
+            const float _t30 = _t29 * _t29;
+            const float _t31 = _t30 * _t30;
+            const float _t32 = (_t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f) + (2.48015876e-05f - _t29 * 2.75573029e-07f)) * _t31 + (_t30 * (0.0416666679f - 0.00138888892f * _t29) + (1.0f - _t29 * 0.5f));
+            const float _t33 = -(_t26 * _t22);
+            const float _t34 = ((_t28) ? _t33 : ((_t33 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - _t29 * 0.000198412701f) * _t30 + (1.0f - _t29 * 0.166666672f) + (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - 7.54937183e-13f * _t29)) * _t31);
+            const float _t35 = _t4 * _t32 + _t10 * _t34;
+            const float _t36 = _t8 * _t13;
+            const float _t37 = _t15 * (_t36 * _t36);
+            const int _t38 = _t37 <= 1.0f;
+            const float _t39 = (_t38) ? _t37 : 1.0f;
+            const float _t40 = _t39 * _t39;
+            const float _t41 = _t40 * _t40;
+            const float _t42 = -(_t22 * _t36);
+            const float _t43 = ((_t40 * (1.60577024e-10f - _t39 * 7.54937183e-13f) + (2.75573188e-06f - _t39 * 2.50520991e-08f)) * _t41 + (_t40 * (0.00833333377f - _t39 * 0.000198412701f) + (1.0f - _t39 * 0.166666672f))) * ((_t38) ? _t42 : ((_t42 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t44 = 1.0f - _t39 * 0.5f + (0.0416666679f - _t39 * 0.00138888892f) * _t40 + _t41 * ((2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40 + (2.48015876e-05f - _t39 * 2.75573029e-07f));
+            const float _t45 = _t43 * _t12 + _t44 * _t6;
+            const float _t46 = 3.0f * _t25 + 4.0f * (_t25 * (_t35 * _t45));
+            const float _t47 = _t44 * _t12 - _t43 * _t6;
+            const float _t48 = _t2 * _t24 + _t1 * _t21;
+            const float _t49 = 3.0f * _t47 + 4.0f * (_t35 * _t48 * _t47);
+            const float _t50 = _t10 * _t32 - _t4 * _t34;
+            const float _t51 = 4.0f * (_t45 * (_t48 * _t50)) + _t50 * 3.0f;
+            const float _t52 = _t46 * _t46 + (_t49 * _t49 + _t51 * _t51);
+            const float _t53 = (_t52 > 0.0f) ? 1.0f / _t52 : 0.0f;
+            const float _t54 = _t8 * _t46;
+            const float _t55 = _t53 * (_t54 * _t54);
+            const int _t56 = _t55 <= 1.0f;
+            const float _t57 = (_t56) ? _t55 : 1.0f;
+            const float _t58 = _t57 * _t57;
+            const float _t59 = _t58 * _t58;
+            const float _t60 = (_t58 * (2.08744777e-09f - _t57 * 1.13046204e-11f) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59 + (1.0f - _t57 * 0.5f + _t58 * (0.0416666679f - _t57 * 0.00138888892f));
+            const float _t61 = offsetgen_batch_sqrtf(_t53);
+            const float _t62 = -(_t54 * _t61);
+            const float _t63 = ((_t58 * (1.60577024e-10f - _t57 * 7.54937183e-13f) + (2.75573188e-06f - _t57 * 2.50520991e-08f)) * _t59 + (1.0f - _t57 * 0.166666672f + _t58 * (0.00833333377f - _t57 * 0.000198412701f))) * ((_t56) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t64 = _t1 * _t60 + _t2 * _t63;
+            const float _t65 = _t8 * _t51;
+            const float _t66 = _t53 * (_t65 * _t65);
+            const int _t67 = _t66 <= 1.0f;
+            const float _t68 = (_t67) ? _t66 : 1.0f;
+            const float _t69 = _t68 * _t68;
+            const float _t70 = _t69 * _t69;
+            const float _t71 = _t70 * (2.48015876e-05f - _t68 * 2.75573029e-07f + (2.08744777e-09f - _t68 * 1.13046204e-11f) * _t69) + (1.0f - _t68 * 0.5f + (0.0416666679f - 0.00138888892f * _t68) * _t69);
+            const float _t72 = -(_t65 * _t61);
+            const float _t73 = ((_t67) ? _t72 : ((_t72 > 0.0f) ? 1.0f : (-1.0f))) * (_t69 * (0.00833333377f - 0.000198412701f * _t68) + (1.0f - 0.166666672f * _t68) + _t70 * (2.75573188e-06f - 2.50520991e-08f * _t68 + (1.60577024e-10f - 7.54937183e-13f * _t68) * _t69));
+            const float _t74 = _t71 * _t10 - _t4 * _t73;
+            const float _t75 = _t8 * _t49;
+            const float _t76 = _t75 * _t75 * _t53;
+            const int _t77 = _t76 <= 1.0f;
+            const float _t78 = (_t77) ? _t76 : 1.0f;
+            const float _t79 = _t78 * _t78;
+            const float _t80 = _t79 * _t79;
+            const float _t81 = -(_t75 * _t61);
+            const float _t82 = (1.0f - 0.166666672f * _t78 + (0.00833333377f - _t78 * 0.000198412701f) * _t79 + _t80 * (2.75573188e-06f - 2.50520991e-08f * _t78 + _t79 * (1.60577024e-10f - 7.54937183e-13f * _t78))) * ((_t77) ? _t81 : ((_t81 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t83 = _t79 * (0.0416666679f - 0.00138888892f * _t78) + (1.0f - _t78 * 0.5f) + _t80 * (_t79 * (2.08744777e-09f - _t78 * 1.13046204e-11f) + (2.48015876e-05f - _t78 * 2.75573029e-07f));
+            const float _t84 = _t82 * _t12 + _t83 * _t6;
+            const float _t85 = 4.0f * (_t64 * _t74 * _t84) + _t74 * 3.0f;
+            const float _t86 = _t83 * _t12 - _t82 * _t6;
+            const float _t87 = _t73 * _t10 + _t71 * _t4;
+            const float _t88 = _t86 * 3.0f + _t64 * _t86 * _t87 * 4.0f;
+            const float _t89 = _t2 * _t60 - _t1 * _t63;
+            const float _t90 = 3.0f * _t89 + 4.0f * (_t87 * _t84 * _t89);
+            const float _t91 = _t85 * _t85 + _t88 * _t88 + _t90 * _t90;
+            const float _t92 = (_t91 > 0.0f) ? 1.0f / _t91 : 0.0f;
+            const float _t93 = _t8 * _t88;
+            const float _t94 = _t92 * (_t93 * _t93);
+            const int _t95 = _t94 <= 1.0f;
+            const float _t96 = offsetgen_batch_sqrtf(_t92);
+            const float _t97 = -(_t96 * _t93);
+            const float _t98 = (_t95) ? _t94 : 1.0f;
+            const float _t99 = _t98 * _t98;
+            const float _t100 = _t99 * _t99;
+            const float _t101 = ((_t95) ? _t97 : ((_t97 > 0.0f) ? 1.0f : (-1.0f))) * (_t100 * ((1.60577024e-10f - _t98 * 7.54937183e-13f) * _t99 + (2.75573188e-06f - _t98 * 2.50520991e-08f)) + ((0.00833333377f - _t98 * 0.000198412701f) * _t99 + (1.0f - _t98 * 0.166666672f))) * _t12 + ((0.0416666679f - _t98 * 0.00138888892f) * _t99 + (1.0f - _t98 * 0.5f) + _t100 * ((2.08744777e-09f - _t98 * 1.13046204e-11f) * _t99 + (2.48015876e-05f - _t98 * 2.75573029e-07f))) * _t6;
+            const float _t102 = _t8 * _t90;
+            const float _t103 = _t92 * (_t102 * _t102);
+            const int _t104 = _t103 <= 1.0f;
+            const float _t105 = -(_t102 * _t96);
+            const float _t106 = (_t104) ? _t103 : 1.0f;
+            const float _t107 = _t106 * _t106;
+            const float _t108 = _t107 * _t107;
+            const float _t109 = _t2 * (((_t104) ? _t105 : ((_t105 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - _t106 * 2.50520991e-08f + _t107 * (1.60577024e-10f - _t106 * 7.54937183e-13f)) * _t108 + (1.0f - _t106 * 0.166666672f + _t107 * (0.00833333377f - _t106 * 0.000198412701f)))) + _t1 * ((_t107 * (2.08744777e-09f - _t106 * 1.13046204e-11f) + (2.48015876e-05f - _t106 * 2.75573029e-07f)) * _t108 + (1.0f - _t106 * 0.5f + _t107 * (0.0416666679f - _t106 * 0.00138888892f)));
+            const float _t110 = _t8 * _t85;
+            const float _t111 = _t92 * (_t110 * _t110);
+            const int _t112 = _t111 <= 1.0f;
+            const float _t113 = (_t112) ? _t111 : 1.0f;
+            const float _t114 = _t113 * _t113;
+            const float _t115 = _t114 * _t114;
+            const float _t116 = -(_t110 * _t96);
+            const float _t117 = _t4 * (1.0f - _t113 * 0.5f + _t114 * (0.0416666679f - _t113 * 0.00138888892f) + (_t114 * (2.08744777e-09f - _t113 * 1.13046204e-11f) + (2.48015876e-05f - _t113 * 2.75573029e-07f)) * _t115) + ((_t112) ? _t116 : ((_t116 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - _t113 * 0.000198412701f) * _t114 + (1.0f - _t113 * 0.166666672f) + (_t114 * (1.60577024e-10f - _t113 * 7.54937183e-13f) + (2.75573188e-06f - _t113 * 2.50520991e-08f)) * _t115) * _t10;
+            out[i + j] = 3.0f * _t101 + (_t109 * 3.0f + 3.0f * _t117) + 4.0f * (_t109 * _t101 * _t117);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_proj_o6_offsetf(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = neovius_proj_o6_offsetf(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of neovius_proj_o6_shellf: out[i] = neovius_proj_o6_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void neovius_proj_o6_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+static inline void neovius_proj_o6_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_sinf(_t0);
-        const float _t2 = offsetgen_batch_cosf(_t0);
-        const float _t3 = 6.28318548f * y[i];
-        const float _t4 = offsetgen_batch_sinf(_t3);
-        const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_cosf(_t5);
-        const float _t7 = 4.0f * (_t2 * _t4 * _t6) + _t4 * 3.0f;
-        const float _t8 = offsetgen_batch_cosf(_t3);
-        const float _t9 = _t1 * 3.0f + 4.0f * (_t1 * _t8 * _t6);
-        const float _t10 = offsetgen_batch_sinf(_t5);
-        const float _t11 = 3.0f * _t10 + 4.0f * (_t2 * _t8 * _t10);
-        const float _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
-        const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
-        const float _t14 = 6.28318548f * (t[i] * 0.5f);
-        const float _t15 = _t7 * _t14;
-        const float _t16 = _t13 * (_t15 * _t15);
-        const int _t17 = _t16 <= 1.0f;
-        const float _t18 = (_t17) ? _t16 : 1.0f;
-        const float _t19 = _t18 * _t18;
-        const float _t20 = _t19 * _t19;
-        const float _t21 = _t19 * (0.0416666679f - _t18 * 0.00138888892f) + (1.0f - _t18 * 0.5f) + _t20 * (_t19 * (2.08744777e-09f - _t18 * 1.13046204e-11f) + (2.48015876e-05f - _t18 * 2.75573029e-07f));
-        const float _t22 = _t21 * _t4;
-        const float _t23 = _t19 * (0.00833333377f - _t18 * 0.000198412701f) + (1.0f - _t18 * 0.166666672f) + ((1.60577024e-10f - _t18 * 7.54937183e-13f) * _t19 + (2.75573188e-06f - _t18 * 2.50520991e-08f)) * _t20;
-        const float _t24 = sqrtf(_t13);
-        const float _t25 = _t24 * _t15;
-        const float _t26 = _t23 * ((_t17) ? _t25 : ((_t25 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t27 = _t22 - _t8 * _t26;
-        const float _t28 = _t9 * _t14;
-        const float _t29 = _t28 * _t28 * _t13;
-        const int _t30 = _t29 <= 1.0f;
-        const float _t31 = (_t30) ? _t29 : 1.0f;
-        const float _t32 = _t31 * _t31;
-        const float _t33 = _t32 * _t32;
-        const float _t34 = ((1.60577024e-10f - _t31 * 7.54937183e-13f) * _t32 + (2.75573188e-06f - _t31 * 2.50520991e-08f)) * _t33 + ((0.00833333377f - _t31 * 0.000198412701f) * _t32 + (1.0f - _t31 * 0.166666672f));
-        const float _t35 = _t24 * _t28;
-        const float _t36 = _t34 * ((_t30) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t37 = _t33 * ((2.08744777e-09f - _t31 * 1.13046204e-11f) * _t32 + (2.48015876e-05f - _t31 * 2.75573029e-07f)) + ((0.0416666679f - _t31 * 0.00138888892f) * _t32 + (1.0f - _t31 * 0.5f));
-        const float _t38 = _t2 * _t37;
-        const float _t39 = _t1 * _t36 + _t38;
-        const float _t40 = _t14 * _t11;
-        const float _t41 = _t13 * (_t40 * _t40);
-        const int _t42 = _t41 <= 1.0f;
-        const float _t43 = (_t42) ? _t41 : 1.0f;
-        const float _t44 = _t43 * _t43;
-        const float _t45 = _t44 * _t44;
-        const float _t46 = (0.0416666679f - 0.00138888892f * _t43) * _t44 + (1.0f - _t43 * 0.5f) + (2.48015876e-05f - _t43 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t43) * _t44) * _t45;
-        const float _t47 = _t6 * _t46;
-        const float _t48 = _t24 * _t40;
-        const float _t49 = (2.75573188e-06f - 2.50520991e-08f * _t43 + _t44 * (1.60577024e-10f - 7.54937183e-13f * _t43)) * _t45 + (_t44 * (0.00833333377f - 0.000198412701f * _t43) + (1.0f - 0.166666672f * _t43));
-        const float _t50 = ((_t42) ? _t48 : ((_t48 > 0.0f) ? 1.0f : (-1.0f))) * _t49;
-        const float _t51 = _t47 + _t50 * _t10;
-        const float _t52 = 3.0f * _t27 + 4.0f * (_t39 * _t27 * _t51);
-        const float _t53 = _t10 * _t46;
-        const float _t54 = _t53 - _t50 * _t6;
-        const float _t55 = _t21 * _t8;
-        const float _t56 = _t55 + _t26 * _t4;
-        const float _t57 = 4.0f * (_t54 * _t56 * _t39) + _t54 * 3.0f;
-        const float _t58 = _t1 * _t37;
-        const float _t59 = _t58 - _t2 * _t36;
-        const float _t60 = 4.0f * (_t56 * _t59 * _t51) + 3.0f * _t59;
-        const float _t61 = _t52 * _t52 + _t57 * _t57 + _t60 * _t60;
-        const float _t62 = (_t61 > 0.0f) ? 1.0f / _t61 : 0.0f;
-        const float _t63 = _t14 * _t60;
-        const float _t64 = _t62 * (_t63 * _t63);
-        const int _t65 = _t64 <= 1.0f;
-        const float _t66 = (_t65) ? _t64 : 1.0f;
-        const float _t67 = _t66 * _t66;
-        const float _t68 = _t67 * _t67;
-        const float _t69 = 1.0f - _t66 * 0.5f + _t67 * (0.0416666679f - _t66 * 0.00138888892f) + (2.48015876e-05f - _t66 * 2.75573029e-07f + _t67 * (2.08744777e-09f - _t66 * 1.13046204e-11f)) * _t68;
-        const float _t70 = sqrtf(_t62);
-        const float _t71 = _t70 * _t63;
-        const float _t72 = ((_t65) ? _t71 : ((_t71 > 0.0f) ? 1.0f : (-1.0f))) * ((_t67 * (1.60577024e-10f - _t66 * 7.54937183e-13f) + (2.75573188e-06f - _t66 * 2.50520991e-08f)) * _t68 + (1.0f - _t66 * 0.166666672f + _t67 * (0.00833333377f - _t66 * 0.000198412701f)));
-        const float _t73 = _t1 * _t69 - _t2 * _t72;
-        const float _t74 = _t14 * _t52;
-        const float _t75 = _t74 * _t74 * _t62;
-        const int _t76 = _t75 <= 1.0f;
-        const float _t77 = (_t76) ? _t75 : 1.0f;
-        const float _t78 = _t77 * _t77;
-        const float _t79 = _t78 * _t78;
-        const float _t80 = 1.0f - _t77 * 0.5f + (0.0416666679f - _t77 * 0.00138888892f) * _t78 + (_t78 * (2.08744777e-09f - _t77 * 1.13046204e-11f) + (2.48015876e-05f - _t77 * 2.75573029e-07f)) * _t79;
-        const float _t81 = _t70 * _t74;
-        const float _t82 = ((_t76) ? _t81 : ((_t81 > 0.0f) ? 1.0f : (-1.0f))) * (_t78 * (0.00833333377f - _t77 * 0.000198412701f) + (1.0f - _t77 * 0.166666672f) + (2.75573188e-06f - _t77 * 2.50520991e-08f + (1.60577024e-10f - _t77 * 7.54937183e-13f) * _t78) * _t79);
-        const float _t83 = _t80 * _t8 + _t4 * _t82;
-        const float _t84 = _t57 * _t14;
-        const float _t85 = _t84 * _t84 * _t62;
-        const int _t86 = _t85 <= 1.0f;
-        const float _t87 = (_t86) ? _t85 : 1.0f;
-        const float _t88 = _t87 * _t87;
-        const float _t89 = _t88 * _t88;
-        const float _t90 = _t89 * (2.48015876e-05f - _t87 * 2.75573029e-07f + (2.08744777e-09f - _t87 * 1.13046204e-11f) * _t88) + (_t88 * (0.0416666679f - _t87 * 0.00138888892f) + (1.0f - _t87 * 0.5f));
-        const float _t91 = _t84 * _t70;
-        const float _t92 = ((_t86) ? _t91 : ((_t91 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - _t87 * 2.50520991e-08f + _t88 * (1.60577024e-10f - _t87 * 7.54937183e-13f)) * _t89 + ((0.00833333377f - _t87 * 0.000198412701f) * _t88 + (1.0f - _t87 * 0.166666672f)));
-        const float _t93 = _t90 * _t6 + _t92 * _t10;
-        const float _t94 = _t73 * 3.0f + _t73 * _t83 * _t93 * 4.0f;
-        const float _t95 = _t80 * _t4 - _t8 * _t82;
-        const float _t96 = _t2 * _t69 + _t1 * _t72;
-        const float _t97 = _t95 * 3.0f + _t96 * _t95 * _t93 * 4.0f;
-        const float _t98 = _t90 * _t10 - _t92 * _t6;
-        const float _t99 = 4.0f * (_t98 * (_t96 * _t83)) + 3.0f * _t98;
-        const float _t100 = _t94 * _t94 + _t97 * _t97 + _t99 * _t99;
-        const float _t101 = (_t100 > 0.0f) ? 1.0f / _t100 : 0.0f;
-        const float _t102 = _t14 * _t99;
-        const float _t103 = _t101 * (_t102 * _t102);
-        const int _t104 = _t103 <= 1.0f;
-        const float _t105 = (_t104) ? _t103 : 1.0f;
-        const float _t106 = _t105 * _t105;
-        const float _t107 = _t106 * _t106;
-        const float _t108 = sqrtf(_t101);
-        const float _t109 = _t102 * _t108;
-        const float _t110 = (1.0f - _t105 * 0.166666672f + (0.00833333377f - _t105 * 0.000198412701f) * _t106 + _t107 * (2.75573188e-06f - _t105 * 2.50520991e-08f + (1.60577024e-10f - _t105 * 7.54937183e-13f) * _t106)) * ((_t104) ? _t109 : ((_t109 > 0.0f) ? 1.0f : (-1.0f))) * _t10 + (1.0f - _t105 * 0.5f + _t106 * (0.0416666679f - _t105 * 0.00138888892f) + (2.48015876e-05f - _t105 * 2.75573029e-07f + _t106 * (2.08744777e-09f - _t105 * 1.13046204e-11f)) * _t107) * _t6;
-        const float _t111 = _t97 * _t14;
-        const float _t112 = _t101 * (_t111 * _t111);
-        const int _t113 = _t112 <= 1.0f;
-        const float _t114 = (_t113) ? _t112 : 1.0f;
-        const float _t115 = _t114 * _t114;
-        const float _t116 = _t115 * _t115;
-        const float _t117 = _t111 * _t108;
-        const float _t118 = _t8 * ((2.48015876e-05f - _t114 * 2.75573029e-07f + _t115 * (2.08744777e-09f - _t114 * 1.13046204e-11f)) * _t116 + (_t115 * (0.0416666679f - _t114 * 0.00138888892f) + (1.0f - _t114 * 0.5f))) + ((_t113) ? _t117 : ((_t117 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - _t114 * 2.50520991e-08f + (1.60577024e-10f - _t114 * 7.54937183e-13f) * _t115) * _t116 + (_t115 * (0.00833333377f - _t114 * 0.000198412701f) + (1.0f - _t114 * 0.166666672f))) * _t4;
-        const float _t119 = _t14 * _t94;
-        const float _t120 = _t101 * (_t119 * _t119);
-        const int _t121 = _t120 <= 1.0f;
-        const float _t122 = (_t121) ? _t120 : 1.0f;
-        const float _t123 = _t122 * _t122;
-        const float _t124 = _t123 * _t123;
-        const float _t125 = _t119 * _t108;
-        const float _t126 = _t1 * ((_t124 * (2.75573188e-06f - 2.50520991e-08f * _t122 + _t123 * (1.60577024e-10f - 7.54937183e-13f * _t122)) + (1.0f - 0.166666672f * _t122 + (0.00833333377f - 0.000198412701f * _t122) * _t123)) * ((_t121) ? _t125 : ((_t125 > 0.0f) ? 1.0f : (-1.0f)))) + _t2 * (_t124 * (_t123 * (2.08744777e-09f - 1.13046204e-11f * _t122) + (2.48015876e-05f - _t122 * 2.75573029e-07f)) + (1.0f - _t122 * 0.5f + (0.0416666679f - 0.00138888892f * _t122) * _t123));
-        const float _t127 = -_t25;
-        const float _t128 = ((_t17) ? _t127 : ((_t127 > 0.0f) ? 1.0f : (-1.0f))) * _t23;
-        const float _t129 = _t55 + _t4 * _t128;
-        const float _t130 = -_t48;
-        const float _t131 = ((_t42) ? _t130 : ((_t130 > 0.0f) ? 1.0f : (-1.0f))) * _t49;
-        const float _t132 = _t53 - _t131 * _t6;
-        const float _t133 = -_t35;
-        const float _t134 = _t34 * ((_t30) ? _t133 : ((_t133 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t135 = _t1 * _t134 + _t38;
-        const float _t136 = 4.0f * (_t129 * _t132 * _t135) + _t132 * 3.0f;
-        const float _t137 = _t58 - _t2 * _t134;
-        const float _t138 = _t47 + _t131 * _t10;
-        const float _t139 = 3.0f * _t137 + 4.0f * (_t137 * (_t129 * _t138));
-        const float _t140 = _t22 - _t8 * _t128;
-        const float _t141 = 4.0f * (_t140 * (_t138 * _t135)) + 3.0f * _t140;
-        const float _t142 = _t136 * _t136 + _t139 * _t139 + _t141 * _t141;
-        const float _t143 = (_t142 > 0.0f) ? 1.0f / _t142 : 0.0f;
-        const float _t144 = _t14 * _t136;
-        const float _t145 = _t143 * (_t144 * _t144);
-        const int _t146 = _t145 <= 1.0f;
-        const float _t147 = (_t146) ? _t145 : 1.0f;
-        const float _t148 = _t147 * _t147;
-        const float _t149 = _t148 * _t148;
-        const float _t150 = (2.48015876e-05f - _t147 * 2.75573029e-07f + _t148 * (2.08744777e-09f - 1.13046204e-11f * _t147)) * _t149 + (1.0f - _t147 * 0.5f + _t148 * (0.0416666679f - 0.00138888892f * _t147));
-        const float _t151 = sqrtf(_t143);
-        const float _t152 = -(_t151 * _t144);
-        const float _t153 = ((_t146) ? _t152 : ((_t152 > 0.0f) ? 1.0f : (-1.0f))) * (_t148 * (0.00833333377f - 0.000198412701f * _t147) + (1.0f - 0.166666672f * _t147) + _t149 * ((1.60577024e-10f - 7.54937183e-13f * _t147) * _t148 + (2.75573188e-06f - 2.50520991e-08f * _t147)));
-        const float _t154 = _t150 * _t10 - _t153 * _t6;
-        const float _t155 = _t139 * _t14;
-        const float _t156 = _t143 * (_t155 * _t155);
-        const int _t157 = _t156 <= 1.0f;
-        const float _t158 = (_t157) ? _t156 : 1.0f;
-        const float _t159 = _t158 * _t158;
-        const float _t160 = _t159 * _t159;
-        const float _t161 = (0.0416666679f - 0.00138888892f * _t158) * _t159 + (1.0f - _t158 * 0.5f) + _t160 * (_t159 * (2.08744777e-09f - 1.13046204e-11f * _t158) + (2.48015876e-05f - _t158 * 2.75573029e-07f));
-        const float _t162 = -(_t151 * _t155);
-        const float _t163 = (_t159 * (0.00833333377f - 0.000198412701f * _t158) + (1.0f - 0.166666672f * _t158) + (2.75573188e-06f - 2.50520991e-08f * _t158 + _t159 * (1.60577024e-10f - 7.54937183e-13f * _t158)) * _t160) * ((_t157) ? _t162 : ((_t162 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t164 = _t161 * _t2 + _t163 * _t1;
-        const float _t165 = _t141 * _t14;
-        const float _t166 = _t143 * (_t165 * _t165);
-        const int _t167 = _t166 <= 1.0f;
-        const float _t168 = (_t167) ? _t166 : 1.0f;
-        const float _t169 = _t168 * _t168;
-        const float _t170 = _t169 * _t169;
-        const float _t171 = _t169 * (0.0416666679f - _t168 * 0.00138888892f) + (1.0f - _t168 * 0.5f) + (_t169 * (2.08744777e-09f - _t168 * 1.13046204e-11f) + (2.48015876e-05f - _t168 * 2.75573029e-07f)) * _t170;
-        const float _t172 = -(_t151 * _t165);
-        const float _t173 = ((_t169 * (1.60577024e-10f - _t168 * 7.54937183e-13f) + (2.75573188e-06f - _t168 * 2.50520991e-08f)) * _t170 + (_t169 * (0.00833333377f - _t168 * 0.000198412701f) + (1.0f - _t168 * 0.166666672f))) * ((_t167) ? _t172 : ((_t172 > 0.0f) ? 1.0f : (-1.0f)));
-        const float _t174 = _t8 * _t171 + _t173 * _t4;
-        const float _t175 = 3.0f * _t154 + 4.0f * (_t164 * _t174 * _t154);
-        const float _t176 = _t14 * _t175;
-        const float _t177 = _t161 * _t1 - _t163 * _t2;
-        const float _t178 = _t153 * _t10 + _t150 * _t6;
-        const float _t179 = _t177 * 3.0f + 4.0f * (_t177 * _t178 * _t174);
-        const float _t180 = _t171 * _t4 - _t8 * _t173;
-        const float _t181 = _t180 * 3.0f + 4.0f * (_t178 * (_t164 * _t180));
-        const float _t182 = _t179 * _t179 + _t175 * _t175 + _t181 * _t181;
-        const float _t183 = (_t182 > 0.0f) ? 1.0f / _t182 : 0.0f;
-        const float _t184 = _t176 * _t176 * _t183;
-        const int _t185 = _t184 <= 1.0f;
-        const float _t186 = (_t185) ? _t184 : 1.0f;
-        const float _t187 = _t186 * _t186;
-        const float _t188 = _t187 * _t187;
-        const float _t189 = sqrtf(_t183);
-        const float _t190 = -(_t189 * _t176);
-        const float _t191 = ((_t187 * (2.08744777e-09f - 1.13046204e-11f * _t186) + (2.48015876e-05f - 2.75573029e-07f * _t186)) * _t188 + (1.0f - _t186 * 0.5f + (0.0416666679f - 0.00138888892f * _t186) * _t187)) * _t6 + (1.0f - 0.166666672f * _t186 + _t187 * (0.00833333377f - 0.000198412701f * _t186) + (_t187 * (1.60577024e-10f - 7.54937183e-13f * _t186) + (2.75573188e-06f - 2.50520991e-08f * _t186)) * _t188) * ((_t185) ? _t190 : ((_t190 > 0.0f) ? 1.0f : (-1.0f))) * _t10;
-        const float _t192 = _t14 * _t181;
-        const float _t193 = _t192 * _t192 * _t183;
-        const int _t194 = _t193 <= 1.0f;
-        const float _t195 = (_t194) ? _t193 : 1.0f;
-        const float _t196 = _t195 * _t195;
-        const float _t197 = _t196 * _t196;
-        const float _t198 = -(_t189 * _t192);
-        const float _t199 = _t8 * ((2.48015876e-05f - 2.75573029e-07f * _t195 + (2.08744777e-09f - 1.13046204e-11f * _t195) * _t196) * _t197 + ((0.0416666679f - 0.00138888892f * _t195) * _t196 + (1.0f - _t195 * 0.5f))) + (((1.60577024e-10f - 7.54937183e-13f * _t195) * _t196 + (2.75573188e-06f - 2.50520991e-08f * _t195)) * _t197 + (1.0f - 0.166666672f * _t195 + (0.00833333377f - 0.000198412701f * _t195) * _t196)) * ((_t194) ? _t198 : ((_t198 > 0.0f) ? 1.0f : (-1.0f))) * _t4;
-        const float _t200 = _t179 * _t14;
-        const float _t201 = _t200 * _t200 * _t183;
-        const int _t202 = _t201 <= 1.0f;
-        const float _t203 = (_t202) ? _t201 : 1.0f;
-        const float _t204 = _t203 * _t203;
-        const float _t205 = _t204 * _t204;
-        const float _t206 = -(_t189 * _t200);
-        const float _t207 = _t2 * ((2.48015876e-05f - _t203 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t203) * _t204) * _t205 + (_t204 * (0.0416666679f - 0.00138888892f * _t203) + (1.0f - _t203 * 0.5f))) + _t1 * ((1.0f - 0.166666672f * _t203 + (0.00833333377f - 0.000198412701f * _t203) * _t204 + (2.75573188e-06f - 2.50520991e-08f * _t203 + _t204 * (1.60577024e-10f - 7.54937183e-13f * _t203)) * _t205) * ((_t202) ? _t206 : ((_t206 > 0.0f) ? 1.0f : (-1.0f))));
-        out[i] = (4.0f * (_t110 * _t118 * _t126) + (_t110 * 3.0f + _t118 * 3.0f + _t126 * 3.0f)) * (_t191 * 3.0f + _t199 * 3.0f + 3.0f * _t207 + 4.0f * (_t191 * _t199 * _t207));
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_sinf(_t0);
+            const float _t2 = offsetgen_batch_cosf(_t0);
+            const float _t3 = 6.28318548f * y[i + j];
+            const float _t4 = offsetgen_batch_sinf(_t3);
+            const float _t5 = 6.28318548f * x[i + j];
+            const float _t6 = offsetgen_batch_cosf(_t5);
+            const float _t7 = 4.0f * (_t2 * _t4 * _t6) + _t4 * 3.0f;
+            const float _t8 = offsetgen_batch_cosf(_t3);
+            const float _t9 = _t1 * 3.0f + 4.0f * (_t1 * _t8 * _t6);
+            const float _t10 = offsetgen_batch_sinf(_t5);
+            const float _t11 = 3.0f * _t10 + 4.0f * (_t2 * _t8 * _t10);
+            const float _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
+            const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
+            const float _t14 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t15 = _t7 * _t14;
+            const float _t16 = _t13 * (_t15 * _t15);
+            const int _t17 = _t16 <= 1.0f;
+            const float _t18 = (_t17) ? _t16 : 1.0f;
+            const float _t19 = _t18 * _t18;
+            const float _t20 = _t19 * _t19;
+            const float _t21 = _t19 * (0.0416666679f - _t18 * 0.00138888892f) + (1.0f - _t18 * 0.5f) + _t20 * (_t19 * (2.08744777e-09f - _t18 * 1.13046204e-11f) + (2.48015876e-05f - _t18 * 2.75573029e-07f));
+            const float _t22 = _t21 * _t4;
+            const float _t23 = _t19 * (0.00833333377f - _t18 * 0.000198412701f) + (1.0f - _t18 * 0.166666672f) + ((1.60577024e-10f - _t18 * 7.54937183e-13f) * _t19 + (2.75573188e-06f - _t18 * 2.50520991e-08f)) * _t20;
+            const float _t24 = offsetgen_batch_sqrtf(_t13);
+            const float _t25 = _t24 * _t15;
+            const float _t26 = _t23 * ((_t17) ? _t25 : ((_t25 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t27 = _t22 - _t8 * _t26;
+            const float _t28 = _t9 * _t14;
+            const float _t29 = _t28 * _t28 * _t13;
+            const int _t30 = _t29 <= 1.0f;
+            const float _t31 = (_t30) ? _t29 : 1.0f;
+            const float _t32 = _t31 * _t31;
+            const float _t33 = _t32 * _t32;
+            const float _t34 = ((1.60577024e-10f - _t31 * 7.54937183e-13f) * _t32 + (2.75573188e-06f - _t31 * 2.50520991e-08f)) * _t33 + ((0.00833333377f - _t31 * 0.000198412701f) * _t32 + (1.0f - _t31 * 0.166666672f));
+            const float _t35 = _t24 * _t28;
+            const float _t36 = _t34 * ((_t30) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t37 = _t33 * ((2.08744777e-09f - _t31 * 1.13046204e-11f) * _t32 + (2.48015876e-05f - _t31 * 2.75573029e-07f)) + ((0.0416666679f - _t31 * 0.00138888892f) * _t32 + (1.0f - _t31 * 0.5f));
+            const float _t38 = _t2 * _t37;
+            const float _t39 = _t1 * _t36 + _t38;
+            const float _t40 = _t14 * _t11;
+            const float _t41 = _t13 * (_t40 * _t40);
+            const int _t42 = _t41 <= 1.0f;
+            const float _t43 = (_t42) ? _t41 : 1.0f;
+            const float _t44 = _t43 * _t43;
+            const float _t45 = _t44 * _t44;
+            const float _t46 = (0.0416666679f - 0.00138888892f * _t43) * _t44 + (1.0f - _t43 * 0.5f) + (2.48015876e-05f - _t43 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t43) * _t44) * _t45;
+            const float _t47 = _t6 * _t46;
+            const float _t48 = _t24 * _t40;
+            const float _t49 = (2.75573188e-06f - 2.50520991e-08f * _t43 + _t44 * (1.60577024e-10f - 7.54937183e-13f * _t43)) * _t45 + (_t44 * (0.00833333377f - 0.000198412701f * _t43) + (1.0f - 0.166666672f * _t43));
+            const float _t50 = ((_t42) ? _t48 : ((_t48 > 0.0f) ? 1.0f : (-1.0f))) * _t49;
+            const float _t51 = _t47 + _t50 * _t10;
+            const float _t52 = 3.0f * _t27 + 4.0f * (_t39 * _t27 * _t51);
+            const float _t53 = _t10 * _t46;
+            const float _t54 = _t53 - _t50 * _t6;
+            const float _t55 = _t21 * _t8;
+            const float _t56 = _t55 + _t26 * _t4;
+            const float _t57 = 4.0f * (_t54 * _t56 * _t39) + _t54 * 3.0f;
+            const float _t58 = _t1 * _t37;
+            const float _t59 = _t58 - _t2 * _t36;
+            const float _t60 = 4.0f * (_t56 * _t59 * _t51) + 3.0f * _t59;
+            const float _t61 = _t52 * _t52 + _t57 * _t57 + _t60 * _t60;
+            const float _t62 = (_t61 > 0.0f) ? 1.0f / _t61 : 0.0f;
+            const float _t63 = _t14 * _t60;
+            const float _t64 = _t62 * (_t63 * _t63);
+            const int _t65 = _t64 <= 1.0f;
+            const float _t66 = (_t65) ? _t64 : 1.0f;
+            const float _t67 = _t66 * _t66;
+            const float _t68 = _t67 * _t67;
+            const float _t69 = 1.0f - _t66 * 0.5f + _t67 * (0.0416666679f - _t66 * 0.00138888892f) + (2.48015876e-05f - _t66 * 2.75573029e-07f + _t67 * (2.08744777e-09f - _t66 * 1.13046204e-11f)) * _t68;
+            const float _t70 = offsetgen_batch_sqrtf(_t62);
+            const float _t71 = _t70 * _t63;
+            const float _t72 = ((_t65) ? _t71 : ((_t71 > 0.0f) ? 1.0f : (-1.0f))) * ((_t67 * (1.60577024e-10f - _t66 * 7.54937183e-13f) + (2.75573188e-06f - _t66 * 2.50520991e-08f)) * _t68 + (1.0f - _t66 * 0.166666672f + _t67 * (0.00833333377f - _t66 * 0.000198412701f)));
+            const float _t73 = _t1 * _t69 - _t2 * _t72;
+            const float _t74 = _t14 * _t52;
+            const float _t75 = _t74 * _t74 * _t62;
+            const int _t76 = _t75 <= 1.0f;
+            const float _t77 = (_t76) ? _t75 : 1.0f;
+            const float _t78 = _t77 * _t77;
+            const float _t79 = _t78 * _t78;
+            const float _t80 = 1.0f - _t77 * 0.5f + (0.0416666679f - _t77 * 0.00138888892f) * _t78 + (_t78 * (2.08744777e-09f - _t77 * 1.13046204e-11f) + (2.48015876e-05f - _t77 * 2.75573029e-07f)) * _t79;
+            const float _t81 = _t70 * _t74;
+            const float _t82 = ((_t76) ? _t81 : ((_t81 > 0.0f) ? 1.0f : (-1.0f))) * (_t78 * (0.00833333377f - _t77 * 0.000198412701f) + (1.0f - _t77 * 0.166666672f) + (2.75573188e-06f - _t77 * 2.50520991e-08f + (1.60577024e-10f - _t77 * 7.54937183e-13f) * _t78) * _t79);
+            const float _t83 = _t80 * _t8 + _t4 * _t82;
+            const float _t84 = _t57 * _t14;
+            const float _t85 = _t84 * _t84 * _t62;
+            const int _t86 = _t85 <= 1.0f;
+            const float _t87 = (_t86) ? _t85 : 1.0f;
+            const float _t88 = _t87 * _t87;
+            const float _t89 = _t88 * _t88;
+            const float _t90 = _t89 * (2.48015876e-05f - _t87 * 2.75573029e-07f + (2.08744777e-09f - _t87 * 1.13046204e-11f) * _t88) + (_t88 * (0.0416666679f - _t87 * 0.00138888892f) + (1.0f - _t87 * 0.5f));
+            const float _t91 = _t84 * _t70;
+            const float _t92 = ((_t86) ? _t91 : ((_t91 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - _t87 * 2.50520991e-08f + _t88 * (1.60577024e-10f - _t87 * 7.54937183e-13f)) * _t89 + ((0.00833333377f - _t87 * 0.000198412701f) * _t88 + (1.0f - _t87 * 0.166666672f)));
+            const float _t93 = _t90 * _t6 + _t92 * _t10;
+            const float _t94 = _t73 * 3.0f + _t73 * _t83 * _t93 * 4.0f;
+            const float _t95 = _t80 * _t4 - _t8 * _t82;
+            const float _t96 = _t2 * _t69 + _t1 * _t72;
+            const float _t97 = _t95 * 3.0f + _t96 * _t95 * _t93 * 4.0f;
+            const float _t98 = _t90 * _t10 - _t92 * _t6;
+            const float _t99 = 4.0f * (_t98 * (_t96 * _t83)) + 3.0f * _t98;
+            const float _t100 = _t94 * _t94 + _t97 * _t97 + _t99 * _t99;
+            const float _t101 = (_t100 > 0.0f) ? 1.0f / _t100 : 0.0f;
+            const float _t102 = _t14 * _t99;
+            const float _t103 = _t101 * (_t102 * _t102);
+            const int _t104 = _t103 <= 1.0f;
+            const float _t105 = (_t104) ? _t103 : 1.0f;
+            const float _t106 = _t105 * _t105;
+            const float _t107 = _t106 * _t106;
+            const float _t108 = offsetgen_batch_sqrtf(_t101);
+            const float _t109 = _t102 * _t108;
+            const float _t110 = (1.0f - _t105 * 0.166666672f + (0.00833333377f - _t105 * 0.000198412701f) * _t106 + _t107 * (2.75573188e-06f - _t105 * 2.50520991e-08f + (1.60577024e-10f - _t105 * 7.54937183e-13f) * _t106)) * ((_t104) ? _t109 : ((_t109 > 0.0f) ? 1.0f : (-1.0f))) * _t10 + (1.0f - _t105 * 0.5f + _t106 * (0.0416666679f - _t105 * 0.00138888892f) + (2.48015876e-05f - _t105 * 2.75573029e-07f + _t106 * (2.08744777e-09f - _t105 * 1.13046204e-11f)) * _t107) * _t6;
+            const float _t111 = _t97 * _t14;
+            const float _t112 = _t101 * (_t111 * _t111);
+            const int _t113 = _t112 <= 1.0f;
+            const float _t114 = (_t113) ? _t112 : 1.0f;
+            const float _t115 = _t114 * _t114;
+            const float _t116 = _t115 * _t115;
+            const float _t117 = _t111 * _t108;
+            const float _t118 = _t8 * ((2.48015876e-05f - _t114 * 2.75573029e-07f + _t115 * (2.08744777e-09f - _t114 * 1.13046204e-11f)) * _t116 + (_t115 * (0.0416666679f - _t114 * 0.00138888892f) + (1.0f - _t114 * 0.5f))) + ((_t113) ? _t117 : ((_t117 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - _t114 * 2.50520991e-08f + (1.60577024e-10f - _t114 * 7.54937183e-13f) * _t115) * _t116 + (_t115 * (0.00833333377f - _t114 * 0.000198412701f) + (1.0f - _t114 * 0.166666672f))) * _t4;
+            const float _t119 = _t14 * _t94;
+            const float _t120 = _t101 * (_t119 * _t119);
+            const int _t121 = _t120 <= 1.0f;
+            const float _t122 = (_t121) ? _t120 : 1.0f;
+            const float _t123 = _t122 * _t122;
+            const float _t124 = _t123 * _t123;
+            const float _t125 = _t119 * _t108;
+            const float _t126 = _t1 * ((_t124 * (2.75573188e-06f - 2.50520991e-08f * _t122 + _t123 * (1.60577024e-10f - 7.54937183e-13f * _t122)) + (1.0f - 0.166666672f * _t122 + (0.00833333377f - 0.000198412701f * _t122) * _t123)) * ((_t121) ? _t125 : ((_t125 > 0.0f) ? 1.0f : (-1.0f)))) + _t2 * (_t124 * (_t123 * (2.08744777e-09f - 1.13046204e-11f * _t122) + (2.48015876e-05f - _t122 * 2.75573029e-07f)) + (1.0f - _t122 * 0.5f + (0.0416666679f - 0.00138888892f * _t122) * _t123));
+            const float _t127 = -_t25;
+            const float _t128 = ((_t17) ? _t127 : ((_t127 > 0.0f) ? 1.0f : (-1.0f))) * _t23;
+            const float _t129 = _t55 + _t4 * _t128;
+            const float _t130 = -_t48;
+            const float _t131 = ((_t42) ? _t130 : ((_t130 > 0.0f) ? 1.0f : (-1.0f))) * _t49;
+            const float _t132 = _t53 - _t131 * _t6;
+            const float _t133 = -_t35;
+            const float _t134 = _t34 * ((_t30) ? _t133 : ((_t133 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t135 = _t1 * _t134 + _t38;
+            const float _t136 = 4.0f * (_t129 * _t132 * _t135) + _t132 * 3.0f;
+            const float _t137 = _t58 - _t2 * _t134;
+            const float _t138 = _t47 + _t131 * _t10;
+            const float _t139 = 3.0f * _t137 + 4.0f * (_t137 * (_t129 * _t138));
+            const float _t140 = _t22 - _t8 * _t128;
+            const float _t141 = 4.0f * (_t140 * (_t138 * _t135)) + 3.0f * _t140;
+            const float _t142 = _t136 * _t136 + _t139 * _t139 + _t141 * _t141;
+            const float _t143 = (_t142 > 0.0f) ? 1.0f / _t142 : 0.0f;
+            const float _t144 = _t14 * _t136;
+            const float _t145 = _t143 * (_t144 * _t144);
+            const int _t146 = _t145 <= 1.0f;
+            const float _t147 = (_t146) ? _t145 : 1.0f;
+            const float _t148 = _t147 * _t147;
+            const float _t149 = _t148 * _t148;
+            const float _t150 = (2.48015876e-05f - _t147 * 2.75573029e-07f + _t148 * (2.08744777e-09f - 1.13046204e-11f * _t147)) * _t149 + (1.0f - _t147 * 0.5f + _t148 * (0.0416666679f - 0.00138888892f * _t147));
+            const float _t151 = offsetgen_batch_sqrtf(_t143);
+            const float _t152 = -(_t151 * _t144);
+            const float _t153 = ((_t146) ? _t152 : ((_t152 > 0.0f) ? 1.0f : (-1.0f))) * (_t148 * (0.00833333377f - 0.000198412701f * _t147) + (1.0f - 0.166666672f * _t147) + _t149 * ((1.60577024e-10f - 7.54937183e-13f * _t147) * _t148 + (2.75573188e-06f - 2.50520991e-08f * _t147)));
+            const float _t154 = _t150 * _t10 - _t153 * _t6;
+            const float _t155 = _t139 * _t14;
+            const float _t156 = _t143 * (_t155 * _t155);
+            const int _t157 = _t156 <= 1.0f;
+            const float _t158 = (_t157) ? _t156 : 1.0f;
+            const float _t159 = _t158 * _t158;
+            const float _t160 = _t159 * _t159;
+            const float _t161 = (0.0416666679f - 0.00138888892f * _t158) * _t159 + (1.0f - _t158 * 0.5f) + _t160 * (_t159 * (2.08744777e-09f - 1.13046204e-11f * _t158) + (2.48015876e-05f - _t158 * 2.75573029e-07f));
+            const float _t162 = -(_t151 * _t155);
+            const float _t163 = (_t159 * (0.00833333377f - 0.000198412701f * _t158) + (1.0f - 0.166666672f * _t158) + (2.75573188e-06f - 2.50520991e-08f * _t158 + _t159 * (1.60577024e-10f - 7.54937183e-13f * _t158)) * _t160) * ((_t157) ? _t162 : ((_t162 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t164 = _t161 * _t2 + _t163 * _t1;
+            const float _t165 = _t141 * _t14;
+            const float _t166 = _t143 * (_t165 * _t165);
+            const int _t167 = _t166 <= 1.0f;
+            const float _t168 = (_t167) ? _t166 : 1.0f;
+            const float _t169 = _t168 * _t168;
+            const float _t170 = _t169 * _t169;
+            const float _t171 = _t169 * (0.0416666679f - _t168 * 0.00138888892f) + (1.0f - _t168 * 0.5f) + (_t169 * (2.08744777e-09f - _t168 * 1.13046204e-11f) + (2.48015876e-05f - _t168 * 2.75573029e-07f)) * _t170;
+            const float _t172 = -(_t151 * _t165);
+            const float _t173 = ((_t169 * (1.60577024e-10f - _t168 * 7.54937183e-13f) + (2.75573188e-06f - _t168 * 2.50520991e-08f)) * _t170 + (_t169 * (0.00833333377f - _t168 * 0.000198412701f) + (1.0f - _t168 * 0.166666672f))) * ((_t167) ? _t172 : ((_t172 > 0.0f) ? 1.0f : (-1.0f)));
+            const float _t174 = _t8 * _t171 + _t173 * _t4;
+            const float _t175 = 3.0f * _t154 + 4.0f * (_t164 * _t174 * _t154);
+            const float _t176 = _t14 * _t175;
+            const float _t177 = _t161 * _t1 - _t163 * _t2;
+            const float _t178 = _t153 * _t10 + _t150 * _t6;
+            const float _t179 = _t177 * 3.0f + 4.0f * (_t177 * _t178 * _t174);
+            const float _t180 = _t171 * _t4 - _t8 * _t173;
+            const float _t181 = _t180 * 3.0f + 4.0f * (_t178 * (_t164 * _t180));
+            const float _t182 = _t179 * _t179 + _t175 * _t175 + _t181 * _t181;
+            const float _t183 = (_t182 > 0.0f) ? 1.0f / _t182 : 0.0f;
+            const float _t184 = _t176 * _t176 * _t183;
+            const int _t185 = _t184 <= 1.0f;
+            const float _t186 = (_t185) ? _t184 : 1.0f;
+            const float _t187 = _t186 * _t186;
+            const float _t188 = _t187 * _t187;
+            const float _t189 = offsetgen_batch_sqrtf(_t183);
+            const float _t190 = -(_t189 * _t176);
+            const float _t191 = ((_t187 * (2.08744777e-09f - 1.13046204e-11f * _t186) + (2.48015876e-05f - 2.75573029e-07f * _t186)) * _t188 + (1.0f - _t186 * 0.5f + (0.0416666679f - 0.00138888892f * _t186) * _t187)) * _t6 + (1.0f - 0.166666672f * _t186 + _t187 * (0.00833333377f - 0.000198412701f * _t186) + (_t187 * (1.60577024e-10f - 7.54937183e-13f * _t186) + (2.75573188e-06f - 2.50520991e-08f * _t186)) * _t188) * ((_t185) ? _t190 : ((_t190 > 0.0f) ? 1.0f : (-1.0f))) * _t10;
+            const float _t192 = _t14 * _t181;
+            const float _t193 = _t192 * _t192 * _t183;
+            const int _t194 = _t193 <= 1.0f;
+            const float _t195 = (_t194) ? _t193 : 1.0f;
+            const float _t196 = _t195 * _t195;
+            const float _t197 = _t196 * _t196;
+            const float _t198 = -(_t189 * _t192);
+            const float _t199 = _t8 * ((2.48015876e-05f - 2.75573029e-07f * _t195 + (2.08744777e-09f - 1.13046204e-11f * _t195) * _t196) * _t197 + ((0.0416666679f - 0.00138888892f * _t195) * _t196 + (1.0f - _t195 * 0.5f))) + (((1.60577024e-10f - 7.54937183e-13f * _t195) * _t196 + (2.75573188e-06f - 2.50520991e-08f * _t195)) * _t197 + (1.0f - 0.166666672f * _t195 + (0.00833333377f - 0.000198412701f * _t195) * _t196)) * ((_t194) ? _t198 : ((_t198 > 0.0f) ? 1.0f : (-1.0f))) * _t4;
+            const float _t200 = _t179 * _t14;
+            const float _t201 = _t200 * _t200 * _t183;
+            const int _t202 = _t201 <= 1.0f;
+            const float _t203 = (_t202) ? _t201 : 1.0f;
+            const float _t204 = _t203 * _t203;
+            const float _t205 = _t204 * _t204;
+            const float _t206 = -(_t189 * _t200);
+            const float _t207 = _t2 * ((2.48015876e-05f - _t203 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t203) * _t204) * _t205 + (_t204 * (0.0416666679f - 0.00138888892f * _t203) + (1.0f - _t203 * 0.5f))) + _t1 * ((1.0f - 0.166666672f * _t203 + (0.00833333377f - 0.000198412701f * _t203) * _t204 + (2.75573188e-06f - 2.50520991e-08f * _t203 + _t204 * (1.60577024e-10f - 7.54937183e-13f * _t203)) * _t205) * ((_t202) ? _t206 : ((_t206 > 0.0f) ? 1.0f : (-1.0f))));
+            out[i + j] = (4.0f * (_t110 * _t118 * _t126) + (_t110 * 3.0f + _t118 * 3.0f + _t126 * 3.0f)) * (_t191 * 3.0f + _t199 * 3.0f + 3.0f * _t207 + 4.0f * (_t191 * _t199 * _t207));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_proj_o6_shellf(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = neovius_proj_o6_shellf(x[i], y[i], z[i], t[i]);
 }
 
 

@@ -55,7 +55,7 @@
  *   shell    1012
  *   normal   589
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":576,"shell":1012,"normal":589}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":576,"shell":1012,"normal":589}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O8_H
 #define OFFSETGEN_SCHWARZP_PROJ_O8_H
 
@@ -1115,24 +1115,33 @@ static inline void schwarzp_proj_o8_normalf(float x, float y, float z, float h, 
  *   void schwarzp_proj_o8_shellf_n(n, x, y, z, t, out)
  *
  * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
- * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
- * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
- * selects (blends), and there are no calls left for the vectoriser to stumble over.
- *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
- *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
- *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
- *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * body is the same straight-line program as the scalar function, written so that GCC (12 and later)
+ * and Clang (14 and later) vectorise it with the flags you already use, -O2 or -O3 with or without
+ * -march (SSE2 to AVX-512), and without -fno-math-errno or any other change to floating-point
+ * semantics. What stands in the way of a vectoriser is replaced by plain arithmetic:
+ *   - sin and cos: branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm);
+ *   - sqrt: offsetgen_batch_sqrt, a bit-level seed and Newton steps (within 1 ulp of sqrt, which
+ *     cannot vectorise while it may set errno; see there for subnormal inputs);
+ *   - quadrant and special-case selection: integer masks, so there is no branch to convert;
+ *   - the points go in blocks of a fixed size: a loop with a constant trip count is what GCC
+ *     vectorises at -O2.
+ * -march=native gives wider vectors. Optionally: -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp:
+ * the block loop then carries `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang).
+ * Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
  * The results agree with the scalar functions to about 1e-15 of the field's scale: both use the
- * same sin/cos reduction and polynomials, so only the compiler's vector contraction and ordering of
- * the same operations can differ. Points whose sin/cos arguments lie beyond the
- * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
- * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
- * function's finite value. `out` must not overlap the input arrays. Other elementary functions
- * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
- * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ * same sin/cos reduction and polynomials, sqrt differs by at most 1 ulp, and the compiler may
+ * contract the same operations differently in vector and scalar code. Points whose sin/cos
+ * arguments lie beyond the polynomials' range (1.0e8 in double, 8192.0 in float, in
+ * radians), and non-finite inputs, are recomputed by the scalar function, and so are the last
+ * n % block points, so every finite input still gives the scalar function's finite value. `out` must
+ * not overlap the input arrays. Other elementary functions (exp, tan, ...) in a user expression stay
+ * libm calls; such loops are correct but need a vector math library (e.g. -ffast-math with glibc's
+ * libmvec) to vectorise.
  */
+#include <stdint.h>
+#include <string.h>
 #ifndef OFFSETGEN_SIMD_LOOP
-/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno sqrt calls. */
+/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno libm calls. */
 #if (defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)) && (!defined(__clang__) || defined(__NO_MATH_ERRNO__))
 #define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
 #elif defined(__GNUC__) && !defined(__clang__)
@@ -1141,765 +1150,880 @@ static inline void schwarzp_proj_o8_normalf(float x, float y, float z, float h, 
 #define OFFSETGEN_SIMD_LOOP
 #endif
 #endif
-#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
- * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
- * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
- * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
- * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
-static inline double offsetgen_batch_sin(double a)
+#ifndef OFFSETGEN_RESTRICT
+/* `out` aliases no input: without this Clang checks overlap at run time and keeps short loops scalar. */
+#ifdef __cplusplus
+#define OFFSETGEN_RESTRICT __restrict
+#else
+#define OFFSETGEN_RESTRICT restrict
+#endif
+#endif
+/* The rounding by adding and subtracting 1.5 * 2^52 needs IEEE evaluation in the declared type. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_BATCH_RINT_
+#endif
+#ifndef OFFSETGEN_BATCH_MATH_DOUBLE_V2
+#define OFFSETGEN_BATCH_MATH_DOUBLE_V2
+/* A double's bits and back (memcpy is how C and C++ both allow it; compilers emit no call). */
+static inline uint64_t offsetgen_batch_bits(double d)
 {
+    uint64_t b;
+    memcpy(&b, &d, sizeof b);
+    return b;
+}
+
+static inline double offsetgen_batch_real(uint64_t b)
+{
+    double d;
+    memcpy(&d, &b, sizeof d);
+    return d;
+}
+
+/* All ones where b > limit, else 0 (both below 2^63): the borrow of limit - b. Integer masks like
+ * this one vectorise at every SIMD level, where a select on a comparison may not. */
+static inline uint64_t offsetgen_batch_above(uint64_t b, uint64_t limit)
+{
+    return UINT64_C(0) - ((limit - b) >> 63);
+}
+
+/* sin (cosine = 0) or cos (cosine = 1) for the batch loops: Cody-Waite reduction by pi/2
+ * (three-part constant, exact for |a| < 1.0e8) and Cephes' minimax polynomials on
+ * [-pi/4, pi/4]; within 1.5 ulp of libm, the same arithmetic as offsetgen_sin/cos. Adding 1.5 * 2^52
+ * rounds a * 2/pi to an integer whose low bits are the quadrant, which picks the polynomial and the
+ * sign through bit masks: straight-line code that vectorises. Beyond the range (or for NaN and
+ * infinite a) the result is NaN, which makes the batch loop fall back to the scalar function. A sin
+ * and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sincos(double a, uint64_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const double q = rint(a * 0.63661977236758138);
+    const double t = q + 6755399441055744.0;
+#else
+    const double t = a * 0.63661977236758138 + 6755399441055744.0;
+    const double q = t - 6755399441055744.0;
+#endif
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : HUGE_VAL - HUGE_VAL;  /* NaN, as a double */
+    const uint64_t quadrant = offsetgen_batch_bits(t) + cosine;     /* cos(a) = sin(a + pi/2) */
+    const uint64_t odd = UINT64_C(0) - (quadrant & 1u);             /* odd quadrants take the other polynomial */
+    const uint64_t value = (offsetgen_batch_bits(c) & odd) | (offsetgen_batch_bits(s) & ~odd);
+    const uint64_t far = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff), UINT64_C(0x4197d78400000000));
+    return offsetgen_batch_real((value ^ ((quadrant & 2u) << 62)) | (far & UINT64_C(0x7ff8000000000000)));
 }
 
-static inline double offsetgen_batch_cos(double a)
+static inline double offsetgen_batch_sin(double a) { return offsetgen_batch_sincos(a, 0u); }
+static inline double offsetgen_batch_cos(double a) { return offsetgen_batch_sincos(a, 1u); }
+
+/* sqrt for the batch loops, without errno: the bit-level seed of 1/sqrt (3.4% off), three Newton
+ * steps (2e-11), then one Newton step on sqrt itself. Equal to sqrt but in about 1e-6 of the cases
+ * where the target has FMA (the residual is then exact), within 1 ulp otherwise (13% off by one).
+ * +-0, +inf and NaN come back as sqrt returns them, negative numbers give NaN. Subnormal inputs
+ * (below 2.2e-308, which have no usable exponent for the seed) come back within 6e-156 of their
+ * square root, not to the last bit: scaling them would cost a select and two multiplications on
+ * every call, about 5% of a loop at -O2. */
+static inline double offsetgen_batch_sqrt(double a)
 {
-    const double q = rint(a * 0.63661977236758138);
-    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
-    const double z = r * r;
-    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
-    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
-    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : HUGE_VAL - HUGE_VAL;
+    const double half = 0.5 * a;
+    const uint64_t special = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff),
+                                                   UINT64_C(0x7fefffffffffffff));  /* inf, NaN */
+    const uint64_t negative = offsetgen_batch_bits((a < 0.0) ? offsetgen_batch_real(UINT64_C(0x7ff8000000000000)) : 0.0);
+    double y = offsetgen_batch_real(UINT64_C(0x5fe6eb50c7b537a9) - (offsetgen_batch_bits(a) >> 1));
+    double s;
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5 * y) * fma(-s, s, a);  /* exact residual: sqrt's rounding */
+#else
+    s = s + (0.5 * y) * (a - s * s);
+#endif
+    return offsetgen_batch_real((offsetgen_batch_bits(s) & ~special) | (offsetgen_batch_bits(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
-#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
-#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
-/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
- * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
-static inline float offsetgen_batch_sinf(float a)
+#endif /* OFFSETGEN_BATCH_MATH_DOUBLE_V2 */
+#ifndef OFFSETGEN_BATCH_MATH_FLOAT_V2
+#define OFFSETGEN_BATCH_MATH_FLOAT_V2
+/* The float twins of the double helpers: 1.5 * 2^23 for the rounding (|a| < 8192.0), Cephes'
+ * sinf/cosf polynomials, two Newton steps for 1/sqrt (subnormal inputs, below 1.2e-38, come back
+ * within 2e-20 of their square root). */
+static inline uint32_t offsetgen_batch_bitsf(float f)
 {
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+static inline float offsetgen_batch_realf(uint32_t b)
+{
+    float f;
+    memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+static inline uint32_t offsetgen_batch_abovef(uint32_t b, uint32_t limit)
+{
+    return 0u - ((limit - b) >> 31);
+}
+
+static inline float offsetgen_batch_sincosf(float a, uint32_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const float q = rintf(a * 0.636619772f);
+    const float t = q + 12582912.0f;
+#else
+    const float t = a * 0.636619772f + 12582912.0f;
+    const float q = t - 12582912.0f;
+#endif
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
-    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+    const uint32_t quadrant = offsetgen_batch_bitsf(t) + cosine;
+    const uint32_t odd = 0u - (quadrant & 1u);
+    const uint32_t value = (offsetgen_batch_bitsf(c) & odd) | (offsetgen_batch_bitsf(s) & ~odd);
+    const uint32_t far = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x46000000u);
+    return offsetgen_batch_realf((value ^ ((quadrant & 2u) << 30)) | (far & 0x7fc00000u));
 }
 
-static inline float offsetgen_batch_cosf(float a)
+static inline float offsetgen_batch_sinf(float a) { return offsetgen_batch_sincosf(a, 0u); }
+static inline float offsetgen_batch_cosf(float a) { return offsetgen_batch_sincosf(a, 1u); }
+
+static inline float offsetgen_batch_sqrtf(float a)
 {
-    const float q = rintf(a * 0.636619772f);
-    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
-    const float z = r * r;
-    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
-    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
-    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+    const float half = 0.5f * a;
+    const uint32_t special = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x7f7fffffu);
+    const uint32_t negative = offsetgen_batch_bitsf((a < 0.0f) ? offsetgen_batch_realf(0x7fc00000u) : 0.0f);
+    float y = offsetgen_batch_realf(0x5f375a86u - (offsetgen_batch_bitsf(a) >> 1));
+    float s;
+    y = y * (1.5f - (half * y) * y);
+    y = y * (1.5f - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5f * y) * fmaf(-s, s, a);
+#else
+    s = s + (0.5f * y) * (a - s * s);
+#endif
+    return offsetgen_batch_realf((offsetgen_batch_bitsf(s) & ~special) | (offsetgen_batch_bitsf(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+#endif /* OFFSETGEN_BATCH_MATH_FLOAT_V2 */
 
 
 /* phi(p, h) of order 8: zero on the surface moved by h along +grad F.
  * Batch form of schwarzp_proj_o8_offset: out[i] = schwarzp_proj_o8_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void schwarzp_proj_o8_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+static inline void schwarzp_proj_o8_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = 6.2831853071795862 * y[i];
-        const double _t1 = offsetgen_batch_cos(_t0);
-        const double _t2 = z[i] * 6.2831853071795862;
-        const double _t3 = offsetgen_batch_sin(_t2);
-        const double _t4 = 6.2831853071795862 * h[i];
-        const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_sin(_t5);
-        const double _t7 = _t4 * _t6;
-        const double _t8 = offsetgen_batch_sin(_t0);
-        const double _t9 = _t6 * _t6 + _t3 * _t3 + _t8 * _t8;
-        const double _t10 = (_t9 > 0.0) ? 1.0 / _t9 : 0.0;
-        const double _t11 = _t7 * _t7 * _t10;
-        const int _t12 = _t11 <= 1.0;
-        const double _t13 = (_t12) ? _t11 : 1.0;
-        const double _t14 = _t13 * _t13;
-        const double _t15 = _t14 * _t14;
-        const double _t16 = sqrt(_t10);
-        const double _t17 = -(_t7 * _t16);
-        const double _t18 = offsetgen_batch_cos(_t5);
-        const double _t19 = ((_t14 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t13) + (2.4801587247292686e-05 - _t13 * 2.7557303701922228e-07)) * _t15 + (1.0 - _t13 * 0.5 + _t14 * (0.041666666666666102 - 0.0013888888888798428 * _t13))) * _t6 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t13 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t13) * _t14) * _t15 + ((0.0083333333333333003 - 0.00019841269841216566 * _t13) * _t14 + (1.0 - 0.16666666666666666 * _t13))) * ((_t12) ? _t17 : ((_t17 > 0.0) ? 1.0 : (-1.0))) * _t18;
-        const double _t20 = _t4 * _t3;
-        const double _t21 = _t20 * _t20 * _t10;
-        const int _t22 = _t21 <= 1.0;
-        const double _t23 = (_t22) ? _t21 : 1.0;
-        const double _t24 = _t23 * _t23;
-        const double _t25 = _t24 * _t24;
-        const double _t26 = -(_t20 * _t16);
-        const double _t27 = offsetgen_batch_cos(_t2);
-        const double _t28 = _t3 * ((0.041666666666666102 - 0.0013888888888798428 * _t23) * _t24 + (1.0 - _t23 * 0.5) + _t25 * (2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t23) * _t24)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) * _t24 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23)) * _t25 + ((0.0083333333333333003 - 0.00019841269841216566 * _t23) * _t24 + (1.0 - 0.16666666666666666 * _t23))) * ((_t22) ? _t26 : ((_t26 > 0.0) ? 1.0 : (-1.0))) * _t27;
-        const double _t29 = _t4 * _t8;
-        const double _t30 = _t10 * (_t29 * _t29);
-        const int _t31 = _t30 <= 1.0;
-        const double _t32 = (_t31) ? _t30 : 1.0;
-        const double _t33 = _t32 * _t32;
-        const double _t34 = _t33 * _t33;
-        const double _t35 = -(_t29 * _t16);
-        const double _t36 = (_t33 * (0.041666666666666102 - _t32 * 0.0013888888888798428) + (1.0 - _t32 * 0.5) + (2.4801587247292686e-05 - _t32 * 2.7557303701922228e-07 + _t33 * (2.0874477943664777e-09 - _t32 * 1.1304620460700782e-11)) * _t34) * _t8 - _t1 * (((_t31) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t32 * 0.16666666666666666 + (0.0083333333333333003 - _t32 * 0.00019841269841216566) * _t33 + _t34 * (2.755731919201122e-06 - _t32 * 2.5052099244914114e-08 + _t33 * (1.6057701922579786e-10 - _t32 * 7.549371704181243e-13))));
-        const double _t37 = _t19 * _t19 + _t28 * _t28 + _t36 * _t36;
-        const double _t38 = (_t37 > 0.0) ? 1.0 / _t37 : 0.0;
-        const double _t39 = _t4 * _t19;
-        const double _t40 = _t38 * (_t39 * _t39);
-        const int _t41 = _t40 <= 1.0;
-        const double _t42 = (_t41) ? _t40 : 1.0;
-        const double _t43 = _t42 * _t42;
-        const double _t44 = _t43 * _t43;
-        const double _t45 = sqrt(_t38);
-        const double _t46 = -(_t45 * _t39);
-        const double _t47 = (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t42) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07)) * _t44 + ((0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43 + (1.0 - _t42 * 0.5))) * _t6 - ((_t41) ? _t46 : ((_t46 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t42 + (0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + _t44 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43)) * _t18;
-        const double _t48 = _t36 * _t4;
-        const double _t49 = _t38 * (_t48 * _t48);
-        const int _t50 = _t49 <= 1.0;
-        const double _t51 = (_t50) ? _t49 : 1.0;
-        const double _t52 = _t51 * _t51;
-        const double _t53 = _t52 * _t52;
-        const double _t54 = -(_t48 * _t45);
-        const double _t55 = _t8 * (1.0 - _t51 * 0.5 + _t52 * (0.041666666666666102 - 0.0013888888888798428 * _t51) + (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t51 * 1.1304620460700782e-11) * _t52) * _t53) - _t1 * ((_t53 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t51 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t51) * _t52) + (1.0 - 0.16666666666666666 * _t51 + (0.0083333333333333003 - _t51 * 0.00019841269841216566) * _t52)) * ((_t50) ? _t54 : ((_t54 > 0.0) ? 1.0 : (-1.0))));
-        const double _t56 = _t28 * _t4;
-        const double _t57 = _t38 * (_t56 * _t56);
-        const int _t58 = _t57 <= 1.0;
-        const double _t59 = (_t58) ? _t57 : 1.0;
-        const double _t60 = _t59 * _t59;
-        const double _t61 = _t60 * _t60;
-        const double _t62 = -(_t56 * _t45);
-        const double _t63 = _t3 * (1.0 - _t59 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t59) * _t60 + _t61 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t59) * _t60 + (2.4801587247292686e-05 - _t59 * 2.7557303701922228e-07))) - _t27 * ((1.0 - 0.16666666666666666 * _t59 + (0.0083333333333333003 - 0.00019841269841216566 * _t59) * _t60 + _t61 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t59 + _t60 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t59))) * ((_t58) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0))));
-        const double _t64 = _t47 * _t47 + _t55 * _t55 + _t63 * _t63;
-        const double _t65 = (_t64 > 0.0) ? 1.0 / _t64 : 0.0;
-        const double _t66 = _t4 * _t63;
-        const double _t67 = _t65 * (_t66 * _t66);
-        const int _t68 = _t67 <= 1.0;
-        const double _t69 = (_t68) ? _t67 : 1.0;
-        const double _t70 = _t69 * _t69;
-        const double _t71 = _t70 * _t70;
-        const double _t72 = sqrt(_t65);
-        const double _t73 = -(_t66 * _t72);
-        const double _t74 = _t3 * (_t71 * (2.4801587247292686e-05 - _t69 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t69) * _t70) + (1.0 - _t69 * 0.5 + _t70 * (0.041666666666666102 - 0.0013888888888798428 * _t69))) - (1.0 - 0.16666666666666666 * _t69 + (0.0083333333333333003 - 0.00019841269841216566 * _t69) * _t70 + _t71 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t69) * _t70 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t69))) * ((_t68) ? _t73 : ((_t73 > 0.0) ? 1.0 : (-1.0))) * _t27;
-        const double _t75 = _t4 * _t47;
-        const double _t76 = _t75 * _t75 * _t65;
-        const int _t77 = _t76 <= 1.0;
-        const double _t78 = (_t77) ? _t76 : 1.0;
-        const double _t79 = _t78 * _t78;
-        const double _t80 = _t79 * _t79;
-        const double _t81 = -(_t75 * _t72);
-        const double _t82 = ((0.041666666666666102 - _t78 * 0.0013888888888798428) * _t79 + (1.0 - _t78 * 0.5) + _t80 * ((2.0874477943664777e-09 - _t78 * 1.1304620460700782e-11) * _t79 + (2.4801587247292686e-05 - _t78 * 2.7557303701922228e-07))) * _t6 - ((_t77) ? _t81 : ((_t81 > 0.0) ? 1.0 : (-1.0))) * (_t80 * (2.755731919201122e-06 - _t78 * 2.5052099244914114e-08 + _t79 * (1.6057701922579786e-10 - _t78 * 7.549371704181243e-13)) + (_t79 * (0.0083333333333333003 - _t78 * 0.00019841269841216566) + (1.0 - _t78 * 0.16666666666666666))) * _t18;
-        const double _t83 = _t55 * _t4;
-        const double _t84 = _t65 * (_t83 * _t83);
-        const int _t85 = _t84 <= 1.0;
-        const double _t86 = (_t85) ? _t84 : 1.0;
-        const double _t87 = _t86 * _t86;
-        const double _t88 = _t87 * _t87;
-        const double _t89 = -(_t83 * _t72);
-        const double _t90 = ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t86 + _t87 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t86)) * _t88 + (_t87 * (0.041666666666666102 - 0.0013888888888798428 * _t86) + (1.0 - 0.5 * _t86))) * _t8 - _t1 * ((_t88 * (_t87 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t86) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t86)) + (1.0 - 0.16666666666666666 * _t86 + _t87 * (0.0083333333333333003 - 0.00019841269841216566 * _t86))) * ((_t85) ? _t89 : ((_t89 > 0.0) ? 1.0 : (-1.0))));
-        const double _t91 = _t74 * _t74 + (_t82 * _t82 + _t90 * _t90);
-        const double _t92 = (_t91 > 0.0) ? 1.0 / _t91 : 0.0;
-        const double _t93 = _t90 * _t4;
-        const double _t94 = _t92 * (_t93 * _t93);
-        const int _t95 = _t94 <= 1.0;
-        const double _t96 = (_t95) ? _t94 : 1.0;
-        const double _t97 = _t96 * _t96;
-        const double _t98 = _t97 * _t97;
-        const double _t99 = sqrt(_t92);
-        const double _t100 = -(_t93 * _t99);
-        const double _t101 = _t4 * _t74;
-        const double _t102 = _t101 * _t101 * _t92;
-        const int _t103 = _t102 <= 1.0;
-        const double _t104 = (_t103) ? _t102 : 1.0;
-        const double _t105 = _t104 * _t104;
-        const double _t106 = _t105 * _t105;
-        const double _t107 = -(_t101 * _t99);
-        const double _t108 = _t4 * _t82;
-        const double _t109 = _t108 * _t108 * _t92;
-        const int _t110 = _t109 <= 1.0;
-        const double _t111 = (_t110) ? _t109 : 1.0;
-        const double _t112 = _t111 * _t111;
-        const double _t113 = _t112 * _t112;
-        const double _t114 = -(_t99 * _t108);
-        out[i] = _t1 * (_t98 * (2.4801587247292686e-05 - _t96 * 2.7557303701922228e-07 + _t97 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t96)) + ((0.041666666666666102 - 0.0013888888888798428 * _t96) * _t97 + (1.0 - _t96 * 0.5))) + ((_t95) ? _t100 : ((_t100 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t96 + (0.0083333333333333003 - 0.00019841269841216566 * _t96) * _t97 + (_t97 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t96) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t96)) * _t98) * _t8 + (_t3 * ((1.0 - _t104 * 0.16666666666666666 + _t105 * (0.0083333333333333003 - _t104 * 0.00019841269841216566) + (2.755731919201122e-06 - _t104 * 2.5052099244914114e-08 + _t105 * (1.6057701922579786e-10 - _t104 * 7.549371704181243e-13)) * _t106) * ((_t103) ? _t107 : ((_t107 > 0.0) ? 1.0 : (-1.0)))) + (1.0 - _t104 * 0.5 + _t105 * (0.041666666666666102 - _t104 * 0.0013888888888798428) + (2.4801587247292686e-05 - _t104 * 2.7557303701922228e-07 + _t105 * (2.0874477943664777e-09 - _t104 * 1.1304620460700782e-11)) * _t106) * _t27) + (_t6 * ((((1.6057701922579786e-10 - 7.549371704181243e-13 * _t111) * _t112 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t111)) * _t113 + (_t112 * (0.0083333333333333003 - 0.00019841269841216566 * _t111) + (1.0 - 0.16666666666666666 * _t111))) * ((_t110) ? _t114 : ((_t114 > 0.0) ? 1.0 : (-1.0)))) + ((_t112 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t111) + (2.4801587247292686e-05 - _t111 * 2.7557303701922228e-07)) * _t113 + ((0.041666666666666102 - 0.0013888888888798428 * _t111) * _t112 + (1.0 - _t111 * 0.5))) * _t18);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = 6.2831853071795862 * y[i + j];
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = z[i + j] * 6.2831853071795862;
+            const double _t3 = offsetgen_batch_sin(_t2);
+            const double _t4 = 6.2831853071795862 * h[i + j];
+            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t6 = offsetgen_batch_sin(_t5);
+            const double _t7 = _t4 * _t6;
+            const double _t8 = offsetgen_batch_sin(_t0);
+            const double _t9 = _t6 * _t6 + _t3 * _t3 + _t8 * _t8;
+            const double _t10 = (_t9 > 0.0) ? 1.0 / _t9 : 0.0;
+            const double _t11 = _t7 * _t7 * _t10;
+            const int _t12 = _t11 <= 1.0;
+            const double _t13 = (_t12) ? _t11 : 1.0;
+            const double _t14 = _t13 * _t13;
+            const double _t15 = _t14 * _t14;
+            const double _t16 = offsetgen_batch_sqrt(_t10);
+            const double _t17 = -(_t7 * _t16);
+            const double _t18 = offsetgen_batch_cos(_t5);
+            const double _t19 = ((_t14 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t13) + (2.4801587247292686e-05 - _t13 * 2.7557303701922228e-07)) * _t15 + (1.0 - _t13 * 0.5 + _t14 * (0.041666666666666102 - 0.0013888888888798428 * _t13))) * _t6 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t13 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t13) * _t14) * _t15 + ((0.0083333333333333003 - 0.00019841269841216566 * _t13) * _t14 + (1.0 - 0.16666666666666666 * _t13))) * ((_t12) ? _t17 : ((_t17 > 0.0) ? 1.0 : (-1.0))) * _t18;
+            const double _t20 = _t4 * _t3;
+            const double _t21 = _t20 * _t20 * _t10;
+            const int _t22 = _t21 <= 1.0;
+            const double _t23 = (_t22) ? _t21 : 1.0;
+            const double _t24 = _t23 * _t23;
+            const double _t25 = _t24 * _t24;
+            const double _t26 = -(_t20 * _t16);
+            const double _t27 = offsetgen_batch_cos(_t2);
+            const double _t28 = _t3 * ((0.041666666666666102 - 0.0013888888888798428 * _t23) * _t24 + (1.0 - _t23 * 0.5) + _t25 * (2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t23) * _t24)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) * _t24 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23)) * _t25 + ((0.0083333333333333003 - 0.00019841269841216566 * _t23) * _t24 + (1.0 - 0.16666666666666666 * _t23))) * ((_t22) ? _t26 : ((_t26 > 0.0) ? 1.0 : (-1.0))) * _t27;
+            const double _t29 = _t4 * _t8;
+            const double _t30 = _t10 * (_t29 * _t29);
+            const int _t31 = _t30 <= 1.0;
+            const double _t32 = (_t31) ? _t30 : 1.0;
+            const double _t33 = _t32 * _t32;
+            const double _t34 = _t33 * _t33;
+            const double _t35 = -(_t29 * _t16);
+            const double _t36 = (_t33 * (0.041666666666666102 - _t32 * 0.0013888888888798428) + (1.0 - _t32 * 0.5) + (2.4801587247292686e-05 - _t32 * 2.7557303701922228e-07 + _t33 * (2.0874477943664777e-09 - _t32 * 1.1304620460700782e-11)) * _t34) * _t8 - _t1 * (((_t31) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t32 * 0.16666666666666666 + (0.0083333333333333003 - _t32 * 0.00019841269841216566) * _t33 + _t34 * (2.755731919201122e-06 - _t32 * 2.5052099244914114e-08 + _t33 * (1.6057701922579786e-10 - _t32 * 7.549371704181243e-13))));
+            const double _t37 = _t19 * _t19 + _t28 * _t28 + _t36 * _t36;
+            const double _t38 = (_t37 > 0.0) ? 1.0 / _t37 : 0.0;
+            const double _t39 = _t4 * _t19;
+            const double _t40 = _t38 * (_t39 * _t39);
+            const int _t41 = _t40 <= 1.0;
+            const double _t42 = (_t41) ? _t40 : 1.0;
+            const double _t43 = _t42 * _t42;
+            const double _t44 = _t43 * _t43;
+            const double _t45 = offsetgen_batch_sqrt(_t38);
+            const double _t46 = -(_t45 * _t39);
+            const double _t47 = (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t42) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07)) * _t44 + ((0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43 + (1.0 - _t42 * 0.5))) * _t6 - ((_t41) ? _t46 : ((_t46 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t42 + (0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + _t44 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43)) * _t18;
+            const double _t48 = _t36 * _t4;
+            const double _t49 = _t38 * (_t48 * _t48);
+            const int _t50 = _t49 <= 1.0;
+            const double _t51 = (_t50) ? _t49 : 1.0;
+            const double _t52 = _t51 * _t51;
+            const double _t53 = _t52 * _t52;
+            const double _t54 = -(_t48 * _t45);
+            const double _t55 = _t8 * (1.0 - _t51 * 0.5 + _t52 * (0.041666666666666102 - 0.0013888888888798428 * _t51) + (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t51 * 1.1304620460700782e-11) * _t52) * _t53) - _t1 * ((_t53 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t51 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t51) * _t52) + (1.0 - 0.16666666666666666 * _t51 + (0.0083333333333333003 - _t51 * 0.00019841269841216566) * _t52)) * ((_t50) ? _t54 : ((_t54 > 0.0) ? 1.0 : (-1.0))));
+            const double _t56 = _t28 * _t4;
+            const double _t57 = _t38 * (_t56 * _t56);
+            const int _t58 = _t57 <= 1.0;
+            const double _t59 = (_t58) ? _t57 : 1.0;
+            const double _t60 = _t59 * _t59;
+            const double _t61 = _t60 * _t60;
+            const double _t62 = -(_t56 * _t45);
+            const double _t63 = _t3 * (1.0 - _t59 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t59) * _t60 + _t61 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t59) * _t60 + (2.4801587247292686e-05 - _t59 * 2.7557303701922228e-07))) - _t27 * ((1.0 - 0.16666666666666666 * _t59 + (0.0083333333333333003 - 0.00019841269841216566 * _t59) * _t60 + _t61 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t59 + _t60 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t59))) * ((_t58) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0))));
+            const double _t64 = _t47 * _t47 + _t55 * _t55 + _t63 * _t63;
+            const double _t65 = (_t64 > 0.0) ? 1.0 / _t64 : 0.0;
+            const double _t66 = _t4 * _t63;
+            const double _t67 = _t65 * (_t66 * _t66);
+            const int _t68 = _t67 <= 1.0;
+            const double _t69 = (_t68) ? _t67 : 1.0;
+            const double _t70 = _t69 * _t69;
+            const double _t71 = _t70 * _t70;
+            const double _t72 = offsetgen_batch_sqrt(_t65);
+            const double _t73 = -(_t66 * _t72);
+            const double _t74 = _t3 * (_t71 * (2.4801587247292686e-05 - _t69 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t69) * _t70) + (1.0 - _t69 * 0.5 + _t70 * (0.041666666666666102 - 0.0013888888888798428 * _t69))) - (1.0 - 0.16666666666666666 * _t69 + (0.0083333333333333003 - 0.00019841269841216566 * _t69) * _t70 + _t71 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t69) * _t70 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t69))) * ((_t68) ? _t73 : ((_t73 > 0.0) ? 1.0 : (-1.0))) * _t27;
+            const double _t75 = _t4 * _t47;
+            const double _t76 = _t75 * _t75 * _t65;
+            const int _t77 = _t76 <= 1.0;
+            const double _t78 = (_t77) ? _t76 : 1.0;
+            const double _t79 = _t78 * _t78;
+            const double _t80 = _t79 * _t79;
+            const double _t81 = -(_t75 * _t72);
+            const double _t82 = ((0.041666666666666102 - _t78 * 0.0013888888888798428) * _t79 + (1.0 - _t78 * 0.5) + _t80 * ((2.0874477943664777e-09 - _t78 * 1.1304620460700782e-11) * _t79 + (2.4801587247292686e-05 - _t78 * 2.7557303701922228e-07))) * _t6 - ((_t77) ? _t81 : ((_t81 > 0.0) ? 1.0 : (-1.0))) * (_t80 * (2.755731919201122e-06 - _t78 * 2.5052099244914114e-08 + _t79 * (1.6057701922579786e-10 - _t78 * 7.549371704181243e-13)) + (_t79 * (0.0083333333333333003 - _t78 * 0.00019841269841216566) + (1.0 - _t78 * 0.16666666666666666))) * _t18;
+            const double _t83 = _t55 * _t4;
+            const double _t84 = _t65 * (_t83 * _t83);
+            const int _t85 = _t84 <= 1.0;
+            const double _t86 = (_t85) ? _t84 : 1.0;
+            const double _t87 = _t86 * _t86;
+            const double _t88 = _t87 * _t87;
+            const double _t89 = -(_t83 * _t72);
+            const double _t90 = ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t86 + _t87 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t86)) * _t88 + (_t87 * (0.041666666666666102 - 0.0013888888888798428 * _t86) + (1.0 - 0.5 * _t86))) * _t8 - _t1 * ((_t88 * (_t87 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t86) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t86)) + (1.0 - 0.16666666666666666 * _t86 + _t87 * (0.0083333333333333003 - 0.00019841269841216566 * _t86))) * ((_t85) ? _t89 : ((_t89 > 0.0) ? 1.0 : (-1.0))));
+            const double _t91 = _t74 * _t74 + (_t82 * _t82 + _t90 * _t90);
+            const double _t92 = (_t91 > 0.0) ? 1.0 / _t91 : 0.0;
+            const double _t93 = _t90 * _t4;
+            const double _t94 = _t92 * (_t93 * _t93);
+            const int _t95 = _t94 <= 1.0;
+            const double _t96 = (_t95) ? _t94 : 1.0;
+            const double _t97 = _t96 * _t96;
+            const double _t98 = _t97 * _t97;
+            const double _t99 = offsetgen_batch_sqrt(_t92);
+            const double _t100 = -(_t93 * _t99);
+            const double _t101 = _t4 * _t74;
+            const double _t102 = _t101 * _t101 * _t92;
+            const int _t103 = _t102 <= 1.0;
+            const double _t104 = (_t103) ? _t102 : 1.0;
+            const double _t105 = _t104 * _t104;
+            const double _t106 = _t105 * _t105;
+            const double _t107 = -(_t101 * _t99);
+            const double _t108 = _t4 * _t82;
+            const double _t109 = _t108 * _t108 * _t92;
+            const int _t110 = _t109 <= 1.0;
+            const double _t111 = (_t110) ? _t109 : 1.0;
+            const double _t112 = _t111 * _t111;
+            const double _t113 = _t112 * _t112;
+            const double _t114 = -(_t99 * _t108);
+            out[i + j] = _t1 * (_t98 * (2.4801587247292686e-05 - _t96 * 2.7557303701922228e-07 + _t97 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t96)) + ((0.041666666666666102 - 0.0013888888888798428 * _t96) * _t97 + (1.0 - _t96 * 0.5))) + ((_t95) ? _t100 : ((_t100 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t96 + (0.0083333333333333003 - 0.00019841269841216566 * _t96) * _t97 + (_t97 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t96) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t96)) * _t98) * _t8 + (_t3 * ((1.0 - _t104 * 0.16666666666666666 + _t105 * (0.0083333333333333003 - _t104 * 0.00019841269841216566) + (2.755731919201122e-06 - _t104 * 2.5052099244914114e-08 + _t105 * (1.6057701922579786e-10 - _t104 * 7.549371704181243e-13)) * _t106) * ((_t103) ? _t107 : ((_t107 > 0.0) ? 1.0 : (-1.0)))) + (1.0 - _t104 * 0.5 + _t105 * (0.041666666666666102 - _t104 * 0.0013888888888798428) + (2.4801587247292686e-05 - _t104 * 2.7557303701922228e-07 + _t105 * (2.0874477943664777e-09 - _t104 * 1.1304620460700782e-11)) * _t106) * _t27) + (_t6 * ((((1.6057701922579786e-10 - 7.549371704181243e-13 * _t111) * _t112 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t111)) * _t113 + (_t112 * (0.0083333333333333003 - 0.00019841269841216566 * _t111) + (1.0 - 0.16666666666666666 * _t111))) * ((_t110) ? _t114 : ((_t114 > 0.0) ? 1.0 : (-1.0)))) + ((_t112 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t111) + (2.4801587247292686e-05 - _t111 * 2.7557303701922228e-07)) * _t113 + ((0.041666666666666102 - 0.0013888888888798428 * _t111) * _t112 + (1.0 - _t111 * 0.5))) * _t18);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_proj_o8_offset(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = schwarzp_proj_o8_offset(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of schwarzp_proj_o8_shell: out[i] = schwarzp_proj_o8_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void schwarzp_proj_o8_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+static inline void schwarzp_proj_o8_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_sin(_t0);
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_sin(_t2);
-        const double _t4 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t5 = _t3 * _t4;
-        const double _t6 = 6.2831853071795862 * x[i];
-        const double _t7 = offsetgen_batch_sin(_t6);
-        const double _t8 = _t7 * _t7 + _t1 * _t1 + _t3 * _t3;
-        const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-        const double _t10 = _t5 * _t5 * _t9;
-        const int _t11 = _t10 <= 1.0;
-        const double _t12 = (_t11) ? _t10 : 1.0;
-        const double _t13 = _t12 * _t12;
-        const double _t14 = _t13 * _t13;
-        const double _t15 = (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - _t12 * 0.0013888888888798428) + _t14 * ((2.0874477943664777e-09 - _t12 * 1.1304620460700782e-11) * _t13 + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07))) * _t3;
-        const double _t16 = offsetgen_batch_cos(_t2);
-        const double _t17 = 1.0 - _t12 * 0.16666666666666666 + (0.0083333333333333003 - _t12 * 0.00019841269841216566) * _t13 + _t14 * (_t13 * (1.6057701922579786e-10 - _t12 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t12 * 2.5052099244914114e-08));
-        const double _t18 = sqrt(_t9);
-        const double _t19 = _t5 * _t18;
-        const double _t20 = _t15 - _t16 * (_t17 * ((_t11) ? _t19 : ((_t19 > 0.0) ? 1.0 : (-1.0))));
-        const double _t21 = _t20 * _t4;
-        const double _t22 = _t4 * _t7;
-        const double _t23 = _t22 * _t22 * _t9;
-        const int _t24 = _t23 <= 1.0;
-        const double _t25 = (_t24) ? _t23 : 1.0;
-        const double _t26 = _t25 * _t25;
-        const double _t27 = _t26 * _t26;
-        const double _t28 = ((2.4801587247292686e-05 - _t25 * 2.7557303701922228e-07 + _t26 * (2.0874477943664777e-09 - _t25 * 1.1304620460700782e-11)) * _t27 + (_t26 * (0.041666666666666102 - 0.0013888888888798428 * _t25) + (1.0 - _t25 * 0.5))) * _t7;
-        const double _t29 = _t22 * _t18;
-        const double _t30 = (_t26 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t25) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t25)) * _t27 + ((0.0083333333333333003 - _t25 * 0.00019841269841216566) * _t26 + (1.0 - 0.16666666666666666 * _t25));
-        const double _t31 = offsetgen_batch_cos(_t6);
-        const double _t32 = _t28 - ((_t24) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0))) * _t30 * _t31;
-        const double _t33 = _t1 * _t4;
-        const double _t34 = _t33 * _t33 * _t9;
-        const int _t35 = _t34 <= 1.0;
-        const double _t36 = (_t35) ? _t34 : 1.0;
-        const double _t37 = _t36 * _t36;
-        const double _t38 = _t37 * _t37;
-        const double _t39 = (((2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11) * _t37 + (2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07)) * _t38 + (1.0 - _t36 * 0.5 + (0.041666666666666102 - _t36 * 0.0013888888888798428) * _t37)) * _t1;
-        const double _t40 = offsetgen_batch_cos(_t0);
-        const double _t41 = _t33 * _t18;
-        const double _t42 = _t37 * (0.0083333333333333003 - _t36 * 0.00019841269841216566) + (1.0 - _t36 * 0.16666666666666666) + (2.755731919201122e-06 - _t36 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t36 * 7.549371704181243e-13) * _t37) * _t38;
-        const double _t43 = _t39 - _t40 * (((_t35) ? _t41 : ((_t41 > 0.0) ? 1.0 : (-1.0))) * _t42);
-        const double _t44 = _t32 * _t32 + _t20 * _t20 + _t43 * _t43;
-        const double _t45 = (_t44 > 0.0) ? 1.0 / _t44 : 0.0;
-        const double _t46 = _t21 * _t21 * _t45;
-        const int _t47 = _t46 <= 1.0;
-        const double _t48 = (_t47) ? _t46 : 1.0;
-        const double _t49 = _t48 * _t48;
-        const double _t50 = _t49 * _t49;
-        const double _t51 = sqrt(_t45);
-        const double _t52 = _t51 * _t21;
-        const double _t53 = ((2.4801587247292686e-05 - _t48 * 2.7557303701922228e-07 + _t49 * (2.0874477943664777e-09 - _t48 * 1.1304620460700782e-11)) * _t50 + (1.0 - _t48 * 0.5 + _t49 * (0.041666666666666102 - _t48 * 0.0013888888888798428))) * _t3 - ((_t49 * (1.6057701922579786e-10 - _t48 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t48 * 2.5052099244914114e-08)) * _t50 + (1.0 - _t48 * 0.16666666666666666 + _t49 * (0.0083333333333333003 - _t48 * 0.00019841269841216566))) * ((_t47) ? _t52 : ((_t52 > 0.0) ? 1.0 : (-1.0))) * _t16;
-        const double _t54 = _t43 * _t4;
-        const double _t55 = _t54 * _t54 * _t45;
-        const int _t56 = _t55 <= 1.0;
-        const double _t57 = (_t56) ? _t55 : 1.0;
-        const double _t58 = _t57 * _t57;
-        const double _t59 = _t58 * _t58;
-        const double _t60 = _t54 * _t51;
-        const double _t61 = _t1 * (_t58 * (0.041666666666666102 - 0.0013888888888798428 * _t57) + (1.0 - _t57 * 0.5) + (_t58 * (2.0874477943664777e-09 - _t57 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)) * _t59) - (_t58 * (0.0083333333333333003 - _t57 * 0.00019841269841216566) + (1.0 - _t57 * 0.16666666666666666) + _t59 * (_t58 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57) + (2.755731919201122e-06 - _t57 * 2.5052099244914114e-08))) * ((_t56) ? _t60 : ((_t60 > 0.0) ? 1.0 : (-1.0))) * _t40;
-        const double _t62 = _t32 * _t4;
-        const double _t63 = _t62 * _t62 * _t45;
-        const int _t64 = _t63 <= 1.0;
-        const double _t65 = (_t64) ? _t63 : 1.0;
-        const double _t66 = _t65 * _t65;
-        const double _t67 = _t66 * _t66;
-        const double _t68 = _t62 * _t51;
-        const double _t69 = (_t67 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t65 + _t66 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t65)) + (1.0 - _t65 * 0.5 + _t66 * (0.041666666666666102 - 0.0013888888888798428 * _t65))) * _t7 - ((0.0083333333333333003 - 0.00019841269841216566 * _t65) * _t66 + (1.0 - 0.16666666666666666 * _t65) + _t67 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t65 + _t66 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t65))) * ((_t64) ? _t68 : ((_t68 > 0.0) ? 1.0 : (-1.0))) * _t31;
-        const double _t70 = _t53 * _t53 + _t61 * _t61 + _t69 * _t69;
-        const double _t71 = (_t70 > 0.0) ? 1.0 / _t70 : 0.0;
-        const double _t72 = _t61 * _t4;
-        const double _t73 = _t71 * (_t72 * _t72);
-        const int _t74 = _t73 <= 1.0;
-        const double _t75 = (_t74) ? _t73 : 1.0;
-        const double _t76 = _t75 * _t75;
-        const double _t77 = _t76 * _t76;
-        const double _t78 = sqrt(_t71);
-        const double _t79 = _t78 * _t72;
-        const double _t80 = _t1 * ((0.041666666666666102 - _t75 * 0.0013888888888798428) * _t76 + (1.0 - _t75 * 0.5) + _t77 * (2.4801587247292686e-05 - _t75 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t75 * 1.1304620460700782e-11) * _t76)) - _t40 * (((_t74) ? _t79 : ((_t79 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t75 * 0.16666666666666666 + (0.0083333333333333003 - _t75 * 0.00019841269841216566) * _t76 + _t77 * (2.755731919201122e-06 - _t75 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t75 * 7.549371704181243e-13) * _t76)));
-        const double _t81 = _t80 * _t4;
-        const double _t82 = _t53 * _t4;
-        const double _t83 = _t82 * _t82 * _t71;
-        const int _t84 = _t83 <= 1.0;
-        const double _t85 = (_t84) ? _t83 : 1.0;
-        const double _t86 = _t85 * _t85;
-        const double _t87 = _t86 * _t86;
-        const double _t88 = _t78 * _t82;
-        const double _t89 = (1.0 - _t85 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t85) * _t86 + _t87 * (2.4801587247292686e-05 - _t85 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t85) * _t86)) * _t3 - ((0.0083333333333333003 - 0.00019841269841216566 * _t85) * _t86 + (1.0 - 0.16666666666666666 * _t85) + _t87 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t85 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t85) * _t86)) * ((_t84) ? _t88 : ((_t88 > 0.0) ? 1.0 : (-1.0))) * _t16;
-        const double _t90 = _t69 * _t4;
-        const double _t91 = _t90 * _t90 * _t71;
-        const int _t92 = _t91 <= 1.0;
-        const double _t93 = (_t92) ? _t91 : 1.0;
-        const double _t94 = _t93 * _t93;
-        const double _t95 = _t94 * _t94;
-        const double _t96 = _t90 * _t78;
-        const double _t97 = (_t95 * (2.4801587247292686e-05 - _t93 * 2.7557303701922228e-07 + _t94 * (2.0874477943664777e-09 - _t93 * 1.1304620460700782e-11)) + (1.0 - _t93 * 0.5 + _t94 * (0.041666666666666102 - _t93 * 0.0013888888888798428))) * _t7 - (1.0 - _t93 * 0.16666666666666666 + (0.0083333333333333003 - _t93 * 0.00019841269841216566) * _t94 + (2.755731919201122e-06 - _t93 * 2.5052099244914114e-08 + _t94 * (1.6057701922579786e-10 - _t93 * 7.549371704181243e-13)) * _t95) * ((_t92) ? _t96 : ((_t96 > 0.0) ? 1.0 : (-1.0))) * _t31;
-        const double _t98 = _t89 * _t89 + _t80 * _t80 + _t97 * _t97;
-        const double _t99 = (_t98 > 0.0) ? 1.0 / _t98 : 0.0;
-        const double _t100 = _t81 * _t81 * _t99;
-        const int _t101 = _t100 <= 1.0;
-        const double _t102 = (_t101) ? _t100 : 1.0;
-        const double _t103 = _t102 * _t102;
-        const double _t104 = _t103 * _t103;
-        const double _t105 = sqrt(_t99);
-        const double _t106 = _t81 * _t105;
-        const double _t107 = _t4 * _t89;
-        const double _t108 = _t107 * _t107 * _t99;
-        const int _t109 = _t108 <= 1.0;
-        const double _t110 = _t107 * _t105;
-        const double _t111 = (_t109) ? _t108 : 1.0;
-        const double _t112 = _t111 * _t111;
-        const double _t113 = _t112 * _t112;
-        const double _t114 = _t97 * _t4;
-        const double _t115 = _t114 * _t114 * _t99;
-        const int _t116 = _t115 <= 1.0;
-        const double _t117 = (_t116) ? _t115 : 1.0;
-        const double _t118 = _t117 * _t117;
-        const double _t119 = _t118 * _t118;
-        const double _t120 = _t105 * _t114;
-        const double _t121 = -_t19;
-        const double _t122 = _t15 - _t16 * (((_t11) ? _t121 : ((_t121 > 0.0) ? 1.0 : (-1.0))) * _t17);
-        const double _t123 = -_t41;
-        const double _t124 = _t39 - ((_t35) ? _t123 : ((_t123 > 0.0) ? 1.0 : (-1.0))) * _t42 * _t40;
-        const double _t125 = -_t29;
-        const double _t126 = _t28 - ((_t24) ? _t125 : ((_t125 > 0.0) ? 1.0 : (-1.0))) * _t30 * _t31;
-        const double _t127 = _t122 * _t122 + _t124 * _t124 + _t126 * _t126;
-        const double _t128 = (_t127 > 0.0) ? 1.0 / _t127 : 0.0;
-        const double _t129 = _t126 * _t4;
-        const double _t130 = _t128 * (_t129 * _t129);
-        const int _t131 = _t130 <= 1.0;
-        const double _t132 = (_t131) ? _t130 : 1.0;
-        const double _t133 = _t132 * _t132;
-        const double _t134 = _t133 * _t133;
-        const double _t135 = sqrt(_t128);
-        const double _t136 = -(_t129 * _t135);
-        const double _t137 = _t7 * (1.0 - _t132 * 0.5 + (0.041666666666666102 - _t132 * 0.0013888888888798428) * _t133 + _t134 * (_t133 * (2.0874477943664777e-09 - _t132 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t132 * 2.7557303701922228e-07))) - _t31 * ((1.0 - _t132 * 0.16666666666666666 + (0.0083333333333333003 - _t132 * 0.00019841269841216566) * _t133 + _t134 * (2.755731919201122e-06 - _t132 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t132 * 7.549371704181243e-13) * _t133)) * ((_t131) ? _t136 : ((_t136 > 0.0) ? 1.0 : (-1.0))));
-        const double _t138 = _t122 * _t4;
-        const double _t139 = _t128 * (_t138 * _t138);
-        const int _t140 = _t139 <= 1.0;
-        const double _t141 = (_t140) ? _t139 : 1.0;
-        const double _t142 = _t141 * _t141;
-        const double _t143 = _t142 * _t142;
-        const double _t144 = -(_t138 * _t135);
-        const double _t145 = (1.0 - _t141 * 0.5 + (0.041666666666666102 - _t141 * 0.0013888888888798428) * _t142 + (2.4801587247292686e-05 - _t141 * 2.7557303701922228e-07 + _t142 * (2.0874477943664777e-09 - _t141 * 1.1304620460700782e-11)) * _t143) * _t3 - _t16 * (((0.0083333333333333003 - _t141 * 0.00019841269841216566) * _t142 + (1.0 - _t141 * 0.16666666666666666) + (2.755731919201122e-06 - _t141 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t141 * 7.549371704181243e-13) * _t142) * _t143) * ((_t140) ? _t144 : ((_t144 > 0.0) ? 1.0 : (-1.0))));
-        const double _t146 = _t124 * _t4;
-        const double _t147 = _t128 * (_t146 * _t146);
-        const int _t148 = _t147 <= 1.0;
-        const double _t149 = (_t148) ? _t147 : 1.0;
-        const double _t150 = _t149 * _t149;
-        const double _t151 = _t150 * _t150;
-        const double _t152 = -(_t146 * _t135);
-        const double _t153 = _t1 * ((_t150 * (2.0874477943664777e-09 - _t149 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t149 * 2.7557303701922228e-07)) * _t151 + (1.0 - _t149 * 0.5 + (0.041666666666666102 - _t149 * 0.0013888888888798428) * _t150)) - _t40 * (((2.755731919201122e-06 - _t149 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t149 * 7.549371704181243e-13) * _t150) * _t151 + (1.0 - _t149 * 0.16666666666666666 + (0.0083333333333333003 - _t149 * 0.00019841269841216566) * _t150)) * ((_t148) ? _t152 : ((_t152 > 0.0) ? 1.0 : (-1.0))));
-        const double _t154 = _t137 * _t137 + _t145 * _t145 + _t153 * _t153;
-        const double _t155 = (_t154 > 0.0) ? 1.0 / _t154 : 0.0;
-        const double _t156 = _t4 * _t137;
-        const double _t157 = _t155 * (_t156 * _t156);
-        const int _t158 = _t157 <= 1.0;
-        const double _t159 = (_t158) ? _t157 : 1.0;
-        const double _t160 = _t159 * _t159;
-        const double _t161 = _t160 * _t160;
-        const double _t162 = sqrt(_t155);
-        const double _t163 = -(_t156 * _t162);
-        const double _t164 = ((2.4801587247292686e-05 - _t159 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t159 * 1.1304620460700782e-11) * _t160) * _t161 + (1.0 - _t159 * 0.5 + _t160 * (0.041666666666666102 - 0.0013888888888798428 * _t159))) * _t7 - (_t161 * (_t160 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t159) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t159)) + (1.0 - 0.16666666666666666 * _t159 + (0.0083333333333333003 - 0.00019841269841216566 * _t159) * _t160)) * ((_t158) ? _t163 : ((_t163 > 0.0) ? 1.0 : (-1.0))) * _t31;
-        const double _t165 = _t4 * _t153;
-        const double _t166 = _t165 * _t165 * _t155;
-        const int _t167 = _t166 <= 1.0;
-        const double _t168 = (_t167) ? _t166 : 1.0;
-        const double _t169 = _t168 * _t168;
-        const double _t170 = _t169 * _t169;
-        const double _t171 = -(_t162 * _t165);
-        const double _t172 = _t1 * ((_t169 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t168) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t168)) * _t170 + (1.0 - _t168 * 0.5 + _t169 * (0.041666666666666102 - 0.0013888888888798428 * _t168))) - _t40 * (((_t167) ? _t171 : ((_t171 > 0.0) ? 1.0 : (-1.0))) * (_t169 * (0.0083333333333333003 - 0.00019841269841216566 * _t168) + (1.0 - 0.16666666666666666 * _t168) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t168) * _t169 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t168)) * _t170));
-        const double _t173 = _t4 * _t145;
-        const double _t174 = _t173 * _t173 * _t155;
-        const int _t175 = _t174 <= 1.0;
-        const double _t176 = (_t175) ? _t174 : 1.0;
-        const double _t177 = _t176 * _t176;
-        const double _t178 = _t177 * _t177;
-        const double _t179 = -(_t162 * _t173);
-        const double _t180 = ((0.041666666666666102 - _t176 * 0.0013888888888798428) * _t177 + (1.0 - _t176 * 0.5) + (_t177 * (2.0874477943664777e-09 - _t176 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t176 * 2.7557303701922228e-07)) * _t178) * _t3 - _t16 * (((_t175) ? _t179 : ((_t179 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - _t176 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t176 * 7.549371704181243e-13) * _t177) * _t178 + ((0.0083333333333333003 - _t176 * 0.00019841269841216566) * _t177 + (1.0 - _t176 * 0.16666666666666666))));
-        const double _t181 = _t164 * _t164 + _t172 * _t172 + _t180 * _t180;
-        const double _t182 = (_t181 > 0.0) ? 1.0 / _t181 : 0.0;
-        const double _t183 = _t172 * _t4;
-        const double _t184 = _t182 * (_t183 * _t183);
-        const int _t185 = _t184 <= 1.0;
-        const double _t186 = (_t185) ? _t184 : 1.0;
-        const double _t187 = _t186 * _t186;
-        const double _t188 = _t187 * _t187;
-        const double _t189 = sqrt(_t182);
-        const double _t190 = -(_t189 * _t183);
-        const double _t191 = _t180 * _t4;
-        const double _t192 = _t182 * (_t191 * _t191);
-        const int _t193 = _t192 <= 1.0;
-        const double _t194 = (_t193) ? _t192 : 1.0;
-        const double _t195 = _t194 * _t194;
-        const double _t196 = _t195 * _t195;
-        const double _t197 = -(_t191 * _t189);
-        const double _t198 = _t164 * _t4;
-        const double _t199 = _t198 * _t198 * _t182;
-        const int _t200 = _t199 <= 1.0;
-        const double _t201 = (_t200) ? _t199 : 1.0;
-        const double _t202 = _t201 * _t201;
-        const double _t203 = _t202 * _t202;
-        const double _t204 = -(_t189 * _t198);
-        out[i] = (((2.4801587247292686e-05 - _t102 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t102 * 1.1304620460700782e-11) * _t103) * _t104 + (1.0 - _t102 * 0.5 + _t103 * (0.041666666666666102 - _t102 * 0.0013888888888798428))) * _t40 + _t1 * ((_t103 * (0.0083333333333333003 - _t102 * 0.00019841269841216566) + (1.0 - _t102 * 0.16666666666666666) + (2.755731919201122e-06 - _t102 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t102 * 7.549371704181243e-13) * _t103) * _t104) * ((_t101) ? _t106 : ((_t106 > 0.0) ? 1.0 : (-1.0)))) + (_t3 * (((_t109) ? _t110 : ((_t110 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t111 + _t112 * (0.0083333333333333003 - 0.00019841269841216566 * _t111) + (_t112 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t111) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t111)) * _t113)) + _t16 * (_t113 * (2.4801587247292686e-05 - _t111 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t111 * 1.1304620460700782e-11) * _t112) + (_t112 * (0.041666666666666102 - 0.0013888888888798428 * _t111) + (1.0 - _t111 * 0.5)))) + ((_t118 * (0.0083333333333333003 - _t117 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t117) + (_t118 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t117) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t117)) * _t119) * ((_t116) ? _t120 : ((_t120 > 0.0) ? 1.0 : (-1.0))) * _t7 + (1.0 - _t117 * 0.5 + _t118 * (0.041666666666666102 - 0.0013888888888798428 * _t117) + (2.4801587247292686e-05 - _t117 * 2.7557303701922228e-07 + _t118 * (2.0874477943664777e-09 - _t117 * 1.1304620460700782e-11)) * _t119) * _t31)) * (_t40 * ((_t187 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t186) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t186)) * _t188 + (1.0 - 0.5 * _t186 + _t187 * (0.041666666666666102 - 0.0013888888888798428 * _t186))) + _t1 * (((_t185) ? _t190 : ((_t190 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t186 + _t187 * (0.0083333333333333003 - 0.00019841269841216566 * _t186) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t186 + _t187 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t186)) * _t188)) + (_t16 * (_t195 * (0.041666666666666102 - 0.0013888888888798428 * _t194) + (1.0 - _t194 * 0.5) + _t196 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t194 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t194) * _t195)) + ((_t193) ? _t197 : ((_t197 > 0.0) ? 1.0 : (-1.0))) * (_t196 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t194) * _t195 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t194)) + (_t195 * (0.0083333333333333003 - 0.00019841269841216566 * _t194) + (1.0 - 0.16666666666666666 * _t194))) * _t3 + ((1.0 - _t201 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t201) * _t202 + (2.4801587247292686e-05 - _t201 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t201 * 1.1304620460700782e-11) * _t202) * _t203) * _t31 + _t7 * (((_t200) ? _t204 : ((_t204 > 0.0) ? 1.0 : (-1.0))) * (_t203 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t201 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t201) * _t202) + (1.0 - 0.16666666666666666 * _t201 + (0.0083333333333333003 - _t201 * 0.00019841269841216566) * _t202))))));
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_sin(_t0);
+            const double _t2 = 6.2831853071795862 * y[i + j];
+            const double _t3 = offsetgen_batch_sin(_t2);
+            const double _t4 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t5 = _t3 * _t4;
+            const double _t6 = 6.2831853071795862 * x[i + j];
+            const double _t7 = offsetgen_batch_sin(_t6);
+            const double _t8 = _t7 * _t7 + _t1 * _t1 + _t3 * _t3;
+            const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
+            const double _t10 = _t5 * _t5 * _t9;
+            const int _t11 = _t10 <= 1.0;
+            const double _t12 = (_t11) ? _t10 : 1.0;
+            const double _t13 = _t12 * _t12;
+            const double _t14 = _t13 * _t13;
+            const double _t15 = (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - _t12 * 0.0013888888888798428) + _t14 * ((2.0874477943664777e-09 - _t12 * 1.1304620460700782e-11) * _t13 + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07))) * _t3;
+            const double _t16 = offsetgen_batch_cos(_t2);
+            const double _t17 = 1.0 - _t12 * 0.16666666666666666 + (0.0083333333333333003 - _t12 * 0.00019841269841216566) * _t13 + _t14 * (_t13 * (1.6057701922579786e-10 - _t12 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t12 * 2.5052099244914114e-08));
+            const double _t18 = offsetgen_batch_sqrt(_t9);
+            const double _t19 = _t5 * _t18;
+            const double _t20 = _t15 - _t16 * (_t17 * ((_t11) ? _t19 : ((_t19 > 0.0) ? 1.0 : (-1.0))));
+            const double _t21 = _t20 * _t4;
+            const double _t22 = _t4 * _t7;
+            const double _t23 = _t22 * _t22 * _t9;
+            const int _t24 = _t23 <= 1.0;
+            const double _t25 = (_t24) ? _t23 : 1.0;
+            const double _t26 = _t25 * _t25;
+            const double _t27 = _t26 * _t26;
+            const double _t28 = ((2.4801587247292686e-05 - _t25 * 2.7557303701922228e-07 + _t26 * (2.0874477943664777e-09 - _t25 * 1.1304620460700782e-11)) * _t27 + (_t26 * (0.041666666666666102 - 0.0013888888888798428 * _t25) + (1.0 - _t25 * 0.5))) * _t7;
+            const double _t29 = _t22 * _t18;
+            const double _t30 = (_t26 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t25) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t25)) * _t27 + ((0.0083333333333333003 - _t25 * 0.00019841269841216566) * _t26 + (1.0 - 0.16666666666666666 * _t25));
+            const double _t31 = offsetgen_batch_cos(_t6);
+            const double _t32 = _t28 - ((_t24) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0))) * _t30 * _t31;
+            const double _t33 = _t1 * _t4;
+            const double _t34 = _t33 * _t33 * _t9;
+            const int _t35 = _t34 <= 1.0;
+            const double _t36 = (_t35) ? _t34 : 1.0;
+            const double _t37 = _t36 * _t36;
+            const double _t38 = _t37 * _t37;
+            const double _t39 = (((2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11) * _t37 + (2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07)) * _t38 + (1.0 - _t36 * 0.5 + (0.041666666666666102 - _t36 * 0.0013888888888798428) * _t37)) * _t1;
+            const double _t40 = offsetgen_batch_cos(_t0);
+            const double _t41 = _t33 * _t18;
+            const double _t42 = _t37 * (0.0083333333333333003 - _t36 * 0.00019841269841216566) + (1.0 - _t36 * 0.16666666666666666) + (2.755731919201122e-06 - _t36 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t36 * 7.549371704181243e-13) * _t37) * _t38;
+            const double _t43 = _t39 - _t40 * (((_t35) ? _t41 : ((_t41 > 0.0) ? 1.0 : (-1.0))) * _t42);
+            const double _t44 = _t32 * _t32 + _t20 * _t20 + _t43 * _t43;
+            const double _t45 = (_t44 > 0.0) ? 1.0 / _t44 : 0.0;
+            const double _t46 = _t21 * _t21 * _t45;
+            const int _t47 = _t46 <= 1.0;
+            const double _t48 = (_t47) ? _t46 : 1.0;
+            const double _t49 = _t48 * _t48;
+            const double _t50 = _t49 * _t49;
+            const double _t51 = offsetgen_batch_sqrt(_t45);
+            const double _t52 = _t51 * _t21;
+            const double _t53 = ((2.4801587247292686e-05 - _t48 * 2.7557303701922228e-07 + _t49 * (2.0874477943664777e-09 - _t48 * 1.1304620460700782e-11)) * _t50 + (1.0 - _t48 * 0.5 + _t49 * (0.041666666666666102 - _t48 * 0.0013888888888798428))) * _t3 - ((_t49 * (1.6057701922579786e-10 - _t48 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t48 * 2.5052099244914114e-08)) * _t50 + (1.0 - _t48 * 0.16666666666666666 + _t49 * (0.0083333333333333003 - _t48 * 0.00019841269841216566))) * ((_t47) ? _t52 : ((_t52 > 0.0) ? 1.0 : (-1.0))) * _t16;
+            const double _t54 = _t43 * _t4;
+            const double _t55 = _t54 * _t54 * _t45;
+            const int _t56 = _t55 <= 1.0;
+            const double _t57 = (_t56) ? _t55 : 1.0;
+            const double _t58 = _t57 * _t57;
+            const double _t59 = _t58 * _t58;
+            const double _t60 = _t54 * _t51;
+            const double _t61 = _t1 * (_t58 * (0.041666666666666102 - 0.0013888888888798428 * _t57) + (1.0 - _t57 * 0.5) + (_t58 * (2.0874477943664777e-09 - _t57 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)) * _t59) - (_t58 * (0.0083333333333333003 - _t57 * 0.00019841269841216566) + (1.0 - _t57 * 0.16666666666666666) + _t59 * (_t58 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57) + (2.755731919201122e-06 - _t57 * 2.5052099244914114e-08))) * ((_t56) ? _t60 : ((_t60 > 0.0) ? 1.0 : (-1.0))) * _t40;
+            const double _t62 = _t32 * _t4;
+            const double _t63 = _t62 * _t62 * _t45;
+            const int _t64 = _t63 <= 1.0;
+            const double _t65 = (_t64) ? _t63 : 1.0;
+            const double _t66 = _t65 * _t65;
+            const double _t67 = _t66 * _t66;
+            const double _t68 = _t62 * _t51;
+            const double _t69 = (_t67 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t65 + _t66 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t65)) + (1.0 - _t65 * 0.5 + _t66 * (0.041666666666666102 - 0.0013888888888798428 * _t65))) * _t7 - ((0.0083333333333333003 - 0.00019841269841216566 * _t65) * _t66 + (1.0 - 0.16666666666666666 * _t65) + _t67 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t65 + _t66 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t65))) * ((_t64) ? _t68 : ((_t68 > 0.0) ? 1.0 : (-1.0))) * _t31;
+            const double _t70 = _t53 * _t53 + _t61 * _t61 + _t69 * _t69;
+            const double _t71 = (_t70 > 0.0) ? 1.0 / _t70 : 0.0;
+            const double _t72 = _t61 * _t4;
+            const double _t73 = _t71 * (_t72 * _t72);
+            const int _t74 = _t73 <= 1.0;
+            const double _t75 = (_t74) ? _t73 : 1.0;
+            const double _t76 = _t75 * _t75;
+            const double _t77 = _t76 * _t76;
+            const double _t78 = offsetgen_batch_sqrt(_t71);
+            const double _t79 = _t78 * _t72;
+            const double _t80 = _t1 * ((0.041666666666666102 - _t75 * 0.0013888888888798428) * _t76 + (1.0 - _t75 * 0.5) + _t77 * (2.4801587247292686e-05 - _t75 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t75 * 1.1304620460700782e-11) * _t76)) - _t40 * (((_t74) ? _t79 : ((_t79 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t75 * 0.16666666666666666 + (0.0083333333333333003 - _t75 * 0.00019841269841216566) * _t76 + _t77 * (2.755731919201122e-06 - _t75 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t75 * 7.549371704181243e-13) * _t76)));
+            const double _t81 = _t80 * _t4;
+            const double _t82 = _t53 * _t4;
+            const double _t83 = _t82 * _t82 * _t71;
+            const int _t84 = _t83 <= 1.0;
+            const double _t85 = (_t84) ? _t83 : 1.0;
+            const double _t86 = _t85 * _t85;
+            const double _t87 = _t86 * _t86;
+            const double _t88 = _t78 * _t82;
+            const double _t89 = (1.0 - _t85 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t85) * _t86 + _t87 * (2.4801587247292686e-05 - _t85 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t85) * _t86)) * _t3 - ((0.0083333333333333003 - 0.00019841269841216566 * _t85) * _t86 + (1.0 - 0.16666666666666666 * _t85) + _t87 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t85 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t85) * _t86)) * ((_t84) ? _t88 : ((_t88 > 0.0) ? 1.0 : (-1.0))) * _t16;
+            const double _t90 = _t69 * _t4;
+            const double _t91 = _t90 * _t90 * _t71;
+            const int _t92 = _t91 <= 1.0;
+            const double _t93 = (_t92) ? _t91 : 1.0;
+            const double _t94 = _t93 * _t93;
+            const double _t95 = _t94 * _t94;
+            const double _t96 = _t90 * _t78;
+            const double _t97 = (_t95 * (2.4801587247292686e-05 - _t93 * 2.7557303701922228e-07 + _t94 * (2.0874477943664777e-09 - _t93 * 1.1304620460700782e-11)) + (1.0 - _t93 * 0.5 + _t94 * (0.041666666666666102 - _t93 * 0.0013888888888798428))) * _t7 - (1.0 - _t93 * 0.16666666666666666 + (0.0083333333333333003 - _t93 * 0.00019841269841216566) * _t94 + (2.755731919201122e-06 - _t93 * 2.5052099244914114e-08 + _t94 * (1.6057701922579786e-10 - _t93 * 7.549371704181243e-13)) * _t95) * ((_t92) ? _t96 : ((_t96 > 0.0) ? 1.0 : (-1.0))) * _t31;
+            const double _t98 = _t89 * _t89 + _t80 * _t80 + _t97 * _t97;
+            const double _t99 = (_t98 > 0.0) ? 1.0 / _t98 : 0.0;
+            const double _t100 = _t81 * _t81 * _t99;
+            const int _t101 = _t100 <= 1.0;
+            const double _t102 = (_t101) ? _t100 : 1.0;
+            const double _t103 = _t102 * _t102;
+            const double _t104 = _t103 * _t103;
+            const double _t105 = offsetgen_batch_sqrt(_t99);
+            const double _t106 = _t81 * _t105;
+            const double _t107 = _t4 * _t89;
+            const double _t108 = _t107 * _t107 * _t99;
+            const int _t109 = _t108 <= 1.0;
+            const double _t110 = _t107 * _t105;
+            const double _t111 = (_t109) ? _t108 : 1.0;
+            const double _t112 = _t111 * _t111;
+            const double _t113 = _t112 * _t112;
+            const double _t114 = _t97 * _t4;
+            const double _t115 = _t114 * _t114 * _t99;
+            const int _t116 = _t115 <= 1.0;
+            const double _t117 = (_t116) ? _t115 : 1.0;
+            const double _t118 = _t117 * _t117;
+            const double _t119 = _t118 * _t118;
+            const double _t120 = _t105 * _t114;
+            const double _t121 = -_t19;
+            const double _t122 = _t15 - _t16 * (((_t11) ? _t121 : ((_t121 > 0.0) ? 1.0 : (-1.0))) * _t17);
+            const double _t123 = -_t41;
+            const double _t124 = _t39 - ((_t35) ? _t123 : ((_t123 > 0.0) ? 1.0 : (-1.0))) * _t42 * _t40;
+            const double _t125 = -_t29;
+            const double _t126 = _t28 - ((_t24) ? _t125 : ((_t125 > 0.0) ? 1.0 : (-1.0))) * _t30 * _t31;
+            const double _t127 = _t122 * _t122 + _t124 * _t124 + _t126 * _t126;
+            const double _t128 = (_t127 > 0.0) ? 1.0 / _t127 : 0.0;
+            const double _t129 = _t126 * _t4;
+            const double _t130 = _t128 * (_t129 * _t129);
+            const int _t131 = _t130 <= 1.0;
+            const double _t132 = (_t131) ? _t130 : 1.0;
+            const double _t133 = _t132 * _t132;
+            const double _t134 = _t133 * _t133;
+            const double _t135 = offsetgen_batch_sqrt(_t128);
+            const double _t136 = -(_t129 * _t135);
+            const double _t137 = _t7 * (1.0 - _t132 * 0.5 + (0.041666666666666102 - _t132 * 0.0013888888888798428) * _t133 + _t134 * (_t133 * (2.0874477943664777e-09 - _t132 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t132 * 2.7557303701922228e-07))) - _t31 * ((1.0 - _t132 * 0.16666666666666666 + (0.0083333333333333003 - _t132 * 0.00019841269841216566) * _t133 + _t134 * (2.755731919201122e-06 - _t132 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t132 * 7.549371704181243e-13) * _t133)) * ((_t131) ? _t136 : ((_t136 > 0.0) ? 1.0 : (-1.0))));
+            const double _t138 = _t122 * _t4;
+            const double _t139 = _t128 * (_t138 * _t138);
+            const int _t140 = _t139 <= 1.0;
+            const double _t141 = (_t140) ? _t139 : 1.0;
+            const double _t142 = _t141 * _t141;
+            const double _t143 = _t142 * _t142;
+            const double _t144 = -(_t138 * _t135);
+            const double _t145 = (1.0 - _t141 * 0.5 + (0.041666666666666102 - _t141 * 0.0013888888888798428) * _t142 + (2.4801587247292686e-05 - _t141 * 2.7557303701922228e-07 + _t142 * (2.0874477943664777e-09 - _t141 * 1.1304620460700782e-11)) * _t143) * _t3 - _t16 * (((0.0083333333333333003 - _t141 * 0.00019841269841216566) * _t142 + (1.0 - _t141 * 0.16666666666666666) + (2.755731919201122e-06 - _t141 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t141 * 7.549371704181243e-13) * _t142) * _t143) * ((_t140) ? _t144 : ((_t144 > 0.0) ? 1.0 : (-1.0))));
+            const double _t146 = _t124 * _t4;
+            const double _t147 = _t128 * (_t146 * _t146);
+            const int _t148 = _t147 <= 1.0;
+            const double _t149 = (_t148) ? _t147 : 1.0;
+            const double _t150 = _t149 * _t149;
+            const double _t151 = _t150 * _t150;
+            const double _t152 = -(_t146 * _t135);
+            const double _t153 = _t1 * ((_t150 * (2.0874477943664777e-09 - _t149 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t149 * 2.7557303701922228e-07)) * _t151 + (1.0 - _t149 * 0.5 + (0.041666666666666102 - _t149 * 0.0013888888888798428) * _t150)) - _t40 * (((2.755731919201122e-06 - _t149 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t149 * 7.549371704181243e-13) * _t150) * _t151 + (1.0 - _t149 * 0.16666666666666666 + (0.0083333333333333003 - _t149 * 0.00019841269841216566) * _t150)) * ((_t148) ? _t152 : ((_t152 > 0.0) ? 1.0 : (-1.0))));
+            const double _t154 = _t137 * _t137 + _t145 * _t145 + _t153 * _t153;
+            const double _t155 = (_t154 > 0.0) ? 1.0 / _t154 : 0.0;
+            const double _t156 = _t4 * _t137;
+            const double _t157 = _t155 * (_t156 * _t156);
+            const int _t158 = _t157 <= 1.0;
+            const double _t159 = (_t158) ? _t157 : 1.0;
+            const double _t160 = _t159 * _t159;
+            const double _t161 = _t160 * _t160;
+            const double _t162 = offsetgen_batch_sqrt(_t155);
+            const double _t163 = -(_t156 * _t162);
+            const double _t164 = ((2.4801587247292686e-05 - _t159 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t159 * 1.1304620460700782e-11) * _t160) * _t161 + (1.0 - _t159 * 0.5 + _t160 * (0.041666666666666102 - 0.0013888888888798428 * _t159))) * _t7 - (_t161 * (_t160 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t159) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t159)) + (1.0 - 0.16666666666666666 * _t159 + (0.0083333333333333003 - 0.00019841269841216566 * _t159) * _t160)) * ((_t158) ? _t163 : ((_t163 > 0.0) ? 1.0 : (-1.0))) * _t31;
+            const double _t165 = _t4 * _t153;
+            const double _t166 = _t165 * _t165 * _t155;
+            const int _t167 = _t166 <= 1.0;
+            const double _t168 = (_t167) ? _t166 : 1.0;
+            const double _t169 = _t168 * _t168;
+            const double _t170 = _t169 * _t169;
+            const double _t171 = -(_t162 * _t165);
+            const double _t172 = _t1 * ((_t169 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t168) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t168)) * _t170 + (1.0 - _t168 * 0.5 + _t169 * (0.041666666666666102 - 0.0013888888888798428 * _t168))) - _t40 * (((_t167) ? _t171 : ((_t171 > 0.0) ? 1.0 : (-1.0))) * (_t169 * (0.0083333333333333003 - 0.00019841269841216566 * _t168) + (1.0 - 0.16666666666666666 * _t168) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t168) * _t169 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t168)) * _t170));
+            const double _t173 = _t4 * _t145;
+            const double _t174 = _t173 * _t173 * _t155;
+            const int _t175 = _t174 <= 1.0;
+            const double _t176 = (_t175) ? _t174 : 1.0;
+            const double _t177 = _t176 * _t176;
+            const double _t178 = _t177 * _t177;
+            const double _t179 = -(_t162 * _t173);
+            const double _t180 = ((0.041666666666666102 - _t176 * 0.0013888888888798428) * _t177 + (1.0 - _t176 * 0.5) + (_t177 * (2.0874477943664777e-09 - _t176 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t176 * 2.7557303701922228e-07)) * _t178) * _t3 - _t16 * (((_t175) ? _t179 : ((_t179 > 0.0) ? 1.0 : (-1.0))) * ((2.755731919201122e-06 - _t176 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t176 * 7.549371704181243e-13) * _t177) * _t178 + ((0.0083333333333333003 - _t176 * 0.00019841269841216566) * _t177 + (1.0 - _t176 * 0.16666666666666666))));
+            const double _t181 = _t164 * _t164 + _t172 * _t172 + _t180 * _t180;
+            const double _t182 = (_t181 > 0.0) ? 1.0 / _t181 : 0.0;
+            const double _t183 = _t172 * _t4;
+            const double _t184 = _t182 * (_t183 * _t183);
+            const int _t185 = _t184 <= 1.0;
+            const double _t186 = (_t185) ? _t184 : 1.0;
+            const double _t187 = _t186 * _t186;
+            const double _t188 = _t187 * _t187;
+            const double _t189 = offsetgen_batch_sqrt(_t182);
+            const double _t190 = -(_t189 * _t183);
+            const double _t191 = _t180 * _t4;
+            const double _t192 = _t182 * (_t191 * _t191);
+            const int _t193 = _t192 <= 1.0;
+            const double _t194 = (_t193) ? _t192 : 1.0;
+            const double _t195 = _t194 * _t194;
+            const double _t196 = _t195 * _t195;
+            const double _t197 = -(_t191 * _t189);
+            const double _t198 = _t164 * _t4;
+            const double _t199 = _t198 * _t198 * _t182;
+            const int _t200 = _t199 <= 1.0;
+            const double _t201 = (_t200) ? _t199 : 1.0;
+            const double _t202 = _t201 * _t201;
+            const double _t203 = _t202 * _t202;
+            const double _t204 = -(_t189 * _t198);
+            out[i + j] = (((2.4801587247292686e-05 - _t102 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t102 * 1.1304620460700782e-11) * _t103) * _t104 + (1.0 - _t102 * 0.5 + _t103 * (0.041666666666666102 - _t102 * 0.0013888888888798428))) * _t40 + _t1 * ((_t103 * (0.0083333333333333003 - _t102 * 0.00019841269841216566) + (1.0 - _t102 * 0.16666666666666666) + (2.755731919201122e-06 - _t102 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t102 * 7.549371704181243e-13) * _t103) * _t104) * ((_t101) ? _t106 : ((_t106 > 0.0) ? 1.0 : (-1.0)))) + (_t3 * (((_t109) ? _t110 : ((_t110 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t111 + _t112 * (0.0083333333333333003 - 0.00019841269841216566 * _t111) + (_t112 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t111) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t111)) * _t113)) + _t16 * (_t113 * (2.4801587247292686e-05 - _t111 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t111 * 1.1304620460700782e-11) * _t112) + (_t112 * (0.041666666666666102 - 0.0013888888888798428 * _t111) + (1.0 - _t111 * 0.5)))) + ((_t118 * (0.0083333333333333003 - _t117 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t117) + (_t118 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t117) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t117)) * _t119) * ((_t116) ? _t120 : ((_t120 > 0.0) ? 1.0 : (-1.0))) * _t7 + (1.0 - _t117 * 0.5 + _t118 * (0.041666666666666102 - 0.0013888888888798428 * _t117) + (2.4801587247292686e-05 - _t117 * 2.7557303701922228e-07 + _t118 * (2.0874477943664777e-09 - _t117 * 1.1304620460700782e-11)) * _t119) * _t31)) * (_t40 * ((_t187 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t186) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t186)) * _t188 + (1.0 - 0.5 * _t186 + _t187 * (0.041666666666666102 - 0.0013888888888798428 * _t186))) + _t1 * (((_t185) ? _t190 : ((_t190 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t186 + _t187 * (0.0083333333333333003 - 0.00019841269841216566 * _t186) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t186 + _t187 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t186)) * _t188)) + (_t16 * (_t195 * (0.041666666666666102 - 0.0013888888888798428 * _t194) + (1.0 - _t194 * 0.5) + _t196 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t194 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t194) * _t195)) + ((_t193) ? _t197 : ((_t197 > 0.0) ? 1.0 : (-1.0))) * (_t196 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t194) * _t195 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t194)) + (_t195 * (0.0083333333333333003 - 0.00019841269841216566 * _t194) + (1.0 - 0.16666666666666666 * _t194))) * _t3 + ((1.0 - _t201 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t201) * _t202 + (2.4801587247292686e-05 - _t201 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t201 * 1.1304620460700782e-11) * _t202) * _t203) * _t31 + _t7 * (((_t200) ? _t204 : ((_t204 > 0.0) ? 1.0 : (-1.0))) * (_t203 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t201 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t201) * _t202) + (1.0 - 0.16666666666666666 * _t201 + (0.0083333333333333003 - _t201 * 0.00019841269841216566) * _t202))))));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_proj_o8_shell(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = schwarzp_proj_o8_shell(x[i], y[i], z[i], t[i]);
 }
 
 /* phi(p, h) of order 8: zero on the surface moved by h along +grad F.
  * Batch form of schwarzp_proj_o8_offsetf: out[i] = schwarzp_proj_o8_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void schwarzp_proj_o8_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+static inline void schwarzp_proj_o8_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = 6.28318548f * y[i];
-        const float _t1 = offsetgen_batch_cosf(_t0);
-        const float _t2 = z[i] * 6.28318548f;
-        const float _t3 = offsetgen_batch_sinf(_t2);
-        const float _t4 = 6.28318548f * h[i];
-        const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_sinf(_t5);
-        const float _t7 = _t4 * _t6;
-        const float _t8 = offsetgen_batch_sinf(_t0);
-        const float _t9 = _t6 * _t6 + _t3 * _t3 + _t8 * _t8;
-        const float _t10 = (_t9 > 0.0f) ? 1.0f / _t9 : 0.0f;
-        const float _t11 = _t7 * _t7 * _t10;
-        const int _t12 = _t11 <= 1.0f;
-        const float _t13 = (_t12) ? _t11 : 1.0f;
-        const float _t14 = _t13 * _t13;
-        const float _t15 = _t14 * _t14;
-        const float _t16 = sqrtf(_t10);
-        const float _t17 = -(_t7 * _t16);
-        const float _t18 = offsetgen_batch_cosf(_t5);
-        const float _t19 = ((_t14 * (2.08744777e-09f - 1.13046204e-11f * _t13) + (2.48015876e-05f - _t13 * 2.75573029e-07f)) * _t15 + (1.0f - _t13 * 0.5f + _t14 * (0.0416666679f - 0.00138888892f * _t13))) * _t6 - ((2.75573188e-06f - 2.50520991e-08f * _t13 + (1.60577024e-10f - 7.54937183e-13f * _t13) * _t14) * _t15 + ((0.00833333377f - 0.000198412701f * _t13) * _t14 + (1.0f - 0.166666672f * _t13))) * ((_t12) ? _t17 : ((_t17 > 0.0f) ? 1.0f : (-1.0f))) * _t18;
-        const float _t20 = _t4 * _t3;
-        const float _t21 = _t20 * _t20 * _t10;
-        const int _t22 = _t21 <= 1.0f;
-        const float _t23 = (_t22) ? _t21 : 1.0f;
-        const float _t24 = _t23 * _t23;
-        const float _t25 = _t24 * _t24;
-        const float _t26 = -(_t20 * _t16);
-        const float _t27 = offsetgen_batch_cosf(_t2);
-        const float _t28 = _t3 * ((0.0416666679f - 0.00138888892f * _t23) * _t24 + (1.0f - _t23 * 0.5f) + _t25 * (2.48015876e-05f - _t23 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t23) * _t24)) - (((1.60577024e-10f - 7.54937183e-13f * _t23) * _t24 + (2.75573188e-06f - 2.50520991e-08f * _t23)) * _t25 + ((0.00833333377f - 0.000198412701f * _t23) * _t24 + (1.0f - 0.166666672f * _t23))) * ((_t22) ? _t26 : ((_t26 > 0.0f) ? 1.0f : (-1.0f))) * _t27;
-        const float _t29 = _t4 * _t8;
-        const float _t30 = _t10 * (_t29 * _t29);
-        const int _t31 = _t30 <= 1.0f;
-        const float _t32 = (_t31) ? _t30 : 1.0f;
-        const float _t33 = _t32 * _t32;
-        const float _t34 = _t33 * _t33;
-        const float _t35 = -(_t29 * _t16);
-        const float _t36 = (_t33 * (0.0416666679f - _t32 * 0.00138888892f) + (1.0f - _t32 * 0.5f) + (2.48015876e-05f - _t32 * 2.75573029e-07f + _t33 * (2.08744777e-09f - _t32 * 1.13046204e-11f)) * _t34) * _t8 - _t1 * (((_t31) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t32 * 0.166666672f + (0.00833333377f - _t32 * 0.000198412701f) * _t33 + _t34 * (2.75573188e-06f - _t32 * 2.50520991e-08f + _t33 * (1.60577024e-10f - _t32 * 7.54937183e-13f))));
-        const float _t37 = _t19 * _t19 + _t28 * _t28 + _t36 * _t36;
-        const float _t38 = (_t37 > 0.0f) ? 1.0f / _t37 : 0.0f;
-        const float _t39 = _t4 * _t19;
-        const float _t40 = _t38 * (_t39 * _t39);
-        const int _t41 = _t40 <= 1.0f;
-        const float _t42 = (_t41) ? _t40 : 1.0f;
-        const float _t43 = _t42 * _t42;
-        const float _t44 = _t43 * _t43;
-        const float _t45 = sqrtf(_t38);
-        const float _t46 = -(_t45 * _t39);
-        const float _t47 = (((2.08744777e-09f - 1.13046204e-11f * _t42) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f)) * _t44 + ((0.0416666679f - 0.00138888892f * _t42) * _t43 + (1.0f - _t42 * 0.5f))) * _t6 - ((_t41) ? _t46 : ((_t46 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t42 + (0.00833333377f - 0.000198412701f * _t42) * _t43 + _t44 * (2.75573188e-06f - 2.50520991e-08f * _t42 + (1.60577024e-10f - 7.54937183e-13f * _t42) * _t43)) * _t18;
-        const float _t48 = _t36 * _t4;
-        const float _t49 = _t38 * (_t48 * _t48);
-        const int _t50 = _t49 <= 1.0f;
-        const float _t51 = (_t50) ? _t49 : 1.0f;
-        const float _t52 = _t51 * _t51;
-        const float _t53 = _t52 * _t52;
-        const float _t54 = -(_t48 * _t45);
-        const float _t55 = _t8 * (1.0f - _t51 * 0.5f + _t52 * (0.0416666679f - 0.00138888892f * _t51) + (2.48015876e-05f - _t51 * 2.75573029e-07f + (2.08744777e-09f - _t51 * 1.13046204e-11f) * _t52) * _t53) - _t1 * ((_t53 * (2.75573188e-06f - 2.50520991e-08f * _t51 + (1.60577024e-10f - 7.54937183e-13f * _t51) * _t52) + (1.0f - 0.166666672f * _t51 + (0.00833333377f - _t51 * 0.000198412701f) * _t52)) * ((_t50) ? _t54 : ((_t54 > 0.0f) ? 1.0f : (-1.0f))));
-        const float _t56 = _t28 * _t4;
-        const float _t57 = _t38 * (_t56 * _t56);
-        const int _t58 = _t57 <= 1.0f;
-        const float _t59 = (_t58) ? _t57 : 1.0f;
-        const float _t60 = _t59 * _t59;
-        const float _t61 = _t60 * _t60;
-        const float _t62 = -(_t56 * _t45);
-        const float _t63 = _t3 * (1.0f - _t59 * 0.5f + (0.0416666679f - 0.00138888892f * _t59) * _t60 + _t61 * ((2.08744777e-09f - 1.13046204e-11f * _t59) * _t60 + (2.48015876e-05f - _t59 * 2.75573029e-07f))) - _t27 * ((1.0f - 0.166666672f * _t59 + (0.00833333377f - 0.000198412701f * _t59) * _t60 + _t61 * (2.75573188e-06f - 2.50520991e-08f * _t59 + _t60 * (1.60577024e-10f - 7.54937183e-13f * _t59))) * ((_t58) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f))));
-        const float _t64 = _t47 * _t47 + _t55 * _t55 + _t63 * _t63;
-        const float _t65 = (_t64 > 0.0f) ? 1.0f / _t64 : 0.0f;
-        const float _t66 = _t4 * _t63;
-        const float _t67 = _t65 * (_t66 * _t66);
-        const int _t68 = _t67 <= 1.0f;
-        const float _t69 = (_t68) ? _t67 : 1.0f;
-        const float _t70 = _t69 * _t69;
-        const float _t71 = _t70 * _t70;
-        const float _t72 = sqrtf(_t65);
-        const float _t73 = -(_t66 * _t72);
-        const float _t74 = _t3 * (_t71 * (2.48015876e-05f - _t69 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t69) * _t70) + (1.0f - _t69 * 0.5f + _t70 * (0.0416666679f - 0.00138888892f * _t69))) - (1.0f - 0.166666672f * _t69 + (0.00833333377f - 0.000198412701f * _t69) * _t70 + _t71 * ((1.60577024e-10f - 7.54937183e-13f * _t69) * _t70 + (2.75573188e-06f - 2.50520991e-08f * _t69))) * ((_t68) ? _t73 : ((_t73 > 0.0f) ? 1.0f : (-1.0f))) * _t27;
-        const float _t75 = _t4 * _t47;
-        const float _t76 = _t75 * _t75 * _t65;
-        const int _t77 = _t76 <= 1.0f;
-        const float _t78 = (_t77) ? _t76 : 1.0f;
-        const float _t79 = _t78 * _t78;
-        const float _t80 = _t79 * _t79;
-        const float _t81 = -(_t75 * _t72);
-        const float _t82 = ((0.0416666679f - _t78 * 0.00138888892f) * _t79 + (1.0f - _t78 * 0.5f) + _t80 * ((2.08744777e-09f - _t78 * 1.13046204e-11f) * _t79 + (2.48015876e-05f - _t78 * 2.75573029e-07f))) * _t6 - ((_t77) ? _t81 : ((_t81 > 0.0f) ? 1.0f : (-1.0f))) * (_t80 * (2.75573188e-06f - _t78 * 2.50520991e-08f + _t79 * (1.60577024e-10f - _t78 * 7.54937183e-13f)) + (_t79 * (0.00833333377f - _t78 * 0.000198412701f) + (1.0f - _t78 * 0.166666672f))) * _t18;
-        const float _t83 = _t55 * _t4;
-        const float _t84 = _t65 * (_t83 * _t83);
-        const int _t85 = _t84 <= 1.0f;
-        const float _t86 = (_t85) ? _t84 : 1.0f;
-        const float _t87 = _t86 * _t86;
-        const float _t88 = _t87 * _t87;
-        const float _t89 = -(_t83 * _t72);
-        const float _t90 = ((2.48015876e-05f - 2.75573029e-07f * _t86 + _t87 * (2.08744777e-09f - 1.13046204e-11f * _t86)) * _t88 + (_t87 * (0.0416666679f - 0.00138888892f * _t86) + (1.0f - 0.5f * _t86))) * _t8 - _t1 * ((_t88 * (_t87 * (1.60577024e-10f - 7.54937183e-13f * _t86) + (2.75573188e-06f - 2.50520991e-08f * _t86)) + (1.0f - 0.166666672f * _t86 + _t87 * (0.00833333377f - 0.000198412701f * _t86))) * ((_t85) ? _t89 : ((_t89 > 0.0f) ? 1.0f : (-1.0f))));
-        const float _t91 = _t74 * _t74 + (_t82 * _t82 + _t90 * _t90);
-        const float _t92 = (_t91 > 0.0f) ? 1.0f / _t91 : 0.0f;
-        const float _t93 = _t90 * _t4;
-        const float _t94 = _t92 * (_t93 * _t93);
-        const int _t95 = _t94 <= 1.0f;
-        const float _t96 = (_t95) ? _t94 : 1.0f;
-        const float _t97 = _t96 * _t96;
-        const float _t98 = _t97 * _t97;
-        const float _t99 = sqrtf(_t92);
-        const float _t100 = -(_t93 * _t99);
-        const float _t101 = _t4 * _t74;
-        const float _t102 = _t101 * _t101 * _t92;
-        const int _t103 = _t102 <= 1.0f;
-        const float _t104 = (_t103) ? _t102 : 1.0f;
-        const float _t105 = _t104 * _t104;
-        const float _t106 = _t105 * _t105;
-        const float _t107 = -(_t101 * _t99);
-        const float _t108 = _t4 * _t82;
-        const float _t109 = _t108 * _t108 * _t92;
-        const int _t110 = _t109 <= 1.0f;
-        const float _t111 = (_t110) ? _t109 : 1.0f;
-        const float _t112 = _t111 * _t111;
-        const float _t113 = _t112 * _t112;
-        const float _t114 = -(_t99 * _t108);
-        out[i] = _t1 * (_t98 * (2.48015876e-05f - _t96 * 2.75573029e-07f + _t97 * (2.08744777e-09f - 1.13046204e-11f * _t96)) + ((0.0416666679f - 0.00138888892f * _t96) * _t97 + (1.0f - _t96 * 0.5f))) + ((_t95) ? _t100 : ((_t100 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t96 + (0.00833333377f - 0.000198412701f * _t96) * _t97 + (_t97 * (1.60577024e-10f - 7.54937183e-13f * _t96) + (2.75573188e-06f - 2.50520991e-08f * _t96)) * _t98) * _t8 + (_t3 * ((1.0f - _t104 * 0.166666672f + _t105 * (0.00833333377f - _t104 * 0.000198412701f) + (2.75573188e-06f - _t104 * 2.50520991e-08f + _t105 * (1.60577024e-10f - _t104 * 7.54937183e-13f)) * _t106) * ((_t103) ? _t107 : ((_t107 > 0.0f) ? 1.0f : (-1.0f)))) + (1.0f - _t104 * 0.5f + _t105 * (0.0416666679f - _t104 * 0.00138888892f) + (2.48015876e-05f - _t104 * 2.75573029e-07f + _t105 * (2.08744777e-09f - _t104 * 1.13046204e-11f)) * _t106) * _t27) + (_t6 * ((((1.60577024e-10f - 7.54937183e-13f * _t111) * _t112 + (2.75573188e-06f - 2.50520991e-08f * _t111)) * _t113 + (_t112 * (0.00833333377f - 0.000198412701f * _t111) + (1.0f - 0.166666672f * _t111))) * ((_t110) ? _t114 : ((_t114 > 0.0f) ? 1.0f : (-1.0f)))) + ((_t112 * (2.08744777e-09f - 1.13046204e-11f * _t111) + (2.48015876e-05f - _t111 * 2.75573029e-07f)) * _t113 + ((0.0416666679f - 0.00138888892f * _t111) * _t112 + (1.0f - _t111 * 0.5f))) * _t18);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = 6.28318548f * y[i + j];
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = z[i + j] * 6.28318548f;
+            const float _t3 = offsetgen_batch_sinf(_t2);
+            const float _t4 = 6.28318548f * h[i + j];
+            const float _t5 = 6.28318548f * x[i + j];
+            const float _t6 = offsetgen_batch_sinf(_t5);
+            const float _t7 = _t4 * _t6;
+            const float _t8 = offsetgen_batch_sinf(_t0);
+            const float _t9 = _t6 * _t6 + _t3 * _t3 + _t8 * _t8;
+            const float _t10 = (_t9 > 0.0f) ? 1.0f / _t9 : 0.0f;
+            const float _t11 = _t7 * _t7 * _t10;
+            const int _t12 = _t11 <= 1.0f;
+            const float _t13 = (_t12) ? _t11 : 1.0f;
+            const float _t14 = _t13 * _t13;
+            const float _t15 = _t14 * _t14;
+            const float _t16 = offsetgen_batch_sqrtf(_t10);
+            const float _t17 = -(_t7 * _t16);
+            const float _t18 = offsetgen_batch_cosf(_t5);
+            const float _t19 = ((_t14 * (2.08744777e-09f - 1.13046204e-11f * _t13) + (2.48015876e-05f - _t13 * 2.75573029e-07f)) * _t15 + (1.0f - _t13 * 0.5f + _t14 * (0.0416666679f - 0.00138888892f * _t13))) * _t6 - ((2.75573188e-06f - 2.50520991e-08f * _t13 + (1.60577024e-10f - 7.54937183e-13f * _t13) * _t14) * _t15 + ((0.00833333377f - 0.000198412701f * _t13) * _t14 + (1.0f - 0.166666672f * _t13))) * ((_t12) ? _t17 : ((_t17 > 0.0f) ? 1.0f : (-1.0f))) * _t18;
+            const float _t20 = _t4 * _t3;
+            const float _t21 = _t20 * _t20 * _t10;
+            const int _t22 = _t21 <= 1.0f;
+            const float _t23 = (_t22) ? _t21 : 1.0f;
+            const float _t24 = _t23 * _t23;
+            const float _t25 = _t24 * _t24;
+            const float _t26 = -(_t20 * _t16);
+            const float _t27 = offsetgen_batch_cosf(_t2);
+            const float _t28 = _t3 * ((0.0416666679f - 0.00138888892f * _t23) * _t24 + (1.0f - _t23 * 0.5f) + _t25 * (2.48015876e-05f - _t23 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t23) * _t24)) - (((1.60577024e-10f - 7.54937183e-13f * _t23) * _t24 + (2.75573188e-06f - 2.50520991e-08f * _t23)) * _t25 + ((0.00833333377f - 0.000198412701f * _t23) * _t24 + (1.0f - 0.166666672f * _t23))) * ((_t22) ? _t26 : ((_t26 > 0.0f) ? 1.0f : (-1.0f))) * _t27;
+            const float _t29 = _t4 * _t8;
+            const float _t30 = _t10 * (_t29 * _t29);
+            const int _t31 = _t30 <= 1.0f;
+            const float _t32 = (_t31) ? _t30 : 1.0f;
+            const float _t33 = _t32 * _t32;
+            const float _t34 = _t33 * _t33;
+            const float _t35 = -(_t29 * _t16);
+            const float _t36 = (_t33 * (0.0416666679f - _t32 * 0.00138888892f) + (1.0f - _t32 * 0.5f) + (2.48015876e-05f - _t32 * 2.75573029e-07f + _t33 * (2.08744777e-09f - _t32 * 1.13046204e-11f)) * _t34) * _t8 - _t1 * (((_t31) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t32 * 0.166666672f + (0.00833333377f - _t32 * 0.000198412701f) * _t33 + _t34 * (2.75573188e-06f - _t32 * 2.50520991e-08f + _t33 * (1.60577024e-10f - _t32 * 7.54937183e-13f))));
+            const float _t37 = _t19 * _t19 + _t28 * _t28 + _t36 * _t36;
+            const float _t38 = (_t37 > 0.0f) ? 1.0f / _t37 : 0.0f;
+            const float _t39 = _t4 * _t19;
+            const float _t40 = _t38 * (_t39 * _t39);
+            const int _t41 = _t40 <= 1.0f;
+            const float _t42 = (_t41) ? _t40 : 1.0f;
+            const float _t43 = _t42 * _t42;
+            const float _t44 = _t43 * _t43;
+            const float _t45 = offsetgen_batch_sqrtf(_t38);
+            const float _t46 = -(_t45 * _t39);
+            const float _t47 = (((2.08744777e-09f - 1.13046204e-11f * _t42) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f)) * _t44 + ((0.0416666679f - 0.00138888892f * _t42) * _t43 + (1.0f - _t42 * 0.5f))) * _t6 - ((_t41) ? _t46 : ((_t46 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t42 + (0.00833333377f - 0.000198412701f * _t42) * _t43 + _t44 * (2.75573188e-06f - 2.50520991e-08f * _t42 + (1.60577024e-10f - 7.54937183e-13f * _t42) * _t43)) * _t18;
+            const float _t48 = _t36 * _t4;
+            const float _t49 = _t38 * (_t48 * _t48);
+            const int _t50 = _t49 <= 1.0f;
+            const float _t51 = (_t50) ? _t49 : 1.0f;
+            const float _t52 = _t51 * _t51;
+            const float _t53 = _t52 * _t52;
+            const float _t54 = -(_t48 * _t45);
+            const float _t55 = _t8 * (1.0f - _t51 * 0.5f + _t52 * (0.0416666679f - 0.00138888892f * _t51) + (2.48015876e-05f - _t51 * 2.75573029e-07f + (2.08744777e-09f - _t51 * 1.13046204e-11f) * _t52) * _t53) - _t1 * ((_t53 * (2.75573188e-06f - 2.50520991e-08f * _t51 + (1.60577024e-10f - 7.54937183e-13f * _t51) * _t52) + (1.0f - 0.166666672f * _t51 + (0.00833333377f - _t51 * 0.000198412701f) * _t52)) * ((_t50) ? _t54 : ((_t54 > 0.0f) ? 1.0f : (-1.0f))));
+            const float _t56 = _t28 * _t4;
+            const float _t57 = _t38 * (_t56 * _t56);
+            const int _t58 = _t57 <= 1.0f;
+            const float _t59 = (_t58) ? _t57 : 1.0f;
+            const float _t60 = _t59 * _t59;
+            const float _t61 = _t60 * _t60;
+            const float _t62 = -(_t56 * _t45);
+            const float _t63 = _t3 * (1.0f - _t59 * 0.5f + (0.0416666679f - 0.00138888892f * _t59) * _t60 + _t61 * ((2.08744777e-09f - 1.13046204e-11f * _t59) * _t60 + (2.48015876e-05f - _t59 * 2.75573029e-07f))) - _t27 * ((1.0f - 0.166666672f * _t59 + (0.00833333377f - 0.000198412701f * _t59) * _t60 + _t61 * (2.75573188e-06f - 2.50520991e-08f * _t59 + _t60 * (1.60577024e-10f - 7.54937183e-13f * _t59))) * ((_t58) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f))));
+            const float _t64 = _t47 * _t47 + _t55 * _t55 + _t63 * _t63;
+            const float _t65 = (_t64 > 0.0f) ? 1.0f / _t64 : 0.0f;
+            const float _t66 = _t4 * _t63;
+            const float _t67 = _t65 * (_t66 * _t66);
+            const int _t68 = _t67 <= 1.0f;
+            const float _t69 = (_t68) ? _t67 : 1.0f;
+            const float _t70 = _t69 * _t69;
+            const float _t71 = _t70 * _t70;
+            const float _t72 = offsetgen_batch_sqrtf(_t65);
+            const float _t73 = -(_t66 * _t72);
+            const float _t74 = _t3 * (_t71 * (2.48015876e-05f - _t69 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t69) * _t70) + (1.0f - _t69 * 0.5f + _t70 * (0.0416666679f - 0.00138888892f * _t69))) - (1.0f - 0.166666672f * _t69 + (0.00833333377f - 0.000198412701f * _t69) * _t70 + _t71 * ((1.60577024e-10f - 7.54937183e-13f * _t69) * _t70 + (2.75573188e-06f - 2.50520991e-08f * _t69))) * ((_t68) ? _t73 : ((_t73 > 0.0f) ? 1.0f : (-1.0f))) * _t27;
+            const float _t75 = _t4 * _t47;
+            const float _t76 = _t75 * _t75 * _t65;
+            const int _t77 = _t76 <= 1.0f;
+            const float _t78 = (_t77) ? _t76 : 1.0f;
+            const float _t79 = _t78 * _t78;
+            const float _t80 = _t79 * _t79;
+            const float _t81 = -(_t75 * _t72);
+            const float _t82 = ((0.0416666679f - _t78 * 0.00138888892f) * _t79 + (1.0f - _t78 * 0.5f) + _t80 * ((2.08744777e-09f - _t78 * 1.13046204e-11f) * _t79 + (2.48015876e-05f - _t78 * 2.75573029e-07f))) * _t6 - ((_t77) ? _t81 : ((_t81 > 0.0f) ? 1.0f : (-1.0f))) * (_t80 * (2.75573188e-06f - _t78 * 2.50520991e-08f + _t79 * (1.60577024e-10f - _t78 * 7.54937183e-13f)) + (_t79 * (0.00833333377f - _t78 * 0.000198412701f) + (1.0f - _t78 * 0.166666672f))) * _t18;
+            const float _t83 = _t55 * _t4;
+            const float _t84 = _t65 * (_t83 * _t83);
+            const int _t85 = _t84 <= 1.0f;
+            const float _t86 = (_t85) ? _t84 : 1.0f;
+            const float _t87 = _t86 * _t86;
+            const float _t88 = _t87 * _t87;
+            const float _t89 = -(_t83 * _t72);
+            const float _t90 = ((2.48015876e-05f - 2.75573029e-07f * _t86 + _t87 * (2.08744777e-09f - 1.13046204e-11f * _t86)) * _t88 + (_t87 * (0.0416666679f - 0.00138888892f * _t86) + (1.0f - 0.5f * _t86))) * _t8 - _t1 * ((_t88 * (_t87 * (1.60577024e-10f - 7.54937183e-13f * _t86) + (2.75573188e-06f - 2.50520991e-08f * _t86)) + (1.0f - 0.166666672f * _t86 + _t87 * (0.00833333377f - 0.000198412701f * _t86))) * ((_t85) ? _t89 : ((_t89 > 0.0f) ? 1.0f : (-1.0f))));
+            const float _t91 = _t74 * _t74 + (_t82 * _t82 + _t90 * _t90);
+            const float _t92 = (_t91 > 0.0f) ? 1.0f / _t91 : 0.0f;
+            const float _t93 = _t90 * _t4;
+            const float _t94 = _t92 * (_t93 * _t93);
+            const int _t95 = _t94 <= 1.0f;
+            const float _t96 = (_t95) ? _t94 : 1.0f;
+            const float _t97 = _t96 * _t96;
+            const float _t98 = _t97 * _t97;
+            const float _t99 = offsetgen_batch_sqrtf(_t92);
+            const float _t100 = -(_t93 * _t99);
+            const float _t101 = _t4 * _t74;
+            const float _t102 = _t101 * _t101 * _t92;
+            const int _t103 = _t102 <= 1.0f;
+            const float _t104 = (_t103) ? _t102 : 1.0f;
+            const float _t105 = _t104 * _t104;
+            const float _t106 = _t105 * _t105;
+            const float _t107 = -(_t101 * _t99);
+            const float _t108 = _t4 * _t82;
+            const float _t109 = _t108 * _t108 * _t92;
+            const int _t110 = _t109 <= 1.0f;
+            const float _t111 = (_t110) ? _t109 : 1.0f;
+            const float _t112 = _t111 * _t111;
+            const float _t113 = _t112 * _t112;
+            const float _t114 = -(_t99 * _t108);
+            out[i + j] = _t1 * (_t98 * (2.48015876e-05f - _t96 * 2.75573029e-07f + _t97 * (2.08744777e-09f - 1.13046204e-11f * _t96)) + ((0.0416666679f - 0.00138888892f * _t96) * _t97 + (1.0f - _t96 * 0.5f))) + ((_t95) ? _t100 : ((_t100 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t96 + (0.00833333377f - 0.000198412701f * _t96) * _t97 + (_t97 * (1.60577024e-10f - 7.54937183e-13f * _t96) + (2.75573188e-06f - 2.50520991e-08f * _t96)) * _t98) * _t8 + (_t3 * ((1.0f - _t104 * 0.166666672f + _t105 * (0.00833333377f - _t104 * 0.000198412701f) + (2.75573188e-06f - _t104 * 2.50520991e-08f + _t105 * (1.60577024e-10f - _t104 * 7.54937183e-13f)) * _t106) * ((_t103) ? _t107 : ((_t107 > 0.0f) ? 1.0f : (-1.0f)))) + (1.0f - _t104 * 0.5f + _t105 * (0.0416666679f - _t104 * 0.00138888892f) + (2.48015876e-05f - _t104 * 2.75573029e-07f + _t105 * (2.08744777e-09f - _t104 * 1.13046204e-11f)) * _t106) * _t27) + (_t6 * ((((1.60577024e-10f - 7.54937183e-13f * _t111) * _t112 + (2.75573188e-06f - 2.50520991e-08f * _t111)) * _t113 + (_t112 * (0.00833333377f - 0.000198412701f * _t111) + (1.0f - 0.166666672f * _t111))) * ((_t110) ? _t114 : ((_t114 > 0.0f) ? 1.0f : (-1.0f)))) + ((_t112 * (2.08744777e-09f - 1.13046204e-11f * _t111) + (2.48015876e-05f - _t111 * 2.75573029e-07f)) * _t113 + ((0.0416666679f - 0.00138888892f * _t111) * _t112 + (1.0f - _t111 * 0.5f))) * _t18);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_proj_o8_offsetf(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = schwarzp_proj_o8_offsetf(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of schwarzp_proj_o8_shellf: out[i] = schwarzp_proj_o8_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void schwarzp_proj_o8_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+static inline void schwarzp_proj_o8_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_sinf(_t0);
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_sinf(_t2);
-        const float _t4 = 6.28318548f * (t[i] * 0.5f);
-        const float _t5 = _t3 * _t4;
-        const float _t6 = 6.28318548f * x[i];
-        const float _t7 = offsetgen_batch_sinf(_t6);
-        const float _t8 = _t7 * _t7 + _t1 * _t1 + _t3 * _t3;
-        const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-        const float _t10 = _t5 * _t5 * _t9;
-        const int _t11 = _t10 <= 1.0f;
-        const float _t12 = (_t11) ? _t10 : 1.0f;
-        const float _t13 = _t12 * _t12;
-        const float _t14 = _t13 * _t13;
-        const float _t15 = (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - _t12 * 0.00138888892f) + _t14 * ((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f))) * _t3;
-        const float _t16 = offsetgen_batch_cosf(_t2);
-        const float _t17 = 1.0f - _t12 * 0.166666672f + (0.00833333377f - _t12 * 0.000198412701f) * _t13 + _t14 * (_t13 * (1.60577024e-10f - _t12 * 7.54937183e-13f) + (2.75573188e-06f - _t12 * 2.50520991e-08f));
-        const float _t18 = sqrtf(_t9);
-        const float _t19 = _t5 * _t18;
-        const float _t20 = _t15 - _t16 * (_t17 * ((_t11) ? _t19 : ((_t19 > 0.0f) ? 1.0f : (-1.0f))));
-        const float _t21 = _t20 * _t4;
-        const float _t22 = _t4 * _t7;
-        const float _t23 = _t22 * _t22 * _t9;
-        const int _t24 = _t23 <= 1.0f;
-        const float _t25 = (_t24) ? _t23 : 1.0f;
-        const float _t26 = _t25 * _t25;
-        const float _t27 = _t26 * _t26;
-        const float _t28 = ((2.48015876e-05f - _t25 * 2.75573029e-07f + _t26 * (2.08744777e-09f - _t25 * 1.13046204e-11f)) * _t27 + (_t26 * (0.0416666679f - 0.00138888892f * _t25) + (1.0f - _t25 * 0.5f))) * _t7;
-        const float _t29 = _t22 * _t18;
-        const float _t30 = (_t26 * (1.60577024e-10f - 7.54937183e-13f * _t25) + (2.75573188e-06f - 2.50520991e-08f * _t25)) * _t27 + ((0.00833333377f - _t25 * 0.000198412701f) * _t26 + (1.0f - 0.166666672f * _t25));
-        const float _t31 = offsetgen_batch_cosf(_t6);
-        const float _t32 = _t28 - ((_t24) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f))) * _t30 * _t31;
-        const float _t33 = _t1 * _t4;
-        const float _t34 = _t33 * _t33 * _t9;
-        const int _t35 = _t34 <= 1.0f;
-        const float _t36 = (_t35) ? _t34 : 1.0f;
-        const float _t37 = _t36 * _t36;
-        const float _t38 = _t37 * _t37;
-        const float _t39 = (((2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37 + (2.48015876e-05f - _t36 * 2.75573029e-07f)) * _t38 + (1.0f - _t36 * 0.5f + (0.0416666679f - _t36 * 0.00138888892f) * _t37)) * _t1;
-        const float _t40 = offsetgen_batch_cosf(_t0);
-        const float _t41 = _t33 * _t18;
-        const float _t42 = _t37 * (0.00833333377f - _t36 * 0.000198412701f) + (1.0f - _t36 * 0.166666672f) + (2.75573188e-06f - _t36 * 2.50520991e-08f + (1.60577024e-10f - _t36 * 7.54937183e-13f) * _t37) * _t38;
-        const float _t43 = _t39 - _t40 * (((_t35) ? _t41 : ((_t41 > 0.0f) ? 1.0f : (-1.0f))) * _t42);
-        const float _t44 = _t32 * _t32 + _t20 * _t20 + _t43 * _t43;
-        const float _t45 = (_t44 > 0.0f) ? 1.0f / _t44 : 0.0f;
-        const float _t46 = _t21 * _t21 * _t45;
-        const int _t47 = _t46 <= 1.0f;
-        const float _t48 = (_t47) ? _t46 : 1.0f;
-        const float _t49 = _t48 * _t48;
-        const float _t50 = _t49 * _t49;
-        const float _t51 = sqrtf(_t45);
-        const float _t52 = _t51 * _t21;
-        const float _t53 = ((2.48015876e-05f - _t48 * 2.75573029e-07f + _t49 * (2.08744777e-09f - _t48 * 1.13046204e-11f)) * _t50 + (1.0f - _t48 * 0.5f + _t49 * (0.0416666679f - _t48 * 0.00138888892f))) * _t3 - ((_t49 * (1.60577024e-10f - _t48 * 7.54937183e-13f) + (2.75573188e-06f - _t48 * 2.50520991e-08f)) * _t50 + (1.0f - _t48 * 0.166666672f + _t49 * (0.00833333377f - _t48 * 0.000198412701f))) * ((_t47) ? _t52 : ((_t52 > 0.0f) ? 1.0f : (-1.0f))) * _t16;
-        const float _t54 = _t43 * _t4;
-        const float _t55 = _t54 * _t54 * _t45;
-        const int _t56 = _t55 <= 1.0f;
-        const float _t57 = (_t56) ? _t55 : 1.0f;
-        const float _t58 = _t57 * _t57;
-        const float _t59 = _t58 * _t58;
-        const float _t60 = _t54 * _t51;
-        const float _t61 = _t1 * (_t58 * (0.0416666679f - 0.00138888892f * _t57) + (1.0f - _t57 * 0.5f) + (_t58 * (2.08744777e-09f - _t57 * 1.13046204e-11f) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59) - (_t58 * (0.00833333377f - _t57 * 0.000198412701f) + (1.0f - _t57 * 0.166666672f) + _t59 * (_t58 * (1.60577024e-10f - 7.54937183e-13f * _t57) + (2.75573188e-06f - _t57 * 2.50520991e-08f))) * ((_t56) ? _t60 : ((_t60 > 0.0f) ? 1.0f : (-1.0f))) * _t40;
-        const float _t62 = _t32 * _t4;
-        const float _t63 = _t62 * _t62 * _t45;
-        const int _t64 = _t63 <= 1.0f;
-        const float _t65 = (_t64) ? _t63 : 1.0f;
-        const float _t66 = _t65 * _t65;
-        const float _t67 = _t66 * _t66;
-        const float _t68 = _t62 * _t51;
-        const float _t69 = (_t67 * (2.48015876e-05f - 2.75573029e-07f * _t65 + _t66 * (2.08744777e-09f - 1.13046204e-11f * _t65)) + (1.0f - _t65 * 0.5f + _t66 * (0.0416666679f - 0.00138888892f * _t65))) * _t7 - ((0.00833333377f - 0.000198412701f * _t65) * _t66 + (1.0f - 0.166666672f * _t65) + _t67 * (2.75573188e-06f - 2.50520991e-08f * _t65 + _t66 * (1.60577024e-10f - 7.54937183e-13f * _t65))) * ((_t64) ? _t68 : ((_t68 > 0.0f) ? 1.0f : (-1.0f))) * _t31;
-        const float _t70 = _t53 * _t53 + _t61 * _t61 + _t69 * _t69;
-        const float _t71 = (_t70 > 0.0f) ? 1.0f / _t70 : 0.0f;
-        const float _t72 = _t61 * _t4;
-        const float _t73 = _t71 * (_t72 * _t72);
-        const int _t74 = _t73 <= 1.0f;
-        const float _t75 = (_t74) ? _t73 : 1.0f;
-        const float _t76 = _t75 * _t75;
-        const float _t77 = _t76 * _t76;
-        const float _t78 = sqrtf(_t71);
-        const float _t79 = _t78 * _t72;
-        const float _t80 = _t1 * ((0.0416666679f - _t75 * 0.00138888892f) * _t76 + (1.0f - _t75 * 0.5f) + _t77 * (2.48015876e-05f - _t75 * 2.75573029e-07f + (2.08744777e-09f - _t75 * 1.13046204e-11f) * _t76)) - _t40 * (((_t74) ? _t79 : ((_t79 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t75 * 0.166666672f + (0.00833333377f - _t75 * 0.000198412701f) * _t76 + _t77 * (2.75573188e-06f - _t75 * 2.50520991e-08f + (1.60577024e-10f - _t75 * 7.54937183e-13f) * _t76)));
-        const float _t81 = _t80 * _t4;
-        const float _t82 = _t53 * _t4;
-        const float _t83 = _t82 * _t82 * _t71;
-        const int _t84 = _t83 <= 1.0f;
-        const float _t85 = (_t84) ? _t83 : 1.0f;
-        const float _t86 = _t85 * _t85;
-        const float _t87 = _t86 * _t86;
-        const float _t88 = _t78 * _t82;
-        const float _t89 = (1.0f - _t85 * 0.5f + (0.0416666679f - 0.00138888892f * _t85) * _t86 + _t87 * (2.48015876e-05f - _t85 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t85) * _t86)) * _t3 - ((0.00833333377f - 0.000198412701f * _t85) * _t86 + (1.0f - 0.166666672f * _t85) + _t87 * (2.75573188e-06f - 2.50520991e-08f * _t85 + (1.60577024e-10f - 7.54937183e-13f * _t85) * _t86)) * ((_t84) ? _t88 : ((_t88 > 0.0f) ? 1.0f : (-1.0f))) * _t16;
-        const float _t90 = _t69 * _t4;
-        const float _t91 = _t90 * _t90 * _t71;
-        const int _t92 = _t91 <= 1.0f;
-        const float _t93 = (_t92) ? _t91 : 1.0f;
-        const float _t94 = _t93 * _t93;
-        const float _t95 = _t94 * _t94;
-        const float _t96 = _t90 * _t78;
-        const float _t97 = (_t95 * (2.48015876e-05f - _t93 * 2.75573029e-07f + _t94 * (2.08744777e-09f - _t93 * 1.13046204e-11f)) + (1.0f - _t93 * 0.5f + _t94 * (0.0416666679f - _t93 * 0.00138888892f))) * _t7 - (1.0f - _t93 * 0.166666672f + (0.00833333377f - _t93 * 0.000198412701f) * _t94 + (2.75573188e-06f - _t93 * 2.50520991e-08f + _t94 * (1.60577024e-10f - _t93 * 7.54937183e-13f)) * _t95) * ((_t92) ? _t96 : ((_t96 > 0.0f) ? 1.0f : (-1.0f))) * _t31;
-        const float _t98 = _t89 * _t89 + _t80 * _t80 + _t97 * _t97;
-        const float _t99 = (_t98 > 0.0f) ? 1.0f / _t98 : 0.0f;
-        const float _t100 = _t81 * _t81 * _t99;
-        const int _t101 = _t100 <= 1.0f;
-        const float _t102 = (_t101) ? _t100 : 1.0f;
-        const float _t103 = _t102 * _t102;
-        const float _t104 = _t103 * _t103;
-        const float _t105 = sqrtf(_t99);
-        const float _t106 = _t81 * _t105;
-        const float _t107 = _t4 * _t89;
-        const float _t108 = _t107 * _t107 * _t99;
-        const int _t109 = _t108 <= 1.0f;
-        const float _t110 = _t107 * _t105;
-        const float _t111 = (_t109) ? _t108 : 1.0f;
-        const float _t112 = _t111 * _t111;
-        const float _t113 = _t112 * _t112;
-        const float _t114 = _t97 * _t4;
-        const float _t115 = _t114 * _t114 * _t99;
-        const int _t116 = _t115 <= 1.0f;
-        const float _t117 = (_t116) ? _t115 : 1.0f;
-        const float _t118 = _t117 * _t117;
-        const float _t119 = _t118 * _t118;
-        const float _t120 = _t105 * _t114;
-        const float _t121 = -_t19;
-        const float _t122 = _t15 - _t16 * (((_t11) ? _t121 : ((_t121 > 0.0f) ? 1.0f : (-1.0f))) * _t17);
-        const float _t123 = -_t41;
-        const float _t124 = _t39 - ((_t35) ? _t123 : ((_t123 > 0.0f) ? 1.0f : (-1.0f))) * _t42 * _t40;
-        const float _t125 = -_t29;
-        const float _t126 = _t28 - ((_t24) ? _t125 : ((_t125 > 0.0f) ? 1.0f : (-1.0f))) * _t30 * _t31;
-        const float _t127 = _t122 * _t122 + _t124 * _t124 + _t126 * _t126;
-        const float _t128 = (_t127 > 0.0f) ? 1.0f / _t127 : 0.0f;
-        const float _t129 = _t126 * _t4;
-        const float _t130 = _t128 * (_t129 * _t129);
-        const int _t131 = _t130 <= 1.0f;
-        const float _t132 = (_t131) ? _t130 : 1.0f;
-        const float _t133 = _t132 * _t132;
-        const float _t134 = _t133 * _t133;
-        const float _t135 = sqrtf(_t128);
-        const float _t136 = -(_t129 * _t135);
-        const float _t137 = _t7 * (1.0f - _t132 * 0.5f + (0.0416666679f - _t132 * 0.00138888892f) * _t133 + _t134 * (_t133 * (2.08744777e-09f - _t132 * 1.13046204e-11f) + (2.48015876e-05f - _t132 * 2.75573029e-07f))) - _t31 * ((1.0f - _t132 * 0.166666672f + (0.00833333377f - _t132 * 0.000198412701f) * _t133 + _t134 * (2.75573188e-06f - _t132 * 2.50520991e-08f + (1.60577024e-10f - _t132 * 7.54937183e-13f) * _t133)) * ((_t131) ? _t136 : ((_t136 > 0.0f) ? 1.0f : (-1.0f))));
-        const float _t138 = _t122 * _t4;
-        const float _t139 = _t128 * (_t138 * _t138);
-        const int _t140 = _t139 <= 1.0f;
-        const float _t141 = (_t140) ? _t139 : 1.0f;
-        const float _t142 = _t141 * _t141;
-        const float _t143 = _t142 * _t142;
-        const float _t144 = -(_t138 * _t135);
-        const float _t145 = (1.0f - _t141 * 0.5f + (0.0416666679f - _t141 * 0.00138888892f) * _t142 + (2.48015876e-05f - _t141 * 2.75573029e-07f + _t142 * (2.08744777e-09f - _t141 * 1.13046204e-11f)) * _t143) * _t3 - _t16 * (((0.00833333377f - _t141 * 0.000198412701f) * _t142 + (1.0f - _t141 * 0.166666672f) + (2.75573188e-06f - _t141 * 2.50520991e-08f + (1.60577024e-10f - _t141 * 7.54937183e-13f) * _t142) * _t143) * ((_t140) ? _t144 : ((_t144 > 0.0f) ? 1.0f : (-1.0f))));
-        const float _t146 = _t124 * _t4;
-        const float _t147 = _t128 * (_t146 * _t146);
-        const int _t148 = _t147 <= 1.0f;
-        const float _t149 = (_t148) ? _t147 : 1.0f;
-        const float _t150 = _t149 * _t149;
-        const float _t151 = _t150 * _t150;
-        const float _t152 = -(_t146 * _t135);
-        const float _t153 = _t1 * ((_t150 * (2.08744777e-09f - _t149 * 1.13046204e-11f) + (2.48015876e-05f - _t149 * 2.75573029e-07f)) * _t151 + (1.0f - _t149 * 0.5f + (0.0416666679f - _t149 * 0.00138888892f) * _t150)) - _t40 * (((2.75573188e-06f - _t149 * 2.50520991e-08f + (1.60577024e-10f - _t149 * 7.54937183e-13f) * _t150) * _t151 + (1.0f - _t149 * 0.166666672f + (0.00833333377f - _t149 * 0.000198412701f) * _t150)) * ((_t148) ? _t152 : ((_t152 > 0.0f) ? 1.0f : (-1.0f))));
-        const float _t154 = _t137 * _t137 + _t145 * _t145 + _t153 * _t153;
-        const float _t155 = (_t154 > 0.0f) ? 1.0f / _t154 : 0.0f;
-        const float _t156 = _t4 * _t137;
-        const float _t157 = _t155 * (_t156 * _t156);
-        const int _t158 = _t157 <= 1.0f;
-        const float _t159 = (_t158) ? _t157 : 1.0f;
-        const float _t160 = _t159 * _t159;
-        const float _t161 = _t160 * _t160;
-        const float _t162 = sqrtf(_t155);
-        const float _t163 = -(_t156 * _t162);
-        const float _t164 = ((2.48015876e-05f - _t159 * 2.75573029e-07f + (2.08744777e-09f - _t159 * 1.13046204e-11f) * _t160) * _t161 + (1.0f - _t159 * 0.5f + _t160 * (0.0416666679f - 0.00138888892f * _t159))) * _t7 - (_t161 * (_t160 * (1.60577024e-10f - 7.54937183e-13f * _t159) + (2.75573188e-06f - 2.50520991e-08f * _t159)) + (1.0f - 0.166666672f * _t159 + (0.00833333377f - 0.000198412701f * _t159) * _t160)) * ((_t158) ? _t163 : ((_t163 > 0.0f) ? 1.0f : (-1.0f))) * _t31;
-        const float _t165 = _t4 * _t153;
-        const float _t166 = _t165 * _t165 * _t155;
-        const int _t167 = _t166 <= 1.0f;
-        const float _t168 = (_t167) ? _t166 : 1.0f;
-        const float _t169 = _t168 * _t168;
-        const float _t170 = _t169 * _t169;
-        const float _t171 = -(_t162 * _t165);
-        const float _t172 = _t1 * ((_t169 * (2.08744777e-09f - 1.13046204e-11f * _t168) + (2.48015876e-05f - 2.75573029e-07f * _t168)) * _t170 + (1.0f - _t168 * 0.5f + _t169 * (0.0416666679f - 0.00138888892f * _t168))) - _t40 * (((_t167) ? _t171 : ((_t171 > 0.0f) ? 1.0f : (-1.0f))) * (_t169 * (0.00833333377f - 0.000198412701f * _t168) + (1.0f - 0.166666672f * _t168) + ((1.60577024e-10f - 7.54937183e-13f * _t168) * _t169 + (2.75573188e-06f - 2.50520991e-08f * _t168)) * _t170));
-        const float _t173 = _t4 * _t145;
-        const float _t174 = _t173 * _t173 * _t155;
-        const int _t175 = _t174 <= 1.0f;
-        const float _t176 = (_t175) ? _t174 : 1.0f;
-        const float _t177 = _t176 * _t176;
-        const float _t178 = _t177 * _t177;
-        const float _t179 = -(_t162 * _t173);
-        const float _t180 = ((0.0416666679f - _t176 * 0.00138888892f) * _t177 + (1.0f - _t176 * 0.5f) + (_t177 * (2.08744777e-09f - _t176 * 1.13046204e-11f) + (2.48015876e-05f - _t176 * 2.75573029e-07f)) * _t178) * _t3 - _t16 * (((_t175) ? _t179 : ((_t179 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - _t176 * 2.50520991e-08f + (1.60577024e-10f - _t176 * 7.54937183e-13f) * _t177) * _t178 + ((0.00833333377f - _t176 * 0.000198412701f) * _t177 + (1.0f - _t176 * 0.166666672f))));
-        const float _t181 = _t164 * _t164 + _t172 * _t172 + _t180 * _t180;
-        const float _t182 = (_t181 > 0.0f) ? 1.0f / _t181 : 0.0f;
-        const float _t183 = _t172 * _t4;
-        const float _t184 = _t182 * (_t183 * _t183);
-        const int _t185 = _t184 <= 1.0f;
-        const float _t186 = (_t185) ? _t184 : 1.0f;
-        const float _t187 = _t186 * _t186;
-        const float _t188 = _t187 * _t187;
-        const float _t189 = sqrtf(_t182);
-        const float _t190 = -(_t189 * _t183);
-        const float _t191 = _t180 * _t4;
-        const float _t192 = _t182 * (_t191 * _t191);
-        const int _t193 = _t192 <= 1.0f;
-        const float _t194 = (_t193) ? _t192 : 1.0f;
-        const float _t195 = _t194 * _t194;
-        const float _t196 = _t195 * _t195;
-        const float _t197 = -(_t191 * _t189);
-        const float _t198 = _t164 * _t4;
-        const float _t199 = _t198 * _t198 * _t182;
-        const int _t200 = _t199 <= 1.0f;
-        const float _t201 = (_t200) ? _t199 : 1.0f;
-        const float _t202 = _t201 * _t201;
-        const float _t203 = _t202 * _t202;
-        const float _t204 = -(_t189 * _t198);
-        out[i] = (((2.48015876e-05f - _t102 * 2.75573029e-07f + (2.08744777e-09f - _t102 * 1.13046204e-11f) * _t103) * _t104 + (1.0f - _t102 * 0.5f + _t103 * (0.0416666679f - _t102 * 0.00138888892f))) * _t40 + _t1 * ((_t103 * (0.00833333377f - _t102 * 0.000198412701f) + (1.0f - _t102 * 0.166666672f) + (2.75573188e-06f - _t102 * 2.50520991e-08f + (1.60577024e-10f - _t102 * 7.54937183e-13f) * _t103) * _t104) * ((_t101) ? _t106 : ((_t106 > 0.0f) ? 1.0f : (-1.0f)))) + (_t3 * (((_t109) ? _t110 : ((_t110 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t111 + _t112 * (0.00833333377f - 0.000198412701f * _t111) + (_t112 * (1.60577024e-10f - 7.54937183e-13f * _t111) + (2.75573188e-06f - 2.50520991e-08f * _t111)) * _t113)) + _t16 * (_t113 * (2.48015876e-05f - _t111 * 2.75573029e-07f + (2.08744777e-09f - _t111 * 1.13046204e-11f) * _t112) + (_t112 * (0.0416666679f - 0.00138888892f * _t111) + (1.0f - _t111 * 0.5f)))) + ((_t118 * (0.00833333377f - _t117 * 0.000198412701f) + (1.0f - 0.166666672f * _t117) + (_t118 * (1.60577024e-10f - 7.54937183e-13f * _t117) + (2.75573188e-06f - 2.50520991e-08f * _t117)) * _t119) * ((_t116) ? _t120 : ((_t120 > 0.0f) ? 1.0f : (-1.0f))) * _t7 + (1.0f - _t117 * 0.5f + _t118 * (0.0416666679f - 0.00138888892f * _t117) + (2.48015876e-05f - _t117 * 2.75573029e-07f + _t118 * (2.08744777e-09f - _t117 * 1.13046204e-11f)) * _t119) * _t31)) * (_t40 * ((_t187 * (2.08744777e-09f - 1.13046204e-11f * _t186) + (2.48015876e-05f - 2.75573029e-07f * _t186)) * _t188 + (1.0f - 0.5f * _t186 + _t187 * (0.0416666679f - 0.00138888892f * _t186))) + _t1 * (((_t185) ? _t190 : ((_t190 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t186 + _t187 * (0.00833333377f - 0.000198412701f * _t186) + (2.75573188e-06f - 2.50520991e-08f * _t186 + _t187 * (1.60577024e-10f - 7.54937183e-13f * _t186)) * _t188)) + (_t16 * (_t195 * (0.0416666679f - 0.00138888892f * _t194) + (1.0f - _t194 * 0.5f) + _t196 * (2.48015876e-05f - 2.75573029e-07f * _t194 + (2.08744777e-09f - 1.13046204e-11f * _t194) * _t195)) + ((_t193) ? _t197 : ((_t197 > 0.0f) ? 1.0f : (-1.0f))) * (_t196 * ((1.60577024e-10f - 7.54937183e-13f * _t194) * _t195 + (2.75573188e-06f - 2.50520991e-08f * _t194)) + (_t195 * (0.00833333377f - 0.000198412701f * _t194) + (1.0f - 0.166666672f * _t194))) * _t3 + ((1.0f - _t201 * 0.5f + (0.0416666679f - 0.00138888892f * _t201) * _t202 + (2.48015876e-05f - _t201 * 2.75573029e-07f + (2.08744777e-09f - _t201 * 1.13046204e-11f) * _t202) * _t203) * _t31 + _t7 * (((_t200) ? _t204 : ((_t204 > 0.0f) ? 1.0f : (-1.0f))) * (_t203 * (2.75573188e-06f - 2.50520991e-08f * _t201 + (1.60577024e-10f - 7.54937183e-13f * _t201) * _t202) + (1.0f - 0.166666672f * _t201 + (0.00833333377f - _t201 * 0.000198412701f) * _t202))))));
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_sinf(_t0);
+            const float _t2 = 6.28318548f * y[i + j];
+            const float _t3 = offsetgen_batch_sinf(_t2);
+            const float _t4 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t5 = _t3 * _t4;
+            const float _t6 = 6.28318548f * x[i + j];
+            const float _t7 = offsetgen_batch_sinf(_t6);
+            const float _t8 = _t7 * _t7 + _t1 * _t1 + _t3 * _t3;
+            const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
+            const float _t10 = _t5 * _t5 * _t9;
+            const int _t11 = _t10 <= 1.0f;
+            const float _t12 = (_t11) ? _t10 : 1.0f;
+            const float _t13 = _t12 * _t12;
+            const float _t14 = _t13 * _t13;
+            const float _t15 = (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - _t12 * 0.00138888892f) + _t14 * ((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f))) * _t3;
+            const float _t16 = offsetgen_batch_cosf(_t2);
+            const float _t17 = 1.0f - _t12 * 0.166666672f + (0.00833333377f - _t12 * 0.000198412701f) * _t13 + _t14 * (_t13 * (1.60577024e-10f - _t12 * 7.54937183e-13f) + (2.75573188e-06f - _t12 * 2.50520991e-08f));
+            const float _t18 = offsetgen_batch_sqrtf(_t9);
+            const float _t19 = _t5 * _t18;
+            const float _t20 = _t15 - _t16 * (_t17 * ((_t11) ? _t19 : ((_t19 > 0.0f) ? 1.0f : (-1.0f))));
+            const float _t21 = _t20 * _t4;
+            const float _t22 = _t4 * _t7;
+            const float _t23 = _t22 * _t22 * _t9;
+            const int _t24 = _t23 <= 1.0f;
+            const float _t25 = (_t24) ? _t23 : 1.0f;
+            const float _t26 = _t25 * _t25;
+            const float _t27 = _t26 * _t26;
+            const float _t28 = ((2.48015876e-05f - _t25 * 2.75573029e-07f + _t26 * (2.08744777e-09f - _t25 * 1.13046204e-11f)) * _t27 + (_t26 * (0.0416666679f - 0.00138888892f * _t25) + (1.0f - _t25 * 0.5f))) * _t7;
+            const float _t29 = _t22 * _t18;
+            const float _t30 = (_t26 * (1.60577024e-10f - 7.54937183e-13f * _t25) + (2.75573188e-06f - 2.50520991e-08f * _t25)) * _t27 + ((0.00833333377f - _t25 * 0.000198412701f) * _t26 + (1.0f - 0.166666672f * _t25));
+            const float _t31 = offsetgen_batch_cosf(_t6);
+            const float _t32 = _t28 - ((_t24) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f))) * _t30 * _t31;
+            const float _t33 = _t1 * _t4;
+            const float _t34 = _t33 * _t33 * _t9;
+            const int _t35 = _t34 <= 1.0f;
+            const float _t36 = (_t35) ? _t34 : 1.0f;
+            const float _t37 = _t36 * _t36;
+            const float _t38 = _t37 * _t37;
+            const float _t39 = (((2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37 + (2.48015876e-05f - _t36 * 2.75573029e-07f)) * _t38 + (1.0f - _t36 * 0.5f + (0.0416666679f - _t36 * 0.00138888892f) * _t37)) * _t1;
+            const float _t40 = offsetgen_batch_cosf(_t0);
+            const float _t41 = _t33 * _t18;
+            const float _t42 = _t37 * (0.00833333377f - _t36 * 0.000198412701f) + (1.0f - _t36 * 0.166666672f) + (2.75573188e-06f - _t36 * 2.50520991e-08f + (1.60577024e-10f - _t36 * 7.54937183e-13f) * _t37) * _t38;
+            const float _t43 = _t39 - _t40 * (((_t35) ? _t41 : ((_t41 > 0.0f) ? 1.0f : (-1.0f))) * _t42);
+            const float _t44 = _t32 * _t32 + _t20 * _t20 + _t43 * _t43;
+            const float _t45 = (_t44 > 0.0f) ? 1.0f / _t44 : 0.0f;
+            const float _t46 = _t21 * _t21 * _t45;
+            const int _t47 = _t46 <= 1.0f;
+            const float _t48 = (_t47) ? _t46 : 1.0f;
+            const float _t49 = _t48 * _t48;
+            const float _t50 = _t49 * _t49;
+            const float _t51 = offsetgen_batch_sqrtf(_t45);
+            const float _t52 = _t51 * _t21;
+            const float _t53 = ((2.48015876e-05f - _t48 * 2.75573029e-07f + _t49 * (2.08744777e-09f - _t48 * 1.13046204e-11f)) * _t50 + (1.0f - _t48 * 0.5f + _t49 * (0.0416666679f - _t48 * 0.00138888892f))) * _t3 - ((_t49 * (1.60577024e-10f - _t48 * 7.54937183e-13f) + (2.75573188e-06f - _t48 * 2.50520991e-08f)) * _t50 + (1.0f - _t48 * 0.166666672f + _t49 * (0.00833333377f - _t48 * 0.000198412701f))) * ((_t47) ? _t52 : ((_t52 > 0.0f) ? 1.0f : (-1.0f))) * _t16;
+            const float _t54 = _t43 * _t4;
+            const float _t55 = _t54 * _t54 * _t45;
+            const int _t56 = _t55 <= 1.0f;
+            const float _t57 = (_t56) ? _t55 : 1.0f;
+            const float _t58 = _t57 * _t57;
+            const float _t59 = _t58 * _t58;
+            const float _t60 = _t54 * _t51;
+            const float _t61 = _t1 * (_t58 * (0.0416666679f - 0.00138888892f * _t57) + (1.0f - _t57 * 0.5f) + (_t58 * (2.08744777e-09f - _t57 * 1.13046204e-11f) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59) - (_t58 * (0.00833333377f - _t57 * 0.000198412701f) + (1.0f - _t57 * 0.166666672f) + _t59 * (_t58 * (1.60577024e-10f - 7.54937183e-13f * _t57) + (2.75573188e-06f - _t57 * 2.50520991e-08f))) * ((_t56) ? _t60 : ((_t60 > 0.0f) ? 1.0f : (-1.0f))) * _t40;
+            const float _t62 = _t32 * _t4;
+            const float _t63 = _t62 * _t62 * _t45;
+            const int _t64 = _t63 <= 1.0f;
+            const float _t65 = (_t64) ? _t63 : 1.0f;
+            const float _t66 = _t65 * _t65;
+            const float _t67 = _t66 * _t66;
+            const float _t68 = _t62 * _t51;
+            const float _t69 = (_t67 * (2.48015876e-05f - 2.75573029e-07f * _t65 + _t66 * (2.08744777e-09f - 1.13046204e-11f * _t65)) + (1.0f - _t65 * 0.5f + _t66 * (0.0416666679f - 0.00138888892f * _t65))) * _t7 - ((0.00833333377f - 0.000198412701f * _t65) * _t66 + (1.0f - 0.166666672f * _t65) + _t67 * (2.75573188e-06f - 2.50520991e-08f * _t65 + _t66 * (1.60577024e-10f - 7.54937183e-13f * _t65))) * ((_t64) ? _t68 : ((_t68 > 0.0f) ? 1.0f : (-1.0f))) * _t31;
+            const float _t70 = _t53 * _t53 + _t61 * _t61 + _t69 * _t69;
+            const float _t71 = (_t70 > 0.0f) ? 1.0f / _t70 : 0.0f;
+            const float _t72 = _t61 * _t4;
+            const float _t73 = _t71 * (_t72 * _t72);
+            const int _t74 = _t73 <= 1.0f;
+            const float _t75 = (_t74) ? _t73 : 1.0f;
+            const float _t76 = _t75 * _t75;
+            const float _t77 = _t76 * _t76;
+            const float _t78 = offsetgen_batch_sqrtf(_t71);
+            const float _t79 = _t78 * _t72;
+            const float _t80 = _t1 * ((0.0416666679f - _t75 * 0.00138888892f) * _t76 + (1.0f - _t75 * 0.5f) + _t77 * (2.48015876e-05f - _t75 * 2.75573029e-07f + (2.08744777e-09f - _t75 * 1.13046204e-11f) * _t76)) - _t40 * (((_t74) ? _t79 : ((_t79 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t75 * 0.166666672f + (0.00833333377f - _t75 * 0.000198412701f) * _t76 + _t77 * (2.75573188e-06f - _t75 * 2.50520991e-08f + (1.60577024e-10f - _t75 * 7.54937183e-13f) * _t76)));
+            const float _t81 = _t80 * _t4;
+            const float _t82 = _t53 * _t4;
+            const float _t83 = _t82 * _t82 * _t71;
+            const int _t84 = _t83 <= 1.0f;
+            const float _t85 = (_t84) ? _t83 : 1.0f;
+            const float _t86 = _t85 * _t85;
+            const float _t87 = _t86 * _t86;
+            const float _t88 = _t78 * _t82;
+            const float _t89 = (1.0f - _t85 * 0.5f + (0.0416666679f - 0.00138888892f * _t85) * _t86 + _t87 * (2.48015876e-05f - _t85 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t85) * _t86)) * _t3 - ((0.00833333377f - 0.000198412701f * _t85) * _t86 + (1.0f - 0.166666672f * _t85) + _t87 * (2.75573188e-06f - 2.50520991e-08f * _t85 + (1.60577024e-10f - 7.54937183e-13f * _t85) * _t86)) * ((_t84) ? _t88 : ((_t88 > 0.0f) ? 1.0f : (-1.0f))) * _t16;
+            const float _t90 = _t69 * _t4;
+            const float _t91 = _t90 * _t90 * _t71;
+            const int _t92 = _t91 <= 1.0f;
+            const float _t93 = (_t92) ? _t91 : 1.0f;
+            const float _t94 = _t93 * _t93;
+            const float _t95 = _t94 * _t94;
+            const float _t96 = _t90 * _t78;
+            const float _t97 = (_t95 * (2.48015876e-05f - _t93 * 2.75573029e-07f + _t94 * (2.08744777e-09f - _t93 * 1.13046204e-11f)) + (1.0f - _t93 * 0.5f + _t94 * (0.0416666679f - _t93 * 0.00138888892f))) * _t7 - (1.0f - _t93 * 0.166666672f + (0.00833333377f - _t93 * 0.000198412701f) * _t94 + (2.75573188e-06f - _t93 * 2.50520991e-08f + _t94 * (1.60577024e-10f - _t93 * 7.54937183e-13f)) * _t95) * ((_t92) ? _t96 : ((_t96 > 0.0f) ? 1.0f : (-1.0f))) * _t31;
+            const float _t98 = _t89 * _t89 + _t80 * _t80 + _t97 * _t97;
+            const float _t99 = (_t98 > 0.0f) ? 1.0f / _t98 : 0.0f;
+            const float _t100 = _t81 * _t81 * _t99;
+            const int _t101 = _t100 <= 1.0f;
+            const float _t102 = (_t101) ? _t100 : 1.0f;
+            const float _t103 = _t102 * _t102;
+            const float _t104 = _t103 * _t103;
+            const float _t105 = offsetgen_batch_sqrtf(_t99);
+            const float _t106 = _t81 * _t105;
+            const float _t107 = _t4 * _t89;
+            const float _t108 = _t107 * _t107 * _t99;
+            const int _t109 = _t108 <= 1.0f;
+            const float _t110 = _t107 * _t105;
+            const float _t111 = (_t109) ? _t108 : 1.0f;
+            const float _t112 = _t111 * _t111;
+            const float _t113 = _t112 * _t112;
+            const float _t114 = _t97 * _t4;
+            const float _t115 = _t114 * _t114 * _t99;
+            const int _t116 = _t115 <= 1.0f;
+            const float _t117 = (_t116) ? _t115 : 1.0f;
+            const float _t118 = _t117 * _t117;
+            const float _t119 = _t118 * _t118;
+            const float _t120 = _t105 * _t114;
+            const float _t121 = -_t19;
+            const float _t122 = _t15 - _t16 * (((_t11) ? _t121 : ((_t121 > 0.0f) ? 1.0f : (-1.0f))) * _t17);
+            const float _t123 = -_t41;
+            const float _t124 = _t39 - ((_t35) ? _t123 : ((_t123 > 0.0f) ? 1.0f : (-1.0f))) * _t42 * _t40;
+            const float _t125 = -_t29;
+            const float _t126 = _t28 - ((_t24) ? _t125 : ((_t125 > 0.0f) ? 1.0f : (-1.0f))) * _t30 * _t31;
+            const float _t127 = _t122 * _t122 + _t124 * _t124 + _t126 * _t126;
+            const float _t128 = (_t127 > 0.0f) ? 1.0f / _t127 : 0.0f;
+            const float _t129 = _t126 * _t4;
+            const float _t130 = _t128 * (_t129 * _t129);
+            const int _t131 = _t130 <= 1.0f;
+            const float _t132 = (_t131) ? _t130 : 1.0f;
+            const float _t133 = _t132 * _t132;
+            const float _t134 = _t133 * _t133;
+            const float _t135 = offsetgen_batch_sqrtf(_t128);
+            const float _t136 = -(_t129 * _t135);
+            const float _t137 = _t7 * (1.0f - _t132 * 0.5f + (0.0416666679f - _t132 * 0.00138888892f) * _t133 + _t134 * (_t133 * (2.08744777e-09f - _t132 * 1.13046204e-11f) + (2.48015876e-05f - _t132 * 2.75573029e-07f))) - _t31 * ((1.0f - _t132 * 0.166666672f + (0.00833333377f - _t132 * 0.000198412701f) * _t133 + _t134 * (2.75573188e-06f - _t132 * 2.50520991e-08f + (1.60577024e-10f - _t132 * 7.54937183e-13f) * _t133)) * ((_t131) ? _t136 : ((_t136 > 0.0f) ? 1.0f : (-1.0f))));
+            const float _t138 = _t122 * _t4;
+            const float _t139 = _t128 * (_t138 * _t138);
+            const int _t140 = _t139 <= 1.0f;
+            const float _t141 = (_t140) ? _t139 : 1.0f;
+            const float _t142 = _t141 * _t141;
+            const float _t143 = _t142 * _t142;
+            const float _t144 = -(_t138 * _t135);
+            const float _t145 = (1.0f - _t141 * 0.5f + (0.0416666679f - _t141 * 0.00138888892f) * _t142 + (2.48015876e-05f - _t141 * 2.75573029e-07f + _t142 * (2.08744777e-09f - _t141 * 1.13046204e-11f)) * _t143) * _t3 - _t16 * (((0.00833333377f - _t141 * 0.000198412701f) * _t142 + (1.0f - _t141 * 0.166666672f) + (2.75573188e-06f - _t141 * 2.50520991e-08f + (1.60577024e-10f - _t141 * 7.54937183e-13f) * _t142) * _t143) * ((_t140) ? _t144 : ((_t144 > 0.0f) ? 1.0f : (-1.0f))));
+            const float _t146 = _t124 * _t4;
+            const float _t147 = _t128 * (_t146 * _t146);
+            const int _t148 = _t147 <= 1.0f;
+            const float _t149 = (_t148) ? _t147 : 1.0f;
+            const float _t150 = _t149 * _t149;
+            const float _t151 = _t150 * _t150;
+            const float _t152 = -(_t146 * _t135);
+            const float _t153 = _t1 * ((_t150 * (2.08744777e-09f - _t149 * 1.13046204e-11f) + (2.48015876e-05f - _t149 * 2.75573029e-07f)) * _t151 + (1.0f - _t149 * 0.5f + (0.0416666679f - _t149 * 0.00138888892f) * _t150)) - _t40 * (((2.75573188e-06f - _t149 * 2.50520991e-08f + (1.60577024e-10f - _t149 * 7.54937183e-13f) * _t150) * _t151 + (1.0f - _t149 * 0.166666672f + (0.00833333377f - _t149 * 0.000198412701f) * _t150)) * ((_t148) ? _t152 : ((_t152 > 0.0f) ? 1.0f : (-1.0f))));
+            const float _t154 = _t137 * _t137 + _t145 * _t145 + _t153 * _t153;
+            const float _t155 = (_t154 > 0.0f) ? 1.0f / _t154 : 0.0f;
+            const float _t156 = _t4 * _t137;
+            const float _t157 = _t155 * (_t156 * _t156);
+            const int _t158 = _t157 <= 1.0f;
+            const float _t159 = (_t158) ? _t157 : 1.0f;
+            const float _t160 = _t159 * _t159;
+            const float _t161 = _t160 * _t160;
+            const float _t162 = offsetgen_batch_sqrtf(_t155);
+            const float _t163 = -(_t156 * _t162);
+            const float _t164 = ((2.48015876e-05f - _t159 * 2.75573029e-07f + (2.08744777e-09f - _t159 * 1.13046204e-11f) * _t160) * _t161 + (1.0f - _t159 * 0.5f + _t160 * (0.0416666679f - 0.00138888892f * _t159))) * _t7 - (_t161 * (_t160 * (1.60577024e-10f - 7.54937183e-13f * _t159) + (2.75573188e-06f - 2.50520991e-08f * _t159)) + (1.0f - 0.166666672f * _t159 + (0.00833333377f - 0.000198412701f * _t159) * _t160)) * ((_t158) ? _t163 : ((_t163 > 0.0f) ? 1.0f : (-1.0f))) * _t31;
+            const float _t165 = _t4 * _t153;
+            const float _t166 = _t165 * _t165 * _t155;
+            const int _t167 = _t166 <= 1.0f;
+            const float _t168 = (_t167) ? _t166 : 1.0f;
+            const float _t169 = _t168 * _t168;
+            const float _t170 = _t169 * _t169;
+            const float _t171 = -(_t162 * _t165);
+            const float _t172 = _t1 * ((_t169 * (2.08744777e-09f - 1.13046204e-11f * _t168) + (2.48015876e-05f - 2.75573029e-07f * _t168)) * _t170 + (1.0f - _t168 * 0.5f + _t169 * (0.0416666679f - 0.00138888892f * _t168))) - _t40 * (((_t167) ? _t171 : ((_t171 > 0.0f) ? 1.0f : (-1.0f))) * (_t169 * (0.00833333377f - 0.000198412701f * _t168) + (1.0f - 0.166666672f * _t168) + ((1.60577024e-10f - 7.54937183e-13f * _t168) * _t169 + (2.75573188e-06f - 2.50520991e-08f * _t168)) * _t170));
+            const float _t173 = _t4 * _t145;
+            const float _t174 = _t173 * _t173 * _t155;
+            const int _t175 = _t174 <= 1.0f;
+            const float _t176 = (_t175) ? _t174 : 1.0f;
+            const float _t177 = _t176 * _t176;
+            const float _t178 = _t177 * _t177;
+            const float _t179 = -(_t162 * _t173);
+            const float _t180 = ((0.0416666679f - _t176 * 0.00138888892f) * _t177 + (1.0f - _t176 * 0.5f) + (_t177 * (2.08744777e-09f - _t176 * 1.13046204e-11f) + (2.48015876e-05f - _t176 * 2.75573029e-07f)) * _t178) * _t3 - _t16 * (((_t175) ? _t179 : ((_t179 > 0.0f) ? 1.0f : (-1.0f))) * ((2.75573188e-06f - _t176 * 2.50520991e-08f + (1.60577024e-10f - _t176 * 7.54937183e-13f) * _t177) * _t178 + ((0.00833333377f - _t176 * 0.000198412701f) * _t177 + (1.0f - _t176 * 0.166666672f))));
+            const float _t181 = _t164 * _t164 + _t172 * _t172 + _t180 * _t180;
+            const float _t182 = (_t181 > 0.0f) ? 1.0f / _t181 : 0.0f;
+            const float _t183 = _t172 * _t4;
+            const float _t184 = _t182 * (_t183 * _t183);
+            const int _t185 = _t184 <= 1.0f;
+            const float _t186 = (_t185) ? _t184 : 1.0f;
+            const float _t187 = _t186 * _t186;
+            const float _t188 = _t187 * _t187;
+            const float _t189 = offsetgen_batch_sqrtf(_t182);
+            const float _t190 = -(_t189 * _t183);
+            const float _t191 = _t180 * _t4;
+            const float _t192 = _t182 * (_t191 * _t191);
+            const int _t193 = _t192 <= 1.0f;
+            const float _t194 = (_t193) ? _t192 : 1.0f;
+            const float _t195 = _t194 * _t194;
+            const float _t196 = _t195 * _t195;
+            const float _t197 = -(_t191 * _t189);
+            const float _t198 = _t164 * _t4;
+            const float _t199 = _t198 * _t198 * _t182;
+            const int _t200 = _t199 <= 1.0f;
+            const float _t201 = (_t200) ? _t199 : 1.0f;
+            const float _t202 = _t201 * _t201;
+            const float _t203 = _t202 * _t202;
+            const float _t204 = -(_t189 * _t198);
+            out[i + j] = (((2.48015876e-05f - _t102 * 2.75573029e-07f + (2.08744777e-09f - _t102 * 1.13046204e-11f) * _t103) * _t104 + (1.0f - _t102 * 0.5f + _t103 * (0.0416666679f - _t102 * 0.00138888892f))) * _t40 + _t1 * ((_t103 * (0.00833333377f - _t102 * 0.000198412701f) + (1.0f - _t102 * 0.166666672f) + (2.75573188e-06f - _t102 * 2.50520991e-08f + (1.60577024e-10f - _t102 * 7.54937183e-13f) * _t103) * _t104) * ((_t101) ? _t106 : ((_t106 > 0.0f) ? 1.0f : (-1.0f)))) + (_t3 * (((_t109) ? _t110 : ((_t110 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t111 + _t112 * (0.00833333377f - 0.000198412701f * _t111) + (_t112 * (1.60577024e-10f - 7.54937183e-13f * _t111) + (2.75573188e-06f - 2.50520991e-08f * _t111)) * _t113)) + _t16 * (_t113 * (2.48015876e-05f - _t111 * 2.75573029e-07f + (2.08744777e-09f - _t111 * 1.13046204e-11f) * _t112) + (_t112 * (0.0416666679f - 0.00138888892f * _t111) + (1.0f - _t111 * 0.5f)))) + ((_t118 * (0.00833333377f - _t117 * 0.000198412701f) + (1.0f - 0.166666672f * _t117) + (_t118 * (1.60577024e-10f - 7.54937183e-13f * _t117) + (2.75573188e-06f - 2.50520991e-08f * _t117)) * _t119) * ((_t116) ? _t120 : ((_t120 > 0.0f) ? 1.0f : (-1.0f))) * _t7 + (1.0f - _t117 * 0.5f + _t118 * (0.0416666679f - 0.00138888892f * _t117) + (2.48015876e-05f - _t117 * 2.75573029e-07f + _t118 * (2.08744777e-09f - _t117 * 1.13046204e-11f)) * _t119) * _t31)) * (_t40 * ((_t187 * (2.08744777e-09f - 1.13046204e-11f * _t186) + (2.48015876e-05f - 2.75573029e-07f * _t186)) * _t188 + (1.0f - 0.5f * _t186 + _t187 * (0.0416666679f - 0.00138888892f * _t186))) + _t1 * (((_t185) ? _t190 : ((_t190 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t186 + _t187 * (0.00833333377f - 0.000198412701f * _t186) + (2.75573188e-06f - 2.50520991e-08f * _t186 + _t187 * (1.60577024e-10f - 7.54937183e-13f * _t186)) * _t188)) + (_t16 * (_t195 * (0.0416666679f - 0.00138888892f * _t194) + (1.0f - _t194 * 0.5f) + _t196 * (2.48015876e-05f - 2.75573029e-07f * _t194 + (2.08744777e-09f - 1.13046204e-11f * _t194) * _t195)) + ((_t193) ? _t197 : ((_t197 > 0.0f) ? 1.0f : (-1.0f))) * (_t196 * ((1.60577024e-10f - 7.54937183e-13f * _t194) * _t195 + (2.75573188e-06f - 2.50520991e-08f * _t194)) + (_t195 * (0.00833333377f - 0.000198412701f * _t194) + (1.0f - 0.166666672f * _t194))) * _t3 + ((1.0f - _t201 * 0.5f + (0.0416666679f - 0.00138888892f * _t201) * _t202 + (2.48015876e-05f - _t201 * 2.75573029e-07f + (2.08744777e-09f - _t201 * 1.13046204e-11f) * _t202) * _t203) * _t31 + _t7 * (((_t200) ? _t204 : ((_t204 > 0.0f) ? 1.0f : (-1.0f))) * (_t203 * (2.75573188e-06f - 2.50520991e-08f * _t201 + (1.60577024e-10f - 7.54937183e-13f * _t201) * _t202) + (1.0f - 0.166666672f * _t201 + (0.00833333377f - _t201 * 0.000198412701f) * _t202))))));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_proj_o8_shellf(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = schwarzp_proj_o8_shellf(x[i], y[i], z[i], t[i]);
 }
 
 

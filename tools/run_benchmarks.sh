@@ -82,6 +82,19 @@ done
 stamp "generation: gyroid order 10 (works at all), once"
 time_generate gyroid 10 1
 
+# The projection method (issue 10): orders 2-16 through the same CLI path.
+stamp "generation, projection method: $(echo $surfaces | wc -w) surfaces x orders 2, 4, 8, 12, 16, $gen_reps runs each"
+echo -e "surface\torder\trep\twall_s\tuser_s\tsys_s\tmaxrss_kb" > "$results/gen_projection.tsv"
+mkdir -p "$results/gen_projection"
+for surface in $surfaces; do
+  for order in 2 4 8 12 16; do
+    header="$results/gen_projection/${surface}_o${order}.h"
+    $py bench/time_cli.py --runs "$gen_reps" --prefix "$surface\t$order\t" --before "rm -f $header" -- \
+      "$offsetgen" generate --surface "$surface" --order "$order" --method projection --lang c -o "$header" --quiet \
+      >> "$results/gen_projection.tsv"
+  done
+done
+
 # ---- Naive baseline: plain nested GiNaC diff ---------------------------------------------------------
 stamp "naive nested GiNaC diff: orders 1-6, cap ${naive_cap}s"
 : > "$results/naive.jsonl"
@@ -143,6 +156,11 @@ for flags in O2 O3native O3native_nme; do
     --benchmark_min_time="$min_time" --benchmark_out="$results/eval_$flags.json" --benchmark_out_format=json \
     > "$results/eval_$flags.txt"
 done
+stamp "offset methods side by side: bench_methods ($bench_reps repetitions)"
+"$bench/bench_methods" --benchmark_repetitions="$bench_reps" --benchmark_report_aggregates_only=true \
+  --benchmark_min_time="$min_time" --benchmark_out="$results/methods.json" --benchmark_out_format=json \
+  > "$results/methods.txt"
+cp "$bench"/generated/*_richardson_o*.h "$bench"/generated/*_projection_o*.h "$results/gen/"
 stamp "batch agreement (tests/batch)"
 "$build/tests/batch/batch_tests" --gtest_filter='BatchAgreement.*' > "$results/batch_agreement.txt" 2>&1 ||
   echo "run_benchmarks: batch agreement test FAILED (see $results/batch_agreement.txt)" >&2

@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
+#include <ostream>
+#include <regex>
 #include <tuple>
 
 namespace offsetgen::check {
@@ -81,6 +85,76 @@ TEST(Values, AWrongConstantIsCaught) {
   EXPECT_FALSE(r.pass);
   EXPECT_GT(r.max_shift_double, 1e-12);
 }
+
+// A header with both precisions (and so the float twins and both batch APIs).
+std::string write_both_precisions(const std::string& dir, const std::string& surface, int order) {
+  GenerationRequest request;
+  request.surface = surface;
+  request.order = order;
+  request.precisions = {Precision::Double, Precision::Float};
+  request.command = "check_tests";
+  const Generation g = generate(request);
+  const std::string path = dir + "/" + g.prefix + ".h";
+  testing::write_text(path, g.c_header);
+  return path;
+}
+
+// The first floating-point literal in the body of the function whose definition starts with
+// `signature`, multiplied by 1.01 (suffix kept): a wrong constant in that function only.
+std::string with_wrong_constant(std::string text, const std::string& signature) {
+  const auto start = text.find(signature);
+  EXPECT_NE(start, std::string::npos) << signature;
+  const auto body = text.find("{\n", start);
+  std::smatch m;
+  const std::string rest = text.substr(body);
+  EXPECT_TRUE(std::regex_search(rest, m, std::regex(R"(\b([0-9]+\.[0-9]+(e[-+]?[0-9]+)?)(f?)\b)")));
+  const std::string changed = fmt::format("{:.17g}", std::stod(m[1].str()) * 1.01);
+  text.replace(body + static_cast<size_t>(m.position(0)), static_cast<size_t>(m.length(0)),
+               (changed.find('.') == std::string::npos ? changed + ".0" : changed) + m[3].str());
+  return text;
+}
+
+struct WrongConstant {
+  const char* signature;  // where the constant is changed
+  const char* function;   // the row of the value check that must fail
+};
+void PrintTo(const WrongConstant& w, std::ostream* os) { *os << w.function; }
+
+class ValuesWrongConstant : public ::testing::TestWithParam<WrongConstant> {};
+
+// Every emitted function is judged: a wrong constant fails the check in the function that has it,
+// whatever its precision or API (before, the normal, the float twins and the batch functions were
+// reported only, or not compared at all).
+TEST_P(ValuesWrongConstant, FailsTheFunctionThatHasIt) {
+  const std::string dir = testing::scratch_dir(std::string("values-wrong-") + GetParam().function);
+  const std::string path = write_both_precisions(dir, "gyroid", 2);
+  testing::write_text(path, with_wrong_constant(testing::read_text(path), GetParam().signature));
+  FileMetadata meta = read_metadata(path);
+  CompileOptions options;
+  options.optimization = "-O0";
+  options.cxx = false;
+  CompileResult compiled = compile_and_load(path, meta, find_toolchain(), options);
+  ASSERT_TRUE(compiled.ok) << compiled.steps.front().output;
+  auto reference = rebuild_reference(meta);
+  ValueCheckOptions vo;
+  vo.points = 40;
+  vo.normal_stride = 1;
+  ValueReport r = check_values(compiled.library->functions(), *reference, meta, std::nullopt, vo);
+  EXPECT_FALSE(r.pass);
+  for (const auto& f : r.functions)
+    EXPECT_EQ(f.pass, f.function != GetParam().function) << f.function << " max " << f.max_shift << " limit " << f.tolerance;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryKindOfFunction, ValuesWrongConstant,
+    ::testing::Values(WrongConstant{"static inline double gyroid_o2_offset(", "offset"},
+                      WrongConstant{"static inline void gyroid_o2_normal(", "normal"},
+                      WrongConstant{"static inline float gyroid_o2_offsetf(", "offsetf"},
+                      WrongConstant{"static inline float gyroid_o2_shellf(", "shellf"},
+                      WrongConstant{"static inline void gyroid_o2_normalf(", "normalf"},
+                      WrongConstant{"static inline void gyroid_o2_offset_n(", "offset_n"},
+                      WrongConstant{"static inline void gyroid_o2_shellf_n(", "shellf_n"}),
+    [](const auto& param_info) { return std::string(param_info.param.function); });
 
 TEST(Values, ExactConversionKeepsEveryBit) {
   for (double v : {0.1, -1e-300, 0.3333333333333333, 123456.789}) {
