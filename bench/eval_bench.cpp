@@ -22,8 +22,8 @@ Registry& registry() {
 
 namespace {
 
-constexpr std::size_t kPoints = 4096;    // per iteration, scalar and batch
-constexpr std::size_t kAdPoints = 64;    // nested AD is ~1e4 times slower
+constexpr std::size_t kPoints = 4096;  // per iteration, scalar and batch
+constexpr std::size_t kAdPoints = 64;  // nested AD is ~1e4 times slower
 
 template <class T>
 struct Points {

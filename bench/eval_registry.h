@@ -34,7 +34,7 @@ struct Registry {
   std::map<Key, OursFunctions> ours;
   std::map<Key, Scalar> sympy;
   std::map<Key, Scalar> ad;
-  std::map<Key, std::pair<Scalar, Scalar>> libm_trig;  // offset, shell calling libm's sin/cos
+  std::map<Key, std::pair<Scalar, Scalar>> libm_trig;            // offset, shell calling libm's sin/cos
   std::map<std::pair<std::string, Key>, OursFunctions> methods;  // (method, (surface, order))
 };
 

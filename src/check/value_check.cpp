@@ -61,7 +61,6 @@ GiNaC::numeric exact(double value) {
   return GiNaC::numeric(integer) * GiNaC::numeric(2).power(exponent - 53);
 }
 
-
 namespace {
 
 // One random point with everything the 40-digit model says about it.
@@ -180,7 +179,8 @@ void compare_scalar(const Scalar<T>& f, const char* suffix, const std::vector<Sa
     if (f.normal && s.normal) {
       f.normal(p.data(), h, n.data());
       double e2 = 0;
-      for (int k = 0; k < dims; ++k) e2 += std::pow(double(n[static_cast<size_t>(k)]) - (*s.normal)[static_cast<size_t>(k)], 2);
+      for (int k = 0; k < dims; ++k)
+        e2 += std::pow(double(n[static_cast<size_t>(k)]) - (*s.normal)[static_cast<size_t>(k)], 2);
       normal.add(std::sqrt(e2), with(s.p, s.h));
     }
   }
@@ -197,7 +197,8 @@ void compare_batch(BatchFunction<T> offset_n, BatchFunction<T> shell_n, const ch
   std::vector<std::vector<T>> coords(3, std::vector<T>(n, T(0)));
   std::vector<T> h(n), t(n), result(n);
   for (size_t i = 0; i < n; ++i) {
-    for (int k = 0; k < dims; ++k) coords[static_cast<size_t>(k)][i] = static_cast<T>(samples[i].p[static_cast<size_t>(k)]);
+    for (int k = 0; k < dims; ++k)
+      coords[static_cast<size_t>(k)][i] = static_cast<T>(samples[i].p[static_cast<size_t>(k)]);
     h[i] = static_cast<T>(samples[i].h);
     t[i] = static_cast<T>(samples[i].t);
   }
@@ -260,7 +261,9 @@ void compare_float32(const Implementations& impl, const std::vector<Sample>& sam
       if (!samples[i].normal) continue;
       double e2 = 0;
       for (int k = 0; k < dims; ++k)
-        e2 += std::pow(double(v[i * static_cast<size_t>(dims) + static_cast<size_t>(k)]) - (*samples[i].normal)[static_cast<size_t>(k)], 2);
+        e2 += std::pow(double(v[i * static_cast<size_t>(dims) + static_cast<size_t>(k)]) -
+                           (*samples[i].normal)[static_cast<size_t>(k)],
+                       2);
       a.add(std::sqrt(e2), with(samples[i].p, samples[i].h));
     }
     out.push_back(a.done());

@@ -118,7 +118,6 @@ Generation build_generation(const GenerationRequest& request) {
   return g;
 }
 
-
 Generation generate(const GenerationRequest& request) {
   Generation g = build_generation(request);
   FileFacts facts;

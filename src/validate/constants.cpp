@@ -10,7 +10,7 @@
 namespace offsetgen {
 
 void require_representable_constants(const SurfacePrograms& programs, const OffsetConstruction& construction, int dims,
-                                      bool need_float) {
+                                     bool need_float) {
   const double hessian_bound = construction.bounds().hessian;
   for (const auto& f : emitted_functions(programs, dims, construction.facts())) {
     for (NodeId id : schedule(*f.program)) {

@@ -11,6 +11,6 @@ namespace offsetgen {
 // Throws InputError naming the function and the constant when a constant is not finite in double,
 // or beyond the float range when `need_float` (--precision float, or GLSL).
 void require_representable_constants(const SurfacePrograms& programs, const OffsetConstruction& construction, int dims,
-                                      bool need_float);
+                                     bool need_float);
 
 }  // namespace offsetgen

@@ -28,7 +28,7 @@ TEST_P(Values, ZeroSetShiftBelow1e12) {
   auto reference = rebuild_reference(c->meta);
   ValueCheckOptions options;
   options.points = order <= 4 ? 60 : (order == 5 ? 24 : 12);  // 40-digit evaluation costs ~20 ms at order 6
-  options.normal_stride = 1000;                                // the normal: first point only
+  options.normal_stride = 1000;                               // the normal: first point only
   ValueReport r = check_values(c->functions(), *reference, c->meta, std::nullopt, options);
   EXPECT_TRUE(r.pass);
   EXPECT_LT(r.max_shift_double, 1e-12) << method << " " << surface << " o" << order;
@@ -141,20 +141,27 @@ TEST_P(ValuesWrongConstant, FailsTheFunctionThatHasIt) {
   vo.normal_stride = 1;
   ValueReport r = check_values(compiled.library->functions(), *reference, meta, std::nullopt, vo);
   EXPECT_FALSE(r.pass);
-  for (const auto& f : r.functions)
-    EXPECT_EQ(f.pass, f.function != GetParam().function) << f.function << " max " << f.max_shift << " limit " << f.tolerance;
+  // The batch loop hands its last n % 8 (16) points to the scalar function, so the batch twin of a
+  // scalar function with the wrong constant may fail with it; every other function must pass.
+  const std::string wrong = GetParam().function, batch_twin = wrong + "_n";
+  for (const auto& f : r.functions) {
+    if (f.function == wrong) {
+      EXPECT_FALSE(f.pass) << f.function << " max " << f.max_shift << " limit " << f.tolerance;
+    } else if (f.function != batch_twin) {
+      EXPECT_TRUE(f.pass) << f.function << " max " << f.max_shift << " limit " << f.tolerance;
+    }
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    EveryKindOfFunction, ValuesWrongConstant,
-    ::testing::Values(WrongConstant{"static inline double gyroid_o2_offset(", "offset"},
-                      WrongConstant{"static inline void gyroid_o2_normal(", "normal"},
-                      WrongConstant{"static inline float gyroid_o2_offsetf(", "offsetf"},
-                      WrongConstant{"static inline float gyroid_o2_shellf(", "shellf"},
-                      WrongConstant{"static inline void gyroid_o2_normalf(", "normalf"},
-                      WrongConstant{"static inline void gyroid_o2_offset_n(", "offset_n"},
-                      WrongConstant{"static inline void gyroid_o2_shellf_n(", "shellf_n"}),
-    [](const auto& param_info) { return std::string(param_info.param.function); });
+INSTANTIATE_TEST_SUITE_P(EveryKindOfFunction, ValuesWrongConstant,
+                         ::testing::Values(WrongConstant{"static inline double gyroid_o2_offset(", "offset"},
+                                           WrongConstant{"static inline void gyroid_o2_normal(", "normal"},
+                                           WrongConstant{"static inline float gyroid_o2_offsetf(", "offsetf"},
+                                           WrongConstant{"static inline float gyroid_o2_shellf(", "shellf"},
+                                           WrongConstant{"static inline void gyroid_o2_normalf(", "normalf"},
+                                           WrongConstant{"static inline void gyroid_o2_offset_n(", "offset_n"},
+                                           WrongConstant{"static inline void gyroid_o2_shellf_n(", "shellf_n"}),
+                         [](const auto& param_info) { return std::string(param_info.param.function); });
 
 TEST(Values, ExactConversionKeepsEveryBit) {
   for (double v : {0.1, -1e-300, 0.3333333333333333, 123456.789}) {

@@ -214,6 +214,16 @@ TEST(Cli, ExpressionBlowUpsAreRefusedQuicklyWithTheLimit) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60));
 }
 
+// The estimate models Richardson's growth; the projection method's size grows linearly with the
+// order, so the same expression is built at order 8 and judged on its functions.
+TEST(Cli, ProjectionIsNotRefusedByRichardsonsCostEstimate) {
+  std::string e = "x";
+  for (int i = 0; i < 20; ++i) e = "sin(" + e + ")";
+  const auto r = run_offsetgen("generate --name s -o - --method projection --order 8 --expr '" + e + " + y + z'");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("static inline double s_offset("), std::string::npos);
+}
+
 TEST(Cli, HelpListsTheAcceptedFunctions) {
   const auto help = run_offsetgen("generate --help");
   EXPECT_NE(help.output.find("acos asin atan cos cosh exp log sin sinh sqrt tan tanh; the constant Pi"),

@@ -27,9 +27,7 @@ namespace glsl = offsetgen::glsl;
 namespace gt = offsetgen::glsl_test;
 namespace ts = offsetgen::test_support;
 
-check::FileMetadata metadata_of(const std::string& snippet) {
-  return check::parse_metadata(snippet);
-}
+check::FileMetadata metadata_of(const std::string& snippet) { return check::parse_metadata(snippet); }
 
 class SnippetCompiles : public ::testing::TestWithParam<gt::SnippetFile> {};
 
