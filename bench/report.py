@@ -134,18 +134,32 @@ def load_eval(results):
     return out
 
 
-def methods_section(results, gen):
-    """Markdown lines: Richardson and projection side by side (issue 10), or [] without the data."""
+METHODS_BEGIN = "<!-- methods section: tools/run_benchmarks.sh --methods-only replaces it -->"
+METHODS_END = "<!-- end of methods section -->"
+
+
+def methods_section(results, gen, own_run=None):
+    """Markdown lines: Richardson and projection side by side (issue 10), or [] without the data.
+    own_run: the machine facts when the section comes from a run of its own (--methods-only)."""
     t = load_benchmark_json(os.path.join(results, "methods.json"))
     if not t:
         return []
     gen_proj = load_gen_tsv(os.path.join(results, "gen_projection.tsv"))
+    gen = load_gen_tsv(os.path.join(results, "gen_richardson.tsv")) or gen
     keys = sorted({(parts[2], int(parts[3][1:])) for parts in (n.split("/") for n in t)},
                   key=lambda k: (SYMPY_SURFACES.index(k[0]) if k[0] in SYMPY_SURFACES else 99, k[1]))
     md = []
     w = md.append
+    w(METHODS_BEGIN)
     w("## Two offset methods side by side (issue 10)")
     w("")
+    if own_run:
+        w("From a run of its own (`tools/run_benchmarks.sh --methods-only`): %s, commit %s, %s, %s cores, load "
+          "average %s at the start and %s at the end, %s s in all (%s s building)." % (
+              own_run.get("date", "?"), own_run.get("commit", "?"), own_run.get("cpu", "?"), own_run.get("cores", "?"),
+              own_run.get("load_start", "?"), own_run.get("load_end", "?"), own_run.get("total_seconds", "?"),
+              own_run.get("build_seconds", "?")))
+        w("")
     w("The same surfaces and orders generated with `--method richardson` and `--method projection`, compiled "
       "into one executable (`bench_methods`, `-O3 -march=native`), ns per point (median CPU time). Ratio = "
       "projection / Richardson: below 1 projection is faster. ops = the metadata's op count after CSE.")
@@ -217,7 +231,27 @@ def methods_section(results, gen):
             rows.append(row)
         w(table(["surface"] + ["o%d" % m for m in orders], rows))
         w("")
+    w(METHODS_END)
+    w("")
     return md
+
+
+def replace_methods_section(results, output):
+    """--methods-only: the methods section of `output` replaced (or added before "How to reproduce")."""
+    section = "\n".join(methods_section(results, {}, own_run=load_machine(results)))
+    text = open(output).read() if os.path.exists(output) else "# Benchmarks\n\n"
+    if METHODS_BEGIN in text and METHODS_END in text:
+        begin = text.index(METHODS_BEGIN)
+        end = text.index(METHODS_END) + len(METHODS_END) + 1
+        text = text[:begin] + section + text[end:]
+    elif "## How to reproduce" in text:
+        at = text.index("## How to reproduce")
+        text = text[:at] + section + "\n" + text[at:]
+    else:
+        text = text + "\n" + section + "\n"
+    with open(output, "w") as f:
+        f.write(text)
+    return 0
 
 
 def ns(times, mode, impl, surface, order, function, precision):
@@ -264,8 +298,12 @@ def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--results", required=True)
     p.add_argument("--output", required=True)
+    p.add_argument("--methods-only", action="store_true",
+                   help="replace only the section comparing the offset methods in --output")
     args = p.parse_args(argv)
     R = args.results
+    if args.methods_only:
+        return replace_methods_section(R, args.output)
 
     machine = load_machine(R)
     gen = load_gen(R)
