@@ -8,6 +8,7 @@
 #include "offset/method.h"
 #include "surfaces/surface.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -32,6 +33,7 @@ struct GenerationRequest {
   std::string command;      // the exact command, for the banner
   std::string c_file_name;  // names printed in the banners
   std::string glsl_file_name;
+  std::function<void(const std::string&)> notice;  // announces a long run with a time estimate; may be empty
 };
 
 struct Generation {
@@ -39,7 +41,7 @@ struct Generation {
   std::unique_ptr<OffsetConstruction> construction;
   SurfacePrograms programs;
   std::string prefix;
-  std::string metadata_json;
+  std::string metadata_json;  // the C header's block; the GLSL snippet's says "language":"glsl"
   std::string c_header;      // empty unless requested (generate())
   std::string glsl_snippet;  // empty unless requested (generate())
 
