@@ -135,7 +135,7 @@ MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress) {
   progress("writing " + s.output, -1);
   const std::string bytes = encode_mesh(mesh, m.format, description(s, m, field.generation().surface.name));
   m.file_bytes = bytes.size();
-  write_file_atomically(s.output, bytes);
+  write_file(s.output, bytes);
   clock.done("write");
   return m;
 }
