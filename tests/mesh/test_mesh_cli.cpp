@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <regex>
 
 #include <unistd.h>
@@ -42,32 +43,47 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<Case>& c) { return c.param.name; });
 
 // The gyroid block at t = 0.1 against its exact walls (the generated order-4 functions).
+// Built on first use inside a test (not in SetUpTestSuite, where a failure would only mark the tests
+// skipped): the mesh, its resolution and the exact walls.
+struct AccuracyCase {
+  int resolution = 0;
+  std::vector<std::array<std::array<float, 3>, 3>> facets;
+  std::unique_ptr<ExactWalls> walls;
+  std::string error;
+};
+
+const AccuracyCase& accuracy_case() {
+  static const AccuracyCase c = [] {
+    AccuracyCase out;
+    const std::string stl = scratch_dir("accuracy") + "/gyroid.stl";
+    CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.1", "--cells", "2", "--cell-size",
+                              "10", "-o", stl});
+    if (r.exit_code != 0) {
+      out.error = r.output;
+      return out;
+    }
+    out.resolution = resolution_of(r.output);
+    out.facets = read_stl(stl);
+    out.walls = std::make_unique<ExactWalls>("gyroid", 4, 0.1);
+    return out;
+  }();
+  return c;
+}
+
 class MeshAccuracy : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new std::string(scratch_dir("accuracy"));
-    const std::string stl = *dir_ + "/gyroid.stl";
-    CliRun r = run_offsetgen(
-        {"mesh", "--surface", "gyroid", "--thickness", "0.1", "--cells", "2", "--cell-size", "10", "-o", stl});
-    ASSERT_EQ(r.exit_code, 0) << r.output;
-    resolution_ = resolution_of(r.output);
-    facets_ = new std::vector<std::array<std::array<float, 3>, 3>>(read_stl(stl));
-    walls_ = new ExactWalls("gyroid", 4, 0.1);
+  void SetUp() override {
+    const AccuracyCase& c = accuracy_case();
+    ASSERT_TRUE(c.error.empty()) << c.error;
+    ASSERT_GT(c.resolution, 0);
+    resolution_ = c.resolution;
+    facets_ = &c.facets;
+    walls_ = c.walls.get();
   }
-  static void TearDownTestSuite() {
-    delete dir_;
-    delete facets_;
-    delete walls_;
-  }
-  static std::string* dir_;
-  static std::vector<std::array<std::array<float, 3>, 3>>* facets_;
-  static ExactWalls* walls_;
-  static int resolution_;
+  int resolution_ = 0;
+  const std::vector<std::array<std::array<float, 3>, 3>>* facets_ = nullptr;
+  const ExactWalls* walls_ = nullptr;
 };
-std::string* MeshAccuracy::dir_ = nullptr;
-std::vector<std::array<std::array<float, 3>, 3>>* MeshAccuracy::facets_ = nullptr;
-ExactWalls* MeshAccuracy::walls_ = nullptr;
-int MeshAccuracy::resolution_ = 0;
 
 TEST_F(MeshAccuracy, VolumeIsWithinHalfAPercentOfTheExactWallVolume) {
   // The block is 2^3 whole cells of the periodic walls: its exact volume is 8 cells' worth.
