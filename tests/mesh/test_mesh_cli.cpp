@@ -56,8 +56,8 @@ const AccuracyCase& accuracy_case() {
   static const AccuracyCase c = [] {
     AccuracyCase out;
     const std::string stl = scratch_dir("accuracy") + "/gyroid.stl";
-    CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.1", "--cells", "2", "--cell-size",
-                              "10", "-o", stl});
+    CliRun r = run_offsetgen(
+        {"mesh", "--surface", "gyroid", "--thickness", "0.1", "--cells", "2", "--cell-size", "10", "-o", stl});
     if (r.exit_code != 0) {
       out.error = r.output;
       return out;
