@@ -1,6 +1,7 @@
 #include "cli/generate_command.h"
 
 #include "cli/command_line.h"
+#include "cli/density_command.h"
 #include "emit/emitted_api.h"
 #include "emit/file_writer.h"
 #include "pipeline/generate.h"
@@ -41,6 +42,15 @@ void add_generate_command(CLI::App& app, GenerateOptions& o) {
       ->capture_default_str();
   cmd->add_option("-t,--thickness", o.thickness,
                   "Graded wall: total thickness t(x, y, z) in cell units; adds <prefix>_graded");
+  cmd->add_flag("--density-functions", o.density_functions,
+                "Add <prefix>_density(t), _thickness_for_density(rho), _network_density(h) and "
+                "_offset_for_density(rho) (periodic 3D surfaces; docs/density.md)");
+  cmd->add_option("--density", o.density,
+                  "Relative density rho of the sheet: adds <prefix>_wall(x, y, z), the shell of that density "
+                  "(implies --density-functions)");
+  cmd->add_option("--density-field", o.density_field,
+                  "Graded density rho(x, y, z): adds <prefix>_graded with t(p) = thickness_for_density(rho(p)) "
+                  "(implies --density-functions)");
   cmd->add_option("-o,--output", o.output,
                   "Output file (with --lang all: the .h; the .glsl goes beside it); - for stdout");
   cmd->add_option("--out-dir", o.out_dir, "Directory for <prefix>.h / <prefix>.glsl when -o is not given");
@@ -74,6 +84,9 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
     request.params[key] = value;
   }
   if (!o.thickness.empty()) request.thickness = o.thickness;
+  request.density_functions = o.density_functions;
+  if (!o.density.empty()) request.density = parse_density_value("--density", o.density);
+  if (!o.density_field.empty()) request.density_field = o.density_field;
   request.command = banner_command(args);
   if (!o.output.empty() && !o.out_dir.empty()) throw InputError("give either -o or --out-dir, not both");
   if (o.output == "-" && o.lang == "all") throw InputError("-o - (stdout) takes one language, not --lang all");
@@ -117,7 +130,7 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   if (!o.quiet && o.output != "-") {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::string ops;
-    for (const auto& f : emitted_functions(g.programs, g.surface.dims, g.method()))
+    for (const auto& f : emitted_functions(g))
       ops += fmt::format("{}{} {}", ops.empty() ? "" : ", ", f.suffix, count_ops(*f.program));
     const MethodFacts& method = g.method();
     const std::string rounded =

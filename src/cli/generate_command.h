@@ -14,6 +14,8 @@ struct GenerateOptions {
   std::string surface, expression, name, lang = "c", precision = "double", output, out_dir;
   std::vector<std::string> params;
   std::string thickness;
+  std::string density, density_field;  // --density R, --density-field EXPR (text: parsed in run_generate)
+  bool density_functions = false;
   int order = 4;
   std::string method = kDefaultMethod;
   bool quiet = false;

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <sstream>
+
 namespace offsetgen {
 namespace {
 
@@ -15,6 +17,7 @@ std::string function_name(const FileFacts& facts, const EmittedFunction& f, cons
 
 std::string parameters(const FileFacts& facts, const EmittedFunction& f, const Dialect& d) {
   std::string real = d.real_type();
+  if (!f.takes_point) return fmt::format("{} {}", real, f.extra_parameter);
   std::string params = fmt::format("{0} x, {0} y", real);
   if (facts.dims == 3) params += fmt::format(", {} z", real);
   if (!f.extra_parameter.empty()) params += fmt::format(", {} {}", real, f.extra_parameter);
@@ -26,6 +29,7 @@ std::string render_function(const std::string& skeleton, const FileFacts& facts,
                             const Dialect& d) {
   std::vector<std::string> inputs = {"x", "y"};
   if (facts.dims == 3) inputs.push_back("z");
+  if (!f.takes_point) inputs.clear();
   if (!f.extra_parameter.empty()) inputs.push_back(f.extra_parameter);
   PrintedBody printed = print_program(*f.program, d, inputs);
   std::string body;
@@ -54,6 +58,14 @@ std::string with_scalar_trig(const std::string& functions, Precision precision) 
       fmt::format(fmt::runtime(sections.at(precision == Precision::Double ? "double" : "float")),
                   fmt::arg("range_double", kTrigRangeDouble), fmt::arg("range_float", kTrigRangeFloat));
   return support + functions;
+}
+
+// The density paragraph as comment lines ending in a newline, or "" (emitted_api.h).
+std::string density_comment(const FileFacts& facts) {
+  std::string out, text = density_paragraph(facts, false), line;
+  std::istringstream lines(text);
+  while (std::getline(lines, line)) out += wrap_paragraph(line, " * ", " *   ") + "\n";
+  return out;
 }
 
 }  // namespace
@@ -95,8 +107,9 @@ std::string emit_c_header(const FileFacts& facts, const std::vector<EmittedFunct
                      fmt::arg("variable_thickness", paragraph("Variable thickness:", m.variable_thickness)),
                      fmt::arg("safety", paragraph("Safety:", m.safety) +
                                             (m.lipschitz.empty() ? "" : "\n" + paragraph("Lipschitz:", m.lipschitz))),
-                     fmt::arg("ops_list", ops_list), fmt::arg("metadata", facts.metadata_json),
-                     fmt::arg("guard", guard_name(facts.prefix, "h")), fmt::arg("functions", rendered));
+                     fmt::arg("density", density_comment(facts)), fmt::arg("ops_list", ops_list),
+                     fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "h")),
+                     fmt::arg("functions", rendered));
 }
 
 }  // namespace offsetgen

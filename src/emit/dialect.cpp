@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace offsetgen {
 namespace {
 
@@ -31,6 +33,11 @@ std::string Dialect::bool_decl() const { return language == Language::Glsl ? "bo
 std::string Dialect::suffix() const { return language == Language::C && precision == Precision::Float ? "f" : ""; }
 
 std::string Dialect::literal(double value) const {
+  // A quiet NaN: only the density relations return one, out of their range.
+  if (std::isnan(value)) {
+    if (language == Language::Glsl) return "intBitsToFloat(0x7fc00000)";
+    return precision == Precision::Double ? "nan(\"\")" : "nanf(\"\")";
+  }
   std::string text;
   if (language == Language::C && precision == Precision::Double) {
     text = floating_form(fmt::format("{:.17g}", value));

@@ -6,12 +6,15 @@
 
 #include <fmt/format.h>
 
+#include <sstream>
+
 namespace offsetgen {
 namespace {
 
 std::string vector_type(int dims) { return dims == 3 ? "vec3" : "vec2"; }
 
 std::string parameters(const FileFacts& facts, const EmittedFunction& f) {
+  if (!f.takes_point) return "highp float " + f.extra_parameter;
   std::string params = "highp " + vector_type(facts.dims) + " p";
   if (!f.extra_parameter.empty()) params += ", highp float " + f.extra_parameter;
   return params;
@@ -21,6 +24,7 @@ std::string render_function(const std::string& skeleton, const FileFacts& facts,
                             const Dialect& d) {
   std::vector<std::string> inputs = {"p.x", "p.y"};
   if (facts.dims == 3) inputs.push_back("p.z");
+  if (!f.takes_point) inputs.clear();
   if (!f.extra_parameter.empty()) inputs.push_back(f.extra_parameter);
   PrintedBody printed = print_program(*f.program, d, inputs);
   std::string body;
@@ -38,6 +42,14 @@ std::string render_function(const std::string& skeleton, const FileFacts& facts,
                      fmt::arg("body", body));
 }
 
+// The density paragraph as indented lines ending in a newline, or "" (emitted_api.h).
+std::string density_comment(const FileFacts& facts) {
+  std::string out, text = density_paragraph(facts, true), line;
+  std::istringstream lines(text);
+  while (std::getline(lines, line)) out += wrap_paragraph(line, "", "    ") + "\n";
+  return out;
+}
+
 }  // namespace
 
 std::string emit_glsl_snippet(const FileFacts& facts, const std::vector<EmittedFunction>& functions) {
@@ -47,8 +59,9 @@ std::string emit_glsl_snippet(const FileFacts& facts, const std::vector<EmittedF
   for (const auto& f : functions) {
     rendered += render_function(skeleton, facts, f, d);
     std::string ret = f.vector_result ? vector_type(facts.dims) : "float";
-    std::string args =
-        vector_type(facts.dims) + " p" + (f.extra_parameter.empty() ? "" : ", float " + f.extra_parameter);
+    std::string args = !f.takes_point ? "float " + f.extra_parameter
+                                      : vector_type(facts.dims) + " p" +
+                                            (f.extra_parameter.empty() ? "" : ", float " + f.extra_parameter);
     use_list += fmt::format("    - <{}> {}_{}(<{}>)\n", ret, facts.prefix, f.suffix, args);
     ops_list += fmt::format("    - {}: {}\n", f.suffix, count_ops(*f.program));
   }
@@ -75,8 +88,9 @@ std::string emit_glsl_snippet(const FileFacts& facts, const std::vector<EmittedF
                      fmt::arg("variable_thickness", paragraph("variable thickness:", m.variable_thickness)),
                      fmt::arg("safety", paragraph("safety:", m.safety) +
                                             (m.lipschitz.empty() ? "" : "\n" + paragraph("lipschitz:", m.lipschitz))),
-                     fmt::arg("ops_list", ops_list), fmt::arg("metadata", facts.metadata_json),
-                     fmt::arg("guard", guard_name(facts.prefix, "glsl")), fmt::arg("functions", rendered));
+                     fmt::arg("density", density_comment(facts)), fmt::arg("ops_list", ops_list),
+                     fmt::arg("metadata", facts.metadata_json), fmt::arg("guard", guard_name(facts.prefix, "glsl")),
+                     fmt::arg("functions", rendered));
 }
 
 }  // namespace offsetgen

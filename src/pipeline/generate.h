@@ -3,7 +3,9 @@
 // stages only (build_generation), so it never needs an emitter to find a surface.
 #pragma once
 
+#include "density/density_model.h"
 #include "emit/dialect.h"
+#include "emit/emitted_api.h"
 #include "lowering/surface_programs.h"
 #include "offset/method.h"
 #include "surfaces/surface.h"
@@ -25,6 +27,12 @@ struct GenerationRequest {
   std::string method = kDefaultMethod;        // an offset method of the registry (offset/method.h)
   int order = 4;                              // as asked; the method may round it (projection: even)
   std::optional<std::string> thickness;       // graded wall t(x, y, z), cell units
+  // Density (density/): the four density relations; --density adds _wall, the sheet of that
+  // relative density; --density-field adds _graded with t(p) = thickness_for_density(rho(p)).
+  // Either of the last two implies the first.
+  bool density_functions = false;
+  std::optional<double> density;
+  std::optional<std::string> density_field;
   // What to emit.
   bool c = true;
   bool glsl = false;
@@ -40,8 +48,13 @@ struct Generation {
   SurfacePrograms programs;
   std::string prefix;
   std::string metadata_json;
-  std::string c_header;      // empty unless requested (generate())
-  std::string glsl_snippet;  // empty unless requested (generate())
+  // With density functions: the model, the relations as programs, the _wall thickness.
+  std::optional<density::DensityModel> density;
+  std::optional<density::DensityPrograms> density_programs;
+  std::optional<double> wall_thickness;
+  std::optional<GiNaC::ex> graded_thickness;  // t(x, y, z) of _graded (--thickness or --density-field)
+  std::string c_header;                       // empty unless requested (generate())
+  std::string glsl_snippet;                   // empty unless requested (generate())
 
   const MethodFacts& method() const { return construction->facts(); }
   int order() const { return method().order; }
@@ -59,6 +72,16 @@ Surface resolve_surface(const GenerationRequest& request);
 // The method of a request, with its order checked: throws InputError for an unknown method or an
 // order out of its range.
 const OffsetMethod& resolve_method(const GenerationRequest& request);
+
+// Whether a request asks for the density functions (directly or through --density/--density-field).
+bool wants_density(const GenerationRequest& request);
+
+// The density model of a request's surface, with the request's densities checked: throws InputError
+// when the surface has none (2D, not periodic) or a density is out of range.
+density::DensityModel resolve_density(const GenerationRequest& request, const Surface& surface);
+
+// The emitted functions of a generation (emit/emitted_api.h), density relations included.
+std::vector<EmittedFunction> emitted_functions(const Generation& g);
 
 // The default prefix of a request: <surface>_o<order>, with the order the method builds.
 std::string default_prefix(const GenerationRequest& request);
