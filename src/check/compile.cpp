@@ -132,7 +132,7 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
     s += fmt::format("void offsetgen_check_normal{1}(const {0}* p, {0} h, {0}* n);\n", t, fs);
     s += fmt::format("void offsetgen_check_normal{1}(const {0}* p, {0} h, {0}* n) {{ {2}_normal{1}({3}, h, n); }}\n", t,
                      fs, p, args);
-    if (meta.thickness) {
+    if (meta.has_graded()) {
       s += fmt::format("{0} offsetgen_check_graded{1}(const {0}* p);\n", t, fs);
       s +=
           fmt::format("{0} offsetgen_check_graded{1}(const {0}* p) {{ return {2}_graded{1}({3}); }}\n", t, fs, p, args);
@@ -140,6 +140,16 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
     (void)suffix;
   };
   if (meta.has_double) emit("double", "");
+  if (meta.has_double && meta.has_density) {
+    if (meta.wall_density) {
+      s += "double offsetgen_check_wall(const double* p);\n";
+      s += fmt::format("double offsetgen_check_wall(const double* p) {{ return {}_wall({}); }}\n", p, args);
+    }
+    for (const char* f : {"density", "thickness_for_density", "network_density", "offset_for_density"}) {
+      s += fmt::format("double offsetgen_check_{}(double v);\n", f);
+      s += fmt::format("double offsetgen_check_{0}(double v) {{ return {1}_{0}(v); }}\n", f, p);
+    }
+  }
   if (meta.has_float) emit("float", "f");
   s += "#ifdef __cplusplus\n}\n#endif\n";
   return s;
@@ -222,14 +232,22 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
     f.offset = symbol<decltype(f.offset)>(handle, "offsetgen_check_offset");
     f.shell = symbol<decltype(f.shell)>(handle, "offsetgen_check_shell");
     f.normal = symbol<decltype(f.normal)>(handle, "offsetgen_check_normal");
-    if (meta.thickness) f.graded = symbol<decltype(f.graded)>(handle, "offsetgen_check_graded");
+    if (meta.has_graded()) f.graded = symbol<decltype(f.graded)>(handle, "offsetgen_check_graded");
+    if (meta.has_density) {
+      if (meta.wall_density) f.wall = symbol<decltype(f.wall)>(handle, "offsetgen_check_wall");
+      f.density = symbol<decltype(f.density)>(handle, "offsetgen_check_density");
+      f.thickness_for_density =
+          symbol<decltype(f.thickness_for_density)>(handle, "offsetgen_check_thickness_for_density");
+      f.network_density = symbol<decltype(f.network_density)>(handle, "offsetgen_check_network_density");
+      f.offset_for_density = symbol<decltype(f.offset_for_density)>(handle, "offsetgen_check_offset_for_density");
+    }
   }
   if (meta.has_float) {
     f.fieldf = symbol<decltype(f.fieldf)>(handle, "offsetgen_check_fieldf");
     f.offsetf = symbol<decltype(f.offsetf)>(handle, "offsetgen_check_offsetf");
     f.shellf = symbol<decltype(f.shellf)>(handle, "offsetgen_check_shellf");
     f.normalf = symbol<decltype(f.normalf)>(handle, "offsetgen_check_normalf");
-    if (meta.thickness) f.gradedf = symbol<decltype(f.gradedf)>(handle, "offsetgen_check_gradedf");
+    if (meta.has_graded()) f.gradedf = symbol<decltype(f.gradedf)>(handle, "offsetgen_check_gradedf");
   }
   result.library = std::make_unique<LoadedLibrary>(handle, f);
   load.ok = true;

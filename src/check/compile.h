@@ -45,6 +45,12 @@ struct LoadedFunctions {
   float (*shellf)(const float* p, float t) = nullptr;
   void (*normalf)(const float* p, float h, float* n) = nullptr;
   float (*gradedf)(const float* p) = nullptr;
+  // With density functions (double only; null otherwise).
+  double (*wall)(const double* p) = nullptr;
+  double (*density)(double t) = nullptr;
+  double (*thickness_for_density)(double rho) = nullptr;
+  double (*network_density)(double h) = nullptr;
+  double (*offset_for_density)(double rho) = nullptr;
 };
 
 class LoadedLibrary {

@@ -158,6 +158,23 @@ FileMetadata parse_metadata(const std::string& text, FileKind kind) {
       m.ops[p.key()] = p.value().get<int>();
     }
   }
+  if (auto it = j.find("density"); it != j.end() && !it->is_null()) {
+    if (!it->is_object()) damaged("field \"density\" must be an object");
+    m.has_density = true;
+    m.density_limit = positive_number_field(*it, "density_limit");
+    m.thickness_limit = positive_number_field(*it, "thickness_limit");
+    m.offset_limit = positive_number_field(*it, "offset_limit");
+    const json& range = field(*it, "network_density_range");
+    if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number())
+      damaged("field \"network_density_range\" must be a list of two numbers");
+    m.network_density_min = range[0].get<double>();
+    m.network_density_max = range[1].get<double>();
+    if (auto w = j.find("wall_density"); w != j.end() && !w->is_null()) {
+      m.wall_density = positive_number_field(j, "wall_density");
+      m.wall_thickness = positive_number_field(j, "wall_thickness");
+    }
+    m.density_field = optional_string_field(j, "density_field");
+  }
   // The header must actually define what the block describes.
   const std::string probe = m.prefix + "_offset";
   if (text.find(probe) == std::string::npos)

@@ -26,6 +26,9 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
   request.order = meta.order;
   request.method = meta.method;
   request.thickness = meta.thickness;
+  request.density_functions = meta.has_density;
+  request.density = meta.wall_density;
+  request.density_field = meta.density_field;
   const std::string default_prefix = meta.surface ? fmt::format("{}_o{}", *meta.surface, meta.order) : "";
   if (meta.expression || meta.prefix != default_prefix) request.name = meta.prefix;
   if (meta.expression && meta.prefix.empty()) request.name = "surface";
