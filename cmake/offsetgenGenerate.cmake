@@ -8,8 +8,15 @@
 #                      [LANG c glsl glsl_string]                 # default: c
 #                      [PRECISION double float]                  # default: double (C only)
 #                      [THICKNESS "<t(x, y, z)>"]                # adds <prefix>_graded
+#                      [DENSITY <rho>]                           # adds <prefix>_wall and the density functions
+#                      [DENSITY_FIELD "<rho(x, y, z)>"]          # adds <prefix>_graded and the density functions
+#                      [DENSITY_FUNCTIONS]                       # adds the density functions alone
 #                      [NAME <stem>]                             # with SURFACE: replaces it in the prefix
 #                      [OUTPUT_DIR <dir>])                       # default: ${CMAKE_CURRENT_BINARY_DIR}/<name>
+#
+# THICKNESS, DENSITY and DENSITY_FIELD each set the wall's thickness: give at most one. The density
+# functions (<prefix>_density, _thickness_for_density, _network_density, _offset_for_density; see
+# docs/density.md) need a periodic 3D surface; offsetgen refuses others when it runs.
 #
 # For every order m it generates, in OUTPUT_DIR, the files of prefix <stem>_o<m> (stem = NAME, else
 # SURFACE; m is the order the method builds: projection rounds odd orders up to the next even one): <prefix>.h (LANG c), <prefix>.glsl (LANG glsl or glsl_string) and <prefix>_glsl.h
@@ -56,8 +63,10 @@ function(_offsetgen_write_if_changed path content)
 endfunction()
 
 function(offsetgen_generate)
-  set(keywords TARGET SURFACE EXPR NAME METHOD THICKNESS OUTPUT_DIR ORDERS LANG PRECISION PARAMS)
-  cmake_parse_arguments(PARSE_ARGV 0 OG "" "TARGET;SURFACE;EXPR;NAME;METHOD;THICKNESS;OUTPUT_DIR"
+  set(keywords TARGET SURFACE EXPR NAME METHOD THICKNESS DENSITY DENSITY_FIELD DENSITY_FUNCTIONS OUTPUT_DIR ORDERS
+               LANG PRECISION PARAMS)
+  cmake_parse_arguments(PARSE_ARGV 0 OG "DENSITY_FUNCTIONS"
+                        "TARGET;SURFACE;EXPR;NAME;METHOD;THICKNESS;DENSITY;DENSITY_FIELD;OUTPUT_DIR"
                         "ORDERS;LANG;PRECISION;PARAMS")
   set(target "")
   if(DEFINED OG_TARGET)
@@ -217,8 +226,32 @@ function(offsetgen_generate)
     list(APPEND param_args --param "${param}")
   endforeach()
   set(thickness_args "")
+  set(wall_keywords "")
+  foreach(keyword THICKNESS DENSITY DENSITY_FIELD)
+    if(DEFINED OG_${keyword})
+      list(APPEND wall_keywords ${keyword})
+    endif()
+  endforeach()
+  list(LENGTH wall_keywords wall_keyword_count)
+  if(wall_keyword_count GREATER 1)
+    string(REPLACE ";" " and " wall_keywords "${wall_keywords}")
+    _offsetgen_fail("${target}" "give one of THICKNESS, DENSITY and DENSITY_FIELD, not ${wall_keywords}: each sets the wall's thickness")
+  endif()
   if(DEFINED OG_THICKNESS)
     set(thickness_args --thickness "${OG_THICKNESS}")
+  endif()
+  if(DEFINED OG_DENSITY)
+    # The range (0, rho_max] depends on the surface: offsetgen checks it when it runs.
+    if(NOT OG_DENSITY MATCHES "^(0?\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?$")
+      _offsetgen_fail("${target}" "DENSITY '${OG_DENSITY}' is not a relative density (a number such as 0.2)")
+    endif()
+    set(thickness_args --density "${OG_DENSITY}")
+  endif()
+  if(DEFINED OG_DENSITY_FIELD)
+    set(thickness_args --density-field "${OG_DENSITY_FIELD}")
+  endif()
+  if(OG_DENSITY_FUNCTIONS)
+    list(APPEND thickness_args --density-functions)
   endif()
 
   set(output_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}")
