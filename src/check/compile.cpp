@@ -140,17 +140,20 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
     (void)suffix;
   };
   if (meta.has_double) emit("double", "");
-  if (meta.has_double && meta.has_density) {
+  // The density relations and _wall (files with density functions).
+  auto emit_density = [&](const std::string& t, const std::string& fs) {
     if (meta.wall_density) {
-      s += "double offsetgen_check_wall(const double* p);\n";
-      s += fmt::format("double offsetgen_check_wall(const double* p) {{ return {}_wall({}); }}\n", p, args);
+      s += fmt::format("{0} offsetgen_check_wall{1}(const {0}* p);\n", t, fs);
+      s += fmt::format("{0} offsetgen_check_wall{1}(const {0}* p) {{ return {2}_wall{1}({3}); }}\n", t, fs, p, args);
     }
     for (const char* f : {"density", "thickness_for_density", "network_density", "offset_for_density"}) {
-      s += fmt::format("double offsetgen_check_{}(double v);\n", f);
-      s += fmt::format("double offsetgen_check_{0}(double v) {{ return {1}_{0}(v); }}\n", f, p);
+      s += fmt::format("{0} offsetgen_check_{1}{2}({0} v);\n", t, f, fs);
+      s += fmt::format("{0} offsetgen_check_{1}{2}({0} v) {{ return {3}_{1}{2}(v); }}\n", t, f, fs, p);
     }
-  }
+  };
+  if (meta.has_double && meta.has_density) emit_density("double", "");
   if (meta.has_float) emit("float", "f");
+  if (meta.has_float && meta.has_density) emit_density("float", "f");
   s += "#ifdef __cplusplus\n}\n#endif\n";
   return s;
 }
@@ -248,6 +251,13 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
     f.shellf = symbol<decltype(f.shellf)>(handle, "offsetgen_check_shellf");
     f.normalf = symbol<decltype(f.normalf)>(handle, "offsetgen_check_normalf");
     if (meta.has_graded()) f.gradedf = symbol<decltype(f.gradedf)>(handle, "offsetgen_check_gradedf");
+    if (meta.has_density) {
+      f.densityf = symbol<decltype(f.densityf)>(handle, "offsetgen_check_densityf");
+      f.thickness_for_densityf =
+          symbol<decltype(f.thickness_for_densityf)>(handle, "offsetgen_check_thickness_for_densityf");
+      f.network_densityf = symbol<decltype(f.network_densityf)>(handle, "offsetgen_check_network_densityf");
+      f.offset_for_densityf = symbol<decltype(f.offset_for_densityf)>(handle, "offsetgen_check_offset_for_densityf");
+    }
   }
   result.library = std::make_unique<LoadedLibrary>(handle, f);
   load.ok = true;

@@ -19,49 +19,60 @@ constexpr std::array<double, 6> kGaussNodes = {0.033765242898423987, 0.169395306
 constexpr std::array<double, 6> kGaussWeights = {0.085662246189585178, 0.18038078652406931, 0.23395696728634552,
                                                  0.23395696728634552,  0.18038078652406931, 0.085662246189585178};
 
-void check_relations(const LoadedFunctions& f, const FileMetadata& meta, const density::DensityModel& m,
-                     DensityReport& r) {
-  auto compare = [&r](const char* name, double argument, double emitted, double expected) {
+// The emitted relations of one precision (T) against the model over the valid range, and NaN out of
+// range. `r_error`/`r_worst`: where the largest relative difference goes.
+template <typename T>
+void check_relations(T (*density)(T), T (*thickness_for_density)(T), T (*network_density)(T),
+                     T (*offset_for_density)(T), const FileMetadata& meta, const density::DensityModel& m,
+                     double& r_error, std::string& r_worst, DensityReport& r) {
+  const char* suffix = sizeof(T) == sizeof(float) ? "f" : "";
+  auto compare = [&](const char* name, double argument, T emitted, double expected) {
     const double scale = std::max(std::fabs(expected), 1e-3);
-    const double error = std::fabs(emitted - expected) / scale;
-    if (!(error <= r.max_relation_error)) {
-      r.max_relation_error = std::isnan(error) ? INFINITY : error;
-      r.worst_relation = fmt::format("{}({:.17g}) = {:.17g}, model {:.17g}", name, argument, emitted, expected);
+    const double error = std::fabs(double(emitted) - expected) / scale;
+    if (!(error <= r_error)) {
+      r_error = std::isnan(error) ? INFINITY : error;
+      r_worst = fmt::format("{}{}({:.9g}) = {:.9g}, model {:.9g}", name, suffix, argument, double(emitted), expected);
     }
   };
   constexpr int n = 200;
   for (int i = 0; i <= n; ++i) {
     const double u = double(i) / n;
-    const double t = u * m.thickness_limit(), rho = u * m.sheet_density_limit();
-    compare("density", t, f.density(t), m.sheet_density(t));
-    compare("thickness_for_density", rho, f.thickness_for_density(rho), m.sheet_thickness(rho));
-    const double h = (2 * u - 1) * m.offset_limit();
-    const double rn = m.network_density_min() + u * (m.network_density_max() - m.network_density_min());
-    compare("network_density", h, f.network_density(h), m.network_density(h));
-    compare("offset_for_density", rn, f.offset_for_density(rn), m.network_offset(rn));
+    // The arguments as the precision holds them, so the model sees the same input.
+    const double t = double(T(u * m.thickness_limit())), rho = double(T(u * m.sheet_density_limit()));
+    if (t <= m.thickness_limit()) compare("density", t, density(T(t)), m.sheet_density(t));
+    if (rho <= m.sheet_density_limit())
+      compare("thickness_for_density", rho, thickness_for_density(T(rho)), m.sheet_thickness(rho));
+    const double h = double(T((2 * u - 1) * m.offset_limit()));
+    const double rn = double(T(m.network_density_min() + u * (m.network_density_max() - m.network_density_min())));
+    if (std::fabs(h) <= m.offset_limit()) compare("network_density", h, network_density(T(h)), m.network_density(h));
+    if (rn >= m.network_density_min() && rn <= m.network_density_max())
+      compare("offset_for_density", rn, offset_for_density(T(rn)), m.network_offset(rn));
   }
-  auto must_be_nan = [&r](const char* name, double argument, double value) {
+  auto must_be_nan = [&r, suffix](const char* name, double argument, T value) {
     if (std::isnan(value)) return;
     ++r.nan_failures;
     if (r.nan_failure_examples.size() < 4)
-      r.nan_failure_examples.push_back(fmt::format("{}({:g}) = {:g}", name, argument, value));
+      r.nan_failure_examples.push_back(fmt::format("{}{}({:g}) = {:g}", name, suffix, argument, double(value)));
   };
-  const double above = 1 + 1e-6;
-  must_be_nan("density", -1e-9, f.density(-1e-9));
-  must_be_nan("density", meta.thickness_limit * above, f.density(meta.thickness_limit * above));
-  must_be_nan("density", kNaN, f.density(kNaN));
-  must_be_nan("thickness_for_density", -1e-9, f.thickness_for_density(-1e-9));
-  must_be_nan("thickness_for_density", meta.density_limit * above, f.thickness_for_density(meta.density_limit * above));
-  must_be_nan("thickness_for_density", kNaN, f.thickness_for_density(kNaN));
-  must_be_nan("network_density", -meta.offset_limit * above, f.network_density(-meta.offset_limit * above));
-  must_be_nan("network_density", meta.offset_limit * above, f.network_density(meta.offset_limit * above));
-  must_be_nan("network_density", kNaN, f.network_density(kNaN));
-  must_be_nan("offset_for_density", meta.network_density_min - 1e-6,
-              f.offset_for_density(meta.network_density_min - 1e-6));
-  must_be_nan("offset_for_density", meta.network_density_max + 1e-6,
-              f.offset_for_density(meta.network_density_max + 1e-6));
-  must_be_nan("offset_for_density", -1.0, f.offset_for_density(-1.0));
-  must_be_nan("offset_for_density", kNaN, f.offset_for_density(kNaN));
+  // Just outside each limit, in the precision's own steps.
+  const double above = sizeof(T) == sizeof(float) ? 1 + 1e-5 : 1 + 1e-9;
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  must_be_nan("density", -1e-6, density(T(-1e-6)));
+  must_be_nan("density", meta.thickness_limit * above, density(T(meta.thickness_limit * above)));
+  must_be_nan("density", kNaN, density(nan));
+  must_be_nan("thickness_for_density", -1e-6, thickness_for_density(T(-1e-6)));
+  must_be_nan("thickness_for_density", meta.density_limit * above,
+              thickness_for_density(T(meta.density_limit * above)));
+  must_be_nan("thickness_for_density", kNaN, thickness_for_density(nan));
+  must_be_nan("network_density", -meta.offset_limit * above, network_density(T(-meta.offset_limit * above)));
+  must_be_nan("network_density", meta.offset_limit * above, network_density(T(meta.offset_limit * above)));
+  must_be_nan("network_density", kNaN, network_density(nan));
+  must_be_nan("offset_for_density", meta.network_density_min - 1e-4,
+              offset_for_density(T(meta.network_density_min - 1e-4)));
+  must_be_nan("offset_for_density", meta.network_density_max + 1e-4,
+              offset_for_density(T(meta.network_density_max + 1e-4)));
+  must_be_nan("offset_for_density", -1.0, offset_for_density(T(-1.0)));
+  must_be_nan("offset_for_density", kNaN, offset_for_density(nan));
 }
 
 }  // namespace
@@ -72,7 +83,19 @@ DensityReport measure_density(const LoadedFunctions& f, const FileMetadata& meta
   r.tolerance = o.tolerance;
   r.cell_tolerance = o.cell_tolerance;
   r.sampling = o.sampling;
-  check_relations(f, meta, model, r);
+  if (f.density)
+    check_relations<double>(f.density, f.thickness_for_density, f.network_density, f.offset_for_density, meta, model,
+                            r.max_relation_error, r.worst_relation, r);
+  if (f.densityf) {
+    r.has_float = true;
+    check_relations<float>(f.densityf, f.thickness_for_densityf, f.network_densityf, f.offset_for_densityf, meta, model,
+                           r.max_float_relation_error, r.worst_float_relation, r);
+  }
+  if (!f.shell) {
+    r.skipped.push_back(
+        "volume fractions: the file has no double functions (--precision float); measured in double only");
+    return r;
+  }
 
   const double slope = meta.scale * meta.gradient_bound;  // >= |grad F| in cell units
   // |phi(p, h) - F(p)| <= M |h| (natural units) for both methods: the band holds every sign change.
@@ -115,7 +138,9 @@ DensityReport measure_density(const LoadedFunctions& f, const FileMetadata& meta
     s.g = [&f, h](const double* p) { return f.offset(p, h); };
     s.band = band_for(h);
     s.outside_follows_field = true;
-    s.scan_step = 1.0 / 512;
+    // The network's features along a column are no shorter than about the smallest radius of
+    // curvature h_max (a smaller one would put a focal point inside |h| <= h_max): a fraction of it.
+    s.scan_step = std::min(1.0 / 128, model.offset_limit() / 8);
     DensityRow row{"network", rho, h, measure_volume_fraction(s, o.sampling), 0};
     row.deviation = row.measured.value - rho;
     r.rows.push_back(row);
@@ -185,8 +210,10 @@ std::string format_density(const DensityReport& r) {
                    r.sampling.shifts, r.sampling.grid, r.sampling.grid));
   line("   against the density asked of the emitted inverse (sheet: _shell(p, thickness_for_density(rho));");
   line("   network: _offset(p, offset_for_density(rho)) < 0).");
-  line(fmt::format("   relations vs the model: max relative difference {:.1e}; out-of-range arguments without NaN: {}",
-                   r.max_relation_error, r.nan_failures));
+  line(fmt::format(
+      "   relations vs the model: max relative difference {:.1e}{}; out-of-range arguments without NaN: {}",
+      r.max_relation_error, r.has_float ? fmt::format(" (float: {:.1e})", r.max_float_relation_error) : std::string(),
+      r.nan_failures));
   line(
       fmt::format("  {:<8} {:>8} {:>12} {:>12} {:>9} {:>10}", "solid", "rho", "t or h", "measured", "+-", "deviation"));
   for (const DensityRow& row : r.rows)
@@ -215,6 +242,7 @@ nlohmann::ordered_json density_json(const DensityReport& r) {
   j["shifts"] = r.sampling.shifts;
   j["tolerance"] = r.tolerance;
   j["max_relation_error"] = r.max_relation_error;
+  if (r.has_float) j["max_float_relation_error"] = r.max_float_relation_error;
   j["nan_failures"] = r.nan_failures;
   ojson rows = ojson::array();
   for (const DensityRow& row : r.rows)

@@ -53,6 +53,9 @@ struct DensityReport {
   // whether every out-of-range argument gave NaN.
   double max_relation_error = 0;
   std::string worst_relation;
+  bool has_float = false;  // the float relations were compared too
+  double max_float_relation_error = 0;
+  std::string worst_float_relation;
   int nan_failures = 0;
   std::vector<std::string> nan_failure_examples;
   std::vector<DensityRow> rows;

@@ -47,6 +47,14 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
   cmd->add_option("--block", o.block,
                   "Cells NX,NY,NZ of the block whose per-cell volume fraction is compared with a density field")
       ->capture_default_str();
+  cmd->add_option("--density-grid", o.density_grid,
+                  "Columns per side per axis of each random shift when measuring volume fractions")
+      ->check(CLI::Range(4, 400))
+      ->capture_default_str();
+  cmd->add_option("--density-shifts", o.density_shifts,
+                  "Random shifts of the grid of columns (their spread gives the stated error)")
+      ->check(CLI::Range(2, 100))
+      ->capture_default_str();
   cmd->add_option("--density-tolerance", o.density_tolerance,
                   "Largest |measured - requested| volume fraction (each density, each cell)")
       ->capture_default_str();
@@ -90,6 +98,8 @@ int run_check(const CheckOptions& o) {
   s.run_density = !o.no_density;
   s.density.tolerance = s.density.cell_tolerance = o.density_tolerance;
   s.density.block = parse_block(o.block);
+  s.density.sampling.grid = o.density_grid;
+  s.density.sampling.shifts = o.density_shifts;
   // Find the plot script before the long run, so a missing one is a quick usage error.
   std::string script;
   if (!s.plot_path.empty()) {

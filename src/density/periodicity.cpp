@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <sstream>
+#include <vector>
 
 namespace offsetgen::density {
 namespace {
@@ -29,14 +30,19 @@ class Prover {
     if (!e.has(var_)) return Shift::Same;
     if (GiNaC::is_a<GiNaC::symbol>(e)) return fail(e, "it occurs outside a periodic function");
     if (GiNaC::is_a<GiNaC::add>(e)) {
-      std::optional<Shift> common;
+      std::vector<Shift> shifts;
       for (size_t i = 0; i < e.nops(); ++i) {
-        const Shift s = classify(e.op(i));
-        if (s == Shift::Unknown) return s;
-        if (common && *common != s) return fail(e, "its terms shift with different signs");
-        common = s;
+        shifts.push_back(classify(e.op(i)));
+        if (shifts.back() == Shift::Unknown) return Shift::Unknown;
       }
-      return *common;
+      for (size_t i = 0; i < e.nops(); ++i)
+        if (shifts[i] != shifts[0]) {  // name a term that flips while others keep
+          const size_t flipping = shifts[i] == Shift::Flipped ? i : 0;
+          return fail(e.op(flipping), fmt::format("it changes sign under {0} -> {0} + 1 and the other terms do not "
+                                                  "(period 2, not 1)",
+                                                  text(var_)));
+        }
+      return shifts[0];
     }
     if (GiNaC::is_a<GiNaC::mul>(e)) {
       Shift s = Shift::Same;
