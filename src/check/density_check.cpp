@@ -12,6 +12,8 @@ namespace offsetgen::check {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Columns per side for one cell of a density field's block (volume_fraction.h: periodic = false).
+constexpr int kMinimumCellGrid = 32;
 
 // Gauss-Legendre nodes and weights on [0, 1], 6 points: exact for polynomials of degree 11.
 constexpr std::array<double, 6> kGaussNodes = {0.033765242898423987, 0.16939530676686776, 0.38069040695840156,
@@ -192,7 +194,12 @@ DensityReport measure_density(const LoadedFunctions& f, const FileMetadata& meta
           s.band = band_for(t_hi / 2);
           s.scan_step = t_lo / 4;
           s.origin = {double(i), double(j), double(k)};
-          row.measured = measure_volume_fraction(s, o.sampling);
+          s.periodic = false;  // the wall's thickness changes across the cell
+          VolumeFractionOptions sampling = o.sampling;
+          sampling.seed += unsigned(1 + i + 16 * (j + 16 * k));  // independent shifts per cell
+          // The tent transform folds the grid in two: keep at least 16 columns per half side.
+          sampling.grid = std::max(sampling.grid, kMinimumCellGrid);
+          row.measured = measure_volume_fraction(s, sampling);
           row.deviation = row.measured.value - row.requested;
           r.cells.push_back(row);
         }

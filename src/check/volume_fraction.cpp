@@ -10,9 +10,8 @@
 namespace offsetgen::check {
 namespace {
 
-// The partition weights: w_i = (g_i^2)^kWeightPower / sum_j (g_j^2)^kWeightPower (n_i^8 on the
-// surface), blended to 1/3 farther than about kUniformBeyond (in units of F) from it.
-constexpr int kWeightPower = 4;
+// The partition weights: w_i = g_i^2 / |g|^2 (n_i^2 on the surface), blended to 1/3 farther than
+// about kUniformBeyond (in units of F) from it.
 constexpr double kUniformBeyond = 0.2;
 // Coarse steps per unit length along a column for the band search.
 constexpr int kCoarsePerUnit = 128;
@@ -82,8 +81,8 @@ class Column {
     return s_.g(at(z).data());
   }
 
-  // w_axis at a point of the column: (g_axis^8 + e) / (sum g_j^8 + 3 e), g = grad F by central
-  // differences, e = (F / kUniformBeyond)^8. On F = 0 that is n_axis^8 / sum n_j^8; farther than about
+  // w_axis at a point of the column: (g_axis^2 + e) / (|g|^2 + 3 e), g = grad F by central
+  // differences, e = (F / kUniformBeyond)^2. On F = 0 that is n_axis^2; farther than about
   // kUniformBeyond from the surface, and around the critical points of F, it goes smoothly to 1/3.
   double weight(double z) {
     ++weight_points;
@@ -96,10 +95,10 @@ class Column {
       plus[i] += d;
       minus[i] -= d;
       const double g = (s_.field(plus.data()) - s_.field(minus.data())) / (2 * d);
-      power[i] = std::pow(g * g, kWeightPower);
+      power[i] = g * g;
       sum += power[i];
     }
-    const double f = s_.field(p.data()) / kUniformBeyond, e = std::pow(f * f, kWeightPower);
+    const double f = s_.field(p.data()) / kUniformBeyond, e = f * f;
     return sum + 3 * e > 0 ? (power[static_cast<size_t>(axis_)] + e) / (sum + 3 * e) : 1.0 / 3;
   }
 
@@ -149,6 +148,7 @@ VolumeFraction measure_volume_fraction(const VolumeFractionSetup& setup, const V
   std::vector<double> estimates;
   const int n = options.grid;
   const double volume = setup.size[0] * setup.size[1] * setup.size[2];
+  auto place = [&setup](double u) { return setup.periodic ? u : 1 - std::fabs(2 * u - 1); };
   for (int r = 0; r < options.shifts; ++r) {
     double total = 0;
     for (int axis = setup.single_axis ? 2 : 0; axis < 3; ++axis) {
@@ -158,8 +158,8 @@ VolumeFraction measure_volume_fraction(const VolumeFractionSetup& setup, const V
       for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
           std::array<double, 3> p{};
-          p[a1] = setup.origin[a1] + setup.size[a1] * (i + su) / n;
-          p[a2] = setup.origin[a2] + setup.size[a2] * (j + sv) / n;
+          p[a1] = setup.origin[a1] + setup.size[a1] * place((i + su) / n);
+          p[a2] = setup.origin[a2] + setup.size[a2] * place((j + sv) / n);
           Column column(setup, axis, p);
           const std::vector<Segment> segments = column.negative_segments();
           if (setup.single_axis) {
