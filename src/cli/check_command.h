@@ -27,7 +27,7 @@ struct CheckOptions {
   bool no_density = false;
   std::string block = "2,2,2";
   double density_tolerance = 2e-4;
-  int density_grid = 24, density_shifts = 6;
+  int density_grid = 40, density_shifts = 6;
 };
 
 void add_check_command(CLI::App& app, CheckOptions& options);
