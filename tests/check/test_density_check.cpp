@@ -4,7 +4,9 @@
 #include "check/density_check.h"
 #include "check_test_support.h"
 
+#include "check/glsl_compile.h"
 #include "check/metadata.h"
+#include "check/process.h"
 #include "pipeline/generate.h"
 #include "surfaces/expression_input.h"
 
@@ -135,6 +137,29 @@ TEST(DensityCheck, DensityFieldCellsMatchTheMeanDensityOfEachCell) {
     EXPECT_LE(std::fabs(r.cells[i].deviation), r.cell_tolerance)
         << "cell " << i << ": " << r.cells[i].measured.value << " +- " << r.cells[i].measured.standard_error;
   }
+}
+
+// The density functions and _wall in GLSL: the host shader calls every one of them, and all four
+// targets compile and link (NaN as intBitsToFloat, highp arguments).
+TEST(DensityCheck, GlslSnippetWithDensityFunctionsCompilesForAllFourTargets) {
+  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed (glslang-tools)";
+  GenerationRequest request;
+  request.surface = "schwarzp";
+  request.order = 2;
+  request.density = 0.25;
+  request.c = false;
+  request.glsl = true;
+  request.command = "check_tests";
+  const Generation g = generate(request);
+  const FileMetadata meta = parse_metadata(g.glsl_snippet, FileKind::Glsl);
+  ASSERT_TRUE(meta.has_density);
+  ASSERT_TRUE(meta.wall_density.has_value());
+  const std::string host = glsl_host_shader(g.glsl_snippet, meta, GlslTarget::Gl330, nullptr);
+  for (const char* call :
+       {"_wall(", "_density(q.w)", "_thickness_for_density(q.w)", "_network_density(q.w)", "_offset_for_density(q.w)"})
+    EXPECT_NE(host.find(call), std::string::npos) << call;
+  for (const auto& r : compile_glsl(g.glsl_snippet, meta, "schwarzp_o2.glsl"))
+    EXPECT_TRUE(r.ok) << r.name << "\n" << r.output;
 }
 
 // The acceptance: sheets at 0.05, 0.1, 0.2, 0.3 and networks at 0.2, 0.5, 0.8 where the
