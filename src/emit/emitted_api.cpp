@@ -61,7 +61,8 @@ std::string density_paragraph(const FileFacts& facts, bool glsl) {
                   "(integral K dA / 2 pi = {:.9f}, Gauss-Bonnet self-check), V_0 = {:.9f} (the volume of F < 0), "
                   "integral H dA = {:.9f}, largest principal curvature {:.6f} (estimated errors {:.0e}, {:.0e}, "
                   "{:.0e}).",
-                  k.area, k.euler_characteristic, k.gauss_integral / (2 * M_PI), k.volume_inside, k.mean_integral,
+                  k.area, k.euler_characteristic, k.gauss_integral / (2 * M_PI), k.volume_inside,
+                  std::fabs(k.mean_integral) < 5e-10 ? 0.0 : k.mean_integral,  // no "-0.000000000"
                   k.max_curvature, std::max(k.area_error, 1e-12), std::max(k.volume_error, 1e-12),
                   std::max(k.mean_error, 1e-12)),
       fmt::format("Sheet: {0}_density(t) = A t + (pi chi / 6) t^3 is the volume fraction of {0}_shell(p, t) < 0, "

@@ -107,7 +107,7 @@ void check_density_field(const GiNaC::ex& rho, const std::string& text, const de
               "--density-field '{}' is {:.6g} at (x, y, z) = ({}, {}, {}): a relative density must lie in (0, "
               "rho_max = {:.6f}] over the cell (rho_max: the sheet thickness reaches the smallest radius of "
               "curvature)",
-              text, value, p[0], p[1], p[2], model.sheet_density_limit()));
+              text, value + 0.0, p[0], p[1], p[2], model.sheet_density_limit()));  // + 0.0: no "-0"
       }
 }
 

@@ -121,7 +121,7 @@ TEST_P(SlowDensityConstants, ChiIsAnIntegerWithinTheSelfCheck) {
   EXPECT_LE(k.volume_error, 1e-7);
 }
 
-INSTANTIATE_TEST_SUITE_P(Catalog, SlowDensityConstants,
+INSTANTIATE_TEST_SUITE_P(SlowCatalog, SlowDensityConstants,
                          ::testing::Values("gyroid", "schwarzp", "diamond", "neovius", "iwp", "fischerkoch", "lidinoid",
                                            "splitp", "frd"));
 
