@@ -22,8 +22,8 @@ Registry& registry() {
 
 namespace {
 
-constexpr std::size_t kPoints = 4096;    // per iteration, scalar and batch
-constexpr std::size_t kAdPoints = 64;    // nested AD is ~1e4 times slower
+constexpr std::size_t kPoints = 4096;  // per iteration, scalar and batch
+constexpr std::size_t kAdPoints = 64;  // nested AD is ~1e4 times slower
 
 template <class T>
 struct Points {
@@ -82,26 +82,30 @@ std::string name(const char* mode, const char* impl, const Key& key, const char*
          precision;
 }
 
+void register_ours(const char* impl, const Key& key, const OursFunctions& f) {
+  benchmark::RegisterBenchmark(name("scalar", impl, key, "offset", "double").c_str(),
+                               [f = f.offset](benchmark::State& s) { run_scalar<double>(s, f, false, kPoints); });
+  benchmark::RegisterBenchmark(name("scalar", impl, key, "shell", "double").c_str(),
+                               [f = f.shell](benchmark::State& s) { run_scalar<double>(s, f, true, kPoints); });
+  benchmark::RegisterBenchmark(name("batch", impl, key, "offset", "double").c_str(),
+                               [f = f.offset_n](benchmark::State& s) { run_batch<double>(s, f, false); });
+  benchmark::RegisterBenchmark(name("batch", impl, key, "shell", "double").c_str(),
+                               [f = f.shell_n](benchmark::State& s) { run_batch<double>(s, f, true); });
+  benchmark::RegisterBenchmark(name("scalar", impl, key, "offset", "float").c_str(),
+                               [f = f.offsetf](benchmark::State& s) { run_scalar<float>(s, f, false, kPoints); });
+  benchmark::RegisterBenchmark(name("scalar", impl, key, "shell", "float").c_str(),
+                               [f = f.shellf](benchmark::State& s) { run_scalar<float>(s, f, true, kPoints); });
+  benchmark::RegisterBenchmark(name("batch", impl, key, "offset", "float").c_str(),
+                               [f = f.offsetf_n](benchmark::State& s) { run_batch<float>(s, f, false); });
+  benchmark::RegisterBenchmark(name("batch", impl, key, "shell", "float").c_str(),
+                               [f = f.shellf_n](benchmark::State& s) { run_batch<float>(s, f, true); });
+}
+
 void register_benchmarks() {
   const Registry& r = registry();
-  for (const auto& [key, f] : r.ours) {
-    benchmark::RegisterBenchmark(name("scalar", "ours", key, "offset", "double").c_str(),
-                                 [f = f.offset](benchmark::State& s) { run_scalar<double>(s, f, false, kPoints); });
-    benchmark::RegisterBenchmark(name("scalar", "ours", key, "shell", "double").c_str(),
-                                 [f = f.shell](benchmark::State& s) { run_scalar<double>(s, f, true, kPoints); });
-    benchmark::RegisterBenchmark(name("batch", "ours", key, "offset", "double").c_str(),
-                                 [f = f.offset_n](benchmark::State& s) { run_batch<double>(s, f, false); });
-    benchmark::RegisterBenchmark(name("batch", "ours", key, "shell", "double").c_str(),
-                                 [f = f.shell_n](benchmark::State& s) { run_batch<double>(s, f, true); });
-    benchmark::RegisterBenchmark(name("scalar", "ours", key, "offset", "float").c_str(),
-                                 [f = f.offsetf](benchmark::State& s) { run_scalar<float>(s, f, false, kPoints); });
-    benchmark::RegisterBenchmark(name("scalar", "ours", key, "shell", "float").c_str(),
-                                 [f = f.shellf](benchmark::State& s) { run_scalar<float>(s, f, true, kPoints); });
-    benchmark::RegisterBenchmark(name("batch", "ours", key, "offset", "float").c_str(),
-                                 [f = f.offsetf_n](benchmark::State& s) { run_batch<float>(s, f, false); });
-    benchmark::RegisterBenchmark(name("batch", "ours", key, "shell", "float").c_str(),
-                                 [f = f.shellf_n](benchmark::State& s) { run_batch<float>(s, f, true); });
-  }
+  // The offset methods side by side: benchmark names say the method where others say "ours".
+  for (const auto& [method_key, f] : r.methods) register_ours(method_key.first.c_str(), method_key.second, f);
+  for (const auto& [key, f] : r.ours) register_ours("ours", key, f);
   // SymPy's pipeline has no shell: a user calls its offset twice.
   for (const auto& [key, f] : r.sympy) {
     benchmark::RegisterBenchmark(name("scalar", "sympy", key, "offset", "double").c_str(),
@@ -159,6 +163,31 @@ int cross_check() {
                      key.second, i);
         ++failures;
         break;
+      }
+    }
+  }
+  // Each method's batch loop against its own scalar function; the methods against each other within
+  // their truncation error (h <= 0.05 here), which catches a registration that mixes up surfaces.
+  for (const auto& [method_key, f] : r.methods) {
+    const auto& [method, key] = method_key;
+    std::vector<double> out(kPoints);
+    f.offset_n(kPoints, p.x.data(), p.y.data(), p.z.data(), p.w.data(), out.data());
+    for (std::size_t i = 0; i < kPoints; ++i) {
+      const double scalar = f.offset(p.x[i], p.y[i], p.z[i], p.w[i]);
+      if (!(scaled_difference(out[i], scalar) <= 1e-10)) {
+        std::fprintf(stderr, "cross-check: batch %s %s o%d differs from scalar at point %zu\n", method.c_str(),
+                     key.first.c_str(), key.second, i);
+        ++failures;
+        break;
+      }
+      for (const auto& [other_key, g] : r.methods) {
+        if (other_key.second != key || other_key.first == method) continue;
+        if (!(scaled_difference(g.offset(p.x[i], p.y[i], p.z[i], p.w[i]), scalar) <= 1e-2)) {
+          std::fprintf(stderr, "cross-check: %s and %s %s o%d disagree at point %zu\n", method.c_str(),
+                       other_key.first.c_str(), key.first.c_str(), key.second, i);
+          ++failures;
+          break;
+        }
       }
     }
   }

@@ -5,6 +5,8 @@
 //   ad     runtime nested forward-mode AD (nested_dual.h; offset only)
 //   libm_trig  ours built with OFFSETGEN_LIBM_TRIG (libm's sin/cos instead of the inline ones),
 //              scalar double only
+//   methods    ours generated with each offset method (--method), for the side-by-side comparison
+//              (bench_methods only)
 #pragma once
 
 #include <cstddef>
@@ -32,13 +34,18 @@ struct Registry {
   std::map<Key, OursFunctions> ours;
   std::map<Key, Scalar> sympy;
   std::map<Key, Scalar> ad;
-  std::map<Key, std::pair<Scalar, Scalar>> libm_trig;  // offset, shell calling libm's sin/cos
+  std::map<Key, std::pair<Scalar, Scalar>> libm_trig;            // offset, shell calling libm's sin/cos
+  std::map<std::pair<std::string, Key>, OursFunctions> methods;  // (method, (surface, order))
 };
 
 Registry& registry();
 
 inline bool register_ours(const char* surface, int order, OursFunctions f) {
   registry().ours[{surface, order}] = f;
+  return true;
+}
+inline bool register_method(const char* method, const char* surface, int order, OursFunctions f) {
+  registry().methods[{method, {surface, order}}] = f;
   return true;
 }
 inline bool register_sympy(const char* surface, int order, Scalar offset) {

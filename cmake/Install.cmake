@@ -41,11 +41,25 @@ set(OFFSETGEN_DEFAULT_METHOD ${CMAKE_MATCH_1})
 unset(_offsetgen_method_files)
 unset(_lines)
 
+# The catalog's surface names, so offsetgen_generate() can reject an unknown SURFACE at configure time
+# before offsetgen is built (tests/cmake_consumer checks that this list is `offsetgen list`'s).
+file(STRINGS "${PROJECT_SOURCE_DIR}/src/surfaces/catalog.cpp" _offsetgen_catalog_lines
+     REGEX "^[ \t]*\{\"[A-Za-z0-9_]+\", \"")
+set(OFFSETGEN_SURFACES "")
+foreach(_line IN LISTS _offsetgen_catalog_lines)
+  if(_line MATCHES "^[ \t]*\{\"([A-Za-z0-9_]+)\"")
+    list(APPEND OFFSETGEN_SURFACES "${CMAKE_MATCH_1}")
+  endif()
+endforeach()
+unset(_offsetgen_catalog_lines)
+unset(_line)
+
 # --- The same names inside this build (add_subdirectory / FetchContent users, and our tests) -------
 add_executable(offsetgen::offsetgen ALIAS offsetgen)
 file(GLOB _offsetgen_templates "${PROJECT_SOURCE_DIR}/templates/*.in")
 set_property(GLOBAL PROPERTY OFFSETGEN_METHODS "${OFFSETGEN_METHODS}")
 set_property(GLOBAL PROPERTY OFFSETGEN_DEFAULT_METHOD "${OFFSETGEN_DEFAULT_METHOD}")
+set_property(GLOBAL PROPERTY OFFSETGEN_SURFACES "${OFFSETGEN_SURFACES}")
 set_property(GLOBAL PROPERTY OFFSETGEN_TEMPLATE_FILES ${_offsetgen_templates})
 unset(_offsetgen_templates)
 include("${CMAKE_CURRENT_LIST_DIR}/offsetgenGenerate.cmake")

@@ -47,7 +47,7 @@ total ops after CSE:
     - normal: 104
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":1,"graded_order":1,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":46,"shell":49,"normal":104}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"diamond_o1","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":1,"graded_order":1,"graded_wall_order":1,"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":46,"shell":49,"normal":104}} */
 #ifndef OFFSETGEN_DIAMOND_O1_GLSL
 #define OFFSETGEN_DIAMOND_O1_GLSL
 

@@ -47,7 +47,7 @@ total ops after CSE:
     - normal: 1533
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":4,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":575,"shell":827,"normal":1533}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"diamond_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":4,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":575,"shell":827,"normal":1533}} */
 #ifndef OFFSETGEN_DIAMOND_O4_GLSL
 #define OFFSETGEN_DIAMOND_O4_GLSL
 

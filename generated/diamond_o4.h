@@ -48,7 +48,7 @@
  *   shell    827
  *   normal   1533
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"diamond_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":4,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":575,"shell":827,"normal":1533}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"diamond_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":4,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":575,"shell":827,"normal":1533}} */
 #ifndef OFFSETGEN_DIAMOND_O4_H
 #define OFFSETGEN_DIAMOND_O4_H
 
@@ -1490,24 +1490,33 @@ static inline void diamond_o4_normalf(float x, float y, float z, float h, float 
  *   void diamond_o4_shellf_n(n, x, y, z, t, out)
  *
  * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
- * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
- * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
- * selects (blends), and there are no calls left for the vectoriser to stumble over.
- *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
- *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
- *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
- *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * body is the same straight-line program as the scalar function, written so that GCC (12 and later)
+ * and Clang (14 and later) vectorise it with the flags you already use, -O2 or -O3 with or without
+ * -march (SSE2 to AVX-512), and without -fno-math-errno or any other change to floating-point
+ * semantics. What stands in the way of a vectoriser is replaced by plain arithmetic:
+ *   - sin and cos: branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm);
+ *   - sqrt: offsetgen_batch_sqrt, a bit-level seed and Newton steps (within 1 ulp of sqrt, which
+ *     cannot vectorise while it may set errno; see there for subnormal inputs);
+ *   - quadrant and special-case selection: integer masks, so there is no branch to convert;
+ *   - the points go in blocks of a fixed size: a loop with a constant trip count is what GCC
+ *     vectorises at -O2.
+ * -march=native gives wider vectors. Optionally: -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp:
+ * the block loop then carries `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang).
+ * Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
  * The results agree with the scalar functions to about 1e-15 of the field's scale: both use the
- * same sin/cos reduction and polynomials, so only the compiler's vector contraction and ordering of
- * the same operations can differ. Points whose sin/cos arguments lie beyond the
- * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
- * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
- * function's finite value. `out` must not overlap the input arrays. Other elementary functions
- * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
- * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ * same sin/cos reduction and polynomials, sqrt differs by at most 1 ulp, and the compiler may
+ * contract the same operations differently in vector and scalar code. Points whose sin/cos
+ * arguments lie beyond the polynomials' range (1.0e8 in double, 8192.0 in float, in
+ * radians), and non-finite inputs, are recomputed by the scalar function, and so are the last
+ * n % block points, so every finite input still gives the scalar function's finite value. `out` must
+ * not overlap the input arrays. Other elementary functions (exp, tan, ...) in a user expression stay
+ * libm calls; such loops are correct but need a vector math library (e.g. -ffast-math with glibc's
+ * libmvec) to vectorise.
  */
+#include <stdint.h>
+#include <string.h>
 #ifndef OFFSETGEN_SIMD_LOOP
-/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno sqrt calls. */
+/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno libm calls. */
 #if (defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)) && (!defined(__clang__) || defined(__NO_MATH_ERRNO__))
 #define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
 #elif defined(__GNUC__) && !defined(__clang__)
@@ -1516,819 +1525,934 @@ static inline void diamond_o4_normalf(float x, float y, float z, float h, float 
 #define OFFSETGEN_SIMD_LOOP
 #endif
 #endif
-#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
- * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
- * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
- * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
- * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
-static inline double offsetgen_batch_sin(double a)
+#ifndef OFFSETGEN_RESTRICT
+/* `out` aliases no input: without this Clang checks overlap at run time and keeps short loops scalar. */
+#ifdef __cplusplus
+#define OFFSETGEN_RESTRICT __restrict
+#else
+#define OFFSETGEN_RESTRICT restrict
+#endif
+#endif
+/* The rounding by adding and subtracting 1.5 * 2^52 needs IEEE evaluation in the declared type. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_BATCH_RINT_
+#endif
+#ifndef OFFSETGEN_BATCH_MATH_DOUBLE_V2
+#define OFFSETGEN_BATCH_MATH_DOUBLE_V2
+/* A double's bits and back (memcpy is how C and C++ both allow it; compilers emit no call). */
+static inline uint64_t offsetgen_batch_bits(double d)
 {
+    uint64_t b;
+    memcpy(&b, &d, sizeof b);
+    return b;
+}
+
+static inline double offsetgen_batch_real(uint64_t b)
+{
+    double d;
+    memcpy(&d, &b, sizeof d);
+    return d;
+}
+
+/* All ones where b > limit, else 0 (both below 2^63): the borrow of limit - b. Integer masks like
+ * this one vectorise at every SIMD level, where a select on a comparison may not. */
+static inline uint64_t offsetgen_batch_above(uint64_t b, uint64_t limit)
+{
+    return UINT64_C(0) - ((limit - b) >> 63);
+}
+
+/* sin (cosine = 0) or cos (cosine = 1) for the batch loops: Cody-Waite reduction by pi/2
+ * (three-part constant, exact for |a| < 1.0e8) and Cephes' minimax polynomials on
+ * [-pi/4, pi/4]; within 1.5 ulp of libm, the same arithmetic as offsetgen_sin/cos. Adding 1.5 * 2^52
+ * rounds a * 2/pi to an integer whose low bits are the quadrant, which picks the polynomial and the
+ * sign through bit masks: straight-line code that vectorises. Beyond the range (or for NaN and
+ * infinite a) the result is NaN, which makes the batch loop fall back to the scalar function. A sin
+ * and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sincos(double a, uint64_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const double q = rint(a * 0.63661977236758138);
+    const double t = q + 6755399441055744.0;
+#else
+    const double t = a * 0.63661977236758138 + 6755399441055744.0;
+    const double q = t - 6755399441055744.0;
+#endif
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : HUGE_VAL - HUGE_VAL;  /* NaN, as a double */
+    const uint64_t quadrant = offsetgen_batch_bits(t) + cosine;     /* cos(a) = sin(a + pi/2) */
+    const uint64_t odd = UINT64_C(0) - (quadrant & 1u);             /* odd quadrants take the other polynomial */
+    const uint64_t value = (offsetgen_batch_bits(c) & odd) | (offsetgen_batch_bits(s) & ~odd);
+    const uint64_t far = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff), UINT64_C(0x4197d78400000000));
+    return offsetgen_batch_real((value ^ ((quadrant & 2u) << 62)) | (far & UINT64_C(0x7ff8000000000000)));
 }
 
-static inline double offsetgen_batch_cos(double a)
+static inline double offsetgen_batch_sin(double a) { return offsetgen_batch_sincos(a, 0u); }
+static inline double offsetgen_batch_cos(double a) { return offsetgen_batch_sincos(a, 1u); }
+
+/* sqrt for the batch loops, without errno: the bit-level seed of 1/sqrt (3.4% off), three Newton
+ * steps (2e-11), then one Newton step on sqrt itself. Equal to sqrt but in about 1e-6 of the cases
+ * where the target has FMA (the residual is then exact), within 1 ulp otherwise (13% off by one).
+ * +-0, +inf and NaN come back as sqrt returns them, negative numbers give NaN. Subnormal inputs
+ * (below 2.2e-308, which have no usable exponent for the seed) come back within 6e-156 of their
+ * square root, not to the last bit: scaling them would cost a select and two multiplications on
+ * every call, about 5% of a loop at -O2. */
+static inline double offsetgen_batch_sqrt(double a)
 {
-    const double q = rint(a * 0.63661977236758138);
-    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
-    const double z = r * r;
-    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
-    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
-    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : HUGE_VAL - HUGE_VAL;
+    const double half = 0.5 * a;
+    const uint64_t special = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff),
+                                                   UINT64_C(0x7fefffffffffffff));  /* inf, NaN */
+    const uint64_t negative = offsetgen_batch_bits((a < 0.0) ? offsetgen_batch_real(UINT64_C(0x7ff8000000000000)) : 0.0);
+    double y = offsetgen_batch_real(UINT64_C(0x5fe6eb50c7b537a9) - (offsetgen_batch_bits(a) >> 1));
+    double s;
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5 * y) * fma(-s, s, a);  /* exact residual: sqrt's rounding */
+#else
+    s = s + (0.5 * y) * (a - s * s);
+#endif
+    return offsetgen_batch_real((offsetgen_batch_bits(s) & ~special) | (offsetgen_batch_bits(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
-#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
-#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
-/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
- * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
-static inline float offsetgen_batch_sinf(float a)
+#endif /* OFFSETGEN_BATCH_MATH_DOUBLE_V2 */
+#ifndef OFFSETGEN_BATCH_MATH_FLOAT_V2
+#define OFFSETGEN_BATCH_MATH_FLOAT_V2
+/* The float twins of the double helpers: 1.5 * 2^23 for the rounding (|a| < 8192.0), Cephes'
+ * sinf/cosf polynomials, two Newton steps for 1/sqrt (subnormal inputs, below 1.2e-38, come back
+ * within 2e-20 of their square root). */
+static inline uint32_t offsetgen_batch_bitsf(float f)
 {
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+static inline float offsetgen_batch_realf(uint32_t b)
+{
+    float f;
+    memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+static inline uint32_t offsetgen_batch_abovef(uint32_t b, uint32_t limit)
+{
+    return 0u - ((limit - b) >> 31);
+}
+
+static inline float offsetgen_batch_sincosf(float a, uint32_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const float q = rintf(a * 0.636619772f);
+    const float t = q + 12582912.0f;
+#else
+    const float t = a * 0.636619772f + 12582912.0f;
+    const float q = t - 12582912.0f;
+#endif
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
-    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+    const uint32_t quadrant = offsetgen_batch_bitsf(t) + cosine;
+    const uint32_t odd = 0u - (quadrant & 1u);
+    const uint32_t value = (offsetgen_batch_bitsf(c) & odd) | (offsetgen_batch_bitsf(s) & ~odd);
+    const uint32_t far = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x46000000u);
+    return offsetgen_batch_realf((value ^ ((quadrant & 2u) << 30)) | (far & 0x7fc00000u));
 }
 
-static inline float offsetgen_batch_cosf(float a)
+static inline float offsetgen_batch_sinf(float a) { return offsetgen_batch_sincosf(a, 0u); }
+static inline float offsetgen_batch_cosf(float a) { return offsetgen_batch_sincosf(a, 1u); }
+
+static inline float offsetgen_batch_sqrtf(float a)
 {
-    const float q = rintf(a * 0.636619772f);
-    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
-    const float z = r * r;
-    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
-    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
-    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+    const float half = 0.5f * a;
+    const uint32_t special = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x7f7fffffu);
+    const uint32_t negative = offsetgen_batch_bitsf((a < 0.0f) ? offsetgen_batch_realf(0x7fc00000u) : 0.0f);
+    float y = offsetgen_batch_realf(0x5f375a86u - (offsetgen_batch_bitsf(a) >> 1));
+    float s;
+    y = y * (1.5f - (half * y) * y);
+    y = y * (1.5f - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5f * y) * fmaf(-s, s, a);
+#else
+    s = s + (0.5f * y) * (a - s * s);
+#endif
+    return offsetgen_batch_realf((offsetgen_batch_bitsf(s) & ~special) | (offsetgen_batch_bitsf(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+#endif /* OFFSETGEN_BATCH_MATH_FLOAT_V2 */
 
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
  * Batch form of diamond_o4_offset: out[i] = diamond_o4_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void diamond_o4_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+static inline void diamond_o4_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_cos(_t0);
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = _t1 * _t3;
-        const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_sin(_t5);
-        const double _t7 = _t4 * _t6;
-        const double _t8 = offsetgen_batch_sin(_t0);
-        const double _t9 = offsetgen_batch_sin(_t2);
-        const double _t10 = _t8 * _t9;
-        const double _t11 = _t6 * _t10;
-        const double _t12 = _t1 * _t9;
-        const double _t13 = offsetgen_batch_cos(_t5);
-        const double _t14 = _t12 * _t13;
-        const double _t15 = _t11 + _t14;
-        const double _t16 = _t8 * _t3;
-        const double _t17 = _t16 * _t13;
-        const double _t18 = _t7 + _t15 + _t17;
-        const double _t19 = 6.2831853071795862 * h[i];
-        const double _t20 = _t4 * _t13;
-        const double _t21 = _t16 * _t6;
-        const double _t22 = _t20 + _t21;
-        const double _t23 = _t12 * _t6;
-        const double _t24 = _t13 * _t10;
-        const double _t25 = _t22 - _t23 - _t24;
-        const double _t26 = _t19 * 0.33333333333333331;
-        const double _t27 = _t11 + _t17 - _t14 - _t7;
-        const double _t28 = _t20 + _t24 - _t21 - _t23;
-        const double _t29 = _t27 * _t28;
-        const double _t30 = _t11 + _t7 - _t14 - _t17;
-        const double _t31 = _t20 + _t23 - _t21 - _t24;
-        const double _t32 = _t30 * _t31;
-        const double _t33 = _t25 * _t18;
-        const double _t34 = _t31 * _t31;
-        const double _t35 = _t28 * _t28;
-        const double _t36 = _t25 * _t25;
-        const double _t37 = sqrt(_t34 + _t35 + _t36);
-        const double _t38 = 1.0 / _t37;
-        const double _t39 = (_t29 + _t32 - _t33) * _t38;
-        const double _t40 = _t25 - _t26 * _t39;
-        const double _t41 = _t15 - _t7 - _t17;
-        const double _t42 = _t41 * _t31;
-        const double _t43 = _t25 * _t27;
-        const double _t44 = _t28 * _t18;
-        const double _t45 = _t38 * (_t42 + _t43 - _t44);
-        const double _t46 = _t45 * _t26 - _t28;
-        const double _t47 = _t25 * _t30;
-        const double _t48 = _t41 * _t28;
-        const double _t49 = _t18 * _t31;
-        const double _t50 = _t38 * (_t47 + _t48 - _t49);
-        const double _t51 = _t50 * _t26 - _t31;
-        const double _t52 = sqrt(_t40 * _t40 + (_t46 * _t46 + _t51 * _t51));
-        const double _t53 = _t28 * _t31;
-        const double _t54 = _t41 * _t18;
-        const double _t55 = _t23 + _t22 + _t24;
-        const double _t56 = (_t53 + (_t54 + _t54 + _t53) - _t25 * _t55 - _t27 * _t30 + _t50 * _t45) * _t38;
-        const double _t57 = _t41 + _t56 * _t26;
-        const double _t58 = _t25 * _t28;
-        const double _t59 = _t27 * _t18;
-        const double _t60 = _t38 * (_t41 * _t30 + _t55 * _t31 - _t58 - _t58 - _t59 - _t59 - _t45 * _t39);
-        const double _t61 = _t60 * _t26 - _t27;
-        const double _t62 = _t18 * _t18;
-        const double _t63 = _t41 * _t41;
-        const double _t64 = _t27 * _t27;
-        const double _t65 = _t38 * (_t45 * _t45 - (_t62 + (_t63 + _t64) - _t34 - _t35 - _t36));
-        const double _t66 = 1.0 / _t52;
-        const double _t67 = _t46 - (_t51 * _t57 + _t40 * _t61 + _t46 * (_t26 * _t65 - _t18)) * _t66 * _t26;
-        const double _t68 = _t30 * _t30;
-        const double _t69 = _t38 * (_t39 * _t39 - (_t64 + _t62 + _t68 - _t34 - _t35 - _t36));
-        const double _t70 = _t25 * _t31;
-        const double _t71 = _t30 * _t18;
-        const double _t72 = _t38 * (_t50 * _t39 + (_t70 + _t70 + _t71 + _t71 - _t28 * _t55 - _t41 * _t27));
-        const double _t73 = _t30 + _t72 * _t26;
-        const double _t74 = ((_t69 * _t26 - _t18) * _t40 + _t46 * _t61 - _t51 * _t73) * _t66 * _t26 - _t40;
-        const double _t75 = _t38 * (_t50 * _t50 - (_t63 + _t62 + _t68 - _t34 - _t35 - _t36));
-        const double _t76 = (_t51 * (_t26 * _t75 - _t18) + _t46 * _t57 - _t73 * _t40) * _t66 * _t26 - _t51;
-        const double _t77 = _t19 * 0.5;
-        const double _t78 = _t39 * _t77 - _t25;
-        const double _t79 = _t50 * _t77 - _t31;
-        const double _t80 = _t28 - _t45 * _t77;
-        const double _t81 = _t19 * 0.25;
-        const double _t82 = _t50 * _t81 - _t31;
-        const double _t83 = _t25 - _t39 * _t81;
-        const double _t84 = _t28 - _t45 * _t81;
-        const double _t85 = sqrt(_t83 * _t83 + (_t82 * _t82 + _t84 * _t84));
-        const double _t86 = 1.0 / _t85;
-        const double _t87 = _t41 + _t56 * _t81;
-        const double _t88 = _t72 * _t81 + _t30;
-        const double _t89 = _t18 - _t75 * _t81;
-        const double _t90 = _t86 * (_t87 * _t84 + _t88 * _t83 + _t82 * _t89);
-        const double _t91 = _t82 + _t90 * _t81;
-        const double _t92 = _t69 * _t81 - _t18;
-        const double _t93 = _t60 * _t81 - _t27;
-        const double _t94 = _t86 * (_t83 * _t92 - _t93 * _t84 - _t82 * _t88);
-        const double _t95 = _t81 * _t94 - _t83;
-        const double _t96 = _t18 - _t81 * _t65;
-        const double _t97 = _t86 * (_t82 * _t87 + _t96 * _t84 + _t83 * _t93);
-        const double _t98 = _t97 * _t81 + _t84;
-        const double _t99 = sqrt(_t91 * _t91 + (_t95 * _t95 + _t98 * _t98));
-        const double _t100 = _t41 * _t55 * 2.0;
-        const double _t101 = _t33 * 2.0;
-        const double _t102 = _t25 + (_t39 * _t65 - (_t32 + (_t29 + (_t29 * 2.0 + _t29)) + _t32 - _t33 - _t33 - _t100 - _t101) - _t60 * _t45 * 2.0) * _t38 * _t81;
-        const double _t103 = _t41 * _t25;
-        const double _t104 = _t30 * _t28;
-        const double _t105 = _t27 * _t31;
-        const double _t106 = _t55 * _t18;
-        const double _t107 = _t55 - (_t72 * _t45 + _t56 * _t39 - _t50 * _t60 - (_t103 + (_t104 + (_t105 + (_t105 + _t105) + _t104) + _t104 + _t103 + _t103) + _t106 + _t106 + _t106)) * _t38 * _t81;
-        const double _t108 = _t42 + _t42;
-        const double _t109 = _t44 * 2.0;
-        const double _t110 = _t30 * _t55 * 2.0;
-        const double _t111 = _t28 - _t38 * (_t43 + (_t43 * 2.0 + _t108 + _t43) - _t109 - _t44 - _t44 - _t110 + _t60 * _t39 * 2.0 - _t45 * _t69) * _t81;
-        const double _t112 = _t93 - (_t102 * _t84 + (_t107 * _t82 + _t83 * _t111 + _t93 * _t92) - _t88 * _t87 - _t96 * _t93 - _t97 * _t94) * _t86 * _t81;
-        const double _t113 = _t49 + (_t27 * _t55 * 2.0 + _t49) + _t49 * 2.0 - _t47 - _t47 - _t48 - _t48;
-        const double _t114 = _t38 * (_t113 - _t47 * 2.0 + _t72 * _t39 * 2.0 + _t50 * _t69) * _t81 + _t31;
-        const double _t115 = _t38 * (_t32 + (_t32 * 2.0 + (_t29 + _t29)) + _t32 - _t33 - _t33 - _t100 - _t101 - _t39 * _t75 - _t50 * _t72 * 2.0) * _t81 - _t25;
-        const double _t116 = _t88 + _t86 * (_t90 * _t94 - (_t88 * _t92 + _t107 * _t84 - _t83 * _t114 - _t87 * _t93 - _t88 * _t89 - _t115 * _t82)) * _t81;
-        const double _t117 = _t88 * _t88;
-        const double _t118 = _t93 * _t93;
-        const double _t119 = 1.0 / _t99;
-        const double _t120 = _t95 - (_t98 * _t112 + _t91 * _t116 + _t95 * (_t86 * (_t94 * _t94 + ((_t25 + _t38 * (_t69 * _t39 * 3.0 - (_t32 + (_t29 + 3.0 * _t32) + _t29 * 3.0 - _t33 - _t33 * 3.0)) * _t81) * _t83 + _t84 * _t111 - _t82 * _t114 - _t117 - _t92 * _t92 - _t118)) * _t81 + _t92)) * _t119 * _t81;
-        const double _t121 = _t38 * (_t113 - _t48 * 2.0 + _t56 * _t45 * 2.0 + _t50 * _t65) * _t81 + _t31;
-        const double _t122 = _t38 * (_t50 * _t56 * 2.0 + _t45 * _t75 - (_t43 + (_t43 + _t108) + _t42 * 2.0 - _t109 - _t44 - _t44 - _t110)) * _t81 + _t28;
-        const double _t123 = (_t97 * _t90 - (_t87 * _t89 + _t96 * _t87 + _t88 * _t93 + _t121 * _t84 - _t82 * _t122 - _t107 * _t83)) * _t86 * _t81 - _t87;
-        const double _t124 = _t87 * _t87;
-        const double _t125 = _t91 - _t119 * (_t98 * _t123 + _t95 * _t116 - _t91 * (_t89 - (_t90 * _t90 + (_t122 * _t84 - _t117 - _t124 - _t82 * (_t38 * (_t49 * 3.0 + _t49 - _t47 - _t48 - _t48 * 3.0 - _t47 * 3.0 + _t50 * _t75 * 3.0) * _t81 + _t31) - _t115 * _t83 - _t89 * _t89)) * _t86 * _t81)) * _t81;
-        const double _t126 = _t98 - (_t91 * _t123 + _t95 * _t112 - _t98 * (_t96 + _t86 * (_t96 * _t96 + _t124 + _t121 * _t82 + _t118 - _t102 * _t83 - (_t38 * (_t44 * 3.0 + _t44 - _t42 - _t43 - _t43 * 3.0 - _t42 * 3.0 + _t45 * _t65 * 3.0) * _t81 + _t28) * _t84 - _t97 * _t97) * _t81)) * _t119 * _t81;
-        const double _t127 = -(4.5 * (_t52 + sqrt(_t67 * _t67 + (_t74 * _t74 + _t76 * _t76))) - sqrt(_t78 * _t78 + _t79 * _t79 + _t80 * _t80) * 2.0 - (_t99 + (_t85 + sqrt(_t120 * _t120 + (_t125 * _t125 + _t126 * _t126)))) * 2.6666666666666665);
-        const double _t128 = fabs(_t19);
-        const double _t129 = _t37 + _t128 * 1.000001000000003;
-        const double _t130 = (_t129 <= 1.7320525396196846) ? _t129 : 1.7320525396196846;
-        const double _t131 = _t37 - _t128 * 3.0000030000000093;
-        const double _t132 = ((-1.7320525396196846) <= _t131) ? _t131 : (-1.7320525396196846);
-        out[i] = _t18 - _t19 * ((_t127 <= _t130) ? ((_t132 <= _t127) ? _t127 : _t132) : _t130);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = 6.2831853071795862 * y[i + j];
+            const double _t3 = offsetgen_batch_cos(_t2);
+            const double _t4 = _t1 * _t3;
+            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t6 = offsetgen_batch_sin(_t5);
+            const double _t7 = _t4 * _t6;
+            const double _t8 = offsetgen_batch_sin(_t0);
+            const double _t9 = offsetgen_batch_sin(_t2);
+            const double _t10 = _t8 * _t9;
+            const double _t11 = _t6 * _t10;
+            const double _t12 = _t1 * _t9;
+            const double _t13 = offsetgen_batch_cos(_t5);
+            const double _t14 = _t12 * _t13;
+            const double _t15 = _t11 + _t14;
+            const double _t16 = _t8 * _t3;
+            const double _t17 = _t16 * _t13;
+            const double _t18 = _t7 + _t15 + _t17;
+            const double _t19 = 6.2831853071795862 * h[i + j];
+            const double _t20 = _t4 * _t13;
+            const double _t21 = _t16 * _t6;
+            const double _t22 = _t20 + _t21;
+            const double _t23 = _t12 * _t6;
+            const double _t24 = _t13 * _t10;
+            const double _t25 = _t22 - _t23 - _t24;
+            const double _t26 = _t19 * 0.33333333333333331;
+            const double _t27 = _t11 + _t17 - _t14 - _t7;
+            const double _t28 = _t20 + _t24 - _t21 - _t23;
+            const double _t29 = _t27 * _t28;
+            const double _t30 = _t11 + _t7 - _t14 - _t17;
+            const double _t31 = _t20 + _t23 - _t21 - _t24;
+            const double _t32 = _t30 * _t31;
+            const double _t33 = _t25 * _t18;
+            const double _t34 = _t31 * _t31;
+            const double _t35 = _t28 * _t28;
+            const double _t36 = _t25 * _t25;
+            const double _t37 = offsetgen_batch_sqrt(_t34 + _t35 + _t36);
+            const double _t38 = 1.0 / _t37;
+            const double _t39 = (_t29 + _t32 - _t33) * _t38;
+            const double _t40 = _t25 - _t26 * _t39;
+            const double _t41 = _t15 - _t7 - _t17;
+            const double _t42 = _t41 * _t31;
+            const double _t43 = _t25 * _t27;
+            const double _t44 = _t28 * _t18;
+            const double _t45 = _t38 * (_t42 + _t43 - _t44);
+            const double _t46 = _t45 * _t26 - _t28;
+            const double _t47 = _t25 * _t30;
+            const double _t48 = _t41 * _t28;
+            const double _t49 = _t18 * _t31;
+            const double _t50 = _t38 * (_t47 + _t48 - _t49);
+            const double _t51 = _t50 * _t26 - _t31;
+            const double _t52 = offsetgen_batch_sqrt(_t40 * _t40 + (_t46 * _t46 + _t51 * _t51));
+            const double _t53 = _t28 * _t31;
+            const double _t54 = _t41 * _t18;
+            const double _t55 = _t23 + _t22 + _t24;
+            const double _t56 = (_t53 + (_t54 + _t54 + _t53) - _t25 * _t55 - _t27 * _t30 + _t50 * _t45) * _t38;
+            const double _t57 = _t41 + _t56 * _t26;
+            const double _t58 = _t25 * _t28;
+            const double _t59 = _t27 * _t18;
+            const double _t60 = _t38 * (_t41 * _t30 + _t55 * _t31 - _t58 - _t58 - _t59 - _t59 - _t45 * _t39);
+            const double _t61 = _t60 * _t26 - _t27;
+            const double _t62 = _t18 * _t18;
+            const double _t63 = _t41 * _t41;
+            const double _t64 = _t27 * _t27;
+            const double _t65 = _t38 * (_t45 * _t45 - (_t62 + (_t63 + _t64) - _t34 - _t35 - _t36));
+            const double _t66 = 1.0 / _t52;
+            const double _t67 = _t46 - (_t51 * _t57 + _t40 * _t61 + _t46 * (_t26 * _t65 - _t18)) * _t66 * _t26;
+            const double _t68 = _t30 * _t30;
+            const double _t69 = _t38 * (_t39 * _t39 - (_t64 + _t62 + _t68 - _t34 - _t35 - _t36));
+            const double _t70 = _t25 * _t31;
+            const double _t71 = _t30 * _t18;
+            const double _t72 = _t38 * (_t50 * _t39 + (_t70 + _t70 + _t71 + _t71 - _t28 * _t55 - _t41 * _t27));
+            const double _t73 = _t30 + _t72 * _t26;
+            const double _t74 = ((_t69 * _t26 - _t18) * _t40 + _t46 * _t61 - _t51 * _t73) * _t66 * _t26 - _t40;
+            const double _t75 = _t38 * (_t50 * _t50 - (_t63 + _t62 + _t68 - _t34 - _t35 - _t36));
+            const double _t76 = (_t51 * (_t26 * _t75 - _t18) + _t46 * _t57 - _t73 * _t40) * _t66 * _t26 - _t51;
+            const double _t77 = _t19 * 0.5;
+            const double _t78 = _t39 * _t77 - _t25;
+            const double _t79 = _t50 * _t77 - _t31;
+            const double _t80 = _t28 - _t45 * _t77;
+            const double _t81 = _t19 * 0.25;
+            const double _t82 = _t50 * _t81 - _t31;
+            const double _t83 = _t25 - _t39 * _t81;
+            const double _t84 = _t28 - _t45 * _t81;
+            const double _t85 = offsetgen_batch_sqrt(_t83 * _t83 + (_t82 * _t82 + _t84 * _t84));
+            const double _t86 = 1.0 / _t85;
+            const double _t87 = _t41 + _t56 * _t81;
+            const double _t88 = _t72 * _t81 + _t30;
+            const double _t89 = _t18 - _t75 * _t81;
+            const double _t90 = _t86 * (_t87 * _t84 + _t88 * _t83 + _t82 * _t89);
+            const double _t91 = _t82 + _t90 * _t81;
+            const double _t92 = _t69 * _t81 - _t18;
+            const double _t93 = _t60 * _t81 - _t27;
+            const double _t94 = _t86 * (_t83 * _t92 - _t93 * _t84 - _t82 * _t88);
+            const double _t95 = _t81 * _t94 - _t83;
+            const double _t96 = _t18 - _t81 * _t65;
+            const double _t97 = _t86 * (_t82 * _t87 + _t96 * _t84 + _t83 * _t93);
+            const double _t98 = _t97 * _t81 + _t84;
+            const double _t99 = offsetgen_batch_sqrt(_t91 * _t91 + (_t95 * _t95 + _t98 * _t98));
+            const double _t100 = _t41 * _t55 * 2.0;
+            const double _t101 = _t33 * 2.0;
+            const double _t102 = _t25 + (_t39 * _t65 - (_t32 + (_t29 + (_t29 * 2.0 + _t29)) + _t32 - _t33 - _t33 - _t100 - _t101) - _t60 * _t45 * 2.0) * _t38 * _t81;
+            const double _t103 = _t41 * _t25;
+            const double _t104 = _t30 * _t28;
+            const double _t105 = _t27 * _t31;
+            const double _t106 = _t55 * _t18;
+            const double _t107 = _t55 - (_t72 * _t45 + _t56 * _t39 - _t50 * _t60 - (_t103 + (_t104 + (_t105 + (_t105 + _t105) + _t104) + _t104 + _t103 + _t103) + _t106 + _t106 + _t106)) * _t38 * _t81;
+            const double _t108 = _t42 + _t42;
+            const double _t109 = _t44 * 2.0;
+            const double _t110 = _t30 * _t55 * 2.0;
+            const double _t111 = _t28 - _t38 * (_t43 + (_t43 * 2.0 + _t108 + _t43) - _t109 - _t44 - _t44 - _t110 + _t60 * _t39 * 2.0 - _t45 * _t69) * _t81;
+            const double _t112 = _t93 - (_t102 * _t84 + (_t107 * _t82 + _t83 * _t111 + _t93 * _t92) - _t88 * _t87 - _t96 * _t93 - _t97 * _t94) * _t86 * _t81;
+            const double _t113 = _t49 + (_t27 * _t55 * 2.0 + _t49) + _t49 * 2.0 - _t47 - _t47 - _t48 - _t48;
+            const double _t114 = _t38 * (_t113 - _t47 * 2.0 + _t72 * _t39 * 2.0 + _t50 * _t69) * _t81 + _t31;
+            const double _t115 = _t38 * (_t32 + (_t32 * 2.0 + (_t29 + _t29)) + _t32 - _t33 - _t33 - _t100 - _t101 - _t39 * _t75 - _t50 * _t72 * 2.0) * _t81 - _t25;
+            const double _t116 = _t88 + _t86 * (_t90 * _t94 - (_t88 * _t92 + _t107 * _t84 - _t83 * _t114 - _t87 * _t93 - _t88 * _t89 - _t115 * _t82)) * _t81;
+            const double _t117 = _t88 * _t88;
+            const double _t118 = _t93 * _t93;
+            const double _t119 = 1.0 / _t99;
+            const double _t120 = _t95 - (_t98 * _t112 + _t91 * _t116 + _t95 * (_t86 * (_t94 * _t94 + ((_t25 + _t38 * (_t69 * _t39 * 3.0 - (_t32 + (_t29 + 3.0 * _t32) + _t29 * 3.0 - _t33 - _t33 * 3.0)) * _t81) * _t83 + _t84 * _t111 - _t82 * _t114 - _t117 - _t92 * _t92 - _t118)) * _t81 + _t92)) * _t119 * _t81;
+            const double _t121 = _t38 * (_t113 - _t48 * 2.0 + _t56 * _t45 * 2.0 + _t50 * _t65) * _t81 + _t31;
+            const double _t122 = _t38 * (_t50 * _t56 * 2.0 + _t45 * _t75 - (_t43 + (_t43 + _t108) + _t42 * 2.0 - _t109 - _t44 - _t44 - _t110)) * _t81 + _t28;
+            const double _t123 = (_t97 * _t90 - (_t87 * _t89 + _t96 * _t87 + _t88 * _t93 + _t121 * _t84 - _t82 * _t122 - _t107 * _t83)) * _t86 * _t81 - _t87;
+            const double _t124 = _t87 * _t87;
+            const double _t125 = _t91 - _t119 * (_t98 * _t123 + _t95 * _t116 - _t91 * (_t89 - (_t90 * _t90 + (_t122 * _t84 - _t117 - _t124 - _t82 * (_t38 * (_t49 * 3.0 + _t49 - _t47 - _t48 - _t48 * 3.0 - _t47 * 3.0 + _t50 * _t75 * 3.0) * _t81 + _t31) - _t115 * _t83 - _t89 * _t89)) * _t86 * _t81)) * _t81;
+            const double _t126 = _t98 - (_t91 * _t123 + _t95 * _t112 - _t98 * (_t96 + _t86 * (_t96 * _t96 + _t124 + _t121 * _t82 + _t118 - _t102 * _t83 - (_t38 * (_t44 * 3.0 + _t44 - _t42 - _t43 - _t43 * 3.0 - _t42 * 3.0 + _t45 * _t65 * 3.0) * _t81 + _t28) * _t84 - _t97 * _t97) * _t81)) * _t119 * _t81;
+            const double _t127 = -(4.5 * (_t52 + offsetgen_batch_sqrt(_t67 * _t67 + (_t74 * _t74 + _t76 * _t76))) - offsetgen_batch_sqrt(_t78 * _t78 + _t79 * _t79 + _t80 * _t80) * 2.0 - (_t99 + (_t85 + offsetgen_batch_sqrt(_t120 * _t120 + (_t125 * _t125 + _t126 * _t126)))) * 2.6666666666666665);
+            const double _t128 = fabs(_t19);
+            const double _t129 = _t37 + _t128 * 1.000001000000003;
+            const double _t130 = (_t129 <= 1.7320525396196846) ? _t129 : 1.7320525396196846;
+            const double _t131 = _t37 - _t128 * 3.0000030000000093;
+            const double _t132 = ((-1.7320525396196846) <= _t131) ? _t131 : (-1.7320525396196846);
+            out[i + j] = _t18 - _t19 * ((_t127 <= _t130) ? ((_t132 <= _t127) ? _t127 : _t132) : _t130);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_o4_offset(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = diamond_o4_offset(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of diamond_o4_shell: out[i] = diamond_o4_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void diamond_o4_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+static inline void diamond_o4_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_cos(_t0);
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = _t1 * _t3;
-        const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_sin(_t5);
-        const double _t7 = _t4 * _t6;
-        const double _t8 = offsetgen_batch_sin(_t0);
-        const double _t9 = offsetgen_batch_sin(_t2);
-        const double _t10 = _t8 * _t9;
-        const double _t11 = _t6 * _t10;
-        const double _t12 = _t1 * _t9;
-        const double _t13 = offsetgen_batch_cos(_t5);
-        const double _t14 = _t12 * _t13;
-        const double _t15 = _t11 + _t14;
-        const double _t16 = _t8 * _t3;
-        const double _t17 = _t16 * _t13;
-        const double _t18 = _t7 + _t15 + _t17;
-        const double _t19 = _t4 * _t13;
-        const double _t20 = _t12 * _t6;
-        const double _t21 = _t16 * _t6;
-        const double _t22 = _t13 * _t10;
-        const double _t23 = _t19 + _t20 - _t21 - _t22;
-        const double _t24 = _t23 * _t23;
-        const double _t25 = _t19 + _t22 - _t21 - _t20;
-        const double _t26 = _t25 * _t25;
-        const double _t27 = _t19 + _t21;
-        const double _t28 = _t27 - _t20 - _t22;
-        const double _t29 = _t28 * _t28;
-        const double _t30 = sqrt(_t24 + _t26 + _t29);
-        const double _t31 = 1.0 / _t30;
-        const double _t32 = _t11 + _t7 - _t14 - _t17;
-        const double _t33 = _t28 * _t32;
-        const double _t34 = _t15 - _t7 - _t17;
-        const double _t35 = _t34 * _t25;
-        const double _t36 = _t18 * _t23;
-        const double _t37 = _t31 * (_t33 + _t35 - _t36);
-        const double _t38 = _t11 + _t17 - _t14 - _t7;
-        const double _t39 = _t38 * _t25;
-        const double _t40 = _t32 * _t23;
-        const double _t41 = _t28 * _t18;
-        const double _t42 = (_t39 + _t40 - _t41) * _t31;
-        const double _t43 = _t28 * _t23;
-        const double _t44 = _t32 * _t18;
-        const double _t45 = _t20 + _t27 + _t22;
-        const double _t46 = _t31 * (_t37 * _t42 + (_t43 + _t43 + _t44 + _t44 - _t25 * _t45 - _t34 * _t38));
-        const double _t47 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t48 = _t47 * 0.33333333333333331;
-        const double _t49 = _t46 * _t48;
-        const double _t50 = _t49 - _t32;
-        const double _t51 = _t48 * _t42;
-        const double _t52 = _t51 + _t28;
-        const double _t53 = _t37 * _t48;
-        const double _t54 = _t53 + _t23;
-        const double _t55 = _t34 * _t34;
-        const double _t56 = _t18 * _t18;
-        const double _t57 = _t32 * _t32;
-        const double _t58 = _t31 * (_t37 * _t37 - (_t55 + _t56 + _t57 - _t24 - _t26 - _t29));
-        const double _t59 = _t48 * _t58;
-        const double _t60 = _t34 * _t23;
-        const double _t61 = _t28 * _t38;
-        const double _t62 = _t25 * _t18;
-        const double _t63 = _t31 * (_t60 + _t61 - _t62);
-        const double _t64 = _t48 * _t63;
-        const double _t65 = _t64 + _t25;
-        const double _t66 = _t25 * _t23;
-        const double _t67 = _t34 * _t18;
-        const double _t68 = (_t66 + (_t67 + _t67 + _t66) - _t28 * _t45 - _t38 * _t32 + _t37 * _t63) * _t31;
-        const double _t69 = _t68 * _t48;
-        const double _t70 = _t34 - _t69;
-        const double _t71 = sqrt(_t54 * _t54 + _t52 * _t52 + _t65 * _t65);
-        const double _t72 = 1.0 / _t71;
-        const double _t73 = (_t50 * _t52 + _t54 * (_t59 + _t18) - _t65 * _t70) * _t72 * _t48 - _t54;
-        const double _t74 = _t38 * _t38;
-        const double _t75 = _t31 * (_t42 * _t42 - (_t74 + _t56 + _t57 - _t24 - _t26 - _t29));
-        const double _t76 = _t48 * _t75;
-        const double _t77 = _t28 * _t25;
-        const double _t78 = _t38 * _t18;
-        const double _t79 = _t31 * (_t34 * _t32 + _t45 * _t23 - _t77 - _t77 - _t78 - _t78 - _t63 * _t42);
-        const double _t80 = _t79 * _t48;
-        const double _t81 = _t38 + _t80;
-        const double _t82 = _t52 - (_t50 * _t54 + _t52 * (_t18 + _t76) - _t65 * _t81) * _t72 * _t48;
-        const double _t83 = _t31 * (_t63 * _t63 - (_t56 + (_t55 + _t74) - _t24 - _t26 - _t29));
-        const double _t84 = _t48 * _t83;
-        const double _t85 = _t65 - (_t65 * (_t18 + _t84) - _t52 * _t81 - _t54 * _t70) * _t72 * _t48;
-        const double _t86 = _t47 * 0.5;
-        const double _t87 = _t86 * _t42;
-        const double _t88 = _t28 + _t87;
-        const double _t89 = _t86 * _t63;
-        const double _t90 = _t89 + _t25;
-        const double _t91 = _t37 * _t86;
-        const double _t92 = _t91 + _t23;
-        const double _t93 = _t47 * 0.25;
-        const double _t94 = _t93 * _t37;
-        const double _t95 = _t94 + _t23;
-        const double _t96 = _t93 * _t58;
-        const double _t97 = _t96 + _t18;
-        const double _t98 = _t93 * _t42;
-        const double _t99 = _t98 + _t28;
-        const double _t100 = _t93 * _t46;
-        const double _t101 = _t32 - _t100;
-        const double _t102 = _t93 * _t68;
-        const double _t103 = _t34 - _t102;
-        const double _t104 = _t93 * _t63;
-        const double _t105 = _t25 + _t104;
-        const double _t106 = sqrt(_t105 * _t105 + (_t95 * _t95 + _t99 * _t99));
-        const double _t107 = 1.0 / _t106;
-        const double _t108 = (_t95 * _t97 - _t99 * _t101 - _t103 * _t105) * _t107;
-        const double _t109 = _t93 * _t108 - _t95;
-        const double _t110 = _t93 * _t79;
-        const double _t111 = _t38 + _t110;
-        const double _t112 = _t93 * _t75;
-        const double _t113 = _t18 + _t112;
-        const double _t114 = (_t105 * _t111 + _t95 * _t101 - _t99 * _t113) * _t107;
-        const double _t115 = _t93 * _t114 + _t99;
-        const double _t116 = _t93 * _t83;
-        const double _t117 = _t116 + _t18;
-        const double _t118 = (_t105 * _t117 - _t103 * _t95 - _t111 * _t99) * _t107;
-        const double _t119 = _t93 * _t118 - _t105;
-        const double _t120 = sqrt(_t109 * _t109 + _t115 * _t115 + _t119 * _t119);
-        const double _t121 = 1.0 / _t120;
-        const double _t122 = _t60 + _t60;
-        const double _t123 = _t62 * 2.0;
-        const double _t124 = _t32 * _t45 * 2.0;
-        const double _t125 = _t93 * (_t31 * (_t61 + (_t61 * 2.0 + _t122 + _t61) - _t123 - _t62 - _t62 - _t124 + _t79 * _t42 * 2.0 - _t63 * _t75));
-        const double _t126 = _t25 + _t125;
-        const double _t127 = _t34 * _t45 * 2.0;
-        const double _t128 = _t41 * 2.0;
-        const double _t129 = _t93 * ((_t42 * _t83 - (_t40 + (_t39 + (_t39 * 2.0 + _t39)) + _t40 - _t41 - _t41 - _t127 - _t128) - _t79 * _t63 * 2.0) * _t31);
-        const double _t130 = _t28 - _t129;
-        const double _t131 = _t34 * _t28;
-        const double _t132 = _t32 * _t25;
-        const double _t133 = _t38 * _t23;
-        const double _t134 = _t45 * _t18;
-        const double _t135 = _t93 * ((_t46 * _t63 + _t68 * _t42 - _t37 * _t79 - (_t131 + (_t132 + (_t133 + (_t133 + _t133) + _t132) + _t132 + _t131 + _t131) + _t134 + _t134 + _t134)) * _t31);
-        const double _t136 = _t45 + _t135;
-        const double _t137 = _t93 * ((_t118 * _t114 - (_t126 * _t99 + (_t111 * _t113 + _t111 * _t117 + _t105 * _t130) - _t103 * _t101 - _t136 * _t95)) * _t107) + _t111;
-        const double _t138 = _t36 + (_t38 * _t45 * 2.0 + _t36) + _t36 * 2.0 - _t33 - _t33 - _t35 - _t35;
-        const double _t139 = _t93 * (_t31 * (_t138 - _t33 * 2.0 + _t46 * _t42 * 2.0 + _t37 * _t75));
-        const double _t140 = _t139 - _t23;
-        const double _t141 = _t93 * (_t31 * (_t40 + (_t40 * 2.0 + (_t39 + _t39)) + _t40 - _t41 - _t41 - _t127 - _t128 - _t42 * _t58 - _t37 * _t46 * 2.0));
-        const double _t142 = _t141 + _t28;
-        const double _t143 = _t93 * ((_t99 * _t140 + _t103 * _t111 + _t136 * _t105 - _t97 * _t101 - _t113 * _t101 - _t142 * _t95 + _t108 * _t114) * _t107) + _t101;
-        const double _t144 = _t93 * (_t31 * (_t75 * _t42 * 3.0 - (_t40 + (_t39 + 3.0 * _t40) + _t39 * 3.0 - _t41 - _t41 * 3.0)));
-        const double _t145 = _t111 * _t111;
-        const double _t146 = _t101 * _t101;
-        const double _t147 = _t93 * (_t121 * (_t119 * _t137 + _t109 * _t143 + (_t93 * ((_t114 * _t114 + (_t105 * _t126 + (_t28 - _t144) * _t99 - _t145 - _t95 * _t140 - _t113 * _t113 - _t146)) * _t107) + _t113) * _t115)) - _t115;
-        const double _t148 = _t93 * (_t31 * (_t37 * _t68 * 2.0 + _t63 * _t58 - (_t61 + (_t61 + _t122) + _t60 * 2.0 - _t123 - _t62 - _t62 - _t124)));
-        const double _t149 = _t25 - _t148;
-        const double _t150 = _t93 * (_t31 * (_t138 - _t35 * 2.0 + _t68 * _t63 * 2.0 + _t37 * _t83));
-        const double _t151 = _t150 - _t23;
-        const double _t152 = _t103 - _t93 * (_t107 * (_t149 * _t95 + _t103 * _t97 + _t103 * _t117 - _t111 * _t101 - _t136 * _t99 - _t151 * _t105 + _t118 * _t108));
-        const double _t153 = _t103 * _t103;
-        const double _t154 = _t93 * (_t31 * (_t62 * 3.0 + _t62 - _t60 - _t61 - _t61 * 3.0 - _t60 * 3.0 + _t63 * _t83 * 3.0));
-        const double _t155 = _t119 + _t93 * (_t121 * (_t109 * _t152 - (_t117 - _t93 * ((_t117 * _t117 + (_t151 * _t95 + _t145) + _t153 - _t130 * _t99 - _t105 * (_t25 - _t154) - _t118 * _t118) * _t107)) * _t119 - _t115 * _t137));
-        const double _t156 = _t93 * (_t31 * (_t36 * 3.0 + _t36 - _t33 - _t35 - _t35 * 3.0 - _t33 * 3.0 + _t37 * _t58 * 3.0));
-        const double _t157 = _t109 - _t93 * (_t121 * (_t143 * _t115 + _t109 * (_t93 * (_t107 * (_t149 * _t105 + _t142 * _t99 - _t97 * _t97 - _t153 - _t146 - _t95 * (_t156 - _t23) + _t108 * _t108)) + _t97) - _t119 * _t152));
-        const double _t158 = -(4.5 * (sqrt(_t73 * _t73 + (_t82 * _t82 + _t85 * _t85)) + _t71) - sqrt(_t88 * _t88 + _t90 * _t90 + _t92 * _t92) * 2.0 - (_t120 + sqrt(_t147 * _t147 + _t155 * _t155 + _t157 * _t157) + _t106) * 2.6666666666666665);
-        const double _t159 = fabs(_t47);
-        const double _t160 = _t30 + _t159 * 1.000001000000003;
-        const double _t161 = (_t160 <= 1.7320525396196846) ? _t160 : 1.7320525396196846;
-        const double _t162 = _t30 - 3.0000030000000093 * _t159;
-        const double _t163 = ((-1.7320525396196846) <= _t162) ? _t162 : (-1.7320525396196846);
-        const double _t164 = _t64 - _t25;
-        const double _t165 = _t51 - _t28;
-        const double _t166 = _t53 - _t23;
-        const double _t167 = sqrt(_t164 * _t164 + (_t165 * _t165 + _t166 * _t166));
-        const double _t168 = _t38 - _t80;
-        const double _t169 = _t34 + _t69;
-        const double _t170 = 1.0 / _t167;
-        const double _t171 = _t164 + _t48 * (((_t18 - _t84) * _t164 - _t168 * _t165 - _t169 * _t166) * _t170);
-        const double _t172 = _t49 + _t32;
-        const double _t173 = _t165 - (_t168 * _t164 + _t172 * _t166 - (_t18 - _t76) * _t165) * _t170 * _t48;
-        const double _t174 = (_t166 * (_t59 - _t18) + _t172 * _t165 + _t169 * _t164) * _t170 * _t48 - _t166;
-        const double _t175 = _t89 - _t25;
-        const double _t176 = _t28 - _t87;
-        const double _t177 = _t91 - _t23;
-        const double _t178 = _t94 - _t23;
-        const double _t179 = _t96 - _t18;
-        const double _t180 = _t98 - _t28;
-        const double _t181 = _t32 + _t100;
-        const double _t182 = _t34 + _t102;
-        const double _t183 = _t25 - _t104;
-        const double _t184 = sqrt(_t183 * _t183 + _t180 * _t180 + _t178 * _t178);
-        const double _t185 = 1.0 / _t184;
-        const double _t186 = (_t178 * _t179 + _t180 * _t181 - _t182 * _t183) * _t185;
-        const double _t187 = _t93 * _t186 - _t178;
-        const double _t188 = _t38 - _t110;
-        const double _t189 = _t116 - _t18;
-        const double _t190 = (_t180 * _t188 + _t182 * _t178 - _t183 * _t189) * _t185;
-        const double _t191 = _t93 * _t190 + _t183;
-        const double _t192 = _t150 + _t23;
-        const double _t193 = _t45 - _t135;
-        const double _t194 = _t25 + _t148;
-        const double _t195 = _t182 + _t93 * (_t185 * (_t192 * _t183 + _t180 * _t193 - _t182 * _t179 - _t182 * _t189 - _t181 * _t188 - _t194 * _t178 + _t186 * _t190));
-        const double _t196 = _t141 - _t28;
-        const double _t197 = _t181 * _t181;
-        const double _t198 = _t182 * _t182;
-        const double _t199 = _t18 - _t112;
-        const double _t200 = (_t183 * _t188 + _t180 * _t199 - _t178 * _t181) * _t185;
-        const double _t201 = _t180 + _t93 * _t200;
-        const double _t202 = _t139 + _t23;
-        const double _t203 = _t93 * ((_t186 * _t200 + (_t180 * _t202 + (_t193 * _t183 + _t182 * _t188) + _t181 * _t179 - _t196 * _t178 - _t199 * _t181)) * _t185) - _t181;
-        const double _t204 = sqrt(_t191 * _t191 + _t201 * _t201 + _t187 * _t187);
-        const double _t205 = 1.0 / _t204;
-        const double _t206 = _t187 - _t93 * ((_t191 * _t195 + ((_t93 * ((_t186 * _t186 + (_t194 * _t183 + _t196 * _t180 - _t179 * _t179 - _t178 * (_t156 + _t23) - _t197 - _t198)) * _t185) + _t179) * _t187 + _t201 * _t203)) * _t205);
-        const double _t207 = _t28 + _t129;
-        const double _t208 = _t188 * _t188;
-        const double _t209 = _t25 - _t125;
-        const double _t210 = _t93 * ((_t189 * _t188 + _t180 * _t209 + _t182 * _t181 - _t199 * _t188 - _t207 * _t183 - _t193 * _t178 + _t200 * _t190) * _t185) - _t188;
-        const double _t211 = _t191 + _t93 * (_t205 * (_t191 * (_t93 * ((_t180 * _t207 + _t208 + _t189 * _t189 + _t178 * _t192 + _t198 - (_t25 + _t154) * _t183 - _t190 * _t190) * _t185) - _t189) - _t187 * _t195 - _t201 * _t210));
-        const double _t212 = _t201 + _t93 * (_t205 * (_t201 * (_t199 - _t93 * ((_t183 * _t209 - _t202 * _t178 - _t180 * (_t28 + _t144) - _t208 - _t199 * _t199 - _t197 + _t200 * _t200) * _t185)) - _t187 * _t203 - _t191 * _t210));
-        const double _t213 = -(4.5 * (_t167 + sqrt(_t171 * _t171 + _t173 * _t173 + _t174 * _t174)) - sqrt(_t175 * _t175 + _t176 * _t176 + _t177 * _t177) * 2.0 - (sqrt(_t206 * _t206 + _t211 * _t211 + _t212 * _t212) + (_t204 + _t184)) * 2.6666666666666665);
-        out[i] = (_t18 + ((_t158 <= _t161) ? ((_t163 <= _t158) ? _t158 : _t163) : _t161) * _t47) * (_t18 - _t47 * ((_t213 <= _t161) ? ((_t163 <= _t213) ? _t213 : _t163) : _t161));
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = 6.2831853071795862 * y[i + j];
+            const double _t3 = offsetgen_batch_cos(_t2);
+            const double _t4 = _t1 * _t3;
+            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t6 = offsetgen_batch_sin(_t5);
+            const double _t7 = _t4 * _t6;
+            const double _t8 = offsetgen_batch_sin(_t0);
+            const double _t9 = offsetgen_batch_sin(_t2);
+            const double _t10 = _t8 * _t9;
+            const double _t11 = _t6 * _t10;
+            const double _t12 = _t1 * _t9;
+            const double _t13 = offsetgen_batch_cos(_t5);
+            const double _t14 = _t12 * _t13;
+            const double _t15 = _t11 + _t14;
+            const double _t16 = _t8 * _t3;
+            const double _t17 = _t16 * _t13;
+            const double _t18 = _t7 + _t15 + _t17;
+            const double _t19 = _t4 * _t13;
+            const double _t20 = _t12 * _t6;
+            const double _t21 = _t16 * _t6;
+            const double _t22 = _t13 * _t10;
+            const double _t23 = _t19 + _t20 - _t21 - _t22;
+            const double _t24 = _t23 * _t23;
+            const double _t25 = _t19 + _t22 - _t21 - _t20;
+            const double _t26 = _t25 * _t25;
+            const double _t27 = _t19 + _t21;
+            const double _t28 = _t27 - _t20 - _t22;
+            const double _t29 = _t28 * _t28;
+            const double _t30 = offsetgen_batch_sqrt(_t24 + _t26 + _t29);
+            const double _t31 = 1.0 / _t30;
+            const double _t32 = _t11 + _t7 - _t14 - _t17;
+            const double _t33 = _t28 * _t32;
+            const double _t34 = _t15 - _t7 - _t17;
+            const double _t35 = _t34 * _t25;
+            const double _t36 = _t18 * _t23;
+            const double _t37 = _t31 * (_t33 + _t35 - _t36);
+            const double _t38 = _t11 + _t17 - _t14 - _t7;
+            const double _t39 = _t38 * _t25;
+            const double _t40 = _t32 * _t23;
+            const double _t41 = _t28 * _t18;
+            const double _t42 = (_t39 + _t40 - _t41) * _t31;
+            const double _t43 = _t28 * _t23;
+            const double _t44 = _t32 * _t18;
+            const double _t45 = _t20 + _t27 + _t22;
+            const double _t46 = _t31 * (_t37 * _t42 + (_t43 + _t43 + _t44 + _t44 - _t25 * _t45 - _t34 * _t38));
+            const double _t47 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t48 = _t47 * 0.33333333333333331;
+            const double _t49 = _t46 * _t48;
+            const double _t50 = _t49 - _t32;
+            const double _t51 = _t48 * _t42;
+            const double _t52 = _t51 + _t28;
+            const double _t53 = _t37 * _t48;
+            const double _t54 = _t53 + _t23;
+            const double _t55 = _t34 * _t34;
+            const double _t56 = _t18 * _t18;
+            const double _t57 = _t32 * _t32;
+            const double _t58 = _t31 * (_t37 * _t37 - (_t55 + _t56 + _t57 - _t24 - _t26 - _t29));
+            const double _t59 = _t48 * _t58;
+            const double _t60 = _t34 * _t23;
+            const double _t61 = _t28 * _t38;
+            const double _t62 = _t25 * _t18;
+            const double _t63 = _t31 * (_t60 + _t61 - _t62);
+            const double _t64 = _t48 * _t63;
+            const double _t65 = _t64 + _t25;
+            const double _t66 = _t25 * _t23;
+            const double _t67 = _t34 * _t18;
+            const double _t68 = (_t66 + (_t67 + _t67 + _t66) - _t28 * _t45 - _t38 * _t32 + _t37 * _t63) * _t31;
+            const double _t69 = _t68 * _t48;
+            const double _t70 = _t34 - _t69;
+            const double _t71 = offsetgen_batch_sqrt(_t54 * _t54 + _t52 * _t52 + _t65 * _t65);
+            const double _t72 = 1.0 / _t71;
+            const double _t73 = (_t50 * _t52 + _t54 * (_t59 + _t18) - _t65 * _t70) * _t72 * _t48 - _t54;
+            const double _t74 = _t38 * _t38;
+            const double _t75 = _t31 * (_t42 * _t42 - (_t74 + _t56 + _t57 - _t24 - _t26 - _t29));
+            const double _t76 = _t48 * _t75;
+            const double _t77 = _t28 * _t25;
+            const double _t78 = _t38 * _t18;
+            const double _t79 = _t31 * (_t34 * _t32 + _t45 * _t23 - _t77 - _t77 - _t78 - _t78 - _t63 * _t42);
+            const double _t80 = _t79 * _t48;
+            const double _t81 = _t38 + _t80;
+            const double _t82 = _t52 - (_t50 * _t54 + _t52 * (_t18 + _t76) - _t65 * _t81) * _t72 * _t48;
+            const double _t83 = _t31 * (_t63 * _t63 - (_t56 + (_t55 + _t74) - _t24 - _t26 - _t29));
+            const double _t84 = _t48 * _t83;
+            const double _t85 = _t65 - (_t65 * (_t18 + _t84) - _t52 * _t81 - _t54 * _t70) * _t72 * _t48;
+            const double _t86 = _t47 * 0.5;
+            const double _t87 = _t86 * _t42;
+            const double _t88 = _t28 + _t87;
+            const double _t89 = _t86 * _t63;
+            const double _t90 = _t89 + _t25;
+            const double _t91 = _t37 * _t86;
+            const double _t92 = _t91 + _t23;
+            const double _t93 = _t47 * 0.25;
+            const double _t94 = _t93 * _t37;
+            const double _t95 = _t94 + _t23;
+            const double _t96 = _t93 * _t58;
+            const double _t97 = _t96 + _t18;
+            const double _t98 = _t93 * _t42;
+            const double _t99 = _t98 + _t28;
+            const double _t100 = _t93 * _t46;
+            const double _t101 = _t32 - _t100;
+            const double _t102 = _t93 * _t68;
+            const double _t103 = _t34 - _t102;
+            const double _t104 = _t93 * _t63;
+            const double _t105 = _t25 + _t104;
+            const double _t106 = offsetgen_batch_sqrt(_t105 * _t105 + (_t95 * _t95 + _t99 * _t99));
+            const double _t107 = 1.0 / _t106;
+            const double _t108 = (_t95 * _t97 - _t99 * _t101 - _t103 * _t105) * _t107;
+            const double _t109 = _t93 * _t108 - _t95;
+            const double _t110 = _t93 * _t79;
+            const double _t111 = _t38 + _t110;
+            const double _t112 = _t93 * _t75;
+            const double _t113 = _t18 + _t112;
+            const double _t114 = (_t105 * _t111 + _t95 * _t101 - _t99 * _t113) * _t107;
+            const double _t115 = _t93 * _t114 + _t99;
+            const double _t116 = _t93 * _t83;
+            const double _t117 = _t116 + _t18;
+            const double _t118 = (_t105 * _t117 - _t103 * _t95 - _t111 * _t99) * _t107;
+            const double _t119 = _t93 * _t118 - _t105;
+            const double _t120 = offsetgen_batch_sqrt(_t109 * _t109 + _t115 * _t115 + _t119 * _t119);
+            const double _t121 = 1.0 / _t120;
+            const double _t122 = _t60 + _t60;
+            const double _t123 = _t62 * 2.0;
+            const double _t124 = _t32 * _t45 * 2.0;
+            const double _t125 = _t93 * (_t31 * (_t61 + (_t61 * 2.0 + _t122 + _t61) - _t123 - _t62 - _t62 - _t124 + _t79 * _t42 * 2.0 - _t63 * _t75));
+            const double _t126 = _t25 + _t125;
+            const double _t127 = _t34 * _t45 * 2.0;
+            const double _t128 = _t41 * 2.0;
+            const double _t129 = _t93 * ((_t42 * _t83 - (_t40 + (_t39 + (_t39 * 2.0 + _t39)) + _t40 - _t41 - _t41 - _t127 - _t128) - _t79 * _t63 * 2.0) * _t31);
+            const double _t130 = _t28 - _t129;
+            const double _t131 = _t34 * _t28;
+            const double _t132 = _t32 * _t25;
+            const double _t133 = _t38 * _t23;
+            const double _t134 = _t45 * _t18;
+            const double _t135 = _t93 * ((_t46 * _t63 + _t68 * _t42 - _t37 * _t79 - (_t131 + (_t132 + (_t133 + (_t133 + _t133) + _t132) + _t132 + _t131 + _t131) + _t134 + _t134 + _t134)) * _t31);
+            const double _t136 = _t45 + _t135;
+            const double _t137 = _t93 * ((_t118 * _t114 - (_t126 * _t99 + (_t111 * _t113 + _t111 * _t117 + _t105 * _t130) - _t103 * _t101 - _t136 * _t95)) * _t107) + _t111;
+            const double _t138 = _t36 + (_t38 * _t45 * 2.0 + _t36) + _t36 * 2.0 - _t33 - _t33 - _t35 - _t35;
+            const double _t139 = _t93 * (_t31 * (_t138 - _t33 * 2.0 + _t46 * _t42 * 2.0 + _t37 * _t75));
+            const double _t140 = _t139 - _t23;
+            const double _t141 = _t93 * (_t31 * (_t40 + (_t40 * 2.0 + (_t39 + _t39)) + _t40 - _t41 - _t41 - _t127 - _t128 - _t42 * _t58 - _t37 * _t46 * 2.0));
+            const double _t142 = _t141 + _t28;
+            const double _t143 = _t93 * ((_t99 * _t140 + _t103 * _t111 + _t136 * _t105 - _t97 * _t101 - _t113 * _t101 - _t142 * _t95 + _t108 * _t114) * _t107) + _t101;
+            const double _t144 = _t93 * (_t31 * (_t75 * _t42 * 3.0 - (_t40 + (_t39 + 3.0 * _t40) + _t39 * 3.0 - _t41 - _t41 * 3.0)));
+            const double _t145 = _t111 * _t111;
+            const double _t146 = _t101 * _t101;
+            const double _t147 = _t93 * (_t121 * (_t119 * _t137 + _t109 * _t143 + (_t93 * ((_t114 * _t114 + (_t105 * _t126 + (_t28 - _t144) * _t99 - _t145 - _t95 * _t140 - _t113 * _t113 - _t146)) * _t107) + _t113) * _t115)) - _t115;
+            const double _t148 = _t93 * (_t31 * (_t37 * _t68 * 2.0 + _t63 * _t58 - (_t61 + (_t61 + _t122) + _t60 * 2.0 - _t123 - _t62 - _t62 - _t124)));
+            const double _t149 = _t25 - _t148;
+            const double _t150 = _t93 * (_t31 * (_t138 - _t35 * 2.0 + _t68 * _t63 * 2.0 + _t37 * _t83));
+            const double _t151 = _t150 - _t23;
+            const double _t152 = _t103 - _t93 * (_t107 * (_t149 * _t95 + _t103 * _t97 + _t103 * _t117 - _t111 * _t101 - _t136 * _t99 - _t151 * _t105 + _t118 * _t108));
+            const double _t153 = _t103 * _t103;
+            const double _t154 = _t93 * (_t31 * (_t62 * 3.0 + _t62 - _t60 - _t61 - _t61 * 3.0 - _t60 * 3.0 + _t63 * _t83 * 3.0));
+            const double _t155 = _t119 + _t93 * (_t121 * (_t109 * _t152 - (_t117 - _t93 * ((_t117 * _t117 + (_t151 * _t95 + _t145) + _t153 - _t130 * _t99 - _t105 * (_t25 - _t154) - _t118 * _t118) * _t107)) * _t119 - _t115 * _t137));
+            const double _t156 = _t93 * (_t31 * (_t36 * 3.0 + _t36 - _t33 - _t35 - _t35 * 3.0 - _t33 * 3.0 + _t37 * _t58 * 3.0));
+            const double _t157 = _t109 - _t93 * (_t121 * (_t143 * _t115 + _t109 * (_t93 * (_t107 * (_t149 * _t105 + _t142 * _t99 - _t97 * _t97 - _t153 - _t146 - _t95 * (_t156 - _t23) + _t108 * _t108)) + _t97) - _t119 * _t152));
+            const double _t158 = -(4.5 * (offsetgen_batch_sqrt(_t73 * _t73 + (_t82 * _t82 + _t85 * _t85)) + _t71) - offsetgen_batch_sqrt(_t88 * _t88 + _t90 * _t90 + _t92 * _t92) * 2.0 - (_t120 + offsetgen_batch_sqrt(_t147 * _t147 + _t155 * _t155 + _t157 * _t157) + _t106) * 2.6666666666666665);
+            const double _t159 = fabs(_t47);
+            const double _t160 = _t30 + _t159 * 1.000001000000003;
+            const double _t161 = (_t160 <= 1.7320525396196846) ? _t160 : 1.7320525396196846;
+            const double _t162 = _t30 - 3.0000030000000093 * _t159;
+            const double _t163 = ((-1.7320525396196846) <= _t162) ? _t162 : (-1.7320525396196846);
+            const double _t164 = _t64 - _t25;
+            const double _t165 = _t51 - _t28;
+            const double _t166 = _t53 - _t23;
+            const double _t167 = offsetgen_batch_sqrt(_t164 * _t164 + (_t165 * _t165 + _t166 * _t166));
+            const double _t168 = _t38 - _t80;
+            const double _t169 = _t34 + _t69;
+            const double _t170 = 1.0 / _t167;
+            const double _t171 = _t164 + _t48 * (((_t18 - _t84) * _t164 - _t168 * _t165 - _t169 * _t166) * _t170);
+            const double _t172 = _t49 + _t32;
+            const double _t173 = _t165 - (_t168 * _t164 + _t172 * _t166 - (_t18 - _t76) * _t165) * _t170 * _t48;
+            const double _t174 = (_t166 * (_t59 - _t18) + _t172 * _t165 + _t169 * _t164) * _t170 * _t48 - _t166;
+            const double _t175 = _t89 - _t25;
+            const double _t176 = _t28 - _t87;
+            const double _t177 = _t91 - _t23;
+            const double _t178 = _t94 - _t23;
+            const double _t179 = _t96 - _t18;
+            const double _t180 = _t98 - _t28;
+            const double _t181 = _t32 + _t100;
+            const double _t182 = _t34 + _t102;
+            const double _t183 = _t25 - _t104;
+            const double _t184 = offsetgen_batch_sqrt(_t183 * _t183 + _t180 * _t180 + _t178 * _t178);
+            const double _t185 = 1.0 / _t184;
+            const double _t186 = (_t178 * _t179 + _t180 * _t181 - _t182 * _t183) * _t185;
+            const double _t187 = _t93 * _t186 - _t178;
+            const double _t188 = _t38 - _t110;
+            const double _t189 = _t116 - _t18;
+            const double _t190 = (_t180 * _t188 + _t182 * _t178 - _t183 * _t189) * _t185;
+            const double _t191 = _t93 * _t190 + _t183;
+            const double _t192 = _t150 + _t23;
+            const double _t193 = _t45 - _t135;
+            const double _t194 = _t25 + _t148;
+            const double _t195 = _t182 + _t93 * (_t185 * (_t192 * _t183 + _t180 * _t193 - _t182 * _t179 - _t182 * _t189 - _t181 * _t188 - _t194 * _t178 + _t186 * _t190));
+            const double _t196 = _t141 - _t28;
+            const double _t197 = _t181 * _t181;
+            const double _t198 = _t182 * _t182;
+            const double _t199 = _t18 - _t112;
+            const double _t200 = (_t183 * _t188 + _t180 * _t199 - _t178 * _t181) * _t185;
+            const double _t201 = _t180 + _t93 * _t200;
+            const double _t202 = _t139 + _t23;
+            const double _t203 = _t93 * ((_t186 * _t200 + (_t180 * _t202 + (_t193 * _t183 + _t182 * _t188) + _t181 * _t179 - _t196 * _t178 - _t199 * _t181)) * _t185) - _t181;
+            const double _t204 = offsetgen_batch_sqrt(_t191 * _t191 + _t201 * _t201 + _t187 * _t187);
+            const double _t205 = 1.0 / _t204;
+            const double _t206 = _t187 - _t93 * ((_t191 * _t195 + ((_t93 * ((_t186 * _t186 + (_t194 * _t183 + _t196 * _t180 - _t179 * _t179 - _t178 * (_t156 + _t23) - _t197 - _t198)) * _t185) + _t179) * _t187 + _t201 * _t203)) * _t205);
+            const double _t207 = _t28 + _t129;
+            const double _t208 = _t188 * _t188;
+            const double _t209 = _t25 - _t125;
+            const double _t210 = _t93 * ((_t189 * _t188 + _t180 * _t209 + _t182 * _t181 - _t199 * _t188 - _t207 * _t183 - _t193 * _t178 + _t200 * _t190) * _t185) - _t188;
+            const double _t211 = _t191 + _t93 * (_t205 * (_t191 * (_t93 * ((_t180 * _t207 + _t208 + _t189 * _t189 + _t178 * _t192 + _t198 - (_t25 + _t154) * _t183 - _t190 * _t190) * _t185) - _t189) - _t187 * _t195 - _t201 * _t210));
+            const double _t212 = _t201 + _t93 * (_t205 * (_t201 * (_t199 - _t93 * ((_t183 * _t209 - _t202 * _t178 - _t180 * (_t28 + _t144) - _t208 - _t199 * _t199 - _t197 + _t200 * _t200) * _t185)) - _t187 * _t203 - _t191 * _t210));
+            const double _t213 = -(4.5 * (_t167 + offsetgen_batch_sqrt(_t171 * _t171 + _t173 * _t173 + _t174 * _t174)) - offsetgen_batch_sqrt(_t175 * _t175 + _t176 * _t176 + _t177 * _t177) * 2.0 - (offsetgen_batch_sqrt(_t206 * _t206 + _t211 * _t211 + _t212 * _t212) + (_t204 + _t184)) * 2.6666666666666665);
+            out[i + j] = (_t18 + ((_t158 <= _t161) ? ((_t163 <= _t158) ? _t158 : _t163) : _t161) * _t47) * (_t18 - _t47 * ((_t213 <= _t161) ? ((_t163 <= _t213) ? _t213 : _t163) : _t161));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = diamond_o4_shell(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = diamond_o4_shell(x[i], y[i], z[i], t[i]);
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
  * Batch form of diamond_o4_offsetf: out[i] = diamond_o4_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void diamond_o4_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+static inline void diamond_o4_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_cosf(_t0);
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = _t1 * _t3;
-        const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_sinf(_t5);
-        const float _t7 = _t4 * _t6;
-        const float _t8 = offsetgen_batch_sinf(_t0);
-        const float _t9 = offsetgen_batch_sinf(_t2);
-        const float _t10 = _t8 * _t9;
-        const float _t11 = _t6 * _t10;
-        const float _t12 = _t1 * _t9;
-        const float _t13 = offsetgen_batch_cosf(_t5);
-        const float _t14 = _t12 * _t13;
-        const float _t15 = _t11 + _t14;
-        const float _t16 = _t8 * _t3;
-        const float _t17 = _t16 * _t13;
-        const float _t18 = _t7 + _t15 + _t17;
-        const float _t19 = 6.28318548f * h[i];
-        const float _t20 = _t4 * _t13;
-        const float _t21 = _t16 * _t6;
-        const float _t22 = _t20 + _t21;
-        const float _t23 = _t12 * _t6;
-        const float _t24 = _t13 * _t10;
-        const float _t25 = _t22 - _t23 - _t24;
-        const float _t26 = _t19 * 0.333333343f;
-        const float _t27 = _t11 + _t17 - _t14 - _t7;
-        const float _t28 = _t20 + _t24 - _t21 - _t23;
-        const float _t29 = _t27 * _t28;
-        const float _t30 = _t11 + _t7 - _t14 - _t17;
-        const float _t31 = _t20 + _t23 - _t21 - _t24;
-        const float _t32 = _t30 * _t31;
-        const float _t33 = _t25 * _t18;
-        const float _t34 = _t31 * _t31;
-        const float _t35 = _t28 * _t28;
-        const float _t36 = _t25 * _t25;
-        const float _t37 = sqrtf(_t34 + _t35 + _t36);
-        const float _t38 = 1.0f / _t37;
-        const float _t39 = (_t29 + _t32 - _t33) * _t38;
-        const float _t40 = _t25 - _t26 * _t39;
-        const float _t41 = _t15 - _t7 - _t17;
-        const float _t42 = _t41 * _t31;
-        const float _t43 = _t25 * _t27;
-        const float _t44 = _t28 * _t18;
-        const float _t45 = _t38 * (_t42 + _t43 - _t44);
-        const float _t46 = _t45 * _t26 - _t28;
-        const float _t47 = _t25 * _t30;
-        const float _t48 = _t41 * _t28;
-        const float _t49 = _t18 * _t31;
-        const float _t50 = _t38 * (_t47 + _t48 - _t49);
-        const float _t51 = _t50 * _t26 - _t31;
-        const float _t52 = sqrtf(_t40 * _t40 + (_t46 * _t46 + _t51 * _t51));
-        const float _t53 = _t28 * _t31;
-        const float _t54 = _t41 * _t18;
-        const float _t55 = _t23 + _t22 + _t24;
-        const float _t56 = (_t53 + (_t54 + _t54 + _t53) - _t25 * _t55 - _t27 * _t30 + _t50 * _t45) * _t38;
-        const float _t57 = _t41 + _t56 * _t26;
-        const float _t58 = _t25 * _t28;
-        const float _t59 = _t27 * _t18;
-        const float _t60 = _t38 * (_t41 * _t30 + _t55 * _t31 - _t58 - _t58 - _t59 - _t59 - _t45 * _t39);
-        const float _t61 = _t60 * _t26 - _t27;
-        const float _t62 = _t18 * _t18;
-        const float _t63 = _t41 * _t41;
-        const float _t64 = _t27 * _t27;
-        const float _t65 = _t38 * (_t45 * _t45 - (_t62 + (_t63 + _t64) - _t34 - _t35 - _t36));
-        const float _t66 = 1.0f / _t52;
-        const float _t67 = _t46 - (_t51 * _t57 + _t40 * _t61 + _t46 * (_t26 * _t65 - _t18)) * _t66 * _t26;
-        const float _t68 = _t30 * _t30;
-        const float _t69 = _t38 * (_t39 * _t39 - (_t64 + _t62 + _t68 - _t34 - _t35 - _t36));
-        const float _t70 = _t25 * _t31;
-        const float _t71 = _t30 * _t18;
-        const float _t72 = _t38 * (_t50 * _t39 + (_t70 + _t70 + _t71 + _t71 - _t28 * _t55 - _t41 * _t27));
-        const float _t73 = _t30 + _t72 * _t26;
-        const float _t74 = ((_t69 * _t26 - _t18) * _t40 + _t46 * _t61 - _t51 * _t73) * _t66 * _t26 - _t40;
-        const float _t75 = _t38 * (_t50 * _t50 - (_t63 + _t62 + _t68 - _t34 - _t35 - _t36));
-        const float _t76 = (_t51 * (_t26 * _t75 - _t18) + _t46 * _t57 - _t73 * _t40) * _t66 * _t26 - _t51;
-        const float _t77 = _t19 * 0.5f;
-        const float _t78 = _t39 * _t77 - _t25;
-        const float _t79 = _t50 * _t77 - _t31;
-        const float _t80 = _t28 - _t45 * _t77;
-        const float _t81 = _t19 * 0.25f;
-        const float _t82 = _t50 * _t81 - _t31;
-        const float _t83 = _t25 - _t39 * _t81;
-        const float _t84 = _t28 - _t45 * _t81;
-        const float _t85 = sqrtf(_t83 * _t83 + (_t82 * _t82 + _t84 * _t84));
-        const float _t86 = 1.0f / _t85;
-        const float _t87 = _t41 + _t56 * _t81;
-        const float _t88 = _t72 * _t81 + _t30;
-        const float _t89 = _t18 - _t75 * _t81;
-        const float _t90 = _t86 * (_t87 * _t84 + _t88 * _t83 + _t82 * _t89);
-        const float _t91 = _t82 + _t90 * _t81;
-        const float _t92 = _t69 * _t81 - _t18;
-        const float _t93 = _t60 * _t81 - _t27;
-        const float _t94 = _t86 * (_t83 * _t92 - _t93 * _t84 - _t82 * _t88);
-        const float _t95 = _t81 * _t94 - _t83;
-        const float _t96 = _t18 - _t81 * _t65;
-        const float _t97 = _t86 * (_t82 * _t87 + _t96 * _t84 + _t83 * _t93);
-        const float _t98 = _t97 * _t81 + _t84;
-        const float _t99 = sqrtf(_t91 * _t91 + (_t95 * _t95 + _t98 * _t98));
-        const float _t100 = _t41 * _t55 * 2.0f;
-        const float _t101 = _t33 * 2.0f;
-        const float _t102 = _t25 + (_t39 * _t65 - (_t32 + (_t29 + (_t29 * 2.0f + _t29)) + _t32 - _t33 - _t33 - _t100 - _t101) - _t60 * _t45 * 2.0f) * _t38 * _t81;
-        const float _t103 = _t41 * _t25;
-        const float _t104 = _t30 * _t28;
-        const float _t105 = _t27 * _t31;
-        const float _t106 = _t55 * _t18;
-        const float _t107 = _t55 - (_t72 * _t45 + _t56 * _t39 - _t50 * _t60 - (_t103 + (_t104 + (_t105 + (_t105 + _t105) + _t104) + _t104 + _t103 + _t103) + _t106 + _t106 + _t106)) * _t38 * _t81;
-        const float _t108 = _t42 + _t42;
-        const float _t109 = _t44 * 2.0f;
-        const float _t110 = _t30 * _t55 * 2.0f;
-        const float _t111 = _t28 - _t38 * (_t43 + (_t43 * 2.0f + _t108 + _t43) - _t109 - _t44 - _t44 - _t110 + _t60 * _t39 * 2.0f - _t45 * _t69) * _t81;
-        const float _t112 = _t93 - (_t102 * _t84 + (_t107 * _t82 + _t83 * _t111 + _t93 * _t92) - _t88 * _t87 - _t96 * _t93 - _t97 * _t94) * _t86 * _t81;
-        const float _t113 = _t49 + (_t27 * _t55 * 2.0f + _t49) + _t49 * 2.0f - _t47 - _t47 - _t48 - _t48;
-        const float _t114 = _t38 * (_t113 - _t47 * 2.0f + _t72 * _t39 * 2.0f + _t50 * _t69) * _t81 + _t31;
-        const float _t115 = _t38 * (_t32 + (_t32 * 2.0f + (_t29 + _t29)) + _t32 - _t33 - _t33 - _t100 - _t101 - _t39 * _t75 - _t50 * _t72 * 2.0f) * _t81 - _t25;
-        const float _t116 = _t88 + _t86 * (_t90 * _t94 - (_t88 * _t92 + _t107 * _t84 - _t83 * _t114 - _t87 * _t93 - _t88 * _t89 - _t115 * _t82)) * _t81;
-        const float _t117 = _t88 * _t88;
-        const float _t118 = _t93 * _t93;
-        const float _t119 = 1.0f / _t99;
-        const float _t120 = _t95 - (_t98 * _t112 + _t91 * _t116 + _t95 * (_t86 * (_t94 * _t94 + ((_t25 + _t38 * (_t69 * _t39 * 3.0f - (_t32 + (_t29 + 3.0f * _t32) + _t29 * 3.0f - _t33 - _t33 * 3.0f)) * _t81) * _t83 + _t84 * _t111 - _t82 * _t114 - _t117 - _t92 * _t92 - _t118)) * _t81 + _t92)) * _t119 * _t81;
-        const float _t121 = _t38 * (_t113 - _t48 * 2.0f + _t56 * _t45 * 2.0f + _t50 * _t65) * _t81 + _t31;
-        const float _t122 = _t38 * (_t50 * _t56 * 2.0f + _t45 * _t75 - (_t43 + (_t43 + _t108) + _t42 * 2.0f - _t109 - _t44 - _t44 - _t110)) * _t81 + _t28;
-        const float _t123 = (_t97 * _t90 - (_t87 * _t89 + _t96 * _t87 + _t88 * _t93 + _t121 * _t84 - _t82 * _t122 - _t107 * _t83)) * _t86 * _t81 - _t87;
-        const float _t124 = _t87 * _t87;
-        const float _t125 = _t91 - _t119 * (_t98 * _t123 + _t95 * _t116 - _t91 * (_t89 - (_t90 * _t90 + (_t122 * _t84 - _t117 - _t124 - _t82 * (_t38 * (_t49 * 3.0f + _t49 - _t47 - _t48 - _t48 * 3.0f - _t47 * 3.0f + _t50 * _t75 * 3.0f) * _t81 + _t31) - _t115 * _t83 - _t89 * _t89)) * _t86 * _t81)) * _t81;
-        const float _t126 = _t98 - (_t91 * _t123 + _t95 * _t112 - _t98 * (_t96 + _t86 * (_t96 * _t96 + _t124 + _t121 * _t82 + _t118 - _t102 * _t83 - (_t38 * (_t44 * 3.0f + _t44 - _t42 - _t43 - _t43 * 3.0f - _t42 * 3.0f + _t45 * _t65 * 3.0f) * _t81 + _t28) * _t84 - _t97 * _t97) * _t81)) * _t119 * _t81;
-        const float _t127 = -(4.5f * (_t52 + sqrtf(_t67 * _t67 + (_t74 * _t74 + _t76 * _t76))) - sqrtf(_t78 * _t78 + _t79 * _t79 + _t80 * _t80) * 2.0f - (_t99 + (_t85 + sqrtf(_t120 * _t120 + (_t125 * _t125 + _t126 * _t126)))) * 2.66666675f);
-        const float _t128 = fabsf(_t19);
-        const float _t129 = _t37 + _t128 * 1.00000095f;
-        const float _t130 = (_t129 <= 1.73205256f) ? _t129 : 1.73205256f;
-        const float _t131 = _t37 - _t128 * 3.0000031f;
-        const float _t132 = ((-1.73205256f) <= _t131) ? _t131 : (-1.73205256f);
-        out[i] = _t18 - _t19 * ((_t127 <= _t130) ? ((_t132 <= _t127) ? _t127 : _t132) : _t130);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = 6.28318548f * y[i + j];
+            const float _t3 = offsetgen_batch_cosf(_t2);
+            const float _t4 = _t1 * _t3;
+            const float _t5 = 6.28318548f * x[i + j];
+            const float _t6 = offsetgen_batch_sinf(_t5);
+            const float _t7 = _t4 * _t6;
+            const float _t8 = offsetgen_batch_sinf(_t0);
+            const float _t9 = offsetgen_batch_sinf(_t2);
+            const float _t10 = _t8 * _t9;
+            const float _t11 = _t6 * _t10;
+            const float _t12 = _t1 * _t9;
+            const float _t13 = offsetgen_batch_cosf(_t5);
+            const float _t14 = _t12 * _t13;
+            const float _t15 = _t11 + _t14;
+            const float _t16 = _t8 * _t3;
+            const float _t17 = _t16 * _t13;
+            const float _t18 = _t7 + _t15 + _t17;
+            const float _t19 = 6.28318548f * h[i + j];
+            const float _t20 = _t4 * _t13;
+            const float _t21 = _t16 * _t6;
+            const float _t22 = _t20 + _t21;
+            const float _t23 = _t12 * _t6;
+            const float _t24 = _t13 * _t10;
+            const float _t25 = _t22 - _t23 - _t24;
+            const float _t26 = _t19 * 0.333333343f;
+            const float _t27 = _t11 + _t17 - _t14 - _t7;
+            const float _t28 = _t20 + _t24 - _t21 - _t23;
+            const float _t29 = _t27 * _t28;
+            const float _t30 = _t11 + _t7 - _t14 - _t17;
+            const float _t31 = _t20 + _t23 - _t21 - _t24;
+            const float _t32 = _t30 * _t31;
+            const float _t33 = _t25 * _t18;
+            const float _t34 = _t31 * _t31;
+            const float _t35 = _t28 * _t28;
+            const float _t36 = _t25 * _t25;
+            const float _t37 = offsetgen_batch_sqrtf(_t34 + _t35 + _t36);
+            const float _t38 = 1.0f / _t37;
+            const float _t39 = (_t29 + _t32 - _t33) * _t38;
+            const float _t40 = _t25 - _t26 * _t39;
+            const float _t41 = _t15 - _t7 - _t17;
+            const float _t42 = _t41 * _t31;
+            const float _t43 = _t25 * _t27;
+            const float _t44 = _t28 * _t18;
+            const float _t45 = _t38 * (_t42 + _t43 - _t44);
+            const float _t46 = _t45 * _t26 - _t28;
+            const float _t47 = _t25 * _t30;
+            const float _t48 = _t41 * _t28;
+            const float _t49 = _t18 * _t31;
+            const float _t50 = _t38 * (_t47 + _t48 - _t49);
+            const float _t51 = _t50 * _t26 - _t31;
+            const float _t52 = offsetgen_batch_sqrtf(_t40 * _t40 + (_t46 * _t46 + _t51 * _t51));
+            const float _t53 = _t28 * _t31;
+            const float _t54 = _t41 * _t18;
+            const float _t55 = _t23 + _t22 + _t24;
+            const float _t56 = (_t53 + (_t54 + _t54 + _t53) - _t25 * _t55 - _t27 * _t30 + _t50 * _t45) * _t38;
+            const float _t57 = _t41 + _t56 * _t26;
+            const float _t58 = _t25 * _t28;
+            const float _t59 = _t27 * _t18;
+            const float _t60 = _t38 * (_t41 * _t30 + _t55 * _t31 - _t58 - _t58 - _t59 - _t59 - _t45 * _t39);
+            const float _t61 = _t60 * _t26 - _t27;
+            const float _t62 = _t18 * _t18;
+            const float _t63 = _t41 * _t41;
+            const float _t64 = _t27 * _t27;
+            const float _t65 = _t38 * (_t45 * _t45 - (_t62 + (_t63 + _t64) - _t34 - _t35 - _t36));
+            const float _t66 = 1.0f / _t52;
+            const float _t67 = _t46 - (_t51 * _t57 + _t40 * _t61 + _t46 * (_t26 * _t65 - _t18)) * _t66 * _t26;
+            const float _t68 = _t30 * _t30;
+            const float _t69 = _t38 * (_t39 * _t39 - (_t64 + _t62 + _t68 - _t34 - _t35 - _t36));
+            const float _t70 = _t25 * _t31;
+            const float _t71 = _t30 * _t18;
+            const float _t72 = _t38 * (_t50 * _t39 + (_t70 + _t70 + _t71 + _t71 - _t28 * _t55 - _t41 * _t27));
+            const float _t73 = _t30 + _t72 * _t26;
+            const float _t74 = ((_t69 * _t26 - _t18) * _t40 + _t46 * _t61 - _t51 * _t73) * _t66 * _t26 - _t40;
+            const float _t75 = _t38 * (_t50 * _t50 - (_t63 + _t62 + _t68 - _t34 - _t35 - _t36));
+            const float _t76 = (_t51 * (_t26 * _t75 - _t18) + _t46 * _t57 - _t73 * _t40) * _t66 * _t26 - _t51;
+            const float _t77 = _t19 * 0.5f;
+            const float _t78 = _t39 * _t77 - _t25;
+            const float _t79 = _t50 * _t77 - _t31;
+            const float _t80 = _t28 - _t45 * _t77;
+            const float _t81 = _t19 * 0.25f;
+            const float _t82 = _t50 * _t81 - _t31;
+            const float _t83 = _t25 - _t39 * _t81;
+            const float _t84 = _t28 - _t45 * _t81;
+            const float _t85 = offsetgen_batch_sqrtf(_t83 * _t83 + (_t82 * _t82 + _t84 * _t84));
+            const float _t86 = 1.0f / _t85;
+            const float _t87 = _t41 + _t56 * _t81;
+            const float _t88 = _t72 * _t81 + _t30;
+            const float _t89 = _t18 - _t75 * _t81;
+            const float _t90 = _t86 * (_t87 * _t84 + _t88 * _t83 + _t82 * _t89);
+            const float _t91 = _t82 + _t90 * _t81;
+            const float _t92 = _t69 * _t81 - _t18;
+            const float _t93 = _t60 * _t81 - _t27;
+            const float _t94 = _t86 * (_t83 * _t92 - _t93 * _t84 - _t82 * _t88);
+            const float _t95 = _t81 * _t94 - _t83;
+            const float _t96 = _t18 - _t81 * _t65;
+            const float _t97 = _t86 * (_t82 * _t87 + _t96 * _t84 + _t83 * _t93);
+            const float _t98 = _t97 * _t81 + _t84;
+            const float _t99 = offsetgen_batch_sqrtf(_t91 * _t91 + (_t95 * _t95 + _t98 * _t98));
+            const float _t100 = _t41 * _t55 * 2.0f;
+            const float _t101 = _t33 * 2.0f;
+            const float _t102 = _t25 + (_t39 * _t65 - (_t32 + (_t29 + (_t29 * 2.0f + _t29)) + _t32 - _t33 - _t33 - _t100 - _t101) - _t60 * _t45 * 2.0f) * _t38 * _t81;
+            const float _t103 = _t41 * _t25;
+            const float _t104 = _t30 * _t28;
+            const float _t105 = _t27 * _t31;
+            const float _t106 = _t55 * _t18;
+            const float _t107 = _t55 - (_t72 * _t45 + _t56 * _t39 - _t50 * _t60 - (_t103 + (_t104 + (_t105 + (_t105 + _t105) + _t104) + _t104 + _t103 + _t103) + _t106 + _t106 + _t106)) * _t38 * _t81;
+            const float _t108 = _t42 + _t42;
+            const float _t109 = _t44 * 2.0f;
+            const float _t110 = _t30 * _t55 * 2.0f;
+            const float _t111 = _t28 - _t38 * (_t43 + (_t43 * 2.0f + _t108 + _t43) - _t109 - _t44 - _t44 - _t110 + _t60 * _t39 * 2.0f - _t45 * _t69) * _t81;
+            const float _t112 = _t93 - (_t102 * _t84 + (_t107 * _t82 + _t83 * _t111 + _t93 * _t92) - _t88 * _t87 - _t96 * _t93 - _t97 * _t94) * _t86 * _t81;
+            const float _t113 = _t49 + (_t27 * _t55 * 2.0f + _t49) + _t49 * 2.0f - _t47 - _t47 - _t48 - _t48;
+            const float _t114 = _t38 * (_t113 - _t47 * 2.0f + _t72 * _t39 * 2.0f + _t50 * _t69) * _t81 + _t31;
+            const float _t115 = _t38 * (_t32 + (_t32 * 2.0f + (_t29 + _t29)) + _t32 - _t33 - _t33 - _t100 - _t101 - _t39 * _t75 - _t50 * _t72 * 2.0f) * _t81 - _t25;
+            const float _t116 = _t88 + _t86 * (_t90 * _t94 - (_t88 * _t92 + _t107 * _t84 - _t83 * _t114 - _t87 * _t93 - _t88 * _t89 - _t115 * _t82)) * _t81;
+            const float _t117 = _t88 * _t88;
+            const float _t118 = _t93 * _t93;
+            const float _t119 = 1.0f / _t99;
+            const float _t120 = _t95 - (_t98 * _t112 + _t91 * _t116 + _t95 * (_t86 * (_t94 * _t94 + ((_t25 + _t38 * (_t69 * _t39 * 3.0f - (_t32 + (_t29 + 3.0f * _t32) + _t29 * 3.0f - _t33 - _t33 * 3.0f)) * _t81) * _t83 + _t84 * _t111 - _t82 * _t114 - _t117 - _t92 * _t92 - _t118)) * _t81 + _t92)) * _t119 * _t81;
+            const float _t121 = _t38 * (_t113 - _t48 * 2.0f + _t56 * _t45 * 2.0f + _t50 * _t65) * _t81 + _t31;
+            const float _t122 = _t38 * (_t50 * _t56 * 2.0f + _t45 * _t75 - (_t43 + (_t43 + _t108) + _t42 * 2.0f - _t109 - _t44 - _t44 - _t110)) * _t81 + _t28;
+            const float _t123 = (_t97 * _t90 - (_t87 * _t89 + _t96 * _t87 + _t88 * _t93 + _t121 * _t84 - _t82 * _t122 - _t107 * _t83)) * _t86 * _t81 - _t87;
+            const float _t124 = _t87 * _t87;
+            const float _t125 = _t91 - _t119 * (_t98 * _t123 + _t95 * _t116 - _t91 * (_t89 - (_t90 * _t90 + (_t122 * _t84 - _t117 - _t124 - _t82 * (_t38 * (_t49 * 3.0f + _t49 - _t47 - _t48 - _t48 * 3.0f - _t47 * 3.0f + _t50 * _t75 * 3.0f) * _t81 + _t31) - _t115 * _t83 - _t89 * _t89)) * _t86 * _t81)) * _t81;
+            const float _t126 = _t98 - (_t91 * _t123 + _t95 * _t112 - _t98 * (_t96 + _t86 * (_t96 * _t96 + _t124 + _t121 * _t82 + _t118 - _t102 * _t83 - (_t38 * (_t44 * 3.0f + _t44 - _t42 - _t43 - _t43 * 3.0f - _t42 * 3.0f + _t45 * _t65 * 3.0f) * _t81 + _t28) * _t84 - _t97 * _t97) * _t81)) * _t119 * _t81;
+            const float _t127 = -(4.5f * (_t52 + offsetgen_batch_sqrtf(_t67 * _t67 + (_t74 * _t74 + _t76 * _t76))) - offsetgen_batch_sqrtf(_t78 * _t78 + _t79 * _t79 + _t80 * _t80) * 2.0f - (_t99 + (_t85 + offsetgen_batch_sqrtf(_t120 * _t120 + (_t125 * _t125 + _t126 * _t126)))) * 2.66666675f);
+            const float _t128 = fabsf(_t19);
+            const float _t129 = _t37 + _t128 * 1.00000095f;
+            const float _t130 = (_t129 <= 1.73205256f) ? _t129 : 1.73205256f;
+            const float _t131 = _t37 - _t128 * 3.0000031f;
+            const float _t132 = ((-1.73205256f) <= _t131) ? _t131 : (-1.73205256f);
+            out[i + j] = _t18 - _t19 * ((_t127 <= _t130) ? ((_t132 <= _t127) ? _t127 : _t132) : _t130);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_o4_offsetf(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = diamond_o4_offsetf(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of diamond_o4_shellf: out[i] = diamond_o4_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void diamond_o4_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+static inline void diamond_o4_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_cosf(_t0);
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = _t1 * _t3;
-        const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_sinf(_t5);
-        const float _t7 = _t4 * _t6;
-        const float _t8 = offsetgen_batch_sinf(_t0);
-        const float _t9 = offsetgen_batch_sinf(_t2);
-        const float _t10 = _t8 * _t9;
-        const float _t11 = _t6 * _t10;
-        const float _t12 = _t1 * _t9;
-        const float _t13 = offsetgen_batch_cosf(_t5);
-        const float _t14 = _t12 * _t13;
-        const float _t15 = _t11 + _t14;
-        const float _t16 = _t8 * _t3;
-        const float _t17 = _t16 * _t13;
-        const float _t18 = _t7 + _t15 + _t17;
-        const float _t19 = _t4 * _t13;
-        const float _t20 = _t12 * _t6;
-        const float _t21 = _t16 * _t6;
-        const float _t22 = _t13 * _t10;
-        const float _t23 = _t19 + _t20 - _t21 - _t22;
-        const float _t24 = _t23 * _t23;
-        const float _t25 = _t19 + _t22 - _t21 - _t20;
-        const float _t26 = _t25 * _t25;
-        const float _t27 = _t19 + _t21;
-        const float _t28 = _t27 - _t20 - _t22;
-        const float _t29 = _t28 * _t28;
-        const float _t30 = sqrtf(_t24 + _t26 + _t29);
-        const float _t31 = 1.0f / _t30;
-        const float _t32 = _t11 + _t7 - _t14 - _t17;
-        const float _t33 = _t28 * _t32;
-        const float _t34 = _t15 - _t7 - _t17;
-        const float _t35 = _t34 * _t25;
-        const float _t36 = _t18 * _t23;
-        const float _t37 = _t31 * (_t33 + _t35 - _t36);
-        const float _t38 = _t11 + _t17 - _t14 - _t7;
-        const float _t39 = _t38 * _t25;
-        const float _t40 = _t32 * _t23;
-        const float _t41 = _t28 * _t18;
-        const float _t42 = (_t39 + _t40 - _t41) * _t31;
-        const float _t43 = _t28 * _t23;
-        const float _t44 = _t32 * _t18;
-        const float _t45 = _t20 + _t27 + _t22;
-        const float _t46 = _t31 * (_t37 * _t42 + (_t43 + _t43 + _t44 + _t44 - _t25 * _t45 - _t34 * _t38));
-        const float _t47 = 6.28318548f * (t[i] * 0.5f);
-        const float _t48 = _t47 * 0.333333343f;
-        const float _t49 = _t46 * _t48;
-        const float _t50 = _t49 - _t32;
-        const float _t51 = _t48 * _t42;
-        const float _t52 = _t51 + _t28;
-        const float _t53 = _t37 * _t48;
-        const float _t54 = _t53 + _t23;
-        const float _t55 = _t34 * _t34;
-        const float _t56 = _t18 * _t18;
-        const float _t57 = _t32 * _t32;
-        const float _t58 = _t31 * (_t37 * _t37 - (_t55 + _t56 + _t57 - _t24 - _t26 - _t29));
-        const float _t59 = _t48 * _t58;
-        const float _t60 = _t34 * _t23;
-        const float _t61 = _t28 * _t38;
-        const float _t62 = _t25 * _t18;
-        const float _t63 = _t31 * (_t60 + _t61 - _t62);
-        const float _t64 = _t48 * _t63;
-        const float _t65 = _t64 + _t25;
-        const float _t66 = _t25 * _t23;
-        const float _t67 = _t34 * _t18;
-        const float _t68 = (_t66 + (_t67 + _t67 + _t66) - _t28 * _t45 - _t38 * _t32 + _t37 * _t63) * _t31;
-        const float _t69 = _t68 * _t48;
-        const float _t70 = _t34 - _t69;
-        const float _t71 = sqrtf(_t54 * _t54 + _t52 * _t52 + _t65 * _t65);
-        const float _t72 = 1.0f / _t71;
-        const float _t73 = (_t50 * _t52 + _t54 * (_t59 + _t18) - _t65 * _t70) * _t72 * _t48 - _t54;
-        const float _t74 = _t38 * _t38;
-        const float _t75 = _t31 * (_t42 * _t42 - (_t74 + _t56 + _t57 - _t24 - _t26 - _t29));
-        const float _t76 = _t48 * _t75;
-        const float _t77 = _t28 * _t25;
-        const float _t78 = _t38 * _t18;
-        const float _t79 = _t31 * (_t34 * _t32 + _t45 * _t23 - _t77 - _t77 - _t78 - _t78 - _t63 * _t42);
-        const float _t80 = _t79 * _t48;
-        const float _t81 = _t38 + _t80;
-        const float _t82 = _t52 - (_t50 * _t54 + _t52 * (_t18 + _t76) - _t65 * _t81) * _t72 * _t48;
-        const float _t83 = _t31 * (_t63 * _t63 - (_t56 + (_t55 + _t74) - _t24 - _t26 - _t29));
-        const float _t84 = _t48 * _t83;
-        const float _t85 = _t65 - (_t65 * (_t18 + _t84) - _t52 * _t81 - _t54 * _t70) * _t72 * _t48;
-        const float _t86 = _t47 * 0.5f;
-        const float _t87 = _t86 * _t42;
-        const float _t88 = _t28 + _t87;
-        const float _t89 = _t86 * _t63;
-        const float _t90 = _t89 + _t25;
-        const float _t91 = _t37 * _t86;
-        const float _t92 = _t91 + _t23;
-        const float _t93 = _t47 * 0.25f;
-        const float _t94 = _t93 * _t37;
-        const float _t95 = _t94 + _t23;
-        const float _t96 = _t93 * _t58;
-        const float _t97 = _t96 + _t18;
-        const float _t98 = _t93 * _t42;
-        const float _t99 = _t98 + _t28;
-        const float _t100 = _t93 * _t46;
-        const float _t101 = _t32 - _t100;
-        const float _t102 = _t93 * _t68;
-        const float _t103 = _t34 - _t102;
-        const float _t104 = _t93 * _t63;
-        const float _t105 = _t25 + _t104;
-        const float _t106 = sqrtf(_t105 * _t105 + (_t95 * _t95 + _t99 * _t99));
-        const float _t107 = 1.0f / _t106;
-        const float _t108 = (_t95 * _t97 - _t99 * _t101 - _t103 * _t105) * _t107;
-        const float _t109 = _t93 * _t108 - _t95;
-        const float _t110 = _t93 * _t79;
-        const float _t111 = _t38 + _t110;
-        const float _t112 = _t93 * _t75;
-        const float _t113 = _t18 + _t112;
-        const float _t114 = (_t105 * _t111 + _t95 * _t101 - _t99 * _t113) * _t107;
-        const float _t115 = _t93 * _t114 + _t99;
-        const float _t116 = _t93 * _t83;
-        const float _t117 = _t116 + _t18;
-        const float _t118 = (_t105 * _t117 - _t103 * _t95 - _t111 * _t99) * _t107;
-        const float _t119 = _t93 * _t118 - _t105;
-        const float _t120 = sqrtf(_t109 * _t109 + _t115 * _t115 + _t119 * _t119);
-        const float _t121 = 1.0f / _t120;
-        const float _t122 = _t60 + _t60;
-        const float _t123 = _t62 * 2.0f;
-        const float _t124 = _t32 * _t45 * 2.0f;
-        const float _t125 = _t93 * (_t31 * (_t61 + (_t61 * 2.0f + _t122 + _t61) - _t123 - _t62 - _t62 - _t124 + _t79 * _t42 * 2.0f - _t63 * _t75));
-        const float _t126 = _t25 + _t125;
-        const float _t127 = _t34 * _t45 * 2.0f;
-        const float _t128 = _t41 * 2.0f;
-        const float _t129 = _t93 * ((_t42 * _t83 - (_t40 + (_t39 + (_t39 * 2.0f + _t39)) + _t40 - _t41 - _t41 - _t127 - _t128) - _t79 * _t63 * 2.0f) * _t31);
-        const float _t130 = _t28 - _t129;
-        const float _t131 = _t34 * _t28;
-        const float _t132 = _t32 * _t25;
-        const float _t133 = _t38 * _t23;
-        const float _t134 = _t45 * _t18;
-        const float _t135 = _t93 * ((_t46 * _t63 + _t68 * _t42 - _t37 * _t79 - (_t131 + (_t132 + (_t133 + (_t133 + _t133) + _t132) + _t132 + _t131 + _t131) + _t134 + _t134 + _t134)) * _t31);
-        const float _t136 = _t45 + _t135;
-        const float _t137 = _t93 * ((_t118 * _t114 - (_t126 * _t99 + (_t111 * _t113 + _t111 * _t117 + _t105 * _t130) - _t103 * _t101 - _t136 * _t95)) * _t107) + _t111;
-        const float _t138 = _t36 + (_t38 * _t45 * 2.0f + _t36) + _t36 * 2.0f - _t33 - _t33 - _t35 - _t35;
-        const float _t139 = _t93 * (_t31 * (_t138 - _t33 * 2.0f + _t46 * _t42 * 2.0f + _t37 * _t75));
-        const float _t140 = _t139 - _t23;
-        const float _t141 = _t93 * (_t31 * (_t40 + (_t40 * 2.0f + (_t39 + _t39)) + _t40 - _t41 - _t41 - _t127 - _t128 - _t42 * _t58 - _t37 * _t46 * 2.0f));
-        const float _t142 = _t141 + _t28;
-        const float _t143 = _t93 * ((_t99 * _t140 + _t103 * _t111 + _t136 * _t105 - _t97 * _t101 - _t113 * _t101 - _t142 * _t95 + _t108 * _t114) * _t107) + _t101;
-        const float _t144 = _t93 * (_t31 * (_t75 * _t42 * 3.0f - (_t40 + (_t39 + 3.0f * _t40) + _t39 * 3.0f - _t41 - _t41 * 3.0f)));
-        const float _t145 = _t111 * _t111;
-        const float _t146 = _t101 * _t101;
-        const float _t147 = _t93 * (_t121 * (_t119 * _t137 + _t109 * _t143 + (_t93 * ((_t114 * _t114 + (_t105 * _t126 + (_t28 - _t144) * _t99 - _t145 - _t95 * _t140 - _t113 * _t113 - _t146)) * _t107) + _t113) * _t115)) - _t115;
-        const float _t148 = _t93 * (_t31 * (_t37 * _t68 * 2.0f + _t63 * _t58 - (_t61 + (_t61 + _t122) + _t60 * 2.0f - _t123 - _t62 - _t62 - _t124)));
-        const float _t149 = _t25 - _t148;
-        const float _t150 = _t93 * (_t31 * (_t138 - _t35 * 2.0f + _t68 * _t63 * 2.0f + _t37 * _t83));
-        const float _t151 = _t150 - _t23;
-        const float _t152 = _t103 - _t93 * (_t107 * (_t149 * _t95 + _t103 * _t97 + _t103 * _t117 - _t111 * _t101 - _t136 * _t99 - _t151 * _t105 + _t118 * _t108));
-        const float _t153 = _t103 * _t103;
-        const float _t154 = _t93 * (_t31 * (_t62 * 3.0f + _t62 - _t60 - _t61 - _t61 * 3.0f - _t60 * 3.0f + _t63 * _t83 * 3.0f));
-        const float _t155 = _t119 + _t93 * (_t121 * (_t109 * _t152 - (_t117 - _t93 * ((_t117 * _t117 + (_t151 * _t95 + _t145) + _t153 - _t130 * _t99 - _t105 * (_t25 - _t154) - _t118 * _t118) * _t107)) * _t119 - _t115 * _t137));
-        const float _t156 = _t93 * (_t31 * (_t36 * 3.0f + _t36 - _t33 - _t35 - _t35 * 3.0f - _t33 * 3.0f + _t37 * _t58 * 3.0f));
-        const float _t157 = _t109 - _t93 * (_t121 * (_t143 * _t115 + _t109 * (_t93 * (_t107 * (_t149 * _t105 + _t142 * _t99 - _t97 * _t97 - _t153 - _t146 - _t95 * (_t156 - _t23) + _t108 * _t108)) + _t97) - _t119 * _t152));
-        const float _t158 = -(4.5f * (sqrtf(_t73 * _t73 + (_t82 * _t82 + _t85 * _t85)) + _t71) - sqrtf(_t88 * _t88 + _t90 * _t90 + _t92 * _t92) * 2.0f - (_t120 + sqrtf(_t147 * _t147 + _t155 * _t155 + _t157 * _t157) + _t106) * 2.66666675f);
-        const float _t159 = fabsf(_t47);
-        const float _t160 = _t30 + _t159 * 1.00000095f;
-        const float _t161 = (_t160 <= 1.73205256f) ? _t160 : 1.73205256f;
-        const float _t162 = _t30 - 3.0000031f * _t159;
-        const float _t163 = ((-1.73205256f) <= _t162) ? _t162 : (-1.73205256f);
-        const float _t164 = _t64 - _t25;
-        const float _t165 = _t51 - _t28;
-        const float _t166 = _t53 - _t23;
-        const float _t167 = sqrtf(_t164 * _t164 + (_t165 * _t165 + _t166 * _t166));
-        const float _t168 = _t38 - _t80;
-        const float _t169 = _t34 + _t69;
-        const float _t170 = 1.0f / _t167;
-        const float _t171 = _t164 + _t48 * (((_t18 - _t84) * _t164 - _t168 * _t165 - _t169 * _t166) * _t170);
-        const float _t172 = _t49 + _t32;
-        const float _t173 = _t165 - (_t168 * _t164 + _t172 * _t166 - (_t18 - _t76) * _t165) * _t170 * _t48;
-        const float _t174 = (_t166 * (_t59 - _t18) + _t172 * _t165 + _t169 * _t164) * _t170 * _t48 - _t166;
-        const float _t175 = _t89 - _t25;
-        const float _t176 = _t28 - _t87;
-        const float _t177 = _t91 - _t23;
-        const float _t178 = _t94 - _t23;
-        const float _t179 = _t96 - _t18;
-        const float _t180 = _t98 - _t28;
-        const float _t181 = _t32 + _t100;
-        const float _t182 = _t34 + _t102;
-        const float _t183 = _t25 - _t104;
-        const float _t184 = sqrtf(_t183 * _t183 + _t180 * _t180 + _t178 * _t178);
-        const float _t185 = 1.0f / _t184;
-        const float _t186 = (_t178 * _t179 + _t180 * _t181 - _t182 * _t183) * _t185;
-        const float _t187 = _t93 * _t186 - _t178;
-        const float _t188 = _t38 - _t110;
-        const float _t189 = _t116 - _t18;
-        const float _t190 = (_t180 * _t188 + _t182 * _t178 - _t183 * _t189) * _t185;
-        const float _t191 = _t93 * _t190 + _t183;
-        const float _t192 = _t150 + _t23;
-        const float _t193 = _t45 - _t135;
-        const float _t194 = _t25 + _t148;
-        const float _t195 = _t182 + _t93 * (_t185 * (_t192 * _t183 + _t180 * _t193 - _t182 * _t179 - _t182 * _t189 - _t181 * _t188 - _t194 * _t178 + _t186 * _t190));
-        const float _t196 = _t141 - _t28;
-        const float _t197 = _t181 * _t181;
-        const float _t198 = _t182 * _t182;
-        const float _t199 = _t18 - _t112;
-        const float _t200 = (_t183 * _t188 + _t180 * _t199 - _t178 * _t181) * _t185;
-        const float _t201 = _t180 + _t93 * _t200;
-        const float _t202 = _t139 + _t23;
-        const float _t203 = _t93 * ((_t186 * _t200 + (_t180 * _t202 + (_t193 * _t183 + _t182 * _t188) + _t181 * _t179 - _t196 * _t178 - _t199 * _t181)) * _t185) - _t181;
-        const float _t204 = sqrtf(_t191 * _t191 + _t201 * _t201 + _t187 * _t187);
-        const float _t205 = 1.0f / _t204;
-        const float _t206 = _t187 - _t93 * ((_t191 * _t195 + ((_t93 * ((_t186 * _t186 + (_t194 * _t183 + _t196 * _t180 - _t179 * _t179 - _t178 * (_t156 + _t23) - _t197 - _t198)) * _t185) + _t179) * _t187 + _t201 * _t203)) * _t205);
-        const float _t207 = _t28 + _t129;
-        const float _t208 = _t188 * _t188;
-        const float _t209 = _t25 - _t125;
-        const float _t210 = _t93 * ((_t189 * _t188 + _t180 * _t209 + _t182 * _t181 - _t199 * _t188 - _t207 * _t183 - _t193 * _t178 + _t200 * _t190) * _t185) - _t188;
-        const float _t211 = _t191 + _t93 * (_t205 * (_t191 * (_t93 * ((_t180 * _t207 + _t208 + _t189 * _t189 + _t178 * _t192 + _t198 - (_t25 + _t154) * _t183 - _t190 * _t190) * _t185) - _t189) - _t187 * _t195 - _t201 * _t210));
-        const float _t212 = _t201 + _t93 * (_t205 * (_t201 * (_t199 - _t93 * ((_t183 * _t209 - _t202 * _t178 - _t180 * (_t28 + _t144) - _t208 - _t199 * _t199 - _t197 + _t200 * _t200) * _t185)) - _t187 * _t203 - _t191 * _t210));
-        const float _t213 = -(4.5f * (_t167 + sqrtf(_t171 * _t171 + _t173 * _t173 + _t174 * _t174)) - sqrtf(_t175 * _t175 + _t176 * _t176 + _t177 * _t177) * 2.0f - (sqrtf(_t206 * _t206 + _t211 * _t211 + _t212 * _t212) + (_t204 + _t184)) * 2.66666675f);
-        out[i] = (_t18 + ((_t158 <= _t161) ? ((_t163 <= _t158) ? _t158 : _t163) : _t161) * _t47) * (_t18 - _t47 * ((_t213 <= _t161) ? ((_t163 <= _t213) ? _t213 : _t163) : _t161));
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = 6.28318548f * y[i + j];
+            const float _t3 = offsetgen_batch_cosf(_t2);
+            const float _t4 = _t1 * _t3;
+            const float _t5 = 6.28318548f * x[i + j];
+            const float _t6 = offsetgen_batch_sinf(_t5);
+            const float _t7 = _t4 * _t6;
+            const float _t8 = offsetgen_batch_sinf(_t0);
+            const float _t9 = offsetgen_batch_sinf(_t2);
+            const float _t10 = _t8 * _t9;
+            const float _t11 = _t6 * _t10;
+            const float _t12 = _t1 * _t9;
+            const float _t13 = offsetgen_batch_cosf(_t5);
+            const float _t14 = _t12 * _t13;
+            const float _t15 = _t11 + _t14;
+            const float _t16 = _t8 * _t3;
+            const float _t17 = _t16 * _t13;
+            const float _t18 = _t7 + _t15 + _t17;
+            const float _t19 = _t4 * _t13;
+            const float _t20 = _t12 * _t6;
+            const float _t21 = _t16 * _t6;
+            const float _t22 = _t13 * _t10;
+            const float _t23 = _t19 + _t20 - _t21 - _t22;
+            const float _t24 = _t23 * _t23;
+            const float _t25 = _t19 + _t22 - _t21 - _t20;
+            const float _t26 = _t25 * _t25;
+            const float _t27 = _t19 + _t21;
+            const float _t28 = _t27 - _t20 - _t22;
+            const float _t29 = _t28 * _t28;
+            const float _t30 = offsetgen_batch_sqrtf(_t24 + _t26 + _t29);
+            const float _t31 = 1.0f / _t30;
+            const float _t32 = _t11 + _t7 - _t14 - _t17;
+            const float _t33 = _t28 * _t32;
+            const float _t34 = _t15 - _t7 - _t17;
+            const float _t35 = _t34 * _t25;
+            const float _t36 = _t18 * _t23;
+            const float _t37 = _t31 * (_t33 + _t35 - _t36);
+            const float _t38 = _t11 + _t17 - _t14 - _t7;
+            const float _t39 = _t38 * _t25;
+            const float _t40 = _t32 * _t23;
+            const float _t41 = _t28 * _t18;
+            const float _t42 = (_t39 + _t40 - _t41) * _t31;
+            const float _t43 = _t28 * _t23;
+            const float _t44 = _t32 * _t18;
+            const float _t45 = _t20 + _t27 + _t22;
+            const float _t46 = _t31 * (_t37 * _t42 + (_t43 + _t43 + _t44 + _t44 - _t25 * _t45 - _t34 * _t38));
+            const float _t47 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t48 = _t47 * 0.333333343f;
+            const float _t49 = _t46 * _t48;
+            const float _t50 = _t49 - _t32;
+            const float _t51 = _t48 * _t42;
+            const float _t52 = _t51 + _t28;
+            const float _t53 = _t37 * _t48;
+            const float _t54 = _t53 + _t23;
+            const float _t55 = _t34 * _t34;
+            const float _t56 = _t18 * _t18;
+            const float _t57 = _t32 * _t32;
+            const float _t58 = _t31 * (_t37 * _t37 - (_t55 + _t56 + _t57 - _t24 - _t26 - _t29));
+            const float _t59 = _t48 * _t58;
+            const float _t60 = _t34 * _t23;
+            const float _t61 = _t28 * _t38;
+            const float _t62 = _t25 * _t18;
+            const float _t63 = _t31 * (_t60 + _t61 - _t62);
+            const float _t64 = _t48 * _t63;
+            const float _t65 = _t64 + _t25;
+            const float _t66 = _t25 * _t23;
+            const float _t67 = _t34 * _t18;
+            const float _t68 = (_t66 + (_t67 + _t67 + _t66) - _t28 * _t45 - _t38 * _t32 + _t37 * _t63) * _t31;
+            const float _t69 = _t68 * _t48;
+            const float _t70 = _t34 - _t69;
+            const float _t71 = offsetgen_batch_sqrtf(_t54 * _t54 + _t52 * _t52 + _t65 * _t65);
+            const float _t72 = 1.0f / _t71;
+            const float _t73 = (_t50 * _t52 + _t54 * (_t59 + _t18) - _t65 * _t70) * _t72 * _t48 - _t54;
+            const float _t74 = _t38 * _t38;
+            const float _t75 = _t31 * (_t42 * _t42 - (_t74 + _t56 + _t57 - _t24 - _t26 - _t29));
+            const float _t76 = _t48 * _t75;
+            const float _t77 = _t28 * _t25;
+            const float _t78 = _t38 * _t18;
+            const float _t79 = _t31 * (_t34 * _t32 + _t45 * _t23 - _t77 - _t77 - _t78 - _t78 - _t63 * _t42);
+            const float _t80 = _t79 * _t48;
+            const float _t81 = _t38 + _t80;
+            const float _t82 = _t52 - (_t50 * _t54 + _t52 * (_t18 + _t76) - _t65 * _t81) * _t72 * _t48;
+            const float _t83 = _t31 * (_t63 * _t63 - (_t56 + (_t55 + _t74) - _t24 - _t26 - _t29));
+            const float _t84 = _t48 * _t83;
+            const float _t85 = _t65 - (_t65 * (_t18 + _t84) - _t52 * _t81 - _t54 * _t70) * _t72 * _t48;
+            const float _t86 = _t47 * 0.5f;
+            const float _t87 = _t86 * _t42;
+            const float _t88 = _t28 + _t87;
+            const float _t89 = _t86 * _t63;
+            const float _t90 = _t89 + _t25;
+            const float _t91 = _t37 * _t86;
+            const float _t92 = _t91 + _t23;
+            const float _t93 = _t47 * 0.25f;
+            const float _t94 = _t93 * _t37;
+            const float _t95 = _t94 + _t23;
+            const float _t96 = _t93 * _t58;
+            const float _t97 = _t96 + _t18;
+            const float _t98 = _t93 * _t42;
+            const float _t99 = _t98 + _t28;
+            const float _t100 = _t93 * _t46;
+            const float _t101 = _t32 - _t100;
+            const float _t102 = _t93 * _t68;
+            const float _t103 = _t34 - _t102;
+            const float _t104 = _t93 * _t63;
+            const float _t105 = _t25 + _t104;
+            const float _t106 = offsetgen_batch_sqrtf(_t105 * _t105 + (_t95 * _t95 + _t99 * _t99));
+            const float _t107 = 1.0f / _t106;
+            const float _t108 = (_t95 * _t97 - _t99 * _t101 - _t103 * _t105) * _t107;
+            const float _t109 = _t93 * _t108 - _t95;
+            const float _t110 = _t93 * _t79;
+            const float _t111 = _t38 + _t110;
+            const float _t112 = _t93 * _t75;
+            const float _t113 = _t18 + _t112;
+            const float _t114 = (_t105 * _t111 + _t95 * _t101 - _t99 * _t113) * _t107;
+            const float _t115 = _t93 * _t114 + _t99;
+            const float _t116 = _t93 * _t83;
+            const float _t117 = _t116 + _t18;
+            const float _t118 = (_t105 * _t117 - _t103 * _t95 - _t111 * _t99) * _t107;
+            const float _t119 = _t93 * _t118 - _t105;
+            const float _t120 = offsetgen_batch_sqrtf(_t109 * _t109 + _t115 * _t115 + _t119 * _t119);
+            const float _t121 = 1.0f / _t120;
+            const float _t122 = _t60 + _t60;
+            const float _t123 = _t62 * 2.0f;
+            const float _t124 = _t32 * _t45 * 2.0f;
+            const float _t125 = _t93 * (_t31 * (_t61 + (_t61 * 2.0f + _t122 + _t61) - _t123 - _t62 - _t62 - _t124 + _t79 * _t42 * 2.0f - _t63 * _t75));
+            const float _t126 = _t25 + _t125;
+            const float _t127 = _t34 * _t45 * 2.0f;
+            const float _t128 = _t41 * 2.0f;
+            const float _t129 = _t93 * ((_t42 * _t83 - (_t40 + (_t39 + (_t39 * 2.0f + _t39)) + _t40 - _t41 - _t41 - _t127 - _t128) - _t79 * _t63 * 2.0f) * _t31);
+            const float _t130 = _t28 - _t129;
+            const float _t131 = _t34 * _t28;
+            const float _t132 = _t32 * _t25;
+            const float _t133 = _t38 * _t23;
+            const float _t134 = _t45 * _t18;
+            const float _t135 = _t93 * ((_t46 * _t63 + _t68 * _t42 - _t37 * _t79 - (_t131 + (_t132 + (_t133 + (_t133 + _t133) + _t132) + _t132 + _t131 + _t131) + _t134 + _t134 + _t134)) * _t31);
+            const float _t136 = _t45 + _t135;
+            const float _t137 = _t93 * ((_t118 * _t114 - (_t126 * _t99 + (_t111 * _t113 + _t111 * _t117 + _t105 * _t130) - _t103 * _t101 - _t136 * _t95)) * _t107) + _t111;
+            const float _t138 = _t36 + (_t38 * _t45 * 2.0f + _t36) + _t36 * 2.0f - _t33 - _t33 - _t35 - _t35;
+            const float _t139 = _t93 * (_t31 * (_t138 - _t33 * 2.0f + _t46 * _t42 * 2.0f + _t37 * _t75));
+            const float _t140 = _t139 - _t23;
+            const float _t141 = _t93 * (_t31 * (_t40 + (_t40 * 2.0f + (_t39 + _t39)) + _t40 - _t41 - _t41 - _t127 - _t128 - _t42 * _t58 - _t37 * _t46 * 2.0f));
+            const float _t142 = _t141 + _t28;
+            const float _t143 = _t93 * ((_t99 * _t140 + _t103 * _t111 + _t136 * _t105 - _t97 * _t101 - _t113 * _t101 - _t142 * _t95 + _t108 * _t114) * _t107) + _t101;
+            const float _t144 = _t93 * (_t31 * (_t75 * _t42 * 3.0f - (_t40 + (_t39 + 3.0f * _t40) + _t39 * 3.0f - _t41 - _t41 * 3.0f)));
+            const float _t145 = _t111 * _t111;
+            const float _t146 = _t101 * _t101;
+            const float _t147 = _t93 * (_t121 * (_t119 * _t137 + _t109 * _t143 + (_t93 * ((_t114 * _t114 + (_t105 * _t126 + (_t28 - _t144) * _t99 - _t145 - _t95 * _t140 - _t113 * _t113 - _t146)) * _t107) + _t113) * _t115)) - _t115;
+            const float _t148 = _t93 * (_t31 * (_t37 * _t68 * 2.0f + _t63 * _t58 - (_t61 + (_t61 + _t122) + _t60 * 2.0f - _t123 - _t62 - _t62 - _t124)));
+            const float _t149 = _t25 - _t148;
+            const float _t150 = _t93 * (_t31 * (_t138 - _t35 * 2.0f + _t68 * _t63 * 2.0f + _t37 * _t83));
+            const float _t151 = _t150 - _t23;
+            const float _t152 = _t103 - _t93 * (_t107 * (_t149 * _t95 + _t103 * _t97 + _t103 * _t117 - _t111 * _t101 - _t136 * _t99 - _t151 * _t105 + _t118 * _t108));
+            const float _t153 = _t103 * _t103;
+            const float _t154 = _t93 * (_t31 * (_t62 * 3.0f + _t62 - _t60 - _t61 - _t61 * 3.0f - _t60 * 3.0f + _t63 * _t83 * 3.0f));
+            const float _t155 = _t119 + _t93 * (_t121 * (_t109 * _t152 - (_t117 - _t93 * ((_t117 * _t117 + (_t151 * _t95 + _t145) + _t153 - _t130 * _t99 - _t105 * (_t25 - _t154) - _t118 * _t118) * _t107)) * _t119 - _t115 * _t137));
+            const float _t156 = _t93 * (_t31 * (_t36 * 3.0f + _t36 - _t33 - _t35 - _t35 * 3.0f - _t33 * 3.0f + _t37 * _t58 * 3.0f));
+            const float _t157 = _t109 - _t93 * (_t121 * (_t143 * _t115 + _t109 * (_t93 * (_t107 * (_t149 * _t105 + _t142 * _t99 - _t97 * _t97 - _t153 - _t146 - _t95 * (_t156 - _t23) + _t108 * _t108)) + _t97) - _t119 * _t152));
+            const float _t158 = -(4.5f * (offsetgen_batch_sqrtf(_t73 * _t73 + (_t82 * _t82 + _t85 * _t85)) + _t71) - offsetgen_batch_sqrtf(_t88 * _t88 + _t90 * _t90 + _t92 * _t92) * 2.0f - (_t120 + offsetgen_batch_sqrtf(_t147 * _t147 + _t155 * _t155 + _t157 * _t157) + _t106) * 2.66666675f);
+            const float _t159 = fabsf(_t47);
+            const float _t160 = _t30 + _t159 * 1.00000095f;
+            const float _t161 = (_t160 <= 1.73205256f) ? _t160 : 1.73205256f;
+            const float _t162 = _t30 - 3.0000031f * _t159;
+            const float _t163 = ((-1.73205256f) <= _t162) ? _t162 : (-1.73205256f);
+            const float _t164 = _t64 - _t25;
+            const float _t165 = _t51 - _t28;
+            const float _t166 = _t53 - _t23;
+            const float _t167 = offsetgen_batch_sqrtf(_t164 * _t164 + (_t165 * _t165 + _t166 * _t166));
+            const float _t168 = _t38 - _t80;
+            const float _t169 = _t34 + _t69;
+            const float _t170 = 1.0f / _t167;
+            const float _t171 = _t164 + _t48 * (((_t18 - _t84) * _t164 - _t168 * _t165 - _t169 * _t166) * _t170);
+            const float _t172 = _t49 + _t32;
+            const float _t173 = _t165 - (_t168 * _t164 + _t172 * _t166 - (_t18 - _t76) * _t165) * _t170 * _t48;
+            const float _t174 = (_t166 * (_t59 - _t18) + _t172 * _t165 + _t169 * _t164) * _t170 * _t48 - _t166;
+            const float _t175 = _t89 - _t25;
+            const float _t176 = _t28 - _t87;
+            const float _t177 = _t91 - _t23;
+            const float _t178 = _t94 - _t23;
+            const float _t179 = _t96 - _t18;
+            const float _t180 = _t98 - _t28;
+            const float _t181 = _t32 + _t100;
+            const float _t182 = _t34 + _t102;
+            const float _t183 = _t25 - _t104;
+            const float _t184 = offsetgen_batch_sqrtf(_t183 * _t183 + _t180 * _t180 + _t178 * _t178);
+            const float _t185 = 1.0f / _t184;
+            const float _t186 = (_t178 * _t179 + _t180 * _t181 - _t182 * _t183) * _t185;
+            const float _t187 = _t93 * _t186 - _t178;
+            const float _t188 = _t38 - _t110;
+            const float _t189 = _t116 - _t18;
+            const float _t190 = (_t180 * _t188 + _t182 * _t178 - _t183 * _t189) * _t185;
+            const float _t191 = _t93 * _t190 + _t183;
+            const float _t192 = _t150 + _t23;
+            const float _t193 = _t45 - _t135;
+            const float _t194 = _t25 + _t148;
+            const float _t195 = _t182 + _t93 * (_t185 * (_t192 * _t183 + _t180 * _t193 - _t182 * _t179 - _t182 * _t189 - _t181 * _t188 - _t194 * _t178 + _t186 * _t190));
+            const float _t196 = _t141 - _t28;
+            const float _t197 = _t181 * _t181;
+            const float _t198 = _t182 * _t182;
+            const float _t199 = _t18 - _t112;
+            const float _t200 = (_t183 * _t188 + _t180 * _t199 - _t178 * _t181) * _t185;
+            const float _t201 = _t180 + _t93 * _t200;
+            const float _t202 = _t139 + _t23;
+            const float _t203 = _t93 * ((_t186 * _t200 + (_t180 * _t202 + (_t193 * _t183 + _t182 * _t188) + _t181 * _t179 - _t196 * _t178 - _t199 * _t181)) * _t185) - _t181;
+            const float _t204 = offsetgen_batch_sqrtf(_t191 * _t191 + _t201 * _t201 + _t187 * _t187);
+            const float _t205 = 1.0f / _t204;
+            const float _t206 = _t187 - _t93 * ((_t191 * _t195 + ((_t93 * ((_t186 * _t186 + (_t194 * _t183 + _t196 * _t180 - _t179 * _t179 - _t178 * (_t156 + _t23) - _t197 - _t198)) * _t185) + _t179) * _t187 + _t201 * _t203)) * _t205);
+            const float _t207 = _t28 + _t129;
+            const float _t208 = _t188 * _t188;
+            const float _t209 = _t25 - _t125;
+            const float _t210 = _t93 * ((_t189 * _t188 + _t180 * _t209 + _t182 * _t181 - _t199 * _t188 - _t207 * _t183 - _t193 * _t178 + _t200 * _t190) * _t185) - _t188;
+            const float _t211 = _t191 + _t93 * (_t205 * (_t191 * (_t93 * ((_t180 * _t207 + _t208 + _t189 * _t189 + _t178 * _t192 + _t198 - (_t25 + _t154) * _t183 - _t190 * _t190) * _t185) - _t189) - _t187 * _t195 - _t201 * _t210));
+            const float _t212 = _t201 + _t93 * (_t205 * (_t201 * (_t199 - _t93 * ((_t183 * _t209 - _t202 * _t178 - _t180 * (_t28 + _t144) - _t208 - _t199 * _t199 - _t197 + _t200 * _t200) * _t185)) - _t187 * _t203 - _t191 * _t210));
+            const float _t213 = -(4.5f * (_t167 + offsetgen_batch_sqrtf(_t171 * _t171 + _t173 * _t173 + _t174 * _t174)) - offsetgen_batch_sqrtf(_t175 * _t175 + _t176 * _t176 + _t177 * _t177) * 2.0f - (offsetgen_batch_sqrtf(_t206 * _t206 + _t211 * _t211 + _t212 * _t212) + (_t204 + _t184)) * 2.66666675f);
+            out[i + j] = (_t18 + ((_t158 <= _t161) ? ((_t163 <= _t158) ? _t158 : _t163) : _t161) * _t47) * (_t18 - _t47 * ((_t213 <= _t161) ? ((_t163 <= _t213) ? _t213 : _t163) : _t161));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = diamond_o4_shellf(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = diamond_o4_shellf(x[i], y[i], z[i], t[i]);
 }
 
 

@@ -47,7 +47,7 @@ total ops after CSE:
     - normal: 232
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":2,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":82,"shell":99,"normal":232}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":2,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":82,"shell":99,"normal":232}} */
 #ifndef OFFSETGEN_GYROID_O2_GLSL
 #define OFFSETGEN_GYROID_O2_GLSL
 

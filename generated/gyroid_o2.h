@@ -48,7 +48,7 @@
  *   shell    99
  *   normal   232
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":2,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":82,"shell":99,"normal":232}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"gyroid_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":2,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":82,"shell":99,"normal":232}} */
 #ifndef OFFSETGEN_GYROID_O2_H
 #define OFFSETGEN_GYROID_O2_H
 
@@ -522,24 +522,33 @@ static inline void gyroid_o2_normalf(float x, float y, float z, float h, float n
  *   void gyroid_o2_shellf_n(n, x, y, z, t, out)
  *
  * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
- * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
- * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
- * selects (blends), and there are no calls left for the vectoriser to stumble over.
- *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
- *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
- *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
- *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * body is the same straight-line program as the scalar function, written so that GCC (12 and later)
+ * and Clang (14 and later) vectorise it with the flags you already use, -O2 or -O3 with or without
+ * -march (SSE2 to AVX-512), and without -fno-math-errno or any other change to floating-point
+ * semantics. What stands in the way of a vectoriser is replaced by plain arithmetic:
+ *   - sin and cos: branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm);
+ *   - sqrt: offsetgen_batch_sqrt, a bit-level seed and Newton steps (within 1 ulp of sqrt, which
+ *     cannot vectorise while it may set errno; see there for subnormal inputs);
+ *   - quadrant and special-case selection: integer masks, so there is no branch to convert;
+ *   - the points go in blocks of a fixed size: a loop with a constant trip count is what GCC
+ *     vectorises at -O2.
+ * -march=native gives wider vectors. Optionally: -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp:
+ * the block loop then carries `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang).
+ * Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
  * The results agree with the scalar functions to about 1e-15 of the field's scale: both use the
- * same sin/cos reduction and polynomials, so only the compiler's vector contraction and ordering of
- * the same operations can differ. Points whose sin/cos arguments lie beyond the
- * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
- * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
- * function's finite value. `out` must not overlap the input arrays. Other elementary functions
- * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
- * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ * same sin/cos reduction and polynomials, sqrt differs by at most 1 ulp, and the compiler may
+ * contract the same operations differently in vector and scalar code. Points whose sin/cos
+ * arguments lie beyond the polynomials' range (1.0e8 in double, 8192.0 in float, in
+ * radians), and non-finite inputs, are recomputed by the scalar function, and so are the last
+ * n % block points, so every finite input still gives the scalar function's finite value. `out` must
+ * not overlap the input arrays. Other elementary functions (exp, tan, ...) in a user expression stay
+ * libm calls; such loops are correct but need a vector math library (e.g. -ffast-math with glibc's
+ * libmvec) to vectorise.
  */
+#include <stdint.h>
+#include <string.h>
 #ifndef OFFSETGEN_SIMD_LOOP
-/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno sqrt calls. */
+/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno libm calls. */
 #if (defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)) && (!defined(__clang__) || defined(__NO_MATH_ERRNO__))
 #define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
 #elif defined(__GNUC__) && !defined(__clang__)
@@ -548,269 +557,384 @@ static inline void gyroid_o2_normalf(float x, float y, float z, float h, float n
 #define OFFSETGEN_SIMD_LOOP
 #endif
 #endif
-#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
- * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
- * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
- * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
- * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
-static inline double offsetgen_batch_sin(double a)
+#ifndef OFFSETGEN_RESTRICT
+/* `out` aliases no input: without this Clang checks overlap at run time and keeps short loops scalar. */
+#ifdef __cplusplus
+#define OFFSETGEN_RESTRICT __restrict
+#else
+#define OFFSETGEN_RESTRICT restrict
+#endif
+#endif
+/* The rounding by adding and subtracting 1.5 * 2^52 needs IEEE evaluation in the declared type. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_BATCH_RINT_
+#endif
+#ifndef OFFSETGEN_BATCH_MATH_DOUBLE_V2
+#define OFFSETGEN_BATCH_MATH_DOUBLE_V2
+/* A double's bits and back (memcpy is how C and C++ both allow it; compilers emit no call). */
+static inline uint64_t offsetgen_batch_bits(double d)
 {
+    uint64_t b;
+    memcpy(&b, &d, sizeof b);
+    return b;
+}
+
+static inline double offsetgen_batch_real(uint64_t b)
+{
+    double d;
+    memcpy(&d, &b, sizeof d);
+    return d;
+}
+
+/* All ones where b > limit, else 0 (both below 2^63): the borrow of limit - b. Integer masks like
+ * this one vectorise at every SIMD level, where a select on a comparison may not. */
+static inline uint64_t offsetgen_batch_above(uint64_t b, uint64_t limit)
+{
+    return UINT64_C(0) - ((limit - b) >> 63);
+}
+
+/* sin (cosine = 0) or cos (cosine = 1) for the batch loops: Cody-Waite reduction by pi/2
+ * (three-part constant, exact for |a| < 1.0e8) and Cephes' minimax polynomials on
+ * [-pi/4, pi/4]; within 1.5 ulp of libm, the same arithmetic as offsetgen_sin/cos. Adding 1.5 * 2^52
+ * rounds a * 2/pi to an integer whose low bits are the quadrant, which picks the polynomial and the
+ * sign through bit masks: straight-line code that vectorises. Beyond the range (or for NaN and
+ * infinite a) the result is NaN, which makes the batch loop fall back to the scalar function. A sin
+ * and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sincos(double a, uint64_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const double q = rint(a * 0.63661977236758138);
+    const double t = q + 6755399441055744.0;
+#else
+    const double t = a * 0.63661977236758138 + 6755399441055744.0;
+    const double q = t - 6755399441055744.0;
+#endif
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : HUGE_VAL - HUGE_VAL;  /* NaN, as a double */
+    const uint64_t quadrant = offsetgen_batch_bits(t) + cosine;     /* cos(a) = sin(a + pi/2) */
+    const uint64_t odd = UINT64_C(0) - (quadrant & 1u);             /* odd quadrants take the other polynomial */
+    const uint64_t value = (offsetgen_batch_bits(c) & odd) | (offsetgen_batch_bits(s) & ~odd);
+    const uint64_t far = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff), UINT64_C(0x4197d78400000000));
+    return offsetgen_batch_real((value ^ ((quadrant & 2u) << 62)) | (far & UINT64_C(0x7ff8000000000000)));
 }
 
-static inline double offsetgen_batch_cos(double a)
+static inline double offsetgen_batch_sin(double a) { return offsetgen_batch_sincos(a, 0u); }
+static inline double offsetgen_batch_cos(double a) { return offsetgen_batch_sincos(a, 1u); }
+
+/* sqrt for the batch loops, without errno: the bit-level seed of 1/sqrt (3.4% off), three Newton
+ * steps (2e-11), then one Newton step on sqrt itself. Equal to sqrt but in about 1e-6 of the cases
+ * where the target has FMA (the residual is then exact), within 1 ulp otherwise (13% off by one).
+ * +-0, +inf and NaN come back as sqrt returns them, negative numbers give NaN. Subnormal inputs
+ * (below 2.2e-308, which have no usable exponent for the seed) come back within 6e-156 of their
+ * square root, not to the last bit: scaling them would cost a select and two multiplications on
+ * every call, about 5% of a loop at -O2. */
+static inline double offsetgen_batch_sqrt(double a)
 {
-    const double q = rint(a * 0.63661977236758138);
-    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
-    const double z = r * r;
-    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
-    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
-    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : HUGE_VAL - HUGE_VAL;
+    const double half = 0.5 * a;
+    const uint64_t special = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff),
+                                                   UINT64_C(0x7fefffffffffffff));  /* inf, NaN */
+    const uint64_t negative = offsetgen_batch_bits((a < 0.0) ? offsetgen_batch_real(UINT64_C(0x7ff8000000000000)) : 0.0);
+    double y = offsetgen_batch_real(UINT64_C(0x5fe6eb50c7b537a9) - (offsetgen_batch_bits(a) >> 1));
+    double s;
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5 * y) * fma(-s, s, a);  /* exact residual: sqrt's rounding */
+#else
+    s = s + (0.5 * y) * (a - s * s);
+#endif
+    return offsetgen_batch_real((offsetgen_batch_bits(s) & ~special) | (offsetgen_batch_bits(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
-#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
-#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
-/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
- * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
-static inline float offsetgen_batch_sinf(float a)
+#endif /* OFFSETGEN_BATCH_MATH_DOUBLE_V2 */
+#ifndef OFFSETGEN_BATCH_MATH_FLOAT_V2
+#define OFFSETGEN_BATCH_MATH_FLOAT_V2
+/* The float twins of the double helpers: 1.5 * 2^23 for the rounding (|a| < 8192.0), Cephes'
+ * sinf/cosf polynomials, two Newton steps for 1/sqrt (subnormal inputs, below 1.2e-38, come back
+ * within 2e-20 of their square root). */
+static inline uint32_t offsetgen_batch_bitsf(float f)
 {
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+static inline float offsetgen_batch_realf(uint32_t b)
+{
+    float f;
+    memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+static inline uint32_t offsetgen_batch_abovef(uint32_t b, uint32_t limit)
+{
+    return 0u - ((limit - b) >> 31);
+}
+
+static inline float offsetgen_batch_sincosf(float a, uint32_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const float q = rintf(a * 0.636619772f);
+    const float t = q + 12582912.0f;
+#else
+    const float t = a * 0.636619772f + 12582912.0f;
+    const float q = t - 12582912.0f;
+#endif
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
-    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+    const uint32_t quadrant = offsetgen_batch_bitsf(t) + cosine;
+    const uint32_t odd = 0u - (quadrant & 1u);
+    const uint32_t value = (offsetgen_batch_bitsf(c) & odd) | (offsetgen_batch_bitsf(s) & ~odd);
+    const uint32_t far = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x46000000u);
+    return offsetgen_batch_realf((value ^ ((quadrant & 2u) << 30)) | (far & 0x7fc00000u));
 }
 
-static inline float offsetgen_batch_cosf(float a)
+static inline float offsetgen_batch_sinf(float a) { return offsetgen_batch_sincosf(a, 0u); }
+static inline float offsetgen_batch_cosf(float a) { return offsetgen_batch_sincosf(a, 1u); }
+
+static inline float offsetgen_batch_sqrtf(float a)
 {
-    const float q = rintf(a * 0.636619772f);
-    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
-    const float z = r * r;
-    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
-    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
-    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+    const float half = 0.5f * a;
+    const uint32_t special = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x7f7fffffu);
+    const uint32_t negative = offsetgen_batch_bitsf((a < 0.0f) ? offsetgen_batch_realf(0x7fc00000u) : 0.0f);
+    float y = offsetgen_batch_realf(0x5f375a86u - (offsetgen_batch_bitsf(a) >> 1));
+    float s;
+    y = y * (1.5f - (half * y) * y);
+    y = y * (1.5f - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5f * y) * fmaf(-s, s, a);
+#else
+    s = s + (0.5f * y) * (a - s * s);
+#endif
+    return offsetgen_batch_realf((offsetgen_batch_bitsf(s) & ~special) | (offsetgen_batch_bitsf(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+#endif /* OFFSETGEN_BATCH_MATH_FLOAT_V2 */
 
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
  * Batch form of gyroid_o2_offset: out[i] = gyroid_o2_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void gyroid_o2_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+static inline void gyroid_o2_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_cos(_t0);
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_sin(_t2);
-        const double _t4 = _t1 * _t3;
-        const double _t5 = offsetgen_batch_sin(_t0);
-        const double _t6 = 6.2831853071795862 * x[i];
-        const double _t7 = offsetgen_batch_cos(_t6);
-        const double _t8 = _t5 * _t7;
-        const double _t9 = _t4 + _t8;
-        const double _t10 = offsetgen_batch_cos(_t2);
-        const double _t11 = offsetgen_batch_sin(_t6);
-        const double _t12 = _t10 * _t11;
-        const double _t13 = 6.2831853071795862 * h[i];
-        const double _t14 = _t1 * _t7 - _t5 * _t3;
-        const double _t15 = _t3 * _t11 - _t1 * _t10;
-        const double _t16 = _t5 * _t11 - _t10 * _t7;
-        const double _t17 = sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
-        const double _t18 = 1.0 / _t17;
-        const double _t19 = _t3 * _t7;
-        const double _t20 = _t1 * _t11;
-        const double _t21 = _t13 * 0.5;
-        const double _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
-        const double _t23 = _t5 * _t10;
-        const double _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
-        const double _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
-        const double _t26 = sqrt(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
-        const double _t27 = fabs(_t13);
-        const double _t28 = _t17 + _t27 * 1.0000010000000001;
-        const double _t29 = (_t28 <= 1.7320525396196846) ? _t28 : 1.7320525396196846;
-        const double _t30 = _t17 - _t27 * 3.0000030000000004;
-        const double _t31 = ((-1.7320525396196846) <= _t30) ? _t30 : (-1.7320525396196846);
-        out[i] = _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = 6.2831853071795862 * y[i + j];
+            const double _t3 = offsetgen_batch_sin(_t2);
+            const double _t4 = _t1 * _t3;
+            const double _t5 = offsetgen_batch_sin(_t0);
+            const double _t6 = 6.2831853071795862 * x[i + j];
+            const double _t7 = offsetgen_batch_cos(_t6);
+            const double _t8 = _t5 * _t7;
+            const double _t9 = _t4 + _t8;
+            const double _t10 = offsetgen_batch_cos(_t2);
+            const double _t11 = offsetgen_batch_sin(_t6);
+            const double _t12 = _t10 * _t11;
+            const double _t13 = 6.2831853071795862 * h[i + j];
+            const double _t14 = _t1 * _t7 - _t5 * _t3;
+            const double _t15 = _t3 * _t11 - _t1 * _t10;
+            const double _t16 = _t5 * _t11 - _t10 * _t7;
+            const double _t17 = offsetgen_batch_sqrt(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
+            const double _t18 = 1.0 / _t17;
+            const double _t19 = _t3 * _t7;
+            const double _t20 = _t1 * _t11;
+            const double _t21 = _t13 * 0.5;
+            const double _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
+            const double _t23 = _t5 * _t10;
+            const double _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
+            const double _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
+            const double _t26 = offsetgen_batch_sqrt(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
+            const double _t27 = fabs(_t13);
+            const double _t28 = _t17 + _t27 * 1.0000010000000001;
+            const double _t29 = (_t28 <= 1.7320525396196846) ? _t28 : 1.7320525396196846;
+            const double _t30 = _t17 - _t27 * 3.0000030000000004;
+            const double _t31 = ((-1.7320525396196846) <= _t30) ? _t30 : (-1.7320525396196846);
+            out[i + j] = _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = gyroid_o2_offset(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = gyroid_o2_offset(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of gyroid_o2_shell: out[i] = gyroid_o2_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void gyroid_o2_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+static inline void gyroid_o2_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t1 = _t0 * 0.5;
-        const double _t2 = z[i] * 6.2831853071795862;
-        const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = 6.2831853071795862 * x[i];
-        const double _t5 = offsetgen_batch_cos(_t4);
-        const double _t6 = offsetgen_batch_sin(_t2);
-        const double _t7 = 6.2831853071795862 * y[i];
-        const double _t8 = offsetgen_batch_sin(_t7);
-        const double _t9 = _t3 * _t5 - _t6 * _t8;
-        const double _t10 = offsetgen_batch_sin(_t4);
-        const double _t11 = offsetgen_batch_cos(_t7);
-        const double _t12 = _t8 * _t10 - _t3 * _t11;
-        const double _t13 = _t6 * _t10 - _t11 * _t5;
-        const double _t14 = sqrt(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
-        const double _t15 = 1.0 / _t14;
-        const double _t16 = _t6 * _t5;
-        const double _t17 = _t11 * _t10;
-        const double _t18 = _t8 * _t5;
-        const double _t19 = _t3 * _t10;
-        const double _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
-        const double _t21 = _t20 - _t13;
-        const double _t22 = _t6 * _t11;
-        const double _t23 = _t3 * _t8;
-        const double _t24 = _t23 + _t16;
-        const double _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
-        const double _t26 = _t9 + _t25;
-        const double _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
-        const double _t28 = _t12 + _t27;
-        const double _t29 = sqrt(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
-        const double _t30 = fabs(_t0);
-        const double _t31 = _t30 * 1.0000010000000001 + _t14;
-        const double _t32 = (_t31 <= 1.7320525396196846) ? _t31 : 1.7320525396196846;
-        const double _t33 = _t14 - 3.0000030000000004 * _t30;
-        const double _t34 = ((-1.7320525396196846) <= _t33) ? _t33 : (-1.7320525396196846);
-        const double _t35 = _t24 + _t17;
-        const double _t36 = _t12 - _t27;
-        const double _t37 = _t20 + _t13;
-        const double _t38 = _t9 - _t25;
-        const double _t39 = sqrt(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
-        out[i] = (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t1 = _t0 * 0.5;
+            const double _t2 = z[i + j] * 6.2831853071795862;
+            const double _t3 = offsetgen_batch_cos(_t2);
+            const double _t4 = 6.2831853071795862 * x[i + j];
+            const double _t5 = offsetgen_batch_cos(_t4);
+            const double _t6 = offsetgen_batch_sin(_t2);
+            const double _t7 = 6.2831853071795862 * y[i + j];
+            const double _t8 = offsetgen_batch_sin(_t7);
+            const double _t9 = _t3 * _t5 - _t6 * _t8;
+            const double _t10 = offsetgen_batch_sin(_t4);
+            const double _t11 = offsetgen_batch_cos(_t7);
+            const double _t12 = _t8 * _t10 - _t3 * _t11;
+            const double _t13 = _t6 * _t10 - _t11 * _t5;
+            const double _t14 = offsetgen_batch_sqrt(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
+            const double _t15 = 1.0 / _t14;
+            const double _t16 = _t6 * _t5;
+            const double _t17 = _t11 * _t10;
+            const double _t18 = _t8 * _t5;
+            const double _t19 = _t3 * _t10;
+            const double _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
+            const double _t21 = _t20 - _t13;
+            const double _t22 = _t6 * _t11;
+            const double _t23 = _t3 * _t8;
+            const double _t24 = _t23 + _t16;
+            const double _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
+            const double _t26 = _t9 + _t25;
+            const double _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
+            const double _t28 = _t12 + _t27;
+            const double _t29 = offsetgen_batch_sqrt(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
+            const double _t30 = fabs(_t0);
+            const double _t31 = _t30 * 1.0000010000000001 + _t14;
+            const double _t32 = (_t31 <= 1.7320525396196846) ? _t31 : 1.7320525396196846;
+            const double _t33 = _t14 - 3.0000030000000004 * _t30;
+            const double _t34 = ((-1.7320525396196846) <= _t33) ? _t33 : (-1.7320525396196846);
+            const double _t35 = _t24 + _t17;
+            const double _t36 = _t12 - _t27;
+            const double _t37 = _t20 + _t13;
+            const double _t38 = _t9 - _t25;
+            const double _t39 = offsetgen_batch_sqrt(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
+            out[i + j] = (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = gyroid_o2_shell(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = gyroid_o2_shell(x[i], y[i], z[i], t[i]);
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
  * Batch form of gyroid_o2_offsetf: out[i] = gyroid_o2_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_cosf(_t0);
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_sinf(_t2);
-        const float _t4 = _t1 * _t3;
-        const float _t5 = offsetgen_batch_sinf(_t0);
-        const float _t6 = 6.28318548f * x[i];
-        const float _t7 = offsetgen_batch_cosf(_t6);
-        const float _t8 = _t5 * _t7;
-        const float _t9 = _t4 + _t8;
-        const float _t10 = offsetgen_batch_cosf(_t2);
-        const float _t11 = offsetgen_batch_sinf(_t6);
-        const float _t12 = _t10 * _t11;
-        const float _t13 = 6.28318548f * h[i];
-        const float _t14 = _t1 * _t7 - _t5 * _t3;
-        const float _t15 = _t3 * _t11 - _t1 * _t10;
-        const float _t16 = _t5 * _t11 - _t10 * _t7;
-        const float _t17 = sqrtf(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
-        const float _t18 = 1.0f / _t17;
-        const float _t19 = _t3 * _t7;
-        const float _t20 = _t1 * _t11;
-        const float _t21 = _t13 * 0.5f;
-        const float _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
-        const float _t23 = _t5 * _t10;
-        const float _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
-        const float _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
-        const float _t26 = sqrtf(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
-        const float _t27 = fabsf(_t13);
-        const float _t28 = _t17 + _t27 * 1.00000095f;
-        const float _t29 = (_t28 <= 1.73205256f) ? _t28 : 1.73205256f;
-        const float _t30 = _t17 - _t27 * 3.0000031f;
-        const float _t31 = ((-1.73205256f) <= _t30) ? _t30 : (-1.73205256f);
-        out[i] = _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = 6.28318548f * y[i + j];
+            const float _t3 = offsetgen_batch_sinf(_t2);
+            const float _t4 = _t1 * _t3;
+            const float _t5 = offsetgen_batch_sinf(_t0);
+            const float _t6 = 6.28318548f * x[i + j];
+            const float _t7 = offsetgen_batch_cosf(_t6);
+            const float _t8 = _t5 * _t7;
+            const float _t9 = _t4 + _t8;
+            const float _t10 = offsetgen_batch_cosf(_t2);
+            const float _t11 = offsetgen_batch_sinf(_t6);
+            const float _t12 = _t10 * _t11;
+            const float _t13 = 6.28318548f * h[i + j];
+            const float _t14 = _t1 * _t7 - _t5 * _t3;
+            const float _t15 = _t3 * _t11 - _t1 * _t10;
+            const float _t16 = _t5 * _t11 - _t10 * _t7;
+            const float _t17 = offsetgen_batch_sqrtf(_t14 * _t14 + _t15 * _t15 + _t16 * _t16);
+            const float _t18 = 1.0f / _t17;
+            const float _t19 = _t3 * _t7;
+            const float _t20 = _t1 * _t11;
+            const float _t21 = _t13 * 0.5f;
+            const float _t22 = _t18 * ((_t8 + _t12) * _t16 + _t15 * _t19 - _t14 * _t20) * _t21 + _t16;
+            const float _t23 = _t5 * _t10;
+            const float _t24 = _t14 - _t18 * (_t23 * _t15 + _t20 * _t16 - _t14 * _t9) * _t21;
+            const float _t25 = _t18 * (_t14 * _t23 - _t19 * _t16 - _t15 * (_t4 + _t12)) * _t21 - _t15;
+            const float _t26 = offsetgen_batch_sqrtf(_t22 * _t22 + _t24 * _t24 + _t25 * _t25);
+            const float _t27 = fabsf(_t13);
+            const float _t28 = _t17 + _t27 * 1.00000095f;
+            const float _t29 = (_t28 <= 1.73205256f) ? _t28 : 1.73205256f;
+            const float _t30 = _t17 - _t27 * 3.0000031f;
+            const float _t31 = ((-1.73205256f) <= _t30) ? _t30 : (-1.73205256f);
+            out[i + j] = _t9 + _t12 - _t13 * ((_t26 <= _t29) ? ((_t31 <= _t26) ? _t26 : _t31) : _t29);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o2_offsetf(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = gyroid_o2_offsetf(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of gyroid_o2_shellf: out[i] = gyroid_o2_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void gyroid_o2_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+static inline void gyroid_o2_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = 6.28318548f * (t[i] * 0.5f);
-        const float _t1 = _t0 * 0.5f;
-        const float _t2 = z[i] * 6.28318548f;
-        const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = 6.28318548f * x[i];
-        const float _t5 = offsetgen_batch_cosf(_t4);
-        const float _t6 = offsetgen_batch_sinf(_t2);
-        const float _t7 = 6.28318548f * y[i];
-        const float _t8 = offsetgen_batch_sinf(_t7);
-        const float _t9 = _t3 * _t5 - _t6 * _t8;
-        const float _t10 = offsetgen_batch_sinf(_t4);
-        const float _t11 = offsetgen_batch_cosf(_t7);
-        const float _t12 = _t8 * _t10 - _t3 * _t11;
-        const float _t13 = _t6 * _t10 - _t11 * _t5;
-        const float _t14 = sqrtf(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
-        const float _t15 = 1.0f / _t14;
-        const float _t16 = _t6 * _t5;
-        const float _t17 = _t11 * _t10;
-        const float _t18 = _t8 * _t5;
-        const float _t19 = _t3 * _t10;
-        const float _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
-        const float _t21 = _t20 - _t13;
-        const float _t22 = _t6 * _t11;
-        const float _t23 = _t3 * _t8;
-        const float _t24 = _t23 + _t16;
-        const float _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
-        const float _t26 = _t9 + _t25;
-        const float _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
-        const float _t28 = _t12 + _t27;
-        const float _t29 = sqrtf(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
-        const float _t30 = fabsf(_t0);
-        const float _t31 = _t30 * 1.00000095f + _t14;
-        const float _t32 = (_t31 <= 1.73205256f) ? _t31 : 1.73205256f;
-        const float _t33 = _t14 - 3.0000031f * _t30;
-        const float _t34 = ((-1.73205256f) <= _t33) ? _t33 : (-1.73205256f);
-        const float _t35 = _t24 + _t17;
-        const float _t36 = _t12 - _t27;
-        const float _t37 = _t20 + _t13;
-        const float _t38 = _t9 - _t25;
-        const float _t39 = sqrtf(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
-        out[i] = (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t1 = _t0 * 0.5f;
+            const float _t2 = z[i + j] * 6.28318548f;
+            const float _t3 = offsetgen_batch_cosf(_t2);
+            const float _t4 = 6.28318548f * x[i + j];
+            const float _t5 = offsetgen_batch_cosf(_t4);
+            const float _t6 = offsetgen_batch_sinf(_t2);
+            const float _t7 = 6.28318548f * y[i + j];
+            const float _t8 = offsetgen_batch_sinf(_t7);
+            const float _t9 = _t3 * _t5 - _t6 * _t8;
+            const float _t10 = offsetgen_batch_sinf(_t4);
+            const float _t11 = offsetgen_batch_cosf(_t7);
+            const float _t12 = _t8 * _t10 - _t3 * _t11;
+            const float _t13 = _t6 * _t10 - _t11 * _t5;
+            const float _t14 = offsetgen_batch_sqrtf(_t9 * _t9 + _t12 * _t12 + _t13 * _t13);
+            const float _t15 = 1.0f / _t14;
+            const float _t16 = _t6 * _t5;
+            const float _t17 = _t11 * _t10;
+            const float _t18 = _t8 * _t5;
+            const float _t19 = _t3 * _t10;
+            const float _t20 = _t1 * (_t15 * ((_t16 + _t17) * _t13 + _t12 * _t18 - _t9 * _t19));
+            const float _t21 = _t20 - _t13;
+            const float _t22 = _t6 * _t11;
+            const float _t23 = _t3 * _t8;
+            const float _t24 = _t23 + _t16;
+            const float _t25 = _t1 * (_t15 * (_t22 * _t12 + _t19 * _t13 - _t9 * _t24));
+            const float _t26 = _t9 + _t25;
+            const float _t27 = _t1 * (_t15 * (_t9 * _t22 - _t18 * _t13 - _t12 * (_t23 + _t17)));
+            const float _t28 = _t12 + _t27;
+            const float _t29 = offsetgen_batch_sqrtf(_t21 * _t21 + _t26 * _t26 + _t28 * _t28);
+            const float _t30 = fabsf(_t0);
+            const float _t31 = _t30 * 1.00000095f + _t14;
+            const float _t32 = (_t31 <= 1.73205256f) ? _t31 : 1.73205256f;
+            const float _t33 = _t14 - 3.0000031f * _t30;
+            const float _t34 = ((-1.73205256f) <= _t33) ? _t33 : (-1.73205256f);
+            const float _t35 = _t24 + _t17;
+            const float _t36 = _t12 - _t27;
+            const float _t37 = _t20 + _t13;
+            const float _t38 = _t9 - _t25;
+            const float _t39 = offsetgen_batch_sqrtf(_t36 * _t36 + _t37 * _t37 + _t38 * _t38);
+            out[i + j] = (((_t29 <= _t32) ? ((_t34 <= _t29) ? _t29 : _t34) : _t32) * _t0 + _t35) * (_t35 - _t0 * ((_t39 <= _t32) ? ((_t34 <= _t39) ? _t39 : _t34) : _t32));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = gyroid_o2_shellf(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = gyroid_o2_shellf(x[i], y[i], z[i], t[i]);
 }
 
 

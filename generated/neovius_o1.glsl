@@ -47,7 +47,7 @@ total ops after CSE:
     - normal: 108
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":1,"graded_order":1,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":45,"shell":48,"normal":108}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"neovius_o1","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":1,"graded_order":1,"graded_wall_order":1,"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":45,"shell":48,"normal":108}} */
 #ifndef OFFSETGEN_NEOVIUS_O1_GLSL
 #define OFFSETGEN_NEOVIUS_O1_GLSL
 

@@ -48,7 +48,7 @@
  *   shell    868
  *   normal   1648
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"neovius_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":4,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":617,"shell":868,"normal":1648}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"neovius_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":4,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":617,"shell":868,"normal":1648}} */
 #ifndef OFFSETGEN_NEOVIUS_O4_H
 #define OFFSETGEN_NEOVIUS_O4_H
 
@@ -1566,24 +1566,33 @@ static inline void neovius_o4_normalf(float x, float y, float z, float h, float 
  *   void neovius_o4_shellf_n(n, x, y, z, t, out)
  *
  * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
- * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
- * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
- * selects (blends), and there are no calls left for the vectoriser to stumble over.
- *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
- *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
- *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
- *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * body is the same straight-line program as the scalar function, written so that GCC (12 and later)
+ * and Clang (14 and later) vectorise it with the flags you already use, -O2 or -O3 with or without
+ * -march (SSE2 to AVX-512), and without -fno-math-errno or any other change to floating-point
+ * semantics. What stands in the way of a vectoriser is replaced by plain arithmetic:
+ *   - sin and cos: branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm);
+ *   - sqrt: offsetgen_batch_sqrt, a bit-level seed and Newton steps (within 1 ulp of sqrt, which
+ *     cannot vectorise while it may set errno; see there for subnormal inputs);
+ *   - quadrant and special-case selection: integer masks, so there is no branch to convert;
+ *   - the points go in blocks of a fixed size: a loop with a constant trip count is what GCC
+ *     vectorises at -O2.
+ * -march=native gives wider vectors. Optionally: -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp:
+ * the block loop then carries `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang).
+ * Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
  * The results agree with the scalar functions to about 1e-15 of the field's scale: both use the
- * same sin/cos reduction and polynomials, so only the compiler's vector contraction and ordering of
- * the same operations can differ. Points whose sin/cos arguments lie beyond the
- * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
- * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
- * function's finite value. `out` must not overlap the input arrays. Other elementary functions
- * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
- * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ * same sin/cos reduction and polynomials, sqrt differs by at most 1 ulp, and the compiler may
+ * contract the same operations differently in vector and scalar code. Points whose sin/cos
+ * arguments lie beyond the polynomials' range (1.0e8 in double, 8192.0 in float, in
+ * radians), and non-finite inputs, are recomputed by the scalar function, and so are the last
+ * n % block points, so every finite input still gives the scalar function's finite value. `out` must
+ * not overlap the input arrays. Other elementary functions (exp, tan, ...) in a user expression stay
+ * libm calls; such loops are correct but need a vector math library (e.g. -ffast-math with glibc's
+ * libmvec) to vectorise.
  */
+#include <stdint.h>
+#include <string.h>
 #ifndef OFFSETGEN_SIMD_LOOP
-/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno sqrt calls. */
+/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno libm calls. */
 #if (defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)) && (!defined(__clang__) || defined(__NO_MATH_ERRNO__))
 #define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
 #elif defined(__GNUC__) && !defined(__clang__)
@@ -1592,837 +1601,952 @@ static inline void neovius_o4_normalf(float x, float y, float z, float h, float 
 #define OFFSETGEN_SIMD_LOOP
 #endif
 #endif
-#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
- * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
- * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
- * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
- * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
-static inline double offsetgen_batch_sin(double a)
+#ifndef OFFSETGEN_RESTRICT
+/* `out` aliases no input: without this Clang checks overlap at run time and keeps short loops scalar. */
+#ifdef __cplusplus
+#define OFFSETGEN_RESTRICT __restrict
+#else
+#define OFFSETGEN_RESTRICT restrict
+#endif
+#endif
+/* The rounding by adding and subtracting 1.5 * 2^52 needs IEEE evaluation in the declared type. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_BATCH_RINT_
+#endif
+#ifndef OFFSETGEN_BATCH_MATH_DOUBLE_V2
+#define OFFSETGEN_BATCH_MATH_DOUBLE_V2
+/* A double's bits and back (memcpy is how C and C++ both allow it; compilers emit no call). */
+static inline uint64_t offsetgen_batch_bits(double d)
 {
+    uint64_t b;
+    memcpy(&b, &d, sizeof b);
+    return b;
+}
+
+static inline double offsetgen_batch_real(uint64_t b)
+{
+    double d;
+    memcpy(&d, &b, sizeof d);
+    return d;
+}
+
+/* All ones where b > limit, else 0 (both below 2^63): the borrow of limit - b. Integer masks like
+ * this one vectorise at every SIMD level, where a select on a comparison may not. */
+static inline uint64_t offsetgen_batch_above(uint64_t b, uint64_t limit)
+{
+    return UINT64_C(0) - ((limit - b) >> 63);
+}
+
+/* sin (cosine = 0) or cos (cosine = 1) for the batch loops: Cody-Waite reduction by pi/2
+ * (three-part constant, exact for |a| < 1.0e8) and Cephes' minimax polynomials on
+ * [-pi/4, pi/4]; within 1.5 ulp of libm, the same arithmetic as offsetgen_sin/cos. Adding 1.5 * 2^52
+ * rounds a * 2/pi to an integer whose low bits are the quadrant, which picks the polynomial and the
+ * sign through bit masks: straight-line code that vectorises. Beyond the range (or for NaN and
+ * infinite a) the result is NaN, which makes the batch loop fall back to the scalar function. A sin
+ * and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sincos(double a, uint64_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const double q = rint(a * 0.63661977236758138);
+    const double t = q + 6755399441055744.0;
+#else
+    const double t = a * 0.63661977236758138 + 6755399441055744.0;
+    const double q = t - 6755399441055744.0;
+#endif
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : HUGE_VAL - HUGE_VAL;  /* NaN, as a double */
+    const uint64_t quadrant = offsetgen_batch_bits(t) + cosine;     /* cos(a) = sin(a + pi/2) */
+    const uint64_t odd = UINT64_C(0) - (quadrant & 1u);             /* odd quadrants take the other polynomial */
+    const uint64_t value = (offsetgen_batch_bits(c) & odd) | (offsetgen_batch_bits(s) & ~odd);
+    const uint64_t far = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff), UINT64_C(0x4197d78400000000));
+    return offsetgen_batch_real((value ^ ((quadrant & 2u) << 62)) | (far & UINT64_C(0x7ff8000000000000)));
 }
 
-static inline double offsetgen_batch_cos(double a)
+static inline double offsetgen_batch_sin(double a) { return offsetgen_batch_sincos(a, 0u); }
+static inline double offsetgen_batch_cos(double a) { return offsetgen_batch_sincos(a, 1u); }
+
+/* sqrt for the batch loops, without errno: the bit-level seed of 1/sqrt (3.4% off), three Newton
+ * steps (2e-11), then one Newton step on sqrt itself. Equal to sqrt but in about 1e-6 of the cases
+ * where the target has FMA (the residual is then exact), within 1 ulp otherwise (13% off by one).
+ * +-0, +inf and NaN come back as sqrt returns them, negative numbers give NaN. Subnormal inputs
+ * (below 2.2e-308, which have no usable exponent for the seed) come back within 6e-156 of their
+ * square root, not to the last bit: scaling them would cost a select and two multiplications on
+ * every call, about 5% of a loop at -O2. */
+static inline double offsetgen_batch_sqrt(double a)
 {
-    const double q = rint(a * 0.63661977236758138);
-    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
-    const double z = r * r;
-    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
-    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
-    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : HUGE_VAL - HUGE_VAL;
+    const double half = 0.5 * a;
+    const uint64_t special = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff),
+                                                   UINT64_C(0x7fefffffffffffff));  /* inf, NaN */
+    const uint64_t negative = offsetgen_batch_bits((a < 0.0) ? offsetgen_batch_real(UINT64_C(0x7ff8000000000000)) : 0.0);
+    double y = offsetgen_batch_real(UINT64_C(0x5fe6eb50c7b537a9) - (offsetgen_batch_bits(a) >> 1));
+    double s;
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5 * y) * fma(-s, s, a);  /* exact residual: sqrt's rounding */
+#else
+    s = s + (0.5 * y) * (a - s * s);
+#endif
+    return offsetgen_batch_real((offsetgen_batch_bits(s) & ~special) | (offsetgen_batch_bits(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
-#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
-#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
-/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
- * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
-static inline float offsetgen_batch_sinf(float a)
+#endif /* OFFSETGEN_BATCH_MATH_DOUBLE_V2 */
+#ifndef OFFSETGEN_BATCH_MATH_FLOAT_V2
+#define OFFSETGEN_BATCH_MATH_FLOAT_V2
+/* The float twins of the double helpers: 1.5 * 2^23 for the rounding (|a| < 8192.0), Cephes'
+ * sinf/cosf polynomials, two Newton steps for 1/sqrt (subnormal inputs, below 1.2e-38, come back
+ * within 2e-20 of their square root). */
+static inline uint32_t offsetgen_batch_bitsf(float f)
 {
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+static inline float offsetgen_batch_realf(uint32_t b)
+{
+    float f;
+    memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+static inline uint32_t offsetgen_batch_abovef(uint32_t b, uint32_t limit)
+{
+    return 0u - ((limit - b) >> 31);
+}
+
+static inline float offsetgen_batch_sincosf(float a, uint32_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const float q = rintf(a * 0.636619772f);
+    const float t = q + 12582912.0f;
+#else
+    const float t = a * 0.636619772f + 12582912.0f;
+    const float q = t - 12582912.0f;
+#endif
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
-    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+    const uint32_t quadrant = offsetgen_batch_bitsf(t) + cosine;
+    const uint32_t odd = 0u - (quadrant & 1u);
+    const uint32_t value = (offsetgen_batch_bitsf(c) & odd) | (offsetgen_batch_bitsf(s) & ~odd);
+    const uint32_t far = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x46000000u);
+    return offsetgen_batch_realf((value ^ ((quadrant & 2u) << 30)) | (far & 0x7fc00000u));
 }
 
-static inline float offsetgen_batch_cosf(float a)
+static inline float offsetgen_batch_sinf(float a) { return offsetgen_batch_sincosf(a, 0u); }
+static inline float offsetgen_batch_cosf(float a) { return offsetgen_batch_sincosf(a, 1u); }
+
+static inline float offsetgen_batch_sqrtf(float a)
 {
-    const float q = rintf(a * 0.636619772f);
-    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
-    const float z = r * r;
-    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
-    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
-    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+    const float half = 0.5f * a;
+    const uint32_t special = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x7f7fffffu);
+    const uint32_t negative = offsetgen_batch_bitsf((a < 0.0f) ? offsetgen_batch_realf(0x7fc00000u) : 0.0f);
+    float y = offsetgen_batch_realf(0x5f375a86u - (offsetgen_batch_bitsf(a) >> 1));
+    float s;
+    y = y * (1.5f - (half * y) * y);
+    y = y * (1.5f - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5f * y) * fmaf(-s, s, a);
+#else
+    s = s + (0.5f * y) * (a - s * s);
+#endif
+    return offsetgen_batch_realf((offsetgen_batch_bitsf(s) & ~special) | (offsetgen_batch_bitsf(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+#endif /* OFFSETGEN_BATCH_MATH_FLOAT_V2 */
 
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
  * Batch form of neovius_o4_offset: out[i] = neovius_o4_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void neovius_o4_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+static inline void neovius_o4_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_cos(_t0);
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = _t1 * _t3;
-        const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_cos(_t5);
-        const double _t7 = _t4 * _t6 * 4.0;
-        const double _t8 = _t7 + 3.0 * _t6;
-        const double _t9 = _t1 * 3.0;
-        const double _t10 = _t3 * 3.0;
-        const double _t11 = 6.2831853071795862 * h[i];
-        const double _t12 = offsetgen_batch_sin(_t0);
-        const double _t13 = _t12 * _t3;
-        const double _t14 = 4.0 * (_t13 * _t6);
-        const double _t15 = _t12 * 3.0 + _t14;
-        const double _t16 = offsetgen_batch_sin(_t2);
-        const double _t17 = _t1 * _t16;
-        const double _t18 = 4.0 * (_t17 * _t6);
-        const double _t19 = _t18 + _t16 * 3.0;
-        const double _t20 = _t19 * _t19;
-        const double _t21 = _t15 * _t15;
-        const double _t22 = offsetgen_batch_sin(_t5);
-        const double _t23 = 4.0 * (_t4 * _t22);
-        const double _t24 = 3.0 * _t22 + _t23;
-        const double _t25 = _t24 * _t24;
-        const double _t26 = sqrt(_t20 + _t21 + _t25);
-        const double _t27 = 1.0 / _t26;
-        const double _t28 = _t12 * _t16;
-        const double _t29 = 4.0 * (_t6 * _t28);
-        const double _t30 = _t19 * _t29;
-        const double _t31 = 4.0 * (_t13 * _t22);
-        const double _t32 = _t31 * _t24;
-        const double _t33 = _t7 + _t9;
-        const double _t34 = _t15 * _t33;
-        const double _t35 = _t27 * (_t30 + _t32 - _t34);
-        const double _t36 = _t11 * 0.33333333333333331;
-        const double _t37 = _t15 - _t35 * _t36;
-        const double _t38 = 4.0 * (_t17 * _t22);
-        const double _t39 = _t38 * _t19;
-        const double _t40 = _t15 * _t31;
-        const double _t41 = _t39 + _t40;
-        const double _t42 = _t8 * _t24;
-        const double _t43 = (_t41 - _t42) * _t27;
-        const double _t44 = _t43 * _t36 - _t24;
-        const double _t45 = _t15 * _t29;
-        const double _t46 = _t38 * _t24;
-        const double _t47 = _t45 + _t46;
-        const double _t48 = _t7 + _t10;
-        const double _t49 = _t19 * _t48;
-        const double _t50 = _t27 * (_t47 - _t49);
-        const double _t51 = _t19 - _t50 * _t36;
-        const double _t52 = sqrt(_t37 * _t37 + (_t44 * _t44 + _t51 * _t51));
-        const double _t53 = 1.0 / _t52;
-        const double _t54 = _t22 * _t28 * 4.0;
-        const double _t55 = (_t43 * _t35 - (_t19 * _t54 + _t38 * _t29 - _t24 * _t14 - _t31 * _t33 - _t31 * _t8 - _t15 * _t23)) * _t27;
-        const double _t56 = _t31 + _t55 * _t36;
-        const double _t57 = (_t43 * _t50 + (_t18 * _t24 + _t19 * _t23 + _t38 * _t8 + _t38 * _t48 - _t31 * _t29 - _t15 * _t54)) * _t27;
-        const double _t58 = _t38 + _t57 * _t36;
-        const double _t59 = _t19 * _t18;
-        const double _t60 = _t15 * _t14;
-        const double _t61 = _t38 * _t38;
-        const double _t62 = _t31 * _t31;
-        const double _t63 = (_t43 * _t43 + (_t59 + _t60 + _t25 - _t61 - _t62 - _t8 * _t8)) * _t27;
-        const double _t64 = _t53 * (_t56 * _t37 + _t51 * _t58 - (_t63 * _t36 - _t8) * _t44) * _t36 + _t44;
-        const double _t65 = _t29 * _t29;
-        const double _t66 = _t23 * _t24;
-        const double _t67 = (_t50 * _t50 - (_t65 + (_t48 * _t48 + _t61) - _t20 - _t60 - _t66)) * _t27;
-        const double _t68 = _t27 * (_t35 * _t50 + (_t29 * _t33 + (_t19 * _t14 + _t15 * _t18) + _t48 * _t29 - _t38 * _t31 - _t54 * _t24));
-        const double _t69 = _t29 + _t36 * _t68;
-        const double _t70 = _t51 + ((_t48 - _t67 * _t36) * _t51 + _t58 * _t44 - _t37 * _t69) * _t53 * _t36;
-        const double _t71 = _t27 * (_t66 + (_t59 + _t21) - _t65 - _t62 - _t33 * _t33 + _t35 * _t35);
-        const double _t72 = _t37 - _t53 * (_t37 * (_t36 * _t71 - _t33) + _t51 * _t69 - _t56 * _t44) * _t36;
-        const double _t73 = _t11 * 0.25;
-        const double _t74 = _t50 * _t73 - _t19;
-        const double _t75 = _t15 - _t35 * _t73;
-        const double _t76 = _t43 * _t73 - _t24;
-        const double _t77 = sqrt(_t74 * _t74 + _t75 * _t75 + _t76 * _t76);
-        const double _t78 = _t38 + _t57 * _t73;
-        const double _t79 = _t67 * _t73 - _t48;
-        const double _t80 = _t68 * _t73 + _t29;
-        const double _t81 = 1.0 / _t77;
-        const double _t82 = (_t78 * _t76 + _t74 * _t79 - _t80 * _t75) * _t81;
-        const double _t83 = _t82 * _t73 - _t74;
-        const double _t84 = _t8 - _t63 * _t73;
-        const double _t85 = _t23 * _t29;
-        const double _t86 = _t38 * _t14;
-        const double _t87 = _t18 * _t31;
-        const double _t88 = _t27 * (_t55 * _t50 + (_t43 * _t68 + _t35 * _t57) - (_t24 * _t29 + (_t85 + (_t19 * _t31 + (_t54 * _t48 + (_t15 * _t38 + (_t54 * _t8 + _t54 * _t33)) + _t86 + _t86) + _t85) + _t87 + _t87))) * _t73 - _t54;
-        const double _t89 = _t38 * _t18;
-        const double _t90 = _t31 * _t14;
-        const double _t91 = _t7 * _t24;
-        const double _t92 = _t54 * _t29 * 2.0;
-        const double _t93 = _t8 * _t23;
-        const double _t94 = _t23 + _t27 * (_t43 * _t67 + _t50 * _t57 * 2.0 - (_t40 + (_t39 + _t39) + _t89 * 2.0 + _t90 - _t91 - _t92 - _t23 * _t48 * 2.0 - _t93)) * _t73;
-        const double _t95 = _t55 * _t73 + _t31;
-        const double _t96 = _t29 * _t14;
-        const double _t97 = _t38 * _t23;
-        const double _t98 = _t31 * _t54 * 2.0;
-        const double _t99 = _t18 * _t48;
-        const double _t100 = _t19 * _t7;
-        const double _t101 = _t18 + (_t63 * _t50 + _t43 * _t57 * 2.0 - (_t96 + (_t46 + (_t46 + (_t97 * 2.0 + _t45))) - _t98 - _t99 - _t100 - _t18 * _t8 * 2.0)) * _t27 * _t73;
-        const double _t102 = _t81 * (_t78 * _t74 - _t84 * _t76 - _t75 * _t95);
-        const double _t103 = _t78 + (_t84 * _t78 + _t75 * _t88 - _t94 * _t74 - _t80 * _t95 - _t101 * _t76 - _t78 * _t79 + _t102 * _t82) * _t81 * _t73;
-        const double _t104 = _t76 - _t102 * _t73;
-        const double _t105 = _t71 * _t73 - _t33;
-        const double _t106 = _t18 - _t27 * (_t96 * 2.0 + (_t46 + (_t45 + (_t97 + _t45))) - _t18 * _t33 * 2.0 - _t98 - _t99 - _t100 - _t35 * _t68 * 2.0 - _t50 * _t71) * _t73;
-        const double _t107 = _t31 * _t23;
-        const double _t108 = _t18 * _t29;
-        const double _t109 = _t33 * _t14;
-        const double _t110 = _t15 * _t7;
-        const double _t111 = _t38 * _t54 * 2.0;
-        const double _t112 = (_t107 + (_t32 + (_t30 + _t30) + _t108 * 2.0) - _t48 * _t14 * 2.0 - _t109 - _t110 - _t111 - _t35 * _t67 - _t50 * _t68 * 2.0) * _t27 * _t73 - _t14;
-        const double _t113 = (_t80 * _t74 + _t76 * _t95 - _t75 * _t105) * _t81;
-        const double _t114 = _t80 - (_t80 * _t79 + _t88 * _t76 + _t80 * _t105 + _t78 * _t95 - _t75 * _t106 - _t74 * _t112 - _t113 * _t82) * _t81 * _t73;
-        const double _t115 = _t113 * _t73 + _t75;
-        const double _t116 = _t78 * _t78;
-        const double _t117 = _t80 * _t80;
-        const double _t118 = sqrt(_t104 * _t104 + (_t115 * _t115 + _t83 * _t83));
-        const double _t119 = 1.0 / _t118;
-        const double _t120 = _t83 + (_t103 * _t104 - _t114 * _t115 - _t83 * ((_t82 * _t82 - (_t94 * _t76 + (_t116 + (_t75 * _t112 + (_t19 + _t27 * (_t67 * _t50 * 3.0 - (_t47 + _t96 * 3.0 + _t97 * 3.0 - _t49 - _t49 * 3.0)) * _t73) * _t74) + _t79 * _t79) + _t117)) * _t81 * _t73 + _t79)) * _t119 * _t73;
-        const double _t121 = _t27 * (_t89 + (_t90 * 2.0 + (_t40 + _t41)) - _t91 - _t92 - _t23 * _t33 * 2.0 - _t93 - _t43 * _t71 - _t55 * _t35 * 2.0) * _t73 - _t23;
-        const double _t122 = (_t63 * _t35 + _t55 * _t43 * 2.0 - (_t32 + (_t107 * 2.0 + (_t108 + _t30)) + _t32 - _t8 * _t14 * 2.0 - _t109 - _t110 - _t111)) * _t27 * _t73 + _t14;
-        const double _t123 = (_t102 * _t113 - (_t75 * _t121 + (_t105 * _t95 + _t122 * _t76) + _t88 * _t74 + _t80 * _t78 - _t84 * _t95)) * _t81 * _t73 + _t95;
-        const double _t124 = _t95 * _t95;
-        const double _t125 = _t115 + _t119 * (_t123 * _t104 - _t115 * (_t105 + (_t75 * (_t15 - (_t32 + (_t30 + _t108 * 3.0) + 3.0 * _t107 - _t34 - _t34 * 3.0 - 3.0 * (_t35 * _t71)) * _t27 * _t73) + _t76 * _t121 - _t105 * _t105 - _t124 - _t74 * _t106 - _t117 + _t113 * _t113) * _t81 * _t73) - _t83 * _t114) * _t73;
-        const double _t126 = (_t83 * _t103 + ((_t84 + _t81 * (_t101 * _t74 + _t116 + _t124 + _t84 * _t84 - _t122 * _t75 - _t76 * (_t27 * (3.0 * _t90 + (_t89 * 3.0 + _t41) - 3.0 * _t42 - _t42 - _t63 * _t43 * 3.0) * _t73 - _t24) - _t102 * _t102) * _t73) * _t104 + _t115 * _t123)) * _t119 * _t73 + _t104;
-        const double _t127 = _t11 * 0.5;
-        const double _t128 = _t43 * _t127 - _t24;
-        const double _t129 = _t19 - _t50 * _t127;
-        const double _t130 = _t15 - _t35 * _t127;
-        const double _t131 = -(4.5 * (_t52 + sqrt(_t64 * _t64 + _t70 * _t70 + _t72 * _t72)) - (_t77 + sqrt(_t120 * _t120 + _t125 * _t125 + _t126 * _t126) + _t118) * 2.6666666666666665 - sqrt(_t128 * _t128 + (_t129 * _t129 + _t130 * _t130)) * 2.0);
-        const double _t132 = fabs(_t11);
-        const double _t133 = _t132 * 3.5000035 + _t26;
-        const double _t134 = (_t133 <= 7.0000069999999992) ? _t133 : 7.0000069999999992;
-        const double _t135 = _t26 - _t132 * 10.5000105;
-        const double _t136 = ((-7.0000069999999992) <= _t135) ? _t135 : (-7.0000069999999992);
-        out[i] = _t8 + _t9 + _t10 - _t11 * ((_t131 <= _t134) ? ((_t136 <= _t131) ? _t131 : _t136) : _t134);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = 6.2831853071795862 * y[i + j];
+            const double _t3 = offsetgen_batch_cos(_t2);
+            const double _t4 = _t1 * _t3;
+            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t6 = offsetgen_batch_cos(_t5);
+            const double _t7 = _t4 * _t6 * 4.0;
+            const double _t8 = _t7 + 3.0 * _t6;
+            const double _t9 = _t1 * 3.0;
+            const double _t10 = _t3 * 3.0;
+            const double _t11 = 6.2831853071795862 * h[i + j];
+            const double _t12 = offsetgen_batch_sin(_t0);
+            const double _t13 = _t12 * _t3;
+            const double _t14 = 4.0 * (_t13 * _t6);
+            const double _t15 = _t12 * 3.0 + _t14;
+            const double _t16 = offsetgen_batch_sin(_t2);
+            const double _t17 = _t1 * _t16;
+            const double _t18 = 4.0 * (_t17 * _t6);
+            const double _t19 = _t18 + _t16 * 3.0;
+            const double _t20 = _t19 * _t19;
+            const double _t21 = _t15 * _t15;
+            const double _t22 = offsetgen_batch_sin(_t5);
+            const double _t23 = 4.0 * (_t4 * _t22);
+            const double _t24 = 3.0 * _t22 + _t23;
+            const double _t25 = _t24 * _t24;
+            const double _t26 = offsetgen_batch_sqrt(_t20 + _t21 + _t25);
+            const double _t27 = 1.0 / _t26;
+            const double _t28 = _t12 * _t16;
+            const double _t29 = 4.0 * (_t6 * _t28);
+            const double _t30 = _t19 * _t29;
+            const double _t31 = 4.0 * (_t13 * _t22);
+            const double _t32 = _t31 * _t24;
+            const double _t33 = _t7 + _t9;
+            const double _t34 = _t15 * _t33;
+            const double _t35 = _t27 * (_t30 + _t32 - _t34);
+            const double _t36 = _t11 * 0.33333333333333331;
+            const double _t37 = _t15 - _t35 * _t36;
+            const double _t38 = 4.0 * (_t17 * _t22);
+            const double _t39 = _t38 * _t19;
+            const double _t40 = _t15 * _t31;
+            const double _t41 = _t39 + _t40;
+            const double _t42 = _t8 * _t24;
+            const double _t43 = (_t41 - _t42) * _t27;
+            const double _t44 = _t43 * _t36 - _t24;
+            const double _t45 = _t15 * _t29;
+            const double _t46 = _t38 * _t24;
+            const double _t47 = _t45 + _t46;
+            const double _t48 = _t7 + _t10;
+            const double _t49 = _t19 * _t48;
+            const double _t50 = _t27 * (_t47 - _t49);
+            const double _t51 = _t19 - _t50 * _t36;
+            const double _t52 = offsetgen_batch_sqrt(_t37 * _t37 + (_t44 * _t44 + _t51 * _t51));
+            const double _t53 = 1.0 / _t52;
+            const double _t54 = _t22 * _t28 * 4.0;
+            const double _t55 = (_t43 * _t35 - (_t19 * _t54 + _t38 * _t29 - _t24 * _t14 - _t31 * _t33 - _t31 * _t8 - _t15 * _t23)) * _t27;
+            const double _t56 = _t31 + _t55 * _t36;
+            const double _t57 = (_t43 * _t50 + (_t18 * _t24 + _t19 * _t23 + _t38 * _t8 + _t38 * _t48 - _t31 * _t29 - _t15 * _t54)) * _t27;
+            const double _t58 = _t38 + _t57 * _t36;
+            const double _t59 = _t19 * _t18;
+            const double _t60 = _t15 * _t14;
+            const double _t61 = _t38 * _t38;
+            const double _t62 = _t31 * _t31;
+            const double _t63 = (_t43 * _t43 + (_t59 + _t60 + _t25 - _t61 - _t62 - _t8 * _t8)) * _t27;
+            const double _t64 = _t53 * (_t56 * _t37 + _t51 * _t58 - (_t63 * _t36 - _t8) * _t44) * _t36 + _t44;
+            const double _t65 = _t29 * _t29;
+            const double _t66 = _t23 * _t24;
+            const double _t67 = (_t50 * _t50 - (_t65 + (_t48 * _t48 + _t61) - _t20 - _t60 - _t66)) * _t27;
+            const double _t68 = _t27 * (_t35 * _t50 + (_t29 * _t33 + (_t19 * _t14 + _t15 * _t18) + _t48 * _t29 - _t38 * _t31 - _t54 * _t24));
+            const double _t69 = _t29 + _t36 * _t68;
+            const double _t70 = _t51 + ((_t48 - _t67 * _t36) * _t51 + _t58 * _t44 - _t37 * _t69) * _t53 * _t36;
+            const double _t71 = _t27 * (_t66 + (_t59 + _t21) - _t65 - _t62 - _t33 * _t33 + _t35 * _t35);
+            const double _t72 = _t37 - _t53 * (_t37 * (_t36 * _t71 - _t33) + _t51 * _t69 - _t56 * _t44) * _t36;
+            const double _t73 = _t11 * 0.25;
+            const double _t74 = _t50 * _t73 - _t19;
+            const double _t75 = _t15 - _t35 * _t73;
+            const double _t76 = _t43 * _t73 - _t24;
+            const double _t77 = offsetgen_batch_sqrt(_t74 * _t74 + _t75 * _t75 + _t76 * _t76);
+            const double _t78 = _t38 + _t57 * _t73;
+            const double _t79 = _t67 * _t73 - _t48;
+            const double _t80 = _t68 * _t73 + _t29;
+            const double _t81 = 1.0 / _t77;
+            const double _t82 = (_t78 * _t76 + _t74 * _t79 - _t80 * _t75) * _t81;
+            const double _t83 = _t82 * _t73 - _t74;
+            const double _t84 = _t8 - _t63 * _t73;
+            const double _t85 = _t23 * _t29;
+            const double _t86 = _t38 * _t14;
+            const double _t87 = _t18 * _t31;
+            const double _t88 = _t27 * (_t55 * _t50 + (_t43 * _t68 + _t35 * _t57) - (_t24 * _t29 + (_t85 + (_t19 * _t31 + (_t54 * _t48 + (_t15 * _t38 + (_t54 * _t8 + _t54 * _t33)) + _t86 + _t86) + _t85) + _t87 + _t87))) * _t73 - _t54;
+            const double _t89 = _t38 * _t18;
+            const double _t90 = _t31 * _t14;
+            const double _t91 = _t7 * _t24;
+            const double _t92 = _t54 * _t29 * 2.0;
+            const double _t93 = _t8 * _t23;
+            const double _t94 = _t23 + _t27 * (_t43 * _t67 + _t50 * _t57 * 2.0 - (_t40 + (_t39 + _t39) + _t89 * 2.0 + _t90 - _t91 - _t92 - _t23 * _t48 * 2.0 - _t93)) * _t73;
+            const double _t95 = _t55 * _t73 + _t31;
+            const double _t96 = _t29 * _t14;
+            const double _t97 = _t38 * _t23;
+            const double _t98 = _t31 * _t54 * 2.0;
+            const double _t99 = _t18 * _t48;
+            const double _t100 = _t19 * _t7;
+            const double _t101 = _t18 + (_t63 * _t50 + _t43 * _t57 * 2.0 - (_t96 + (_t46 + (_t46 + (_t97 * 2.0 + _t45))) - _t98 - _t99 - _t100 - _t18 * _t8 * 2.0)) * _t27 * _t73;
+            const double _t102 = _t81 * (_t78 * _t74 - _t84 * _t76 - _t75 * _t95);
+            const double _t103 = _t78 + (_t84 * _t78 + _t75 * _t88 - _t94 * _t74 - _t80 * _t95 - _t101 * _t76 - _t78 * _t79 + _t102 * _t82) * _t81 * _t73;
+            const double _t104 = _t76 - _t102 * _t73;
+            const double _t105 = _t71 * _t73 - _t33;
+            const double _t106 = _t18 - _t27 * (_t96 * 2.0 + (_t46 + (_t45 + (_t97 + _t45))) - _t18 * _t33 * 2.0 - _t98 - _t99 - _t100 - _t35 * _t68 * 2.0 - _t50 * _t71) * _t73;
+            const double _t107 = _t31 * _t23;
+            const double _t108 = _t18 * _t29;
+            const double _t109 = _t33 * _t14;
+            const double _t110 = _t15 * _t7;
+            const double _t111 = _t38 * _t54 * 2.0;
+            const double _t112 = (_t107 + (_t32 + (_t30 + _t30) + _t108 * 2.0) - _t48 * _t14 * 2.0 - _t109 - _t110 - _t111 - _t35 * _t67 - _t50 * _t68 * 2.0) * _t27 * _t73 - _t14;
+            const double _t113 = (_t80 * _t74 + _t76 * _t95 - _t75 * _t105) * _t81;
+            const double _t114 = _t80 - (_t80 * _t79 + _t88 * _t76 + _t80 * _t105 + _t78 * _t95 - _t75 * _t106 - _t74 * _t112 - _t113 * _t82) * _t81 * _t73;
+            const double _t115 = _t113 * _t73 + _t75;
+            const double _t116 = _t78 * _t78;
+            const double _t117 = _t80 * _t80;
+            const double _t118 = offsetgen_batch_sqrt(_t104 * _t104 + (_t115 * _t115 + _t83 * _t83));
+            const double _t119 = 1.0 / _t118;
+            const double _t120 = _t83 + (_t103 * _t104 - _t114 * _t115 - _t83 * ((_t82 * _t82 - (_t94 * _t76 + (_t116 + (_t75 * _t112 + (_t19 + _t27 * (_t67 * _t50 * 3.0 - (_t47 + _t96 * 3.0 + _t97 * 3.0 - _t49 - _t49 * 3.0)) * _t73) * _t74) + _t79 * _t79) + _t117)) * _t81 * _t73 + _t79)) * _t119 * _t73;
+            const double _t121 = _t27 * (_t89 + (_t90 * 2.0 + (_t40 + _t41)) - _t91 - _t92 - _t23 * _t33 * 2.0 - _t93 - _t43 * _t71 - _t55 * _t35 * 2.0) * _t73 - _t23;
+            const double _t122 = (_t63 * _t35 + _t55 * _t43 * 2.0 - (_t32 + (_t107 * 2.0 + (_t108 + _t30)) + _t32 - _t8 * _t14 * 2.0 - _t109 - _t110 - _t111)) * _t27 * _t73 + _t14;
+            const double _t123 = (_t102 * _t113 - (_t75 * _t121 + (_t105 * _t95 + _t122 * _t76) + _t88 * _t74 + _t80 * _t78 - _t84 * _t95)) * _t81 * _t73 + _t95;
+            const double _t124 = _t95 * _t95;
+            const double _t125 = _t115 + _t119 * (_t123 * _t104 - _t115 * (_t105 + (_t75 * (_t15 - (_t32 + (_t30 + _t108 * 3.0) + 3.0 * _t107 - _t34 - _t34 * 3.0 - 3.0 * (_t35 * _t71)) * _t27 * _t73) + _t76 * _t121 - _t105 * _t105 - _t124 - _t74 * _t106 - _t117 + _t113 * _t113) * _t81 * _t73) - _t83 * _t114) * _t73;
+            const double _t126 = (_t83 * _t103 + ((_t84 + _t81 * (_t101 * _t74 + _t116 + _t124 + _t84 * _t84 - _t122 * _t75 - _t76 * (_t27 * (3.0 * _t90 + (_t89 * 3.0 + _t41) - 3.0 * _t42 - _t42 - _t63 * _t43 * 3.0) * _t73 - _t24) - _t102 * _t102) * _t73) * _t104 + _t115 * _t123)) * _t119 * _t73 + _t104;
+            const double _t127 = _t11 * 0.5;
+            const double _t128 = _t43 * _t127 - _t24;
+            const double _t129 = _t19 - _t50 * _t127;
+            const double _t130 = _t15 - _t35 * _t127;
+            const double _t131 = -(4.5 * (_t52 + offsetgen_batch_sqrt(_t64 * _t64 + _t70 * _t70 + _t72 * _t72)) - (_t77 + offsetgen_batch_sqrt(_t120 * _t120 + _t125 * _t125 + _t126 * _t126) + _t118) * 2.6666666666666665 - offsetgen_batch_sqrt(_t128 * _t128 + (_t129 * _t129 + _t130 * _t130)) * 2.0);
+            const double _t132 = fabs(_t11);
+            const double _t133 = _t132 * 3.5000035 + _t26;
+            const double _t134 = (_t133 <= 7.0000069999999992) ? _t133 : 7.0000069999999992;
+            const double _t135 = _t26 - _t132 * 10.5000105;
+            const double _t136 = ((-7.0000069999999992) <= _t135) ? _t135 : (-7.0000069999999992);
+            out[i + j] = _t8 + _t9 + _t10 - _t11 * ((_t131 <= _t134) ? ((_t136 <= _t131) ? _t131 : _t136) : _t134);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_o4_offset(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = neovius_o4_offset(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of neovius_o4_shell: out[i] = neovius_o4_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void neovius_o4_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+static inline void neovius_o4_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_sin(_t0);
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = _t1 * _t3;
-        const double _t5 = 6.2831853071795862 * x[i];
-        const double _t6 = offsetgen_batch_cos(_t5);
-        const double _t7 = 4.0 * (_t4 * _t6);
-        const double _t8 = _t1 * 3.0 + _t7;
-        const double _t9 = offsetgen_batch_cos(_t0);
-        const double _t10 = offsetgen_batch_sin(_t2);
-        const double _t11 = _t9 * _t10;
-        const double _t12 = 4.0 * (_t11 * _t6);
-        const double _t13 = _t12 + _t10 * 3.0;
-        const double _t14 = _t13 * _t13;
-        const double _t15 = _t8 * _t8;
-        const double _t16 = offsetgen_batch_sin(_t5);
-        const double _t17 = _t9 * _t3;
-        const double _t18 = 4.0 * (_t17 * _t16);
-        const double _t19 = 3.0 * _t16 + _t18;
-        const double _t20 = _t19 * _t19;
-        const double _t21 = sqrt(_t14 + _t15 + _t20);
-        const double _t22 = 1.0 / _t21;
-        const double _t23 = _t1 * _t10;
-        const double _t24 = 4.0 * (_t6 * _t23);
-        const double _t25 = _t13 * _t24;
-        const double _t26 = 4.0 * (_t4 * _t16);
-        const double _t27 = _t26 * _t19;
-        const double _t28 = _t17 * _t6 * 4.0;
-        const double _t29 = _t9 * 3.0;
-        const double _t30 = _t28 + _t29;
-        const double _t31 = _t8 * _t30;
-        const double _t32 = _t22 * (_t25 + _t27 - _t31);
-        const double _t33 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t34 = _t33 * 0.33333333333333331;
-        const double _t35 = _t32 * _t34;
-        const double _t36 = _t8 + _t35;
-        const double _t37 = 4.0 * (_t11 * _t16);
-        const double _t38 = _t37 * _t13;
-        const double _t39 = _t8 * _t26;
-        const double _t40 = _t38 + _t39;
-        const double _t41 = _t28 + 3.0 * _t6;
-        const double _t42 = _t41 * _t19;
-        const double _t43 = (_t40 - _t42) * _t22;
-        const double _t44 = _t43 * _t34;
-        const double _t45 = _t19 + _t44;
-        const double _t46 = _t8 * _t24;
-        const double _t47 = _t37 * _t19;
-        const double _t48 = _t46 + _t47;
-        const double _t49 = _t3 * 3.0;
-        const double _t50 = _t28 + _t49;
-        const double _t51 = _t13 * _t50;
-        const double _t52 = _t22 * (_t48 - _t51);
-        const double _t53 = _t34 * _t52;
-        const double _t54 = _t53 + _t13;
-        const double _t55 = sqrt(_t36 * _t36 + _t45 * _t45 + _t54 * _t54);
-        const double _t56 = 1.0 / _t55;
-        const double _t57 = _t18 * _t19;
-        const double _t58 = _t13 * _t12;
-        const double _t59 = _t24 * _t24;
-        const double _t60 = _t26 * _t26;
-        const double _t61 = _t22 * (_t57 + (_t58 + _t15) - _t59 - _t60 - _t30 * _t30 + _t32 * _t32);
-        const double _t62 = _t34 * _t61;
-        const double _t63 = _t16 * _t23 * 4.0;
-        const double _t64 = _t22 * (_t32 * _t52 + (_t24 * _t30 + (_t13 * _t7 + _t8 * _t12) + _t50 * _t24 - _t37 * _t26 - _t63 * _t19));
-        const double _t65 = _t34 * _t64;
-        const double _t66 = _t65 - _t24;
-        const double _t67 = (_t43 * _t32 - (_t13 * _t63 + _t37 * _t24 - _t19 * _t7 - _t26 * _t30 - _t26 * _t41 - _t8 * _t18)) * _t22;
-        const double _t68 = _t67 * _t34;
-        const double _t69 = _t26 - _t68;
-        const double _t70 = _t36 - _t56 * ((_t62 + _t30) * _t36 + _t54 * _t66 - _t69 * _t45) * _t34;
-        const double _t71 = (_t43 * _t52 + (_t12 * _t19 + _t13 * _t18 + _t37 * _t41 + _t37 * _t50 - _t26 * _t24 - _t8 * _t63)) * _t22;
-        const double _t72 = _t34 * _t71;
-        const double _t73 = _t37 - _t72;
-        const double _t74 = _t8 * _t7;
-        const double _t75 = _t37 * _t37;
-        const double _t76 = (_t43 * _t43 + (_t58 + _t74 + _t20 - _t75 - _t60 - _t41 * _t41)) * _t22;
-        const double _t77 = _t76 * _t34;
-        const double _t78 = _t56 * (_t54 * _t73 + _t69 * _t36 - (_t41 + _t77) * _t45) * _t34 + _t45;
-        const double _t79 = (_t52 * _t52 - (_t59 + (_t50 * _t50 + _t75) - _t14 - _t74 - _t57)) * _t22;
-        const double _t80 = _t79 * _t34;
-        const double _t81 = _t54 + _t56 * (_t73 * _t45 - _t36 * _t66 - (_t50 + _t80) * _t54) * _t34;
-        const double _t82 = _t33 * 0.25;
-        const double _t83 = _t82 * _t32;
-        const double _t84 = _t8 + _t83;
-        const double _t85 = _t82 * _t43;
-        const double _t86 = _t19 + _t85;
-        const double _t87 = _t82 * _t52;
-        const double _t88 = _t13 + _t87;
-        const double _t89 = sqrt(_t84 * _t84 + _t86 * _t86 + _t88 * _t88);
-        const double _t90 = 1.0 / _t89;
-        const double _t91 = _t82 * _t79;
-        const double _t92 = _t91 + _t50;
-        const double _t93 = _t82 * _t64;
-        const double _t94 = _t93 - _t24;
-        const double _t95 = _t82 * _t71;
-        const double _t96 = _t37 - _t95;
-        const double _t97 = _t90 * (_t92 * _t88 + _t84 * _t94 - _t96 * _t86);
-        const double _t98 = _t82 * _t97 - _t88;
-        const double _t99 = _t82 * _t76;
-        const double _t100 = _t41 + _t99;
-        const double _t101 = _t82 * _t67;
-        const double _t102 = _t26 - _t101;
-        const double _t103 = (_t100 * _t86 - _t84 * _t102 - _t96 * _t88) * _t90;
-        const double _t104 = _t24 * _t7;
-        const double _t105 = _t37 * _t18;
-        const double _t106 = _t26 * _t63 * 2.0;
-        const double _t107 = _t12 * _t50;
-        const double _t108 = _t13 * _t28;
-        const double _t109 = _t82 * ((_t76 * _t52 + _t43 * _t71 * 2.0 - (_t104 + (_t47 + (_t47 + (_t105 * 2.0 + _t46))) - _t106 - _t107 - _t108 - _t12 * _t41 * 2.0)) * _t22);
-        const double _t110 = _t12 - _t109;
-        const double _t111 = _t18 * _t24;
-        const double _t112 = _t37 * _t7;
-        const double _t113 = _t12 * _t26;
-        const double _t114 = _t82 * (_t22 * (_t67 * _t52 + (_t43 * _t64 + _t32 * _t71) - (_t19 * _t24 + (_t111 + (_t13 * _t26 + (_t63 * _t50 + (_t8 * _t37 + (_t63 * _t41 + _t63 * _t30)) + _t112 + _t112) + _t111) + _t113 + _t113))));
-        const double _t115 = _t63 + _t114;
-        const double _t116 = _t37 * _t12;
-        const double _t117 = _t26 * _t7;
-        const double _t118 = _t28 * _t19;
-        const double _t119 = _t63 * _t24 * 2.0;
-        const double _t120 = _t41 * _t18;
-        const double _t121 = _t82 * (_t22 * (_t43 * _t79 + _t52 * _t71 * 2.0 - (_t39 + (_t38 + _t38) + _t116 * 2.0 + _t117 - _t118 - _t119 - _t18 * _t50 * 2.0 - _t120)));
-        const double _t122 = _t121 - _t18;
-        const double _t123 = _t96 - _t82 * (_t90 * (_t103 * _t97 + (_t86 * _t110 + _t96 * _t92 + _t102 * _t94 + _t96 * _t100 - _t115 * _t84 - _t88 * _t122)));
-        const double _t124 = _t82 * _t103 - _t86;
-        const double _t125 = _t82 * _t61;
-        const double _t126 = _t125 + _t30;
-        const double _t127 = _t90 * (_t88 * _t94 + _t84 * _t126 - _t102 * _t86);
-        const double _t128 = _t82 * _t127 - _t84;
-        const double _t129 = _t82 * (_t22 * (_t104 * 2.0 + (_t47 + (_t46 + (_t105 + _t46))) - _t12 * _t30 * 2.0 - _t106 - _t107 - _t108 - _t32 * _t64 * 2.0 - _t52 * _t61));
-        const double _t130 = _t12 + _t129;
-        const double _t131 = _t26 * _t18;
-        const double _t132 = _t12 * _t24;
-        const double _t133 = _t30 * _t7;
-        const double _t134 = _t8 * _t28;
-        const double _t135 = _t37 * _t63 * 2.0;
-        const double _t136 = _t82 * ((_t131 + (_t27 + (_t25 + _t25) + _t132 * 2.0) - _t50 * _t7 * 2.0 - _t133 - _t134 - _t135 - _t32 * _t79 - _t52 * _t64 * 2.0) * _t22);
-        const double _t137 = _t136 + _t7;
-        const double _t138 = _t82 * (_t90 * (_t127 * _t97 - (_t92 * _t94 + _t94 * _t126 + _t96 * _t102 + _t115 * _t86 - _t130 * _t84 - _t88 * _t137))) + _t94;
-        const double _t139 = _t96 * _t96;
-        const double _t140 = _t94 * _t94;
-        const double _t141 = _t82 * (_t22 * (_t79 * _t52 * 3.0 - (_t48 + _t104 * 3.0 + _t105 * 3.0 - _t51 - _t51 * 3.0)));
-        const double _t142 = sqrt(_t98 * _t98 + (_t128 * _t128 + _t124 * _t124));
-        const double _t143 = 1.0 / _t142;
-        const double _t144 = _t98 + _t82 * ((_t123 * _t124 - _t128 * _t138 - _t98 * (_t92 + _t82 * ((_t97 * _t97 - (_t92 * _t92 + (_t139 + _t122 * _t86) + _t140 - _t88 * (_t13 - _t141) - _t137 * _t84)) * _t90))) * _t143);
-        const double _t145 = _t82 * (_t22 * (_t116 + (_t117 * 2.0 + (_t39 + _t40)) - _t118 - _t119 - _t18 * _t30 * 2.0 - _t120 - _t43 * _t61 - _t67 * _t32 * 2.0));
-        const double _t146 = _t18 + _t145;
-        const double _t147 = _t82 * ((_t76 * _t32 + _t67 * _t43 * 2.0 - (_t27 + (_t131 * 2.0 + (_t132 + _t25)) + _t27 - _t41 * _t7 * 2.0 - _t133 - _t134 - _t135)) * _t22);
-        const double _t148 = _t147 - _t7;
-        const double _t149 = _t82 * ((_t103 * _t127 + (_t102 * _t126 + _t84 * _t146 + _t96 * _t94 + _t100 * _t102 - _t148 * _t86 - _t88 * _t115)) * _t90) - _t102;
-        const double _t150 = _t82 * ((_t27 + (_t25 + _t132 * 3.0) + 3.0 * _t131 - _t31 - _t31 * 3.0 - 3.0 * (_t32 * _t61)) * _t22);
-        const double _t151 = _t102 * _t102;
-        const double _t152 = _t128 - _t82 * ((_t98 * _t138 + (_t124 * _t149 + _t128 * (_t82 * (_t90 * (_t146 * _t86 + _t130 * _t88 + _t84 * (_t8 + _t150) - _t151 - _t140 - _t126 * _t126 + _t127 * _t127)) + _t126))) * _t143);
-        const double _t153 = _t82 * (_t22 * (3.0 * _t117 + (_t116 * 3.0 + _t40) - 3.0 * _t42 - _t42 - _t76 * _t43 * 3.0));
-        const double _t154 = _t82 * ((_t98 * _t123 - _t128 * _t149 - _t124 * (_t82 * (_t90 * (_t103 * _t103 - (_t139 + _t151 + _t100 * _t100 + _t84 * _t148 - _t88 * _t110 - _t86 * (_t153 + _t19)))) + _t100)) * _t143) + _t124;
-        const double _t155 = _t33 * 0.5;
-        const double _t156 = _t32 * _t155;
-        const double _t157 = _t8 + _t156;
-        const double _t158 = _t43 * _t155;
-        const double _t159 = _t19 + _t158;
-        const double _t160 = _t155 * _t52;
-        const double _t161 = _t13 + _t160;
-        const double _t162 = -(4.5 * (_t55 + sqrt(_t70 * _t70 + _t78 * _t78 + _t81 * _t81)) - (sqrt(_t144 * _t144 + _t152 * _t152 + _t154 * _t154) + (_t89 + _t142)) * 2.6666666666666665 - sqrt(_t157 * _t157 + _t159 * _t159 + _t161 * _t161) * 2.0);
-        const double _t163 = fabs(_t33);
-        const double _t164 = _t163 * 3.5000035 + _t21;
-        const double _t165 = (_t164 <= 7.0000069999999992) ? _t164 : 7.0000069999999992;
-        const double _t166 = _t21 - _t163 * 10.5000105;
-        const double _t167 = ((-7.0000069999999992) <= _t166) ? _t166 : (-7.0000069999999992);
-        const double _t168 = _t41 + _t29 + _t49;
-        const double _t169 = _t19 - _t158;
-        const double _t170 = _t8 - _t156;
-        const double _t171 = _t13 - _t160;
-        const double _t172 = _t13 - _t87;
-        const double _t173 = _t19 - _t85;
-        const double _t174 = _t8 - _t83;
-        const double _t175 = sqrt(_t172 * _t172 + _t173 * _t173 + _t174 * _t174);
-        const double _t176 = 1.0 / _t175;
-        const double _t177 = _t37 + _t95;
-        const double _t178 = _t93 + _t24;
-        const double _t179 = _t91 - _t50;
-        const double _t180 = _t176 * (_t173 * _t177 + (_t174 * _t178 + _t172 * _t179));
-        const double _t181 = _t172 - _t82 * _t180;
-        const double _t182 = _t41 - _t99;
-        const double _t183 = _t121 + _t18;
-        const double _t184 = _t12 + _t109;
-        const double _t185 = _t26 + _t101;
-        const double _t186 = _t63 - _t114;
-        const double _t187 = _t176 * (_t172 * _t177 + _t185 * _t174 - _t173 * _t182);
-        const double _t188 = _t82 * (_t176 * (_t177 * _t182 + (_t172 * _t183 + _t173 * _t184) - _t179 * _t177 - _t185 * _t178 - _t186 * _t174 + _t180 * _t187)) + _t177;
-        const double _t189 = _t82 * _t187 - _t173;
-        const double _t190 = _t125 - _t30;
-        const double _t191 = _t176 * (_t172 * _t178 + _t185 * _t173 + _t174 * _t190);
-        const double _t192 = _t82 * _t191 - _t174;
-        const double _t193 = _t136 - _t7;
-        const double _t194 = _t12 - _t129;
-        const double _t195 = _t82 * ((_t180 * _t191 - (_t179 * _t178 + (_t185 * _t177 + _t178 * _t190 + _t172 * _t193) + _t186 * _t173 - _t174 * _t194)) * _t176) + _t178;
-        const double _t196 = _t177 * _t177;
-        const double _t197 = _t178 * _t178;
-        const double _t198 = sqrt(_t181 * _t181 + _t192 * _t192 + _t189 * _t189);
-        const double _t199 = 1.0 / _t198;
-        const double _t200 = _t181 + _t82 * ((_t188 * _t189 + _t192 * _t195 - _t181 * (_t179 + _t82 * (_t176 * (_t172 * (_t13 + _t141) + _t183 * _t173 - _t196 - _t197 - _t179 * _t179 - _t193 * _t174 + _t180 * _t180)))) * _t199);
-        const double _t201 = _t185 * _t185;
-        const double _t202 = _t18 - _t145;
-        const double _t203 = _t147 + _t7;
-        const double _t204 = _t185 + _t82 * ((_t191 * _t187 - (_t177 * _t178 + _t185 * _t190 + _t172 * _t186 - _t203 * _t173 - _t185 * _t182 - _t174 * _t202)) * _t176);
-        const double _t205 = _t192 + _t82 * ((_t192 * (_t82 * (_t176 * (_t197 + (_t201 + _t190 * _t190) - _t173 * _t202 - _t172 * _t194 - _t174 * (_t8 - _t150) - _t191 * _t191)) - _t190) + _t181 * _t195 - _t204 * _t189) * _t199);
-        const double _t206 = _t189 - _t82 * (((_t82 * (_t176 * (_t187 * _t187 - ((_t153 - _t19) * _t173 + (_t201 + _t196) + _t182 * _t182 - _t172 * _t184 - _t203 * _t174))) - _t182) * _t189 + _t204 * _t192 - _t181 * _t188) * _t199);
-        const double _t207 = _t53 - _t13;
-        const double _t208 = _t8 - _t35;
-        const double _t209 = _t19 - _t44;
-        const double _t210 = sqrt(_t207 * _t207 + _t208 * _t208 + _t209 * _t209);
-        const double _t211 = 1.0 / _t210;
-        const double _t212 = _t26 + _t68;
-        const double _t213 = _t65 + _t24;
-        const double _t214 = _t211 * (_t212 * _t209 + (_t62 - _t30) * _t208 - _t207 * _t213) * _t34 - _t208;
-        const double _t215 = _t37 + _t72;
-        const double _t216 = _t211 * ((_t41 - _t77) * _t209 + _t207 * _t215 - _t212 * _t208) * _t34 + _t209;
-        const double _t217 = _t207 + _t211 * ((_t50 - _t80) * _t207 + _t208 * _t213 + _t215 * _t209) * _t34;
-        const double _t218 = sqrt(_t169 * _t169 + (_t170 * _t170 + _t171 * _t171)) * 2.0 + (sqrt(_t200 * _t200 + (_t205 * _t205 + _t206 * _t206)) + _t198 + _t175) * 2.6666666666666665 - 4.5 * (sqrt(_t214 * _t214 + _t216 * _t216 + _t217 * _t217) + _t210);
-        out[i] = (((_t162 <= _t165) ? ((_t167 <= _t162) ? _t162 : _t167) : _t165) * _t33 + _t168) * (_t168 - ((_t218 <= _t165) ? ((_t167 <= _t218) ? _t218 : _t167) : _t165) * _t33);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_sin(_t0);
+            const double _t2 = 6.2831853071795862 * y[i + j];
+            const double _t3 = offsetgen_batch_cos(_t2);
+            const double _t4 = _t1 * _t3;
+            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t6 = offsetgen_batch_cos(_t5);
+            const double _t7 = 4.0 * (_t4 * _t6);
+            const double _t8 = _t1 * 3.0 + _t7;
+            const double _t9 = offsetgen_batch_cos(_t0);
+            const double _t10 = offsetgen_batch_sin(_t2);
+            const double _t11 = _t9 * _t10;
+            const double _t12 = 4.0 * (_t11 * _t6);
+            const double _t13 = _t12 + _t10 * 3.0;
+            const double _t14 = _t13 * _t13;
+            const double _t15 = _t8 * _t8;
+            const double _t16 = offsetgen_batch_sin(_t5);
+            const double _t17 = _t9 * _t3;
+            const double _t18 = 4.0 * (_t17 * _t16);
+            const double _t19 = 3.0 * _t16 + _t18;
+            const double _t20 = _t19 * _t19;
+            const double _t21 = offsetgen_batch_sqrt(_t14 + _t15 + _t20);
+            const double _t22 = 1.0 / _t21;
+            const double _t23 = _t1 * _t10;
+            const double _t24 = 4.0 * (_t6 * _t23);
+            const double _t25 = _t13 * _t24;
+            const double _t26 = 4.0 * (_t4 * _t16);
+            const double _t27 = _t26 * _t19;
+            const double _t28 = _t17 * _t6 * 4.0;
+            const double _t29 = _t9 * 3.0;
+            const double _t30 = _t28 + _t29;
+            const double _t31 = _t8 * _t30;
+            const double _t32 = _t22 * (_t25 + _t27 - _t31);
+            const double _t33 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t34 = _t33 * 0.33333333333333331;
+            const double _t35 = _t32 * _t34;
+            const double _t36 = _t8 + _t35;
+            const double _t37 = 4.0 * (_t11 * _t16);
+            const double _t38 = _t37 * _t13;
+            const double _t39 = _t8 * _t26;
+            const double _t40 = _t38 + _t39;
+            const double _t41 = _t28 + 3.0 * _t6;
+            const double _t42 = _t41 * _t19;
+            const double _t43 = (_t40 - _t42) * _t22;
+            const double _t44 = _t43 * _t34;
+            const double _t45 = _t19 + _t44;
+            const double _t46 = _t8 * _t24;
+            const double _t47 = _t37 * _t19;
+            const double _t48 = _t46 + _t47;
+            const double _t49 = _t3 * 3.0;
+            const double _t50 = _t28 + _t49;
+            const double _t51 = _t13 * _t50;
+            const double _t52 = _t22 * (_t48 - _t51);
+            const double _t53 = _t34 * _t52;
+            const double _t54 = _t53 + _t13;
+            const double _t55 = offsetgen_batch_sqrt(_t36 * _t36 + _t45 * _t45 + _t54 * _t54);
+            const double _t56 = 1.0 / _t55;
+            const double _t57 = _t18 * _t19;
+            const double _t58 = _t13 * _t12;
+            const double _t59 = _t24 * _t24;
+            const double _t60 = _t26 * _t26;
+            const double _t61 = _t22 * (_t57 + (_t58 + _t15) - _t59 - _t60 - _t30 * _t30 + _t32 * _t32);
+            const double _t62 = _t34 * _t61;
+            const double _t63 = _t16 * _t23 * 4.0;
+            const double _t64 = _t22 * (_t32 * _t52 + (_t24 * _t30 + (_t13 * _t7 + _t8 * _t12) + _t50 * _t24 - _t37 * _t26 - _t63 * _t19));
+            const double _t65 = _t34 * _t64;
+            const double _t66 = _t65 - _t24;
+            const double _t67 = (_t43 * _t32 - (_t13 * _t63 + _t37 * _t24 - _t19 * _t7 - _t26 * _t30 - _t26 * _t41 - _t8 * _t18)) * _t22;
+            const double _t68 = _t67 * _t34;
+            const double _t69 = _t26 - _t68;
+            const double _t70 = _t36 - _t56 * ((_t62 + _t30) * _t36 + _t54 * _t66 - _t69 * _t45) * _t34;
+            const double _t71 = (_t43 * _t52 + (_t12 * _t19 + _t13 * _t18 + _t37 * _t41 + _t37 * _t50 - _t26 * _t24 - _t8 * _t63)) * _t22;
+            const double _t72 = _t34 * _t71;
+            const double _t73 = _t37 - _t72;
+            const double _t74 = _t8 * _t7;
+            const double _t75 = _t37 * _t37;
+            const double _t76 = (_t43 * _t43 + (_t58 + _t74 + _t20 - _t75 - _t60 - _t41 * _t41)) * _t22;
+            const double _t77 = _t76 * _t34;
+            const double _t78 = _t56 * (_t54 * _t73 + _t69 * _t36 - (_t41 + _t77) * _t45) * _t34 + _t45;
+            const double _t79 = (_t52 * _t52 - (_t59 + (_t50 * _t50 + _t75) - _t14 - _t74 - _t57)) * _t22;
+            const double _t80 = _t79 * _t34;
+            const double _t81 = _t54 + _t56 * (_t73 * _t45 - _t36 * _t66 - (_t50 + _t80) * _t54) * _t34;
+            const double _t82 = _t33 * 0.25;
+            const double _t83 = _t82 * _t32;
+            const double _t84 = _t8 + _t83;
+            const double _t85 = _t82 * _t43;
+            const double _t86 = _t19 + _t85;
+            const double _t87 = _t82 * _t52;
+            const double _t88 = _t13 + _t87;
+            const double _t89 = offsetgen_batch_sqrt(_t84 * _t84 + _t86 * _t86 + _t88 * _t88);
+            const double _t90 = 1.0 / _t89;
+            const double _t91 = _t82 * _t79;
+            const double _t92 = _t91 + _t50;
+            const double _t93 = _t82 * _t64;
+            const double _t94 = _t93 - _t24;
+            const double _t95 = _t82 * _t71;
+            const double _t96 = _t37 - _t95;
+            const double _t97 = _t90 * (_t92 * _t88 + _t84 * _t94 - _t96 * _t86);
+            const double _t98 = _t82 * _t97 - _t88;
+            const double _t99 = _t82 * _t76;
+            const double _t100 = _t41 + _t99;
+            const double _t101 = _t82 * _t67;
+            const double _t102 = _t26 - _t101;
+            const double _t103 = (_t100 * _t86 - _t84 * _t102 - _t96 * _t88) * _t90;
+            const double _t104 = _t24 * _t7;
+            const double _t105 = _t37 * _t18;
+            const double _t106 = _t26 * _t63 * 2.0;
+            const double _t107 = _t12 * _t50;
+            const double _t108 = _t13 * _t28;
+            const double _t109 = _t82 * ((_t76 * _t52 + _t43 * _t71 * 2.0 - (_t104 + (_t47 + (_t47 + (_t105 * 2.0 + _t46))) - _t106 - _t107 - _t108 - _t12 * _t41 * 2.0)) * _t22);
+            const double _t110 = _t12 - _t109;
+            const double _t111 = _t18 * _t24;
+            const double _t112 = _t37 * _t7;
+            const double _t113 = _t12 * _t26;
+            const double _t114 = _t82 * (_t22 * (_t67 * _t52 + (_t43 * _t64 + _t32 * _t71) - (_t19 * _t24 + (_t111 + (_t13 * _t26 + (_t63 * _t50 + (_t8 * _t37 + (_t63 * _t41 + _t63 * _t30)) + _t112 + _t112) + _t111) + _t113 + _t113))));
+            const double _t115 = _t63 + _t114;
+            const double _t116 = _t37 * _t12;
+            const double _t117 = _t26 * _t7;
+            const double _t118 = _t28 * _t19;
+            const double _t119 = _t63 * _t24 * 2.0;
+            const double _t120 = _t41 * _t18;
+            const double _t121 = _t82 * (_t22 * (_t43 * _t79 + _t52 * _t71 * 2.0 - (_t39 + (_t38 + _t38) + _t116 * 2.0 + _t117 - _t118 - _t119 - _t18 * _t50 * 2.0 - _t120)));
+            const double _t122 = _t121 - _t18;
+            const double _t123 = _t96 - _t82 * (_t90 * (_t103 * _t97 + (_t86 * _t110 + _t96 * _t92 + _t102 * _t94 + _t96 * _t100 - _t115 * _t84 - _t88 * _t122)));
+            const double _t124 = _t82 * _t103 - _t86;
+            const double _t125 = _t82 * _t61;
+            const double _t126 = _t125 + _t30;
+            const double _t127 = _t90 * (_t88 * _t94 + _t84 * _t126 - _t102 * _t86);
+            const double _t128 = _t82 * _t127 - _t84;
+            const double _t129 = _t82 * (_t22 * (_t104 * 2.0 + (_t47 + (_t46 + (_t105 + _t46))) - _t12 * _t30 * 2.0 - _t106 - _t107 - _t108 - _t32 * _t64 * 2.0 - _t52 * _t61));
+            const double _t130 = _t12 + _t129;
+            const double _t131 = _t26 * _t18;
+            const double _t132 = _t12 * _t24;
+            const double _t133 = _t30 * _t7;
+            const double _t134 = _t8 * _t28;
+            const double _t135 = _t37 * _t63 * 2.0;
+            const double _t136 = _t82 * ((_t131 + (_t27 + (_t25 + _t25) + _t132 * 2.0) - _t50 * _t7 * 2.0 - _t133 - _t134 - _t135 - _t32 * _t79 - _t52 * _t64 * 2.0) * _t22);
+            const double _t137 = _t136 + _t7;
+            const double _t138 = _t82 * (_t90 * (_t127 * _t97 - (_t92 * _t94 + _t94 * _t126 + _t96 * _t102 + _t115 * _t86 - _t130 * _t84 - _t88 * _t137))) + _t94;
+            const double _t139 = _t96 * _t96;
+            const double _t140 = _t94 * _t94;
+            const double _t141 = _t82 * (_t22 * (_t79 * _t52 * 3.0 - (_t48 + _t104 * 3.0 + _t105 * 3.0 - _t51 - _t51 * 3.0)));
+            const double _t142 = offsetgen_batch_sqrt(_t98 * _t98 + (_t128 * _t128 + _t124 * _t124));
+            const double _t143 = 1.0 / _t142;
+            const double _t144 = _t98 + _t82 * ((_t123 * _t124 - _t128 * _t138 - _t98 * (_t92 + _t82 * ((_t97 * _t97 - (_t92 * _t92 + (_t139 + _t122 * _t86) + _t140 - _t88 * (_t13 - _t141) - _t137 * _t84)) * _t90))) * _t143);
+            const double _t145 = _t82 * (_t22 * (_t116 + (_t117 * 2.0 + (_t39 + _t40)) - _t118 - _t119 - _t18 * _t30 * 2.0 - _t120 - _t43 * _t61 - _t67 * _t32 * 2.0));
+            const double _t146 = _t18 + _t145;
+            const double _t147 = _t82 * ((_t76 * _t32 + _t67 * _t43 * 2.0 - (_t27 + (_t131 * 2.0 + (_t132 + _t25)) + _t27 - _t41 * _t7 * 2.0 - _t133 - _t134 - _t135)) * _t22);
+            const double _t148 = _t147 - _t7;
+            const double _t149 = _t82 * ((_t103 * _t127 + (_t102 * _t126 + _t84 * _t146 + _t96 * _t94 + _t100 * _t102 - _t148 * _t86 - _t88 * _t115)) * _t90) - _t102;
+            const double _t150 = _t82 * ((_t27 + (_t25 + _t132 * 3.0) + 3.0 * _t131 - _t31 - _t31 * 3.0 - 3.0 * (_t32 * _t61)) * _t22);
+            const double _t151 = _t102 * _t102;
+            const double _t152 = _t128 - _t82 * ((_t98 * _t138 + (_t124 * _t149 + _t128 * (_t82 * (_t90 * (_t146 * _t86 + _t130 * _t88 + _t84 * (_t8 + _t150) - _t151 - _t140 - _t126 * _t126 + _t127 * _t127)) + _t126))) * _t143);
+            const double _t153 = _t82 * (_t22 * (3.0 * _t117 + (_t116 * 3.0 + _t40) - 3.0 * _t42 - _t42 - _t76 * _t43 * 3.0));
+            const double _t154 = _t82 * ((_t98 * _t123 - _t128 * _t149 - _t124 * (_t82 * (_t90 * (_t103 * _t103 - (_t139 + _t151 + _t100 * _t100 + _t84 * _t148 - _t88 * _t110 - _t86 * (_t153 + _t19)))) + _t100)) * _t143) + _t124;
+            const double _t155 = _t33 * 0.5;
+            const double _t156 = _t32 * _t155;
+            const double _t157 = _t8 + _t156;
+            const double _t158 = _t43 * _t155;
+            const double _t159 = _t19 + _t158;
+            const double _t160 = _t155 * _t52;
+            const double _t161 = _t13 + _t160;
+            const double _t162 = -(4.5 * (_t55 + offsetgen_batch_sqrt(_t70 * _t70 + _t78 * _t78 + _t81 * _t81)) - (offsetgen_batch_sqrt(_t144 * _t144 + _t152 * _t152 + _t154 * _t154) + (_t89 + _t142)) * 2.6666666666666665 - offsetgen_batch_sqrt(_t157 * _t157 + _t159 * _t159 + _t161 * _t161) * 2.0);
+            const double _t163 = fabs(_t33);
+            const double _t164 = _t163 * 3.5000035 + _t21;
+            const double _t165 = (_t164 <= 7.0000069999999992) ? _t164 : 7.0000069999999992;
+            const double _t166 = _t21 - _t163 * 10.5000105;
+            const double _t167 = ((-7.0000069999999992) <= _t166) ? _t166 : (-7.0000069999999992);
+            const double _t168 = _t41 + _t29 + _t49;
+            const double _t169 = _t19 - _t158;
+            const double _t170 = _t8 - _t156;
+            const double _t171 = _t13 - _t160;
+            const double _t172 = _t13 - _t87;
+            const double _t173 = _t19 - _t85;
+            const double _t174 = _t8 - _t83;
+            const double _t175 = offsetgen_batch_sqrt(_t172 * _t172 + _t173 * _t173 + _t174 * _t174);
+            const double _t176 = 1.0 / _t175;
+            const double _t177 = _t37 + _t95;
+            const double _t178 = _t93 + _t24;
+            const double _t179 = _t91 - _t50;
+            const double _t180 = _t176 * (_t173 * _t177 + (_t174 * _t178 + _t172 * _t179));
+            const double _t181 = _t172 - _t82 * _t180;
+            const double _t182 = _t41 - _t99;
+            const double _t183 = _t121 + _t18;
+            const double _t184 = _t12 + _t109;
+            const double _t185 = _t26 + _t101;
+            const double _t186 = _t63 - _t114;
+            const double _t187 = _t176 * (_t172 * _t177 + _t185 * _t174 - _t173 * _t182);
+            const double _t188 = _t82 * (_t176 * (_t177 * _t182 + (_t172 * _t183 + _t173 * _t184) - _t179 * _t177 - _t185 * _t178 - _t186 * _t174 + _t180 * _t187)) + _t177;
+            const double _t189 = _t82 * _t187 - _t173;
+            const double _t190 = _t125 - _t30;
+            const double _t191 = _t176 * (_t172 * _t178 + _t185 * _t173 + _t174 * _t190);
+            const double _t192 = _t82 * _t191 - _t174;
+            const double _t193 = _t136 - _t7;
+            const double _t194 = _t12 - _t129;
+            const double _t195 = _t82 * ((_t180 * _t191 - (_t179 * _t178 + (_t185 * _t177 + _t178 * _t190 + _t172 * _t193) + _t186 * _t173 - _t174 * _t194)) * _t176) + _t178;
+            const double _t196 = _t177 * _t177;
+            const double _t197 = _t178 * _t178;
+            const double _t198 = offsetgen_batch_sqrt(_t181 * _t181 + _t192 * _t192 + _t189 * _t189);
+            const double _t199 = 1.0 / _t198;
+            const double _t200 = _t181 + _t82 * ((_t188 * _t189 + _t192 * _t195 - _t181 * (_t179 + _t82 * (_t176 * (_t172 * (_t13 + _t141) + _t183 * _t173 - _t196 - _t197 - _t179 * _t179 - _t193 * _t174 + _t180 * _t180)))) * _t199);
+            const double _t201 = _t185 * _t185;
+            const double _t202 = _t18 - _t145;
+            const double _t203 = _t147 + _t7;
+            const double _t204 = _t185 + _t82 * ((_t191 * _t187 - (_t177 * _t178 + _t185 * _t190 + _t172 * _t186 - _t203 * _t173 - _t185 * _t182 - _t174 * _t202)) * _t176);
+            const double _t205 = _t192 + _t82 * ((_t192 * (_t82 * (_t176 * (_t197 + (_t201 + _t190 * _t190) - _t173 * _t202 - _t172 * _t194 - _t174 * (_t8 - _t150) - _t191 * _t191)) - _t190) + _t181 * _t195 - _t204 * _t189) * _t199);
+            const double _t206 = _t189 - _t82 * (((_t82 * (_t176 * (_t187 * _t187 - ((_t153 - _t19) * _t173 + (_t201 + _t196) + _t182 * _t182 - _t172 * _t184 - _t203 * _t174))) - _t182) * _t189 + _t204 * _t192 - _t181 * _t188) * _t199);
+            const double _t207 = _t53 - _t13;
+            const double _t208 = _t8 - _t35;
+            const double _t209 = _t19 - _t44;
+            const double _t210 = offsetgen_batch_sqrt(_t207 * _t207 + _t208 * _t208 + _t209 * _t209);
+            const double _t211 = 1.0 / _t210;
+            const double _t212 = _t26 + _t68;
+            const double _t213 = _t65 + _t24;
+            const double _t214 = _t211 * (_t212 * _t209 + (_t62 - _t30) * _t208 - _t207 * _t213) * _t34 - _t208;
+            const double _t215 = _t37 + _t72;
+            const double _t216 = _t211 * ((_t41 - _t77) * _t209 + _t207 * _t215 - _t212 * _t208) * _t34 + _t209;
+            const double _t217 = _t207 + _t211 * ((_t50 - _t80) * _t207 + _t208 * _t213 + _t215 * _t209) * _t34;
+            const double _t218 = offsetgen_batch_sqrt(_t169 * _t169 + (_t170 * _t170 + _t171 * _t171)) * 2.0 + (offsetgen_batch_sqrt(_t200 * _t200 + (_t205 * _t205 + _t206 * _t206)) + _t198 + _t175) * 2.6666666666666665 - 4.5 * (offsetgen_batch_sqrt(_t214 * _t214 + _t216 * _t216 + _t217 * _t217) + _t210);
+            out[i + j] = (((_t162 <= _t165) ? ((_t167 <= _t162) ? _t162 : _t167) : _t165) * _t33 + _t168) * (_t168 - ((_t218 <= _t165) ? ((_t167 <= _t218) ? _t218 : _t167) : _t165) * _t33);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = neovius_o4_shell(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = neovius_o4_shell(x[i], y[i], z[i], t[i]);
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
  * Batch form of neovius_o4_offsetf: out[i] = neovius_o4_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void neovius_o4_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+static inline void neovius_o4_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_cosf(_t0);
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = _t1 * _t3;
-        const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_cosf(_t5);
-        const float _t7 = _t4 * _t6 * 4.0f;
-        const float _t8 = _t7 + 3.0f * _t6;
-        const float _t9 = _t1 * 3.0f;
-        const float _t10 = _t3 * 3.0f;
-        const float _t11 = 6.28318548f * h[i];
-        const float _t12 = offsetgen_batch_sinf(_t0);
-        const float _t13 = _t12 * _t3;
-        const float _t14 = 4.0f * (_t13 * _t6);
-        const float _t15 = _t12 * 3.0f + _t14;
-        const float _t16 = offsetgen_batch_sinf(_t2);
-        const float _t17 = _t1 * _t16;
-        const float _t18 = 4.0f * (_t17 * _t6);
-        const float _t19 = _t18 + _t16 * 3.0f;
-        const float _t20 = _t19 * _t19;
-        const float _t21 = _t15 * _t15;
-        const float _t22 = offsetgen_batch_sinf(_t5);
-        const float _t23 = 4.0f * (_t4 * _t22);
-        const float _t24 = 3.0f * _t22 + _t23;
-        const float _t25 = _t24 * _t24;
-        const float _t26 = sqrtf(_t20 + _t21 + _t25);
-        const float _t27 = 1.0f / _t26;
-        const float _t28 = _t12 * _t16;
-        const float _t29 = 4.0f * (_t6 * _t28);
-        const float _t30 = _t19 * _t29;
-        const float _t31 = 4.0f * (_t13 * _t22);
-        const float _t32 = _t31 * _t24;
-        const float _t33 = _t7 + _t9;
-        const float _t34 = _t15 * _t33;
-        const float _t35 = _t27 * (_t30 + _t32 - _t34);
-        const float _t36 = _t11 * 0.333333343f;
-        const float _t37 = _t15 - _t35 * _t36;
-        const float _t38 = 4.0f * (_t17 * _t22);
-        const float _t39 = _t38 * _t19;
-        const float _t40 = _t15 * _t31;
-        const float _t41 = _t39 + _t40;
-        const float _t42 = _t8 * _t24;
-        const float _t43 = (_t41 - _t42) * _t27;
-        const float _t44 = _t43 * _t36 - _t24;
-        const float _t45 = _t15 * _t29;
-        const float _t46 = _t38 * _t24;
-        const float _t47 = _t45 + _t46;
-        const float _t48 = _t7 + _t10;
-        const float _t49 = _t19 * _t48;
-        const float _t50 = _t27 * (_t47 - _t49);
-        const float _t51 = _t19 - _t50 * _t36;
-        const float _t52 = sqrtf(_t37 * _t37 + (_t44 * _t44 + _t51 * _t51));
-        const float _t53 = 1.0f / _t52;
-        const float _t54 = _t22 * _t28 * 4.0f;
-        const float _t55 = (_t43 * _t35 - (_t19 * _t54 + _t38 * _t29 - _t24 * _t14 - _t31 * _t33 - _t31 * _t8 - _t15 * _t23)) * _t27;
-        const float _t56 = _t31 + _t55 * _t36;
-        const float _t57 = (_t43 * _t50 + (_t18 * _t24 + _t19 * _t23 + _t38 * _t8 + _t38 * _t48 - _t31 * _t29 - _t15 * _t54)) * _t27;
-        const float _t58 = _t38 + _t57 * _t36;
-        const float _t59 = _t19 * _t18;
-        const float _t60 = _t15 * _t14;
-        const float _t61 = _t38 * _t38;
-        const float _t62 = _t31 * _t31;
-        const float _t63 = (_t43 * _t43 + (_t59 + _t60 + _t25 - _t61 - _t62 - _t8 * _t8)) * _t27;
-        const float _t64 = _t53 * (_t56 * _t37 + _t51 * _t58 - (_t63 * _t36 - _t8) * _t44) * _t36 + _t44;
-        const float _t65 = _t29 * _t29;
-        const float _t66 = _t23 * _t24;
-        const float _t67 = (_t50 * _t50 - (_t65 + (_t48 * _t48 + _t61) - _t20 - _t60 - _t66)) * _t27;
-        const float _t68 = _t27 * (_t35 * _t50 + (_t29 * _t33 + (_t19 * _t14 + _t15 * _t18) + _t48 * _t29 - _t38 * _t31 - _t54 * _t24));
-        const float _t69 = _t29 + _t36 * _t68;
-        const float _t70 = _t51 + ((_t48 - _t67 * _t36) * _t51 + _t58 * _t44 - _t37 * _t69) * _t53 * _t36;
-        const float _t71 = _t27 * (_t66 + (_t59 + _t21) - _t65 - _t62 - _t33 * _t33 + _t35 * _t35);
-        const float _t72 = _t37 - _t53 * (_t37 * (_t36 * _t71 - _t33) + _t51 * _t69 - _t56 * _t44) * _t36;
-        const float _t73 = _t11 * 0.25f;
-        const float _t74 = _t50 * _t73 - _t19;
-        const float _t75 = _t15 - _t35 * _t73;
-        const float _t76 = _t43 * _t73 - _t24;
-        const float _t77 = sqrtf(_t74 * _t74 + _t75 * _t75 + _t76 * _t76);
-        const float _t78 = _t38 + _t57 * _t73;
-        const float _t79 = _t67 * _t73 - _t48;
-        const float _t80 = _t68 * _t73 + _t29;
-        const float _t81 = 1.0f / _t77;
-        const float _t82 = (_t78 * _t76 + _t74 * _t79 - _t80 * _t75) * _t81;
-        const float _t83 = _t82 * _t73 - _t74;
-        const float _t84 = _t8 - _t63 * _t73;
-        const float _t85 = _t23 * _t29;
-        const float _t86 = _t38 * _t14;
-        const float _t87 = _t18 * _t31;
-        const float _t88 = _t27 * (_t55 * _t50 + (_t43 * _t68 + _t35 * _t57) - (_t24 * _t29 + (_t85 + (_t19 * _t31 + (_t54 * _t48 + (_t15 * _t38 + (_t54 * _t8 + _t54 * _t33)) + _t86 + _t86) + _t85) + _t87 + _t87))) * _t73 - _t54;
-        const float _t89 = _t38 * _t18;
-        const float _t90 = _t31 * _t14;
-        const float _t91 = _t7 * _t24;
-        const float _t92 = _t54 * _t29 * 2.0f;
-        const float _t93 = _t8 * _t23;
-        const float _t94 = _t23 + _t27 * (_t43 * _t67 + _t50 * _t57 * 2.0f - (_t40 + (_t39 + _t39) + _t89 * 2.0f + _t90 - _t91 - _t92 - _t23 * _t48 * 2.0f - _t93)) * _t73;
-        const float _t95 = _t55 * _t73 + _t31;
-        const float _t96 = _t29 * _t14;
-        const float _t97 = _t38 * _t23;
-        const float _t98 = _t31 * _t54 * 2.0f;
-        const float _t99 = _t18 * _t48;
-        const float _t100 = _t19 * _t7;
-        const float _t101 = _t18 + (_t63 * _t50 + _t43 * _t57 * 2.0f - (_t96 + (_t46 + (_t46 + (_t97 * 2.0f + _t45))) - _t98 - _t99 - _t100 - _t18 * _t8 * 2.0f)) * _t27 * _t73;
-        const float _t102 = _t81 * (_t78 * _t74 - _t84 * _t76 - _t75 * _t95);
-        const float _t103 = _t78 + (_t84 * _t78 + _t75 * _t88 - _t94 * _t74 - _t80 * _t95 - _t101 * _t76 - _t78 * _t79 + _t102 * _t82) * _t81 * _t73;
-        const float _t104 = _t76 - _t102 * _t73;
-        const float _t105 = _t71 * _t73 - _t33;
-        const float _t106 = _t18 - _t27 * (_t96 * 2.0f + (_t46 + (_t45 + (_t97 + _t45))) - _t18 * _t33 * 2.0f - _t98 - _t99 - _t100 - _t35 * _t68 * 2.0f - _t50 * _t71) * _t73;
-        const float _t107 = _t31 * _t23;
-        const float _t108 = _t18 * _t29;
-        const float _t109 = _t33 * _t14;
-        const float _t110 = _t15 * _t7;
-        const float _t111 = _t38 * _t54 * 2.0f;
-        const float _t112 = (_t107 + (_t32 + (_t30 + _t30) + _t108 * 2.0f) - _t48 * _t14 * 2.0f - _t109 - _t110 - _t111 - _t35 * _t67 - _t50 * _t68 * 2.0f) * _t27 * _t73 - _t14;
-        const float _t113 = (_t80 * _t74 + _t76 * _t95 - _t75 * _t105) * _t81;
-        const float _t114 = _t80 - (_t80 * _t79 + _t88 * _t76 + _t80 * _t105 + _t78 * _t95 - _t75 * _t106 - _t74 * _t112 - _t113 * _t82) * _t81 * _t73;
-        const float _t115 = _t113 * _t73 + _t75;
-        const float _t116 = _t78 * _t78;
-        const float _t117 = _t80 * _t80;
-        const float _t118 = sqrtf(_t104 * _t104 + (_t115 * _t115 + _t83 * _t83));
-        const float _t119 = 1.0f / _t118;
-        const float _t120 = _t83 + (_t103 * _t104 - _t114 * _t115 - _t83 * ((_t82 * _t82 - (_t94 * _t76 + (_t116 + (_t75 * _t112 + (_t19 + _t27 * (_t67 * _t50 * 3.0f - (_t47 + _t96 * 3.0f + _t97 * 3.0f - _t49 - _t49 * 3.0f)) * _t73) * _t74) + _t79 * _t79) + _t117)) * _t81 * _t73 + _t79)) * _t119 * _t73;
-        const float _t121 = _t27 * (_t89 + (_t90 * 2.0f + (_t40 + _t41)) - _t91 - _t92 - _t23 * _t33 * 2.0f - _t93 - _t43 * _t71 - _t55 * _t35 * 2.0f) * _t73 - _t23;
-        const float _t122 = (_t63 * _t35 + _t55 * _t43 * 2.0f - (_t32 + (_t107 * 2.0f + (_t108 + _t30)) + _t32 - _t8 * _t14 * 2.0f - _t109 - _t110 - _t111)) * _t27 * _t73 + _t14;
-        const float _t123 = (_t102 * _t113 - (_t75 * _t121 + (_t105 * _t95 + _t122 * _t76) + _t88 * _t74 + _t80 * _t78 - _t84 * _t95)) * _t81 * _t73 + _t95;
-        const float _t124 = _t95 * _t95;
-        const float _t125 = _t115 + _t119 * (_t123 * _t104 - _t115 * (_t105 + (_t75 * (_t15 - (_t32 + (_t30 + _t108 * 3.0f) + 3.0f * _t107 - _t34 - _t34 * 3.0f - 3.0f * (_t35 * _t71)) * _t27 * _t73) + _t76 * _t121 - _t105 * _t105 - _t124 - _t74 * _t106 - _t117 + _t113 * _t113) * _t81 * _t73) - _t83 * _t114) * _t73;
-        const float _t126 = (_t83 * _t103 + ((_t84 + _t81 * (_t101 * _t74 + _t116 + _t124 + _t84 * _t84 - _t122 * _t75 - _t76 * (_t27 * (3.0f * _t90 + (_t89 * 3.0f + _t41) - 3.0f * _t42 - _t42 - _t63 * _t43 * 3.0f) * _t73 - _t24) - _t102 * _t102) * _t73) * _t104 + _t115 * _t123)) * _t119 * _t73 + _t104;
-        const float _t127 = _t11 * 0.5f;
-        const float _t128 = _t43 * _t127 - _t24;
-        const float _t129 = _t19 - _t50 * _t127;
-        const float _t130 = _t15 - _t35 * _t127;
-        const float _t131 = -(4.5f * (_t52 + sqrtf(_t64 * _t64 + _t70 * _t70 + _t72 * _t72)) - (_t77 + sqrtf(_t120 * _t120 + _t125 * _t125 + _t126 * _t126) + _t118) * 2.66666675f - sqrtf(_t128 * _t128 + (_t129 * _t129 + _t130 * _t130)) * 2.0f);
-        const float _t132 = fabsf(_t11);
-        const float _t133 = _t132 * 3.50000358f + _t26;
-        const float _t134 = (_t133 <= 7.00000715f) ? _t133 : 7.00000715f;
-        const float _t135 = _t26 - _t132 * 10.5000105f;
-        const float _t136 = ((-7.00000715f) <= _t135) ? _t135 : (-7.00000715f);
-        out[i] = _t8 + _t9 + _t10 - _t11 * ((_t131 <= _t134) ? ((_t136 <= _t131) ? _t131 : _t136) : _t134);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = 6.28318548f * y[i + j];
+            const float _t3 = offsetgen_batch_cosf(_t2);
+            const float _t4 = _t1 * _t3;
+            const float _t5 = 6.28318548f * x[i + j];
+            const float _t6 = offsetgen_batch_cosf(_t5);
+            const float _t7 = _t4 * _t6 * 4.0f;
+            const float _t8 = _t7 + 3.0f * _t6;
+            const float _t9 = _t1 * 3.0f;
+            const float _t10 = _t3 * 3.0f;
+            const float _t11 = 6.28318548f * h[i + j];
+            const float _t12 = offsetgen_batch_sinf(_t0);
+            const float _t13 = _t12 * _t3;
+            const float _t14 = 4.0f * (_t13 * _t6);
+            const float _t15 = _t12 * 3.0f + _t14;
+            const float _t16 = offsetgen_batch_sinf(_t2);
+            const float _t17 = _t1 * _t16;
+            const float _t18 = 4.0f * (_t17 * _t6);
+            const float _t19 = _t18 + _t16 * 3.0f;
+            const float _t20 = _t19 * _t19;
+            const float _t21 = _t15 * _t15;
+            const float _t22 = offsetgen_batch_sinf(_t5);
+            const float _t23 = 4.0f * (_t4 * _t22);
+            const float _t24 = 3.0f * _t22 + _t23;
+            const float _t25 = _t24 * _t24;
+            const float _t26 = offsetgen_batch_sqrtf(_t20 + _t21 + _t25);
+            const float _t27 = 1.0f / _t26;
+            const float _t28 = _t12 * _t16;
+            const float _t29 = 4.0f * (_t6 * _t28);
+            const float _t30 = _t19 * _t29;
+            const float _t31 = 4.0f * (_t13 * _t22);
+            const float _t32 = _t31 * _t24;
+            const float _t33 = _t7 + _t9;
+            const float _t34 = _t15 * _t33;
+            const float _t35 = _t27 * (_t30 + _t32 - _t34);
+            const float _t36 = _t11 * 0.333333343f;
+            const float _t37 = _t15 - _t35 * _t36;
+            const float _t38 = 4.0f * (_t17 * _t22);
+            const float _t39 = _t38 * _t19;
+            const float _t40 = _t15 * _t31;
+            const float _t41 = _t39 + _t40;
+            const float _t42 = _t8 * _t24;
+            const float _t43 = (_t41 - _t42) * _t27;
+            const float _t44 = _t43 * _t36 - _t24;
+            const float _t45 = _t15 * _t29;
+            const float _t46 = _t38 * _t24;
+            const float _t47 = _t45 + _t46;
+            const float _t48 = _t7 + _t10;
+            const float _t49 = _t19 * _t48;
+            const float _t50 = _t27 * (_t47 - _t49);
+            const float _t51 = _t19 - _t50 * _t36;
+            const float _t52 = offsetgen_batch_sqrtf(_t37 * _t37 + (_t44 * _t44 + _t51 * _t51));
+            const float _t53 = 1.0f / _t52;
+            const float _t54 = _t22 * _t28 * 4.0f;
+            const float _t55 = (_t43 * _t35 - (_t19 * _t54 + _t38 * _t29 - _t24 * _t14 - _t31 * _t33 - _t31 * _t8 - _t15 * _t23)) * _t27;
+            const float _t56 = _t31 + _t55 * _t36;
+            const float _t57 = (_t43 * _t50 + (_t18 * _t24 + _t19 * _t23 + _t38 * _t8 + _t38 * _t48 - _t31 * _t29 - _t15 * _t54)) * _t27;
+            const float _t58 = _t38 + _t57 * _t36;
+            const float _t59 = _t19 * _t18;
+            const float _t60 = _t15 * _t14;
+            const float _t61 = _t38 * _t38;
+            const float _t62 = _t31 * _t31;
+            const float _t63 = (_t43 * _t43 + (_t59 + _t60 + _t25 - _t61 - _t62 - _t8 * _t8)) * _t27;
+            const float _t64 = _t53 * (_t56 * _t37 + _t51 * _t58 - (_t63 * _t36 - _t8) * _t44) * _t36 + _t44;
+            const float _t65 = _t29 * _t29;
+            const float _t66 = _t23 * _t24;
+            const float _t67 = (_t50 * _t50 - (_t65 + (_t48 * _t48 + _t61) - _t20 - _t60 - _t66)) * _t27;
+            const float _t68 = _t27 * (_t35 * _t50 + (_t29 * _t33 + (_t19 * _t14 + _t15 * _t18) + _t48 * _t29 - _t38 * _t31 - _t54 * _t24));
+            const float _t69 = _t29 + _t36 * _t68;
+            const float _t70 = _t51 + ((_t48 - _t67 * _t36) * _t51 + _t58 * _t44 - _t37 * _t69) * _t53 * _t36;
+            const float _t71 = _t27 * (_t66 + (_t59 + _t21) - _t65 - _t62 - _t33 * _t33 + _t35 * _t35);
+            const float _t72 = _t37 - _t53 * (_t37 * (_t36 * _t71 - _t33) + _t51 * _t69 - _t56 * _t44) * _t36;
+            const float _t73 = _t11 * 0.25f;
+            const float _t74 = _t50 * _t73 - _t19;
+            const float _t75 = _t15 - _t35 * _t73;
+            const float _t76 = _t43 * _t73 - _t24;
+            const float _t77 = offsetgen_batch_sqrtf(_t74 * _t74 + _t75 * _t75 + _t76 * _t76);
+            const float _t78 = _t38 + _t57 * _t73;
+            const float _t79 = _t67 * _t73 - _t48;
+            const float _t80 = _t68 * _t73 + _t29;
+            const float _t81 = 1.0f / _t77;
+            const float _t82 = (_t78 * _t76 + _t74 * _t79 - _t80 * _t75) * _t81;
+            const float _t83 = _t82 * _t73 - _t74;
+            const float _t84 = _t8 - _t63 * _t73;
+            const float _t85 = _t23 * _t29;
+            const float _t86 = _t38 * _t14;
+            const float _t87 = _t18 * _t31;
+            const float _t88 = _t27 * (_t55 * _t50 + (_t43 * _t68 + _t35 * _t57) - (_t24 * _t29 + (_t85 + (_t19 * _t31 + (_t54 * _t48 + (_t15 * _t38 + (_t54 * _t8 + _t54 * _t33)) + _t86 + _t86) + _t85) + _t87 + _t87))) * _t73 - _t54;
+            const float _t89 = _t38 * _t18;
+            const float _t90 = _t31 * _t14;
+            const float _t91 = _t7 * _t24;
+            const float _t92 = _t54 * _t29 * 2.0f;
+            const float _t93 = _t8 * _t23;
+            const float _t94 = _t23 + _t27 * (_t43 * _t67 + _t50 * _t57 * 2.0f - (_t40 + (_t39 + _t39) + _t89 * 2.0f + _t90 - _t91 - _t92 - _t23 * _t48 * 2.0f - _t93)) * _t73;
+            const float _t95 = _t55 * _t73 + _t31;
+            const float _t96 = _t29 * _t14;
+            const float _t97 = _t38 * _t23;
+            const float _t98 = _t31 * _t54 * 2.0f;
+            const float _t99 = _t18 * _t48;
+            const float _t100 = _t19 * _t7;
+            const float _t101 = _t18 + (_t63 * _t50 + _t43 * _t57 * 2.0f - (_t96 + (_t46 + (_t46 + (_t97 * 2.0f + _t45))) - _t98 - _t99 - _t100 - _t18 * _t8 * 2.0f)) * _t27 * _t73;
+            const float _t102 = _t81 * (_t78 * _t74 - _t84 * _t76 - _t75 * _t95);
+            const float _t103 = _t78 + (_t84 * _t78 + _t75 * _t88 - _t94 * _t74 - _t80 * _t95 - _t101 * _t76 - _t78 * _t79 + _t102 * _t82) * _t81 * _t73;
+            const float _t104 = _t76 - _t102 * _t73;
+            const float _t105 = _t71 * _t73 - _t33;
+            const float _t106 = _t18 - _t27 * (_t96 * 2.0f + (_t46 + (_t45 + (_t97 + _t45))) - _t18 * _t33 * 2.0f - _t98 - _t99 - _t100 - _t35 * _t68 * 2.0f - _t50 * _t71) * _t73;
+            const float _t107 = _t31 * _t23;
+            const float _t108 = _t18 * _t29;
+            const float _t109 = _t33 * _t14;
+            const float _t110 = _t15 * _t7;
+            const float _t111 = _t38 * _t54 * 2.0f;
+            const float _t112 = (_t107 + (_t32 + (_t30 + _t30) + _t108 * 2.0f) - _t48 * _t14 * 2.0f - _t109 - _t110 - _t111 - _t35 * _t67 - _t50 * _t68 * 2.0f) * _t27 * _t73 - _t14;
+            const float _t113 = (_t80 * _t74 + _t76 * _t95 - _t75 * _t105) * _t81;
+            const float _t114 = _t80 - (_t80 * _t79 + _t88 * _t76 + _t80 * _t105 + _t78 * _t95 - _t75 * _t106 - _t74 * _t112 - _t113 * _t82) * _t81 * _t73;
+            const float _t115 = _t113 * _t73 + _t75;
+            const float _t116 = _t78 * _t78;
+            const float _t117 = _t80 * _t80;
+            const float _t118 = offsetgen_batch_sqrtf(_t104 * _t104 + (_t115 * _t115 + _t83 * _t83));
+            const float _t119 = 1.0f / _t118;
+            const float _t120 = _t83 + (_t103 * _t104 - _t114 * _t115 - _t83 * ((_t82 * _t82 - (_t94 * _t76 + (_t116 + (_t75 * _t112 + (_t19 + _t27 * (_t67 * _t50 * 3.0f - (_t47 + _t96 * 3.0f + _t97 * 3.0f - _t49 - _t49 * 3.0f)) * _t73) * _t74) + _t79 * _t79) + _t117)) * _t81 * _t73 + _t79)) * _t119 * _t73;
+            const float _t121 = _t27 * (_t89 + (_t90 * 2.0f + (_t40 + _t41)) - _t91 - _t92 - _t23 * _t33 * 2.0f - _t93 - _t43 * _t71 - _t55 * _t35 * 2.0f) * _t73 - _t23;
+            const float _t122 = (_t63 * _t35 + _t55 * _t43 * 2.0f - (_t32 + (_t107 * 2.0f + (_t108 + _t30)) + _t32 - _t8 * _t14 * 2.0f - _t109 - _t110 - _t111)) * _t27 * _t73 + _t14;
+            const float _t123 = (_t102 * _t113 - (_t75 * _t121 + (_t105 * _t95 + _t122 * _t76) + _t88 * _t74 + _t80 * _t78 - _t84 * _t95)) * _t81 * _t73 + _t95;
+            const float _t124 = _t95 * _t95;
+            const float _t125 = _t115 + _t119 * (_t123 * _t104 - _t115 * (_t105 + (_t75 * (_t15 - (_t32 + (_t30 + _t108 * 3.0f) + 3.0f * _t107 - _t34 - _t34 * 3.0f - 3.0f * (_t35 * _t71)) * _t27 * _t73) + _t76 * _t121 - _t105 * _t105 - _t124 - _t74 * _t106 - _t117 + _t113 * _t113) * _t81 * _t73) - _t83 * _t114) * _t73;
+            const float _t126 = (_t83 * _t103 + ((_t84 + _t81 * (_t101 * _t74 + _t116 + _t124 + _t84 * _t84 - _t122 * _t75 - _t76 * (_t27 * (3.0f * _t90 + (_t89 * 3.0f + _t41) - 3.0f * _t42 - _t42 - _t63 * _t43 * 3.0f) * _t73 - _t24) - _t102 * _t102) * _t73) * _t104 + _t115 * _t123)) * _t119 * _t73 + _t104;
+            const float _t127 = _t11 * 0.5f;
+            const float _t128 = _t43 * _t127 - _t24;
+            const float _t129 = _t19 - _t50 * _t127;
+            const float _t130 = _t15 - _t35 * _t127;
+            const float _t131 = -(4.5f * (_t52 + offsetgen_batch_sqrtf(_t64 * _t64 + _t70 * _t70 + _t72 * _t72)) - (_t77 + offsetgen_batch_sqrtf(_t120 * _t120 + _t125 * _t125 + _t126 * _t126) + _t118) * 2.66666675f - offsetgen_batch_sqrtf(_t128 * _t128 + (_t129 * _t129 + _t130 * _t130)) * 2.0f);
+            const float _t132 = fabsf(_t11);
+            const float _t133 = _t132 * 3.50000358f + _t26;
+            const float _t134 = (_t133 <= 7.00000715f) ? _t133 : 7.00000715f;
+            const float _t135 = _t26 - _t132 * 10.5000105f;
+            const float _t136 = ((-7.00000715f) <= _t135) ? _t135 : (-7.00000715f);
+            out[i + j] = _t8 + _t9 + _t10 - _t11 * ((_t131 <= _t134) ? ((_t136 <= _t131) ? _t131 : _t136) : _t134);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_o4_offsetf(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = neovius_o4_offsetf(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of neovius_o4_shellf: out[i] = neovius_o4_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void neovius_o4_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+static inline void neovius_o4_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_sinf(_t0);
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = _t1 * _t3;
-        const float _t5 = 6.28318548f * x[i];
-        const float _t6 = offsetgen_batch_cosf(_t5);
-        const float _t7 = 4.0f * (_t4 * _t6);
-        const float _t8 = _t1 * 3.0f + _t7;
-        const float _t9 = offsetgen_batch_cosf(_t0);
-        const float _t10 = offsetgen_batch_sinf(_t2);
-        const float _t11 = _t9 * _t10;
-        const float _t12 = 4.0f * (_t11 * _t6);
-        const float _t13 = _t12 + _t10 * 3.0f;
-        const float _t14 = _t13 * _t13;
-        const float _t15 = _t8 * _t8;
-        const float _t16 = offsetgen_batch_sinf(_t5);
-        const float _t17 = _t9 * _t3;
-        const float _t18 = 4.0f * (_t17 * _t16);
-        const float _t19 = 3.0f * _t16 + _t18;
-        const float _t20 = _t19 * _t19;
-        const float _t21 = sqrtf(_t14 + _t15 + _t20);
-        const float _t22 = 1.0f / _t21;
-        const float _t23 = _t1 * _t10;
-        const float _t24 = 4.0f * (_t6 * _t23);
-        const float _t25 = _t13 * _t24;
-        const float _t26 = 4.0f * (_t4 * _t16);
-        const float _t27 = _t26 * _t19;
-        const float _t28 = _t17 * _t6 * 4.0f;
-        const float _t29 = _t9 * 3.0f;
-        const float _t30 = _t28 + _t29;
-        const float _t31 = _t8 * _t30;
-        const float _t32 = _t22 * (_t25 + _t27 - _t31);
-        const float _t33 = 6.28318548f * (t[i] * 0.5f);
-        const float _t34 = _t33 * 0.333333343f;
-        const float _t35 = _t32 * _t34;
-        const float _t36 = _t8 + _t35;
-        const float _t37 = 4.0f * (_t11 * _t16);
-        const float _t38 = _t37 * _t13;
-        const float _t39 = _t8 * _t26;
-        const float _t40 = _t38 + _t39;
-        const float _t41 = _t28 + 3.0f * _t6;
-        const float _t42 = _t41 * _t19;
-        const float _t43 = (_t40 - _t42) * _t22;
-        const float _t44 = _t43 * _t34;
-        const float _t45 = _t19 + _t44;
-        const float _t46 = _t8 * _t24;
-        const float _t47 = _t37 * _t19;
-        const float _t48 = _t46 + _t47;
-        const float _t49 = _t3 * 3.0f;
-        const float _t50 = _t28 + _t49;
-        const float _t51 = _t13 * _t50;
-        const float _t52 = _t22 * (_t48 - _t51);
-        const float _t53 = _t34 * _t52;
-        const float _t54 = _t53 + _t13;
-        const float _t55 = sqrtf(_t36 * _t36 + _t45 * _t45 + _t54 * _t54);
-        const float _t56 = 1.0f / _t55;
-        const float _t57 = _t18 * _t19;
-        const float _t58 = _t13 * _t12;
-        const float _t59 = _t24 * _t24;
-        const float _t60 = _t26 * _t26;
-        const float _t61 = _t22 * (_t57 + (_t58 + _t15) - _t59 - _t60 - _t30 * _t30 + _t32 * _t32);
-        const float _t62 = _t34 * _t61;
-        const float _t63 = _t16 * _t23 * 4.0f;
-        const float _t64 = _t22 * (_t32 * _t52 + (_t24 * _t30 + (_t13 * _t7 + _t8 * _t12) + _t50 * _t24 - _t37 * _t26 - _t63 * _t19));
-        const float _t65 = _t34 * _t64;
-        const float _t66 = _t65 - _t24;
-        const float _t67 = (_t43 * _t32 - (_t13 * _t63 + _t37 * _t24 - _t19 * _t7 - _t26 * _t30 - _t26 * _t41 - _t8 * _t18)) * _t22;
-        const float _t68 = _t67 * _t34;
-        const float _t69 = _t26 - _t68;
-        const float _t70 = _t36 - _t56 * ((_t62 + _t30) * _t36 + _t54 * _t66 - _t69 * _t45) * _t34;
-        const float _t71 = (_t43 * _t52 + (_t12 * _t19 + _t13 * _t18 + _t37 * _t41 + _t37 * _t50 - _t26 * _t24 - _t8 * _t63)) * _t22;
-        const float _t72 = _t34 * _t71;
-        const float _t73 = _t37 - _t72;
-        const float _t74 = _t8 * _t7;
-        const float _t75 = _t37 * _t37;
-        const float _t76 = (_t43 * _t43 + (_t58 + _t74 + _t20 - _t75 - _t60 - _t41 * _t41)) * _t22;
-        const float _t77 = _t76 * _t34;
-        const float _t78 = _t56 * (_t54 * _t73 + _t69 * _t36 - (_t41 + _t77) * _t45) * _t34 + _t45;
-        const float _t79 = (_t52 * _t52 - (_t59 + (_t50 * _t50 + _t75) - _t14 - _t74 - _t57)) * _t22;
-        const float _t80 = _t79 * _t34;
-        const float _t81 = _t54 + _t56 * (_t73 * _t45 - _t36 * _t66 - (_t50 + _t80) * _t54) * _t34;
-        const float _t82 = _t33 * 0.25f;
-        const float _t83 = _t82 * _t32;
-        const float _t84 = _t8 + _t83;
-        const float _t85 = _t82 * _t43;
-        const float _t86 = _t19 + _t85;
-        const float _t87 = _t82 * _t52;
-        const float _t88 = _t13 + _t87;
-        const float _t89 = sqrtf(_t84 * _t84 + _t86 * _t86 + _t88 * _t88);
-        const float _t90 = 1.0f / _t89;
-        const float _t91 = _t82 * _t79;
-        const float _t92 = _t91 + _t50;
-        const float _t93 = _t82 * _t64;
-        const float _t94 = _t93 - _t24;
-        const float _t95 = _t82 * _t71;
-        const float _t96 = _t37 - _t95;
-        const float _t97 = _t90 * (_t92 * _t88 + _t84 * _t94 - _t96 * _t86);
-        const float _t98 = _t82 * _t97 - _t88;
-        const float _t99 = _t82 * _t76;
-        const float _t100 = _t41 + _t99;
-        const float _t101 = _t82 * _t67;
-        const float _t102 = _t26 - _t101;
-        const float _t103 = (_t100 * _t86 - _t84 * _t102 - _t96 * _t88) * _t90;
-        const float _t104 = _t24 * _t7;
-        const float _t105 = _t37 * _t18;
-        const float _t106 = _t26 * _t63 * 2.0f;
-        const float _t107 = _t12 * _t50;
-        const float _t108 = _t13 * _t28;
-        const float _t109 = _t82 * ((_t76 * _t52 + _t43 * _t71 * 2.0f - (_t104 + (_t47 + (_t47 + (_t105 * 2.0f + _t46))) - _t106 - _t107 - _t108 - _t12 * _t41 * 2.0f)) * _t22);
-        const float _t110 = _t12 - _t109;
-        const float _t111 = _t18 * _t24;
-        const float _t112 = _t37 * _t7;
-        const float _t113 = _t12 * _t26;
-        const float _t114 = _t82 * (_t22 * (_t67 * _t52 + (_t43 * _t64 + _t32 * _t71) - (_t19 * _t24 + (_t111 + (_t13 * _t26 + (_t63 * _t50 + (_t8 * _t37 + (_t63 * _t41 + _t63 * _t30)) + _t112 + _t112) + _t111) + _t113 + _t113))));
-        const float _t115 = _t63 + _t114;
-        const float _t116 = _t37 * _t12;
-        const float _t117 = _t26 * _t7;
-        const float _t118 = _t28 * _t19;
-        const float _t119 = _t63 * _t24 * 2.0f;
-        const float _t120 = _t41 * _t18;
-        const float _t121 = _t82 * (_t22 * (_t43 * _t79 + _t52 * _t71 * 2.0f - (_t39 + (_t38 + _t38) + _t116 * 2.0f + _t117 - _t118 - _t119 - _t18 * _t50 * 2.0f - _t120)));
-        const float _t122 = _t121 - _t18;
-        const float _t123 = _t96 - _t82 * (_t90 * (_t103 * _t97 + (_t86 * _t110 + _t96 * _t92 + _t102 * _t94 + _t96 * _t100 - _t115 * _t84 - _t88 * _t122)));
-        const float _t124 = _t82 * _t103 - _t86;
-        const float _t125 = _t82 * _t61;
-        const float _t126 = _t125 + _t30;
-        const float _t127 = _t90 * (_t88 * _t94 + _t84 * _t126 - _t102 * _t86);
-        const float _t128 = _t82 * _t127 - _t84;
-        const float _t129 = _t82 * (_t22 * (_t104 * 2.0f + (_t47 + (_t46 + (_t105 + _t46))) - _t12 * _t30 * 2.0f - _t106 - _t107 - _t108 - _t32 * _t64 * 2.0f - _t52 * _t61));
-        const float _t130 = _t12 + _t129;
-        const float _t131 = _t26 * _t18;
-        const float _t132 = _t12 * _t24;
-        const float _t133 = _t30 * _t7;
-        const float _t134 = _t8 * _t28;
-        const float _t135 = _t37 * _t63 * 2.0f;
-        const float _t136 = _t82 * ((_t131 + (_t27 + (_t25 + _t25) + _t132 * 2.0f) - _t50 * _t7 * 2.0f - _t133 - _t134 - _t135 - _t32 * _t79 - _t52 * _t64 * 2.0f) * _t22);
-        const float _t137 = _t136 + _t7;
-        const float _t138 = _t82 * (_t90 * (_t127 * _t97 - (_t92 * _t94 + _t94 * _t126 + _t96 * _t102 + _t115 * _t86 - _t130 * _t84 - _t88 * _t137))) + _t94;
-        const float _t139 = _t96 * _t96;
-        const float _t140 = _t94 * _t94;
-        const float _t141 = _t82 * (_t22 * (_t79 * _t52 * 3.0f - (_t48 + _t104 * 3.0f + _t105 * 3.0f - _t51 - _t51 * 3.0f)));
-        const float _t142 = sqrtf(_t98 * _t98 + (_t128 * _t128 + _t124 * _t124));
-        const float _t143 = 1.0f / _t142;
-        const float _t144 = _t98 + _t82 * ((_t123 * _t124 - _t128 * _t138 - _t98 * (_t92 + _t82 * ((_t97 * _t97 - (_t92 * _t92 + (_t139 + _t122 * _t86) + _t140 - _t88 * (_t13 - _t141) - _t137 * _t84)) * _t90))) * _t143);
-        const float _t145 = _t82 * (_t22 * (_t116 + (_t117 * 2.0f + (_t39 + _t40)) - _t118 - _t119 - _t18 * _t30 * 2.0f - _t120 - _t43 * _t61 - _t67 * _t32 * 2.0f));
-        const float _t146 = _t18 + _t145;
-        const float _t147 = _t82 * ((_t76 * _t32 + _t67 * _t43 * 2.0f - (_t27 + (_t131 * 2.0f + (_t132 + _t25)) + _t27 - _t41 * _t7 * 2.0f - _t133 - _t134 - _t135)) * _t22);
-        const float _t148 = _t147 - _t7;
-        const float _t149 = _t82 * ((_t103 * _t127 + (_t102 * _t126 + _t84 * _t146 + _t96 * _t94 + _t100 * _t102 - _t148 * _t86 - _t88 * _t115)) * _t90) - _t102;
-        const float _t150 = _t82 * ((_t27 + (_t25 + _t132 * 3.0f) + 3.0f * _t131 - _t31 - _t31 * 3.0f - 3.0f * (_t32 * _t61)) * _t22);
-        const float _t151 = _t102 * _t102;
-        const float _t152 = _t128 - _t82 * ((_t98 * _t138 + (_t124 * _t149 + _t128 * (_t82 * (_t90 * (_t146 * _t86 + _t130 * _t88 + _t84 * (_t8 + _t150) - _t151 - _t140 - _t126 * _t126 + _t127 * _t127)) + _t126))) * _t143);
-        const float _t153 = _t82 * (_t22 * (3.0f * _t117 + (_t116 * 3.0f + _t40) - 3.0f * _t42 - _t42 - _t76 * _t43 * 3.0f));
-        const float _t154 = _t82 * ((_t98 * _t123 - _t128 * _t149 - _t124 * (_t82 * (_t90 * (_t103 * _t103 - (_t139 + _t151 + _t100 * _t100 + _t84 * _t148 - _t88 * _t110 - _t86 * (_t153 + _t19)))) + _t100)) * _t143) + _t124;
-        const float _t155 = _t33 * 0.5f;
-        const float _t156 = _t32 * _t155;
-        const float _t157 = _t8 + _t156;
-        const float _t158 = _t43 * _t155;
-        const float _t159 = _t19 + _t158;
-        const float _t160 = _t155 * _t52;
-        const float _t161 = _t13 + _t160;
-        const float _t162 = -(4.5f * (_t55 + sqrtf(_t70 * _t70 + _t78 * _t78 + _t81 * _t81)) - (sqrtf(_t144 * _t144 + _t152 * _t152 + _t154 * _t154) + (_t89 + _t142)) * 2.66666675f - sqrtf(_t157 * _t157 + _t159 * _t159 + _t161 * _t161) * 2.0f);
-        const float _t163 = fabsf(_t33);
-        const float _t164 = _t163 * 3.50000358f + _t21;
-        const float _t165 = (_t164 <= 7.00000715f) ? _t164 : 7.00000715f;
-        const float _t166 = _t21 - _t163 * 10.5000105f;
-        const float _t167 = ((-7.00000715f) <= _t166) ? _t166 : (-7.00000715f);
-        const float _t168 = _t41 + _t29 + _t49;
-        const float _t169 = _t19 - _t158;
-        const float _t170 = _t8 - _t156;
-        const float _t171 = _t13 - _t160;
-        const float _t172 = _t13 - _t87;
-        const float _t173 = _t19 - _t85;
-        const float _t174 = _t8 - _t83;
-        const float _t175 = sqrtf(_t172 * _t172 + _t173 * _t173 + _t174 * _t174);
-        const float _t176 = 1.0f / _t175;
-        const float _t177 = _t37 + _t95;
-        const float _t178 = _t93 + _t24;
-        const float _t179 = _t91 - _t50;
-        const float _t180 = _t176 * (_t173 * _t177 + (_t174 * _t178 + _t172 * _t179));
-        const float _t181 = _t172 - _t82 * _t180;
-        const float _t182 = _t41 - _t99;
-        const float _t183 = _t121 + _t18;
-        const float _t184 = _t12 + _t109;
-        const float _t185 = _t26 + _t101;
-        const float _t186 = _t63 - _t114;
-        const float _t187 = _t176 * (_t172 * _t177 + _t185 * _t174 - _t173 * _t182);
-        const float _t188 = _t82 * (_t176 * (_t177 * _t182 + (_t172 * _t183 + _t173 * _t184) - _t179 * _t177 - _t185 * _t178 - _t186 * _t174 + _t180 * _t187)) + _t177;
-        const float _t189 = _t82 * _t187 - _t173;
-        const float _t190 = _t125 - _t30;
-        const float _t191 = _t176 * (_t172 * _t178 + _t185 * _t173 + _t174 * _t190);
-        const float _t192 = _t82 * _t191 - _t174;
-        const float _t193 = _t136 - _t7;
-        const float _t194 = _t12 - _t129;
-        const float _t195 = _t82 * ((_t180 * _t191 - (_t179 * _t178 + (_t185 * _t177 + _t178 * _t190 + _t172 * _t193) + _t186 * _t173 - _t174 * _t194)) * _t176) + _t178;
-        const float _t196 = _t177 * _t177;
-        const float _t197 = _t178 * _t178;
-        const float _t198 = sqrtf(_t181 * _t181 + _t192 * _t192 + _t189 * _t189);
-        const float _t199 = 1.0f / _t198;
-        const float _t200 = _t181 + _t82 * ((_t188 * _t189 + _t192 * _t195 - _t181 * (_t179 + _t82 * (_t176 * (_t172 * (_t13 + _t141) + _t183 * _t173 - _t196 - _t197 - _t179 * _t179 - _t193 * _t174 + _t180 * _t180)))) * _t199);
-        const float _t201 = _t185 * _t185;
-        const float _t202 = _t18 - _t145;
-        const float _t203 = _t147 + _t7;
-        const float _t204 = _t185 + _t82 * ((_t191 * _t187 - (_t177 * _t178 + _t185 * _t190 + _t172 * _t186 - _t203 * _t173 - _t185 * _t182 - _t174 * _t202)) * _t176);
-        const float _t205 = _t192 + _t82 * ((_t192 * (_t82 * (_t176 * (_t197 + (_t201 + _t190 * _t190) - _t173 * _t202 - _t172 * _t194 - _t174 * (_t8 - _t150) - _t191 * _t191)) - _t190) + _t181 * _t195 - _t204 * _t189) * _t199);
-        const float _t206 = _t189 - _t82 * (((_t82 * (_t176 * (_t187 * _t187 - ((_t153 - _t19) * _t173 + (_t201 + _t196) + _t182 * _t182 - _t172 * _t184 - _t203 * _t174))) - _t182) * _t189 + _t204 * _t192 - _t181 * _t188) * _t199);
-        const float _t207 = _t53 - _t13;
-        const float _t208 = _t8 - _t35;
-        const float _t209 = _t19 - _t44;
-        const float _t210 = sqrtf(_t207 * _t207 + _t208 * _t208 + _t209 * _t209);
-        const float _t211 = 1.0f / _t210;
-        const float _t212 = _t26 + _t68;
-        const float _t213 = _t65 + _t24;
-        const float _t214 = _t211 * (_t212 * _t209 + (_t62 - _t30) * _t208 - _t207 * _t213) * _t34 - _t208;
-        const float _t215 = _t37 + _t72;
-        const float _t216 = _t211 * ((_t41 - _t77) * _t209 + _t207 * _t215 - _t212 * _t208) * _t34 + _t209;
-        const float _t217 = _t207 + _t211 * ((_t50 - _t80) * _t207 + _t208 * _t213 + _t215 * _t209) * _t34;
-        const float _t218 = sqrtf(_t169 * _t169 + (_t170 * _t170 + _t171 * _t171)) * 2.0f + (sqrtf(_t200 * _t200 + (_t205 * _t205 + _t206 * _t206)) + _t198 + _t175) * 2.66666675f - 4.5f * (sqrtf(_t214 * _t214 + _t216 * _t216 + _t217 * _t217) + _t210);
-        out[i] = (((_t162 <= _t165) ? ((_t167 <= _t162) ? _t162 : _t167) : _t165) * _t33 + _t168) * (_t168 - ((_t218 <= _t165) ? ((_t167 <= _t218) ? _t218 : _t167) : _t165) * _t33);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_sinf(_t0);
+            const float _t2 = 6.28318548f * y[i + j];
+            const float _t3 = offsetgen_batch_cosf(_t2);
+            const float _t4 = _t1 * _t3;
+            const float _t5 = 6.28318548f * x[i + j];
+            const float _t6 = offsetgen_batch_cosf(_t5);
+            const float _t7 = 4.0f * (_t4 * _t6);
+            const float _t8 = _t1 * 3.0f + _t7;
+            const float _t9 = offsetgen_batch_cosf(_t0);
+            const float _t10 = offsetgen_batch_sinf(_t2);
+            const float _t11 = _t9 * _t10;
+            const float _t12 = 4.0f * (_t11 * _t6);
+            const float _t13 = _t12 + _t10 * 3.0f;
+            const float _t14 = _t13 * _t13;
+            const float _t15 = _t8 * _t8;
+            const float _t16 = offsetgen_batch_sinf(_t5);
+            const float _t17 = _t9 * _t3;
+            const float _t18 = 4.0f * (_t17 * _t16);
+            const float _t19 = 3.0f * _t16 + _t18;
+            const float _t20 = _t19 * _t19;
+            const float _t21 = offsetgen_batch_sqrtf(_t14 + _t15 + _t20);
+            const float _t22 = 1.0f / _t21;
+            const float _t23 = _t1 * _t10;
+            const float _t24 = 4.0f * (_t6 * _t23);
+            const float _t25 = _t13 * _t24;
+            const float _t26 = 4.0f * (_t4 * _t16);
+            const float _t27 = _t26 * _t19;
+            const float _t28 = _t17 * _t6 * 4.0f;
+            const float _t29 = _t9 * 3.0f;
+            const float _t30 = _t28 + _t29;
+            const float _t31 = _t8 * _t30;
+            const float _t32 = _t22 * (_t25 + _t27 - _t31);
+            const float _t33 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t34 = _t33 * 0.333333343f;
+            const float _t35 = _t32 * _t34;
+            const float _t36 = _t8 + _t35;
+            const float _t37 = 4.0f * (_t11 * _t16);
+            const float _t38 = _t37 * _t13;
+            const float _t39 = _t8 * _t26;
+            const float _t40 = _t38 + _t39;
+            const float _t41 = _t28 + 3.0f * _t6;
+            const float _t42 = _t41 * _t19;
+            const float _t43 = (_t40 - _t42) * _t22;
+            const float _t44 = _t43 * _t34;
+            const float _t45 = _t19 + _t44;
+            const float _t46 = _t8 * _t24;
+            const float _t47 = _t37 * _t19;
+            const float _t48 = _t46 + _t47;
+            const float _t49 = _t3 * 3.0f;
+            const float _t50 = _t28 + _t49;
+            const float _t51 = _t13 * _t50;
+            const float _t52 = _t22 * (_t48 - _t51);
+            const float _t53 = _t34 * _t52;
+            const float _t54 = _t53 + _t13;
+            const float _t55 = offsetgen_batch_sqrtf(_t36 * _t36 + _t45 * _t45 + _t54 * _t54);
+            const float _t56 = 1.0f / _t55;
+            const float _t57 = _t18 * _t19;
+            const float _t58 = _t13 * _t12;
+            const float _t59 = _t24 * _t24;
+            const float _t60 = _t26 * _t26;
+            const float _t61 = _t22 * (_t57 + (_t58 + _t15) - _t59 - _t60 - _t30 * _t30 + _t32 * _t32);
+            const float _t62 = _t34 * _t61;
+            const float _t63 = _t16 * _t23 * 4.0f;
+            const float _t64 = _t22 * (_t32 * _t52 + (_t24 * _t30 + (_t13 * _t7 + _t8 * _t12) + _t50 * _t24 - _t37 * _t26 - _t63 * _t19));
+            const float _t65 = _t34 * _t64;
+            const float _t66 = _t65 - _t24;
+            const float _t67 = (_t43 * _t32 - (_t13 * _t63 + _t37 * _t24 - _t19 * _t7 - _t26 * _t30 - _t26 * _t41 - _t8 * _t18)) * _t22;
+            const float _t68 = _t67 * _t34;
+            const float _t69 = _t26 - _t68;
+            const float _t70 = _t36 - _t56 * ((_t62 + _t30) * _t36 + _t54 * _t66 - _t69 * _t45) * _t34;
+            const float _t71 = (_t43 * _t52 + (_t12 * _t19 + _t13 * _t18 + _t37 * _t41 + _t37 * _t50 - _t26 * _t24 - _t8 * _t63)) * _t22;
+            const float _t72 = _t34 * _t71;
+            const float _t73 = _t37 - _t72;
+            const float _t74 = _t8 * _t7;
+            const float _t75 = _t37 * _t37;
+            const float _t76 = (_t43 * _t43 + (_t58 + _t74 + _t20 - _t75 - _t60 - _t41 * _t41)) * _t22;
+            const float _t77 = _t76 * _t34;
+            const float _t78 = _t56 * (_t54 * _t73 + _t69 * _t36 - (_t41 + _t77) * _t45) * _t34 + _t45;
+            const float _t79 = (_t52 * _t52 - (_t59 + (_t50 * _t50 + _t75) - _t14 - _t74 - _t57)) * _t22;
+            const float _t80 = _t79 * _t34;
+            const float _t81 = _t54 + _t56 * (_t73 * _t45 - _t36 * _t66 - (_t50 + _t80) * _t54) * _t34;
+            const float _t82 = _t33 * 0.25f;
+            const float _t83 = _t82 * _t32;
+            const float _t84 = _t8 + _t83;
+            const float _t85 = _t82 * _t43;
+            const float _t86 = _t19 + _t85;
+            const float _t87 = _t82 * _t52;
+            const float _t88 = _t13 + _t87;
+            const float _t89 = offsetgen_batch_sqrtf(_t84 * _t84 + _t86 * _t86 + _t88 * _t88);
+            const float _t90 = 1.0f / _t89;
+            const float _t91 = _t82 * _t79;
+            const float _t92 = _t91 + _t50;
+            const float _t93 = _t82 * _t64;
+            const float _t94 = _t93 - _t24;
+            const float _t95 = _t82 * _t71;
+            const float _t96 = _t37 - _t95;
+            const float _t97 = _t90 * (_t92 * _t88 + _t84 * _t94 - _t96 * _t86);
+            const float _t98 = _t82 * _t97 - _t88;
+            const float _t99 = _t82 * _t76;
+            const float _t100 = _t41 + _t99;
+            const float _t101 = _t82 * _t67;
+            const float _t102 = _t26 - _t101;
+            const float _t103 = (_t100 * _t86 - _t84 * _t102 - _t96 * _t88) * _t90;
+            const float _t104 = _t24 * _t7;
+            const float _t105 = _t37 * _t18;
+            const float _t106 = _t26 * _t63 * 2.0f;
+            const float _t107 = _t12 * _t50;
+            const float _t108 = _t13 * _t28;
+            const float _t109 = _t82 * ((_t76 * _t52 + _t43 * _t71 * 2.0f - (_t104 + (_t47 + (_t47 + (_t105 * 2.0f + _t46))) - _t106 - _t107 - _t108 - _t12 * _t41 * 2.0f)) * _t22);
+            const float _t110 = _t12 - _t109;
+            const float _t111 = _t18 * _t24;
+            const float _t112 = _t37 * _t7;
+            const float _t113 = _t12 * _t26;
+            const float _t114 = _t82 * (_t22 * (_t67 * _t52 + (_t43 * _t64 + _t32 * _t71) - (_t19 * _t24 + (_t111 + (_t13 * _t26 + (_t63 * _t50 + (_t8 * _t37 + (_t63 * _t41 + _t63 * _t30)) + _t112 + _t112) + _t111) + _t113 + _t113))));
+            const float _t115 = _t63 + _t114;
+            const float _t116 = _t37 * _t12;
+            const float _t117 = _t26 * _t7;
+            const float _t118 = _t28 * _t19;
+            const float _t119 = _t63 * _t24 * 2.0f;
+            const float _t120 = _t41 * _t18;
+            const float _t121 = _t82 * (_t22 * (_t43 * _t79 + _t52 * _t71 * 2.0f - (_t39 + (_t38 + _t38) + _t116 * 2.0f + _t117 - _t118 - _t119 - _t18 * _t50 * 2.0f - _t120)));
+            const float _t122 = _t121 - _t18;
+            const float _t123 = _t96 - _t82 * (_t90 * (_t103 * _t97 + (_t86 * _t110 + _t96 * _t92 + _t102 * _t94 + _t96 * _t100 - _t115 * _t84 - _t88 * _t122)));
+            const float _t124 = _t82 * _t103 - _t86;
+            const float _t125 = _t82 * _t61;
+            const float _t126 = _t125 + _t30;
+            const float _t127 = _t90 * (_t88 * _t94 + _t84 * _t126 - _t102 * _t86);
+            const float _t128 = _t82 * _t127 - _t84;
+            const float _t129 = _t82 * (_t22 * (_t104 * 2.0f + (_t47 + (_t46 + (_t105 + _t46))) - _t12 * _t30 * 2.0f - _t106 - _t107 - _t108 - _t32 * _t64 * 2.0f - _t52 * _t61));
+            const float _t130 = _t12 + _t129;
+            const float _t131 = _t26 * _t18;
+            const float _t132 = _t12 * _t24;
+            const float _t133 = _t30 * _t7;
+            const float _t134 = _t8 * _t28;
+            const float _t135 = _t37 * _t63 * 2.0f;
+            const float _t136 = _t82 * ((_t131 + (_t27 + (_t25 + _t25) + _t132 * 2.0f) - _t50 * _t7 * 2.0f - _t133 - _t134 - _t135 - _t32 * _t79 - _t52 * _t64 * 2.0f) * _t22);
+            const float _t137 = _t136 + _t7;
+            const float _t138 = _t82 * (_t90 * (_t127 * _t97 - (_t92 * _t94 + _t94 * _t126 + _t96 * _t102 + _t115 * _t86 - _t130 * _t84 - _t88 * _t137))) + _t94;
+            const float _t139 = _t96 * _t96;
+            const float _t140 = _t94 * _t94;
+            const float _t141 = _t82 * (_t22 * (_t79 * _t52 * 3.0f - (_t48 + _t104 * 3.0f + _t105 * 3.0f - _t51 - _t51 * 3.0f)));
+            const float _t142 = offsetgen_batch_sqrtf(_t98 * _t98 + (_t128 * _t128 + _t124 * _t124));
+            const float _t143 = 1.0f / _t142;
+            const float _t144 = _t98 + _t82 * ((_t123 * _t124 - _t128 * _t138 - _t98 * (_t92 + _t82 * ((_t97 * _t97 - (_t92 * _t92 + (_t139 + _t122 * _t86) + _t140 - _t88 * (_t13 - _t141) - _t137 * _t84)) * _t90))) * _t143);
+            const float _t145 = _t82 * (_t22 * (_t116 + (_t117 * 2.0f + (_t39 + _t40)) - _t118 - _t119 - _t18 * _t30 * 2.0f - _t120 - _t43 * _t61 - _t67 * _t32 * 2.0f));
+            const float _t146 = _t18 + _t145;
+            const float _t147 = _t82 * ((_t76 * _t32 + _t67 * _t43 * 2.0f - (_t27 + (_t131 * 2.0f + (_t132 + _t25)) + _t27 - _t41 * _t7 * 2.0f - _t133 - _t134 - _t135)) * _t22);
+            const float _t148 = _t147 - _t7;
+            const float _t149 = _t82 * ((_t103 * _t127 + (_t102 * _t126 + _t84 * _t146 + _t96 * _t94 + _t100 * _t102 - _t148 * _t86 - _t88 * _t115)) * _t90) - _t102;
+            const float _t150 = _t82 * ((_t27 + (_t25 + _t132 * 3.0f) + 3.0f * _t131 - _t31 - _t31 * 3.0f - 3.0f * (_t32 * _t61)) * _t22);
+            const float _t151 = _t102 * _t102;
+            const float _t152 = _t128 - _t82 * ((_t98 * _t138 + (_t124 * _t149 + _t128 * (_t82 * (_t90 * (_t146 * _t86 + _t130 * _t88 + _t84 * (_t8 + _t150) - _t151 - _t140 - _t126 * _t126 + _t127 * _t127)) + _t126))) * _t143);
+            const float _t153 = _t82 * (_t22 * (3.0f * _t117 + (_t116 * 3.0f + _t40) - 3.0f * _t42 - _t42 - _t76 * _t43 * 3.0f));
+            const float _t154 = _t82 * ((_t98 * _t123 - _t128 * _t149 - _t124 * (_t82 * (_t90 * (_t103 * _t103 - (_t139 + _t151 + _t100 * _t100 + _t84 * _t148 - _t88 * _t110 - _t86 * (_t153 + _t19)))) + _t100)) * _t143) + _t124;
+            const float _t155 = _t33 * 0.5f;
+            const float _t156 = _t32 * _t155;
+            const float _t157 = _t8 + _t156;
+            const float _t158 = _t43 * _t155;
+            const float _t159 = _t19 + _t158;
+            const float _t160 = _t155 * _t52;
+            const float _t161 = _t13 + _t160;
+            const float _t162 = -(4.5f * (_t55 + offsetgen_batch_sqrtf(_t70 * _t70 + _t78 * _t78 + _t81 * _t81)) - (offsetgen_batch_sqrtf(_t144 * _t144 + _t152 * _t152 + _t154 * _t154) + (_t89 + _t142)) * 2.66666675f - offsetgen_batch_sqrtf(_t157 * _t157 + _t159 * _t159 + _t161 * _t161) * 2.0f);
+            const float _t163 = fabsf(_t33);
+            const float _t164 = _t163 * 3.50000358f + _t21;
+            const float _t165 = (_t164 <= 7.00000715f) ? _t164 : 7.00000715f;
+            const float _t166 = _t21 - _t163 * 10.5000105f;
+            const float _t167 = ((-7.00000715f) <= _t166) ? _t166 : (-7.00000715f);
+            const float _t168 = _t41 + _t29 + _t49;
+            const float _t169 = _t19 - _t158;
+            const float _t170 = _t8 - _t156;
+            const float _t171 = _t13 - _t160;
+            const float _t172 = _t13 - _t87;
+            const float _t173 = _t19 - _t85;
+            const float _t174 = _t8 - _t83;
+            const float _t175 = offsetgen_batch_sqrtf(_t172 * _t172 + _t173 * _t173 + _t174 * _t174);
+            const float _t176 = 1.0f / _t175;
+            const float _t177 = _t37 + _t95;
+            const float _t178 = _t93 + _t24;
+            const float _t179 = _t91 - _t50;
+            const float _t180 = _t176 * (_t173 * _t177 + (_t174 * _t178 + _t172 * _t179));
+            const float _t181 = _t172 - _t82 * _t180;
+            const float _t182 = _t41 - _t99;
+            const float _t183 = _t121 + _t18;
+            const float _t184 = _t12 + _t109;
+            const float _t185 = _t26 + _t101;
+            const float _t186 = _t63 - _t114;
+            const float _t187 = _t176 * (_t172 * _t177 + _t185 * _t174 - _t173 * _t182);
+            const float _t188 = _t82 * (_t176 * (_t177 * _t182 + (_t172 * _t183 + _t173 * _t184) - _t179 * _t177 - _t185 * _t178 - _t186 * _t174 + _t180 * _t187)) + _t177;
+            const float _t189 = _t82 * _t187 - _t173;
+            const float _t190 = _t125 - _t30;
+            const float _t191 = _t176 * (_t172 * _t178 + _t185 * _t173 + _t174 * _t190);
+            const float _t192 = _t82 * _t191 - _t174;
+            const float _t193 = _t136 - _t7;
+            const float _t194 = _t12 - _t129;
+            const float _t195 = _t82 * ((_t180 * _t191 - (_t179 * _t178 + (_t185 * _t177 + _t178 * _t190 + _t172 * _t193) + _t186 * _t173 - _t174 * _t194)) * _t176) + _t178;
+            const float _t196 = _t177 * _t177;
+            const float _t197 = _t178 * _t178;
+            const float _t198 = offsetgen_batch_sqrtf(_t181 * _t181 + _t192 * _t192 + _t189 * _t189);
+            const float _t199 = 1.0f / _t198;
+            const float _t200 = _t181 + _t82 * ((_t188 * _t189 + _t192 * _t195 - _t181 * (_t179 + _t82 * (_t176 * (_t172 * (_t13 + _t141) + _t183 * _t173 - _t196 - _t197 - _t179 * _t179 - _t193 * _t174 + _t180 * _t180)))) * _t199);
+            const float _t201 = _t185 * _t185;
+            const float _t202 = _t18 - _t145;
+            const float _t203 = _t147 + _t7;
+            const float _t204 = _t185 + _t82 * ((_t191 * _t187 - (_t177 * _t178 + _t185 * _t190 + _t172 * _t186 - _t203 * _t173 - _t185 * _t182 - _t174 * _t202)) * _t176);
+            const float _t205 = _t192 + _t82 * ((_t192 * (_t82 * (_t176 * (_t197 + (_t201 + _t190 * _t190) - _t173 * _t202 - _t172 * _t194 - _t174 * (_t8 - _t150) - _t191 * _t191)) - _t190) + _t181 * _t195 - _t204 * _t189) * _t199);
+            const float _t206 = _t189 - _t82 * (((_t82 * (_t176 * (_t187 * _t187 - ((_t153 - _t19) * _t173 + (_t201 + _t196) + _t182 * _t182 - _t172 * _t184 - _t203 * _t174))) - _t182) * _t189 + _t204 * _t192 - _t181 * _t188) * _t199);
+            const float _t207 = _t53 - _t13;
+            const float _t208 = _t8 - _t35;
+            const float _t209 = _t19 - _t44;
+            const float _t210 = offsetgen_batch_sqrtf(_t207 * _t207 + _t208 * _t208 + _t209 * _t209);
+            const float _t211 = 1.0f / _t210;
+            const float _t212 = _t26 + _t68;
+            const float _t213 = _t65 + _t24;
+            const float _t214 = _t211 * (_t212 * _t209 + (_t62 - _t30) * _t208 - _t207 * _t213) * _t34 - _t208;
+            const float _t215 = _t37 + _t72;
+            const float _t216 = _t211 * ((_t41 - _t77) * _t209 + _t207 * _t215 - _t212 * _t208) * _t34 + _t209;
+            const float _t217 = _t207 + _t211 * ((_t50 - _t80) * _t207 + _t208 * _t213 + _t215 * _t209) * _t34;
+            const float _t218 = offsetgen_batch_sqrtf(_t169 * _t169 + (_t170 * _t170 + _t171 * _t171)) * 2.0f + (offsetgen_batch_sqrtf(_t200 * _t200 + (_t205 * _t205 + _t206 * _t206)) + _t198 + _t175) * 2.66666675f - 4.5f * (offsetgen_batch_sqrtf(_t214 * _t214 + _t216 * _t216 + _t217 * _t217) + _t210);
+            out[i + j] = (((_t162 <= _t165) ? ((_t167 <= _t162) ? _t162 : _t167) : _t165) * _t33 + _t168) * (_t168 - ((_t218 <= _t165) ? ((_t167 <= _t218) ? _t218 : _t167) : _t165) * _t33);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = neovius_o4_shellf(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = neovius_o4_shellf(x[i], y[i], z[i], t[i]);
 }
 
 

@@ -47,7 +47,7 @@ total ops after CSE:
     - normal: 401
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":3,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":131,"shell":195,"normal":401}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":3,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":131,"shell":195,"normal":401}} */
 #ifndef OFFSETGEN_SCHWARZP_O3_GLSL
 #define OFFSETGEN_SCHWARZP_O3_GLSL
 

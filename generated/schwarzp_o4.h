@@ -48,7 +48,7 @@
  *   shell    612
  *   normal   1136
  */
-/* offsetgen-metadata {"format":1,"generator":"offsetgen 0.1.0","prefix":"schwarzp_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":4,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":380,"shell":612,"normal":1136}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"schwarzp_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":4,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":380,"shell":612,"normal":1136}} */
 #ifndef OFFSETGEN_SCHWARZP_O4_H
 #define OFFSETGEN_SCHWARZP_O4_H
 
@@ -1070,24 +1070,33 @@ static inline void schwarzp_o4_normalf(float x, float y, float z, float h, float
  *   void schwarzp_o4_shellf_n(n, x, y, z, t, out)
  *
  * Each <name>_n(n, x, y, ..., out) sets out[i] = <name>(x[i], y[i], ...) for 0 <= i < n. The loop
- * body is the same straight-line program as the scalar function, written to vectorise: sin and cos
- * are branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm), clamps are
- * selects (blends), and there are no calls left for the vectoriser to stumble over.
- *   Build with:  -O3 -march=native -fno-math-errno   (GCC, Clang; -fno-math-errno lets sqrt vectorise)
- *   Optionally:  -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp: the loop then carries
- *                `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang vectorises it
- *                unasked). Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
+ * body is the same straight-line program as the scalar function, written so that GCC (12 and later)
+ * and Clang (14 and later) vectorise it with the flags you already use, -O2 or -O3 with or without
+ * -march (SSE2 to AVX-512), and without -fno-math-errno or any other change to floating-point
+ * semantics. What stands in the way of a vectoriser is replaced by plain arithmetic:
+ *   - sin and cos: branch-free polynomials (offsetgen_batch_sin/cos below, within 1.5 ulp of libm);
+ *   - sqrt: offsetgen_batch_sqrt, a bit-level seed and Newton steps (within 1 ulp of sqrt, which
+ *     cannot vectorise while it may set errno; see there for subnormal inputs);
+ *   - quadrant and special-case selection: integer masks, so there is no branch to convert;
+ *   - the points go in blocks of a fixed size: a loop with a constant trip count is what GCC
+ *     vectorises at -O2.
+ * -march=native gives wider vectors. Optionally: -fopenmp-simd -DOFFSETGEN_OPENMP_SIMD, or -fopenmp:
+ * the block loop then carries `#pragma omp simd`; otherwise `GCC ivdep` (GCC) or nothing (Clang).
+ * Define OFFSETGEN_SIMD_LOOP yourself to choose another loop pragma.
  * The results agree with the scalar functions to about 1e-15 of the field's scale: both use the
- * same sin/cos reduction and polynomials, so only the compiler's vector contraction and ordering of
- * the same operations can differ. Points whose sin/cos arguments lie beyond the
- * polynomials' range (1.0e8 in double, 8192.0 in float, in radians), and non-finite
- * inputs, are recomputed by the scalar function, so every finite input still gives the scalar
- * function's finite value. `out` must not overlap the input arrays. Other elementary functions
- * (exp, tan, ...) in a user expression stay libm calls; such loops are correct but need a vector
- * math library (e.g. -ffast-math with glibc's libmvec) to vectorise.
+ * same sin/cos reduction and polynomials, sqrt differs by at most 1 ulp, and the compiler may
+ * contract the same operations differently in vector and scalar code. Points whose sin/cos
+ * arguments lie beyond the polynomials' range (1.0e8 in double, 8192.0 in float, in
+ * radians), and non-finite inputs, are recomputed by the scalar function, and so are the last
+ * n % block points, so every finite input still gives the scalar function's finite value. `out` must
+ * not overlap the input arrays. Other elementary functions (exp, tan, ...) in a user expression stay
+ * libm calls; such loops are correct but need a vector math library (e.g. -ffast-math with glibc's
+ * libmvec) to vectorise.
  */
+#include <stdint.h>
+#include <string.h>
 #ifndef OFFSETGEN_SIMD_LOOP
-/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno sqrt calls. */
+/* Clang warns about an `omp simd` loop it cannot vectorise, as with math-errno libm calls. */
 #if (defined(_OPENMP) || defined(OFFSETGEN_OPENMP_SIMD)) && (!defined(__clang__) || defined(__NO_MATH_ERRNO__))
 #define OFFSETGEN_SIMD_LOOP _Pragma("omp simd")
 #elif defined(__GNUC__) && !defined(__clang__)
@@ -1096,577 +1105,692 @@ static inline void schwarzp_o4_normalf(float x, float y, float z, float h, float
 #define OFFSETGEN_SIMD_LOOP
 #endif
 #endif
-#ifndef OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-#define OFFSETGEN_BATCH_TRIG_DOUBLE_V1
-/* sin and cos for the batch loops: Cody-Waite reduction by pi/2 (three-part constant, exact for
- * |a| < 1.0e8) and Cephes' minimax polynomials on [-pi/4, pi/4]; within 1.5 ulp of libm. The
- * quadrant is selected arithmetically, so the whole function is straight-line code that vectorises.
- * Beyond the range the result is NaN, which makes the batch loop fall back to the scalar function.
- * A sin and a cos of the same argument share the reduction and both polynomials after inlining. */
-static inline double offsetgen_batch_sin(double a)
+#ifndef OFFSETGEN_RESTRICT
+/* `out` aliases no input: without this Clang checks overlap at run time and keeps short loops scalar. */
+#ifdef __cplusplus
+#define OFFSETGEN_RESTRICT __restrict
+#else
+#define OFFSETGEN_RESTRICT restrict
+#endif
+#endif
+/* The rounding by adding and subtracting 1.5 * 2^52 needs IEEE evaluation in the declared type. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_BATCH_RINT_
+#endif
+#ifndef OFFSETGEN_BATCH_MATH_DOUBLE_V2
+#define OFFSETGEN_BATCH_MATH_DOUBLE_V2
+/* A double's bits and back (memcpy is how C and C++ both allow it; compilers emit no call). */
+static inline uint64_t offsetgen_batch_bits(double d)
 {
+    uint64_t b;
+    memcpy(&b, &d, sizeof b);
+    return b;
+}
+
+static inline double offsetgen_batch_real(uint64_t b)
+{
+    double d;
+    memcpy(&d, &b, sizeof d);
+    return d;
+}
+
+/* All ones where b > limit, else 0 (both below 2^63): the borrow of limit - b. Integer masks like
+ * this one vectorise at every SIMD level, where a select on a comparison may not. */
+static inline uint64_t offsetgen_batch_above(uint64_t b, uint64_t limit)
+{
+    return UINT64_C(0) - ((limit - b) >> 63);
+}
+
+/* sin (cosine = 0) or cos (cosine = 1) for the batch loops: Cody-Waite reduction by pi/2
+ * (three-part constant, exact for |a| < 1.0e8) and Cephes' minimax polynomials on
+ * [-pi/4, pi/4]; within 1.5 ulp of libm, the same arithmetic as offsetgen_sin/cos. Adding 1.5 * 2^52
+ * rounds a * 2/pi to an integer whose low bits are the quadrant, which picks the polynomial and the
+ * sign through bit masks: straight-line code that vectorises. Beyond the range (or for NaN and
+ * infinite a) the result is NaN, which makes the batch loop fall back to the scalar function. A sin
+ * and a cos of the same argument share the reduction and both polynomials after inlining. */
+static inline double offsetgen_batch_sincos(double a, uint64_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const double q = rint(a * 0.63661977236758138);
+    const double t = q + 6755399441055744.0;
+#else
+    const double t = a * 0.63661977236758138 + 6755399441055744.0;
+    const double q = t - 6755399441055744.0;
+#endif
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((m > 1.5 || m < -0.5) ? -u : u) : HUGE_VAL - HUGE_VAL;  /* NaN, as a double */
+    const uint64_t quadrant = offsetgen_batch_bits(t) + cosine;     /* cos(a) = sin(a + pi/2) */
+    const uint64_t odd = UINT64_C(0) - (quadrant & 1u);             /* odd quadrants take the other polynomial */
+    const uint64_t value = (offsetgen_batch_bits(c) & odd) | (offsetgen_batch_bits(s) & ~odd);
+    const uint64_t far = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff), UINT64_C(0x4197d78400000000));
+    return offsetgen_batch_real((value ^ ((quadrant & 2u) << 62)) | (far & UINT64_C(0x7ff8000000000000)));
 }
 
-static inline double offsetgen_batch_cos(double a)
+static inline double offsetgen_batch_sin(double a) { return offsetgen_batch_sincos(a, 0u); }
+static inline double offsetgen_batch_cos(double a) { return offsetgen_batch_sincos(a, 1u); }
+
+/* sqrt for the batch loops, without errno: the bit-level seed of 1/sqrt (3.4% off), three Newton
+ * steps (2e-11), then one Newton step on sqrt itself. Equal to sqrt but in about 1e-6 of the cases
+ * where the target has FMA (the residual is then exact), within 1 ulp otherwise (13% off by one).
+ * +-0, +inf and NaN come back as sqrt returns them, negative numbers give NaN. Subnormal inputs
+ * (below 2.2e-308, which have no usable exponent for the seed) come back within 6e-156 of their
+ * square root, not to the last bit: scaling them would cost a select and two multiplications on
+ * every call, about 5% of a loop at -O2. */
+static inline double offsetgen_batch_sqrt(double a)
 {
-    const double q = rint(a * 0.63661977236758138);
-    const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
-    const double z = r * r;
-    const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
-    const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double m = q - 4.0 * rint(q * 0.25);   /* quadrant, in -2..2 */
-    const double u = (fabs(m) > 0.5 && fabs(m) < 1.5) ? s : c;
-    return (fabs(a) <= 1.0e8) ? ((m > 0.5 || m < -1.5) ? -u : u) : HUGE_VAL - HUGE_VAL;
+    const double half = 0.5 * a;
+    const uint64_t special = offsetgen_batch_above(offsetgen_batch_bits(a) & UINT64_C(0x7fffffffffffffff),
+                                                   UINT64_C(0x7fefffffffffffff));  /* inf, NaN */
+    const uint64_t negative = offsetgen_batch_bits((a < 0.0) ? offsetgen_batch_real(UINT64_C(0x7ff8000000000000)) : 0.0);
+    double y = offsetgen_batch_real(UINT64_C(0x5fe6eb50c7b537a9) - (offsetgen_batch_bits(a) >> 1));
+    double s;
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    y = y * (1.5 - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMA) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5 * y) * fma(-s, s, a);  /* exact residual: sqrt's rounding */
+#else
+    s = s + (0.5 * y) * (a - s * s);
+#endif
+    return offsetgen_batch_real((offsetgen_batch_bits(s) & ~special) | (offsetgen_batch_bits(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_DOUBLE_V1 */
-#ifndef OFFSETGEN_BATCH_TRIG_FLOAT_V1
-#define OFFSETGEN_BATCH_TRIG_FLOAT_V1
-/* Float sin and cos for the batch loops: Cody-Waite reduction by pi/2 in float (exact for
- * |a| < 8192.0) and Cephes' sinf/cosf polynomials; NaN beyond the range (scalar fallback). */
-static inline float offsetgen_batch_sinf(float a)
+#endif /* OFFSETGEN_BATCH_MATH_DOUBLE_V2 */
+#ifndef OFFSETGEN_BATCH_MATH_FLOAT_V2
+#define OFFSETGEN_BATCH_MATH_FLOAT_V2
+/* The float twins of the double helpers: 1.5 * 2^23 for the rounding (|a| < 8192.0), Cephes'
+ * sinf/cosf polynomials, two Newton steps for 1/sqrt (subnormal inputs, below 1.2e-38, come back
+ * within 2e-20 of their square root). */
+static inline uint32_t offsetgen_batch_bitsf(float f)
 {
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+static inline float offsetgen_batch_realf(uint32_t b)
+{
+    float f;
+    memcpy(&f, &b, sizeof f);
+    return f;
+}
+
+static inline uint32_t offsetgen_batch_abovef(uint32_t b, uint32_t limit)
+{
+    return 0u - ((limit - b) >> 31);
+}
+
+static inline float offsetgen_batch_sincosf(float a, uint32_t cosine)
+{
+#ifdef OFFSETGEN_BATCH_RINT_
     const float q = rintf(a * 0.636619772f);
+    const float t = q + 12582912.0f;
+#else
+    const float t = a * 0.636619772f + 12582912.0f;
+    const float q = t - 12582912.0f;
+#endif
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? c : s;
-    return (fabsf(a) <= 8192.0f) ? ((m > 1.5f || m < -0.5f) ? -u : u) : NAN;
+    const uint32_t quadrant = offsetgen_batch_bitsf(t) + cosine;
+    const uint32_t odd = 0u - (quadrant & 1u);
+    const uint32_t value = (offsetgen_batch_bitsf(c) & odd) | (offsetgen_batch_bitsf(s) & ~odd);
+    const uint32_t far = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x46000000u);
+    return offsetgen_batch_realf((value ^ ((quadrant & 2u) << 30)) | (far & 0x7fc00000u));
 }
 
-static inline float offsetgen_batch_cosf(float a)
+static inline float offsetgen_batch_sinf(float a) { return offsetgen_batch_sincosf(a, 0u); }
+static inline float offsetgen_batch_cosf(float a) { return offsetgen_batch_sincosf(a, 1u); }
+
+static inline float offsetgen_batch_sqrtf(float a)
 {
-    const float q = rintf(a * 0.636619772f);
-    const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
-    const float z = r * r;
-    const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
-    const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float m = q - 4.0f * rintf(q * 0.25f);   /* quadrant, in -2..2 */
-    const float u = (fabsf(m) > 0.5f && fabsf(m) < 1.5f) ? s : c;
-    return (fabsf(a) <= 8192.0f) ? ((m > 0.5f || m < -1.5f) ? -u : u) : NAN;
+    const float half = 0.5f * a;
+    const uint32_t special = offsetgen_batch_abovef(offsetgen_batch_bitsf(a) & 0x7fffffffu, 0x7f7fffffu);
+    const uint32_t negative = offsetgen_batch_bitsf((a < 0.0f) ? offsetgen_batch_realf(0x7fc00000u) : 0.0f);
+    float y = offsetgen_batch_realf(0x5f375a86u - (offsetgen_batch_bitsf(a) >> 1));
+    float s;
+    y = y * (1.5f - (half * y) * y);
+    y = y * (1.5f - (half * y) * y);
+    s = a * y;
+#if defined(__FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+    s = s + (0.5f * y) * fmaf(-s, s, a);
+#else
+    s = s + (0.5f * y) * (a - s * s);
+#endif
+    return offsetgen_batch_realf((offsetgen_batch_bitsf(s) & ~special) | (offsetgen_batch_bitsf(a) & special) | negative);
 }
-#endif /* OFFSETGEN_BATCH_TRIG_FLOAT_V1 */
+#endif /* OFFSETGEN_BATCH_MATH_FLOAT_V2 */
 
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
  * Batch form of schwarzp_o4_offset: out[i] = schwarzp_o4_offset(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void schwarzp_o4_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *out)
+static inline void schwarzp_o4_offset_n(size_t n, const double *x, const double *y, const double *z, const double *h, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = z[i] * 6.2831853071795862;
-        const double _t1 = offsetgen_batch_cos(_t0);
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = 6.2831853071795862 * x[i];
-        const double _t5 = offsetgen_batch_cos(_t4);
-        const double _t6 = 6.2831853071795862 * h[i];
-        const double _t7 = offsetgen_batch_sin(_t2);
-        const double _t8 = _t3 * _t7;
-        const double _t9 = offsetgen_batch_sin(_t4);
-        const double _t10 = _t9 * _t9;
-        const double _t11 = offsetgen_batch_sin(_t0);
-        const double _t12 = _t11 * _t11;
-        const double _t13 = _t7 * _t7;
-        const double _t14 = sqrt(_t10 + _t12 + _t13);
-        const double _t15 = 1.0 / _t14;
-        const double _t16 = _t8 * _t15;
-        const double _t17 = _t6 * 0.33333333333333331;
-        const double _t18 = _t16 * _t17 + _t7;
-        const double _t19 = _t9 * _t5;
-        const double _t20 = _t19 * _t15;
-        const double _t21 = _t20 * _t17 + _t9;
-        const double _t22 = _t1 * _t11;
-        const double _t23 = _t22 * _t15;
-        const double _t24 = _t11 + _t23 * _t17;
-        const double _t25 = sqrt(_t18 * _t18 + _t21 * _t21 + _t24 * _t24);
-        const double _t26 = 1.0 / _t25;
-        const double _t27 = _t20 * _t16 * _t15;
-        const double _t28 = _t27 * _t17;
-        const double _t29 = _t23 * _t16 * _t15;
-        const double _t30 = _t29 * _t17;
-        const double _t31 = (_t16 * _t16 - (_t3 * _t3 - _t13)) * _t15;
-        const double _t32 = _t26 * (_t21 * _t28 + _t30 * _t24 - (_t3 - _t31 * _t17) * _t18) * _t17 - _t18;
-        const double _t33 = _t20 * _t23 * _t15;
-        const double _t34 = _t33 * _t17;
-        const double _t35 = (_t10 - _t5 * _t5 + _t20 * _t20) * _t15;
-        const double _t36 = _t21 - _t26 * (_t24 * _t34 + (_t21 * (_t35 * _t17 - _t5) + _t28 * _t18)) * _t17;
-        const double _t37 = (_t23 * _t23 - (_t1 * _t1 - _t12)) * _t15;
-        const double _t38 = _t24 - _t26 * (_t21 * _t34 + _t30 * _t18 - _t24 * (_t1 - _t37 * _t17)) * _t17;
-        const double _t39 = _t6 * 0.25;
-        const double _t40 = _t20 * _t39 + _t9;
-        const double _t41 = _t16 * _t39 + _t7;
-        const double _t42 = _t11 + _t23 * _t39;
-        const double _t43 = sqrt(_t40 * _t40 + _t41 * _t41 + _t42 * _t42);
-        const double _t44 = _t3 - _t31 * _t39;
-        const double _t45 = _t29 * _t39;
-        const double _t46 = _t27 * _t39;
-        const double _t47 = 1.0 / _t43;
-        const double _t48 = (_t44 * _t41 - _t42 * _t45 - _t40 * _t46) * _t47;
-        const double _t49 = _t48 * _t39 + _t41;
-        const double _t50 = _t33 * _t39;
-        const double _t51 = _t1 - _t37 * _t39;
-        const double _t52 = _t47 * (_t45 * _t41 + _t50 * _t40 - _t42 * _t51);
-        const double _t53 = _t42 - _t52 * _t39;
-        const double _t54 = _t35 * _t39 - _t5;
-        const double _t55 = _t47 * (_t54 * _t40 + _t41 * _t46 + _t50 * _t42);
-        const double _t56 = _t55 * _t39 - _t40;
-        const double _t57 = sqrt(_t49 * _t49 + _t53 * _t53 + _t56 * _t56);
-        const double _t58 = 1.0 / _t57;
-        const double _t59 = _t50 * _t50;
-        const double _t60 = (_t37 * _t16 + _t29 * _t23 * 2.0) * _t15 * _t39;
-        const double _t61 = _t45 * _t45;
-        const double _t62 = (_t33 * _t23 * 2.0 + _t20 * _t37) * _t15 * _t39;
-        const double _t63 = (_t35 * _t23 + _t20 * _t33 * 2.0) * _t15 * _t39;
-        const double _t64 = (_t20 * _t29 + (_t23 * _t27 + _t33 * _t16)) * _t15 * _t39;
-        const double _t65 = _t50 - (_t63 * _t40 + (_t45 * _t46 + (_t50 * _t54 + (_t64 * _t41 + _t42 * _t62))) - _t50 * _t51 - _t55 * _t52) * _t47 * _t39;
-        const double _t66 = (_t31 * _t23 + _t29 * _t16 * 2.0) * _t15 * _t39;
-        const double _t67 = _t47 * (_t52 * _t48 + (_t50 * _t46 + _t66 * _t41 + _t42 * _t60 + _t64 * _t40 - _t45 * _t44 - _t45 * _t51)) * _t39 - _t45;
-        const double _t68 = _t58 * (((_t52 * _t52 - (_t59 + (_t60 * _t41 + (_t42 * ((_t37 * _t23 * 3.0 - (_t22 + _t22 * 3.0)) * _t15 * _t39 - _t11) + (_t61 + _t51 * _t51))) + _t62 * _t40)) * _t47 * _t39 - _t51) * _t53 - _t65 * _t56 - _t49 * _t67) * _t39 - _t53;
-        const double _t69 = _t46 * _t46;
-        const double _t70 = (_t16 * _t27 * 2.0 + _t20 * _t31) * _t15 * _t39;
-        const double _t71 = (_t20 * _t27 * 2.0 + _t35 * _t16) * _t15 * _t39;
-        const double _t72 = _t47 * (_t64 * _t42 + (_t54 * _t46 + _t50 * _t45 + _t71 * _t40 + _t70 * _t41) - _t44 * _t46 + _t55 * _t48) * _t39 - _t46;
-        const double _t73 = _t49 + _t58 * (_t67 * _t53 + _t49 * ((_t42 * _t66 + (_t69 + _t61 + _t70 * _t40) + _t44 * _t44 - (_t7 - (_t31 * _t16 * 3.0 - (_t8 + _t8 * 3.0)) * _t15 * _t39) * _t41 - _t48 * _t48) * _t47 * _t39 + _t44) - _t72 * _t56) * _t39;
-        const double _t74 = _t58 * (_t49 * _t72 + ((_t55 * _t55 - (_t54 * _t54 + (_t59 + (_t71 * _t41 + (_t42 * _t63 + _t69) + ((3.0 * (_t20 * _t35) - (3.0 * _t19 + _t19)) * _t15 * _t39 - _t9) * _t40)))) * _t47 * _t39 + _t54) * _t56 - _t65 * _t53) * _t39 - _t56;
-        const double _t75 = _t6 * 0.5;
-        const double _t76 = _t7 + _t16 * _t75;
-        const double _t77 = _t20 * _t75 + _t9;
-        const double _t78 = _t23 * _t75 + _t11;
-        const double _t79 = -(4.5 * (_t25 + sqrt(_t32 * _t32 + _t36 * _t36 + _t38 * _t38)) - (_t43 + (_t57 + sqrt(_t68 * _t68 + (_t73 * _t73 + _t74 * _t74)))) * 2.6666666666666665 - sqrt(_t76 * _t76 + _t77 * _t77 + _t78 * _t78) * 2.0);
-        const double _t80 = fabs(_t6);
-        const double _t81 = _t14 + _t80 * 0.50000050630325232;
-        const double _t82 = (_t81 <= 1.7320525396196846) ? _t81 : 1.7320525396196846;
-        const double _t83 = _t14 - _t80 * 1.5000015189097571;
-        const double _t84 = ((-1.7320525396196846) <= _t83) ? _t83 : (-1.7320525396196846);
-        out[i] = _t1 + _t3 + _t5 - _t6 * ((_t79 <= _t82) ? ((_t84 <= _t79) ? _t79 : _t84) : _t82);
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = 6.2831853071795862 * y[i + j];
+            const double _t3 = offsetgen_batch_cos(_t2);
+            const double _t4 = 6.2831853071795862 * x[i + j];
+            const double _t5 = offsetgen_batch_cos(_t4);
+            const double _t6 = 6.2831853071795862 * h[i + j];
+            const double _t7 = offsetgen_batch_sin(_t2);
+            const double _t8 = _t3 * _t7;
+            const double _t9 = offsetgen_batch_sin(_t4);
+            const double _t10 = _t9 * _t9;
+            const double _t11 = offsetgen_batch_sin(_t0);
+            const double _t12 = _t11 * _t11;
+            const double _t13 = _t7 * _t7;
+            const double _t14 = offsetgen_batch_sqrt(_t10 + _t12 + _t13);
+            const double _t15 = 1.0 / _t14;
+            const double _t16 = _t8 * _t15;
+            const double _t17 = _t6 * 0.33333333333333331;
+            const double _t18 = _t16 * _t17 + _t7;
+            const double _t19 = _t9 * _t5;
+            const double _t20 = _t19 * _t15;
+            const double _t21 = _t20 * _t17 + _t9;
+            const double _t22 = _t1 * _t11;
+            const double _t23 = _t22 * _t15;
+            const double _t24 = _t11 + _t23 * _t17;
+            const double _t25 = offsetgen_batch_sqrt(_t18 * _t18 + _t21 * _t21 + _t24 * _t24);
+            const double _t26 = 1.0 / _t25;
+            const double _t27 = _t20 * _t16 * _t15;
+            const double _t28 = _t27 * _t17;
+            const double _t29 = _t23 * _t16 * _t15;
+            const double _t30 = _t29 * _t17;
+            const double _t31 = (_t16 * _t16 - (_t3 * _t3 - _t13)) * _t15;
+            const double _t32 = _t26 * (_t21 * _t28 + _t30 * _t24 - (_t3 - _t31 * _t17) * _t18) * _t17 - _t18;
+            const double _t33 = _t20 * _t23 * _t15;
+            const double _t34 = _t33 * _t17;
+            const double _t35 = (_t10 - _t5 * _t5 + _t20 * _t20) * _t15;
+            const double _t36 = _t21 - _t26 * (_t24 * _t34 + (_t21 * (_t35 * _t17 - _t5) + _t28 * _t18)) * _t17;
+            const double _t37 = (_t23 * _t23 - (_t1 * _t1 - _t12)) * _t15;
+            const double _t38 = _t24 - _t26 * (_t21 * _t34 + _t30 * _t18 - _t24 * (_t1 - _t37 * _t17)) * _t17;
+            const double _t39 = _t6 * 0.25;
+            const double _t40 = _t20 * _t39 + _t9;
+            const double _t41 = _t16 * _t39 + _t7;
+            const double _t42 = _t11 + _t23 * _t39;
+            const double _t43 = offsetgen_batch_sqrt(_t40 * _t40 + _t41 * _t41 + _t42 * _t42);
+            const double _t44 = _t3 - _t31 * _t39;
+            const double _t45 = _t29 * _t39;
+            const double _t46 = _t27 * _t39;
+            const double _t47 = 1.0 / _t43;
+            const double _t48 = (_t44 * _t41 - _t42 * _t45 - _t40 * _t46) * _t47;
+            const double _t49 = _t48 * _t39 + _t41;
+            const double _t50 = _t33 * _t39;
+            const double _t51 = _t1 - _t37 * _t39;
+            const double _t52 = _t47 * (_t45 * _t41 + _t50 * _t40 - _t42 * _t51);
+            const double _t53 = _t42 - _t52 * _t39;
+            const double _t54 = _t35 * _t39 - _t5;
+            const double _t55 = _t47 * (_t54 * _t40 + _t41 * _t46 + _t50 * _t42);
+            const double _t56 = _t55 * _t39 - _t40;
+            const double _t57 = offsetgen_batch_sqrt(_t49 * _t49 + _t53 * _t53 + _t56 * _t56);
+            const double _t58 = 1.0 / _t57;
+            const double _t59 = _t50 * _t50;
+            const double _t60 = (_t37 * _t16 + _t29 * _t23 * 2.0) * _t15 * _t39;
+            const double _t61 = _t45 * _t45;
+            const double _t62 = (_t33 * _t23 * 2.0 + _t20 * _t37) * _t15 * _t39;
+            const double _t63 = (_t35 * _t23 + _t20 * _t33 * 2.0) * _t15 * _t39;
+            const double _t64 = (_t20 * _t29 + (_t23 * _t27 + _t33 * _t16)) * _t15 * _t39;
+            const double _t65 = _t50 - (_t63 * _t40 + (_t45 * _t46 + (_t50 * _t54 + (_t64 * _t41 + _t42 * _t62))) - _t50 * _t51 - _t55 * _t52) * _t47 * _t39;
+            const double _t66 = (_t31 * _t23 + _t29 * _t16 * 2.0) * _t15 * _t39;
+            const double _t67 = _t47 * (_t52 * _t48 + (_t50 * _t46 + _t66 * _t41 + _t42 * _t60 + _t64 * _t40 - _t45 * _t44 - _t45 * _t51)) * _t39 - _t45;
+            const double _t68 = _t58 * (((_t52 * _t52 - (_t59 + (_t60 * _t41 + (_t42 * ((_t37 * _t23 * 3.0 - (_t22 + _t22 * 3.0)) * _t15 * _t39 - _t11) + (_t61 + _t51 * _t51))) + _t62 * _t40)) * _t47 * _t39 - _t51) * _t53 - _t65 * _t56 - _t49 * _t67) * _t39 - _t53;
+            const double _t69 = _t46 * _t46;
+            const double _t70 = (_t16 * _t27 * 2.0 + _t20 * _t31) * _t15 * _t39;
+            const double _t71 = (_t20 * _t27 * 2.0 + _t35 * _t16) * _t15 * _t39;
+            const double _t72 = _t47 * (_t64 * _t42 + (_t54 * _t46 + _t50 * _t45 + _t71 * _t40 + _t70 * _t41) - _t44 * _t46 + _t55 * _t48) * _t39 - _t46;
+            const double _t73 = _t49 + _t58 * (_t67 * _t53 + _t49 * ((_t42 * _t66 + (_t69 + _t61 + _t70 * _t40) + _t44 * _t44 - (_t7 - (_t31 * _t16 * 3.0 - (_t8 + _t8 * 3.0)) * _t15 * _t39) * _t41 - _t48 * _t48) * _t47 * _t39 + _t44) - _t72 * _t56) * _t39;
+            const double _t74 = _t58 * (_t49 * _t72 + ((_t55 * _t55 - (_t54 * _t54 + (_t59 + (_t71 * _t41 + (_t42 * _t63 + _t69) + ((3.0 * (_t20 * _t35) - (3.0 * _t19 + _t19)) * _t15 * _t39 - _t9) * _t40)))) * _t47 * _t39 + _t54) * _t56 - _t65 * _t53) * _t39 - _t56;
+            const double _t75 = _t6 * 0.5;
+            const double _t76 = _t7 + _t16 * _t75;
+            const double _t77 = _t20 * _t75 + _t9;
+            const double _t78 = _t23 * _t75 + _t11;
+            const double _t79 = -(4.5 * (_t25 + offsetgen_batch_sqrt(_t32 * _t32 + _t36 * _t36 + _t38 * _t38)) - (_t43 + (_t57 + offsetgen_batch_sqrt(_t68 * _t68 + (_t73 * _t73 + _t74 * _t74)))) * 2.6666666666666665 - offsetgen_batch_sqrt(_t76 * _t76 + _t77 * _t77 + _t78 * _t78) * 2.0);
+            const double _t80 = fabs(_t6);
+            const double _t81 = _t14 + _t80 * 0.50000050630325232;
+            const double _t82 = (_t81 <= 1.7320525396196846) ? _t81 : 1.7320525396196846;
+            const double _t83 = _t14 - _t80 * 1.5000015189097571;
+            const double _t84 = ((-1.7320525396196846) <= _t83) ? _t83 : (-1.7320525396196846);
+            out[i + j] = _t1 + _t3 + _t5 - _t6 * ((_t79 <= _t82) ? ((_t84 <= _t79) ? _t79 : _t84) : _t82);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o4_offset(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = schwarzp_o4_offset(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of schwarzp_o4_shell: out[i] = schwarzp_o4_shell(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void schwarzp_o4_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *out)
+static inline void schwarzp_o4_shell_n(size_t n, const double *x, const double *y, const double *z, const double *t, double *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const double _t0 = 6.2831853071795862 * (t[i] * 0.5);
-        const double _t1 = _t0 * 0.25;
-        const double _t2 = 6.2831853071795862 * y[i];
-        const double _t3 = offsetgen_batch_cos(_t2);
-        const double _t4 = offsetgen_batch_sin(_t2);
-        const double _t5 = _t3 * _t4;
-        const double _t6 = 6.2831853071795862 * x[i];
-        const double _t7 = offsetgen_batch_sin(_t6);
-        const double _t8 = _t7 * _t7;
-        const double _t9 = z[i] * 6.2831853071795862;
-        const double _t10 = offsetgen_batch_sin(_t9);
-        const double _t11 = _t10 * _t10;
-        const double _t12 = _t4 * _t4;
-        const double _t13 = sqrt(_t8 + _t11 + _t12);
-        const double _t14 = 1.0 / _t13;
-        const double _t15 = _t5 * _t14;
-        const double _t16 = _t1 * _t15;
-        const double _t17 = _t16 - _t4;
-        const double _t18 = offsetgen_batch_cos(_t6);
-        const double _t19 = _t7 * _t18;
-        const double _t20 = _t19 * _t14;
-        const double _t21 = _t1 * _t20;
-        const double _t22 = _t7 - _t21;
-        const double _t23 = offsetgen_batch_cos(_t9);
-        const double _t24 = _t23 * _t10;
-        const double _t25 = _t24 * _t14;
-        const double _t26 = _t1 * _t25;
-        const double _t27 = _t10 - _t26;
-        const double _t28 = sqrt(_t17 * _t17 + _t22 * _t22 + _t27 * _t27);
-        const double _t29 = 1.0 / _t28;
-        const double _t30 = _t25 * _t15 * _t14;
-        const double _t31 = _t1 * _t30;
-        const double _t32 = (_t25 * _t25 - (_t23 * _t23 - _t11)) * _t14;
-        const double _t33 = _t1 * _t32;
-        const double _t34 = _t23 + _t33;
-        const double _t35 = _t20 * _t25 * _t14;
-        const double _t36 = _t1 * _t35;
-        const double _t37 = _t29 * (_t31 * _t17 - _t27 * _t34 - _t22 * _t36);
-        const double _t38 = _t27 + _t1 * _t37;
-        const double _t39 = _t20 * _t15 * _t14;
-        const double _t40 = _t1 * _t39;
-        const double _t41 = (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14;
-        const double _t42 = _t1 * _t41;
-        const double _t43 = _t3 + _t42;
-        const double _t44 = _t29 * (_t27 * _t31 + _t22 * _t40 - _t43 * _t17);
-        const double _t45 = _t1 * _t44 + _t17;
-        const double _t46 = (_t8 - _t18 * _t18 + _t20 * _t20) * _t14;
-        const double _t47 = _t1 * _t46;
-        const double _t48 = _t47 + _t18;
-        const double _t49 = _t29 * (_t48 * _t22 + _t27 * _t36 - _t40 * _t17);
-        const double _t50 = _t1 * _t49 - _t22;
-        const double _t51 = sqrt(_t38 * _t38 + _t45 * _t45 + _t50 * _t50);
-        const double _t52 = 1.0 / _t51;
-        const double _t53 = _t1 * ((_t41 * _t25 + _t30 * _t15 * 2.0) * _t14);
-        const double _t54 = _t40 * _t36;
-        const double _t55 = _t1 * ((_t20 * _t30 + (_t25 * _t39 + _t35 * _t15)) * _t14);
-        const double _t56 = _t1 * ((_t32 * _t15 + _t30 * _t25 * 2.0) * _t14);
-        const double _t57 = _t31 - _t1 * (_t29 * (_t53 * _t17 + _t31 * _t34 + _t54 + _t43 * _t31 - _t55 * _t22 - _t56 * _t27 + _t37 * _t44));
-        const double _t58 = _t1 * ((_t41 * _t15 * 3.0 - (_t5 + _t5 * 3.0)) * _t14);
-        const double _t59 = _t40 * _t40;
-        const double _t60 = _t31 * _t31;
-        const double _t61 = _t1 * ((_t15 * _t39 * 2.0 + _t20 * _t41) * _t14);
-        const double _t62 = _t31 * _t36;
-        const double _t63 = _t1 * ((_t20 * _t39 * 2.0 + _t46 * _t15) * _t14);
-        const double _t64 = _t1 * (_t29 * (_t44 * _t49 - (_t48 * _t40 + _t17 * _t61 + _t43 * _t40 + _t62 - _t55 * _t27 - _t63 * _t22))) + _t40;
-        const double _t65 = _t45 + _t1 * (_t52 * (_t38 * _t57 - _t45 * (_t43 + _t1 * (_t29 * (_t44 * _t44 - (_t17 * (_t4 + _t58) + (_t43 * _t43 + (_t59 + _t60)) - _t53 * _t27 - _t22 * _t61)))) - _t64 * _t50));
-        const double _t66 = _t36 * _t36;
-        const double _t67 = _t1 * ((3.0 * (_t20 * _t46) - (3.0 * _t19 + _t19)) * _t14);
-        const double _t68 = _t1 * ((_t46 * _t25 + _t20 * _t35 * 2.0) * _t14);
-        const double _t69 = _t31 * _t40;
-        const double _t70 = _t1 * ((_t35 * _t25 * 2.0 + _t20 * _t32) * _t14);
-        const double _t71 = _t1 * (_t29 * (_t34 * _t36 + _t48 * _t36 + _t55 * _t17 + _t69 - _t27 * _t70 - _t68 * _t22 + _t37 * _t49)) - _t36;
-        const double _t72 = _t50 - _t1 * (_t52 * ((_t48 - _t1 * (_t29 * (_t59 + _t66 + _t63 * _t17 + _t48 * _t48 - (_t7 + _t67) * _t22 - _t68 * _t27 - _t49 * _t49))) * _t50 + (_t38 * _t71 + _t64 * _t45)));
-        const double _t73 = _t1 * ((_t32 * _t25 * 3.0 - (_t24 + _t24 * 3.0)) * _t14);
-        const double _t74 = _t38 - _t1 * (_t52 * (_t38 * (_t34 + _t1 * (_t29 * ((_t10 + _t73) * _t27 + _t70 * _t22 - _t60 - _t34 * _t34 - _t56 * _t17 - _t66 + _t37 * _t37))) + _t50 * _t71 - _t45 * _t57));
-        const double _t75 = _t0 * 0.5;
-        const double _t76 = _t75 * _t15;
-        const double _t77 = _t76 - _t4;
-        const double _t78 = _t20 * _t75;
-        const double _t79 = _t78 - _t7;
-        const double _t80 = _t75 * _t25;
-        const double _t81 = _t10 - _t80;
-        const double _t82 = _t0 * 0.33333333333333331;
-        const double _t83 = _t30 * _t82;
-        const double _t84 = _t15 * _t82;
-        const double _t85 = _t4 - _t84;
-        const double _t86 = _t32 * _t82;
-        const double _t87 = _t25 * _t82;
-        const double _t88 = _t10 - _t87;
-        const double _t89 = _t35 * _t82;
-        const double _t90 = _t20 * _t82;
-        const double _t91 = _t90 - _t7;
-        const double _t92 = sqrt(_t85 * _t85 + _t91 * _t91 + _t88 * _t88);
-        const double _t93 = 1.0 / _t92;
-        const double _t94 = (_t83 * _t85 + (_t86 + _t23) * _t88 - _t89 * _t91) * _t93 * _t82 - _t88;
-        const double _t95 = _t41 * _t82;
-        const double _t96 = _t39 * _t82;
-        const double _t97 = _t82 * ((_t83 * _t88 + (_t3 + _t95) * _t85 - _t96 * _t91) * _t93) - _t85;
-        const double _t98 = _t46 * _t82;
-        const double _t99 = (_t89 * _t88 + _t96 * _t85 - (_t98 + _t18) * _t91) * _t93 * _t82 + _t91;
-        const double _t100 = (_t28 + _t51 + sqrt(_t65 * _t65 + _t72 * _t72 + _t74 * _t74)) * 2.6666666666666665 + 2.0 * sqrt(_t77 * _t77 + _t79 * _t79 + _t81 * _t81) - 4.5 * (sqrt(_t94 * _t94 + _t97 * _t97 + _t99 * _t99) + _t92);
-        const double _t101 = fabs(_t0);
-        const double _t102 = _t101 * 0.50000050630325232 + _t13;
-        const double _t103 = (_t102 <= 1.7320525396196846) ? _t102 : 1.7320525396196846;
-        const double _t104 = _t13 - _t101 * 1.5000015189097571;
-        const double _t105 = ((-1.7320525396196846) <= _t104) ? _t104 : (-1.7320525396196846);
-        const double _t106 = _t23 + _t3 + _t18;
-        const double _t107 = _t4 + _t84;
-        const double _t108 = _t10 + _t87;
-        const double _t109 = _t90 + _t7;
-        const double _t110 = sqrt(_t107 * _t107 + _t108 * _t108 + _t109 * _t109);
-        const double _t111 = 1.0 / _t110;
-        const double _t112 = _t82 * (((_t86 - _t23) * _t108 + _t83 * _t107 + _t89 * _t109) * _t111) - _t108;
-        const double _t113 = _t107 - _t111 * (_t83 * _t108 + _t96 * _t109 - (_t3 - _t95) * _t107) * _t82;
-        const double _t114 = (_t89 * _t108 + (_t98 - _t18) * _t109 + _t96 * _t107) * _t111 * _t82 - _t109;
-        const double _t115 = _t78 + _t7;
-        const double _t116 = _t10 + _t80;
-        const double _t117 = _t76 + _t4;
-        const double _t118 = _t16 + _t4;
-        const double _t119 = _t10 + _t26;
-        const double _t120 = _t7 + _t21;
-        const double _t121 = sqrt(_t118 * _t118 + (_t119 * _t119 + _t120 * _t120));
-        const double _t122 = 1.0 / _t121;
-        const double _t123 = _t3 - _t42;
-        const double _t124 = _t122 * (_t123 * _t118 - _t40 * _t120 - _t31 * _t119);
-        const double _t125 = _t1 * _t124 + _t118;
-        const double _t126 = _t47 - _t18;
-        const double _t127 = (_t40 * _t118 + _t36 * _t119 + _t126 * _t120) * _t122;
-        const double _t128 = _t1 * _t127 - _t120;
-        const double _t129 = _t23 - _t33;
-        const double _t130 = _t122 * (_t129 * _t119 - _t36 * _t120 - _t31 * _t118);
-        const double _t131 = _t1 * _t130 + _t119;
-        const double _t132 = sqrt(_t125 * _t125 + _t128 * _t128 + _t131 * _t131);
-        const double _t133 = _t1 * ((_t127 * _t124 + (_t62 + (_t55 * _t119 + (_t126 * _t40 + _t63 * _t120)) + _t61 * _t118 - _t40 * _t123)) * _t122) - _t40;
-        const double _t134 = _t31 - _t1 * ((_t54 + (_t53 * _t118 + _t55 * _t120) + _t56 * _t119 - _t31 * _t129 - _t31 * _t123 - _t130 * _t124) * _t122);
-        const double _t135 = 1.0 / _t132;
-        const double _t136 = _t125 - _t1 * ((_t133 * _t128 + _t131 * _t134 - (_t123 + _t1 * ((_t53 * _t119 + (_t123 * _t123 + (_t60 + (_t59 + _t120 * _t61))) - (_t4 - _t58) * _t118 - _t124 * _t124) * _t122)) * _t125) * _t135);
-        const double _t137 = _t1 * ((_t126 * _t36 + (_t70 * _t119 + _t55 * _t118 + _t68 * _t120) + _t69 - _t129 * _t36 + _t127 * _t130) * _t122) - _t36;
-        const double _t138 = _t128 - _t1 * ((_t128 * (_t126 - _t1 * ((_t59 + (_t63 * _t118 + _t68 * _t119) + _t66 + _t126 * _t126 - (_t7 - _t67) * _t120 - _t127 * _t127) * _t122)) + _t131 * _t137 + _t125 * _t133) * _t135);
-        const double _t139 = _t131 - _t1 * (_t135 * (_t125 * _t134 + _t137 * _t128 - _t131 * (_t1 * (_t122 * (_t129 * _t129 + (_t56 * _t118 + (_t70 * _t120 + _t60)) + _t66 - (_t10 - _t73) * _t119 - _t130 * _t130)) + _t129)));
-        const double _t140 = -(4.5 * (_t110 + sqrt(_t112 * _t112 + (_t113 * _t113 + _t114 * _t114))) - sqrt(_t115 * _t115 + (_t116 * _t116 + _t117 * _t117)) * 2.0 - (_t132 + _t121 + sqrt(_t136 * _t136 + _t138 * _t138 + _t139 * _t139)) * 2.6666666666666665);
-        out[i] = (_t0 * ((_t100 <= _t103) ? ((_t105 <= _t100) ? _t100 : _t105) : _t103) + _t106) * (_t106 - _t0 * ((_t140 <= _t103) ? ((_t105 <= _t140) ? _t140 : _t105) : _t103));
+    const size_t blocked = n - n % 8;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 8) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 8; ++j) {
+            const double _t0 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t1 = _t0 * 0.25;
+            const double _t2 = 6.2831853071795862 * y[i + j];
+            const double _t3 = offsetgen_batch_cos(_t2);
+            const double _t4 = offsetgen_batch_sin(_t2);
+            const double _t5 = _t3 * _t4;
+            const double _t6 = 6.2831853071795862 * x[i + j];
+            const double _t7 = offsetgen_batch_sin(_t6);
+            const double _t8 = _t7 * _t7;
+            const double _t9 = z[i + j] * 6.2831853071795862;
+            const double _t10 = offsetgen_batch_sin(_t9);
+            const double _t11 = _t10 * _t10;
+            const double _t12 = _t4 * _t4;
+            const double _t13 = offsetgen_batch_sqrt(_t8 + _t11 + _t12);
+            const double _t14 = 1.0 / _t13;
+            const double _t15 = _t5 * _t14;
+            const double _t16 = _t1 * _t15;
+            const double _t17 = _t16 - _t4;
+            const double _t18 = offsetgen_batch_cos(_t6);
+            const double _t19 = _t7 * _t18;
+            const double _t20 = _t19 * _t14;
+            const double _t21 = _t1 * _t20;
+            const double _t22 = _t7 - _t21;
+            const double _t23 = offsetgen_batch_cos(_t9);
+            const double _t24 = _t23 * _t10;
+            const double _t25 = _t24 * _t14;
+            const double _t26 = _t1 * _t25;
+            const double _t27 = _t10 - _t26;
+            const double _t28 = offsetgen_batch_sqrt(_t17 * _t17 + _t22 * _t22 + _t27 * _t27);
+            const double _t29 = 1.0 / _t28;
+            const double _t30 = _t25 * _t15 * _t14;
+            const double _t31 = _t1 * _t30;
+            const double _t32 = (_t25 * _t25 - (_t23 * _t23 - _t11)) * _t14;
+            const double _t33 = _t1 * _t32;
+            const double _t34 = _t23 + _t33;
+            const double _t35 = _t20 * _t25 * _t14;
+            const double _t36 = _t1 * _t35;
+            const double _t37 = _t29 * (_t31 * _t17 - _t27 * _t34 - _t22 * _t36);
+            const double _t38 = _t27 + _t1 * _t37;
+            const double _t39 = _t20 * _t15 * _t14;
+            const double _t40 = _t1 * _t39;
+            const double _t41 = (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14;
+            const double _t42 = _t1 * _t41;
+            const double _t43 = _t3 + _t42;
+            const double _t44 = _t29 * (_t27 * _t31 + _t22 * _t40 - _t43 * _t17);
+            const double _t45 = _t1 * _t44 + _t17;
+            const double _t46 = (_t8 - _t18 * _t18 + _t20 * _t20) * _t14;
+            const double _t47 = _t1 * _t46;
+            const double _t48 = _t47 + _t18;
+            const double _t49 = _t29 * (_t48 * _t22 + _t27 * _t36 - _t40 * _t17);
+            const double _t50 = _t1 * _t49 - _t22;
+            const double _t51 = offsetgen_batch_sqrt(_t38 * _t38 + _t45 * _t45 + _t50 * _t50);
+            const double _t52 = 1.0 / _t51;
+            const double _t53 = _t1 * ((_t41 * _t25 + _t30 * _t15 * 2.0) * _t14);
+            const double _t54 = _t40 * _t36;
+            const double _t55 = _t1 * ((_t20 * _t30 + (_t25 * _t39 + _t35 * _t15)) * _t14);
+            const double _t56 = _t1 * ((_t32 * _t15 + _t30 * _t25 * 2.0) * _t14);
+            const double _t57 = _t31 - _t1 * (_t29 * (_t53 * _t17 + _t31 * _t34 + _t54 + _t43 * _t31 - _t55 * _t22 - _t56 * _t27 + _t37 * _t44));
+            const double _t58 = _t1 * ((_t41 * _t15 * 3.0 - (_t5 + _t5 * 3.0)) * _t14);
+            const double _t59 = _t40 * _t40;
+            const double _t60 = _t31 * _t31;
+            const double _t61 = _t1 * ((_t15 * _t39 * 2.0 + _t20 * _t41) * _t14);
+            const double _t62 = _t31 * _t36;
+            const double _t63 = _t1 * ((_t20 * _t39 * 2.0 + _t46 * _t15) * _t14);
+            const double _t64 = _t1 * (_t29 * (_t44 * _t49 - (_t48 * _t40 + _t17 * _t61 + _t43 * _t40 + _t62 - _t55 * _t27 - _t63 * _t22))) + _t40;
+            const double _t65 = _t45 + _t1 * (_t52 * (_t38 * _t57 - _t45 * (_t43 + _t1 * (_t29 * (_t44 * _t44 - (_t17 * (_t4 + _t58) + (_t43 * _t43 + (_t59 + _t60)) - _t53 * _t27 - _t22 * _t61)))) - _t64 * _t50));
+            const double _t66 = _t36 * _t36;
+            const double _t67 = _t1 * ((3.0 * (_t20 * _t46) - (3.0 * _t19 + _t19)) * _t14);
+            const double _t68 = _t1 * ((_t46 * _t25 + _t20 * _t35 * 2.0) * _t14);
+            const double _t69 = _t31 * _t40;
+            const double _t70 = _t1 * ((_t35 * _t25 * 2.0 + _t20 * _t32) * _t14);
+            const double _t71 = _t1 * (_t29 * (_t34 * _t36 + _t48 * _t36 + _t55 * _t17 + _t69 - _t27 * _t70 - _t68 * _t22 + _t37 * _t49)) - _t36;
+            const double _t72 = _t50 - _t1 * (_t52 * ((_t48 - _t1 * (_t29 * (_t59 + _t66 + _t63 * _t17 + _t48 * _t48 - (_t7 + _t67) * _t22 - _t68 * _t27 - _t49 * _t49))) * _t50 + (_t38 * _t71 + _t64 * _t45)));
+            const double _t73 = _t1 * ((_t32 * _t25 * 3.0 - (_t24 + _t24 * 3.0)) * _t14);
+            const double _t74 = _t38 - _t1 * (_t52 * (_t38 * (_t34 + _t1 * (_t29 * ((_t10 + _t73) * _t27 + _t70 * _t22 - _t60 - _t34 * _t34 - _t56 * _t17 - _t66 + _t37 * _t37))) + _t50 * _t71 - _t45 * _t57));
+            const double _t75 = _t0 * 0.5;
+            const double _t76 = _t75 * _t15;
+            const double _t77 = _t76 - _t4;
+            const double _t78 = _t20 * _t75;
+            const double _t79 = _t78 - _t7;
+            const double _t80 = _t75 * _t25;
+            const double _t81 = _t10 - _t80;
+            const double _t82 = _t0 * 0.33333333333333331;
+            const double _t83 = _t30 * _t82;
+            const double _t84 = _t15 * _t82;
+            const double _t85 = _t4 - _t84;
+            const double _t86 = _t32 * _t82;
+            const double _t87 = _t25 * _t82;
+            const double _t88 = _t10 - _t87;
+            const double _t89 = _t35 * _t82;
+            const double _t90 = _t20 * _t82;
+            const double _t91 = _t90 - _t7;
+            const double _t92 = offsetgen_batch_sqrt(_t85 * _t85 + _t91 * _t91 + _t88 * _t88);
+            const double _t93 = 1.0 / _t92;
+            const double _t94 = (_t83 * _t85 + (_t86 + _t23) * _t88 - _t89 * _t91) * _t93 * _t82 - _t88;
+            const double _t95 = _t41 * _t82;
+            const double _t96 = _t39 * _t82;
+            const double _t97 = _t82 * ((_t83 * _t88 + (_t3 + _t95) * _t85 - _t96 * _t91) * _t93) - _t85;
+            const double _t98 = _t46 * _t82;
+            const double _t99 = (_t89 * _t88 + _t96 * _t85 - (_t98 + _t18) * _t91) * _t93 * _t82 + _t91;
+            const double _t100 = (_t28 + _t51 + offsetgen_batch_sqrt(_t65 * _t65 + _t72 * _t72 + _t74 * _t74)) * 2.6666666666666665 + 2.0 * offsetgen_batch_sqrt(_t77 * _t77 + _t79 * _t79 + _t81 * _t81) - 4.5 * (offsetgen_batch_sqrt(_t94 * _t94 + _t97 * _t97 + _t99 * _t99) + _t92);
+            const double _t101 = fabs(_t0);
+            const double _t102 = _t101 * 0.50000050630325232 + _t13;
+            const double _t103 = (_t102 <= 1.7320525396196846) ? _t102 : 1.7320525396196846;
+            const double _t104 = _t13 - _t101 * 1.5000015189097571;
+            const double _t105 = ((-1.7320525396196846) <= _t104) ? _t104 : (-1.7320525396196846);
+            const double _t106 = _t23 + _t3 + _t18;
+            const double _t107 = _t4 + _t84;
+            const double _t108 = _t10 + _t87;
+            const double _t109 = _t90 + _t7;
+            const double _t110 = offsetgen_batch_sqrt(_t107 * _t107 + _t108 * _t108 + _t109 * _t109);
+            const double _t111 = 1.0 / _t110;
+            const double _t112 = _t82 * (((_t86 - _t23) * _t108 + _t83 * _t107 + _t89 * _t109) * _t111) - _t108;
+            const double _t113 = _t107 - _t111 * (_t83 * _t108 + _t96 * _t109 - (_t3 - _t95) * _t107) * _t82;
+            const double _t114 = (_t89 * _t108 + (_t98 - _t18) * _t109 + _t96 * _t107) * _t111 * _t82 - _t109;
+            const double _t115 = _t78 + _t7;
+            const double _t116 = _t10 + _t80;
+            const double _t117 = _t76 + _t4;
+            const double _t118 = _t16 + _t4;
+            const double _t119 = _t10 + _t26;
+            const double _t120 = _t7 + _t21;
+            const double _t121 = offsetgen_batch_sqrt(_t118 * _t118 + (_t119 * _t119 + _t120 * _t120));
+            const double _t122 = 1.0 / _t121;
+            const double _t123 = _t3 - _t42;
+            const double _t124 = _t122 * (_t123 * _t118 - _t40 * _t120 - _t31 * _t119);
+            const double _t125 = _t1 * _t124 + _t118;
+            const double _t126 = _t47 - _t18;
+            const double _t127 = (_t40 * _t118 + _t36 * _t119 + _t126 * _t120) * _t122;
+            const double _t128 = _t1 * _t127 - _t120;
+            const double _t129 = _t23 - _t33;
+            const double _t130 = _t122 * (_t129 * _t119 - _t36 * _t120 - _t31 * _t118);
+            const double _t131 = _t1 * _t130 + _t119;
+            const double _t132 = offsetgen_batch_sqrt(_t125 * _t125 + _t128 * _t128 + _t131 * _t131);
+            const double _t133 = _t1 * ((_t127 * _t124 + (_t62 + (_t55 * _t119 + (_t126 * _t40 + _t63 * _t120)) + _t61 * _t118 - _t40 * _t123)) * _t122) - _t40;
+            const double _t134 = _t31 - _t1 * ((_t54 + (_t53 * _t118 + _t55 * _t120) + _t56 * _t119 - _t31 * _t129 - _t31 * _t123 - _t130 * _t124) * _t122);
+            const double _t135 = 1.0 / _t132;
+            const double _t136 = _t125 - _t1 * ((_t133 * _t128 + _t131 * _t134 - (_t123 + _t1 * ((_t53 * _t119 + (_t123 * _t123 + (_t60 + (_t59 + _t120 * _t61))) - (_t4 - _t58) * _t118 - _t124 * _t124) * _t122)) * _t125) * _t135);
+            const double _t137 = _t1 * ((_t126 * _t36 + (_t70 * _t119 + _t55 * _t118 + _t68 * _t120) + _t69 - _t129 * _t36 + _t127 * _t130) * _t122) - _t36;
+            const double _t138 = _t128 - _t1 * ((_t128 * (_t126 - _t1 * ((_t59 + (_t63 * _t118 + _t68 * _t119) + _t66 + _t126 * _t126 - (_t7 - _t67) * _t120 - _t127 * _t127) * _t122)) + _t131 * _t137 + _t125 * _t133) * _t135);
+            const double _t139 = _t131 - _t1 * (_t135 * (_t125 * _t134 + _t137 * _t128 - _t131 * (_t1 * (_t122 * (_t129 * _t129 + (_t56 * _t118 + (_t70 * _t120 + _t60)) + _t66 - (_t10 - _t73) * _t119 - _t130 * _t130)) + _t129)));
+            const double _t140 = -(4.5 * (_t110 + offsetgen_batch_sqrt(_t112 * _t112 + (_t113 * _t113 + _t114 * _t114))) - offsetgen_batch_sqrt(_t115 * _t115 + (_t116 * _t116 + _t117 * _t117)) * 2.0 - (_t132 + _t121 + offsetgen_batch_sqrt(_t136 * _t136 + _t138 * _t138 + _t139 * _t139)) * 2.6666666666666665);
+            out[i + j] = (_t0 * ((_t100 <= _t103) ? ((_t105 <= _t100) ? _t100 : _t105) : _t103) + _t106) * (_t106 - _t0 * ((_t140 <= _t103) ? ((_t105 <= _t140) ? _t140 : _t105) : _t103));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabs(out[i]) <= HUGE_VAL)) out[i] = schwarzp_o4_shell(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = schwarzp_o4_shell(x[i], y[i], z[i], t[i]);
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
  * Batch form of schwarzp_o4_offsetf: out[i] = schwarzp_o4_offsetf(x[i], y[i], z[i], h[i]) for 0 <= i < n.
  */
-static inline void schwarzp_o4_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *out)
+static inline void schwarzp_o4_offsetf_n(size_t n, const float *x, const float *y, const float *z, const float *h, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = z[i] * 6.28318548f;
-        const float _t1 = offsetgen_batch_cosf(_t0);
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = 6.28318548f * x[i];
-        const float _t5 = offsetgen_batch_cosf(_t4);
-        const float _t6 = 6.28318548f * h[i];
-        const float _t7 = offsetgen_batch_sinf(_t2);
-        const float _t8 = _t3 * _t7;
-        const float _t9 = offsetgen_batch_sinf(_t4);
-        const float _t10 = _t9 * _t9;
-        const float _t11 = offsetgen_batch_sinf(_t0);
-        const float _t12 = _t11 * _t11;
-        const float _t13 = _t7 * _t7;
-        const float _t14 = sqrtf(_t10 + _t12 + _t13);
-        const float _t15 = 1.0f / _t14;
-        const float _t16 = _t8 * _t15;
-        const float _t17 = _t6 * 0.333333343f;
-        const float _t18 = _t16 * _t17 + _t7;
-        const float _t19 = _t9 * _t5;
-        const float _t20 = _t19 * _t15;
-        const float _t21 = _t20 * _t17 + _t9;
-        const float _t22 = _t1 * _t11;
-        const float _t23 = _t22 * _t15;
-        const float _t24 = _t11 + _t23 * _t17;
-        const float _t25 = sqrtf(_t18 * _t18 + _t21 * _t21 + _t24 * _t24);
-        const float _t26 = 1.0f / _t25;
-        const float _t27 = _t20 * _t16 * _t15;
-        const float _t28 = _t27 * _t17;
-        const float _t29 = _t23 * _t16 * _t15;
-        const float _t30 = _t29 * _t17;
-        const float _t31 = (_t16 * _t16 - (_t3 * _t3 - _t13)) * _t15;
-        const float _t32 = _t26 * (_t21 * _t28 + _t30 * _t24 - (_t3 - _t31 * _t17) * _t18) * _t17 - _t18;
-        const float _t33 = _t20 * _t23 * _t15;
-        const float _t34 = _t33 * _t17;
-        const float _t35 = (_t10 - _t5 * _t5 + _t20 * _t20) * _t15;
-        const float _t36 = _t21 - _t26 * (_t24 * _t34 + (_t21 * (_t35 * _t17 - _t5) + _t28 * _t18)) * _t17;
-        const float _t37 = (_t23 * _t23 - (_t1 * _t1 - _t12)) * _t15;
-        const float _t38 = _t24 - _t26 * (_t21 * _t34 + _t30 * _t18 - _t24 * (_t1 - _t37 * _t17)) * _t17;
-        const float _t39 = _t6 * 0.25f;
-        const float _t40 = _t20 * _t39 + _t9;
-        const float _t41 = _t16 * _t39 + _t7;
-        const float _t42 = _t11 + _t23 * _t39;
-        const float _t43 = sqrtf(_t40 * _t40 + _t41 * _t41 + _t42 * _t42);
-        const float _t44 = _t3 - _t31 * _t39;
-        const float _t45 = _t29 * _t39;
-        const float _t46 = _t27 * _t39;
-        const float _t47 = 1.0f / _t43;
-        const float _t48 = (_t44 * _t41 - _t42 * _t45 - _t40 * _t46) * _t47;
-        const float _t49 = _t48 * _t39 + _t41;
-        const float _t50 = _t33 * _t39;
-        const float _t51 = _t1 - _t37 * _t39;
-        const float _t52 = _t47 * (_t45 * _t41 + _t50 * _t40 - _t42 * _t51);
-        const float _t53 = _t42 - _t52 * _t39;
-        const float _t54 = _t35 * _t39 - _t5;
-        const float _t55 = _t47 * (_t54 * _t40 + _t41 * _t46 + _t50 * _t42);
-        const float _t56 = _t55 * _t39 - _t40;
-        const float _t57 = sqrtf(_t49 * _t49 + _t53 * _t53 + _t56 * _t56);
-        const float _t58 = 1.0f / _t57;
-        const float _t59 = _t50 * _t50;
-        const float _t60 = (_t37 * _t16 + _t29 * _t23 * 2.0f) * _t15 * _t39;
-        const float _t61 = _t45 * _t45;
-        const float _t62 = (_t33 * _t23 * 2.0f + _t20 * _t37) * _t15 * _t39;
-        const float _t63 = (_t35 * _t23 + _t20 * _t33 * 2.0f) * _t15 * _t39;
-        const float _t64 = (_t20 * _t29 + (_t23 * _t27 + _t33 * _t16)) * _t15 * _t39;
-        const float _t65 = _t50 - (_t63 * _t40 + (_t45 * _t46 + (_t50 * _t54 + (_t64 * _t41 + _t42 * _t62))) - _t50 * _t51 - _t55 * _t52) * _t47 * _t39;
-        const float _t66 = (_t31 * _t23 + _t29 * _t16 * 2.0f) * _t15 * _t39;
-        const float _t67 = _t47 * (_t52 * _t48 + (_t50 * _t46 + _t66 * _t41 + _t42 * _t60 + _t64 * _t40 - _t45 * _t44 - _t45 * _t51)) * _t39 - _t45;
-        const float _t68 = _t58 * (((_t52 * _t52 - (_t59 + (_t60 * _t41 + (_t42 * ((_t37 * _t23 * 3.0f - (_t22 + _t22 * 3.0f)) * _t15 * _t39 - _t11) + (_t61 + _t51 * _t51))) + _t62 * _t40)) * _t47 * _t39 - _t51) * _t53 - _t65 * _t56 - _t49 * _t67) * _t39 - _t53;
-        const float _t69 = _t46 * _t46;
-        const float _t70 = (_t16 * _t27 * 2.0f + _t20 * _t31) * _t15 * _t39;
-        const float _t71 = (_t20 * _t27 * 2.0f + _t35 * _t16) * _t15 * _t39;
-        const float _t72 = _t47 * (_t64 * _t42 + (_t54 * _t46 + _t50 * _t45 + _t71 * _t40 + _t70 * _t41) - _t44 * _t46 + _t55 * _t48) * _t39 - _t46;
-        const float _t73 = _t49 + _t58 * (_t67 * _t53 + _t49 * ((_t42 * _t66 + (_t69 + _t61 + _t70 * _t40) + _t44 * _t44 - (_t7 - (_t31 * _t16 * 3.0f - (_t8 + _t8 * 3.0f)) * _t15 * _t39) * _t41 - _t48 * _t48) * _t47 * _t39 + _t44) - _t72 * _t56) * _t39;
-        const float _t74 = _t58 * (_t49 * _t72 + ((_t55 * _t55 - (_t54 * _t54 + (_t59 + (_t71 * _t41 + (_t42 * _t63 + _t69) + ((3.0f * (_t20 * _t35) - (3.0f * _t19 + _t19)) * _t15 * _t39 - _t9) * _t40)))) * _t47 * _t39 + _t54) * _t56 - _t65 * _t53) * _t39 - _t56;
-        const float _t75 = _t6 * 0.5f;
-        const float _t76 = _t7 + _t16 * _t75;
-        const float _t77 = _t20 * _t75 + _t9;
-        const float _t78 = _t23 * _t75 + _t11;
-        const float _t79 = -(4.5f * (_t25 + sqrtf(_t32 * _t32 + _t36 * _t36 + _t38 * _t38)) - (_t43 + (_t57 + sqrtf(_t68 * _t68 + (_t73 * _t73 + _t74 * _t74)))) * 2.66666675f - sqrtf(_t76 * _t76 + _t77 * _t77 + _t78 * _t78) * 2.0f);
-        const float _t80 = fabsf(_t6);
-        const float _t81 = _t14 + _t80 * 0.500000477f;
-        const float _t82 = (_t81 <= 1.73205256f) ? _t81 : 1.73205256f;
-        const float _t83 = _t14 - _t80 * 1.50000155f;
-        const float _t84 = ((-1.73205256f) <= _t83) ? _t83 : (-1.73205256f);
-        out[i] = _t1 + _t3 + _t5 - _t6 * ((_t79 <= _t82) ? ((_t84 <= _t79) ? _t79 : _t84) : _t82);
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = 6.28318548f * y[i + j];
+            const float _t3 = offsetgen_batch_cosf(_t2);
+            const float _t4 = 6.28318548f * x[i + j];
+            const float _t5 = offsetgen_batch_cosf(_t4);
+            const float _t6 = 6.28318548f * h[i + j];
+            const float _t7 = offsetgen_batch_sinf(_t2);
+            const float _t8 = _t3 * _t7;
+            const float _t9 = offsetgen_batch_sinf(_t4);
+            const float _t10 = _t9 * _t9;
+            const float _t11 = offsetgen_batch_sinf(_t0);
+            const float _t12 = _t11 * _t11;
+            const float _t13 = _t7 * _t7;
+            const float _t14 = offsetgen_batch_sqrtf(_t10 + _t12 + _t13);
+            const float _t15 = 1.0f / _t14;
+            const float _t16 = _t8 * _t15;
+            const float _t17 = _t6 * 0.333333343f;
+            const float _t18 = _t16 * _t17 + _t7;
+            const float _t19 = _t9 * _t5;
+            const float _t20 = _t19 * _t15;
+            const float _t21 = _t20 * _t17 + _t9;
+            const float _t22 = _t1 * _t11;
+            const float _t23 = _t22 * _t15;
+            const float _t24 = _t11 + _t23 * _t17;
+            const float _t25 = offsetgen_batch_sqrtf(_t18 * _t18 + _t21 * _t21 + _t24 * _t24);
+            const float _t26 = 1.0f / _t25;
+            const float _t27 = _t20 * _t16 * _t15;
+            const float _t28 = _t27 * _t17;
+            const float _t29 = _t23 * _t16 * _t15;
+            const float _t30 = _t29 * _t17;
+            const float _t31 = (_t16 * _t16 - (_t3 * _t3 - _t13)) * _t15;
+            const float _t32 = _t26 * (_t21 * _t28 + _t30 * _t24 - (_t3 - _t31 * _t17) * _t18) * _t17 - _t18;
+            const float _t33 = _t20 * _t23 * _t15;
+            const float _t34 = _t33 * _t17;
+            const float _t35 = (_t10 - _t5 * _t5 + _t20 * _t20) * _t15;
+            const float _t36 = _t21 - _t26 * (_t24 * _t34 + (_t21 * (_t35 * _t17 - _t5) + _t28 * _t18)) * _t17;
+            const float _t37 = (_t23 * _t23 - (_t1 * _t1 - _t12)) * _t15;
+            const float _t38 = _t24 - _t26 * (_t21 * _t34 + _t30 * _t18 - _t24 * (_t1 - _t37 * _t17)) * _t17;
+            const float _t39 = _t6 * 0.25f;
+            const float _t40 = _t20 * _t39 + _t9;
+            const float _t41 = _t16 * _t39 + _t7;
+            const float _t42 = _t11 + _t23 * _t39;
+            const float _t43 = offsetgen_batch_sqrtf(_t40 * _t40 + _t41 * _t41 + _t42 * _t42);
+            const float _t44 = _t3 - _t31 * _t39;
+            const float _t45 = _t29 * _t39;
+            const float _t46 = _t27 * _t39;
+            const float _t47 = 1.0f / _t43;
+            const float _t48 = (_t44 * _t41 - _t42 * _t45 - _t40 * _t46) * _t47;
+            const float _t49 = _t48 * _t39 + _t41;
+            const float _t50 = _t33 * _t39;
+            const float _t51 = _t1 - _t37 * _t39;
+            const float _t52 = _t47 * (_t45 * _t41 + _t50 * _t40 - _t42 * _t51);
+            const float _t53 = _t42 - _t52 * _t39;
+            const float _t54 = _t35 * _t39 - _t5;
+            const float _t55 = _t47 * (_t54 * _t40 + _t41 * _t46 + _t50 * _t42);
+            const float _t56 = _t55 * _t39 - _t40;
+            const float _t57 = offsetgen_batch_sqrtf(_t49 * _t49 + _t53 * _t53 + _t56 * _t56);
+            const float _t58 = 1.0f / _t57;
+            const float _t59 = _t50 * _t50;
+            const float _t60 = (_t37 * _t16 + _t29 * _t23 * 2.0f) * _t15 * _t39;
+            const float _t61 = _t45 * _t45;
+            const float _t62 = (_t33 * _t23 * 2.0f + _t20 * _t37) * _t15 * _t39;
+            const float _t63 = (_t35 * _t23 + _t20 * _t33 * 2.0f) * _t15 * _t39;
+            const float _t64 = (_t20 * _t29 + (_t23 * _t27 + _t33 * _t16)) * _t15 * _t39;
+            const float _t65 = _t50 - (_t63 * _t40 + (_t45 * _t46 + (_t50 * _t54 + (_t64 * _t41 + _t42 * _t62))) - _t50 * _t51 - _t55 * _t52) * _t47 * _t39;
+            const float _t66 = (_t31 * _t23 + _t29 * _t16 * 2.0f) * _t15 * _t39;
+            const float _t67 = _t47 * (_t52 * _t48 + (_t50 * _t46 + _t66 * _t41 + _t42 * _t60 + _t64 * _t40 - _t45 * _t44 - _t45 * _t51)) * _t39 - _t45;
+            const float _t68 = _t58 * (((_t52 * _t52 - (_t59 + (_t60 * _t41 + (_t42 * ((_t37 * _t23 * 3.0f - (_t22 + _t22 * 3.0f)) * _t15 * _t39 - _t11) + (_t61 + _t51 * _t51))) + _t62 * _t40)) * _t47 * _t39 - _t51) * _t53 - _t65 * _t56 - _t49 * _t67) * _t39 - _t53;
+            const float _t69 = _t46 * _t46;
+            const float _t70 = (_t16 * _t27 * 2.0f + _t20 * _t31) * _t15 * _t39;
+            const float _t71 = (_t20 * _t27 * 2.0f + _t35 * _t16) * _t15 * _t39;
+            const float _t72 = _t47 * (_t64 * _t42 + (_t54 * _t46 + _t50 * _t45 + _t71 * _t40 + _t70 * _t41) - _t44 * _t46 + _t55 * _t48) * _t39 - _t46;
+            const float _t73 = _t49 + _t58 * (_t67 * _t53 + _t49 * ((_t42 * _t66 + (_t69 + _t61 + _t70 * _t40) + _t44 * _t44 - (_t7 - (_t31 * _t16 * 3.0f - (_t8 + _t8 * 3.0f)) * _t15 * _t39) * _t41 - _t48 * _t48) * _t47 * _t39 + _t44) - _t72 * _t56) * _t39;
+            const float _t74 = _t58 * (_t49 * _t72 + ((_t55 * _t55 - (_t54 * _t54 + (_t59 + (_t71 * _t41 + (_t42 * _t63 + _t69) + ((3.0f * (_t20 * _t35) - (3.0f * _t19 + _t19)) * _t15 * _t39 - _t9) * _t40)))) * _t47 * _t39 + _t54) * _t56 - _t65 * _t53) * _t39 - _t56;
+            const float _t75 = _t6 * 0.5f;
+            const float _t76 = _t7 + _t16 * _t75;
+            const float _t77 = _t20 * _t75 + _t9;
+            const float _t78 = _t23 * _t75 + _t11;
+            const float _t79 = -(4.5f * (_t25 + offsetgen_batch_sqrtf(_t32 * _t32 + _t36 * _t36 + _t38 * _t38)) - (_t43 + (_t57 + offsetgen_batch_sqrtf(_t68 * _t68 + (_t73 * _t73 + _t74 * _t74)))) * 2.66666675f - offsetgen_batch_sqrtf(_t76 * _t76 + _t77 * _t77 + _t78 * _t78) * 2.0f);
+            const float _t80 = fabsf(_t6);
+            const float _t81 = _t14 + _t80 * 0.500000477f;
+            const float _t82 = (_t81 <= 1.73205256f) ? _t81 : 1.73205256f;
+            const float _t83 = _t14 - _t80 * 1.50000155f;
+            const float _t84 = ((-1.73205256f) <= _t83) ? _t83 : (-1.73205256f);
+            out[i + j] = _t1 + _t3 + _t5 - _t6 * ((_t79 <= _t82) ? ((_t84 <= _t79) ? _t79 : _t84) : _t82);
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o4_offsetf(x[i], y[i], z[i], h[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = schwarzp_o4_offsetf(x[i], y[i], z[i], h[i]);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
  * Batch form of schwarzp_o4_shellf: out[i] = schwarzp_o4_shellf(x[i], y[i], z[i], t[i]) for 0 <= i < n.
  */
-static inline void schwarzp_o4_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *out)
+static inline void schwarzp_o4_shellf_n(size_t n, const float *x, const float *y, const float *z, const float *t, float *OFFSETGEN_RESTRICT out)
 {
-    size_t i;
-    OFFSETGEN_SIMD_LOOP
-    for (i = 0; i < n; ++i) {
-        const float _t0 = 6.28318548f * (t[i] * 0.5f);
-        const float _t1 = _t0 * 0.25f;
-        const float _t2 = 6.28318548f * y[i];
-        const float _t3 = offsetgen_batch_cosf(_t2);
-        const float _t4 = offsetgen_batch_sinf(_t2);
-        const float _t5 = _t3 * _t4;
-        const float _t6 = 6.28318548f * x[i];
-        const float _t7 = offsetgen_batch_sinf(_t6);
-        const float _t8 = _t7 * _t7;
-        const float _t9 = z[i] * 6.28318548f;
-        const float _t10 = offsetgen_batch_sinf(_t9);
-        const float _t11 = _t10 * _t10;
-        const float _t12 = _t4 * _t4;
-        const float _t13 = sqrtf(_t8 + _t11 + _t12);
-        const float _t14 = 1.0f / _t13;
-        const float _t15 = _t5 * _t14;
-        const float _t16 = _t1 * _t15;
-        const float _t17 = _t16 - _t4;
-        const float _t18 = offsetgen_batch_cosf(_t6);
-        const float _t19 = _t7 * _t18;
-        const float _t20 = _t19 * _t14;
-        const float _t21 = _t1 * _t20;
-        const float _t22 = _t7 - _t21;
-        const float _t23 = offsetgen_batch_cosf(_t9);
-        const float _t24 = _t23 * _t10;
-        const float _t25 = _t24 * _t14;
-        const float _t26 = _t1 * _t25;
-        const float _t27 = _t10 - _t26;
-        const float _t28 = sqrtf(_t17 * _t17 + _t22 * _t22 + _t27 * _t27);
-        const float _t29 = 1.0f / _t28;
-        const float _t30 = _t25 * _t15 * _t14;
-        const float _t31 = _t1 * _t30;
-        const float _t32 = (_t25 * _t25 - (_t23 * _t23 - _t11)) * _t14;
-        const float _t33 = _t1 * _t32;
-        const float _t34 = _t23 + _t33;
-        const float _t35 = _t20 * _t25 * _t14;
-        const float _t36 = _t1 * _t35;
-        const float _t37 = _t29 * (_t31 * _t17 - _t27 * _t34 - _t22 * _t36);
-        const float _t38 = _t27 + _t1 * _t37;
-        const float _t39 = _t20 * _t15 * _t14;
-        const float _t40 = _t1 * _t39;
-        const float _t41 = (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14;
-        const float _t42 = _t1 * _t41;
-        const float _t43 = _t3 + _t42;
-        const float _t44 = _t29 * (_t27 * _t31 + _t22 * _t40 - _t43 * _t17);
-        const float _t45 = _t1 * _t44 + _t17;
-        const float _t46 = (_t8 - _t18 * _t18 + _t20 * _t20) * _t14;
-        const float _t47 = _t1 * _t46;
-        const float _t48 = _t47 + _t18;
-        const float _t49 = _t29 * (_t48 * _t22 + _t27 * _t36 - _t40 * _t17);
-        const float _t50 = _t1 * _t49 - _t22;
-        const float _t51 = sqrtf(_t38 * _t38 + _t45 * _t45 + _t50 * _t50);
-        const float _t52 = 1.0f / _t51;
-        const float _t53 = _t1 * ((_t41 * _t25 + _t30 * _t15 * 2.0f) * _t14);
-        const float _t54 = _t40 * _t36;
-        const float _t55 = _t1 * ((_t20 * _t30 + (_t25 * _t39 + _t35 * _t15)) * _t14);
-        const float _t56 = _t1 * ((_t32 * _t15 + _t30 * _t25 * 2.0f) * _t14);
-        const float _t57 = _t31 - _t1 * (_t29 * (_t53 * _t17 + _t31 * _t34 + _t54 + _t43 * _t31 - _t55 * _t22 - _t56 * _t27 + _t37 * _t44));
-        const float _t58 = _t1 * ((_t41 * _t15 * 3.0f - (_t5 + _t5 * 3.0f)) * _t14);
-        const float _t59 = _t40 * _t40;
-        const float _t60 = _t31 * _t31;
-        const float _t61 = _t1 * ((_t15 * _t39 * 2.0f + _t20 * _t41) * _t14);
-        const float _t62 = _t31 * _t36;
-        const float _t63 = _t1 * ((_t20 * _t39 * 2.0f + _t46 * _t15) * _t14);
-        const float _t64 = _t1 * (_t29 * (_t44 * _t49 - (_t48 * _t40 + _t17 * _t61 + _t43 * _t40 + _t62 - _t55 * _t27 - _t63 * _t22))) + _t40;
-        const float _t65 = _t45 + _t1 * (_t52 * (_t38 * _t57 - _t45 * (_t43 + _t1 * (_t29 * (_t44 * _t44 - (_t17 * (_t4 + _t58) + (_t43 * _t43 + (_t59 + _t60)) - _t53 * _t27 - _t22 * _t61)))) - _t64 * _t50));
-        const float _t66 = _t36 * _t36;
-        const float _t67 = _t1 * ((3.0f * (_t20 * _t46) - (3.0f * _t19 + _t19)) * _t14);
-        const float _t68 = _t1 * ((_t46 * _t25 + _t20 * _t35 * 2.0f) * _t14);
-        const float _t69 = _t31 * _t40;
-        const float _t70 = _t1 * ((_t35 * _t25 * 2.0f + _t20 * _t32) * _t14);
-        const float _t71 = _t1 * (_t29 * (_t34 * _t36 + _t48 * _t36 + _t55 * _t17 + _t69 - _t27 * _t70 - _t68 * _t22 + _t37 * _t49)) - _t36;
-        const float _t72 = _t50 - _t1 * (_t52 * ((_t48 - _t1 * (_t29 * (_t59 + _t66 + _t63 * _t17 + _t48 * _t48 - (_t7 + _t67) * _t22 - _t68 * _t27 - _t49 * _t49))) * _t50 + (_t38 * _t71 + _t64 * _t45)));
-        const float _t73 = _t1 * ((_t32 * _t25 * 3.0f - (_t24 + _t24 * 3.0f)) * _t14);
-        const float _t74 = _t38 - _t1 * (_t52 * (_t38 * (_t34 + _t1 * (_t29 * ((_t10 + _t73) * _t27 + _t70 * _t22 - _t60 - _t34 * _t34 - _t56 * _t17 - _t66 + _t37 * _t37))) + _t50 * _t71 - _t45 * _t57));
-        const float _t75 = _t0 * 0.5f;
-        const float _t76 = _t75 * _t15;
-        const float _t77 = _t76 - _t4;
-        const float _t78 = _t20 * _t75;
-        const float _t79 = _t78 - _t7;
-        const float _t80 = _t75 * _t25;
-        const float _t81 = _t10 - _t80;
-        const float _t82 = _t0 * 0.333333343f;
-        const float _t83 = _t30 * _t82;
-        const float _t84 = _t15 * _t82;
-        const float _t85 = _t4 - _t84;
-        const float _t86 = _t32 * _t82;
-        const float _t87 = _t25 * _t82;
-        const float _t88 = _t10 - _t87;
-        const float _t89 = _t35 * _t82;
-        const float _t90 = _t20 * _t82;
-        const float _t91 = _t90 - _t7;
-        const float _t92 = sqrtf(_t85 * _t85 + _t91 * _t91 + _t88 * _t88);
-        const float _t93 = 1.0f / _t92;
-        const float _t94 = (_t83 * _t85 + (_t86 + _t23) * _t88 - _t89 * _t91) * _t93 * _t82 - _t88;
-        const float _t95 = _t41 * _t82;
-        const float _t96 = _t39 * _t82;
-        const float _t97 = _t82 * ((_t83 * _t88 + (_t3 + _t95) * _t85 - _t96 * _t91) * _t93) - _t85;
-        const float _t98 = _t46 * _t82;
-        const float _t99 = (_t89 * _t88 + _t96 * _t85 - (_t98 + _t18) * _t91) * _t93 * _t82 + _t91;
-        const float _t100 = (_t28 + _t51 + sqrtf(_t65 * _t65 + _t72 * _t72 + _t74 * _t74)) * 2.66666675f + 2.0f * sqrtf(_t77 * _t77 + _t79 * _t79 + _t81 * _t81) - 4.5f * (sqrtf(_t94 * _t94 + _t97 * _t97 + _t99 * _t99) + _t92);
-        const float _t101 = fabsf(_t0);
-        const float _t102 = _t101 * 0.500000477f + _t13;
-        const float _t103 = (_t102 <= 1.73205256f) ? _t102 : 1.73205256f;
-        const float _t104 = _t13 - _t101 * 1.50000155f;
-        const float _t105 = ((-1.73205256f) <= _t104) ? _t104 : (-1.73205256f);
-        const float _t106 = _t23 + _t3 + _t18;
-        const float _t107 = _t4 + _t84;
-        const float _t108 = _t10 + _t87;
-        const float _t109 = _t90 + _t7;
-        const float _t110 = sqrtf(_t107 * _t107 + _t108 * _t108 + _t109 * _t109);
-        const float _t111 = 1.0f / _t110;
-        const float _t112 = _t82 * (((_t86 - _t23) * _t108 + _t83 * _t107 + _t89 * _t109) * _t111) - _t108;
-        const float _t113 = _t107 - _t111 * (_t83 * _t108 + _t96 * _t109 - (_t3 - _t95) * _t107) * _t82;
-        const float _t114 = (_t89 * _t108 + (_t98 - _t18) * _t109 + _t96 * _t107) * _t111 * _t82 - _t109;
-        const float _t115 = _t78 + _t7;
-        const float _t116 = _t10 + _t80;
-        const float _t117 = _t76 + _t4;
-        const float _t118 = _t16 + _t4;
-        const float _t119 = _t10 + _t26;
-        const float _t120 = _t7 + _t21;
-        const float _t121 = sqrtf(_t118 * _t118 + (_t119 * _t119 + _t120 * _t120));
-        const float _t122 = 1.0f / _t121;
-        const float _t123 = _t3 - _t42;
-        const float _t124 = _t122 * (_t123 * _t118 - _t40 * _t120 - _t31 * _t119);
-        const float _t125 = _t1 * _t124 + _t118;
-        const float _t126 = _t47 - _t18;
-        const float _t127 = (_t40 * _t118 + _t36 * _t119 + _t126 * _t120) * _t122;
-        const float _t128 = _t1 * _t127 - _t120;
-        const float _t129 = _t23 - _t33;
-        const float _t130 = _t122 * (_t129 * _t119 - _t36 * _t120 - _t31 * _t118);
-        const float _t131 = _t1 * _t130 + _t119;
-        const float _t132 = sqrtf(_t125 * _t125 + _t128 * _t128 + _t131 * _t131);
-        const float _t133 = _t1 * ((_t127 * _t124 + (_t62 + (_t55 * _t119 + (_t126 * _t40 + _t63 * _t120)) + _t61 * _t118 - _t40 * _t123)) * _t122) - _t40;
-        const float _t134 = _t31 - _t1 * ((_t54 + (_t53 * _t118 + _t55 * _t120) + _t56 * _t119 - _t31 * _t129 - _t31 * _t123 - _t130 * _t124) * _t122);
-        const float _t135 = 1.0f / _t132;
-        const float _t136 = _t125 - _t1 * ((_t133 * _t128 + _t131 * _t134 - (_t123 + _t1 * ((_t53 * _t119 + (_t123 * _t123 + (_t60 + (_t59 + _t120 * _t61))) - (_t4 - _t58) * _t118 - _t124 * _t124) * _t122)) * _t125) * _t135);
-        const float _t137 = _t1 * ((_t126 * _t36 + (_t70 * _t119 + _t55 * _t118 + _t68 * _t120) + _t69 - _t129 * _t36 + _t127 * _t130) * _t122) - _t36;
-        const float _t138 = _t128 - _t1 * ((_t128 * (_t126 - _t1 * ((_t59 + (_t63 * _t118 + _t68 * _t119) + _t66 + _t126 * _t126 - (_t7 - _t67) * _t120 - _t127 * _t127) * _t122)) + _t131 * _t137 + _t125 * _t133) * _t135);
-        const float _t139 = _t131 - _t1 * (_t135 * (_t125 * _t134 + _t137 * _t128 - _t131 * (_t1 * (_t122 * (_t129 * _t129 + (_t56 * _t118 + (_t70 * _t120 + _t60)) + _t66 - (_t10 - _t73) * _t119 - _t130 * _t130)) + _t129)));
-        const float _t140 = -(4.5f * (_t110 + sqrtf(_t112 * _t112 + (_t113 * _t113 + _t114 * _t114))) - sqrtf(_t115 * _t115 + (_t116 * _t116 + _t117 * _t117)) * 2.0f - (_t132 + _t121 + sqrtf(_t136 * _t136 + _t138 * _t138 + _t139 * _t139)) * 2.66666675f);
-        out[i] = (_t0 * ((_t100 <= _t103) ? ((_t105 <= _t100) ? _t100 : _t105) : _t103) + _t106) * (_t106 - _t0 * ((_t140 <= _t103) ? ((_t105 <= _t140) ? _t140 : _t105) : _t103));
+    const size_t blocked = n - n % 16;
+    size_t i, j;
+    for (i = 0; i < blocked; i += 16) {
+        OFFSETGEN_SIMD_LOOP
+        for (j = 0; j < 16; ++j) {
+            const float _t0 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t1 = _t0 * 0.25f;
+            const float _t2 = 6.28318548f * y[i + j];
+            const float _t3 = offsetgen_batch_cosf(_t2);
+            const float _t4 = offsetgen_batch_sinf(_t2);
+            const float _t5 = _t3 * _t4;
+            const float _t6 = 6.28318548f * x[i + j];
+            const float _t7 = offsetgen_batch_sinf(_t6);
+            const float _t8 = _t7 * _t7;
+            const float _t9 = z[i + j] * 6.28318548f;
+            const float _t10 = offsetgen_batch_sinf(_t9);
+            const float _t11 = _t10 * _t10;
+            const float _t12 = _t4 * _t4;
+            const float _t13 = offsetgen_batch_sqrtf(_t8 + _t11 + _t12);
+            const float _t14 = 1.0f / _t13;
+            const float _t15 = _t5 * _t14;
+            const float _t16 = _t1 * _t15;
+            const float _t17 = _t16 - _t4;
+            const float _t18 = offsetgen_batch_cosf(_t6);
+            const float _t19 = _t7 * _t18;
+            const float _t20 = _t19 * _t14;
+            const float _t21 = _t1 * _t20;
+            const float _t22 = _t7 - _t21;
+            const float _t23 = offsetgen_batch_cosf(_t9);
+            const float _t24 = _t23 * _t10;
+            const float _t25 = _t24 * _t14;
+            const float _t26 = _t1 * _t25;
+            const float _t27 = _t10 - _t26;
+            const float _t28 = offsetgen_batch_sqrtf(_t17 * _t17 + _t22 * _t22 + _t27 * _t27);
+            const float _t29 = 1.0f / _t28;
+            const float _t30 = _t25 * _t15 * _t14;
+            const float _t31 = _t1 * _t30;
+            const float _t32 = (_t25 * _t25 - (_t23 * _t23 - _t11)) * _t14;
+            const float _t33 = _t1 * _t32;
+            const float _t34 = _t23 + _t33;
+            const float _t35 = _t20 * _t25 * _t14;
+            const float _t36 = _t1 * _t35;
+            const float _t37 = _t29 * (_t31 * _t17 - _t27 * _t34 - _t22 * _t36);
+            const float _t38 = _t27 + _t1 * _t37;
+            const float _t39 = _t20 * _t15 * _t14;
+            const float _t40 = _t1 * _t39;
+            const float _t41 = (_t15 * _t15 - (_t3 * _t3 - _t12)) * _t14;
+            const float _t42 = _t1 * _t41;
+            const float _t43 = _t3 + _t42;
+            const float _t44 = _t29 * (_t27 * _t31 + _t22 * _t40 - _t43 * _t17);
+            const float _t45 = _t1 * _t44 + _t17;
+            const float _t46 = (_t8 - _t18 * _t18 + _t20 * _t20) * _t14;
+            const float _t47 = _t1 * _t46;
+            const float _t48 = _t47 + _t18;
+            const float _t49 = _t29 * (_t48 * _t22 + _t27 * _t36 - _t40 * _t17);
+            const float _t50 = _t1 * _t49 - _t22;
+            const float _t51 = offsetgen_batch_sqrtf(_t38 * _t38 + _t45 * _t45 + _t50 * _t50);
+            const float _t52 = 1.0f / _t51;
+            const float _t53 = _t1 * ((_t41 * _t25 + _t30 * _t15 * 2.0f) * _t14);
+            const float _t54 = _t40 * _t36;
+            const float _t55 = _t1 * ((_t20 * _t30 + (_t25 * _t39 + _t35 * _t15)) * _t14);
+            const float _t56 = _t1 * ((_t32 * _t15 + _t30 * _t25 * 2.0f) * _t14);
+            const float _t57 = _t31 - _t1 * (_t29 * (_t53 * _t17 + _t31 * _t34 + _t54 + _t43 * _t31 - _t55 * _t22 - _t56 * _t27 + _t37 * _t44));
+            const float _t58 = _t1 * ((_t41 * _t15 * 3.0f - (_t5 + _t5 * 3.0f)) * _t14);
+            const float _t59 = _t40 * _t40;
+            const float _t60 = _t31 * _t31;
+            const float _t61 = _t1 * ((_t15 * _t39 * 2.0f + _t20 * _t41) * _t14);
+            const float _t62 = _t31 * _t36;
+            const float _t63 = _t1 * ((_t20 * _t39 * 2.0f + _t46 * _t15) * _t14);
+            const float _t64 = _t1 * (_t29 * (_t44 * _t49 - (_t48 * _t40 + _t17 * _t61 + _t43 * _t40 + _t62 - _t55 * _t27 - _t63 * _t22))) + _t40;
+            const float _t65 = _t45 + _t1 * (_t52 * (_t38 * _t57 - _t45 * (_t43 + _t1 * (_t29 * (_t44 * _t44 - (_t17 * (_t4 + _t58) + (_t43 * _t43 + (_t59 + _t60)) - _t53 * _t27 - _t22 * _t61)))) - _t64 * _t50));
+            const float _t66 = _t36 * _t36;
+            const float _t67 = _t1 * ((3.0f * (_t20 * _t46) - (3.0f * _t19 + _t19)) * _t14);
+            const float _t68 = _t1 * ((_t46 * _t25 + _t20 * _t35 * 2.0f) * _t14);
+            const float _t69 = _t31 * _t40;
+            const float _t70 = _t1 * ((_t35 * _t25 * 2.0f + _t20 * _t32) * _t14);
+            const float _t71 = _t1 * (_t29 * (_t34 * _t36 + _t48 * _t36 + _t55 * _t17 + _t69 - _t27 * _t70 - _t68 * _t22 + _t37 * _t49)) - _t36;
+            const float _t72 = _t50 - _t1 * (_t52 * ((_t48 - _t1 * (_t29 * (_t59 + _t66 + _t63 * _t17 + _t48 * _t48 - (_t7 + _t67) * _t22 - _t68 * _t27 - _t49 * _t49))) * _t50 + (_t38 * _t71 + _t64 * _t45)));
+            const float _t73 = _t1 * ((_t32 * _t25 * 3.0f - (_t24 + _t24 * 3.0f)) * _t14);
+            const float _t74 = _t38 - _t1 * (_t52 * (_t38 * (_t34 + _t1 * (_t29 * ((_t10 + _t73) * _t27 + _t70 * _t22 - _t60 - _t34 * _t34 - _t56 * _t17 - _t66 + _t37 * _t37))) + _t50 * _t71 - _t45 * _t57));
+            const float _t75 = _t0 * 0.5f;
+            const float _t76 = _t75 * _t15;
+            const float _t77 = _t76 - _t4;
+            const float _t78 = _t20 * _t75;
+            const float _t79 = _t78 - _t7;
+            const float _t80 = _t75 * _t25;
+            const float _t81 = _t10 - _t80;
+            const float _t82 = _t0 * 0.333333343f;
+            const float _t83 = _t30 * _t82;
+            const float _t84 = _t15 * _t82;
+            const float _t85 = _t4 - _t84;
+            const float _t86 = _t32 * _t82;
+            const float _t87 = _t25 * _t82;
+            const float _t88 = _t10 - _t87;
+            const float _t89 = _t35 * _t82;
+            const float _t90 = _t20 * _t82;
+            const float _t91 = _t90 - _t7;
+            const float _t92 = offsetgen_batch_sqrtf(_t85 * _t85 + _t91 * _t91 + _t88 * _t88);
+            const float _t93 = 1.0f / _t92;
+            const float _t94 = (_t83 * _t85 + (_t86 + _t23) * _t88 - _t89 * _t91) * _t93 * _t82 - _t88;
+            const float _t95 = _t41 * _t82;
+            const float _t96 = _t39 * _t82;
+            const float _t97 = _t82 * ((_t83 * _t88 + (_t3 + _t95) * _t85 - _t96 * _t91) * _t93) - _t85;
+            const float _t98 = _t46 * _t82;
+            const float _t99 = (_t89 * _t88 + _t96 * _t85 - (_t98 + _t18) * _t91) * _t93 * _t82 + _t91;
+            const float _t100 = (_t28 + _t51 + offsetgen_batch_sqrtf(_t65 * _t65 + _t72 * _t72 + _t74 * _t74)) * 2.66666675f + 2.0f * offsetgen_batch_sqrtf(_t77 * _t77 + _t79 * _t79 + _t81 * _t81) - 4.5f * (offsetgen_batch_sqrtf(_t94 * _t94 + _t97 * _t97 + _t99 * _t99) + _t92);
+            const float _t101 = fabsf(_t0);
+            const float _t102 = _t101 * 0.500000477f + _t13;
+            const float _t103 = (_t102 <= 1.73205256f) ? _t102 : 1.73205256f;
+            const float _t104 = _t13 - _t101 * 1.50000155f;
+            const float _t105 = ((-1.73205256f) <= _t104) ? _t104 : (-1.73205256f);
+            const float _t106 = _t23 + _t3 + _t18;
+            const float _t107 = _t4 + _t84;
+            const float _t108 = _t10 + _t87;
+            const float _t109 = _t90 + _t7;
+            const float _t110 = offsetgen_batch_sqrtf(_t107 * _t107 + _t108 * _t108 + _t109 * _t109);
+            const float _t111 = 1.0f / _t110;
+            const float _t112 = _t82 * (((_t86 - _t23) * _t108 + _t83 * _t107 + _t89 * _t109) * _t111) - _t108;
+            const float _t113 = _t107 - _t111 * (_t83 * _t108 + _t96 * _t109 - (_t3 - _t95) * _t107) * _t82;
+            const float _t114 = (_t89 * _t108 + (_t98 - _t18) * _t109 + _t96 * _t107) * _t111 * _t82 - _t109;
+            const float _t115 = _t78 + _t7;
+            const float _t116 = _t10 + _t80;
+            const float _t117 = _t76 + _t4;
+            const float _t118 = _t16 + _t4;
+            const float _t119 = _t10 + _t26;
+            const float _t120 = _t7 + _t21;
+            const float _t121 = offsetgen_batch_sqrtf(_t118 * _t118 + (_t119 * _t119 + _t120 * _t120));
+            const float _t122 = 1.0f / _t121;
+            const float _t123 = _t3 - _t42;
+            const float _t124 = _t122 * (_t123 * _t118 - _t40 * _t120 - _t31 * _t119);
+            const float _t125 = _t1 * _t124 + _t118;
+            const float _t126 = _t47 - _t18;
+            const float _t127 = (_t40 * _t118 + _t36 * _t119 + _t126 * _t120) * _t122;
+            const float _t128 = _t1 * _t127 - _t120;
+            const float _t129 = _t23 - _t33;
+            const float _t130 = _t122 * (_t129 * _t119 - _t36 * _t120 - _t31 * _t118);
+            const float _t131 = _t1 * _t130 + _t119;
+            const float _t132 = offsetgen_batch_sqrtf(_t125 * _t125 + _t128 * _t128 + _t131 * _t131);
+            const float _t133 = _t1 * ((_t127 * _t124 + (_t62 + (_t55 * _t119 + (_t126 * _t40 + _t63 * _t120)) + _t61 * _t118 - _t40 * _t123)) * _t122) - _t40;
+            const float _t134 = _t31 - _t1 * ((_t54 + (_t53 * _t118 + _t55 * _t120) + _t56 * _t119 - _t31 * _t129 - _t31 * _t123 - _t130 * _t124) * _t122);
+            const float _t135 = 1.0f / _t132;
+            const float _t136 = _t125 - _t1 * ((_t133 * _t128 + _t131 * _t134 - (_t123 + _t1 * ((_t53 * _t119 + (_t123 * _t123 + (_t60 + (_t59 + _t120 * _t61))) - (_t4 - _t58) * _t118 - _t124 * _t124) * _t122)) * _t125) * _t135);
+            const float _t137 = _t1 * ((_t126 * _t36 + (_t70 * _t119 + _t55 * _t118 + _t68 * _t120) + _t69 - _t129 * _t36 + _t127 * _t130) * _t122) - _t36;
+            const float _t138 = _t128 - _t1 * ((_t128 * (_t126 - _t1 * ((_t59 + (_t63 * _t118 + _t68 * _t119) + _t66 + _t126 * _t126 - (_t7 - _t67) * _t120 - _t127 * _t127) * _t122)) + _t131 * _t137 + _t125 * _t133) * _t135);
+            const float _t139 = _t131 - _t1 * (_t135 * (_t125 * _t134 + _t137 * _t128 - _t131 * (_t1 * (_t122 * (_t129 * _t129 + (_t56 * _t118 + (_t70 * _t120 + _t60)) + _t66 - (_t10 - _t73) * _t119 - _t130 * _t130)) + _t129)));
+            const float _t140 = -(4.5f * (_t110 + offsetgen_batch_sqrtf(_t112 * _t112 + (_t113 * _t113 + _t114 * _t114))) - offsetgen_batch_sqrtf(_t115 * _t115 + (_t116 * _t116 + _t117 * _t117)) * 2.0f - (_t132 + _t121 + offsetgen_batch_sqrtf(_t136 * _t136 + _t138 * _t138 + _t139 * _t139)) * 2.66666675f);
+            out[i + j] = (_t0 * ((_t100 <= _t103) ? ((_t105 <= _t100) ? _t100 : _t105) : _t103) + _t106) * (_t106 - _t0 * ((_t140 <= _t103) ? ((_t105 <= _t140) ? _t140 : _t105) : _t103));
+        }
     }
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < blocked; ++i) {
         if (!(fabsf(out[i]) <= HUGE_VALF)) out[i] = schwarzp_o4_shellf(x[i], y[i], z[i], t[i]);
     }
+    for (i = blocked; i < n; ++i) out[i] = schwarzp_o4_shellf(x[i], y[i], z[i], t[i]);
 }
 
 

@@ -11,6 +11,7 @@ packages=(
   glslang-tools libegl-dev libopengl-dev libgles-dev libgl1-mesa-dri libpng-dev
   python3 python3-sympy python3-matplotlib python3-numpy time
   clang-format clang-tidy
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -161,6 +161,14 @@ def save_atomic(fig, path):
     os.close(fd)
     try:
         fig.savefig(tmp, format="png")
+        # mkstemp creates 0600; a picture gets the mode of any new file (0666 less the umask),
+        # or keeps the mode of the file it replaces.
+        if os.path.isfile(path):
+            os.chmod(tmp, os.stat(path).st_mode & 0o7777)
+        else:
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):

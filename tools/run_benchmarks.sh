@@ -6,8 +6,10 @@
 #   against SymPy's C and nested AD, the batch API, and the float path.
 # Every timing is the median of repetitions (the machine is shared and noisy).
 #
-# Usage: tools/run_benchmarks.sh [--quick] [--sympy-o5] [--build-dir DIR] [--output FILE]
+# Usage: tools/run_benchmarks.sh [--quick] [--sympy-o5] [--methods-only] [--build-dir DIR] [--output FILE]
 #   --quick      fewer repetitions (a smoke run, ~5 minutes after the build)
+#   --methods-only  only the offset methods side by side (issue 10: bench_methods and generation time
+#                of both methods), in a run of its own that replaces just that section of the output
 #   --sympy-o5   also run SymPy's pipeline for the gyroid at order 5 once (~76 s more)
 # Needs the packages of tools/install_deps.sh (libbenchmark-dev, python3-sympy, time).
 set -euo pipefail
@@ -17,13 +19,15 @@ build=build-bench
 output=BENCHMARKS.md
 quick=0
 sympy_o5=0
+methods_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
     --sympy-o5) sympy_o5=1 ;;
+    --methods-only) methods_only=1 ;;
     --build-dir) build=$2; shift ;;
     --output) output=$2; shift ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "run_benchmarks: unknown option $1" >&2; exit 2 ;;
   esac
   shift
@@ -38,6 +42,64 @@ jobs=$(nproc)
 results=$build/bench/results
 started=$(date +%s)
 stamp() { echo "[run_benchmarks $(( $(date +%s) - started ))s] $*"; }
+
+machine_facts() {
+  echo "date=$(date -u '+%Y-%m-%d %H:%M UTC')"
+  echo "commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- src templates 2>/dev/null || echo '+local changes')"
+  echo "cpu=$(lscpu | sed -n 's/^Model name: *//p' | head -1)"
+  echo "cores=$(nproc)"
+  echo "compiler=$(${CC:-cc} --version | head -1)"
+  echo "load_start=$(cut -d' ' -f1-3 /proc/loadavg)"
+}
+
+# Generation time of one method: surface x order runs, through the CLI, into <results>/gen_<method>.tsv.
+time_method_generation() {  # method orders... (surfaces from $surfaces)
+  local method=$1; shift
+  echo -e "surface\torder\trep\twall_s\tuser_s\tsys_s\tmaxrss_kb" > "$results/gen_$method.tsv"
+  mkdir -p "$results/gen_$method"
+  for surface in $surfaces; do
+    for order in "$@"; do
+      header="$results/gen_$method/${surface}_o${order}.h"
+      $py bench/time_cli.py --runs "$gen_reps" --prefix "$surface\t$order\t" --before "rm -f $header" -- \
+        "$offsetgen" generate --surface "$surface" --order "$order" --method "$method" --lang c -o "$header" --quiet \
+        >> "$results/gen_$method.tsv"
+    done
+  done
+}
+
+run_bench_methods() {
+  "$bench/bench_methods" --benchmark_repetitions="$bench_reps" --benchmark_report_aggregates_only=true \
+    --benchmark_min_time="$min_time" --benchmark_out="$results/methods.json" --benchmark_out_format=json \
+    > "$results/methods.txt"
+  mkdir -p "$results/gen"
+  cp "$bench"/generated/*_richardson_o*.h "$bench"/generated/*_projection_o*.h "$results/gen/"
+}
+
+if [ $methods_only -eq 1 ]; then
+  stamp "configure and build ($build): offsetgen, bench_methods"
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DOFFSETGEN_BUILD_BENCHMARKS=ON -DOFFSETGEN_BUILD_TESTS=OFF > /dev/null
+  build_start=$(date +%s)
+  cmake --build "$build" -j"$jobs" --target offsetgen bench_methods > "$build/bench_build.log" 2>&1 ||
+    { tail -30 "$build/bench_build.log" >&2; exit 1; }
+  build_seconds=$(( $(date +%s) - build_start ))
+  rm -rf "$results"
+  mkdir -p "$results"
+  offsetgen=$build/offsetgen
+  bench=$build/bench
+  { machine_facts; echo "build_seconds=$build_seconds"; echo "quick=$quick"; } > "$results/machine.txt"
+  surfaces="gyroid schwarzp neovius diamond"
+  stamp "generation: 4 surfaces, richardson orders 2, 4, 8 and projection orders 2, 4, 8, 12, 16"
+  time_method_generation richardson 2 4 8
+  time_method_generation projection 2 4 8 12 16
+  stamp "offset methods side by side: bench_methods ($bench_reps repetitions)"
+  run_bench_methods
+  echo "load_end=$(cut -d' ' -f1-3 /proc/loadavg)" >> "$results/machine.txt"
+  echo "total_seconds=$(( $(date +%s) - started ))" >> "$results/machine.txt"
+  stamp "replacing the methods section of $output"
+  $py bench/report.py --results "$results" --output "$output" --methods-only
+  stamp "done: $output"
+  exit 0
+fi
 
 stamp "configure and build ($build)"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DOFFSETGEN_BUILD_BENCHMARKS=ON -DOFFSETGEN_BUILD_TESTS=ON > /dev/null
@@ -81,6 +143,10 @@ for surface in $surfaces; do
 done
 stamp "generation: gyroid order 10 (works at all), once"
 time_generate gyroid 10 1
+
+# The projection method (issue 10): orders 2-16 through the same CLI path.
+stamp "generation, projection method: orders 2, 4, 8, 12, 16, $gen_reps runs each"
+time_method_generation projection 2 4 8 12 16
 
 # ---- Naive baseline: plain nested GiNaC diff ---------------------------------------------------------
 stamp "naive nested GiNaC diff: orders 1-6, cap ${naive_cap}s"
@@ -143,6 +209,8 @@ for flags in O2 O3native O3native_nme; do
     --benchmark_min_time="$min_time" --benchmark_out="$results/eval_$flags.json" --benchmark_out_format=json \
     > "$results/eval_$flags.txt"
 done
+stamp "offset methods side by side: bench_methods ($bench_reps repetitions)"
+run_bench_methods
 stamp "batch agreement (tests/batch)"
 "$build/tests/batch/batch_tests" --gtest_filter='BatchAgreement.*' > "$results/batch_agreement.txt" 2>&1 ||
   echo "run_benchmarks: batch agreement test FAILED (see $results/batch_agreement.txt)" >&2

@@ -1,14 +1,31 @@
 #!/usr/bin/env bash
-# Regenerates the committed golden files in generated/ from generated/MANIFEST. Run it when a change
-# to the generator is meant to change its output, review `git diff generated/`, and commit both.
-# usage: tools/update_golden.sh [path/to/offsetgen]   (default: build/offsetgen)
+# Regenerates the committed golden files in generated/ from generated/MANIFEST: writes what the
+# manifest produces and removes every other file (a golden file whose manifest line is gone is
+# stale). Run it when a change to the generator is meant to change its output, review
+# `git status generated/` and `git diff generated/`, and commit both.
+# usage: tools/update_golden.sh [path/to/offsetgen] [golden-dir]   (defaults: build/offsetgen, generated)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tool=${1:-build/offsetgen}
+golden=${2:-generated}
 [ -x "$tool" ] || { echo "update_golden: $tool not found; build first (cmake --build build)" >&2; exit 2; }
+[ -f "$golden/MANIFEST" ] || { echo "update_golden: $golden/MANIFEST not found" >&2; exit 2; }
+fresh=$(mktemp -d)
+trap 'rm -rf "$fresh"' EXIT
 while read -r line; do
   case "$line" in ''|'#'*) continue ;; esac
   # shellcheck disable=SC2086  # the manifest holds whitespace-separated arguments
-  "$tool" generate $line --out-dir generated --quiet
-done < generated/MANIFEST
-echo "update_golden: generated/ is up to date with $tool; review with: git diff --stat generated/"
+  "$tool" generate $line --out-dir "$fresh" --quiet
+done < "$golden/MANIFEST"
+for file in "$golden"/*; do
+  name=$(basename "$file")
+  [ "$name" = MANIFEST ] && continue
+  if [ ! -e "$fresh/$name" ]; then
+    rm -- "$file"
+    echo "update_golden: removed $file (not produced by $golden/MANIFEST)"
+  fi
+done
+for file in "$fresh"/*; do
+  cmp -s "$file" "$golden/$(basename "$file")" || cp -- "$file" "$golden/"
+done
+echo "update_golden: $golden/ is up to date with $tool; review with: git status $golden/ && git diff --stat $golden/"

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <iterator>
 
 namespace offsetgen::check {
 namespace {
@@ -110,7 +111,7 @@ Toolchain find_toolchain() {
   return t;
 }
 
-std::string wrapper_source(const std::string& include_name, const FileMetadata& meta) {
+std::string wrapper_source(const std::string& include_name, const FileMetadata& meta, bool batch) {
   const std::string& p = meta.prefix;
   const std::string args = meta.dims == 3 ? "p[0], p[1], p[2]" : "p[0], p[1]";
   std::string s;
@@ -136,6 +137,15 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
       s += fmt::format("{0} offsetgen_check_graded{1}(const {0}* p);\n", t, fs);
       s +=
           fmt::format("{0} offsetgen_check_graded{1}(const {0}* p) {{ return {2}_graded{1}({3}); }}\n", t, fs, p, args);
+    }
+    if (batch) {
+      const std::string z = meta.dims == 3 ? "z, " : "";
+      for (const char* fn : {"offset", "shell"}) {
+        const std::string params = fmt::format("size_t n, const {0}* x, const {0}* y, const {0}* z, const {0}* v, {0}* out", t);
+        s += fmt::format("void offsetgen_check_{0}{1}_n({2});\n", fn, fs, params);
+        s += fmt::format("void offsetgen_check_{0}{1}_n({2}) {{ (void)z; {3}_{0}{1}_n(n, x, y, {4}v, out); }}\n", fn,
+                         fs, params, p, z);
+      }
     }
     (void)suffix;
   };
@@ -171,9 +181,15 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
   }
   const fs::path source = scratch.path() / "offsetgen_check_wrapper.c";
   const fs::path library = scratch.path() / "offsetgen_check_wrapper.so";
+  bool batch = false;
+  {
+    std::ifstream in(header, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    batch = text.find(meta.prefix + "_offset_n(") != std::string::npos;
+  }
   {
     std::ofstream out(source);
-    out << wrapper_source(include_name, meta);
+    out << wrapper_source(include_name, meta, batch);
     if (!out) throw std::runtime_error("cannot write " + source.string());
   }
 
@@ -244,6 +260,10 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
       f.network_density = symbol<decltype(f.network_density)>(handle, "offsetgen_check_network_density");
       f.offset_for_density = symbol<decltype(f.offset_for_density)>(handle, "offsetgen_check_offset_for_density");
     }
+    if (batch) {
+      f.offset_n = symbol<decltype(f.offset_n)>(handle, "offsetgen_check_offset_n");
+      f.shell_n = symbol<decltype(f.shell_n)>(handle, "offsetgen_check_shell_n");
+    }
   }
   if (meta.has_float) {
     f.fieldf = symbol<decltype(f.fieldf)>(handle, "offsetgen_check_fieldf");
@@ -257,6 +277,10 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
           symbol<decltype(f.thickness_for_densityf)>(handle, "offsetgen_check_thickness_for_densityf");
       f.network_densityf = symbol<decltype(f.network_densityf)>(handle, "offsetgen_check_network_densityf");
       f.offset_for_densityf = symbol<decltype(f.offset_for_densityf)>(handle, "offsetgen_check_offset_for_densityf");
+    }
+    if (batch) {
+      f.offsetf_n = symbol<decltype(f.offsetf_n)>(handle, "offsetgen_check_offsetf_n");
+      f.shellf_n = symbol<decltype(f.shellf_n)>(handle, "offsetgen_check_shellf_n");
     }
   }
   result.library = std::make_unique<LoadedLibrary>(handle, f);

@@ -5,6 +5,7 @@
 
 #include "check/metadata.h"
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,8 +32,12 @@ struct CompileStep {
   double seconds = 0;
 };
 
+// A batch function (_offset_n, _shell_n) through its wrapper: z is ignored in 2D.
+template <typename T>
+using BatchFunction = void (*)(size_t n, const T* x, const T* y, const T* z, const T* h_or_t, T* out);
+
 // The loaded code, through exported wrappers taking the coordinates as an array (dims entries).
-// Members are null where the file lacks the function (float twins, _graded).
+// Members are null where the file lacks the function (float twins, _graded, batch functions).
 struct LoadedFunctions {
   int dims = 3;
   double (*field)(const double* p) = nullptr;
@@ -45,6 +50,8 @@ struct LoadedFunctions {
   float (*shellf)(const float* p, float t) = nullptr;
   void (*normalf)(const float* p, float h, float* n) = nullptr;
   float (*gradedf)(const float* p) = nullptr;
+  BatchFunction<double> offset_n = nullptr, shell_n = nullptr;
+  BatchFunction<float> offsetf_n = nullptr, shellf_n = nullptr;
   // With density functions (null otherwise): _wall and the relations, double and float.
   double (*wall)(const double* p) = nullptr;
   double (*density)(double t) = nullptr;
@@ -82,8 +89,8 @@ struct CompileResult {
 };
 
 // The C translation unit that includes the header (twice: the include guard must hold) and exports
-// one wrapper per function with unmangled names.
-std::string wrapper_source(const std::string& include_name, const FileMetadata& meta);
+// one wrapper per function with unmangled names; `batch`: the header has the _n batch functions.
+std::string wrapper_source(const std::string& include_name, const FileMetadata& meta, bool batch = false);
 
 struct CompileOptions {
   std::string optimization;  // "" picks -O2, or -O0 above kLargeFunctionOps; tests force "-O0" for speed

@@ -7,6 +7,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -47,6 +48,8 @@ std::optional<std::string> optional_string_field(const json& j, const char* key)
 int int_field(const json& j, const char* key, int lo, int hi) {
   const json& v = field(j, key);
   if (!v.is_number_integer()) damaged(fmt::format("field \"{}\" must be an integer", key));
+  if (v.is_number_unsigned() && v.get<unsigned long long>() > static_cast<unsigned long long>(hi))
+    damaged(fmt::format("field \"{}\" = {} is outside {}..{}", key, v.get<unsigned long long>(), lo, hi));
   long long value = v.get<long long>();
   if (value < lo || value > hi) damaged(fmt::format("field \"{}\" = {} is outside {}..{}", key, value, lo, hi));
   return static_cast<int>(value);
@@ -67,17 +70,20 @@ bool is_identifier(const std::string& s) {
   return true;
 }
 
-}  // namespace
-
-FileKind kind_of_path(const std::string& path) {
-  auto dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == "glsl" || ext == "frag" || ext == "vert" || ext == "comp") return FileKind::Glsl;
-  return FileKind::C;
+// "language": "c" | "glsl". Older files lack it: a C header is the one with `static inline` functions.
+FileKind file_kind(const json& j, const std::string& text) {
+  auto it = j.find("language");
+  if (it == j.end() || it->is_null()) {
+    return text.find("static inline ") != std::string::npos ? FileKind::C : FileKind::Glsl;
+  }
+  if (*it == "c") return FileKind::C;
+  if (*it == "glsl") return FileKind::Glsl;
+  damaged("field \"language\" must be \"c\" or \"glsl\"");
 }
 
-FileMetadata parse_metadata(const std::string& text, FileKind kind) {
+}  // namespace
+
+FileMetadata parse_metadata(const std::string& text) {
   const std::string opener = std::string("/* ") + kMarker;
   auto start = text.find(opener);
   if (start == std::string::npos) {
@@ -98,13 +104,13 @@ FileMetadata parse_metadata(const std::string& text, FileKind kind) {
   json j;
   try {
     j = json::parse(body);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for numbers beyond double
     damaged(fmt::format("its JSON does not parse ({})", e.what()));
   }
   if (!j.is_object()) damaged("its JSON is not an object");
 
   FileMetadata m;
-  m.kind = kind;
+  m.kind = file_kind(j, text);
   m.json = body;
   // trim the surrounding spaces of the JSON text
   while (!m.json.empty() && std::isspace(static_cast<unsigned char>(m.json.front()))) m.json.erase(0, 1);
@@ -154,8 +160,9 @@ FileMetadata parse_metadata(const std::string& text, FileKind kind) {
   if (auto it = j.find("ops"); it != j.end() && !it->is_null()) {
     if (!it->is_object()) damaged("field \"ops\" must be an object");
     for (auto p = it->begin(); p != it->end(); ++p) {
-      if (!p.value().is_number_integer()) damaged(fmt::format("ops of \"{}\" must be an integer", p.key()));
-      m.ops[p.key()] = p.value().get<int>();
+      if (!p.value().is_number_unsigned() || p.value().get<unsigned long long>() > 1000000000ULL)
+        damaged(fmt::format("ops of \"{}\" must be a count (an integer from 0 to 1e9)", p.key()));
+      m.ops[p.key()] = static_cast<int>(p.value().get<unsigned long long>());
     }
   }
   if (auto it = j.find("density"); it != j.end() && !it->is_null()) {
@@ -183,6 +190,16 @@ FileMetadata parse_metadata(const std::string& text, FileKind kind) {
 }
 
 FileMetadata read_metadata(const std::string& path, std::string* text_out) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status))
+    throw InputError(fmt::format("'{}' is a directory; give one file written by `offsetgen generate` (a .h header "
+                                 "or a .glsl snippet)",
+                                 path));
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(fmt::format("'{}' is not a regular file (a device, FIFO or socket); give a header or GLSL "
+                                 "snippet written by `offsetgen generate`",
+                                 path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("cannot read '{}'", path));
   std::ostringstream buffer;
@@ -190,7 +207,7 @@ FileMetadata read_metadata(const std::string& path, std::string* text_out) {
   std::string text = buffer.str();
   if (text.find('\0') != std::string::npos)
     throw InputError(fmt::format("'{}' is a binary file, not a header or GLSL snippet written by offsetgen", path));
-  FileMetadata m = parse_metadata(text, kind_of_path(path));
+  FileMetadata m = parse_metadata(text);
   if (text_out) *text_out = std::move(text);
   return m;
 }

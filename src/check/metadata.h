@@ -41,15 +41,14 @@ struct FileMetadata {
   std::string json;  // the block's JSON text as found
 };
 
-// Parses the metadata out of a file's text. Throws offsetgen::InputError saying that the file was
-// not produced by offsetgen (no block) or that its block is damaged (bad JSON, missing or
-// ill-typed fields), naming the problem.
-FileMetadata parse_metadata(const std::string& text, FileKind kind);
+// Parses the metadata out of a file's text. The kind (C or GLSL) is the block's "language"; files
+// written before that field existed are told apart by their code, never by their name. Throws
+// offsetgen::InputError saying that the file was not produced by offsetgen (no block) or that its
+// block is damaged (bad JSON, missing or ill-typed fields), naming the problem.
+FileMetadata parse_metadata(const std::string& text);
 
-// Reads `path` and parses it; the kind follows from the extension (.glsl/.frag/.vert/.comp are
-// GLSL, everything else C). Throws InputError when the file cannot be read.
+// Reads `path` and parses it. Throws InputError when the file cannot be read, or is a directory or
+// another non-regular file.
 FileMetadata read_metadata(const std::string& path, std::string* text_out = nullptr);
-
-FileKind kind_of_path(const std::string& path);
 
 }  // namespace offsetgen::check

@@ -1,6 +1,7 @@
 #include "check/plot.h"
 
 #include "check/process.h"
+#include "emit/file_writer.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -9,10 +10,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
-#ifndef OFFSETGEN_SOURCE_DIR
-#define OFFSETGEN_SOURCE_DIR ""
-#endif
+// Defined only in test and benchmark executables (src/dev/source_paths.cpp): the source tree.
+extern "C" const char* offsetgen_source_dir() __attribute__((weak));
 
 namespace offsetgen::check {
 namespace {
@@ -36,10 +37,14 @@ std::string find_plot_script(const std::string& explicit_path) {
   if (!explicit_path.empty()) return is_file(explicit_path) ? explicit_path : "";
   if (const char* env = std::getenv("OFFSETGEN_PLOT_SCRIPT"); env != nullptr && *env != '\0')
     return is_file(env) ? std::string(env) : "";
-  const fs::path installed = executable_dir() / ".." / "share" / "offsetgen" / "tools" / "plot_convergence.py";
-  if (is_file(installed)) return fs::weakly_canonical(installed).string();
-  const fs::path source = fs::path(OFFSETGEN_SOURCE_DIR) / "tools" / "plot_convergence.py";
-  if (!std::string(OFFSETGEN_SOURCE_DIR).empty() && is_file(source)) return source.string();
+  for (const fs::path& share : {executable_dir() / ".." / "share", executable_dir() / "share"}) {  // installed, build tree
+    const fs::path script = share / "offsetgen" / "tools" / "plot_convergence.py";
+    if (is_file(script)) return fs::weakly_canonical(script).string();
+  }
+  if (offsetgen_source_dir) {
+    const fs::path source = fs::path(offsetgen_source_dir()) / "tools" / "plot_convergence.py";
+    if (is_file(source)) return source.string();
+  }
   return "";
 }
 
@@ -64,11 +69,25 @@ void render_plot(const nlohmann::json& spec, const std::string& png, const std::
     std::ofstream out(pattern);
     out << spec.dump(1);
   }
-  ProcessResult r = run_process({python, script, pattern, png});
+  // The script draws into a scratch file; the PNG is then written by offsetgen's own rules (normal
+  // mode, symlinks written through, no device or FIFO clobbered).
+  const std::string scratch_png = pattern.substr(0, pattern.size() - 5) + ".png";
+  ProcessResult r = run_process({python, script, pattern, scratch_png});
   std::error_code ec;
   fs::remove(pattern, ec);
+  std::string bytes;
+  {
+    std::ifstream in(scratch_png, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  fs::remove(scratch_png, ec);
   if (!r.started || r.exit_code != 0)
     throw InputError(fmt::format("--plot: {} {} failed (exit {}):\n{}", python, script, r.exit_code, r.output));
+  try {
+    write_file_if_changed(png, bytes);
+  } catch (const std::runtime_error& e) {
+    throw InputError(fmt::format("--plot: {}", e.what()));
+  }
 }
 
 }  // namespace offsetgen::check

@@ -26,6 +26,9 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
   request.order = meta.order;
   request.method = meta.method;
   request.thickness = meta.thickness;
+  // The file's own language: its names need only be valid there.
+  request.c = meta.kind == FileKind::C;
+  request.glsl = meta.kind == FileKind::Glsl;
   request.density_functions = meta.has_density;
   request.density = meta.wall_density;
   request.density_field = meta.density_field;

@@ -42,6 +42,67 @@ Point numeric_normal(const std::function<double(const double*)>& g, const Point&
   return n;
 }
 
+// |grad F| at p by central differences of the probe's field.
+double gradient_length(const Probe& probe, const Point& p) {
+  constexpr double step = 1e-6;
+  Point g{};
+  for (int i = 0; i < probe.dims; ++i) {
+    Point a = p, b = p;
+    a[static_cast<size_t>(i)] += step;
+    b[static_cast<size_t>(i)] -= step;
+    g[static_cast<size_t>(i)] = (probe.field(a.data()) - probe.field(b.data())) / (2 * step);
+  }
+  return length(g, probe.dims);
+}
+
+// Tells singular points: |grad F| below kSingularGradient of its median over the samples on F = 0.
+// There (where branches of the zero set cross, or at a critical point on it) the offset is not
+// defined to any order, and rays measure the geometry of the crossing, not the method.
+class SingularTest {
+ public:
+  SingularTest(const Probe& probe, const std::vector<Point>& on_f) : probe_(probe) {
+    std::vector<double> lengths;
+    for (const auto& p : on_f) lengths.push_back(gradient_length(probe, p));
+    if (!lengths.empty()) {
+      std::nth_element(lengths.begin(), lengths.begin() + static_cast<long>(lengths.size() / 2), lengths.end());
+      threshold_ = kSingularGradient * lengths[lengths.size() / 2];
+    }
+  }
+  bool operator()(const Point& p) const { return !(gradient_length(probe_, p) >= threshold_); }
+
+  // For a ray that found no crossing: the offset by h is not defined near q when the level sets of F
+  // curve there on a scale below |h| (|h| ||Hess F|| >= |grad F|), as next to a crossing.
+  bool beyond_reach(const Point& q, double h) const {
+    constexpr double step = 1e-4;
+    const int dims = probe_.dims;
+    double hessian2 = 0;
+    for (int i = 0; i < dims; ++i) {
+      for (int j = 0; j < dims; ++j) {
+        auto at = [&](double si, double sj) {
+          Point r = q;
+          r[static_cast<size_t>(i)] += si * step;
+          r[static_cast<size_t>(j)] += sj * step;
+          return probe_.field(r.data());
+        };
+        const double hij = (at(1, 1) - at(1, -1) - at(-1, 1) + at(-1, -1)) / (4 * step * step);
+        hessian2 += hij * hij;
+      }
+    }
+    return !(std::fabs(h) * std::sqrt(hessian2) < gradient_length(probe_, q));
+  }
+
+ private:
+  const Probe& probe_;
+  double threshold_ = 0;
+};
+
+// The point at distance s along n from p.
+Point along(const Point& p, const Point& n, double s, int dims) {
+  Point q = p;
+  for (int i = 0; i < dims; ++i) q[static_cast<size_t>(i)] += s * n[static_cast<size_t>(i)];
+  return q;
+}
+
 void report(const ThicknessOptions& options, const std::string& what) {
   if (options.progress) options.progress(what);
 }
@@ -150,6 +211,10 @@ ThicknessReport measure_constant(const Probe& probe, const ThicknessOptions& opt
   out.samples_on_f = static_cast<int>(on_f.size());
   std::vector<Point> normals;
   for (const auto& p : on_f) normals.push_back(unit_normal(probe, p, 0.0));
+  const SingularTest singular(probe, on_f);
+  std::vector<char> singular_on_f;
+  for (const auto& p : on_f) singular_on_f.push_back(singular(p) ? 1 : 0);
+  out.singular_on_f = static_cast<int>(std::count(singular_on_f.begin(), singular_on_f.end(), 1));
 
   int index = 0;
   for (double h : options.h) {
@@ -163,6 +228,11 @@ ThicknessReport measure_constant(const Probe& probe, const ThicknessOptions& opt
     for (size_t i = 0; i < on_f.size(); ++i) {
       const Point& p = on_f[i];
       const Point& n = normals[i];
+      if (singular_on_f[i]) {
+        ++row.f_to_phi.singular;
+        if (options.shell) ++row.shell.singular;
+        continue;
+      }
       if (length(n, dims) == 0) {
         row.f_to_phi.miss(p);
         if (options.shell) row.shell.miss(p);
@@ -171,6 +241,8 @@ ThicknessReport measure_constant(const Probe& probe, const ThicknessOptions& opt
       // F -> phi: distance along +n to phi(., h) = 0, expected h
       if (auto s = ray_crossing(offset_at_h, p, n, dims, h, ah)) {
         row.f_to_phi.add(std::fabs(*s - h) / ah, p);
+      } else if (singular.beyond_reach(p, h)) {
+        ++row.f_to_phi.singular;
       } else {
         row.f_to_phi.miss(p);
       }
@@ -180,6 +252,8 @@ ThicknessReport measure_constant(const Probe& probe, const ThicknessOptions& opt
         auto minus = ray_crossing(shell_at_t, p, n, dims, -ah, ah);
         if (plus && minus) {
           row.shell.add(std::fabs((*plus - *minus) - 2 * ah) / (2 * ah), p);
+        } else if (singular.beyond_reach(p, h)) {
+          ++row.shell.singular;
         } else {
           row.shell.miss(p);
         }
@@ -188,12 +262,24 @@ ThicknessReport measure_constant(const Probe& probe, const ThicknessOptions& opt
     // phi -> F: points on phi(., h) = 0, rays along the offset surface's own normal back to F = 0
     for (const Point& q : sample_zero_set(offset_at_h, dims, options.grid, options.scan)) {
       const Point n = unit_normal(probe, q, h);
+      // Singular when F's gradient vanishes at the expected foot point q - h n, or where the ray lands.
+      if (length(n, dims) > 0 && singular(along(q, n, -h, dims))) {
+        ++row.phi_to_f.singular;
+        continue;
+      }
       if (length(n, dims) == 0) {
         row.phi_to_f.miss(q);
         continue;
       }
-      if (auto s = ray_crossing(probe.field, q, n, dims, -h, ah)) {
+      const auto s = ray_crossing(probe.field, q, n, dims, -h, ah);
+      if (s && singular(along(q, n, *s, dims))) {
+        ++row.phi_to_f.singular;
+        continue;
+      }
+      if (s) {
         row.phi_to_f.add(std::fabs(-*s - h) / ah, q);
+      } else if (singular.beyond_reach(q, h)) {
+        ++row.phi_to_f.singular;
       } else {
         row.phi_to_f.miss(q);
       }
@@ -214,7 +300,8 @@ ThicknessReport measure_constant(const Probe& probe, const ThicknessOptions& opt
 namespace {
 
 GradedRow measure_graded_row(const Probe& probe, ThicknessFunction& thickness, const std::vector<Point>& on_f,
-                             const std::vector<Point>& normals, double lambda, bool compiled,
+                             const std::vector<Point>& normals, const SingularTest& singular,
+                             const std::vector<char>& singular_on_f, double lambda, bool compiled,
                              const ThicknessOptions& options) {
   const int dims = probe.dims;
   GradedRow row;
@@ -235,6 +322,11 @@ GradedRow measure_graded_row(const Probe& probe, ThicknessFunction& thickness, c
       ++row.total.skipped;
       ++row.one_sided.skipped;
       row.total.skipped_reason = row.one_sided.skipped_reason = skip_reason;
+      continue;
+    }
+    if (singular_on_f[i]) {
+      ++row.total.singular;
+      ++row.one_sided.singular;
       continue;
     }
     const Point& n = normals[i];
@@ -284,7 +376,10 @@ GradedRow measure_graded_row(const Probe& probe, ThicknessFunction& thickness, c
         row.paper.miss(q);
         continue;
       }
-      if (auto s = ray_crossing(probe.field, q, n, dims, -sign * hq, hq)) {
+      const auto s = ray_crossing(probe.field, q, n, dims, -sign * hq, hq);
+      if (singular(along(q, n, s ? *s : -sign * hq, dims))) {
+        ++row.paper.singular;
+      } else if (s) {
         row.paper.add(std::fabs(-sign * *s - hq) / hq, q);
       } else {
         row.paper.miss(q);
@@ -325,6 +420,9 @@ GradedReport measure_graded(const Probe& probe, ThicknessFunction& thickness, co
   const std::vector<Point> on_f = sample_zero_set(probe.field, dims, options.grid, options.scan);
   std::vector<Point> normals;
   for (const auto& p : on_f) normals.push_back(unit_normal(probe, p, 0.0));
+  const SingularTest singular(probe, on_f);
+  std::vector<char> singular_on_f;
+  for (const auto& p : on_f) singular_on_f.push_back(singular(p) ? 1 : 0);
 
   int index = 0;
   for (double h_max : options.h) {
@@ -332,13 +430,13 @@ GradedReport measure_graded(const Probe& probe, ThicknessFunction& thickness, co
     if (!(h_max > 0)) continue;
     report(options, fmt::format("graded h_max = {:g} ({}/{})", h_max, index, options.h.size() + 1));
     const double lambda = 2 * h_max / peak;
-    GradedRow row = measure_graded_row(probe, thickness, on_f, normals, lambda, false, options);
+    GradedRow row = measure_graded_row(probe, thickness, on_f, normals, singular, singular_on_f, lambda, false, options);
     row.h_max = h_max;
     out.rows.push_back(row);
   }
   report(options, "graded: as given");
-  GradedRow given =
-      measure_graded_row(probe, thickness, on_f, normals, 1.0, use_compiled_graded && probe.graded != nullptr, options);
+  GradedRow given = measure_graded_row(probe, thickness, on_f, normals, singular, singular_on_f, 1.0,
+                                       use_compiled_graded && probe.graded != nullptr, options);
   given.as_given = true;
   given.h_max = peak / 2;
   out.rows.push_back(given);

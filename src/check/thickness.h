@@ -55,6 +55,8 @@ struct ErrorStats {
   int missed = 0;   // rays without a crossing within reach (or with a zero normal)
   int skipped = 0;  // points not used at all, with the reason in `skipped_reason` (e.g. target <= 0)
   std::string skipped_reason;
+  int singular = 0;   // points skipped because grad F vanishes where the ray starts or ends (a crossing
+                      // or critical point of the zero set: no offset of order m exists there)
   double mean = NAN;
   double max = NAN;
   Point worst{};  // the sample point with the largest error
@@ -95,9 +97,13 @@ struct ThicknessOptions {
   std::function<void(const std::string&)> progress;  // may be empty
 };
 
+// Where |grad F| is below this fraction of its median over the samples on F = 0, a sample is singular.
+constexpr double kSingularGradient = 1e-2;
+
 struct ThicknessReport {
   int grid = 0, scan = 0;
   int samples_on_f = 0;
+  int singular_on_f = 0;  // samples on F = 0 skipped as singular (all rows)
   std::vector<SweepRow> rows;
   OrderFit fit_f_to_phi, fit_phi_to_f, fit_shell;
 };

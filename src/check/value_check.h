@@ -1,12 +1,15 @@
-// Item 2 of `offsetgen check`: the compiled functions against a 40-digit CLN evaluation of the same
-// symbolic model (offset/high_precision.h), at random points. The figure of merit is how far the
-// rounding moves the zero set: |delta phi| / |grad F| in cell units.
+// Item 2 of `offsetgen check`: every emitted function against a 40-digit CLN evaluation of the same
+// symbolic model (offset/high_precision.h), at random points, each judged within its precision's
+// tolerance: the double scalar functions, their float twins, the batch functions (_n) of both
+// precisions, and the GLSL functions run on Mesa llvmpipe. The figure of merit for values is how far
+// the deviation moves the zero set, |delta phi| / |grad F| in cell units; for the normal, |delta n|.
 #pragma once
 
 #include "check/compile.h"
 #include "check/metadata.h"
 #include "check/reference.h"
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -19,33 +22,62 @@ struct ValueCheckOptions {
   int normal_stride = 4;     // the normal (2 * dims extra 40-digit evaluations) at every n-th point
   unsigned seed = 20210415;  // fixed, so runs are reproducible
   double h_max = 0.1;        // h (and t/2) drawn uniformly from [-h_max, h_max] (cell units)
-  double tolerance = 1e-12;  // max zero-set shift of the double functions (cell units)
+  // The limits, from the largest deviations over the 9 catalog surfaces at orders 1-4, five of them at
+  // orders 5-6 and five user expressions (README, "Checking accuracy"), with a margin of 8x or more:
+  // double values 1.7e-14, double normal 7.9e-9, float32 values 2.5e-5, float32 normal 8.3e-5.
+  double tolerance = 1e-12;               // double functions: max zero-set shift (cell units)
+  double normal_tolerance = 1e-6;         // double normal: max |delta n|
+  double float_tolerance = 2e-4;          // float32 (C float twins, GLSL): max zero-set shift
+  double float_normal_tolerance = 1e-3;   // float32 normal: max |delta n|
   int digits = 40;
   std::function<void(int done, int total)> progress;  // may be empty
 };
 
 struct FunctionDeviation {
-  std::string function;  // "offset", "shellf", ...
+  std::string function;         // "offset", "shellf", "offset_n", "glsl offset", ...
   bool is_float = false;
   int points = 0;
-  double max_shift = 0;  // max |delta| / |grad| (cell units); for the normal: max |delta n|
+  double max_shift = 0;         // max |delta| / |grad F| (cell units); for the normal: max |delta n|
   double mean_shift = 0;
   std::vector<double> worst_point;  // where max_shift occurs (cell units), then h or t when used
-  std::string measure;              // how the shift is defined, for the report
+  std::string measure;          // how the shift is defined, for the report
+  double tolerance = 0;         // the limit it is judged against
+  bool pass = false;
 };
 
 struct ValueReport {
   std::vector<FunctionDeviation> functions;
-  double max_shift_double = 0;  // over field, offset, shell, graded (double)
+  double max_shift_double = 0;  // over field, offset, shell, graded and the batch functions (double)
   double max_normal_double = 0;
-  double max_shift_float = 0;  // informational: float32 cannot meet 1e-12
+  double max_shift_float = 0;   // over the float32 functions (C float, GLSL), normal aside
   double tolerance = 0;
   int digits = 40;
-  bool has_double = true;  // false for float-only files: nothing is judged
-  bool pass = false;
+  bool has_double = true;
+  bool pass = false;            // every function within its tolerance
+};
+
+// A float32 implementation evaluated at many points at once (the GLSL snippet on llvmpipe):
+// `function` is "field", "offset", "shell", "normal" or "graded"; each input is (x, y, z, h|t) in 3D,
+// (x, y, h|t, 0) in 2D; returns inputs.size() * components floats. Throws std::runtime_error when it
+// cannot run.
+using Float32Runner = std::function<std::vector<float>(const std::string& function,
+                                                       const std::vector<std::array<float, 4>>& inputs,
+                                                       int components)>;
+
+// What to compare: the loaded C functions (may be null) and a float32 runner (may be empty).
+struct Implementations {
+  const LoadedFunctions* c = nullptr;
+  Float32Runner glsl;
+  std::string glsl_label = "glsl";  // prefix of the GLSL rows
+  bool glsl_graded = false;         // the snippet has _graded
 };
 
 // `thickness` is the graded wall's t(x) when the file has a _graded function.
+ValueReport check_values(const Implementations& implementations, const Reference& reference,
+                         const FileMetadata& meta, const std::optional<GiNaC::ex>& thickness,
+                         const ValueCheckOptions& options);
+
+// The C functions only (the common case).
 ValueReport check_values(const LoadedFunctions& functions, const Reference& reference, const FileMetadata& meta,
                          const std::optional<GiNaC::ex>& thickness, const ValueCheckOptions& options);
 

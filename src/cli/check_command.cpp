@@ -4,6 +4,7 @@
 #include "check/plot.h"
 #include "check/report.h"
 #include "cli/command_line.h"
+#include "emit/file_writer.h"
 #include "surfaces/expression_input.h"
 #include "surfaces/surface.h"
 
@@ -19,7 +20,8 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "check",
       "Check an emitted file: compile it (C99 strict, C++17, dlopen), compare its values with a 40-digit\n"
-      "evaluation, and measure the wall thickness it produces (paper section 5.2.1). GLSL: glslang compile.");
+      "evaluation, and measure the wall thickness it produces (paper section 5.2.1). GLSL: glslang compile,\n"
+      "then its values on Mesa llvmpipe. The file's kind comes from its metadata, not its name.");
   cmd->add_option("file", o.file, "Header (.h) or GLSL snippet (.glsl) written by `offsetgen generate`")->required();
   cmd->add_option("--h", o.h_list,
                   "Offsets to measure, comma-separated, cell units (default 0.001..0.1, 9 log-spaced)");
@@ -29,7 +31,8 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
                   "Path of plot_convergence.py (default: $OFFSETGEN_PLOT_SCRIPT, <prefix>/share/offsetgen/tools, "
                   "the source tree)");
   cmd->add_option("-t,--thickness", o.thickness,
-                  "Graded wall: total thickness t(x, y, z) in cell units, e.g. \"0.1*x\" (default: the file's)");
+                  "Graded wall: total thickness t(x, y, z) > 0 in cell units, e.g. \"0.1*x\" (default: the file's)")
+      ->each([&o](const std::string&) { o.thickness_given = true; });
   cmd->add_option("-p,--param", o.params, "NAME=VALUE for the thickness expression (repeatable)");
   cmd->add_option("--grid", o.grid, "Sample grid points per axis on [0, 1] (21: step 0.05 as in the paper)")
       ->check(CLI::Range(2, 401));
@@ -39,7 +42,14 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
                   "Random points of the 40-digit value check (default 200; 60 at orders 5-6, 16 above)")
       ->check(CLI::Range(0, 1000000));
   cmd->add_option("--seed", o.seed, "Seed of the random points");
-  cmd->add_option("--tolerance", o.tolerance, "Max zero-set shift of the value check (cell units)");
+  cmd->add_option("--tolerance", o.tolerance, "Max zero-set shift of the double functions (cell units)")
+      ->capture_default_str();
+  cmd->add_option("--float-tolerance", o.float_tolerance,
+                  "Max zero-set shift of the float32 functions (C float twins, GLSL on llvmpipe)")
+      ->capture_default_str();
+  cmd->add_option("--normal-tolerance", o.normal_tolerance, "Max |delta n| of the double normal")->capture_default_str();
+  cmd->add_option("--float-normal-tolerance", o.float_normal_tolerance, "Max |delta n| of the float32 normal")
+      ->capture_default_str();
   cmd->add_option("--order-slack", o.order_slack, "Fitted order must reach the expected order minus this");
   cmd->add_flag("--no-values", o.no_values, "Skip the 40-digit value check");
   cmd->add_flag("--no-thickness", o.no_thickness, "Skip the wall-thickness measurement");
@@ -82,7 +92,7 @@ int run_check(const CheckOptions& o) {
   check::CheckSettings s;
   s.file = o.file;
   if (!o.h_list.empty()) s.h = check::parse_h_list(o.h_list);
-  if (!o.thickness.empty()) s.thickness = o.thickness;
+  if (o.thickness_given) s.thickness = o.thickness;
   for (const auto& p : o.params) s.params.insert(split_param(p));
   s.json_path = o.json_path;
   s.plot_path = o.plot_path;
@@ -92,6 +102,9 @@ int run_check(const CheckOptions& o) {
   s.values.points = o.points;
   s.values.seed = o.seed;
   s.values.tolerance = o.tolerance;
+  s.values.float_tolerance = o.float_tolerance;
+  s.values.normal_tolerance = o.normal_tolerance;
+  s.values.float_normal_tolerance = o.float_normal_tolerance;
   s.order_slack = o.order_slack;
   s.run_values = !o.no_values;
   s.run_thickness = !o.no_thickness;
@@ -100,6 +113,16 @@ int run_check(const CheckOptions& o) {
   s.density.block = parse_block(o.block);
   s.density.sampling.grid = o.density_grid;
   s.density.sampling.shifts = o.density_shifts;
+  // Outputs that cannot be written, or that name one file twice, are usage errors before the long run.
+  std::vector<std::string> outputs;
+  for (const auto* path : {&s.json_path, &s.plot_path})
+    if (!path->empty()) outputs.push_back(*path);
+  try {
+    for (const auto& path : outputs) require_writable(path);
+    require_distinct(outputs);
+  } catch (const std::runtime_error& e) {
+    throw InputError(fmt::format("{}{}", outputs.size() == 1 && !s.json_path.empty() ? "--json: " : "", e.what()));
+  }
   // Find the plot script before the long run, so a missing one is a quick usage error.
   std::string script;
   if (!s.plot_path.empty()) {
@@ -115,9 +138,11 @@ int run_check(const CheckOptions& o) {
   std::fputs(check::format_report(report).c_str(), stdout);
   std::fflush(stdout);
   if (!s.json_path.empty()) {
-    std::ofstream out(s.json_path);
-    out << check::report_json(report).dump(1) << "\n";
-    if (!out) throw InputError(fmt::format("--json: cannot write '{}'", s.json_path));
+    try {
+      write_file_if_changed(s.json_path, check::report_json(report).dump(1) + "\n");
+    } catch (const std::runtime_error& e) {
+      throw InputError(fmt::format("--json: {}", e.what()));
+    }
   }
   if (!s.plot_path.empty()) {
     if (report.thickness) {

@@ -15,12 +15,16 @@ struct CheckOptions {
   std::string plot_path;
   std::string plot_script;
   std::string thickness;
+  bool thickness_given = false;  // an empty --thickness is refused, not ignored
   std::vector<std::string> params;
   int grid = 21;
   int scan = 200;
   int points = 0;  // 0: by order (check/value_check.h)
   unsigned seed = 20210415;
   double tolerance = 1e-12;
+  double float_tolerance = 2e-4;
+  double normal_tolerance = 1e-6;
+  double float_normal_tolerance = 1e-3;
   double order_slack = 0.3;
   bool no_values = false;
   bool no_thickness = false;

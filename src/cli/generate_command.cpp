@@ -22,7 +22,8 @@ void add_generate_command(CLI::App& app, GenerateOptions& o) {
   auto* cmd = app.add_subcommand("generate", "Generate offset functions as a C header and/or GLSL snippet");
   cmd->add_option("-s,--surface", o.surface, "Catalog surface (see `offsetgen list`)");
   cmd->add_option("-e,--expr", o.expression,
-                  "Your own F(x, y[, z]) in cell units, e.g. \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\"");
+                  "Your own F(x, y[, z]) in cell units, e.g. \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\". Accepted: " +
+                      accepted_syntax_summary() + "; decimals are exact");
   cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
   cmd->add_option("-n,--name", o.name, "Function prefix (default <surface>_o<order>; required with --expr)");
   std::string methods, orders;
@@ -40,20 +41,23 @@ void add_generate_command(CLI::App& app, GenerateOptions& o) {
   cmd->add_option("--precision", o.precision, "C precision: double, float (f-suffixed names) or both")
       ->check(CLI::IsMember({"double", "float", "both"}))
       ->capture_default_str();
-  cmd->add_option("-t,--thickness", o.thickness,
-                  "Graded wall: total thickness t(x, y, z) in cell units; adds <prefix>_graded");
+  cmd->add_option("-t,--thickness", o.thickness, "Graded wall: total thickness t(x, y, z) > 0 in cell units; adds <prefix>_graded")
+      ->each([&o](const std::string&) { o.thickness_given = true; });
   cmd->add_flag("--density-functions", o.density_functions,
                 "Add <prefix>_density(t), _thickness_for_density(rho), _network_density(h) and "
                 "_offset_for_density(rho) (periodic 3D surfaces; docs/density.md)");
   cmd->add_option("--density", o.density,
                   "Relative density rho of the sheet: adds <prefix>_wall(x, y, z), the shell of that density "
-                  "(implies --density-functions)");
+                  "(implies --density-functions)")
+      ->each([&o](const std::string&) { o.density_given = true; });
   cmd->add_option("--density-field", o.density_field,
                   "Graded density rho(x, y, z): adds <prefix>_graded with t(p) = thickness_for_density(rho(p)) "
-                  "(implies --density-functions)");
-  cmd->add_option("-o,--output", o.output,
-                  "Output file (with --lang all: the .h; the .glsl goes beside it); - for stdout");
-  cmd->add_option("--out-dir", o.out_dir, "Directory for <prefix>.h / <prefix>.glsl when -o is not given");
+                  "(implies --density-functions)")
+      ->each([&o](const std::string&) { o.density_field_given = true; });
+  cmd->add_option("-o,--output", o.output, "Output file (with --lang all: the .h; the .glsl goes beside it); - for stdout")
+      ->each([&o](const std::string&) { o.output_given = true; });
+  cmd->add_option("--out-dir", o.out_dir, "Directory for <prefix>.h / <prefix>.glsl when -o is not given")
+      ->each([&o](const std::string&) { o.out_dir_given = true; });
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
 }
 
@@ -83,13 +87,18 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
     if (request.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
     request.params[key] = value;
   }
-  if (!o.thickness.empty()) request.thickness = o.thickness;
+  if (o.thickness_given) request.thickness = o.thickness;
   request.density_functions = o.density_functions;
-  if (!o.density.empty()) request.density = parse_density_value("--density", o.density);
-  if (!o.density_field.empty()) request.density_field = o.density_field;
+  if (o.density_given) request.density = parse_density_value("--density", o.density);
+  if (o.density_field_given) request.density_field = o.density_field;
   request.command = banner_command(args);
-  if (!o.output.empty() && !o.out_dir.empty()) throw InputError("give either -o or --out-dir, not both");
+  if (!o.quiet) request.notice = [](const std::string& message) { fmt::print(stderr, "offsetgen: {}\n", message); };
+  if (o.output_given && o.output.empty()) throw InputError("-o: the file name is empty (use -o - for stdout)");
+  if (o.out_dir_given && o.out_dir.empty()) throw InputError("--out-dir: the directory name is empty (use --out-dir .)");
+  if (o.output_given && o.out_dir_given) throw InputError("give either -o or --out-dir, not both");
   if (o.output == "-" && o.lang == "all") throw InputError("-o - (stdout) takes one language, not --lang all");
+  if (o.out_dir_given && !fs::is_directory(o.out_dir))
+    throw InputError(fmt::format("--out-dir: '{}' is not a directory", o.out_dir));
 
   // Resolve the prefix first: default file names depend on it.
   std::string prefix = o.name;
@@ -103,15 +112,21 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   }
   request.c_file_name = fs::path(c_path).filename().string();
   request.glsl_file_name = fs::path(glsl_path).filename().string();
-  // Fail on an unwritable destination before any work, and before any file is touched.
-  for (const auto* path : {&c_path, &glsl_path}) {
-    if (!path->empty() && *path != "-") {
-      try {
-        require_writable(*path);
-      } catch (const std::runtime_error& e) {
-        throw InputError(e.what());
-      }
-    }
+  // Fail on an unwritable destination, or two outputs on one file, before any work and before any
+  // file is touched.
+  std::vector<std::string> destinations;
+  for (const auto* path : {&c_path, &glsl_path})
+    if (!path->empty() && *path != "-") destinations.push_back(*path);
+  try {
+    for (const auto& path : destinations) require_writable(path);
+    require_distinct(destinations);
+  } catch (const std::runtime_error& e) {
+    if (request.c && request.glsl && destinations.size() == 2 && glsl_path == c_path)
+      throw InputError(fmt::format("-o {0} with --lang all would write the C header and the GLSL snippet both to "
+                                   "'{0}' (the snippet goes beside the header, with the extension .glsl); name the "
+                                   "header, e.g. -o {1}",
+                                   o.output, replace_extension(o.output, ".h")));
+    throw InputError(e.what());
   }
 
   Generation g = generate(request);

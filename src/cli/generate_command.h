@@ -19,6 +19,9 @@ struct GenerateOptions {
   int order = 4;
   std::string method = kDefaultMethod;
   bool quiet = false;
+  // Whether the option was on the command line at all: an empty value is refused, not ignored.
+  bool output_given = false, out_dir_given = false, thickness_given = false;
+  bool density_given = false, density_field_given = false;
 };
 
 void add_generate_command(CLI::App& app, GenerateOptions& options);

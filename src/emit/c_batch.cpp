@@ -6,12 +6,15 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
 namespace offsetgen {
 namespace {
+
 
 bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
@@ -23,27 +26,56 @@ std::string join(const std::vector<std::string>& parts, const char* separator) {
 
 bool batched(const EmittedFunction& f) { return !f.vector_result && (f.suffix == "offset" || f.suffix == "shell"); }
 
+// The bits of a range limit, for the helpers' integer comparison (templates/c_batch.in).
+std::string double_bits(const char* value) {
+  const double d = std::stod(value);
+  std::uint64_t b = 0;
+  std::memcpy(&b, &d, sizeof b);
+  return fmt::format("0x{:016x}", b);
+}
+
+std::string float_bits(const char* value) {
+  const float f = std::stof(value);
+  std::uint32_t b = 0;
+  std::memcpy(&b, &f, sizeof b);
+  return fmt::format("0x{:08x}", b);
+}
+
+// Points per block of the batch loops: a multiple of every vector width up to AVX-512 (8 doubles,
+// 16 floats), so that the block loop's constant trip count needs no remainder.
+int block_size(Precision precision) { return precision == Precision::Double ? 8 : 16; }
+
+bool identifier_start(const std::string& code, size_t i) { return i == 0 || !identifier_char(code[i - 1]); }
+
 }  // namespace
 
-std::string rename_trig_calls(const std::string& code, const std::string& prefix) {
+std::string rename_calls(const std::string& code, const std::vector<std::string>& names, const std::string& prefix) {
   std::string out;
   out.reserve(code.size() + code.size() / 8);
   size_t i = 0;
   while (i < code.size()) {
-    bool at_word_start = i == 0 || !identifier_char(code[i - 1]);
-    if (at_word_start && (code.compare(i, 3, "sin") == 0 || code.compare(i, 3, "cos") == 0)) {
-      size_t end = i + 3;
-      if (end < code.size() && code[end] == 'f') ++end;
-      if (end < code.size() && code[end] == '(') {
-        out += prefix;
-        out.append(code, i, end - i);
-        i = end;
-        continue;
+    bool renamed = false;
+    if (identifier_start(code, i)) {
+      for (const auto& name : names) {
+        if (code.compare(i, name.size(), name) != 0) continue;
+        size_t end = i + name.size();
+        if (end < code.size() && code[end] == 'f') ++end;  // the float spelling
+        if (end < code.size() && code[end] == '(') {
+          out += prefix;
+          out.append(code, i, end - i);
+          i = end;
+          renamed = true;
+          break;
+        }
       }
     }
-    out += code[i++];
+    if (!renamed) out += code[i++];
   }
   return out;
+}
+
+std::string rename_trig_calls(const std::string& code, const std::string& prefix) {
+  return rename_calls(code, {"sin", "cos"}, prefix);
 }
 
 std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFunction>& functions,
@@ -60,32 +92,35 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
   for (Precision precision : precisions) {
     const Dialect d{Language::C, precision};
     const std::string real = d.real_type();
-    support +=
-        fmt::format(fmt::runtime(sections.at(precision == Precision::Double ? "support_double" : "support_float")),
-                    fmt::arg("range_double", kTrigRangeDouble), fmt::arg("range_float", kTrigRangeFloat));
+    support += fmt::format(fmt::runtime(sections.at(precision == Precision::Double ? "support_double" : "support_float")),
+                           fmt::arg("range_double", kTrigRangeDouble), fmt::arg("range_float", kTrigRangeFloat),
+                           fmt::arg("range_double_bits", double_bits(kTrigRangeDouble)),
+                           fmt::arg("range_float_bits", float_bits(kTrigRangeFloat)));
     for (const auto& f : functions) {
       if (!batched(f)) continue;
       std::vector<std::string> inputs = coordinates;
       inputs.push_back(f.extra_parameter);
-      std::vector<std::string> elements, array_params;
+      std::vector<std::string> elements, block_elements, array_params;
       for (const auto& input : inputs) {
         elements.push_back(input + "[i]");
+        block_elements.push_back(input + "[i + j]");
         array_params.push_back(fmt::format("const {} *{}", real, input));
       }
-      const PrintedBody printed = print_program(*f.program, d, elements);
+      const PrintedBody printed = print_program(*f.program, d, block_elements);
       std::string body;
-      for (const auto& line : printed.temporaries) body += "        " + line + "\n";
-      body += fmt::format("        out[i] = {};\n", printed.outputs.at(0));
+      for (const auto& line : printed.temporaries) body += "            " + line + "\n";
+      body += fmt::format("            out[i + j] = {};\n", printed.outputs.at(0));
 
       const std::string scalar = facts.prefix + "_" + f.suffix + d.suffix();
       const std::string name = scalar + "_n";
       list += fmt::format(" *   void {}(n, {}, out)\n", name, join(inputs, ", "));
-      rendered +=
-          fmt::format(fmt::runtime(sections.at("function")), fmt::arg("doc", f.doc), fmt::arg("scalar", scalar),
-                      fmt::arg("name", name), fmt::arg("call", join(elements, ", ")),
-                      fmt::arg("array_params", join(array_params, ", ")), fmt::arg("real", real),
-                      fmt::arg("body", rename_trig_calls(body, "offsetgen_batch_")), fmt::arg("abs", d.abs_name()),
-                      fmt::arg("huge", precision == Precision::Double ? "HUGE_VAL" : "HUGE_VALF"));
+      rendered += fmt::format(
+          fmt::runtime(sections.at("function")), fmt::arg("doc", f.doc), fmt::arg("scalar", scalar),
+          fmt::arg("name", name), fmt::arg("call", join(elements, ", ")),
+          fmt::arg("array_params", join(array_params, ", ")), fmt::arg("real", real),
+          fmt::arg("body", rename_calls(body, {"sin", "cos", "sqrt"}, "offsetgen_batch_")),
+          fmt::arg("block", block_size(precision)), fmt::arg("abs", d.abs_name()),
+          fmt::arg("huge", precision == Precision::Double ? "HUGE_VAL" : "HUGE_VALF"));
     }
   }
   if (!list.empty()) list.pop_back();

@@ -10,8 +10,8 @@
 
 namespace offsetgen {
 
-// The batch section of a C header: the loop pragma macro, the vectorisable sin/cos helpers of each
-// requested precision, and one `_n` function per batched scalar function (offset and shell).
+// The batch section of a C header: the loop pragma macro, the vectorisable sin/cos/sqrt helpers of
+// each requested precision, and one `_n` function per batched scalar function (offset and shell).
 // Returns "" when `functions` holds nothing to batch.
 std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFunction>& functions,
                          const std::vector<Precision>& precisions);
@@ -21,8 +21,12 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
 inline constexpr const char* kTrigRangeDouble = "1.0e8";
 inline constexpr const char* kTrigRangeFloat = "8192.0";
 
-// Replaces calls of sin/cos (and sinf/cosf) in printed C by prefix + the name, e.g. with prefix
-// "offsetgen_batch_": offsetgen_batch_sin/cos(f); other text is untouched.
+// Replaces calls of the functions `names` (and their float spellings, name + "f") in printed C by
+// prefix + the name, e.g. names {"sin", "sqrt"} with prefix "offsetgen_batch_": offsetgen_batch_sin(f),
+// offsetgen_batch_sqrt(f); other text (asin, sinh, _tsin, ...) is untouched.
+std::string rename_calls(const std::string& code, const std::vector<std::string>& names, const std::string& prefix);
+
+// rename_calls for sin and cos.
 std::string rename_trig_calls(const std::string& code, const std::string& prefix);
 
 }  // namespace offsetgen

@@ -33,6 +33,13 @@ std::string render_function(const std::string& skeleton, const FileFacts& facts,
   if (!f.extra_parameter.empty()) inputs.push_back(f.extra_parameter);
   PrintedBody printed = print_program(*f.program, d, inputs);
   std::string body;
+  // A function that does not read a parameter (x + y + z has a constant normal) says so, for
+  // -Wunused-parameter.
+  std::vector<bool> read(inputs.size(), false);
+  for (NodeId id : schedule(*f.program))
+    if (f.program->node(id).op == Op::Input) read[static_cast<size_t>(f.program->node(id).input)] = true;
+  for (size_t i = 0; i < inputs.size(); ++i)
+    if (!read[i]) body += fmt::format("    (void){};\n", inputs[i]);
   for (const auto& line : printed.temporaries) body += "    " + line + "\n";
   if (f.vector_result) {
     for (size_t i = 0; i < printed.outputs.size(); ++i) body += fmt::format("    n[{}] = {};\n", i, printed.outputs[i]);

@@ -99,11 +99,20 @@ std::string density_paragraph(const FileFacts& facts, bool glsl) {
   return out;
 }
 
+// Distinct prefixes must give distinct guards (foo and FOO, too). An all-lowercase prefix gives the
+// usual OFFSETGEN_FOO_H; one with capitals keeps its case and ends in a lowercase extension
+// (OFFSETGEN_FOO_h), which no all-lowercase prefix produces.
 std::string guard_name(const std::string& prefix, const std::string& extension) {
+  const bool has_capitals =
+      std::any_of(prefix.begin(), prefix.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)); });
   std::string guard = "OFFSETGEN_";
-  for (char c : prefix + "_" + extension)
-    guard += static_cast<char>(std::isalnum(static_cast<unsigned char>(c)) ? std::toupper(static_cast<unsigned char>(c))
-                                                                           : '_');
+  for (char c : prefix) {
+    const auto u = static_cast<unsigned char>(c);
+    guard += std::isalnum(u) ? static_cast<char>(has_capitals ? c : std::toupper(u)) : '_';
+  }
+  guard += "_";
+  for (char c : extension)
+    guard += static_cast<char>(has_capitals ? std::tolower(static_cast<unsigned char>(c)) : std::toupper(static_cast<unsigned char>(c)));
   return guard;
 }
 

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -16,30 +19,155 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path directory_of(const std::string& path) {
-  fs::path dir = fs::path(path).parent_path();
+constexpr int kMaxSymlinkHops = 40;  // as the kernel's ELOOP limit
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) {
+  throw std::runtime_error(fmt::format("cannot write '{}': {}", path, why));
+}
+
+const char* type_name(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// Paths that stand for file descriptors or process state rather than files: writing "through" them
+// would replace a system file or a descriptor's target. Stdout is `-o -`.
+bool is_descriptor_path(const fs::path& p) {
+  const std::string s = fs::absolute(p).lexically_normal().string();
+  return s.rfind("/proc/", 0) == 0 || s.rfind("/dev/fd/", 0) == 0 || s == "/dev/stdout" || s == "/dev/stderr" ||
+         s == "/dev/stdin" || s == "/dev/tty";
+}
+
+// Where the bytes of `given` go: the file at the end of its symlink chain.
+struct Destination {
+  fs::path path;
+  bool exists = false;
+  struct stat st {};
+};
+
+Destination resolve(const std::string& given) {
+  if (given.empty()) fail(given, "the path is empty");
+  Destination d;
+  d.path = given;
+  for (int hops = 0;; ++hops) {
+    if (is_descriptor_path(d.path))
+      fail(given, "it is a device or descriptor path, not a file; write to stdout with `-o -`");
+    struct stat link {};
+    if (::lstat(d.path.c_str(), &link) != 0) {
+      if (errno == ENOENT) break;  // a new file (also the end of a dangling symlink)
+      fail(given, std::strerror(errno));
+    }
+    if (!S_ISLNK(link.st_mode)) {
+      d.exists = true;
+      d.st = link;
+      break;
+    }
+    if (hops == kMaxSymlinkHops) fail(given, "too many levels of symbolic links");
+    std::error_code ec;
+    const fs::path target = fs::read_symlink(d.path, ec);
+    if (ec) fail(given, ec.message());
+    d.path = target.is_absolute() ? target : d.path.parent_path() / target;
+  }
+  if (d.exists && !S_ISREG(d.st.st_mode))
+    fail(given, fmt::format("it is {}; offsetgen writes only regular files{}", type_name(d.st.st_mode),
+                            S_ISDIR(d.st.st_mode) ? "" : " (stdout is `-o -`)"));
+  return d;
+}
+
+fs::path directory_of(const fs::path& path) {
+  fs::path dir = path.parent_path();
   return dir.empty() ? fs::path(".") : dir;
+}
+
+// The process umask, read without changing it (umask(2) can only set it, which races with threads).
+mode_t current_umask() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("Umask:", 0) == 0) return static_cast<mode_t>(std::stoul(line.substr(6), nullptr, 8));
+  }
+  return 022;
+}
+
+bool write_all(int fd, const std::string& content) {
+  size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<size_t>(n);
+  }
+  return true;
+}
+
+// Rewrites the file itself: its inode, links, owner and mode stay.
+void write_in_place(const std::string& given, const Destination& d, const std::string& content) {
+  const int fd = ::open(d.path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) fail(given, std::strerror(errno));
+  const bool ok = write_all(fd, content);
+  const int err = errno;
+  if (::close(fd) != 0 || !ok) fail(given, std::strerror(ok ? errno : err));
+}
+
+// Writes a temporary file beside the target and renames it over the target. Returns false (having
+// removed the temporary) when the existing file's owner cannot be given to the new one.
+bool write_by_rename(const std::string& given, const Destination& d, const std::string& content) {
+  std::string tmp = (directory_of(d.path) / ("." + d.path.filename().string() + ".tmpXXXXXX")).string();
+  const int fd = ::mkstemp(tmp.data());
+  if (fd < 0) fail(given, std::strerror(errno));
+  auto abandon = [&](int err) {
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    return err;
+  };
+  if (d.exists && ::fchown(fd, d.st.st_uid, d.st.st_gid) != 0) {
+    abandon(errno);
+    return false;
+  }
+  const mode_t mode = d.exists ? (d.st.st_mode & 07777) : (0666 & ~current_umask());
+  if (::fchmod(fd, mode) != 0 || !write_all(fd, content)) fail(given, std::strerror(abandon(errno)));
+  if (::close(fd) != 0 || std::rename(tmp.c_str(), d.path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    fail(given, std::strerror(err));
+  }
+  return true;
 }
 
 }  // namespace
 
 void require_writable(const std::string& path) {
-  fs::path dir = directory_of(path);
+  const Destination d = resolve(path);
+  const fs::path dir = directory_of(d.path);
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
-    throw std::runtime_error(fmt::format("cannot write '{}': directory '{}' does not exist", path, dir.string()));
-  }
-  if (access(dir.c_str(), W_OK) != 0) {
-    throw std::runtime_error(fmt::format("cannot write '{}': directory '{}' is not writable", path, dir.string()));
-  }
-  if (fs::exists(path, ec) && (fs::is_directory(path, ec) || access(path.c_str(), W_OK) != 0)) {
-    throw std::runtime_error(fmt::format("cannot write '{}': it is a directory or read-only", path));
+  if (!fs::is_directory(dir, ec)) fail(path, fmt::format("directory '{}' does not exist", dir.string()));
+  const bool dir_writable = ::access(dir.c_str(), W_OK) == 0;
+  if (d.exists && ::access(d.path.c_str(), W_OK) != 0) fail(path, "the file is read-only");
+  if (!d.exists && !dir_writable) fail(path, fmt::format("directory '{}' is not writable", dir.string()));
+}
+
+void require_distinct(const std::vector<std::string>& paths) {
+  for (size_t i = 0; i < paths.size(); ++i) {
+    for (size_t j = i + 1; j < paths.size(); ++j) {
+      const Destination a = resolve(paths[i]), b = resolve(paths[j]);
+      std::error_code ec;
+      const bool same_name = fs::weakly_canonical(a.path, ec) == fs::weakly_canonical(b.path, ec);
+      const bool same_file = a.exists && b.exists && a.st.st_dev == b.st.st_dev && a.st.st_ino == b.st.st_ino;
+      if (same_name || same_file)
+        throw std::runtime_error(
+            fmt::format("'{}' and '{}' are the same file: one output would overwrite the other", paths[i], paths[j]));
+    }
   }
 }
 
 bool write_file_if_changed(const std::string& path, const std::string& content) {
-  {
-    std::ifstream existing(path, std::ios::binary);
+  const Destination d = resolve(path);
+  if (d.exists) {
+    std::ifstream existing(d.path, std::ios::binary);
     if (existing) {
       std::ostringstream old;
       old << existing.rdbuf();
@@ -47,23 +175,9 @@ bool write_file_if_changed(const std::string& path, const std::string& content) 
     }
   }
   require_writable(path);
-  std::string tmp = (directory_of(path) / ("." + fs::path(path).filename().string() + ".tmpXXXXXX")).string();
-  int fd = mkstemp(tmp.data());
-  if (fd < 0) throw std::runtime_error(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
-  FILE* file = fdopen(fd, "wb");
-  bool ok = file && std::fwrite(content.data(), 1, content.size(), file) == content.size();
-  ok = file && std::fflush(file) == 0 && ok;
-  if (file) std::fclose(file);
-  if (ok) {
-    // mkstemp creates 0600; generated sources should read like any other file.
-    fs::permissions(tmp,
-                    fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read);
-  }
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    int err = errno;
-    std::remove(tmp.c_str());
-    throw std::runtime_error(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
-  }
+  const bool dir_writable = ::access(directory_of(d.path).c_str(), W_OK) == 0;
+  const bool keep_links = d.exists && d.st.st_nlink > 1;
+  if (!dir_writable || keep_links || !write_by_rename(path, d, content)) write_in_place(path, d, content);
   return true;
 }
 

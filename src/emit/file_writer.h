@@ -1,18 +1,34 @@
-// Writing generated files: atomically, and only when the bytes change.
+// Writing generated files: atomically, only when the bytes change, and never over anything that is
+// not a regular file.
+//
+// The rules, for every file offsetgen writes (headers, snippets, check's --json and --plot):
+//   - only regular files are written: a directory, device node, FIFO or socket is refused with a
+//     message, and so is a path that leads into /dev or /proc (stdout is `-o -`, nothing else);
+//   - a symlink is written through: its target gets the new bytes, the link stays;
+//   - an existing file keeps its mode and owner; a new one gets 0666 less the umask;
+//   - the new bytes go to a temporary file beside the target and are renamed over it, so a reader
+//     never sees half a file. A file with other hard links, or whose owner this process cannot give
+//     to a new file, is rewritten in place instead, so the links and the owner stay;
+//   - a file that already holds exactly the new bytes is left alone (timestamp included), so build
+//     systems do not rebuild dependants for nothing.
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace offsetgen {
 
-// Writes `content` to `path` through a temporary file in the same directory and a rename, so a
-// reader never sees half a file. Leaves the file (and its timestamp) alone when it already holds
-// exactly `content`, so build systems do not rebuild dependants for nothing.
-// Returns true when the file was written. Throws std::runtime_error naming the path on failure.
+// Writes `content` to `path` by the rules above. Returns true when the file was written. Throws
+// std::runtime_error naming the path on failure.
 bool write_file_if_changed(const std::string& path, const std::string& content);
 
-// Throws std::runtime_error if `path` could not be written (missing or read-only directory), without
-// creating anything. Lets a multi-file run fail before it writes its first file.
+// Throws std::runtime_error if `path` could not be written by write_file_if_changed (missing or
+// read-only directory, not a regular file, a device path), without creating anything. Lets a run fail
+// before its long work and before it writes its first file.
 void require_writable(const std::string& path);
+
+// Throws std::runtime_error when two of `paths` name the same file (also through symlinks, hard
+// links or spellings such as ./a and a), which would make one output overwrite the other.
+void require_distinct(const std::vector<std::string>& paths);
 
 }  // namespace offsetgen

@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace offsetgen {
 namespace {
+
+constexpr int kMaxInlineDepth = 64;
 
 // Binding strength, for parentheses: select < comparison < sum < product < unary < atom.
 enum Precedence { kSelect = 0, kCompare = 1, kSum = 2, kProduct = 3, kUnary = 4, kAtom = 5 };
@@ -47,10 +50,18 @@ class BodyPrinter {
 
     PrintedBody body;
     int counter = 0;
+    // How deep each node's inlined expression nests. Long chains of single-use nodes (a sum of
+    // thousands of terms) get a temporary every kMaxInlineDepth levels, so printing never recurses
+    // deeper than that and no compiler meets more than that many nested parentheses.
+    std::vector<int> depth(program_.nodes().size(), 0);
     for (NodeId id : order) {
       const Node& n = program_.node(id);
       if (n.op == Op::Input || n.op == Op::Const) continue;
-      if (uses[static_cast<size_t>(id)] < 2) continue;
+      int d = 0;
+      for (int operand : {n.a, n.b, n.c})
+        if (operand >= 0 && names_[static_cast<size_t>(operand)].empty()) d = std::max(d, depth[static_cast<size_t>(operand)]);
+      depth[static_cast<size_t>(id)] = d + 1;
+      if (uses[static_cast<size_t>(id)] < 2 && depth[static_cast<size_t>(id)] < kMaxInlineDepth) continue;
       std::string expression = expression_of(id, kSelect);
       names_[static_cast<size_t>(id)] = fmt::format("_t{}", counter++);
       body.temporaries.push_back(fmt::format("{} {} = {};", n.boolean ? dialect_.bool_decl() : dialect_.local_decl(),

@@ -6,9 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
-#ifndef OFFSETGEN_SOURCE_TEMPLATE_DIR
-#define OFFSETGEN_SOURCE_TEMPLATE_DIR ""
-#endif
+// Defined only in test and benchmark executables (src/dev/source_paths.cpp): the source tree.
+extern "C" const char* offsetgen_source_dir() __attribute__((weak));
 
 namespace offsetgen {
 namespace fs = std::filesystem;
@@ -19,8 +18,11 @@ std::vector<fs::path> candidate_directories() {
   if (const char* env = std::getenv("OFFSETGEN_TEMPLATE_DIR"); env && *env) dirs.emplace_back(env);
   std::error_code ec;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) dirs.push_back(exe.parent_path().parent_path() / "share" / "offsetgen" / "templates");
-  if (*OFFSETGEN_SOURCE_TEMPLATE_DIR) dirs.emplace_back(OFFSETGEN_SOURCE_TEMPLATE_DIR);
+  if (!ec) {
+    dirs.push_back(exe.parent_path().parent_path() / "share" / "offsetgen" / "templates");  // installed: bin/..
+    dirs.push_back(exe.parent_path() / "share" / "offsetgen" / "templates");  // the build tree's copy
+  }
+  if (offsetgen_source_dir) dirs.push_back(fs::path(offsetgen_source_dir()) / "templates");
   return dirs;
 }
 

@@ -8,7 +8,9 @@
 namespace offsetgen {
 
 // Search order: $OFFSETGEN_TEMPLATE_DIR, <executable>/../share/offsetgen/templates (installed),
-// then the source tree's templates/ (build tree). Throws std::runtime_error naming the paths tried.
+// <executable>/share/offsetgen/templates (the build tree's copy beside the built offsetgen), and for
+// test executables only the source tree's templates/. Throws std::runtime_error naming the paths
+// tried.
 std::string load_template(const std::string& name);
 
 // A template holding several skeletons, each introduced by a line "@@ <name>"; text before the first

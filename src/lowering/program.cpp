@@ -241,6 +241,11 @@ NodeId Program::pow(NodeId a, NodeId b) {
 }
 
 NodeId Program::comparison(Op op, NodeId a, NodeId b) {
+  // Constant operands fold to 1 or 0 (IEEE: a NaN compares false), so 3.0 > 0.0 is never printed.
+  if (is_const(a) && is_const(b)) {
+    const double x = node(a).value, y = node(b).value;
+    return constant((op == Op::LessEq ? x <= y : x > y) ? 1.0 : 0.0);
+  }
   Node n;
   n.op = op;
   n.a = a;
@@ -254,6 +259,7 @@ NodeId Program::greater(NodeId a, NodeId b) { return comparison(Op::Greater, a, 
 
 NodeId Program::select(NodeId condition, NodeId if_true, NodeId if_false) {
   if (if_true == if_false) return if_true;
+  if (is_const(condition)) return node(condition).value != 0.0 ? if_true : if_false;
   Node n;
   n.op = Op::Select;
   n.a = condition;

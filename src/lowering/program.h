@@ -99,6 +99,8 @@ class Evaluator {
  public:
   explicit Evaluator(const Program& program);
   const std::vector<double>& operator()(const std::vector<double>& inputs);
+  // Every node's value from the last call (indexed by NodeId), e.g. to find where a NaN arose.
+  const std::vector<double>& node_values() const { return values_; }
 
  private:
   const Program& program_;

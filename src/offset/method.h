@@ -86,6 +86,9 @@ class OffsetMethod {
   virtual std::string name() const = 0;         // the --method / METHOD value
   virtual std::string description() const = 0;  // one line, for --help and `offsetgen list`
   virtual int max_order() const = 0;
+  // True where the construction's size grows geometrically with the order, so that request checks
+  // extrapolate its cost from low orders before building (validate/cost_guard.h).
+  virtual bool cost_grows_geometrically() const { return false; }
   // The order a request for `requested` builds (projection rounds odd orders up).
   virtual int effective_order(int requested) const = 0;
   // Builds the construction (symbolic model and cell bounds) for one surface.

@@ -250,6 +250,7 @@ class RichardsonMethod final : public OffsetMethod {
     return "the paper's extended Richardson extrapolation of recursive first-order offsets (orders 1-12)";
   }
   int max_order() const override { return kMethodMaxOrder; }
+  bool cost_grows_geometrically() const override { return true; }  // ~5x per order
   int effective_order(int requested) const override {
     static_assert(!kMethodEvenOrdersOnly, "every order is built as asked");
     return requested;

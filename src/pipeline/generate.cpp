@@ -8,10 +8,12 @@
 #include "lowering/program.h"
 #include "surfaces/catalog.h"
 #include "surfaces/expression_input.h"
+#include "validate/request_checks.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -24,10 +26,12 @@ void require_identifier(const std::string& name) {
   if (!ok) throw InputError(fmt::format("--name '{}' is not a C identifier (letters, digits, _)", name));
 }
 
-nlohmann::ordered_json metadata(const GenerationRequest& request, const Generation& g) {
+// `language` ("c" or "glsl") tells `offsetgen check` what kind of file it reads.
+nlohmann::ordered_json metadata(const GenerationRequest& request, const Generation& g, const char* language) {
   const MethodFacts& method = g.method();
   nlohmann::ordered_json j;
   j["format"] = 1;
+  j["language"] = language;
   j["generator"] = std::string("offsetgen ") + OFFSETGEN_VERSION;
   j["prefix"] = g.prefix;
   j["surface"] = request.surface.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(request.surface);
@@ -63,6 +67,7 @@ nlohmann::ordered_json metadata(const GenerationRequest& request, const Generati
   }
   std::vector<std::string> precisions;
   for (auto p : request.precisions) precisions.push_back(p == Precision::Double ? "double" : "float");
+  if (std::string(language) == "glsl") precisions = {"float"};
   j["precisions"] = precisions;
   j["gradient_bound"] = g.construction->bounds().gradient;
   j["hessian_bound"] = g.construction->bounds().hessian;
@@ -184,7 +189,18 @@ Generation build_generation(const GenerationRequest& request) {
   LoweringOptions options;
   if (request.thickness)
     options.thickness = parse_thickness_expression(*request.thickness, request.params, g.surface.dims);
-  if (wants_density(request)) {
+  RequestFacts facts_to_check{&g.surface,
+                              g.prefix,
+                              method.effective_order(request.order),
+                              method.cost_grows_geometrically(),
+                              request.c,
+                              request.glsl,
+                              std::count(request.precisions.begin(), request.precisions.end(), Precision::Float) > 0,
+                              &options.thickness,
+                              request.thickness.value_or(""),
+                              request.notice};
+  check_before_build(facts_to_check);
+  if (wants_density(request)) {  // after the cheap checks: the surface constants take seconds
     g.density = resolve_density(request, g.surface);
     g.density_programs = density::density_programs(*g.density);
     if (request.density) options.wall_thickness = g.wall_thickness = g.density->sheet_thickness(*request.density);
@@ -198,7 +214,8 @@ Generation build_generation(const GenerationRequest& request) {
 
   g.construction = method.build(g.surface, request.order);
   g.programs = lower_surface(g.surface, *g.construction, options);
-  g.metadata_json = metadata(request, g).dump();
+  check_after_build(facts_to_check, *g.construction, g.programs);
+  g.metadata_json = metadata(request, g, "c").dump();
   return g;
 }
 
@@ -222,6 +239,7 @@ Generation generate(const GenerationRequest& request) {
   }
   if (request.glsl) {
     facts.file_name = request.glsl_file_name.empty() ? g.prefix + ".glsl" : request.glsl_file_name;
+    facts.metadata_json = metadata(request, g, "glsl").dump();
     g.glsl_snippet = emit_glsl_snippet(facts, functions);
   }
   return g;

@@ -10,6 +10,7 @@
 #include "offset/method.h"
 #include "surfaces/surface.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -40,6 +41,7 @@ struct GenerationRequest {
   std::string command;      // the exact command, for the banner
   std::string c_file_name;  // names printed in the banners
   std::string glsl_file_name;
+  std::function<void(const std::string&)> notice;  // announces a long run with a time estimate; may be empty
 };
 
 struct Generation {
@@ -47,7 +49,7 @@ struct Generation {
   std::unique_ptr<OffsetConstruction> construction;
   SurfacePrograms programs;
   std::string prefix;
-  std::string metadata_json;
+  std::string metadata_json;  // the C header's block; the GLSL snippet's says "language":"glsl"
   // With density functions: the model, the relations as programs, the _wall thickness.
   std::optional<density::DensityModel> density;
   std::optional<density::DensityPrograms> density_programs;

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace offsetgen {
 
@@ -23,5 +24,12 @@ GiNaC::ex parse_thickness_expression(const std::string& text, const std::map<std
 
 // "a=0.3" -> {"a", "0.3"}; throws InputError on a malformed entry.
 std::pair<std::string, std::string> split_param(const std::string& assignment);
+
+// The functions --expr, --param and --thickness accept, in alphabetical order. Every other name
+// followed by '(' is refused by name; the only constant is Pi.
+const std::vector<std::string>& accepted_functions();
+
+// "sin cos ... ; constant Pi; + - * / ^ (or **)": for --help and messages.
+std::string accepted_syntax_summary();
 
 }  // namespace offsetgen

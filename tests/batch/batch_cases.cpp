@@ -1,9 +1,6 @@
 #include "batch_cases.h"
 
-#include <fstream>
-#include <regex>
-#include <sstream>
-#include <stdexcept>
+#include "check/metadata.h"
 
 namespace offsetgen::batch_test {
 
@@ -24,19 +21,8 @@ const Cases& all_cases() {
 }
 
 HeaderFacts header_facts(const std::string& header) {
-  const std::string path = std::string(OFFSETGEN_BATCH_HEADER_DIR) + "/" + header + ".h";
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  HeaderFacts facts;
-  std::smatch m;
-  if (!std::regex_search(s, m, std::regex("\"gradient_bound\":([-0-9.eE+]+)")))
-    throw std::runtime_error("no gradient_bound in " + path);
-  facts.gradient_bound = std::stod(m[1].str());
-  if (std::regex_search(s, m, std::regex("\"scale\":([-0-9.eE+]+)"))) facts.scale = std::stod(m[1].str());
-  return facts;
+  const check::FileMetadata meta = check::read_metadata(std::string(OFFSETGEN_BATCH_HEADER_DIR) + "/" + header + ".h");
+  return {meta.gradient_bound, meta.scale};
 }
 
 }  // namespace offsetgen::batch_test

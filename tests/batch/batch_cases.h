@@ -41,7 +41,7 @@ inline const std::vector<BatchFunction<double>>& cases_of<double>() { return all
 template <>
 inline const std::vector<BatchFunction<float>>& cases_of<float>() { return all_cases().floats; }
 
-// Facts from a generated header's metadata line.
+// Facts from a generated header's metadata block (read by src/check/metadata.h).
 struct HeaderFacts {
   double gradient_bound = 0;  // max |grad F| in natural units (X = scale * x)
   double scale = 1;

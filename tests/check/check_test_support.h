@@ -1,8 +1,10 @@
-// Helpers of the check tests: generate files into a scratch directory, run the CLI.
+// Helpers of the check tests: generate files into a scratch directory and compile them; running
+// the CLI, scratch directories and files come from tests/support.
 #pragma once
 
 #include "check/compile.h"
 #include "check/metadata.h"
+#include "offsetgen_test_support.h"
 #include "pipeline/generate.h"
 
 #include <memory>
@@ -11,17 +13,16 @@
 
 namespace offsetgen::check::testing {
 
-// A fresh empty directory under the build tree, per test and process.
-std::string scratch_dir(const std::string& name);
+using test_support::run_offsetgen;
+using test_support::scratch_dir;
+inline std::string read_text(const std::string& path) { return test_support::read_file(path); }
+inline void write_text(const std::string& path, const std::string& text) { test_support::write_file(path, text); }
 
 // Generates `surface` at `order` (optionally graded) and writes the C header (or the GLSL snippet)
 // into `dir`; returns the path.
 std::string write_header(const std::string& dir, const std::string& surface, int order,
                          const std::string& thickness = "", bool glsl = false,
                          const std::string& method = kDefaultMethod);
-
-std::string read_text(const std::string& path);
-void write_text(const std::string& path, const std::string& text);
 
 // A generated header compiled (strict C99, -O0 for speed) and loaded, with its metadata.
 struct Compiled {
@@ -32,12 +33,5 @@ struct Compiled {
 };
 std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order, const std::string& thickness = "",
                                           const std::string& method = kDefaultMethod);
-
-struct CliResult {
-  int exit_code = -1;
-  std::string output;
-};
-// Runs the built offsetgen with `args` (no shell).
-CliResult run_offsetgen(const std::vector<std::string>& args);
 
 }  // namespace offsetgen::check::testing

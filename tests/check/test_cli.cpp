@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
+
 #include <cstdlib>
 #include <filesystem>
 
@@ -67,6 +69,12 @@ TEST_F(CheckCli, APlotIsWrittenWithThePlotScript) {
   auto r = testing::run_offsetgen(args({"check", *header_, "--no-values", "--plot", png}));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_GT(std::filesystem::file_size(png), 1000u);
+  // A new picture gets the mode of any new file, 0666 less the umask (not mkstemp's 0600).
+  const mode_t umask_now = ::umask(0);
+  ::umask(umask_now);
+  struct stat st {};
+  ASSERT_EQ(::stat(png.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0666u & ~umask_now);
   auto bad = testing::run_offsetgen(args({"check", *header_, "--plot", png, "--plot-script", "/nonexistent.py"}));
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
 }
@@ -106,6 +114,9 @@ TEST_F(CheckCli, InputErrorsExit2WithAMessage) {
       {{"check", damaged}, "damaged"},
       {{"check", *dir_ + "/missing.h"}, "cannot read"},
       {{"check", *header_, "--thickness", "0.1*x+*2"}, "column 7"},
+      {{"check", *header_, "--thickness", ""}, "the expression is empty"},
+      {{"check", *header_, "--thickness", "0"}, "must be a finite wall thickness > 0"},
+      {{"check", *header_, "--thickness", "-0.1"}, "must be a finite wall thickness > 0"},
       {{"check", *header_, "--h", "0.01,abc"}, "'abc' is not a number"},
       {{"check", *header_, "--h", "-0.01"}, "outside (0, 0.5]"},
       {{"check"}, "file is required"},
@@ -115,6 +126,58 @@ TEST_F(CheckCli, InputErrorsExit2WithAMessage) {
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find(c.says), std::string::npos) << "expected '" << c.says << "' in: " << r.output;
   }
+}
+
+TEST_F(CheckCli, ADirectoryGetsAClearMessage) {
+  auto r = testing::run_offsetgen({"check", *dir_});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("is a directory; give one file written by `offsetgen generate`"), std::string::npos)
+      << r.output;
+}
+
+// --json and --plot are checked before the run (compiling and measuring take seconds to minutes).
+TEST_F(CheckCli, AnUnwritableJsonIsRefusedBeforeTheRun) {
+  for (const std::string& json : {*dir_ + "/missing-dir/out.json", std::string("/dev/null"), *dir_}) {
+    auto r = testing::run_offsetgen(args({"check", *header_, "--json", json}));
+    EXPECT_EQ(r.exit_code, 2) << json << ": " << r.output;
+    EXPECT_NE(r.output.find("--json: cannot write"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("1. Compile"), std::string::npos) << "the run started: " << r.output;
+  }
+  auto same = testing::run_offsetgen(args({"check", *header_, "--json", *dir_ + "/x", "--plot", *dir_ + "/./x"}));
+  EXPECT_EQ(same.exit_code, 2) << same.output;
+  EXPECT_NE(same.output.find("same file"), std::string::npos) << same.output;
+}
+
+// The file's kind is in its metadata: a header named .glsl is compiled as C, a snippet named .h is
+// run as GLSL.
+TEST_F(CheckCli, TheKindComesFromTheMetadataNotTheExtension) {
+  const std::string header_named_glsl = *dir_ + "/header.glsl";
+  testing::write_text(header_named_glsl, testing::read_text(*header_));
+  auto c = testing::run_offsetgen({"check", header_named_glsl, "--no-values", "--no-thickness"});
+  EXPECT_EQ(c.exit_code, 0) << c.output;
+  EXPECT_NE(c.output.find("1. Compile"), std::string::npos) << c.output;
+  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  const std::string snippet_named_h = *dir_ + "/snippet.h";
+  testing::write_text(snippet_named_h, testing::read_text(testing::write_header(*dir_, "gyroid", 1, "", true)));
+  auto g = testing::run_offsetgen({"check", snippet_named_h, "--no-values"});
+  EXPECT_EQ(g.exit_code, 0) << g.output;
+  EXPECT_NE(g.output.find("GLSL compile"), std::string::npos) << g.output;
+}
+
+// Where two branches of the zero set cross (cos(2 pi x) + cos(2 pi y) = 0 at (0.5, 0), ...) no offset
+// exists; rays from there are skipped as singular and counted in the report, not failed.
+TEST_F(CheckCli, ATwoDimensionalSurfaceWithCrossingsPasses) {
+  const std::string dir = *dir_ + "/wave";
+  std::filesystem::create_directories(dir);
+  auto gen = testing::run_offsetgen({"generate", "--expr", "cos(2*Pi*x)+cos(2*Pi*y)", "--name", "wave2", "--order", "3",
+                                     "--out-dir", dir, "--quiet"});
+  ASSERT_EQ(gen.exit_code, 0) << gen.output;
+  const std::string json = dir + "/wave2.json";
+  auto r = testing::run_offsetgen({"check", dir + "/wave2.h", "--json", json});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("singular samples skipped"), std::string::npos) << r.output;
+  nlohmann::json j = nlohmann::json::parse(testing::read_text(json));
+  EXPECT_EQ(j["thickness"]["singular_on_f"], 4);  // (0, 0.5), (0.5, 0), (0.5, 1), (1, 0.5)
 }
 
 TEST_F(CheckCli, NoCompilerOnPathExits2) {
@@ -142,6 +205,37 @@ TEST_F(CheckCli, GlslFilesAreCompiledForFourTargets) {
   testing::write_text(*dir_ + "/bad.glsl", text);
   auto bad = testing::run_offsetgen({"check", *dir_ + "/bad.glsl"});
   EXPECT_EQ(bad.exit_code, 1) << bad.output;
+}
+
+// A snippet's names are checked against GLSL's rules only: offsetgen_* is reserved in C (the header's helpers), not in GLSL.
+TEST_F(CheckCli, ASnippetWithANameOnlyCReservesIsChecked) {
+  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  const std::string dir = *dir_ + "/underscore";
+  std::filesystem::create_directories(dir);
+  auto gen = testing::run_offsetgen(
+      {"generate", "--surface", "gyroid", "--order", "1", "--lang", "glsl", "--name", "offsetgen_g1", "--out-dir", dir, "-q"});
+  ASSERT_EQ(gen.exit_code, 0) << gen.output;
+  auto r = testing::run_offsetgen({"check", dir + "/offsetgen_g1.glsl", "--points", "20"});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+// The snippet runs on Mesa llvmpipe and each function is judged against the 40-digit reference:
+// a wrong constant that still compiles fails (before, GLSL was compiled only).
+TEST_F(CheckCli, AGlslSnippetWithAWrongConstantFailsOnLlvmpipe) {
+  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  const std::string glsl = testing::write_header(*dir_, "gyroid", 2, "", true);
+  auto good = testing::run_offsetgen({"check", glsl, "--points", "40"});
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  for (const char* row : {"glsl field", "glsl offset", "glsl shell", "glsl normal"})
+    EXPECT_NE(good.output.find(row), std::string::npos) << row << "\n" << good.output;
+  std::string text = testing::read_text(glsl);
+  const auto at = text.find("6.28318548", text.find("highp float gyroid_o2_offset("));
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 10, "6.38318548");
+  testing::write_text(*dir_ + "/wrong.glsl", text);
+  auto wrong = testing::run_offsetgen({"check", *dir_ + "/wrong.glsl", "--points", "40"});
+  EXPECT_EQ(wrong.exit_code, 1) << wrong.output;
+  EXPECT_NE(wrong.output.find("out of tolerance: glsl offset"), std::string::npos) << wrong.output;
 }
 
 }  // namespace

@@ -155,7 +155,7 @@ TEST(DensityCheck, GlslSnippetWithDensityFunctionsCompilesForAllFourTargets) {
   request.glsl = true;
   request.command = "check_tests";
   const Generation g = generate(request);
-  const FileMetadata meta = parse_metadata(g.glsl_snippet, FileKind::Glsl);
+  const FileMetadata meta = parse_metadata(g.glsl_snippet);
   ASSERT_TRUE(meta.has_density);
   ASSERT_TRUE(meta.wall_density.has_value());
   const std::string host = glsl_host_shader(g.glsl_snippet, meta, GlslTarget::Gl330, nullptr);

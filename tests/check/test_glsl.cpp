@@ -14,7 +14,7 @@ TEST(Glsl, GeneratedSnippetsCompileForAllFourTargets) {
   const std::string dir = testing::scratch_dir("glsl-ok");
   const std::string path = testing::write_header(dir, "neovius", 2, "0.02+0.01*y", true);
   const std::string text = testing::read_text(path);
-  FileMetadata meta = parse_metadata(text, FileKind::Glsl);
+  FileMetadata meta = parse_metadata(text);
   auto results = compile_glsl(text, meta, path);
   ASSERT_EQ(results.size(), 4u);
   for (const auto& r : results) EXPECT_TRUE(r.ok) << r.name << "\n" << r.output;
@@ -32,7 +32,7 @@ TEST(Glsl, AnErrorNamesTheSnippetLine) {
   text.insert(body, "    highp float oops = 1.0 +;\n");
   int line = 1;
   for (size_t i = 0; i < body; ++i) line += text[i] == '\n';
-  FileMetadata meta = parse_metadata(text, FileKind::Glsl);
+  FileMetadata meta = parse_metadata(text);
   auto results = compile_glsl(text, meta, "bad.glsl");
   for (const auto& r : results) {
     EXPECT_FALSE(r.ok) << r.name;

@@ -20,9 +20,9 @@ std::string generated_header() {
   return text;
 }
 
-std::string refusal(const std::string& text, FileKind kind = FileKind::C) {
+std::string refusal(const std::string& text) {
   try {
-    parse_metadata(text, kind);
+    parse_metadata(text);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -37,7 +37,7 @@ std::string replace(std::string text, const std::string& from, const std::string
 }
 
 TEST(Metadata, ReadsEverythingFromAGeneratedHeader) {
-  FileMetadata m = parse_metadata(generated_header(), FileKind::C);
+  FileMetadata m = parse_metadata(generated_header());
   EXPECT_EQ(m.format, 1);
   EXPECT_EQ(m.prefix, "gyroid_o3");
   ASSERT_TRUE(m.surface);
@@ -55,7 +55,7 @@ TEST(Metadata, ReadsEverythingFromAGeneratedHeader) {
 }
 
 TEST(Metadata, TheModelRebuildsFromTheMetadataAlone) {
-  FileMetadata m = parse_metadata(generated_header(), FileKind::C);
+  FileMetadata m = parse_metadata(generated_header());
   auto ref = rebuild_reference(m);
   EXPECT_EQ(ref->generation.prefix, "gyroid_o3");
   EXPECT_EQ(ref->generation.order(), 3);
@@ -103,8 +103,7 @@ TEST(Metadata, AnUnknownFormatIsRefused) {
 }
 
 TEST(Metadata, AMetadataSurfaceThisOffsetgenDoesNotKnowIsAnInputError) {
-  FileMetadata m =
-      parse_metadata(replace(generated_header(), "\"surface\":\"gyroid\"", "\"surface\":\"nosuch\""), FileKind::C);
+  FileMetadata m = parse_metadata(replace(generated_header(), "\"surface\":\"gyroid\"", "\"surface\":\"nosuch\""));
   try {
     rebuild_reference(m);
     FAIL() << "expected an InputError";
@@ -113,10 +112,37 @@ TEST(Metadata, AMetadataSurfaceThisOffsetgenDoesNotKnowIsAnInputError) {
   }
 }
 
-TEST(Metadata, KindFollowsTheExtension) {
-  EXPECT_EQ(kind_of_path("a/b/gyroid_o4.h"), FileKind::C);
-  EXPECT_EQ(kind_of_path("gyroid_o4.glsl"), FileKind::Glsl);
-  EXPECT_EQ(kind_of_path("gyroid_o4.FRAG"), FileKind::Glsl);
+TEST(Metadata, KindFollowsTheMetadataNotTheFileName) {
+  const std::string dir = testing::scratch_dir("metadata-kind");
+  const std::string header = testing::write_header(dir, "gyroid", 1);
+  const std::string snippet = testing::write_header(dir, "gyroid", 1, "", true);
+  // Swapped names: a header called .glsl and a snippet called .h.
+  testing::write_text(dir + "/header.glsl", testing::read_text(header));
+  testing::write_text(dir + "/snippet.h", testing::read_text(snippet));
+  EXPECT_EQ(read_metadata(dir + "/header.glsl").kind, FileKind::C);
+  EXPECT_EQ(read_metadata(dir + "/snippet.h").kind, FileKind::Glsl);
+  EXPECT_NE(testing::read_text(snippet).find("\"language\":\"glsl\""), std::string::npos);
+  // Files written before the field existed are told apart by their code.
+  EXPECT_EQ(parse_metadata(replace(testing::read_text(header), "\"language\":\"c\",", "")).kind, FileKind::C);
+  EXPECT_EQ(parse_metadata(replace(testing::read_text(snippet), "\"language\":\"glsl\",", "")).kind, FileKind::Glsl);
+  EXPECT_NE(refusal(replace(testing::read_text(header), "\"language\":\"c\"", "\"language\":\"fortran\"")).find("language"),
+            std::string::npos);
+}
+
+TEST(Metadata, ADirectoryOrDeviceIsRefusedWithAClearMessage) {
+  const std::string dir = testing::scratch_dir("metadata-dir");
+  try {
+    read_metadata(dir);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
+  try {
+    read_metadata("/dev/null");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Metadata, BinaryAndMissingFilesAreInputErrors) {
@@ -129,7 +155,7 @@ TEST(Metadata, BinaryAndMissingFilesAreInputErrors) {
 }
 
 TEST(Metadata, ThicknessSyntaxErrorsSayWhere) {
-  FileMetadata m = parse_metadata(generated_header(), FileKind::C);
+  FileMetadata m = parse_metadata(generated_header());
   try {
     parse_thickness("0.1*x+*2", m, {});
     FAIL() << "expected an InputError";

@@ -90,6 +90,11 @@ if(CMAKE_HOST_UNIX)
     message(FATAL_ERROR "OFFSETGEN_EXECUTABLE was set, but the build did not run it")
   endif()
   file(STRINGS "${log}" runs)
+  # At configure time the tool was asked for its catalog (SURFACE is validated against it).
+  if(NOT runs MATCHES "list --json")
+    message(FATAL_ERROR "configure did not ask OFFSETGEN_EXECUTABLE for its catalog:\n${runs}")
+  endif()
+  list(FILTER runs INCLUDE REGEX "^generate ")
   list(LENGTH runs count)
   # gyroid orders 1 and 2, wave order 2, schwarzp projection orders 4 and 8, the two density calls
   if(NOT count EQUAL 7)

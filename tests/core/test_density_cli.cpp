@@ -53,7 +53,7 @@ TEST(DensityCli, GenerateRefusesBadDensityInputAndWritesNothing) {
     const char* args;
     const char* message;
   };
-  const std::string dir = testing::fresh_directory("density_refusals");
+  const std::string dir = testing::scratch_dir("density_refusals");
   for (const Case& c :
        {Case{"--surface gyroid --density 0", "must be a number > 0"},
         Case{"--surface gyroid --density -0.1", "must be a number > 0"},
@@ -72,7 +72,7 @@ TEST(DensityCli, GenerateRefusesBadDensityInputAndWritesNothing) {
 }
 
 TEST(DensityCli, GenerateAddsWallGradedAndTheRelations) {
-  const std::string dir = testing::fresh_directory("density_generate");
+  const std::string dir = testing::scratch_dir("density_generate");
   auto r =
       run_offsetgen("generate --surface gyroid --order 2 --density 0.2 --lang all --precision both --out-dir " + dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;

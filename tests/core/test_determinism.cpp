@@ -21,7 +21,7 @@ TEST(Determinism, SameRequestGivesSameBytesInProcess) {
 TEST(Determinism, SameCommandGivesSameBytesAcrossProcesses) {
   std::string first;
   for (int run = 0; run < 4; ++run) {
-    std::string dir = testing::fresh_directory("determinism" + std::to_string(run));
+    std::string dir = testing::scratch_dir("determinism" + std::to_string(run));
     auto r = testing::run_offsetgen("generate --surface lidinoid --order 3 --lang all --out-dir " + dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     std::string bytes = testing::read_file(dir + "/lidinoid_o3.h") + testing::read_file(dir + "/lidinoid_o3.glsl");

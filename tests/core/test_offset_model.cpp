@@ -1,4 +1,5 @@
-// The symbolic construction against independent derivations, and the lowering against it.
+// The symbolic construction against independent derivations, and properties of the lowering. The
+// emitted code against the 40-digit reference: tests/check/test_values.cpp (Values.*).
 #include "offset/offset_reference.h"
 #include "offset/richardson.h"
 #include "offset/richardson_method.h"
@@ -8,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 namespace offsetgen {
 namespace {
@@ -68,32 +68,6 @@ TEST(OffsetModel, JetChainsEqualNaiveNestedDifferentiation) {
     }
   }
   GiNaC::Digits = saved_digits;
-}
-
-// The lowered straight-line program (what the emitters print) against the 40-digit symbolic value:
-// the zero set may move by at most 1e-12 of the cell.
-TEST(Lowering, ProgramMatches40DigitReference) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> unit(0.0, 1.0), step(-0.05, 0.05);
-  for (const char* name : {"gyroid", "schwarzp", "neovius"}) {
-    for (int order = 1; order <= 6; ++order) {
-      auto b = testing::build(name, order);
-      OffsetReference reference(b->surface, *b->construction);
-      Evaluator offset(b->programs.offset);
-      double worst = 0;
-      for (int i = 0; i < 12; ++i) {
-        std::vector<double> p = {unit(rng), unit(rng), unit(rng)};
-        double h = step(rng);
-        std::vector<GiNaC::numeric> x = {p[0], p[1], p[2]};
-        double ref = reference.offset(x, h).to_double();
-        double grad = 0;
-        for (const auto& g : reference.field_gradient(x)) grad += g.to_double() * g.to_double();
-        double got = offset({p[0], p[1], p[2], h})[0];
-        worst = std::max(worst, std::fabs(got - ref) / std::max(std::sqrt(grad), 1.0));
-      }
-      EXPECT_LT(worst, 1e-12) << name << " order " << order;
-    }
-  }
 }
 
 TEST(Lowering, CellLengthScalingIsExact) {

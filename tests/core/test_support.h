@@ -1,8 +1,11 @@
-// Shared helpers for the core tests: build a surface's model and programs, run the CLI.
+// Shared helpers for the core tests: build a surface's model and programs; running the CLI, scratch
+// directories and files come from tests/support.
 #pragma once
 
 #include "lowering/surface_programs.h"
 #include "offset/method.h"
+#include "offset/offset_model.h"
+#include "offsetgen_test_support.h"
 #include "surfaces/catalog.h"
 
 #include <memory>
@@ -25,17 +28,9 @@ inline std::unique_ptr<Built> build(const std::string& name, int order, const st
   return b;
 }
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-// Runs `offsetgen <args>` (the built executable) through the shell.
-CommandResult run_offsetgen(const std::string& args);
-
-// A fresh empty directory under the test's temporary area.
-std::string fresh_directory(const std::string& name);
-
-std::string read_file(const std::string& path);
+using test_support::read_file;
+using test_support::run_command;
+using test_support::run_offsetgen;
+using test_support::scratch_dir;
 
 }  // namespace offsetgen::testing

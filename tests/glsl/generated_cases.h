@@ -43,20 +43,15 @@ std::vector<std::string> catalog_surfaces_under_test();
 std::vector<std::string> expression_snippet_paths();
 // generated/*.glsl of the source tree at configure time (CONFIGURE_DEPENDS glob), sorted.
 std::vector<std::string> golden_snippet_paths();
-// The offsetgen executable of this build.
-std::string offsetgen_executable();
 
 // A snippet file the compile and convention tests cover.
 struct SnippetFile {
-  std::string label;  // test-name friendly: "gyroid_o4", "golden_gyroid_o4", "gyroid_graded_o4"
+  std::string label;  // test-name friendly: "gyroid_o4", "gyroid_graded_o4", "expr_circle_o2"
   std::string path;
 };
-// Generated cases, the graded snippet, the expression snippets and the golden snippets.
+// Generated cases, the graded snippet and the expression snippets (the golden snippets are
+// byte-identical to generated cases: GoldenSnippets.AreTheBuildTimeSnippets).
 std::vector<SnippetFile> all_snippet_files();
-
-// The function prefix a snippet declares in its offsetgen-metadata comment ("prefix":"..."),
-// or `fallback` when it has none.
-std::string snippet_prefix(const std::string& snippet, const std::string& fallback);
 
 // GoogleTest prints parameters with these (instead of a byte dump).
 void PrintTo(const GeneratedCase& c, std::ostream* os);

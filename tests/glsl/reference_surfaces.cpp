@@ -53,10 +53,10 @@ Vec3d gyroid_offset_o1_gradient(const Vec3d& x, double h) {
           g[2] - s * (hxz * g[0] + hyz * g[1] + hzz * g[2])};
 }
 
-SurfaceReference gyroid_o1_fixture() {
+SurfaceReference gyroid_o1_reference(const std::string& snippet_path) {
   SurfaceReference r;
-  r.name = "gyroid o1 (fixture)";
-  r.snippet_path = fixture_dir() + "/gyroid_o1.glsl";
+  r.name = "gyroid o1 (hand-derived reference)";
+  r.snippet_path = snippet_path;
   r.prefix = "gyroid_o1";
   r.dim = 3;
   r.field = gyroid_field;
@@ -64,7 +64,5 @@ SurfaceReference gyroid_o1_fixture() {
   r.offset_gradient = gyroid_offset_o1_gradient;
   return r;
 }
-
-std::vector<SurfaceReference> all_references() { return {gyroid_o1_fixture()}; }
 
 }  // namespace offsetgen::glsl_test

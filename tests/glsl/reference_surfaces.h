@@ -1,5 +1,6 @@
-// Double-precision references for the GLSL snippets the tests run. Today only the hand-written
-// first-order gyroid fixture; real generated snippets get one entry each (snippet + reference).
+// Hand-derived double-precision references for GLSL snippets: the first-order gyroid, written out
+// from the paper's formula independently of the generator, to check the generated gyroid_o1
+// snippet against (test_generated_execute.cpp), and the fixture snippet's directory.
 #pragma once
 
 #include <string>
@@ -20,10 +21,8 @@ Vec3d gyroid_gradient(const Vec3d& x);
 double gyroid_offset_o1(const Vec3d& x, double h);
 Vec3d gyroid_offset_o1_gradient(const Vec3d& x, double h);
 
-// tests/glsl/fixtures/gyroid_o1.glsl, prefix gyroid_o1.
-SurfaceReference gyroid_o1_fixture();
-
-// Every snippet the executor tests cover.
-std::vector<SurfaceReference> all_references();
+// The reference for a snippet whose functions are prefixed gyroid_o1 (order 1: phi = F - h |grad F|;
+// the safeguard's M clamp never binds at order 1, so the generated offset is exactly this).
+SurfaceReference gyroid_o1_reference(const std::string& snippet_path);
 
 }  // namespace offsetgen::glsl_test

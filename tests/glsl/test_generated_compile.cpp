@@ -1,11 +1,9 @@
-// Every snippet the real generator writes (all catalog surfaces, orders 1-4, plus the graded one)
-// and every committed golden snippet (generated/*.glsl): compiled and linked with
-// glslangValidator -l in the four host dialects, and linted for the paste-safety conventions.
+// Every snippet the real generator writes (all catalog surfaces, orders 1-4, the graded one and two
+// --expr ones): compiled and linked in the four host dialects with `offsetgen check`'s glslang
+// stage (check::compile_glsl), and linted for the paste-safety conventions. The committed golden
+// snippets are the build-time ones, byte for byte.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <regex>
@@ -14,64 +12,48 @@
 #include <string>
 #include <tuple>
 
+#include "check/glsl_compile.h"
+#include "check/metadata.h"
 #include "generated_cases.h"
-#include "glsl_compile.h"
 #include "glsl_source.h"
+#include "offsetgen_test_support.h"
 #include "snippet_conventions.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+namespace check = offsetgen::check;
 namespace glsl = offsetgen::glsl;
 namespace gt = offsetgen::glsl_test;
-using glsl::Target;
+namespace ts = offsetgen::test_support;
 
-std::string target_label(Target t) {
-  switch (t) {
-    case Target::Es300:
-      return "Es300";
-    case Target::Gl330:
-      return "Gl330";
-    case Target::Gl450:
-      return "Gl450";
-    case Target::Vulkan:
-      return "Vulkan";
-  }
-  return "Unknown";
+check::FileMetadata metadata_of(const std::string& snippet) { return check::parse_metadata(snippet); }
+
+class SnippetCompiles : public ::testing::TestWithParam<gt::SnippetFile> {};
+
+TEST_P(SnippetCompiles, AndLinksInTheFourHostDialects) {
+  const std::string snippet = glsl::read_text_file(GetParam().path);
+  const auto results =
+      check::compile_glsl(snippet, metadata_of(snippet), fs::path(GetParam().path).filename().string());
+  ASSERT_EQ(results.size(), 4u);
+  for (const auto& r : results) EXPECT_TRUE(r.ok) << GetParam().path << " fails on " << r.name << ":\n" << r.output;
 }
 
-using CompileCase = std::tuple<gt::SnippetFile, Target>;
-class SnippetCompiles : public ::testing::TestWithParam<CompileCase> {};
-
-TEST_P(SnippetCompiles, AndLinks) {
-  const auto& [file, target] = GetParam();
-  const std::string snippet = glsl::read_text_file(file.path);
-  const glsl::CompileResult r = glsl::compile_check(snippet, target);
-  EXPECT_TRUE(r.ok) << file.path << " fails on " << glsl::target_name(target) << ":\n"
-                    << r.message;
-}
-
-INSTANTIATE_TEST_SUITE_P(All, SnippetCompiles,
-                         ::testing::Combine(::testing::ValuesIn(gt::all_snippet_files()),
-                                            ::testing::ValuesIn(glsl::all_targets())),
-                         [](const ::testing::TestParamInfo<CompileCase>& p) {
-                           return std::get<0>(p.param).label + "_" +
-                                  target_label(std::get<1>(p.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(All, SnippetCompiles, ::testing::ValuesIn(gt::all_snippet_files()),
+                         [](const ::testing::TestParamInfo<gt::SnippetFile>& p) { return p.param.label; });
 
 class SnippetConventions : public ::testing::TestWithParam<gt::SnippetFile> {
  protected:
   std::string snippet_ = glsl::read_text_file(GetParam().path);
-  std::string prefix_ = gt::snippet_prefix(snippet_, fs::path(GetParam().path).stem().string());
+  check::FileMetadata meta_ = metadata_of(snippet_);
 };
 
 TEST_P(SnippetConventions, PasteSafe) {
-  EXPECT_EQ(gt::describe(gt::convention_violations(snippet_, prefix_)), "") << GetParam().path;
+  EXPECT_EQ(gt::describe(gt::convention_violations(snippet_, meta_.prefix)), "") << GetParam().path;
 }
 
 TEST_P(SnippetConventions, LygiaStyleHeaderComment) {
-  EXPECT_EQ(gt::describe(gt::header_comment_violations(snippet_, prefix_)), "")
-      << GetParam().path;
+  EXPECT_EQ(gt::describe(gt::header_comment_violations(snippet_, meta_.prefix)), "") << GetParam().path;
 }
 
 // The functions the issue promises, with the promised signatures.
@@ -79,11 +61,11 @@ TEST_P(SnippetConventions, DefinesTheDocumentedFunctions) {
   const auto fns = glsl::scan_functions(snippet_);
   auto find = [&](const std::string& name) -> const glsl::GlslFunction* {
     for (const auto& f : fns) {
-      if (f.name == prefix_ + "_" + name) return &f;
+      if (f.name == meta_.prefix + "_" + name) return &f;
     }
     return nullptr;
   };
-  const std::string vec = snippet_.find("\"dims\":2") != std::string::npos ? "vec2" : "vec3";
+  const std::string vec = meta_.dims == 2 ? "vec2" : "vec3";
   const std::vector<std::tuple<std::string, std::string, std::vector<std::string>>> expected = {
       {"field", "float", {vec}},
       {"offset", "float", {vec, "float"}},
@@ -92,7 +74,7 @@ TEST_P(SnippetConventions, DefinesTheDocumentedFunctions) {
   };
   for (const auto& [name, ret, params] : expected) {
     const glsl::GlslFunction* f = find(name);
-    ASSERT_NE(f, nullptr) << prefix_ << "_" << name << " missing in " << GetParam().path;
+    ASSERT_NE(f, nullptr) << meta_.prefix << "_" << name << " missing in " << GetParam().path;
     EXPECT_EQ(f->return_type, ret) << f->name;
     std::vector<std::string> types;
     for (const auto& p : f->params) types.push_back(p.type);
@@ -101,12 +83,10 @@ TEST_P(SnippetConventions, DefinesTheDocumentedFunctions) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, SnippetConventions, ::testing::ValuesIn(gt::all_snippet_files()),
-                         [](const ::testing::TestParamInfo<gt::SnippetFile>& p) {
-                           return p.param.label;
-                         });
+                         [](const ::testing::TestParamInfo<gt::SnippetFile>& p) { return p.param.label; });
 
 // A compile error in a real generated snippet is reported with glslang's text and the snippet
-// line it points at.
+// line it points at, on every target.
 TEST(GeneratedSnippet, CompileErrorShowsTheSnippetLine) {
   const gt::GeneratedCase& c = gt::generated_cases().back();  // an order-4 snippet
   std::string snippet = glsl::read_text_file(c.snippet);
@@ -115,46 +95,31 @@ TEST(GeneratedSnippet, CompileErrorShowsTheSnippetLine) {
   ASSERT_NE(at, std::string::npos) << c.snippet;
   const auto body = at + needle.size();
   const auto eol = snippet.find('\n', body);
-  const std::string broken_line = "    highp float _broken = undefined_symbol;";
-  snippet.replace(body, eol - body, broken_line);
+  snippet.replace(body, eol - body, "    highp float _broken = undefined_symbol;");
   int line = 1;
   for (std::size_t i = 0; i < body; ++i) line += snippet[i] == '\n' ? 1 : 0;
-  for (Target t : glsl::all_targets()) {
-    const glsl::CompileResult r = glsl::compile_check(snippet, t);
-    ASSERT_FALSE(r.ok) << glsl::target_name(t);
-    EXPECT_NE(r.message.find("undefined_symbol"), std::string::npos) << r.message;
-    EXPECT_NE(r.message.find("snippet line " + std::to_string(line) + ": " + broken_line),
-              std::string::npos)
-        << r.message;
+  const std::string name = std::string(c.prefix) + ".glsl";
+  for (const auto& r : check::compile_glsl(snippet, metadata_of(snippet), name)) {
+    ASSERT_FALSE(r.ok) << r.name;
+    EXPECT_NE(r.output.find("undefined_symbol"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("[" + name + " line " + std::to_string(line) + "]"), std::string::npos) << r.output;
   }
-}
-
-std::string run_capture(const std::string& command, int& status) {
-  std::string out;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return out;
-  std::array<char, 4096> buf{};
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) out.append(buf.data(), n);
-  const int st = pclose(pipe);
-  status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return out;
 }
 
 // The build generates every surface the catalog has: a new catalog entry must be added to
 // OFFSETGEN_GLSL_SURFACES in tests/glsl/CMakeLists.txt.
 TEST(GeneratedCatalog, MatchesOffsetgenList) {
-  int status = -1;
-  const std::string out = run_capture("'" + gt::offsetgen_executable() + "' list", status);
-  ASSERT_EQ(status, 0) << out;
+  const ts::CommandResult r = ts::run_offsetgen(std::vector<std::string>{"list"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
   std::set<std::string> listed;
   static const std::regex kEntry(R"(^([a-z][a-z0-9_]*)\s{2,}\S)");
-  std::istringstream in(out);
+  std::istringstream in(r.output);
   for (std::string l; std::getline(in, l);) {
     std::smatch m;
     if (std::regex_search(l, m, kEntry)) listed.insert(m[1].str());
   }
   const auto tested = gt::catalog_surfaces_under_test();
-  EXPECT_EQ(std::set<std::string>(tested.begin(), tested.end()), listed) << out;
+  EXPECT_EQ(std::set<std::string>(tested.begin(), tested.end()), listed) << r.output;
   // Four orders of every surface for each method (tests/glsl/CMakeLists.txt OFFSETGEN_GLSL_METHODS).
   std::map<std::string, std::set<std::string>> surfaces_by_method;
   std::map<std::string, std::size_t> cases_by_method;
@@ -170,10 +135,11 @@ TEST(GeneratedCatalog, MatchesOffsetgenList) {
 }
 
 // Every golden header in generated/ has its .glsl twin (issue 3: "all of generated/ gets .glsl
-// twins"), so the compile and lint tests above cover all of them.
-TEST(GoldenFolder, EveryHeaderHasAGlslTwin) {
+// twins"), and every golden snippet is, byte for byte, the snippet this build generated for the
+// same surface and order, so the compile, lint and execution tests above cover all of them.
+TEST(GoldenSnippets, AreTheBuildTimeSnippets) {
   std::size_t headers = 0;
-  for (const auto& e : fs::directory_iterator(OFFSETGEN_GOLDEN_DIR)) {
+  for (const auto& e : fs::directory_iterator(ts::source_dir() + "/generated")) {
     if (e.path().extension() != ".h") continue;
     ++headers;
     fs::path twin = e.path();
@@ -181,7 +147,16 @@ TEST(GoldenFolder, EveryHeaderHasAGlslTwin) {
     EXPECT_TRUE(fs::exists(twin)) << e.path() << " has no .glsl twin";
   }
   const auto golden = gt::golden_snippet_paths();
-  EXPECT_GE(golden.size(), headers) << "reconfigure: the golden list is taken at configure time";
+  EXPECT_EQ(golden.size(), headers) << "reconfigure: the golden list is taken at configure time";
+  for (const std::string& path : golden) {
+    const std::string prefix = fs::path(path).stem().string();
+    const gt::GeneratedCase* match = nullptr;
+    for (const auto& c : gt::generated_cases())
+      if (prefix == c.prefix) match = &c;
+    ASSERT_NE(match, nullptr) << path << ": no build-time snippet " << prefix;
+    EXPECT_TRUE(glsl::read_text_file(path) == glsl::read_text_file(match->snippet))
+        << path << " differs from " << match->snippet;
+  }
 }
 
 }  // namespace

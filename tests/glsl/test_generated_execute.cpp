@@ -4,15 +4,13 @@
 // variant. Metrics: see generated_accuracy.h. Each test prints one "[ measured ]" line.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 
@@ -20,7 +18,9 @@
 #include "generated_cases.h"
 #include "glsl_executor.h"
 #include "glsl_source.h"
+#include "offsetgen_test_support.h"
 #include "reference_check.h"
+#include "reference_surfaces.h"
 
 namespace {
 
@@ -214,23 +214,66 @@ INSTANTIATE_TEST_SUITE_P(BothPaths, GradedSnippet, ::testing::ValuesIn(glsl::all
                            return std::string(p.param == glsl::Path::Compute ? "Compute" : "Fragment");
                          });
 
+// The generated gyroid_o1 snippet against the first-order gyroid written out by hand from the
+// paper's formula (tests/glsl/reference_surfaces.cpp), not from the generator's program: field,
+// offset, shell and normal on both paths.
+const gt::GeneratedCase& gyroid_o1() {
+  for (const auto& c : gt::generated_cases())
+    if (std::string(c.prefix) == "gyroid_o1") return c;
+  throw std::runtime_error("no gyroid_o1 among the generated cases");
+}
+
+class HandDerivedGyroidO1 : public ::testing::TestWithParam<glsl::Path> {
+ protected:
+  void expect_within(gt::Quantity q, double tolerance) {
+    static const auto points = gt::random_points(kPoints, 3, 0.05, kSeed);
+    const gt::ErrorReport r = gt::check(gt::gyroid_o1_reference(gyroid_o1().snippet), q, GetParam(), points);
+    std::cout << "[ measured ] " << r.describe() << "\n";
+    EXPECT_LT(r.max_abs_error, tolerance) << r.describe();
+    EXPECT_GT(r.compared, kPoints / 2) << r.describe();
+  }
+};
+
+// Absolute, in units of F: float32 sin/cos/sqrt at |F| + |h||grad F| ~ 1.9 err by a few 1e-7.
+TEST_P(HandDerivedGyroidO1, Field) { expect_within(gt::Quantity::Field, kTolerance); }
+TEST_P(HandDerivedGyroidO1, Offset) { expect_within(gt::Quantity::Offset, kTolerance); }
+TEST_P(HandDerivedGyroidO1, Shell) { expect_within(gt::Quantity::Shell, 1e-4); }  // a product of two offsets
+TEST_P(HandDerivedGyroidO1, Normal) { expect_within(gt::Quantity::Normal, 1e-4); }
+
+INSTANTIATE_TEST_SUITE_P(BothPaths, HandDerivedGyroidO1, ::testing::ValuesIn(glsl::all_paths()),
+                         [](const ::testing::TestParamInfo<glsl::Path>& p) {
+                           return std::string(p.param == glsl::Path::Compute ? "Compute" : "Fragment");
+                         });
+
+// The hand-derived gradient (Hessian) against central differences of the hand-derived offset.
+TEST(HandDerivedGyroidO1Reference, GradientMatchesFiniteDifferences) {
+  const auto pts = gt::random_points(200, 3, 0.05, 7u);
+  const double e = 1e-6;
+  for (const auto& p : pts) {
+    const gt::Vec3d x{p[0], p[1], p[2]};
+    const gt::Vec3d g = gt::gyroid_offset_o1_gradient(x, p[3]);
+    for (int a = 0; a < 3; ++a) {
+      gt::Vec3d xp = x, xm = x;
+      xp[static_cast<std::size_t>(a)] += e;
+      xm[static_cast<std::size_t>(a)] -= e;
+      const double fd = (gt::gyroid_offset_o1(xp, p[3]) - gt::gyroid_offset_o1(xm, p[3])) / (2 * e);
+      EXPECT_NEAR(g[static_cast<std::size_t>(a)], fd, 1e-5 * (1.0 + std::abs(fd)));
+    }
+  }
+}
+
 // Without a usable Mesa driver the GL tests fail (never skip) and name the packages to install.
 // Runs this test binary again with the driver search path pointed nowhere.
 TEST(MissingDriver, GlTestsFailAndNameThePackages) {
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  const std::string cmd = "LIBGL_DRIVERS_PATH=/nonexistent '" + self +
-                          "' --gtest_filter='All/GlslVsDouble.FieldOffsetShellNormal/" +
-                          gt::generated_cases().front().prefix + "_Compute' 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  std::array<char, 4096> buf{};
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;) out.append(buf.data(), n);
-  const int st = pclose(pipe);
-  EXPECT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) != 0) << out;
-  EXPECT_NE(out.find("[  FAILED  ]"), std::string::npos) << out;
-  EXPECT_EQ(out.find("SKIPPED"), std::string::npos) << out;
-  EXPECT_NE(out.find("libgl1-mesa-dri"), std::string::npos) << out;
+  const offsetgen::test_support::CommandResult r = offsetgen::test_support::run_command(
+      {"env", "LIBGL_DRIVERS_PATH=/nonexistent", self,
+       "--gtest_filter=All/GlslVsDouble.FieldOffsetShellNormal/" + std::string(gt::generated_cases().front().prefix) +
+           "_Compute"});
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("[  FAILED  ]"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("SKIPPED"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("libgl1-mesa-dri"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -1,19 +1,15 @@
 // render_shell on real generated snippets: the picture has the requested size, is not blank and
 // holds both wall and background pixels; the snippet sits in the shader byte for byte.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <array>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "generated_cases.h"
-#include "glsl_compile.h"
 #include "glsl_source.h"
 #include "headless_gl.h"
+#include "offsetgen_test_support.h"
 #include "png_io.h"
 #include "shell_renderer.h"
 
@@ -22,22 +18,12 @@ namespace {
 namespace fs = std::filesystem;
 namespace gt = offsetgen::glsl_test;
 
-struct Outcome {
-  int status = -1;
-  std::string output;  // stdout + stderr
-};
+namespace ts = offsetgen::test_support;
+using Outcome = ts::CommandResult;
 
+// render_shell with `args` (shell-quoted); stdout and stderr together.
 Outcome run_render_shell(const std::string& args) {
-  Outcome o;
-  const std::string cmd = std::string("'") + OFFSETGEN_RENDER_SHELL + "' " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return o;
-  std::array<char, 4096> buf{};
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;)
-    o.output.append(buf.data(), n);
-  const int st = pclose(pipe);
-  o.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return o;
+  return ts::run_shell(std::string("'") + OFFSETGEN_RENDER_SHELL + "' " + args);
 }
 
 const gt::GeneratedCase& gyroid_o4() {
@@ -79,7 +65,7 @@ void expect_picture(const std::string& name, const std::string& args) {
       fs::temp_directory_path() / ("offsetgen_gen_render_" + std::to_string(::getpid()) + "_" +
                                    name + ".png");
   const Outcome o = run_render_shell(args + " --size 160x120 -o '" + png.string() + "'");
-  ASSERT_EQ(o.status, 0) << o.output;
+  ASSERT_EQ(o.exit_code, 0) << o.output;
   std::cout << "[ measured ] " << o.output;
   const auto img = offsetgen::png::read_rgba(png.string());
   fs::remove(png);
@@ -145,8 +131,11 @@ offsetgen::glsl::HostedSource docs_example() {
 TEST(DocsExample, HostShaderCompilesLinksAndDraws) {
   namespace gl = offsetgen::gl;
   const auto source = docs_example();
-  const auto r = offsetgen::glsl::compile_fragment_shader(source, offsetgen::glsl::Target::Es300);
-  ASSERT_TRUE(r.ok) << r.message;
+  // glslang first: stricter about GLSL ES than Mesa.
+  const std::string frag = ts::scratch_dir("docs_example") + "/host.frag";  // the extension selects the stage
+  ts::write_file(frag, source.text);
+  const ts::CommandResult glslang = ts::run_command({"glslangValidator", "-l", frag});
+  ASSERT_EQ(glslang.exit_code, 0) << glslang.output;
 
   const gl::Functions& f = gl::make_current(gl::Api::Es30);
   const std::string vs =

@@ -1,13 +1,11 @@
 // Runs the render_shell executable on the fixture and inspects the PNG it writes.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "offsetgen_test_support.h"
 #include "png_io.h"
 #include "reference_surfaces.h"
 #include "shell_renderer.h"
@@ -16,22 +14,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int status = -1;
-  std::string output;  // stdout + stderr
-};
+namespace ts = offsetgen::test_support;
+using Outcome = ts::CommandResult;
 
+// render_shell with `args` (shell-quoted); stdout and stderr together.
 Outcome run_render_shell(const std::string& args) {
-  Outcome o;
-  const std::string cmd = std::string("'") + OFFSETGEN_RENDER_SHELL + "' " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (pipe == nullptr) return o;
-  std::array<char, 4096> buf{};
-  for (std::size_t n; (n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0;)
-    o.output.append(buf.data(), n);
-  const int st = pclose(pipe);
-  o.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return o;
+  return ts::run_shell(std::string("'") + OFFSETGEN_RENDER_SHELL + "' " + args);
 }
 
 std::string fixture_args() {
@@ -65,7 +53,7 @@ void expect_reasonable_picture(const std::string& name, const std::string& extra
   const fs::path png = scratch_png(name);
   const Outcome o =
       run_render_shell(fixture_args() + " --size 128x128 " + extra + " -o '" + png.string() + "'");
-  ASSERT_EQ(o.status, 0) << o.output;
+  ASSERT_EQ(o.exit_code, 0) << o.output;
   std::cout << "[ measured ] " << o.output;
   const auto img = offsetgen::png::read_rgba(png.string());
   fs::remove(png);
@@ -93,19 +81,19 @@ TEST(RenderShell, BoxAndViewDirection) {
 TEST(RenderShell, BadBoxAndViewAreRejected) {
   const std::string png = " -o '" + scratch_png("badbox").string() + "'";
   Outcome o = run_render_shell(fixture_args() + " --box 2x1" + png);
-  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_EQ(o.exit_code, 2) << o.output;
   EXPECT_NE(o.output.find("bad --box '2x1'"), std::string::npos) << o.output;
   o = run_render_shell(fixture_args() + " --box 0x1x1" + png);
-  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_EQ(o.exit_code, 1) << o.output;
   EXPECT_NE(o.output.find("box cells must be in 1..16"), std::string::npos) << o.output;
   o = run_render_shell(fixture_args() + " --view 0 0 1" + png);
-  EXPECT_EQ(o.status, 1) << o.output;
+  EXPECT_EQ(o.exit_code, 1) << o.output;
   EXPECT_NE(o.output.find("not vertical"), std::string::npos) << o.output;
 }
 
 TEST(RenderShell, WrongPrefixListsTheSnippetFunctions) {
   const Outcome o = run_render_shell(fixture_args() + "x -o '" + scratch_png("bad").string() + "'");
-  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(o.exit_code, 1);
   EXPECT_NE(o.output.find("defines no gyroid_o1x_field"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("gyroid_o1_shell"), std::string::npos) << o.output;
 }

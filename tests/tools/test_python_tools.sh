@@ -139,6 +139,11 @@ EOF
   check "plot_convergence exits 0" [ $? -eq 0 ]
   check "PNG exists and > 5 kB" file_larger_than "$TMP/conv.png" 5120
   check "PNG signature" [ "$(head -c 4 "$TMP/conv.png" | tail -c 3)" = PNG ]
+  check "a new PNG gets 0666 less the umask (0644 under umask 022), not mkstemp's 0600" \
+    [ "$(umask 022; "$PY" "$ROOT/tools/plot_convergence.py" "$TMP/conv.json" "$TMP/mode.png" >/dev/null 2>&1; stat -c %a "$TMP/mode.png")" = 644 ]
+  chmod 0640 "$TMP/conv.png"
+  "$PY" "$ROOT/tools/plot_convergence.py" "$TMP/conv.json" "$TMP/conv.png" >/dev/null 2>&1
+  check "a replaced PNG keeps its mode" [ "$(stat -c %a "$TMP/conv.png")" = 640 ]
   echo '{"series": [{"x": [1, 2], "y": [1]}]}' >"$TMP/bad.json"
   "$PY" "$ROOT/tools/plot_convergence.py" "$TMP/bad.json" "$TMP/bad.png" >/dev/null 2>&1
   check "bad plot input exits 2" [ $? -eq 2 ]

@@ -1,5 +1,6 @@
 // Runs a GLSL snippet on Mesa llvmpipe (headless EGL, no GPU needed) over many points and returns
-// the exact float results, through two independent paths:
+// the exact float results; `offsetgen check` judges a snippet's values with it, and the GLSL tests
+// (tests/glsl) use it too. Two independent paths:
 //   - Compute: desktop OpenGL 4.3 compute shader, inputs/outputs in shader storage buffers;
 //   - Fragment: GLSL ES 3.00 fragment shader whose host says "precision mediump float;" on
 //     purpose (the snippet's own highp must protect it), inputs from an RGBA32F texture via

@@ -1,0 +1,30 @@
+#include "validate/request_checks.h"
+
+#include "emit/emitted_api.h"
+#include "validate/cell_domain.h"
+#include "validate/constants.h"
+#include "validate/cost_guard.h"
+#include "validate/names.h"
+
+namespace offsetgen {
+
+void check_before_build(const RequestFacts& facts) {
+  const Surface& surface = *facts.surface;
+  require_usable_prefix(facts.prefix, facts.c, facts.glsl);
+  require_within_size_limits(surface.field, surface.from_catalog ? "the catalog formula" : "the expression");
+  require_defined_on_cell(surface);
+  if (facts.thickness && *facts.thickness) {
+    require_within_size_limits(**facts.thickness, "the thickness expression");
+    require_positive_thickness(**facts.thickness, surface.dims, facts.thickness_text);
+  }
+  if (facts.extrapolate_cost) require_affordable(surface, facts.order, facts.notice);
+}
+
+void check_after_build(const RequestFacts& facts, const OffsetConstruction& construction,
+                       const SurfacePrograms& programs) {
+  for (const auto& f : emitted_functions(programs, facts.surface->dims, construction.facts()))
+    require_within_op_limit(f.suffix, count_ops(*f.program));
+  require_representable_constants(programs, construction, facts.surface->dims, facts.float_precision || facts.glsl);
+}
+
+}  // namespace offsetgen
