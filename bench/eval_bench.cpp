@@ -166,28 +166,18 @@ int cross_check() {
       }
     }
   }
-  // Each method's batch loop against its own scalar function; the methods against each other within
-  // their truncation error (h <= 0.05 here), which catches a registration that mixes up surfaces.
+  // Each method's batch loop against its own scalar function. (The methods are not compared with each
+  // other: they share the zero set to their order, not the values off it.)
   for (const auto& [method_key, f] : r.methods) {
     const auto& [method, key] = method_key;
     std::vector<double> out(kPoints);
     f.offset_n(kPoints, p.x.data(), p.y.data(), p.z.data(), p.w.data(), out.data());
     for (std::size_t i = 0; i < kPoints; ++i) {
-      const double scalar = f.offset(p.x[i], p.y[i], p.z[i], p.w[i]);
-      if (!(scaled_difference(out[i], scalar) <= 1e-10)) {
+      if (!(scaled_difference(out[i], f.offset(p.x[i], p.y[i], p.z[i], p.w[i])) <= 1e-10)) {
         std::fprintf(stderr, "cross-check: batch %s %s o%d differs from scalar at point %zu\n", method.c_str(),
                      key.first.c_str(), key.second, i);
         ++failures;
         break;
-      }
-      for (const auto& [other_key, g] : r.methods) {
-        if (other_key.second != key || other_key.first == method) continue;
-        if (!(scaled_difference(g.offset(p.x[i], p.y[i], p.z[i], p.w[i]), scalar) <= 1e-2)) {
-          std::fprintf(stderr, "cross-check: %s and %s %s o%d disagree at point %zu\n", method.c_str(),
-                       other_key.first.c_str(), key.first.c_str(), key.second, i);
-          ++failures;
-          break;
-        }
       }
     }
   }
