@@ -3,7 +3,7 @@
 // stages only (build_generation), so it never needs an emitter to find a surface.
 #pragma once
 
-#include "emit/dialect.h"
+#include "emit/backend.h"
 #include "lowering/surface_programs.h"
 #include "offset/method.h"
 #include "surfaces/surface.h"
@@ -27,12 +27,10 @@ struct GenerationRequest {
   int order = 4;                              // as asked; the method may round it (projection: even)
   std::optional<std::string> thickness;       // graded wall t(x, y, z), cell units
   // What to emit.
-  bool c = true;
-  bool glsl = false;
+  std::vector<std::string> languages = {"c"};  // backend names (emit/backend.h)
   std::vector<Precision> precisions = {Precision::Double};
-  std::string command;      // the exact command, for the banner
-  std::string c_file_name;  // names printed in the banners
-  std::string glsl_file_name;
+  std::string command;                             // the exact command, for the banner
+  std::map<std::string, std::string> file_names;   // language -> name printed in its banner (default <prefix>.<ext>)
   std::function<void(const std::string&)> notice;  // announces a long run with a time estimate; may be empty
 };
 
@@ -41,9 +39,13 @@ struct Generation {
   std::unique_ptr<OffsetConstruction> construction;
   SurfacePrograms programs;
   std::string prefix;
-  std::string metadata_json;  // the C header's block; the GLSL snippet's says "language":"glsl"
-  std::string c_header;      // empty unless requested (generate())
-  std::string glsl_snippet;  // empty unless requested (generate())
+  std::string metadata_json;                 // the C header's block; each file's names its own language
+  std::map<std::string, std::string> files;  // language -> text, for the requested languages (generate())
+
+  // The text of a requested language's file; throws std::out_of_range if it was not requested.
+  const std::string& file(const std::string& language) const { return files.at(language); }
+  const std::string& c_header() const { return file("c"); }
+  const std::string& glsl_snippet() const { return file("glsl"); }
 
   const MethodFacts& method() const { return construction->facts(); }
   int order() const { return method().order; }
