@@ -69,6 +69,7 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   request.order = o.order;
   request.method = o.method;
   const std::vector<const Backend*> languages = parse_languages(o.lang);
+  request.languages.clear();
   for (const Backend* b : languages) request.languages.push_back(b->name());
   if (o.precision == "double") request.precisions = {Precision::Double};
   if (o.precision == "float") request.precisions = {Precision::Float};
