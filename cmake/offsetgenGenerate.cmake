@@ -247,6 +247,9 @@ function(offsetgen_generate)
     endif()
   endforeach()
   string(REPLACE ";" "," lang_arg "${lang_list}")
+  if(lang_list STREQUAL known)  # every backend: the banners say --lang all, as a user would type it
+    set(lang_arg all)
+  endif()
 
   set(want_double OFF)
   set(want_float OFF)
