@@ -5,7 +5,7 @@
 #                      EXPR "<F(x, y[, z])>" NAME <stem> [PARAMS a=0.3 ...]
 #                      ORDERS <m> [<m> ...]                      # richardson 1..12, projection 1..16
 #                      [METHOD richardson|projection]            # default: offsetgen's default method
-#                      [LANG c glsl glsl_string]                 # default: c
+#                      [LANG c glsl hlsl glsl_string]            # default: c; or LANG all
 #                      [PRECISION double float]                  # default: double (C only)
 #                      [THICKNESS "<t(x, y, z)>"]                # adds <prefix>_graded
 #                      [DENSITY <rho>]                           # adds <prefix>_wall and the density functions
@@ -19,8 +19,10 @@
 # docs/density.md) need a periodic 3D surface; offsetgen refuses others when it runs.
 #
 # For every order m it generates, in OUTPUT_DIR, the files of prefix <stem>_o<m> (stem = NAME, else
-# SURFACE; m is the order the method builds: projection rounds odd orders up to the next even one): <prefix>.h (LANG c), <prefix>.glsl (LANG glsl or glsl_string) and <prefix>_glsl.h
-# (LANG glsl_string: `static const char <prefix>_glsl[]`, the snippet as a C string).
+# SURFACE; m is the order the method builds: projection rounds odd orders up to the next even one):
+# <prefix>.<ext> per language (a backend of src/emit/backends/: .h for c, .glsl, .hlsl), and
+# <prefix>_glsl.h (LANG glsl_string: `static const char <prefix>_glsl[]`, the snippet as a C string).
+# LANG takes a list (c glsl, or "c,glsl") or all (every backend).
 #
 # It creates
 #   <name>            an INTERFACE library carrying OUTPUT_DIR as include directory; linking it
@@ -30,6 +32,7 @@
 #   <name>_HEADERS / OFFSETGEN_HEADERS                 the C headers (<prefix>.h)
 #   <name>_GLSL_FILES / OFFSETGEN_GLSL_FILES           the .glsl snippets
 #   <name>_GLSL_STRING_HEADERS / OFFSETGEN_GLSL_STRING_HEADERS   the <prefix>_glsl.h headers
+#   <name>_<LANG>_FILES / OFFSETGEN_<LANG>_FILES       the files of each other language (HLSL_FILES)
 #   <name>_OUTPUT_DIR / OFFSETGEN_OUTPUT_DIR           the directory
 #
 # The generator is offsetgen::offsetgen (find_package(offsetgen) or add_subdirectory), or the host
@@ -209,33 +212,52 @@ function(offsetgen_generate)
   endforeach()
   list(REMOVE_DUPLICATES orders)
 
+  # The backends ("name:extension" entries, in offsetgen's registry order), plus glsl_string.
+  get_property(backends GLOBAL PROPERTY OFFSETGEN_LANGUAGES)
+  set(known "")
+  foreach(entry IN LISTS backends)
+    string(REGEX REPLACE ":.*" "" backend_name "${entry}")
+    list(APPEND known ${backend_name})
+  endforeach()
   set(want_c OFF)
   set(want_glsl OFF)
   set(want_glsl_string OFF)
   set(languages c)
   if(DEFINED OG_LANG)
-    set(languages ${OG_LANG})
+    string(REPLACE "," ";" languages "${OG_LANG}")
   endif()
+  if(languages STREQUAL "all")
+    set(languages ${known})
+  endif()
+  set(wanted_backends "")
   foreach(language IN LISTS languages)
-    if(language STREQUAL "c")
-      set(want_c ON)
-    elseif(language STREQUAL "glsl")
-      set(want_glsl ON)
-    elseif(language STREQUAL "glsl_string")
-      set(want_glsl ON)
+    if(language STREQUAL "glsl_string")
       set(want_glsl_string ON)
+      list(APPEND wanted_backends glsl)
+    elseif(language IN_LIST known)
+      list(APPEND wanted_backends ${language})
     else()
-      _offsetgen_fail("${target}" "LANG: unknown language '${language}'; expected c, glsl or glsl_string")
+      string(REPLACE ";" ", " known_text "${known}")
+      _offsetgen_fail("${target}" "LANG: unknown language '${language}'; expected ${known_text}, glsl_string or all")
     endif()
   endforeach()
   list(REMOVE_DUPLICATES languages)
   string(REPLACE ";" ", " languages_text "${languages}")
-  if(want_c AND want_glsl)
+  set(lang_list "")  # registry order, as offsetgen writes them
+  set(backend_extensions "")
+  foreach(entry IN LISTS backends)
+    string(REPLACE ":" ";" parts "${entry}")
+    list(GET parts 0 backend_name)
+    list(GET parts 1 backend_extension)
+    if(backend_name IN_LIST wanted_backends)
+      list(APPEND lang_list ${backend_name})
+      list(APPEND backend_extensions ${backend_extension})
+      set(want_${backend_name} ON)
+    endif()
+  endforeach()
+  string(REPLACE ";" "," lang_arg "${lang_list}")
+  if(lang_list STREQUAL known)  # every backend: the banners say --lang all, as a user would type it
     set(lang_arg all)
-  elseif(want_c)
-    set(lang_arg c)
-  else()
-    set(lang_arg glsl)
   endif()
 
   set(want_double OFF)
@@ -336,6 +358,9 @@ function(offsetgen_generate)
   set(headers "")
   set(glsl_files "")
   set(glsl_string_headers "")
+  foreach(backend_name IN LISTS lang_list)
+    set(${backend_name}_files "")
+  endforeach()
   set(all_outputs "")
   set(done_prefixes "")
   foreach(order IN LISTS orders)
@@ -379,6 +404,12 @@ function(offsetgen_generate)
       list(APPEND outputs "${output_dir}/${prefix}.glsl")
       list(APPEND glsl_files "${output_dir}/${prefix}.glsl")
     endif()
+    foreach(backend_name backend_extension IN ZIP_LISTS lang_list backend_extensions)
+      if(NOT backend_name MATCHES "^(c|glsl)$")
+        list(APPEND outputs "${output_dir}/${prefix}.${backend_extension}")
+        list(APPEND ${backend_name}_files "${output_dir}/${prefix}.${backend_extension}")
+      endif()
+    endforeach()
     if(want_glsl_string)
       list(APPEND outputs "${output_dir}/${prefix}_glsl.h")
       list(APPEND glsl_string_headers "${output_dir}/${prefix}_glsl.h")
@@ -421,6 +452,13 @@ function(offsetgen_generate)
     OFFSETGEN_GLSL_FILES "${glsl_files}"
     OFFSETGEN_GLSL_STRING_HEADERS "${glsl_string_headers}"
     OFFSETGEN_OUTPUT_DIR "${output_dir}")
+  foreach(backend_name IN LISTS lang_list)
+    if(NOT backend_name MATCHES "^(c|glsl)$")
+      string(TOUPPER "${backend_name}" upper)
+      set_target_properties(${target} PROPERTIES OFFSETGEN_${upper}_FILES "${${backend_name}_files}")
+      set(${target}_${upper}_FILES "${${backend_name}_files}" PARENT_SCOPE)
+    endif()
+  endforeach()
   set(${target}_HEADERS "${headers}" PARENT_SCOPE)
   set(${target}_GLSL_FILES "${glsl_files}" PARENT_SCOPE)
   set(${target}_GLSL_STRING_HEADERS "${glsl_string_headers}" PARENT_SCOPE)

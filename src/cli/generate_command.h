@@ -11,7 +11,8 @@
 namespace offsetgen {
 
 struct GenerateOptions {
-  std::string surface, expression, name, lang = "c", precision = "double", output, out_dir;
+  std::string surface, expression, name, lang = "c" /* a comma list of backend names, or all */, precision = "double",
+                                         output, out_dir;
   std::vector<std::string> params;
   std::string thickness;
   std::string density, density_field;  // --density R, --density-field EXPR (text: parsed in run_generate)

@@ -50,7 +50,7 @@ std::vector<EmittedFunction> emitted_functions(const SurfacePrograms& programs, 
   return functions;
 }
 
-std::string density_paragraph(const FileFacts& facts, bool glsl) {
+std::string density_paragraph(const FileFacts& facts, const std::string& nan_note) {
   if (!facts.density) return "";
   const density::DensityModel& m = *facts.density;
   const density::SurfaceConstants& k = m.constants();
@@ -78,10 +78,7 @@ std::string density_paragraph(const FileFacts& facts, bool glsl) {
                   "not exact, and a negative thickness or density means nothing. They are exact for the "
                   "exact offsets; the emitted walls carry the offset error above (offsetgen check measures "
                   "the volume fraction).") +
-          (glsl ? " GLSL returns intBitsToFloat(0x7fc00000), a NaN where the implementation keeps NaNs "
-                  "(desktop GL, Vulkan, llvmpipe); GLSL ES 3.00 leaves that value unspecified, so check the "
-                  "range on the host for WebGL."
-                : ""),
+          (nan_note.empty() ? "" : " " + nan_note),
   };
   if (facts.wall_density)
     lines.push_back(

@@ -43,8 +43,8 @@ struct FileFacts {
 };
 
 // The paragraph on density a file's header comment states (no comment markers, one sentence per
-// line); "" without density functions. `glsl` adds how GLSL returns NaN.
-std::string density_paragraph(const FileFacts& facts, bool glsl);
+// line); "" without density functions. `nan_note` (Backend::nan_note) ends the out-of-range sentence.
+std::string density_paragraph(const FileFacts& facts, const std::string& nan_note);
 
 std::string guard_name(const std::string& prefix, const std::string& extension);
 

@@ -1,9 +1,8 @@
 #include "pipeline/generate.h"
 
 #include "density/surface_constants.h"
-#include "emit/c_emitter.h"
 #include "emit/emitted_api.h"
-#include "emit/glsl_emitter.h"
+#include "emit/render.h"
 #include "lowering/lower.h"
 #include "lowering/program.h"
 #include "surfaces/catalog.h"
@@ -26,12 +25,12 @@ void require_identifier(const std::string& name) {
   if (!ok) throw InputError(fmt::format("--name '{}' is not a C identifier (letters, digits, _)", name));
 }
 
-// `language` ("c" or "glsl") tells `offsetgen check` what kind of file it reads.
-nlohmann::ordered_json metadata(const GenerationRequest& request, const Generation& g, const char* language) {
+// `language` (a backend's name) tells `offsetgen check` what kind of file it reads.
+nlohmann::ordered_json metadata(const GenerationRequest& request, const Generation& g, const Backend& language) {
   const MethodFacts& method = g.method();
   nlohmann::ordered_json j;
   j["format"] = 1;
-  j["language"] = language;
+  j["language"] = language.name();
   j["generator"] = std::string("offsetgen ") + OFFSETGEN_VERSION;
   j["prefix"] = g.prefix;
   j["surface"] = request.surface.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(request.surface);
@@ -66,8 +65,8 @@ nlohmann::ordered_json metadata(const GenerationRequest& request, const Generati
         request.density_field ? nlohmann::ordered_json(*request.density_field) : nlohmann::ordered_json();
   }
   std::vector<std::string> precisions;
-  for (auto p : request.precisions) precisions.push_back(p == Precision::Double ? "double" : "float");
-  if (std::string(language) == "glsl") precisions = {"float"};
+  for (auto p : language.precisions(request.precisions))
+    precisions.push_back(p == Precision::Double ? "double" : "float");
   j["precisions"] = precisions;
   j["gradient_bound"] = g.construction->bounds().gradient;
   j["hessian_bound"] = g.construction->bounds().hessian;
@@ -114,6 +113,20 @@ void check_density_field(const GiNaC::ex& rho, const std::string& text, const de
               "curvature)",
               text, value + 0.0, p[0], p[1], p[2], model.sheet_density_limit()));  // + 0.0: no "-0"
       }
+}
+
+std::vector<const Backend*> requested_backends(const GenerationRequest& request) {
+  std::vector<const Backend*> chosen;
+  for (const auto& language : request.languages) chosen.push_back(&backend(language));
+  return chosen;
+}
+
+// Whether any requested file holds float functions (its constants must be printable as floats).
+bool emits_float(const GenerationRequest& request) {
+  for (const Backend* b : requested_backends(request))
+    for (Precision p : b->precisions(request.precisions))
+      if (p == Precision::Float) return true;
+  return false;
 }
 
 }  // namespace
@@ -193,9 +206,8 @@ Generation build_generation(const GenerationRequest& request) {
                               g.prefix,
                               method.effective_order(request.order),
                               method.cost_grows_geometrically(),
-                              request.c,
-                              request.glsl,
-                              std::count(request.precisions.begin(), request.precisions.end(), Precision::Float) > 0,
+                              requested_backends(request),
+                              emits_float(request),
                               &options.thickness,
                               request.thickness.value_or(""),
                               request.notice};
@@ -215,7 +227,7 @@ Generation build_generation(const GenerationRequest& request) {
   g.construction = method.build(g.surface, request.order);
   g.programs = lower_surface(g.surface, *g.construction, options);
   check_after_build(facts_to_check, *g.construction, g.programs);
-  g.metadata_json = metadata(request, g, "c").dump();
+  g.metadata_json = metadata(request, g, backend("c")).dump();
   return g;
 }
 
@@ -233,14 +245,12 @@ Generation generate(const GenerationRequest& request) {
   facts.wall_thickness = g.wall_thickness;
   facts.density_field = request.density_field;
   auto functions = emitted_functions(g);
-  if (request.c) {
-    facts.file_name = request.c_file_name.empty() ? g.prefix + ".h" : request.c_file_name;
-    g.c_header = emit_c_header(facts, functions, request.precisions);
-  }
-  if (request.glsl) {
-    facts.file_name = request.glsl_file_name.empty() ? g.prefix + ".glsl" : request.glsl_file_name;
-    facts.metadata_json = metadata(request, g, "glsl").dump();
-    g.glsl_snippet = emit_glsl_snippet(facts, functions);
+  for (const Backend* b : requested_backends(request)) {
+    auto name = request.file_names.find(b->name());
+    facts.file_name =
+        name == request.file_names.end() || name->second.empty() ? g.prefix + "." + b->extension() : name->second;
+    facts.metadata_json = metadata(request, g, *b).dump();
+    g.files[b->name()] = render_file(*b, facts, functions, request.precisions);
   }
   return g;
 }

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "density/density_model.h"
-#include "emit/dialect.h"
+#include "emit/backend.h"
 #include "emit/emitted_api.h"
 #include "lowering/surface_programs.h"
 #include "offset/method.h"
@@ -35,12 +35,10 @@ struct GenerationRequest {
   std::optional<double> density;
   std::optional<std::string> density_field;
   // What to emit.
-  bool c = true;
-  bool glsl = false;
+  std::vector<std::string> languages = {"c"};  // backend names (emit/backend.h)
   std::vector<Precision> precisions = {Precision::Double};
-  std::string command;      // the exact command, for the banner
-  std::string c_file_name;  // names printed in the banners
-  std::string glsl_file_name;
+  std::string command;                             // the exact command, for the banner
+  std::map<std::string, std::string> file_names;   // language -> name printed in its banner (default <prefix>.<ext>)
   std::function<void(const std::string&)> notice;  // announces a long run with a time estimate; may be empty
 };
 
@@ -49,14 +47,18 @@ struct Generation {
   std::unique_ptr<OffsetConstruction> construction;
   SurfacePrograms programs;
   std::string prefix;
-  std::string metadata_json;  // the C header's block; the GLSL snippet's says "language":"glsl"
+  std::string metadata_json;  // the C header's block; each file's names its own language
   // With density functions: the model, the relations as programs, the _wall thickness.
   std::optional<density::DensityModel> density;
   std::optional<density::DensityPrograms> density_programs;
   std::optional<double> wall_thickness;
   std::optional<GiNaC::ex> graded_thickness;  // t(x, y, z) of _graded (--thickness or --density-field)
-  std::string c_header;                       // empty unless requested (generate())
-  std::string glsl_snippet;                   // empty unless requested (generate())
+  std::map<std::string, std::string> files;  // language -> text, for the requested languages (generate())
+
+  // The text of a requested language's file; throws std::out_of_range if it was not requested.
+  const std::string& file(const std::string& language) const { return files.at(language); }
+  const std::string& c_header() const { return file("c"); }
+  const std::string& glsl_snippet() const { return file("glsl"); }
 
   const MethodFacts& method() const { return construction->facts(); }
   int order() const { return method().order; }

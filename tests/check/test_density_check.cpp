@@ -78,7 +78,7 @@ std::unique_ptr<DensityFile> compile_density_file(const std::string& surface, in
   f->generation = generate(request);
   f->path = testing::scratch_dir("density-" + method + "-" + surface + std::to_string(order)) + "/" +
             f->generation.prefix + ".h";
-  testing::write_text(f->path, f->generation.c_header);
+  testing::write_text(f->path, f->generation.c_header());
   f->meta = read_metadata(f->path);
   CompileOptions options;
   options.cxx = false;  // -O2 as check uses it: the measurement evaluates the walls millions of times
@@ -121,7 +121,7 @@ TEST(DensityCheck, DensityFieldCellsMatchTheMeanDensityOfEachCell) {
   request.command = "check_tests";
   const Generation g = generate(request);
   const std::string path = testing::scratch_dir("density-field") + "/" + g.prefix + ".h";
-  testing::write_text(path, g.c_header);
+  testing::write_text(path, g.c_header());
   const FileMetadata meta = read_metadata(path);
   ASSERT_TRUE(meta.density_field.has_value());
   CompileOptions options;
@@ -151,18 +151,17 @@ TEST(DensityCheck, GlslSnippetWithDensityFunctionsCompilesForAllFourTargets) {
   request.surface = "schwarzp";
   request.order = 2;
   request.density = 0.25;
-  request.c = false;
-  request.glsl = true;
+  request.languages = {"glsl"};
   request.command = "check_tests";
   const Generation g = generate(request);
-  const FileMetadata meta = parse_metadata(g.glsl_snippet);
+  const FileMetadata meta = parse_metadata(g.glsl_snippet());
   ASSERT_TRUE(meta.has_density);
   ASSERT_TRUE(meta.wall_density.has_value());
-  const std::string host = glsl_host_shader(g.glsl_snippet, meta, GlslTarget::Gl330, nullptr);
+  const std::string host = glsl_host_shader(g.glsl_snippet(), meta, GlslTarget::Gl330, nullptr);
   for (const char* call :
        {"_wall(", "_density(q.w)", "_thickness_for_density(q.w)", "_network_density(q.w)", "_offset_for_density(q.w)"})
     EXPECT_NE(host.find(call), std::string::npos) << call;
-  for (const auto& r : compile_glsl(g.glsl_snippet, meta, "schwarzp_o2.glsl"))
+  for (const auto& r : compile_glsl(g.glsl_snippet(), meta, "schwarzp_o2.glsl"))
     EXPECT_TRUE(r.ok) << r.name << "\n" << r.output;
 }
 
