@@ -4,7 +4,7 @@
 # Installed layout (the executable finds its templates at <exe>/../share/offsetgen/templates, and
 # `offsetgen check` its plot script at <exe>/../share/offsetgen/tools, so bin/ and share/ are fixed):
 #   bin/offsetgen
-#   share/offsetgen/templates/*.in
+#   share/offsetgen/templates/<lang>/*.in
 #   share/offsetgen/tools/plot_convergence.py
 #   <OFFSETGEN_INSTALL_CMAKEDIR>/offsetgenConfig.cmake, offsetgenConfigVersion.cmake,
 #       offsetgenTargets*.cmake, offsetgenGenerate.cmake, offsetgenGlslString.cmake
@@ -41,6 +41,24 @@ set(OFFSETGEN_DEFAULT_METHOD ${CMAKE_MATCH_1})
 unset(_offsetgen_method_files)
 unset(_lines)
 
+# The output languages (the backends of src/emit/backends/, registered in
+# src/emit/backend_registry.cpp) as "name:extension" entries in registry order, so
+# offsetgen_generate() can check LANG and name the files at configure time.
+set(OFFSETGEN_LANGUAGES "")
+file(STRINGS "${PROJECT_SOURCE_DIR}/src/emit/backend_registry.cpp" _lines REGEX "static const std::vector<const Backend\\*> all")
+string(REGEX MATCHALL "&([a-z]+)_backend\\(\\)" _names "${_lines}")
+foreach(_name IN LISTS _names)
+  string(REGEX REPLACE "&([a-z]+)_backend.*" "\\1" _name "${_name}")
+  file(STRINGS "${PROJECT_SOURCE_DIR}/src/emit/backends/${_name}.cpp" _ext REGEX "extension\\(\\) const override")
+  string(REGEX MATCH "return \"([a-z]+)\"" _ "${_ext}")
+  list(APPEND OFFSETGEN_LANGUAGES "${_name}:${CMAKE_MATCH_1}")
+endforeach()
+if(NOT OFFSETGEN_LANGUAGES)
+  message(FATAL_ERROR "offsetgen: no backend found in src/emit/backend_registry.cpp")
+endif()
+unset(_names)
+unset(_ext)
+
 # The catalog's surface names, so offsetgen_generate() can reject an unknown SURFACE at configure time
 # before offsetgen is built (tests/cmake_consumer checks that this list is `offsetgen list`'s).
 file(STRINGS "${PROJECT_SOURCE_DIR}/src/surfaces/catalog.cpp" _offsetgen_catalog_lines
@@ -56,8 +74,9 @@ unset(_line)
 
 # --- The same names inside this build (add_subdirectory / FetchContent users, and our tests) -------
 add_executable(offsetgen::offsetgen ALIAS offsetgen)
-file(GLOB _offsetgen_templates "${PROJECT_SOURCE_DIR}/templates/*.in")
+file(GLOB_RECURSE _offsetgen_templates "${PROJECT_SOURCE_DIR}/templates/*.in")
 set_property(GLOBAL PROPERTY OFFSETGEN_METHODS "${OFFSETGEN_METHODS}")
+set_property(GLOBAL PROPERTY OFFSETGEN_LANGUAGES "${OFFSETGEN_LANGUAGES}")
 set_property(GLOBAL PROPERTY OFFSETGEN_DEFAULT_METHOD "${OFFSETGEN_DEFAULT_METHOD}")
 set_property(GLOBAL PROPERTY OFFSETGEN_SURFACES "${OFFSETGEN_SURFACES}")
 set_property(GLOBAL PROPERTY OFFSETGEN_TEMPLATE_FILES ${_offsetgen_templates})

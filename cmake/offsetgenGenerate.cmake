@@ -5,15 +5,24 @@
 #                      EXPR "<F(x, y[, z])>" NAME <stem> [PARAMS a=0.3 ...]
 #                      ORDERS <m> [<m> ...]                      # richardson 1..12, projection 1..16
 #                      [METHOD richardson|projection]            # default: offsetgen's default method
-#                      [LANG c glsl glsl_string]                 # default: c
+#                      [LANG c glsl hlsl glsl_string]            # default: c; or LANG all
 #                      [PRECISION double float]                  # default: double (C only)
 #                      [THICKNESS "<t(x, y, z)>"]                # adds <prefix>_graded
+#                      [DENSITY <rho>]                           # adds <prefix>_wall and the density functions
+#                      [DENSITY_FIELD "<rho(x, y, z)>"]          # adds <prefix>_graded and the density functions
+#                      [DENSITY_FUNCTIONS]                       # adds the density functions alone
 #                      [NAME <stem>]                             # with SURFACE: replaces it in the prefix
 #                      [OUTPUT_DIR <dir>])                       # default: ${CMAKE_CURRENT_BINARY_DIR}/<name>
 #
+# THICKNESS, DENSITY and DENSITY_FIELD each set the wall's thickness: give at most one. The density
+# functions (<prefix>_density, _thickness_for_density, _network_density, _offset_for_density; see
+# docs/density.md) need a periodic 3D surface; offsetgen refuses others when it runs.
+#
 # For every order m it generates, in OUTPUT_DIR, the files of prefix <stem>_o<m> (stem = NAME, else
-# SURFACE; m is the order the method builds: projection rounds odd orders up to the next even one): <prefix>.h (LANG c), <prefix>.glsl (LANG glsl or glsl_string) and <prefix>_glsl.h
-# (LANG glsl_string: `static const char <prefix>_glsl[]`, the snippet as a C string).
+# SURFACE; m is the order the method builds: projection rounds odd orders up to the next even one):
+# <prefix>.<ext> per language (a backend of src/emit/backends/: .h for c, .glsl, .hlsl), and
+# <prefix>_glsl.h (LANG glsl_string: `static const char <prefix>_glsl[]`, the snippet as a C string).
+# LANG takes a list (c glsl, or "c,glsl") or all (every backend).
 #
 # It creates
 #   <name>            an INTERFACE library carrying OUTPUT_DIR as include directory; linking it
@@ -23,6 +32,7 @@
 #   <name>_HEADERS / OFFSETGEN_HEADERS                 the C headers (<prefix>.h)
 #   <name>_GLSL_FILES / OFFSETGEN_GLSL_FILES           the .glsl snippets
 #   <name>_GLSL_STRING_HEADERS / OFFSETGEN_GLSL_STRING_HEADERS   the <prefix>_glsl.h headers
+#   <name>_<LANG>_FILES / OFFSETGEN_<LANG>_FILES       the files of each other language (HLSL_FILES)
 #   <name>_OUTPUT_DIR / OFFSETGEN_OUTPUT_DIR           the directory
 #
 # The generator is offsetgen::offsetgen (find_package(offsetgen) or add_subdirectory), or the host
@@ -91,8 +101,10 @@ function(_offsetgen_write_if_changed path content)
 endfunction()
 
 function(offsetgen_generate)
-  set(keywords TARGET SURFACE EXPR NAME METHOD THICKNESS OUTPUT_DIR ORDERS LANG PRECISION PARAMS)
-  cmake_parse_arguments(PARSE_ARGV 0 OG "" "TARGET;SURFACE;EXPR;NAME;METHOD;THICKNESS;OUTPUT_DIR"
+  set(keywords TARGET SURFACE EXPR NAME METHOD THICKNESS DENSITY DENSITY_FIELD DENSITY_FUNCTIONS OUTPUT_DIR ORDERS
+               LANG PRECISION PARAMS)
+  cmake_parse_arguments(PARSE_ARGV 0 OG "DENSITY_FUNCTIONS"
+                        "TARGET;SURFACE;EXPR;NAME;METHOD;THICKNESS;DENSITY;DENSITY_FIELD;OUTPUT_DIR"
                         "ORDERS;LANG;PRECISION;PARAMS")
   set(target "")
   if(DEFINED OG_TARGET)
@@ -200,33 +212,52 @@ function(offsetgen_generate)
   endforeach()
   list(REMOVE_DUPLICATES orders)
 
+  # The backends ("name:extension" entries, in offsetgen's registry order), plus glsl_string.
+  get_property(backends GLOBAL PROPERTY OFFSETGEN_LANGUAGES)
+  set(known "")
+  foreach(entry IN LISTS backends)
+    string(REGEX REPLACE ":.*" "" backend_name "${entry}")
+    list(APPEND known ${backend_name})
+  endforeach()
   set(want_c OFF)
   set(want_glsl OFF)
   set(want_glsl_string OFF)
   set(languages c)
   if(DEFINED OG_LANG)
-    set(languages ${OG_LANG})
+    string(REPLACE "," ";" languages "${OG_LANG}")
   endif()
+  if(languages STREQUAL "all")
+    set(languages ${known})
+  endif()
+  set(wanted_backends "")
   foreach(language IN LISTS languages)
-    if(language STREQUAL "c")
-      set(want_c ON)
-    elseif(language STREQUAL "glsl")
-      set(want_glsl ON)
-    elseif(language STREQUAL "glsl_string")
-      set(want_glsl ON)
+    if(language STREQUAL "glsl_string")
       set(want_glsl_string ON)
+      list(APPEND wanted_backends glsl)
+    elseif(language IN_LIST known)
+      list(APPEND wanted_backends ${language})
     else()
-      _offsetgen_fail("${target}" "LANG: unknown language '${language}'; expected c, glsl or glsl_string")
+      string(REPLACE ";" ", " known_text "${known}")
+      _offsetgen_fail("${target}" "LANG: unknown language '${language}'; expected ${known_text}, glsl_string or all")
     endif()
   endforeach()
   list(REMOVE_DUPLICATES languages)
   string(REPLACE ";" ", " languages_text "${languages}")
-  if(want_c AND want_glsl)
+  set(lang_list "")  # registry order, as offsetgen writes them
+  set(backend_extensions "")
+  foreach(entry IN LISTS backends)
+    string(REPLACE ":" ";" parts "${entry}")
+    list(GET parts 0 backend_name)
+    list(GET parts 1 backend_extension)
+    if(backend_name IN_LIST wanted_backends)
+      list(APPEND lang_list ${backend_name})
+      list(APPEND backend_extensions ${backend_extension})
+      set(want_${backend_name} ON)
+    endif()
+  endforeach()
+  string(REPLACE ";" "," lang_arg "${lang_list}")
+  if(lang_list STREQUAL known)  # every backend: the banners say --lang all, as a user would type it
     set(lang_arg all)
-  elseif(want_c)
-    set(lang_arg c)
-  else()
-    set(lang_arg glsl)
   endif()
 
   set(want_double OFF)
@@ -263,8 +294,32 @@ function(offsetgen_generate)
     list(APPEND param_args --param "${param}")
   endforeach()
   set(thickness_args "")
+  set(wall_keywords "")
+  foreach(keyword THICKNESS DENSITY DENSITY_FIELD)
+    if(DEFINED OG_${keyword})
+      list(APPEND wall_keywords ${keyword})
+    endif()
+  endforeach()
+  list(LENGTH wall_keywords wall_keyword_count)
+  if(wall_keyword_count GREATER 1)
+    string(REPLACE ";" " and " wall_keywords "${wall_keywords}")
+    _offsetgen_fail("${target}" "give one of THICKNESS, DENSITY and DENSITY_FIELD, not ${wall_keywords}: each sets the wall's thickness")
+  endif()
   if(DEFINED OG_THICKNESS)
     set(thickness_args --thickness "${OG_THICKNESS}")
+  endif()
+  if(DEFINED OG_DENSITY)
+    # The range (0, rho_max] depends on the surface: offsetgen checks it when it runs.
+    if(NOT OG_DENSITY MATCHES "^(0?\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?$")
+      _offsetgen_fail("${target}" "DENSITY '${OG_DENSITY}' is not a relative density (a number such as 0.2)")
+    endif()
+    set(thickness_args --density "${OG_DENSITY}")
+  endif()
+  if(DEFINED OG_DENSITY_FIELD)
+    set(thickness_args --density-field "${OG_DENSITY_FIELD}")
+  endif()
+  if(OG_DENSITY_FUNCTIONS)
+    list(APPEND thickness_args --density-functions)
   endif()
 
   set(output_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}")
@@ -303,6 +358,9 @@ function(offsetgen_generate)
   set(headers "")
   set(glsl_files "")
   set(glsl_string_headers "")
+  foreach(backend_name IN LISTS lang_list)
+    set(${backend_name}_files "")
+  endforeach()
   set(all_outputs "")
   set(done_prefixes "")
   foreach(order IN LISTS orders)
@@ -346,6 +404,12 @@ function(offsetgen_generate)
       list(APPEND outputs "${output_dir}/${prefix}.glsl")
       list(APPEND glsl_files "${output_dir}/${prefix}.glsl")
     endif()
+    foreach(backend_name backend_extension IN ZIP_LISTS lang_list backend_extensions)
+      if(NOT backend_name MATCHES "^(c|glsl)$")
+        list(APPEND outputs "${output_dir}/${prefix}.${backend_extension}")
+        list(APPEND ${backend_name}_files "${output_dir}/${prefix}.${backend_extension}")
+      endif()
+    endforeach()
     if(want_glsl_string)
       list(APPEND outputs "${output_dir}/${prefix}_glsl.h")
       list(APPEND glsl_string_headers "${output_dir}/${prefix}_glsl.h")
@@ -388,6 +452,13 @@ function(offsetgen_generate)
     OFFSETGEN_GLSL_FILES "${glsl_files}"
     OFFSETGEN_GLSL_STRING_HEADERS "${glsl_string_headers}"
     OFFSETGEN_OUTPUT_DIR "${output_dir}")
+  foreach(backend_name IN LISTS lang_list)
+    if(NOT backend_name MATCHES "^(c|glsl)$")
+      string(TOUPPER "${backend_name}" upper)
+      set_target_properties(${target} PROPERTIES OFFSETGEN_${upper}_FILES "${${backend_name}_files}")
+      set(${target}_${upper}_FILES "${${backend_name}_files}" PARENT_SCOPE)
+    endif()
+  endforeach()
   set(${target}_HEADERS "${headers}" PARENT_SCOPE)
   set(${target}_GLSL_FILES "${glsl_files}" PARENT_SCOPE)
   set(${target}_GLSL_STRING_HEADERS "${glsl_string_headers}" PARENT_SCOPE)

@@ -74,10 +74,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     request.name = "fuzz";
     request.order = 2;
-    request.c = request.glsl = true;
+    request.languages = {"c", "glsl"};
     request.precisions = {offsetgen::Precision::Double, offsetgen::Precision::Float};
     const offsetgen::Generation g = offsetgen::generate(request);
-    for (const std::string* code : {&g.c_header, &g.glsl_snippet}) {
+    for (const std::string* code : {&g.c_header(), &g.glsl_snippet()}) {
       if (prints_a_non_finite_literal(*code)) {
         std::fprintf(stderr, "accepted input printed a non-finite literal:\n%s\n", code->c_str());
         std::abort();

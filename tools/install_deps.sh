@@ -8,7 +8,7 @@ packages=(
   libginac-dev libcln-dev
   libfmt-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  glslang-tools libegl-dev libopengl-dev libgles-dev libgl1-mesa-dri libpng-dev
+  glslang-tools spirv-tools libegl-dev libopengl-dev libgles-dev libgl1-mesa-dri libpng-dev
   python3 python3-sympy python3-matplotlib python3-numpy time
   clang-format clang-tidy
   clang libclang-rt-14-dev

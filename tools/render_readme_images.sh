@@ -11,6 +11,8 @@
 #   docs/images/schwarzp_shell.png  Schwarz P, one cell, t = 0.1, order 4     (paper Figure 4)
 #   docs/images/neovius_shell.png   Neovius, one cell, t = 0.1, order 4       (paper Figure 6)
 #   docs/images/gyroid_graded.png   gyroid, 3 cells along x, t = 0.02 + 0.04 x, order 4 (Figure 9)
+#   docs/images/gyroid_density.png  gyroid, 3 cells along x, relative density 0.3 falling to 0.1,
+#                                   order 4 (--density-field, docs/density.md)
 #   docs/images/gyroid_graded_mesh.png  the STL of `offsetgen mesh` (gyroid, 3x2x2 cells of 10 mm,
 #                                   t = 0.04 + 0.04 x, adaptivity 0.1), drawn by tools/render_stl.py
 #                                   (matplotlib); skipped when offsetgen was built without mesh
@@ -55,11 +57,15 @@ snippet gyroid_o4 gyroid 4
 snippet schwarzp_o4 schwarzp 4
 snippet neovius_o4 neovius 4
 snippet gyroid_graded_o4 gyroid 4 --thickness "0.02 + 0.04*x"
+snippet gyroid_density_o4 gyroid 4 --density-field "0.3 - 0.2*x/3"
 
 render gyroid_shell.png gyroid_o4 --thickness 0.1 --size 480x480
 render schwarzp_shell.png schwarzp_o4 --thickness 0.1 --size 480x480
 render neovius_shell.png neovius_o4 --thickness 0.1 --size 480x480
 render gyroid_graded.png gyroid_graded_o4 --graded --thickness 0.02 --box 3x1x1 \
+  --view 0.22 -0.95 0.3 --size 960x360
+# --thickness: the thinnest wall (rho = 0.1: t = 0.0324), which sets the march step.
+render gyroid_density.png gyroid_density_o4 --graded --thickness 0.032 --box 3x1x1 \
   --view 0.22 -0.95 0.3 --size 960x360
 
 # The meshed part: the STL itself, not the GLSL.

@@ -48,6 +48,40 @@ Verdict missed_verdict(const std::string& name, const std::vector<std::pair<doub
   return v;
 }
 
+void add_density_verdicts(const DensityReport& d, std::vector<Verdict>& verdicts) {
+  // Double: a few rounding errors of the cubic and its Newton steps. Float: the same in float's
+  // epsilon, amplified by the inverse's conditioning near the limits.
+  constexpr double kDoubleLimit = 1e-12, kFloatLimit = 1e-5;
+  verdicts.push_back(
+      {"density relations",
+       d.max_relation_error <= kDoubleLimit && d.max_float_relation_error <= kFloatLimit && d.nan_failures == 0, true,
+       fmt::format("emitted vs model: max relative difference {:.1e} (limit {:.0e}){}{}; {} out-of-range "
+                   "argument(s) without NaN{}",
+                   d.max_relation_error, kDoubleLimit, d.worst_relation.empty() ? "" : " at " + d.worst_relation,
+                   d.has_float ? fmt::format(", float {:.1e} (limit {:.0e}){}", d.max_float_relation_error, kFloatLimit,
+                                             d.worst_float_relation.empty() ? "" : " at " + d.worst_float_relation)
+                               : std::string(),
+                   d.nan_failures, d.nan_failure_examples.empty() ? "" : ": " + d.nan_failure_examples[0])});
+  for (const DensityRow& row : d.rows)
+    verdicts.push_back({fmt::format("density {} {:g}", row.solid, row.requested),
+                        std::fabs(row.deviation) <= d.tolerance, true,
+                        fmt::format("volume fraction {:.6f} +- {:.1e} (column integration), {} {:.6f}: deviation "
+                                    "{:+.1e} (limit {:.0e})",
+                                    row.measured.value, row.measured.standard_error, row.solid == "network" ? "h" : "t",
+                                    row.parameter, row.deviation, d.tolerance)});
+  if (!d.cells.empty()) {
+    const DensityCellRow* worst = &d.cells.front();
+    for (const DensityCellRow& c : d.cells)
+      if (std::fabs(c.deviation) > std::fabs(worst->deviation)) worst = &c;
+    verdicts.push_back(
+        {"density field cells", std::fabs(worst->deviation) <= d.cell_tolerance, true,
+         fmt::format("{} cells: largest deviation {:+.1e} in cell ({}, {}, {}) (requested mean {:.6f}, "
+                     "measured {:.6f} +- {:.1e}; limit {:.0e})",
+                     d.cells.size(), worst->deviation, worst->cell[0], worst->cell[1], worst->cell[2], worst->requested,
+                     worst->measured.value, worst->measured.standard_error, d.cell_tolerance)});
+  }
+}
+
 // Every function against its own tolerance: the verdict names those out of it.
 Verdict values_verdict(const std::string& name, const ValueReport& values) {
   Verdict v{name, values.pass, true, ""};
@@ -180,6 +214,11 @@ CheckReport run_checks(const CheckSettings& s) {
   std::unique_ptr<Reference> reference = rebuild_reference(meta);
   report.warnings.insert(report.warnings.end(), reference->warnings.begin(), reference->warnings.end());
   report.surface_title = reference->generation.surface.title;
+  // A density field's _graded reads t = thickness_for_density(rho(x)): the rebuilt model holds it.
+  if (meta.density_field && !s.thickness && reference->generation.graded_thickness) {
+    thickness_ex = file_thickness = reference->generation.graded_thickness;
+    thickness_text = "thickness_for_density(" + *meta.density_field + ")";
+  }
 
   progress.update("compile", "C99 strict, C++17 strict, shared object");
   report.compile = compile_and_load(s.file, meta, tools);
@@ -281,6 +320,14 @@ CheckReport run_checks(const CheckSettings& s) {
         report.verdicts.push_back(missed_verdict("graded crossings", graded_rays, h_limit));
       }
     }
+  }
+  if (s.run_density && meta.has_density && reference->generation.density) {
+    DensityCheckOptions options = s.density;
+    options.progress = [&progress](const std::string& what) { progress.update("density", what); };
+    std::optional<GiNaC::ex> field;
+    if (meta.density_field) field = parse_thickness(*meta.density_field, meta, {});
+    report.density = measure_density(functions, meta, *reference->generation.density, field, options);
+    add_density_verdicts(*report.density, report.verdicts);
   }
   progress.clear();
   report.pass = std::all_of(report.verdicts.begin(), report.verdicts.end(), [](const Verdict& v) { return v.pass; });

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "check/compile.h"
+#include "check/density_check.h"
 #include "check/glsl_compile.h"
 #include "check/lipschitz.h"
 #include "check/metadata.h"
@@ -31,6 +32,8 @@ struct CheckSettings {
   double order_slack = 0.3;  // fitted order must reach expected - slack
   bool run_values = true;
   bool run_thickness = true;
+  bool run_density = true;  // files with density functions: volume fractions (density_check.h)
+  DensityCheckOptions density;
 };
 
 // 0.001 * 10^(k/4), k = 0..8: 0.001 ... 0.1, nine points, 0.01 included.
@@ -59,6 +62,7 @@ struct CheckReport {
   bool thickness_float_only = false;
   std::optional<GradedReport> graded;
   std::vector<LipschitzRow> lipschitz;  // the method's documented bounds, measured
+  std::optional<DensityReport> density;
   std::vector<Verdict> verdicts;
   std::vector<double> sweep;
   bool pass = false;

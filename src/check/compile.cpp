@@ -133,7 +133,7 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
     s += fmt::format("void offsetgen_check_normal{1}(const {0}* p, {0} h, {0}* n);\n", t, fs);
     s += fmt::format("void offsetgen_check_normal{1}(const {0}* p, {0} h, {0}* n) {{ {2}_normal{1}({3}, h, n); }}\n", t,
                      fs, p, args);
-    if (meta.thickness) {
+    if (meta.has_graded()) {
       s += fmt::format("{0} offsetgen_check_graded{1}(const {0}* p);\n", t, fs);
       s +=
           fmt::format("{0} offsetgen_check_graded{1}(const {0}* p) {{ return {2}_graded{1}({3}); }}\n", t, fs, p, args);
@@ -150,7 +150,20 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
     (void)suffix;
   };
   if (meta.has_double) emit("double", "");
+  // The density relations and _wall (files with density functions).
+  auto emit_density = [&](const std::string& t, const std::string& fs) {
+    if (meta.wall_density) {
+      s += fmt::format("{0} offsetgen_check_wall{1}(const {0}* p);\n", t, fs);
+      s += fmt::format("{0} offsetgen_check_wall{1}(const {0}* p) {{ return {2}_wall{1}({3}); }}\n", t, fs, p, args);
+    }
+    for (const char* f : {"density", "thickness_for_density", "network_density", "offset_for_density"}) {
+      s += fmt::format("{0} offsetgen_check_{1}{2}({0} v);\n", t, f, fs);
+      s += fmt::format("{0} offsetgen_check_{1}{2}({0} v) {{ return {3}_{1}{2}(v); }}\n", t, f, fs, p);
+    }
+  };
+  if (meta.has_double && meta.has_density) emit_density("double", "");
   if (meta.has_float) emit("float", "f");
+  if (meta.has_float && meta.has_density) emit_density("float", "f");
   s += "#ifdef __cplusplus\n}\n#endif\n";
   return s;
 }
@@ -238,7 +251,15 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
     f.offset = symbol<decltype(f.offset)>(handle, "offsetgen_check_offset");
     f.shell = symbol<decltype(f.shell)>(handle, "offsetgen_check_shell");
     f.normal = symbol<decltype(f.normal)>(handle, "offsetgen_check_normal");
-    if (meta.thickness) f.graded = symbol<decltype(f.graded)>(handle, "offsetgen_check_graded");
+    if (meta.has_graded()) f.graded = symbol<decltype(f.graded)>(handle, "offsetgen_check_graded");
+    if (meta.has_density) {
+      if (meta.wall_density) f.wall = symbol<decltype(f.wall)>(handle, "offsetgen_check_wall");
+      f.density = symbol<decltype(f.density)>(handle, "offsetgen_check_density");
+      f.thickness_for_density =
+          symbol<decltype(f.thickness_for_density)>(handle, "offsetgen_check_thickness_for_density");
+      f.network_density = symbol<decltype(f.network_density)>(handle, "offsetgen_check_network_density");
+      f.offset_for_density = symbol<decltype(f.offset_for_density)>(handle, "offsetgen_check_offset_for_density");
+    }
     if (batch) {
       f.offset_n = symbol<decltype(f.offset_n)>(handle, "offsetgen_check_offset_n");
       f.shell_n = symbol<decltype(f.shell_n)>(handle, "offsetgen_check_shell_n");
@@ -249,7 +270,14 @@ CompileResult compile_and_load(const std::string& header_path, const FileMetadat
     f.offsetf = symbol<decltype(f.offsetf)>(handle, "offsetgen_check_offsetf");
     f.shellf = symbol<decltype(f.shellf)>(handle, "offsetgen_check_shellf");
     f.normalf = symbol<decltype(f.normalf)>(handle, "offsetgen_check_normalf");
-    if (meta.thickness) f.gradedf = symbol<decltype(f.gradedf)>(handle, "offsetgen_check_gradedf");
+    if (meta.has_graded()) f.gradedf = symbol<decltype(f.gradedf)>(handle, "offsetgen_check_gradedf");
+    if (meta.has_density) {
+      f.densityf = symbol<decltype(f.densityf)>(handle, "offsetgen_check_densityf");
+      f.thickness_for_densityf =
+          symbol<decltype(f.thickness_for_densityf)>(handle, "offsetgen_check_thickness_for_densityf");
+      f.network_densityf = symbol<decltype(f.network_densityf)>(handle, "offsetgen_check_network_densityf");
+      f.offset_for_densityf = symbol<decltype(f.offset_for_densityf)>(handle, "offsetgen_check_offset_for_densityf");
+    }
     if (batch) {
       f.offsetf_n = symbol<decltype(f.offsetf_n)>(handle, "offsetgen_check_offsetf_n");
       f.shellf_n = symbol<decltype(f.shellf_n)>(handle, "offsetgen_check_shellf_n");

@@ -52,6 +52,16 @@ struct LoadedFunctions {
   float (*gradedf)(const float* p) = nullptr;
   BatchFunction<double> offset_n = nullptr, shell_n = nullptr;
   BatchFunction<float> offsetf_n = nullptr, shellf_n = nullptr;
+  // With density functions (null otherwise): _wall and the relations, double and float.
+  double (*wall)(const double* p) = nullptr;
+  double (*density)(double t) = nullptr;
+  double (*thickness_for_density)(double rho) = nullptr;
+  double (*network_density)(double h) = nullptr;
+  double (*offset_for_density)(double rho) = nullptr;
+  float (*densityf)(float t) = nullptr;
+  float (*thickness_for_densityf)(float rho) = nullptr;
+  float (*network_densityf)(float h) = nullptr;
+  float (*offset_for_densityf)(float rho) = nullptr;
 };
 
 class LoadedLibrary {

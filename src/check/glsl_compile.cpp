@@ -86,7 +86,11 @@ std::string glsl_host_shader(const std::string& snippet, const FileMetadata& met
   s += fmt::format("  acc += {}_offset({}, q.w);\n", p, point);
   s += fmt::format("  acc += {}_shell({}, q.w);\n", p, point);
   s += fmt::format("  acc += dot({}_normal({}, q.w), {}(1.0));\n", p, point, meta.dims == 3 ? "vec3" : "vec2");
-  if (meta.thickness) s += fmt::format("  acc += {}_graded({});\n", p, point);
+  if (meta.has_graded()) s += fmt::format("  acc += {}_graded({});\n", p, point);
+  if (meta.wall_density) s += fmt::format("  acc += {}_wall({});\n", p, point);
+  if (meta.has_density)
+    for (const char* f : {"density", "thickness_for_density", "network_density", "offset_for_density"})
+      s += fmt::format("  acc += {}_{}(q.w);\n", p, f);
   s += "  o_color = vec4(acc);\n}\n";
   return s;
 }

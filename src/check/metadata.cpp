@@ -1,5 +1,7 @@
 #include "check/metadata.h"
 
+#include "emit/backend.h"
+
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -70,15 +72,25 @@ bool is_identifier(const std::string& s) {
   return true;
 }
 
-// "language": "c" | "glsl". Older files lack it: a C header is the one with `static inline` functions.
+// "language": a backend's name (emit/backend.h). Older files lack it: a C header is the one with
+// `static inline` functions. check dispatches to the backend's checker; a target without one is refused.
 FileKind file_kind(const json& j, const std::string& text) {
   auto it = j.find("language");
   if (it == j.end() || it->is_null()) {
     return text.find("static inline ") != std::string::npos ? FileKind::C : FileKind::Glsl;
   }
-  if (*it == "c") return FileKind::C;
-  if (*it == "glsl") return FileKind::Glsl;
-  damaged("field \"language\" must be \"c\" or \"glsl\"");
+  if (!it->is_string()) damaged("field \"language\" must be a string");
+  const std::string language = *it;
+  const Backend* target = nullptr;
+  for (const Backend* b : backends())
+    if (b->name() == language) target = b;
+  if (!target) damaged(fmt::format("field \"language\" must be one of {}", backend_names()));
+  if (!target->checkable())
+    throw InputError(
+        fmt::format("offsetgen check has no checker for {} files yet (language \"{}\"); the test suite "
+                    "compiles them (see README)",
+                    target->title(), language));
+  return language == "c" ? FileKind::C : FileKind::Glsl;
 }
 
 }  // namespace
@@ -165,6 +177,23 @@ FileMetadata parse_metadata(const std::string& text) {
       m.ops[p.key()] = static_cast<int>(p.value().get<unsigned long long>());
     }
   }
+  if (auto it = j.find("density"); it != j.end() && !it->is_null()) {
+    if (!it->is_object()) damaged("field \"density\" must be an object");
+    m.has_density = true;
+    m.density_limit = positive_number_field(*it, "density_limit");
+    m.thickness_limit = positive_number_field(*it, "thickness_limit");
+    m.offset_limit = positive_number_field(*it, "offset_limit");
+    const json& range = field(*it, "network_density_range");
+    if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number())
+      damaged("field \"network_density_range\" must be a list of two numbers");
+    m.network_density_min = range[0].get<double>();
+    m.network_density_max = range[1].get<double>();
+    if (auto w = j.find("wall_density"); w != j.end() && !w->is_null()) {
+      m.wall_density = positive_number_field(j, "wall_density");
+      m.wall_thickness = positive_number_field(j, "wall_thickness");
+    }
+    m.density_field = optional_string_field(j, "density_field");
+  }
   // The header must actually define what the block describes.
   const std::string probe = m.prefix + "_offset";
   if (text.find(probe) == std::string::npos)
@@ -176,13 +205,15 @@ FileMetadata read_metadata(const std::string& path, std::string* text_out) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (std::filesystem::is_directory(status))
-    throw InputError(fmt::format("'{}' is a directory; give one file written by `offsetgen generate` (a .h header "
-                                 "or a .glsl snippet)",
-                                 path));
+    throw InputError(
+        fmt::format("'{}' is a directory; give one file written by `offsetgen generate` (a .h header "
+                    "or a .glsl snippet)",
+                    path));
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-    throw InputError(fmt::format("'{}' is not a regular file (a device, FIFO or socket); give a header or GLSL "
-                                 "snippet written by `offsetgen generate`",
-                                 path));
+    throw InputError(
+        fmt::format("'{}' is not a regular file (a device, FIFO or socket); give a header or GLSL "
+                    "snippet written by `offsetgen generate`",
+                    path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("cannot read '{}'", path));
   std::ostringstream buffer;

@@ -30,7 +30,15 @@ struct FileMetadata {
   bool has_float = false;
   double gradient_bound = 0;       // the safeguard's M (natural units)
   std::map<std::string, int> ops;  // per function, when present
-  std::string json;                // the block's JSON text as found
+  // Density (files generated with density functions; density/): the relations' limits as stated,
+  // the --density of _wall and its thickness, the --density-field of _graded.
+  bool has_density = false;
+  double density_limit = 0, thickness_limit = 0, offset_limit = 0;
+  double network_density_min = 0, network_density_max = 0;
+  std::optional<double> wall_density, wall_thickness;
+  std::optional<std::string> density_field;
+  bool has_graded() const { return thickness.has_value() || density_field.has_value(); }  // a _graded function
+  std::string json;  // the block's JSON text as found
 };
 
 // Parses the metadata out of a file's text. The kind (C or GLSL) is the block's "language"; files

@@ -26,9 +26,11 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
   request.order = meta.order;
   request.method = meta.method;
   request.thickness = meta.thickness;
+  request.density_functions = meta.has_density;
+  request.density = meta.wall_density;
+  request.density_field = meta.density_field;
   // The file's own language: its names need only be valid there.
-  request.c = meta.kind == FileKind::C;
-  request.glsl = meta.kind == FileKind::Glsl;
+  request.languages = {meta.kind == FileKind::C ? "c" : "glsl"};
   const std::string default_prefix = meta.surface ? fmt::format("{}_o{}", *meta.surface, meta.order) : "";
   if (meta.expression || meta.prefix != default_prefix) request.name = meta.prefix;
   if (meta.expression && meta.prefix.empty()) request.name = "surface";

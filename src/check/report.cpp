@@ -180,6 +180,8 @@ std::string format_report(const CheckReport& r) {
     line(fmt::format("                one-sided: {}", fit_text(g.fit_one_sided)));
   }
 
+  if (r.density) out += format_density(*r.density);
+
   line("");
   line("Verdict:");
   for (const auto& v : r.verdicts)
@@ -288,6 +290,7 @@ ojson report_json(const CheckReport& r) {
         {"total", fit_json(g.fit_total)}, {"paper", fit_json(g.fit_paper)}, {"one_sided", fit_json(g.fit_one_sided)}};
     j["graded"] = gj;
   }
+  if (r.density) j["density"] = density_json(*r.density);
   return j;
 }
 

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cstdio>
 #include <fstream>
 
@@ -52,11 +53,40 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
   cmd->add_option("--order-slack", o.order_slack, "Fitted order must reach the expected order minus this");
   cmd->add_flag("--no-values", o.no_values, "Skip the 40-digit value check");
   cmd->add_flag("--no-thickness", o.no_thickness, "Skip the wall-thickness measurement");
+  cmd->add_flag("--no-density", o.no_density, "Skip the volume fractions of files with density functions");
+  cmd->add_option("--block", o.block,
+                  "Cells NX,NY,NZ of the block whose per-cell volume fraction is compared with a density field")
+      ->capture_default_str();
+  cmd->add_option("--density-grid", o.density_grid,
+                  "Columns per side per axis of each random shift when measuring volume fractions")
+      ->check(CLI::Range(4, 400))
+      ->capture_default_str();
+  cmd->add_option("--density-shifts", o.density_shifts,
+                  "Random shifts of the grid of columns (their spread gives the stated error)")
+      ->check(CLI::Range(2, 100))
+      ->capture_default_str();
+  cmd->add_option("--density-tolerance", o.density_tolerance,
+                  "Largest |measured - requested| volume fraction (each density, each cell)")
+      ->capture_default_str();
   cmd->footer(
       "Exit status: 0 all checks pass, 1 a check failed (compile error, numbers out of bound), 2 usage or input\n"
       "error (not an offsetgen file, damaged metadata, no C compiler, bad --thickness).\n"
       "Example: offsetgen check gyroid_o4.h --json gyroid_o4.json --plot gyroid_o4.png");
 }
+
+namespace {
+
+std::array<int, 3> parse_block(const std::string& text) {
+  std::array<int, 3> block{};
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%d,%d,%d%c", &block[0], &block[1], &block[2], &extra) != 3)
+    throw InputError(fmt::format("--block '{}': expected three cell counts NX,NY,NZ, e.g. 4,1,1", text));
+  for (int n : block)
+    if (n < 1 || n > 16) throw InputError(fmt::format("--block '{}': each count must be 1 to 16", text));
+  return block;
+}
+
+}  // namespace
 
 int run_check(const CheckOptions& o) {
   check::CheckSettings s;
@@ -78,6 +108,11 @@ int run_check(const CheckOptions& o) {
   s.order_slack = o.order_slack;
   s.run_values = !o.no_values;
   s.run_thickness = !o.no_thickness;
+  s.run_density = !o.no_density;
+  s.density.tolerance = s.density.cell_tolerance = o.density_tolerance;
+  s.density.block = parse_block(o.block);
+  s.density.sampling.grid = o.density_grid;
+  s.density.sampling.shifts = o.density_shifts;
   // Outputs that cannot be written, or that name one file twice, are usage errors before the long run.
   std::vector<std::string> outputs;
   for (const auto* path : {&s.json_path, &s.plot_path})

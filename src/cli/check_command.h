@@ -28,6 +28,10 @@ struct CheckOptions {
   double order_slack = 0.3;
   bool no_values = false;
   bool no_thickness = false;
+  bool no_density = false;
+  std::string block = "2,2,2";
+  double density_tolerance = 2e-4;
+  int density_grid = 40, density_shifts = 6;
 };
 
 void add_check_command(CLI::App& app, CheckOptions& options);

@@ -1,6 +1,8 @@
 #include "cli/generate_command.h"
 
 #include "cli/command_line.h"
+#include "cli/density_command.h"
+#include "emit/backend.h"
 #include "emit/emitted_api.h"
 #include "emit/file_writer.h"
 #include "pipeline/generate.h"
@@ -34,17 +36,30 @@ void add_generate_command(CLI::App& app, GenerateOptions& o) {
                   "Offset construction (default " + std::string(kDefaultMethod) + "):" + methods)
       ->capture_default_str();
   cmd->add_option("-m,--order", o.order, "Approximation order m (" + orders + ")")->capture_default_str();
-  cmd->add_option("-l,--lang", o.lang, "Output language: c, glsl or all")
-      ->check(CLI::IsMember({"c", "glsl", "all"}))
+  cmd->add_option("-l,--lang", o.lang, "Output languages, a comma list of " + backend_names() + ", or all")
       ->capture_default_str();
   cmd->add_option("--precision", o.precision, "C precision: double, float (f-suffixed names) or both")
       ->check(CLI::IsMember({"double", "float", "both"}))
       ->capture_default_str();
-  cmd->add_option("-t,--thickness", o.thickness, "Graded wall: total thickness t(x, y, z) > 0 in cell units; adds <prefix>_graded")
+  cmd->add_option("-t,--thickness", o.thickness,
+                  "Graded wall: total thickness t(x, y, z) > 0 in cell units; adds <prefix>_graded")
       ->each([&o](const std::string&) { o.thickness_given = true; });
-  cmd->add_option("-o,--output", o.output, "Output file (with --lang all: the .h; the .glsl goes beside it); - for stdout")
+  cmd->add_flag("--density-functions", o.density_functions,
+                "Add <prefix>_density(t), _thickness_for_density(rho), _network_density(h) and "
+                "_offset_for_density(rho) (periodic 3D surfaces; docs/density.md)");
+  cmd->add_option("--density", o.density,
+                  "Relative density rho of the sheet: adds <prefix>_wall(x, y, z), the shell of that density "
+                  "(implies --density-functions)")
+      ->each([&o](const std::string&) { o.density_given = true; });
+  cmd->add_option("--density-field", o.density_field,
+                  "Graded density rho(x, y, z): adds <prefix>_graded with t(p) = thickness_for_density(rho(p)) "
+                  "(implies --density-functions)")
+      ->each([&o](const std::string&) { o.density_field_given = true; });
+  cmd->add_option("-o,--output", o.output,
+                  "Output file of the first language (c, glsl, hlsl order); the others go beside it with their own "
+                  "extension (.h, .glsl, .hlsl); - for stdout")
       ->each([&o](const std::string&) { o.output_given = true; });
-  cmd->add_option("--out-dir", o.out_dir, "Directory for <prefix>.h / <prefix>.glsl when -o is not given")
+  cmd->add_option("--out-dir", o.out_dir, "Directory for <prefix>.h, <prefix>.glsl, <prefix>.hlsl when -o is not given")
       ->each([&o](const std::string&) { o.out_dir_given = true; });
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
 }
@@ -65,8 +80,9 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   request.name = o.name;
   request.order = o.order;
   request.method = o.method;
-  request.c = o.lang == "c" || o.lang == "all";
-  request.glsl = o.lang == "glsl" || o.lang == "all";
+  const std::vector<const Backend*> languages = parse_languages(o.lang);
+  request.languages.clear();
+  for (const Backend* b : languages) request.languages.push_back(b->name());
   if (o.precision == "double") request.precisions = {Precision::Double};
   if (o.precision == "float") request.precisions = {Precision::Float};
   if (o.precision == "both") request.precisions = {Precision::Double, Precision::Float};
@@ -76,12 +92,17 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
     request.params[key] = value;
   }
   if (o.thickness_given) request.thickness = o.thickness;
+  request.density_functions = o.density_functions;
+  if (o.density_given) request.density = parse_density_value("--density", o.density);
+  if (o.density_field_given) request.density_field = o.density_field;
   request.command = banner_command(args);
   if (!o.quiet) request.notice = [](const std::string& message) { fmt::print(stderr, "offsetgen: {}\n", message); };
   if (o.output_given && o.output.empty()) throw InputError("-o: the file name is empty (use -o - for stdout)");
-  if (o.out_dir_given && o.out_dir.empty()) throw InputError("--out-dir: the directory name is empty (use --out-dir .)");
+  if (o.out_dir_given && o.out_dir.empty())
+    throw InputError("--out-dir: the directory name is empty (use --out-dir .)");
   if (o.output_given && o.out_dir_given) throw InputError("give either -o or --out-dir, not both");
-  if (o.output == "-" && o.lang == "all") throw InputError("-o - (stdout) takes one language, not --lang all");
+  if (o.output == "-" && languages.size() > 1)
+    throw InputError(fmt::format("-o - (stdout) takes one language, not --lang {}", o.lang));
   if (o.out_dir_given && !fs::is_directory(o.out_dir))
     throw InputError(fmt::format("--out-dir: '{}' is not a directory", o.out_dir));
 
@@ -89,35 +110,37 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   std::string prefix = o.name;
   if (prefix.empty()) prefix = default_prefix(request);
   const std::string dir = o.out_dir.empty() ? "" : o.out_dir;
-  std::string c_path, glsl_path;
-  if (request.c) c_path = !o.output.empty() ? o.output : (fs::path(dir) / (prefix + ".h")).string();
-  if (request.glsl) {
-    glsl_path = !o.output.empty() ? (request.c ? replace_extension(o.output, ".glsl") : o.output)
-                                  : (fs::path(dir) / (prefix + ".glsl")).string();
+  // -o names the first language's file; the others go beside it, with their own extensions.
+  std::vector<std::string> paths;
+  for (const Backend* b : languages) {
+    const std::string own = prefix + "." + b->extension();
+    paths.push_back(o.output.empty() ? (fs::path(dir) / own).string()
+                    : paths.empty()  ? o.output
+                                     : replace_extension(o.output, "." + b->extension()));
+    request.file_names[b->name()] = fs::path(paths.back()).filename().string();
   }
-  request.c_file_name = fs::path(c_path).filename().string();
-  request.glsl_file_name = fs::path(glsl_path).filename().string();
   // Fail on an unwritable destination, or two outputs on one file, before any work and before any
   // file is touched.
   std::vector<std::string> destinations;
-  for (const auto* path : {&c_path, &glsl_path})
-    if (!path->empty() && *path != "-") destinations.push_back(*path);
+  for (const auto& path : paths)
+    if (path != "-") destinations.push_back(path);
   try {
     for (const auto& path : destinations) require_writable(path);
     require_distinct(destinations);
   } catch (const std::runtime_error& e) {
-    if (request.c && request.glsl && destinations.size() == 2 && glsl_path == c_path)
-      throw InputError(fmt::format("-o {0} with --lang all would write the C header and the GLSL snippet both to "
-                                   "'{0}' (the snippet goes beside the header, with the extension .glsl); name the "
-                                   "header, e.g. -o {1}",
-                                   o.output, replace_extension(o.output, ".h")));
+    for (size_t i = 1; i < paths.size(); ++i)
+      if (paths[i] == paths[0])
+        throw InputError(fmt::format(
+            "-o {0} with --lang {1} would write the {2} file and the {3} file both to '{0}' (the others go beside "
+            "the first, each with its own extension); name the {2} file, e.g. -o {4}",
+            o.output, o.lang, languages[0]->title(), languages[i]->title(),
+            replace_extension(o.output, "." + languages[0]->extension())));
     throw InputError(e.what());
   }
 
   Generation g = generate(request);
   std::vector<std::pair<std::string, std::string>> files;
-  if (request.c) files.emplace_back(c_path, g.c_header);
-  if (request.glsl) files.emplace_back(glsl_path, g.glsl_snippet);
+  for (size_t i = 0; i < languages.size(); ++i) files.emplace_back(paths[i], g.file(languages[i]->name()));
   std::vector<std::string> report;
   for (const auto& [path, text] : files) {
     if (path == "-") {
@@ -130,7 +153,7 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   if (!o.quiet && o.output != "-") {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::string ops;
-    for (const auto& f : emitted_functions(g.programs, g.surface.dims, g.method()))
+    for (const auto& f : emitted_functions(g))
       ops += fmt::format("{}{} {}", ops.empty() ? "" : ", ", f.suffix, count_ops(*f.program));
     const MethodFacts& method = g.method();
     const std::string rounded =

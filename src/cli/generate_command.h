@@ -11,14 +11,18 @@
 namespace offsetgen {
 
 struct GenerateOptions {
-  std::string surface, expression, name, lang = "c", precision = "double", output, out_dir;
+  std::string surface, expression, name, lang = "c" /* a comma list of backend names, or all */, precision = "double",
+                                         output, out_dir;
   std::vector<std::string> params;
   std::string thickness;
+  std::string density, density_field;  // --density R, --density-field EXPR (text: parsed in run_generate)
+  bool density_functions = false;
   int order = 4;
   std::string method = kDefaultMethod;
   bool quiet = false;
   // Whether the option was on the command line at all: an empty value is refused, not ignored.
   bool output_given = false, out_dir_given = false, thickness_given = false;
+  bool density_given = false, density_field_given = false;
 };
 
 void add_generate_command(CLI::App& app, GenerateOptions& options);

@@ -1,5 +1,6 @@
 // offsetgen: closed-form offset functions of implicit surfaces.
 #include "cli/command_line.h"
+#include "cli/density_command.h"
 #include "cli/generate_command.h"
 #include "cli/list_command.h"
 #ifdef OFFSETGEN_HAVE_CHECK
@@ -39,6 +40,8 @@ int main(int argc, char** argv) {
   add_generate_command(app, generate);
   bool list_json = false;
   add_list_command(app, list_json);
+  DensityOptions density;
+  add_density_command(app, density);
 #ifdef OFFSETGEN_HAVE_CHECK
   CheckOptions check;
   add_check_command(app, check);
@@ -63,6 +66,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("generate")) return run_generate(generate, args);
     if (app.got_subcommand("list")) return run_list(list_json);
+    if (app.got_subcommand("density")) return run_density(density);
 #ifdef OFFSETGEN_HAVE_CHECK
     if (app.got_subcommand("check")) return run_check(check);
 #endif

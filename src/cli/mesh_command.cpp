@@ -90,6 +90,12 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->add_option("-m,--order", o.order, "Approximation order")->capture_default_str();
   cmd->add_option("-t,--thickness", o.thickness,
                   "Total wall thickness in cell units: a number, or an expression of x, y, z (x runs over [0, NX])");
+  cmd->add_option("--density", o.density,
+                  "Instead of --thickness: the relative density R of the wall (its volume fraction; periodic "
+                  "surfaces; docs/density.md)");
+  cmd->add_option("--density-field", o.density_field,
+                  "Instead of --thickness: a graded relative density rho(x, y, z), t(p) = "
+                  "thickness_for_density(rho(p))");
   cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
   cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
   cmd->add_option("-r,--resolution", o.resolution,
@@ -105,7 +111,8 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
   cmd->footer(
       "Exit status: 0 success, 2 usage or input error (no file is written then), 3 internal error.\n"
-      "Example: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl");
+      "Examples: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl\n"
+      "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl");
 }
 
 int run_mesh_command(const MeshOptions& o) {
@@ -121,6 +128,8 @@ int run_mesh_command(const MeshOptions& o) {
     s.wall.generation.params[key] = value;
   }
   s.wall.thickness = o.thickness;
+  s.wall.generation.density = o.density;
+  s.wall.generation.density_field = o.density_field;
   s.cells = parse_cells(o.cells);
   s.cell_size = o.cell_size;
   s.resolution = o.resolution;
@@ -129,8 +138,13 @@ int run_mesh_command(const MeshOptions& o) {
   s.output = o.output;
   s.threads = o.threads;
   // Cheap checks first: a missing wall or surface fails before anything is generated.
-  if (o.thickness.empty())
-    throw InputError("no wall given: use --thickness T (cell units; a number or an expression of x, y, z)");
+  const int walls = int(!o.thickness.empty()) + int(o.density.has_value()) + int(o.density_field.has_value());
+  if (walls == 0)
+    throw InputError(
+        "no wall given: use --thickness T (cell units; a number or an expression of x, y, z), --density R or "
+        "--density-field E");
+  if (walls > 1)
+    throw InputError("give one of --thickness, --density and --density-field: each one sets the wall's thickness");
   ProgressBar bar;
   mesh::MeshSummary summary = mesh::run_mesh(s, [&](const std::string& stage, double f) { bar.update(stage, f); });
   bar.clear();

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,8 @@ namespace offsetgen {
 
 struct MeshOptions {
   std::string surface, expression, name, thickness, cells = "1", output;
+  std::optional<double> density;       // --density R: the sheet of relative density R
+  std::optional<std::string> density_field;  // --density-field E: graded, rho(x, y, z)
   std::vector<std::string> params;
   std::string method = kDefaultMethod;
   int order = 4;

@@ -26,7 +26,7 @@ std::string join(const std::vector<std::string>& parts, const char* separator) {
 
 bool batched(const EmittedFunction& f) { return !f.vector_result && (f.suffix == "offset" || f.suffix == "shell"); }
 
-// The bits of a range limit, for the helpers' integer comparison (templates/c_batch.in).
+// The bits of a range limit, for the helpers' integer comparison (templates/c/c_batch.in).
 std::string double_bits(const char* value) {
   const double d = std::stod(value);
   std::uint64_t b = 0;
@@ -84,13 +84,13 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
   for (const auto& f : functions) any = any || batched(f);
   if (!any) return "";
 
-  const auto sections = load_template_sections("c_batch.in", {"file", "support_double", "support_float", "function"});
+  const auto sections = load_template_sections("c/c_batch.in", {"file", "support_double", "support_float", "function"});
   std::vector<std::string> coordinates = {"x", "y"};
   if (facts.dims == 3) coordinates.push_back("z");
 
   std::string list, support, rendered;
   for (Precision precision : precisions) {
-    const Dialect d{Language::C, precision};
+    const Dialect d("c", precision);
     const std::string real = d.real_type();
     support += fmt::format(fmt::runtime(sections.at(precision == Precision::Double ? "support_double" : "support_float")),
                            fmt::arg("range_double", kTrigRangeDouble), fmt::arg("range_float", kTrigRangeFloat),

@@ -1,5 +1,5 @@
 // The batch (array) API of the C header: <prefix>_offset_n and <prefix>_shell_n (and their float
-// twins), loops written to vectorise. The text skeleton is templates/c_batch.in.
+// twins), loops written to vectorise. The text skeleton is templates/c/c_batch.in.
 #pragma once
 
 #include "emit/dialect.h"
@@ -17,7 +17,7 @@ std::string emit_c_batch(const FileFacts& facts, const std::vector<EmittedFuncti
                          const std::vector<Precision>& precisions);
 
 // Argument ranges (radians) where the inline sin/cos helpers' Cody-Waite reduction is exact
-// (templates/c_batch.in, templates/c_scalar_trig.in).
+// (templates/c/c_batch.in, templates/c/c_scalar_trig.in).
 inline constexpr const char* kTrigRangeDouble = "1.0e8";
 inline constexpr const char* kTrigRangeFloat = "8192.0";
 

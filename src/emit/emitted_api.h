@@ -2,10 +2,12 @@
 // and programs, plus the facts every file's header comment states.
 #pragma once
 
+#include "density/density_model.h"
 #include "lowering/surface_programs.h"
 #include "offset/method.h"
 #include "surfaces/surface.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,9 +20,12 @@ struct EmittedFunction {
   bool vector_result = false;   // the normal
   std::string doc;              // one line, no prefix
   std::string signature_doc;    // e.g. "(x, y, z, h)"
+  bool takes_point = true;      // false: a function of extra_parameter alone (the density relations)
 };
 
-std::vector<EmittedFunction> emitted_functions(const SurfacePrograms& programs, int dims, const MethodFacts& method);
+// `density`: the density relations (density/density_model.h), when the file has them.
+std::vector<EmittedFunction> emitted_functions(const SurfacePrograms& programs, int dims, const MethodFacts& method,
+                                               const density::DensityPrograms* density = nullptr);
 
 struct FileFacts {
   std::string file_name;
@@ -30,7 +35,16 @@ struct FileFacts {
   const Surface* surface = nullptr;
   const MethodFacts* method = nullptr;
   std::string metadata_json;  // one line
+  // Density (density/): the model when the file has the density functions, the --density of
+  // _wall and its thickness, the --density-field of _graded.
+  const density::DensityModel* density = nullptr;
+  std::optional<double> wall_density, wall_thickness;
+  std::optional<std::string> density_field;
 };
+
+// The paragraph on density a file's header comment states (no comment markers, one sentence per
+// line); "" without density functions. `nan_note` (Backend::nan_note) ends the out-of-range sentence.
+std::string density_paragraph(const FileFacts& facts, const std::string& nan_note);
 
 std::string guard_name(const std::string& prefix, const std::string& extension);
 

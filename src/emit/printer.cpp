@@ -112,7 +112,7 @@ class BodyPrinter {
       case Op::Greater:
         return text(n.a, kSum) + " > " + text(n.b, kSum);
       case Op::Select:
-        return "(" + text(n.a, kCompare) + ") ? " + text(n.b, kCompare) + " : " + text(n.c, kCompare);
+        return dialect_.backend->select(text(n.a, kCompare), text(n.b, kCompare), text(n.c, kCompare));
     }
     throw std::logic_error("print: unknown op");
   }

@@ -31,7 +31,7 @@ std::vector<fs::path> candidate_directories() {
 std::string template_directory() {
   for (const auto& dir : candidate_directories()) {
     std::error_code ec;
-    if (fs::is_regular_file(dir / "c_header.h.in", ec)) return dir.string();
+    if (fs::is_regular_file(dir / "c/c_header.h.in", ec)) return dir.string();
   }
   std::string tried;
   for (const auto& dir : candidate_directories()) tried += "\n  " + dir.string();

@@ -1,4 +1,4 @@
-// Finds and reads the skeletons of emitted files (templates/*.in), which are rendered with fmt.
+// Finds and reads the skeletons of emitted files (templates/<lang>/*.in), which are rendered with fmt.
 #pragma once
 
 #include <map>

@@ -80,6 +80,11 @@ SurfacePrograms lower_surface(const Surface& surface, const OffsetConstruction& 
     FunctionLowering f(*out.graded, surface, construction);
     out.graded->add_output("Phi", f.graded_shell(*options.thickness));
   }
+  if (options.wall_thickness) {
+    out.wall = Program(inputs(dims));
+    FunctionLowering f(*out.wall, surface, construction);
+    out.wall->add_output("Phi", f.shell(out.wall->constant(*options.wall_thickness)));
+  }
   return out;
 }
 

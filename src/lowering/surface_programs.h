@@ -19,10 +19,12 @@ struct SurfacePrograms {
   Program shell;                  // phi(x, t/2) * phi(x, -t/2) inputs x, y[, z], t
   Program normal;                 // unit normal of the offset  inputs x, y[, z], h; outputs n0, n1[, n2]
   std::optional<Program> graded;  // the shell of the wall t = thickness(.)   inputs x, y[, z]
+  std::optional<Program> wall;    // the shell at a fixed thickness           inputs x, y[, z]
 };
 
 struct LoweringOptions {
-  std::optional<GiNaC::ex> thickness;  // t(x, y, z) in cell units, for `graded`
+  std::optional<GiNaC::ex> thickness;    // t(x, y, z) in cell units, for `graded`
+  std::optional<double> wall_thickness;  // total thickness in cell units, for `wall` (--density)
 };
 
 // Cell units outside, natural units (X = k x, h k) inside the construction.

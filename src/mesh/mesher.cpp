@@ -41,8 +41,16 @@ void validate(const MeshSettings& s) {
   if (s.output.empty()) throw InputError("no output file: use -o part.stl (or .ply)");
 }
 
+// What sets the wall: "t=0.1", "rho=0.2" or "rho=<expression>".
+std::string wall_text(const MeshSettings& s) {
+  const GenerationRequest& g = s.wall.generation;
+  if (g.density) return fmt::format("rho={}", *g.density);
+  if (g.density_field) return "rho=" + *g.density_field;
+  return "t=" + s.wall.thickness;
+}
+
 std::string description(const MeshSettings& s, const MeshSummary& m, const std::string& surface) {
-  return fmt::format("offsetgen mesh {} t={} {}x{}x{} cells of {} mm, {} voxels/cell", surface, s.wall.thickness,
+  return fmt::format("offsetgen mesh {} {} {}x{}x{} cells of {} mm, {} voxels/cell", surface, wall_text(s),
                      m.cells[0], m.cells[1], m.cells[2], m.cell_size, m.resolution);
 }
 

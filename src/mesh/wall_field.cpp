@@ -72,20 +72,30 @@ struct Scratch {
 WallField::WallField(const WallRequest& request) {
   auto start = std::chrono::steady_clock::now();
   GenerationRequest g = request.generation;
-  g.c = true;
-  g.glsl = false;
+  g.languages = {"c"};
   g.precisions = {Precision::Double};
   if (g.name.empty() && !g.expression.empty()) g.name = "user_surface";
-  if (request.thickness.empty())
-    throw InputError("no wall given: use --thickness T (cell units; a number or an expression of x, y, z)");
+  const bool by_density = g.density || g.density_field;  // the wall from a relative density (density/)
+  if (request.thickness.empty() && !by_density)
+    throw InputError(
+        "no wall given: use --thickness T (cell units; a number or an expression of x, y, z), --density R or "
+        "--density-field E");
+  if (!request.thickness.empty() && by_density)
+    throw InputError("give one of --thickness, --density and --density-field: each one sets the wall's thickness");
   const std::optional<double> number = plain_number(request.thickness);
-  if (!number) g.thickness = request.thickness;  // lets --param values reach the thickness expression
+  if (!request.thickness.empty() && !number)
+    g.thickness = request.thickness;  // lets --param values reach the thickness expression
   generation_ = generate(g);
   const Surface& surface = generation_.surface;
   if (surface.dims != 3)
     throw InputError(fmt::format("'{}' is a 2D surface (x, y); mesh needs a surface of x, y and z", surface.name));
 
-  if (number) {
+  if (g.density) {
+    uniform_thickness_ = *generation_.wall_thickness;  // t of the sheet of relative density R
+  } else if (g.density_field) {
+    graded_ = true;  // t(p) = thickness_for_density(rho(p))
+    thickness_program_ = lower_thickness(surface, *generation_.construction, *generation_.graded_thickness);
+  } else if (number) {
     uniform_thickness_ = *number;
   } else {
     GiNaC::ex t = parse_thickness_expression(request.thickness, g.params, 3);
@@ -119,7 +129,7 @@ void WallField::compile() {
   compile_flags_ = large ? "-O0" : "-O3 -march=native -fno-math-errno";
   Scratch scratch;
   const std::string header = generation_.prefix + ".h";
-  std::ofstream(scratch.path / header) << generation_.c_header;
+  std::ofstream(scratch.path / header) << generation_.c_header();
   std::ofstream(scratch.path / "wrapper.c") << wrapper_source(header, generation_.prefix);
   const fs::path library = scratch.path / "wrapper.so";
   std::vector<std::string> command = tools.c;

@@ -16,8 +16,9 @@
 namespace offsetgen::mesh {
 
 struct WallRequest {
-  GenerationRequest generation;  // surface or expression, params, method, order
+  GenerationRequest generation;  // surface or expression, params, method, order; or density, density_field
   std::string thickness;         // total wall thickness: a number or an expression of x, y, z (cell units)
+                                 // (empty when generation.density or .density_field sets it)
 };
 
 class WallField {

@@ -1,8 +1,9 @@
 #include "pipeline/generate.h"
 
-#include "emit/c_emitter.h"
+#include "density/surface_constants.h"
 #include "emit/emitted_api.h"
-#include "emit/glsl_emitter.h"
+#include "emit/render.h"
+#include "lowering/lower.h"
 #include "lowering/program.h"
 #include "surfaces/catalog.h"
 #include "surfaces/expression_input.h"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 namespace offsetgen {
 namespace {
@@ -23,12 +25,12 @@ void require_identifier(const std::string& name) {
   if (!ok) throw InputError(fmt::format("--name '{}' is not a C identifier (letters, digits, _)", name));
 }
 
-// `language` ("c" or "glsl") tells `offsetgen check` what kind of file it reads.
-nlohmann::ordered_json metadata(const GenerationRequest& request, const Generation& g, const char* language) {
+// `language` (a backend's name) tells `offsetgen check` what kind of file it reads.
+nlohmann::ordered_json metadata(const GenerationRequest& request, const Generation& g, const Backend& language) {
   const MethodFacts& method = g.method();
   nlohmann::ordered_json j;
   j["format"] = 1;
-  j["language"] = language;
+  j["language"] = language.name();
   j["generator"] = std::string("offsetgen ") + OFFSETGEN_VERSION;
   j["prefix"] = g.prefix;
   j["surface"] = request.surface.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(request.surface);
@@ -43,35 +45,133 @@ nlohmann::ordered_json metadata(const GenerationRequest& request, const Generati
   j["graded_wall_order"] = method.graded_wall_order;
   for (const auto& [key, value] : method.metadata.items()) j[key] = value;
   j["thickness"] = request.thickness ? nlohmann::ordered_json(*request.thickness) : nlohmann::ordered_json();
+  if (g.density) {  // only in files with density functions, so other files keep their bytes
+    const density::SurfaceConstants& k = g.density->constants();
+    nlohmann::ordered_json d;
+    d["area"] = k.area;
+    d["chi"] = k.euler_characteristic;
+    d["gauss_integral"] = k.gauss_integral;
+    d["volume_inside"] = k.volume_inside;
+    d["mean_integral"] = k.mean_integral;
+    d["max_curvature"] = k.max_curvature;
+    d["thickness_limit"] = g.density->thickness_limit();
+    d["density_limit"] = g.density->sheet_density_limit();
+    d["offset_limit"] = g.density->offset_limit();
+    d["network_density_range"] = {g.density->network_density_min(), g.density->network_density_max()};
+    j["density"] = d;
+    j["wall_density"] = request.density ? nlohmann::ordered_json(*request.density) : nlohmann::ordered_json();
+    j["wall_thickness"] = g.wall_thickness ? nlohmann::ordered_json(*g.wall_thickness) : nlohmann::ordered_json();
+    j["density_field"] =
+        request.density_field ? nlohmann::ordered_json(*request.density_field) : nlohmann::ordered_json();
+  }
   std::vector<std::string> precisions;
-  for (auto p : request.precisions) precisions.push_back(p == Precision::Double ? "double" : "float");
-  if (std::string(language) == "glsl") precisions = {"float"};
+  for (auto p : language.precisions(request.precisions))
+    precisions.push_back(p == Precision::Double ? "double" : "float");
   j["precisions"] = precisions;
   j["gradient_bound"] = g.construction->bounds().gradient;
   j["hessian_bound"] = g.construction->bounds().hessian;
   nlohmann::ordered_json ops;
-  for (const auto& f : emitted_functions(g.programs, g.surface.dims, method)) ops[f.suffix] = count_ops(*f.program);
+  for (const auto& f : emitted_functions(g)) ops[f.suffix] = count_ops(*f.program);
   j["ops"] = ops;
   return j;
 }
 
+// Parses --density-field as an expression of the cell coordinates.
+GiNaC::ex parse_density_field(const GenerationRequest& request, int dims) {
+  try {
+    return parse_thickness_expression(*request.density_field, request.params, dims);
+  } catch (const InputError& e) {
+    std::string message = e.what();
+    for (auto at = message.find("thickness expression"); at != std::string::npos;
+         at = message.find("thickness expression"))
+      message.replace(at, 20, "density field");
+    throw InputError(fmt::format("--density-field '{}': {}", *request.density_field, message));
+  }
+}
+
+// rho(p) must lie in (0, rho_max] over the unit cell: sampled on a grid holding every multiple of 1/16.
+void check_density_field(const GiNaC::ex& rho, const std::string& text, const density::DensityModel& model) {
+  const Symbols& sym = Symbols::get();
+  Program program({"x", "y", "z"});
+  AtomTable no_atoms;
+  Lowerer lowerer(program, no_atoms);
+  Environment env;
+  env.id = env.shared_id = 1;
+  for (int i = 0; i < 3; ++i) env.bindings.emplace_back(sym.cell(i), program.input(i));
+  program.add_output("rho", lowerer.lower(rho, env));
+  Evaluator evaluate(program);
+  constexpr int n = 16;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) {
+        const std::vector<double> p = {double(i) / n, double(j) / n, double(k) / n};
+        const double value = evaluate(p)[0];
+        if (!(value > 0) || !(value <= model.sheet_density_limit()))
+          throw InputError(fmt::format(
+              "--density-field '{}' is {:.6g} at (x, y, z) = ({}, {}, {}): a relative density must lie in (0, "
+              "rho_max = {:.6f}] over the cell (rho_max: the sheet thickness reaches the smallest radius of "
+              "curvature)",
+              text, value + 0.0, p[0], p[1], p[2], model.sheet_density_limit()));  // + 0.0: no "-0"
+      }
+}
+
+std::vector<const Backend*> requested_backends(const GenerationRequest& request) {
+  std::vector<const Backend*> chosen;
+  for (const auto& language : request.languages) chosen.push_back(&backend(language));
+  return chosen;
+}
+
+// Whether any requested file holds float functions (its constants must be printable as floats).
+bool emits_float(const GenerationRequest& request) {
+  for (const Backend* b : requested_backends(request))
+    for (Precision p : b->precisions(request.precisions))
+      if (p == Precision::Float) return true;
+  return false;
+}
+
 }  // namespace
+
+bool wants_density(const GenerationRequest& request) {
+  return request.density_functions || request.density || request.density_field;
+}
+
+density::DensityModel resolve_density(const GenerationRequest& request, const Surface& surface) {
+  if (auto why = density::density_unavailable(surface))
+    throw InputError(fmt::format("no density output for {}: {}", surface.name, *why));
+  density::DensityModel model(density::surface_constants(surface));
+  if (request.density) {
+    const double rho = *request.density;
+    if (!std::isfinite(rho) || !(rho > 0))
+      throw InputError(fmt::format("--density {}: a relative density must be a number > 0", rho));
+    if (rho > model.sheet_density_limit())
+      throw InputError(fmt::format(
+          "--density {} is above rho_max = {:.6f} of {}: its sheet would be thicker than t_max = {:.6f}, where t/2 "
+          "reaches the smallest radius of curvature and the thickness no longer determines the density",
+          rho, model.sheet_density_limit(), surface.name, model.thickness_limit()));
+  }
+  return model;
+}
+
+std::vector<EmittedFunction> emitted_functions(const Generation& g) {
+  return emitted_functions(g.programs, g.surface.dims, g.method(), g.density_programs ? &*g.density_programs : nullptr);
+}
 
 Surface resolve_surface(const GenerationRequest& request) {
   if (!request.surface.empty() && !request.expression.empty())
     throw InputError("give either --surface or --expr, not both");
   if (request.surface.empty() && request.expression.empty())
     throw InputError("no surface given: use --surface NAME (see `offsetgen list`) or --expr EXPRESSION");
+  const bool side_expression = request.thickness || request.density_field;  // may use --param too
   if (!request.surface.empty()) {
-    if (!request.params.empty() && !request.thickness)
-      throw InputError("--param only applies to --expr and --thickness expressions");
+    if (!request.params.empty() && !side_expression)
+      throw InputError("--param only applies to --expr, --thickness and --density-field expressions");
     return catalog_surface(request.surface);
   }
   if (request.name.empty()) throw InputError("--expr needs --name NAME, the stem of the emitted function names");
   require_identifier(request.name);
   std::map<std::string, std::string> surface_params;
   for (const auto& [k, v] : request.params)
-    if (request.expression.find(k) != std::string::npos || !request.thickness) surface_params[k] = v;
+    if (request.expression.find(k) != std::string::npos || !side_expression) surface_params[k] = v;
   return parse_user_expression(request.expression, surface_params, request.name);
 }
 
@@ -96,6 +196,9 @@ Generation build_generation(const GenerationRequest& request) {
   g.prefix = request.name.empty() ? fmt::format("{}_o{}", g.surface.name, method.effective_order(request.order))
                                   : request.name;
 
+  if (int(request.thickness.has_value()) + int(request.density.has_value()) + int(request.density_field.has_value()) >
+      1)
+    throw InputError("give one of --thickness, --density and --density-field: each one sets the wall's thickness");
   LoweringOptions options;
   if (request.thickness)
     options.thickness = parse_thickness_expression(*request.thickness, request.params, g.surface.dims);
@@ -103,18 +206,28 @@ Generation build_generation(const GenerationRequest& request) {
                               g.prefix,
                               method.effective_order(request.order),
                               method.cost_grows_geometrically(),
-                              request.c,
-                              request.glsl,
-                              std::count(request.precisions.begin(), request.precisions.end(), Precision::Float) > 0,
+                              requested_backends(request),
+                              emits_float(request),
                               &options.thickness,
                               request.thickness.value_or(""),
                               request.notice};
   check_before_build(facts_to_check);
+  if (wants_density(request)) {  // after the cheap checks: the surface constants take seconds
+    g.density = resolve_density(request, g.surface);
+    g.density_programs = density::density_programs(*g.density);
+    if (request.density) options.wall_thickness = g.wall_thickness = g.density->sheet_thickness(*request.density);
+    if (request.density_field) {
+      const GiNaC::ex rho = parse_density_field(request, g.surface.dims);
+      check_density_field(rho, *request.density_field, *g.density);
+      options.thickness = density::thickness_for_density_expression(*g.density, rho);
+    }
+  }
+  g.graded_thickness = options.thickness;
 
   g.construction = method.build(g.surface, request.order);
   g.programs = lower_surface(g.surface, *g.construction, options);
   check_after_build(facts_to_check, *g.construction, g.programs);
-  g.metadata_json = metadata(request, g, "c").dump();
+  g.metadata_json = metadata(request, g, backend("c")).dump();
   return g;
 }
 
@@ -127,15 +240,17 @@ Generation generate(const GenerationRequest& request) {
   facts.surface = &g.surface;
   facts.method = &g.method();
   facts.metadata_json = g.metadata_json;
-  auto functions = emitted_functions(g.programs, g.surface.dims, g.method());
-  if (request.c) {
-    facts.file_name = request.c_file_name.empty() ? g.prefix + ".h" : request.c_file_name;
-    g.c_header = emit_c_header(facts, functions, request.precisions);
-  }
-  if (request.glsl) {
-    facts.file_name = request.glsl_file_name.empty() ? g.prefix + ".glsl" : request.glsl_file_name;
-    facts.metadata_json = metadata(request, g, "glsl").dump();
-    g.glsl_snippet = emit_glsl_snippet(facts, functions);
+  if (g.density) facts.density = &*g.density;
+  facts.wall_density = request.density;
+  facts.wall_thickness = g.wall_thickness;
+  facts.density_field = request.density_field;
+  auto functions = emitted_functions(g);
+  for (const Backend* b : requested_backends(request)) {
+    auto name = request.file_names.find(b->name());
+    facts.file_name =
+        name == request.file_names.end() || name->second.empty() ? g.prefix + "." + b->extension() : name->second;
+    facts.metadata_json = metadata(request, g, *b).dump();
+    g.files[b->name()] = render_file(*b, facts, functions, request.precisions);
   }
   return g;
 }

@@ -10,7 +10,7 @@ namespace offsetgen {
 
 void check_before_build(const RequestFacts& facts) {
   const Surface& surface = *facts.surface;
-  require_usable_prefix(facts.prefix, facts.c, facts.glsl);
+  require_usable_prefix(facts.prefix, facts.languages);
   require_within_size_limits(surface.field, surface.from_catalog ? "the catalog formula" : "the expression");
   require_defined_on_cell(surface);
   if (facts.thickness && *facts.thickness) {
@@ -24,7 +24,7 @@ void check_after_build(const RequestFacts& facts, const OffsetConstruction& cons
                        const SurfacePrograms& programs) {
   for (const auto& f : emitted_functions(programs, facts.surface->dims, construction.facts()))
     require_within_op_limit(f.suffix, count_ops(*f.program));
-  require_representable_constants(programs, construction, facts.surface->dims, facts.float_precision || facts.glsl);
+  require_representable_constants(programs, construction, facts.surface->dims, facts.float_precision);
 }
 
 }  // namespace offsetgen

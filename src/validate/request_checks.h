@@ -4,6 +4,7 @@
 // own file of this folder.
 #pragma once
 
+#include "emit/backend.h"
 #include "lowering/surface_programs.h"
 #include "offset/method.h"
 #include "surfaces/surface.h"
@@ -23,7 +24,8 @@ struct RequestFacts {
   // The method's cost grows geometrically with the order (Richardson: ~5x per order), so the cost of
   // a high order is extrapolated from orders 1-2 before the build.
   bool extrapolate_cost = true;
-  bool c = true, glsl = false, float_precision = false;
+  std::vector<const Backend*> languages;  // the requested targets
+  bool float_precision = false;           // some requested file holds float functions
   const std::optional<GiNaC::ex>* thickness = nullptr;  // parsed --thickness, if any
   std::string thickness_text;
   std::function<void(const std::string&)> notice;  // announces long runs; may be empty

@@ -19,8 +19,8 @@ std::string header(const std::string& surface, int order, std::vector<Precision>
   request.order = order;
   request.precisions = std::move(precisions);
   request.command = "test";
-  request.c_file_name = "test.h";
-  return generate(request).c_header;
+  request.file_names["c"] = "test.h";
+  return generate(request).c_header();
 }
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }

@@ -8,13 +8,12 @@ std::string write_header(const std::string& dir, const std::string& surface, int
   request.surface = surface;
   request.order = order;
   request.method = method;
-  request.c = !glsl;
-  request.glsl = glsl;
+  request.languages = {glsl ? "glsl" : "c"};
   if (!thickness.empty()) request.thickness = thickness;
   request.command = "check_tests";
   Generation g = generate(request);
   const std::string path = dir + "/" + g.prefix + (glsl ? ".glsl" : ".h");
-  write_text(path, glsl ? g.glsl_snippet : g.c_header);
+  write_text(path, glsl ? g.glsl_snippet() : g.c_header());
   return path;
 }
 

@@ -95,7 +95,7 @@ std::string write_both_precisions(const std::string& dir, const std::string& sur
   request.command = "check_tests";
   const Generation g = generate(request);
   const std::string path = dir + "/" + g.prefix + ".h";
-  testing::write_text(path, g.c_header);
+  testing::write_text(path, g.c_header());
   return path;
 }
 

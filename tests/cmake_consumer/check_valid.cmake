@@ -1,6 +1,6 @@
 # Configures and builds errors/ with CASE=valid through the package of offsetgen's build tree
 # (export()), and checks the files offsetgen_generate() promised: SURFACE and EXPR forms, every
-# LANG, PRECISION float, THICKNESS, PARAMS, relative and default OUTPUT_DIR.
+# LANG, PRECISION float, THICKNESS, DENSITY, DENSITY_FIELD, PARAMS, relative and default OUTPUT_DIR.
 #   cmake -DPACKAGE_DIR=<offsetgen build dir> -DWORK_DIR=<scratch> -P check_valid.cmake
 cmake_minimum_required(VERSION 3.25)
 foreach(variable PACKAGE_DIR WORK_DIR)
@@ -56,6 +56,14 @@ endforeach()
 if(EXISTS "${build}/proj/schwarzp_o3.h")
   message(FATAL_ERROR "METHOD projection ORDERS 3 wrote schwarzp_o3.h; projection builds order 4 for it")
 endif()
+file(READ "${build}/dense/schwarzp_o4.h" header)
+if(NOT header MATCHES "double schwarzp_o4_wall\\(" OR NOT header MATCHES "schwarzp_o4_thickness_for_density\\(")
+  message(FATAL_ERROR "schwarzp_o4.h: DENSITY 0.2 gave no _wall or no density functions")
+endif()
+file(READ "${build}/dense/gyroid_o2.glsl" snippet)
+if(NOT snippet MATCHES "float gyroid_o2_graded\\(" OR NOT snippet MATCHES "\"density_field\":\"0.3 - 0.2\\*x\"")
+  message(FATAL_ERROR "gyroid_o2.glsl: DENSITY_FIELD gave no _graded or does not record the field")
+endif()
 file(READ "${build}/outputs.txt" lists)
 string(FIND "${lists}" "${build}/wave_offsets/wave_o2.glsl" at)
 if(at LESS 0)
@@ -88,8 +96,9 @@ if(CMAKE_HOST_UNIX)
   endif()
   list(FILTER runs INCLUDE REGEX "^generate ")
   list(LENGTH runs count)
-  if(NOT count EQUAL 5)  # gyroid orders 1 and 2, wave order 2, schwarzp projection orders 4 and 8
-    message(FATAL_ERROR "OFFSETGEN_EXECUTABLE ran ${count} times, expected 5:\n${runs}")
+  # gyroid orders 1 and 2, wave order 2, schwarzp projection orders 4 and 8, the two density calls
+  if(NOT count EQUAL 7)
+    message(FATAL_ERROR "OFFSETGEN_EXECUTABLE ran ${count} times, expected 7:\n${runs}")
   endif()
   run("${CMAKE_COMMAND}" --build "${build}")
   if(output MATCHES "offsetgen: generating")

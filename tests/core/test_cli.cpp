@@ -150,6 +150,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"generate --surface gyroid --name a__b", "names containing __ are reserved"},
         BadInput{"generate --surface gyroid --name gl_foo --lang glsl", "names beginning with gl_ are reserved in GLSL"},
         BadInput{"generate --surface gyroid --name webgl_x --lang glsl", "reserved in WebGL"},
+        BadInput{"generate --surface gyroid --name SV_x --lang hlsl", "names beginning with SV_ are HLSL system-value"},
+        BadInput{"generate --surface gyroid --name x --lang c,hlsl -o -", "takes one language, not --lang c,hlsl"},
+        BadInput{"generate --surface gyroid --lang c,,glsl", "empty language name"},
+        // Only the requested targets' rules apply: a__b is refused by HLSL here, not by C.
+        BadInput{"generate --surface gyroid --name a__b --lang glsl,hlsl", "cannot be used in GLSL"},
+        BadInput{"generate --surface gyroid --lang c,wgsl2", "unknown language 'wgsl2'"},
         BadInput{"generate --surface gyroid --name offsetgen_check", "belong to the header's own helpers"},
         // A graded wall needs t > 0 everywhere, refused before any work.
         BadInput{"generate --surface gyroid --thickness ''", "cannot parse thickness expression: the expression is empty"},

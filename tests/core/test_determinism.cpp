@@ -10,11 +10,11 @@ TEST(Determinism, SameRequestGivesSameBytesInProcess) {
   GenerationRequest r;
   r.surface = "neovius";
   r.order = 4;
-  r.glsl = true;
+  r.languages = {"c", "glsl"};
   r.precisions = {Precision::Double, Precision::Float};
   Generation a = generate(r), b = generate(r);
-  EXPECT_EQ(a.c_header, b.c_header);
-  EXPECT_EQ(a.glsl_snippet, b.glsl_snippet);
+  EXPECT_EQ(a.c_header(), b.c_header());
+  EXPECT_EQ(a.glsl_snippet(), b.glsl_snippet());
 }
 
 // Separate processes get different address-space layouts, hence different GiNaC hash orders.

@@ -36,7 +36,7 @@ TEST(OpCount, IntegerPowersAreMultipliesAndSignsCancel) {
   NodeId x4 = p.integer_power(x, 4);  // x2 = x*x, x4 = x2*x2
   p.add_output("o", p.mul(p.neg(x4), p.neg(p.constant(1.5))));
   EXPECT_EQ(count_ops(p), 3);
-  PrintedBody body = print_program(p, Dialect{Language::C, Precision::Double}, {"x"});
+  PrintedBody body = print_program(p, Dialect("c", Precision::Double), {"x"});
   ASSERT_EQ(body.temporaries.size(), 1u);
   EXPECT_EQ(body.temporaries[0], "const double _t0 = x * x;");
   EXPECT_EQ(body.outputs[0].find("pow"), std::string::npos);
@@ -46,9 +46,9 @@ TEST(Printer, SpellsEachDialect) {
   Program p({"x"});
   NodeId x = p.input(0);
   p.add_output("o", p.sub(p.call(Fn::Sin, x), p.mul(p.constant(2.0), p.sqrt(x))));
-  auto c = print_program(p, Dialect{Language::C, Precision::Double}, {"x"});
-  auto f = print_program(p, Dialect{Language::C, Precision::Float}, {"x"});
-  auto g = print_program(p, Dialect{Language::Glsl, Precision::Float}, {"p.x"});
+  auto c = print_program(p, Dialect("c", Precision::Double), {"x"});
+  auto f = print_program(p, Dialect("c", Precision::Float), {"x"});
+  auto g = print_program(p, Dialect("glsl", Precision::Float), {"p.x"});
   EXPECT_EQ(c.temporaries.size(), 0u);
   EXPECT_NE(c.outputs[0].find("sin(x)"), std::string::npos) << c.outputs[0];
   EXPECT_NE(c.outputs[0].find("2.0"), std::string::npos) << c.outputs[0];
@@ -60,12 +60,12 @@ TEST(Printer, SpellsEachDialect) {
 }
 
 TEST(Printer, ConstantsAreLossless) {
-  Dialect c{Language::C, Precision::Double};
+  Dialect c("c", Precision::Double);
   EXPECT_EQ(c.literal(6.283185307179586), "6.2831853071795862");
   EXPECT_EQ(c.literal(2.0), "2.0");
   EXPECT_EQ(c.literal(1e-5), "1.0000000000000001e-05");
   EXPECT_EQ(std::stod(c.literal(0.1)), 0.1);
-  Dialect g{Language::Glsl, Precision::Float};
+  Dialect g("glsl", Precision::Float);
   EXPECT_EQ(g.literal(3.0), "3.0");
   EXPECT_EQ(g.literal(-3.0), "(-3.0)");
   EXPECT_EQ(g.literal(1e-30), "1.0e-30");

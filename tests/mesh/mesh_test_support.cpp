@@ -84,7 +84,7 @@ ExactWalls::ExactWalls(const std::string& surface, int order, double thickness) 
   Generation g = generate(request);
   const std::string dir = scratch_dir("exact-" + surface);
   const std::string path = dir + "/" + g.prefix + ".h";
-  std::ofstream(path) << g.c_header;
+  std::ofstream(path) << g.c_header();
   check::FileMetadata meta = check::read_metadata(path);
   check::CompileOptions options;
   options.optimization = "-O2";
