@@ -138,6 +138,7 @@ MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress) {
   m.triangles = mesh.triangles.size();
   m.volume = m.pieces.volume;
   m.box_volume = double(s.cells[0]) * s.cells[1] * s.cells[2] * std::pow(s.cell_size, 3);
+  m.requested_density = s.wall.generation.density;
   clock.done("pieces");
 
   progress("writing " + s.output, -1);
@@ -163,8 +164,9 @@ std::string format_summary(const MeshSummary& m) {
                    m.min_thickness,
                    m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string());
   s += fmt::format("  mesh:       {} triangles, {} vertices\n", m.triangles, m.points);
-  s += fmt::format("  volume:     {:.6g} mm^3, relative density {:.4f} (box {:.6g} mm^3)\n", m.volume,
-                   m.volume / m.box_volume, m.box_volume);
+  s += fmt::format("  volume:     {:.6g} mm^3, relative density {:.4f} (box {:.6g} mm^3{})\n", m.volume,
+                   m.volume / m.box_volume, m.box_volume,
+                   m.requested_density ? fmt::format("; --density {}", *m.requested_density) : std::string());
   s += fmt::format("  pieces:     {} kept, {} dropped below the volume threshold ({:.3g} mm^3){}\n", m.pieces.kept,
                    m.pieces.dropped, m.pieces.dropped_volume,
                    m.pieces.cavities ? fmt::format(", {} closed cavities", m.pieces.cavities) : std::string());

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,7 @@ struct MeshSummary {
   double samples_per_second = 0;  // wall samples (each two _offset values) per second of the sample stage
   size_t points = 0, triangles = 0, file_bytes = 0;
   double volume = 0, box_volume = 0;  // mm^3
+  std::optional<double> requested_density;  // --density R
   PieceReport pieces;
   std::string compile_flags;
   std::vector<StageTime> stages;
