@@ -156,6 +156,19 @@ TEST(WgslSnippet, PastedTwiceIsARedeclarationDawnReportsWithLineAndColumn) {
       << twice.output;
 }
 
+// The README's paste example, after the golden gyroid_o4.wgsl it names, is a valid module.
+TEST(WgslSnippet, TheReadmePasteExampleValidatesOnDawn) {
+  const std::string readme = ts::read_file(ts::source_dir() + "/README.md");
+  const size_t begin = readme.find("```wgsl\n");
+  ASSERT_NE(begin, std::string::npos) << "README.md has no ```wgsl example";
+  const size_t end = readme.find("```", begin + 8);
+  ASSERT_NE(end, std::string::npos);
+  const std::string example = ts::scratch_dir("wgsl-readme") + "/example.wgsl";
+  ts::write_file(example, readme.substr(begin + 8, end - begin - 8));
+  const ts::CommandResult r = run_wgsl({"validate", ts::source_dir() + "/generated/gyroid_o4.wgsl", example});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
 TEST(WgslNames, TheBackendRefusesWhatWgslReserves) {
   const Backend& wgsl = backend("wgsl");
   for (const char* word : {"fn", "let", "var", "override", "wgsl", "demote_to_helper", "_", "__x", "__"})
