@@ -16,6 +16,7 @@ namespace {
 
 // WGSL keywords and reserved words (W3C WGSL, "Keyword Summary" and "Reserved Words"), the union
 // over the drafts since 2023 (binding_array left the list, non_coherent and noncoherent joined it).
+// Dawn (npm webgpu 0.6.2) refuses every one of them as a function name except binding_array.
 const std::set<std::string>& wgsl_keywords() {
   static const std::set<std::string> words = {
       // keywords
@@ -44,7 +45,7 @@ const std::set<std::string>& wgsl_keywords() {
 // WGSL rejects a constant expression whose value is NaN ("value nan cannot be represented as
 // 'f32'"), so a NaN is read from a `let`, which is not a constant expression.
 constexpr const char* kNanBits = "_nan_bits";
-const std::string kNan = std::string("bitcast<f32>(") + kNanBits + ")";
+constexpr const char* kNan = "bitcast<f32>(_nan_bits)";
 
 class WgslBackend final : public Backend {
  public:
