@@ -28,10 +28,22 @@ constexpr double kTolerance = 2e-5;  // the README's limit, units of F
 
 // The build-time gyroid snippets of tests/glsl/CMakeLists.txt (target glsl_gyroid).
 const gt::GeneratedCase& gyroid_order4() {
-  static const gt::GeneratedCase c = {
-      "gyroid", 4, "richardson", "gyroid_o4", OFFSETGEN_GYROID_O4 ".h", OFFSETGEN_GYROID_O4 ".glsl",
-      &gyroid_o4_field, &gyroid_o4_offset, &gyroid_o4_shell, &gyroid_o4_normal, nullptr,
-      &gyroid_o4_fieldf, &gyroid_o4_offsetf, &gyroid_o4_shellf, &gyroid_o4_normalf, nullptr};
+  static const gt::GeneratedCase c = {"gyroid",
+                                      4,
+                                      "richardson",
+                                      "gyroid_o4",
+                                      OFFSETGEN_GYROID_O4 ".h",
+                                      OFFSETGEN_GYROID_O4 ".glsl",
+                                      &gyroid_o4_field,
+                                      &gyroid_o4_offset,
+                                      &gyroid_o4_shell,
+                                      &gyroid_o4_normal,
+                                      nullptr,
+                                      &gyroid_o4_fieldf,
+                                      &gyroid_o4_offsetf,
+                                      &gyroid_o4_shellf,
+                                      &gyroid_o4_normalf,
+                                      nullptr};
   return c;
 }
 
@@ -80,8 +92,7 @@ TEST(SlowWebGl2SwiftShader, GyroidOrder4WithinTheLimitUnderMediumpAndHighpHosts)
   const auto results = gt::run_webgl2(jobs, ref.points, offsetgen::test_support::scratch_dir("webgl2"));
   for (std::size_t h = 0; h < hosts.size(); ++h) {
     const gt::Accuracy a = accuracy(ref, results[2 * h], results[2 * h + 1]);
-    std::printf("[ measured ] gyroid o4 WebGL2/SwiftShader, %s host: %s\n", hosts[h].c_str(),
-                gt::describe(a).c_str());
+    std::printf("[ measured ] gyroid o4 WebGL2/SwiftShader, %s host: %s\n", hosts[h].c_str(), gt::describe(a).c_str());
     EXPECT_LT(a.offset, kTolerance) << hosts[h] << " host";
     EXPECT_LT(a.field, kTolerance) << hosts[h] << " host";
     EXPECT_LT(a.zero_set, kTolerance) << hosts[h] << " host";

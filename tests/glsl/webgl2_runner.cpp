@@ -56,7 +56,9 @@ std::string fragment_source(const WebGl2Job& job) {
          "void main() {\n"
          "  highp vec4 p = texelFetch(og_in, ivec2(gl_FragCoord.xy), 0);\n"
          "  highp vec4 r = vec4(0.0);\n"
-         "  r." + swizzles[job.components - 1] + " = (" + job.call_expr + ");\n"
+         "  r." +
+         swizzles[job.components - 1] + " = (" + job.call_expr +
+         ");\n"
          "  og_out = floatBitsToUint(r);\n"
          "}\n";
 }
@@ -129,8 +131,8 @@ std::string shell_quote(const std::string& s) {
 
 std::string chromium_executable() { return OFFSETGEN_CHROMIUM; }
 
-std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs,
-                                           const std::vector<glsl::Point>& inputs, const std::string& work_dir) {
+std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs, const std::vector<glsl::Point>& inputs,
+                                           const std::string& work_dir) {
   if (chromium_executable().empty())
     throw std::runtime_error("chromium not found at configure time (Debian: chromium; run tools/install_deps.sh)");
   const int height = static_cast<int>((inputs.size() + kWidth - 1) / kWidth);
@@ -154,8 +156,9 @@ std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs,
   const auto result = test_support::run_shell(
       shell_quote(chromium_executable()) +
       " --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader --no-first-run"
-      " --user-data-dir=" + shell_quote(work_dir + "/profile") + " --dump-dom " + shell_quote("file://" + path) +
-      " 2>" + shell_quote(work_dir + "/chromium.log"));
+      " --user-data-dir=" +
+      shell_quote(work_dir + "/profile") + " --dump-dom " + shell_quote("file://" + path) + " 2>" +
+      shell_quote(work_dir + "/chromium.log"));
   const std::string& dump = result.output;
   if (auto at = dump.find("OGERROR "); at != std::string::npos)
     throw std::runtime_error("WebGL2 page: " + dump.substr(at, dump.find("</pre>", at) - at));
@@ -172,8 +175,8 @@ std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs,
     results.push_back(std::move(values));
   }
   if (results.size() != jobs.size() || dump.find("OGDONE") == std::string::npos)
-    throw std::runtime_error("Chromium gave no result (exit status " + std::to_string(result.exit_code) +
-                             "; see " + work_dir + "/chromium.log): " + dump.substr(0, 2000));
+    throw std::runtime_error("Chromium gave no result (exit status " + std::to_string(result.exit_code) + "; see " +
+                             work_dir + "/chromium.log): " + dump.substr(0, 2000));
   return results;
 }
 

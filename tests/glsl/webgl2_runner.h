@@ -22,9 +22,10 @@ struct WebGl2Job {
 // The chromium executable the tests run (configure-time find_program), or "" when none was found.
 std::string chromium_executable();
 
-// One page, one Chromium run (about 15 s, mostly Chromium's start), every job over every point: result[j] has inputs.size() *
-// jobs[j].components floats, point-major. Throws std::runtime_error with the page's message (shader
+// One page, one Chromium run (about 15 s, mostly Chromium's start), every job over every point: result[j] has
+// inputs.size() * jobs[j].components floats, point-major. Throws std::runtime_error with the page's message (shader
 // info log, no WebGL2) or Chromium's output when no result comes back. `work_dir` holds the page.
-std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs, const std::vector<glsl::Point>& inputs, const std::string& work_dir);
+std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs, const std::vector<glsl::Point>& inputs,
+                                           const std::string& work_dir);
 
 }  // namespace offsetgen::glsl_test

@@ -37,9 +37,12 @@ std::string compute_shader(const std::string& snippet, const std::string& P) {
          "{\n"
          "    float4 q = og_in[id.x];\n"
          "    float3 p = q.xyz;\n"
-         "    og_out[2 * id.x] = float4(" + P + "_field(p), " + P + "_offset(p, q.w), " + P +
+         "    og_out[2 * id.x] = float4(" +
+         P + "_field(p), " + P + "_offset(p, q.w), " + P +
          "_shell(p, 2.0 * abs(q.w)), 0.0);\n"
-         "    og_out[2 * id.x + 1] = float4(" + P + "_normal(p, q.w), 0.0);\n"
+         "    og_out[2 * id.x + 1] = float4(" +
+         P +
+         "_normal(p, q.w), 0.0);\n"
          "}\n";
 }
 
@@ -47,14 +50,15 @@ class HlslOnLavapipe : public ::testing::TestWithParam<ht::LavapipeCase> {};
 
 TEST_P(HlslOnLavapipe, WithinTheLimitOfTheDoubleHeader) {
   const ht::LavapipeCase& c = GetParam();
-  const gt::GeneratedCase as_glsl_case = {"", 0, "", c.prefix, "", c.snippet, c.field, c.offset, c.shell, c.normal,
-                                          nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+  const gt::GeneratedCase as_glsl_case = {"",      0,        "",      c.prefix, "",      c.snippet, c.field, c.offset,
+                                          c.shell, c.normal, nullptr, nullptr,  nullptr, nullptr,   nullptr, nullptr};
   const gt::DoubleReference ref = gt::make_reference(as_glsl_case, kPoints, kSeed);
 
   const std::string dir = ts::scratch_dir(std::string("lavapipe_") + c.prefix);
   const std::string shader = dir + "/compute.hlsl", module = dir + "/compute.spv";
   ts::write_file(shader, compute_shader(ts::read_file(c.snippet), c.prefix));
-  const auto compiled = ts::run_command({OFFSETGEN_GLSLANG, "-D", "-V", "-S", "comp", "-e", "main", "-o", module, shader});
+  const auto compiled =
+      ts::run_command({OFFSETGEN_GLSLANG, "-D", "-V", "-S", "comp", "-e", "main", "-o", module, shader});
   ASSERT_EQ(compiled.exit_code, 0) << "glslangValidator rejects " << shader << ":\n" << compiled.output;
 
   std::vector<ht::Float4> inputs(ref.points.begin(), ref.points.end());
@@ -100,10 +104,11 @@ TEST(HlslSnippetsOfTwoSurfaces, RunTogetherInOneShader) {
                              "    og_out[id.x] = float4(gyroid_o4_field(q.xyz), diamond_proj_o4_field(q.xyz), "
                              "gyroid_o4_offset(q.xyz, q.w), diamond_proj_o4_offset(q.xyz, q.w));\n"
                              "}\n");
-  const auto compiled = ts::run_command({OFFSETGEN_GLSLANG, "-D", "-V", "-S", "comp", "-e", "main", "-o", module, shader});
+  const auto compiled =
+      ts::run_command({OFFSETGEN_GLSLANG, "-D", "-V", "-S", "comp", "-e", "main", "-o", module, shader});
   ASSERT_EQ(compiled.exit_code, 0) << "glslangValidator rejects " << shader << ":\n" << compiled.output;
-  const gt::GeneratedCase as_glsl_case = {"", 0, "", "", "", "", g->field, g->offset, g->shell, g->normal,
-                                          nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+  const gt::GeneratedCase as_glsl_case = {"",       0,         "",      "",      "",      "",      g->field, g->offset,
+                                          g->shell, g->normal, nullptr, nullptr, nullptr, nullptr, nullptr,  nullptr};
   const auto points = gt::make_reference(as_glsl_case, 4096, kSeed).points;
   const std::vector<ht::Float4> inputs(points.begin(), points.end());
   const ht::ComputeRun run = ht::run_on_lavapipe(ht::read_spirv(module), inputs, 1);
@@ -120,6 +125,8 @@ TEST(HlslSnippetsOfTwoSurfaces, RunTogetherInOneShader) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, HlslOnLavapipe, ::testing::ValuesIn(ht::lavapipe_cases()),
-                         [](const ::testing::TestParamInfo<ht::LavapipeCase>& p) { return std::string(p.param.prefix); });
+                         [](const ::testing::TestParamInfo<ht::LavapipeCase>& p) {
+                           return std::string(p.param.prefix);
+                         });
 
 }  // namespace
