@@ -4,6 +4,7 @@
 // is a redeclaration error that the WGSL compiler names. Skeletons: templates/wgsl/.
 #include "emit/backend.h"
 #include "emit/emitted_api.h"
+#include "emit/shader_trig.h"
 #include "offset/method.h"
 
 #include <fmt/format.h>
@@ -81,6 +82,7 @@ class WgslBackend final : public Backend {
   std::vector<std::string> declared_identifiers(const std::string& prefix) const override {
     std::vector<std::string> names;
     for (const auto& suffix : function_suffixes()) names.push_back(prefix + "_" + suffix);
+    for (const auto& name : own_trig_names(prefix)) names.push_back(name);
     return names;
   }
 
@@ -91,14 +93,15 @@ class WgslBackend final : public Backend {
     return params;
   }
   // The file ends with the last function's closing brace (the function template ends in a blank line).
-  std::string precision_section(const std::string& functions, Precision) const override {
-    return functions.size() >= 2 && functions.compare(functions.size() - 2, 2, "\n\n") == 0
-               ? functions.substr(0, functions.size() - 1)
-               : functions;
+  // The snippet's own sin/cos (emit/shader_trig.h) ahead of the functions that call them.
+  std::string precision_section(const FileFacts& facts, const std::string& functions, Precision) const override {
+    const std::string all = with_own_trig(functions, facts.prefix, "wgsl/wgsl_trig.in");
+    return all.size() >= 2 && all.compare(all.size() - 2, 2, "\n\n") == 0 ? all.substr(0, all.size() - 1) : all;
   }
-  std::string finish_body(const std::string& body, Precision) const override {
-    if (body.find(kNan) == std::string::npos) return body;
-    return fmt::format("    let {} = 0x7fc00000u;\n", kNanBits) + body;
+  std::string finish_body(const FileFacts& facts, const std::string& body, Precision) const override {
+    const std::string own = call_own_trig(body, facts.prefix);
+    if (own.find(kNan) == std::string::npos) return own;
+    return fmt::format("    let {} = 0x7fc00000u;\n", kNanBits) + own;
   }
 
   std::string list_entry(const FileFacts& facts, const EmittedFunction& f, Precision p) const override {
