@@ -12,6 +12,7 @@ packages=(
   python3 python3-sympy python3-matplotlib python3-numpy time
   clang-format clang-tidy
   clang libclang-rt-14-dev
+  pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )
 
 missing=()
