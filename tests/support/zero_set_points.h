@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace offsetgen::test {
@@ -54,6 +55,12 @@ inline std::vector<ZeroSetPoint> near_zero_set_points(Field3 field, int count, d
   }
   return points;
 }
+
+// The float limit of the zero-set shift for the GPU targets (issue 15): 2e-5, except where the C
+// header's own float twins exceed it on the same points, which no float target can beat by more than
+// luck: neovius order 4 (richardson), 5.2e-5 in C float, 5.5e-5 on pocl, 5.2e-5 CUDA host. There
+// offsetgen check's float32 limit, 2e-4, applies.
+inline double float_shift_limit(const std::string& prefix) { return prefix == "neovius_o4" ? 2e-4 : 2e-5; }
 
 // The C header's double functions of one prefix: the reference.
 struct CFunctions {
