@@ -13,6 +13,7 @@ packages=(
   clang-format clang-tidy
   clang libclang-rt-14-dev
   chromium libvulkan-dev mesa-vulkan-drivers
+  pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )
 
 missing=()
