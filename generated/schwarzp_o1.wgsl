@@ -52,9 +52,32 @@ license: generated code, use freely
 */
 /* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_o1","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":1,"graded_order":1,"graded_wall_order":1,"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":24,"shell":27,"normal":69}} */
 
+// sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
+// 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
+// within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); f32 only, no globals.
+fn schwarzp_o1_sin(a: f32) -> f32 {
+    let q = floor(a * 0.636619772f + 0.5f);
+    let r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    let z = r * r;
+    let s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    let c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    let m = q - 4.0f * floor(0.25f * q);
+    return select(select(select(-c, -s, m < 2.5f), c, m < 1.5f), s, m < 0.5f);
+}
+
+fn schwarzp_o1_cos(a: f32) -> f32 {
+    let q = floor(a * 0.636619772f + 0.5f);
+    let r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    let z = r * r;
+    let s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    let c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    let m = q - 4.0f * floor(0.25f * q);
+    return select(select(select(s, -c, m < 2.5f), -s, m < 1.5f), c, m < 0.5f);
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 fn schwarzp_o1_field(p: vec3<f32>) -> f32 {
-    return cos(p.z * 6.28318548f) + cos(6.28318548f * p.y) + cos(6.28318548f * p.x);
+    return schwarzp_o1_cos(p.z * 6.28318548f) + schwarzp_o1_cos(6.28318548f * p.y) + schwarzp_o1_cos(6.28318548f * p.x);
 }
 
 // phi(p, h) of order 1: zero on the surface moved by h along +grad F. Total ops: 24.
@@ -62,11 +85,11 @@ fn schwarzp_o1_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t0 = p.z * 6.28318548f;
     let _t1 = 6.28318548f * p.y;
     let _t2 = 6.28318548f * p.x;
-    let _t3 = sin(_t2);
-    let _t4 = sin(_t0);
-    let _t5 = sin(_t1);
+    let _t3 = schwarzp_o1_sin(_t2);
+    let _t4 = schwarzp_o1_sin(_t0);
+    let _t5 = schwarzp_o1_sin(_t1);
     let _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return cos(_t0) + cos(_t1) + cos(_t2) - 6.28318548f * h * (select(1.73205256f, (select((-1.73205256f), _t6, (-1.73205256f) <= _t6)), _t6 <= 1.73205256f));
+    return schwarzp_o1_cos(_t0) + schwarzp_o1_cos(_t1) + schwarzp_o1_cos(_t2) - 6.28318548f * h * (select(1.73205256f, (select((-1.73205256f), _t6, (-1.73205256f) <= _t6)), _t6 <= 1.73205256f));
 }
 
 // phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 27.
@@ -74,10 +97,10 @@ fn schwarzp_o1_shell(p: vec3<f32>, t: f32) -> f32 {
     let _t0 = p.z * 6.28318548f;
     let _t1 = 6.28318548f * p.y;
     let _t2 = 6.28318548f * p.x;
-    let _t3 = cos(_t0) + cos(_t1) + cos(_t2);
-    let _t4 = sin(_t2);
-    let _t5 = sin(_t0);
-    let _t6 = sin(_t1);
+    let _t3 = schwarzp_o1_cos(_t0) + schwarzp_o1_cos(_t1) + schwarzp_o1_cos(_t2);
+    let _t4 = schwarzp_o1_sin(_t2);
+    let _t5 = schwarzp_o1_sin(_t0);
+    let _t6 = schwarzp_o1_sin(_t1);
     let _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
     let _t8 = 6.28318548f * (t * 0.5f) * (select(1.73205256f, (select((-1.73205256f), _t7, (-1.73205256f) <= _t7)), _t7 <= 1.73205256f));
     return (_t3 - _t8) * (_t3 + _t8);
@@ -86,11 +109,11 @@ fn schwarzp_o1_shell(p: vec3<f32>, t: f32) -> f32 {
 // unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 69.
 fn schwarzp_o1_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t0 = 6.28318548f * p.x;
-    let _t1 = sin(_t0);
+    let _t1 = schwarzp_o1_sin(_t0);
     let _t2 = p.z * 6.28318548f;
-    let _t3 = sin(_t2);
+    let _t3 = schwarzp_o1_sin(_t2);
     let _t4 = 6.28318548f * p.y;
-    let _t5 = sin(_t4);
+    let _t5 = schwarzp_o1_sin(_t4);
     let _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
     let _t7 = sqrt(_t6);
     let _t8 = _t7 <= 1.73205256f;
@@ -98,11 +121,11 @@ fn schwarzp_o1_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t10 = 6.28318548f * h;
     let _t11 = 1.0f / _t7;
     let _t12 = -_t5;
-    let _t13 = select(_t12, (select(_t12, -(_t5 + _t10 * (cos(_t4) * _t5 * _t11)), _t9)), _t8);
+    let _t13 = select(_t12, (select(_t12, -(_t5 + _t10 * (schwarzp_o1_cos(_t4) * _t5 * _t11)), _t9)), _t8);
     let _t14 = -_t1;
-    let _t15 = select(_t14, (select(_t14, -(_t10 * (_t1 * cos(_t0) * _t11) + _t1), _t9)), _t8);
+    let _t15 = select(_t14, (select(_t14, -(_t10 * (_t1 * schwarzp_o1_cos(_t0) * _t11) + _t1), _t9)), _t8);
     let _t16 = -_t3;
-    let _t17 = select(_t16, (select(_t16, -(_t10 * (cos(_t2) * _t3 * _t11) + _t3), _t9)), _t8);
+    let _t17 = select(_t16, (select(_t16, -(_t10 * (schwarzp_o1_cos(_t2) * _t3 * _t11) + _t3), _t9)), _t8);
     let _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
     let _t19 = _t18 > 0.0f;
     let _t20 = _t18 <= 1.00000002e+30f;

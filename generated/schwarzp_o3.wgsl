@@ -52,24 +52,47 @@ license: generated code, use freely
 */
 /* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_o3","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"richardson","order":3,"graded_order":2,"graded_wall_order":1,"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":131,"shell":195,"normal":401}} */
 
+// sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
+// 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
+// within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); f32 only, no globals.
+fn schwarzp_o3_sin(a: f32) -> f32 {
+    let q = floor(a * 0.636619772f + 0.5f);
+    let r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    let z = r * r;
+    let s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    let c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    let m = q - 4.0f * floor(0.25f * q);
+    return select(select(select(-c, -s, m < 2.5f), c, m < 1.5f), s, m < 0.5f);
+}
+
+fn schwarzp_o3_cos(a: f32) -> f32 {
+    let q = floor(a * 0.636619772f + 0.5f);
+    let r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    let z = r * r;
+    let s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    let c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    let m = q - 4.0f * floor(0.25f * q);
+    return select(select(select(s, -c, m < 2.5f), -s, m < 1.5f), c, m < 0.5f);
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 fn schwarzp_o3_field(p: vec3<f32>) -> f32 {
-    return cos(p.z * 6.28318548f) + cos(6.28318548f * p.y) + cos(6.28318548f * p.x);
+    return schwarzp_o3_cos(p.z * 6.28318548f) + schwarzp_o3_cos(6.28318548f * p.y) + schwarzp_o3_cos(6.28318548f * p.x);
 }
 
 // phi(p, h) of order 3: zero on the surface moved by h along +grad F. Total ops: 131.
 fn schwarzp_o3_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t0 = p.z * 6.28318548f;
-    let _t1 = cos(_t0);
+    let _t1 = schwarzp_o3_cos(_t0);
     let _t2 = 6.28318548f * p.y;
-    let _t3 = cos(_t2);
+    let _t3 = schwarzp_o3_cos(_t2);
     let _t4 = 6.28318548f * p.x;
-    let _t5 = cos(_t4);
+    let _t5 = schwarzp_o3_cos(_t4);
     let _t6 = 6.28318548f * h;
-    let _t7 = sin(_t2);
-    let _t8 = sin(_t4);
+    let _t7 = schwarzp_o3_sin(_t2);
+    let _t8 = schwarzp_o3_sin(_t4);
     let _t9 = _t8 * _t8;
-    let _t10 = sin(_t0);
+    let _t10 = schwarzp_o3_sin(_t0);
     let _t11 = _t10 * _t10;
     let _t12 = _t7 * _t7;
     let _t13 = sqrt(_t9 + _t11 + _t12);
@@ -106,19 +129,19 @@ fn schwarzp_o3_offset(p: vec3<f32>, h: f32) -> f32 {
 fn schwarzp_o3_shell(p: vec3<f32>, t: f32) -> f32 {
     let _t0 = 6.28318548f * (t * 0.5f);
     let _t1 = p.z * 6.28318548f;
-    let _t2 = cos(_t1);
-    let _t3 = sin(_t1);
+    let _t2 = schwarzp_o3_cos(_t1);
+    let _t3 = schwarzp_o3_sin(_t1);
     let _t4 = 6.28318548f * p.x;
-    let _t5 = sin(_t4);
+    let _t5 = schwarzp_o3_sin(_t4);
     let _t6 = _t5 * _t5;
     let _t7 = _t3 * _t3;
     let _t8 = 6.28318548f * p.y;
-    let _t9 = sin(_t8);
+    let _t9 = schwarzp_o3_sin(_t8);
     let _t10 = _t9 * _t9;
     let _t11 = sqrt(_t6 + _t7 + _t10);
     let _t12 = 1.0f / _t11;
     let _t13 = _t2 * _t3 * _t12;
-    let _t14 = cos(_t8);
+    let _t14 = schwarzp_o3_cos(_t8);
     let _t15 = _t14 * _t9 * _t12;
     let _t16 = _t0 * 0.333333343f;
     let _t17 = _t13 * _t15 * _t12 * _t16;
@@ -127,7 +150,7 @@ fn schwarzp_o3_shell(p: vec3<f32>, t: f32) -> f32 {
     let _t20 = (_t13 * _t13 - (_t2 * _t2 - _t7)) * _t12 * _t16;
     let _t21 = _t13 * _t16;
     let _t22 = _t3 - _t21;
-    let _t23 = cos(_t4);
+    let _t23 = schwarzp_o3_cos(_t4);
     let _t24 = _t5 * _t23 * _t12;
     let _t25 = _t24 * _t13 * _t12 * _t16;
     let _t26 = _t24 * _t16;
@@ -172,14 +195,14 @@ fn schwarzp_o3_shell(p: vec3<f32>, t: f32) -> f32 {
 // unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes. Total ops: 401.
 fn schwarzp_o3_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t0 = 6.28318548f * p.y;
-    let _t1 = cos(_t0);
-    let _t2 = sin(_t0);
+    let _t1 = schwarzp_o3_cos(_t0);
+    let _t2 = schwarzp_o3_sin(_t0);
     let _t3 = _t1 * _t2;
     let _t4 = 6.28318548f * p.x;
-    let _t5 = sin(_t4);
+    let _t5 = schwarzp_o3_sin(_t4);
     let _t6 = _t5 * _t5;
     let _t7 = p.z * 6.28318548f;
-    let _t8 = sin(_t7);
+    let _t8 = schwarzp_o3_sin(_t7);
     let _t9 = _t8 * _t8;
     let _t10 = _t2 * _t2;
     let _t11 = _t6 + _t9 + _t10;
@@ -189,11 +212,11 @@ fn schwarzp_o3_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t15 = 6.28318548f * h;
     let _t16 = _t15 * 0.333333343f;
     let _t17 = _t14 * _t16 + _t2;
-    let _t18 = cos(_t4);
+    let _t18 = schwarzp_o3_cos(_t4);
     let _t19 = _t5 * _t18;
     let _t20 = _t19 * _t13;
     let _t21 = _t20 * _t16 + _t5;
-    let _t22 = cos(_t7);
+    let _t22 = schwarzp_o3_cos(_t7);
     let _t23 = _t22 * _t8;
     let _t24 = _t23 * _t13;
     let _t25 = _t8 + _t24 * _t16;

@@ -58,22 +58,45 @@ license: generated code, use freely
 */
 /* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":576,"shell":1012,"normal":589}} */
 
+// sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
+// 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
+// within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); f32 only, no globals.
+fn schwarzp_proj_o8_sin(a: f32) -> f32 {
+    let q = floor(a * 0.636619772f + 0.5f);
+    let r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    let z = r * r;
+    let s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    let c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    let m = q - 4.0f * floor(0.25f * q);
+    return select(select(select(-c, -s, m < 2.5f), c, m < 1.5f), s, m < 0.5f);
+}
+
+fn schwarzp_proj_o8_cos(a: f32) -> f32 {
+    let q = floor(a * 0.636619772f + 0.5f);
+    let r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
+    let z = r * r;
+    let s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
+    let c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
+    let m = q - 4.0f * floor(0.25f * q);
+    return select(select(select(s, -c, m < 2.5f), -s, m < 1.5f), c, m < 0.5f);
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 fn schwarzp_proj_o8_field(p: vec3<f32>) -> f32 {
-    return cos(p.z * 6.28318548f) + cos(6.28318548f * p.y) + cos(6.28318548f * p.x);
+    return schwarzp_proj_o8_cos(p.z * 6.28318548f) + schwarzp_proj_o8_cos(6.28318548f * p.y) + schwarzp_proj_o8_cos(6.28318548f * p.x);
 }
 
 // phi(p, h) of order 8: zero on the surface moved by h along +grad F. Total ops: 576.
 fn schwarzp_proj_o8_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t0 = 6.28318548f * p.y;
-    let _t1 = cos(_t0);
+    let _t1 = schwarzp_proj_o8_cos(_t0);
     let _t2 = p.z * 6.28318548f;
-    let _t3 = sin(_t2);
+    let _t3 = schwarzp_proj_o8_sin(_t2);
     let _t4 = 6.28318548f * h;
     let _t5 = 6.28318548f * p.x;
-    let _t6 = sin(_t5);
+    let _t6 = schwarzp_proj_o8_sin(_t5);
     let _t7 = _t4 * _t6;
-    let _t8 = sin(_t0);
+    let _t8 = schwarzp_proj_o8_sin(_t0);
     let _t9 = _t6 * _t6 + _t3 * _t3 + _t8 * _t8;
     let _t10 = select(0.0f, 1.0f / _t9, _t9 > 0.0f);
     let _t11 = _t7 * _t7 * _t10;
@@ -83,7 +106,7 @@ fn schwarzp_proj_o8_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t15 = _t14 * _t14;
     let _t16 = sqrt(_t10);
     let _t17 = -(_t7 * _t16);
-    let _t18 = cos(_t5);
+    let _t18 = schwarzp_proj_o8_cos(_t5);
     let _t19 = ((_t14 * (2.08744777e-09f - 1.13046204e-11f * _t13) + (2.48015876e-05f - _t13 * 2.75573029e-07f)) * _t15 + (1.0f - _t13 * 0.5f + _t14 * (0.0416666679f - 0.00138888892f * _t13))) * _t6 - ((2.75573188e-06f - 2.50520991e-08f * _t13 + (1.60577024e-10f - 7.54937183e-13f * _t13) * _t14) * _t15 + ((0.00833333377f - 0.000198412701f * _t13) * _t14 + (1.0f - 0.166666672f * _t13))) * (select((select((-1.0f), 1.0f, _t17 > 0.0f)), _t17, _t12)) * _t18;
     let _t20 = _t4 * _t3;
     let _t21 = _t20 * _t20 * _t10;
@@ -92,7 +115,7 @@ fn schwarzp_proj_o8_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t24 = _t23 * _t23;
     let _t25 = _t24 * _t24;
     let _t26 = -(_t20 * _t16);
-    let _t27 = cos(_t2);
+    let _t27 = schwarzp_proj_o8_cos(_t2);
     let _t28 = _t3 * ((0.0416666679f - 0.00138888892f * _t23) * _t24 + (1.0f - _t23 * 0.5f) + _t25 * (2.48015876e-05f - _t23 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t23) * _t24)) - (((1.60577024e-10f - 7.54937183e-13f * _t23) * _t24 + (2.75573188e-06f - 2.50520991e-08f * _t23)) * _t25 + ((0.00833333377f - 0.000198412701f * _t23) * _t24 + (1.0f - 0.166666672f * _t23))) * (select((select((-1.0f), 1.0f, _t26 > 0.0f)), _t26, _t22)) * _t27;
     let _t29 = _t4 * _t8;
     let _t30 = _t10 * (_t29 * _t29);
@@ -186,13 +209,13 @@ fn schwarzp_proj_o8_offset(p: vec3<f32>, h: f32) -> f32 {
 // phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 1012.
 fn schwarzp_proj_o8_shell(p: vec3<f32>, t: f32) -> f32 {
     let _t0 = p.z * 6.28318548f;
-    let _t1 = sin(_t0);
+    let _t1 = schwarzp_proj_o8_sin(_t0);
     let _t2 = 6.28318548f * p.y;
-    let _t3 = sin(_t2);
+    let _t3 = schwarzp_proj_o8_sin(_t2);
     let _t4 = 6.28318548f * (t * 0.5f);
     let _t5 = _t3 * _t4;
     let _t6 = 6.28318548f * p.x;
-    let _t7 = sin(_t6);
+    let _t7 = schwarzp_proj_o8_sin(_t6);
     let _t8 = _t7 * _t7 + _t1 * _t1 + _t3 * _t3;
     let _t9 = select(0.0f, 1.0f / _t8, _t8 > 0.0f);
     let _t10 = _t5 * _t5 * _t9;
@@ -201,7 +224,7 @@ fn schwarzp_proj_o8_shell(p: vec3<f32>, t: f32) -> f32 {
     let _t13 = _t12 * _t12;
     let _t14 = _t13 * _t13;
     let _t15 = (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - _t12 * 0.00138888892f) + _t14 * ((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f))) * _t3;
-    let _t16 = cos(_t2);
+    let _t16 = schwarzp_proj_o8_cos(_t2);
     let _t17 = 1.0f - _t12 * 0.166666672f + (0.00833333377f - _t12 * 0.000198412701f) * _t13 + _t14 * (_t13 * (1.60577024e-10f - _t12 * 7.54937183e-13f) + (2.75573188e-06f - _t12 * 2.50520991e-08f));
     let _t18 = sqrt(_t9);
     let _t19 = _t5 * _t18;
@@ -216,7 +239,7 @@ fn schwarzp_proj_o8_shell(p: vec3<f32>, t: f32) -> f32 {
     let _t28 = ((2.48015876e-05f - _t25 * 2.75573029e-07f + _t26 * (2.08744777e-09f - _t25 * 1.13046204e-11f)) * _t27 + (_t26 * (0.0416666679f - 0.00138888892f * _t25) + (1.0f - _t25 * 0.5f))) * _t7;
     let _t29 = _t22 * _t18;
     let _t30 = (_t26 * (1.60577024e-10f - 7.54937183e-13f * _t25) + (2.75573188e-06f - 2.50520991e-08f * _t25)) * _t27 + ((0.00833333377f - _t25 * 0.000198412701f) * _t26 + (1.0f - 0.166666672f * _t25));
-    let _t31 = cos(_t6);
+    let _t31 = schwarzp_proj_o8_cos(_t6);
     let _t32 = _t28 - (select((select((-1.0f), 1.0f, _t29 > 0.0f)), _t29, _t24)) * _t30 * _t31;
     let _t33 = _t1 * _t4;
     let _t34 = _t33 * _t33 * _t9;
@@ -225,7 +248,7 @@ fn schwarzp_proj_o8_shell(p: vec3<f32>, t: f32) -> f32 {
     let _t37 = _t36 * _t36;
     let _t38 = _t37 * _t37;
     let _t39 = (((2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37 + (2.48015876e-05f - _t36 * 2.75573029e-07f)) * _t38 + (1.0f - _t36 * 0.5f + (0.0416666679f - _t36 * 0.00138888892f) * _t37)) * _t1;
-    let _t40 = cos(_t0);
+    let _t40 = schwarzp_proj_o8_cos(_t0);
     let _t41 = _t33 * _t18;
     let _t42 = _t37 * (0.00833333377f - _t36 * 0.000198412701f) + (1.0f - _t36 * 0.166666672f) + (2.75573188e-06f - _t36 * 2.50520991e-08f + (1.60577024e-10f - _t36 * 7.54937183e-13f) * _t37) * _t38;
     let _t43 = _t39 - _t40 * ((select((select((-1.0f), 1.0f, _t41 > 0.0f)), _t41, _t35)) * _t42);
@@ -397,12 +420,12 @@ fn schwarzp_proj_o8_shell(p: vec3<f32>, t: f32) -> f32 {
 fn schwarzp_proj_o8_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t0 = 6.28318548f * h;
     let _t1 = 6.28318548f * p.x;
-    let _t2 = sin(_t1);
+    let _t2 = schwarzp_proj_o8_sin(_t1);
     let _t3 = _t0 * _t2;
     let _t4 = p.z * 6.28318548f;
-    let _t5 = sin(_t4);
+    let _t5 = schwarzp_proj_o8_sin(_t4);
     let _t6 = 6.28318548f * p.y;
-    let _t7 = sin(_t6);
+    let _t7 = schwarzp_proj_o8_sin(_t6);
     let _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
     let _t9 = select(0.0f, 1.0f / _t8, _t8 > 0.0f);
     let _t10 = _t3 * _t3 * _t9;
@@ -412,7 +435,7 @@ fn schwarzp_proj_o8_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t14 = _t13 * _t13;
     let _t15 = sqrt(_t9);
     let _t16 = -(_t3 * _t15);
-    let _t17 = cos(_t1);
+    let _t17 = schwarzp_proj_o8_cos(_t1);
     let _t18 = ((_t13 * (2.08744777e-09f - 1.13046204e-11f * _t12) + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - 0.00138888892f * _t12))) * _t2 - ((2.75573188e-06f - 2.50520991e-08f * _t12 + (1.60577024e-10f - 7.54937183e-13f * _t12) * _t13) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * (select((select((-1.0f), 1.0f, _t16 > 0.0f)), _t16, _t11)) * _t17;
     let _t19 = _t0 * _t5;
     let _t20 = _t19 * _t19 * _t9;
@@ -421,7 +444,7 @@ fn schwarzp_proj_o8_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t23 = _t22 * _t22;
     let _t24 = _t23 * _t23;
     let _t25 = -(_t19 * _t15);
-    let _t26 = cos(_t4);
+    let _t26 = schwarzp_proj_o8_cos(_t4);
     let _t27 = _t5 * ((0.0416666679f - 0.00138888892f * _t22) * _t23 + (1.0f - _t22 * 0.5f) + _t24 * (2.48015876e-05f - _t22 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t22) * _t23)) - (((1.60577024e-10f - 7.54937183e-13f * _t22) * _t23 + (2.75573188e-06f - 2.50520991e-08f * _t22)) * _t24 + ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22))) * (select((select((-1.0f), 1.0f, _t25 > 0.0f)), _t25, _t21)) * _t26;
     let _t28 = _t0 * _t7;
     let _t29 = _t9 * (_t28 * _t28);
@@ -429,7 +452,7 @@ fn schwarzp_proj_o8_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t31 = select(1.0f, _t29, _t30);
     let _t32 = _t31 * _t31;
     let _t33 = _t32 * _t32;
-    let _t34 = cos(_t6);
+    let _t34 = schwarzp_proj_o8_cos(_t6);
     let _t35 = -(_t28 * _t15);
     let _t36 = (_t32 * (0.0416666679f - _t31 * 0.00138888892f) + (1.0f - _t31 * 0.5f) + (2.48015876e-05f - _t31 * 2.75573029e-07f + _t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f)) * _t33) * _t7 - _t34 * ((select((select((-1.0f), 1.0f, _t35 > 0.0f)), _t35, _t30)) * (1.0f - _t31 * 0.166666672f + (0.00833333377f - _t31 * 0.000198412701f) * _t32 + _t33 * (2.75573188e-06f - _t31 * 2.50520991e-08f + _t32 * (1.60577024e-10f - _t31 * 7.54937183e-13f))));
     let _t37 = _t18 * _t18 + _t27 * _t27 + _t36 * _t36;

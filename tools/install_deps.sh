@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   glslang-tools spirv-tools libegl-dev libopengl-dev libgles-dev libgl1-mesa-dri libpng-dev
   python3 python3-sympy python3-matplotlib python3-numpy time
+  python3-numba
   clang-format clang-tidy
   clang libclang-rt-14-dev
   chromium libvulkan-dev mesa-vulkan-drivers

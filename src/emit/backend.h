@@ -60,6 +60,8 @@ class Backend {
   virtual std::string emitted_name(const FileFacts& facts, const EmittedFunction& f, Precision p) const;
   // A statement that marks an unread parameter as used ("(void)x;"), or "" where none is needed.
   virtual std::string unused_parameter(const std::string&) const { return ""; }
+  // Lines that open the body, given its inputs (NumPy: each input converted to float64).
+  virtual std::string prologue(const std::vector<std::string>&) const { return ""; }
   // The body's last lines for a vector result (C: n[i] = ...; shaders: return vec3(...)).
   virtual std::string vector_return(const FileFacts& facts, const std::vector<std::string>& components) const;
   // A last rewrite of a printed body (calls of the file's own sin/cos helpers).

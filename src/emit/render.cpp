@@ -16,7 +16,7 @@ std::string render_function(const std::string& skeleton, const FileFacts& facts,
   const Backend& b = *d.backend;
   const std::vector<std::string> inputs = b.input_names(facts, f);
   const PrintedBody printed = print_program(*f.program, d, inputs);
-  std::string body;
+  std::string body = b.prologue(inputs);
   // A function that does not read a parameter (x + y + z has a constant normal) may have to say so
   // (C: -Wunused-parameter).
   std::vector<bool> read(inputs.size(), false);
