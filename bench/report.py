@@ -239,6 +239,18 @@ def methods_section(results, gen, own_run=None):
     return md
 
 
+NUMPY_BEGIN = "<!-- numpy section: bench/numpy_grid.py --update BENCHMARKS.md replaces it -->"
+NUMPY_END = "<!-- end of numpy section -->"
+
+
+def kept_section(output, begin, end):
+    """The lines of a section another script measures (bench/numpy_grid.py), carried over from `output`."""
+    text = open(output).read() if os.path.exists(output) else ""
+    if begin not in text or end not in text:
+        return []
+    return text[text.index(begin):text.index(end) + len(end)].split("\n") + [""]
+
+
 def replace_methods_section(results, output):
     """--methods-only: the methods section of `output` replaced (or added before "How to reproduce")."""
     section = "\n".join(methods_section(results, {}, own_run=load_machine(results)))
@@ -769,6 +781,7 @@ def main(argv=None):
     w("")
     md.extend(methods_section(R, gen))
     md.extend(mesh_section(R))
+    md.extend(kept_section(args.output, NUMPY_BEGIN, NUMPY_END))
     w("## How to reproduce")
     w("")
     w("```sh\ntools/run_benchmarks.sh              # builds build-bench/, runs everything, rewrites BENCHMARKS.md\n"

@@ -45,7 +45,9 @@ unset(_lines)
 # src/emit/backend_registry.cpp) as "name:extension" entries in registry order, so
 # offsetgen_generate() can check LANG and name the files at configure time.
 set(OFFSETGEN_LANGUAGES "")
-file(STRINGS "${PROJECT_SOURCE_DIR}/src/emit/backend_registry.cpp" _lines REGEX "static const std::vector<const Backend\\*> all")
+# The list may span lines (clang-format wraps it): read up to its closing brace.
+file(READ "${PROJECT_SOURCE_DIR}/src/emit/backend_registry.cpp" _lines)
+string(REGEX MATCH "static const std::vector<const Backend\\*> all = {[^}]*}" _lines "${_lines}")
 string(REGEX MATCHALL "&([a-z]+)_backend\\(\\)" _names "${_lines}")
 foreach(_name IN LISTS _names)
   string(REGEX REPLACE "&([a-z]+)_backend.*" "\\1" _name "${_name}")

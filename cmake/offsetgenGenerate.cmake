@@ -5,7 +5,7 @@
 #                      EXPR "<F(x, y[, z])>" NAME <stem> [PARAMS a=0.3 ...]
 #                      ORDERS <m> [<m> ...]                      # richardson 1..12, projection 1..16
 #                      [METHOD richardson|projection]            # default: offsetgen's default method
-#                      [LANG c glsl hlsl glsl_string]            # default: c; or LANG all
+#                      [LANG c glsl hlsl wgsl cuda opencl numpy glsl_string]  # default: c; or LANG all
 #                      [PRECISION double float]                  # default: double (C only)
 #                      [THICKNESS "<t(x, y, z)>"]                # adds <prefix>_graded
 #                      [DENSITY <rho>]                           # adds <prefix>_wall and the density functions
@@ -20,7 +20,8 @@
 #
 # For every order m it generates, in OUTPUT_DIR, the files of prefix <stem>_o<m> (stem = NAME, else
 # SURFACE; m is the order the method builds: projection rounds odd orders up to the next even one):
-# <prefix>.<ext> per language (a backend of src/emit/backends/: .h for c, .glsl, .hlsl), and
+# <prefix>.<ext> per language (a backend of src/emit/backends/: .h for c, .glsl, .hlsl, .wgsl, .cuh,
+# .cl, .py for numpy), and
 # <prefix>_glsl.h (LANG glsl_string: `static const char <prefix>_glsl[]`, the snippet as a C string).
 # LANG takes a list (c glsl, or "c,glsl") or all (every backend).
 #
@@ -32,7 +33,7 @@
 #   <name>_HEADERS / OFFSETGEN_HEADERS                 the C headers (<prefix>.h)
 #   <name>_GLSL_FILES / OFFSETGEN_GLSL_FILES           the .glsl snippets
 #   <name>_GLSL_STRING_HEADERS / OFFSETGEN_GLSL_STRING_HEADERS   the <prefix>_glsl.h headers
-#   <name>_<LANG>_FILES / OFFSETGEN_<LANG>_FILES       the files of each other language (HLSL_FILES)
+#   <name>_<LANG>_FILES / OFFSETGEN_<LANG>_FILES       the files of each other language (HLSL_FILES, NUMPY_FILES)
 #   <name>_OUTPUT_DIR / OFFSETGEN_OUTPUT_DIR           the directory
 #
 # The generator is offsetgen::offsetgen (find_package(offsetgen) or add_subdirectory), or the host

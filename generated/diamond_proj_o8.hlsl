@@ -57,18 +57,43 @@ license: generated code, use freely
 #ifndef OFFSETGEN_DIAMOND_PROJ_O8_HLSL
 #define OFFSETGEN_DIAMOND_PROJ_O8_HLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, no globals.
+float diamond_proj_o8_sin(float a)
+{
+    float q = floor(a * 0.636619772 + 0.5);
+    float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    float z = r * r;
+    float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+float diamond_proj_o8_cos(float a)
+{
+    float q = floor(a * 0.636619772 + 0.5);
+    float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    float z = r * r;
+    float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 20.
 float diamond_proj_o8_field(float3 p)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = cos(_t0);
+    float _t1 = diamond_proj_o8_cos(_t0);
     float _t2 = 6.28318548 * p.y;
-    float _t3 = cos(_t2);
+    float _t3 = diamond_proj_o8_cos(_t2);
     float _t4 = 6.28318548 * p.x;
-    float _t5 = sin(_t4);
-    float _t6 = sin(_t0);
-    float _t7 = sin(_t2);
-    float _t8 = cos(_t4);
+    float _t5 = diamond_proj_o8_sin(_t4);
+    float _t6 = diamond_proj_o8_sin(_t0);
+    float _t7 = diamond_proj_o8_sin(_t2);
+    float _t8 = diamond_proj_o8_cos(_t4);
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
@@ -76,16 +101,16 @@ float diamond_proj_o8_field(float3 p)
 float diamond_proj_o8_offset(float3 p, float h)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = sin(_t0);
+    float _t1 = diamond_proj_o8_sin(_t0);
     float _t2 = 6.28318548 * h;
-    float _t3 = cos(_t0);
+    float _t3 = diamond_proj_o8_cos(_t0);
     float _t4 = 6.28318548 * p.y;
-    float _t5 = cos(_t4);
+    float _t5 = diamond_proj_o8_cos(_t4);
     float _t6 = 6.28318548 * p.x;
-    float _t7 = cos(_t6);
+    float _t7 = diamond_proj_o8_cos(_t6);
     float _t8 = _t3 * _t5 * _t7;
-    float _t9 = sin(_t4);
-    float _t10 = sin(_t6);
+    float _t9 = diamond_proj_o8_sin(_t4);
+    float _t10 = diamond_proj_o8_sin(_t6);
     float _t11 = _t3 * _t9 * _t10;
     float _t12 = _t1 * _t5 * _t10;
     float _t13 = _t7 * (_t1 * _t9);
@@ -264,15 +289,15 @@ float diamond_proj_o8_offset(float3 p, float h)
 float diamond_proj_o8_shell(float3 p, float t)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = sin(_t0);
+    float _t1 = diamond_proj_o8_sin(_t0);
     float _t2 = 6.28318548 * p.y;
-    float _t3 = sin(_t2);
-    float _t4 = cos(_t0);
-    float _t5 = cos(_t2);
+    float _t3 = diamond_proj_o8_sin(_t2);
+    float _t4 = diamond_proj_o8_cos(_t0);
+    float _t5 = diamond_proj_o8_cos(_t2);
     float _t6 = 6.28318548 * p.x;
-    float _t7 = cos(_t6);
+    float _t7 = diamond_proj_o8_cos(_t6);
     float _t8 = _t4 * _t5 * _t7;
-    float _t9 = sin(_t6);
+    float _t9 = diamond_proj_o8_sin(_t6);
     float _t10 = _t1 * _t5 * _t9;
     float _t11 = _t4 * _t3 * _t9;
     float _t12 = _t7 * (_t1 * _t3);
@@ -602,16 +627,16 @@ float diamond_proj_o8_shell(float3 p, float t)
 float3 diamond_proj_o8_normal(float3 p, float h)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = cos(_t0);
-    float _t2 = sin(_t0);
+    float _t1 = diamond_proj_o8_cos(_t0);
+    float _t2 = diamond_proj_o8_sin(_t0);
     float _t3 = 6.28318548 * h;
     float _t4 = 6.28318548 * p.y;
-    float _t5 = cos(_t4);
+    float _t5 = diamond_proj_o8_cos(_t4);
     float _t6 = 6.28318548 * p.x;
-    float _t7 = cos(_t6);
+    float _t7 = diamond_proj_o8_cos(_t6);
     float _t8 = _t1 * _t5 * _t7;
-    float _t9 = sin(_t4);
-    float _t10 = sin(_t6);
+    float _t9 = diamond_proj_o8_sin(_t4);
+    float _t10 = diamond_proj_o8_sin(_t6);
     float _t11 = _t1 * _t9 * _t10;
     float _t12 = _t2 * _t5 * _t10;
     float _t13 = _t7 * (_t2 * _t9);

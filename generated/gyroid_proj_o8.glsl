@@ -57,28 +57,53 @@ license: generated code, use freely
 #ifndef OFFSETGEN_GYROID_PROJ_O8_GLSL
 #define OFFSETGEN_GYROID_PROJ_O8_GLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, every value highp.
+highp float gyroid_proj_o8_sin(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+highp float gyroid_proj_o8_cos(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 14.
 highp float gyroid_proj_o8_field(highp vec3 p)
 {
     highp float _t0 = p.z * 6.28318548;
     highp float _t1 = 6.28318548 * p.y;
     highp float _t2 = 6.28318548 * p.x;
-    return cos(_t0) * sin(_t1) + sin(_t0) * cos(_t2) + cos(_t1) * sin(_t2);
+    return gyroid_proj_o8_cos(_t0) * gyroid_proj_o8_sin(_t1) + gyroid_proj_o8_sin(_t0) * gyroid_proj_o8_cos(_t2) + gyroid_proj_o8_cos(_t1) * gyroid_proj_o8_sin(_t2);
 }
 
 // phi(p, h) of order 8: zero on the surface moved by h along +grad F. Total ops: 646.
 highp float gyroid_proj_o8_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = cos(_t0);
+    highp float _t1 = gyroid_proj_o8_cos(_t0);
     highp float _t2 = 6.28318548 * p.x;
-    highp float _t3 = cos(_t2);
-    highp float _t4 = sin(_t0);
+    highp float _t3 = gyroid_proj_o8_cos(_t2);
+    highp float _t4 = gyroid_proj_o8_sin(_t0);
     highp float _t5 = 6.28318548 * p.y;
-    highp float _t6 = sin(_t5);
+    highp float _t6 = gyroid_proj_o8_sin(_t5);
     highp float _t7 = _t1 * _t3 - _t4 * _t6;
-    highp float _t8 = sin(_t2);
-    highp float _t9 = cos(_t5);
+    highp float _t8 = gyroid_proj_o8_sin(_t2);
+    highp float _t9 = gyroid_proj_o8_cos(_t5);
     highp float _t10 = _t6 * _t8 - _t1 * _t9;
     highp float _t11 = _t4 * _t8 - _t9 * _t3;
     highp float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
@@ -236,15 +261,15 @@ highp float gyroid_proj_o8_offset(highp vec3 p, highp float h)
 highp float gyroid_proj_o8_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = 6.28318548 * p.y;
-    highp float _t1 = cos(_t0);
-    highp float _t2 = sin(_t0);
+    highp float _t1 = gyroid_proj_o8_cos(_t0);
+    highp float _t2 = gyroid_proj_o8_sin(_t0);
     highp float _t3 = p.z * 6.28318548;
-    highp float _t4 = cos(_t3);
+    highp float _t4 = gyroid_proj_o8_cos(_t3);
     highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = cos(_t5);
-    highp float _t7 = sin(_t3);
+    highp float _t6 = gyroid_proj_o8_cos(_t5);
+    highp float _t7 = gyroid_proj_o8_sin(_t3);
     highp float _t8 = _t4 * _t6 - _t7 * _t2;
-    highp float _t9 = sin(_t5);
+    highp float _t9 = gyroid_proj_o8_sin(_t5);
     highp float _t10 = _t2 * _t9 - _t4 * _t1;
     highp float _t11 = _t7 * _t9 - _t1 * _t6;
     highp float _t12 = _t8 * _t8 + _t10 * _t10 + _t11 * _t11;
@@ -534,15 +559,15 @@ highp float gyroid_proj_o8_shell(highp vec3 p, highp float t)
 highp vec3 gyroid_proj_o8_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = sin(_t0);
-    highp float _t2 = cos(_t0);
+    highp float _t1 = gyroid_proj_o8_sin(_t0);
+    highp float _t2 = gyroid_proj_o8_cos(_t0);
     highp float _t3 = 6.28318548 * p.x;
-    highp float _t4 = cos(_t3);
+    highp float _t4 = gyroid_proj_o8_cos(_t3);
     highp float _t5 = 6.28318548 * p.y;
-    highp float _t6 = sin(_t5);
+    highp float _t6 = gyroid_proj_o8_sin(_t5);
     highp float _t7 = _t2 * _t4 - _t1 * _t6;
-    highp float _t8 = sin(_t3);
-    highp float _t9 = cos(_t5);
+    highp float _t8 = gyroid_proj_o8_sin(_t3);
+    highp float _t9 = gyroid_proj_o8_cos(_t5);
     highp float _t10 = _t6 * _t8 - _t2 * _t9;
     highp float _t11 = _t1 * _t8 - _t9 * _t4;
     highp float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;

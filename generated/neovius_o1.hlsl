@@ -51,12 +51,37 @@ license: generated code, use freely
 #ifndef OFFSETGEN_NEOVIUS_O1_HLSL
 #define OFFSETGEN_NEOVIUS_O1_HLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, no globals.
+float neovius_o1_sin(float a)
+{
+    float q = floor(a * 0.636619772 + 0.5);
+    float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    float z = r * r;
+    float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+float neovius_o1_cos(float a)
+{
+    float q = floor(a * 0.636619772 + 0.5);
+    float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    float z = r * r;
+    float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 15.
 float neovius_o1_field(float3 p)
 {
-    float _t0 = cos(p.z * 6.28318548);
-    float _t1 = cos(6.28318548 * p.y);
-    float _t2 = cos(6.28318548 * p.x);
+    float _t0 = neovius_o1_cos(p.z * 6.28318548);
+    float _t1 = neovius_o1_cos(6.28318548 * p.y);
+    float _t2 = neovius_o1_cos(6.28318548 * p.x);
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
@@ -64,17 +89,17 @@ float neovius_o1_field(float3 p)
 float neovius_o1_offset(float3 p, float h)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = cos(_t0);
+    float _t1 = neovius_o1_cos(_t0);
     float _t2 = 6.28318548 * p.y;
-    float _t3 = cos(_t2);
+    float _t3 = neovius_o1_cos(_t2);
     float _t4 = _t1 * _t3;
     float _t5 = 6.28318548 * p.x;
-    float _t6 = cos(_t5);
-    float _t7 = sin(_t2);
+    float _t6 = neovius_o1_cos(_t5);
+    float _t7 = neovius_o1_sin(_t2);
     float _t8 = 4.0 * (_t1 * _t7 * _t6) + _t7 * 3.0;
-    float _t9 = sin(_t0);
+    float _t9 = neovius_o1_sin(_t0);
     float _t10 = _t9 * 3.0 + 4.0 * (_t9 * _t3 * _t6);
-    float _t11 = sin(_t5);
+    float _t11 = neovius_o1_sin(_t5);
     float _t12 = 3.0 * _t11 + 4.0 * (_t4 * _t11);
     float _t13 = sqrt(_t8 * _t8 + _t10 * _t10 + _t12 * _t12);
     return _t4 * _t6 * 4.0 + 3.0 * _t6 + _t1 * 3.0 + _t3 * 3.0 - 6.28318548 * h * ((_t13 <= 7.00000715) ? (((-7.00000715) <= _t13) ? _t13 : (-7.00000715)) : 7.00000715);
@@ -84,16 +109,16 @@ float neovius_o1_offset(float3 p, float h)
 float neovius_o1_shell(float3 p, float t)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = cos(_t0);
+    float _t1 = neovius_o1_cos(_t0);
     float _t2 = 6.28318548 * p.y;
-    float _t3 = sin(_t2);
+    float _t3 = neovius_o1_sin(_t2);
     float _t4 = 6.28318548 * p.x;
-    float _t5 = cos(_t4);
+    float _t5 = neovius_o1_cos(_t4);
     float _t6 = 4.0 * (_t1 * _t3 * _t5) + _t3 * 3.0;
-    float _t7 = sin(_t0);
-    float _t8 = cos(_t2);
+    float _t7 = neovius_o1_sin(_t0);
+    float _t8 = neovius_o1_cos(_t2);
     float _t9 = _t7 * 3.0 + 4.0 * (_t7 * _t8 * _t5);
-    float _t10 = sin(_t4);
+    float _t10 = neovius_o1_sin(_t4);
     float _t11 = _t1 * _t8;
     float _t12 = 3.0 * _t10 + 4.0 * (_t11 * _t10);
     float _t13 = sqrt(_t6 * _t6 + _t9 * _t9 + _t12 * _t12);
@@ -106,18 +131,18 @@ float neovius_o1_shell(float3 p, float t)
 float3 neovius_o1_normal(float3 p, float h)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = cos(_t0);
+    float _t1 = neovius_o1_cos(_t0);
     float _t2 = 6.28318548 * p.y;
-    float _t3 = sin(_t2);
+    float _t3 = neovius_o1_sin(_t2);
     float _t4 = _t1 * _t3;
     float _t5 = 6.28318548 * p.x;
-    float _t6 = cos(_t5);
+    float _t6 = neovius_o1_cos(_t5);
     float _t7 = 4.0 * (_t4 * _t6) + _t3 * 3.0;
-    float _t8 = sin(_t0);
-    float _t9 = cos(_t2);
+    float _t8 = neovius_o1_sin(_t0);
+    float _t9 = neovius_o1_cos(_t2);
     float _t10 = _t8 * _t9;
     float _t11 = _t8 * 3.0 + 4.0 * (_t10 * _t6);
-    float _t12 = sin(_t5);
+    float _t12 = neovius_o1_sin(_t5);
     float _t13 = _t1 * _t9;
     float _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
     float _t15 = _t7 * _t7 + _t11 * _t11 + _t14 * _t14;

@@ -51,12 +51,37 @@ license: generated code, use freely
 #ifndef OFFSETGEN_NEOVIUS_O2_GLSL
 #define OFFSETGEN_NEOVIUS_O2_GLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, every value highp.
+highp float neovius_o2_sin(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+highp float neovius_o2_cos(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 15.
 highp float neovius_o2_field(highp vec3 p)
 {
-    highp float _t0 = cos(p.z * 6.28318548);
-    highp float _t1 = cos(6.28318548 * p.y);
-    highp float _t2 = cos(6.28318548 * p.x);
+    highp float _t0 = neovius_o2_cos(p.z * 6.28318548);
+    highp float _t1 = neovius_o2_cos(6.28318548 * p.y);
+    highp float _t2 = neovius_o2_cos(6.28318548 * p.x);
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
@@ -64,23 +89,23 @@ highp float neovius_o2_field(highp vec3 p)
 highp float neovius_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = cos(_t0);
+    highp float _t1 = neovius_o2_cos(_t0);
     highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = cos(_t2);
+    highp float _t3 = neovius_o2_cos(_t2);
     highp float _t4 = _t1 * _t3;
     highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = cos(_t5);
+    highp float _t6 = neovius_o2_cos(_t5);
     highp float _t7 = _t4 * _t6 * 4.0;
     highp float _t8 = _t7 + 3.0 * _t6;
     highp float _t9 = _t1 * 3.0;
     highp float _t10 = _t3 * 3.0;
     highp float _t11 = 6.28318548 * h;
-    highp float _t12 = sin(_t2);
+    highp float _t12 = neovius_o2_sin(_t2);
     highp float _t13 = _t1 * _t12;
-    highp float _t14 = sin(_t5);
+    highp float _t14 = neovius_o2_sin(_t5);
     highp float _t15 = 4.0 * (_t13 * _t14);
     highp float _t16 = 4.0 * (_t13 * _t6) + _t12 * 3.0;
-    highp float _t17 = sin(_t0);
+    highp float _t17 = neovius_o2_sin(_t0);
     highp float _t18 = _t17 * _t3;
     highp float _t19 = _t17 * 3.0 + 4.0 * (_t18 * _t6);
     highp float _t20 = 4.0 * (_t18 * _t14);
@@ -105,25 +130,25 @@ highp float neovius_o2_offset(highp vec3 p, highp float h)
 highp float neovius_o2_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = cos(_t0);
+    highp float _t1 = neovius_o2_cos(_t0);
     highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = cos(_t2);
+    highp float _t3 = neovius_o2_cos(_t2);
     highp float _t4 = _t1 * _t3;
     highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = cos(_t5);
+    highp float _t6 = neovius_o2_cos(_t5);
     highp float _t7 = _t4 * _t6 * 4.0;
     highp float _t8 = _t7 + 3.0 * _t6;
     highp float _t9 = _t1 * 3.0;
     highp float _t10 = _t3 * 3.0;
     highp float _t11 = _t8 + _t9 + _t10;
     highp float _t12 = 6.28318548 * (t * 0.5);
-    highp float _t13 = sin(_t5);
+    highp float _t13 = neovius_o2_sin(_t5);
     highp float _t14 = 3.0 * _t13 + 4.0 * (_t4 * _t13);
-    highp float _t15 = sin(_t2);
+    highp float _t15 = neovius_o2_sin(_t2);
     highp float _t16 = _t1 * _t15;
     highp float _t17 = 4.0 * (_t16 * _t13);
     highp float _t18 = 4.0 * (_t16 * _t6) + _t15 * 3.0;
-    highp float _t19 = sin(_t0);
+    highp float _t19 = neovius_o2_sin(_t0);
     highp float _t20 = _t19 * _t3;
     highp float _t21 = _t19 * 3.0 + 4.0 * (_t20 * _t6);
     highp float _t22 = 4.0 * (_t20 * _t13);
@@ -154,18 +179,18 @@ highp float neovius_o2_shell(highp vec3 p, highp float t)
 highp vec3 neovius_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = cos(_t0);
+    highp float _t1 = neovius_o2_cos(_t0);
     highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = sin(_t2);
+    highp float _t3 = neovius_o2_sin(_t2);
     highp float _t4 = _t1 * _t3;
     highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = sin(_t5);
+    highp float _t6 = neovius_o2_sin(_t5);
     highp float _t7 = 4.0 * (_t4 * _t6);
-    highp float _t8 = cos(_t5);
+    highp float _t8 = neovius_o2_cos(_t5);
     highp float _t9 = 4.0 * (_t4 * _t8);
     highp float _t10 = _t9 + _t3 * 3.0;
-    highp float _t11 = sin(_t0);
-    highp float _t12 = cos(_t2);
+    highp float _t11 = neovius_o2_sin(_t0);
+    highp float _t12 = neovius_o2_cos(_t2);
     highp float _t13 = _t11 * _t12;
     highp float _t14 = 4.0 * (_t13 * _t8);
     highp float _t15 = _t11 * 3.0 + _t14;

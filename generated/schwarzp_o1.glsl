@@ -51,10 +51,35 @@ license: generated code, use freely
 #ifndef OFFSETGEN_SCHWARZP_O1_GLSL
 #define OFFSETGEN_SCHWARZP_O1_GLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, every value highp.
+highp float schwarzp_o1_sin(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+highp float schwarzp_o1_cos(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 highp float schwarzp_o1_field(highp vec3 p)
 {
-    return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
+    return schwarzp_o1_cos(p.z * 6.28318548) + schwarzp_o1_cos(6.28318548 * p.y) + schwarzp_o1_cos(6.28318548 * p.x);
 }
 
 // phi(p, h) of order 1: zero on the surface moved by h along +grad F. Total ops: 24.
@@ -63,11 +88,11 @@ highp float schwarzp_o1_offset(highp vec3 p, highp float h)
     highp float _t0 = p.z * 6.28318548;
     highp float _t1 = 6.28318548 * p.y;
     highp float _t2 = 6.28318548 * p.x;
-    highp float _t3 = sin(_t2);
-    highp float _t4 = sin(_t0);
-    highp float _t5 = sin(_t1);
+    highp float _t3 = schwarzp_o1_sin(_t2);
+    highp float _t4 = schwarzp_o1_sin(_t0);
+    highp float _t5 = schwarzp_o1_sin(_t1);
     highp float _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return cos(_t0) + cos(_t1) + cos(_t2) - 6.28318548 * h * ((_t6 <= 1.73205256) ? (((-1.73205256) <= _t6) ? _t6 : (-1.73205256)) : 1.73205256);
+    return schwarzp_o1_cos(_t0) + schwarzp_o1_cos(_t1) + schwarzp_o1_cos(_t2) - 6.28318548 * h * ((_t6 <= 1.73205256) ? (((-1.73205256) <= _t6) ? _t6 : (-1.73205256)) : 1.73205256);
 }
 
 // phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 27.
@@ -76,10 +101,10 @@ highp float schwarzp_o1_shell(highp vec3 p, highp float t)
     highp float _t0 = p.z * 6.28318548;
     highp float _t1 = 6.28318548 * p.y;
     highp float _t2 = 6.28318548 * p.x;
-    highp float _t3 = cos(_t0) + cos(_t1) + cos(_t2);
-    highp float _t4 = sin(_t2);
-    highp float _t5 = sin(_t0);
-    highp float _t6 = sin(_t1);
+    highp float _t3 = schwarzp_o1_cos(_t0) + schwarzp_o1_cos(_t1) + schwarzp_o1_cos(_t2);
+    highp float _t4 = schwarzp_o1_sin(_t2);
+    highp float _t5 = schwarzp_o1_sin(_t0);
+    highp float _t6 = schwarzp_o1_sin(_t1);
     highp float _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
     highp float _t8 = 6.28318548 * (t * 0.5) * ((_t7 <= 1.73205256) ? (((-1.73205256) <= _t7) ? _t7 : (-1.73205256)) : 1.73205256);
     return (_t3 - _t8) * (_t3 + _t8);
@@ -89,11 +114,11 @@ highp float schwarzp_o1_shell(highp vec3 p, highp float t)
 highp vec3 schwarzp_o1_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.x;
-    highp float _t1 = sin(_t0);
+    highp float _t1 = schwarzp_o1_sin(_t0);
     highp float _t2 = p.z * 6.28318548;
-    highp float _t3 = sin(_t2);
+    highp float _t3 = schwarzp_o1_sin(_t2);
     highp float _t4 = 6.28318548 * p.y;
-    highp float _t5 = sin(_t4);
+    highp float _t5 = schwarzp_o1_sin(_t4);
     highp float _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
     highp float _t7 = sqrt(_t6);
     bool _t8 = _t7 <= 1.73205256;
@@ -101,11 +126,11 @@ highp vec3 schwarzp_o1_normal(highp vec3 p, highp float h)
     highp float _t10 = 6.28318548 * h;
     highp float _t11 = 1.0 / _t7;
     highp float _t12 = -_t5;
-    highp float _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (cos(_t4) * _t5 * _t11)) : _t12) : _t12;
+    highp float _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (schwarzp_o1_cos(_t4) * _t5 * _t11)) : _t12) : _t12;
     highp float _t14 = -_t1;
-    highp float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * cos(_t0) * _t11) + _t1) : _t14) : _t14;
+    highp float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * schwarzp_o1_cos(_t0) * _t11) + _t1) : _t14) : _t14;
     highp float _t16 = -_t3;
-    highp float _t17 = (_t8) ? ((_t9) ? -(_t10 * (cos(_t2) * _t3 * _t11) + _t3) : _t16) : _t16;
+    highp float _t17 = (_t8) ? ((_t9) ? -(_t10 * (schwarzp_o1_cos(_t2) * _t3 * _t11) + _t3) : _t16) : _t16;
     highp float _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
     bool _t19 = _t18 > 0.0;
     bool _t20 = _t18 <= 1.00000002e+30;

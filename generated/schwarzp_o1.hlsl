@@ -51,10 +51,35 @@ license: generated code, use freely
 #ifndef OFFSETGEN_SCHWARZP_O1_HLSL
 #define OFFSETGEN_SCHWARZP_O1_HLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, no globals.
+float schwarzp_o1_sin(float a)
+{
+    float q = floor(a * 0.636619772 + 0.5);
+    float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    float z = r * r;
+    float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+float schwarzp_o1_cos(float a)
+{
+    float q = floor(a * 0.636619772 + 0.5);
+    float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    float z = r * r;
+    float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 float schwarzp_o1_field(float3 p)
 {
-    return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
+    return schwarzp_o1_cos(p.z * 6.28318548) + schwarzp_o1_cos(6.28318548 * p.y) + schwarzp_o1_cos(6.28318548 * p.x);
 }
 
 // phi(p, h) of order 1: zero on the surface moved by h along +grad F. Total ops: 24.
@@ -63,11 +88,11 @@ float schwarzp_o1_offset(float3 p, float h)
     float _t0 = p.z * 6.28318548;
     float _t1 = 6.28318548 * p.y;
     float _t2 = 6.28318548 * p.x;
-    float _t3 = sin(_t2);
-    float _t4 = sin(_t0);
-    float _t5 = sin(_t1);
+    float _t3 = schwarzp_o1_sin(_t2);
+    float _t4 = schwarzp_o1_sin(_t0);
+    float _t5 = schwarzp_o1_sin(_t1);
     float _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return cos(_t0) + cos(_t1) + cos(_t2) - 6.28318548 * h * ((_t6 <= 1.73205256) ? (((-1.73205256) <= _t6) ? _t6 : (-1.73205256)) : 1.73205256);
+    return schwarzp_o1_cos(_t0) + schwarzp_o1_cos(_t1) + schwarzp_o1_cos(_t2) - 6.28318548 * h * ((_t6 <= 1.73205256) ? (((-1.73205256) <= _t6) ? _t6 : (-1.73205256)) : 1.73205256);
 }
 
 // phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 27.
@@ -76,10 +101,10 @@ float schwarzp_o1_shell(float3 p, float t)
     float _t0 = p.z * 6.28318548;
     float _t1 = 6.28318548 * p.y;
     float _t2 = 6.28318548 * p.x;
-    float _t3 = cos(_t0) + cos(_t1) + cos(_t2);
-    float _t4 = sin(_t2);
-    float _t5 = sin(_t0);
-    float _t6 = sin(_t1);
+    float _t3 = schwarzp_o1_cos(_t0) + schwarzp_o1_cos(_t1) + schwarzp_o1_cos(_t2);
+    float _t4 = schwarzp_o1_sin(_t2);
+    float _t5 = schwarzp_o1_sin(_t0);
+    float _t6 = schwarzp_o1_sin(_t1);
     float _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
     float _t8 = 6.28318548 * (t * 0.5) * ((_t7 <= 1.73205256) ? (((-1.73205256) <= _t7) ? _t7 : (-1.73205256)) : 1.73205256);
     return (_t3 - _t8) * (_t3 + _t8);
@@ -89,11 +114,11 @@ float schwarzp_o1_shell(float3 p, float t)
 float3 schwarzp_o1_normal(float3 p, float h)
 {
     float _t0 = 6.28318548 * p.x;
-    float _t1 = sin(_t0);
+    float _t1 = schwarzp_o1_sin(_t0);
     float _t2 = p.z * 6.28318548;
-    float _t3 = sin(_t2);
+    float _t3 = schwarzp_o1_sin(_t2);
     float _t4 = 6.28318548 * p.y;
-    float _t5 = sin(_t4);
+    float _t5 = schwarzp_o1_sin(_t4);
     float _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
     float _t7 = sqrt(_t6);
     bool _t8 = _t7 <= 1.73205256;
@@ -101,11 +126,11 @@ float3 schwarzp_o1_normal(float3 p, float h)
     float _t10 = 6.28318548 * h;
     float _t11 = 1.0 / _t7;
     float _t12 = -_t5;
-    float _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (cos(_t4) * _t5 * _t11)) : _t12) : _t12;
+    float _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (schwarzp_o1_cos(_t4) * _t5 * _t11)) : _t12) : _t12;
     float _t14 = -_t1;
-    float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * cos(_t0) * _t11) + _t1) : _t14) : _t14;
+    float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * schwarzp_o1_cos(_t0) * _t11) + _t1) : _t14) : _t14;
     float _t16 = -_t3;
-    float _t17 = (_t8) ? ((_t9) ? -(_t10 * (cos(_t2) * _t3 * _t11) + _t3) : _t16) : _t16;
+    float _t17 = (_t8) ? ((_t9) ? -(_t10 * (schwarzp_o1_cos(_t2) * _t3 * _t11) + _t3) : _t16) : _t16;
     float _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
     bool _t19 = _t18 > 0.0;
     bool _t20 = _t18 <= 1.00000002e+30;

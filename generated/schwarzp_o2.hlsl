@@ -51,25 +51,50 @@ license: generated code, use freely
 #ifndef OFFSETGEN_SCHWARZP_O2_HLSL
 #define OFFSETGEN_SCHWARZP_O2_HLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, no globals.
+float schwarzp_o2_sin(float a)
+{
+    float q = floor(a * 0.636619772 + 0.5);
+    float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    float z = r * r;
+    float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+float schwarzp_o2_cos(float a)
+{
+    float q = floor(a * 0.636619772 + 0.5);
+    float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    float z = r * r;
+    float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 float schwarzp_o2_field(float3 p)
 {
-    return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
+    return schwarzp_o2_cos(p.z * 6.28318548) + schwarzp_o2_cos(6.28318548 * p.y) + schwarzp_o2_cos(6.28318548 * p.x);
 }
 
 // phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 53.
 float schwarzp_o2_offset(float3 p, float h)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = cos(_t0);
+    float _t1 = schwarzp_o2_cos(_t0);
     float _t2 = 6.28318548 * p.y;
-    float _t3 = cos(_t2);
+    float _t3 = schwarzp_o2_cos(_t2);
     float _t4 = 6.28318548 * p.x;
-    float _t5 = cos(_t4);
+    float _t5 = schwarzp_o2_cos(_t4);
     float _t6 = 6.28318548 * h;
-    float _t7 = sin(_t2);
-    float _t8 = sin(_t4);
-    float _t9 = sin(_t0);
+    float _t7 = schwarzp_o2_sin(_t2);
+    float _t8 = schwarzp_o2_sin(_t4);
+    float _t9 = schwarzp_o2_sin(_t0);
     float _t10 = sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
     float _t11 = 1.0 / _t10;
     float _t12 = _t6 * 0.5;
@@ -89,15 +114,15 @@ float schwarzp_o2_offset(float3 p, float h)
 float schwarzp_o2_shell(float3 p, float t)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = cos(_t0);
+    float _t1 = schwarzp_o2_cos(_t0);
     float _t2 = 6.28318548 * p.y;
-    float _t3 = cos(_t2);
+    float _t3 = schwarzp_o2_cos(_t2);
     float _t4 = 6.28318548 * p.x;
-    float _t5 = cos(_t4);
+    float _t5 = schwarzp_o2_cos(_t4);
     float _t6 = _t1 + _t3 + _t5;
-    float _t7 = sin(_t4);
-    float _t8 = sin(_t0);
-    float _t9 = sin(_t2);
+    float _t7 = schwarzp_o2_sin(_t4);
+    float _t8 = schwarzp_o2_sin(_t0);
+    float _t9 = schwarzp_o2_sin(_t2);
     float _t10 = sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
     float _t11 = 1.0 / _t10;
     float _t12 = 6.28318548 * (t * 0.5);
@@ -125,13 +150,13 @@ float schwarzp_o2_shell(float3 p, float t)
 float3 schwarzp_o2_normal(float3 p, float h)
 {
     float _t0 = 6.28318548 * p.y;
-    float _t1 = sin(_t0);
-    float _t2 = cos(_t0);
+    float _t1 = schwarzp_o2_sin(_t0);
+    float _t2 = schwarzp_o2_cos(_t0);
     float _t3 = 6.28318548 * p.x;
-    float _t4 = sin(_t3);
+    float _t4 = schwarzp_o2_sin(_t3);
     float _t5 = _t4 * _t4;
     float _t6 = p.z * 6.28318548;
-    float _t7 = sin(_t6);
+    float _t7 = schwarzp_o2_sin(_t6);
     float _t8 = _t7 * _t7;
     float _t9 = _t1 * _t1;
     float _t10 = _t5 + _t8 + _t9;
@@ -141,10 +166,10 @@ float3 schwarzp_o2_normal(float3 p, float h)
     float _t14 = 6.28318548 * h;
     float _t15 = _t14 * 0.5;
     float _t16 = _t1 + _t13 * _t15;
-    float _t17 = cos(_t3);
+    float _t17 = schwarzp_o2_cos(_t3);
     float _t18 = _t4 * _t17 * _t12;
     float _t19 = _t18 * _t15 + _t4;
-    float _t20 = cos(_t6);
+    float _t20 = schwarzp_o2_cos(_t6);
     float _t21 = _t20 * _t7 * _t12;
     float _t22 = _t21 * _t15 + _t7;
     float _t23 = sqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);

@@ -51,26 +51,51 @@ license: generated code, use freely
 #ifndef OFFSETGEN_SCHWARZP_O3_GLSL
 #define OFFSETGEN_SCHWARZP_O3_GLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, every value highp.
+highp float schwarzp_o3_sin(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+highp float schwarzp_o3_cos(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 highp float schwarzp_o3_field(highp vec3 p)
 {
-    return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
+    return schwarzp_o3_cos(p.z * 6.28318548) + schwarzp_o3_cos(6.28318548 * p.y) + schwarzp_o3_cos(6.28318548 * p.x);
 }
 
 // phi(p, h) of order 3: zero on the surface moved by h along +grad F. Total ops: 131.
 highp float schwarzp_o3_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = cos(_t0);
+    highp float _t1 = schwarzp_o3_cos(_t0);
     highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = cos(_t2);
+    highp float _t3 = schwarzp_o3_cos(_t2);
     highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = cos(_t4);
+    highp float _t5 = schwarzp_o3_cos(_t4);
     highp float _t6 = 6.28318548 * h;
-    highp float _t7 = sin(_t2);
-    highp float _t8 = sin(_t4);
+    highp float _t7 = schwarzp_o3_sin(_t2);
+    highp float _t8 = schwarzp_o3_sin(_t4);
     highp float _t9 = _t8 * _t8;
-    highp float _t10 = sin(_t0);
+    highp float _t10 = schwarzp_o3_sin(_t0);
     highp float _t11 = _t10 * _t10;
     highp float _t12 = _t7 * _t7;
     highp float _t13 = sqrt(_t9 + _t11 + _t12);
@@ -108,19 +133,19 @@ highp float schwarzp_o3_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = 6.28318548 * (t * 0.5);
     highp float _t1 = p.z * 6.28318548;
-    highp float _t2 = cos(_t1);
-    highp float _t3 = sin(_t1);
+    highp float _t2 = schwarzp_o3_cos(_t1);
+    highp float _t3 = schwarzp_o3_sin(_t1);
     highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = sin(_t4);
+    highp float _t5 = schwarzp_o3_sin(_t4);
     highp float _t6 = _t5 * _t5;
     highp float _t7 = _t3 * _t3;
     highp float _t8 = 6.28318548 * p.y;
-    highp float _t9 = sin(_t8);
+    highp float _t9 = schwarzp_o3_sin(_t8);
     highp float _t10 = _t9 * _t9;
     highp float _t11 = sqrt(_t6 + _t7 + _t10);
     highp float _t12 = 1.0 / _t11;
     highp float _t13 = _t2 * _t3 * _t12;
-    highp float _t14 = cos(_t8);
+    highp float _t14 = schwarzp_o3_cos(_t8);
     highp float _t15 = _t14 * _t9 * _t12;
     highp float _t16 = _t0 * 0.333333343;
     highp float _t17 = _t13 * _t15 * _t12 * _t16;
@@ -129,7 +154,7 @@ highp float schwarzp_o3_shell(highp vec3 p, highp float t)
     highp float _t20 = (_t13 * _t13 - (_t2 * _t2 - _t7)) * _t12 * _t16;
     highp float _t21 = _t13 * _t16;
     highp float _t22 = _t3 - _t21;
-    highp float _t23 = cos(_t4);
+    highp float _t23 = schwarzp_o3_cos(_t4);
     highp float _t24 = _t5 * _t23 * _t12;
     highp float _t25 = _t24 * _t13 * _t12 * _t16;
     highp float _t26 = _t24 * _t16;
@@ -175,14 +200,14 @@ highp float schwarzp_o3_shell(highp vec3 p, highp float t)
 highp vec3 schwarzp_o3_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.y;
-    highp float _t1 = cos(_t0);
-    highp float _t2 = sin(_t0);
+    highp float _t1 = schwarzp_o3_cos(_t0);
+    highp float _t2 = schwarzp_o3_sin(_t0);
     highp float _t3 = _t1 * _t2;
     highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = sin(_t4);
+    highp float _t5 = schwarzp_o3_sin(_t4);
     highp float _t6 = _t5 * _t5;
     highp float _t7 = p.z * 6.28318548;
-    highp float _t8 = sin(_t7);
+    highp float _t8 = schwarzp_o3_sin(_t7);
     highp float _t9 = _t8 * _t8;
     highp float _t10 = _t2 * _t2;
     highp float _t11 = _t6 + _t9 + _t10;
@@ -192,11 +217,11 @@ highp vec3 schwarzp_o3_normal(highp vec3 p, highp float h)
     highp float _t15 = 6.28318548 * h;
     highp float _t16 = _t15 * 0.333333343;
     highp float _t17 = _t14 * _t16 + _t2;
-    highp float _t18 = cos(_t4);
+    highp float _t18 = schwarzp_o3_cos(_t4);
     highp float _t19 = _t5 * _t18;
     highp float _t20 = _t19 * _t13;
     highp float _t21 = _t20 * _t16 + _t5;
-    highp float _t22 = cos(_t7);
+    highp float _t22 = schwarzp_o3_cos(_t7);
     highp float _t23 = _t22 * _t8;
     highp float _t24 = _t23 * _t13;
     highp float _t25 = _t8 + _t24 * _t16;

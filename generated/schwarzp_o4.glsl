@@ -51,27 +51,52 @@ license: generated code, use freely
 #ifndef OFFSETGEN_SCHWARZP_O4_GLSL
 #define OFFSETGEN_SCHWARZP_O4_GLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, every value highp.
+highp float schwarzp_o4_sin(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+highp float schwarzp_o4_cos(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 highp float schwarzp_o4_field(highp vec3 p)
 {
-    return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
+    return schwarzp_o4_cos(p.z * 6.28318548) + schwarzp_o4_cos(6.28318548 * p.y) + schwarzp_o4_cos(6.28318548 * p.x);
 }
 
 // phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 380.
 highp float schwarzp_o4_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = cos(_t0);
+    highp float _t1 = schwarzp_o4_cos(_t0);
     highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = cos(_t2);
+    highp float _t3 = schwarzp_o4_cos(_t2);
     highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = cos(_t4);
+    highp float _t5 = schwarzp_o4_cos(_t4);
     highp float _t6 = 6.28318548 * h;
-    highp float _t7 = sin(_t2);
+    highp float _t7 = schwarzp_o4_sin(_t2);
     highp float _t8 = _t3 * _t7;
-    highp float _t9 = sin(_t4);
+    highp float _t9 = schwarzp_o4_sin(_t4);
     highp float _t10 = _t9 * _t9;
-    highp float _t11 = sin(_t0);
+    highp float _t11 = schwarzp_o4_sin(_t0);
     highp float _t12 = _t11 * _t11;
     highp float _t13 = _t7 * _t7;
     highp float _t14 = sqrt(_t10 + _t12 + _t13);
@@ -154,14 +179,14 @@ highp float schwarzp_o4_shell(highp vec3 p, highp float t)
     highp float _t0 = 6.28318548 * (t * 0.5);
     highp float _t1 = _t0 * 0.25;
     highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = cos(_t2);
-    highp float _t4 = sin(_t2);
+    highp float _t3 = schwarzp_o4_cos(_t2);
+    highp float _t4 = schwarzp_o4_sin(_t2);
     highp float _t5 = _t3 * _t4;
     highp float _t6 = 6.28318548 * p.x;
-    highp float _t7 = sin(_t6);
+    highp float _t7 = schwarzp_o4_sin(_t6);
     highp float _t8 = _t7 * _t7;
     highp float _t9 = p.z * 6.28318548;
-    highp float _t10 = sin(_t9);
+    highp float _t10 = schwarzp_o4_sin(_t9);
     highp float _t11 = _t10 * _t10;
     highp float _t12 = _t4 * _t4;
     highp float _t13 = sqrt(_t8 + _t11 + _t12);
@@ -169,12 +194,12 @@ highp float schwarzp_o4_shell(highp vec3 p, highp float t)
     highp float _t15 = _t5 * _t14;
     highp float _t16 = _t1 * _t15;
     highp float _t17 = _t16 - _t4;
-    highp float _t18 = cos(_t6);
+    highp float _t18 = schwarzp_o4_cos(_t6);
     highp float _t19 = _t7 * _t18;
     highp float _t20 = _t19 * _t14;
     highp float _t21 = _t1 * _t20;
     highp float _t22 = _t7 - _t21;
-    highp float _t23 = cos(_t9);
+    highp float _t23 = schwarzp_o4_cos(_t9);
     highp float _t24 = _t23 * _t10;
     highp float _t25 = _t24 * _t14;
     highp float _t26 = _t1 * _t25;
@@ -299,14 +324,14 @@ highp float schwarzp_o4_shell(highp vec3 p, highp float t)
 highp vec3 schwarzp_o4_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.y;
-    highp float _t1 = cos(_t0);
-    highp float _t2 = sin(_t0);
+    highp float _t1 = schwarzp_o4_cos(_t0);
+    highp float _t2 = schwarzp_o4_sin(_t0);
     highp float _t3 = _t1 * _t2;
     highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = sin(_t4);
+    highp float _t5 = schwarzp_o4_sin(_t4);
     highp float _t6 = _t5 * _t5;
     highp float _t7 = p.z * 6.28318548;
-    highp float _t8 = sin(_t7);
+    highp float _t8 = schwarzp_o4_sin(_t7);
     highp float _t9 = _t8 * _t8;
     highp float _t10 = _t2 * _t2;
     highp float _t11 = _t6 + _t9 + _t10;
@@ -316,11 +341,11 @@ highp vec3 schwarzp_o4_normal(highp vec3 p, highp float h)
     highp float _t15 = 6.28318548 * h;
     highp float _t16 = _t15 * 0.333333343;
     highp float _t17 = _t14 * _t16 + _t2;
-    highp float _t18 = cos(_t4);
+    highp float _t18 = schwarzp_o4_cos(_t4);
     highp float _t19 = _t5 * _t18;
     highp float _t20 = _t19 * _t13;
     highp float _t21 = _t20 * _t16 + _t5;
-    highp float _t22 = cos(_t7);
+    highp float _t22 = schwarzp_o4_cos(_t7);
     highp float _t23 = _t22 * _t8;
     highp float _t24 = _t23 * _t13;
     highp float _t25 = _t8 + _t24 * _t16;

@@ -57,10 +57,35 @@ license: generated code, use freely
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O2_GLSL
 #define OFFSETGEN_SCHWARZP_PROJ_O2_GLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, every value highp.
+highp float schwarzp_proj_o2_sin(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+highp float schwarzp_proj_o2_cos(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 highp float schwarzp_proj_o2_field(highp vec3 p)
 {
-    return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
+    return schwarzp_proj_o2_cos(p.z * 6.28318548) + schwarzp_proj_o2_cos(6.28318548 * p.y) + schwarzp_proj_o2_cos(6.28318548 * p.x);
 }
 
 // phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 153.
@@ -68,12 +93,12 @@ highp float schwarzp_proj_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
     highp float _t1 = 6.28318548 * h;
-    highp float _t2 = sin(_t0);
+    highp float _t2 = schwarzp_proj_o2_sin(_t0);
     highp float _t3 = _t1 * _t2;
     highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = sin(_t4);
+    highp float _t5 = schwarzp_proj_o2_sin(_t4);
     highp float _t6 = 6.28318548 * p.y;
-    highp float _t7 = sin(_t6);
+    highp float _t7 = schwarzp_proj_o2_sin(_t6);
     highp float _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
     highp float _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
     highp float _t10 = _t3 * _t3 * _t9;
@@ -97,20 +122,20 @@ highp float schwarzp_proj_o2_offset(highp vec3 p, highp float h)
     highp float _t28 = (_t26) ? _t25 : 1.0;
     highp float _t29 = _t28 * _t28;
     highp float _t30 = _t29 * _t29;
-    return cos(_t0) * ((0.0416666679 - 0.00138888892 * _t12) * _t13 + (1.0 - _t12 * 0.5) + _t14 * (2.48015876e-05 - _t12 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t12) * _t13)) + (((1.60577024e-10 - 7.54937183e-13 * _t12) * _t13 + (2.75573188e-06 - 2.50520991e-08 * _t12)) * _t14 + ((0.00833333377 - 0.000198412701 * _t12) * _t13 + (1.0 - 0.166666672 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t2 + (((2.75573188e-06 - 2.50520991e-08 * _t20 + (1.60577024e-10 - 7.54937183e-13 * _t20) * _t21) * _t22 + ((0.00833333377 - 0.000198412701 * _t20) * _t21 + (1.0 - 0.166666672 * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t5 + ((_t21 * (2.08744777e-09 - 1.13046204e-11 * _t20) + (2.48015876e-05 - _t20 * 2.75573029e-07)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.0416666679 - 0.00138888892 * _t20))) * cos(_t4)) + (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t28 * 0.166666672 + (0.00833333377 - _t28 * 0.000198412701) * _t29 + _t30 * (2.75573188e-06 - _t28 * 2.50520991e-08 + _t29 * (1.60577024e-10 - _t28 * 7.54937183e-13))) * _t7 + (_t29 * (0.0416666679 - _t28 * 0.00138888892) + (1.0 - _t28 * 0.5) + (2.48015876e-05 - _t28 * 2.75573029e-07 + _t29 * (2.08744777e-09 - _t28 * 1.13046204e-11)) * _t30) * cos(_t6));
+    return schwarzp_proj_o2_cos(_t0) * ((0.0416666679 - 0.00138888892 * _t12) * _t13 + (1.0 - _t12 * 0.5) + _t14 * (2.48015876e-05 - _t12 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t12) * _t13)) + (((1.60577024e-10 - 7.54937183e-13 * _t12) * _t13 + (2.75573188e-06 - 2.50520991e-08 * _t12)) * _t14 + ((0.00833333377 - 0.000198412701 * _t12) * _t13 + (1.0 - 0.166666672 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t2 + (((2.75573188e-06 - 2.50520991e-08 * _t20 + (1.60577024e-10 - 7.54937183e-13 * _t20) * _t21) * _t22 + ((0.00833333377 - 0.000198412701 * _t20) * _t21 + (1.0 - 0.166666672 * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t5 + ((_t21 * (2.08744777e-09 - 1.13046204e-11 * _t20) + (2.48015876e-05 - _t20 * 2.75573029e-07)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.0416666679 - 0.00138888892 * _t20))) * schwarzp_proj_o2_cos(_t4)) + (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t28 * 0.166666672 + (0.00833333377 - _t28 * 0.000198412701) * _t29 + _t30 * (2.75573188e-06 - _t28 * 2.50520991e-08 + _t29 * (1.60577024e-10 - _t28 * 7.54937183e-13))) * _t7 + (_t29 * (0.0416666679 - _t28 * 0.00138888892) + (1.0 - _t28 * 0.5) + (2.48015876e-05 - _t28 * 2.75573029e-07 + _t29 * (2.08744777e-09 - _t28 * 1.13046204e-11)) * _t30) * schwarzp_proj_o2_cos(_t6));
 }
 
 // phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 175.
 highp float schwarzp_proj_o2_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = sin(_t0);
+    highp float _t1 = schwarzp_proj_o2_sin(_t0);
     highp float _t2 = 6.28318548 * (t * 0.5);
     highp float _t3 = _t1 * _t2;
     highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = sin(_t4);
+    highp float _t5 = schwarzp_proj_o2_sin(_t4);
     highp float _t6 = 6.28318548 * p.y;
-    highp float _t7 = sin(_t6);
+    highp float _t7 = schwarzp_proj_o2_sin(_t6);
     highp float _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
     highp float _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
     highp float _t10 = _t3 * _t3 * _t9;
@@ -118,7 +143,7 @@ highp float schwarzp_proj_o2_shell(highp vec3 p, highp float t)
     highp float _t12 = (_t11) ? _t10 : 1.0;
     highp float _t13 = _t12 * _t12;
     highp float _t14 = _t13 * _t13;
-    highp float _t15 = (((2.08744777e-09 - _t12 * 1.13046204e-11) * _t13 + (2.48015876e-05 - _t12 * 2.75573029e-07)) * _t14 + (1.0 - _t12 * 0.5 + (0.0416666679 - _t12 * 0.00138888892) * _t13)) * cos(_t0);
+    highp float _t15 = (((2.08744777e-09 - _t12 * 1.13046204e-11) * _t13 + (2.48015876e-05 - _t12 * 2.75573029e-07)) * _t14 + (1.0 - _t12 * 0.5 + (0.0416666679 - _t12 * 0.00138888892) * _t13)) * schwarzp_proj_o2_cos(_t0);
     highp float _t16 = sqrt(_t9);
     highp float _t17 = _t3 * _t16;
     highp float _t18 = -_t17;
@@ -129,7 +154,7 @@ highp float schwarzp_proj_o2_shell(highp vec3 p, highp float t)
     highp float _t23 = (_t22) ? _t21 : 1.0;
     highp float _t24 = _t23 * _t23;
     highp float _t25 = _t24 * _t24;
-    highp float _t26 = ((2.48015876e-05 - _t23 * 2.75573029e-07 + _t24 * (2.08744777e-09 - _t23 * 1.13046204e-11)) * _t25 + (_t24 * (0.0416666679 - 0.00138888892 * _t23) + (1.0 - _t23 * 0.5))) * cos(_t4);
+    highp float _t26 = ((2.48015876e-05 - _t23 * 2.75573029e-07 + _t24 * (2.08744777e-09 - _t23 * 1.13046204e-11)) * _t25 + (_t24 * (0.0416666679 - 0.00138888892 * _t23) + (1.0 - _t23 * 0.5))) * schwarzp_proj_o2_cos(_t4);
     highp float _t27 = _t20 * _t16;
     highp float _t28 = -_t27;
     highp float _t29 = (_t24 * (1.60577024e-10 - 7.54937183e-13 * _t23) + (2.75573188e-06 - 2.50520991e-08 * _t23)) * _t25 + ((0.00833333377 - _t23 * 0.000198412701) * _t24 + (1.0 - 0.166666672 * _t23));
@@ -139,7 +164,7 @@ highp float schwarzp_proj_o2_shell(highp vec3 p, highp float t)
     highp float _t33 = (_t32) ? _t31 : 1.0;
     highp float _t34 = _t33 * _t33;
     highp float _t35 = _t34 * _t34;
-    highp float _t36 = (1.0 - _t33 * 0.5 + _t34 * (0.0416666679 - _t33 * 0.00138888892) + _t35 * ((2.08744777e-09 - _t33 * 1.13046204e-11) * _t34 + (2.48015876e-05 - _t33 * 2.75573029e-07))) * cos(_t6);
+    highp float _t36 = (1.0 - _t33 * 0.5 + _t34 * (0.0416666679 - _t33 * 0.00138888892) + _t35 * ((2.08744777e-09 - _t33 * 1.13046204e-11) * _t34 + (2.48015876e-05 - _t33 * 2.75573029e-07))) * schwarzp_proj_o2_cos(_t6);
     highp float _t37 = _t30 * _t16;
     highp float _t38 = -_t37;
     highp float _t39 = 1.0 - _t33 * 0.166666672 + (0.00833333377 - _t33 * 0.000198412701) * _t34 + _t35 * (_t34 * (1.60577024e-10 - _t33 * 7.54937183e-13) + (2.75573188e-06 - _t33 * 2.50520991e-08));
@@ -151,12 +176,12 @@ highp vec3 schwarzp_proj_o2_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * h;
     highp float _t1 = 6.28318548 * p.x;
-    highp float _t2 = sin(_t1);
+    highp float _t2 = schwarzp_proj_o2_sin(_t1);
     highp float _t3 = _t0 * _t2;
     highp float _t4 = p.z * 6.28318548;
-    highp float _t5 = sin(_t4);
+    highp float _t5 = schwarzp_proj_o2_sin(_t4);
     highp float _t6 = 6.28318548 * p.y;
-    highp float _t7 = sin(_t6);
+    highp float _t7 = schwarzp_proj_o2_sin(_t6);
     highp float _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
     highp float _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
     highp float _t10 = _t3 * _t3 * _t9;
@@ -166,7 +191,7 @@ highp vec3 schwarzp_proj_o2_normal(highp vec3 p, highp float h)
     highp float _t14 = _t13 * _t13;
     highp float _t15 = sqrt(_t9);
     highp float _t16 = -(_t3 * _t15);
-    highp float _t17 = ((_t13 * (2.08744777e-09 - 1.13046204e-11 * _t12) + (2.48015876e-05 - _t12 * 2.75573029e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.0416666679 - 0.00138888892 * _t12))) * _t2 - ((2.75573188e-06 - 2.50520991e-08 * _t12 + (1.60577024e-10 - 7.54937183e-13 * _t12) * _t13) * _t14 + ((0.00833333377 - 0.000198412701 * _t12) * _t13 + (1.0 - 0.166666672 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * cos(_t1);
+    highp float _t17 = ((_t13 * (2.08744777e-09 - 1.13046204e-11 * _t12) + (2.48015876e-05 - _t12 * 2.75573029e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.0416666679 - 0.00138888892 * _t12))) * _t2 - ((2.75573188e-06 - 2.50520991e-08 * _t12 + (1.60577024e-10 - 7.54937183e-13 * _t12) * _t13) * _t14 + ((0.00833333377 - 0.000198412701 * _t12) * _t13 + (1.0 - 0.166666672 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * schwarzp_proj_o2_cos(_t1);
     highp float _t18 = _t0 * _t5;
     highp float _t19 = _t18 * _t18 * _t9;
     bool _t20 = _t19 <= 1.0;
@@ -174,7 +199,7 @@ highp vec3 schwarzp_proj_o2_normal(highp vec3 p, highp float h)
     highp float _t22 = _t21 * _t21;
     highp float _t23 = _t22 * _t22;
     highp float _t24 = -(_t18 * _t15);
-    highp float _t25 = _t5 * ((0.0416666679 - 0.00138888892 * _t21) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.48015876e-05 - _t21 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t21) * _t22)) - (((1.60577024e-10 - 7.54937183e-13 * _t21) * _t22 + (2.75573188e-06 - 2.50520991e-08 * _t21)) * _t23 + ((0.00833333377 - 0.000198412701 * _t21) * _t22 + (1.0 - 0.166666672 * _t21))) * ((_t20) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0))) * cos(_t4);
+    highp float _t25 = _t5 * ((0.0416666679 - 0.00138888892 * _t21) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.48015876e-05 - _t21 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t21) * _t22)) - (((1.60577024e-10 - 7.54937183e-13 * _t21) * _t22 + (2.75573188e-06 - 2.50520991e-08 * _t21)) * _t23 + ((0.00833333377 - 0.000198412701 * _t21) * _t22 + (1.0 - 0.166666672 * _t21))) * ((_t20) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0))) * schwarzp_proj_o2_cos(_t4);
     highp float _t26 = _t0 * _t7;
     highp float _t27 = _t9 * (_t26 * _t26);
     bool _t28 = _t27 <= 1.0;
@@ -182,7 +207,7 @@ highp vec3 schwarzp_proj_o2_normal(highp vec3 p, highp float h)
     highp float _t30 = _t29 * _t29;
     highp float _t31 = _t30 * _t30;
     highp float _t32 = -(_t26 * _t15);
-    highp float _t33 = (_t30 * (0.0416666679 - _t29 * 0.00138888892) + (1.0 - _t29 * 0.5) + (2.48015876e-05 - _t29 * 2.75573029e-07 + _t30 * (2.08744777e-09 - _t29 * 1.13046204e-11)) * _t31) * _t7 - cos(_t6) * (((_t28) ? _t32 : ((_t32 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t29 * 0.166666672 + (0.00833333377 - _t29 * 0.000198412701) * _t30 + _t31 * (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - _t29 * 7.54937183e-13))));
+    highp float _t33 = (_t30 * (0.0416666679 - _t29 * 0.00138888892) + (1.0 - _t29 * 0.5) + (2.48015876e-05 - _t29 * 2.75573029e-07 + _t30 * (2.08744777e-09 - _t29 * 1.13046204e-11)) * _t31) * _t7 - schwarzp_proj_o2_cos(_t6) * (((_t28) ? _t32 : ((_t32 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t29 * 0.166666672 + (0.00833333377 - _t29 * 0.000198412701) * _t30 + _t31 * (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - _t29 * 7.54937183e-13))));
     highp float _t34 = _t17 * _t17 + _t25 * _t25 + _t33 * _t33;
     highp float _t35 = (_t34 > 0.0) ? 1.0 / sqrt(_t34) : 0.0;
     return vec3(-(_t17 * _t35), -(_t33 * _t35), -(_t25 * _t35));

@@ -57,24 +57,49 @@ license: generated code, use freely
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O8_GLSL
 #define OFFSETGEN_SCHWARZP_PROJ_O8_GLSL
 
+// sin and cos of the snippet's own, not the driver's: GPU and software (SwiftShader) builtins are off
+// by up to 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on
+// [-pi/4, pi/4], within 1e-7 of sin and cos for |a| <= 8192 (1300 cells); float only, every value highp.
+highp float schwarzp_proj_o8_sin(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? s : (m < 1.5) ? c : (m < 2.5) ? -s : -c;
+}
+
+highp float schwarzp_proj_o8_cos(highp float a)
+{
+    highp float q = floor(a * 0.636619772 + 0.5);
+    highp float r = ((a - q * 1.5703125) - q * 4.83751297e-04) - q * 7.54978995e-08;
+    highp float z = r * r;
+    highp float s = r + r * z * ((-1.9515295891e-4 * z + 8.3321608736e-3) * z - 1.6666654611e-1);
+    highp float c = 1.0 - 0.5 * z + z * z * ((2.443315711809948e-5 * z - 1.388731625493765e-3) * z + 4.166664568298827e-2);
+    highp float m = q - 4.0 * floor(0.25 * q);
+    return (m < 0.5) ? c : (m < 1.5) ? -s : (m < 2.5) ? -c : s;
+}
+
 // F, the field; the surface is F = 0. Total ops: 8.
 highp float schwarzp_proj_o8_field(highp vec3 p)
 {
-    return cos(p.z * 6.28318548) + cos(6.28318548 * p.y) + cos(6.28318548 * p.x);
+    return schwarzp_proj_o8_cos(p.z * 6.28318548) + schwarzp_proj_o8_cos(6.28318548 * p.y) + schwarzp_proj_o8_cos(6.28318548 * p.x);
 }
 
 // phi(p, h) of order 8: zero on the surface moved by h along +grad F. Total ops: 576.
 highp float schwarzp_proj_o8_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * p.y;
-    highp float _t1 = cos(_t0);
+    highp float _t1 = schwarzp_proj_o8_cos(_t0);
     highp float _t2 = p.z * 6.28318548;
-    highp float _t3 = sin(_t2);
+    highp float _t3 = schwarzp_proj_o8_sin(_t2);
     highp float _t4 = 6.28318548 * h;
     highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = sin(_t5);
+    highp float _t6 = schwarzp_proj_o8_sin(_t5);
     highp float _t7 = _t4 * _t6;
-    highp float _t8 = sin(_t0);
+    highp float _t8 = schwarzp_proj_o8_sin(_t0);
     highp float _t9 = _t6 * _t6 + _t3 * _t3 + _t8 * _t8;
     highp float _t10 = (_t9 > 0.0) ? 1.0 / _t9 : 0.0;
     highp float _t11 = _t7 * _t7 * _t10;
@@ -84,7 +109,7 @@ highp float schwarzp_proj_o8_offset(highp vec3 p, highp float h)
     highp float _t15 = _t14 * _t14;
     highp float _t16 = sqrt(_t10);
     highp float _t17 = -(_t7 * _t16);
-    highp float _t18 = cos(_t5);
+    highp float _t18 = schwarzp_proj_o8_cos(_t5);
     highp float _t19 = ((_t14 * (2.08744777e-09 - 1.13046204e-11 * _t13) + (2.48015876e-05 - _t13 * 2.75573029e-07)) * _t15 + (1.0 - _t13 * 0.5 + _t14 * (0.0416666679 - 0.00138888892 * _t13))) * _t6 - ((2.75573188e-06 - 2.50520991e-08 * _t13 + (1.60577024e-10 - 7.54937183e-13 * _t13) * _t14) * _t15 + ((0.00833333377 - 0.000198412701 * _t13) * _t14 + (1.0 - 0.166666672 * _t13))) * ((_t12) ? _t17 : ((_t17 > 0.0) ? 1.0 : (-1.0))) * _t18;
     highp float _t20 = _t4 * _t3;
     highp float _t21 = _t20 * _t20 * _t10;
@@ -93,7 +118,7 @@ highp float schwarzp_proj_o8_offset(highp vec3 p, highp float h)
     highp float _t24 = _t23 * _t23;
     highp float _t25 = _t24 * _t24;
     highp float _t26 = -(_t20 * _t16);
-    highp float _t27 = cos(_t2);
+    highp float _t27 = schwarzp_proj_o8_cos(_t2);
     highp float _t28 = _t3 * ((0.0416666679 - 0.00138888892 * _t23) * _t24 + (1.0 - _t23 * 0.5) + _t25 * (2.48015876e-05 - _t23 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t23) * _t24)) - (((1.60577024e-10 - 7.54937183e-13 * _t23) * _t24 + (2.75573188e-06 - 2.50520991e-08 * _t23)) * _t25 + ((0.00833333377 - 0.000198412701 * _t23) * _t24 + (1.0 - 0.166666672 * _t23))) * ((_t22) ? _t26 : ((_t26 > 0.0) ? 1.0 : (-1.0))) * _t27;
     highp float _t29 = _t4 * _t8;
     highp float _t30 = _t10 * (_t29 * _t29);
@@ -188,13 +213,13 @@ highp float schwarzp_proj_o8_offset(highp vec3 p, highp float h)
 highp float schwarzp_proj_o8_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = sin(_t0);
+    highp float _t1 = schwarzp_proj_o8_sin(_t0);
     highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = sin(_t2);
+    highp float _t3 = schwarzp_proj_o8_sin(_t2);
     highp float _t4 = 6.28318548 * (t * 0.5);
     highp float _t5 = _t3 * _t4;
     highp float _t6 = 6.28318548 * p.x;
-    highp float _t7 = sin(_t6);
+    highp float _t7 = schwarzp_proj_o8_sin(_t6);
     highp float _t8 = _t7 * _t7 + _t1 * _t1 + _t3 * _t3;
     highp float _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
     highp float _t10 = _t5 * _t5 * _t9;
@@ -203,7 +228,7 @@ highp float schwarzp_proj_o8_shell(highp vec3 p, highp float t)
     highp float _t13 = _t12 * _t12;
     highp float _t14 = _t13 * _t13;
     highp float _t15 = (1.0 - _t12 * 0.5 + _t13 * (0.0416666679 - _t12 * 0.00138888892) + _t14 * ((2.08744777e-09 - _t12 * 1.13046204e-11) * _t13 + (2.48015876e-05 - _t12 * 2.75573029e-07))) * _t3;
-    highp float _t16 = cos(_t2);
+    highp float _t16 = schwarzp_proj_o8_cos(_t2);
     highp float _t17 = 1.0 - _t12 * 0.166666672 + (0.00833333377 - _t12 * 0.000198412701) * _t13 + _t14 * (_t13 * (1.60577024e-10 - _t12 * 7.54937183e-13) + (2.75573188e-06 - _t12 * 2.50520991e-08));
     highp float _t18 = sqrt(_t9);
     highp float _t19 = _t5 * _t18;
@@ -218,7 +243,7 @@ highp float schwarzp_proj_o8_shell(highp vec3 p, highp float t)
     highp float _t28 = ((2.48015876e-05 - _t25 * 2.75573029e-07 + _t26 * (2.08744777e-09 - _t25 * 1.13046204e-11)) * _t27 + (_t26 * (0.0416666679 - 0.00138888892 * _t25) + (1.0 - _t25 * 0.5))) * _t7;
     highp float _t29 = _t22 * _t18;
     highp float _t30 = (_t26 * (1.60577024e-10 - 7.54937183e-13 * _t25) + (2.75573188e-06 - 2.50520991e-08 * _t25)) * _t27 + ((0.00833333377 - _t25 * 0.000198412701) * _t26 + (1.0 - 0.166666672 * _t25));
-    highp float _t31 = cos(_t6);
+    highp float _t31 = schwarzp_proj_o8_cos(_t6);
     highp float _t32 = _t28 - ((_t24) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0))) * _t30 * _t31;
     highp float _t33 = _t1 * _t4;
     highp float _t34 = _t33 * _t33 * _t9;
@@ -227,7 +252,7 @@ highp float schwarzp_proj_o8_shell(highp vec3 p, highp float t)
     highp float _t37 = _t36 * _t36;
     highp float _t38 = _t37 * _t37;
     highp float _t39 = (((2.08744777e-09 - _t36 * 1.13046204e-11) * _t37 + (2.48015876e-05 - _t36 * 2.75573029e-07)) * _t38 + (1.0 - _t36 * 0.5 + (0.0416666679 - _t36 * 0.00138888892) * _t37)) * _t1;
-    highp float _t40 = cos(_t0);
+    highp float _t40 = schwarzp_proj_o8_cos(_t0);
     highp float _t41 = _t33 * _t18;
     highp float _t42 = _t37 * (0.00833333377 - _t36 * 0.000198412701) + (1.0 - _t36 * 0.166666672) + (2.75573188e-06 - _t36 * 2.50520991e-08 + (1.60577024e-10 - _t36 * 7.54937183e-13) * _t37) * _t38;
     highp float _t43 = _t39 - _t40 * (((_t35) ? _t41 : ((_t41 > 0.0) ? 1.0 : (-1.0))) * _t42);
@@ -400,12 +425,12 @@ highp vec3 schwarzp_proj_o8_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * h;
     highp float _t1 = 6.28318548 * p.x;
-    highp float _t2 = sin(_t1);
+    highp float _t2 = schwarzp_proj_o8_sin(_t1);
     highp float _t3 = _t0 * _t2;
     highp float _t4 = p.z * 6.28318548;
-    highp float _t5 = sin(_t4);
+    highp float _t5 = schwarzp_proj_o8_sin(_t4);
     highp float _t6 = 6.28318548 * p.y;
-    highp float _t7 = sin(_t6);
+    highp float _t7 = schwarzp_proj_o8_sin(_t6);
     highp float _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
     highp float _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
     highp float _t10 = _t3 * _t3 * _t9;
@@ -415,7 +440,7 @@ highp vec3 schwarzp_proj_o8_normal(highp vec3 p, highp float h)
     highp float _t14 = _t13 * _t13;
     highp float _t15 = sqrt(_t9);
     highp float _t16 = -(_t3 * _t15);
-    highp float _t17 = cos(_t1);
+    highp float _t17 = schwarzp_proj_o8_cos(_t1);
     highp float _t18 = ((_t13 * (2.08744777e-09 - 1.13046204e-11 * _t12) + (2.48015876e-05 - _t12 * 2.75573029e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.0416666679 - 0.00138888892 * _t12))) * _t2 - ((2.75573188e-06 - 2.50520991e-08 * _t12 + (1.60577024e-10 - 7.54937183e-13 * _t12) * _t13) * _t14 + ((0.00833333377 - 0.000198412701 * _t12) * _t13 + (1.0 - 0.166666672 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t17;
     highp float _t19 = _t0 * _t5;
     highp float _t20 = _t19 * _t19 * _t9;
@@ -424,7 +449,7 @@ highp vec3 schwarzp_proj_o8_normal(highp vec3 p, highp float h)
     highp float _t23 = _t22 * _t22;
     highp float _t24 = _t23 * _t23;
     highp float _t25 = -(_t19 * _t15);
-    highp float _t26 = cos(_t4);
+    highp float _t26 = schwarzp_proj_o8_cos(_t4);
     highp float _t27 = _t5 * ((0.0416666679 - 0.00138888892 * _t22) * _t23 + (1.0 - _t22 * 0.5) + _t24 * (2.48015876e-05 - _t22 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t22) * _t23)) - (((1.60577024e-10 - 7.54937183e-13 * _t22) * _t23 + (2.75573188e-06 - 2.50520991e-08 * _t22)) * _t24 + ((0.00833333377 - 0.000198412701 * _t22) * _t23 + (1.0 - 0.166666672 * _t22))) * ((_t21) ? _t25 : ((_t25 > 0.0) ? 1.0 : (-1.0))) * _t26;
     highp float _t28 = _t0 * _t7;
     highp float _t29 = _t9 * (_t28 * _t28);
@@ -432,7 +457,7 @@ highp vec3 schwarzp_proj_o8_normal(highp vec3 p, highp float h)
     highp float _t31 = (_t30) ? _t29 : 1.0;
     highp float _t32 = _t31 * _t31;
     highp float _t33 = _t32 * _t32;
-    highp float _t34 = cos(_t6);
+    highp float _t34 = schwarzp_proj_o8_cos(_t6);
     highp float _t35 = -(_t28 * _t15);
     highp float _t36 = (_t32 * (0.0416666679 - _t31 * 0.00138888892) + (1.0 - _t31 * 0.5) + (2.48015876e-05 - _t31 * 2.75573029e-07 + _t32 * (2.08744777e-09 - _t31 * 1.13046204e-11)) * _t33) * _t7 - _t34 * (((_t30) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t31 * 0.166666672 + (0.00833333377 - _t31 * 0.000198412701) * _t32 + _t33 * (2.75573188e-06 - _t31 * 2.50520991e-08 + _t32 * (1.60577024e-10 - _t31 * 7.54937183e-13))));
     highp float _t37 = _t18 * _t18 + _t27 * _t27 + _t36 * _t36;

@@ -1,5 +1,7 @@
 #include "check/check.h"
 
+#include "check/numpy_runner.h"
+#include "check/plot.h"
 #include "check/progress.h"
 #include "check/reference.h"
 #include "validate/cell_domain.h"
@@ -151,6 +153,62 @@ void check_glsl(const CheckSettings& s, const std::string& text, const std::opti
   report.pass = std::all_of(report.verdicts.begin(), report.verdicts.end(), [](const Verdict& v) { return v.pass; });
 }
 
+// A NumPy module's functions under python3: inputs (x, y, z, h|t) or (x, y, h|t, 0).
+Float64Runner python_runner(const std::string& python, const std::string& path, const FileMetadata& meta) {
+  return [python, path, meta](const std::string& function, const std::vector<std::array<double, 4>>& inputs,
+                              int components) {
+    const bool with_distance = function == "offset" || function == "shell" || function == "normal";
+    std::vector<std::vector<double>> columns(static_cast<size_t>(meta.dims + (with_distance ? 1 : 0)),
+                                             std::vector<double>(inputs.size()));
+    for (size_t i = 0; i < inputs.size(); ++i)
+      for (size_t k = 0; k < columns.size(); ++k) columns[k][i] = inputs[i][k];
+    return numpy_run::run(python, path, meta.prefix + "_" + function, columns, components);
+  };
+}
+
+// A NumPy module: python3 imports it, then its values against the 40-digit reference, within the
+// double tolerance (the module computes in float64). As for GLSL snippets, the thickness sweep and
+// the density relations are left to the C header of the same generation.
+void check_numpy(const CheckSettings& s, const std::optional<GiNaC::ex>& file_thickness, CheckReport& report) {
+  const FileMetadata& meta = report.meta;
+  const std::string python = find_python();
+  bool imported = false;
+  try {
+    report.toolchain = numpy_run::describe_python(python);
+    numpy_run::import_module(python, s.file);
+    imported = true;
+    report.verdicts.push_back({"import", true, true, "python3 imports the module"});
+  } catch (const std::runtime_error& e) {
+    report.verdicts.push_back({"import", false, true, e.what()});
+  }
+  if (meta.has_density)
+    report.warnings.push_back(
+        "the density relations of a NumPy module are not checked (check the C header of the same generation)");
+  if (s.run_values && imported) {
+    Progress progress;
+    progress.update("model", "rebuilding the symbolic offset model from the metadata");
+    std::unique_ptr<Reference> reference = rebuild_reference(meta);
+    report.warnings.insert(report.warnings.end(), reference->warnings.begin(), reference->warnings.end());
+    report.surface_title = reference->generation.surface.title;
+    ValueCheckOptions value_options = s.values;
+    value_options.progress = [&progress, &s](int done, int total) {
+      progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
+    };
+    Implementations impl;
+    impl.numpy = python_runner(python, s.file, meta);
+    impl.numpy_graded = meta.thickness.has_value();
+    try {
+      report.values = check_values(impl, *reference, meta, file_thickness, value_options);
+      report.verdicts.push_back(values_verdict("values under NumPy", *report.values));
+    } catch (const std::runtime_error& e) {
+      report.verdicts.push_back(
+          {"values under NumPy", false, true, fmt::format("cannot run the module: {}", e.what())});
+    }
+    progress.clear();
+  }
+  report.pass = std::all_of(report.verdicts.begin(), report.verdicts.end(), [](const Verdict& v) { return v.pass; });
+}
+
 }  // namespace
 
 std::vector<double> default_sweep() {
@@ -203,6 +261,10 @@ CheckReport run_checks(const CheckSettings& s) {
   if (meta.thickness) file_thickness = parse_thickness(*meta.thickness, meta, {});
   if (meta.kind == FileKind::Glsl) {
     check_glsl(s, text, file_thickness, report);
+    return report;
+  }
+  if (meta.kind == FileKind::Numpy) {
+    check_numpy(s, file_thickness, report);
     return report;
   }
   const Toolchain tools = find_toolchain();

@@ -90,13 +90,28 @@ FileKind file_kind(const json& j, const std::string& text) {
         fmt::format("offsetgen check has no checker for {} files yet (language \"{}\"); the test suite "
                     "compiles them (see README)",
                     target->title(), language));
+  if (language == "numpy") return FileKind::Numpy;
   return language == "c" ? FileKind::C : FileKind::Glsl;
 }
 
 }  // namespace
 
+const char* kind_name(FileKind kind) {
+  switch (kind) {
+    case FileKind::C:
+      return "c";
+    case FileKind::Glsl:
+      return "glsl";
+    case FileKind::Numpy:
+      return "numpy";
+  }
+  return "c";
+}
+
 FileMetadata parse_metadata(const std::string& text) {
-  const std::string opener = std::string("/* ") + kMarker;
+  // A C-style comment, or a Python comment line (NumPy modules): `# offsetgen-metadata {...}`.
+  const bool python = text.find(std::string("\n# ") + kMarker + " ") != std::string::npos;
+  const std::string opener = std::string(python ? "\n# " : "/* ") + kMarker;
   auto start = text.find(opener);
   if (start == std::string::npos) {
     throw InputError(
@@ -108,7 +123,7 @@ FileMetadata parse_metadata(const std::string& text) {
     damaged("the file holds more than one metadata block (two generated files pasted together?)");
   auto json_begin = start + opener.size();
   auto line_end = text.find('\n', json_begin);
-  auto close = text.find("*/", json_begin);
+  auto close = python ? (line_end == std::string::npos ? text.size() : line_end) : text.find("*/", json_begin);
   if (close == std::string::npos || (line_end != std::string::npos && close > line_end))
     damaged("the block does not end with `*/` on its line");
   std::string body = text.substr(json_begin, close - json_begin);

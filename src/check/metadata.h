@@ -10,7 +10,10 @@
 
 namespace offsetgen::check {
 
-enum class FileKind { C, Glsl };
+enum class FileKind { C, Glsl, Numpy };
+
+// "c", "glsl", "numpy": the backend's name (emit/backend.h).
+const char* kind_name(FileKind kind);
 
 struct FileMetadata {
   FileKind kind = FileKind::C;

@@ -30,7 +30,7 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
   request.density = meta.wall_density;
   request.density_field = meta.density_field;
   // The file's own language: its names need only be valid there.
-  request.languages = {meta.kind == FileKind::C ? "c" : "glsl"};
+  request.languages = {kind_name(meta.kind)};
   const std::string default_prefix = meta.surface ? fmt::format("{}_o{}", *meta.surface, meta.order) : "";
   if (meta.expression || meta.prefix != default_prefix) request.name = meta.prefix;
   if (meta.expression && meta.prefix.empty()) request.name = "surface";

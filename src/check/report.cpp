@@ -72,7 +72,10 @@ std::string format_report(const CheckReport& r) {
     line(fmt::format("             {}; safeguard bound M = {:.6g}", r.surface_title, m.gradient_bound));
   for (const auto& w : r.warnings) line("  warning    " + w);
 
-  if (m.kind == FileKind::Glsl) {
+  if (m.kind == FileKind::Numpy) {
+    line("");
+    line(fmt::format("1. Import ({})", r.toolchain.empty() ? "no python3 with NumPy" : r.toolchain));
+  } else if (m.kind == FileKind::Glsl) {
     line("");
     line("GLSL compile (glslangValidator -l, host fragment shader calling every function):");
     for (const auto& g : r.glsl) {
@@ -100,7 +103,10 @@ std::string format_report(const CheckReport& r) {
     const ValueReport& v = *r.values;
     line("");
     line(fmt::format("2. Values: {} vs a {}-digit CLN evaluation of the symbolic model at random points",
-                     m.kind == FileKind::Glsl ? "the snippet on Mesa llvmpipe (float32)" : "compiled code", v.digits));
+                     m.kind == FileKind::Glsl    ? "the snippet on Mesa llvmpipe (float32)"
+                     : m.kind == FileKind::Numpy ? "the module under python3 (NumPy, float64)"
+                                                 : "compiled code",
+                     v.digits));
     line("   in the cell, h and t/2 uniform in [-0.1, 0.1]; shift = how far the deviation moves the zero set (cell");
     line("   units); for the normal, |dn|. Every function is judged against the limit of its precision.");
     line(fmt::format("  {:<14} {:>6} {:>11} {:>11} {:>8}  {:<4}  {}", "function", "points", "max shift", "mean shift",
@@ -195,7 +201,7 @@ ojson report_json(const CheckReport& r) {
   const FileMetadata& m = r.meta;
   const int dims = m.dims;
   j["file"] = r.file;
-  j["kind"] = m.kind == FileKind::C ? "c" : "glsl";
+  j["kind"] = kind_name(m.kind);
   j["metadata"] = ojson::parse(m.json);
   j["warnings"] = r.warnings;
   j["pass"] = r.pass;
@@ -205,7 +211,9 @@ ojson report_json(const CheckReport& r) {
     verdicts.push_back({{"name", v.name}, {"pass", v.pass}, {"judged", v.judged}, {"detail", v.detail}});
   j["verdicts"] = verdicts;
 
-  if (m.kind == FileKind::Glsl) {
+  if (m.kind == FileKind::Numpy) {
+    j["python"] = r.toolchain;
+  } else if (m.kind == FileKind::Glsl) {
     ojson g = ojson::array();
     for (const auto& c : r.glsl)
       g.push_back({{"target", c.name}, {"ok", c.ok}, {"command", c.command}, {"output", c.output}});

@@ -218,45 +218,48 @@ void compare_batch(BatchFunction<T> offset_n, BatchFunction<T> shell_n, const ch
   }
 }
 
-// A float32 runner (GLSL): one run per function over all points.
-void compare_float32(const Implementations& impl, const std::vector<Sample>& samples, int dims, double tol,
-                     double normal_tol, std::vector<FunctionDeviation>& out) {
-  const std::string label = impl.glsl_label + " ";
+// A runner (GLSL in float32, NumPy in float64): one run per function over all points.
+template <typename T, typename Runner>
+void compare_runner(const Runner& run, const std::string& runner_label, bool has_graded,
+                    const std::vector<Sample>& samples, int dims, double tol, double normal_tol,
+                    std::vector<FunctionDeviation>& out) {
+  const bool is_float = std::is_same<T, float>::value;
+  const std::string label = runner_label + " ";
   auto inputs = [&](bool with_t) {
-    std::vector<std::array<float, 4>> in;
+    std::vector<std::array<T, 4>> in;
     for (const Sample& s : samples) {
-      std::array<float, 4> q{};
-      for (int k = 0; k < dims; ++k) q[static_cast<size_t>(k)] = static_cast<float>(s.p[static_cast<size_t>(k)]);
-      q[static_cast<size_t>(dims)] = static_cast<float>(with_t ? s.t : s.h);
+      std::array<T, 4> q{};
+      for (int k = 0; k < dims; ++k) q[static_cast<size_t>(k)] = static_cast<T>(s.p[static_cast<size_t>(k)]);
+      q[static_cast<size_t>(dims)] = static_cast<T>(with_t ? s.t : s.h);
       in.push_back(q);
     }
     return in;
   };
   const auto at_h = inputs(false), at_t = inputs(true);
   {
-    Accumulator a(label + "field", true, kFieldMeasure, tol);
-    const auto v = impl.glsl("field", at_h, 1);
+    Accumulator a(label + "field", is_float, kFieldMeasure, tol);
+    const auto v = run("field", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].field) / samples[i].grad_norm, samples[i].p);
     out.push_back(a.done());
   }
   {
-    Accumulator a(label + "offset", true, kOffsetMeasure, tol);
-    const auto v = impl.glsl("offset", at_h, 1);
+    Accumulator a(label + "offset", is_float, kOffsetMeasure, tol);
+    const auto v = run("offset", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].phi) / samples[i].grad_norm, with(samples[i].p, samples[i].h));
     out.push_back(a.done());
   }
   {
-    Accumulator a(label + "shell", true, kShellMeasure, tol);
-    const auto v = impl.glsl("shell", at_t, 1);
+    Accumulator a(label + "shell", is_float, kShellMeasure, tol);
+    const auto v = run("shell", at_t, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].shell) / samples[i].shell_scale, with(samples[i].p, samples[i].t));
     out.push_back(a.done());
   }
   {
-    Accumulator a(label + "normal", true, kNormalMeasure, normal_tol);
-    const auto v = impl.glsl("normal", at_h, dims);
+    Accumulator a(label + "normal", is_float, kNormalMeasure, normal_tol);
+    const auto v = run("normal", at_h, dims);
     for (size_t i = 0; i < samples.size(); ++i) {
       if (!samples[i].normal) continue;
       double e2 = 0;
@@ -268,9 +271,9 @@ void compare_float32(const Implementations& impl, const std::vector<Sample>& sam
     }
     out.push_back(a.done());
   }
-  if (impl.glsl_graded) {
-    Accumulator a(label + "graded", true, kGradedMeasure, tol);
-    const auto v = impl.glsl("graded", at_h, 1);
+  if (has_graded) {
+    Accumulator a(label + "graded", is_float, kGradedMeasure, tol);
+    const auto v = run("graded", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       if (samples[i].graded)
         a.add(std::fabs(double(v[i]) - *samples[i].graded) / *samples[i].graded_scale,
@@ -298,9 +301,13 @@ ValueReport check_values(const Implementations& impl, const Reference& reference
     compare_batch<float>(f.offsetf_n, f.shellf_n, "f", samples, dims, options.float_tolerance, report.functions);
   }
   if (impl.glsl)
-    compare_float32(impl, samples, dims, options.float_tolerance, options.float_normal_tolerance, report.functions);
+    compare_runner<float>(impl.glsl, impl.glsl_label, impl.glsl_graded, samples, dims, options.float_tolerance,
+                          options.float_normal_tolerance, report.functions);
+  if (impl.numpy)
+    compare_runner<double>(impl.numpy, impl.numpy_label, impl.numpy_graded, samples, dims, options.tolerance,
+                           options.normal_tolerance, report.functions);
 
-  report.has_double = impl.c && impl.c->offset != nullptr;
+  report.has_double = (impl.c && impl.c->offset != nullptr) || bool(impl.numpy);
   report.pass = !report.functions.empty();
   for (const auto& d : report.functions) {
     report.pass = report.pass && d.pass;

@@ -64,12 +64,20 @@ using Float32Runner = std::function<std::vector<float>(const std::string& functi
                                                        const std::vector<std::array<float, 4>>& inputs,
                                                        int components)>;
 
-// What to compare: the loaded C functions (may be null) and a float32 runner (may be empty).
+// The same for a float64 implementation (a NumPy module under python3), judged at double tolerances.
+using Float64Runner = std::function<std::vector<double>(
+    const std::string& function, const std::vector<std::array<double, 4>>& inputs, int components)>;
+
+// What to compare: the loaded C functions (may be null), a float32 runner and a float64 runner (each
+// may be empty).
 struct Implementations {
   const LoadedFunctions* c = nullptr;
   Float32Runner glsl;
   std::string glsl_label = "glsl";  // prefix of the GLSL rows
   bool glsl_graded = false;         // the snippet has _graded
+  Float64Runner numpy;
+  std::string numpy_label = "numpy";  // prefix of the NumPy rows
+  bool numpy_graded = false;          // the module has _graded
 };
 
 // `thickness` is the graded wall's t(x) when the file has a _graded function.

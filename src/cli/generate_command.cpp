@@ -56,10 +56,10 @@ void add_generate_command(CLI::App& app, GenerateOptions& o) {
                   "(implies --density-functions)")
       ->each([&o](const std::string&) { o.density_field_given = true; });
   cmd->add_option("-o,--output", o.output,
-                  "Output file of the first language (c, glsl, hlsl order); the others go beside it with their own "
-                  "extension (.h, .glsl, .hlsl); - for stdout")
+                  "Output file of the first language (in the order " + backend_names() +
+                      "); the others go beside it with their own extension; - for stdout")
       ->each([&o](const std::string&) { o.output_given = true; });
-  cmd->add_option("--out-dir", o.out_dir, "Directory for <prefix>.h, <prefix>.glsl, <prefix>.hlsl when -o is not given")
+  cmd->add_option("--out-dir", o.out_dir, "Directory for the <prefix>.<extension> files when -o is not given")
       ->each([&o](const std::string&) { o.out_dir_given = true; });
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
 }

@@ -60,10 +60,12 @@ class Backend {
   virtual std::string emitted_name(const FileFacts& facts, const EmittedFunction& f, Precision p) const;
   // A statement that marks an unread parameter as used ("(void)x;"), or "" where none is needed.
   virtual std::string unused_parameter(const std::string&) const { return ""; }
+  // Lines that open the body, given its inputs (NumPy: each input converted to float64).
+  virtual std::string prologue(const std::vector<std::string>&) const { return ""; }
   // The body's last lines for a vector result (C: n[i] = ...; shaders: return vec3(...)).
   virtual std::string vector_return(const FileFacts& facts, const std::vector<std::string>& components) const;
-  // A last rewrite of a printed body (C: calls of the inline sin/cos helpers).
-  virtual std::string finish_body(const std::string& body, Precision) const { return body; }
+  // A last rewrite of a printed body (calls of the file's own sin/cos helpers).
+  virtual std::string finish_body(const FileFacts&, const std::string& body, Precision) const { return body; }
 
   // --- File layout (file_template()) -----------------------------------------------------------
   // One line of the file comment's function list, and of its op-count list.
@@ -77,7 +79,9 @@ class Backend {
   // What the density notes add on how this target returns NaN ("" for none).
   virtual std::string nan_note() const { return ""; }
   // The functions of one precision, with whatever support code they need ahead of them.
-  virtual std::string precision_section(const std::string& functions, Precision) const { return functions; }
+  virtual std::string precision_section(const FileFacts&, const std::string& functions, Precision) const {
+    return functions;
+  }
   // Sections after every precision's functions (C: the batch API).
   virtual std::string trailing_sections(const FileFacts&, const std::vector<EmittedFunction>&,
                                         const std::vector<Precision>&) const {

@@ -13,9 +13,15 @@ namespace offsetgen {
 const Backend& c_backend();
 const Backend& glsl_backend();
 const Backend& hlsl_backend();
+const Backend& wgsl_backend();
+const Backend& cuda_backend();
+const Backend& opencl_backend();
+const Backend& numpy_backend();
 
 const std::vector<const Backend*>& backends() {
-  static const std::vector<const Backend*> all = {&c_backend(), &glsl_backend(), &hlsl_backend()};
+  static const std::vector<const Backend*> all = {&c_backend(),    &glsl_backend(), &hlsl_backend(),
+                                                  &wgsl_backend(), &cuda_backend(), &opencl_backend(),
+                                                  &numpy_backend()};
   return all;
 }
 

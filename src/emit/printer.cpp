@@ -64,8 +64,9 @@ class BodyPrinter {
       if (uses[static_cast<size_t>(id)] < 2 && depth[static_cast<size_t>(id)] < kMaxInlineDepth) continue;
       std::string expression = expression_of(id, kSelect);
       names_[static_cast<size_t>(id)] = fmt::format("_t{}", counter++);
-      body.temporaries.push_back(fmt::format("{} {} = {};", n.boolean ? dialect_.bool_decl() : dialect_.local_decl(),
-                                             names_[static_cast<size_t>(id)], expression));
+      const std::string decl = n.boolean ? dialect_.bool_decl() : dialect_.local_decl();  // "" in Python
+      body.temporaries.push_back(
+          fmt::format("{}{} = {};", decl.empty() ? "" : decl + " ", names_[static_cast<size_t>(id)], expression));
     }
     for (const auto& output : program_.outputs()) body.outputs.push_back(text(output.second, kSelect));
     return body;

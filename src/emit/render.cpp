@@ -16,7 +16,7 @@ std::string render_function(const std::string& skeleton, const FileFacts& facts,
   const Backend& b = *d.backend;
   const std::vector<std::string> inputs = b.input_names(facts, f);
   const PrintedBody printed = print_program(*f.program, d, inputs);
-  std::string body;
+  std::string body = b.prologue(inputs);
   // A function that does not read a parameter (x + y + z has a constant normal) may have to say so
   // (C: -Wunused-parameter).
   std::vector<bool> read(inputs.size(), false);
@@ -31,7 +31,7 @@ std::string render_function(const std::string& skeleton, const FileFacts& facts,
     body += b.vector_return(facts, printed.outputs);
   else
     body += fmt::format("    return {};\n", printed.outputs.at(0));
-  body = b.finish_body(body, d.precision);
+  body = b.finish_body(facts, body, d.precision);
   return fmt::format(fmt::runtime(skeleton), fmt::arg("doc", f.doc), fmt::arg("ops", count_ops(*f.program)),
                      fmt::arg("return_type", b.return_type(facts, f, d.precision)),
                      fmt::arg("name", b.emitted_name(facts, f, d.precision)),
@@ -59,7 +59,7 @@ std::string render_file(const Backend& b, const FileFacts& facts, const std::vec
       section += render_function(skeleton, facts, f, d);
       function_list += b.list_entry(facts, f, precision);
     }
-    rendered += b.precision_section(section, precision);
+    rendered += b.precision_section(facts, section, precision);
   }
   rendered += b.trailing_sections(facts, functions, b.precisions(precisions));
   for (const auto& f : functions) ops_list += b.ops_entry(f);

@@ -151,6 +151,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"generate --surface gyroid --name gl_foo --lang glsl", "names beginning with gl_ are reserved in GLSL"},
         BadInput{"generate --surface gyroid --name webgl_x --lang glsl", "reserved in WebGL"},
         BadInput{"generate --surface gyroid --name SV_x --lang hlsl", "names beginning with SV_ are HLSL system-value"},
+        BadInput{"generate --surface gyroid --name cudaX --lang cuda", "in a namespace the CUDA toolkit reserves"},
+        BadInput{"generate --surface gyroid --name cl_x --lang opencl", "names beginning with cl_ or CL_ are OpenCL's"},
         BadInput{"generate --surface gyroid --name x --lang c,hlsl -o -", "takes one language, not --lang c,hlsl"},
         BadInput{"generate --surface gyroid --lang c,,glsl", "empty language name"},
         // Only the requested targets' rules apply: a__b is refused by HLSL here, not by C.

@@ -47,7 +47,7 @@ TEST(GoldenFiles, RegeneratingGivesTheCommittedBytes) {
   const int commands = regenerate(kGolden, dir);
   EXPECT_GE(commands, 32);
   const std::set<std::string> fresh = outputs_in(dir);
-  // Every line says --lang all: one file per backend (.h, .glsl, .hlsl).
+  // Every line says --lang all: one file per backend (.h, .glsl, .hlsl, .wgsl).
   EXPECT_EQ(fresh.size(), offsetgen::backends().size() * static_cast<std::size_t>(commands));
   for (const std::string& name : fresh) {
     const fs::path committed = kGolden / name;

@@ -42,6 +42,21 @@ TEST_P(SnippetCompiles, AndLinksInTheFourHostDialects) {
 INSTANTIATE_TEST_SUITE_P(All, SnippetCompiles, ::testing::ValuesIn(gt::all_snippet_files()),
                          [](const ::testing::TestParamInfo<gt::SnippetFile>& p) { return p.param.label; });
 
+// Snippets of different surfaces and methods pasted into one shader, one of them twice: each brings
+// its own <prefix>_sin/_cos, and nothing they declare may clash.
+TEST(SnippetsOfDifferentSurfaces, CompileTogetherInOneShader) {
+  std::map<std::string, std::string> by_prefix;
+  for (const auto& c : gt::generated_cases()) by_prefix[c.prefix] = c.snippet;
+  std::string together;
+  for (const char* prefix : {"gyroid_o4", "schwarzp_o2", "neovius_proj_o4", "gyroid_o4"})
+    together += glsl::read_text_file(by_prefix.at(prefix)) + "\n";
+  // The host calls the first snippet's functions (one metadata block: check refuses pasted files).
+  const auto results =
+      check::compile_glsl(together, metadata_of(glsl::read_text_file(by_prefix.at("gyroid_o4"))), "together.glsl");
+  ASSERT_EQ(results.size(), 4u);
+  for (const auto& r : results) EXPECT_TRUE(r.ok) << "fails on " << r.name << ":\n" << r.output;
+}
+
 class SnippetConventions : public ::testing::TestWithParam<gt::SnippetFile> {
  protected:
   std::string snippet_ = glsl::read_text_file(GetParam().path);

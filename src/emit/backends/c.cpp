@@ -76,7 +76,7 @@ class CBackend final : public Backend {
     for (size_t i = 0; i < components.size(); ++i) lines += fmt::format("    n[{}] = {};\n", i, components[i]);
     return lines;
   }
-  std::string finish_body(const std::string& body, Precision) const override {
+  std::string finish_body(const FileFacts&, const std::string& body, Precision) const override {
     return rename_trig_calls(body, "offsetgen_");  // the inline helpers of templates/c/c_scalar_trig.in
   }
 
@@ -103,7 +103,7 @@ class CBackend final : public Backend {
   }
   // The scalar functions call inline sin/cos helpers instead of libm's; they are defined once, ahead
   // of the functions of each precision that call them.
-  std::string precision_section(const std::string& functions, Precision p) const override {
+  std::string precision_section(const FileFacts&, const std::string& functions, Precision p) const override {
     const std::string f = suffix(p);
     if (functions.find("offsetgen_sin" + f + "(") == std::string::npos &&
         functions.find("offsetgen_cos" + f + "(") == std::string::npos)

@@ -3,6 +3,7 @@
 // float highp). Skeletons: templates/glsl/.
 #include "emit/backend.h"
 #include "emit/emitted_api.h"
+#include "emit/shader_trig.h"
 #include "emit/glsl_names.h"
 #include "offset/method.h"
 
@@ -33,6 +34,19 @@ class GlslBackend final : public Backend {
   std::string vector_type(int dims) const override { return dims == 3 ? "vec3" : "vec2"; }
   std::optional<std::string> reserved(const std::string& identifier) const override {
     return glsl_names::reserved(identifier);
+  }
+
+  // sin and cos are the snippet's own (emit/shader_trig.h): the driver's may be off by 2e-4.
+  std::vector<std::string> declared_identifiers(const std::string& prefix) const override {
+    std::vector<std::string> names = Backend::declared_identifiers(prefix);
+    for (const auto& name : own_trig_names(prefix)) names.push_back(name);
+    return names;
+  }
+  std::string finish_body(const FileFacts& facts, const std::string& body, Precision) const override {
+    return call_own_trig(body, facts.prefix);
+  }
+  std::string precision_section(const FileFacts& facts, const std::string& functions, Precision) const override {
+    return with_own_trig(functions, facts.prefix, "glsl/glsl_trig.in");
   }
 
   std::string parameters(const FileFacts& facts, const EmittedFunction& f, Precision) const override {

@@ -4,6 +4,7 @@
 // templates/hlsl/.
 #include "emit/backend.h"
 #include "emit/emitted_api.h"
+#include "emit/shader_trig.h"
 #include "offset/method.h"
 
 #include <fmt/format.h>
@@ -201,6 +202,19 @@ class HlslBackend final : public Backend {
     if (identifier.find("__") != std::string::npos) return "names containing __ are reserved in HLSL (DXC)";
     if (identifier.rfind("SV_", 0) == 0) return "names beginning with SV_ are HLSL system-value semantics";
     return std::nullopt;
+  }
+
+  // sin and cos are the snippet's own (emit/shader_trig.h): the driver's may be off by 2e-4.
+  std::vector<std::string> declared_identifiers(const std::string& prefix) const override {
+    std::vector<std::string> names = Backend::declared_identifiers(prefix);
+    for (const auto& name : own_trig_names(prefix)) names.push_back(name);
+    return names;
+  }
+  std::string finish_body(const FileFacts& facts, const std::string& body, Precision) const override {
+    return call_own_trig(body, facts.prefix);
+  }
+  std::string precision_section(const FileFacts& facts, const std::string& functions, Precision) const override {
+    return with_own_trig(functions, facts.prefix, "hlsl/hlsl_trig.in");
   }
 
   std::string parameters(const FileFacts& facts, const EmittedFunction& f, Precision) const override {
