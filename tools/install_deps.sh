@@ -13,7 +13,7 @@ packages=(
   python3-numba
   clang-format clang-tidy
   clang libclang-rt-14-dev
-  libopenvdb-dev libboost-iostreams-dev admesh
+  libopenvdb-dev libboost-iostreams-dev admesh lib3mf-dev
   chromium libvulkan-dev mesa-vulkan-drivers
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )

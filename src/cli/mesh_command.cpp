@@ -106,7 +106,7 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->add_option("--min-piece", o.min_piece,
                   "Drop disconnected pieces with less than this fraction of the largest piece's volume")
       ->capture_default_str();
-  cmd->add_option("-o,--output", o.output, "Output mesh: .stl (binary STL) or .ply (binary PLY)");
+  cmd->add_option("-o,--output", o.output, "Output mesh: .stl (binary STL), .ply (binary PLY) or .3mf (3MF)");
   cmd->add_option("-j,--threads", o.threads, "Sampling threads (default: one per hardware thread)");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
   cmd->footer(

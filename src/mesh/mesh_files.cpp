@@ -1,5 +1,6 @@
 #include "mesh/mesh_files.h"
 
+#include "mesh/mesh_3mf.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -76,14 +77,38 @@ MeshFormat format_for_path(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".stl") return MeshFormat::Stl;
   if (ext == ".ply") return MeshFormat::Ply;
-  throw InputError(
-      fmt::format("-o '{}': unknown mesh format '{}' (use .stl for binary STL or .ply for binary PLY)", path, ext));
+  if (ext == ".3mf" && can_write_3mf()) return MeshFormat::ThreeMf;
+  if (ext == ".3mf")
+    throw InputError(
+        fmt::format("-o '{}': this offsetgen was built without lib3mf, so it cannot write 3MF (apt-get "
+                    "install lib3mf-dev and rebuild; .stl and .ply work)",
+                    path));
+  throw InputError(fmt::format(
+      "-o '{}': unknown mesh format '{}' (use .stl for binary STL, .ply for binary PLY or .3mf for 3MF)", path, ext));
 }
 
-const char* format_name(MeshFormat format) { return format == MeshFormat::Stl ? "binary STL" : "binary PLY"; }
+const char* format_name(MeshFormat format) {
+  switch (format) {
+    case MeshFormat::Stl:
+      return "binary STL";
+    case MeshFormat::Ply:
+      return "binary PLY";
+    case MeshFormat::ThreeMf:
+      return "3MF";
+  }
+  return "";
+}
 
 std::string encode_mesh(const TriangleMesh& mesh, MeshFormat format, const std::string& description) {
-  return format == MeshFormat::Stl ? binary_stl(mesh, description) : binary_ply(mesh, description);
+  switch (format) {
+    case MeshFormat::Stl:
+      return binary_stl(mesh, description);
+    case MeshFormat::Ply:
+      return binary_ply(mesh, description);
+    case MeshFormat::ThreeMf:
+      return encode_3mf(mesh, description);
+  }
+  return "";
 }
 
 }  // namespace offsetgen::mesh

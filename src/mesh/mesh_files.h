@@ -1,5 +1,5 @@
-// Mesh files: binary STL (what slicers read) and binary little-endian PLY (indexed, about half the
-// size). Same mesh, same bytes: no timestamps.
+// Mesh files: binary STL (what slicers read), binary little-endian PLY (indexed, about half the
+// size) and 3MF (zipped XML in millimetres, mesh_3mf.h). Same mesh, same bytes: no timestamps.
 #pragma once
 
 #include "mesh/triangle_mesh.h"
@@ -8,13 +8,14 @@
 
 namespace offsetgen::mesh {
 
-enum class MeshFormat { Stl, Ply };
+enum class MeshFormat { Stl, Ply, ThreeMf };
 
-// From the file name's extension (.stl or .ply, any case). Throws InputError otherwise.
+// From the file name's extension (.stl, .ply or .3mf, any case). Throws InputError otherwise, and for
+// .3mf in a build without lib3mf.
 MeshFormat format_for_path(const std::string& path);
 const char* format_name(MeshFormat format);
 
-// `description` goes into the STL header (80 bytes, cut) or a PLY comment line.
+// `description` goes into the STL header (80 bytes, cut), a PLY comment line or the 3MF object's name.
 std::string encode_mesh(const TriangleMesh& mesh, MeshFormat format, const std::string& description);
 
 }  // namespace offsetgen::mesh

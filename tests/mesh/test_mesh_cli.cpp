@@ -3,6 +3,10 @@
 // writes nothing.
 #include "mesh_test_support.h"
 
+#include "check/process.h"
+#include "mesh/mesh_3mf.h"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -285,6 +289,40 @@ TEST(MeshOutput, SameInputsGiveTheSameBytesAndPlyMatchesStl) {
   EXPECT_EQ(report["facets added"], 0);
   EXPECT_EQ(report["backwards edges"], 0);
   EXPECT_EQ(report["disconnected facets"], 0);
+}
+
+// -o part.3mf: a 3MF package (a zip) holding the same triangles as the STL, in millimetres, with the
+// same bytes on every run (lib3mf's random UUIDs are replaced by ones derived from the mesh).
+// Read back with Python's zipfile, an independent reader.
+TEST(MeshOutput, ThreeMfHoldsTheStlsTrianglesInMillimetresWithTheSameBytesEachRun) {
+  if (!can_write_3mf())
+    GTEST_FAIL()
+        << "offsetgen was built without lib3mf: apt-get install lib3mf-dev (tools/install_deps.sh), then reconfigure";
+  const std::string dir = scratch_dir("threemf");
+  const std::vector<std::string> base = {"mesh", "--surface", "gyroid", "--thickness", "0.15", "--resolution", "24"};
+  auto with = [&](const std::string& out) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), {"-o", out});
+    return run_offsetgen(a);
+  };
+  CliRun first = with(dir + "/a.3mf");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  EXPECT_NE(first.output.find("(3MF,"), std::string::npos) << first.output;
+  ASSERT_EQ(with(dir + "/b.3mf").exit_code, 0);
+  ASSERT_EQ(with(dir + "/c.stl").exit_code, 0);
+  std::ifstream a(dir + "/a.3mf", std::ios::binary), b(dir + "/b.3mf", std::ios::binary);
+  std::string sa((std::istreambuf_iterator<char>(a)), {}), sb((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_EQ(sa, sb);
+  ASSERT_GT(sa.size(), 4u);
+  EXPECT_EQ(sa.substr(0, 4), std::string("PK\x03\x04", 4));
+  const check::ProcessResult counted =
+      check::run_process({"python3", "-c",
+                          "import sys, zipfile; m = zipfile.ZipFile(sys.argv[1]).read('3D/3dmodel.model').decode(); "
+                          "print(m.count('<triangle '), 'unit=\"millimeter\"' in m)",
+                          dir + "/a.3mf"});
+  ASSERT_EQ(counted.exit_code, 0) << counted.output;
+  const size_t triangles = read_stl(dir + "/c.stl").size();
+  EXPECT_EQ(counted.output, fmt::format("{} True\n", triangles));
 }
 
 }  // namespace
