@@ -255,7 +255,9 @@ void check_program_values(const CheckSettings& s, const std::optional<GiNaC::ex>
 void push_compile_verdict(CheckReport& report) {
   Verdict v{"compile", true, true, ""};
   for (const auto& step : report.compile.steps) {
-    v.detail += fmt::format("{}{}: {}", v.detail.empty() ? "" : "; ", step.name, step.ok ? "ok" : "FAILED");
+    const std::string why = step.output.substr(0, step.output.find('\n'));
+    v.detail += fmt::format("{}{}: {}", v.detail.empty() ? "" : "; ", step.name,
+                            step.ok ? "ok" : (why.empty() ? "FAILED" : "FAILED (" + why + ")"));
     v.pass = v.pass && step.ok;
   }
   report.compile.ok = v.pass;
