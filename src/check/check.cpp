@@ -226,13 +226,14 @@ std::vector<float> narrowed(const std::vector<double>& values) { return {values.
 // The values of a compiled CUDA or OpenCL file against the 40-digit reference: its double functions at
 // the double limits, its float functions at the float limits (value_check.h). The thickness sweep and
 // the density relations are left to the C header of the same generation, as for GLSL and NumPy.
-void check_program_values(const CheckSettings& s, const std::optional<GiNaC::ex>& file_thickness,
-                          Implementations impl, const std::string& verdict, CheckReport& report) {
+void check_program_values(const CheckSettings& s, const std::optional<GiNaC::ex>& file_thickness, Implementations impl,
+                          const std::string& verdict, CheckReport& report) {
   const FileMetadata& meta = report.meta;
   if (meta.has_density)
-    report.warnings.push_back(fmt::format("the density relations of a {} file are not checked (check the C header of "
-                                          "the same generation)",
-                                          kind_name(meta.kind)));
+    report.warnings.push_back(
+        fmt::format("the density relations of a {} file are not checked (check the C header of "
+                    "the same generation)",
+                    kind_name(meta.kind)));
   Progress progress;
   progress.update("model", "rebuilding the symbolic offset model from the metadata");
   std::unique_ptr<Reference> reference = rebuild_reference(meta);
@@ -289,7 +290,9 @@ void check_cuda(const CheckSettings& s, const std::optional<GiNaC::ex>& file_thi
                              int components) { return program->run(function, inputs, components); };
     impl.float64_label = "cuda";
     impl.float32 = [program](const std::string& function, const std::vector<std::array<float, 4>>& inputs,
-                             int components) { return narrowed(program->run(function + "f", widened(inputs), components)); };
+                             int components) {
+      return narrowed(program->run(function + "f", widened(inputs), components));
+    };
     impl.float32_label = "cuda";
     impl.float32_suffix = "f";
     check_program_values(s, file_thickness, impl, "values of the host path", report);
@@ -317,8 +320,9 @@ void check_opencl(const CheckSettings& s, const std::string& text, const std::op
       device = program->build();
       build.ok = true;
       build.output = device->build_log;
-      report.toolchain = fmt::format("{} (from {}); OpenCL: {}, device {}{}", tools.c.front(), tools.c_origin,
-                                     device->platform, device->name, device->fp64 ? ", cl_khr_fp64" : ", no cl_khr_fp64");
+      report.toolchain =
+          fmt::format("{} (from {}); OpenCL: {}, device {}{}", tools.c.front(), tools.c_origin, device->platform,
+                      device->name, device->fp64 ? ", cl_khr_fp64" : ", no cl_khr_fp64");
     } catch (const std::runtime_error& e) {
       build.output = e.what();
       report.toolchain = fmt::format("{} (from {}); no OpenCL device", tools.c.front(), tools.c_origin);
@@ -340,7 +344,9 @@ void check_opencl(const CheckSettings& s, const std::string& text, const std::op
       impl.float64_label = "opencl";
     }
     impl.float32 = [program](const std::string& function, const std::vector<std::array<float, 4>>& inputs,
-                             int components) { return narrowed(program->run(function + "f", 4, widened(inputs), components)); };
+                             int components) {
+      return narrowed(program->run(function + "f", 4, widened(inputs), components));
+    };
     impl.float32_label = "opencl";
     impl.float32_suffix = "f";
     check_program_values(s, file_thickness, impl, "values on the device", report);
