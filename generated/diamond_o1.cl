@@ -29,8 +29,9 @@
  *   thickness t centred on F = 0, and > 0 outside it.
  * Accuracy: the zero set of _offset lies within O(h^2) of the exact offset surface, so the relative
  *   thickness error falls as (h/L)^1.
- *   offsetgen check does not read this file yet; it measures the C header of the same command
- *   (--lang c): offsetgen check diamond_o1.h
+ *   offsetgen check diamond_o1.cl runs it on an OpenCL device (pocl) against a 40-digit reference;
+ *   the wall-thickness study reads the C header of the same command (--lang c):
+ *   offsetgen check diamond_o1.h
  * Validity: |h| (and t/2) must stay small against the local radius of curvature of the surface;
  *   self-intersecting offsets are not detected (paper section 4.2).
  * Cell length L: phi_L(p, h) = diamond_o1_offset(p / L, h / L), exactly, at every order; likewise

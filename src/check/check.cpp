@@ -1,6 +1,8 @@
 #include "check/check.h"
 
+#include "check/cuda_runner.h"
 #include "check/numpy_runner.h"
+#include "check/opencl_runner.h"
 #include "check/plot.h"
 #include "check/progress.h"
 #include "check/reference.h"
@@ -12,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -133,9 +136,9 @@ void check_glsl(const CheckSettings& s, const std::string& text, const std::opti
     };
 #ifdef OFFSETGEN_CHECK_HAVE_GL
     Implementations impl;
-    impl.glsl = llvmpipe_runner(text, meta);
-    impl.glsl_label = "glsl";
-    impl.glsl_graded = meta.thickness.has_value();
+    impl.float32 = llvmpipe_runner(text, meta);
+    impl.float32_label = "glsl";
+    impl.float32_graded = meta.thickness.has_value();
     try {
       report.values = check_values(impl, *reference, meta, file_thickness, value_options);
       report.verdicts.push_back(values_verdict("values on llvmpipe", *report.values));
@@ -195,8 +198,9 @@ void check_numpy(const CheckSettings& s, const std::optional<GiNaC::ex>& file_th
       progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
     };
     Implementations impl;
-    impl.numpy = python_runner(python, s.file, meta);
-    impl.numpy_graded = meta.thickness.has_value();
+    impl.float64 = python_runner(python, s.file, meta);
+    impl.float64_label = "numpy";
+    impl.float64_graded = meta.thickness.has_value();
     try {
       report.values = check_values(impl, *reference, meta, file_thickness, value_options);
       report.verdicts.push_back(values_verdict("values under NumPy", *report.values));
@@ -205,6 +209,147 @@ void check_numpy(const CheckSettings& s, const std::optional<GiNaC::ex>& file_th
           {"values under NumPy", false, true, fmt::format("cannot run the module: {}", e.what())});
     }
     progress.clear();
+  }
+  report.pass = std::all_of(report.verdicts.begin(), report.verdicts.end(), [](const Verdict& v) { return v.pass; });
+}
+
+// A runner's inputs (x, y, z, h|t) in float, widened for a float64 program (exactly).
+std::vector<std::array<double, 4>> widened(const std::vector<std::array<float, 4>>& inputs) {
+  std::vector<std::array<double, 4>> out(inputs.size());
+  for (size_t i = 0; i < inputs.size(); ++i)
+    for (size_t k = 0; k < 4; ++k) out[i][k] = inputs[i][k];
+  return out;
+}
+
+std::vector<float> narrowed(const std::vector<double>& values) { return {values.begin(), values.end()}; }
+
+// The values of a compiled CUDA or OpenCL file against the 40-digit reference: its double functions at
+// the double limits, its float functions at the float limits (value_check.h). The thickness sweep and
+// the density relations are left to the C header of the same generation, as for GLSL and NumPy.
+void check_program_values(const CheckSettings& s, const std::optional<GiNaC::ex>& file_thickness, Implementations impl,
+                          const std::string& verdict, CheckReport& report) {
+  const FileMetadata& meta = report.meta;
+  if (meta.has_density)
+    report.warnings.push_back(
+        fmt::format("the density relations of a {} file are not checked (check the C header of "
+                    "the same generation)",
+                    kind_name(meta.kind)));
+  Progress progress;
+  progress.update("model", "rebuilding the symbolic offset model from the metadata");
+  std::unique_ptr<Reference> reference = rebuild_reference(meta);
+  report.warnings.insert(report.warnings.end(), reference->warnings.begin(), reference->warnings.end());
+  report.surface_title = reference->generation.surface.title;
+  ValueCheckOptions value_options = s.values;
+  value_options.progress = [&progress, &s](int done, int total) {
+    progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
+  };
+  impl.float32_graded = impl.float64_graded = meta.has_graded();
+  try {
+    report.values = check_values(impl, *reference, meta, file_thickness, value_options);
+    report.verdicts.push_back(values_verdict(verdict, *report.values));
+  } catch (const std::runtime_error& e) {
+    report.verdicts.push_back({verdict, false, true, fmt::format("cannot run the functions: {}", e.what())});
+  }
+  progress.clear();
+}
+
+void push_compile_verdict(CheckReport& report) {
+  Verdict v{"compile", true, true, ""};
+  for (const auto& step : report.compile.steps) {
+    const std::string why = step.output.substr(0, step.output.find('\n'));
+    v.detail += fmt::format("{}{}: {}", v.detail.empty() ? "" : "; ", step.name,
+                            step.ok ? "ok" : (why.empty() ? "FAILED" : "FAILED (" + why + ")"));
+    v.pass = v.pass && step.ok;
+  }
+  report.compile.ok = v.pass;
+  report.verdicts.push_back(v);
+}
+
+// A CUDA header: nvcc compiles a host program calling its __host__ __device__ functions (the host path,
+// no GPU needed), then their values in double and float.
+void check_cuda(const CheckSettings& s, const std::optional<GiNaC::ex>& file_thickness, CheckReport& report) {
+  const FileMetadata& meta = report.meta;
+  std::string nvcc = cuda_run::find_nvcc();
+  try {
+    report.toolchain = cuda_run::describe_nvcc(nvcc, meta);
+  } catch (const std::runtime_error& e) {
+    report.verdicts.push_back({"compile", false, true, e.what()});
+    report.pass = false;
+    return;
+  }
+  Progress progress;
+  progress.update("compile", "nvcc: the host path of the CUDA header");
+  auto program = std::make_shared<cuda_run::HostProgram>(nvcc, s.file, meta);
+  progress.clear();
+  report.compile.optimization = program->step().command.size() > 2 ? program->step().command[2] : "";
+  report.compile.steps.push_back(program->step());
+  push_compile_verdict(report);
+  if (s.run_values && program->ok()) {
+    Implementations impl;
+    impl.float64 = [program](const std::string& function, const std::vector<std::array<double, 4>>& inputs,
+                             int components) { return program->run(function, inputs, components); };
+    impl.float64_label = "cuda";
+    impl.float32 = [program](const std::string& function, const std::vector<std::array<float, 4>>& inputs,
+                             int components) {
+      return narrowed(program->run(function + "f", widened(inputs), components));
+    };
+    impl.float32_label = "cuda";
+    impl.float32_suffix = "f";
+    check_program_values(s, file_thickness, impl, "values of the host path", report);
+  }
+  report.pass = std::all_of(report.verdicts.begin(), report.verdicts.end(), [](const Verdict& v) { return v.pass; });
+}
+
+// An OpenCL C source: the C compiler builds a host program on the ICD loader, which builds the file on the
+// first OpenCL device, then its values in float, and in double where the device reports cl_khr_fp64.
+void check_opencl(const CheckSettings& s, const std::string& text, const std::optional<GiNaC::ex>& file_thickness,
+                  CheckReport& report) {
+  const FileMetadata& meta = report.meta;
+  const Toolchain tools = find_toolchain();
+  Progress progress;
+  progress.update("compile", "the OpenCL host program, then the source on the device");
+  auto program = std::make_shared<opencl_run::HostProgram>(tools, text, meta);
+  report.compile.steps.push_back(program->step());
+  std::optional<opencl_run::Device> device;
+  if (program->step().ok) {
+    CompileStep build;
+    build.name = "clBuildProgram";
+    build.command = {"clBuildProgram", "-cl-std=CL1.2 -Werror"};
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      device = program->build();
+      build.ok = true;
+      build.output = device->build_log;
+      report.toolchain =
+          fmt::format("{} (from {}); OpenCL: {}, device {}{}", tools.c.front(), tools.c_origin, device->platform,
+                      device->name, device->fp64 ? ", cl_khr_fp64" : ", no cl_khr_fp64");
+    } catch (const std::runtime_error& e) {
+      build.output = e.what();
+      report.toolchain = fmt::format("{} (from {}); no OpenCL device", tools.c.front(), tools.c_origin);
+    }
+    build.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.compile.steps.push_back(build);
+  } else {
+    report.toolchain = fmt::format("{} (from {})", tools.c.front(), tools.c_origin);
+  }
+  progress.clear();
+  push_compile_verdict(report);
+  if (device && !device->fp64)
+    report.warnings.push_back(fmt::format("{} has no cl_khr_fp64: only the float functions are checked", device->name));
+  if (s.run_values && device) {
+    Implementations impl;
+    if (device->fp64) {
+      impl.float64 = [program](const std::string& function, const std::vector<std::array<double, 4>>& inputs,
+                               int components) { return program->run(function, 8, inputs, components); };
+      impl.float64_label = "opencl";
+    }
+    impl.float32 = [program](const std::string& function, const std::vector<std::array<float, 4>>& inputs,
+                             int components) {
+      return narrowed(program->run(function + "f", 4, widened(inputs), components));
+    };
+    impl.float32_label = "opencl";
+    impl.float32_suffix = "f";
+    check_program_values(s, file_thickness, impl, "values on the device", report);
   }
   report.pass = std::all_of(report.verdicts.begin(), report.verdicts.end(), [](const Verdict& v) { return v.pass; });
 }
@@ -265,6 +410,14 @@ CheckReport run_checks(const CheckSettings& s) {
   }
   if (meta.kind == FileKind::Numpy) {
     check_numpy(s, file_thickness, report);
+    return report;
+  }
+  if (meta.kind == FileKind::Cuda) {
+    check_cuda(s, file_thickness, report);
+    return report;
+  }
+  if (meta.kind == FileKind::Opencl) {
+    check_opencl(s, text, file_thickness, report);
     return report;
   }
   const Toolchain tools = find_toolchain();

@@ -22,29 +22,6 @@ namespace fs = std::filesystem;
 
 const char* const kStrictWarnings[] = {"-pedantic", "-Wall", "-Wextra", "-Werror"};
 
-// A scratch directory removed when it goes out of scope.
-class ScratchDir {
- public:
-  ScratchDir() {
-    std::string pattern = (fs::temp_directory_path() / "offsetgen-check-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
-    path_ = pattern;
-  }
-  ~ScratchDir() {
-    if (std::getenv("OFFSETGEN_CHECK_KEEP") == nullptr) {
-      std::error_code ec;
-      fs::remove_all(path_, ec);
-    }
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
 std::vector<std::string> first_found(const char* env, std::initializer_list<const char*> names, std::string& origin,
                                      bool required, const char* what) {
   if (const char* value = std::getenv(env); value != nullptr && *value != '\0') {
@@ -79,6 +56,14 @@ std::vector<std::string> first_found(const char* env, std::initializer_list<cons
   return {};
 }
 
+template <typename T>
+T symbol(void* handle, const std::string& name) {
+  void* p = ::dlsym(handle, name.c_str());
+  return reinterpret_cast<T>(p);
+}
+
+}  // namespace
+
 CompileStep run_step(const std::string& name, std::vector<std::string> command) {
   CompileStep step;
   step.name = name;
@@ -91,14 +76,6 @@ CompileStep run_step(const std::string& name, std::vector<std::string> command) 
   if (!r.started && step.output.empty()) step.output = "could not run " + command.at(0);
   return step;
 }
-
-template <typename T>
-T symbol(void* handle, const std::string& name) {
-  void* p = ::dlsym(handle, name.c_str());
-  return reinterpret_cast<T>(p);
-}
-
-}  // namespace
 
 LoadedLibrary::~LoadedLibrary() {
   if (handle_ != nullptr) ::dlclose(handle_);
@@ -171,7 +148,7 @@ std::string wrapper_source(const std::string& include_name, const FileMetadata& 
 CompileResult compile_and_load(const std::string& header_path, const FileMetadata& meta, const Toolchain& tools,
                                const CompileOptions& options) {
   CompileResult result;
-  ScratchDir scratch;
+  ScratchDir scratch("offsetgen-check");
   const fs::path header = fs::absolute(header_path);
   const std::string include_dir = header.parent_path().string();
   std::string include_name = header.filename().string();

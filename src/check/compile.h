@@ -32,6 +32,9 @@ struct CompileStep {
   double seconds = 0;
 };
 
+// Runs one compiler command through run_process (process.h), timing it; never throws.
+CompileStep run_step(const std::string& name, std::vector<std::string> command);
+
 // A batch function (_offset_n, _shell_n) through its wrapper: z is ignored in 2D.
 template <typename T>
 using BatchFunction = void (*)(size_t n, const T* x, const T* y, const T* z, const T* h_or_t, T* out);

@@ -91,6 +91,8 @@ FileKind file_kind(const json& j, const std::string& text) {
                     "compiles them (see README)",
                     target->title(), language));
   if (language == "numpy") return FileKind::Numpy;
+  if (language == "cuda") return FileKind::Cuda;
+  if (language == "opencl") return FileKind::Opencl;
   return language == "c" ? FileKind::C : FileKind::Glsl;
 }
 
@@ -104,6 +106,10 @@ const char* kind_name(FileKind kind) {
       return "glsl";
     case FileKind::Numpy:
       return "numpy";
+    case FileKind::Cuda:
+      return "cuda";
+    case FileKind::Opencl:
+      return "opencl";
   }
   return "c";
 }

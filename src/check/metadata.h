@@ -10,9 +10,9 @@
 
 namespace offsetgen::check {
 
-enum class FileKind { C, Glsl, Numpy };
+enum class FileKind { C, Glsl, Numpy, Cuda, Opencl };
 
-// "c", "glsl", "numpy": the backend's name (emit/backend.h).
+// "c", "glsl", "numpy", "cuda", "opencl": the backend's name (emit/backend.h).
 const char* kind_name(FileKind kind);
 
 struct FileMetadata {

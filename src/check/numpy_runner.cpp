@@ -4,8 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -31,23 +29,6 @@ if name:
         result = np.stack(np.broadcast_arrays(*result), axis=-1)
     np.ascontiguousarray(result, np.float64).tofile(target)
 )";
-
-// A scratch directory, removed with everything in it when this goes out of scope.
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    std::string pattern = (fs::temp_directory_path() / "offsetgen-numpy-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
-    path = pattern;
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-};
 
 ProcessResult run_python(const std::string& python, const std::vector<std::string>& args) {
   std::vector<std::string> argv = {python, "-c", kRunner};
@@ -78,8 +59,8 @@ void import_module(const std::string& python, const std::string& module_path) {
 std::vector<double> run(const std::string& python, const std::string& module_path, const std::string& function,
                         const std::vector<std::vector<double>>& columns, int components) {
   const size_t n = columns.empty() ? 0 : columns.front().size();
-  ScratchDir dir;
-  const fs::path source = dir.path / "in.f64", target = dir.path / "out.f64";
+  ScratchDir dir("offsetgen-numpy");
+  const fs::path source = dir.path() / "in.f64", target = dir.path() / "out.f64";
   {
     std::ofstream out(source, std::ios::binary);
     for (const auto& column : columns)

@@ -10,7 +10,9 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 extern char** environ;
 
@@ -38,6 +40,43 @@ std::string find_on_path(const std::string& name) {
     if (is_executable(candidate)) return candidate;
   }
   return "";
+}
+
+ScratchDir::ScratchDir(const std::string& stem) {
+  namespace fs = std::filesystem;
+  std::string pattern = (fs::temp_directory_path() / (stem + "-XXXXXX")).string();
+  if (::mkdtemp(pattern.data()) == nullptr)
+    throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
+  path_ = pattern;
+}
+
+ScratchDir::~ScratchDir() {
+  if (std::getenv("OFFSETGEN_CHECK_KEEP") != nullptr) return;
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+std::vector<double> run_on_points(std::vector<std::string> command, const std::filesystem::path& dir,
+                                  const std::vector<std::array<double, 4>>& inputs, size_t count) {
+  const std::filesystem::path source = dir / "in.f64", target = dir / "out.f64";
+  {
+    std::ofstream out(source, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(inputs.data()),
+              static_cast<std::streamsize>(inputs.size() * sizeof(inputs[0])));
+    if (!out) throw std::runtime_error("cannot write " + source.string());
+  }
+  std::filesystem::remove(target);
+  command.insert(command.end(), {source.string(), target.string()});
+  const ProcessResult r = run_process(command);
+  if (!r.started || r.exit_code != 0)
+    throw std::runtime_error(command.front() + " failed (exit " + std::to_string(r.exit_code) + "):\n" + r.output);
+  std::vector<double> values(count);
+  std::ifstream in(target, std::ios::binary);
+  in.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(count * sizeof(double)));
+  if (in.gcount() != static_cast<std::streamsize>(count * sizeof(double)) || in.peek() != EOF)
+    throw std::runtime_error(command.front() + " wrote " + std::to_string(in.gcount()) + " bytes, expected " +
+                             std::to_string(count) + " float64 values");
+  return values;
 }
 
 std::vector<std::string> split_words(const std::string& text) {

@@ -105,6 +105,9 @@ std::string format_report(const CheckReport& r) {
     line(fmt::format("2. Values: {} vs a {}-digit CLN evaluation of the symbolic model at random points",
                      m.kind == FileKind::Glsl    ? "the snippet on Mesa llvmpipe (float32)"
                      : m.kind == FileKind::Numpy ? "the module under python3 (NumPy, float64)"
+                     : m.kind == FileKind::Cuda  ? "the host path compiled by nvcc (double and float)"
+                     : m.kind == FileKind::Opencl
+                         ? "the kernels on the OpenCL device (float, and double with cl_khr_fp64)"
                                                  : "compiled code",
                      v.digits));
     line("   in the cell, h and t/2 uniform in [-0.1, 0.1]; shift = how far the deviation moves the zero set (cell");

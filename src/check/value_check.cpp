@@ -220,7 +220,7 @@ void compare_batch(BatchFunction<T> offset_n, BatchFunction<T> shell_n, const ch
 
 // A runner (GLSL in float32, NumPy in float64): one run per function over all points.
 template <typename T, typename Runner>
-void compare_runner(const Runner& run, const std::string& runner_label, bool has_graded,
+void compare_runner(const Runner& run, const std::string& runner_label, const std::string& suffix, bool has_graded,
                     const std::vector<Sample>& samples, int dims, double tol, double normal_tol,
                     std::vector<FunctionDeviation>& out) {
   const bool is_float = std::is_same<T, float>::value;
@@ -237,28 +237,28 @@ void compare_runner(const Runner& run, const std::string& runner_label, bool has
   };
   const auto at_h = inputs(false), at_t = inputs(true);
   {
-    Accumulator a(label + "field", is_float, kFieldMeasure, tol);
+    Accumulator a(label + "field" + suffix, is_float, kFieldMeasure, tol);
     const auto v = run("field", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].field) / samples[i].grad_norm, samples[i].p);
     out.push_back(a.done());
   }
   {
-    Accumulator a(label + "offset", is_float, kOffsetMeasure, tol);
+    Accumulator a(label + "offset" + suffix, is_float, kOffsetMeasure, tol);
     const auto v = run("offset", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].phi) / samples[i].grad_norm, with(samples[i].p, samples[i].h));
     out.push_back(a.done());
   }
   {
-    Accumulator a(label + "shell", is_float, kShellMeasure, tol);
+    Accumulator a(label + "shell" + suffix, is_float, kShellMeasure, tol);
     const auto v = run("shell", at_t, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].shell) / samples[i].shell_scale, with(samples[i].p, samples[i].t));
     out.push_back(a.done());
   }
   {
-    Accumulator a(label + "normal", is_float, kNormalMeasure, normal_tol);
+    Accumulator a(label + "normal" + suffix, is_float, kNormalMeasure, normal_tol);
     const auto v = run("normal", at_h, dims);
     for (size_t i = 0; i < samples.size(); ++i) {
       if (!samples[i].normal) continue;
@@ -272,7 +272,7 @@ void compare_runner(const Runner& run, const std::string& runner_label, bool has
     out.push_back(a.done());
   }
   if (has_graded) {
-    Accumulator a(label + "graded", is_float, kGradedMeasure, tol);
+    Accumulator a(label + "graded" + suffix, is_float, kGradedMeasure, tol);
     const auto v = run("graded", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       if (samples[i].graded)
@@ -300,14 +300,14 @@ ValueReport check_values(const Implementations& impl, const Reference& reference
                           dims, options.float_tolerance, options.float_normal_tolerance, report.functions);
     compare_batch<float>(f.offsetf_n, f.shellf_n, "f", samples, dims, options.float_tolerance, report.functions);
   }
-  if (impl.glsl)
-    compare_runner<float>(impl.glsl, impl.glsl_label, impl.glsl_graded, samples, dims, options.float_tolerance,
-                          options.float_normal_tolerance, report.functions);
-  if (impl.numpy)
-    compare_runner<double>(impl.numpy, impl.numpy_label, impl.numpy_graded, samples, dims, options.tolerance,
+  if (impl.float64)
+    compare_runner<double>(impl.float64, impl.float64_label, "", impl.float64_graded, samples, dims, options.tolerance,
                            options.normal_tolerance, report.functions);
+  if (impl.float32)
+    compare_runner<float>(impl.float32, impl.float32_label, impl.float32_suffix, impl.float32_graded, samples, dims,
+                          options.float_tolerance, options.float_normal_tolerance, report.functions);
 
-  report.has_double = (impl.c && impl.c->offset != nullptr) || bool(impl.numpy);
+  report.has_double = (impl.c && impl.c->offset != nullptr) || bool(impl.float64);
   report.pass = !report.functions.empty();
   for (const auto& d : report.functions) {
     report.pass = report.pass && d.pass;

@@ -69,15 +69,17 @@ using Float64Runner = std::function<std::vector<double>(
     const std::string& function, const std::vector<std::array<double, 4>>& inputs, int components)>;
 
 // What to compare: the loaded C functions (may be null), a float32 runner and a float64 runner (each
-// may be empty).
+// may be empty). A runner's rows are named "<label> <function><suffix>": "glsl offset", "numpy offset",
+// "cuda offsetf" (the suffix of the file's own float names).
 struct Implementations {
   const LoadedFunctions* c = nullptr;
-  Float32Runner glsl;
-  std::string glsl_label = "glsl";  // prefix of the GLSL rows
-  bool glsl_graded = false;         // the snippet has _graded
-  Float64Runner numpy;
-  std::string numpy_label = "numpy";  // prefix of the NumPy rows
-  bool numpy_graded = false;          // the module has _graded
+  Float32Runner float32;  // GLSL on llvmpipe; the float functions of CUDA and OpenCL files
+  std::string float32_label = "glsl";
+  std::string float32_suffix;
+  bool float32_graded = false;  // the file has _graded
+  Float64Runner float64;        // NumPy; the double functions of CUDA and OpenCL files
+  std::string float64_label = "numpy";
+  bool float64_graded = false;
 };
 
 // `thickness` is the graded wall's t(x) when the file has a _graded function.

@@ -21,8 +21,11 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
       "check",
       "Check an emitted file: compile it (C99 strict, C++17, dlopen), compare its values with a 40-digit\n"
       "evaluation, and measure the wall thickness it produces (paper section 5.2.1). GLSL: glslang compile,\n"
-      "then its values on Mesa llvmpipe. The file's kind comes from its metadata, not its name.");
-  cmd->add_option("file", o.file, "Header (.h) or GLSL snippet (.glsl) written by `offsetgen generate`")->required();
+      "then its values on Mesa llvmpipe. NumPy (.py): python3 runs it. CUDA (.cuh): nvcc compiles its host\n"
+      "path. OpenCL C (.cl): pocl (the OpenCL ICD) runs it. The file's kind comes from its metadata, not its name.");
+  cmd->add_option("file", o.file,
+                  "A .h, .glsl, .py, .cuh or .cl file written by `offsetgen generate` (not .hlsl, .wgsl)")
+      ->required();
   cmd->add_option("--h", o.h_list,
                   "Offsets to measure, comma-separated, cell units (default 0.001..0.1, 9 log-spaced)");
   cmd->add_option("--json", o.json_path, "Write every number to this JSON file");

@@ -3,6 +3,7 @@
 // a cos of the same argument, rsqrt for a division by a square root), and a batch kernel
 // <prefix>_offset_kernel (and <prefix>_offsetf_kernel). Skeletons: templates/cuda/.
 #include "emit/backend.h"
+#include "emit/c_family.h"
 #include "emit/c_names.h"
 #include "emit/call_rewrites.h"
 #include "emit/emitted_api.h"
@@ -53,12 +54,7 @@ class CudaBackend final : public Backend {
   std::string bool_decl() const override { return "const bool"; }
   std::string literal(double value, Precision p) const override {
     if (std::isnan(value)) return p == Precision::Double ? "nan(\"\")" : "nanf(\"\")";  // the density relations
-    if (p == Precision::Float) {
-      std::string text = float_literal(value);
-      return value < 0 ? text.substr(0, text.size() - 1) + "f)" : text + "f";
-    }
-    const std::string text = floating_form(fmt::format("{:.17g}", value));
-    return value < 0 ? "(" + text + ")" : text;
+    return c_family::literal(value, p);
   }
   std::string suffix(Precision p) const override { return p == Precision::Float ? "f" : ""; }
   std::string abs_name(Precision p) const override { return "fabs" + suffix(p); }
@@ -78,29 +74,17 @@ class CudaBackend final : public Backend {
   }
 
   std::vector<std::string> input_names(const FileFacts& facts, const EmittedFunction& f) const override {
-    std::vector<std::string> inputs;
-    if (f.takes_point) inputs = {"x", "y"};
-    if (f.takes_point && facts.dims == 3) inputs.push_back("z");
-    if (!f.extra_parameter.empty()) inputs.push_back(f.extra_parameter);
-    return inputs;
+    return c_family::input_names(facts, f);
   }
   std::string parameters(const FileFacts& facts, const EmittedFunction& f, Precision p) const override {
-    const std::string real = real_type(p);
-    if (!f.takes_point) return fmt::format("{} {}", real, f.extra_parameter);
-    std::string params = fmt::format("{0} x, {0} y", real);
-    if (facts.dims == 3) params += fmt::format(", {} z", real);
-    if (!f.extra_parameter.empty()) params += fmt::format(", {} {}", real, f.extra_parameter);
-    if (f.vector_result) params += fmt::format(", {} n[{}]", real, facts.dims);
-    return params;
+    return c_family::parameters(facts, f, real_type(p));
   }
   std::string return_type(const FileFacts&, const EmittedFunction& f, Precision p) const override {
     return f.vector_result ? "void" : real_type(p);
   }
   std::string unused_parameter(const std::string& name) const override { return "(void)" + name + ";"; }
   std::string vector_return(const FileFacts&, const std::vector<std::string>& components) const override {
-    std::string lines;
-    for (size_t i = 0; i < components.size(); ++i) lines += fmt::format("    n[{}] = {};\n", i, components[i]);
-    return lines;
+    return c_family::vector_return(components);
   }
   std::string finish_body(const FileFacts&, const std::string& body, Precision p) const override {
     const std::string f = suffix(p), real = real_type(p);
@@ -117,19 +101,12 @@ class CudaBackend final : public Backend {
                     f.vector_result ? f.signature_doc.substr(0, f.signature_doc.size() - 1) + ", n)" : f.signature_doc);
     return fmt::format(" *   {:<42} {}\n", call, f.doc);
   }
-  std::string ops_entry(const EmittedFunction& f) const override {
-    return fmt::format(" *   {:<8} {}\n", f.suffix, count_ops(*f.program));
-  }
+  std::string ops_entry(const EmittedFunction& f) const override { return c_family::ops_entry(f); }
   std::string paragraph(const std::string& label, const std::string& text) const override {
-    std::string capitalised = label;
-    capitalised[0] = static_cast<char>(capitalised[0] - 'a' + 'A');
-    return wrap_paragraph(capitalised + ": " + text, " * ", " *   ");
+    return c_family::paragraph(label, text);
   }
-  std::string method_paragraph(const MethodFacts& m) const override {
-    return wrap_paragraph(m.summary, " * Method:  ", " *          ") + "\n" +
-           wrap_paragraph(m.citation, " *          ", " *          ");
-  }
-  std::string comment_paragraph(const std::string& text) const override { return wrap_paragraph(text, " * ", " *   "); }
+  std::string method_paragraph(const MethodFacts& m) const override { return c_family::method_paragraph(m); }
+  std::string comment_paragraph(const std::string& text) const override { return c_family::comment_paragraph(text); }
   std::string nan_note() const override {
     return "CUDA returns nan(\"\") (nanf(\"\") in float); code compiled with -use_fast_math may not keep NaNs, "
            "so check the range on the host where that matters.";
@@ -171,6 +148,8 @@ class CudaBackend final : public Backend {
     return fmt::format(fmt::runtime(sections.at("kernels")), fmt::arg("list", list), fmt::arg("prefix", facts.prefix),
                        fmt::arg("kernels", kernels));
   }
+
+  bool checkable() const override { return true; }  // check/cuda_runner.h
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 // the device reports cl_khr_fp64, in double (the C header's names). float3/double3 points, OpenCL's
 // own math (sincos, rsqrt). Skeletons: templates/opencl/.
 #include "emit/backend.h"
+#include "emit/c_family.h"
 #include "emit/call_rewrites.h"
 #include "emit/emitted_api.h"
 #include "emit/templates.h"
@@ -61,12 +62,7 @@ class OpenclBackend final : public Backend {
   // An unsuffixed floating literal is a double in OpenCL C: float literals carry f.
   std::string literal(double value, Precision p) const override {
     if (std::isnan(value)) return p == Precision::Double ? "(double)NAN" : "NAN";  // the density relations
-    if (p == Precision::Float) {
-      std::string text = float_literal(value);
-      return value < 0 ? text.substr(0, text.size() - 1) + "f)" : text + "f";
-    }
-    const std::string text = floating_form(fmt::format("{:.17g}", value));
-    return value < 0 ? "(" + text + ")" : text;
+    return c_family::literal(value, p);
   }
   std::string suffix(Precision p) const override { return p == Precision::Float ? "f" : ""; }
   // OpenCL's math built-ins are overloaded: one name for float and double.
@@ -131,19 +127,12 @@ class OpenclBackend final : public Backend {
         fmt::format("{} {}({})", return_type(facts, f, p), emitted_name(facts, f, p), parameters(facts, f, p));
     return fmt::format(" *   {:<52} {}\n", call, f.doc);
   }
-  std::string ops_entry(const EmittedFunction& f) const override {
-    return fmt::format(" *   {:<8} {}\n", f.suffix, count_ops(*f.program));
-  }
+  std::string ops_entry(const EmittedFunction& f) const override { return c_family::ops_entry(f); }
   std::string paragraph(const std::string& label, const std::string& text) const override {
-    std::string capitalised = label;
-    capitalised[0] = static_cast<char>(capitalised[0] - 'a' + 'A');
-    return wrap_paragraph(capitalised + ": " + text, " * ", " *   ");
+    return c_family::paragraph(label, text);
   }
-  std::string method_paragraph(const MethodFacts& m) const override {
-    return wrap_paragraph(m.summary, " * Method:  ", " *          ") + "\n" +
-           wrap_paragraph(m.citation, " *          ", " *          ");
-  }
-  std::string comment_paragraph(const std::string& text) const override { return wrap_paragraph(text, " * ", " *   "); }
+  std::string method_paragraph(const MethodFacts& m) const override { return c_family::method_paragraph(m); }
+  std::string comment_paragraph(const std::string& text) const override { return c_family::comment_paragraph(text); }
   std::string nan_note() const override {
     return "OpenCL C returns NAN ((double)NAN in double); a program built with -cl-fast-relaxed-math or "
            "-cl-finite-math-only may not keep NaNs, so check the range on the host where that matters.";
@@ -186,6 +175,8 @@ class OpenclBackend final : public Backend {
     list.pop_back();
     return fmt::format(fmt::runtime(sections.at("kernels")), fmt::arg("list", list), fmt::arg("kernels", kernels));
   }
+
+  bool checkable() const override { return true; }  // check/opencl_runner.h
 
  private:
   static constexpr const char* kRealPlaceholder = "@OFFSETGEN_REAL@";
