@@ -45,9 +45,10 @@
  *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
  *   0, so every function returns a finite value for finite input (do not compile with
  *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
- *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
- *   keeps |q_K - p| <= |h| and so the bound above.
+ *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
+ *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
+ *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
+ *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -56,11 +57,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    20
- *   offset   185
- *   shell    225
- *   normal   205
+ *   offset   174
+ *   shell    314
+ *   normal   194
  */
-/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":185,"shell":225,"normal":205}} */
+/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":174,"shell":314,"normal":194}} */
 #ifndef OFFSETGEN_DIAMOND_PROJ_O2_CL
 #define OFFSETGEN_DIAMOND_PROJ_O2_CL
 
@@ -88,234 +89,218 @@ float diamond_proj_o2_fieldf(float3 p)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 185
+ * Total ops: 174
  */
 float diamond_proj_o2_offsetf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c2;
-    const float _s2 = sincos(_t0, &_c2);
-    const float _t1 = _c2;
-    const float _t2 = 6.28318548f * h;
-    const float _t3 = 6.28318548f * p.y;
+    const float _t0 = 6.28318548f * h;
+    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+    const float _t2 = _t1 * _t1;
+    const float _t3 = p.z * 6.28318548f;
     float _c0;
     const float _s0 = sincos(_t3, &_c0);
     const float _t4 = _c0;
-    const float _t5 = 6.28318548f * p.x;
+    const float _t5 = 6.28318548f * p.y;
     float _c1;
     const float _s1 = sincos(_t5, &_c1);
     const float _t6 = _c1;
-    const float _t7 = _t1 * _t4 * _t6;
-    const float _t8 = _s0;
-    const float _t9 = _s1;
-    const float _t10 = _t1 * _t8 * _t9;
-    const float _t11 = _s2;
-    const float _t12 = _t11 * _t4 * _t9;
-    const float _t13 = _t6 * (_t11 * _t8);
-    const float _t14 = _t7 + _t10 - _t12 - _t13;
-    const float _t15 = _t2 * _t14;
-    const float _t16 = _t7 + _t13 - _t12 - _t10;
-    const float _t17 = _t7 + _t12 - _t10 - _t13;
-    const float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-    const float _t20 = _t15 * _t15 * _t19;
-    const bool _t21 = _t20 <= 1.0f;
-    const float _t22 = (_t21) ? _t20 : 1.0f;
-    const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
-    const float _t26 = sqrt(_t19);
-    const float _t27 = _t26 * _t15;
-    const float _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t29 = _t1 * _t25 + _t11 * _t28;
-    const float _t30 = _t2 * _t17;
-    const float _t31 = _t30 * _t30 * _t19;
-    const bool _t32 = _t31 <= 1.0f;
-    const float _t33 = (_t32) ? _t31 : 1.0f;
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * _t34;
-    const float _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
-    const float _t37 = _t26 * _t30;
-    const float _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t39 = _t36 * _t8 - _t4 * _t38;
-    const float _t40 = _t2 * _t16;
-    const float _t41 = _t40 * _t40 * _t19;
-    const bool _t42 = _t41 <= 1.0f;
-    const float _t43 = (_t42) ? _t41 : 1.0f;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = _t44 * _t44;
-    const float _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
-    const float _t47 = _t26 * _t40;
-    const float _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t49 = _t46 * _t6 + _t48 * _t9;
-    const float _t50 = _t46 * _t9 - _t48 * _t6;
-    const float _t51 = _t8 * _t38 + _t4 * _t36;
-    const float _t52 = _t11 * _t25 - _t1 * _t28;
-    return _t29 * _t39 * _t49 + (_t50 * _t51 * _t29 + _t51 * _t52 * _t49) + _t50 * _t52 * _t39;
+    const float _t7 = 6.28318548f * p.x;
+    float _c2;
+    const float _s2 = sincos(_t7, &_c2);
+    const float _t8 = _c2;
+    const float _t9 = _t4 * _t6 * _t8;
+    const float _t10 = _s0;
+    const float _t11 = _s1;
+    const float _t12 = _t8 * (_t10 * _t11);
+    const float _t13 = _s2;
+    const float _t14 = _t10 * _t6 * _t13;
+    const float _t15 = _t4 * _t11 * _t13;
+    const float _t16 = _t9 + _t12 - _t14 - _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t9 + _t15 - _t14 - _t12;
+    const float _t19 = _t18 * _t18;
+    const float _t20 = _t9 + _t14 - _t15 - _t12;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t19 + _t17 + _t21;
+    const float _t23 = (_t22 > 1.17549435e-38f) ? 1.0f / _t22 : 0.0f;
+    const float _t24 = _t2 * _t17 * _t23;
+    const float _t25 = _t24 * _t24;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = (0.0416666679f - 0.00138888892f * _t24) * _t25 + (1.0f - 0.5f * _t24) + _t26 * (2.48015876e-05f - 2.75573029e-07f * _t24 + (2.08744777e-09f - 1.13046204e-11f * _t24) * _t25);
+    const float _t28 = _t1 * (sqrt(_t22) * _t23);
+    const float _t29 = (_t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * (_t16 * _t28);
+    const float _t30 = _t27 * _t13 - _t29 * _t8;
+    const float _t31 = _t2 * _t21 * _t23;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (_t32 * (2.08744777e-09f - 1.13046204e-11f * _t31) + (2.48015876e-05f - _t31 * 2.75573029e-07f));
+    const float _t35 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * (_t20 * _t28);
+    const float _t36 = _t11 * _t34 - _t6 * _t35;
+    const float _t37 = _t23 * (_t2 * _t19);
+    const float _t38 = _t37 * _t37;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = 1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38 + _t39 * ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f));
+    const float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) + (1.0f - 0.166666672f * _t37 + (0.00833333377f - _t37 * 0.000198412701f) * _t38));
+    const float _t42 = _t10 * _t40 - _t4 * _t41;
+    const float _t43 = _t4 * _t40 + _t10 * _t41;
+    const float _t44 = _t11 * _t35 + _t6 * _t34;
+    const float _t45 = _t27 * _t8 + _t29 * _t13;
+    return _t30 * (_t36 * _t42) + _t43 * _t30 * _t44 + _t45 * _t42 * _t44 + _t36 * _t45 * _t43;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 225
+ * Total ops: 314
  */
 float diamond_proj_o2_shellf(float3 p, float t)
 {
-    const float _t0 = 6.28318548f * (t * 0.5f);
-    const float _t1 = p.z * 6.28318548f;
-    float _c0;
-    const float _s0 = sincos(_t1, &_c0);
-    const float _t2 = _c0;
-    const float _t3 = 6.28318548f * p.y;
+    const float _t0 = 6.28318548f * p.x;
     float _c1;
-    const float _s1 = sincos(_t3, &_c1);
-    const float _t4 = _c1;
-    const float _t5 = 6.28318548f * p.x;
+    const float _s1 = sincos(_t0, &_c1);
+    const float _t1 = _c1;
+    const float _t2 = p.z * 6.28318548f;
     float _c2;
-    const float _s2 = sincos(_t5, &_c2);
-    const float _t6 = _c2;
-    const float _t7 = _t2 * _t4 * _t6;
-    const float _t8 = _s0;
-    const float _t9 = _s1;
-    const float _t10 = _t6 * (_t8 * _t9);
-    const float _t11 = _s2;
-    const float _t12 = _t8 * _t4 * _t11;
-    const float _t13 = _t2 * _t9 * _t11;
-    const float _t14 = _t7 + _t10 - _t12 - _t13;
-    const float _t15 = _t0 * _t14;
-    const float _t16 = _t7 + _t13 - _t12 - _t10;
-    const float _t17 = _t7 + _t12 - _t13 - _t10;
-    const float _t18 = _t16 * _t16 + _t14 * _t14 + _t17 * _t17;
-    const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-    const float _t20 = _t15 * _t15 * _t19;
-    const bool _t21 = _t20 <= 1.0f;
-    const float _t22 = (_t21) ? _t20 : 1.0f;
+    const float _s2 = sincos(_t2, &_c2);
+    const float _t3 = _c2;
+    const float _t4 = 6.28318548f * p.y;
+    float _c0;
+    const float _s0 = sincos(_t4, &_c0);
+    const float _t5 = _c0;
+    const float _t6 = _t3 * _t5 * _t1;
+    const float _t7 = _s0;
+    const float _t8 = _s1;
+    const float _t9 = _t3 * _t7 * _t8;
+    const float _t10 = _s2;
+    const float _t11 = _t10 * _t5 * _t8;
+    const float _t12 = _t1 * (_t10 * _t7);
+    const float _t13 = _t6 + _t9 - _t11 - _t12;
+    const float _t14 = _t13 * _t13;
+    const float _t15 = _t6 + _t12 - _t11 - _t9;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t6 + _t11 - _t9 - _t12;
+    const float _t18 = _t17 * _t17;
+    const float _t19 = _t14 + _t16 + _t18;
+    const float _t20 = (_t19 > 1.17549435e-38f) ? 1.0f / _t19 : 0.0f;
+    const float _t21 = 6.28318548f * (t * 0.5f);
+    const float _t22 = (_t21 <= 1.0f) ? (((-1.0f) <= _t21) ? _t21 : (-1.0f)) : 1.0f;
     const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = (2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - _t22 * 1.13046204e-11f)) * _t24 + (1.0f - _t22 * 0.5f + _t23 * (0.0416666679f - _t22 * 0.00138888892f));
-    const float _t26 = _t25 * _t6;
-    const float _t27 = 1.0f - _t22 * 0.166666672f + (0.00833333377f - _t22 * 0.000198412701f) * _t23 + (2.75573188e-06f - _t22 * 2.50520991e-08f + (1.60577024e-10f - _t22 * 7.54937183e-13f) * _t23) * _t24;
-    const float _t28 = sqrt(_t19);
-    const float _t29 = _t28 * _t15;
-    const float _t30 = _t27 * ((_t21) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t31 = _t26 + _t30 * _t11;
-    const float _t32 = _t17 * _t0;
-    const float _t33 = _t32 * _t32 * _t19;
-    const bool _t34 = _t33 <= 1.0f;
-    const float _t35 = (_t34) ? _t33 : 1.0f;
-    const float _t36 = _t35 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = _t36 * (0.0416666679f - 0.00138888892f * _t35) + (1.0f - _t35 * 0.5f) + (2.48015876e-05f - _t35 * 2.75573029e-07f + _t36 * (2.08744777e-09f - 1.13046204e-11f * _t35)) * _t37;
-    const float _t39 = _t9 * _t38;
-    const float _t40 = _t28 * _t32;
-    const float _t41 = _t36 * (0.00833333377f - 0.000198412701f * _t35) + (1.0f - 0.166666672f * _t35) + ((1.60577024e-10f - 7.54937183e-13f * _t35) * _t36 + (2.75573188e-06f - 2.50520991e-08f * _t35)) * _t37;
-    const float _t42 = ((_t34) ? _t40 : ((_t40 > 0.0f) ? 1.0f : (-1.0f))) * _t41;
-    const float _t43 = _t39 - _t4 * _t42;
-    const float _t44 = _t0 * _t16;
-    const float _t45 = _t44 * _t44 * _t19;
-    const bool _t46 = _t45 <= 1.0f;
-    const float _t47 = (_t46) ? _t45 : 1.0f;
-    const float _t48 = _t47 * _t47;
-    const float _t49 = _t48 * _t48;
-    const float _t50 = _t49 * (2.48015876e-05f - _t47 * 2.75573029e-07f + _t48 * (2.08744777e-09f - _t47 * 1.13046204e-11f)) + (_t48 * (0.0416666679f - _t47 * 0.00138888892f) + (1.0f - _t47 * 0.5f));
-    const float _t51 = _t2 * _t50;
-    const float _t52 = _t28 * _t44;
-    const float _t53 = _t48 * (0.00833333377f - _t47 * 0.000198412701f) + (1.0f - _t47 * 0.166666672f) + _t49 * (2.75573188e-06f - _t47 * 2.50520991e-08f + (1.60577024e-10f - _t47 * 7.54937183e-13f) * _t48);
-    const float _t54 = ((_t46) ? _t52 : ((_t52 > 0.0f) ? 1.0f : (-1.0f))) * _t53;
-    const float _t55 = _t51 + _t8 * _t54;
-    const float _t56 = _t25 * _t11;
-    const float _t57 = _t56 - _t30 * _t6;
-    const float _t58 = _t8 * _t50;
-    const float _t59 = _t58 - _t2 * _t54;
-    const float _t60 = _t4 * _t38;
-    const float _t61 = _t60 + _t9 * _t42;
-    const float _t62 = -_t40;
-    const float _t63 = ((_t34) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f))) * _t41;
-    const float _t64 = _t60 + _t63 * _t9;
-    const float _t65 = -_t29;
-    const float _t66 = _t27 * ((_t21) ? _t65 : ((_t65 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t67 = _t26 + _t66 * _t11;
-    const float _t68 = -_t52;
-    const float _t69 = _t53 * ((_t46) ? _t68 : ((_t68 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t70 = _t58 - _t2 * _t69;
-    const float _t71 = _t39 - _t4 * _t63;
-    const float _t72 = _t8 * _t69 + _t51;
-    const float _t73 = _t56 - _t66 * _t6;
-    return (_t31 * _t43 * _t55 + _t43 * _t57 * _t59 + _t61 * _t57 * _t55 + _t31 * _t61 * _t59) * (_t64 * _t67 * _t70 + _t71 * _t67 * _t72 + _t64 * _t73 * _t72 + _t71 * _t73 * _t70);
+    const float _t24 = _t20 * (_t23 * _t16);
+    const float _t25 = _t24 * _t24;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = (2.48015876e-05f - _t24 * 2.75573029e-07f + _t25 * (2.08744777e-09f - 1.13046204e-11f * _t24)) * _t26 + (_t25 * (0.0416666679f - 0.00138888892f * _t24) + (1.0f - _t24 * 0.5f));
+    const float _t28 = sqrt(_t19) * _t20;
+    const float _t29 = _t22 * _t28;
+    const float _t30 = ((2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) * _t26 + ((0.00833333377f - 0.000198412701f * _t24) * _t25 + (1.0f - 0.166666672f * _t24))) * (_t29 * _t15);
+    const float _t31 = _t1 * _t27 + _t30 * _t8;
+    const float _t32 = _t23 * _t18 * _t20;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t33 * _t33;
+    const float _t35 = _t34 * (2.48015876e-05f - _t32 * 2.75573029e-07f + (2.08744777e-09f - _t32 * 1.13046204e-11f) * _t33) + ((0.0416666679f - 0.00138888892f * _t32) * _t33 + (1.0f - _t32 * 0.5f));
+    const float _t36 = _t29 * _t17 * (1.0f - 0.166666672f * _t32 + (0.00833333377f - 0.000198412701f * _t32) * _t33 + _t34 * (2.75573188e-06f - 2.50520991e-08f * _t32 + _t33 * (1.60577024e-10f - 7.54937183e-13f * _t32)));
+    const float _t37 = _t5 * _t35 + _t7 * _t36;
+    const float _t38 = _t23 * _t14 * _t20;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = _t39 * _t39;
+    const float _t41 = 1.0f - _t38 * 0.5f + (0.0416666679f - 0.00138888892f * _t38) * _t39 + (2.48015876e-05f - _t38 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t38) * _t39) * _t40;
+    const float _t42 = ((0.00833333377f - 0.000198412701f * _t38) * _t39 + (1.0f - 0.166666672f * _t38) + ((1.60577024e-10f - 7.54937183e-13f * _t38) * _t39 + (2.75573188e-06f - 2.50520991e-08f * _t38)) * _t40) * (_t29 * _t13);
+    const float _t43 = _t10 * _t41 - _t3 * _t42;
+    const float _t44 = _t8 * _t27 - _t30 * _t1;
+    const float _t45 = _t3 * _t41 + _t10 * _t42;
+    const float _t46 = _t35 * _t7 - _t5 * _t36;
+    const float _t47 = -_t21;
+    const float _t48 = (_t47 <= 1.0f) ? (((-1.0f) <= _t47) ? _t47 : (-1.0f)) : 1.0f;
+    const float _t49 = _t28 * _t48;
+    const float _t50 = _t48 * _t48;
+    const float _t51 = _t20 * (_t50 * _t16);
+    const float _t52 = _t51 * _t51;
+    const float _t53 = _t52 * _t52;
+    const float _t54 = _t49 * _t15 * ((0.00833333377f - _t51 * 0.000198412701f) * _t52 + (1.0f - _t51 * 0.166666672f) + _t53 * (2.75573188e-06f - _t51 * 2.50520991e-08f + (1.60577024e-10f - _t51 * 7.54937183e-13f) * _t52));
+    const float _t55 = ((2.08744777e-09f - _t51 * 1.13046204e-11f) * _t52 + (2.48015876e-05f - _t51 * 2.75573029e-07f)) * _t53 + (1.0f - _t51 * 0.5f + (0.0416666679f - _t51 * 0.00138888892f) * _t52);
+    const float _t56 = _t8 * _t54 + _t1 * _t55;
+    const float _t57 = _t50 * _t18 * _t20;
+    const float _t58 = _t57 * _t57;
+    const float _t59 = _t58 * _t58;
+    const float _t60 = (1.0f - 0.166666672f * _t57 + (0.00833333377f - 0.000198412701f * _t57) * _t58 + (_t58 * (1.60577024e-10f - 7.54937183e-13f * _t57) + (2.75573188e-06f - 2.50520991e-08f * _t57)) * _t59) * (_t49 * _t17);
+    const float _t61 = 1.0f - _t57 * 0.5f + (0.0416666679f - 0.00138888892f * _t57) * _t58 + (_t58 * (2.08744777e-09f - 1.13046204e-11f * _t57) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59;
+    const float _t62 = _t7 * _t60 + _t5 * _t61;
+    const float _t63 = _t50 * _t14 * _t20;
+    const float _t64 = _t63 * _t63;
+    const float _t65 = _t64 * _t64;
+    const float _t66 = 1.0f - _t63 * 0.5f + (0.0416666679f - _t63 * 0.00138888892f) * _t64 + ((2.08744777e-09f - _t63 * 1.13046204e-11f) * _t64 + (2.48015876e-05f - _t63 * 2.75573029e-07f)) * _t65;
+    const float _t67 = _t49 * _t13 * (_t64 * (0.00833333377f - _t63 * 0.000198412701f) + (1.0f - _t63 * 0.166666672f) + _t65 * (2.75573188e-06f - _t63 * 2.50520991e-08f + _t64 * (1.60577024e-10f - _t63 * 7.54937183e-13f)));
+    const float _t68 = _t10 * _t66 - _t3 * _t67;
+    const float _t69 = _t8 * _t55 - _t1 * _t54;
+    const float _t70 = _t3 * _t66 + _t10 * _t67;
+    const float _t71 = _t7 * _t61 - _t5 * _t60;
+    return (_t31 * _t37 * _t43 + (_t44 * _t45 * _t37 + (_t44 * _t46 * _t43 + _t46 * _t31 * _t45))) * (_t56 * _t62 * _t68 + _t69 * _t62 * _t70 + _t56 * _t71 * _t70 + _t71 * (_t69 * _t68));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 205
+ * Total ops: 194
  */
 float3 diamond_proj_o2_normalf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
+    const float _t0 = 6.28318548f * p.y;
     float _c0;
     const float _s0 = sincos(_t0, &_c0);
     const float _t1 = _s0;
     const float _t2 = 6.28318548f * h;
-    const float _t3 = _c0;
-    const float _t4 = 6.28318548f * p.y;
+    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+    const float _t4 = _t3 * _t3;
+    const float _t5 = p.z * 6.28318548f;
     float _c1;
-    const float _s1 = sincos(_t4, &_c1);
-    const float _t5 = _c1;
-    const float _t6 = 6.28318548f * p.x;
+    const float _s1 = sincos(_t5, &_c1);
+    const float _t6 = _c1;
+    const float _t7 = _c0;
+    const float _t8 = 6.28318548f * p.x;
     float _c2;
-    const float _s2 = sincos(_t6, &_c2);
-    const float _t7 = _c2;
-    const float _t8 = _t3 * _t5 * _t7;
-    const float _t9 = _s1;
-    const float _t10 = _s2;
-    const float _t11 = _t3 * _t9 * _t10;
-    const float _t12 = _t1 * _t5 * _t10;
-    const float _t13 = _t7 * (_t1 * _t9);
-    const float _t14 = _t8 + _t11 - _t12 - _t13;
-    const float _t15 = _t2 * _t14;
-    const float _t16 = _t8 + _t13 - _t12 - _t11;
-    const float _t17 = _t8 + _t12 - _t11 - _t13;
-    const float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-    const float _t20 = _t15 * _t15 * _t19;
-    const bool _t21 = _t20 <= 1.0f;
-    const float _t22 = (_t21) ? _t20 : 1.0f;
-    const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
-    const float _t26 = sqrt(_t19);
-    const float _t27 = _t26 * _t15;
-    const float _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t29 = _t1 * _t25 - _t3 * _t28;
-    const float _t30 = _t2 * _t17;
-    const float _t31 = _t30 * _t30 * _t19;
-    const bool _t32 = _t31 <= 1.0f;
-    const float _t33 = (_t32) ? _t31 : 1.0f;
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * _t34;
-    const float _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
-    const float _t37 = _t26 * _t30;
-    const float _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t39 = _t36 * _t9 - _t5 * _t38;
-    const float _t40 = _t2 * _t16;
-    const float _t41 = _t40 * _t40 * _t19;
-    const bool _t42 = _t41 <= 1.0f;
-    const float _t43 = (_t42) ? _t41 : 1.0f;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = _t44 * _t44;
-    const float _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
-    const float _t47 = _t26 * _t40;
-    const float _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t49 = _t46 * _t7 + _t48 * _t10;
-    const float _t50 = _t29 * _t39 * _t49;
-    const float _t51 = _t46 * _t10 - _t48 * _t7;
-    const float _t52 = _t9 * _t38 + _t5 * _t36;
-    const float _t53 = _t29 * (_t51 * _t52);
-    const float _t54 = _t3 * _t25 + _t1 * _t28;
-    const float _t55 = _t49 * (_t52 * _t54);
-    const float _t56 = _t51 * _t54 * _t39;
-    const float _t57 = _t50 + _t53 - _t55 - _t56;
-    const float _t58 = _t50 + _t56 - _t55 - _t53;
-    const float _t59 = _t50 + _t55 - _t53 - _t56;
-    const float _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
-    const float _t61 = (_t60 > 0.0f) ? rsqrt(_t60) : 0.0f;
-    return (float3)(_t61 * _t59, -(_t58 * _t61), -(_t61 * _t57));
+    const float _s2 = sincos(_t8, &_c2);
+    const float _t9 = _c2;
+    const float _t10 = _t6 * _t7 * _t9;
+    const float _t11 = _s1;
+    const float _t12 = _s2;
+    const float _t13 = _t11 * _t7 * _t12;
+    const float _t14 = _t6 * _t1 * _t12;
+    const float _t15 = _t9 * (_t11 * _t1);
+    const float _t16 = _t10 + _t13 - _t14 - _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t10 + _t14 - _t13 - _t15;
+    const float _t19 = _t18 * _t18;
+    const float _t20 = _t10 + _t15 - _t13 - _t14;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t19 + _t21 + _t17;
+    const float _t23 = (_t22 > 1.17549435e-38f) ? 1.0f / _t22 : 0.0f;
+    const float _t24 = _t4 * _t17 * _t23;
+    const float _t25 = _t24 * _t24;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = _t25 * (0.0416666679f - 0.00138888892f * _t24) + (1.0f - _t24 * 0.5f) + _t26 * (_t25 * (2.08744777e-09f - 1.13046204e-11f * _t24) + (2.48015876e-05f - _t24 * 2.75573029e-07f));
+    const float _t28 = _t3 * (sqrt(_t22) * _t23);
+    const float _t29 = (_t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * (_t16 * _t28);
+    const float _t30 = _t1 * _t27 - _t7 * _t29;
+    const float _t31 = _t4 * _t21 * _t23;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = (0.0416666679f - 0.00138888892f * _t31) * _t32 + (1.0f - 0.5f * _t31) + _t33 * (2.48015876e-05f - 2.75573029e-07f * _t31 + (2.08744777e-09f - 1.13046204e-11f * _t31) * _t32);
+    const float _t35 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * (_t20 * _t28);
+    const float _t36 = _t34 * _t9 + _t35 * _t12;
+    const float _t37 = _t23 * (_t4 * _t19);
+    const float _t38 = _t37 * _t37;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = 1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38 + _t39 * ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f));
+    const float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) + (1.0f - 0.166666672f * _t37 + (0.00833333377f - _t37 * 0.000198412701f) * _t38));
+    const float _t42 = _t11 * _t40 - _t6 * _t41;
+    const float _t43 = _t30 * _t36 * _t42;
+    const float _t44 = _t1 * _t29 + _t7 * _t27;
+    const float _t45 = _t34 * _t12 - _t35 * _t9;
+    const float _t46 = _t44 * (_t42 * _t45);
+    const float _t47 = _t6 * _t40 + _t11 * _t41;
+    const float _t48 = _t36 * _t47 * _t44;
+    const float _t49 = _t30 * _t47 * _t45;
+    const float _t50 = _t43 + _t46 - _t48 - _t49;
+    const float _t51 = _t43 + _t48 - _t49 - _t46;
+    const float _t52 = _t43 + _t49 - _t48 - _t46;
+    const float _t53 = _t50 * _t50 + _t51 * _t51 + _t52 * _t52;
+    const float _t54 = (_t53 > 0.0f) ? rsqrt(_t53) : 0.0f;
+    return (float3)(_t54 * _t51, -(_t54 * _t52), -(_t54 * _t50));
 }
 
 #ifdef cl_khr_fp64
@@ -346,234 +331,218 @@ double diamond_proj_o2_field(double3 p)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 185
+ * Total ops: 174
  */
 double diamond_proj_o2_offset(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c2;
-    const double _s2 = sincos(_t0, &_c2);
-    const double _t1 = _c2;
-    const double _t2 = 6.2831853071795862 * h;
-    const double _t3 = 6.2831853071795862 * p.y;
+    const double _t0 = 6.2831853071795862 * h;
+    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    const double _t2 = _t1 * _t1;
+    const double _t3 = p.z * 6.2831853071795862;
     double _c0;
     const double _s0 = sincos(_t3, &_c0);
     const double _t4 = _c0;
-    const double _t5 = 6.2831853071795862 * p.x;
+    const double _t5 = 6.2831853071795862 * p.y;
     double _c1;
     const double _s1 = sincos(_t5, &_c1);
     const double _t6 = _c1;
-    const double _t7 = _t1 * _t4 * _t6;
-    const double _t8 = _s0;
-    const double _t9 = _s1;
-    const double _t10 = _t1 * _t8 * _t9;
-    const double _t11 = _s2;
-    const double _t12 = _t11 * _t4 * _t9;
-    const double _t13 = _t6 * (_t11 * _t8);
-    const double _t14 = _t7 + _t10 - _t12 - _t13;
-    const double _t15 = _t2 * _t14;
-    const double _t16 = _t7 + _t13 - _t12 - _t10;
-    const double _t17 = _t7 + _t12 - _t10 - _t13;
-    const double _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    const double _t20 = _t15 * _t15 * _t19;
-    const bool _t21 = _t20 <= 1.0;
-    const double _t22 = (_t21) ? _t20 : 1.0;
-    const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = _t24 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23);
-    const double _t26 = sqrt(_t19);
-    const double _t27 = _t26 * _t15;
-    const double _t28 = ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (_t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
-    const double _t29 = _t1 * _t25 + _t11 * _t28;
-    const double _t30 = _t2 * _t17;
-    const double _t31 = _t30 * _t30 * _t19;
-    const bool _t32 = _t31 <= 1.0;
-    const double _t33 = (_t32) ? _t31 : 1.0;
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * _t34;
-    const double _t36 = (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07 + _t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11)) * _t35 + (_t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + (1.0 - _t33 * 0.5));
-    const double _t37 = _t26 * _t30;
-    const double _t38 = ((_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08)) * _t35 + ((0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + (1.0 - _t33 * 0.16666666666666666))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
-    const double _t39 = _t36 * _t8 - _t4 * _t38;
-    const double _t40 = _t2 * _t16;
-    const double _t41 = _t40 * _t40 * _t19;
-    const bool _t42 = _t41 <= 1.0;
-    const double _t43 = (_t42) ? _t41 : 1.0;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = _t44 * _t44;
-    const double _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.041666666666666102 - _t43 * 0.0013888888888798428) + ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45;
-    const double _t47 = _t26 * _t40;
-    const double _t48 = ((2.755731919201122e-06 - _t43 * 2.5052099244914114e-08 + _t44 * (1.6057701922579786e-10 - _t43 * 7.549371704181243e-13)) * _t45 + (1.0 - _t43 * 0.16666666666666666 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
-    const double _t49 = _t46 * _t6 + _t48 * _t9;
-    const double _t50 = _t46 * _t9 - _t48 * _t6;
-    const double _t51 = _t8 * _t38 + _t4 * _t36;
-    const double _t52 = _t11 * _t25 - _t1 * _t28;
-    return _t29 * _t39 * _t49 + (_t50 * _t51 * _t29 + _t51 * _t52 * _t49) + _t50 * _t52 * _t39;
+    const double _t7 = 6.2831853071795862 * p.x;
+    double _c2;
+    const double _s2 = sincos(_t7, &_c2);
+    const double _t8 = _c2;
+    const double _t9 = _t4 * _t6 * _t8;
+    const double _t10 = _s0;
+    const double _t11 = _s1;
+    const double _t12 = _t8 * (_t10 * _t11);
+    const double _t13 = _s2;
+    const double _t14 = _t10 * _t6 * _t13;
+    const double _t15 = _t4 * _t11 * _t13;
+    const double _t16 = _t9 + _t12 - _t14 - _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t9 + _t15 - _t14 - _t12;
+    const double _t19 = _t18 * _t18;
+    const double _t20 = _t9 + _t14 - _t15 - _t12;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t19 + _t17 + _t21;
+    const double _t23 = (_t22 > 1.1754943508222875e-38) ? 1.0 / _t22 : 0.0;
+    const double _t24 = _t2 * _t17 * _t23;
+    const double _t25 = _t24 * _t24;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = (0.041666666666666102 - 0.0013888888888798428 * _t24) * _t25 + (1.0 - 0.5 * _t24) + _t26 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t24 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24) * _t25);
+    const double _t28 = _t1 * (sqrt(_t22) * _t23);
+    const double _t29 = (_t26 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) + (1.0 - 0.16666666666666666 * _t24 + _t25 * (0.0083333333333333003 - 0.00019841269841216566 * _t24))) * (_t16 * _t28);
+    const double _t30 = _t27 * _t13 - _t29 * _t8;
+    const double _t31 = _t2 * _t21 * _t23;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t32 * (0.041666666666666102 - 0.0013888888888798428 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (_t32 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t31) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07));
+    const double _t35 = (_t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31)) + (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - 0.00019841269841216566 * _t31))) * (_t20 * _t28);
+    const double _t36 = _t11 * _t34 - _t6 * _t35;
+    const double _t37 = _t23 * (_t2 * _t19);
+    const double _t38 = _t37 * _t37;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = 1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38 + _t39 * ((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07));
+    const double _t41 = _t28 * _t18 * (_t39 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) + (1.0 - 0.16666666666666666 * _t37 + (0.0083333333333333003 - _t37 * 0.00019841269841216566) * _t38));
+    const double _t42 = _t10 * _t40 - _t4 * _t41;
+    const double _t43 = _t4 * _t40 + _t10 * _t41;
+    const double _t44 = _t11 * _t35 + _t6 * _t34;
+    const double _t45 = _t27 * _t8 + _t29 * _t13;
+    return _t30 * (_t36 * _t42) + _t43 * _t30 * _t44 + _t45 * _t42 * _t44 + _t36 * _t45 * _t43;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 225
+ * Total ops: 314
  */
 double diamond_proj_o2_shell(double3 p, double t)
 {
-    const double _t0 = 6.2831853071795862 * (t * 0.5);
-    const double _t1 = p.z * 6.2831853071795862;
-    double _c0;
-    const double _s0 = sincos(_t1, &_c0);
-    const double _t2 = _c0;
-    const double _t3 = 6.2831853071795862 * p.y;
+    const double _t0 = 6.2831853071795862 * p.x;
     double _c1;
-    const double _s1 = sincos(_t3, &_c1);
-    const double _t4 = _c1;
-    const double _t5 = 6.2831853071795862 * p.x;
+    const double _s1 = sincos(_t0, &_c1);
+    const double _t1 = _c1;
+    const double _t2 = p.z * 6.2831853071795862;
     double _c2;
-    const double _s2 = sincos(_t5, &_c2);
-    const double _t6 = _c2;
-    const double _t7 = _t2 * _t4 * _t6;
-    const double _t8 = _s0;
-    const double _t9 = _s1;
-    const double _t10 = _t6 * (_t8 * _t9);
-    const double _t11 = _s2;
-    const double _t12 = _t8 * _t4 * _t11;
-    const double _t13 = _t2 * _t9 * _t11;
-    const double _t14 = _t7 + _t10 - _t12 - _t13;
-    const double _t15 = _t0 * _t14;
-    const double _t16 = _t7 + _t13 - _t12 - _t10;
-    const double _t17 = _t7 + _t12 - _t13 - _t10;
-    const double _t18 = _t16 * _t16 + _t14 * _t14 + _t17 * _t17;
-    const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    const double _t20 = _t15 * _t15 * _t19;
-    const bool _t21 = _t20 <= 1.0;
-    const double _t22 = (_t21) ? _t20 : 1.0;
+    const double _s2 = sincos(_t2, &_c2);
+    const double _t3 = _c2;
+    const double _t4 = 6.2831853071795862 * p.y;
+    double _c0;
+    const double _s0 = sincos(_t4, &_c0);
+    const double _t5 = _c0;
+    const double _t6 = _t3 * _t5 * _t1;
+    const double _t7 = _s0;
+    const double _t8 = _s1;
+    const double _t9 = _t3 * _t7 * _t8;
+    const double _t10 = _s2;
+    const double _t11 = _t10 * _t5 * _t8;
+    const double _t12 = _t1 * (_t10 * _t7);
+    const double _t13 = _t6 + _t9 - _t11 - _t12;
+    const double _t14 = _t13 * _t13;
+    const double _t15 = _t6 + _t12 - _t11 - _t9;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t6 + _t11 - _t9 - _t12;
+    const double _t18 = _t17 * _t17;
+    const double _t19 = _t14 + _t16 + _t18;
+    const double _t20 = (_t19 > 1.1754943508222875e-38) ? 1.0 / _t19 : 0.0;
+    const double _t21 = 6.2831853071795862 * (t * 0.5);
+    const double _t22 = (_t21 <= 1.0) ? (((-1.0) <= _t21) ? _t21 : (-1.0)) : 1.0;
     const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + _t23 * (2.0874477943664777e-09 - _t22 * 1.1304620460700782e-11)) * _t24 + (1.0 - _t22 * 0.5 + _t23 * (0.041666666666666102 - _t22 * 0.0013888888888798428));
-    const double _t26 = _t25 * _t6;
-    const double _t27 = 1.0 - _t22 * 0.16666666666666666 + (0.0083333333333333003 - _t22 * 0.00019841269841216566) * _t23 + (2.755731919201122e-06 - _t22 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t22 * 7.549371704181243e-13) * _t23) * _t24;
-    const double _t28 = sqrt(_t19);
-    const double _t29 = _t28 * _t15;
-    const double _t30 = _t27 * ((_t21) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0)));
-    const double _t31 = _t26 + _t30 * _t11;
-    const double _t32 = _t17 * _t0;
-    const double _t33 = _t32 * _t32 * _t19;
-    const bool _t34 = _t33 <= 1.0;
-    const double _t35 = (_t34) ? _t33 : 1.0;
-    const double _t36 = _t35 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = _t36 * (0.041666666666666102 - 0.0013888888888798428 * _t35) + (1.0 - _t35 * 0.5) + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07 + _t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35)) * _t37;
-    const double _t39 = _t9 * _t38;
-    const double _t40 = _t28 * _t32;
-    const double _t41 = _t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35) + (1.0 - 0.16666666666666666 * _t35) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35)) * _t37;
-    const double _t42 = ((_t34) ? _t40 : ((_t40 > 0.0) ? 1.0 : (-1.0))) * _t41;
-    const double _t43 = _t39 - _t4 * _t42;
-    const double _t44 = _t0 * _t16;
-    const double _t45 = _t44 * _t44 * _t19;
-    const bool _t46 = _t45 <= 1.0;
-    const double _t47 = (_t46) ? _t45 : 1.0;
-    const double _t48 = _t47 * _t47;
-    const double _t49 = _t48 * _t48;
-    const double _t50 = _t49 * (2.4801587247292686e-05 - _t47 * 2.7557303701922228e-07 + _t48 * (2.0874477943664777e-09 - _t47 * 1.1304620460700782e-11)) + (_t48 * (0.041666666666666102 - _t47 * 0.0013888888888798428) + (1.0 - _t47 * 0.5));
-    const double _t51 = _t2 * _t50;
-    const double _t52 = _t28 * _t44;
-    const double _t53 = _t48 * (0.0083333333333333003 - _t47 * 0.00019841269841216566) + (1.0 - _t47 * 0.16666666666666666) + _t49 * (2.755731919201122e-06 - _t47 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t47 * 7.549371704181243e-13) * _t48);
-    const double _t54 = ((_t46) ? _t52 : ((_t52 > 0.0) ? 1.0 : (-1.0))) * _t53;
-    const double _t55 = _t51 + _t8 * _t54;
-    const double _t56 = _t25 * _t11;
-    const double _t57 = _t56 - _t30 * _t6;
-    const double _t58 = _t8 * _t50;
-    const double _t59 = _t58 - _t2 * _t54;
-    const double _t60 = _t4 * _t38;
-    const double _t61 = _t60 + _t9 * _t42;
-    const double _t62 = -_t40;
-    const double _t63 = ((_t34) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0))) * _t41;
-    const double _t64 = _t60 + _t63 * _t9;
-    const double _t65 = -_t29;
-    const double _t66 = _t27 * ((_t21) ? _t65 : ((_t65 > 0.0) ? 1.0 : (-1.0)));
-    const double _t67 = _t26 + _t66 * _t11;
-    const double _t68 = -_t52;
-    const double _t69 = _t53 * ((_t46) ? _t68 : ((_t68 > 0.0) ? 1.0 : (-1.0)));
-    const double _t70 = _t58 - _t2 * _t69;
-    const double _t71 = _t39 - _t4 * _t63;
-    const double _t72 = _t8 * _t69 + _t51;
-    const double _t73 = _t56 - _t66 * _t6;
-    return (_t31 * _t43 * _t55 + _t43 * _t57 * _t59 + _t61 * _t57 * _t55 + _t31 * _t61 * _t59) * (_t64 * _t67 * _t70 + _t71 * _t67 * _t72 + _t64 * _t73 * _t72 + _t71 * _t73 * _t70);
+    const double _t24 = _t20 * (_t23 * _t16);
+    const double _t25 = _t24 * _t24;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07 + _t25 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24)) * _t26 + (_t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24) + (1.0 - _t24 * 0.5));
+    const double _t28 = sqrt(_t19) * _t20;
+    const double _t29 = _t22 * _t28;
+    const double _t30 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) * _t26 + ((0.0083333333333333003 - 0.00019841269841216566 * _t24) * _t25 + (1.0 - 0.16666666666666666 * _t24))) * (_t29 * _t15);
+    const double _t31 = _t1 * _t27 + _t30 * _t8;
+    const double _t32 = _t23 * _t18 * _t20;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t33 * _t33;
+    const double _t35 = _t34 * (2.4801587247292686e-05 - _t32 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t32 * 1.1304620460700782e-11) * _t33) + ((0.041666666666666102 - 0.0013888888888798428 * _t32) * _t33 + (1.0 - _t32 * 0.5));
+    const double _t36 = _t29 * _t17 * (1.0 - 0.16666666666666666 * _t32 + (0.0083333333333333003 - 0.00019841269841216566 * _t32) * _t33 + _t34 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t32 + _t33 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t32)));
+    const double _t37 = _t5 * _t35 + _t7 * _t36;
+    const double _t38 = _t23 * _t14 * _t20;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = _t39 * _t39;
+    const double _t41 = 1.0 - _t38 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t38) * _t39 + (2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t38) * _t39) * _t40;
+    const double _t42 = ((0.0083333333333333003 - 0.00019841269841216566 * _t38) * _t39 + (1.0 - 0.16666666666666666 * _t38) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t38)) * _t40) * (_t29 * _t13);
+    const double _t43 = _t10 * _t41 - _t3 * _t42;
+    const double _t44 = _t8 * _t27 - _t30 * _t1;
+    const double _t45 = _t3 * _t41 + _t10 * _t42;
+    const double _t46 = _t35 * _t7 - _t5 * _t36;
+    const double _t47 = -_t21;
+    const double _t48 = (_t47 <= 1.0) ? (((-1.0) <= _t47) ? _t47 : (-1.0)) : 1.0;
+    const double _t49 = _t28 * _t48;
+    const double _t50 = _t48 * _t48;
+    const double _t51 = _t20 * (_t50 * _t16);
+    const double _t52 = _t51 * _t51;
+    const double _t53 = _t52 * _t52;
+    const double _t54 = _t49 * _t15 * ((0.0083333333333333003 - _t51 * 0.00019841269841216566) * _t52 + (1.0 - _t51 * 0.16666666666666666) + _t53 * (2.755731919201122e-06 - _t51 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t51 * 7.549371704181243e-13) * _t52));
+    const double _t55 = ((2.0874477943664777e-09 - _t51 * 1.1304620460700782e-11) * _t52 + (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07)) * _t53 + (1.0 - _t51 * 0.5 + (0.041666666666666102 - _t51 * 0.0013888888888798428) * _t52);
+    const double _t56 = _t8 * _t54 + _t1 * _t55;
+    const double _t57 = _t50 * _t18 * _t20;
+    const double _t58 = _t57 * _t57;
+    const double _t59 = _t58 * _t58;
+    const double _t60 = (1.0 - 0.16666666666666666 * _t57 + (0.0083333333333333003 - 0.00019841269841216566 * _t57) * _t58 + (_t58 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t57)) * _t59) * (_t49 * _t17);
+    const double _t61 = 1.0 - _t57 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t57) * _t58 + (_t58 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t57) + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)) * _t59;
+    const double _t62 = _t7 * _t60 + _t5 * _t61;
+    const double _t63 = _t50 * _t14 * _t20;
+    const double _t64 = _t63 * _t63;
+    const double _t65 = _t64 * _t64;
+    const double _t66 = 1.0 - _t63 * 0.5 + (0.041666666666666102 - _t63 * 0.0013888888888798428) * _t64 + ((2.0874477943664777e-09 - _t63 * 1.1304620460700782e-11) * _t64 + (2.4801587247292686e-05 - _t63 * 2.7557303701922228e-07)) * _t65;
+    const double _t67 = _t49 * _t13 * (_t64 * (0.0083333333333333003 - _t63 * 0.00019841269841216566) + (1.0 - _t63 * 0.16666666666666666) + _t65 * (2.755731919201122e-06 - _t63 * 2.5052099244914114e-08 + _t64 * (1.6057701922579786e-10 - _t63 * 7.549371704181243e-13)));
+    const double _t68 = _t10 * _t66 - _t3 * _t67;
+    const double _t69 = _t8 * _t55 - _t1 * _t54;
+    const double _t70 = _t3 * _t66 + _t10 * _t67;
+    const double _t71 = _t7 * _t61 - _t5 * _t60;
+    return (_t31 * _t37 * _t43 + (_t44 * _t45 * _t37 + (_t44 * _t46 * _t43 + _t46 * _t31 * _t45))) * (_t56 * _t62 * _t68 + _t69 * _t62 * _t70 + _t56 * _t71 * _t70 + _t71 * (_t69 * _t68));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 205
+ * Total ops: 194
  */
 double3 diamond_proj_o2_normal(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
+    const double _t0 = 6.2831853071795862 * p.y;
     double _c0;
     const double _s0 = sincos(_t0, &_c0);
     const double _t1 = _s0;
     const double _t2 = 6.2831853071795862 * h;
-    const double _t3 = _c0;
-    const double _t4 = 6.2831853071795862 * p.y;
+    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    const double _t4 = _t3 * _t3;
+    const double _t5 = p.z * 6.2831853071795862;
     double _c1;
-    const double _s1 = sincos(_t4, &_c1);
-    const double _t5 = _c1;
-    const double _t6 = 6.2831853071795862 * p.x;
+    const double _s1 = sincos(_t5, &_c1);
+    const double _t6 = _c1;
+    const double _t7 = _c0;
+    const double _t8 = 6.2831853071795862 * p.x;
     double _c2;
-    const double _s2 = sincos(_t6, &_c2);
-    const double _t7 = _c2;
-    const double _t8 = _t3 * _t5 * _t7;
-    const double _t9 = _s1;
-    const double _t10 = _s2;
-    const double _t11 = _t3 * _t9 * _t10;
-    const double _t12 = _t1 * _t5 * _t10;
-    const double _t13 = _t7 * (_t1 * _t9);
-    const double _t14 = _t8 + _t11 - _t12 - _t13;
-    const double _t15 = _t2 * _t14;
-    const double _t16 = _t8 + _t13 - _t12 - _t11;
-    const double _t17 = _t8 + _t12 - _t11 - _t13;
-    const double _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    const double _t20 = _t15 * _t15 * _t19;
-    const bool _t21 = _t20 <= 1.0;
-    const double _t22 = (_t21) ? _t20 : 1.0;
-    const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = _t24 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23);
-    const double _t26 = sqrt(_t19);
-    const double _t27 = _t26 * _t15;
-    const double _t28 = ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (_t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
-    const double _t29 = _t1 * _t25 - _t3 * _t28;
-    const double _t30 = _t2 * _t17;
-    const double _t31 = _t30 * _t30 * _t19;
-    const bool _t32 = _t31 <= 1.0;
-    const double _t33 = (_t32) ? _t31 : 1.0;
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * _t34;
-    const double _t36 = (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07 + _t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11)) * _t35 + (_t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + (1.0 - _t33 * 0.5));
-    const double _t37 = _t26 * _t30;
-    const double _t38 = ((_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08)) * _t35 + ((0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + (1.0 - _t33 * 0.16666666666666666))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
-    const double _t39 = _t36 * _t9 - _t5 * _t38;
-    const double _t40 = _t2 * _t16;
-    const double _t41 = _t40 * _t40 * _t19;
-    const bool _t42 = _t41 <= 1.0;
-    const double _t43 = (_t42) ? _t41 : 1.0;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = _t44 * _t44;
-    const double _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.041666666666666102 - _t43 * 0.0013888888888798428) + ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45;
-    const double _t47 = _t26 * _t40;
-    const double _t48 = ((2.755731919201122e-06 - _t43 * 2.5052099244914114e-08 + _t44 * (1.6057701922579786e-10 - _t43 * 7.549371704181243e-13)) * _t45 + (1.0 - _t43 * 0.16666666666666666 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
-    const double _t49 = _t46 * _t7 + _t48 * _t10;
-    const double _t50 = _t29 * _t39 * _t49;
-    const double _t51 = _t46 * _t10 - _t48 * _t7;
-    const double _t52 = _t9 * _t38 + _t5 * _t36;
-    const double _t53 = _t29 * (_t51 * _t52);
-    const double _t54 = _t3 * _t25 + _t1 * _t28;
-    const double _t55 = _t49 * (_t52 * _t54);
-    const double _t56 = _t51 * _t54 * _t39;
-    const double _t57 = _t50 + _t53 - _t55 - _t56;
-    const double _t58 = _t50 + _t56 - _t55 - _t53;
-    const double _t59 = _t50 + _t55 - _t53 - _t56;
-    const double _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
-    const double _t61 = (_t60 > 0.0) ? rsqrt(_t60) : 0.0;
-    return (double3)(_t61 * _t59, -(_t58 * _t61), -(_t61 * _t57));
+    const double _s2 = sincos(_t8, &_c2);
+    const double _t9 = _c2;
+    const double _t10 = _t6 * _t7 * _t9;
+    const double _t11 = _s1;
+    const double _t12 = _s2;
+    const double _t13 = _t11 * _t7 * _t12;
+    const double _t14 = _t6 * _t1 * _t12;
+    const double _t15 = _t9 * (_t11 * _t1);
+    const double _t16 = _t10 + _t13 - _t14 - _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t10 + _t14 - _t13 - _t15;
+    const double _t19 = _t18 * _t18;
+    const double _t20 = _t10 + _t15 - _t13 - _t14;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t19 + _t21 + _t17;
+    const double _t23 = (_t22 > 1.1754943508222875e-38) ? 1.0 / _t22 : 0.0;
+    const double _t24 = _t4 * _t17 * _t23;
+    const double _t25 = _t24 * _t24;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = _t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24) + (1.0 - _t24 * 0.5) + _t26 * (_t25 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24) + (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07));
+    const double _t28 = _t3 * (sqrt(_t22) * _t23);
+    const double _t29 = (_t26 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) + (1.0 - 0.16666666666666666 * _t24 + _t25 * (0.0083333333333333003 - 0.00019841269841216566 * _t24))) * (_t16 * _t28);
+    const double _t30 = _t1 * _t27 - _t7 * _t29;
+    const double _t31 = _t4 * _t21 * _t23;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = (0.041666666666666102 - 0.0013888888888798428 * _t31) * _t32 + (1.0 - 0.5 * _t31) + _t33 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t31 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t31) * _t32);
+    const double _t35 = (_t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31)) + (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - 0.00019841269841216566 * _t31))) * (_t20 * _t28);
+    const double _t36 = _t34 * _t9 + _t35 * _t12;
+    const double _t37 = _t23 * (_t4 * _t19);
+    const double _t38 = _t37 * _t37;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = 1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38 + _t39 * ((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07));
+    const double _t41 = _t28 * _t18 * (_t39 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) + (1.0 - 0.16666666666666666 * _t37 + (0.0083333333333333003 - _t37 * 0.00019841269841216566) * _t38));
+    const double _t42 = _t11 * _t40 - _t6 * _t41;
+    const double _t43 = _t30 * _t36 * _t42;
+    const double _t44 = _t1 * _t29 + _t7 * _t27;
+    const double _t45 = _t34 * _t12 - _t35 * _t9;
+    const double _t46 = _t44 * (_t42 * _t45);
+    const double _t47 = _t6 * _t40 + _t11 * _t41;
+    const double _t48 = _t36 * _t47 * _t44;
+    const double _t49 = _t30 * _t47 * _t45;
+    const double _t50 = _t43 + _t46 - _t48 - _t49;
+    const double _t51 = _t43 + _t48 - _t49 - _t46;
+    const double _t52 = _t43 + _t49 - _t48 - _t46;
+    const double _t53 = _t50 * _t50 + _t51 * _t51 + _t52 * _t52;
+    const double _t54 = (_t53 > 0.0) ? rsqrt(_t53) : 0.0;
+    return (double3)(_t54 * _t51, -(_t54 * _t52), -(_t54 * _t50));
 }
 
 #endif /* cl_khr_fp64 */

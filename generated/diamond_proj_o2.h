@@ -40,9 +40,10 @@
  *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
  *   0, so every function returns a finite value for finite input (do not compile with
  *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
- *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
- *   keeps |q_K - p| <= |h| and so the bound above.
+ *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
+ *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
+ *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
+ *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -51,11 +52,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    20
- *   offset   185
- *   shell    225
- *   normal   205
+ *   offset   174
+ *   shell    314
+ *   normal   194
  */
-/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":185,"shell":225,"normal":205}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":174,"shell":314,"normal":194}} */
 #ifndef OFFSETGEN_DIAMOND_PROJ_O2_H
 #define OFFSETGEN_DIAMOND_PROJ_O2_H
 
@@ -70,10 +71,17 @@
 #else
 #define OFFSETGEN_TRIG_INT_(x) ((int)(x))
 #endif
+/* Adding and subtracting 1.5 * 2^52 rounds to an integer only under IEEE evaluation in double. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUND_(v) rint(v)
+#else
+#define OFFSETGEN_TRIG_ROUND_(v) (((v) + 6755399441055744.0) - 6755399441055744.0)
+#endif
 /* sin and cos for the scalar functions, inline: libm's sin and cos cost more than the rest of a
  * low-order offset. The same reduction and polynomials as the batch helpers (within 1.5 ulp of
- * libm), so the scalar and batch functions agree to the last bits; the quadrant comes from an int
- * conversion, so plain -O2 needs no rint call. Arguments beyond 1.0e8 radians go to libm.
+ * libm), so the scalar and batch functions agree to the last bits. a * 2/pi is rounded by adding
+ * and subtracting 1.5 * 2^52 (no rint call at plain -O2, and a shorter dependency chain than an int
+ * conversion, which only picks the quadrant here). Arguments beyond 1.0e8 radians go to libm.
  * A sin and a cos of the same argument share the reduction and both polynomials after inlining.
  * Define OFFSETGEN_LIBM_TRIG before including this header to call libm's sin and cos instead. */
 static inline double offsetgen_sin(double a)
@@ -81,9 +89,8 @@ static inline double offsetgen_sin(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return sin(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -98,9 +105,8 @@ static inline double offsetgen_cos(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cos(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -110,6 +116,7 @@ static inline double offsetgen_cos(double a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INT_
+#undef OFFSETGEN_TRIG_ROUND_
 #endif /* OFFSETGEN_SCALAR_TRIG_DOUBLE_V1 */
 
 /* F, the field; the surface is F = 0.
@@ -130,240 +137,227 @@ static inline double diamond_proj_o2_field(double x, double y, double z)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 185
+ * Total ops: 174
  */
 static inline double diamond_proj_o2_offset(double x, double y, double z, double h)
 {
-    const double _t0 = z * 6.2831853071795862;
-    const double _t1 = offsetgen_cos(_t0);
-    const double _t2 = 6.2831853071795862 * h;
-    const double _t3 = 6.2831853071795862 * y;
+    const double _t0 = 6.2831853071795862 * h;
+    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    const double _t2 = _t1 * _t1;
+    const double _t3 = z * 6.2831853071795862;
     const double _t4 = offsetgen_cos(_t3);
-    const double _t5 = 6.2831853071795862 * x;
+    const double _t5 = 6.2831853071795862 * y;
     const double _t6 = offsetgen_cos(_t5);
-    const double _t7 = _t1 * _t4 * _t6;
-    const double _t8 = offsetgen_sin(_t3);
-    const double _t9 = offsetgen_sin(_t5);
-    const double _t10 = _t1 * _t8 * _t9;
-    const double _t11 = offsetgen_sin(_t0);
-    const double _t12 = _t11 * _t4 * _t9;
-    const double _t13 = _t6 * (_t11 * _t8);
-    const double _t14 = _t7 + _t10 - _t12 - _t13;
-    const double _t15 = _t2 * _t14;
-    const double _t16 = _t7 + _t13 - _t12 - _t10;
-    const double _t17 = _t7 + _t12 - _t10 - _t13;
-    const double _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    const double _t20 = _t15 * _t15 * _t19;
-    const int _t21 = _t20 <= 1.0;
-    const double _t22 = (_t21) ? _t20 : 1.0;
-    const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = _t24 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23);
-    const double _t26 = sqrt(_t19);
-    const double _t27 = _t26 * _t15;
-    const double _t28 = ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (_t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
-    const double _t29 = _t1 * _t25 + _t11 * _t28;
-    const double _t30 = _t2 * _t17;
-    const double _t31 = _t30 * _t30 * _t19;
-    const int _t32 = _t31 <= 1.0;
-    const double _t33 = (_t32) ? _t31 : 1.0;
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * _t34;
-    const double _t36 = (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07 + _t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11)) * _t35 + (_t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + (1.0 - _t33 * 0.5));
-    const double _t37 = _t26 * _t30;
-    const double _t38 = ((_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08)) * _t35 + ((0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + (1.0 - _t33 * 0.16666666666666666))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
-    const double _t39 = _t36 * _t8 - _t4 * _t38;
-    const double _t40 = _t2 * _t16;
-    const double _t41 = _t40 * _t40 * _t19;
-    const int _t42 = _t41 <= 1.0;
-    const double _t43 = (_t42) ? _t41 : 1.0;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = _t44 * _t44;
-    const double _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.041666666666666102 - _t43 * 0.0013888888888798428) + ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45;
-    const double _t47 = _t26 * _t40;
-    const double _t48 = ((2.755731919201122e-06 - _t43 * 2.5052099244914114e-08 + _t44 * (1.6057701922579786e-10 - _t43 * 7.549371704181243e-13)) * _t45 + (1.0 - _t43 * 0.16666666666666666 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
-    const double _t49 = _t46 * _t6 + _t48 * _t9;
-    const double _t50 = _t46 * _t9 - _t48 * _t6;
-    const double _t51 = _t8 * _t38 + _t4 * _t36;
-    const double _t52 = _t11 * _t25 - _t1 * _t28;
-    return _t29 * _t39 * _t49 + (_t50 * _t51 * _t29 + _t51 * _t52 * _t49) + _t50 * _t52 * _t39;
+    const double _t7 = 6.2831853071795862 * x;
+    const double _t8 = offsetgen_cos(_t7);
+    const double _t9 = _t4 * _t6 * _t8;
+    const double _t10 = offsetgen_sin(_t3);
+    const double _t11 = offsetgen_sin(_t5);
+    const double _t12 = _t8 * (_t10 * _t11);
+    const double _t13 = offsetgen_sin(_t7);
+    const double _t14 = _t10 * _t6 * _t13;
+    const double _t15 = _t4 * _t11 * _t13;
+    const double _t16 = _t9 + _t12 - _t14 - _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t9 + _t15 - _t14 - _t12;
+    const double _t19 = _t18 * _t18;
+    const double _t20 = _t9 + _t14 - _t15 - _t12;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t19 + _t17 + _t21;
+    const double _t23 = (_t22 > 1.1754943508222875e-38) ? 1.0 / _t22 : 0.0;
+    const double _t24 = _t2 * _t17 * _t23;
+    const double _t25 = _t24 * _t24;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = (0.041666666666666102 - 0.0013888888888798428 * _t24) * _t25 + (1.0 - 0.5 * _t24) + _t26 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t24 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24) * _t25);
+    const double _t28 = _t1 * (sqrt(_t22) * _t23);
+    const double _t29 = (_t26 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) + (1.0 - 0.16666666666666666 * _t24 + _t25 * (0.0083333333333333003 - 0.00019841269841216566 * _t24))) * (_t16 * _t28);
+    const double _t30 = _t27 * _t13 - _t29 * _t8;
+    const double _t31 = _t2 * _t21 * _t23;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t32 * (0.041666666666666102 - 0.0013888888888798428 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (_t32 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t31) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07));
+    const double _t35 = (_t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31)) + (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - 0.00019841269841216566 * _t31))) * (_t20 * _t28);
+    const double _t36 = _t11 * _t34 - _t6 * _t35;
+    const double _t37 = _t23 * (_t2 * _t19);
+    const double _t38 = _t37 * _t37;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = 1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38 + _t39 * ((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07));
+    const double _t41 = _t28 * _t18 * (_t39 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) + (1.0 - 0.16666666666666666 * _t37 + (0.0083333333333333003 - _t37 * 0.00019841269841216566) * _t38));
+    const double _t42 = _t10 * _t40 - _t4 * _t41;
+    const double _t43 = _t4 * _t40 + _t10 * _t41;
+    const double _t44 = _t11 * _t35 + _t6 * _t34;
+    const double _t45 = _t27 * _t8 + _t29 * _t13;
+    return _t30 * (_t36 * _t42) + _t43 * _t30 * _t44 + _t45 * _t42 * _t44 + _t36 * _t45 * _t43;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 225
+ * Total ops: 314
  */
 static inline double diamond_proj_o2_shell(double x, double y, double z, double t)
 {
-    const double _t0 = 6.2831853071795862 * (t * 0.5);
-    const double _t1 = z * 6.2831853071795862;
-    const double _t2 = offsetgen_cos(_t1);
-    const double _t3 = 6.2831853071795862 * y;
-    const double _t4 = offsetgen_cos(_t3);
-    const double _t5 = 6.2831853071795862 * x;
-    const double _t6 = offsetgen_cos(_t5);
-    const double _t7 = _t2 * _t4 * _t6;
-    const double _t8 = offsetgen_sin(_t1);
-    const double _t9 = offsetgen_sin(_t3);
-    const double _t10 = _t6 * (_t8 * _t9);
-    const double _t11 = offsetgen_sin(_t5);
-    const double _t12 = _t8 * _t4 * _t11;
-    const double _t13 = _t2 * _t9 * _t11;
-    const double _t14 = _t7 + _t10 - _t12 - _t13;
-    const double _t15 = _t0 * _t14;
-    const double _t16 = _t7 + _t13 - _t12 - _t10;
-    const double _t17 = _t7 + _t12 - _t13 - _t10;
-    const double _t18 = _t16 * _t16 + _t14 * _t14 + _t17 * _t17;
-    const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    const double _t20 = _t15 * _t15 * _t19;
-    const int _t21 = _t20 <= 1.0;
-    const double _t22 = (_t21) ? _t20 : 1.0;
+    const double _t0 = 6.2831853071795862 * x;
+    const double _t1 = offsetgen_cos(_t0);
+    const double _t2 = z * 6.2831853071795862;
+    const double _t3 = offsetgen_cos(_t2);
+    const double _t4 = 6.2831853071795862 * y;
+    const double _t5 = offsetgen_cos(_t4);
+    const double _t6 = _t3 * _t5 * _t1;
+    const double _t7 = offsetgen_sin(_t4);
+    const double _t8 = offsetgen_sin(_t0);
+    const double _t9 = _t3 * _t7 * _t8;
+    const double _t10 = offsetgen_sin(_t2);
+    const double _t11 = _t10 * _t5 * _t8;
+    const double _t12 = _t1 * (_t10 * _t7);
+    const double _t13 = _t6 + _t9 - _t11 - _t12;
+    const double _t14 = _t13 * _t13;
+    const double _t15 = _t6 + _t12 - _t11 - _t9;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t6 + _t11 - _t9 - _t12;
+    const double _t18 = _t17 * _t17;
+    const double _t19 = _t14 + _t16 + _t18;
+    const double _t20 = (_t19 > 1.1754943508222875e-38) ? 1.0 / _t19 : 0.0;
+    const double _t21 = 6.2831853071795862 * (t * 0.5);
+    const double _t22 = (_t21 <= 1.0) ? (((-1.0) <= _t21) ? _t21 : (-1.0)) : 1.0;
     const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + _t23 * (2.0874477943664777e-09 - _t22 * 1.1304620460700782e-11)) * _t24 + (1.0 - _t22 * 0.5 + _t23 * (0.041666666666666102 - _t22 * 0.0013888888888798428));
-    const double _t26 = _t25 * _t6;
-    const double _t27 = 1.0 - _t22 * 0.16666666666666666 + (0.0083333333333333003 - _t22 * 0.00019841269841216566) * _t23 + (2.755731919201122e-06 - _t22 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t22 * 7.549371704181243e-13) * _t23) * _t24;
-    const double _t28 = sqrt(_t19);
-    const double _t29 = _t28 * _t15;
-    const double _t30 = _t27 * ((_t21) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0)));
-    const double _t31 = _t26 + _t30 * _t11;
-    const double _t32 = _t17 * _t0;
-    const double _t33 = _t32 * _t32 * _t19;
-    const int _t34 = _t33 <= 1.0;
-    const double _t35 = (_t34) ? _t33 : 1.0;
-    const double _t36 = _t35 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = _t36 * (0.041666666666666102 - 0.0013888888888798428 * _t35) + (1.0 - _t35 * 0.5) + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07 + _t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35)) * _t37;
-    const double _t39 = _t9 * _t38;
-    const double _t40 = _t28 * _t32;
-    const double _t41 = _t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35) + (1.0 - 0.16666666666666666 * _t35) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35)) * _t37;
-    const double _t42 = ((_t34) ? _t40 : ((_t40 > 0.0) ? 1.0 : (-1.0))) * _t41;
-    const double _t43 = _t39 - _t4 * _t42;
-    const double _t44 = _t0 * _t16;
-    const double _t45 = _t44 * _t44 * _t19;
-    const int _t46 = _t45 <= 1.0;
-    const double _t47 = (_t46) ? _t45 : 1.0;
-    const double _t48 = _t47 * _t47;
-    const double _t49 = _t48 * _t48;
-    const double _t50 = _t49 * (2.4801587247292686e-05 - _t47 * 2.7557303701922228e-07 + _t48 * (2.0874477943664777e-09 - _t47 * 1.1304620460700782e-11)) + (_t48 * (0.041666666666666102 - _t47 * 0.0013888888888798428) + (1.0 - _t47 * 0.5));
-    const double _t51 = _t2 * _t50;
-    const double _t52 = _t28 * _t44;
-    const double _t53 = _t48 * (0.0083333333333333003 - _t47 * 0.00019841269841216566) + (1.0 - _t47 * 0.16666666666666666) + _t49 * (2.755731919201122e-06 - _t47 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t47 * 7.549371704181243e-13) * _t48);
-    const double _t54 = ((_t46) ? _t52 : ((_t52 > 0.0) ? 1.0 : (-1.0))) * _t53;
-    const double _t55 = _t51 + _t8 * _t54;
-    const double _t56 = _t25 * _t11;
-    const double _t57 = _t56 - _t30 * _t6;
-    const double _t58 = _t8 * _t50;
-    const double _t59 = _t58 - _t2 * _t54;
-    const double _t60 = _t4 * _t38;
-    const double _t61 = _t60 + _t9 * _t42;
-    const double _t62 = -_t40;
-    const double _t63 = ((_t34) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0))) * _t41;
-    const double _t64 = _t60 + _t63 * _t9;
-    const double _t65 = -_t29;
-    const double _t66 = _t27 * ((_t21) ? _t65 : ((_t65 > 0.0) ? 1.0 : (-1.0)));
-    const double _t67 = _t26 + _t66 * _t11;
-    const double _t68 = -_t52;
-    const double _t69 = _t53 * ((_t46) ? _t68 : ((_t68 > 0.0) ? 1.0 : (-1.0)));
-    const double _t70 = _t58 - _t2 * _t69;
-    const double _t71 = _t39 - _t4 * _t63;
-    const double _t72 = _t8 * _t69 + _t51;
-    const double _t73 = _t56 - _t66 * _t6;
-    return (_t31 * _t43 * _t55 + _t43 * _t57 * _t59 + _t61 * _t57 * _t55 + _t31 * _t61 * _t59) * (_t64 * _t67 * _t70 + _t71 * _t67 * _t72 + _t64 * _t73 * _t72 + _t71 * _t73 * _t70);
+    const double _t24 = _t20 * (_t23 * _t16);
+    const double _t25 = _t24 * _t24;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07 + _t25 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24)) * _t26 + (_t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24) + (1.0 - _t24 * 0.5));
+    const double _t28 = sqrt(_t19) * _t20;
+    const double _t29 = _t22 * _t28;
+    const double _t30 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) * _t26 + ((0.0083333333333333003 - 0.00019841269841216566 * _t24) * _t25 + (1.0 - 0.16666666666666666 * _t24))) * (_t29 * _t15);
+    const double _t31 = _t1 * _t27 + _t30 * _t8;
+    const double _t32 = _t23 * _t18 * _t20;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t33 * _t33;
+    const double _t35 = _t34 * (2.4801587247292686e-05 - _t32 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t32 * 1.1304620460700782e-11) * _t33) + ((0.041666666666666102 - 0.0013888888888798428 * _t32) * _t33 + (1.0 - _t32 * 0.5));
+    const double _t36 = _t29 * _t17 * (1.0 - 0.16666666666666666 * _t32 + (0.0083333333333333003 - 0.00019841269841216566 * _t32) * _t33 + _t34 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t32 + _t33 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t32)));
+    const double _t37 = _t5 * _t35 + _t7 * _t36;
+    const double _t38 = _t23 * _t14 * _t20;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = _t39 * _t39;
+    const double _t41 = 1.0 - _t38 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t38) * _t39 + (2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t38) * _t39) * _t40;
+    const double _t42 = ((0.0083333333333333003 - 0.00019841269841216566 * _t38) * _t39 + (1.0 - 0.16666666666666666 * _t38) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t38)) * _t40) * (_t29 * _t13);
+    const double _t43 = _t10 * _t41 - _t3 * _t42;
+    const double _t44 = _t8 * _t27 - _t30 * _t1;
+    const double _t45 = _t3 * _t41 + _t10 * _t42;
+    const double _t46 = _t35 * _t7 - _t5 * _t36;
+    const double _t47 = -_t21;
+    const double _t48 = (_t47 <= 1.0) ? (((-1.0) <= _t47) ? _t47 : (-1.0)) : 1.0;
+    const double _t49 = _t28 * _t48;
+    const double _t50 = _t48 * _t48;
+    const double _t51 = _t20 * (_t50 * _t16);
+    const double _t52 = _t51 * _t51;
+    const double _t53 = _t52 * _t52;
+    const double _t54 = _t49 * _t15 * ((0.0083333333333333003 - _t51 * 0.00019841269841216566) * _t52 + (1.0 - _t51 * 0.16666666666666666) + _t53 * (2.755731919201122e-06 - _t51 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t51 * 7.549371704181243e-13) * _t52));
+    const double _t55 = ((2.0874477943664777e-09 - _t51 * 1.1304620460700782e-11) * _t52 + (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07)) * _t53 + (1.0 - _t51 * 0.5 + (0.041666666666666102 - _t51 * 0.0013888888888798428) * _t52);
+    const double _t56 = _t8 * _t54 + _t1 * _t55;
+    const double _t57 = _t50 * _t18 * _t20;
+    const double _t58 = _t57 * _t57;
+    const double _t59 = _t58 * _t58;
+    const double _t60 = (1.0 - 0.16666666666666666 * _t57 + (0.0083333333333333003 - 0.00019841269841216566 * _t57) * _t58 + (_t58 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t57)) * _t59) * (_t49 * _t17);
+    const double _t61 = 1.0 - _t57 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t57) * _t58 + (_t58 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t57) + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)) * _t59;
+    const double _t62 = _t7 * _t60 + _t5 * _t61;
+    const double _t63 = _t50 * _t14 * _t20;
+    const double _t64 = _t63 * _t63;
+    const double _t65 = _t64 * _t64;
+    const double _t66 = 1.0 - _t63 * 0.5 + (0.041666666666666102 - _t63 * 0.0013888888888798428) * _t64 + ((2.0874477943664777e-09 - _t63 * 1.1304620460700782e-11) * _t64 + (2.4801587247292686e-05 - _t63 * 2.7557303701922228e-07)) * _t65;
+    const double _t67 = _t49 * _t13 * (_t64 * (0.0083333333333333003 - _t63 * 0.00019841269841216566) + (1.0 - _t63 * 0.16666666666666666) + _t65 * (2.755731919201122e-06 - _t63 * 2.5052099244914114e-08 + _t64 * (1.6057701922579786e-10 - _t63 * 7.549371704181243e-13)));
+    const double _t68 = _t10 * _t66 - _t3 * _t67;
+    const double _t69 = _t8 * _t55 - _t1 * _t54;
+    const double _t70 = _t3 * _t66 + _t10 * _t67;
+    const double _t71 = _t7 * _t61 - _t5 * _t60;
+    return (_t31 * _t37 * _t43 + (_t44 * _t45 * _t37 + (_t44 * _t46 * _t43 + _t46 * _t31 * _t45))) * (_t56 * _t62 * _t68 + _t69 * _t62 * _t70 + _t56 * _t71 * _t70 + _t71 * (_t69 * _t68));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 205
+ * Total ops: 194
  */
 static inline void diamond_proj_o2_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = z * 6.2831853071795862;
+    const double _t0 = 6.2831853071795862 * y;
     const double _t1 = offsetgen_sin(_t0);
     const double _t2 = 6.2831853071795862 * h;
-    const double _t3 = offsetgen_cos(_t0);
-    const double _t4 = 6.2831853071795862 * y;
-    const double _t5 = offsetgen_cos(_t4);
-    const double _t6 = 6.2831853071795862 * x;
-    const double _t7 = offsetgen_cos(_t6);
-    const double _t8 = _t3 * _t5 * _t7;
-    const double _t9 = offsetgen_sin(_t4);
-    const double _t10 = offsetgen_sin(_t6);
-    const double _t11 = _t3 * _t9 * _t10;
-    const double _t12 = _t1 * _t5 * _t10;
-    const double _t13 = _t7 * (_t1 * _t9);
-    const double _t14 = _t8 + _t11 - _t12 - _t13;
-    const double _t15 = _t2 * _t14;
-    const double _t16 = _t8 + _t13 - _t12 - _t11;
-    const double _t17 = _t8 + _t12 - _t11 - _t13;
-    const double _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    const double _t20 = _t15 * _t15 * _t19;
-    const int _t21 = _t20 <= 1.0;
-    const double _t22 = (_t21) ? _t20 : 1.0;
-    const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = _t24 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23);
-    const double _t26 = sqrt(_t19);
-    const double _t27 = _t26 * _t15;
-    const double _t28 = ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (_t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
-    const double _t29 = _t1 * _t25 - _t3 * _t28;
-    const double _t30 = _t2 * _t17;
-    const double _t31 = _t30 * _t30 * _t19;
-    const int _t32 = _t31 <= 1.0;
-    const double _t33 = (_t32) ? _t31 : 1.0;
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * _t34;
-    const double _t36 = (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07 + _t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11)) * _t35 + (_t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + (1.0 - _t33 * 0.5));
-    const double _t37 = _t26 * _t30;
-    const double _t38 = ((_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08)) * _t35 + ((0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + (1.0 - _t33 * 0.16666666666666666))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
-    const double _t39 = _t36 * _t9 - _t5 * _t38;
-    const double _t40 = _t2 * _t16;
-    const double _t41 = _t40 * _t40 * _t19;
-    const int _t42 = _t41 <= 1.0;
-    const double _t43 = (_t42) ? _t41 : 1.0;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = _t44 * _t44;
-    const double _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.041666666666666102 - _t43 * 0.0013888888888798428) + ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45;
-    const double _t47 = _t26 * _t40;
-    const double _t48 = ((2.755731919201122e-06 - _t43 * 2.5052099244914114e-08 + _t44 * (1.6057701922579786e-10 - _t43 * 7.549371704181243e-13)) * _t45 + (1.0 - _t43 * 0.16666666666666666 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
-    const double _t49 = _t46 * _t7 + _t48 * _t10;
-    const double _t50 = _t29 * _t39 * _t49;
-    const double _t51 = _t46 * _t10 - _t48 * _t7;
-    const double _t52 = _t9 * _t38 + _t5 * _t36;
-    const double _t53 = _t29 * (_t51 * _t52);
-    const double _t54 = _t3 * _t25 + _t1 * _t28;
-    const double _t55 = _t49 * (_t52 * _t54);
-    const double _t56 = _t51 * _t54 * _t39;
-    const double _t57 = _t50 + _t53 - _t55 - _t56;
-    const double _t58 = _t50 + _t56 - _t55 - _t53;
-    const double _t59 = _t50 + _t55 - _t53 - _t56;
-    const double _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
-    const double _t61 = (_t60 > 0.0) ? 1.0 / sqrt(_t60) : 0.0;
-    n[0] = _t61 * _t59;
-    n[1] = -(_t58 * _t61);
-    n[2] = -(_t61 * _t57);
+    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    const double _t4 = _t3 * _t3;
+    const double _t5 = z * 6.2831853071795862;
+    const double _t6 = offsetgen_cos(_t5);
+    const double _t7 = offsetgen_cos(_t0);
+    const double _t8 = 6.2831853071795862 * x;
+    const double _t9 = offsetgen_cos(_t8);
+    const double _t10 = _t6 * _t7 * _t9;
+    const double _t11 = offsetgen_sin(_t5);
+    const double _t12 = offsetgen_sin(_t8);
+    const double _t13 = _t11 * _t7 * _t12;
+    const double _t14 = _t6 * _t1 * _t12;
+    const double _t15 = _t9 * (_t11 * _t1);
+    const double _t16 = _t10 + _t13 - _t14 - _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t10 + _t14 - _t13 - _t15;
+    const double _t19 = _t18 * _t18;
+    const double _t20 = _t10 + _t15 - _t13 - _t14;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t19 + _t21 + _t17;
+    const double _t23 = (_t22 > 1.1754943508222875e-38) ? 1.0 / _t22 : 0.0;
+    const double _t24 = _t4 * _t17 * _t23;
+    const double _t25 = _t24 * _t24;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = _t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24) + (1.0 - _t24 * 0.5) + _t26 * (_t25 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24) + (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07));
+    const double _t28 = _t3 * (sqrt(_t22) * _t23);
+    const double _t29 = (_t26 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) + (1.0 - 0.16666666666666666 * _t24 + _t25 * (0.0083333333333333003 - 0.00019841269841216566 * _t24))) * (_t16 * _t28);
+    const double _t30 = _t1 * _t27 - _t7 * _t29;
+    const double _t31 = _t4 * _t21 * _t23;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = (0.041666666666666102 - 0.0013888888888798428 * _t31) * _t32 + (1.0 - 0.5 * _t31) + _t33 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t31 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t31) * _t32);
+    const double _t35 = (_t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31)) + (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - 0.00019841269841216566 * _t31))) * (_t20 * _t28);
+    const double _t36 = _t34 * _t9 + _t35 * _t12;
+    const double _t37 = _t23 * (_t4 * _t19);
+    const double _t38 = _t37 * _t37;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = 1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38 + _t39 * ((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07));
+    const double _t41 = _t28 * _t18 * (_t39 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) + (1.0 - 0.16666666666666666 * _t37 + (0.0083333333333333003 - _t37 * 0.00019841269841216566) * _t38));
+    const double _t42 = _t11 * _t40 - _t6 * _t41;
+    const double _t43 = _t30 * _t36 * _t42;
+    const double _t44 = _t1 * _t29 + _t7 * _t27;
+    const double _t45 = _t34 * _t12 - _t35 * _t9;
+    const double _t46 = _t44 * (_t42 * _t45);
+    const double _t47 = _t6 * _t40 + _t11 * _t41;
+    const double _t48 = _t36 * _t47 * _t44;
+    const double _t49 = _t30 * _t47 * _t45;
+    const double _t50 = _t43 + _t46 - _t48 - _t49;
+    const double _t51 = _t43 + _t48 - _t49 - _t46;
+    const double _t52 = _t43 + _t49 - _t48 - _t46;
+    const double _t53 = _t50 * _t50 + _t51 * _t51 + _t52 * _t52;
+    const double _t54 = (_t53 > 0.0) ? 1.0 / sqrt(_t53) : 0.0;
+    n[0] = _t54 * _t51;
+    n[1] = -(_t54 * _t52);
+    n[2] = -(_t54 * _t50);
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #define OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #ifdef __cplusplus
 #define OFFSETGEN_TRIG_INTF_(x) static_cast<int>(x)
-#define OFFSETGEN_TRIG_FLOAT_(x) static_cast<float>(x)
 #else
 #define OFFSETGEN_TRIG_INTF_(x) ((int)(x))
-#define OFFSETGEN_TRIG_FLOAT_(x) ((float)(x))
+#endif
+/* Adding and subtracting 1.5 * 2^23 rounds to an integer only under IEEE evaluation in float. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUNDF_(v) rintf(v)
+#else
+#define OFFSETGEN_TRIG_ROUNDF_(v) (((v) + 12582912.0f) - 12582912.0f)
 #endif
 /* Float sin and cos for the scalar functions: the batch helpers' reduction and Cephes polynomials,
- * with an int-conversion quadrant; sinf/cosf beyond 8192.0 radians, or everywhere with
+ * with the quadrant rounded as in the double helpers; sinf/cosf beyond 8192.0 radians, or everywhere with
  * OFFSETGEN_LIBM_TRIG defined. */
 static inline float offsetgen_sinf(float a)
 {
 #ifdef OFFSETGEN_LIBM_TRIG
     return sinf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -378,9 +372,8 @@ static inline float offsetgen_cosf(float a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cosf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -390,7 +383,7 @@ static inline float offsetgen_cosf(float a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INTF_
-#undef OFFSETGEN_TRIG_FLOAT_
+#undef OFFSETGEN_TRIG_ROUNDF_
 #endif /* OFFSETGEN_SCALAR_TRIG_FLOAT_V1 */
 /* F, the field; the surface is F = 0.
  * Total ops: 20
@@ -410,218 +403,202 @@ static inline float diamond_proj_o2_fieldf(float x, float y, float z)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 185
+ * Total ops: 174
  */
 static inline float diamond_proj_o2_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = z * 6.28318548f;
-    const float _t1 = offsetgen_cosf(_t0);
-    const float _t2 = 6.28318548f * h;
-    const float _t3 = 6.28318548f * y;
+    const float _t0 = 6.28318548f * h;
+    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+    const float _t2 = _t1 * _t1;
+    const float _t3 = z * 6.28318548f;
     const float _t4 = offsetgen_cosf(_t3);
-    const float _t5 = 6.28318548f * x;
+    const float _t5 = 6.28318548f * y;
     const float _t6 = offsetgen_cosf(_t5);
-    const float _t7 = _t1 * _t4 * _t6;
-    const float _t8 = offsetgen_sinf(_t3);
-    const float _t9 = offsetgen_sinf(_t5);
-    const float _t10 = _t1 * _t8 * _t9;
-    const float _t11 = offsetgen_sinf(_t0);
-    const float _t12 = _t11 * _t4 * _t9;
-    const float _t13 = _t6 * (_t11 * _t8);
-    const float _t14 = _t7 + _t10 - _t12 - _t13;
-    const float _t15 = _t2 * _t14;
-    const float _t16 = _t7 + _t13 - _t12 - _t10;
-    const float _t17 = _t7 + _t12 - _t10 - _t13;
-    const float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-    const float _t20 = _t15 * _t15 * _t19;
-    const int _t21 = _t20 <= 1.0f;
-    const float _t22 = (_t21) ? _t20 : 1.0f;
-    const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
-    const float _t26 = sqrtf(_t19);
-    const float _t27 = _t26 * _t15;
-    const float _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t29 = _t1 * _t25 + _t11 * _t28;
-    const float _t30 = _t2 * _t17;
-    const float _t31 = _t30 * _t30 * _t19;
-    const int _t32 = _t31 <= 1.0f;
-    const float _t33 = (_t32) ? _t31 : 1.0f;
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * _t34;
-    const float _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
-    const float _t37 = _t26 * _t30;
-    const float _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t39 = _t36 * _t8 - _t4 * _t38;
-    const float _t40 = _t2 * _t16;
-    const float _t41 = _t40 * _t40 * _t19;
-    const int _t42 = _t41 <= 1.0f;
-    const float _t43 = (_t42) ? _t41 : 1.0f;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = _t44 * _t44;
-    const float _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
-    const float _t47 = _t26 * _t40;
-    const float _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t49 = _t46 * _t6 + _t48 * _t9;
-    const float _t50 = _t46 * _t9 - _t48 * _t6;
-    const float _t51 = _t8 * _t38 + _t4 * _t36;
-    const float _t52 = _t11 * _t25 - _t1 * _t28;
-    return _t29 * _t39 * _t49 + (_t50 * _t51 * _t29 + _t51 * _t52 * _t49) + _t50 * _t52 * _t39;
+    const float _t7 = 6.28318548f * x;
+    const float _t8 = offsetgen_cosf(_t7);
+    const float _t9 = _t4 * _t6 * _t8;
+    const float _t10 = offsetgen_sinf(_t3);
+    const float _t11 = offsetgen_sinf(_t5);
+    const float _t12 = _t8 * (_t10 * _t11);
+    const float _t13 = offsetgen_sinf(_t7);
+    const float _t14 = _t10 * _t6 * _t13;
+    const float _t15 = _t4 * _t11 * _t13;
+    const float _t16 = _t9 + _t12 - _t14 - _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t9 + _t15 - _t14 - _t12;
+    const float _t19 = _t18 * _t18;
+    const float _t20 = _t9 + _t14 - _t15 - _t12;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t19 + _t17 + _t21;
+    const float _t23 = (_t22 > 1.17549435e-38f) ? 1.0f / _t22 : 0.0f;
+    const float _t24 = _t2 * _t17 * _t23;
+    const float _t25 = _t24 * _t24;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = (0.0416666679f - 0.00138888892f * _t24) * _t25 + (1.0f - 0.5f * _t24) + _t26 * (2.48015876e-05f - 2.75573029e-07f * _t24 + (2.08744777e-09f - 1.13046204e-11f * _t24) * _t25);
+    const float _t28 = _t1 * (sqrtf(_t22) * _t23);
+    const float _t29 = (_t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * (_t16 * _t28);
+    const float _t30 = _t27 * _t13 - _t29 * _t8;
+    const float _t31 = _t2 * _t21 * _t23;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (_t32 * (2.08744777e-09f - 1.13046204e-11f * _t31) + (2.48015876e-05f - _t31 * 2.75573029e-07f));
+    const float _t35 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * (_t20 * _t28);
+    const float _t36 = _t11 * _t34 - _t6 * _t35;
+    const float _t37 = _t23 * (_t2 * _t19);
+    const float _t38 = _t37 * _t37;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = 1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38 + _t39 * ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f));
+    const float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) + (1.0f - 0.166666672f * _t37 + (0.00833333377f - _t37 * 0.000198412701f) * _t38));
+    const float _t42 = _t10 * _t40 - _t4 * _t41;
+    const float _t43 = _t4 * _t40 + _t10 * _t41;
+    const float _t44 = _t11 * _t35 + _t6 * _t34;
+    const float _t45 = _t27 * _t8 + _t29 * _t13;
+    return _t30 * (_t36 * _t42) + _t43 * _t30 * _t44 + _t45 * _t42 * _t44 + _t36 * _t45 * _t43;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 225
+ * Total ops: 314
  */
 static inline float diamond_proj_o2_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = 6.28318548f * (t * 0.5f);
-    const float _t1 = z * 6.28318548f;
-    const float _t2 = offsetgen_cosf(_t1);
-    const float _t3 = 6.28318548f * y;
-    const float _t4 = offsetgen_cosf(_t3);
-    const float _t5 = 6.28318548f * x;
-    const float _t6 = offsetgen_cosf(_t5);
-    const float _t7 = _t2 * _t4 * _t6;
-    const float _t8 = offsetgen_sinf(_t1);
-    const float _t9 = offsetgen_sinf(_t3);
-    const float _t10 = _t6 * (_t8 * _t9);
-    const float _t11 = offsetgen_sinf(_t5);
-    const float _t12 = _t8 * _t4 * _t11;
-    const float _t13 = _t2 * _t9 * _t11;
-    const float _t14 = _t7 + _t10 - _t12 - _t13;
-    const float _t15 = _t0 * _t14;
-    const float _t16 = _t7 + _t13 - _t12 - _t10;
-    const float _t17 = _t7 + _t12 - _t13 - _t10;
-    const float _t18 = _t16 * _t16 + _t14 * _t14 + _t17 * _t17;
-    const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-    const float _t20 = _t15 * _t15 * _t19;
-    const int _t21 = _t20 <= 1.0f;
-    const float _t22 = (_t21) ? _t20 : 1.0f;
+    const float _t0 = 6.28318548f * x;
+    const float _t1 = offsetgen_cosf(_t0);
+    const float _t2 = z * 6.28318548f;
+    const float _t3 = offsetgen_cosf(_t2);
+    const float _t4 = 6.28318548f * y;
+    const float _t5 = offsetgen_cosf(_t4);
+    const float _t6 = _t3 * _t5 * _t1;
+    const float _t7 = offsetgen_sinf(_t4);
+    const float _t8 = offsetgen_sinf(_t0);
+    const float _t9 = _t3 * _t7 * _t8;
+    const float _t10 = offsetgen_sinf(_t2);
+    const float _t11 = _t10 * _t5 * _t8;
+    const float _t12 = _t1 * (_t10 * _t7);
+    const float _t13 = _t6 + _t9 - _t11 - _t12;
+    const float _t14 = _t13 * _t13;
+    const float _t15 = _t6 + _t12 - _t11 - _t9;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t6 + _t11 - _t9 - _t12;
+    const float _t18 = _t17 * _t17;
+    const float _t19 = _t14 + _t16 + _t18;
+    const float _t20 = (_t19 > 1.17549435e-38f) ? 1.0f / _t19 : 0.0f;
+    const float _t21 = 6.28318548f * (t * 0.5f);
+    const float _t22 = (_t21 <= 1.0f) ? (((-1.0f) <= _t21) ? _t21 : (-1.0f)) : 1.0f;
     const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = (2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - _t22 * 1.13046204e-11f)) * _t24 + (1.0f - _t22 * 0.5f + _t23 * (0.0416666679f - _t22 * 0.00138888892f));
-    const float _t26 = _t25 * _t6;
-    const float _t27 = 1.0f - _t22 * 0.166666672f + (0.00833333377f - _t22 * 0.000198412701f) * _t23 + (2.75573188e-06f - _t22 * 2.50520991e-08f + (1.60577024e-10f - _t22 * 7.54937183e-13f) * _t23) * _t24;
-    const float _t28 = sqrtf(_t19);
-    const float _t29 = _t28 * _t15;
-    const float _t30 = _t27 * ((_t21) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t31 = _t26 + _t30 * _t11;
-    const float _t32 = _t17 * _t0;
-    const float _t33 = _t32 * _t32 * _t19;
-    const int _t34 = _t33 <= 1.0f;
-    const float _t35 = (_t34) ? _t33 : 1.0f;
-    const float _t36 = _t35 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = _t36 * (0.0416666679f - 0.00138888892f * _t35) + (1.0f - _t35 * 0.5f) + (2.48015876e-05f - _t35 * 2.75573029e-07f + _t36 * (2.08744777e-09f - 1.13046204e-11f * _t35)) * _t37;
-    const float _t39 = _t9 * _t38;
-    const float _t40 = _t28 * _t32;
-    const float _t41 = _t36 * (0.00833333377f - 0.000198412701f * _t35) + (1.0f - 0.166666672f * _t35) + ((1.60577024e-10f - 7.54937183e-13f * _t35) * _t36 + (2.75573188e-06f - 2.50520991e-08f * _t35)) * _t37;
-    const float _t42 = ((_t34) ? _t40 : ((_t40 > 0.0f) ? 1.0f : (-1.0f))) * _t41;
-    const float _t43 = _t39 - _t4 * _t42;
-    const float _t44 = _t0 * _t16;
-    const float _t45 = _t44 * _t44 * _t19;
-    const int _t46 = _t45 <= 1.0f;
-    const float _t47 = (_t46) ? _t45 : 1.0f;
-    const float _t48 = _t47 * _t47;
-    const float _t49 = _t48 * _t48;
-    const float _t50 = _t49 * (2.48015876e-05f - _t47 * 2.75573029e-07f + _t48 * (2.08744777e-09f - _t47 * 1.13046204e-11f)) + (_t48 * (0.0416666679f - _t47 * 0.00138888892f) + (1.0f - _t47 * 0.5f));
-    const float _t51 = _t2 * _t50;
-    const float _t52 = _t28 * _t44;
-    const float _t53 = _t48 * (0.00833333377f - _t47 * 0.000198412701f) + (1.0f - _t47 * 0.166666672f) + _t49 * (2.75573188e-06f - _t47 * 2.50520991e-08f + (1.60577024e-10f - _t47 * 7.54937183e-13f) * _t48);
-    const float _t54 = ((_t46) ? _t52 : ((_t52 > 0.0f) ? 1.0f : (-1.0f))) * _t53;
-    const float _t55 = _t51 + _t8 * _t54;
-    const float _t56 = _t25 * _t11;
-    const float _t57 = _t56 - _t30 * _t6;
-    const float _t58 = _t8 * _t50;
-    const float _t59 = _t58 - _t2 * _t54;
-    const float _t60 = _t4 * _t38;
-    const float _t61 = _t60 + _t9 * _t42;
-    const float _t62 = -_t40;
-    const float _t63 = ((_t34) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f))) * _t41;
-    const float _t64 = _t60 + _t63 * _t9;
-    const float _t65 = -_t29;
-    const float _t66 = _t27 * ((_t21) ? _t65 : ((_t65 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t67 = _t26 + _t66 * _t11;
-    const float _t68 = -_t52;
-    const float _t69 = _t53 * ((_t46) ? _t68 : ((_t68 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t70 = _t58 - _t2 * _t69;
-    const float _t71 = _t39 - _t4 * _t63;
-    const float _t72 = _t8 * _t69 + _t51;
-    const float _t73 = _t56 - _t66 * _t6;
-    return (_t31 * _t43 * _t55 + _t43 * _t57 * _t59 + _t61 * _t57 * _t55 + _t31 * _t61 * _t59) * (_t64 * _t67 * _t70 + _t71 * _t67 * _t72 + _t64 * _t73 * _t72 + _t71 * _t73 * _t70);
+    const float _t24 = _t20 * (_t23 * _t16);
+    const float _t25 = _t24 * _t24;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = (2.48015876e-05f - _t24 * 2.75573029e-07f + _t25 * (2.08744777e-09f - 1.13046204e-11f * _t24)) * _t26 + (_t25 * (0.0416666679f - 0.00138888892f * _t24) + (1.0f - _t24 * 0.5f));
+    const float _t28 = sqrtf(_t19) * _t20;
+    const float _t29 = _t22 * _t28;
+    const float _t30 = ((2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) * _t26 + ((0.00833333377f - 0.000198412701f * _t24) * _t25 + (1.0f - 0.166666672f * _t24))) * (_t29 * _t15);
+    const float _t31 = _t1 * _t27 + _t30 * _t8;
+    const float _t32 = _t23 * _t18 * _t20;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t33 * _t33;
+    const float _t35 = _t34 * (2.48015876e-05f - _t32 * 2.75573029e-07f + (2.08744777e-09f - _t32 * 1.13046204e-11f) * _t33) + ((0.0416666679f - 0.00138888892f * _t32) * _t33 + (1.0f - _t32 * 0.5f));
+    const float _t36 = _t29 * _t17 * (1.0f - 0.166666672f * _t32 + (0.00833333377f - 0.000198412701f * _t32) * _t33 + _t34 * (2.75573188e-06f - 2.50520991e-08f * _t32 + _t33 * (1.60577024e-10f - 7.54937183e-13f * _t32)));
+    const float _t37 = _t5 * _t35 + _t7 * _t36;
+    const float _t38 = _t23 * _t14 * _t20;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = _t39 * _t39;
+    const float _t41 = 1.0f - _t38 * 0.5f + (0.0416666679f - 0.00138888892f * _t38) * _t39 + (2.48015876e-05f - _t38 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t38) * _t39) * _t40;
+    const float _t42 = ((0.00833333377f - 0.000198412701f * _t38) * _t39 + (1.0f - 0.166666672f * _t38) + ((1.60577024e-10f - 7.54937183e-13f * _t38) * _t39 + (2.75573188e-06f - 2.50520991e-08f * _t38)) * _t40) * (_t29 * _t13);
+    const float _t43 = _t10 * _t41 - _t3 * _t42;
+    const float _t44 = _t8 * _t27 - _t30 * _t1;
+    const float _t45 = _t3 * _t41 + _t10 * _t42;
+    const float _t46 = _t35 * _t7 - _t5 * _t36;
+    const float _t47 = -_t21;
+    const float _t48 = (_t47 <= 1.0f) ? (((-1.0f) <= _t47) ? _t47 : (-1.0f)) : 1.0f;
+    const float _t49 = _t28 * _t48;
+    const float _t50 = _t48 * _t48;
+    const float _t51 = _t20 * (_t50 * _t16);
+    const float _t52 = _t51 * _t51;
+    const float _t53 = _t52 * _t52;
+    const float _t54 = _t49 * _t15 * ((0.00833333377f - _t51 * 0.000198412701f) * _t52 + (1.0f - _t51 * 0.166666672f) + _t53 * (2.75573188e-06f - _t51 * 2.50520991e-08f + (1.60577024e-10f - _t51 * 7.54937183e-13f) * _t52));
+    const float _t55 = ((2.08744777e-09f - _t51 * 1.13046204e-11f) * _t52 + (2.48015876e-05f - _t51 * 2.75573029e-07f)) * _t53 + (1.0f - _t51 * 0.5f + (0.0416666679f - _t51 * 0.00138888892f) * _t52);
+    const float _t56 = _t8 * _t54 + _t1 * _t55;
+    const float _t57 = _t50 * _t18 * _t20;
+    const float _t58 = _t57 * _t57;
+    const float _t59 = _t58 * _t58;
+    const float _t60 = (1.0f - 0.166666672f * _t57 + (0.00833333377f - 0.000198412701f * _t57) * _t58 + (_t58 * (1.60577024e-10f - 7.54937183e-13f * _t57) + (2.75573188e-06f - 2.50520991e-08f * _t57)) * _t59) * (_t49 * _t17);
+    const float _t61 = 1.0f - _t57 * 0.5f + (0.0416666679f - 0.00138888892f * _t57) * _t58 + (_t58 * (2.08744777e-09f - 1.13046204e-11f * _t57) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59;
+    const float _t62 = _t7 * _t60 + _t5 * _t61;
+    const float _t63 = _t50 * _t14 * _t20;
+    const float _t64 = _t63 * _t63;
+    const float _t65 = _t64 * _t64;
+    const float _t66 = 1.0f - _t63 * 0.5f + (0.0416666679f - _t63 * 0.00138888892f) * _t64 + ((2.08744777e-09f - _t63 * 1.13046204e-11f) * _t64 + (2.48015876e-05f - _t63 * 2.75573029e-07f)) * _t65;
+    const float _t67 = _t49 * _t13 * (_t64 * (0.00833333377f - _t63 * 0.000198412701f) + (1.0f - _t63 * 0.166666672f) + _t65 * (2.75573188e-06f - _t63 * 2.50520991e-08f + _t64 * (1.60577024e-10f - _t63 * 7.54937183e-13f)));
+    const float _t68 = _t10 * _t66 - _t3 * _t67;
+    const float _t69 = _t8 * _t55 - _t1 * _t54;
+    const float _t70 = _t3 * _t66 + _t10 * _t67;
+    const float _t71 = _t7 * _t61 - _t5 * _t60;
+    return (_t31 * _t37 * _t43 + (_t44 * _t45 * _t37 + (_t44 * _t46 * _t43 + _t46 * _t31 * _t45))) * (_t56 * _t62 * _t68 + _t69 * _t62 * _t70 + _t56 * _t71 * _t70 + _t71 * (_t69 * _t68));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 205
+ * Total ops: 194
  */
 static inline void diamond_proj_o2_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = z * 6.28318548f;
+    const float _t0 = 6.28318548f * y;
     const float _t1 = offsetgen_sinf(_t0);
     const float _t2 = 6.28318548f * h;
-    const float _t3 = offsetgen_cosf(_t0);
-    const float _t4 = 6.28318548f * y;
-    const float _t5 = offsetgen_cosf(_t4);
-    const float _t6 = 6.28318548f * x;
-    const float _t7 = offsetgen_cosf(_t6);
-    const float _t8 = _t3 * _t5 * _t7;
-    const float _t9 = offsetgen_sinf(_t4);
-    const float _t10 = offsetgen_sinf(_t6);
-    const float _t11 = _t3 * _t9 * _t10;
-    const float _t12 = _t1 * _t5 * _t10;
-    const float _t13 = _t7 * (_t1 * _t9);
-    const float _t14 = _t8 + _t11 - _t12 - _t13;
-    const float _t15 = _t2 * _t14;
-    const float _t16 = _t8 + _t13 - _t12 - _t11;
-    const float _t17 = _t8 + _t12 - _t11 - _t13;
-    const float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-    const float _t20 = _t15 * _t15 * _t19;
-    const int _t21 = _t20 <= 1.0f;
-    const float _t22 = (_t21) ? _t20 : 1.0f;
-    const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
-    const float _t26 = sqrtf(_t19);
-    const float _t27 = _t26 * _t15;
-    const float _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t29 = _t1 * _t25 - _t3 * _t28;
-    const float _t30 = _t2 * _t17;
-    const float _t31 = _t30 * _t30 * _t19;
-    const int _t32 = _t31 <= 1.0f;
-    const float _t33 = (_t32) ? _t31 : 1.0f;
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * _t34;
-    const float _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
-    const float _t37 = _t26 * _t30;
-    const float _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t39 = _t36 * _t9 - _t5 * _t38;
-    const float _t40 = _t2 * _t16;
-    const float _t41 = _t40 * _t40 * _t19;
-    const int _t42 = _t41 <= 1.0f;
-    const float _t43 = (_t42) ? _t41 : 1.0f;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = _t44 * _t44;
-    const float _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
-    const float _t47 = _t26 * _t40;
-    const float _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t49 = _t46 * _t7 + _t48 * _t10;
-    const float _t50 = _t29 * _t39 * _t49;
-    const float _t51 = _t46 * _t10 - _t48 * _t7;
-    const float _t52 = _t9 * _t38 + _t5 * _t36;
-    const float _t53 = _t29 * (_t51 * _t52);
-    const float _t54 = _t3 * _t25 + _t1 * _t28;
-    const float _t55 = _t49 * (_t52 * _t54);
-    const float _t56 = _t51 * _t54 * _t39;
-    const float _t57 = _t50 + _t53 - _t55 - _t56;
-    const float _t58 = _t50 + _t56 - _t55 - _t53;
-    const float _t59 = _t50 + _t55 - _t53 - _t56;
-    const float _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
-    const float _t61 = (_t60 > 0.0f) ? 1.0f / sqrtf(_t60) : 0.0f;
-    n[0] = _t61 * _t59;
-    n[1] = -(_t58 * _t61);
-    n[2] = -(_t61 * _t57);
+    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+    const float _t4 = _t3 * _t3;
+    const float _t5 = z * 6.28318548f;
+    const float _t6 = offsetgen_cosf(_t5);
+    const float _t7 = offsetgen_cosf(_t0);
+    const float _t8 = 6.28318548f * x;
+    const float _t9 = offsetgen_cosf(_t8);
+    const float _t10 = _t6 * _t7 * _t9;
+    const float _t11 = offsetgen_sinf(_t5);
+    const float _t12 = offsetgen_sinf(_t8);
+    const float _t13 = _t11 * _t7 * _t12;
+    const float _t14 = _t6 * _t1 * _t12;
+    const float _t15 = _t9 * (_t11 * _t1);
+    const float _t16 = _t10 + _t13 - _t14 - _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t10 + _t14 - _t13 - _t15;
+    const float _t19 = _t18 * _t18;
+    const float _t20 = _t10 + _t15 - _t13 - _t14;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t19 + _t21 + _t17;
+    const float _t23 = (_t22 > 1.17549435e-38f) ? 1.0f / _t22 : 0.0f;
+    const float _t24 = _t4 * _t17 * _t23;
+    const float _t25 = _t24 * _t24;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = _t25 * (0.0416666679f - 0.00138888892f * _t24) + (1.0f - _t24 * 0.5f) + _t26 * (_t25 * (2.08744777e-09f - 1.13046204e-11f * _t24) + (2.48015876e-05f - _t24 * 2.75573029e-07f));
+    const float _t28 = _t3 * (sqrtf(_t22) * _t23);
+    const float _t29 = (_t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * (_t16 * _t28);
+    const float _t30 = _t1 * _t27 - _t7 * _t29;
+    const float _t31 = _t4 * _t21 * _t23;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = (0.0416666679f - 0.00138888892f * _t31) * _t32 + (1.0f - 0.5f * _t31) + _t33 * (2.48015876e-05f - 2.75573029e-07f * _t31 + (2.08744777e-09f - 1.13046204e-11f * _t31) * _t32);
+    const float _t35 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * (_t20 * _t28);
+    const float _t36 = _t34 * _t9 + _t35 * _t12;
+    const float _t37 = _t23 * (_t4 * _t19);
+    const float _t38 = _t37 * _t37;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = 1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38 + _t39 * ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f));
+    const float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) + (1.0f - 0.166666672f * _t37 + (0.00833333377f - _t37 * 0.000198412701f) * _t38));
+    const float _t42 = _t11 * _t40 - _t6 * _t41;
+    const float _t43 = _t30 * _t36 * _t42;
+    const float _t44 = _t1 * _t29 + _t7 * _t27;
+    const float _t45 = _t34 * _t12 - _t35 * _t9;
+    const float _t46 = _t44 * (_t42 * _t45);
+    const float _t47 = _t6 * _t40 + _t11 * _t41;
+    const float _t48 = _t36 * _t47 * _t44;
+    const float _t49 = _t30 * _t47 * _t45;
+    const float _t50 = _t43 + _t46 - _t48 - _t49;
+    const float _t51 = _t43 + _t48 - _t49 - _t46;
+    const float _t52 = _t43 + _t49 - _t48 - _t46;
+    const float _t53 = _t50 * _t50 + _t51 * _t51 + _t52 * _t52;
+    const float _t54 = (_t53 > 0.0f) ? 1.0f / sqrtf(_t53) : 0.0f;
+    n[0] = _t54 * _t51;
+    n[1] = -(_t54 * _t52);
+    n[2] = -(_t54 * _t50);
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -836,60 +813,53 @@ static inline void diamond_proj_o2_offset_n(size_t n, const double *x, const dou
     for (i = 0; i < blocked; i += 8) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
-            const double _t0 = z[i + j] * 6.2831853071795862;
-            const double _t1 = offsetgen_batch_cos(_t0);
-            const double _t2 = 6.2831853071795862 * h[i + j];
-            const double _t3 = 6.2831853071795862 * y[i + j];
+            const double _t0 = 6.2831853071795862 * h[i + j];
+            const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+            const double _t2 = _t1 * _t1;
+            const double _t3 = z[i + j] * 6.2831853071795862;
             const double _t4 = offsetgen_batch_cos(_t3);
-            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t5 = 6.2831853071795862 * y[i + j];
             const double _t6 = offsetgen_batch_cos(_t5);
-            const double _t7 = _t1 * _t4 * _t6;
-            const double _t8 = offsetgen_batch_sin(_t3);
-            const double _t9 = offsetgen_batch_sin(_t5);
-            const double _t10 = _t1 * _t8 * _t9;
-            const double _t11 = offsetgen_batch_sin(_t0);
-            const double _t12 = _t11 * _t4 * _t9;
-            const double _t13 = _t6 * (_t11 * _t8);
-            const double _t14 = _t7 + _t10 - _t12 - _t13;
-            const double _t15 = _t2 * _t14;
-            const double _t16 = _t7 + _t13 - _t12 - _t10;
-            const double _t17 = _t7 + _t12 - _t10 - _t13;
-            const double _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-            const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-            const double _t20 = _t15 * _t15 * _t19;
-            const int _t21 = _t20 <= 1.0;
-            const double _t22 = (_t21) ? _t20 : 1.0;
-            const double _t23 = _t22 * _t22;
-            const double _t24 = _t23 * _t23;
-            const double _t25 = _t24 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23);
-            const double _t26 = offsetgen_batch_sqrt(_t19);
-            const double _t27 = _t26 * _t15;
-            const double _t28 = ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (_t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
-            const double _t29 = _t1 * _t25 + _t11 * _t28;
-            const double _t30 = _t2 * _t17;
-            const double _t31 = _t30 * _t30 * _t19;
-            const int _t32 = _t31 <= 1.0;
-            const double _t33 = (_t32) ? _t31 : 1.0;
-            const double _t34 = _t33 * _t33;
-            const double _t35 = _t34 * _t34;
-            const double _t36 = (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07 + _t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11)) * _t35 + (_t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + (1.0 - _t33 * 0.5));
-            const double _t37 = _t26 * _t30;
-            const double _t38 = ((_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08)) * _t35 + ((0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + (1.0 - _t33 * 0.16666666666666666))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
-            const double _t39 = _t36 * _t8 - _t4 * _t38;
-            const double _t40 = _t2 * _t16;
-            const double _t41 = _t40 * _t40 * _t19;
-            const int _t42 = _t41 <= 1.0;
-            const double _t43 = (_t42) ? _t41 : 1.0;
-            const double _t44 = _t43 * _t43;
-            const double _t45 = _t44 * _t44;
-            const double _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.041666666666666102 - _t43 * 0.0013888888888798428) + ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45;
-            const double _t47 = _t26 * _t40;
-            const double _t48 = ((2.755731919201122e-06 - _t43 * 2.5052099244914114e-08 + _t44 * (1.6057701922579786e-10 - _t43 * 7.549371704181243e-13)) * _t45 + (1.0 - _t43 * 0.16666666666666666 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
-            const double _t49 = _t46 * _t6 + _t48 * _t9;
-            const double _t50 = _t46 * _t9 - _t48 * _t6;
-            const double _t51 = _t8 * _t38 + _t4 * _t36;
-            const double _t52 = _t11 * _t25 - _t1 * _t28;
-            out[i + j] = _t29 * _t39 * _t49 + (_t50 * _t51 * _t29 + _t51 * _t52 * _t49) + _t50 * _t52 * _t39;
+            const double _t7 = 6.2831853071795862 * x[i + j];
+            const double _t8 = offsetgen_batch_cos(_t7);
+            const double _t9 = _t4 * _t6 * _t8;
+            const double _t10 = offsetgen_batch_sin(_t3);
+            const double _t11 = offsetgen_batch_sin(_t5);
+            const double _t12 = _t8 * (_t10 * _t11);
+            const double _t13 = offsetgen_batch_sin(_t7);
+            const double _t14 = _t10 * _t6 * _t13;
+            const double _t15 = _t4 * _t11 * _t13;
+            const double _t16 = _t9 + _t12 - _t14 - _t15;
+            const double _t17 = _t16 * _t16;
+            const double _t18 = _t9 + _t15 - _t14 - _t12;
+            const double _t19 = _t18 * _t18;
+            const double _t20 = _t9 + _t14 - _t15 - _t12;
+            const double _t21 = _t20 * _t20;
+            const double _t22 = _t19 + _t17 + _t21;
+            const double _t23 = (_t22 > 1.1754943508222875e-38) ? 1.0 / _t22 : 0.0;
+            const double _t24 = _t2 * _t17 * _t23;
+            const double _t25 = _t24 * _t24;
+            const double _t26 = _t25 * _t25;
+            const double _t27 = (0.041666666666666102 - 0.0013888888888798428 * _t24) * _t25 + (1.0 - 0.5 * _t24) + _t26 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t24 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24) * _t25);
+            const double _t28 = _t1 * (offsetgen_batch_sqrt(_t22) * _t23);
+            const double _t29 = (_t26 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) + (1.0 - 0.16666666666666666 * _t24 + _t25 * (0.0083333333333333003 - 0.00019841269841216566 * _t24))) * (_t16 * _t28);
+            const double _t30 = _t27 * _t13 - _t29 * _t8;
+            const double _t31 = _t2 * _t21 * _t23;
+            const double _t32 = _t31 * _t31;
+            const double _t33 = _t32 * _t32;
+            const double _t34 = _t32 * (0.041666666666666102 - 0.0013888888888798428 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (_t32 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t31) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07));
+            const double _t35 = (_t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31)) + (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - 0.00019841269841216566 * _t31))) * (_t20 * _t28);
+            const double _t36 = _t11 * _t34 - _t6 * _t35;
+            const double _t37 = _t23 * (_t2 * _t19);
+            const double _t38 = _t37 * _t37;
+            const double _t39 = _t38 * _t38;
+            const double _t40 = 1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38 + _t39 * ((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07));
+            const double _t41 = _t28 * _t18 * (_t39 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) + (1.0 - 0.16666666666666666 * _t37 + (0.0083333333333333003 - _t37 * 0.00019841269841216566) * _t38));
+            const double _t42 = _t10 * _t40 - _t4 * _t41;
+            const double _t43 = _t4 * _t40 + _t10 * _t41;
+            const double _t44 = _t11 * _t35 + _t6 * _t34;
+            const double _t45 = _t27 * _t8 + _t29 * _t13;
+            out[i + j] = _t30 * (_t36 * _t42) + _t43 * _t30 * _t44 + _t45 * _t42 * _t44 + _t36 * _t45 * _t43;
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -908,81 +878,79 @@ static inline void diamond_proj_o2_shell_n(size_t n, const double *x, const doub
     for (i = 0; i < blocked; i += 8) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
-            const double _t0 = 6.2831853071795862 * (t[i + j] * 0.5);
-            const double _t1 = z[i + j] * 6.2831853071795862;
-            const double _t2 = offsetgen_batch_cos(_t1);
-            const double _t3 = 6.2831853071795862 * y[i + j];
-            const double _t4 = offsetgen_batch_cos(_t3);
-            const double _t5 = 6.2831853071795862 * x[i + j];
-            const double _t6 = offsetgen_batch_cos(_t5);
-            const double _t7 = _t2 * _t4 * _t6;
-            const double _t8 = offsetgen_batch_sin(_t1);
-            const double _t9 = offsetgen_batch_sin(_t3);
-            const double _t10 = _t6 * (_t8 * _t9);
-            const double _t11 = offsetgen_batch_sin(_t5);
-            const double _t12 = _t8 * _t4 * _t11;
-            const double _t13 = _t2 * _t9 * _t11;
-            const double _t14 = _t7 + _t10 - _t12 - _t13;
-            const double _t15 = _t0 * _t14;
-            const double _t16 = _t7 + _t13 - _t12 - _t10;
-            const double _t17 = _t7 + _t12 - _t13 - _t10;
-            const double _t18 = _t16 * _t16 + _t14 * _t14 + _t17 * _t17;
-            const double _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-            const double _t20 = _t15 * _t15 * _t19;
-            const int _t21 = _t20 <= 1.0;
-            const double _t22 = (_t21) ? _t20 : 1.0;
+            const double _t0 = 6.2831853071795862 * x[i + j];
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = z[i + j] * 6.2831853071795862;
+            const double _t3 = offsetgen_batch_cos(_t2);
+            const double _t4 = 6.2831853071795862 * y[i + j];
+            const double _t5 = offsetgen_batch_cos(_t4);
+            const double _t6 = _t3 * _t5 * _t1;
+            const double _t7 = offsetgen_batch_sin(_t4);
+            const double _t8 = offsetgen_batch_sin(_t0);
+            const double _t9 = _t3 * _t7 * _t8;
+            const double _t10 = offsetgen_batch_sin(_t2);
+            const double _t11 = _t10 * _t5 * _t8;
+            const double _t12 = _t1 * (_t10 * _t7);
+            const double _t13 = _t6 + _t9 - _t11 - _t12;
+            const double _t14 = _t13 * _t13;
+            const double _t15 = _t6 + _t12 - _t11 - _t9;
+            const double _t16 = _t15 * _t15;
+            const double _t17 = _t6 + _t11 - _t9 - _t12;
+            const double _t18 = _t17 * _t17;
+            const double _t19 = _t14 + _t16 + _t18;
+            const double _t20 = (_t19 > 1.1754943508222875e-38) ? 1.0 / _t19 : 0.0;
+            const double _t21 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t22 = (_t21 <= 1.0) ? (((-1.0) <= _t21) ? _t21 : (-1.0)) : 1.0;
             const double _t23 = _t22 * _t22;
-            const double _t24 = _t23 * _t23;
-            const double _t25 = (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + _t23 * (2.0874477943664777e-09 - _t22 * 1.1304620460700782e-11)) * _t24 + (1.0 - _t22 * 0.5 + _t23 * (0.041666666666666102 - _t22 * 0.0013888888888798428));
-            const double _t26 = _t25 * _t6;
-            const double _t27 = 1.0 - _t22 * 0.16666666666666666 + (0.0083333333333333003 - _t22 * 0.00019841269841216566) * _t23 + (2.755731919201122e-06 - _t22 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t22 * 7.549371704181243e-13) * _t23) * _t24;
-            const double _t28 = offsetgen_batch_sqrt(_t19);
-            const double _t29 = _t28 * _t15;
-            const double _t30 = _t27 * ((_t21) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0)));
-            const double _t31 = _t26 + _t30 * _t11;
-            const double _t32 = _t17 * _t0;
-            const double _t33 = _t32 * _t32 * _t19;
-            const int _t34 = _t33 <= 1.0;
-            const double _t35 = (_t34) ? _t33 : 1.0;
-            const double _t36 = _t35 * _t35;
-            const double _t37 = _t36 * _t36;
-            const double _t38 = _t36 * (0.041666666666666102 - 0.0013888888888798428 * _t35) + (1.0 - _t35 * 0.5) + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07 + _t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35)) * _t37;
-            const double _t39 = _t9 * _t38;
-            const double _t40 = _t28 * _t32;
-            const double _t41 = _t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35) + (1.0 - 0.16666666666666666 * _t35) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35)) * _t37;
-            const double _t42 = ((_t34) ? _t40 : ((_t40 > 0.0) ? 1.0 : (-1.0))) * _t41;
-            const double _t43 = _t39 - _t4 * _t42;
-            const double _t44 = _t0 * _t16;
-            const double _t45 = _t44 * _t44 * _t19;
-            const int _t46 = _t45 <= 1.0;
-            const double _t47 = (_t46) ? _t45 : 1.0;
-            const double _t48 = _t47 * _t47;
-            const double _t49 = _t48 * _t48;
-            const double _t50 = _t49 * (2.4801587247292686e-05 - _t47 * 2.7557303701922228e-07 + _t48 * (2.0874477943664777e-09 - _t47 * 1.1304620460700782e-11)) + (_t48 * (0.041666666666666102 - _t47 * 0.0013888888888798428) + (1.0 - _t47 * 0.5));
-            const double _t51 = _t2 * _t50;
-            const double _t52 = _t28 * _t44;
-            const double _t53 = _t48 * (0.0083333333333333003 - _t47 * 0.00019841269841216566) + (1.0 - _t47 * 0.16666666666666666) + _t49 * (2.755731919201122e-06 - _t47 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t47 * 7.549371704181243e-13) * _t48);
-            const double _t54 = ((_t46) ? _t52 : ((_t52 > 0.0) ? 1.0 : (-1.0))) * _t53;
-            const double _t55 = _t51 + _t8 * _t54;
-            const double _t56 = _t25 * _t11;
-            const double _t57 = _t56 - _t30 * _t6;
-            const double _t58 = _t8 * _t50;
-            const double _t59 = _t58 - _t2 * _t54;
-            const double _t60 = _t4 * _t38;
-            const double _t61 = _t60 + _t9 * _t42;
-            const double _t62 = -_t40;
-            const double _t63 = ((_t34) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0))) * _t41;
-            const double _t64 = _t60 + _t63 * _t9;
-            const double _t65 = -_t29;
-            const double _t66 = _t27 * ((_t21) ? _t65 : ((_t65 > 0.0) ? 1.0 : (-1.0)));
-            const double _t67 = _t26 + _t66 * _t11;
-            const double _t68 = -_t52;
-            const double _t69 = _t53 * ((_t46) ? _t68 : ((_t68 > 0.0) ? 1.0 : (-1.0)));
-            const double _t70 = _t58 - _t2 * _t69;
-            const double _t71 = _t39 - _t4 * _t63;
-            const double _t72 = _t8 * _t69 + _t51;
-            const double _t73 = _t56 - _t66 * _t6;
-            out[i + j] = (_t31 * _t43 * _t55 + _t43 * _t57 * _t59 + _t61 * _t57 * _t55 + _t31 * _t61 * _t59) * (_t64 * _t67 * _t70 + _t71 * _t67 * _t72 + _t64 * _t73 * _t72 + _t71 * _t73 * _t70);
+            const double _t24 = _t20 * (_t23 * _t16);
+            const double _t25 = _t24 * _t24;
+            const double _t26 = _t25 * _t25;
+            const double _t27 = (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07 + _t25 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24)) * _t26 + (_t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24) + (1.0 - _t24 * 0.5));
+            const double _t28 = offsetgen_batch_sqrt(_t19) * _t20;
+            const double _t29 = _t22 * _t28;
+            const double _t30 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) * _t26 + ((0.0083333333333333003 - 0.00019841269841216566 * _t24) * _t25 + (1.0 - 0.16666666666666666 * _t24))) * (_t29 * _t15);
+            const double _t31 = _t1 * _t27 + _t30 * _t8;
+            const double _t32 = _t23 * _t18 * _t20;
+            const double _t33 = _t32 * _t32;
+            const double _t34 = _t33 * _t33;
+            const double _t35 = _t34 * (2.4801587247292686e-05 - _t32 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t32 * 1.1304620460700782e-11) * _t33) + ((0.041666666666666102 - 0.0013888888888798428 * _t32) * _t33 + (1.0 - _t32 * 0.5));
+            const double _t36 = _t29 * _t17 * (1.0 - 0.16666666666666666 * _t32 + (0.0083333333333333003 - 0.00019841269841216566 * _t32) * _t33 + _t34 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t32 + _t33 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t32)));
+            const double _t37 = _t5 * _t35 + _t7 * _t36;
+            const double _t38 = _t23 * _t14 * _t20;
+            const double _t39 = _t38 * _t38;
+            const double _t40 = _t39 * _t39;
+            const double _t41 = 1.0 - _t38 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t38) * _t39 + (2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t38) * _t39) * _t40;
+            const double _t42 = ((0.0083333333333333003 - 0.00019841269841216566 * _t38) * _t39 + (1.0 - 0.16666666666666666 * _t38) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t38)) * _t40) * (_t29 * _t13);
+            const double _t43 = _t10 * _t41 - _t3 * _t42;
+            const double _t44 = _t8 * _t27 - _t30 * _t1;
+            const double _t45 = _t3 * _t41 + _t10 * _t42;
+            const double _t46 = _t35 * _t7 - _t5 * _t36;
+            const double _t47 = -_t21;
+            const double _t48 = (_t47 <= 1.0) ? (((-1.0) <= _t47) ? _t47 : (-1.0)) : 1.0;
+            const double _t49 = _t28 * _t48;
+            const double _t50 = _t48 * _t48;
+            const double _t51 = _t20 * (_t50 * _t16);
+            const double _t52 = _t51 * _t51;
+            const double _t53 = _t52 * _t52;
+            const double _t54 = _t49 * _t15 * ((0.0083333333333333003 - _t51 * 0.00019841269841216566) * _t52 + (1.0 - _t51 * 0.16666666666666666) + _t53 * (2.755731919201122e-06 - _t51 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t51 * 7.549371704181243e-13) * _t52));
+            const double _t55 = ((2.0874477943664777e-09 - _t51 * 1.1304620460700782e-11) * _t52 + (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07)) * _t53 + (1.0 - _t51 * 0.5 + (0.041666666666666102 - _t51 * 0.0013888888888798428) * _t52);
+            const double _t56 = _t8 * _t54 + _t1 * _t55;
+            const double _t57 = _t50 * _t18 * _t20;
+            const double _t58 = _t57 * _t57;
+            const double _t59 = _t58 * _t58;
+            const double _t60 = (1.0 - 0.16666666666666666 * _t57 + (0.0083333333333333003 - 0.00019841269841216566 * _t57) * _t58 + (_t58 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t57)) * _t59) * (_t49 * _t17);
+            const double _t61 = 1.0 - _t57 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t57) * _t58 + (_t58 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t57) + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)) * _t59;
+            const double _t62 = _t7 * _t60 + _t5 * _t61;
+            const double _t63 = _t50 * _t14 * _t20;
+            const double _t64 = _t63 * _t63;
+            const double _t65 = _t64 * _t64;
+            const double _t66 = 1.0 - _t63 * 0.5 + (0.041666666666666102 - _t63 * 0.0013888888888798428) * _t64 + ((2.0874477943664777e-09 - _t63 * 1.1304620460700782e-11) * _t64 + (2.4801587247292686e-05 - _t63 * 2.7557303701922228e-07)) * _t65;
+            const double _t67 = _t49 * _t13 * (_t64 * (0.0083333333333333003 - _t63 * 0.00019841269841216566) + (1.0 - _t63 * 0.16666666666666666) + _t65 * (2.755731919201122e-06 - _t63 * 2.5052099244914114e-08 + _t64 * (1.6057701922579786e-10 - _t63 * 7.549371704181243e-13)));
+            const double _t68 = _t10 * _t66 - _t3 * _t67;
+            const double _t69 = _t8 * _t55 - _t1 * _t54;
+            const double _t70 = _t3 * _t66 + _t10 * _t67;
+            const double _t71 = _t7 * _t61 - _t5 * _t60;
+            out[i + j] = (_t31 * _t37 * _t43 + (_t44 * _t45 * _t37 + (_t44 * _t46 * _t43 + _t46 * _t31 * _t45))) * (_t56 * _t62 * _t68 + _t69 * _t62 * _t70 + _t56 * _t71 * _t70 + _t71 * (_t69 * _t68));
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -1001,60 +969,53 @@ static inline void diamond_proj_o2_offsetf_n(size_t n, const float *x, const flo
     for (i = 0; i < blocked; i += 16) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
-            const float _t0 = z[i + j] * 6.28318548f;
-            const float _t1 = offsetgen_batch_cosf(_t0);
-            const float _t2 = 6.28318548f * h[i + j];
-            const float _t3 = 6.28318548f * y[i + j];
+            const float _t0 = 6.28318548f * h[i + j];
+            const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+            const float _t2 = _t1 * _t1;
+            const float _t3 = z[i + j] * 6.28318548f;
             const float _t4 = offsetgen_batch_cosf(_t3);
-            const float _t5 = 6.28318548f * x[i + j];
+            const float _t5 = 6.28318548f * y[i + j];
             const float _t6 = offsetgen_batch_cosf(_t5);
-            const float _t7 = _t1 * _t4 * _t6;
-            const float _t8 = offsetgen_batch_sinf(_t3);
-            const float _t9 = offsetgen_batch_sinf(_t5);
-            const float _t10 = _t1 * _t8 * _t9;
-            const float _t11 = offsetgen_batch_sinf(_t0);
-            const float _t12 = _t11 * _t4 * _t9;
-            const float _t13 = _t6 * (_t11 * _t8);
-            const float _t14 = _t7 + _t10 - _t12 - _t13;
-            const float _t15 = _t2 * _t14;
-            const float _t16 = _t7 + _t13 - _t12 - _t10;
-            const float _t17 = _t7 + _t12 - _t10 - _t13;
-            const float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-            const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-            const float _t20 = _t15 * _t15 * _t19;
-            const int _t21 = _t20 <= 1.0f;
-            const float _t22 = (_t21) ? _t20 : 1.0f;
-            const float _t23 = _t22 * _t22;
-            const float _t24 = _t23 * _t23;
-            const float _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
-            const float _t26 = offsetgen_batch_sqrtf(_t19);
-            const float _t27 = _t26 * _t15;
-            const float _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f)));
-            const float _t29 = _t1 * _t25 + _t11 * _t28;
-            const float _t30 = _t2 * _t17;
-            const float _t31 = _t30 * _t30 * _t19;
-            const int _t32 = _t31 <= 1.0f;
-            const float _t33 = (_t32) ? _t31 : 1.0f;
-            const float _t34 = _t33 * _t33;
-            const float _t35 = _t34 * _t34;
-            const float _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
-            const float _t37 = _t26 * _t30;
-            const float _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f)));
-            const float _t39 = _t36 * _t8 - _t4 * _t38;
-            const float _t40 = _t2 * _t16;
-            const float _t41 = _t40 * _t40 * _t19;
-            const int _t42 = _t41 <= 1.0f;
-            const float _t43 = (_t42) ? _t41 : 1.0f;
-            const float _t44 = _t43 * _t43;
-            const float _t45 = _t44 * _t44;
-            const float _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
-            const float _t47 = _t26 * _t40;
-            const float _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0f) ? 1.0f : (-1.0f)));
-            const float _t49 = _t46 * _t6 + _t48 * _t9;
-            const float _t50 = _t46 * _t9 - _t48 * _t6;
-            const float _t51 = _t8 * _t38 + _t4 * _t36;
-            const float _t52 = _t11 * _t25 - _t1 * _t28;
-            out[i + j] = _t29 * _t39 * _t49 + (_t50 * _t51 * _t29 + _t51 * _t52 * _t49) + _t50 * _t52 * _t39;
+            const float _t7 = 6.28318548f * x[i + j];
+            const float _t8 = offsetgen_batch_cosf(_t7);
+            const float _t9 = _t4 * _t6 * _t8;
+            const float _t10 = offsetgen_batch_sinf(_t3);
+            const float _t11 = offsetgen_batch_sinf(_t5);
+            const float _t12 = _t8 * (_t10 * _t11);
+            const float _t13 = offsetgen_batch_sinf(_t7);
+            const float _t14 = _t10 * _t6 * _t13;
+            const float _t15 = _t4 * _t11 * _t13;
+            const float _t16 = _t9 + _t12 - _t14 - _t15;
+            const float _t17 = _t16 * _t16;
+            const float _t18 = _t9 + _t15 - _t14 - _t12;
+            const float _t19 = _t18 * _t18;
+            const float _t20 = _t9 + _t14 - _t15 - _t12;
+            const float _t21 = _t20 * _t20;
+            const float _t22 = _t19 + _t17 + _t21;
+            const float _t23 = (_t22 > 1.17549435e-38f) ? 1.0f / _t22 : 0.0f;
+            const float _t24 = _t2 * _t17 * _t23;
+            const float _t25 = _t24 * _t24;
+            const float _t26 = _t25 * _t25;
+            const float _t27 = (0.0416666679f - 0.00138888892f * _t24) * _t25 + (1.0f - 0.5f * _t24) + _t26 * (2.48015876e-05f - 2.75573029e-07f * _t24 + (2.08744777e-09f - 1.13046204e-11f * _t24) * _t25);
+            const float _t28 = _t1 * (offsetgen_batch_sqrtf(_t22) * _t23);
+            const float _t29 = (_t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * (_t16 * _t28);
+            const float _t30 = _t27 * _t13 - _t29 * _t8;
+            const float _t31 = _t2 * _t21 * _t23;
+            const float _t32 = _t31 * _t31;
+            const float _t33 = _t32 * _t32;
+            const float _t34 = _t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (_t32 * (2.08744777e-09f - 1.13046204e-11f * _t31) + (2.48015876e-05f - _t31 * 2.75573029e-07f));
+            const float _t35 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * (_t20 * _t28);
+            const float _t36 = _t11 * _t34 - _t6 * _t35;
+            const float _t37 = _t23 * (_t2 * _t19);
+            const float _t38 = _t37 * _t37;
+            const float _t39 = _t38 * _t38;
+            const float _t40 = 1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38 + _t39 * ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f));
+            const float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) + (1.0f - 0.166666672f * _t37 + (0.00833333377f - _t37 * 0.000198412701f) * _t38));
+            const float _t42 = _t10 * _t40 - _t4 * _t41;
+            const float _t43 = _t4 * _t40 + _t10 * _t41;
+            const float _t44 = _t11 * _t35 + _t6 * _t34;
+            const float _t45 = _t27 * _t8 + _t29 * _t13;
+            out[i + j] = _t30 * (_t36 * _t42) + _t43 * _t30 * _t44 + _t45 * _t42 * _t44 + _t36 * _t45 * _t43;
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -1073,81 +1034,79 @@ static inline void diamond_proj_o2_shellf_n(size_t n, const float *x, const floa
     for (i = 0; i < blocked; i += 16) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
-            const float _t0 = 6.28318548f * (t[i + j] * 0.5f);
-            const float _t1 = z[i + j] * 6.28318548f;
-            const float _t2 = offsetgen_batch_cosf(_t1);
-            const float _t3 = 6.28318548f * y[i + j];
-            const float _t4 = offsetgen_batch_cosf(_t3);
-            const float _t5 = 6.28318548f * x[i + j];
-            const float _t6 = offsetgen_batch_cosf(_t5);
-            const float _t7 = _t2 * _t4 * _t6;
-            const float _t8 = offsetgen_batch_sinf(_t1);
-            const float _t9 = offsetgen_batch_sinf(_t3);
-            const float _t10 = _t6 * (_t8 * _t9);
-            const float _t11 = offsetgen_batch_sinf(_t5);
-            const float _t12 = _t8 * _t4 * _t11;
-            const float _t13 = _t2 * _t9 * _t11;
-            const float _t14 = _t7 + _t10 - _t12 - _t13;
-            const float _t15 = _t0 * _t14;
-            const float _t16 = _t7 + _t13 - _t12 - _t10;
-            const float _t17 = _t7 + _t12 - _t13 - _t10;
-            const float _t18 = _t16 * _t16 + _t14 * _t14 + _t17 * _t17;
-            const float _t19 = (_t18 > 0.0f) ? 1.0f / _t18 : 0.0f;
-            const float _t20 = _t15 * _t15 * _t19;
-            const int _t21 = _t20 <= 1.0f;
-            const float _t22 = (_t21) ? _t20 : 1.0f;
+            const float _t0 = 6.28318548f * x[i + j];
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = z[i + j] * 6.28318548f;
+            const float _t3 = offsetgen_batch_cosf(_t2);
+            const float _t4 = 6.28318548f * y[i + j];
+            const float _t5 = offsetgen_batch_cosf(_t4);
+            const float _t6 = _t3 * _t5 * _t1;
+            const float _t7 = offsetgen_batch_sinf(_t4);
+            const float _t8 = offsetgen_batch_sinf(_t0);
+            const float _t9 = _t3 * _t7 * _t8;
+            const float _t10 = offsetgen_batch_sinf(_t2);
+            const float _t11 = _t10 * _t5 * _t8;
+            const float _t12 = _t1 * (_t10 * _t7);
+            const float _t13 = _t6 + _t9 - _t11 - _t12;
+            const float _t14 = _t13 * _t13;
+            const float _t15 = _t6 + _t12 - _t11 - _t9;
+            const float _t16 = _t15 * _t15;
+            const float _t17 = _t6 + _t11 - _t9 - _t12;
+            const float _t18 = _t17 * _t17;
+            const float _t19 = _t14 + _t16 + _t18;
+            const float _t20 = (_t19 > 1.17549435e-38f) ? 1.0f / _t19 : 0.0f;
+            const float _t21 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t22 = (_t21 <= 1.0f) ? (((-1.0f) <= _t21) ? _t21 : (-1.0f)) : 1.0f;
             const float _t23 = _t22 * _t22;
-            const float _t24 = _t23 * _t23;
-            const float _t25 = (2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - _t22 * 1.13046204e-11f)) * _t24 + (1.0f - _t22 * 0.5f + _t23 * (0.0416666679f - _t22 * 0.00138888892f));
-            const float _t26 = _t25 * _t6;
-            const float _t27 = 1.0f - _t22 * 0.166666672f + (0.00833333377f - _t22 * 0.000198412701f) * _t23 + (2.75573188e-06f - _t22 * 2.50520991e-08f + (1.60577024e-10f - _t22 * 7.54937183e-13f) * _t23) * _t24;
-            const float _t28 = offsetgen_batch_sqrtf(_t19);
-            const float _t29 = _t28 * _t15;
-            const float _t30 = _t27 * ((_t21) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f)));
-            const float _t31 = _t26 + _t30 * _t11;
-            const float _t32 = _t17 * _t0;
-            const float _t33 = _t32 * _t32 * _t19;
-            const int _t34 = _t33 <= 1.0f;
-            const float _t35 = (_t34) ? _t33 : 1.0f;
-            const float _t36 = _t35 * _t35;
-            const float _t37 = _t36 * _t36;
-            const float _t38 = _t36 * (0.0416666679f - 0.00138888892f * _t35) + (1.0f - _t35 * 0.5f) + (2.48015876e-05f - _t35 * 2.75573029e-07f + _t36 * (2.08744777e-09f - 1.13046204e-11f * _t35)) * _t37;
-            const float _t39 = _t9 * _t38;
-            const float _t40 = _t28 * _t32;
-            const float _t41 = _t36 * (0.00833333377f - 0.000198412701f * _t35) + (1.0f - 0.166666672f * _t35) + ((1.60577024e-10f - 7.54937183e-13f * _t35) * _t36 + (2.75573188e-06f - 2.50520991e-08f * _t35)) * _t37;
-            const float _t42 = ((_t34) ? _t40 : ((_t40 > 0.0f) ? 1.0f : (-1.0f))) * _t41;
-            const float _t43 = _t39 - _t4 * _t42;
-            const float _t44 = _t0 * _t16;
-            const float _t45 = _t44 * _t44 * _t19;
-            const int _t46 = _t45 <= 1.0f;
-            const float _t47 = (_t46) ? _t45 : 1.0f;
-            const float _t48 = _t47 * _t47;
-            const float _t49 = _t48 * _t48;
-            const float _t50 = _t49 * (2.48015876e-05f - _t47 * 2.75573029e-07f + _t48 * (2.08744777e-09f - _t47 * 1.13046204e-11f)) + (_t48 * (0.0416666679f - _t47 * 0.00138888892f) + (1.0f - _t47 * 0.5f));
-            const float _t51 = _t2 * _t50;
-            const float _t52 = _t28 * _t44;
-            const float _t53 = _t48 * (0.00833333377f - _t47 * 0.000198412701f) + (1.0f - _t47 * 0.166666672f) + _t49 * (2.75573188e-06f - _t47 * 2.50520991e-08f + (1.60577024e-10f - _t47 * 7.54937183e-13f) * _t48);
-            const float _t54 = ((_t46) ? _t52 : ((_t52 > 0.0f) ? 1.0f : (-1.0f))) * _t53;
-            const float _t55 = _t51 + _t8 * _t54;
-            const float _t56 = _t25 * _t11;
-            const float _t57 = _t56 - _t30 * _t6;
-            const float _t58 = _t8 * _t50;
-            const float _t59 = _t58 - _t2 * _t54;
-            const float _t60 = _t4 * _t38;
-            const float _t61 = _t60 + _t9 * _t42;
-            const float _t62 = -_t40;
-            const float _t63 = ((_t34) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f))) * _t41;
-            const float _t64 = _t60 + _t63 * _t9;
-            const float _t65 = -_t29;
-            const float _t66 = _t27 * ((_t21) ? _t65 : ((_t65 > 0.0f) ? 1.0f : (-1.0f)));
-            const float _t67 = _t26 + _t66 * _t11;
-            const float _t68 = -_t52;
-            const float _t69 = _t53 * ((_t46) ? _t68 : ((_t68 > 0.0f) ? 1.0f : (-1.0f)));
-            const float _t70 = _t58 - _t2 * _t69;
-            const float _t71 = _t39 - _t4 * _t63;
-            const float _t72 = _t8 * _t69 + _t51;
-            const float _t73 = _t56 - _t66 * _t6;
-            out[i + j] = (_t31 * _t43 * _t55 + _t43 * _t57 * _t59 + _t61 * _t57 * _t55 + _t31 * _t61 * _t59) * (_t64 * _t67 * _t70 + _t71 * _t67 * _t72 + _t64 * _t73 * _t72 + _t71 * _t73 * _t70);
+            const float _t24 = _t20 * (_t23 * _t16);
+            const float _t25 = _t24 * _t24;
+            const float _t26 = _t25 * _t25;
+            const float _t27 = (2.48015876e-05f - _t24 * 2.75573029e-07f + _t25 * (2.08744777e-09f - 1.13046204e-11f * _t24)) * _t26 + (_t25 * (0.0416666679f - 0.00138888892f * _t24) + (1.0f - _t24 * 0.5f));
+            const float _t28 = offsetgen_batch_sqrtf(_t19) * _t20;
+            const float _t29 = _t22 * _t28;
+            const float _t30 = ((2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) * _t26 + ((0.00833333377f - 0.000198412701f * _t24) * _t25 + (1.0f - 0.166666672f * _t24))) * (_t29 * _t15);
+            const float _t31 = _t1 * _t27 + _t30 * _t8;
+            const float _t32 = _t23 * _t18 * _t20;
+            const float _t33 = _t32 * _t32;
+            const float _t34 = _t33 * _t33;
+            const float _t35 = _t34 * (2.48015876e-05f - _t32 * 2.75573029e-07f + (2.08744777e-09f - _t32 * 1.13046204e-11f) * _t33) + ((0.0416666679f - 0.00138888892f * _t32) * _t33 + (1.0f - _t32 * 0.5f));
+            const float _t36 = _t29 * _t17 * (1.0f - 0.166666672f * _t32 + (0.00833333377f - 0.000198412701f * _t32) * _t33 + _t34 * (2.75573188e-06f - 2.50520991e-08f * _t32 + _t33 * (1.60577024e-10f - 7.54937183e-13f * _t32)));
+            const float _t37 = _t5 * _t35 + _t7 * _t36;
+            const float _t38 = _t23 * _t14 * _t20;
+            const float _t39 = _t38 * _t38;
+            const float _t40 = _t39 * _t39;
+            const float _t41 = 1.0f - _t38 * 0.5f + (0.0416666679f - 0.00138888892f * _t38) * _t39 + (2.48015876e-05f - _t38 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t38) * _t39) * _t40;
+            const float _t42 = ((0.00833333377f - 0.000198412701f * _t38) * _t39 + (1.0f - 0.166666672f * _t38) + ((1.60577024e-10f - 7.54937183e-13f * _t38) * _t39 + (2.75573188e-06f - 2.50520991e-08f * _t38)) * _t40) * (_t29 * _t13);
+            const float _t43 = _t10 * _t41 - _t3 * _t42;
+            const float _t44 = _t8 * _t27 - _t30 * _t1;
+            const float _t45 = _t3 * _t41 + _t10 * _t42;
+            const float _t46 = _t35 * _t7 - _t5 * _t36;
+            const float _t47 = -_t21;
+            const float _t48 = (_t47 <= 1.0f) ? (((-1.0f) <= _t47) ? _t47 : (-1.0f)) : 1.0f;
+            const float _t49 = _t28 * _t48;
+            const float _t50 = _t48 * _t48;
+            const float _t51 = _t20 * (_t50 * _t16);
+            const float _t52 = _t51 * _t51;
+            const float _t53 = _t52 * _t52;
+            const float _t54 = _t49 * _t15 * ((0.00833333377f - _t51 * 0.000198412701f) * _t52 + (1.0f - _t51 * 0.166666672f) + _t53 * (2.75573188e-06f - _t51 * 2.50520991e-08f + (1.60577024e-10f - _t51 * 7.54937183e-13f) * _t52));
+            const float _t55 = ((2.08744777e-09f - _t51 * 1.13046204e-11f) * _t52 + (2.48015876e-05f - _t51 * 2.75573029e-07f)) * _t53 + (1.0f - _t51 * 0.5f + (0.0416666679f - _t51 * 0.00138888892f) * _t52);
+            const float _t56 = _t8 * _t54 + _t1 * _t55;
+            const float _t57 = _t50 * _t18 * _t20;
+            const float _t58 = _t57 * _t57;
+            const float _t59 = _t58 * _t58;
+            const float _t60 = (1.0f - 0.166666672f * _t57 + (0.00833333377f - 0.000198412701f * _t57) * _t58 + (_t58 * (1.60577024e-10f - 7.54937183e-13f * _t57) + (2.75573188e-06f - 2.50520991e-08f * _t57)) * _t59) * (_t49 * _t17);
+            const float _t61 = 1.0f - _t57 * 0.5f + (0.0416666679f - 0.00138888892f * _t57) * _t58 + (_t58 * (2.08744777e-09f - 1.13046204e-11f * _t57) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59;
+            const float _t62 = _t7 * _t60 + _t5 * _t61;
+            const float _t63 = _t50 * _t14 * _t20;
+            const float _t64 = _t63 * _t63;
+            const float _t65 = _t64 * _t64;
+            const float _t66 = 1.0f - _t63 * 0.5f + (0.0416666679f - _t63 * 0.00138888892f) * _t64 + ((2.08744777e-09f - _t63 * 1.13046204e-11f) * _t64 + (2.48015876e-05f - _t63 * 2.75573029e-07f)) * _t65;
+            const float _t67 = _t49 * _t13 * (_t64 * (0.00833333377f - _t63 * 0.000198412701f) + (1.0f - _t63 * 0.166666672f) + _t65 * (2.75573188e-06f - _t63 * 2.50520991e-08f + _t64 * (1.60577024e-10f - _t63 * 7.54937183e-13f)));
+            const float _t68 = _t10 * _t66 - _t3 * _t67;
+            const float _t69 = _t8 * _t55 - _t1 * _t54;
+            const float _t70 = _t3 * _t66 + _t10 * _t67;
+            const float _t71 = _t7 * _t61 - _t5 * _t60;
+            out[i + j] = (_t31 * _t37 * _t43 + (_t44 * _t45 * _t37 + (_t44 * _t46 * _t43 + _t46 * _t31 * _t45))) * (_t56 * _t62 * _t68 + _t69 * _t62 * _t70 + _t56 * _t71 * _t70 + _t71 * (_t69 * _t68));
         }
     }
     for (i = 0; i < blocked; ++i) {

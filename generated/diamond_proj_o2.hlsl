@@ -36,9 +36,10 @@ safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| wi
     has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
     every function returns a finite value for finite input (do not compile with -ffinite-math-only).
     sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while each component of d = h n stays within 1 (natural units, |h| <= 0.159 cell on a
-    2*pi-periodic surface); larger displacements are clamped to it, which keeps |q_K - p| <= |h| and
-    so the bound above.
+    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
+    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
+    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
+    1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -48,12 +49,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: HLSL Shader Model 5.0 and later (DXC, FXC, glslang's HLSL front end).
 total ops after CSE:
     - field: 20
-    - offset: 185
-    - shell: 225
-    - normal: 205
+    - offset: 174
+    - shell: 314
+    - normal: 194
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"hlsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":185,"shell":225,"normal":205}} */
+/* offsetgen-metadata {"format":1,"language":"hlsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":174,"shell":314,"normal":194}} */
 #ifndef OFFSETGEN_DIAMOND_PROJ_O2_HLSL
 #define OFFSETGEN_DIAMOND_PROJ_O2_HLSL
 
@@ -97,211 +98,195 @@ float diamond_proj_o2_field(float3 p)
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 185.
+// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 174.
 float diamond_proj_o2_offset(float3 p, float h)
 {
-    float _t0 = p.z * 6.28318548;
-    float _t1 = diamond_proj_o2_cos(_t0);
-    float _t2 = 6.28318548 * h;
-    float _t3 = 6.28318548 * p.y;
+    float _t0 = 6.28318548 * h;
+    float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    float _t2 = _t1 * _t1;
+    float _t3 = p.z * 6.28318548;
     float _t4 = diamond_proj_o2_cos(_t3);
-    float _t5 = 6.28318548 * p.x;
+    float _t5 = 6.28318548 * p.y;
     float _t6 = diamond_proj_o2_cos(_t5);
-    float _t7 = _t1 * _t4 * _t6;
-    float _t8 = diamond_proj_o2_sin(_t3);
-    float _t9 = diamond_proj_o2_sin(_t5);
-    float _t10 = _t1 * _t8 * _t9;
-    float _t11 = diamond_proj_o2_sin(_t0);
-    float _t12 = _t11 * _t4 * _t9;
-    float _t13 = _t6 * (_t11 * _t8);
-    float _t14 = _t7 + _t10 - _t12 - _t13;
-    float _t15 = _t2 * _t14;
-    float _t16 = _t7 + _t13 - _t12 - _t10;
-    float _t17 = _t7 + _t12 - _t10 - _t13;
-    float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    float _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    float _t20 = _t15 * _t15 * _t19;
-    bool _t21 = _t20 <= 1.0;
-    float _t22 = (_t21) ? _t20 : 1.0;
-    float _t23 = _t22 * _t22;
-    float _t24 = _t23 * _t23;
-    float _t25 = _t24 * ((2.08744777e-09 - 1.13046204e-11 * _t22) * _t23 + (2.48015876e-05 - 2.75573029e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.0416666679 - 0.00138888892 * _t22) * _t23);
-    float _t26 = sqrt(_t19);
-    float _t27 = _t26 * _t15;
-    float _t28 = ((0.00833333377 - 0.000198412701 * _t22) * _t23 + (1.0 - 0.166666672 * _t22) + _t24 * (_t23 * (1.60577024e-10 - 7.54937183e-13 * _t22) + (2.75573188e-06 - 2.50520991e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
-    float _t29 = _t1 * _t25 + _t11 * _t28;
-    float _t30 = _t2 * _t17;
-    float _t31 = _t30 * _t30 * _t19;
-    bool _t32 = _t31 <= 1.0;
-    float _t33 = (_t32) ? _t31 : 1.0;
-    float _t34 = _t33 * _t33;
-    float _t35 = _t34 * _t34;
-    float _t36 = (2.48015876e-05 - _t33 * 2.75573029e-07 + _t34 * (2.08744777e-09 - _t33 * 1.13046204e-11)) * _t35 + (_t34 * (0.0416666679 - _t33 * 0.00138888892) + (1.0 - _t33 * 0.5));
-    float _t37 = _t26 * _t30;
-    float _t38 = ((_t34 * (1.60577024e-10 - _t33 * 7.54937183e-13) + (2.75573188e-06 - _t33 * 2.50520991e-08)) * _t35 + ((0.00833333377 - _t33 * 0.000198412701) * _t34 + (1.0 - _t33 * 0.166666672))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
-    float _t39 = _t36 * _t8 - _t4 * _t38;
-    float _t40 = _t2 * _t16;
-    float _t41 = _t40 * _t40 * _t19;
-    bool _t42 = _t41 <= 1.0;
-    float _t43 = (_t42) ? _t41 : 1.0;
-    float _t44 = _t43 * _t43;
-    float _t45 = _t44 * _t44;
-    float _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.0416666679 - _t43 * 0.00138888892) + ((2.08744777e-09 - _t43 * 1.13046204e-11) * _t44 + (2.48015876e-05 - _t43 * 2.75573029e-07)) * _t45;
-    float _t47 = _t26 * _t40;
-    float _t48 = ((2.75573188e-06 - _t43 * 2.50520991e-08 + _t44 * (1.60577024e-10 - _t43 * 7.54937183e-13)) * _t45 + (1.0 - _t43 * 0.166666672 + (0.00833333377 - _t43 * 0.000198412701) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
-    float _t49 = _t46 * _t6 + _t48 * _t9;
-    float _t50 = _t46 * _t9 - _t48 * _t6;
-    float _t51 = _t8 * _t38 + _t4 * _t36;
-    float _t52 = _t11 * _t25 - _t1 * _t28;
-    return _t29 * _t39 * _t49 + (_t50 * _t51 * _t29 + _t51 * _t52 * _t49) + _t50 * _t52 * _t39;
+    float _t7 = 6.28318548 * p.x;
+    float _t8 = diamond_proj_o2_cos(_t7);
+    float _t9 = _t4 * _t6 * _t8;
+    float _t10 = diamond_proj_o2_sin(_t3);
+    float _t11 = diamond_proj_o2_sin(_t5);
+    float _t12 = _t8 * (_t10 * _t11);
+    float _t13 = diamond_proj_o2_sin(_t7);
+    float _t14 = _t10 * _t6 * _t13;
+    float _t15 = _t4 * _t11 * _t13;
+    float _t16 = _t9 + _t12 - _t14 - _t15;
+    float _t17 = _t16 * _t16;
+    float _t18 = _t9 + _t15 - _t14 - _t12;
+    float _t19 = _t18 * _t18;
+    float _t20 = _t9 + _t14 - _t15 - _t12;
+    float _t21 = _t20 * _t20;
+    float _t22 = _t19 + _t17 + _t21;
+    float _t23 = (_t22 > 1.17549435e-38) ? 1.0 / _t22 : 0.0;
+    float _t24 = _t2 * _t17 * _t23;
+    float _t25 = _t24 * _t24;
+    float _t26 = _t25 * _t25;
+    float _t27 = (0.0416666679 - 0.00138888892 * _t24) * _t25 + (1.0 - 0.5 * _t24) + _t26 * (2.48015876e-05 - 2.75573029e-07 * _t24 + (2.08744777e-09 - 1.13046204e-11 * _t24) * _t25);
+    float _t28 = _t1 * (sqrt(_t22) * _t23);
+    float _t29 = (_t26 * (2.75573188e-06 - 2.50520991e-08 * _t24 + _t25 * (1.60577024e-10 - 7.54937183e-13 * _t24)) + (1.0 - 0.166666672 * _t24 + _t25 * (0.00833333377 - 0.000198412701 * _t24))) * (_t16 * _t28);
+    float _t30 = _t27 * _t13 - _t29 * _t8;
+    float _t31 = _t2 * _t21 * _t23;
+    float _t32 = _t31 * _t31;
+    float _t33 = _t32 * _t32;
+    float _t34 = _t32 * (0.0416666679 - 0.00138888892 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (_t32 * (2.08744777e-09 - 1.13046204e-11 * _t31) + (2.48015876e-05 - _t31 * 2.75573029e-07));
+    float _t35 = (_t33 * (2.75573188e-06 - 2.50520991e-08 * _t31 + _t32 * (1.60577024e-10 - 7.54937183e-13 * _t31)) + (1.0 - 0.166666672 * _t31 + _t32 * (0.00833333377 - 0.000198412701 * _t31))) * (_t20 * _t28);
+    float _t36 = _t11 * _t34 - _t6 * _t35;
+    float _t37 = _t23 * (_t2 * _t19);
+    float _t38 = _t37 * _t37;
+    float _t39 = _t38 * _t38;
+    float _t40 = 1.0 - _t37 * 0.5 + (0.0416666679 - 0.00138888892 * _t37) * _t38 + _t39 * ((2.08744777e-09 - _t37 * 1.13046204e-11) * _t38 + (2.48015876e-05 - _t37 * 2.75573029e-07));
+    float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10 - 7.54937183e-13 * _t37) * _t38 + (2.75573188e-06 - 2.50520991e-08 * _t37)) + (1.0 - 0.166666672 * _t37 + (0.00833333377 - _t37 * 0.000198412701) * _t38));
+    float _t42 = _t10 * _t40 - _t4 * _t41;
+    float _t43 = _t4 * _t40 + _t10 * _t41;
+    float _t44 = _t11 * _t35 + _t6 * _t34;
+    float _t45 = _t27 * _t8 + _t29 * _t13;
+    return _t30 * (_t36 * _t42) + _t43 * _t30 * _t44 + _t45 * _t42 * _t44 + _t36 * _t45 * _t43;
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 225.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 314.
 float diamond_proj_o2_shell(float3 p, float t)
 {
-    float _t0 = 6.28318548 * (t * 0.5);
-    float _t1 = p.z * 6.28318548;
-    float _t2 = diamond_proj_o2_cos(_t1);
-    float _t3 = 6.28318548 * p.y;
-    float _t4 = diamond_proj_o2_cos(_t3);
-    float _t5 = 6.28318548 * p.x;
-    float _t6 = diamond_proj_o2_cos(_t5);
-    float _t7 = _t2 * _t4 * _t6;
-    float _t8 = diamond_proj_o2_sin(_t1);
-    float _t9 = diamond_proj_o2_sin(_t3);
-    float _t10 = _t6 * (_t8 * _t9);
-    float _t11 = diamond_proj_o2_sin(_t5);
-    float _t12 = _t8 * _t4 * _t11;
-    float _t13 = _t2 * _t9 * _t11;
-    float _t14 = _t7 + _t10 - _t12 - _t13;
-    float _t15 = _t0 * _t14;
-    float _t16 = _t7 + _t13 - _t12 - _t10;
-    float _t17 = _t7 + _t12 - _t13 - _t10;
-    float _t18 = _t16 * _t16 + _t14 * _t14 + _t17 * _t17;
-    float _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    float _t20 = _t15 * _t15 * _t19;
-    bool _t21 = _t20 <= 1.0;
-    float _t22 = (_t21) ? _t20 : 1.0;
-    float _t23 = _t22 * _t22;
-    float _t24 = _t23 * _t23;
-    float _t25 = (2.48015876e-05 - _t22 * 2.75573029e-07 + _t23 * (2.08744777e-09 - _t22 * 1.13046204e-11)) * _t24 + (1.0 - _t22 * 0.5 + _t23 * (0.0416666679 - _t22 * 0.00138888892));
-    float _t26 = _t25 * _t6;
-    float _t27 = 1.0 - _t22 * 0.166666672 + (0.00833333377 - _t22 * 0.000198412701) * _t23 + (2.75573188e-06 - _t22 * 2.50520991e-08 + (1.60577024e-10 - _t22 * 7.54937183e-13) * _t23) * _t24;
-    float _t28 = sqrt(_t19);
-    float _t29 = _t28 * _t15;
-    float _t30 = _t27 * ((_t21) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0)));
-    float _t31 = _t26 + _t30 * _t11;
-    float _t32 = _t17 * _t0;
-    float _t33 = _t32 * _t32 * _t19;
-    bool _t34 = _t33 <= 1.0;
-    float _t35 = (_t34) ? _t33 : 1.0;
-    float _t36 = _t35 * _t35;
-    float _t37 = _t36 * _t36;
-    float _t38 = _t36 * (0.0416666679 - 0.00138888892 * _t35) + (1.0 - _t35 * 0.5) + (2.48015876e-05 - _t35 * 2.75573029e-07 + _t36 * (2.08744777e-09 - 1.13046204e-11 * _t35)) * _t37;
-    float _t39 = _t9 * _t38;
-    float _t40 = _t28 * _t32;
-    float _t41 = _t36 * (0.00833333377 - 0.000198412701 * _t35) + (1.0 - 0.166666672 * _t35) + ((1.60577024e-10 - 7.54937183e-13 * _t35) * _t36 + (2.75573188e-06 - 2.50520991e-08 * _t35)) * _t37;
-    float _t42 = ((_t34) ? _t40 : ((_t40 > 0.0) ? 1.0 : (-1.0))) * _t41;
-    float _t43 = _t39 - _t4 * _t42;
-    float _t44 = _t0 * _t16;
-    float _t45 = _t44 * _t44 * _t19;
-    bool _t46 = _t45 <= 1.0;
-    float _t47 = (_t46) ? _t45 : 1.0;
-    float _t48 = _t47 * _t47;
-    float _t49 = _t48 * _t48;
-    float _t50 = _t49 * (2.48015876e-05 - _t47 * 2.75573029e-07 + _t48 * (2.08744777e-09 - _t47 * 1.13046204e-11)) + (_t48 * (0.0416666679 - _t47 * 0.00138888892) + (1.0 - _t47 * 0.5));
-    float _t51 = _t2 * _t50;
-    float _t52 = _t28 * _t44;
-    float _t53 = _t48 * (0.00833333377 - _t47 * 0.000198412701) + (1.0 - _t47 * 0.166666672) + _t49 * (2.75573188e-06 - _t47 * 2.50520991e-08 + (1.60577024e-10 - _t47 * 7.54937183e-13) * _t48);
-    float _t54 = ((_t46) ? _t52 : ((_t52 > 0.0) ? 1.0 : (-1.0))) * _t53;
-    float _t55 = _t51 + _t8 * _t54;
-    float _t56 = _t25 * _t11;
-    float _t57 = _t56 - _t30 * _t6;
-    float _t58 = _t8 * _t50;
-    float _t59 = _t58 - _t2 * _t54;
-    float _t60 = _t4 * _t38;
-    float _t61 = _t60 + _t9 * _t42;
-    float _t62 = -_t40;
-    float _t63 = ((_t34) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0))) * _t41;
-    float _t64 = _t60 + _t63 * _t9;
-    float _t65 = -_t29;
-    float _t66 = _t27 * ((_t21) ? _t65 : ((_t65 > 0.0) ? 1.0 : (-1.0)));
-    float _t67 = _t26 + _t66 * _t11;
-    float _t68 = -_t52;
-    float _t69 = _t53 * ((_t46) ? _t68 : ((_t68 > 0.0) ? 1.0 : (-1.0)));
-    float _t70 = _t58 - _t2 * _t69;
-    float _t71 = _t39 - _t4 * _t63;
-    float _t72 = _t8 * _t69 + _t51;
-    float _t73 = _t56 - _t66 * _t6;
-    return (_t31 * _t43 * _t55 + _t43 * _t57 * _t59 + _t61 * _t57 * _t55 + _t31 * _t61 * _t59) * (_t64 * _t67 * _t70 + _t71 * _t67 * _t72 + _t64 * _t73 * _t72 + _t71 * _t73 * _t70);
-}
-
-// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 205.
-float3 diamond_proj_o2_normal(float3 p, float h)
-{
-    float _t0 = p.z * 6.28318548;
-    float _t1 = diamond_proj_o2_sin(_t0);
-    float _t2 = 6.28318548 * h;
-    float _t3 = diamond_proj_o2_cos(_t0);
+    float _t0 = 6.28318548 * p.x;
+    float _t1 = diamond_proj_o2_cos(_t0);
+    float _t2 = p.z * 6.28318548;
+    float _t3 = diamond_proj_o2_cos(_t2);
     float _t4 = 6.28318548 * p.y;
     float _t5 = diamond_proj_o2_cos(_t4);
-    float _t6 = 6.28318548 * p.x;
-    float _t7 = diamond_proj_o2_cos(_t6);
-    float _t8 = _t3 * _t5 * _t7;
-    float _t9 = diamond_proj_o2_sin(_t4);
-    float _t10 = diamond_proj_o2_sin(_t6);
-    float _t11 = _t3 * _t9 * _t10;
-    float _t12 = _t1 * _t5 * _t10;
-    float _t13 = _t7 * (_t1 * _t9);
-    float _t14 = _t8 + _t11 - _t12 - _t13;
-    float _t15 = _t2 * _t14;
-    float _t16 = _t8 + _t13 - _t12 - _t11;
-    float _t17 = _t8 + _t12 - _t11 - _t13;
-    float _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    float _t19 = (_t18 > 0.0) ? 1.0 / _t18 : 0.0;
-    float _t20 = _t15 * _t15 * _t19;
-    bool _t21 = _t20 <= 1.0;
-    float _t22 = (_t21) ? _t20 : 1.0;
+    float _t6 = _t3 * _t5 * _t1;
+    float _t7 = diamond_proj_o2_sin(_t4);
+    float _t8 = diamond_proj_o2_sin(_t0);
+    float _t9 = _t3 * _t7 * _t8;
+    float _t10 = diamond_proj_o2_sin(_t2);
+    float _t11 = _t10 * _t5 * _t8;
+    float _t12 = _t1 * (_t10 * _t7);
+    float _t13 = _t6 + _t9 - _t11 - _t12;
+    float _t14 = _t13 * _t13;
+    float _t15 = _t6 + _t12 - _t11 - _t9;
+    float _t16 = _t15 * _t15;
+    float _t17 = _t6 + _t11 - _t9 - _t12;
+    float _t18 = _t17 * _t17;
+    float _t19 = _t14 + _t16 + _t18;
+    float _t20 = (_t19 > 1.17549435e-38) ? 1.0 / _t19 : 0.0;
+    float _t21 = 6.28318548 * (t * 0.5);
+    float _t22 = (_t21 <= 1.0) ? (((-1.0) <= _t21) ? _t21 : (-1.0)) : 1.0;
     float _t23 = _t22 * _t22;
-    float _t24 = _t23 * _t23;
-    float _t25 = _t24 * ((2.08744777e-09 - 1.13046204e-11 * _t22) * _t23 + (2.48015876e-05 - 2.75573029e-07 * _t22)) + (1.0 - _t22 * 0.5 + (0.0416666679 - 0.00138888892 * _t22) * _t23);
-    float _t26 = sqrt(_t19);
-    float _t27 = _t26 * _t15;
-    float _t28 = ((0.00833333377 - 0.000198412701 * _t22) * _t23 + (1.0 - 0.166666672 * _t22) + _t24 * (_t23 * (1.60577024e-10 - 7.54937183e-13 * _t22) + (2.75573188e-06 - 2.50520991e-08 * _t22))) * ((_t21) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0)));
-    float _t29 = _t1 * _t25 - _t3 * _t28;
-    float _t30 = _t2 * _t17;
-    float _t31 = _t30 * _t30 * _t19;
-    bool _t32 = _t31 <= 1.0;
-    float _t33 = (_t32) ? _t31 : 1.0;
+    float _t24 = _t20 * (_t23 * _t16);
+    float _t25 = _t24 * _t24;
+    float _t26 = _t25 * _t25;
+    float _t27 = (2.48015876e-05 - _t24 * 2.75573029e-07 + _t25 * (2.08744777e-09 - 1.13046204e-11 * _t24)) * _t26 + (_t25 * (0.0416666679 - 0.00138888892 * _t24) + (1.0 - _t24 * 0.5));
+    float _t28 = sqrt(_t19) * _t20;
+    float _t29 = _t22 * _t28;
+    float _t30 = ((2.75573188e-06 - 2.50520991e-08 * _t24 + _t25 * (1.60577024e-10 - 7.54937183e-13 * _t24)) * _t26 + ((0.00833333377 - 0.000198412701 * _t24) * _t25 + (1.0 - 0.166666672 * _t24))) * (_t29 * _t15);
+    float _t31 = _t1 * _t27 + _t30 * _t8;
+    float _t32 = _t23 * _t18 * _t20;
+    float _t33 = _t32 * _t32;
     float _t34 = _t33 * _t33;
-    float _t35 = _t34 * _t34;
-    float _t36 = (2.48015876e-05 - _t33 * 2.75573029e-07 + _t34 * (2.08744777e-09 - _t33 * 1.13046204e-11)) * _t35 + (_t34 * (0.0416666679 - _t33 * 0.00138888892) + (1.0 - _t33 * 0.5));
-    float _t37 = _t26 * _t30;
-    float _t38 = ((_t34 * (1.60577024e-10 - _t33 * 7.54937183e-13) + (2.75573188e-06 - _t33 * 2.50520991e-08)) * _t35 + ((0.00833333377 - _t33 * 0.000198412701) * _t34 + (1.0 - _t33 * 0.166666672))) * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0)));
-    float _t39 = _t36 * _t9 - _t5 * _t38;
-    float _t40 = _t2 * _t16;
-    float _t41 = _t40 * _t40 * _t19;
-    bool _t42 = _t41 <= 1.0;
-    float _t43 = (_t42) ? _t41 : 1.0;
-    float _t44 = _t43 * _t43;
-    float _t45 = _t44 * _t44;
-    float _t46 = 1.0 - _t43 * 0.5 + _t44 * (0.0416666679 - _t43 * 0.00138888892) + ((2.08744777e-09 - _t43 * 1.13046204e-11) * _t44 + (2.48015876e-05 - _t43 * 2.75573029e-07)) * _t45;
-    float _t47 = _t26 * _t40;
-    float _t48 = ((2.75573188e-06 - _t43 * 2.50520991e-08 + _t44 * (1.60577024e-10 - _t43 * 7.54937183e-13)) * _t45 + (1.0 - _t43 * 0.166666672 + (0.00833333377 - _t43 * 0.000198412701) * _t44)) * ((_t42) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0)));
-    float _t49 = _t46 * _t7 + _t48 * _t10;
-    float _t50 = _t29 * _t39 * _t49;
-    float _t51 = _t46 * _t10 - _t48 * _t7;
-    float _t52 = _t9 * _t38 + _t5 * _t36;
-    float _t53 = _t29 * (_t51 * _t52);
-    float _t54 = _t3 * _t25 + _t1 * _t28;
-    float _t55 = _t49 * (_t52 * _t54);
-    float _t56 = _t51 * _t54 * _t39;
-    float _t57 = _t50 + _t53 - _t55 - _t56;
-    float _t58 = _t50 + _t56 - _t55 - _t53;
-    float _t59 = _t50 + _t55 - _t53 - _t56;
-    float _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
-    float _t61 = (_t60 > 0.0) ? 1.0 / sqrt(_t60) : 0.0;
-    return float3(_t61 * _t59, -(_t58 * _t61), -(_t61 * _t57));
+    float _t35 = _t34 * (2.48015876e-05 - _t32 * 2.75573029e-07 + (2.08744777e-09 - _t32 * 1.13046204e-11) * _t33) + ((0.0416666679 - 0.00138888892 * _t32) * _t33 + (1.0 - _t32 * 0.5));
+    float _t36 = _t29 * _t17 * (1.0 - 0.166666672 * _t32 + (0.00833333377 - 0.000198412701 * _t32) * _t33 + _t34 * (2.75573188e-06 - 2.50520991e-08 * _t32 + _t33 * (1.60577024e-10 - 7.54937183e-13 * _t32)));
+    float _t37 = _t5 * _t35 + _t7 * _t36;
+    float _t38 = _t23 * _t14 * _t20;
+    float _t39 = _t38 * _t38;
+    float _t40 = _t39 * _t39;
+    float _t41 = 1.0 - _t38 * 0.5 + (0.0416666679 - 0.00138888892 * _t38) * _t39 + (2.48015876e-05 - _t38 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t38) * _t39) * _t40;
+    float _t42 = ((0.00833333377 - 0.000198412701 * _t38) * _t39 + (1.0 - 0.166666672 * _t38) + ((1.60577024e-10 - 7.54937183e-13 * _t38) * _t39 + (2.75573188e-06 - 2.50520991e-08 * _t38)) * _t40) * (_t29 * _t13);
+    float _t43 = _t10 * _t41 - _t3 * _t42;
+    float _t44 = _t8 * _t27 - _t30 * _t1;
+    float _t45 = _t3 * _t41 + _t10 * _t42;
+    float _t46 = _t35 * _t7 - _t5 * _t36;
+    float _t47 = -_t21;
+    float _t48 = (_t47 <= 1.0) ? (((-1.0) <= _t47) ? _t47 : (-1.0)) : 1.0;
+    float _t49 = _t28 * _t48;
+    float _t50 = _t48 * _t48;
+    float _t51 = _t20 * (_t50 * _t16);
+    float _t52 = _t51 * _t51;
+    float _t53 = _t52 * _t52;
+    float _t54 = _t49 * _t15 * ((0.00833333377 - _t51 * 0.000198412701) * _t52 + (1.0 - _t51 * 0.166666672) + _t53 * (2.75573188e-06 - _t51 * 2.50520991e-08 + (1.60577024e-10 - _t51 * 7.54937183e-13) * _t52));
+    float _t55 = ((2.08744777e-09 - _t51 * 1.13046204e-11) * _t52 + (2.48015876e-05 - _t51 * 2.75573029e-07)) * _t53 + (1.0 - _t51 * 0.5 + (0.0416666679 - _t51 * 0.00138888892) * _t52);
+    float _t56 = _t8 * _t54 + _t1 * _t55;
+    float _t57 = _t50 * _t18 * _t20;
+    float _t58 = _t57 * _t57;
+    float _t59 = _t58 * _t58;
+    float _t60 = (1.0 - 0.166666672 * _t57 + (0.00833333377 - 0.000198412701 * _t57) * _t58 + (_t58 * (1.60577024e-10 - 7.54937183e-13 * _t57) + (2.75573188e-06 - 2.50520991e-08 * _t57)) * _t59) * (_t49 * _t17);
+    float _t61 = 1.0 - _t57 * 0.5 + (0.0416666679 - 0.00138888892 * _t57) * _t58 + (_t58 * (2.08744777e-09 - 1.13046204e-11 * _t57) + (2.48015876e-05 - _t57 * 2.75573029e-07)) * _t59;
+    float _t62 = _t7 * _t60 + _t5 * _t61;
+    float _t63 = _t50 * _t14 * _t20;
+    float _t64 = _t63 * _t63;
+    float _t65 = _t64 * _t64;
+    float _t66 = 1.0 - _t63 * 0.5 + (0.0416666679 - _t63 * 0.00138888892) * _t64 + ((2.08744777e-09 - _t63 * 1.13046204e-11) * _t64 + (2.48015876e-05 - _t63 * 2.75573029e-07)) * _t65;
+    float _t67 = _t49 * _t13 * (_t64 * (0.00833333377 - _t63 * 0.000198412701) + (1.0 - _t63 * 0.166666672) + _t65 * (2.75573188e-06 - _t63 * 2.50520991e-08 + _t64 * (1.60577024e-10 - _t63 * 7.54937183e-13)));
+    float _t68 = _t10 * _t66 - _t3 * _t67;
+    float _t69 = _t8 * _t55 - _t1 * _t54;
+    float _t70 = _t3 * _t66 + _t10 * _t67;
+    float _t71 = _t7 * _t61 - _t5 * _t60;
+    return (_t31 * _t37 * _t43 + (_t44 * _t45 * _t37 + (_t44 * _t46 * _t43 + _t46 * _t31 * _t45))) * (_t56 * _t62 * _t68 + _t69 * _t62 * _t70 + _t56 * _t71 * _t70 + _t71 * (_t69 * _t68));
+}
+
+// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 194.
+float3 diamond_proj_o2_normal(float3 p, float h)
+{
+    float _t0 = 6.28318548 * p.y;
+    float _t1 = diamond_proj_o2_sin(_t0);
+    float _t2 = 6.28318548 * h;
+    float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    float _t4 = _t3 * _t3;
+    float _t5 = p.z * 6.28318548;
+    float _t6 = diamond_proj_o2_cos(_t5);
+    float _t7 = diamond_proj_o2_cos(_t0);
+    float _t8 = 6.28318548 * p.x;
+    float _t9 = diamond_proj_o2_cos(_t8);
+    float _t10 = _t6 * _t7 * _t9;
+    float _t11 = diamond_proj_o2_sin(_t5);
+    float _t12 = diamond_proj_o2_sin(_t8);
+    float _t13 = _t11 * _t7 * _t12;
+    float _t14 = _t6 * _t1 * _t12;
+    float _t15 = _t9 * (_t11 * _t1);
+    float _t16 = _t10 + _t13 - _t14 - _t15;
+    float _t17 = _t16 * _t16;
+    float _t18 = _t10 + _t14 - _t13 - _t15;
+    float _t19 = _t18 * _t18;
+    float _t20 = _t10 + _t15 - _t13 - _t14;
+    float _t21 = _t20 * _t20;
+    float _t22 = _t19 + _t21 + _t17;
+    float _t23 = (_t22 > 1.17549435e-38) ? 1.0 / _t22 : 0.0;
+    float _t24 = _t4 * _t17 * _t23;
+    float _t25 = _t24 * _t24;
+    float _t26 = _t25 * _t25;
+    float _t27 = _t25 * (0.0416666679 - 0.00138888892 * _t24) + (1.0 - _t24 * 0.5) + _t26 * (_t25 * (2.08744777e-09 - 1.13046204e-11 * _t24) + (2.48015876e-05 - _t24 * 2.75573029e-07));
+    float _t28 = _t3 * (sqrt(_t22) * _t23);
+    float _t29 = (_t26 * (2.75573188e-06 - 2.50520991e-08 * _t24 + _t25 * (1.60577024e-10 - 7.54937183e-13 * _t24)) + (1.0 - 0.166666672 * _t24 + _t25 * (0.00833333377 - 0.000198412701 * _t24))) * (_t16 * _t28);
+    float _t30 = _t1 * _t27 - _t7 * _t29;
+    float _t31 = _t4 * _t21 * _t23;
+    float _t32 = _t31 * _t31;
+    float _t33 = _t32 * _t32;
+    float _t34 = (0.0416666679 - 0.00138888892 * _t31) * _t32 + (1.0 - 0.5 * _t31) + _t33 * (2.48015876e-05 - 2.75573029e-07 * _t31 + (2.08744777e-09 - 1.13046204e-11 * _t31) * _t32);
+    float _t35 = (_t33 * (2.75573188e-06 - 2.50520991e-08 * _t31 + _t32 * (1.60577024e-10 - 7.54937183e-13 * _t31)) + (1.0 - 0.166666672 * _t31 + _t32 * (0.00833333377 - 0.000198412701 * _t31))) * (_t20 * _t28);
+    float _t36 = _t34 * _t9 + _t35 * _t12;
+    float _t37 = _t23 * (_t4 * _t19);
+    float _t38 = _t37 * _t37;
+    float _t39 = _t38 * _t38;
+    float _t40 = 1.0 - _t37 * 0.5 + (0.0416666679 - 0.00138888892 * _t37) * _t38 + _t39 * ((2.08744777e-09 - _t37 * 1.13046204e-11) * _t38 + (2.48015876e-05 - _t37 * 2.75573029e-07));
+    float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10 - 7.54937183e-13 * _t37) * _t38 + (2.75573188e-06 - 2.50520991e-08 * _t37)) + (1.0 - 0.166666672 * _t37 + (0.00833333377 - _t37 * 0.000198412701) * _t38));
+    float _t42 = _t11 * _t40 - _t6 * _t41;
+    float _t43 = _t30 * _t36 * _t42;
+    float _t44 = _t1 * _t29 + _t7 * _t27;
+    float _t45 = _t34 * _t12 - _t35 * _t9;
+    float _t46 = _t44 * (_t42 * _t45);
+    float _t47 = _t6 * _t40 + _t11 * _t41;
+    float _t48 = _t36 * _t47 * _t44;
+    float _t49 = _t30 * _t47 * _t45;
+    float _t50 = _t43 + _t46 - _t48 - _t49;
+    float _t51 = _t43 + _t48 - _t49 - _t46;
+    float _t52 = _t43 + _t49 - _t48 - _t46;
+    float _t53 = _t50 * _t50 + _t51 * _t51 + _t52 * _t52;
+    float _t54 = (_t53 > 0.0) ? 1.0 / sqrt(_t53) : 0.0;
+    return float3(_t54 * _t51, -(_t54 * _t52), -(_t54 * _t50));
 }
 
 

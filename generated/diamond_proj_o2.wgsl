@@ -39,9 +39,10 @@ safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| wi
     has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
     every function returns a finite value for finite input (do not compile with -ffinite-math-only).
     sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while each component of d = h n stays within 1 (natural units, |h| <= 0.159 cell on a
-    2*pi-periodic surface); larger displacements are clamped to it, which keeps |q_K - p| <= |h| and
-    so the bound above.
+    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
+    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
+    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
+    1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -51,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: WGSL (WebGPU): Dawn (Chrome, Node's webgpu), wgpu/naga (Firefox), WebKit.
 total ops after CSE:
     - field: 20
-    - offset: 185
-    - shell: 225
-    - normal: 205
+    - offset: 174
+    - shell: 314
+    - normal: 194
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":185,"shell":225,"normal":205}} */
+/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o2","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":174,"shell":314,"normal":194}} */
 
 // sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
 // 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
@@ -95,206 +96,190 @@ fn diamond_proj_o2_field(p: vec3<f32>) -> f32 {
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 185.
+// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 174.
 fn diamond_proj_o2_offset(p: vec3<f32>, h: f32) -> f32 {
-    let _t0 = p.z * 6.28318548f;
-    let _t1 = diamond_proj_o2_cos(_t0);
-    let _t2 = 6.28318548f * h;
-    let _t3 = 6.28318548f * p.y;
+    let _t0 = 6.28318548f * h;
+    let _t1 = select(1.0f, (select((-1.0f), _t0, (-1.0f) <= _t0)), _t0 <= 1.0f);
+    let _t2 = _t1 * _t1;
+    let _t3 = p.z * 6.28318548f;
     let _t4 = diamond_proj_o2_cos(_t3);
-    let _t5 = 6.28318548f * p.x;
+    let _t5 = 6.28318548f * p.y;
     let _t6 = diamond_proj_o2_cos(_t5);
-    let _t7 = _t1 * _t4 * _t6;
-    let _t8 = diamond_proj_o2_sin(_t3);
-    let _t9 = diamond_proj_o2_sin(_t5);
-    let _t10 = _t1 * _t8 * _t9;
-    let _t11 = diamond_proj_o2_sin(_t0);
-    let _t12 = _t11 * _t4 * _t9;
-    let _t13 = _t6 * (_t11 * _t8);
-    let _t14 = _t7 + _t10 - _t12 - _t13;
-    let _t15 = _t2 * _t14;
-    let _t16 = _t7 + _t13 - _t12 - _t10;
-    let _t17 = _t7 + _t12 - _t10 - _t13;
-    let _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 0.0f);
-    let _t20 = _t15 * _t15 * _t19;
-    let _t21 = _t20 <= 1.0f;
-    let _t22 = select(1.0f, _t20, _t21);
-    let _t23 = _t22 * _t22;
-    let _t24 = _t23 * _t23;
-    let _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
-    let _t26 = sqrt(_t19);
-    let _t27 = _t26 * _t15;
-    let _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * (select((select((-1.0f), 1.0f, _t27 > 0.0f)), _t27, _t21));
-    let _t29 = _t1 * _t25 + _t11 * _t28;
-    let _t30 = _t2 * _t17;
-    let _t31 = _t30 * _t30 * _t19;
-    let _t32 = _t31 <= 1.0f;
-    let _t33 = select(1.0f, _t31, _t32);
-    let _t34 = _t33 * _t33;
-    let _t35 = _t34 * _t34;
-    let _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
-    let _t37 = _t26 * _t30;
-    let _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * (select((select((-1.0f), 1.0f, _t37 > 0.0f)), _t37, _t32));
-    let _t39 = _t36 * _t8 - _t4 * _t38;
-    let _t40 = _t2 * _t16;
-    let _t41 = _t40 * _t40 * _t19;
-    let _t42 = _t41 <= 1.0f;
-    let _t43 = select(1.0f, _t41, _t42);
-    let _t44 = _t43 * _t43;
-    let _t45 = _t44 * _t44;
-    let _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
-    let _t47 = _t26 * _t40;
-    let _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * (select((select((-1.0f), 1.0f, _t47 > 0.0f)), _t47, _t42));
-    let _t49 = _t46 * _t6 + _t48 * _t9;
-    let _t50 = _t46 * _t9 - _t48 * _t6;
-    let _t51 = _t8 * _t38 + _t4 * _t36;
-    let _t52 = _t11 * _t25 - _t1 * _t28;
-    return _t29 * _t39 * _t49 + (_t50 * _t51 * _t29 + _t51 * _t52 * _t49) + _t50 * _t52 * _t39;
-}
-
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 225.
-fn diamond_proj_o2_shell(p: vec3<f32>, t: f32) -> f32 {
-    let _t0 = 6.28318548f * (t * 0.5f);
-    let _t1 = p.z * 6.28318548f;
-    let _t2 = diamond_proj_o2_cos(_t1);
-    let _t3 = 6.28318548f * p.y;
-    let _t4 = diamond_proj_o2_cos(_t3);
-    let _t5 = 6.28318548f * p.x;
-    let _t6 = diamond_proj_o2_cos(_t5);
-    let _t7 = _t2 * _t4 * _t6;
-    let _t8 = diamond_proj_o2_sin(_t1);
-    let _t9 = diamond_proj_o2_sin(_t3);
-    let _t10 = _t6 * (_t8 * _t9);
+    let _t7 = 6.28318548f * p.x;
+    let _t8 = diamond_proj_o2_cos(_t7);
+    let _t9 = _t4 * _t6 * _t8;
+    let _t10 = diamond_proj_o2_sin(_t3);
     let _t11 = diamond_proj_o2_sin(_t5);
-    let _t12 = _t8 * _t4 * _t11;
-    let _t13 = _t2 * _t9 * _t11;
-    let _t14 = _t7 + _t10 - _t12 - _t13;
-    let _t15 = _t0 * _t14;
-    let _t16 = _t7 + _t13 - _t12 - _t10;
-    let _t17 = _t7 + _t12 - _t13 - _t10;
-    let _t18 = _t16 * _t16 + _t14 * _t14 + _t17 * _t17;
-    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 0.0f);
-    let _t20 = _t15 * _t15 * _t19;
-    let _t21 = _t20 <= 1.0f;
-    let _t22 = select(1.0f, _t20, _t21);
-    let _t23 = _t22 * _t22;
-    let _t24 = _t23 * _t23;
-    let _t25 = (2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - _t22 * 1.13046204e-11f)) * _t24 + (1.0f - _t22 * 0.5f + _t23 * (0.0416666679f - _t22 * 0.00138888892f));
-    let _t26 = _t25 * _t6;
-    let _t27 = 1.0f - _t22 * 0.166666672f + (0.00833333377f - _t22 * 0.000198412701f) * _t23 + (2.75573188e-06f - _t22 * 2.50520991e-08f + (1.60577024e-10f - _t22 * 7.54937183e-13f) * _t23) * _t24;
-    let _t28 = sqrt(_t19);
-    let _t29 = _t28 * _t15;
-    let _t30 = _t27 * (select((select((-1.0f), 1.0f, _t29 > 0.0f)), _t29, _t21));
-    let _t31 = _t26 + _t30 * _t11;
-    let _t32 = _t17 * _t0;
-    let _t33 = _t32 * _t32 * _t19;
-    let _t34 = _t33 <= 1.0f;
-    let _t35 = select(1.0f, _t33, _t34);
-    let _t36 = _t35 * _t35;
-    let _t37 = _t36 * _t36;
-    let _t38 = _t36 * (0.0416666679f - 0.00138888892f * _t35) + (1.0f - _t35 * 0.5f) + (2.48015876e-05f - _t35 * 2.75573029e-07f + _t36 * (2.08744777e-09f - 1.13046204e-11f * _t35)) * _t37;
-    let _t39 = _t9 * _t38;
-    let _t40 = _t28 * _t32;
-    let _t41 = _t36 * (0.00833333377f - 0.000198412701f * _t35) + (1.0f - 0.166666672f * _t35) + ((1.60577024e-10f - 7.54937183e-13f * _t35) * _t36 + (2.75573188e-06f - 2.50520991e-08f * _t35)) * _t37;
-    let _t42 = (select((select((-1.0f), 1.0f, _t40 > 0.0f)), _t40, _t34)) * _t41;
-    let _t43 = _t39 - _t4 * _t42;
-    let _t44 = _t0 * _t16;
-    let _t45 = _t44 * _t44 * _t19;
-    let _t46 = _t45 <= 1.0f;
-    let _t47 = select(1.0f, _t45, _t46);
-    let _t48 = _t47 * _t47;
-    let _t49 = _t48 * _t48;
-    let _t50 = _t49 * (2.48015876e-05f - _t47 * 2.75573029e-07f + _t48 * (2.08744777e-09f - _t47 * 1.13046204e-11f)) + (_t48 * (0.0416666679f - _t47 * 0.00138888892f) + (1.0f - _t47 * 0.5f));
-    let _t51 = _t2 * _t50;
-    let _t52 = _t28 * _t44;
-    let _t53 = _t48 * (0.00833333377f - _t47 * 0.000198412701f) + (1.0f - _t47 * 0.166666672f) + _t49 * (2.75573188e-06f - _t47 * 2.50520991e-08f + (1.60577024e-10f - _t47 * 7.54937183e-13f) * _t48);
-    let _t54 = (select((select((-1.0f), 1.0f, _t52 > 0.0f)), _t52, _t46)) * _t53;
-    let _t55 = _t51 + _t8 * _t54;
-    let _t56 = _t25 * _t11;
-    let _t57 = _t56 - _t30 * _t6;
-    let _t58 = _t8 * _t50;
-    let _t59 = _t58 - _t2 * _t54;
-    let _t60 = _t4 * _t38;
-    let _t61 = _t60 + _t9 * _t42;
-    let _t62 = -_t40;
-    let _t63 = (select((select((-1.0f), 1.0f, _t62 > 0.0f)), _t62, _t34)) * _t41;
-    let _t64 = _t60 + _t63 * _t9;
-    let _t65 = -_t29;
-    let _t66 = _t27 * (select((select((-1.0f), 1.0f, _t65 > 0.0f)), _t65, _t21));
-    let _t67 = _t26 + _t66 * _t11;
-    let _t68 = -_t52;
-    let _t69 = _t53 * (select((select((-1.0f), 1.0f, _t68 > 0.0f)), _t68, _t46));
-    let _t70 = _t58 - _t2 * _t69;
-    let _t71 = _t39 - _t4 * _t63;
-    let _t72 = _t8 * _t69 + _t51;
-    let _t73 = _t56 - _t66 * _t6;
-    return (_t31 * _t43 * _t55 + _t43 * _t57 * _t59 + _t61 * _t57 * _t55 + _t31 * _t61 * _t59) * (_t64 * _t67 * _t70 + _t71 * _t67 * _t72 + _t64 * _t73 * _t72 + _t71 * _t73 * _t70);
+    let _t12 = _t8 * (_t10 * _t11);
+    let _t13 = diamond_proj_o2_sin(_t7);
+    let _t14 = _t10 * _t6 * _t13;
+    let _t15 = _t4 * _t11 * _t13;
+    let _t16 = _t9 + _t12 - _t14 - _t15;
+    let _t17 = _t16 * _t16;
+    let _t18 = _t9 + _t15 - _t14 - _t12;
+    let _t19 = _t18 * _t18;
+    let _t20 = _t9 + _t14 - _t15 - _t12;
+    let _t21 = _t20 * _t20;
+    let _t22 = _t19 + _t17 + _t21;
+    let _t23 = select(0.0f, 1.0f / _t22, _t22 > 1.17549435e-38f);
+    let _t24 = _t2 * _t17 * _t23;
+    let _t25 = _t24 * _t24;
+    let _t26 = _t25 * _t25;
+    let _t27 = (0.0416666679f - 0.00138888892f * _t24) * _t25 + (1.0f - 0.5f * _t24) + _t26 * (2.48015876e-05f - 2.75573029e-07f * _t24 + (2.08744777e-09f - 1.13046204e-11f * _t24) * _t25);
+    let _t28 = _t1 * (sqrt(_t22) * _t23);
+    let _t29 = (_t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * (_t16 * _t28);
+    let _t30 = _t27 * _t13 - _t29 * _t8;
+    let _t31 = _t2 * _t21 * _t23;
+    let _t32 = _t31 * _t31;
+    let _t33 = _t32 * _t32;
+    let _t34 = _t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (_t32 * (2.08744777e-09f - 1.13046204e-11f * _t31) + (2.48015876e-05f - _t31 * 2.75573029e-07f));
+    let _t35 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * (_t20 * _t28);
+    let _t36 = _t11 * _t34 - _t6 * _t35;
+    let _t37 = _t23 * (_t2 * _t19);
+    let _t38 = _t37 * _t37;
+    let _t39 = _t38 * _t38;
+    let _t40 = 1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38 + _t39 * ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f));
+    let _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) + (1.0f - 0.166666672f * _t37 + (0.00833333377f - _t37 * 0.000198412701f) * _t38));
+    let _t42 = _t10 * _t40 - _t4 * _t41;
+    let _t43 = _t4 * _t40 + _t10 * _t41;
+    let _t44 = _t11 * _t35 + _t6 * _t34;
+    let _t45 = _t27 * _t8 + _t29 * _t13;
+    return _t30 * (_t36 * _t42) + _t43 * _t30 * _t44 + _t45 * _t42 * _t44 + _t36 * _t45 * _t43;
 }
 
-// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 205.
-fn diamond_proj_o2_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
-    let _t0 = p.z * 6.28318548f;
-    let _t1 = diamond_proj_o2_sin(_t0);
-    let _t2 = 6.28318548f * h;
-    let _t3 = diamond_proj_o2_cos(_t0);
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 314.
+fn diamond_proj_o2_shell(p: vec3<f32>, t: f32) -> f32 {
+    let _t0 = 6.28318548f * p.x;
+    let _t1 = diamond_proj_o2_cos(_t0);
+    let _t2 = p.z * 6.28318548f;
+    let _t3 = diamond_proj_o2_cos(_t2);
     let _t4 = 6.28318548f * p.y;
     let _t5 = diamond_proj_o2_cos(_t4);
-    let _t6 = 6.28318548f * p.x;
-    let _t7 = diamond_proj_o2_cos(_t6);
-    let _t8 = _t3 * _t5 * _t7;
-    let _t9 = diamond_proj_o2_sin(_t4);
-    let _t10 = diamond_proj_o2_sin(_t6);
-    let _t11 = _t3 * _t9 * _t10;
-    let _t12 = _t1 * _t5 * _t10;
-    let _t13 = _t7 * (_t1 * _t9);
-    let _t14 = _t8 + _t11 - _t12 - _t13;
-    let _t15 = _t2 * _t14;
-    let _t16 = _t8 + _t13 - _t12 - _t11;
-    let _t17 = _t8 + _t12 - _t11 - _t13;
-    let _t18 = _t14 * _t14 + _t16 * _t16 + _t17 * _t17;
-    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 0.0f);
-    let _t20 = _t15 * _t15 * _t19;
-    let _t21 = _t20 <= 1.0f;
-    let _t22 = select(1.0f, _t20, _t21);
+    let _t6 = _t3 * _t5 * _t1;
+    let _t7 = diamond_proj_o2_sin(_t4);
+    let _t8 = diamond_proj_o2_sin(_t0);
+    let _t9 = _t3 * _t7 * _t8;
+    let _t10 = diamond_proj_o2_sin(_t2);
+    let _t11 = _t10 * _t5 * _t8;
+    let _t12 = _t1 * (_t10 * _t7);
+    let _t13 = _t6 + _t9 - _t11 - _t12;
+    let _t14 = _t13 * _t13;
+    let _t15 = _t6 + _t12 - _t11 - _t9;
+    let _t16 = _t15 * _t15;
+    let _t17 = _t6 + _t11 - _t9 - _t12;
+    let _t18 = _t17 * _t17;
+    let _t19 = _t14 + _t16 + _t18;
+    let _t20 = select(0.0f, 1.0f / _t19, _t19 > 1.17549435e-38f);
+    let _t21 = 6.28318548f * (t * 0.5f);
+    let _t22 = select(1.0f, (select((-1.0f), _t21, (-1.0f) <= _t21)), _t21 <= 1.0f);
     let _t23 = _t22 * _t22;
-    let _t24 = _t23 * _t23;
-    let _t25 = _t24 * ((2.08744777e-09f - 1.13046204e-11f * _t22) * _t23 + (2.48015876e-05f - 2.75573029e-07f * _t22)) + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23);
-    let _t26 = sqrt(_t19);
-    let _t27 = _t26 * _t15;
-    let _t28 = ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (_t23 * (1.60577024e-10f - 7.54937183e-13f * _t22) + (2.75573188e-06f - 2.50520991e-08f * _t22))) * (select((select((-1.0f), 1.0f, _t27 > 0.0f)), _t27, _t21));
-    let _t29 = _t1 * _t25 - _t3 * _t28;
-    let _t30 = _t2 * _t17;
-    let _t31 = _t30 * _t30 * _t19;
-    let _t32 = _t31 <= 1.0f;
-    let _t33 = select(1.0f, _t31, _t32);
+    let _t24 = _t20 * (_t23 * _t16);
+    let _t25 = _t24 * _t24;
+    let _t26 = _t25 * _t25;
+    let _t27 = (2.48015876e-05f - _t24 * 2.75573029e-07f + _t25 * (2.08744777e-09f - 1.13046204e-11f * _t24)) * _t26 + (_t25 * (0.0416666679f - 0.00138888892f * _t24) + (1.0f - _t24 * 0.5f));
+    let _t28 = sqrt(_t19) * _t20;
+    let _t29 = _t22 * _t28;
+    let _t30 = ((2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) * _t26 + ((0.00833333377f - 0.000198412701f * _t24) * _t25 + (1.0f - 0.166666672f * _t24))) * (_t29 * _t15);
+    let _t31 = _t1 * _t27 + _t30 * _t8;
+    let _t32 = _t23 * _t18 * _t20;
+    let _t33 = _t32 * _t32;
     let _t34 = _t33 * _t33;
-    let _t35 = _t34 * _t34;
-    let _t36 = (2.48015876e-05f - _t33 * 2.75573029e-07f + _t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f)) * _t35 + (_t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f));
-    let _t37 = _t26 * _t30;
-    let _t38 = ((_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f))) * (select((select((-1.0f), 1.0f, _t37 > 0.0f)), _t37, _t32));
-    let _t39 = _t36 * _t9 - _t5 * _t38;
-    let _t40 = _t2 * _t16;
-    let _t41 = _t40 * _t40 * _t19;
-    let _t42 = _t41 <= 1.0f;
-    let _t43 = select(1.0f, _t41, _t42);
-    let _t44 = _t43 * _t43;
-    let _t45 = _t44 * _t44;
-    let _t46 = 1.0f - _t43 * 0.5f + _t44 * (0.0416666679f - _t43 * 0.00138888892f) + ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45;
-    let _t47 = _t26 * _t40;
-    let _t48 = ((2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f)) * _t45 + (1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44)) * (select((select((-1.0f), 1.0f, _t47 > 0.0f)), _t47, _t42));
-    let _t49 = _t46 * _t7 + _t48 * _t10;
-    let _t50 = _t29 * _t39 * _t49;
-    let _t51 = _t46 * _t10 - _t48 * _t7;
-    let _t52 = _t9 * _t38 + _t5 * _t36;
-    let _t53 = _t29 * (_t51 * _t52);
-    let _t54 = _t3 * _t25 + _t1 * _t28;
-    let _t55 = _t49 * (_t52 * _t54);
-    let _t56 = _t51 * _t54 * _t39;
-    let _t57 = _t50 + _t53 - _t55 - _t56;
-    let _t58 = _t50 + _t56 - _t55 - _t53;
-    let _t59 = _t50 + _t55 - _t53 - _t56;
-    let _t60 = _t57 * _t57 + _t58 * _t58 + _t59 * _t59;
-    let _t61 = select(0.0f, 1.0f / sqrt(_t60), _t60 > 0.0f);
-    return vec3<f32>(_t61 * _t59, -(_t58 * _t61), -(_t61 * _t57));
+    let _t35 = _t34 * (2.48015876e-05f - _t32 * 2.75573029e-07f + (2.08744777e-09f - _t32 * 1.13046204e-11f) * _t33) + ((0.0416666679f - 0.00138888892f * _t32) * _t33 + (1.0f - _t32 * 0.5f));
+    let _t36 = _t29 * _t17 * (1.0f - 0.166666672f * _t32 + (0.00833333377f - 0.000198412701f * _t32) * _t33 + _t34 * (2.75573188e-06f - 2.50520991e-08f * _t32 + _t33 * (1.60577024e-10f - 7.54937183e-13f * _t32)));
+    let _t37 = _t5 * _t35 + _t7 * _t36;
+    let _t38 = _t23 * _t14 * _t20;
+    let _t39 = _t38 * _t38;
+    let _t40 = _t39 * _t39;
+    let _t41 = 1.0f - _t38 * 0.5f + (0.0416666679f - 0.00138888892f * _t38) * _t39 + (2.48015876e-05f - _t38 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t38) * _t39) * _t40;
+    let _t42 = ((0.00833333377f - 0.000198412701f * _t38) * _t39 + (1.0f - 0.166666672f * _t38) + ((1.60577024e-10f - 7.54937183e-13f * _t38) * _t39 + (2.75573188e-06f - 2.50520991e-08f * _t38)) * _t40) * (_t29 * _t13);
+    let _t43 = _t10 * _t41 - _t3 * _t42;
+    let _t44 = _t8 * _t27 - _t30 * _t1;
+    let _t45 = _t3 * _t41 + _t10 * _t42;
+    let _t46 = _t35 * _t7 - _t5 * _t36;
+    let _t47 = -_t21;
+    let _t48 = select(1.0f, (select((-1.0f), _t47, (-1.0f) <= _t47)), _t47 <= 1.0f);
+    let _t49 = _t28 * _t48;
+    let _t50 = _t48 * _t48;
+    let _t51 = _t20 * (_t50 * _t16);
+    let _t52 = _t51 * _t51;
+    let _t53 = _t52 * _t52;
+    let _t54 = _t49 * _t15 * ((0.00833333377f - _t51 * 0.000198412701f) * _t52 + (1.0f - _t51 * 0.166666672f) + _t53 * (2.75573188e-06f - _t51 * 2.50520991e-08f + (1.60577024e-10f - _t51 * 7.54937183e-13f) * _t52));
+    let _t55 = ((2.08744777e-09f - _t51 * 1.13046204e-11f) * _t52 + (2.48015876e-05f - _t51 * 2.75573029e-07f)) * _t53 + (1.0f - _t51 * 0.5f + (0.0416666679f - _t51 * 0.00138888892f) * _t52);
+    let _t56 = _t8 * _t54 + _t1 * _t55;
+    let _t57 = _t50 * _t18 * _t20;
+    let _t58 = _t57 * _t57;
+    let _t59 = _t58 * _t58;
+    let _t60 = (1.0f - 0.166666672f * _t57 + (0.00833333377f - 0.000198412701f * _t57) * _t58 + (_t58 * (1.60577024e-10f - 7.54937183e-13f * _t57) + (2.75573188e-06f - 2.50520991e-08f * _t57)) * _t59) * (_t49 * _t17);
+    let _t61 = 1.0f - _t57 * 0.5f + (0.0416666679f - 0.00138888892f * _t57) * _t58 + (_t58 * (2.08744777e-09f - 1.13046204e-11f * _t57) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59;
+    let _t62 = _t7 * _t60 + _t5 * _t61;
+    let _t63 = _t50 * _t14 * _t20;
+    let _t64 = _t63 * _t63;
+    let _t65 = _t64 * _t64;
+    let _t66 = 1.0f - _t63 * 0.5f + (0.0416666679f - _t63 * 0.00138888892f) * _t64 + ((2.08744777e-09f - _t63 * 1.13046204e-11f) * _t64 + (2.48015876e-05f - _t63 * 2.75573029e-07f)) * _t65;
+    let _t67 = _t49 * _t13 * (_t64 * (0.00833333377f - _t63 * 0.000198412701f) + (1.0f - _t63 * 0.166666672f) + _t65 * (2.75573188e-06f - _t63 * 2.50520991e-08f + _t64 * (1.60577024e-10f - _t63 * 7.54937183e-13f)));
+    let _t68 = _t10 * _t66 - _t3 * _t67;
+    let _t69 = _t8 * _t55 - _t1 * _t54;
+    let _t70 = _t3 * _t66 + _t10 * _t67;
+    let _t71 = _t7 * _t61 - _t5 * _t60;
+    return (_t31 * _t37 * _t43 + (_t44 * _t45 * _t37 + (_t44 * _t46 * _t43 + _t46 * _t31 * _t45))) * (_t56 * _t62 * _t68 + _t69 * _t62 * _t70 + _t56 * _t71 * _t70 + _t71 * (_t69 * _t68));
+}
+
+// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 194.
+fn diamond_proj_o2_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
+    let _t0 = 6.28318548f * p.y;
+    let _t1 = diamond_proj_o2_sin(_t0);
+    let _t2 = 6.28318548f * h;
+    let _t3 = select(1.0f, (select((-1.0f), _t2, (-1.0f) <= _t2)), _t2 <= 1.0f);
+    let _t4 = _t3 * _t3;
+    let _t5 = p.z * 6.28318548f;
+    let _t6 = diamond_proj_o2_cos(_t5);
+    let _t7 = diamond_proj_o2_cos(_t0);
+    let _t8 = 6.28318548f * p.x;
+    let _t9 = diamond_proj_o2_cos(_t8);
+    let _t10 = _t6 * _t7 * _t9;
+    let _t11 = diamond_proj_o2_sin(_t5);
+    let _t12 = diamond_proj_o2_sin(_t8);
+    let _t13 = _t11 * _t7 * _t12;
+    let _t14 = _t6 * _t1 * _t12;
+    let _t15 = _t9 * (_t11 * _t1);
+    let _t16 = _t10 + _t13 - _t14 - _t15;
+    let _t17 = _t16 * _t16;
+    let _t18 = _t10 + _t14 - _t13 - _t15;
+    let _t19 = _t18 * _t18;
+    let _t20 = _t10 + _t15 - _t13 - _t14;
+    let _t21 = _t20 * _t20;
+    let _t22 = _t19 + _t21 + _t17;
+    let _t23 = select(0.0f, 1.0f / _t22, _t22 > 1.17549435e-38f);
+    let _t24 = _t4 * _t17 * _t23;
+    let _t25 = _t24 * _t24;
+    let _t26 = _t25 * _t25;
+    let _t27 = _t25 * (0.0416666679f - 0.00138888892f * _t24) + (1.0f - _t24 * 0.5f) + _t26 * (_t25 * (2.08744777e-09f - 1.13046204e-11f * _t24) + (2.48015876e-05f - _t24 * 2.75573029e-07f));
+    let _t28 = _t3 * (sqrt(_t22) * _t23);
+    let _t29 = (_t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * (_t16 * _t28);
+    let _t30 = _t1 * _t27 - _t7 * _t29;
+    let _t31 = _t4 * _t21 * _t23;
+    let _t32 = _t31 * _t31;
+    let _t33 = _t32 * _t32;
+    let _t34 = (0.0416666679f - 0.00138888892f * _t31) * _t32 + (1.0f - 0.5f * _t31) + _t33 * (2.48015876e-05f - 2.75573029e-07f * _t31 + (2.08744777e-09f - 1.13046204e-11f * _t31) * _t32);
+    let _t35 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * (_t20 * _t28);
+    let _t36 = _t34 * _t9 + _t35 * _t12;
+    let _t37 = _t23 * (_t4 * _t19);
+    let _t38 = _t37 * _t37;
+    let _t39 = _t38 * _t38;
+    let _t40 = 1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38 + _t39 * ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f));
+    let _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) + (1.0f - 0.166666672f * _t37 + (0.00833333377f - _t37 * 0.000198412701f) * _t38));
+    let _t42 = _t11 * _t40 - _t6 * _t41;
+    let _t43 = _t30 * _t36 * _t42;
+    let _t44 = _t1 * _t29 + _t7 * _t27;
+    let _t45 = _t34 * _t12 - _t35 * _t9;
+    let _t46 = _t44 * (_t42 * _t45);
+    let _t47 = _t6 * _t40 + _t11 * _t41;
+    let _t48 = _t36 * _t47 * _t44;
+    let _t49 = _t30 * _t47 * _t45;
+    let _t50 = _t43 + _t46 - _t48 - _t49;
+    let _t51 = _t43 + _t48 - _t49 - _t46;
+    let _t52 = _t43 + _t49 - _t48 - _t46;
+    let _t53 = _t50 * _t50 + _t51 * _t51 + _t52 * _t52;
+    let _t54 = select(0.0f, 1.0f / sqrt(_t53), _t53 > 0.0f);
+    return vec3<f32>(_t54 * _t51, -(_t54 * _t52), -(_t54 * _t50));
 }

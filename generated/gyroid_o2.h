@@ -63,10 +63,17 @@
 #else
 #define OFFSETGEN_TRIG_INT_(x) ((int)(x))
 #endif
+/* Adding and subtracting 1.5 * 2^52 rounds to an integer only under IEEE evaluation in double. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUND_(v) rint(v)
+#else
+#define OFFSETGEN_TRIG_ROUND_(v) (((v) + 6755399441055744.0) - 6755399441055744.0)
+#endif
 /* sin and cos for the scalar functions, inline: libm's sin and cos cost more than the rest of a
  * low-order offset. The same reduction and polynomials as the batch helpers (within 1.5 ulp of
- * libm), so the scalar and batch functions agree to the last bits; the quadrant comes from an int
- * conversion, so plain -O2 needs no rint call. Arguments beyond 1.0e8 radians go to libm.
+ * libm), so the scalar and batch functions agree to the last bits. a * 2/pi is rounded by adding
+ * and subtracting 1.5 * 2^52 (no rint call at plain -O2, and a shorter dependency chain than an int
+ * conversion, which only picks the quadrant here). Arguments beyond 1.0e8 radians go to libm.
  * A sin and a cos of the same argument share the reduction and both polynomials after inlining.
  * Define OFFSETGEN_LIBM_TRIG before including this header to call libm's sin and cos instead. */
 static inline double offsetgen_sin(double a)
@@ -74,9 +81,8 @@ static inline double offsetgen_sin(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return sin(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -91,9 +97,8 @@ static inline double offsetgen_cos(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cos(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -103,6 +108,7 @@ static inline double offsetgen_cos(double a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INT_
+#undef OFFSETGEN_TRIG_ROUND_
 #endif /* OFFSETGEN_SCALAR_TRIG_DOUBLE_V1 */
 
 /* F, the field; the surface is F = 0.
@@ -290,22 +296,25 @@ static inline void gyroid_o2_normal(double x, double y, double z, double h, doub
 #define OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #ifdef __cplusplus
 #define OFFSETGEN_TRIG_INTF_(x) static_cast<int>(x)
-#define OFFSETGEN_TRIG_FLOAT_(x) static_cast<float>(x)
 #else
 #define OFFSETGEN_TRIG_INTF_(x) ((int)(x))
-#define OFFSETGEN_TRIG_FLOAT_(x) ((float)(x))
+#endif
+/* Adding and subtracting 1.5 * 2^23 rounds to an integer only under IEEE evaluation in float. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUNDF_(v) rintf(v)
+#else
+#define OFFSETGEN_TRIG_ROUNDF_(v) (((v) + 12582912.0f) - 12582912.0f)
 #endif
 /* Float sin and cos for the scalar functions: the batch helpers' reduction and Cephes polynomials,
- * with an int-conversion quadrant; sinf/cosf beyond 8192.0 radians, or everywhere with
+ * with the quadrant rounded as in the double helpers; sinf/cosf beyond 8192.0 radians, or everywhere with
  * OFFSETGEN_LIBM_TRIG defined. */
 static inline float offsetgen_sinf(float a)
 {
 #ifdef OFFSETGEN_LIBM_TRIG
     return sinf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -320,9 +329,8 @@ static inline float offsetgen_cosf(float a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cosf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -332,7 +340,7 @@ static inline float offsetgen_cosf(float a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INTF_
-#undef OFFSETGEN_TRIG_FLOAT_
+#undef OFFSETGEN_TRIG_ROUNDF_
 #endif /* OFFSETGEN_SCALAR_TRIG_FLOAT_V1 */
 /* F, the field; the surface is F = 0.
  * Total ops: 14

@@ -45,9 +45,10 @@
  *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
  *   0, so every function returns a finite value for finite input (do not compile with
  *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
- *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
- *   keeps |q_K - p| <= |h| and so the bound above.
+ *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
+ *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
+ *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
+ *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -56,11 +57,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    14
- *   offset   173
- *   shell    205
- *   normal   191
+ *   offset   160
+ *   shell    294
+ *   normal   178
  */
-/* offsetgen-metadata {"format":1,"language":"cuda","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":173,"shell":205,"normal":191}} */
+/* offsetgen-metadata {"format":1,"language":"cuda","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":160,"shell":294,"normal":178}} */
 #ifndef OFFSETGEN_GYROID_PROJ_O2_CUH
 #define OFFSETGEN_GYROID_PROJ_O2_CUH
 
@@ -103,202 +104,186 @@ __host__ __device__ inline double gyroid_proj_o2_field(double x, double y, doubl
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 173
+ * Total ops: 160
  */
 __host__ __device__ inline double gyroid_proj_o2_offset(double x, double y, double z, double h)
 {
-    const double _t0 = z * 6.2831853071795862;
+    const double _t0 = 6.2831853071795862 * h;
+    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    const double _t2 = _t1 * _t1;
+    const double _t3 = z * 6.2831853071795862;
     double _s0, _c0;
-    sincos(_t0, &_s0, &_c0);
-    const double _t1 = _s0;
-    const double _t2 = _c0;
-    const double _t3 = 6.2831853071795862 * x;
-    double _s2, _c2;
-    sincos(_t3, &_s2, &_c2);
-    const double _t4 = _c2;
-    const double _t5 = 6.2831853071795862 * y;
+    sincos(_t3, &_s0, &_c0);
+    const double _t4 = _s0;
+    const double _t5 = 6.2831853071795862 * x;
     double _s1, _c1;
     sincos(_t5, &_s1, &_c1);
     const double _t6 = _s1;
-    const double _t7 = _t2 * _t4 - _t1 * _t6;
-    const double _t8 = _s2;
+    const double _t7 = 6.2831853071795862 * y;
+    double _s2, _c2;
+    sincos(_t7, &_s2, &_c2);
+    const double _t8 = _c2;
     const double _t9 = _c1;
-    const double _t10 = _t6 * _t8 - _t2 * _t9;
-    const double _t11 = _t1 * _t8 - _t9 * _t4;
-    const double _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
-    const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    const double _t14 = 6.2831853071795862 * h;
-    const double _t15 = _t7 * _t14;
-    const double _t16 = _t13 * (_t15 * _t15);
-    const bool _t17 = _t16 <= 1.0;
-    const double _t18 = (_t17) ? _t16 : 1.0;
-    const double _t19 = _t18 * _t18;
-    const double _t20 = _t19 * _t19;
-    const double _t21 = _t20 * (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t18 * 1.1304620460700782e-11) * _t19) + (1.0 - _t18 * 0.5 + _t19 * (0.041666666666666102 - _t18 * 0.0013888888888798428));
-    const double _t22 = sqrt(_t13);
-    const double _t23 = _t15 * _t22;
-    const double _t24 = (_t20 * ((1.6057701922579786e-10 - _t18 * 7.549371704181243e-13) * _t19 + (2.755731919201122e-06 - _t18 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t18 * 0.00019841269841216566) * _t19 + (1.0 - _t18 * 0.16666666666666666))) * ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0)));
-    const double _t25 = _t14 * _t11;
-    const double _t26 = _t13 * (_t25 * _t25);
-    const bool _t27 = _t26 <= 1.0;
-    const double _t28 = -(_t25 * _t22);
-    const double _t29 = (_t27) ? _t26 : 1.0;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = _t30 * _t30;
-    const double _t32 = ((_t27) ? _t28 : ((_t28 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t29 * 0.16666666666666666 + _t30 * (0.0083333333333333003 - _t29 * 0.00019841269841216566) + _t31 * (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13)));
-    const double _t33 = _t30 * (0.041666666666666102 - _t29 * 0.0013888888888798428) + (1.0 - _t29 * 0.5) + _t31 * (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07 + _t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11));
-    const double _t34 = _t14 * _t10;
-    const double _t35 = _t13 * (_t34 * _t34);
-    const bool _t36 = _t35 <= 1.0;
-    const double _t37 = (_t36) ? _t35 : 1.0;
-    const double _t38 = _t37 * _t37;
-    const double _t39 = _t38 * _t38;
-    const double _t40 = -(_t34 * _t22);
-    const double _t41 = (_t38 * (0.0083333333333333003 - _t37 * 0.00019841269841216566) + (1.0 - _t37 * 0.16666666666666666) + (2.755731919201122e-06 - _t37 * 2.5052099244914114e-08 + _t38 * (1.6057701922579786e-10 - _t37 * 7.549371704181243e-13)) * _t39) * ((_t36) ? _t40 : ((_t40 > 0.0) ? 1.0 : (-1.0)));
-    const double _t42 = _t38 * (0.041666666666666102 - _t37 * 0.0013888888888798428) + (1.0 - _t37 * 0.5) + ((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07)) * _t39;
-    return (_t1 * _t21 - _t2 * _t24) * (_t32 * _t8 + _t33 * _t4) + (_t33 * _t8 - _t32 * _t4) * (_t41 * _t6 + _t9 * _t42) + (_t6 * _t42 - _t41 * _t9) * (_t2 * _t21 + _t1 * _t24);
+    const double _t10 = _t4 * _t6 - _t8 * _t9;
+    const double _t11 = _t10 * _t10;
+    const double _t12 = _c0;
+    const double _t13 = _s2;
+    const double _t14 = _t12 * _t9 - _t4 * _t13;
+    const double _t15 = _t14 * _t14;
+    const double _t16 = _t13 * _t6 - _t12 * _t8;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t15 + _t17 + _t11;
+    const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
+    const double _t20 = _t2 * _t11 * _t19;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07 + _t21 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t20)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.041666666666666102 - 0.0013888888888798428 * _t20));
+    const double _t24 = _t1 * (sqrt(_t18) * _t19);
+    const double _t25 = ((_t21 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t20)) * _t22 + (1.0 - 0.16666666666666666 * _t20 + _t21 * (0.0083333333333333003 - 0.00019841269841216566 * _t20))) * (_t24 * _t10);
+    const double _t26 = _t15 * _t2 * _t19;
+    const double _t27 = _t26 * _t26;
+    const double _t28 = _t27 * _t27;
+    const double _t29 = (_t27 * (2.0874477943664777e-09 - _t26 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t26 * 2.7557303701922228e-07)) * _t28 + ((0.041666666666666102 - 0.0013888888888798428 * _t26) * _t27 + (1.0 - _t26 * 0.5));
+    const double _t30 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t26 + _t27 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t26)) * _t28 + (_t27 * (0.0083333333333333003 - 0.00019841269841216566 * _t26) + (1.0 - 0.16666666666666666 * _t26))) * (_t14 * _t24);
+    const double _t31 = _t2 * _t17 * _t19;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t33 * (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11) * _t32) + ((0.041666666666666102 - _t31 * 0.0013888888888798428) * _t32 + (1.0 - _t31 * 0.5));
+    const double _t35 = _t16 * _t24 * (1.0 - _t31 * 0.16666666666666666 + (0.0083333333333333003 - _t31 * 0.00019841269841216566) * _t32 + _t33 * (2.755731919201122e-06 - _t31 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t31 * 7.549371704181243e-13) * _t32));
+    return (_t23 * _t9 - _t25 * _t6) * (_t4 * _t29 - _t12 * _t30) + ((_t23 * _t6 + _t25 * _t9) * (_t8 * _t34 - _t35 * _t13) + (_t35 * _t8 + _t13 * _t34) * (_t4 * _t30 + _t12 * _t29));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 205
+ * Total ops: 294
  */
 __host__ __device__ inline double gyroid_proj_o2_shell(double x, double y, double z, double t)
-{
-    const double _t0 = 6.2831853071795862 * y;
-    double _s0, _c0;
-    sincos(_t0, &_s0, &_c0);
-    const double _t1 = _s0;
-    const double _t2 = 6.2831853071795862 * x;
-    double _s1, _c1;
-    sincos(_t2, &_s1, &_c1);
-    const double _t3 = _s1;
-    const double _t4 = z * 6.2831853071795862;
-    double _s2, _c2;
-    sincos(_t4, &_s2, &_c2);
-    const double _t5 = _c2;
-    const double _t6 = _c0;
-    const double _t7 = _t1 * _t3 - _t5 * _t6;
-    const double _t8 = 6.2831853071795862 * (t * 0.5);
-    const double _t9 = _t7 * _t8;
-    const double _t10 = _c1;
-    const double _t11 = _s2;
-    const double _t12 = _t5 * _t10 - _t11 * _t1;
-    const double _t13 = _t11 * _t3 - _t6 * _t10;
-    const double _t14 = _t12 * _t12 + _t7 * _t7 + _t13 * _t13;
-    const double _t15 = (_t14 > 0.0) ? 1.0 / _t14 : 0.0;
-    const double _t16 = _t9 * _t9 * _t15;
-    const bool _t17 = _t16 <= 1.0;
-    const double _t18 = (_t17) ? _t16 : 1.0;
-    const double _t19 = _t18 * _t18;
-    const double _t20 = _t19 * _t19;
-    const double _t21 = _t20 * (2.755731919201122e-06 - _t18 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t18 * 7.549371704181243e-13) * _t19) + (_t19 * (0.0083333333333333003 - _t18 * 0.00019841269841216566) + (1.0 - _t18 * 0.16666666666666666));
-    const double _t22 = sqrt(_t15);
-    const double _t23 = _t9 * _t22;
-    const double _t24 = _t21 * ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0)));
-    const double _t25 = _t20 * (_t19 * (2.0874477943664777e-09 - _t18 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07)) + (_t19 * (0.041666666666666102 - _t18 * 0.0013888888888798428) + (1.0 - _t18 * 0.5));
-    const double _t26 = _t6 * _t25;
-    const double _t27 = _t8 * _t13;
-    const double _t28 = _t15 * (_t27 * _t27);
-    const bool _t29 = _t28 <= 1.0;
-    const double _t30 = (_t29) ? _t28 : 1.0;
-    const double _t31 = _t30 * _t30;
-    const double _t32 = _t31 * _t31;
-    const double _t33 = _t32 * ((2.0874477943664777e-09 - _t30 * 1.1304620460700782e-11) * _t31 + (2.4801587247292686e-05 - _t30 * 2.7557303701922228e-07)) + ((0.041666666666666102 - _t30 * 0.0013888888888798428) * _t31 + (1.0 - _t30 * 0.5));
-    const double _t34 = _t33 * _t3;
-    const double _t35 = _t22 * _t27;
-    const double _t36 = 1.0 - _t30 * 0.16666666666666666 + (0.0083333333333333003 - _t30 * 0.00019841269841216566) * _t31 + (_t31 * (1.6057701922579786e-10 - _t30 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t30 * 2.5052099244914114e-08)) * _t32;
-    const double _t37 = ((_t29) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * _t36;
-    const double _t38 = _t33 * _t10;
-    const double _t39 = _t12 * _t8;
-    const double _t40 = _t15 * (_t39 * _t39);
-    const bool _t41 = _t40 <= 1.0;
-    const double _t42 = (_t41) ? _t40 : 1.0;
-    const double _t43 = _t42 * _t42;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = 1.0 - _t42 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43 + _t44 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t42) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07));
-    const double _t46 = _t45 * _t11;
-    const double _t47 = _t22 * _t39;
-    const double _t48 = -_t47;
-    const double _t49 = ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42)) * _t44 + ((0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + (1.0 - 0.16666666666666666 * _t42));
-    const double _t50 = ((_t41) ? _t48 : ((_t48 > 0.0) ? 1.0 : (-1.0))) * _t49;
-    const double _t51 = _t45 * _t5;
-    const double _t52 = _t1 * _t25;
-    const double _t53 = ((_t41) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0))) * _t49;
-    const double _t54 = -_t23;
-    const double _t55 = _t21 * ((_t17) ? _t54 : ((_t54 > 0.0) ? 1.0 : (-1.0)));
-    const double _t56 = -_t35;
-    const double _t57 = ((_t29) ? _t56 : ((_t56 > 0.0) ? 1.0 : (-1.0))) * _t36;
-    return ((_t24 * _t1 + _t26) * (_t34 - _t37 * _t10) + ((_t38 + _t37 * _t3) * (_t46 - _t5 * _t50) + (_t51 + _t11 * _t50) * (_t52 - _t6 * _t24))) * ((_t51 + _t11 * _t53) * (_t52 - _t6 * _t55) + ((_t34 - _t57 * _t10) * (_t26 + _t1 * _t55) + (_t46 - _t5 * _t53) * (_t38 + _t57 * _t3)));
-}
-
-/* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 191
- */
-__host__ __device__ inline void gyroid_proj_o2_normal(double x, double y, double z, double h, double n[3])
 {
     const double _t0 = z * 6.2831853071795862;
     double _s0, _c0;
     sincos(_t0, &_s0, &_c0);
-    const double _t1 = _c0;
-    const double _t2 = 6.2831853071795862 * x;
+    const double _t1 = _s0;
+    const double _t2 = 6.2831853071795862 * (t * 0.5);
+    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    const double _t4 = _t3 * _t3;
+    const double _t5 = _c0;
+    const double _t6 = 6.2831853071795862 * x;
     double _s2, _c2;
-    sincos(_t2, &_s2, &_c2);
-    const double _t3 = _c2;
+    sincos(_t6, &_s2, &_c2);
+    const double _t7 = _c2;
+    const double _t8 = 6.2831853071795862 * y;
+    double _s1, _c1;
+    sincos(_t8, &_s1, &_c1);
+    const double _t9 = _s1;
+    const double _t10 = _t5 * _t7 - _t1 * _t9;
+    const double _t11 = _t10 * _t10;
+    const double _t12 = _s2;
+    const double _t13 = _c1;
+    const double _t14 = _t9 * _t12 - _t5 * _t13;
+    const double _t15 = _t14 * _t14;
+    const double _t16 = _t1 * _t12 - _t13 * _t7;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t11 + _t15 + _t17;
+    const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
+    const double _t20 = _t4 * _t11 * _t19;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = sqrt(_t18) * _t19;
+    const double _t24 = _t3 * _t23;
+    const double _t25 = (_t22 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t20 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) * _t21) + (1.0 - 0.16666666666666666 * _t20 + (0.0083333333333333003 - 0.00019841269841216566 * _t20) * _t21)) * (_t10 * _t24);
+    const double _t26 = 1.0 - _t20 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t20) * _t21 + _t22 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t20) * _t21 + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07));
+    const double _t27 = _t4 * _t15 * _t19;
+    const double _t28 = _t27 * _t27;
+    const double _t29 = _t28 * _t28;
+    const double _t30 = 1.0 - _t27 * 0.5 + _t28 * (0.041666666666666102 - _t27 * 0.0013888888888798428) + _t29 * (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07 + _t28 * (2.0874477943664777e-09 - _t27 * 1.1304620460700782e-11));
+    const double _t31 = (1.0 - _t27 * 0.16666666666666666 + _t28 * (0.0083333333333333003 - _t27 * 0.00019841269841216566) + (2.755731919201122e-06 - _t27 * 2.5052099244914114e-08 + _t28 * (1.6057701922579786e-10 - _t27 * 7.549371704181243e-13)) * _t29) * (_t14 * _t24);
+    const double _t32 = _t4 * _t17 * _t19;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t33 * _t33;
+    const double _t35 = _t34 * ((2.0874477943664777e-09 - _t32 * 1.1304620460700782e-11) * _t33 + (2.4801587247292686e-05 - _t32 * 2.7557303701922228e-07)) + ((0.041666666666666102 - _t32 * 0.0013888888888798428) * _t33 + (1.0 - _t32 * 0.5));
+    const double _t36 = ((0.0083333333333333003 - _t32 * 0.00019841269841216566) * _t33 + (1.0 - _t32 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t32 * 7.549371704181243e-13) * _t33 + (2.755731919201122e-06 - _t32 * 2.5052099244914114e-08)) * _t34) * (_t24 * _t16);
+    const double _t37 = -_t2;
+    const double _t38 = (_t37 <= 1.0) ? (((-1.0) <= _t37) ? _t37 : (-1.0)) : 1.0;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = _t39 * _t11 * _t19;
+    const double _t41 = _t40 * _t40;
+    const double _t42 = _t41 * _t41;
+    const double _t43 = _t42 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t40 + _t41 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t40)) + (_t41 * (0.041666666666666102 - 0.0013888888888798428 * _t40) + (1.0 - 0.5 * _t40));
+    const double _t44 = _t23 * _t38;
+    const double _t45 = (1.0 - 0.16666666666666666 * _t40 + _t41 * (0.0083333333333333003 - 0.00019841269841216566 * _t40) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t40 + _t41 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t40)) * _t42) * (_t10 * _t44);
+    const double _t46 = _t39 * _t15 * _t19;
+    const double _t47 = _t46 * _t46;
+    const double _t48 = _t47 * _t47;
+    const double _t49 = _t48 * (_t47 * (2.0874477943664777e-09 - _t46 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t46 * 2.7557303701922228e-07)) + (1.0 - _t46 * 0.5 + _t47 * (0.041666666666666102 - 0.0013888888888798428 * _t46));
+    const double _t50 = (_t47 * (0.0083333333333333003 - _t46 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t46) + (_t47 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t46) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t46)) * _t48) * (_t44 * _t14);
+    const double _t51 = _t39 * _t17 * _t19;
+    const double _t52 = _t51 * _t51;
+    const double _t53 = _t52 * _t52;
+    const double _t54 = _t44 * _t16 * (_t53 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t51 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t51) * _t52) + (_t52 * (0.0083333333333333003 - 0.00019841269841216566 * _t51) + (1.0 - 0.16666666666666666 * _t51)));
+    const double _t55 = (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07 + _t52 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t51)) * _t53 + ((0.041666666666666102 - 0.0013888888888798428 * _t51) * _t52 + (1.0 - _t51 * 0.5));
+    return ((_t1 * _t25 + _t5 * _t26) * (_t9 * _t30 + _t13 * _t31) + (_t1 * _t26 - _t5 * _t25) * (_t35 * _t7 - _t36 * _t12) + (_t13 * _t30 - _t31 * _t9) * (_t35 * _t12 + _t36 * _t7)) * ((_t5 * _t43 + _t1 * _t45) * (_t49 * _t9 + _t13 * _t50) + ((_t13 * _t49 - _t9 * _t50) * (_t54 * _t7 + _t55 * _t12) + (_t55 * _t7 - _t54 * _t12) * (_t1 * _t43 - _t5 * _t45)));
+}
+
+/* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
+ * Total ops: 178
+ */
+__host__ __device__ inline void gyroid_proj_o2_normal(double x, double y, double z, double h, double n[3])
+{
+    const double _t0 = 6.2831853071795862 * h;
+    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    const double _t2 = _t1 * _t1;
+    const double _t3 = z * 6.2831853071795862;
+    double _s0, _c0;
+    sincos(_t3, &_s0, &_c0);
     const double _t4 = _s0;
-    const double _t5 = 6.2831853071795862 * y;
+    const double _t5 = 6.2831853071795862 * x;
     double _s1, _c1;
     sincos(_t5, &_s1, &_c1);
     const double _t6 = _s1;
-    const double _t7 = _t1 * _t3 - _t4 * _t6;
-    const double _t8 = _s2;
+    const double _t7 = 6.2831853071795862 * y;
+    double _s2, _c2;
+    sincos(_t7, &_s2, &_c2);
+    const double _t8 = _c2;
     const double _t9 = _c1;
-    const double _t10 = _t6 * _t8 - _t1 * _t9;
-    const double _t11 = _t4 * _t8 - _t9 * _t3;
-    const double _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
-    const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    const double _t14 = 6.2831853071795862 * h;
-    const double _t15 = _t14 * _t11;
-    const double _t16 = _t13 * (_t15 * _t15);
-    const bool _t17 = _t16 <= 1.0;
-    const double _t18 = (_t17) ? _t16 : 1.0;
-    const double _t19 = _t18 * _t18;
-    const double _t20 = _t19 * _t19;
-    const double _t21 = _t19 * (0.041666666666666102 - _t18 * 0.0013888888888798428) + (1.0 - _t18 * 0.5) + _t20 * (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + _t19 * (2.0874477943664777e-09 - _t18 * 1.1304620460700782e-11));
-    const double _t22 = sqrt(_t13);
-    const double _t23 = -(_t15 * _t22);
-    const double _t24 = ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t18 * 0.16666666666666666 + _t19 * (0.0083333333333333003 - _t18 * 0.00019841269841216566) + _t20 * (2.755731919201122e-06 - _t18 * 2.5052099244914114e-08 + _t19 * (1.6057701922579786e-10 - _t18 * 7.549371704181243e-13)));
-    const double _t25 = _t21 * _t8 - _t24 * _t3;
-    const double _t26 = _t14 * _t10;
-    const double _t27 = _t13 * (_t26 * _t26);
-    const bool _t28 = _t27 <= 1.0;
-    const double _t29 = (_t28) ? _t27 : 1.0;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = _t30 * _t30;
-    const double _t32 = _t30 * (0.041666666666666102 - _t29 * 0.0013888888888798428) + (1.0 - _t29 * 0.5) + ((2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) * _t30 + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07)) * _t31;
-    const double _t33 = -(_t26 * _t22);
-    const double _t34 = (_t30 * (0.0083333333333333003 - _t29 * 0.00019841269841216566) + (1.0 - _t29 * 0.16666666666666666) + (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13)) * _t31) * ((_t28) ? _t33 : ((_t33 > 0.0) ? 1.0 : (-1.0)));
-    const double _t35 = _t6 * _t32 - _t34 * _t9;
-    const double _t36 = _t7 * _t14;
-    const double _t37 = _t13 * (_t36 * _t36);
-    const bool _t38 = _t37 <= 1.0;
-    const double _t39 = (_t38) ? _t37 : 1.0;
-    const double _t40 = _t39 * _t39;
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t41 * (2.4801587247292686e-05 - _t39 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t39 * 1.1304620460700782e-11) * _t40) + (1.0 - _t39 * 0.5 + _t40 * (0.041666666666666102 - _t39 * 0.0013888888888798428));
-    const double _t43 = _t36 * _t22;
-    const double _t44 = (_t41 * ((1.6057701922579786e-10 - _t39 * 7.549371704181243e-13) * _t40 + (2.755731919201122e-06 - _t39 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t39 * 0.00019841269841216566) * _t40 + (1.0 - _t39 * 0.16666666666666666))) * ((_t38) ? _t43 : ((_t43 > 0.0) ? 1.0 : (-1.0)));
-    const double _t45 = _t1 * _t42 + _t4 * _t44;
-    const double _t46 = _t34 * _t6 + _t9 * _t32;
-    const double _t47 = _t25 * _t35 - _t45 * _t46;
-    const double _t48 = _t4 * _t42 - _t1 * _t44;
-    const double _t49 = _t24 * _t8 + _t21 * _t3;
-    const double _t50 = _t35 * _t48 - _t45 * _t49;
-    const double _t51 = _t49 * _t46 - _t25 * _t48;
-    const double _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
-    const double _t53 = (_t52 > 0.0) ? offsetgen_rsqrt(_t52) : 0.0;
-    n[0] = _t53 * _t51;
-    n[1] = -(_t47 * _t53);
-    n[2] = -(_t50 * _t53);
+    const double _t10 = _t4 * _t6 - _t8 * _t9;
+    const double _t11 = _t10 * _t10;
+    const double _t12 = _c0;
+    const double _t13 = _s2;
+    const double _t14 = _t12 * _t9 - _t4 * _t13;
+    const double _t15 = _t14 * _t14;
+    const double _t16 = _t13 * _t6 - _t12 * _t8;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t15 + _t17 + _t11;
+    const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
+    const double _t20 = _t2 * _t11 * _t19;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07 + _t21 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t20)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.041666666666666102 - 0.0013888888888798428 * _t20));
+    const double _t24 = _t1 * (sqrt(_t18) * _t19);
+    const double _t25 = ((_t21 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t20)) * _t22 + (1.0 - 0.16666666666666666 * _t20 + _t21 * (0.0083333333333333003 - 0.00019841269841216566 * _t20))) * (_t24 * _t10);
+    const double _t26 = _t23 * _t6 + _t25 * _t9;
+    const double _t27 = _t15 * _t2 * _t19;
+    const double _t28 = _t27 * _t27;
+    const double _t29 = _t28 * _t28;
+    const double _t30 = (_t28 * (2.0874477943664777e-09 - _t27 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07)) * _t29 + ((0.041666666666666102 - 0.0013888888888798428 * _t27) * _t28 + (1.0 - _t27 * 0.5));
+    const double _t31 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t27 + _t28 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t27)) * _t29 + (_t28 * (0.0083333333333333003 - 0.00019841269841216566 * _t27) + (1.0 - 0.16666666666666666 * _t27))) * (_t14 * _t24);
+    const double _t32 = _t4 * _t30 - _t12 * _t31;
+    const double _t33 = _t23 * _t9 - _t25 * _t6;
+    const double _t34 = _t2 * _t17 * _t19;
+    const double _t35 = _t34 * _t34;
+    const double _t36 = _t35 * _t35;
+    const double _t37 = _t36 * (2.4801587247292686e-05 - _t34 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t34 * 1.1304620460700782e-11) * _t35) + ((0.041666666666666102 - _t34 * 0.0013888888888798428) * _t35 + (1.0 - _t34 * 0.5));
+    const double _t38 = _t16 * _t24 * (1.0 - _t34 * 0.16666666666666666 + (0.0083333333333333003 - _t34 * 0.00019841269841216566) * _t35 + _t36 * (2.755731919201122e-06 - _t34 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t34 * 7.549371704181243e-13) * _t35));
+    const double _t39 = _t8 * _t37 - _t38 * _t13;
+    const double _t40 = _t26 * _t32 - _t33 * _t39;
+    const double _t41 = _t38 * _t8 + _t13 * _t37;
+    const double _t42 = _t4 * _t31 + _t12 * _t30;
+    const double _t43 = _t26 * _t41 - _t42 * _t39;
+    const double _t44 = _t33 * _t42 - _t41 * _t32;
+    const double _t45 = _t43 * _t43 + (_t44 * _t44 + _t40 * _t40);
+    const double _t46 = (_t45 > 0.0) ? offsetgen_rsqrt(_t45) : 0.0;
+    n[0] = -(_t40 * _t46);
+    n[1] = -(_t46 * _t43);
+    n[2] = _t46 * _t44;
 }
 
 #ifndef OFFSETGEN_CUDA_RSQRT_FLOAT_V1
@@ -331,202 +316,186 @@ __host__ __device__ inline float gyroid_proj_o2_fieldf(float x, float y, float z
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 173
+ * Total ops: 160
  */
 __host__ __device__ inline float gyroid_proj_o2_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = z * 6.28318548f;
+    const float _t0 = 6.28318548f * h;
+    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+    const float _t2 = _t1 * _t1;
+    const float _t3 = z * 6.28318548f;
     float _s0, _c0;
-    sincosf(_t0, &_s0, &_c0);
-    const float _t1 = _s0;
-    const float _t2 = _c0;
-    const float _t3 = 6.28318548f * x;
-    float _s2, _c2;
-    sincosf(_t3, &_s2, &_c2);
-    const float _t4 = _c2;
-    const float _t5 = 6.28318548f * y;
+    sincosf(_t3, &_s0, &_c0);
+    const float _t4 = _s0;
+    const float _t5 = 6.28318548f * x;
     float _s1, _c1;
     sincosf(_t5, &_s1, &_c1);
     const float _t6 = _s1;
-    const float _t7 = _t2 * _t4 - _t1 * _t6;
-    const float _t8 = _s2;
+    const float _t7 = 6.28318548f * y;
+    float _s2, _c2;
+    sincosf(_t7, &_s2, &_c2);
+    const float _t8 = _c2;
     const float _t9 = _c1;
-    const float _t10 = _t6 * _t8 - _t2 * _t9;
-    const float _t11 = _t1 * _t8 - _t9 * _t4;
-    const float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
-    const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
-    const float _t14 = 6.28318548f * h;
-    const float _t15 = _t7 * _t14;
-    const float _t16 = _t13 * (_t15 * _t15);
-    const bool _t17 = _t16 <= 1.0f;
-    const float _t18 = (_t17) ? _t16 : 1.0f;
-    const float _t19 = _t18 * _t18;
-    const float _t20 = _t19 * _t19;
-    const float _t21 = _t20 * (2.48015876e-05f - _t18 * 2.75573029e-07f + (2.08744777e-09f - _t18 * 1.13046204e-11f) * _t19) + (1.0f - _t18 * 0.5f + _t19 * (0.0416666679f - _t18 * 0.00138888892f));
-    const float _t22 = sqrtf(_t13);
-    const float _t23 = _t15 * _t22;
-    const float _t24 = (_t20 * ((1.60577024e-10f - _t18 * 7.54937183e-13f) * _t19 + (2.75573188e-06f - _t18 * 2.50520991e-08f)) + ((0.00833333377f - _t18 * 0.000198412701f) * _t19 + (1.0f - _t18 * 0.166666672f))) * ((_t17) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t25 = _t14 * _t11;
-    const float _t26 = _t13 * (_t25 * _t25);
-    const bool _t27 = _t26 <= 1.0f;
-    const float _t28 = -(_t25 * _t22);
-    const float _t29 = (_t27) ? _t26 : 1.0f;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = _t30 * _t30;
-    const float _t32 = ((_t27) ? _t28 : ((_t28 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t29 * 0.166666672f + _t30 * (0.00833333377f - _t29 * 0.000198412701f) + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f)));
-    const float _t33 = _t30 * (0.0416666679f - _t29 * 0.00138888892f) + (1.0f - _t29 * 0.5f) + _t31 * (2.48015876e-05f - _t29 * 2.75573029e-07f + _t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f));
-    const float _t34 = _t14 * _t10;
-    const float _t35 = _t13 * (_t34 * _t34);
-    const bool _t36 = _t35 <= 1.0f;
-    const float _t37 = (_t36) ? _t35 : 1.0f;
-    const float _t38 = _t37 * _t37;
-    const float _t39 = _t38 * _t38;
-    const float _t40 = -(_t34 * _t22);
-    const float _t41 = (_t38 * (0.00833333377f - _t37 * 0.000198412701f) + (1.0f - _t37 * 0.166666672f) + (2.75573188e-06f - _t37 * 2.50520991e-08f + _t38 * (1.60577024e-10f - _t37 * 7.54937183e-13f)) * _t39) * ((_t36) ? _t40 : ((_t40 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t42 = _t38 * (0.0416666679f - _t37 * 0.00138888892f) + (1.0f - _t37 * 0.5f) + ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f)) * _t39;
-    return (_t1 * _t21 - _t2 * _t24) * (_t32 * _t8 + _t33 * _t4) + (_t33 * _t8 - _t32 * _t4) * (_t41 * _t6 + _t9 * _t42) + (_t6 * _t42 - _t41 * _t9) * (_t2 * _t21 + _t1 * _t24);
+    const float _t10 = _t4 * _t6 - _t8 * _t9;
+    const float _t11 = _t10 * _t10;
+    const float _t12 = _c0;
+    const float _t13 = _s2;
+    const float _t14 = _t12 * _t9 - _t4 * _t13;
+    const float _t15 = _t14 * _t14;
+    const float _t16 = _t13 * _t6 - _t12 * _t8;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t15 + _t17 + _t11;
+    const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
+    const float _t20 = _t2 * _t11 * _t19;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = (2.48015876e-05f - _t20 * 2.75573029e-07f + _t21 * (2.08744777e-09f - 1.13046204e-11f * _t20)) * _t22 + (1.0f - _t20 * 0.5f + _t21 * (0.0416666679f - 0.00138888892f * _t20));
+    const float _t24 = _t1 * (sqrtf(_t18) * _t19);
+    const float _t25 = ((_t21 * (1.60577024e-10f - 7.54937183e-13f * _t20) + (2.75573188e-06f - 2.50520991e-08f * _t20)) * _t22 + (1.0f - 0.166666672f * _t20 + _t21 * (0.00833333377f - 0.000198412701f * _t20))) * (_t24 * _t10);
+    const float _t26 = _t15 * _t2 * _t19;
+    const float _t27 = _t26 * _t26;
+    const float _t28 = _t27 * _t27;
+    const float _t29 = (_t27 * (2.08744777e-09f - _t26 * 1.13046204e-11f) + (2.48015876e-05f - _t26 * 2.75573029e-07f)) * _t28 + ((0.0416666679f - 0.00138888892f * _t26) * _t27 + (1.0f - _t26 * 0.5f));
+    const float _t30 = ((2.75573188e-06f - 2.50520991e-08f * _t26 + _t27 * (1.60577024e-10f - 7.54937183e-13f * _t26)) * _t28 + (_t27 * (0.00833333377f - 0.000198412701f * _t26) + (1.0f - 0.166666672f * _t26))) * (_t14 * _t24);
+    const float _t31 = _t2 * _t17 * _t19;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t33 * (2.48015876e-05f - _t31 * 2.75573029e-07f + (2.08744777e-09f - _t31 * 1.13046204e-11f) * _t32) + ((0.0416666679f - _t31 * 0.00138888892f) * _t32 + (1.0f - _t31 * 0.5f));
+    const float _t35 = _t16 * _t24 * (1.0f - _t31 * 0.166666672f + (0.00833333377f - _t31 * 0.000198412701f) * _t32 + _t33 * (2.75573188e-06f - _t31 * 2.50520991e-08f + (1.60577024e-10f - _t31 * 7.54937183e-13f) * _t32));
+    return (_t23 * _t9 - _t25 * _t6) * (_t4 * _t29 - _t12 * _t30) + ((_t23 * _t6 + _t25 * _t9) * (_t8 * _t34 - _t35 * _t13) + (_t35 * _t8 + _t13 * _t34) * (_t4 * _t30 + _t12 * _t29));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 205
+ * Total ops: 294
  */
 __host__ __device__ inline float gyroid_proj_o2_shellf(float x, float y, float z, float t)
-{
-    const float _t0 = 6.28318548f * y;
-    float _s0, _c0;
-    sincosf(_t0, &_s0, &_c0);
-    const float _t1 = _s0;
-    const float _t2 = 6.28318548f * x;
-    float _s1, _c1;
-    sincosf(_t2, &_s1, &_c1);
-    const float _t3 = _s1;
-    const float _t4 = z * 6.28318548f;
-    float _s2, _c2;
-    sincosf(_t4, &_s2, &_c2);
-    const float _t5 = _c2;
-    const float _t6 = _c0;
-    const float _t7 = _t1 * _t3 - _t5 * _t6;
-    const float _t8 = 6.28318548f * (t * 0.5f);
-    const float _t9 = _t7 * _t8;
-    const float _t10 = _c1;
-    const float _t11 = _s2;
-    const float _t12 = _t5 * _t10 - _t11 * _t1;
-    const float _t13 = _t11 * _t3 - _t6 * _t10;
-    const float _t14 = _t12 * _t12 + _t7 * _t7 + _t13 * _t13;
-    const float _t15 = (_t14 > 0.0f) ? 1.0f / _t14 : 0.0f;
-    const float _t16 = _t9 * _t9 * _t15;
-    const bool _t17 = _t16 <= 1.0f;
-    const float _t18 = (_t17) ? _t16 : 1.0f;
-    const float _t19 = _t18 * _t18;
-    const float _t20 = _t19 * _t19;
-    const float _t21 = _t20 * (2.75573188e-06f - _t18 * 2.50520991e-08f + (1.60577024e-10f - _t18 * 7.54937183e-13f) * _t19) + (_t19 * (0.00833333377f - _t18 * 0.000198412701f) + (1.0f - _t18 * 0.166666672f));
-    const float _t22 = sqrtf(_t15);
-    const float _t23 = _t9 * _t22;
-    const float _t24 = _t21 * ((_t17) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t25 = _t20 * (_t19 * (2.08744777e-09f - _t18 * 1.13046204e-11f) + (2.48015876e-05f - _t18 * 2.75573029e-07f)) + (_t19 * (0.0416666679f - _t18 * 0.00138888892f) + (1.0f - _t18 * 0.5f));
-    const float _t26 = _t6 * _t25;
-    const float _t27 = _t8 * _t13;
-    const float _t28 = _t15 * (_t27 * _t27);
-    const bool _t29 = _t28 <= 1.0f;
-    const float _t30 = (_t29) ? _t28 : 1.0f;
-    const float _t31 = _t30 * _t30;
-    const float _t32 = _t31 * _t31;
-    const float _t33 = _t32 * ((2.08744777e-09f - _t30 * 1.13046204e-11f) * _t31 + (2.48015876e-05f - _t30 * 2.75573029e-07f)) + ((0.0416666679f - _t30 * 0.00138888892f) * _t31 + (1.0f - _t30 * 0.5f));
-    const float _t34 = _t33 * _t3;
-    const float _t35 = _t22 * _t27;
-    const float _t36 = 1.0f - _t30 * 0.166666672f + (0.00833333377f - _t30 * 0.000198412701f) * _t31 + (_t31 * (1.60577024e-10f - _t30 * 7.54937183e-13f) + (2.75573188e-06f - _t30 * 2.50520991e-08f)) * _t32;
-    const float _t37 = ((_t29) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f))) * _t36;
-    const float _t38 = _t33 * _t10;
-    const float _t39 = _t12 * _t8;
-    const float _t40 = _t15 * (_t39 * _t39);
-    const bool _t41 = _t40 <= 1.0f;
-    const float _t42 = (_t41) ? _t40 : 1.0f;
-    const float _t43 = _t42 * _t42;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = 1.0f - _t42 * 0.5f + (0.0416666679f - 0.00138888892f * _t42) * _t43 + _t44 * ((2.08744777e-09f - 1.13046204e-11f * _t42) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f));
-    const float _t46 = _t45 * _t11;
-    const float _t47 = _t22 * _t39;
-    const float _t48 = -_t47;
-    const float _t49 = ((1.60577024e-10f - 7.54937183e-13f * _t42) * _t43 + (2.75573188e-06f - 2.50520991e-08f * _t42)) * _t44 + ((0.00833333377f - 0.000198412701f * _t42) * _t43 + (1.0f - 0.166666672f * _t42));
-    const float _t50 = ((_t41) ? _t48 : ((_t48 > 0.0f) ? 1.0f : (-1.0f))) * _t49;
-    const float _t51 = _t45 * _t5;
-    const float _t52 = _t1 * _t25;
-    const float _t53 = ((_t41) ? _t47 : ((_t47 > 0.0f) ? 1.0f : (-1.0f))) * _t49;
-    const float _t54 = -_t23;
-    const float _t55 = _t21 * ((_t17) ? _t54 : ((_t54 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t56 = -_t35;
-    const float _t57 = ((_t29) ? _t56 : ((_t56 > 0.0f) ? 1.0f : (-1.0f))) * _t36;
-    return ((_t24 * _t1 + _t26) * (_t34 - _t37 * _t10) + ((_t38 + _t37 * _t3) * (_t46 - _t5 * _t50) + (_t51 + _t11 * _t50) * (_t52 - _t6 * _t24))) * ((_t51 + _t11 * _t53) * (_t52 - _t6 * _t55) + ((_t34 - _t57 * _t10) * (_t26 + _t1 * _t55) + (_t46 - _t5 * _t53) * (_t38 + _t57 * _t3)));
-}
-
-/* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 191
- */
-__host__ __device__ inline void gyroid_proj_o2_normalf(float x, float y, float z, float h, float n[3])
 {
     const float _t0 = z * 6.28318548f;
     float _s0, _c0;
     sincosf(_t0, &_s0, &_c0);
-    const float _t1 = _c0;
-    const float _t2 = 6.28318548f * x;
+    const float _t1 = _s0;
+    const float _t2 = 6.28318548f * (t * 0.5f);
+    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+    const float _t4 = _t3 * _t3;
+    const float _t5 = _c0;
+    const float _t6 = 6.28318548f * x;
     float _s2, _c2;
-    sincosf(_t2, &_s2, &_c2);
-    const float _t3 = _c2;
+    sincosf(_t6, &_s2, &_c2);
+    const float _t7 = _c2;
+    const float _t8 = 6.28318548f * y;
+    float _s1, _c1;
+    sincosf(_t8, &_s1, &_c1);
+    const float _t9 = _s1;
+    const float _t10 = _t5 * _t7 - _t1 * _t9;
+    const float _t11 = _t10 * _t10;
+    const float _t12 = _s2;
+    const float _t13 = _c1;
+    const float _t14 = _t9 * _t12 - _t5 * _t13;
+    const float _t15 = _t14 * _t14;
+    const float _t16 = _t1 * _t12 - _t13 * _t7;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t11 + _t15 + _t17;
+    const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
+    const float _t20 = _t4 * _t11 * _t19;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = sqrtf(_t18) * _t19;
+    const float _t24 = _t3 * _t23;
+    const float _t25 = (_t22 * (2.75573188e-06f - 2.50520991e-08f * _t20 + (1.60577024e-10f - 7.54937183e-13f * _t20) * _t21) + (1.0f - 0.166666672f * _t20 + (0.00833333377f - 0.000198412701f * _t20) * _t21)) * (_t10 * _t24);
+    const float _t26 = 1.0f - _t20 * 0.5f + (0.0416666679f - 0.00138888892f * _t20) * _t21 + _t22 * ((2.08744777e-09f - 1.13046204e-11f * _t20) * _t21 + (2.48015876e-05f - _t20 * 2.75573029e-07f));
+    const float _t27 = _t4 * _t15 * _t19;
+    const float _t28 = _t27 * _t27;
+    const float _t29 = _t28 * _t28;
+    const float _t30 = 1.0f - _t27 * 0.5f + _t28 * (0.0416666679f - _t27 * 0.00138888892f) + _t29 * (2.48015876e-05f - _t27 * 2.75573029e-07f + _t28 * (2.08744777e-09f - _t27 * 1.13046204e-11f));
+    const float _t31 = (1.0f - _t27 * 0.166666672f + _t28 * (0.00833333377f - _t27 * 0.000198412701f) + (2.75573188e-06f - _t27 * 2.50520991e-08f + _t28 * (1.60577024e-10f - _t27 * 7.54937183e-13f)) * _t29) * (_t14 * _t24);
+    const float _t32 = _t4 * _t17 * _t19;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t33 * _t33;
+    const float _t35 = _t34 * ((2.08744777e-09f - _t32 * 1.13046204e-11f) * _t33 + (2.48015876e-05f - _t32 * 2.75573029e-07f)) + ((0.0416666679f - _t32 * 0.00138888892f) * _t33 + (1.0f - _t32 * 0.5f));
+    const float _t36 = ((0.00833333377f - _t32 * 0.000198412701f) * _t33 + (1.0f - _t32 * 0.166666672f) + ((1.60577024e-10f - _t32 * 7.54937183e-13f) * _t33 + (2.75573188e-06f - _t32 * 2.50520991e-08f)) * _t34) * (_t24 * _t16);
+    const float _t37 = -_t2;
+    const float _t38 = (_t37 <= 1.0f) ? (((-1.0f) <= _t37) ? _t37 : (-1.0f)) : 1.0f;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = _t39 * _t11 * _t19;
+    const float _t41 = _t40 * _t40;
+    const float _t42 = _t41 * _t41;
+    const float _t43 = _t42 * (2.48015876e-05f - 2.75573029e-07f * _t40 + _t41 * (2.08744777e-09f - 1.13046204e-11f * _t40)) + (_t41 * (0.0416666679f - 0.00138888892f * _t40) + (1.0f - 0.5f * _t40));
+    const float _t44 = _t23 * _t38;
+    const float _t45 = (1.0f - 0.166666672f * _t40 + _t41 * (0.00833333377f - 0.000198412701f * _t40) + (2.75573188e-06f - 2.50520991e-08f * _t40 + _t41 * (1.60577024e-10f - 7.54937183e-13f * _t40)) * _t42) * (_t10 * _t44);
+    const float _t46 = _t39 * _t15 * _t19;
+    const float _t47 = _t46 * _t46;
+    const float _t48 = _t47 * _t47;
+    const float _t49 = _t48 * (_t47 * (2.08744777e-09f - _t46 * 1.13046204e-11f) + (2.48015876e-05f - _t46 * 2.75573029e-07f)) + (1.0f - _t46 * 0.5f + _t47 * (0.0416666679f - 0.00138888892f * _t46));
+    const float _t50 = (_t47 * (0.00833333377f - _t46 * 0.000198412701f) + (1.0f - 0.166666672f * _t46) + (_t47 * (1.60577024e-10f - 7.54937183e-13f * _t46) + (2.75573188e-06f - 2.50520991e-08f * _t46)) * _t48) * (_t44 * _t14);
+    const float _t51 = _t39 * _t17 * _t19;
+    const float _t52 = _t51 * _t51;
+    const float _t53 = _t52 * _t52;
+    const float _t54 = _t44 * _t16 * (_t53 * (2.75573188e-06f - 2.50520991e-08f * _t51 + (1.60577024e-10f - 7.54937183e-13f * _t51) * _t52) + (_t52 * (0.00833333377f - 0.000198412701f * _t51) + (1.0f - 0.166666672f * _t51)));
+    const float _t55 = (2.48015876e-05f - _t51 * 2.75573029e-07f + _t52 * (2.08744777e-09f - 1.13046204e-11f * _t51)) * _t53 + ((0.0416666679f - 0.00138888892f * _t51) * _t52 + (1.0f - _t51 * 0.5f));
+    return ((_t1 * _t25 + _t5 * _t26) * (_t9 * _t30 + _t13 * _t31) + (_t1 * _t26 - _t5 * _t25) * (_t35 * _t7 - _t36 * _t12) + (_t13 * _t30 - _t31 * _t9) * (_t35 * _t12 + _t36 * _t7)) * ((_t5 * _t43 + _t1 * _t45) * (_t49 * _t9 + _t13 * _t50) + ((_t13 * _t49 - _t9 * _t50) * (_t54 * _t7 + _t55 * _t12) + (_t55 * _t7 - _t54 * _t12) * (_t1 * _t43 - _t5 * _t45)));
+}
+
+/* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
+ * Total ops: 178
+ */
+__host__ __device__ inline void gyroid_proj_o2_normalf(float x, float y, float z, float h, float n[3])
+{
+    const float _t0 = 6.28318548f * h;
+    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+    const float _t2 = _t1 * _t1;
+    const float _t3 = z * 6.28318548f;
+    float _s0, _c0;
+    sincosf(_t3, &_s0, &_c0);
     const float _t4 = _s0;
-    const float _t5 = 6.28318548f * y;
+    const float _t5 = 6.28318548f * x;
     float _s1, _c1;
     sincosf(_t5, &_s1, &_c1);
     const float _t6 = _s1;
-    const float _t7 = _t1 * _t3 - _t4 * _t6;
-    const float _t8 = _s2;
+    const float _t7 = 6.28318548f * y;
+    float _s2, _c2;
+    sincosf(_t7, &_s2, &_c2);
+    const float _t8 = _c2;
     const float _t9 = _c1;
-    const float _t10 = _t6 * _t8 - _t1 * _t9;
-    const float _t11 = _t4 * _t8 - _t9 * _t3;
-    const float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
-    const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
-    const float _t14 = 6.28318548f * h;
-    const float _t15 = _t14 * _t11;
-    const float _t16 = _t13 * (_t15 * _t15);
-    const bool _t17 = _t16 <= 1.0f;
-    const float _t18 = (_t17) ? _t16 : 1.0f;
-    const float _t19 = _t18 * _t18;
-    const float _t20 = _t19 * _t19;
-    const float _t21 = _t19 * (0.0416666679f - _t18 * 0.00138888892f) + (1.0f - _t18 * 0.5f) + _t20 * (2.48015876e-05f - _t18 * 2.75573029e-07f + _t19 * (2.08744777e-09f - _t18 * 1.13046204e-11f));
-    const float _t22 = sqrtf(_t13);
-    const float _t23 = -(_t15 * _t22);
-    const float _t24 = ((_t17) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t18 * 0.166666672f + _t19 * (0.00833333377f - _t18 * 0.000198412701f) + _t20 * (2.75573188e-06f - _t18 * 2.50520991e-08f + _t19 * (1.60577024e-10f - _t18 * 7.54937183e-13f)));
-    const float _t25 = _t21 * _t8 - _t24 * _t3;
-    const float _t26 = _t14 * _t10;
-    const float _t27 = _t13 * (_t26 * _t26);
-    const bool _t28 = _t27 <= 1.0f;
-    const float _t29 = (_t28) ? _t27 : 1.0f;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = _t30 * _t30;
-    const float _t32 = _t30 * (0.0416666679f - _t29 * 0.00138888892f) + (1.0f - _t29 * 0.5f) + ((2.08744777e-09f - _t29 * 1.13046204e-11f) * _t30 + (2.48015876e-05f - _t29 * 2.75573029e-07f)) * _t31;
-    const float _t33 = -(_t26 * _t22);
-    const float _t34 = (_t30 * (0.00833333377f - _t29 * 0.000198412701f) + (1.0f - _t29 * 0.166666672f) + (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f)) * _t31) * ((_t28) ? _t33 : ((_t33 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t35 = _t6 * _t32 - _t34 * _t9;
-    const float _t36 = _t7 * _t14;
-    const float _t37 = _t13 * (_t36 * _t36);
-    const bool _t38 = _t37 <= 1.0f;
-    const float _t39 = (_t38) ? _t37 : 1.0f;
-    const float _t40 = _t39 * _t39;
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t41 * (2.48015876e-05f - _t39 * 2.75573029e-07f + (2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40) + (1.0f - _t39 * 0.5f + _t40 * (0.0416666679f - _t39 * 0.00138888892f));
-    const float _t43 = _t36 * _t22;
-    const float _t44 = (_t41 * ((1.60577024e-10f - _t39 * 7.54937183e-13f) * _t40 + (2.75573188e-06f - _t39 * 2.50520991e-08f)) + ((0.00833333377f - _t39 * 0.000198412701f) * _t40 + (1.0f - _t39 * 0.166666672f))) * ((_t38) ? _t43 : ((_t43 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t45 = _t1 * _t42 + _t4 * _t44;
-    const float _t46 = _t34 * _t6 + _t9 * _t32;
-    const float _t47 = _t25 * _t35 - _t45 * _t46;
-    const float _t48 = _t4 * _t42 - _t1 * _t44;
-    const float _t49 = _t24 * _t8 + _t21 * _t3;
-    const float _t50 = _t35 * _t48 - _t45 * _t49;
-    const float _t51 = _t49 * _t46 - _t25 * _t48;
-    const float _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
-    const float _t53 = (_t52 > 0.0f) ? offsetgen_rsqrtf(_t52) : 0.0f;
-    n[0] = _t53 * _t51;
-    n[1] = -(_t47 * _t53);
-    n[2] = -(_t50 * _t53);
+    const float _t10 = _t4 * _t6 - _t8 * _t9;
+    const float _t11 = _t10 * _t10;
+    const float _t12 = _c0;
+    const float _t13 = _s2;
+    const float _t14 = _t12 * _t9 - _t4 * _t13;
+    const float _t15 = _t14 * _t14;
+    const float _t16 = _t13 * _t6 - _t12 * _t8;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t15 + _t17 + _t11;
+    const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
+    const float _t20 = _t2 * _t11 * _t19;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = (2.48015876e-05f - _t20 * 2.75573029e-07f + _t21 * (2.08744777e-09f - 1.13046204e-11f * _t20)) * _t22 + (1.0f - _t20 * 0.5f + _t21 * (0.0416666679f - 0.00138888892f * _t20));
+    const float _t24 = _t1 * (sqrtf(_t18) * _t19);
+    const float _t25 = ((_t21 * (1.60577024e-10f - 7.54937183e-13f * _t20) + (2.75573188e-06f - 2.50520991e-08f * _t20)) * _t22 + (1.0f - 0.166666672f * _t20 + _t21 * (0.00833333377f - 0.000198412701f * _t20))) * (_t24 * _t10);
+    const float _t26 = _t23 * _t6 + _t25 * _t9;
+    const float _t27 = _t15 * _t2 * _t19;
+    const float _t28 = _t27 * _t27;
+    const float _t29 = _t28 * _t28;
+    const float _t30 = (_t28 * (2.08744777e-09f - _t27 * 1.13046204e-11f) + (2.48015876e-05f - _t27 * 2.75573029e-07f)) * _t29 + ((0.0416666679f - 0.00138888892f * _t27) * _t28 + (1.0f - _t27 * 0.5f));
+    const float _t31 = ((2.75573188e-06f - 2.50520991e-08f * _t27 + _t28 * (1.60577024e-10f - 7.54937183e-13f * _t27)) * _t29 + (_t28 * (0.00833333377f - 0.000198412701f * _t27) + (1.0f - 0.166666672f * _t27))) * (_t14 * _t24);
+    const float _t32 = _t4 * _t30 - _t12 * _t31;
+    const float _t33 = _t23 * _t9 - _t25 * _t6;
+    const float _t34 = _t2 * _t17 * _t19;
+    const float _t35 = _t34 * _t34;
+    const float _t36 = _t35 * _t35;
+    const float _t37 = _t36 * (2.48015876e-05f - _t34 * 2.75573029e-07f + (2.08744777e-09f - _t34 * 1.13046204e-11f) * _t35) + ((0.0416666679f - _t34 * 0.00138888892f) * _t35 + (1.0f - _t34 * 0.5f));
+    const float _t38 = _t16 * _t24 * (1.0f - _t34 * 0.166666672f + (0.00833333377f - _t34 * 0.000198412701f) * _t35 + _t36 * (2.75573188e-06f - _t34 * 2.50520991e-08f + (1.60577024e-10f - _t34 * 7.54937183e-13f) * _t35));
+    const float _t39 = _t8 * _t37 - _t38 * _t13;
+    const float _t40 = _t26 * _t32 - _t33 * _t39;
+    const float _t41 = _t38 * _t8 + _t13 * _t37;
+    const float _t42 = _t4 * _t31 + _t12 * _t30;
+    const float _t43 = _t26 * _t41 - _t42 * _t39;
+    const float _t44 = _t33 * _t42 - _t41 * _t32;
+    const float _t45 = _t43 * _t43 + (_t44 * _t44 + _t40 * _t40);
+    const float _t46 = (_t45 > 0.0f) ? offsetgen_rsqrtf(_t45) : 0.0f;
+    n[0] = -(_t40 * _t46);
+    n[1] = -(_t46 * _t43);
+    n[2] = _t46 * _t44;
 }
 
 /* ---- Batch kernels ----------------------------------------------------------------------------

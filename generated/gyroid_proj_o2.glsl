@@ -36,9 +36,10 @@ safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| wi
     has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
     every function returns a finite value for finite input (do not compile with -ffinite-math-only).
     sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while each component of d = h n stays within 1 (natural units, |h| <= 0.159 cell on a
-    2*pi-periodic surface); larger displacements are clamped to it, which keeps |q_K - p| <= |h| and
-    so the bound above.
+    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
+    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
+    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
+    1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -48,12 +49,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 14
-    - offset: 173
-    - shell: 205
-    - normal: 191
+    - offset: 160
+    - shell: 294
+    - normal: 178
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":173,"shell":205,"normal":191}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o2","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":160,"shell":294,"normal":178}} */
 #ifndef OFFSETGEN_GYROID_PROJ_O2_GLSL
 #define OFFSETGEN_GYROID_PROJ_O2_GLSL
 
@@ -91,177 +92,161 @@ highp float gyroid_proj_o2_field(highp vec3 p)
     return gyroid_proj_o2_cos(_t0) * gyroid_proj_o2_sin(_t1) + gyroid_proj_o2_sin(_t0) * gyroid_proj_o2_cos(_t2) + gyroid_proj_o2_cos(_t1) * gyroid_proj_o2_sin(_t2);
 }
 
-// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 173.
+// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 160.
 highp float gyroid_proj_o2_offset(highp vec3 p, highp float h)
 {
-    highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = gyroid_proj_o2_sin(_t0);
-    highp float _t2 = gyroid_proj_o2_cos(_t0);
-    highp float _t3 = 6.28318548 * p.x;
-    highp float _t4 = gyroid_proj_o2_cos(_t3);
-    highp float _t5 = 6.28318548 * p.y;
+    highp float _t0 = 6.28318548 * h;
+    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t2 = _t1 * _t1;
+    highp float _t3 = p.z * 6.28318548;
+    highp float _t4 = gyroid_proj_o2_sin(_t3);
+    highp float _t5 = 6.28318548 * p.x;
     highp float _t6 = gyroid_proj_o2_sin(_t5);
-    highp float _t7 = _t2 * _t4 - _t1 * _t6;
-    highp float _t8 = gyroid_proj_o2_sin(_t3);
+    highp float _t7 = 6.28318548 * p.y;
+    highp float _t8 = gyroid_proj_o2_cos(_t7);
     highp float _t9 = gyroid_proj_o2_cos(_t5);
-    highp float _t10 = _t6 * _t8 - _t2 * _t9;
-    highp float _t11 = _t1 * _t8 - _t9 * _t4;
-    highp float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
-    highp float _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    highp float _t14 = 6.28318548 * h;
-    highp float _t15 = _t7 * _t14;
-    highp float _t16 = _t13 * (_t15 * _t15);
-    bool _t17 = _t16 <= 1.0;
-    highp float _t18 = (_t17) ? _t16 : 1.0;
-    highp float _t19 = _t18 * _t18;
-    highp float _t20 = _t19 * _t19;
-    highp float _t21 = _t20 * (2.48015876e-05 - _t18 * 2.75573029e-07 + (2.08744777e-09 - _t18 * 1.13046204e-11) * _t19) + (1.0 - _t18 * 0.5 + _t19 * (0.0416666679 - _t18 * 0.00138888892));
-    highp float _t22 = sqrt(_t13);
-    highp float _t23 = _t15 * _t22;
-    highp float _t24 = (_t20 * ((1.60577024e-10 - _t18 * 7.54937183e-13) * _t19 + (2.75573188e-06 - _t18 * 2.50520991e-08)) + ((0.00833333377 - _t18 * 0.000198412701) * _t19 + (1.0 - _t18 * 0.166666672))) * ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t25 = _t14 * _t11;
-    highp float _t26 = _t13 * (_t25 * _t25);
-    bool _t27 = _t26 <= 1.0;
-    highp float _t28 = -(_t25 * _t22);
-    highp float _t29 = (_t27) ? _t26 : 1.0;
-    highp float _t30 = _t29 * _t29;
-    highp float _t31 = _t30 * _t30;
-    highp float _t32 = ((_t27) ? _t28 : ((_t28 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t29 * 0.166666672 + _t30 * (0.00833333377 - _t29 * 0.000198412701) + _t31 * (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - _t29 * 7.54937183e-13)));
-    highp float _t33 = _t30 * (0.0416666679 - _t29 * 0.00138888892) + (1.0 - _t29 * 0.5) + _t31 * (2.48015876e-05 - _t29 * 2.75573029e-07 + _t30 * (2.08744777e-09 - _t29 * 1.13046204e-11));
-    highp float _t34 = _t14 * _t10;
-    highp float _t35 = _t13 * (_t34 * _t34);
-    bool _t36 = _t35 <= 1.0;
-    highp float _t37 = (_t36) ? _t35 : 1.0;
-    highp float _t38 = _t37 * _t37;
-    highp float _t39 = _t38 * _t38;
-    highp float _t40 = -(_t34 * _t22);
-    highp float _t41 = (_t38 * (0.00833333377 - _t37 * 0.000198412701) + (1.0 - _t37 * 0.166666672) + (2.75573188e-06 - _t37 * 2.50520991e-08 + _t38 * (1.60577024e-10 - _t37 * 7.54937183e-13)) * _t39) * ((_t36) ? _t40 : ((_t40 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t42 = _t38 * (0.0416666679 - _t37 * 0.00138888892) + (1.0 - _t37 * 0.5) + ((2.08744777e-09 - _t37 * 1.13046204e-11) * _t38 + (2.48015876e-05 - _t37 * 2.75573029e-07)) * _t39;
-    return (_t1 * _t21 - _t2 * _t24) * (_t32 * _t8 + _t33 * _t4) + (_t33 * _t8 - _t32 * _t4) * (_t41 * _t6 + _t9 * _t42) + (_t6 * _t42 - _t41 * _t9) * (_t2 * _t21 + _t1 * _t24);
+    highp float _t10 = _t4 * _t6 - _t8 * _t9;
+    highp float _t11 = _t10 * _t10;
+    highp float _t12 = gyroid_proj_o2_cos(_t3);
+    highp float _t13 = gyroid_proj_o2_sin(_t7);
+    highp float _t14 = _t12 * _t9 - _t4 * _t13;
+    highp float _t15 = _t14 * _t14;
+    highp float _t16 = _t13 * _t6 - _t12 * _t8;
+    highp float _t17 = _t16 * _t16;
+    highp float _t18 = _t15 + _t17 + _t11;
+    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    highp float _t20 = _t2 * _t11 * _t19;
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = (2.48015876e-05 - _t20 * 2.75573029e-07 + _t21 * (2.08744777e-09 - 1.13046204e-11 * _t20)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.0416666679 - 0.00138888892 * _t20));
+    highp float _t24 = _t1 * (sqrt(_t18) * _t19);
+    highp float _t25 = ((_t21 * (1.60577024e-10 - 7.54937183e-13 * _t20) + (2.75573188e-06 - 2.50520991e-08 * _t20)) * _t22 + (1.0 - 0.166666672 * _t20 + _t21 * (0.00833333377 - 0.000198412701 * _t20))) * (_t24 * _t10);
+    highp float _t26 = _t15 * _t2 * _t19;
+    highp float _t27 = _t26 * _t26;
+    highp float _t28 = _t27 * _t27;
+    highp float _t29 = (_t27 * (2.08744777e-09 - _t26 * 1.13046204e-11) + (2.48015876e-05 - _t26 * 2.75573029e-07)) * _t28 + ((0.0416666679 - 0.00138888892 * _t26) * _t27 + (1.0 - _t26 * 0.5));
+    highp float _t30 = ((2.75573188e-06 - 2.50520991e-08 * _t26 + _t27 * (1.60577024e-10 - 7.54937183e-13 * _t26)) * _t28 + (_t27 * (0.00833333377 - 0.000198412701 * _t26) + (1.0 - 0.166666672 * _t26))) * (_t14 * _t24);
+    highp float _t31 = _t2 * _t17 * _t19;
+    highp float _t32 = _t31 * _t31;
+    highp float _t33 = _t32 * _t32;
+    highp float _t34 = _t33 * (2.48015876e-05 - _t31 * 2.75573029e-07 + (2.08744777e-09 - _t31 * 1.13046204e-11) * _t32) + ((0.0416666679 - _t31 * 0.00138888892) * _t32 + (1.0 - _t31 * 0.5));
+    highp float _t35 = _t16 * _t24 * (1.0 - _t31 * 0.166666672 + (0.00833333377 - _t31 * 0.000198412701) * _t32 + _t33 * (2.75573188e-06 - _t31 * 2.50520991e-08 + (1.60577024e-10 - _t31 * 7.54937183e-13) * _t32));
+    return (_t23 * _t9 - _t25 * _t6) * (_t4 * _t29 - _t12 * _t30) + ((_t23 * _t6 + _t25 * _t9) * (_t8 * _t34 - _t35 * _t13) + (_t35 * _t8 + _t13 * _t34) * (_t4 * _t30 + _t12 * _t29));
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 205.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 294.
 highp float gyroid_proj_o2_shell(highp vec3 p, highp float t)
 {
-    highp float _t0 = 6.28318548 * p.y;
+    highp float _t0 = p.z * 6.28318548;
     highp float _t1 = gyroid_proj_o2_sin(_t0);
-    highp float _t2 = 6.28318548 * p.x;
-    highp float _t3 = gyroid_proj_o2_sin(_t2);
-    highp float _t4 = p.z * 6.28318548;
-    highp float _t5 = gyroid_proj_o2_cos(_t4);
-    highp float _t6 = gyroid_proj_o2_cos(_t0);
-    highp float _t7 = _t1 * _t3 - _t5 * _t6;
-    highp float _t8 = 6.28318548 * (t * 0.5);
-    highp float _t9 = _t7 * _t8;
-    highp float _t10 = gyroid_proj_o2_cos(_t2);
-    highp float _t11 = gyroid_proj_o2_sin(_t4);
-    highp float _t12 = _t5 * _t10 - _t11 * _t1;
-    highp float _t13 = _t11 * _t3 - _t6 * _t10;
-    highp float _t14 = _t12 * _t12 + _t7 * _t7 + _t13 * _t13;
-    highp float _t15 = (_t14 > 0.0) ? 1.0 / _t14 : 0.0;
-    highp float _t16 = _t9 * _t9 * _t15;
-    bool _t17 = _t16 <= 1.0;
-    highp float _t18 = (_t17) ? _t16 : 1.0;
-    highp float _t19 = _t18 * _t18;
-    highp float _t20 = _t19 * _t19;
-    highp float _t21 = _t20 * (2.75573188e-06 - _t18 * 2.50520991e-08 + (1.60577024e-10 - _t18 * 7.54937183e-13) * _t19) + (_t19 * (0.00833333377 - _t18 * 0.000198412701) + (1.0 - _t18 * 0.166666672));
-    highp float _t22 = sqrt(_t15);
-    highp float _t23 = _t9 * _t22;
-    highp float _t24 = _t21 * ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t25 = _t20 * (_t19 * (2.08744777e-09 - _t18 * 1.13046204e-11) + (2.48015876e-05 - _t18 * 2.75573029e-07)) + (_t19 * (0.0416666679 - _t18 * 0.00138888892) + (1.0 - _t18 * 0.5));
-    highp float _t26 = _t6 * _t25;
-    highp float _t27 = _t8 * _t13;
-    highp float _t28 = _t15 * (_t27 * _t27);
-    bool _t29 = _t28 <= 1.0;
-    highp float _t30 = (_t29) ? _t28 : 1.0;
-    highp float _t31 = _t30 * _t30;
-    highp float _t32 = _t31 * _t31;
-    highp float _t33 = _t32 * ((2.08744777e-09 - _t30 * 1.13046204e-11) * _t31 + (2.48015876e-05 - _t30 * 2.75573029e-07)) + ((0.0416666679 - _t30 * 0.00138888892) * _t31 + (1.0 - _t30 * 0.5));
-    highp float _t34 = _t33 * _t3;
-    highp float _t35 = _t22 * _t27;
-    highp float _t36 = 1.0 - _t30 * 0.166666672 + (0.00833333377 - _t30 * 0.000198412701) * _t31 + (_t31 * (1.60577024e-10 - _t30 * 7.54937183e-13) + (2.75573188e-06 - _t30 * 2.50520991e-08)) * _t32;
-    highp float _t37 = ((_t29) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * _t36;
-    highp float _t38 = _t33 * _t10;
-    highp float _t39 = _t12 * _t8;
-    highp float _t40 = _t15 * (_t39 * _t39);
-    bool _t41 = _t40 <= 1.0;
-    highp float _t42 = (_t41) ? _t40 : 1.0;
-    highp float _t43 = _t42 * _t42;
-    highp float _t44 = _t43 * _t43;
-    highp float _t45 = 1.0 - _t42 * 0.5 + (0.0416666679 - 0.00138888892 * _t42) * _t43 + _t44 * ((2.08744777e-09 - 1.13046204e-11 * _t42) * _t43 + (2.48015876e-05 - _t42 * 2.75573029e-07));
-    highp float _t46 = _t45 * _t11;
-    highp float _t47 = _t22 * _t39;
-    highp float _t48 = -_t47;
-    highp float _t49 = ((1.60577024e-10 - 7.54937183e-13 * _t42) * _t43 + (2.75573188e-06 - 2.50520991e-08 * _t42)) * _t44 + ((0.00833333377 - 0.000198412701 * _t42) * _t43 + (1.0 - 0.166666672 * _t42));
-    highp float _t50 = ((_t41) ? _t48 : ((_t48 > 0.0) ? 1.0 : (-1.0))) * _t49;
-    highp float _t51 = _t45 * _t5;
-    highp float _t52 = _t1 * _t25;
-    highp float _t53 = ((_t41) ? _t47 : ((_t47 > 0.0) ? 1.0 : (-1.0))) * _t49;
-    highp float _t54 = -_t23;
-    highp float _t55 = _t21 * ((_t17) ? _t54 : ((_t54 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t56 = -_t35;
-    highp float _t57 = ((_t29) ? _t56 : ((_t56 > 0.0) ? 1.0 : (-1.0))) * _t36;
-    return ((_t24 * _t1 + _t26) * (_t34 - _t37 * _t10) + ((_t38 + _t37 * _t3) * (_t46 - _t5 * _t50) + (_t51 + _t11 * _t50) * (_t52 - _t6 * _t24))) * ((_t51 + _t11 * _t53) * (_t52 - _t6 * _t55) + ((_t34 - _t57 * _t10) * (_t26 + _t1 * _t55) + (_t46 - _t5 * _t53) * (_t38 + _t57 * _t3)));
+    highp float _t2 = 6.28318548 * (t * 0.5);
+    highp float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    highp float _t4 = _t3 * _t3;
+    highp float _t5 = gyroid_proj_o2_cos(_t0);
+    highp float _t6 = 6.28318548 * p.x;
+    highp float _t7 = gyroid_proj_o2_cos(_t6);
+    highp float _t8 = 6.28318548 * p.y;
+    highp float _t9 = gyroid_proj_o2_sin(_t8);
+    highp float _t10 = _t5 * _t7 - _t1 * _t9;
+    highp float _t11 = _t10 * _t10;
+    highp float _t12 = gyroid_proj_o2_sin(_t6);
+    highp float _t13 = gyroid_proj_o2_cos(_t8);
+    highp float _t14 = _t9 * _t12 - _t5 * _t13;
+    highp float _t15 = _t14 * _t14;
+    highp float _t16 = _t1 * _t12 - _t13 * _t7;
+    highp float _t17 = _t16 * _t16;
+    highp float _t18 = _t11 + _t15 + _t17;
+    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    highp float _t20 = _t4 * _t11 * _t19;
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = sqrt(_t18) * _t19;
+    highp float _t24 = _t3 * _t23;
+    highp float _t25 = (_t22 * (2.75573188e-06 - 2.50520991e-08 * _t20 + (1.60577024e-10 - 7.54937183e-13 * _t20) * _t21) + (1.0 - 0.166666672 * _t20 + (0.00833333377 - 0.000198412701 * _t20) * _t21)) * (_t10 * _t24);
+    highp float _t26 = 1.0 - _t20 * 0.5 + (0.0416666679 - 0.00138888892 * _t20) * _t21 + _t22 * ((2.08744777e-09 - 1.13046204e-11 * _t20) * _t21 + (2.48015876e-05 - _t20 * 2.75573029e-07));
+    highp float _t27 = _t4 * _t15 * _t19;
+    highp float _t28 = _t27 * _t27;
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = 1.0 - _t27 * 0.5 + _t28 * (0.0416666679 - _t27 * 0.00138888892) + _t29 * (2.48015876e-05 - _t27 * 2.75573029e-07 + _t28 * (2.08744777e-09 - _t27 * 1.13046204e-11));
+    highp float _t31 = (1.0 - _t27 * 0.166666672 + _t28 * (0.00833333377 - _t27 * 0.000198412701) + (2.75573188e-06 - _t27 * 2.50520991e-08 + _t28 * (1.60577024e-10 - _t27 * 7.54937183e-13)) * _t29) * (_t14 * _t24);
+    highp float _t32 = _t4 * _t17 * _t19;
+    highp float _t33 = _t32 * _t32;
+    highp float _t34 = _t33 * _t33;
+    highp float _t35 = _t34 * ((2.08744777e-09 - _t32 * 1.13046204e-11) * _t33 + (2.48015876e-05 - _t32 * 2.75573029e-07)) + ((0.0416666679 - _t32 * 0.00138888892) * _t33 + (1.0 - _t32 * 0.5));
+    highp float _t36 = ((0.00833333377 - _t32 * 0.000198412701) * _t33 + (1.0 - _t32 * 0.166666672) + ((1.60577024e-10 - _t32 * 7.54937183e-13) * _t33 + (2.75573188e-06 - _t32 * 2.50520991e-08)) * _t34) * (_t24 * _t16);
+    highp float _t37 = -_t2;
+    highp float _t38 = (_t37 <= 1.0) ? (((-1.0) <= _t37) ? _t37 : (-1.0)) : 1.0;
+    highp float _t39 = _t38 * _t38;
+    highp float _t40 = _t39 * _t11 * _t19;
+    highp float _t41 = _t40 * _t40;
+    highp float _t42 = _t41 * _t41;
+    highp float _t43 = _t42 * (2.48015876e-05 - 2.75573029e-07 * _t40 + _t41 * (2.08744777e-09 - 1.13046204e-11 * _t40)) + (_t41 * (0.0416666679 - 0.00138888892 * _t40) + (1.0 - 0.5 * _t40));
+    highp float _t44 = _t23 * _t38;
+    highp float _t45 = (1.0 - 0.166666672 * _t40 + _t41 * (0.00833333377 - 0.000198412701 * _t40) + (2.75573188e-06 - 2.50520991e-08 * _t40 + _t41 * (1.60577024e-10 - 7.54937183e-13 * _t40)) * _t42) * (_t10 * _t44);
+    highp float _t46 = _t39 * _t15 * _t19;
+    highp float _t47 = _t46 * _t46;
+    highp float _t48 = _t47 * _t47;
+    highp float _t49 = _t48 * (_t47 * (2.08744777e-09 - _t46 * 1.13046204e-11) + (2.48015876e-05 - _t46 * 2.75573029e-07)) + (1.0 - _t46 * 0.5 + _t47 * (0.0416666679 - 0.00138888892 * _t46));
+    highp float _t50 = (_t47 * (0.00833333377 - _t46 * 0.000198412701) + (1.0 - 0.166666672 * _t46) + (_t47 * (1.60577024e-10 - 7.54937183e-13 * _t46) + (2.75573188e-06 - 2.50520991e-08 * _t46)) * _t48) * (_t44 * _t14);
+    highp float _t51 = _t39 * _t17 * _t19;
+    highp float _t52 = _t51 * _t51;
+    highp float _t53 = _t52 * _t52;
+    highp float _t54 = _t44 * _t16 * (_t53 * (2.75573188e-06 - 2.50520991e-08 * _t51 + (1.60577024e-10 - 7.54937183e-13 * _t51) * _t52) + (_t52 * (0.00833333377 - 0.000198412701 * _t51) + (1.0 - 0.166666672 * _t51)));
+    highp float _t55 = (2.48015876e-05 - _t51 * 2.75573029e-07 + _t52 * (2.08744777e-09 - 1.13046204e-11 * _t51)) * _t53 + ((0.0416666679 - 0.00138888892 * _t51) * _t52 + (1.0 - _t51 * 0.5));
+    return ((_t1 * _t25 + _t5 * _t26) * (_t9 * _t30 + _t13 * _t31) + (_t1 * _t26 - _t5 * _t25) * (_t35 * _t7 - _t36 * _t12) + (_t13 * _t30 - _t31 * _t9) * (_t35 * _t12 + _t36 * _t7)) * ((_t5 * _t43 + _t1 * _t45) * (_t49 * _t9 + _t13 * _t50) + ((_t13 * _t49 - _t9 * _t50) * (_t54 * _t7 + _t55 * _t12) + (_t55 * _t7 - _t54 * _t12) * (_t1 * _t43 - _t5 * _t45)));
 }
 
-// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 191.
+// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 178.
 highp vec3 gyroid_proj_o2_normal(highp vec3 p, highp float h)
 {
-    highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = gyroid_proj_o2_cos(_t0);
-    highp float _t2 = 6.28318548 * p.x;
-    highp float _t3 = gyroid_proj_o2_cos(_t2);
-    highp float _t4 = gyroid_proj_o2_sin(_t0);
-    highp float _t5 = 6.28318548 * p.y;
+    highp float _t0 = 6.28318548 * h;
+    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t2 = _t1 * _t1;
+    highp float _t3 = p.z * 6.28318548;
+    highp float _t4 = gyroid_proj_o2_sin(_t3);
+    highp float _t5 = 6.28318548 * p.x;
     highp float _t6 = gyroid_proj_o2_sin(_t5);
-    highp float _t7 = _t1 * _t3 - _t4 * _t6;
-    highp float _t8 = gyroid_proj_o2_sin(_t2);
+    highp float _t7 = 6.28318548 * p.y;
+    highp float _t8 = gyroid_proj_o2_cos(_t7);
     highp float _t9 = gyroid_proj_o2_cos(_t5);
-    highp float _t10 = _t6 * _t8 - _t1 * _t9;
-    highp float _t11 = _t4 * _t8 - _t9 * _t3;
-    highp float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
-    highp float _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    highp float _t14 = 6.28318548 * h;
-    highp float _t15 = _t14 * _t11;
-    highp float _t16 = _t13 * (_t15 * _t15);
-    bool _t17 = _t16 <= 1.0;
-    highp float _t18 = (_t17) ? _t16 : 1.0;
-    highp float _t19 = _t18 * _t18;
-    highp float _t20 = _t19 * _t19;
-    highp float _t21 = _t19 * (0.0416666679 - _t18 * 0.00138888892) + (1.0 - _t18 * 0.5) + _t20 * (2.48015876e-05 - _t18 * 2.75573029e-07 + _t19 * (2.08744777e-09 - _t18 * 1.13046204e-11));
-    highp float _t22 = sqrt(_t13);
-    highp float _t23 = -(_t15 * _t22);
-    highp float _t24 = ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t18 * 0.166666672 + _t19 * (0.00833333377 - _t18 * 0.000198412701) + _t20 * (2.75573188e-06 - _t18 * 2.50520991e-08 + _t19 * (1.60577024e-10 - _t18 * 7.54937183e-13)));
-    highp float _t25 = _t21 * _t8 - _t24 * _t3;
-    highp float _t26 = _t14 * _t10;
-    highp float _t27 = _t13 * (_t26 * _t26);
-    bool _t28 = _t27 <= 1.0;
-    highp float _t29 = (_t28) ? _t27 : 1.0;
-    highp float _t30 = _t29 * _t29;
-    highp float _t31 = _t30 * _t30;
-    highp float _t32 = _t30 * (0.0416666679 - _t29 * 0.00138888892) + (1.0 - _t29 * 0.5) + ((2.08744777e-09 - _t29 * 1.13046204e-11) * _t30 + (2.48015876e-05 - _t29 * 2.75573029e-07)) * _t31;
-    highp float _t33 = -(_t26 * _t22);
-    highp float _t34 = (_t30 * (0.00833333377 - _t29 * 0.000198412701) + (1.0 - _t29 * 0.166666672) + (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - _t29 * 7.54937183e-13)) * _t31) * ((_t28) ? _t33 : ((_t33 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t35 = _t6 * _t32 - _t34 * _t9;
-    highp float _t36 = _t7 * _t14;
-    highp float _t37 = _t13 * (_t36 * _t36);
-    bool _t38 = _t37 <= 1.0;
-    highp float _t39 = (_t38) ? _t37 : 1.0;
-    highp float _t40 = _t39 * _t39;
-    highp float _t41 = _t40 * _t40;
-    highp float _t42 = _t41 * (2.48015876e-05 - _t39 * 2.75573029e-07 + (2.08744777e-09 - _t39 * 1.13046204e-11) * _t40) + (1.0 - _t39 * 0.5 + _t40 * (0.0416666679 - _t39 * 0.00138888892));
-    highp float _t43 = _t36 * _t22;
-    highp float _t44 = (_t41 * ((1.60577024e-10 - _t39 * 7.54937183e-13) * _t40 + (2.75573188e-06 - _t39 * 2.50520991e-08)) + ((0.00833333377 - _t39 * 0.000198412701) * _t40 + (1.0 - _t39 * 0.166666672))) * ((_t38) ? _t43 : ((_t43 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t45 = _t1 * _t42 + _t4 * _t44;
-    highp float _t46 = _t34 * _t6 + _t9 * _t32;
-    highp float _t47 = _t25 * _t35 - _t45 * _t46;
-    highp float _t48 = _t4 * _t42 - _t1 * _t44;
-    highp float _t49 = _t24 * _t8 + _t21 * _t3;
-    highp float _t50 = _t35 * _t48 - _t45 * _t49;
-    highp float _t51 = _t49 * _t46 - _t25 * _t48;
-    highp float _t52 = _t47 * _t47 + _t50 * _t50 + _t51 * _t51;
-    highp float _t53 = (_t52 > 0.0) ? 1.0 / sqrt(_t52) : 0.0;
-    return vec3(_t53 * _t51, -(_t47 * _t53), -(_t50 * _t53));
+    highp float _t10 = _t4 * _t6 - _t8 * _t9;
+    highp float _t11 = _t10 * _t10;
+    highp float _t12 = gyroid_proj_o2_cos(_t3);
+    highp float _t13 = gyroid_proj_o2_sin(_t7);
+    highp float _t14 = _t12 * _t9 - _t4 * _t13;
+    highp float _t15 = _t14 * _t14;
+    highp float _t16 = _t13 * _t6 - _t12 * _t8;
+    highp float _t17 = _t16 * _t16;
+    highp float _t18 = _t15 + _t17 + _t11;
+    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    highp float _t20 = _t2 * _t11 * _t19;
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = (2.48015876e-05 - _t20 * 2.75573029e-07 + _t21 * (2.08744777e-09 - 1.13046204e-11 * _t20)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.0416666679 - 0.00138888892 * _t20));
+    highp float _t24 = _t1 * (sqrt(_t18) * _t19);
+    highp float _t25 = ((_t21 * (1.60577024e-10 - 7.54937183e-13 * _t20) + (2.75573188e-06 - 2.50520991e-08 * _t20)) * _t22 + (1.0 - 0.166666672 * _t20 + _t21 * (0.00833333377 - 0.000198412701 * _t20))) * (_t24 * _t10);
+    highp float _t26 = _t23 * _t6 + _t25 * _t9;
+    highp float _t27 = _t15 * _t2 * _t19;
+    highp float _t28 = _t27 * _t27;
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = (_t28 * (2.08744777e-09 - _t27 * 1.13046204e-11) + (2.48015876e-05 - _t27 * 2.75573029e-07)) * _t29 + ((0.0416666679 - 0.00138888892 * _t27) * _t28 + (1.0 - _t27 * 0.5));
+    highp float _t31 = ((2.75573188e-06 - 2.50520991e-08 * _t27 + _t28 * (1.60577024e-10 - 7.54937183e-13 * _t27)) * _t29 + (_t28 * (0.00833333377 - 0.000198412701 * _t27) + (1.0 - 0.166666672 * _t27))) * (_t14 * _t24);
+    highp float _t32 = _t4 * _t30 - _t12 * _t31;
+    highp float _t33 = _t23 * _t9 - _t25 * _t6;
+    highp float _t34 = _t2 * _t17 * _t19;
+    highp float _t35 = _t34 * _t34;
+    highp float _t36 = _t35 * _t35;
+    highp float _t37 = _t36 * (2.48015876e-05 - _t34 * 2.75573029e-07 + (2.08744777e-09 - _t34 * 1.13046204e-11) * _t35) + ((0.0416666679 - _t34 * 0.00138888892) * _t35 + (1.0 - _t34 * 0.5));
+    highp float _t38 = _t16 * _t24 * (1.0 - _t34 * 0.166666672 + (0.00833333377 - _t34 * 0.000198412701) * _t35 + _t36 * (2.75573188e-06 - _t34 * 2.50520991e-08 + (1.60577024e-10 - _t34 * 7.54937183e-13) * _t35));
+    highp float _t39 = _t8 * _t37 - _t38 * _t13;
+    highp float _t40 = _t26 * _t32 - _t33 * _t39;
+    highp float _t41 = _t38 * _t8 + _t13 * _t37;
+    highp float _t42 = _t4 * _t31 + _t12 * _t30;
+    highp float _t43 = _t26 * _t41 - _t42 * _t39;
+    highp float _t44 = _t33 * _t42 - _t41 * _t32;
+    highp float _t45 = _t43 * _t43 + (_t44 * _t44 + _t40 * _t40);
+    highp float _t46 = (_t45 > 0.0) ? 1.0 / sqrt(_t45) : 0.0;
+    return vec3(-(_t40 * _t46), -(_t46 * _t43), _t46 * _t44);
 }
 
 

@@ -40,9 +40,10 @@
  *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
  *   0, so every function returns a finite value for finite input (do not compile with
  *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
- *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
- *   keeps |q_K - p| <= |h| and so the bound above.
+ *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
+ *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
+ *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
+ *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -51,11 +52,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    15
- *   offset   175
- *   shell    204
- *   normal   205
+ *   offset   161
+ *   shell    290
+ *   normal   191
  */
-/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":175,"shell":204,"normal":205}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":161,"shell":290,"normal":191}} */
 #ifndef OFFSETGEN_NEOVIUS_PROJ_O2_H
 #define OFFSETGEN_NEOVIUS_PROJ_O2_H
 
@@ -70,10 +71,17 @@
 #else
 #define OFFSETGEN_TRIG_INT_(x) ((int)(x))
 #endif
+/* Adding and subtracting 1.5 * 2^52 rounds to an integer only under IEEE evaluation in double. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUND_(v) rint(v)
+#else
+#define OFFSETGEN_TRIG_ROUND_(v) (((v) + 6755399441055744.0) - 6755399441055744.0)
+#endif
 /* sin and cos for the scalar functions, inline: libm's sin and cos cost more than the rest of a
  * low-order offset. The same reduction and polynomials as the batch helpers (within 1.5 ulp of
- * libm), so the scalar and batch functions agree to the last bits; the quadrant comes from an int
- * conversion, so plain -O2 needs no rint call. Arguments beyond 1.0e8 radians go to libm.
+ * libm), so the scalar and batch functions agree to the last bits. a * 2/pi is rounded by adding
+ * and subtracting 1.5 * 2^52 (no rint call at plain -O2, and a shorter dependency chain than an int
+ * conversion, which only picks the quadrant here). Arguments beyond 1.0e8 radians go to libm.
  * A sin and a cos of the same argument share the reduction and both polynomials after inlining.
  * Define OFFSETGEN_LIBM_TRIG before including this header to call libm's sin and cos instead. */
 static inline double offsetgen_sin(double a)
@@ -81,9 +89,8 @@ static inline double offsetgen_sin(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return sin(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -98,9 +105,8 @@ static inline double offsetgen_cos(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cos(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -110,6 +116,7 @@ static inline double offsetgen_cos(double a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INT_
+#undef OFFSETGEN_TRIG_ROUND_
 #endif /* OFFSETGEN_SCALAR_TRIG_DOUBLE_V1 */
 
 /* F, the field; the surface is F = 0.
@@ -124,197 +131,184 @@ static inline double neovius_proj_o2_field(double x, double y, double z)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 175
+ * Total ops: 161
  */
 static inline double neovius_proj_o2_offset(double x, double y, double z, double h)
 {
-    const double _t0 = 6.2831853071795862 * y;
-    const double _t1 = offsetgen_cos(_t0);
-    const double _t2 = z * 6.2831853071795862;
-    const double _t3 = offsetgen_cos(_t2);
-    const double _t4 = offsetgen_sin(_t0);
-    const double _t5 = 6.2831853071795862 * x;
+    const double _t0 = 6.2831853071795862 * h;
+    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    const double _t2 = _t1 * _t1;
+    const double _t3 = 6.2831853071795862 * x;
+    const double _t4 = offsetgen_sin(_t3);
+    const double _t5 = z * 6.2831853071795862;
     const double _t6 = offsetgen_cos(_t5);
-    const double _t7 = 4.0 * (_t3 * _t4 * _t6) + _t4 * 3.0;
-    const double _t8 = offsetgen_sin(_t2);
-    const double _t9 = _t8 * 3.0 + 4.0 * (_t8 * _t1 * _t6);
-    const double _t10 = offsetgen_sin(_t5);
-    const double _t11 = 3.0 * _t10 + 4.0 * (_t3 * _t1 * _t10);
-    const double _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
-    const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    const double _t14 = 6.2831853071795862 * h;
-    const double _t15 = _t14 * _t7;
-    const double _t16 = _t13 * (_t15 * _t15);
-    const int _t17 = _t16 <= 1.0;
-    const double _t18 = (_t17) ? _t16 : 1.0;
-    const double _t19 = _t18 * _t18;
-    const double _t20 = _t19 * _t19;
-    const double _t21 = sqrt(_t13);
-    const double _t22 = -(_t15 * _t21);
-    const double _t23 = _t1 * ((_t19 * (2.0874477943664777e-09 - _t18 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07)) * _t20 + (_t19 * (0.041666666666666102 - 0.0013888888888798428 * _t18) + (1.0 - _t18 * 0.5))) + _t4 * (((_t17) ? _t22 : ((_t22 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - _t18 * 0.00019841269841216566) * _t19 + (1.0 - _t18 * 0.16666666666666666) + (2.755731919201122e-06 - _t18 * 2.5052099244914114e-08 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)) * _t20));
-    const double _t24 = _t9 * _t14;
-    const double _t25 = _t24 * _t24 * _t13;
-    const int _t26 = _t25 <= 1.0;
-    const double _t27 = -(_t24 * _t21);
-    const double _t28 = (_t26) ? _t25 : 1.0;
-    const double _t29 = _t28 * _t28;
+    const double _t7 = 6.2831853071795862 * y;
+    const double _t8 = offsetgen_cos(_t7);
+    const double _t9 = 3.0 * _t4 + 4.0 * (_t6 * _t8 * _t4);
+    const double _t10 = _t9 * _t9;
+    const double _t11 = offsetgen_sin(_t7);
+    const double _t12 = offsetgen_cos(_t3);
+    const double _t13 = 4.0 * (_t6 * _t11 * _t12) + _t11 * 3.0;
+    const double _t14 = _t13 * _t13;
+    const double _t15 = offsetgen_sin(_t5);
+    const double _t16 = _t15 * 3.0 + 4.0 * (_t15 * _t8 * _t12);
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t14 + _t17 + _t10;
+    const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
+    const double _t20 = _t2 * _t10 * _t19;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = _t1 * (_t19 * sqrt(_t18));
+    const double _t24 = (1.0 - _t20 * 0.5 + (0.041666666666666102 - _t20 * 0.0013888888888798428) * _t21 + _t22 * (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07 + _t21 * (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11))) * _t12 - (_t22 * ((1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) * _t21 + (2.755731919201122e-06 - _t20 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t20 * 0.00019841269841216566) * _t21 + (1.0 - _t20 * 0.16666666666666666))) * (_t9 * _t23) * _t4;
+    const double _t25 = _t17 * _t2 * _t19;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = _t26 * _t26;
+    const double _t28 = _t6 * (1.0 - _t25 * 0.5 + (0.041666666666666102 - _t25 * 0.0013888888888798428) * _t26 + (2.4801587247292686e-05 - _t25 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t25 * 1.1304620460700782e-11) * _t26) * _t27) - (1.0 - _t25 * 0.16666666666666666 + (0.0083333333333333003 - _t25 * 0.00019841269841216566) * _t26 + (2.755731919201122e-06 - _t25 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t25 * 7.549371704181243e-13) * _t26) * _t27) * (_t16 * _t23) * _t15;
+    const double _t29 = _t14 * _t2 * _t19;
     const double _t30 = _t29 * _t29;
-    const double _t31 = _t8 * (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t28 + _t29 * (0.0083333333333333003 - 0.00019841269841216566 * _t28) + _t30 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + _t29 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28)))) + _t3 * (_t30 * (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + _t29 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t28)) + (1.0 - _t28 * 0.5 + _t29 * (0.041666666666666102 - 0.0013888888888798428 * _t28)));
-    const double _t32 = _t14 * _t11;
-    const double _t33 = _t13 * (_t32 * _t32);
-    const int _t34 = _t33 <= 1.0;
-    const double _t35 = (_t34) ? _t33 : 1.0;
-    const double _t36 = _t35 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = -(_t21 * _t32);
-    const double _t39 = ((_t36 * (1.6057701922579786e-10 - _t35 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t35 * 2.5052099244914114e-08)) * _t37 + (_t36 * (0.0083333333333333003 - _t35 * 0.00019841269841216566) + (1.0 - _t35 * 0.16666666666666666))) * ((_t34) ? _t38 : ((_t38 > 0.0) ? 1.0 : (-1.0))) * _t10 + (1.0 - _t35 * 0.5 + (0.041666666666666102 - _t35 * 0.0013888888888798428) * _t36 + _t37 * ((2.0874477943664777e-09 - _t35 * 1.1304620460700782e-11) * _t36 + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07))) * _t6;
-    return 4.0 * (_t23 * _t31 * _t39) + _t39 * 3.0 + _t31 * 3.0 + _t23 * 3.0;
+    const double _t31 = _t30 * _t30;
+    const double _t32 = _t8 * (1.0 - _t29 * 0.5 + (0.041666666666666102 - _t29 * 0.0013888888888798428) * _t30 + _t31 * (_t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07))) - _t13 * _t23 * (1.0 - _t29 * 0.16666666666666666 + _t30 * (0.0083333333333333003 - _t29 * 0.00019841269841216566) + _t31 * (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13))) * _t11;
+    return 3.0 * _t24 + (_t28 * 3.0 + 3.0 * _t32) + 4.0 * (_t28 * _t24 * _t32);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 204
+ * Total ops: 290
  */
 static inline double neovius_proj_o2_shell(double x, double y, double z, double t)
 {
-    const double _t0 = 6.2831853071795862 * x;
-    const double _t1 = offsetgen_cos(_t0);
-    const double _t2 = z * 6.2831853071795862;
-    const double _t3 = offsetgen_cos(_t2);
-    const double _t4 = 6.2831853071795862 * y;
-    const double _t5 = offsetgen_sin(_t4);
-    const double _t6 = 4.0 * (_t3 * _t5 * _t1) + _t5 * 3.0;
-    const double _t7 = offsetgen_sin(_t2);
-    const double _t8 = offsetgen_cos(_t4);
-    const double _t9 = _t7 * 3.0 + 4.0 * (_t7 * _t8 * _t1);
-    const double _t10 = offsetgen_sin(_t0);
-    const double _t11 = 3.0 * _t10 + 4.0 * (_t3 * _t8 * _t10);
-    const double _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    const double _t14 = 6.2831853071795862 * (t * 0.5);
-    const double _t15 = _t14 * _t11;
-    const double _t16 = _t13 * (_t15 * _t15);
-    const int _t17 = _t16 <= 1.0;
-    const double _t18 = (_t17) ? _t16 : 1.0;
-    const double _t19 = _t18 * _t18;
-    const double _t20 = _t19 * _t19;
-    const double _t21 = _t1 * ((0.041666666666666102 - 0.0013888888888798428 * _t18) * _t19 + (1.0 - _t18 * 0.5) + (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t18) * _t19) * _t20);
-    const double _t22 = sqrt(_t13);
-    const double _t23 = _t22 * _t15;
-    const double _t24 = -_t23;
-    const double _t25 = (2.755731919201122e-06 - 2.5052099244914114e-08 * _t18 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)) * _t20 + (_t19 * (0.0083333333333333003 - 0.00019841269841216566 * _t18) + (1.0 - 0.16666666666666666 * _t18));
-    const double _t26 = _t21 + ((_t17) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0))) * _t25 * _t10;
-    const double _t27 = _t6 * _t14;
-    const double _t28 = _t13 * (_t27 * _t27);
-    const int _t29 = _t28 <= 1.0;
-    const double _t30 = (_t29) ? _t28 : 1.0;
+    const double _t0 = 6.2831853071795862 * (t * 0.5);
+    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    const double _t2 = _t1 * _t1;
+    const double _t3 = z * 6.2831853071795862;
+    const double _t4 = offsetgen_sin(_t3);
+    const double _t5 = 6.2831853071795862 * y;
+    const double _t6 = offsetgen_cos(_t5);
+    const double _t7 = 6.2831853071795862 * x;
+    const double _t8 = offsetgen_cos(_t7);
+    const double _t9 = _t4 * 3.0 + 4.0 * (_t4 * _t6 * _t8);
+    const double _t10 = _t9 * _t9;
+    const double _t11 = offsetgen_cos(_t3);
+    const double _t12 = offsetgen_sin(_t5);
+    const double _t13 = 4.0 * (_t11 * _t12 * _t8) + _t12 * 3.0;
+    const double _t14 = _t13 * _t13;
+    const double _t15 = offsetgen_sin(_t7);
+    const double _t16 = 3.0 * _t15 + 4.0 * (_t11 * _t6 * _t15);
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t14 + _t10 + _t17;
+    const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
+    const double _t20 = _t2 * _t10 * _t19;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = _t19 * sqrt(_t18);
+    const double _t24 = _t1 * _t23;
+    const double _t25 = ((0.041666666666666102 - 0.0013888888888798428 * _t20) * _t21 + (1.0 - _t20 * 0.5) + _t22 * (_t21 * (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07))) * _t11 - _t4 * (((0.0083333333333333003 - _t20 * 0.00019841269841216566) * _t21 + (1.0 - 0.16666666666666666 * _t20) + _t22 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) * _t21 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t20))) * (_t9 * _t24));
+    const double _t26 = _t19 * (_t2 * _t17);
+    const double _t27 = _t26 * _t26;
+    const double _t28 = _t27 * _t27;
+    const double _t29 = (1.0 - _t26 * 0.5 + _t27 * (0.041666666666666102 - 0.0013888888888798428 * _t26) + (2.4801587247292686e-05 - _t26 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t26) * _t27) * _t28) * _t8 - _t15 * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t26 + _t27 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t26)) * _t28 + (1.0 - 0.16666666666666666 * _t26 + _t27 * (0.0083333333333333003 - 0.00019841269841216566 * _t26))) * (_t24 * _t16));
+    const double _t30 = _t2 * _t14 * _t19;
     const double _t31 = _t30 * _t30;
     const double _t32 = _t31 * _t31;
-    const double _t33 = (_t31 * (0.041666666666666102 - _t30 * 0.0013888888888798428) + (1.0 - _t30 * 0.5) + _t32 * (_t31 * (2.0874477943664777e-09 - _t30 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t30 * 2.7557303701922228e-07))) * _t8;
-    const double _t34 = _t22 * _t27;
-    const double _t35 = -_t34;
-    const double _t36 = _t31 * (0.0083333333333333003 - _t30 * 0.00019841269841216566) + (1.0 - _t30 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t30 * 7.549371704181243e-13) * _t31 + (2.755731919201122e-06 - _t30 * 2.5052099244914114e-08)) * _t32;
-    const double _t37 = _t33 + _t5 * (((_t29) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * _t36);
-    const double _t38 = _t9 * _t14;
-    const double _t39 = _t38 * _t38 * _t13;
-    const int _t40 = _t39 <= 1.0;
-    const double _t41 = (_t40) ? _t39 : 1.0;
-    const double _t42 = _t41 * _t41;
+    const double _t33 = _t6 * ((2.4801587247292686e-05 - _t30 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t30 * 1.1304620460700782e-11) * _t31) * _t32 + ((0.041666666666666102 - 0.0013888888888798428 * _t30) * _t31 + (1.0 - _t30 * 0.5))) - _t13 * _t24 * ((0.0083333333333333003 - _t30 * 0.00019841269841216566) * _t31 + (1.0 - _t30 * 0.16666666666666666) + (_t31 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t30) + (2.755731919201122e-06 - _t30 * 2.5052099244914114e-08)) * _t32) * _t12;
+    const double _t34 = -_t0;
+    const double _t35 = (_t34 <= 1.0) ? (((-1.0) <= _t34) ? _t34 : (-1.0)) : 1.0;
+    const double _t36 = _t35 * _t35;
+    const double _t37 = _t36 * _t14 * _t19;
+    const double _t38 = _t37 * _t37;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = _t35 * _t23;
+    const double _t41 = _t6 * (_t39 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t37) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07)) + (1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) * _t39 + ((0.0083333333333333003 - 0.00019841269841216566 * _t37) * _t38 + (1.0 - 0.16666666666666666 * _t37))) * (_t13 * _t40) * _t12;
+    const double _t42 = _t19 * (_t36 * _t17);
     const double _t43 = _t42 * _t42;
-    const double _t44 = ((1.6057701922579786e-10 - _t41 * 7.549371704181243e-13) * _t42 + (2.755731919201122e-06 - _t41 * 2.5052099244914114e-08)) * _t43 + ((0.0083333333333333003 - _t41 * 0.00019841269841216566) * _t42 + (1.0 - _t41 * 0.16666666666666666));
-    const double _t45 = _t22 * _t38;
-    const double _t46 = -_t45;
-    const double _t47 = _t3 * (_t43 * ((2.0874477943664777e-09 - _t41 * 1.1304620460700782e-11) * _t42 + (2.4801587247292686e-05 - _t41 * 2.7557303701922228e-07)) + ((0.041666666666666102 - _t41 * 0.0013888888888798428) * _t42 + (1.0 - _t41 * 0.5)));
-    const double _t48 = _t7 * (_t44 * ((_t40) ? _t46 : ((_t46 > 0.0) ? 1.0 : (-1.0)))) + _t47;
-    const double _t49 = _t7 * (_t44 * ((_t40) ? _t45 : ((_t45 > 0.0) ? 1.0 : (-1.0)))) + _t47;
-    const double _t50 = _t33 + _t36 * ((_t29) ? _t34 : ((_t34 > 0.0) ? 1.0 : (-1.0))) * _t5;
-    const double _t51 = _t21 + ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t25 * _t10;
-    return (_t26 * 3.0 + (_t37 * 3.0 + _t48 * 3.0) + 4.0 * (_t48 * (_t37 * _t26))) * (3.0 * _t49 + 4.0 * (_t50 * _t49 * _t51) + 3.0 * _t51 + _t50 * 3.0);
+    const double _t44 = _t43 * _t43;
+    const double _t45 = ((2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t42) * _t43) * _t44 + (1.0 - _t42 * 0.5 + _t43 * (0.041666666666666102 - 0.0013888888888798428 * _t42))) * _t8 - ((_t43 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42)) * _t44 + ((0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + (1.0 - 0.16666666666666666 * _t42))) * (_t40 * _t16) * _t15;
+    const double _t46 = _t36 * _t10 * _t19;
+    const double _t47 = _t46 * _t46;
+    const double _t48 = _t47 * _t47;
+    const double _t49 = _t11 * ((2.4801587247292686e-05 - _t46 * 2.7557303701922228e-07 + _t47 * (2.0874477943664777e-09 - _t46 * 1.1304620460700782e-11)) * _t48 + ((0.041666666666666102 - 0.0013888888888798428 * _t46) * _t47 + (1.0 - _t46 * 0.5))) - ((0.0083333333333333003 - _t46 * 0.00019841269841216566) * _t47 + (1.0 - 0.16666666666666666 * _t46) + _t48 * (_t47 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t46) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t46))) * (_t9 * _t40) * _t4;
+    return (_t25 * 3.0 + 3.0 * _t29 + 4.0 * (_t25 * _t33 * _t29) + _t33 * 3.0) * (_t41 * 3.0 + (4.0 * (_t45 * (_t49 * _t41)) + _t49 * 3.0 + _t45 * 3.0));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 205
+ * Total ops: 191
  */
 static inline void neovius_proj_o2_normal(double x, double y, double z, double h, double n[3])
 {
     const double _t0 = z * 6.2831853071795862;
-    const double _t1 = offsetgen_cos(_t0);
+    const double _t1 = offsetgen_sin(_t0);
     const double _t2 = 6.2831853071795862 * y;
-    const double _t3 = offsetgen_sin(_t2);
+    const double _t3 = offsetgen_cos(_t2);
     const double _t4 = 6.2831853071795862 * x;
     const double _t5 = offsetgen_cos(_t4);
-    const double _t6 = 4.0 * (_t1 * _t3 * _t5) + _t3 * 3.0;
-    const double _t7 = offsetgen_sin(_t0);
-    const double _t8 = offsetgen_cos(_t2);
-    const double _t9 = _t7 * 3.0 + 4.0 * (_t7 * _t8 * _t5);
-    const double _t10 = offsetgen_sin(_t4);
-    const double _t11 = 3.0 * _t10 + 4.0 * (_t1 * _t8 * _t10);
-    const double _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    const double _t14 = 6.2831853071795862 * h;
-    const double _t15 = _t14 * _t11;
-    const double _t16 = _t13 * (_t15 * _t15);
-    const int _t17 = _t16 <= 1.0;
-    const double _t18 = (_t17) ? _t16 : 1.0;
-    const double _t19 = _t18 * _t18;
-    const double _t20 = _t19 * _t19;
-    const double _t21 = 1.0 - _t18 * 0.5 + (0.041666666666666102 - _t18 * 0.0013888888888798428) * _t19 + _t20 * ((2.0874477943664777e-09 - _t18 * 1.1304620460700782e-11) * _t19 + (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07));
-    const double _t22 = sqrt(_t13);
-    const double _t23 = -(_t22 * _t15);
-    const double _t24 = ((_t19 * (1.6057701922579786e-10 - _t18 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t18 * 2.5052099244914114e-08)) * _t20 + (_t19 * (0.0083333333333333003 - _t18 * 0.00019841269841216566) + (1.0 - _t18 * 0.16666666666666666))) * ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0)));
-    const double _t25 = _t21 * _t10 - _t24 * _t5;
-    const double _t26 = _t14 * _t6;
-    const double _t27 = _t13 * (_t26 * _t26);
-    const int _t28 = _t27 <= 1.0;
-    const double _t29 = (_t28) ? _t27 : 1.0;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = _t30 * _t30;
-    const double _t32 = (_t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07)) * _t31 + (_t30 * (0.041666666666666102 - 0.0013888888888798428 * _t29) + (1.0 - _t29 * 0.5));
-    const double _t33 = -(_t26 * _t22);
-    const double _t34 = ((_t28) ? _t33 : ((_t33 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - _t29 * 0.00019841269841216566) * _t30 + (1.0 - _t29 * 0.16666666666666666) + (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t29)) * _t31);
-    const double _t35 = _t8 * _t32 + _t3 * _t34;
-    const double _t36 = _t9 * _t14;
-    const double _t37 = _t36 * _t36 * _t13;
-    const int _t38 = _t37 <= 1.0;
-    const double _t39 = -(_t36 * _t22);
-    const double _t40 = (_t38) ? _t37 : 1.0;
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t41 * _t41;
-    const double _t43 = ((_t38) ? _t39 : ((_t39 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t40 + _t41 * (0.0083333333333333003 - 0.00019841269841216566 * _t40) + _t42 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t40 + _t41 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t40)));
-    const double _t44 = _t42 * (2.4801587247292686e-05 - _t40 * 2.7557303701922228e-07 + _t41 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t40)) + (1.0 - _t40 * 0.5 + _t41 * (0.041666666666666102 - 0.0013888888888798428 * _t40));
-    const double _t45 = _t7 * _t43 + _t1 * _t44;
-    const double _t46 = 3.0 * _t25 + 4.0 * (_t35 * _t45 * _t25);
-    const double _t47 = _t7 * _t44 - _t1 * _t43;
-    const double _t48 = _t24 * _t10 + _t21 * _t5;
-    const double _t49 = 3.0 * _t47 + 4.0 * (_t47 * (_t35 * _t48));
-    const double _t50 = _t3 * _t32 - _t8 * _t34;
-    const double _t51 = 4.0 * (_t48 * (_t45 * _t50)) + _t50 * 3.0;
-    const double _t52 = _t49 * _t49 + (_t46 * _t46 + _t51 * _t51);
-    const double _t53 = (_t52 > 0.0) ? 1.0 / sqrt(_t52) : 0.0;
-    n[0] = -(_t46 * _t53);
-    n[1] = -(_t51 * _t53);
-    n[2] = -(_t49 * _t53);
+    const double _t6 = _t1 * 3.0 + 4.0 * (_t1 * _t3 * _t5);
+    const double _t7 = _t6 * _t6;
+    const double _t8 = 6.2831853071795862 * h;
+    const double _t9 = (_t8 <= 1.0) ? (((-1.0) <= _t8) ? _t8 : (-1.0)) : 1.0;
+    const double _t10 = _t9 * _t9;
+    const double _t11 = offsetgen_cos(_t0);
+    const double _t12 = offsetgen_sin(_t2);
+    const double _t13 = 4.0 * (_t11 * _t12 * _t5) + _t12 * 3.0;
+    const double _t14 = _t13 * _t13;
+    const double _t15 = offsetgen_sin(_t4);
+    const double _t16 = 3.0 * _t15 + 4.0 * (_t11 * _t3 * _t15);
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t14 + _t7 + _t17;
+    const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
+    const double _t20 = _t7 * _t10 * _t19;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = 1.0 - _t20 * 0.5 + (0.041666666666666102 - _t20 * 0.0013888888888798428) * _t21 + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11) * _t21) * _t22;
+    const double _t24 = _t9 * (_t19 * sqrt(_t18));
+    const double _t25 = (1.0 - _t20 * 0.16666666666666666 + (0.0083333333333333003 - _t20 * 0.00019841269841216566) * _t21 + (2.755731919201122e-06 - _t20 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) * _t21) * _t22) * (_t6 * _t24);
+    const double _t26 = _t1 * _t23 + _t25 * _t11;
+    const double _t27 = _t10 * _t17 * _t19;
+    const double _t28 = _t27 * _t27;
+    const double _t29 = _t28 * _t28;
+    const double _t30 = 1.0 - _t27 * 0.5 + (0.041666666666666102 - _t27 * 0.0013888888888798428) * _t28 + _t29 * (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07 + _t28 * (2.0874477943664777e-09 - _t27 * 1.1304620460700782e-11));
+    const double _t31 = (_t29 * ((1.6057701922579786e-10 - _t27 * 7.549371704181243e-13) * _t28 + (2.755731919201122e-06 - _t27 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t27 * 0.00019841269841216566) * _t28 + (1.0 - _t27 * 0.16666666666666666))) * (_t16 * _t24);
+    const double _t32 = _t30 * _t5 - _t31 * _t15;
+    const double _t33 = _t14 * _t10 * _t19;
+    const double _t34 = _t33 * _t33;
+    const double _t35 = _t34 * _t34;
+    const double _t36 = 1.0 - _t33 * 0.5 + (0.041666666666666102 - _t33 * 0.0013888888888798428) * _t34 + _t35 * (_t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07));
+    const double _t37 = _t13 * _t24 * (1.0 - _t33 * 0.16666666666666666 + _t34 * (0.0083333333333333003 - _t33 * 0.00019841269841216566) + _t35 * (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08 + _t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13)));
+    const double _t38 = _t3 * _t36 - _t37 * _t12;
+    const double _t39 = 3.0 * _t26 + 4.0 * (_t32 * _t26 * _t38);
+    const double _t40 = _t30 * _t15 + _t31 * _t5;
+    const double _t41 = _t11 * _t23 - _t25 * _t1;
+    const double _t42 = 4.0 * (_t40 * _t41 * _t38) + _t40 * 3.0;
+    const double _t43 = _t37 * _t3 + _t12 * _t36;
+    const double _t44 = 4.0 * (_t32 * (_t43 * _t41)) + _t43 * 3.0;
+    const double _t45 = _t39 * _t39 + _t42 * _t42 + _t44 * _t44;
+    const double _t46 = (_t45 > 0.0) ? 1.0 / sqrt(_t45) : 0.0;
+    n[0] = -(_t46 * _t42);
+    n[1] = -(_t44 * _t46);
+    n[2] = -(_t39 * _t46);
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #define OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #ifdef __cplusplus
 #define OFFSETGEN_TRIG_INTF_(x) static_cast<int>(x)
-#define OFFSETGEN_TRIG_FLOAT_(x) static_cast<float>(x)
 #else
 #define OFFSETGEN_TRIG_INTF_(x) ((int)(x))
-#define OFFSETGEN_TRIG_FLOAT_(x) ((float)(x))
+#endif
+/* Adding and subtracting 1.5 * 2^23 rounds to an integer only under IEEE evaluation in float. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUNDF_(v) rintf(v)
+#else
+#define OFFSETGEN_TRIG_ROUNDF_(v) (((v) + 12582912.0f) - 12582912.0f)
 #endif
 /* Float sin and cos for the scalar functions: the batch helpers' reduction and Cephes polynomials,
- * with an int-conversion quadrant; sinf/cosf beyond 8192.0 radians, or everywhere with
+ * with the quadrant rounded as in the double helpers; sinf/cosf beyond 8192.0 radians, or everywhere with
  * OFFSETGEN_LIBM_TRIG defined. */
 static inline float offsetgen_sinf(float a)
 {
 #ifdef OFFSETGEN_LIBM_TRIG
     return sinf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -329,9 +323,8 @@ static inline float offsetgen_cosf(float a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cosf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -341,7 +334,7 @@ static inline float offsetgen_cosf(float a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INTF_
-#undef OFFSETGEN_TRIG_FLOAT_
+#undef OFFSETGEN_TRIG_ROUNDF_
 #endif /* OFFSETGEN_SCALAR_TRIG_FLOAT_V1 */
 /* F, the field; the surface is F = 0.
  * Total ops: 15
@@ -355,175 +348,159 @@ static inline float neovius_proj_o2_fieldf(float x, float y, float z)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 175
+ * Total ops: 161
  */
 static inline float neovius_proj_o2_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = 6.28318548f * y;
-    const float _t1 = offsetgen_cosf(_t0);
-    const float _t2 = z * 6.28318548f;
-    const float _t3 = offsetgen_cosf(_t2);
-    const float _t4 = offsetgen_sinf(_t0);
-    const float _t5 = 6.28318548f * x;
+    const float _t0 = 6.28318548f * h;
+    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+    const float _t2 = _t1 * _t1;
+    const float _t3 = 6.28318548f * x;
+    const float _t4 = offsetgen_sinf(_t3);
+    const float _t5 = z * 6.28318548f;
     const float _t6 = offsetgen_cosf(_t5);
-    const float _t7 = 4.0f * (_t3 * _t4 * _t6) + _t4 * 3.0f;
-    const float _t8 = offsetgen_sinf(_t2);
-    const float _t9 = _t8 * 3.0f + 4.0f * (_t8 * _t1 * _t6);
-    const float _t10 = offsetgen_sinf(_t5);
-    const float _t11 = 3.0f * _t10 + 4.0f * (_t3 * _t1 * _t10);
-    const float _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
-    const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
-    const float _t14 = 6.28318548f * h;
-    const float _t15 = _t14 * _t7;
-    const float _t16 = _t13 * (_t15 * _t15);
-    const int _t17 = _t16 <= 1.0f;
-    const float _t18 = (_t17) ? _t16 : 1.0f;
-    const float _t19 = _t18 * _t18;
-    const float _t20 = _t19 * _t19;
-    const float _t21 = sqrtf(_t13);
-    const float _t22 = -(_t15 * _t21);
-    const float _t23 = _t1 * ((_t19 * (2.08744777e-09f - _t18 * 1.13046204e-11f) + (2.48015876e-05f - _t18 * 2.75573029e-07f)) * _t20 + (_t19 * (0.0416666679f - 0.00138888892f * _t18) + (1.0f - _t18 * 0.5f))) + _t4 * (((_t17) ? _t22 : ((_t22 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - _t18 * 0.000198412701f) * _t19 + (1.0f - _t18 * 0.166666672f) + (2.75573188e-06f - _t18 * 2.50520991e-08f + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20));
-    const float _t24 = _t9 * _t14;
-    const float _t25 = _t24 * _t24 * _t13;
-    const int _t26 = _t25 <= 1.0f;
-    const float _t27 = -(_t24 * _t21);
-    const float _t28 = (_t26) ? _t25 : 1.0f;
-    const float _t29 = _t28 * _t28;
+    const float _t7 = 6.28318548f * y;
+    const float _t8 = offsetgen_cosf(_t7);
+    const float _t9 = 3.0f * _t4 + 4.0f * (_t6 * _t8 * _t4);
+    const float _t10 = _t9 * _t9;
+    const float _t11 = offsetgen_sinf(_t7);
+    const float _t12 = offsetgen_cosf(_t3);
+    const float _t13 = 4.0f * (_t6 * _t11 * _t12) + _t11 * 3.0f;
+    const float _t14 = _t13 * _t13;
+    const float _t15 = offsetgen_sinf(_t5);
+    const float _t16 = _t15 * 3.0f + 4.0f * (_t15 * _t8 * _t12);
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t14 + _t17 + _t10;
+    const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
+    const float _t20 = _t2 * _t10 * _t19;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = _t1 * (_t19 * sqrtf(_t18));
+    const float _t24 = (1.0f - _t20 * 0.5f + (0.0416666679f - _t20 * 0.00138888892f) * _t21 + _t22 * (2.48015876e-05f - _t20 * 2.75573029e-07f + _t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f))) * _t12 - (_t22 * ((1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21 + (2.75573188e-06f - _t20 * 2.50520991e-08f)) + ((0.00833333377f - _t20 * 0.000198412701f) * _t21 + (1.0f - _t20 * 0.166666672f))) * (_t9 * _t23) * _t4;
+    const float _t25 = _t17 * _t2 * _t19;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = _t26 * _t26;
+    const float _t28 = _t6 * (1.0f - _t25 * 0.5f + (0.0416666679f - _t25 * 0.00138888892f) * _t26 + (2.48015876e-05f - _t25 * 2.75573029e-07f + (2.08744777e-09f - _t25 * 1.13046204e-11f) * _t26) * _t27) - (1.0f - _t25 * 0.166666672f + (0.00833333377f - _t25 * 0.000198412701f) * _t26 + (2.75573188e-06f - _t25 * 2.50520991e-08f + (1.60577024e-10f - _t25 * 7.54937183e-13f) * _t26) * _t27) * (_t16 * _t23) * _t15;
+    const float _t29 = _t14 * _t2 * _t19;
     const float _t30 = _t29 * _t29;
-    const float _t31 = _t8 * (((_t26) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t28 + _t29 * (0.00833333377f - 0.000198412701f * _t28) + _t30 * (2.75573188e-06f - 2.50520991e-08f * _t28 + _t29 * (1.60577024e-10f - 7.54937183e-13f * _t28)))) + _t3 * (_t30 * (2.48015876e-05f - _t28 * 2.75573029e-07f + _t29 * (2.08744777e-09f - 1.13046204e-11f * _t28)) + (1.0f - _t28 * 0.5f + _t29 * (0.0416666679f - 0.00138888892f * _t28)));
-    const float _t32 = _t14 * _t11;
-    const float _t33 = _t13 * (_t32 * _t32);
-    const int _t34 = _t33 <= 1.0f;
-    const float _t35 = (_t34) ? _t33 : 1.0f;
-    const float _t36 = _t35 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = -(_t21 * _t32);
-    const float _t39 = ((_t36 * (1.60577024e-10f - _t35 * 7.54937183e-13f) + (2.75573188e-06f - _t35 * 2.50520991e-08f)) * _t37 + (_t36 * (0.00833333377f - _t35 * 0.000198412701f) + (1.0f - _t35 * 0.166666672f))) * ((_t34) ? _t38 : ((_t38 > 0.0f) ? 1.0f : (-1.0f))) * _t10 + (1.0f - _t35 * 0.5f + (0.0416666679f - _t35 * 0.00138888892f) * _t36 + _t37 * ((2.08744777e-09f - _t35 * 1.13046204e-11f) * _t36 + (2.48015876e-05f - _t35 * 2.75573029e-07f))) * _t6;
-    return 4.0f * (_t23 * _t31 * _t39) + _t39 * 3.0f + _t31 * 3.0f + _t23 * 3.0f;
+    const float _t31 = _t30 * _t30;
+    const float _t32 = _t8 * (1.0f - _t29 * 0.5f + (0.0416666679f - _t29 * 0.00138888892f) * _t30 + _t31 * (_t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f) + (2.48015876e-05f - _t29 * 2.75573029e-07f))) - _t13 * _t23 * (1.0f - _t29 * 0.166666672f + _t30 * (0.00833333377f - _t29 * 0.000198412701f) + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f))) * _t11;
+    return 3.0f * _t24 + (_t28 * 3.0f + 3.0f * _t32) + 4.0f * (_t28 * _t24 * _t32);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 204
+ * Total ops: 290
  */
 static inline float neovius_proj_o2_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = 6.28318548f * x;
-    const float _t1 = offsetgen_cosf(_t0);
-    const float _t2 = z * 6.28318548f;
-    const float _t3 = offsetgen_cosf(_t2);
-    const float _t4 = 6.28318548f * y;
-    const float _t5 = offsetgen_sinf(_t4);
-    const float _t6 = 4.0f * (_t3 * _t5 * _t1) + _t5 * 3.0f;
-    const float _t7 = offsetgen_sinf(_t2);
-    const float _t8 = offsetgen_cosf(_t4);
-    const float _t9 = _t7 * 3.0f + 4.0f * (_t7 * _t8 * _t1);
-    const float _t10 = offsetgen_sinf(_t0);
-    const float _t11 = 3.0f * _t10 + 4.0f * (_t3 * _t8 * _t10);
-    const float _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
-    const float _t14 = 6.28318548f * (t * 0.5f);
-    const float _t15 = _t14 * _t11;
-    const float _t16 = _t13 * (_t15 * _t15);
-    const int _t17 = _t16 <= 1.0f;
-    const float _t18 = (_t17) ? _t16 : 1.0f;
-    const float _t19 = _t18 * _t18;
-    const float _t20 = _t19 * _t19;
-    const float _t21 = _t1 * ((0.0416666679f - 0.00138888892f * _t18) * _t19 + (1.0f - _t18 * 0.5f) + (2.48015876e-05f - _t18 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t18) * _t19) * _t20);
-    const float _t22 = sqrtf(_t13);
-    const float _t23 = _t22 * _t15;
-    const float _t24 = -_t23;
-    const float _t25 = (2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20 + (_t19 * (0.00833333377f - 0.000198412701f * _t18) + (1.0f - 0.166666672f * _t18));
-    const float _t26 = _t21 + ((_t17) ? _t24 : ((_t24 > 0.0f) ? 1.0f : (-1.0f))) * _t25 * _t10;
-    const float _t27 = _t6 * _t14;
-    const float _t28 = _t13 * (_t27 * _t27);
-    const int _t29 = _t28 <= 1.0f;
-    const float _t30 = (_t29) ? _t28 : 1.0f;
+    const float _t0 = 6.28318548f * (t * 0.5f);
+    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+    const float _t2 = _t1 * _t1;
+    const float _t3 = z * 6.28318548f;
+    const float _t4 = offsetgen_sinf(_t3);
+    const float _t5 = 6.28318548f * y;
+    const float _t6 = offsetgen_cosf(_t5);
+    const float _t7 = 6.28318548f * x;
+    const float _t8 = offsetgen_cosf(_t7);
+    const float _t9 = _t4 * 3.0f + 4.0f * (_t4 * _t6 * _t8);
+    const float _t10 = _t9 * _t9;
+    const float _t11 = offsetgen_cosf(_t3);
+    const float _t12 = offsetgen_sinf(_t5);
+    const float _t13 = 4.0f * (_t11 * _t12 * _t8) + _t12 * 3.0f;
+    const float _t14 = _t13 * _t13;
+    const float _t15 = offsetgen_sinf(_t7);
+    const float _t16 = 3.0f * _t15 + 4.0f * (_t11 * _t6 * _t15);
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t14 + _t10 + _t17;
+    const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
+    const float _t20 = _t2 * _t10 * _t19;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = _t19 * sqrtf(_t18);
+    const float _t24 = _t1 * _t23;
+    const float _t25 = ((0.0416666679f - 0.00138888892f * _t20) * _t21 + (1.0f - _t20 * 0.5f) + _t22 * (_t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f) + (2.48015876e-05f - _t20 * 2.75573029e-07f))) * _t11 - _t4 * (((0.00833333377f - _t20 * 0.000198412701f) * _t21 + (1.0f - 0.166666672f * _t20) + _t22 * ((1.60577024e-10f - 7.54937183e-13f * _t20) * _t21 + (2.75573188e-06f - 2.50520991e-08f * _t20))) * (_t9 * _t24));
+    const float _t26 = _t19 * (_t2 * _t17);
+    const float _t27 = _t26 * _t26;
+    const float _t28 = _t27 * _t27;
+    const float _t29 = (1.0f - _t26 * 0.5f + _t27 * (0.0416666679f - 0.00138888892f * _t26) + (2.48015876e-05f - _t26 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t26) * _t27) * _t28) * _t8 - _t15 * (((2.75573188e-06f - 2.50520991e-08f * _t26 + _t27 * (1.60577024e-10f - 7.54937183e-13f * _t26)) * _t28 + (1.0f - 0.166666672f * _t26 + _t27 * (0.00833333377f - 0.000198412701f * _t26))) * (_t24 * _t16));
+    const float _t30 = _t2 * _t14 * _t19;
     const float _t31 = _t30 * _t30;
     const float _t32 = _t31 * _t31;
-    const float _t33 = (_t31 * (0.0416666679f - _t30 * 0.00138888892f) + (1.0f - _t30 * 0.5f) + _t32 * (_t31 * (2.08744777e-09f - _t30 * 1.13046204e-11f) + (2.48015876e-05f - _t30 * 2.75573029e-07f))) * _t8;
-    const float _t34 = _t22 * _t27;
-    const float _t35 = -_t34;
-    const float _t36 = _t31 * (0.00833333377f - _t30 * 0.000198412701f) + (1.0f - _t30 * 0.166666672f) + ((1.60577024e-10f - _t30 * 7.54937183e-13f) * _t31 + (2.75573188e-06f - _t30 * 2.50520991e-08f)) * _t32;
-    const float _t37 = _t33 + _t5 * (((_t29) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f))) * _t36);
-    const float _t38 = _t9 * _t14;
-    const float _t39 = _t38 * _t38 * _t13;
-    const int _t40 = _t39 <= 1.0f;
-    const float _t41 = (_t40) ? _t39 : 1.0f;
-    const float _t42 = _t41 * _t41;
+    const float _t33 = _t6 * ((2.48015876e-05f - _t30 * 2.75573029e-07f + (2.08744777e-09f - _t30 * 1.13046204e-11f) * _t31) * _t32 + ((0.0416666679f - 0.00138888892f * _t30) * _t31 + (1.0f - _t30 * 0.5f))) - _t13 * _t24 * ((0.00833333377f - _t30 * 0.000198412701f) * _t31 + (1.0f - _t30 * 0.166666672f) + (_t31 * (1.60577024e-10f - 7.54937183e-13f * _t30) + (2.75573188e-06f - _t30 * 2.50520991e-08f)) * _t32) * _t12;
+    const float _t34 = -_t0;
+    const float _t35 = (_t34 <= 1.0f) ? (((-1.0f) <= _t34) ? _t34 : (-1.0f)) : 1.0f;
+    const float _t36 = _t35 * _t35;
+    const float _t37 = _t36 * _t14 * _t19;
+    const float _t38 = _t37 * _t37;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = _t35 * _t23;
+    const float _t41 = _t6 * (_t39 * ((2.08744777e-09f - 1.13046204e-11f * _t37) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f)) + (1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38)) - (((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) * _t39 + ((0.00833333377f - 0.000198412701f * _t37) * _t38 + (1.0f - 0.166666672f * _t37))) * (_t13 * _t40) * _t12;
+    const float _t42 = _t19 * (_t36 * _t17);
     const float _t43 = _t42 * _t42;
-    const float _t44 = ((1.60577024e-10f - _t41 * 7.54937183e-13f) * _t42 + (2.75573188e-06f - _t41 * 2.50520991e-08f)) * _t43 + ((0.00833333377f - _t41 * 0.000198412701f) * _t42 + (1.0f - _t41 * 0.166666672f));
-    const float _t45 = _t22 * _t38;
-    const float _t46 = -_t45;
-    const float _t47 = _t3 * (_t43 * ((2.08744777e-09f - _t41 * 1.13046204e-11f) * _t42 + (2.48015876e-05f - _t41 * 2.75573029e-07f)) + ((0.0416666679f - _t41 * 0.00138888892f) * _t42 + (1.0f - _t41 * 0.5f)));
-    const float _t48 = _t7 * (_t44 * ((_t40) ? _t46 : ((_t46 > 0.0f) ? 1.0f : (-1.0f)))) + _t47;
-    const float _t49 = _t7 * (_t44 * ((_t40) ? _t45 : ((_t45 > 0.0f) ? 1.0f : (-1.0f)))) + _t47;
-    const float _t50 = _t33 + _t36 * ((_t29) ? _t34 : ((_t34 > 0.0f) ? 1.0f : (-1.0f))) * _t5;
-    const float _t51 = _t21 + ((_t17) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f))) * _t25 * _t10;
-    return (_t26 * 3.0f + (_t37 * 3.0f + _t48 * 3.0f) + 4.0f * (_t48 * (_t37 * _t26))) * (3.0f * _t49 + 4.0f * (_t50 * _t49 * _t51) + 3.0f * _t51 + _t50 * 3.0f);
+    const float _t44 = _t43 * _t43;
+    const float _t45 = ((2.48015876e-05f - _t42 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t42) * _t43) * _t44 + (1.0f - _t42 * 0.5f + _t43 * (0.0416666679f - 0.00138888892f * _t42))) * _t8 - ((_t43 * (1.60577024e-10f - 7.54937183e-13f * _t42) + (2.75573188e-06f - 2.50520991e-08f * _t42)) * _t44 + ((0.00833333377f - 0.000198412701f * _t42) * _t43 + (1.0f - 0.166666672f * _t42))) * (_t40 * _t16) * _t15;
+    const float _t46 = _t36 * _t10 * _t19;
+    const float _t47 = _t46 * _t46;
+    const float _t48 = _t47 * _t47;
+    const float _t49 = _t11 * ((2.48015876e-05f - _t46 * 2.75573029e-07f + _t47 * (2.08744777e-09f - _t46 * 1.13046204e-11f)) * _t48 + ((0.0416666679f - 0.00138888892f * _t46) * _t47 + (1.0f - _t46 * 0.5f))) - ((0.00833333377f - _t46 * 0.000198412701f) * _t47 + (1.0f - 0.166666672f * _t46) + _t48 * (_t47 * (1.60577024e-10f - 7.54937183e-13f * _t46) + (2.75573188e-06f - 2.50520991e-08f * _t46))) * (_t9 * _t40) * _t4;
+    return (_t25 * 3.0f + 3.0f * _t29 + 4.0f * (_t25 * _t33 * _t29) + _t33 * 3.0f) * (_t41 * 3.0f + (4.0f * (_t45 * (_t49 * _t41)) + _t49 * 3.0f + _t45 * 3.0f));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 205
+ * Total ops: 191
  */
 static inline void neovius_proj_o2_normalf(float x, float y, float z, float h, float n[3])
 {
     const float _t0 = z * 6.28318548f;
-    const float _t1 = offsetgen_cosf(_t0);
+    const float _t1 = offsetgen_sinf(_t0);
     const float _t2 = 6.28318548f * y;
-    const float _t3 = offsetgen_sinf(_t2);
+    const float _t3 = offsetgen_cosf(_t2);
     const float _t4 = 6.28318548f * x;
     const float _t5 = offsetgen_cosf(_t4);
-    const float _t6 = 4.0f * (_t1 * _t3 * _t5) + _t3 * 3.0f;
-    const float _t7 = offsetgen_sinf(_t0);
-    const float _t8 = offsetgen_cosf(_t2);
-    const float _t9 = _t7 * 3.0f + 4.0f * (_t7 * _t8 * _t5);
-    const float _t10 = offsetgen_sinf(_t4);
-    const float _t11 = 3.0f * _t10 + 4.0f * (_t1 * _t8 * _t10);
-    const float _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
-    const float _t14 = 6.28318548f * h;
-    const float _t15 = _t14 * _t11;
-    const float _t16 = _t13 * (_t15 * _t15);
-    const int _t17 = _t16 <= 1.0f;
-    const float _t18 = (_t17) ? _t16 : 1.0f;
-    const float _t19 = _t18 * _t18;
-    const float _t20 = _t19 * _t19;
-    const float _t21 = 1.0f - _t18 * 0.5f + (0.0416666679f - _t18 * 0.00138888892f) * _t19 + _t20 * ((2.08744777e-09f - _t18 * 1.13046204e-11f) * _t19 + (2.48015876e-05f - _t18 * 2.75573029e-07f));
-    const float _t22 = sqrtf(_t13);
-    const float _t23 = -(_t22 * _t15);
-    const float _t24 = ((_t19 * (1.60577024e-10f - _t18 * 7.54937183e-13f) + (2.75573188e-06f - _t18 * 2.50520991e-08f)) * _t20 + (_t19 * (0.00833333377f - _t18 * 0.000198412701f) + (1.0f - _t18 * 0.166666672f))) * ((_t17) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f)));
-    const float _t25 = _t21 * _t10 - _t24 * _t5;
-    const float _t26 = _t14 * _t6;
-    const float _t27 = _t13 * (_t26 * _t26);
-    const int _t28 = _t27 <= 1.0f;
-    const float _t29 = (_t28) ? _t27 : 1.0f;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = _t30 * _t30;
-    const float _t32 = (_t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f) + (2.48015876e-05f - _t29 * 2.75573029e-07f)) * _t31 + (_t30 * (0.0416666679f - 0.00138888892f * _t29) + (1.0f - _t29 * 0.5f));
-    const float _t33 = -(_t26 * _t22);
-    const float _t34 = ((_t28) ? _t33 : ((_t33 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - _t29 * 0.000198412701f) * _t30 + (1.0f - _t29 * 0.166666672f) + (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - 7.54937183e-13f * _t29)) * _t31);
-    const float _t35 = _t8 * _t32 + _t3 * _t34;
-    const float _t36 = _t9 * _t14;
-    const float _t37 = _t36 * _t36 * _t13;
-    const int _t38 = _t37 <= 1.0f;
-    const float _t39 = -(_t36 * _t22);
-    const float _t40 = (_t38) ? _t37 : 1.0f;
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t41 * _t41;
-    const float _t43 = ((_t38) ? _t39 : ((_t39 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t40 + _t41 * (0.00833333377f - 0.000198412701f * _t40) + _t42 * (2.75573188e-06f - 2.50520991e-08f * _t40 + _t41 * (1.60577024e-10f - 7.54937183e-13f * _t40)));
-    const float _t44 = _t42 * (2.48015876e-05f - _t40 * 2.75573029e-07f + _t41 * (2.08744777e-09f - 1.13046204e-11f * _t40)) + (1.0f - _t40 * 0.5f + _t41 * (0.0416666679f - 0.00138888892f * _t40));
-    const float _t45 = _t7 * _t43 + _t1 * _t44;
-    const float _t46 = 3.0f * _t25 + 4.0f * (_t35 * _t45 * _t25);
-    const float _t47 = _t7 * _t44 - _t1 * _t43;
-    const float _t48 = _t24 * _t10 + _t21 * _t5;
-    const float _t49 = 3.0f * _t47 + 4.0f * (_t47 * (_t35 * _t48));
-    const float _t50 = _t3 * _t32 - _t8 * _t34;
-    const float _t51 = 4.0f * (_t48 * (_t45 * _t50)) + _t50 * 3.0f;
-    const float _t52 = _t49 * _t49 + (_t46 * _t46 + _t51 * _t51);
-    const float _t53 = (_t52 > 0.0f) ? 1.0f / sqrtf(_t52) : 0.0f;
-    n[0] = -(_t46 * _t53);
-    n[1] = -(_t51 * _t53);
-    n[2] = -(_t49 * _t53);
+    const float _t6 = _t1 * 3.0f + 4.0f * (_t1 * _t3 * _t5);
+    const float _t7 = _t6 * _t6;
+    const float _t8 = 6.28318548f * h;
+    const float _t9 = (_t8 <= 1.0f) ? (((-1.0f) <= _t8) ? _t8 : (-1.0f)) : 1.0f;
+    const float _t10 = _t9 * _t9;
+    const float _t11 = offsetgen_cosf(_t0);
+    const float _t12 = offsetgen_sinf(_t2);
+    const float _t13 = 4.0f * (_t11 * _t12 * _t5) + _t12 * 3.0f;
+    const float _t14 = _t13 * _t13;
+    const float _t15 = offsetgen_sinf(_t4);
+    const float _t16 = 3.0f * _t15 + 4.0f * (_t11 * _t3 * _t15);
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t14 + _t7 + _t17;
+    const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
+    const float _t20 = _t7 * _t10 * _t19;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = 1.0f - _t20 * 0.5f + (0.0416666679f - _t20 * 0.00138888892f) * _t21 + (2.48015876e-05f - _t20 * 2.75573029e-07f + (2.08744777e-09f - _t20 * 1.13046204e-11f) * _t21) * _t22;
+    const float _t24 = _t9 * (_t19 * sqrtf(_t18));
+    const float _t25 = (1.0f - _t20 * 0.166666672f + (0.00833333377f - _t20 * 0.000198412701f) * _t21 + (2.75573188e-06f - _t20 * 2.50520991e-08f + (1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21) * _t22) * (_t6 * _t24);
+    const float _t26 = _t1 * _t23 + _t25 * _t11;
+    const float _t27 = _t10 * _t17 * _t19;
+    const float _t28 = _t27 * _t27;
+    const float _t29 = _t28 * _t28;
+    const float _t30 = 1.0f - _t27 * 0.5f + (0.0416666679f - _t27 * 0.00138888892f) * _t28 + _t29 * (2.48015876e-05f - _t27 * 2.75573029e-07f + _t28 * (2.08744777e-09f - _t27 * 1.13046204e-11f));
+    const float _t31 = (_t29 * ((1.60577024e-10f - _t27 * 7.54937183e-13f) * _t28 + (2.75573188e-06f - _t27 * 2.50520991e-08f)) + ((0.00833333377f - _t27 * 0.000198412701f) * _t28 + (1.0f - _t27 * 0.166666672f))) * (_t16 * _t24);
+    const float _t32 = _t30 * _t5 - _t31 * _t15;
+    const float _t33 = _t14 * _t10 * _t19;
+    const float _t34 = _t33 * _t33;
+    const float _t35 = _t34 * _t34;
+    const float _t36 = 1.0f - _t33 * 0.5f + (0.0416666679f - _t33 * 0.00138888892f) * _t34 + _t35 * (_t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f) + (2.48015876e-05f - _t33 * 2.75573029e-07f));
+    const float _t37 = _t13 * _t24 * (1.0f - _t33 * 0.166666672f + _t34 * (0.00833333377f - _t33 * 0.000198412701f) + _t35 * (2.75573188e-06f - _t33 * 2.50520991e-08f + _t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f)));
+    const float _t38 = _t3 * _t36 - _t37 * _t12;
+    const float _t39 = 3.0f * _t26 + 4.0f * (_t32 * _t26 * _t38);
+    const float _t40 = _t30 * _t15 + _t31 * _t5;
+    const float _t41 = _t11 * _t23 - _t25 * _t1;
+    const float _t42 = 4.0f * (_t40 * _t41 * _t38) + _t40 * 3.0f;
+    const float _t43 = _t37 * _t3 + _t12 * _t36;
+    const float _t44 = 4.0f * (_t32 * (_t43 * _t41)) + _t43 * 3.0f;
+    const float _t45 = _t39 * _t39 + _t42 * _t42 + _t44 * _t44;
+    const float _t46 = (_t45 > 0.0f) ? 1.0f / sqrtf(_t45) : 0.0f;
+    n[0] = -(_t46 * _t42);
+    n[1] = -(_t44 * _t46);
+    n[2] = -(_t39 * _t46);
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -738,47 +715,40 @@ static inline void neovius_proj_o2_offset_n(size_t n, const double *x, const dou
     for (i = 0; i < blocked; i += 8) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
-            const double _t0 = 6.2831853071795862 * y[i + j];
-            const double _t1 = offsetgen_batch_cos(_t0);
-            const double _t2 = z[i + j] * 6.2831853071795862;
-            const double _t3 = offsetgen_batch_cos(_t2);
-            const double _t4 = offsetgen_batch_sin(_t0);
-            const double _t5 = 6.2831853071795862 * x[i + j];
+            const double _t0 = 6.2831853071795862 * h[i + j];
+            const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+            const double _t2 = _t1 * _t1;
+            const double _t3 = 6.2831853071795862 * x[i + j];
+            const double _t4 = offsetgen_batch_sin(_t3);
+            const double _t5 = z[i + j] * 6.2831853071795862;
             const double _t6 = offsetgen_batch_cos(_t5);
-            const double _t7 = 4.0 * (_t3 * _t4 * _t6) + _t4 * 3.0;
-            const double _t8 = offsetgen_batch_sin(_t2);
-            const double _t9 = _t8 * 3.0 + 4.0 * (_t8 * _t1 * _t6);
-            const double _t10 = offsetgen_batch_sin(_t5);
-            const double _t11 = 3.0 * _t10 + 4.0 * (_t3 * _t1 * _t10);
-            const double _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
-            const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-            const double _t14 = 6.2831853071795862 * h[i + j];
-            const double _t15 = _t14 * _t7;
-            const double _t16 = _t13 * (_t15 * _t15);
-            const int _t17 = _t16 <= 1.0;
-            const double _t18 = (_t17) ? _t16 : 1.0;
-            const double _t19 = _t18 * _t18;
-            const double _t20 = _t19 * _t19;
-            const double _t21 = offsetgen_batch_sqrt(_t13);
-            const double _t22 = -(_t15 * _t21);
-            const double _t23 = _t1 * ((_t19 * (2.0874477943664777e-09 - _t18 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07)) * _t20 + (_t19 * (0.041666666666666102 - 0.0013888888888798428 * _t18) + (1.0 - _t18 * 0.5))) + _t4 * (((_t17) ? _t22 : ((_t22 > 0.0) ? 1.0 : (-1.0))) * ((0.0083333333333333003 - _t18 * 0.00019841269841216566) * _t19 + (1.0 - _t18 * 0.16666666666666666) + (2.755731919201122e-06 - _t18 * 2.5052099244914114e-08 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)) * _t20));
-            const double _t24 = _t9 * _t14;
-            const double _t25 = _t24 * _t24 * _t13;
-            const int _t26 = _t25 <= 1.0;
-            const double _t27 = -(_t24 * _t21);
-            const double _t28 = (_t26) ? _t25 : 1.0;
-            const double _t29 = _t28 * _t28;
+            const double _t7 = 6.2831853071795862 * y[i + j];
+            const double _t8 = offsetgen_batch_cos(_t7);
+            const double _t9 = 3.0 * _t4 + 4.0 * (_t6 * _t8 * _t4);
+            const double _t10 = _t9 * _t9;
+            const double _t11 = offsetgen_batch_sin(_t7);
+            const double _t12 = offsetgen_batch_cos(_t3);
+            const double _t13 = 4.0 * (_t6 * _t11 * _t12) + _t11 * 3.0;
+            const double _t14 = _t13 * _t13;
+            const double _t15 = offsetgen_batch_sin(_t5);
+            const double _t16 = _t15 * 3.0 + 4.0 * (_t15 * _t8 * _t12);
+            const double _t17 = _t16 * _t16;
+            const double _t18 = _t14 + _t17 + _t10;
+            const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
+            const double _t20 = _t2 * _t10 * _t19;
+            const double _t21 = _t20 * _t20;
+            const double _t22 = _t21 * _t21;
+            const double _t23 = _t1 * (_t19 * offsetgen_batch_sqrt(_t18));
+            const double _t24 = (1.0 - _t20 * 0.5 + (0.041666666666666102 - _t20 * 0.0013888888888798428) * _t21 + _t22 * (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07 + _t21 * (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11))) * _t12 - (_t22 * ((1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) * _t21 + (2.755731919201122e-06 - _t20 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t20 * 0.00019841269841216566) * _t21 + (1.0 - _t20 * 0.16666666666666666))) * (_t9 * _t23) * _t4;
+            const double _t25 = _t17 * _t2 * _t19;
+            const double _t26 = _t25 * _t25;
+            const double _t27 = _t26 * _t26;
+            const double _t28 = _t6 * (1.0 - _t25 * 0.5 + (0.041666666666666102 - _t25 * 0.0013888888888798428) * _t26 + (2.4801587247292686e-05 - _t25 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t25 * 1.1304620460700782e-11) * _t26) * _t27) - (1.0 - _t25 * 0.16666666666666666 + (0.0083333333333333003 - _t25 * 0.00019841269841216566) * _t26 + (2.755731919201122e-06 - _t25 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t25 * 7.549371704181243e-13) * _t26) * _t27) * (_t16 * _t23) * _t15;
+            const double _t29 = _t14 * _t2 * _t19;
             const double _t30 = _t29 * _t29;
-            const double _t31 = _t8 * (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t28 + _t29 * (0.0083333333333333003 - 0.00019841269841216566 * _t28) + _t30 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + _t29 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28)))) + _t3 * (_t30 * (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + _t29 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t28)) + (1.0 - _t28 * 0.5 + _t29 * (0.041666666666666102 - 0.0013888888888798428 * _t28)));
-            const double _t32 = _t14 * _t11;
-            const double _t33 = _t13 * (_t32 * _t32);
-            const int _t34 = _t33 <= 1.0;
-            const double _t35 = (_t34) ? _t33 : 1.0;
-            const double _t36 = _t35 * _t35;
-            const double _t37 = _t36 * _t36;
-            const double _t38 = -(_t21 * _t32);
-            const double _t39 = ((_t36 * (1.6057701922579786e-10 - _t35 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t35 * 2.5052099244914114e-08)) * _t37 + (_t36 * (0.0083333333333333003 - _t35 * 0.00019841269841216566) + (1.0 - _t35 * 0.16666666666666666))) * ((_t34) ? _t38 : ((_t38 > 0.0) ? 1.0 : (-1.0))) * _t10 + (1.0 - _t35 * 0.5 + (0.041666666666666102 - _t35 * 0.0013888888888798428) * _t36 + _t37 * ((2.0874477943664777e-09 - _t35 * 1.1304620460700782e-11) * _t36 + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07))) * _t6;
-            out[i + j] = 4.0 * (_t23 * _t31 * _t39) + _t39 * 3.0 + _t31 * 3.0 + _t23 * 3.0;
+            const double _t31 = _t30 * _t30;
+            const double _t32 = _t8 * (1.0 - _t29 * 0.5 + (0.041666666666666102 - _t29 * 0.0013888888888798428) * _t30 + _t31 * (_t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07))) - _t13 * _t23 * (1.0 - _t29 * 0.16666666666666666 + _t30 * (0.0083333333333333003 - _t29 * 0.00019841269841216566) + _t31 * (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13))) * _t11;
+            out[i + j] = 3.0 * _t24 + (_t28 * 3.0 + 3.0 * _t32) + 4.0 * (_t28 * _t24 * _t32);
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -797,59 +767,57 @@ static inline void neovius_proj_o2_shell_n(size_t n, const double *x, const doub
     for (i = 0; i < blocked; i += 8) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
-            const double _t0 = 6.2831853071795862 * x[i + j];
-            const double _t1 = offsetgen_batch_cos(_t0);
-            const double _t2 = z[i + j] * 6.2831853071795862;
-            const double _t3 = offsetgen_batch_cos(_t2);
-            const double _t4 = 6.2831853071795862 * y[i + j];
-            const double _t5 = offsetgen_batch_sin(_t4);
-            const double _t6 = 4.0 * (_t3 * _t5 * _t1) + _t5 * 3.0;
-            const double _t7 = offsetgen_batch_sin(_t2);
-            const double _t8 = offsetgen_batch_cos(_t4);
-            const double _t9 = _t7 * 3.0 + 4.0 * (_t7 * _t8 * _t1);
-            const double _t10 = offsetgen_batch_sin(_t0);
-            const double _t11 = 3.0 * _t10 + 4.0 * (_t3 * _t8 * _t10);
-            const double _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-            const double _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-            const double _t14 = 6.2831853071795862 * (t[i + j] * 0.5);
-            const double _t15 = _t14 * _t11;
-            const double _t16 = _t13 * (_t15 * _t15);
-            const int _t17 = _t16 <= 1.0;
-            const double _t18 = (_t17) ? _t16 : 1.0;
-            const double _t19 = _t18 * _t18;
-            const double _t20 = _t19 * _t19;
-            const double _t21 = _t1 * ((0.041666666666666102 - 0.0013888888888798428 * _t18) * _t19 + (1.0 - _t18 * 0.5) + (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t18) * _t19) * _t20);
-            const double _t22 = offsetgen_batch_sqrt(_t13);
-            const double _t23 = _t22 * _t15;
-            const double _t24 = -_t23;
-            const double _t25 = (2.755731919201122e-06 - 2.5052099244914114e-08 * _t18 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)) * _t20 + (_t19 * (0.0083333333333333003 - 0.00019841269841216566 * _t18) + (1.0 - 0.16666666666666666 * _t18));
-            const double _t26 = _t21 + ((_t17) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0))) * _t25 * _t10;
-            const double _t27 = _t6 * _t14;
-            const double _t28 = _t13 * (_t27 * _t27);
-            const int _t29 = _t28 <= 1.0;
-            const double _t30 = (_t29) ? _t28 : 1.0;
+            const double _t0 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+            const double _t2 = _t1 * _t1;
+            const double _t3 = z[i + j] * 6.2831853071795862;
+            const double _t4 = offsetgen_batch_sin(_t3);
+            const double _t5 = 6.2831853071795862 * y[i + j];
+            const double _t6 = offsetgen_batch_cos(_t5);
+            const double _t7 = 6.2831853071795862 * x[i + j];
+            const double _t8 = offsetgen_batch_cos(_t7);
+            const double _t9 = _t4 * 3.0 + 4.0 * (_t4 * _t6 * _t8);
+            const double _t10 = _t9 * _t9;
+            const double _t11 = offsetgen_batch_cos(_t3);
+            const double _t12 = offsetgen_batch_sin(_t5);
+            const double _t13 = 4.0 * (_t11 * _t12 * _t8) + _t12 * 3.0;
+            const double _t14 = _t13 * _t13;
+            const double _t15 = offsetgen_batch_sin(_t7);
+            const double _t16 = 3.0 * _t15 + 4.0 * (_t11 * _t6 * _t15);
+            const double _t17 = _t16 * _t16;
+            const double _t18 = _t14 + _t10 + _t17;
+            const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
+            const double _t20 = _t2 * _t10 * _t19;
+            const double _t21 = _t20 * _t20;
+            const double _t22 = _t21 * _t21;
+            const double _t23 = _t19 * offsetgen_batch_sqrt(_t18);
+            const double _t24 = _t1 * _t23;
+            const double _t25 = ((0.041666666666666102 - 0.0013888888888798428 * _t20) * _t21 + (1.0 - _t20 * 0.5) + _t22 * (_t21 * (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07))) * _t11 - _t4 * (((0.0083333333333333003 - _t20 * 0.00019841269841216566) * _t21 + (1.0 - 0.16666666666666666 * _t20) + _t22 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) * _t21 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t20))) * (_t9 * _t24));
+            const double _t26 = _t19 * (_t2 * _t17);
+            const double _t27 = _t26 * _t26;
+            const double _t28 = _t27 * _t27;
+            const double _t29 = (1.0 - _t26 * 0.5 + _t27 * (0.041666666666666102 - 0.0013888888888798428 * _t26) + (2.4801587247292686e-05 - _t26 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t26) * _t27) * _t28) * _t8 - _t15 * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t26 + _t27 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t26)) * _t28 + (1.0 - 0.16666666666666666 * _t26 + _t27 * (0.0083333333333333003 - 0.00019841269841216566 * _t26))) * (_t24 * _t16));
+            const double _t30 = _t2 * _t14 * _t19;
             const double _t31 = _t30 * _t30;
             const double _t32 = _t31 * _t31;
-            const double _t33 = (_t31 * (0.041666666666666102 - _t30 * 0.0013888888888798428) + (1.0 - _t30 * 0.5) + _t32 * (_t31 * (2.0874477943664777e-09 - _t30 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t30 * 2.7557303701922228e-07))) * _t8;
-            const double _t34 = _t22 * _t27;
-            const double _t35 = -_t34;
-            const double _t36 = _t31 * (0.0083333333333333003 - _t30 * 0.00019841269841216566) + (1.0 - _t30 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t30 * 7.549371704181243e-13) * _t31 + (2.755731919201122e-06 - _t30 * 2.5052099244914114e-08)) * _t32;
-            const double _t37 = _t33 + _t5 * (((_t29) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * _t36);
-            const double _t38 = _t9 * _t14;
-            const double _t39 = _t38 * _t38 * _t13;
-            const int _t40 = _t39 <= 1.0;
-            const double _t41 = (_t40) ? _t39 : 1.0;
-            const double _t42 = _t41 * _t41;
+            const double _t33 = _t6 * ((2.4801587247292686e-05 - _t30 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t30 * 1.1304620460700782e-11) * _t31) * _t32 + ((0.041666666666666102 - 0.0013888888888798428 * _t30) * _t31 + (1.0 - _t30 * 0.5))) - _t13 * _t24 * ((0.0083333333333333003 - _t30 * 0.00019841269841216566) * _t31 + (1.0 - _t30 * 0.16666666666666666) + (_t31 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t30) + (2.755731919201122e-06 - _t30 * 2.5052099244914114e-08)) * _t32) * _t12;
+            const double _t34 = -_t0;
+            const double _t35 = (_t34 <= 1.0) ? (((-1.0) <= _t34) ? _t34 : (-1.0)) : 1.0;
+            const double _t36 = _t35 * _t35;
+            const double _t37 = _t36 * _t14 * _t19;
+            const double _t38 = _t37 * _t37;
+            const double _t39 = _t38 * _t38;
+            const double _t40 = _t35 * _t23;
+            const double _t41 = _t6 * (_t39 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t37) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07)) + (1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) * _t39 + ((0.0083333333333333003 - 0.00019841269841216566 * _t37) * _t38 + (1.0 - 0.16666666666666666 * _t37))) * (_t13 * _t40) * _t12;
+            const double _t42 = _t19 * (_t36 * _t17);
             const double _t43 = _t42 * _t42;
-            const double _t44 = ((1.6057701922579786e-10 - _t41 * 7.549371704181243e-13) * _t42 + (2.755731919201122e-06 - _t41 * 2.5052099244914114e-08)) * _t43 + ((0.0083333333333333003 - _t41 * 0.00019841269841216566) * _t42 + (1.0 - _t41 * 0.16666666666666666));
-            const double _t45 = _t22 * _t38;
-            const double _t46 = -_t45;
-            const double _t47 = _t3 * (_t43 * ((2.0874477943664777e-09 - _t41 * 1.1304620460700782e-11) * _t42 + (2.4801587247292686e-05 - _t41 * 2.7557303701922228e-07)) + ((0.041666666666666102 - _t41 * 0.0013888888888798428) * _t42 + (1.0 - _t41 * 0.5)));
-            const double _t48 = _t7 * (_t44 * ((_t40) ? _t46 : ((_t46 > 0.0) ? 1.0 : (-1.0)))) + _t47;
-            const double _t49 = _t7 * (_t44 * ((_t40) ? _t45 : ((_t45 > 0.0) ? 1.0 : (-1.0)))) + _t47;
-            const double _t50 = _t33 + _t36 * ((_t29) ? _t34 : ((_t34 > 0.0) ? 1.0 : (-1.0))) * _t5;
-            const double _t51 = _t21 + ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t25 * _t10;
-            out[i + j] = (_t26 * 3.0 + (_t37 * 3.0 + _t48 * 3.0) + 4.0 * (_t48 * (_t37 * _t26))) * (3.0 * _t49 + 4.0 * (_t50 * _t49 * _t51) + 3.0 * _t51 + _t50 * 3.0);
+            const double _t44 = _t43 * _t43;
+            const double _t45 = ((2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t42) * _t43) * _t44 + (1.0 - _t42 * 0.5 + _t43 * (0.041666666666666102 - 0.0013888888888798428 * _t42))) * _t8 - ((_t43 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42)) * _t44 + ((0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + (1.0 - 0.16666666666666666 * _t42))) * (_t40 * _t16) * _t15;
+            const double _t46 = _t36 * _t10 * _t19;
+            const double _t47 = _t46 * _t46;
+            const double _t48 = _t47 * _t47;
+            const double _t49 = _t11 * ((2.4801587247292686e-05 - _t46 * 2.7557303701922228e-07 + _t47 * (2.0874477943664777e-09 - _t46 * 1.1304620460700782e-11)) * _t48 + ((0.041666666666666102 - 0.0013888888888798428 * _t46) * _t47 + (1.0 - _t46 * 0.5))) - ((0.0083333333333333003 - _t46 * 0.00019841269841216566) * _t47 + (1.0 - 0.16666666666666666 * _t46) + _t48 * (_t47 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t46) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t46))) * (_t9 * _t40) * _t4;
+            out[i + j] = (_t25 * 3.0 + 3.0 * _t29 + 4.0 * (_t25 * _t33 * _t29) + _t33 * 3.0) * (_t41 * 3.0 + (4.0 * (_t45 * (_t49 * _t41)) + _t49 * 3.0 + _t45 * 3.0));
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -868,47 +836,40 @@ static inline void neovius_proj_o2_offsetf_n(size_t n, const float *x, const flo
     for (i = 0; i < blocked; i += 16) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
-            const float _t0 = 6.28318548f * y[i + j];
-            const float _t1 = offsetgen_batch_cosf(_t0);
-            const float _t2 = z[i + j] * 6.28318548f;
-            const float _t3 = offsetgen_batch_cosf(_t2);
-            const float _t4 = offsetgen_batch_sinf(_t0);
-            const float _t5 = 6.28318548f * x[i + j];
+            const float _t0 = 6.28318548f * h[i + j];
+            const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+            const float _t2 = _t1 * _t1;
+            const float _t3 = 6.28318548f * x[i + j];
+            const float _t4 = offsetgen_batch_sinf(_t3);
+            const float _t5 = z[i + j] * 6.28318548f;
             const float _t6 = offsetgen_batch_cosf(_t5);
-            const float _t7 = 4.0f * (_t3 * _t4 * _t6) + _t4 * 3.0f;
-            const float _t8 = offsetgen_batch_sinf(_t2);
-            const float _t9 = _t8 * 3.0f + 4.0f * (_t8 * _t1 * _t6);
-            const float _t10 = offsetgen_batch_sinf(_t5);
-            const float _t11 = 3.0f * _t10 + 4.0f * (_t3 * _t1 * _t10);
-            const float _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
-            const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
-            const float _t14 = 6.28318548f * h[i + j];
-            const float _t15 = _t14 * _t7;
-            const float _t16 = _t13 * (_t15 * _t15);
-            const int _t17 = _t16 <= 1.0f;
-            const float _t18 = (_t17) ? _t16 : 1.0f;
-            const float _t19 = _t18 * _t18;
-            const float _t20 = _t19 * _t19;
-            const float _t21 = offsetgen_batch_sqrtf(_t13);
-            const float _t22 = -(_t15 * _t21);
-            const float _t23 = _t1 * ((_t19 * (2.08744777e-09f - _t18 * 1.13046204e-11f) + (2.48015876e-05f - _t18 * 2.75573029e-07f)) * _t20 + (_t19 * (0.0416666679f - 0.00138888892f * _t18) + (1.0f - _t18 * 0.5f))) + _t4 * (((_t17) ? _t22 : ((_t22 > 0.0f) ? 1.0f : (-1.0f))) * ((0.00833333377f - _t18 * 0.000198412701f) * _t19 + (1.0f - _t18 * 0.166666672f) + (2.75573188e-06f - _t18 * 2.50520991e-08f + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20));
-            const float _t24 = _t9 * _t14;
-            const float _t25 = _t24 * _t24 * _t13;
-            const int _t26 = _t25 <= 1.0f;
-            const float _t27 = -(_t24 * _t21);
-            const float _t28 = (_t26) ? _t25 : 1.0f;
-            const float _t29 = _t28 * _t28;
+            const float _t7 = 6.28318548f * y[i + j];
+            const float _t8 = offsetgen_batch_cosf(_t7);
+            const float _t9 = 3.0f * _t4 + 4.0f * (_t6 * _t8 * _t4);
+            const float _t10 = _t9 * _t9;
+            const float _t11 = offsetgen_batch_sinf(_t7);
+            const float _t12 = offsetgen_batch_cosf(_t3);
+            const float _t13 = 4.0f * (_t6 * _t11 * _t12) + _t11 * 3.0f;
+            const float _t14 = _t13 * _t13;
+            const float _t15 = offsetgen_batch_sinf(_t5);
+            const float _t16 = _t15 * 3.0f + 4.0f * (_t15 * _t8 * _t12);
+            const float _t17 = _t16 * _t16;
+            const float _t18 = _t14 + _t17 + _t10;
+            const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
+            const float _t20 = _t2 * _t10 * _t19;
+            const float _t21 = _t20 * _t20;
+            const float _t22 = _t21 * _t21;
+            const float _t23 = _t1 * (_t19 * offsetgen_batch_sqrtf(_t18));
+            const float _t24 = (1.0f - _t20 * 0.5f + (0.0416666679f - _t20 * 0.00138888892f) * _t21 + _t22 * (2.48015876e-05f - _t20 * 2.75573029e-07f + _t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f))) * _t12 - (_t22 * ((1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21 + (2.75573188e-06f - _t20 * 2.50520991e-08f)) + ((0.00833333377f - _t20 * 0.000198412701f) * _t21 + (1.0f - _t20 * 0.166666672f))) * (_t9 * _t23) * _t4;
+            const float _t25 = _t17 * _t2 * _t19;
+            const float _t26 = _t25 * _t25;
+            const float _t27 = _t26 * _t26;
+            const float _t28 = _t6 * (1.0f - _t25 * 0.5f + (0.0416666679f - _t25 * 0.00138888892f) * _t26 + (2.48015876e-05f - _t25 * 2.75573029e-07f + (2.08744777e-09f - _t25 * 1.13046204e-11f) * _t26) * _t27) - (1.0f - _t25 * 0.166666672f + (0.00833333377f - _t25 * 0.000198412701f) * _t26 + (2.75573188e-06f - _t25 * 2.50520991e-08f + (1.60577024e-10f - _t25 * 7.54937183e-13f) * _t26) * _t27) * (_t16 * _t23) * _t15;
+            const float _t29 = _t14 * _t2 * _t19;
             const float _t30 = _t29 * _t29;
-            const float _t31 = _t8 * (((_t26) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t28 + _t29 * (0.00833333377f - 0.000198412701f * _t28) + _t30 * (2.75573188e-06f - 2.50520991e-08f * _t28 + _t29 * (1.60577024e-10f - 7.54937183e-13f * _t28)))) + _t3 * (_t30 * (2.48015876e-05f - _t28 * 2.75573029e-07f + _t29 * (2.08744777e-09f - 1.13046204e-11f * _t28)) + (1.0f - _t28 * 0.5f + _t29 * (0.0416666679f - 0.00138888892f * _t28)));
-            const float _t32 = _t14 * _t11;
-            const float _t33 = _t13 * (_t32 * _t32);
-            const int _t34 = _t33 <= 1.0f;
-            const float _t35 = (_t34) ? _t33 : 1.0f;
-            const float _t36 = _t35 * _t35;
-            const float _t37 = _t36 * _t36;
-            const float _t38 = -(_t21 * _t32);
-            const float _t39 = ((_t36 * (1.60577024e-10f - _t35 * 7.54937183e-13f) + (2.75573188e-06f - _t35 * 2.50520991e-08f)) * _t37 + (_t36 * (0.00833333377f - _t35 * 0.000198412701f) + (1.0f - _t35 * 0.166666672f))) * ((_t34) ? _t38 : ((_t38 > 0.0f) ? 1.0f : (-1.0f))) * _t10 + (1.0f - _t35 * 0.5f + (0.0416666679f - _t35 * 0.00138888892f) * _t36 + _t37 * ((2.08744777e-09f - _t35 * 1.13046204e-11f) * _t36 + (2.48015876e-05f - _t35 * 2.75573029e-07f))) * _t6;
-            out[i + j] = 4.0f * (_t23 * _t31 * _t39) + _t39 * 3.0f + _t31 * 3.0f + _t23 * 3.0f;
+            const float _t31 = _t30 * _t30;
+            const float _t32 = _t8 * (1.0f - _t29 * 0.5f + (0.0416666679f - _t29 * 0.00138888892f) * _t30 + _t31 * (_t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f) + (2.48015876e-05f - _t29 * 2.75573029e-07f))) - _t13 * _t23 * (1.0f - _t29 * 0.166666672f + _t30 * (0.00833333377f - _t29 * 0.000198412701f) + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f))) * _t11;
+            out[i + j] = 3.0f * _t24 + (_t28 * 3.0f + 3.0f * _t32) + 4.0f * (_t28 * _t24 * _t32);
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -927,59 +888,57 @@ static inline void neovius_proj_o2_shellf_n(size_t n, const float *x, const floa
     for (i = 0; i < blocked; i += 16) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
-            const float _t0 = 6.28318548f * x[i + j];
-            const float _t1 = offsetgen_batch_cosf(_t0);
-            const float _t2 = z[i + j] * 6.28318548f;
-            const float _t3 = offsetgen_batch_cosf(_t2);
-            const float _t4 = 6.28318548f * y[i + j];
-            const float _t5 = offsetgen_batch_sinf(_t4);
-            const float _t6 = 4.0f * (_t3 * _t5 * _t1) + _t5 * 3.0f;
-            const float _t7 = offsetgen_batch_sinf(_t2);
-            const float _t8 = offsetgen_batch_cosf(_t4);
-            const float _t9 = _t7 * 3.0f + 4.0f * (_t7 * _t8 * _t1);
-            const float _t10 = offsetgen_batch_sinf(_t0);
-            const float _t11 = 3.0f * _t10 + 4.0f * (_t3 * _t8 * _t10);
-            const float _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-            const float _t13 = (_t12 > 0.0f) ? 1.0f / _t12 : 0.0f;
-            const float _t14 = 6.28318548f * (t[i + j] * 0.5f);
-            const float _t15 = _t14 * _t11;
-            const float _t16 = _t13 * (_t15 * _t15);
-            const int _t17 = _t16 <= 1.0f;
-            const float _t18 = (_t17) ? _t16 : 1.0f;
-            const float _t19 = _t18 * _t18;
-            const float _t20 = _t19 * _t19;
-            const float _t21 = _t1 * ((0.0416666679f - 0.00138888892f * _t18) * _t19 + (1.0f - _t18 * 0.5f) + (2.48015876e-05f - _t18 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t18) * _t19) * _t20);
-            const float _t22 = offsetgen_batch_sqrtf(_t13);
-            const float _t23 = _t22 * _t15;
-            const float _t24 = -_t23;
-            const float _t25 = (2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20 + (_t19 * (0.00833333377f - 0.000198412701f * _t18) + (1.0f - 0.166666672f * _t18));
-            const float _t26 = _t21 + ((_t17) ? _t24 : ((_t24 > 0.0f) ? 1.0f : (-1.0f))) * _t25 * _t10;
-            const float _t27 = _t6 * _t14;
-            const float _t28 = _t13 * (_t27 * _t27);
-            const int _t29 = _t28 <= 1.0f;
-            const float _t30 = (_t29) ? _t28 : 1.0f;
+            const float _t0 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+            const float _t2 = _t1 * _t1;
+            const float _t3 = z[i + j] * 6.28318548f;
+            const float _t4 = offsetgen_batch_sinf(_t3);
+            const float _t5 = 6.28318548f * y[i + j];
+            const float _t6 = offsetgen_batch_cosf(_t5);
+            const float _t7 = 6.28318548f * x[i + j];
+            const float _t8 = offsetgen_batch_cosf(_t7);
+            const float _t9 = _t4 * 3.0f + 4.0f * (_t4 * _t6 * _t8);
+            const float _t10 = _t9 * _t9;
+            const float _t11 = offsetgen_batch_cosf(_t3);
+            const float _t12 = offsetgen_batch_sinf(_t5);
+            const float _t13 = 4.0f * (_t11 * _t12 * _t8) + _t12 * 3.0f;
+            const float _t14 = _t13 * _t13;
+            const float _t15 = offsetgen_batch_sinf(_t7);
+            const float _t16 = 3.0f * _t15 + 4.0f * (_t11 * _t6 * _t15);
+            const float _t17 = _t16 * _t16;
+            const float _t18 = _t14 + _t10 + _t17;
+            const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
+            const float _t20 = _t2 * _t10 * _t19;
+            const float _t21 = _t20 * _t20;
+            const float _t22 = _t21 * _t21;
+            const float _t23 = _t19 * offsetgen_batch_sqrtf(_t18);
+            const float _t24 = _t1 * _t23;
+            const float _t25 = ((0.0416666679f - 0.00138888892f * _t20) * _t21 + (1.0f - _t20 * 0.5f) + _t22 * (_t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f) + (2.48015876e-05f - _t20 * 2.75573029e-07f))) * _t11 - _t4 * (((0.00833333377f - _t20 * 0.000198412701f) * _t21 + (1.0f - 0.166666672f * _t20) + _t22 * ((1.60577024e-10f - 7.54937183e-13f * _t20) * _t21 + (2.75573188e-06f - 2.50520991e-08f * _t20))) * (_t9 * _t24));
+            const float _t26 = _t19 * (_t2 * _t17);
+            const float _t27 = _t26 * _t26;
+            const float _t28 = _t27 * _t27;
+            const float _t29 = (1.0f - _t26 * 0.5f + _t27 * (0.0416666679f - 0.00138888892f * _t26) + (2.48015876e-05f - _t26 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t26) * _t27) * _t28) * _t8 - _t15 * (((2.75573188e-06f - 2.50520991e-08f * _t26 + _t27 * (1.60577024e-10f - 7.54937183e-13f * _t26)) * _t28 + (1.0f - 0.166666672f * _t26 + _t27 * (0.00833333377f - 0.000198412701f * _t26))) * (_t24 * _t16));
+            const float _t30 = _t2 * _t14 * _t19;
             const float _t31 = _t30 * _t30;
             const float _t32 = _t31 * _t31;
-            const float _t33 = (_t31 * (0.0416666679f - _t30 * 0.00138888892f) + (1.0f - _t30 * 0.5f) + _t32 * (_t31 * (2.08744777e-09f - _t30 * 1.13046204e-11f) + (2.48015876e-05f - _t30 * 2.75573029e-07f))) * _t8;
-            const float _t34 = _t22 * _t27;
-            const float _t35 = -_t34;
-            const float _t36 = _t31 * (0.00833333377f - _t30 * 0.000198412701f) + (1.0f - _t30 * 0.166666672f) + ((1.60577024e-10f - _t30 * 7.54937183e-13f) * _t31 + (2.75573188e-06f - _t30 * 2.50520991e-08f)) * _t32;
-            const float _t37 = _t33 + _t5 * (((_t29) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f))) * _t36);
-            const float _t38 = _t9 * _t14;
-            const float _t39 = _t38 * _t38 * _t13;
-            const int _t40 = _t39 <= 1.0f;
-            const float _t41 = (_t40) ? _t39 : 1.0f;
-            const float _t42 = _t41 * _t41;
+            const float _t33 = _t6 * ((2.48015876e-05f - _t30 * 2.75573029e-07f + (2.08744777e-09f - _t30 * 1.13046204e-11f) * _t31) * _t32 + ((0.0416666679f - 0.00138888892f * _t30) * _t31 + (1.0f - _t30 * 0.5f))) - _t13 * _t24 * ((0.00833333377f - _t30 * 0.000198412701f) * _t31 + (1.0f - _t30 * 0.166666672f) + (_t31 * (1.60577024e-10f - 7.54937183e-13f * _t30) + (2.75573188e-06f - _t30 * 2.50520991e-08f)) * _t32) * _t12;
+            const float _t34 = -_t0;
+            const float _t35 = (_t34 <= 1.0f) ? (((-1.0f) <= _t34) ? _t34 : (-1.0f)) : 1.0f;
+            const float _t36 = _t35 * _t35;
+            const float _t37 = _t36 * _t14 * _t19;
+            const float _t38 = _t37 * _t37;
+            const float _t39 = _t38 * _t38;
+            const float _t40 = _t35 * _t23;
+            const float _t41 = _t6 * (_t39 * ((2.08744777e-09f - 1.13046204e-11f * _t37) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f)) + (1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38)) - (((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) * _t39 + ((0.00833333377f - 0.000198412701f * _t37) * _t38 + (1.0f - 0.166666672f * _t37))) * (_t13 * _t40) * _t12;
+            const float _t42 = _t19 * (_t36 * _t17);
             const float _t43 = _t42 * _t42;
-            const float _t44 = ((1.60577024e-10f - _t41 * 7.54937183e-13f) * _t42 + (2.75573188e-06f - _t41 * 2.50520991e-08f)) * _t43 + ((0.00833333377f - _t41 * 0.000198412701f) * _t42 + (1.0f - _t41 * 0.166666672f));
-            const float _t45 = _t22 * _t38;
-            const float _t46 = -_t45;
-            const float _t47 = _t3 * (_t43 * ((2.08744777e-09f - _t41 * 1.13046204e-11f) * _t42 + (2.48015876e-05f - _t41 * 2.75573029e-07f)) + ((0.0416666679f - _t41 * 0.00138888892f) * _t42 + (1.0f - _t41 * 0.5f)));
-            const float _t48 = _t7 * (_t44 * ((_t40) ? _t46 : ((_t46 > 0.0f) ? 1.0f : (-1.0f)))) + _t47;
-            const float _t49 = _t7 * (_t44 * ((_t40) ? _t45 : ((_t45 > 0.0f) ? 1.0f : (-1.0f)))) + _t47;
-            const float _t50 = _t33 + _t36 * ((_t29) ? _t34 : ((_t34 > 0.0f) ? 1.0f : (-1.0f))) * _t5;
-            const float _t51 = _t21 + ((_t17) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f))) * _t25 * _t10;
-            out[i + j] = (_t26 * 3.0f + (_t37 * 3.0f + _t48 * 3.0f) + 4.0f * (_t48 * (_t37 * _t26))) * (3.0f * _t49 + 4.0f * (_t50 * _t49 * _t51) + 3.0f * _t51 + _t50 * 3.0f);
+            const float _t44 = _t43 * _t43;
+            const float _t45 = ((2.48015876e-05f - _t42 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t42) * _t43) * _t44 + (1.0f - _t42 * 0.5f + _t43 * (0.0416666679f - 0.00138888892f * _t42))) * _t8 - ((_t43 * (1.60577024e-10f - 7.54937183e-13f * _t42) + (2.75573188e-06f - 2.50520991e-08f * _t42)) * _t44 + ((0.00833333377f - 0.000198412701f * _t42) * _t43 + (1.0f - 0.166666672f * _t42))) * (_t40 * _t16) * _t15;
+            const float _t46 = _t36 * _t10 * _t19;
+            const float _t47 = _t46 * _t46;
+            const float _t48 = _t47 * _t47;
+            const float _t49 = _t11 * ((2.48015876e-05f - _t46 * 2.75573029e-07f + _t47 * (2.08744777e-09f - _t46 * 1.13046204e-11f)) * _t48 + ((0.0416666679f - 0.00138888892f * _t46) * _t47 + (1.0f - _t46 * 0.5f))) - ((0.00833333377f - _t46 * 0.000198412701f) * _t47 + (1.0f - 0.166666672f * _t46) + _t48 * (_t47 * (1.60577024e-10f - 7.54937183e-13f * _t46) + (2.75573188e-06f - 2.50520991e-08f * _t46))) * (_t9 * _t40) * _t4;
+            out[i + j] = (_t25 * 3.0f + 3.0f * _t29 + 4.0f * (_t25 * _t33 * _t29) + _t33 * 3.0f) * (_t41 * 3.0f + (4.0f * (_t45 * (_t49 * _t41)) + _t49 * 3.0f + _t45 * 3.0f));
         }
     }
     for (i = 0; i < blocked; ++i) {

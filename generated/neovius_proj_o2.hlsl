@@ -36,9 +36,10 @@ safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| wi
     has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
     every function returns a finite value for finite input (do not compile with -ffinite-math-only).
     sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while each component of d = h n stays within 1 (natural units, |h| <= 0.159 cell on a
-    2*pi-periodic surface); larger displacements are clamped to it, which keeps |q_K - p| <= |h| and
-    so the bound above.
+    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
+    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
+    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
+    1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -48,12 +49,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: HLSL Shader Model 5.0 and later (DXC, FXC, glslang's HLSL front end).
 total ops after CSE:
     - field: 15
-    - offset: 175
-    - shell: 204
-    - normal: 205
+    - offset: 161
+    - shell: 290
+    - normal: 191
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"hlsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":175,"shell":204,"normal":205}} */
+/* offsetgen-metadata {"format":1,"language":"hlsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":161,"shell":290,"normal":191}} */
 #ifndef OFFSETGEN_NEOVIUS_PROJ_O2_HLSL
 #define OFFSETGEN_NEOVIUS_PROJ_O2_HLSL
 
@@ -91,168 +92,152 @@ float neovius_proj_o2_field(float3 p)
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
-// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 175.
+// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 161.
 float neovius_proj_o2_offset(float3 p, float h)
 {
-    float _t0 = 6.28318548 * p.y;
-    float _t1 = neovius_proj_o2_cos(_t0);
-    float _t2 = p.z * 6.28318548;
-    float _t3 = neovius_proj_o2_cos(_t2);
-    float _t4 = neovius_proj_o2_sin(_t0);
-    float _t5 = 6.28318548 * p.x;
+    float _t0 = 6.28318548 * h;
+    float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    float _t2 = _t1 * _t1;
+    float _t3 = 6.28318548 * p.x;
+    float _t4 = neovius_proj_o2_sin(_t3);
+    float _t5 = p.z * 6.28318548;
     float _t6 = neovius_proj_o2_cos(_t5);
-    float _t7 = 4.0 * (_t3 * _t4 * _t6) + _t4 * 3.0;
-    float _t8 = neovius_proj_o2_sin(_t2);
-    float _t9 = _t8 * 3.0 + 4.0 * (_t8 * _t1 * _t6);
-    float _t10 = neovius_proj_o2_sin(_t5);
-    float _t11 = 3.0 * _t10 + 4.0 * (_t3 * _t1 * _t10);
-    float _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
-    float _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    float _t14 = 6.28318548 * h;
-    float _t15 = _t14 * _t7;
-    float _t16 = _t13 * (_t15 * _t15);
-    bool _t17 = _t16 <= 1.0;
-    float _t18 = (_t17) ? _t16 : 1.0;
-    float _t19 = _t18 * _t18;
-    float _t20 = _t19 * _t19;
-    float _t21 = sqrt(_t13);
-    float _t22 = -(_t15 * _t21);
-    float _t23 = _t1 * ((_t19 * (2.08744777e-09 - _t18 * 1.13046204e-11) + (2.48015876e-05 - _t18 * 2.75573029e-07)) * _t20 + (_t19 * (0.0416666679 - 0.00138888892 * _t18) + (1.0 - _t18 * 0.5))) + _t4 * (((_t17) ? _t22 : ((_t22 > 0.0) ? 1.0 : (-1.0))) * ((0.00833333377 - _t18 * 0.000198412701) * _t19 + (1.0 - _t18 * 0.166666672) + (2.75573188e-06 - _t18 * 2.50520991e-08 + _t19 * (1.60577024e-10 - 7.54937183e-13 * _t18)) * _t20));
-    float _t24 = _t9 * _t14;
-    float _t25 = _t24 * _t24 * _t13;
-    bool _t26 = _t25 <= 1.0;
-    float _t27 = -(_t24 * _t21);
-    float _t28 = (_t26) ? _t25 : 1.0;
-    float _t29 = _t28 * _t28;
+    float _t7 = 6.28318548 * p.y;
+    float _t8 = neovius_proj_o2_cos(_t7);
+    float _t9 = 3.0 * _t4 + 4.0 * (_t6 * _t8 * _t4);
+    float _t10 = _t9 * _t9;
+    float _t11 = neovius_proj_o2_sin(_t7);
+    float _t12 = neovius_proj_o2_cos(_t3);
+    float _t13 = 4.0 * (_t6 * _t11 * _t12) + _t11 * 3.0;
+    float _t14 = _t13 * _t13;
+    float _t15 = neovius_proj_o2_sin(_t5);
+    float _t16 = _t15 * 3.0 + 4.0 * (_t15 * _t8 * _t12);
+    float _t17 = _t16 * _t16;
+    float _t18 = _t14 + _t17 + _t10;
+    float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    float _t20 = _t2 * _t10 * _t19;
+    float _t21 = _t20 * _t20;
+    float _t22 = _t21 * _t21;
+    float _t23 = _t1 * (_t19 * sqrt(_t18));
+    float _t24 = (1.0 - _t20 * 0.5 + (0.0416666679 - _t20 * 0.00138888892) * _t21 + _t22 * (2.48015876e-05 - _t20 * 2.75573029e-07 + _t21 * (2.08744777e-09 - _t20 * 1.13046204e-11))) * _t12 - (_t22 * ((1.60577024e-10 - _t20 * 7.54937183e-13) * _t21 + (2.75573188e-06 - _t20 * 2.50520991e-08)) + ((0.00833333377 - _t20 * 0.000198412701) * _t21 + (1.0 - _t20 * 0.166666672))) * (_t9 * _t23) * _t4;
+    float _t25 = _t17 * _t2 * _t19;
+    float _t26 = _t25 * _t25;
+    float _t27 = _t26 * _t26;
+    float _t28 = _t6 * (1.0 - _t25 * 0.5 + (0.0416666679 - _t25 * 0.00138888892) * _t26 + (2.48015876e-05 - _t25 * 2.75573029e-07 + (2.08744777e-09 - _t25 * 1.13046204e-11) * _t26) * _t27) - (1.0 - _t25 * 0.166666672 + (0.00833333377 - _t25 * 0.000198412701) * _t26 + (2.75573188e-06 - _t25 * 2.50520991e-08 + (1.60577024e-10 - _t25 * 7.54937183e-13) * _t26) * _t27) * (_t16 * _t23) * _t15;
+    float _t29 = _t14 * _t2 * _t19;
     float _t30 = _t29 * _t29;
-    float _t31 = _t8 * (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.166666672 * _t28 + _t29 * (0.00833333377 - 0.000198412701 * _t28) + _t30 * (2.75573188e-06 - 2.50520991e-08 * _t28 + _t29 * (1.60577024e-10 - 7.54937183e-13 * _t28)))) + _t3 * (_t30 * (2.48015876e-05 - _t28 * 2.75573029e-07 + _t29 * (2.08744777e-09 - 1.13046204e-11 * _t28)) + (1.0 - _t28 * 0.5 + _t29 * (0.0416666679 - 0.00138888892 * _t28)));
-    float _t32 = _t14 * _t11;
-    float _t33 = _t13 * (_t32 * _t32);
-    bool _t34 = _t33 <= 1.0;
-    float _t35 = (_t34) ? _t33 : 1.0;
-    float _t36 = _t35 * _t35;
-    float _t37 = _t36 * _t36;
-    float _t38 = -(_t21 * _t32);
-    float _t39 = ((_t36 * (1.60577024e-10 - _t35 * 7.54937183e-13) + (2.75573188e-06 - _t35 * 2.50520991e-08)) * _t37 + (_t36 * (0.00833333377 - _t35 * 0.000198412701) + (1.0 - _t35 * 0.166666672))) * ((_t34) ? _t38 : ((_t38 > 0.0) ? 1.0 : (-1.0))) * _t10 + (1.0 - _t35 * 0.5 + (0.0416666679 - _t35 * 0.00138888892) * _t36 + _t37 * ((2.08744777e-09 - _t35 * 1.13046204e-11) * _t36 + (2.48015876e-05 - _t35 * 2.75573029e-07))) * _t6;
-    return 4.0 * (_t23 * _t31 * _t39) + _t39 * 3.0 + _t31 * 3.0 + _t23 * 3.0;
+    float _t31 = _t30 * _t30;
+    float _t32 = _t8 * (1.0 - _t29 * 0.5 + (0.0416666679 - _t29 * 0.00138888892) * _t30 + _t31 * (_t30 * (2.08744777e-09 - _t29 * 1.13046204e-11) + (2.48015876e-05 - _t29 * 2.75573029e-07))) - _t13 * _t23 * (1.0 - _t29 * 0.166666672 + _t30 * (0.00833333377 - _t29 * 0.000198412701) + _t31 * (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - _t29 * 7.54937183e-13))) * _t11;
+    return 3.0 * _t24 + (_t28 * 3.0 + 3.0 * _t32) + 4.0 * (_t28 * _t24 * _t32);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 204.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 290.
 float neovius_proj_o2_shell(float3 p, float t)
 {
-    float _t0 = 6.28318548 * p.x;
-    float _t1 = neovius_proj_o2_cos(_t0);
-    float _t2 = p.z * 6.28318548;
-    float _t3 = neovius_proj_o2_cos(_t2);
-    float _t4 = 6.28318548 * p.y;
-    float _t5 = neovius_proj_o2_sin(_t4);
-    float _t6 = 4.0 * (_t3 * _t5 * _t1) + _t5 * 3.0;
-    float _t7 = neovius_proj_o2_sin(_t2);
-    float _t8 = neovius_proj_o2_cos(_t4);
-    float _t9 = _t7 * 3.0 + 4.0 * (_t7 * _t8 * _t1);
-    float _t10 = neovius_proj_o2_sin(_t0);
-    float _t11 = 3.0 * _t10 + 4.0 * (_t3 * _t8 * _t10);
-    float _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    float _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    float _t14 = 6.28318548 * (t * 0.5);
-    float _t15 = _t14 * _t11;
-    float _t16 = _t13 * (_t15 * _t15);
-    bool _t17 = _t16 <= 1.0;
-    float _t18 = (_t17) ? _t16 : 1.0;
-    float _t19 = _t18 * _t18;
-    float _t20 = _t19 * _t19;
-    float _t21 = _t1 * ((0.0416666679 - 0.00138888892 * _t18) * _t19 + (1.0 - _t18 * 0.5) + (2.48015876e-05 - _t18 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t18) * _t19) * _t20);
-    float _t22 = sqrt(_t13);
-    float _t23 = _t22 * _t15;
-    float _t24 = -_t23;
-    float _t25 = (2.75573188e-06 - 2.50520991e-08 * _t18 + _t19 * (1.60577024e-10 - 7.54937183e-13 * _t18)) * _t20 + (_t19 * (0.00833333377 - 0.000198412701 * _t18) + (1.0 - 0.166666672 * _t18));
-    float _t26 = _t21 + ((_t17) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0))) * _t25 * _t10;
-    float _t27 = _t6 * _t14;
-    float _t28 = _t13 * (_t27 * _t27);
-    bool _t29 = _t28 <= 1.0;
-    float _t30 = (_t29) ? _t28 : 1.0;
+    float _t0 = 6.28318548 * (t * 0.5);
+    float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    float _t2 = _t1 * _t1;
+    float _t3 = p.z * 6.28318548;
+    float _t4 = neovius_proj_o2_sin(_t3);
+    float _t5 = 6.28318548 * p.y;
+    float _t6 = neovius_proj_o2_cos(_t5);
+    float _t7 = 6.28318548 * p.x;
+    float _t8 = neovius_proj_o2_cos(_t7);
+    float _t9 = _t4 * 3.0 + 4.0 * (_t4 * _t6 * _t8);
+    float _t10 = _t9 * _t9;
+    float _t11 = neovius_proj_o2_cos(_t3);
+    float _t12 = neovius_proj_o2_sin(_t5);
+    float _t13 = 4.0 * (_t11 * _t12 * _t8) + _t12 * 3.0;
+    float _t14 = _t13 * _t13;
+    float _t15 = neovius_proj_o2_sin(_t7);
+    float _t16 = 3.0 * _t15 + 4.0 * (_t11 * _t6 * _t15);
+    float _t17 = _t16 * _t16;
+    float _t18 = _t14 + _t10 + _t17;
+    float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    float _t20 = _t2 * _t10 * _t19;
+    float _t21 = _t20 * _t20;
+    float _t22 = _t21 * _t21;
+    float _t23 = _t19 * sqrt(_t18);
+    float _t24 = _t1 * _t23;
+    float _t25 = ((0.0416666679 - 0.00138888892 * _t20) * _t21 + (1.0 - _t20 * 0.5) + _t22 * (_t21 * (2.08744777e-09 - _t20 * 1.13046204e-11) + (2.48015876e-05 - _t20 * 2.75573029e-07))) * _t11 - _t4 * (((0.00833333377 - _t20 * 0.000198412701) * _t21 + (1.0 - 0.166666672 * _t20) + _t22 * ((1.60577024e-10 - 7.54937183e-13 * _t20) * _t21 + (2.75573188e-06 - 2.50520991e-08 * _t20))) * (_t9 * _t24));
+    float _t26 = _t19 * (_t2 * _t17);
+    float _t27 = _t26 * _t26;
+    float _t28 = _t27 * _t27;
+    float _t29 = (1.0 - _t26 * 0.5 + _t27 * (0.0416666679 - 0.00138888892 * _t26) + (2.48015876e-05 - _t26 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t26) * _t27) * _t28) * _t8 - _t15 * (((2.75573188e-06 - 2.50520991e-08 * _t26 + _t27 * (1.60577024e-10 - 7.54937183e-13 * _t26)) * _t28 + (1.0 - 0.166666672 * _t26 + _t27 * (0.00833333377 - 0.000198412701 * _t26))) * (_t24 * _t16));
+    float _t30 = _t2 * _t14 * _t19;
     float _t31 = _t30 * _t30;
     float _t32 = _t31 * _t31;
-    float _t33 = (_t31 * (0.0416666679 - _t30 * 0.00138888892) + (1.0 - _t30 * 0.5) + _t32 * (_t31 * (2.08744777e-09 - _t30 * 1.13046204e-11) + (2.48015876e-05 - _t30 * 2.75573029e-07))) * _t8;
-    float _t34 = _t22 * _t27;
-    float _t35 = -_t34;
-    float _t36 = _t31 * (0.00833333377 - _t30 * 0.000198412701) + (1.0 - _t30 * 0.166666672) + ((1.60577024e-10 - _t30 * 7.54937183e-13) * _t31 + (2.75573188e-06 - _t30 * 2.50520991e-08)) * _t32;
-    float _t37 = _t33 + _t5 * (((_t29) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * _t36);
-    float _t38 = _t9 * _t14;
-    float _t39 = _t38 * _t38 * _t13;
-    bool _t40 = _t39 <= 1.0;
-    float _t41 = (_t40) ? _t39 : 1.0;
-    float _t42 = _t41 * _t41;
+    float _t33 = _t6 * ((2.48015876e-05 - _t30 * 2.75573029e-07 + (2.08744777e-09 - _t30 * 1.13046204e-11) * _t31) * _t32 + ((0.0416666679 - 0.00138888892 * _t30) * _t31 + (1.0 - _t30 * 0.5))) - _t13 * _t24 * ((0.00833333377 - _t30 * 0.000198412701) * _t31 + (1.0 - _t30 * 0.166666672) + (_t31 * (1.60577024e-10 - 7.54937183e-13 * _t30) + (2.75573188e-06 - _t30 * 2.50520991e-08)) * _t32) * _t12;
+    float _t34 = -_t0;
+    float _t35 = (_t34 <= 1.0) ? (((-1.0) <= _t34) ? _t34 : (-1.0)) : 1.0;
+    float _t36 = _t35 * _t35;
+    float _t37 = _t36 * _t14 * _t19;
+    float _t38 = _t37 * _t37;
+    float _t39 = _t38 * _t38;
+    float _t40 = _t35 * _t23;
+    float _t41 = _t6 * (_t39 * ((2.08744777e-09 - 1.13046204e-11 * _t37) * _t38 + (2.48015876e-05 - _t37 * 2.75573029e-07)) + (1.0 - _t37 * 0.5 + (0.0416666679 - 0.00138888892 * _t37) * _t38)) - (((1.60577024e-10 - 7.54937183e-13 * _t37) * _t38 + (2.75573188e-06 - 2.50520991e-08 * _t37)) * _t39 + ((0.00833333377 - 0.000198412701 * _t37) * _t38 + (1.0 - 0.166666672 * _t37))) * (_t13 * _t40) * _t12;
+    float _t42 = _t19 * (_t36 * _t17);
     float _t43 = _t42 * _t42;
-    float _t44 = ((1.60577024e-10 - _t41 * 7.54937183e-13) * _t42 + (2.75573188e-06 - _t41 * 2.50520991e-08)) * _t43 + ((0.00833333377 - _t41 * 0.000198412701) * _t42 + (1.0 - _t41 * 0.166666672));
-    float _t45 = _t22 * _t38;
-    float _t46 = -_t45;
-    float _t47 = _t3 * (_t43 * ((2.08744777e-09 - _t41 * 1.13046204e-11) * _t42 + (2.48015876e-05 - _t41 * 2.75573029e-07)) + ((0.0416666679 - _t41 * 0.00138888892) * _t42 + (1.0 - _t41 * 0.5)));
-    float _t48 = _t7 * (_t44 * ((_t40) ? _t46 : ((_t46 > 0.0) ? 1.0 : (-1.0)))) + _t47;
-    float _t49 = _t7 * (_t44 * ((_t40) ? _t45 : ((_t45 > 0.0) ? 1.0 : (-1.0)))) + _t47;
-    float _t50 = _t33 + _t36 * ((_t29) ? _t34 : ((_t34 > 0.0) ? 1.0 : (-1.0))) * _t5;
-    float _t51 = _t21 + ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t25 * _t10;
-    return (_t26 * 3.0 + (_t37 * 3.0 + _t48 * 3.0) + 4.0 * (_t48 * (_t37 * _t26))) * (3.0 * _t49 + 4.0 * (_t50 * _t49 * _t51) + 3.0 * _t51 + _t50 * 3.0);
+    float _t44 = _t43 * _t43;
+    float _t45 = ((2.48015876e-05 - _t42 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t42) * _t43) * _t44 + (1.0 - _t42 * 0.5 + _t43 * (0.0416666679 - 0.00138888892 * _t42))) * _t8 - ((_t43 * (1.60577024e-10 - 7.54937183e-13 * _t42) + (2.75573188e-06 - 2.50520991e-08 * _t42)) * _t44 + ((0.00833333377 - 0.000198412701 * _t42) * _t43 + (1.0 - 0.166666672 * _t42))) * (_t40 * _t16) * _t15;
+    float _t46 = _t36 * _t10 * _t19;
+    float _t47 = _t46 * _t46;
+    float _t48 = _t47 * _t47;
+    float _t49 = _t11 * ((2.48015876e-05 - _t46 * 2.75573029e-07 + _t47 * (2.08744777e-09 - _t46 * 1.13046204e-11)) * _t48 + ((0.0416666679 - 0.00138888892 * _t46) * _t47 + (1.0 - _t46 * 0.5))) - ((0.00833333377 - _t46 * 0.000198412701) * _t47 + (1.0 - 0.166666672 * _t46) + _t48 * (_t47 * (1.60577024e-10 - 7.54937183e-13 * _t46) + (2.75573188e-06 - 2.50520991e-08 * _t46))) * (_t9 * _t40) * _t4;
+    return (_t25 * 3.0 + 3.0 * _t29 + 4.0 * (_t25 * _t33 * _t29) + _t33 * 3.0) * (_t41 * 3.0 + (4.0 * (_t45 * (_t49 * _t41)) + _t49 * 3.0 + _t45 * 3.0));
 }
 
-// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 205.
+// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 191.
 float3 neovius_proj_o2_normal(float3 p, float h)
 {
     float _t0 = p.z * 6.28318548;
-    float _t1 = neovius_proj_o2_cos(_t0);
+    float _t1 = neovius_proj_o2_sin(_t0);
     float _t2 = 6.28318548 * p.y;
-    float _t3 = neovius_proj_o2_sin(_t2);
+    float _t3 = neovius_proj_o2_cos(_t2);
     float _t4 = 6.28318548 * p.x;
     float _t5 = neovius_proj_o2_cos(_t4);
-    float _t6 = 4.0 * (_t1 * _t3 * _t5) + _t3 * 3.0;
-    float _t7 = neovius_proj_o2_sin(_t0);
-    float _t8 = neovius_proj_o2_cos(_t2);
-    float _t9 = _t7 * 3.0 + 4.0 * (_t7 * _t8 * _t5);
-    float _t10 = neovius_proj_o2_sin(_t4);
-    float _t11 = 3.0 * _t10 + 4.0 * (_t1 * _t8 * _t10);
-    float _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    float _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    float _t14 = 6.28318548 * h;
-    float _t15 = _t14 * _t11;
-    float _t16 = _t13 * (_t15 * _t15);
-    bool _t17 = _t16 <= 1.0;
-    float _t18 = (_t17) ? _t16 : 1.0;
-    float _t19 = _t18 * _t18;
-    float _t20 = _t19 * _t19;
-    float _t21 = 1.0 - _t18 * 0.5 + (0.0416666679 - _t18 * 0.00138888892) * _t19 + _t20 * ((2.08744777e-09 - _t18 * 1.13046204e-11) * _t19 + (2.48015876e-05 - _t18 * 2.75573029e-07));
-    float _t22 = sqrt(_t13);
-    float _t23 = -(_t22 * _t15);
-    float _t24 = ((_t19 * (1.60577024e-10 - _t18 * 7.54937183e-13) + (2.75573188e-06 - _t18 * 2.50520991e-08)) * _t20 + (_t19 * (0.00833333377 - _t18 * 0.000198412701) + (1.0 - _t18 * 0.166666672))) * ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0)));
-    float _t25 = _t21 * _t10 - _t24 * _t5;
-    float _t26 = _t14 * _t6;
-    float _t27 = _t13 * (_t26 * _t26);
-    bool _t28 = _t27 <= 1.0;
-    float _t29 = (_t28) ? _t27 : 1.0;
-    float _t30 = _t29 * _t29;
-    float _t31 = _t30 * _t30;
-    float _t32 = (_t30 * (2.08744777e-09 - _t29 * 1.13046204e-11) + (2.48015876e-05 - _t29 * 2.75573029e-07)) * _t31 + (_t30 * (0.0416666679 - 0.00138888892 * _t29) + (1.0 - _t29 * 0.5));
-    float _t33 = -(_t26 * _t22);
-    float _t34 = ((_t28) ? _t33 : ((_t33 > 0.0) ? 1.0 : (-1.0))) * ((0.00833333377 - _t29 * 0.000198412701) * _t30 + (1.0 - _t29 * 0.166666672) + (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - 7.54937183e-13 * _t29)) * _t31);
-    float _t35 = _t8 * _t32 + _t3 * _t34;
-    float _t36 = _t9 * _t14;
-    float _t37 = _t36 * _t36 * _t13;
-    bool _t38 = _t37 <= 1.0;
-    float _t39 = -(_t36 * _t22);
-    float _t40 = (_t38) ? _t37 : 1.0;
-    float _t41 = _t40 * _t40;
-    float _t42 = _t41 * _t41;
-    float _t43 = ((_t38) ? _t39 : ((_t39 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.166666672 * _t40 + _t41 * (0.00833333377 - 0.000198412701 * _t40) + _t42 * (2.75573188e-06 - 2.50520991e-08 * _t40 + _t41 * (1.60577024e-10 - 7.54937183e-13 * _t40)));
-    float _t44 = _t42 * (2.48015876e-05 - _t40 * 2.75573029e-07 + _t41 * (2.08744777e-09 - 1.13046204e-11 * _t40)) + (1.0 - _t40 * 0.5 + _t41 * (0.0416666679 - 0.00138888892 * _t40));
-    float _t45 = _t7 * _t43 + _t1 * _t44;
-    float _t46 = 3.0 * _t25 + 4.0 * (_t35 * _t45 * _t25);
-    float _t47 = _t7 * _t44 - _t1 * _t43;
-    float _t48 = _t24 * _t10 + _t21 * _t5;
-    float _t49 = 3.0 * _t47 + 4.0 * (_t47 * (_t35 * _t48));
-    float _t50 = _t3 * _t32 - _t8 * _t34;
-    float _t51 = 4.0 * (_t48 * (_t45 * _t50)) + _t50 * 3.0;
-    float _t52 = _t49 * _t49 + (_t46 * _t46 + _t51 * _t51);
-    float _t53 = (_t52 > 0.0) ? 1.0 / sqrt(_t52) : 0.0;
-    return float3(-(_t46 * _t53), -(_t51 * _t53), -(_t49 * _t53));
+    float _t6 = _t1 * 3.0 + 4.0 * (_t1 * _t3 * _t5);
+    float _t7 = _t6 * _t6;
+    float _t8 = 6.28318548 * h;
+    float _t9 = (_t8 <= 1.0) ? (((-1.0) <= _t8) ? _t8 : (-1.0)) : 1.0;
+    float _t10 = _t9 * _t9;
+    float _t11 = neovius_proj_o2_cos(_t0);
+    float _t12 = neovius_proj_o2_sin(_t2);
+    float _t13 = 4.0 * (_t11 * _t12 * _t5) + _t12 * 3.0;
+    float _t14 = _t13 * _t13;
+    float _t15 = neovius_proj_o2_sin(_t4);
+    float _t16 = 3.0 * _t15 + 4.0 * (_t11 * _t3 * _t15);
+    float _t17 = _t16 * _t16;
+    float _t18 = _t14 + _t7 + _t17;
+    float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    float _t20 = _t7 * _t10 * _t19;
+    float _t21 = _t20 * _t20;
+    float _t22 = _t21 * _t21;
+    float _t23 = 1.0 - _t20 * 0.5 + (0.0416666679 - _t20 * 0.00138888892) * _t21 + (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21) * _t22;
+    float _t24 = _t9 * (_t19 * sqrt(_t18));
+    float _t25 = (1.0 - _t20 * 0.166666672 + (0.00833333377 - _t20 * 0.000198412701) * _t21 + (2.75573188e-06 - _t20 * 2.50520991e-08 + (1.60577024e-10 - _t20 * 7.54937183e-13) * _t21) * _t22) * (_t6 * _t24);
+    float _t26 = _t1 * _t23 + _t25 * _t11;
+    float _t27 = _t10 * _t17 * _t19;
+    float _t28 = _t27 * _t27;
+    float _t29 = _t28 * _t28;
+    float _t30 = 1.0 - _t27 * 0.5 + (0.0416666679 - _t27 * 0.00138888892) * _t28 + _t29 * (2.48015876e-05 - _t27 * 2.75573029e-07 + _t28 * (2.08744777e-09 - _t27 * 1.13046204e-11));
+    float _t31 = (_t29 * ((1.60577024e-10 - _t27 * 7.54937183e-13) * _t28 + (2.75573188e-06 - _t27 * 2.50520991e-08)) + ((0.00833333377 - _t27 * 0.000198412701) * _t28 + (1.0 - _t27 * 0.166666672))) * (_t16 * _t24);
+    float _t32 = _t30 * _t5 - _t31 * _t15;
+    float _t33 = _t14 * _t10 * _t19;
+    float _t34 = _t33 * _t33;
+    float _t35 = _t34 * _t34;
+    float _t36 = 1.0 - _t33 * 0.5 + (0.0416666679 - _t33 * 0.00138888892) * _t34 + _t35 * (_t34 * (2.08744777e-09 - _t33 * 1.13046204e-11) + (2.48015876e-05 - _t33 * 2.75573029e-07));
+    float _t37 = _t13 * _t24 * (1.0 - _t33 * 0.166666672 + _t34 * (0.00833333377 - _t33 * 0.000198412701) + _t35 * (2.75573188e-06 - _t33 * 2.50520991e-08 + _t34 * (1.60577024e-10 - _t33 * 7.54937183e-13)));
+    float _t38 = _t3 * _t36 - _t37 * _t12;
+    float _t39 = 3.0 * _t26 + 4.0 * (_t32 * _t26 * _t38);
+    float _t40 = _t30 * _t15 + _t31 * _t5;
+    float _t41 = _t11 * _t23 - _t25 * _t1;
+    float _t42 = 4.0 * (_t40 * _t41 * _t38) + _t40 * 3.0;
+    float _t43 = _t37 * _t3 + _t12 * _t36;
+    float _t44 = 4.0 * (_t32 * (_t43 * _t41)) + _t43 * 3.0;
+    float _t45 = _t39 * _t39 + _t42 * _t42 + _t44 * _t44;
+    float _t46 = (_t45 > 0.0) ? 1.0 / sqrt(_t45) : 0.0;
+    return float3(-(_t46 * _t42), -(_t44 * _t46), -(_t39 * _t46));
 }
 
 

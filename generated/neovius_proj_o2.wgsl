@@ -39,9 +39,10 @@ safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| wi
     has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
     every function returns a finite value for finite input (do not compile with -ffinite-math-only).
     sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while each component of d = h n stays within 1 (natural units, |h| <= 0.159 cell on a
-    2*pi-periodic surface); larger displacements are clamped to it, which keeps |q_K - p| <= |h| and
-    so the bound above.
+    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
+    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
+    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
+    1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -51,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: WGSL (WebGPU): Dawn (Chrome, Node's webgpu), wgpu/naga (Firefox), WebKit.
 total ops after CSE:
     - field: 15
-    - offset: 175
-    - shell: 204
-    - normal: 205
+    - offset: 161
+    - shell: 290
+    - normal: 191
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":175,"shell":204,"normal":205}} */
+/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o2","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":161,"shell":290,"normal":191}} */
 
 // sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
 // 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
@@ -89,163 +90,147 @@ fn neovius_proj_o2_field(p: vec3<f32>) -> f32 {
     return _t0 * _t1 * _t2 * 4.0f + 3.0f * _t2 + _t0 * 3.0f + _t1 * 3.0f;
 }
 
-// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 175.
+// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 161.
 fn neovius_proj_o2_offset(p: vec3<f32>, h: f32) -> f32 {
-    let _t0 = 6.28318548f * p.y;
-    let _t1 = neovius_proj_o2_cos(_t0);
-    let _t2 = p.z * 6.28318548f;
-    let _t3 = neovius_proj_o2_cos(_t2);
-    let _t4 = neovius_proj_o2_sin(_t0);
-    let _t5 = 6.28318548f * p.x;
+    let _t0 = 6.28318548f * h;
+    let _t1 = select(1.0f, (select((-1.0f), _t0, (-1.0f) <= _t0)), _t0 <= 1.0f);
+    let _t2 = _t1 * _t1;
+    let _t3 = 6.28318548f * p.x;
+    let _t4 = neovius_proj_o2_sin(_t3);
+    let _t5 = p.z * 6.28318548f;
     let _t6 = neovius_proj_o2_cos(_t5);
-    let _t7 = 4.0f * (_t3 * _t4 * _t6) + _t4 * 3.0f;
-    let _t8 = neovius_proj_o2_sin(_t2);
-    let _t9 = _t8 * 3.0f + 4.0f * (_t8 * _t1 * _t6);
-    let _t10 = neovius_proj_o2_sin(_t5);
-    let _t11 = 3.0f * _t10 + 4.0f * (_t3 * _t1 * _t10);
-    let _t12 = _t7 * _t7 + _t9 * _t9 + _t11 * _t11;
-    let _t13 = select(0.0f, 1.0f / _t12, _t12 > 0.0f);
-    let _t14 = 6.28318548f * h;
-    let _t15 = _t14 * _t7;
-    let _t16 = _t13 * (_t15 * _t15);
-    let _t17 = _t16 <= 1.0f;
-    let _t18 = select(1.0f, _t16, _t17);
-    let _t19 = _t18 * _t18;
-    let _t20 = _t19 * _t19;
-    let _t21 = sqrt(_t13);
-    let _t22 = -(_t15 * _t21);
-    let _t23 = _t1 * ((_t19 * (2.08744777e-09f - _t18 * 1.13046204e-11f) + (2.48015876e-05f - _t18 * 2.75573029e-07f)) * _t20 + (_t19 * (0.0416666679f - 0.00138888892f * _t18) + (1.0f - _t18 * 0.5f))) + _t4 * ((select((select((-1.0f), 1.0f, _t22 > 0.0f)), _t22, _t17)) * ((0.00833333377f - _t18 * 0.000198412701f) * _t19 + (1.0f - _t18 * 0.166666672f) + (2.75573188e-06f - _t18 * 2.50520991e-08f + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20));
-    let _t24 = _t9 * _t14;
-    let _t25 = _t24 * _t24 * _t13;
-    let _t26 = _t25 <= 1.0f;
-    let _t27 = -(_t24 * _t21);
-    let _t28 = select(1.0f, _t25, _t26);
-    let _t29 = _t28 * _t28;
+    let _t7 = 6.28318548f * p.y;
+    let _t8 = neovius_proj_o2_cos(_t7);
+    let _t9 = 3.0f * _t4 + 4.0f * (_t6 * _t8 * _t4);
+    let _t10 = _t9 * _t9;
+    let _t11 = neovius_proj_o2_sin(_t7);
+    let _t12 = neovius_proj_o2_cos(_t3);
+    let _t13 = 4.0f * (_t6 * _t11 * _t12) + _t11 * 3.0f;
+    let _t14 = _t13 * _t13;
+    let _t15 = neovius_proj_o2_sin(_t5);
+    let _t16 = _t15 * 3.0f + 4.0f * (_t15 * _t8 * _t12);
+    let _t17 = _t16 * _t16;
+    let _t18 = _t14 + _t17 + _t10;
+    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 1.17549435e-38f);
+    let _t20 = _t2 * _t10 * _t19;
+    let _t21 = _t20 * _t20;
+    let _t22 = _t21 * _t21;
+    let _t23 = _t1 * (_t19 * sqrt(_t18));
+    let _t24 = (1.0f - _t20 * 0.5f + (0.0416666679f - _t20 * 0.00138888892f) * _t21 + _t22 * (2.48015876e-05f - _t20 * 2.75573029e-07f + _t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f))) * _t12 - (_t22 * ((1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21 + (2.75573188e-06f - _t20 * 2.50520991e-08f)) + ((0.00833333377f - _t20 * 0.000198412701f) * _t21 + (1.0f - _t20 * 0.166666672f))) * (_t9 * _t23) * _t4;
+    let _t25 = _t17 * _t2 * _t19;
+    let _t26 = _t25 * _t25;
+    let _t27 = _t26 * _t26;
+    let _t28 = _t6 * (1.0f - _t25 * 0.5f + (0.0416666679f - _t25 * 0.00138888892f) * _t26 + (2.48015876e-05f - _t25 * 2.75573029e-07f + (2.08744777e-09f - _t25 * 1.13046204e-11f) * _t26) * _t27) - (1.0f - _t25 * 0.166666672f + (0.00833333377f - _t25 * 0.000198412701f) * _t26 + (2.75573188e-06f - _t25 * 2.50520991e-08f + (1.60577024e-10f - _t25 * 7.54937183e-13f) * _t26) * _t27) * (_t16 * _t23) * _t15;
+    let _t29 = _t14 * _t2 * _t19;
     let _t30 = _t29 * _t29;
-    let _t31 = _t8 * ((select((select((-1.0f), 1.0f, _t27 > 0.0f)), _t27, _t26)) * (1.0f - 0.166666672f * _t28 + _t29 * (0.00833333377f - 0.000198412701f * _t28) + _t30 * (2.75573188e-06f - 2.50520991e-08f * _t28 + _t29 * (1.60577024e-10f - 7.54937183e-13f * _t28)))) + _t3 * (_t30 * (2.48015876e-05f - _t28 * 2.75573029e-07f + _t29 * (2.08744777e-09f - 1.13046204e-11f * _t28)) + (1.0f - _t28 * 0.5f + _t29 * (0.0416666679f - 0.00138888892f * _t28)));
-    let _t32 = _t14 * _t11;
-    let _t33 = _t13 * (_t32 * _t32);
-    let _t34 = _t33 <= 1.0f;
-    let _t35 = select(1.0f, _t33, _t34);
-    let _t36 = _t35 * _t35;
-    let _t37 = _t36 * _t36;
-    let _t38 = -(_t21 * _t32);
-    let _t39 = ((_t36 * (1.60577024e-10f - _t35 * 7.54937183e-13f) + (2.75573188e-06f - _t35 * 2.50520991e-08f)) * _t37 + (_t36 * (0.00833333377f - _t35 * 0.000198412701f) + (1.0f - _t35 * 0.166666672f))) * (select((select((-1.0f), 1.0f, _t38 > 0.0f)), _t38, _t34)) * _t10 + (1.0f - _t35 * 0.5f + (0.0416666679f - _t35 * 0.00138888892f) * _t36 + _t37 * ((2.08744777e-09f - _t35 * 1.13046204e-11f) * _t36 + (2.48015876e-05f - _t35 * 2.75573029e-07f))) * _t6;
-    return 4.0f * (_t23 * _t31 * _t39) + _t39 * 3.0f + _t31 * 3.0f + _t23 * 3.0f;
+    let _t31 = _t30 * _t30;
+    let _t32 = _t8 * (1.0f - _t29 * 0.5f + (0.0416666679f - _t29 * 0.00138888892f) * _t30 + _t31 * (_t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f) + (2.48015876e-05f - _t29 * 2.75573029e-07f))) - _t13 * _t23 * (1.0f - _t29 * 0.166666672f + _t30 * (0.00833333377f - _t29 * 0.000198412701f) + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f))) * _t11;
+    return 3.0f * _t24 + (_t28 * 3.0f + 3.0f * _t32) + 4.0f * (_t28 * _t24 * _t32);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 204.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 290.
 fn neovius_proj_o2_shell(p: vec3<f32>, t: f32) -> f32 {
-    let _t0 = 6.28318548f * p.x;
-    let _t1 = neovius_proj_o2_cos(_t0);
-    let _t2 = p.z * 6.28318548f;
-    let _t3 = neovius_proj_o2_cos(_t2);
-    let _t4 = 6.28318548f * p.y;
-    let _t5 = neovius_proj_o2_sin(_t4);
-    let _t6 = 4.0f * (_t3 * _t5 * _t1) + _t5 * 3.0f;
-    let _t7 = neovius_proj_o2_sin(_t2);
-    let _t8 = neovius_proj_o2_cos(_t4);
-    let _t9 = _t7 * 3.0f + 4.0f * (_t7 * _t8 * _t1);
-    let _t10 = neovius_proj_o2_sin(_t0);
-    let _t11 = 3.0f * _t10 + 4.0f * (_t3 * _t8 * _t10);
-    let _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    let _t13 = select(0.0f, 1.0f / _t12, _t12 > 0.0f);
-    let _t14 = 6.28318548f * (t * 0.5f);
-    let _t15 = _t14 * _t11;
-    let _t16 = _t13 * (_t15 * _t15);
-    let _t17 = _t16 <= 1.0f;
-    let _t18 = select(1.0f, _t16, _t17);
-    let _t19 = _t18 * _t18;
-    let _t20 = _t19 * _t19;
-    let _t21 = _t1 * ((0.0416666679f - 0.00138888892f * _t18) * _t19 + (1.0f - _t18 * 0.5f) + (2.48015876e-05f - _t18 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t18) * _t19) * _t20);
-    let _t22 = sqrt(_t13);
-    let _t23 = _t22 * _t15;
-    let _t24 = -_t23;
-    let _t25 = (2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20 + (_t19 * (0.00833333377f - 0.000198412701f * _t18) + (1.0f - 0.166666672f * _t18));
-    let _t26 = _t21 + (select((select((-1.0f), 1.0f, _t24 > 0.0f)), _t24, _t17)) * _t25 * _t10;
-    let _t27 = _t6 * _t14;
-    let _t28 = _t13 * (_t27 * _t27);
-    let _t29 = _t28 <= 1.0f;
-    let _t30 = select(1.0f, _t28, _t29);
+    let _t0 = 6.28318548f * (t * 0.5f);
+    let _t1 = select(1.0f, (select((-1.0f), _t0, (-1.0f) <= _t0)), _t0 <= 1.0f);
+    let _t2 = _t1 * _t1;
+    let _t3 = p.z * 6.28318548f;
+    let _t4 = neovius_proj_o2_sin(_t3);
+    let _t5 = 6.28318548f * p.y;
+    let _t6 = neovius_proj_o2_cos(_t5);
+    let _t7 = 6.28318548f * p.x;
+    let _t8 = neovius_proj_o2_cos(_t7);
+    let _t9 = _t4 * 3.0f + 4.0f * (_t4 * _t6 * _t8);
+    let _t10 = _t9 * _t9;
+    let _t11 = neovius_proj_o2_cos(_t3);
+    let _t12 = neovius_proj_o2_sin(_t5);
+    let _t13 = 4.0f * (_t11 * _t12 * _t8) + _t12 * 3.0f;
+    let _t14 = _t13 * _t13;
+    let _t15 = neovius_proj_o2_sin(_t7);
+    let _t16 = 3.0f * _t15 + 4.0f * (_t11 * _t6 * _t15);
+    let _t17 = _t16 * _t16;
+    let _t18 = _t14 + _t10 + _t17;
+    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 1.17549435e-38f);
+    let _t20 = _t2 * _t10 * _t19;
+    let _t21 = _t20 * _t20;
+    let _t22 = _t21 * _t21;
+    let _t23 = _t19 * sqrt(_t18);
+    let _t24 = _t1 * _t23;
+    let _t25 = ((0.0416666679f - 0.00138888892f * _t20) * _t21 + (1.0f - _t20 * 0.5f) + _t22 * (_t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f) + (2.48015876e-05f - _t20 * 2.75573029e-07f))) * _t11 - _t4 * (((0.00833333377f - _t20 * 0.000198412701f) * _t21 + (1.0f - 0.166666672f * _t20) + _t22 * ((1.60577024e-10f - 7.54937183e-13f * _t20) * _t21 + (2.75573188e-06f - 2.50520991e-08f * _t20))) * (_t9 * _t24));
+    let _t26 = _t19 * (_t2 * _t17);
+    let _t27 = _t26 * _t26;
+    let _t28 = _t27 * _t27;
+    let _t29 = (1.0f - _t26 * 0.5f + _t27 * (0.0416666679f - 0.00138888892f * _t26) + (2.48015876e-05f - _t26 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t26) * _t27) * _t28) * _t8 - _t15 * (((2.75573188e-06f - 2.50520991e-08f * _t26 + _t27 * (1.60577024e-10f - 7.54937183e-13f * _t26)) * _t28 + (1.0f - 0.166666672f * _t26 + _t27 * (0.00833333377f - 0.000198412701f * _t26))) * (_t24 * _t16));
+    let _t30 = _t2 * _t14 * _t19;
     let _t31 = _t30 * _t30;
     let _t32 = _t31 * _t31;
-    let _t33 = (_t31 * (0.0416666679f - _t30 * 0.00138888892f) + (1.0f - _t30 * 0.5f) + _t32 * (_t31 * (2.08744777e-09f - _t30 * 1.13046204e-11f) + (2.48015876e-05f - _t30 * 2.75573029e-07f))) * _t8;
-    let _t34 = _t22 * _t27;
-    let _t35 = -_t34;
-    let _t36 = _t31 * (0.00833333377f - _t30 * 0.000198412701f) + (1.0f - _t30 * 0.166666672f) + ((1.60577024e-10f - _t30 * 7.54937183e-13f) * _t31 + (2.75573188e-06f - _t30 * 2.50520991e-08f)) * _t32;
-    let _t37 = _t33 + _t5 * ((select((select((-1.0f), 1.0f, _t35 > 0.0f)), _t35, _t29)) * _t36);
-    let _t38 = _t9 * _t14;
-    let _t39 = _t38 * _t38 * _t13;
-    let _t40 = _t39 <= 1.0f;
-    let _t41 = select(1.0f, _t39, _t40);
-    let _t42 = _t41 * _t41;
+    let _t33 = _t6 * ((2.48015876e-05f - _t30 * 2.75573029e-07f + (2.08744777e-09f - _t30 * 1.13046204e-11f) * _t31) * _t32 + ((0.0416666679f - 0.00138888892f * _t30) * _t31 + (1.0f - _t30 * 0.5f))) - _t13 * _t24 * ((0.00833333377f - _t30 * 0.000198412701f) * _t31 + (1.0f - _t30 * 0.166666672f) + (_t31 * (1.60577024e-10f - 7.54937183e-13f * _t30) + (2.75573188e-06f - _t30 * 2.50520991e-08f)) * _t32) * _t12;
+    let _t34 = -_t0;
+    let _t35 = select(1.0f, (select((-1.0f), _t34, (-1.0f) <= _t34)), _t34 <= 1.0f);
+    let _t36 = _t35 * _t35;
+    let _t37 = _t36 * _t14 * _t19;
+    let _t38 = _t37 * _t37;
+    let _t39 = _t38 * _t38;
+    let _t40 = _t35 * _t23;
+    let _t41 = _t6 * (_t39 * ((2.08744777e-09f - 1.13046204e-11f * _t37) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f)) + (1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38)) - (((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) * _t39 + ((0.00833333377f - 0.000198412701f * _t37) * _t38 + (1.0f - 0.166666672f * _t37))) * (_t13 * _t40) * _t12;
+    let _t42 = _t19 * (_t36 * _t17);
     let _t43 = _t42 * _t42;
-    let _t44 = ((1.60577024e-10f - _t41 * 7.54937183e-13f) * _t42 + (2.75573188e-06f - _t41 * 2.50520991e-08f)) * _t43 + ((0.00833333377f - _t41 * 0.000198412701f) * _t42 + (1.0f - _t41 * 0.166666672f));
-    let _t45 = _t22 * _t38;
-    let _t46 = -_t45;
-    let _t47 = _t3 * (_t43 * ((2.08744777e-09f - _t41 * 1.13046204e-11f) * _t42 + (2.48015876e-05f - _t41 * 2.75573029e-07f)) + ((0.0416666679f - _t41 * 0.00138888892f) * _t42 + (1.0f - _t41 * 0.5f)));
-    let _t48 = _t7 * (_t44 * (select((select((-1.0f), 1.0f, _t46 > 0.0f)), _t46, _t40))) + _t47;
-    let _t49 = _t7 * (_t44 * (select((select((-1.0f), 1.0f, _t45 > 0.0f)), _t45, _t40))) + _t47;
-    let _t50 = _t33 + _t36 * (select((select((-1.0f), 1.0f, _t34 > 0.0f)), _t34, _t29)) * _t5;
-    let _t51 = _t21 + (select((select((-1.0f), 1.0f, _t23 > 0.0f)), _t23, _t17)) * _t25 * _t10;
-    return (_t26 * 3.0f + (_t37 * 3.0f + _t48 * 3.0f) + 4.0f * (_t48 * (_t37 * _t26))) * (3.0f * _t49 + 4.0f * (_t50 * _t49 * _t51) + 3.0f * _t51 + _t50 * 3.0f);
+    let _t44 = _t43 * _t43;
+    let _t45 = ((2.48015876e-05f - _t42 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t42) * _t43) * _t44 + (1.0f - _t42 * 0.5f + _t43 * (0.0416666679f - 0.00138888892f * _t42))) * _t8 - ((_t43 * (1.60577024e-10f - 7.54937183e-13f * _t42) + (2.75573188e-06f - 2.50520991e-08f * _t42)) * _t44 + ((0.00833333377f - 0.000198412701f * _t42) * _t43 + (1.0f - 0.166666672f * _t42))) * (_t40 * _t16) * _t15;
+    let _t46 = _t36 * _t10 * _t19;
+    let _t47 = _t46 * _t46;
+    let _t48 = _t47 * _t47;
+    let _t49 = _t11 * ((2.48015876e-05f - _t46 * 2.75573029e-07f + _t47 * (2.08744777e-09f - _t46 * 1.13046204e-11f)) * _t48 + ((0.0416666679f - 0.00138888892f * _t46) * _t47 + (1.0f - _t46 * 0.5f))) - ((0.00833333377f - _t46 * 0.000198412701f) * _t47 + (1.0f - 0.166666672f * _t46) + _t48 * (_t47 * (1.60577024e-10f - 7.54937183e-13f * _t46) + (2.75573188e-06f - 2.50520991e-08f * _t46))) * (_t9 * _t40) * _t4;
+    return (_t25 * 3.0f + 3.0f * _t29 + 4.0f * (_t25 * _t33 * _t29) + _t33 * 3.0f) * (_t41 * 3.0f + (4.0f * (_t45 * (_t49 * _t41)) + _t49 * 3.0f + _t45 * 3.0f));
 }
 
-// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 205.
+// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 191.
 fn neovius_proj_o2_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
     let _t0 = p.z * 6.28318548f;
-    let _t1 = neovius_proj_o2_cos(_t0);
+    let _t1 = neovius_proj_o2_sin(_t0);
     let _t2 = 6.28318548f * p.y;
-    let _t3 = neovius_proj_o2_sin(_t2);
+    let _t3 = neovius_proj_o2_cos(_t2);
     let _t4 = 6.28318548f * p.x;
     let _t5 = neovius_proj_o2_cos(_t4);
-    let _t6 = 4.0f * (_t1 * _t3 * _t5) + _t3 * 3.0f;
-    let _t7 = neovius_proj_o2_sin(_t0);
-    let _t8 = neovius_proj_o2_cos(_t2);
-    let _t9 = _t7 * 3.0f + 4.0f * (_t7 * _t8 * _t5);
-    let _t10 = neovius_proj_o2_sin(_t4);
-    let _t11 = 3.0f * _t10 + 4.0f * (_t1 * _t8 * _t10);
-    let _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    let _t13 = select(0.0f, 1.0f / _t12, _t12 > 0.0f);
-    let _t14 = 6.28318548f * h;
-    let _t15 = _t14 * _t11;
-    let _t16 = _t13 * (_t15 * _t15);
-    let _t17 = _t16 <= 1.0f;
-    let _t18 = select(1.0f, _t16, _t17);
-    let _t19 = _t18 * _t18;
-    let _t20 = _t19 * _t19;
-    let _t21 = 1.0f - _t18 * 0.5f + (0.0416666679f - _t18 * 0.00138888892f) * _t19 + _t20 * ((2.08744777e-09f - _t18 * 1.13046204e-11f) * _t19 + (2.48015876e-05f - _t18 * 2.75573029e-07f));
-    let _t22 = sqrt(_t13);
-    let _t23 = -(_t22 * _t15);
-    let _t24 = ((_t19 * (1.60577024e-10f - _t18 * 7.54937183e-13f) + (2.75573188e-06f - _t18 * 2.50520991e-08f)) * _t20 + (_t19 * (0.00833333377f - _t18 * 0.000198412701f) + (1.0f - _t18 * 0.166666672f))) * (select((select((-1.0f), 1.0f, _t23 > 0.0f)), _t23, _t17));
-    let _t25 = _t21 * _t10 - _t24 * _t5;
-    let _t26 = _t14 * _t6;
-    let _t27 = _t13 * (_t26 * _t26);
-    let _t28 = _t27 <= 1.0f;
-    let _t29 = select(1.0f, _t27, _t28);
-    let _t30 = _t29 * _t29;
-    let _t31 = _t30 * _t30;
-    let _t32 = (_t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f) + (2.48015876e-05f - _t29 * 2.75573029e-07f)) * _t31 + (_t30 * (0.0416666679f - 0.00138888892f * _t29) + (1.0f - _t29 * 0.5f));
-    let _t33 = -(_t26 * _t22);
-    let _t34 = (select((select((-1.0f), 1.0f, _t33 > 0.0f)), _t33, _t28)) * ((0.00833333377f - _t29 * 0.000198412701f) * _t30 + (1.0f - _t29 * 0.166666672f) + (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - 7.54937183e-13f * _t29)) * _t31);
-    let _t35 = _t8 * _t32 + _t3 * _t34;
-    let _t36 = _t9 * _t14;
-    let _t37 = _t36 * _t36 * _t13;
-    let _t38 = _t37 <= 1.0f;
-    let _t39 = -(_t36 * _t22);
-    let _t40 = select(1.0f, _t37, _t38);
-    let _t41 = _t40 * _t40;
-    let _t42 = _t41 * _t41;
-    let _t43 = (select((select((-1.0f), 1.0f, _t39 > 0.0f)), _t39, _t38)) * (1.0f - 0.166666672f * _t40 + _t41 * (0.00833333377f - 0.000198412701f * _t40) + _t42 * (2.75573188e-06f - 2.50520991e-08f * _t40 + _t41 * (1.60577024e-10f - 7.54937183e-13f * _t40)));
-    let _t44 = _t42 * (2.48015876e-05f - _t40 * 2.75573029e-07f + _t41 * (2.08744777e-09f - 1.13046204e-11f * _t40)) + (1.0f - _t40 * 0.5f + _t41 * (0.0416666679f - 0.00138888892f * _t40));
-    let _t45 = _t7 * _t43 + _t1 * _t44;
-    let _t46 = 3.0f * _t25 + 4.0f * (_t35 * _t45 * _t25);
-    let _t47 = _t7 * _t44 - _t1 * _t43;
-    let _t48 = _t24 * _t10 + _t21 * _t5;
-    let _t49 = 3.0f * _t47 + 4.0f * (_t47 * (_t35 * _t48));
-    let _t50 = _t3 * _t32 - _t8 * _t34;
-    let _t51 = 4.0f * (_t48 * (_t45 * _t50)) + _t50 * 3.0f;
-    let _t52 = _t49 * _t49 + (_t46 * _t46 + _t51 * _t51);
-    let _t53 = select(0.0f, 1.0f / sqrt(_t52), _t52 > 0.0f);
-    return vec3<f32>(-(_t46 * _t53), -(_t51 * _t53), -(_t49 * _t53));
+    let _t6 = _t1 * 3.0f + 4.0f * (_t1 * _t3 * _t5);
+    let _t7 = _t6 * _t6;
+    let _t8 = 6.28318548f * h;
+    let _t9 = select(1.0f, (select((-1.0f), _t8, (-1.0f) <= _t8)), _t8 <= 1.0f);
+    let _t10 = _t9 * _t9;
+    let _t11 = neovius_proj_o2_cos(_t0);
+    let _t12 = neovius_proj_o2_sin(_t2);
+    let _t13 = 4.0f * (_t11 * _t12 * _t5) + _t12 * 3.0f;
+    let _t14 = _t13 * _t13;
+    let _t15 = neovius_proj_o2_sin(_t4);
+    let _t16 = 3.0f * _t15 + 4.0f * (_t11 * _t3 * _t15);
+    let _t17 = _t16 * _t16;
+    let _t18 = _t14 + _t7 + _t17;
+    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 1.17549435e-38f);
+    let _t20 = _t7 * _t10 * _t19;
+    let _t21 = _t20 * _t20;
+    let _t22 = _t21 * _t21;
+    let _t23 = 1.0f - _t20 * 0.5f + (0.0416666679f - _t20 * 0.00138888892f) * _t21 + (2.48015876e-05f - _t20 * 2.75573029e-07f + (2.08744777e-09f - _t20 * 1.13046204e-11f) * _t21) * _t22;
+    let _t24 = _t9 * (_t19 * sqrt(_t18));
+    let _t25 = (1.0f - _t20 * 0.166666672f + (0.00833333377f - _t20 * 0.000198412701f) * _t21 + (2.75573188e-06f - _t20 * 2.50520991e-08f + (1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21) * _t22) * (_t6 * _t24);
+    let _t26 = _t1 * _t23 + _t25 * _t11;
+    let _t27 = _t10 * _t17 * _t19;
+    let _t28 = _t27 * _t27;
+    let _t29 = _t28 * _t28;
+    let _t30 = 1.0f - _t27 * 0.5f + (0.0416666679f - _t27 * 0.00138888892f) * _t28 + _t29 * (2.48015876e-05f - _t27 * 2.75573029e-07f + _t28 * (2.08744777e-09f - _t27 * 1.13046204e-11f));
+    let _t31 = (_t29 * ((1.60577024e-10f - _t27 * 7.54937183e-13f) * _t28 + (2.75573188e-06f - _t27 * 2.50520991e-08f)) + ((0.00833333377f - _t27 * 0.000198412701f) * _t28 + (1.0f - _t27 * 0.166666672f))) * (_t16 * _t24);
+    let _t32 = _t30 * _t5 - _t31 * _t15;
+    let _t33 = _t14 * _t10 * _t19;
+    let _t34 = _t33 * _t33;
+    let _t35 = _t34 * _t34;
+    let _t36 = 1.0f - _t33 * 0.5f + (0.0416666679f - _t33 * 0.00138888892f) * _t34 + _t35 * (_t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f) + (2.48015876e-05f - _t33 * 2.75573029e-07f));
+    let _t37 = _t13 * _t24 * (1.0f - _t33 * 0.166666672f + _t34 * (0.00833333377f - _t33 * 0.000198412701f) + _t35 * (2.75573188e-06f - _t33 * 2.50520991e-08f + _t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f)));
+    let _t38 = _t3 * _t36 - _t37 * _t12;
+    let _t39 = 3.0f * _t26 + 4.0f * (_t32 * _t26 * _t38);
+    let _t40 = _t30 * _t15 + _t31 * _t5;
+    let _t41 = _t11 * _t23 - _t25 * _t1;
+    let _t42 = 4.0f * (_t40 * _t41 * _t38) + _t40 * 3.0f;
+    let _t43 = _t37 * _t3 + _t12 * _t36;
+    let _t44 = 4.0f * (_t32 * (_t43 * _t41)) + _t43 * 3.0f;
+    let _t45 = _t39 * _t39 + _t42 * _t42 + _t44 * _t44;
+    let _t46 = select(0.0f, 1.0f / sqrt(_t45), _t45 > 0.0f);
+    return vec3<f32>(-(_t46 * _t42), -(_t44 * _t46), -(_t39 * _t46));
 }

@@ -36,9 +36,10 @@ safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| wi
     has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
     every function returns a finite value for finite input (do not compile with -ffinite-math-only).
     sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while each component of d = h n stays within 1 (natural units, |h| <= 0.159 cell on a
-    2*pi-periodic surface); larger displacements are clamped to it, which keeps |q_K - p| <= |h| and
-    so the bound above.
+    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
+    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
+    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
+    1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -48,12 +49,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 15
-    - offset: 340
-    - shell: 528
-    - normal: 370
+    - offset: 307
+    - shell: 582
+    - normal: 337
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":340,"shell":528,"normal":370}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":307,"shell":582,"normal":337}} */
 #ifndef OFFSETGEN_NEOVIUS_PROJ_O4_GLSL
 #define OFFSETGEN_NEOVIUS_PROJ_O4_GLSL
 
@@ -91,8 +92,193 @@ highp float neovius_proj_o4_field(highp vec3 p)
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
-// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 340.
+// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 307.
 highp float neovius_proj_o4_offset(highp vec3 p, highp float h)
+{
+    highp float _t0 = p.z * 6.28318548;
+    highp float _t1 = neovius_proj_o4_cos(_t0);
+    highp float _t2 = neovius_proj_o4_sin(_t0);
+    highp float _t3 = 6.28318548 * p.y;
+    highp float _t4 = neovius_proj_o4_cos(_t3);
+    highp float _t5 = 6.28318548 * p.x;
+    highp float _t6 = neovius_proj_o4_cos(_t5);
+    highp float _t7 = _t2 * 3.0 + 4.0 * (_t2 * _t4 * _t6);
+    highp float _t8 = _t7 * _t7;
+    highp float _t9 = 6.28318548 * h;
+    highp float _t10 = (_t9 <= 1.0) ? (((-1.0) <= _t9) ? _t9 : (-1.0)) : 1.0;
+    highp float _t11 = _t10 * _t10;
+    highp float _t12 = neovius_proj_o4_sin(_t3);
+    highp float _t13 = 4.0 * (_t1 * _t12 * _t6) + _t12 * 3.0;
+    highp float _t14 = _t13 * _t13;
+    highp float _t15 = neovius_proj_o4_sin(_t5);
+    highp float _t16 = 3.0 * _t15 + 4.0 * (_t1 * _t4 * _t15);
+    highp float _t17 = _t16 * _t16;
+    highp float _t18 = _t14 + _t8 + _t17;
+    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    highp float _t20 = _t8 * _t11 * _t19;
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = 1.0 - _t20 * 0.5 + (0.0416666679 - _t20 * 0.00138888892) * _t21 + (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21) * _t22;
+    highp float _t24 = _t10 * (_t19 * sqrt(_t18));
+    highp float _t25 = (1.0 - _t20 * 0.166666672 + (0.00833333377 - _t20 * 0.000198412701) * _t21 + (2.75573188e-06 - _t20 * 2.50520991e-08 + (1.60577024e-10 - _t20 * 7.54937183e-13) * _t21) * _t22) * (_t7 * _t24);
+    highp float _t26 = _t2 * _t23 + _t25 * _t1;
+    highp float _t27 = _t11 * _t17 * _t19;
+    highp float _t28 = _t27 * _t27;
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = 1.0 - _t27 * 0.5 + (0.0416666679 - _t27 * 0.00138888892) * _t28 + _t29 * (2.48015876e-05 - _t27 * 2.75573029e-07 + _t28 * (2.08744777e-09 - _t27 * 1.13046204e-11));
+    highp float _t31 = (_t29 * ((1.60577024e-10 - _t27 * 7.54937183e-13) * _t28 + (2.75573188e-06 - _t27 * 2.50520991e-08)) + ((0.00833333377 - _t27 * 0.000198412701) * _t28 + (1.0 - _t27 * 0.166666672))) * (_t16 * _t24);
+    highp float _t32 = _t30 * _t6 - _t31 * _t15;
+    highp float _t33 = _t14 * _t11 * _t19;
+    highp float _t34 = _t33 * _t33;
+    highp float _t35 = _t34 * _t34;
+    highp float _t36 = 1.0 - _t33 * 0.5 + (0.0416666679 - _t33 * 0.00138888892) * _t34 + _t35 * (_t34 * (2.08744777e-09 - _t33 * 1.13046204e-11) + (2.48015876e-05 - _t33 * 2.75573029e-07));
+    highp float _t37 = _t13 * _t24 * (1.0 - _t33 * 0.166666672 + _t34 * (0.00833333377 - _t33 * 0.000198412701) + _t35 * (2.75573188e-06 - _t33 * 2.50520991e-08 + _t34 * (1.60577024e-10 - _t33 * 7.54937183e-13)));
+    highp float _t38 = _t4 * _t36 - _t37 * _t12;
+    highp float _t39 = 3.0 * _t26 + 4.0 * (_t32 * _t26 * _t38);
+    highp float _t40 = _t39 * _t39;
+    highp float _t41 = _t30 * _t15 + _t31 * _t6;
+    highp float _t42 = _t1 * _t23 - _t25 * _t2;
+    highp float _t43 = 4.0 * (_t41 * _t42 * _t38) + _t41 * 3.0;
+    highp float _t44 = _t43 * _t43;
+    highp float _t45 = _t37 * _t4 + _t12 * _t36;
+    highp float _t46 = 4.0 * (_t32 * (_t45 * _t42)) + _t45 * 3.0;
+    highp float _t47 = _t46 * _t46;
+    highp float _t48 = _t40 + _t44 + _t47;
+    highp float _t49 = (_t48 > 1.17549435e-38) ? 1.0 / _t48 : 0.0;
+    highp float _t50 = _t40 * _t11 * _t49;
+    highp float _t51 = _t50 * _t50;
+    highp float _t52 = _t51 * _t51;
+    highp float _t53 = _t10 * (sqrt(_t48) * _t49);
+    highp float _t54 = _t1 * (1.0 - _t50 * 0.5 + _t51 * (0.0416666679 - 0.00138888892 * _t50) + ((2.08744777e-09 - 1.13046204e-11 * _t50) * _t51 + (2.48015876e-05 - _t50 * 2.75573029e-07)) * _t52) - _t2 * ((_t51 * (0.00833333377 - 0.000198412701 * _t50) + (1.0 - 0.166666672 * _t50) + (2.75573188e-06 - 2.50520991e-08 * _t50 + (1.60577024e-10 - 7.54937183e-13 * _t50) * _t51) * _t52) * (_t39 * _t53));
+    highp float _t55 = _t11 * _t47 * _t49;
+    highp float _t56 = _t55 * _t55;
+    highp float _t57 = _t56 * _t56;
+    highp float _t58 = _t4 * ((2.48015876e-05 - _t55 * 2.75573029e-07 + _t56 * (2.08744777e-09 - 1.13046204e-11 * _t55)) * _t57 + (1.0 - _t55 * 0.5 + _t56 * (0.0416666679 - 0.00138888892 * _t55))) - ((2.75573188e-06 - 2.50520991e-08 * _t55 + _t56 * (1.60577024e-10 - 7.54937183e-13 * _t55)) * _t57 + (1.0 - 0.166666672 * _t55 + _t56 * (0.00833333377 - 0.000198412701 * _t55))) * (_t46 * _t53) * _t12;
+    highp float _t59 = _t49 * (_t44 * _t11);
+    highp float _t60 = _t59 * _t59;
+    highp float _t61 = _t60 * _t60;
+    highp float _t62 = (1.0 - _t59 * 0.5 + (0.0416666679 - 0.00138888892 * _t59) * _t60 + (2.48015876e-05 - _t59 * 2.75573029e-07 + _t60 * (2.08744777e-09 - 1.13046204e-11 * _t59)) * _t61) * _t6 - _t15 * ((1.0 - 0.166666672 * _t59 + _t60 * (0.00833333377 - 0.000198412701 * _t59) + ((1.60577024e-10 - 7.54937183e-13 * _t59) * _t60 + (2.75573188e-06 - 2.50520991e-08 * _t59)) * _t61) * (_t53 * _t43));
+    return 3.0 * _t54 + (_t58 * 3.0 + (3.0 * _t62 + _t58 * _t54 * _t62 * 4.0));
+}
+
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 582.
+highp float neovius_proj_o4_shell(highp vec3 p, highp float t)
+{
+    highp float _t0 = 6.28318548 * (t * 0.5);
+    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t2 = _t1 * _t1;
+    highp float _t3 = p.z * 6.28318548;
+    highp float _t4 = neovius_proj_o4_cos(_t3);
+    highp float _t5 = 6.28318548 * p.y;
+    highp float _t6 = neovius_proj_o4_sin(_t5);
+    highp float _t7 = 6.28318548 * p.x;
+    highp float _t8 = neovius_proj_o4_cos(_t7);
+    highp float _t9 = 4.0 * (_t4 * _t6 * _t8) + _t6 * 3.0;
+    highp float _t10 = _t9 * _t9;
+    highp float _t11 = neovius_proj_o4_sin(_t3);
+    highp float _t12 = neovius_proj_o4_cos(_t5);
+    highp float _t13 = _t11 * 3.0 + 4.0 * (_t11 * _t12 * _t8);
+    highp float _t14 = _t13 * _t13;
+    highp float _t15 = neovius_proj_o4_sin(_t7);
+    highp float _t16 = 3.0 * _t15 + 4.0 * (_t4 * _t12 * _t15);
+    highp float _t17 = _t16 * _t16;
+    highp float _t18 = _t10 + _t14 + _t17;
+    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    highp float _t20 = _t2 * _t10 * _t19;
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21) * _t22 + ((0.0416666679 - 0.00138888892 * _t20) * _t21 + (1.0 - _t20 * 0.5));
+    highp float _t24 = _t19 * sqrt(_t18);
+    highp float _t25 = _t1 * _t24;
+    highp float _t26 = _t9 * _t25 * ((0.00833333377 - _t20 * 0.000198412701) * _t21 + (1.0 - _t20 * 0.166666672) + (_t21 * (1.60577024e-10 - 7.54937183e-13 * _t20) + (2.75573188e-06 - _t20 * 2.50520991e-08)) * _t22);
+    highp float _t27 = _t23 * _t6 + _t12 * _t26;
+    highp float _t28 = _t2 * _t14 * _t19;
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = _t29 * _t29;
+    highp float _t31 = (0.0416666679 - 0.00138888892 * _t28) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (_t29 * (2.08744777e-09 - _t28 * 1.13046204e-11) + (2.48015876e-05 - _t28 * 2.75573029e-07));
+    highp float _t32 = ((0.00833333377 - _t28 * 0.000198412701) * _t29 + (1.0 - 0.166666672 * _t28) + _t30 * ((1.60577024e-10 - 7.54937183e-13 * _t28) * _t29 + (2.75573188e-06 - 2.50520991e-08 * _t28))) * (_t13 * _t25);
+    highp float _t33 = _t31 * _t4 - _t11 * _t32;
+    highp float _t34 = _t19 * (_t2 * _t17);
+    highp float _t35 = _t34 * _t34;
+    highp float _t36 = _t35 * _t35;
+    highp float _t37 = 1.0 - _t34 * 0.5 + _t35 * (0.0416666679 - 0.00138888892 * _t34) + (2.48015876e-05 - _t34 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t34) * _t35) * _t36;
+    highp float _t38 = ((2.75573188e-06 - 2.50520991e-08 * _t34 + _t35 * (1.60577024e-10 - 7.54937183e-13 * _t34)) * _t36 + (1.0 - 0.166666672 * _t34 + _t35 * (0.00833333377 - 0.000198412701 * _t34))) * (_t25 * _t16);
+    highp float _t39 = _t37 * _t8 - _t15 * _t38;
+    highp float _t40 = 3.0 * _t27 + 4.0 * (_t33 * _t39 * _t27);
+    highp float _t41 = _t40 * _t40;
+    highp float _t42 = _t8 * _t38 + _t37 * _t15;
+    highp float _t43 = _t12 * _t23 - _t26 * _t6;
+    highp float _t44 = _t42 * 3.0 + 4.0 * (_t33 * _t42 * _t43);
+    highp float _t45 = _t44 * _t44;
+    highp float _t46 = _t31 * _t11 + _t4 * _t32;
+    highp float _t47 = 4.0 * (_t43 * _t39 * _t46) + 3.0 * _t46;
+    highp float _t48 = _t47 * _t47;
+    highp float _t49 = _t41 + (_t45 + _t48);
+    highp float _t50 = (_t49 > 1.17549435e-38) ? 1.0 / _t49 : 0.0;
+    highp float _t51 = _t50 * (_t2 * _t45);
+    highp float _t52 = _t51 * _t51;
+    highp float _t53 = _t52 * _t52;
+    highp float _t54 = _t1 * (_t50 * sqrt(_t49));
+    highp float _t55 = (1.0 - _t51 * 0.5 + _t52 * (0.0416666679 - 0.00138888892 * _t51) + (_t52 * (2.08744777e-09 - _t51 * 1.13046204e-11) + (2.48015876e-05 - _t51 * 2.75573029e-07)) * _t53) * _t8 - (1.0 - 0.166666672 * _t51 + _t52 * (0.00833333377 - 0.000198412701 * _t51) + _t53 * (_t52 * (1.60577024e-10 - 7.54937183e-13 * _t51) + (2.75573188e-06 - 2.50520991e-08 * _t51))) * (_t44 * _t54) * _t15;
+    highp float _t56 = _t50 * (_t2 * _t41);
+    highp float _t57 = _t56 * _t56;
+    highp float _t58 = _t57 * _t57;
+    highp float _t59 = _t12 * (_t58 * (_t57 * (2.08744777e-09 - 1.13046204e-11 * _t56) + (2.48015876e-05 - 2.75573029e-07 * _t56)) + (1.0 - _t56 * 0.5 + (0.0416666679 - 0.00138888892 * _t56) * _t57)) - ((0.00833333377 - 0.000198412701 * _t56) * _t57 + (1.0 - 0.166666672 * _t56) + (2.75573188e-06 - 2.50520991e-08 * _t56 + (1.60577024e-10 - 7.54937183e-13 * _t56) * _t57) * _t58) * (_t40 * _t54) * _t6;
+    highp float _t60 = _t50 * (_t2 * _t48);
+    highp float _t61 = _t60 * _t60;
+    highp float _t62 = _t61 * _t61;
+    highp float _t63 = _t4 * ((2.48015876e-05 - _t60 * 2.75573029e-07 + (2.08744777e-09 - _t60 * 1.13046204e-11) * _t61) * _t62 + ((0.0416666679 - _t60 * 0.00138888892) * _t61 + (1.0 - _t60 * 0.5))) - _t11 * (_t54 * _t47 * (1.0 - _t60 * 0.166666672 + (0.00833333377 - _t60 * 0.000198412701) * _t61 + ((1.60577024e-10 - _t60 * 7.54937183e-13) * _t61 + (2.75573188e-06 - _t60 * 2.50520991e-08)) * _t62));
+    highp float _t64 = -_t0;
+    highp float _t65 = (_t64 <= 1.0) ? (((-1.0) <= _t64) ? _t64 : (-1.0)) : 1.0;
+    highp float _t66 = _t65 * _t65;
+    highp float _t67 = _t19 * (_t66 * _t17);
+    highp float _t68 = _t67 * _t67;
+    highp float _t69 = _t68 * _t68;
+    highp float _t70 = _t65 * _t24;
+    highp float _t71 = ((_t68 * (1.60577024e-10 - 7.54937183e-13 * _t67) + (2.75573188e-06 - 2.50520991e-08 * _t67)) * _t69 + ((0.00833333377 - 0.000198412701 * _t67) * _t68 + (1.0 - 0.166666672 * _t67))) * (_t70 * _t16);
+    highp float _t72 = (2.48015876e-05 - _t67 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t67) * _t68) * _t69 + (1.0 - _t67 * 0.5 + _t68 * (0.0416666679 - 0.00138888892 * _t67));
+    highp float _t73 = _t71 * _t8 + _t72 * _t15;
+    highp float _t74 = _t66 * _t14 * _t19;
+    highp float _t75 = _t74 * _t74;
+    highp float _t76 = _t75 * _t75;
+    highp float _t77 = (2.48015876e-05 - _t74 * 2.75573029e-07 + _t75 * (2.08744777e-09 - _t74 * 1.13046204e-11)) * _t76 + ((0.0416666679 - 0.00138888892 * _t74) * _t75 + (1.0 - _t74 * 0.5));
+    highp float _t78 = ((0.00833333377 - _t74 * 0.000198412701) * _t75 + (1.0 - 0.166666672 * _t74) + _t76 * (_t75 * (1.60577024e-10 - 7.54937183e-13 * _t74) + (2.75573188e-06 - 2.50520991e-08 * _t74))) * (_t13 * _t70);
+    highp float _t79 = _t4 * _t77 - _t78 * _t11;
+    highp float _t80 = _t66 * _t10 * _t19;
+    highp float _t81 = _t80 * _t80;
+    highp float _t82 = _t81 * _t81;
+    highp float _t83 = _t82 * ((2.08744777e-09 - 1.13046204e-11 * _t80) * _t81 + (2.48015876e-05 - _t80 * 2.75573029e-07)) + (1.0 - _t80 * 0.5 + (0.0416666679 - 0.00138888892 * _t80) * _t81);
+    highp float _t84 = (((1.60577024e-10 - 7.54937183e-13 * _t80) * _t81 + (2.75573188e-06 - 2.50520991e-08 * _t80)) * _t82 + ((0.00833333377 - 0.000198412701 * _t80) * _t81 + (1.0 - 0.166666672 * _t80))) * (_t9 * _t70);
+    highp float _t85 = _t12 * _t83 - _t84 * _t6;
+    highp float _t86 = 4.0 * (_t73 * (_t79 * _t85)) + _t73 * 3.0;
+    highp float _t87 = _t86 * _t86;
+    highp float _t88 = _t78 * _t4 + _t11 * _t77;
+    highp float _t89 = _t72 * _t8 - _t71 * _t15;
+    highp float _t90 = 4.0 * (_t88 * _t85 * _t89) + _t88 * 3.0;
+    highp float _t91 = _t90 * _t90;
+    highp float _t92 = _t84 * _t12 + _t83 * _t6;
+    highp float _t93 = _t92 * 3.0 + 4.0 * (_t92 * _t79 * _t89);
+    highp float _t94 = _t93 * _t93;
+    highp float _t95 = _t87 + (_t91 + _t94);
+    highp float _t96 = (_t95 > 1.17549435e-38) ? 1.0 / _t95 : 0.0;
+    highp float _t97 = _t96 * (_t66 * _t94);
+    highp float _t98 = _t97 * _t97;
+    highp float _t99 = _t98 * _t98;
+    highp float _t100 = sqrt(_t95) * _t96 * _t65;
+    highp float _t101 = (1.0 - _t97 * 0.5 + _t98 * (0.0416666679 - 0.00138888892 * _t97) + ((2.08744777e-09 - _t97 * 1.13046204e-11) * _t98 + (2.48015876e-05 - _t97 * 2.75573029e-07)) * _t99) * _t12 - _t100 * _t93 * (1.0 - 0.166666672 * _t97 + (0.00833333377 - 0.000198412701 * _t97) * _t98 + _t99 * (2.75573188e-06 - 2.50520991e-08 * _t97 + (1.60577024e-10 - 7.54937183e-13 * _t97) * _t98)) * _t6;
+    highp float _t102 = _t96 * (_t66 * _t87);
+    highp float _t103 = _t102 * _t102;
+    highp float _t104 = _t103 * _t103;
+    highp float _t105 = ((0.0416666679 - 0.00138888892 * _t102) * _t103 + (1.0 - _t102 * 0.5) + (2.48015876e-05 - _t102 * 2.75573029e-07 + (2.08744777e-09 - _t102 * 1.13046204e-11) * _t103) * _t104) * _t8 - _t86 * _t100 * (1.0 - _t102 * 0.166666672 + (0.00833333377 - _t102 * 0.000198412701) * _t103 + (_t103 * (1.60577024e-10 - 7.54937183e-13 * _t102) + (2.75573188e-06 - _t102 * 2.50520991e-08)) * _t104) * _t15;
+    highp float _t106 = _t96 * (_t66 * _t91);
+    highp float _t107 = _t106 * _t106;
+    highp float _t108 = _t107 * _t107;
+    highp float _t109 = _t4 * (1.0 - _t106 * 0.5 + (0.0416666679 - 0.00138888892 * _t106) * _t107 + (_t107 * (2.08744777e-09 - _t106 * 1.13046204e-11) + (2.48015876e-05 - _t106 * 2.75573029e-07)) * _t108) - _t11 * ((1.0 - 0.166666672 * _t106 + (0.00833333377 - 0.000198412701 * _t106) * _t107 + ((1.60577024e-10 - 7.54937183e-13 * _t106) * _t107 + (2.75573188e-06 - 2.50520991e-08 * _t106)) * _t108) * (_t90 * _t100));
+    return (3.0 * _t55 + (_t59 * 3.0 + _t63 * (_t59 * _t55) * 4.0) + 3.0 * _t63) * (_t101 * 3.0 + _t105 * 3.0 + 4.0 * (_t101 * _t105 * _t109) + 3.0 * _t109);
+}
+
+// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 337.
+highp vec3 neovius_proj_o4_normal(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
     highp float _t1 = neovius_proj_o4_sin(_t0);
@@ -101,314 +287,77 @@ highp float neovius_proj_o4_offset(highp vec3 p, highp float h)
     highp float _t4 = 6.28318548 * p.x;
     highp float _t5 = neovius_proj_o4_cos(_t4);
     highp float _t6 = _t1 * 3.0 + 4.0 * (_t1 * _t3 * _t5);
-    highp float _t7 = 6.28318548 * h;
-    highp float _t8 = _t6 * _t7;
-    highp float _t9 = neovius_proj_o4_cos(_t0);
-    highp float _t10 = neovius_proj_o4_sin(_t2);
-    highp float _t11 = 4.0 * (_t9 * _t10 * _t5) + _t10 * 3.0;
-    highp float _t12 = neovius_proj_o4_sin(_t4);
-    highp float _t13 = 3.0 * _t12 + 4.0 * (_t9 * _t3 * _t12);
-    highp float _t14 = _t11 * _t11 + _t6 * _t6 + _t13 * _t13;
-    highp float _t15 = (_t14 > 0.0) ? 1.0 / _t14 : 0.0;
-    highp float _t16 = _t8 * _t8 * _t15;
-    bool _t17 = _t16 <= 1.0;
-    highp float _t18 = (_t17) ? _t16 : 1.0;
-    highp float _t19 = _t18 * _t18;
-    highp float _t20 = _t19 * _t19;
-    highp float _t21 = _t20 * (2.48015876e-05 - _t18 * 2.75573029e-07 + _t19 * (2.08744777e-09 - 1.13046204e-11 * _t18)) + (1.0 - _t18 * 0.5 + _t19 * (0.0416666679 - 0.00138888892 * _t18));
-    highp float _t22 = sqrt(_t15);
-    highp float _t23 = -(_t8 * _t22);
-    highp float _t24 = ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.166666672 * _t18 + _t19 * (0.00833333377 - 0.000198412701 * _t18) + _t20 * (2.75573188e-06 - 2.50520991e-08 * _t18 + _t19 * (1.60577024e-10 - 7.54937183e-13 * _t18)));
-    highp float _t25 = _t1 * _t21 - _t9 * _t24;
-    highp float _t26 = _t7 * _t11;
-    highp float _t27 = _t15 * (_t26 * _t26);
-    bool _t28 = _t27 <= 1.0;
-    highp float _t29 = (_t28) ? _t27 : 1.0;
-    highp float _t30 = _t29 * _t29;
-    highp float _t31 = _t30 * _t30;
-    highp float _t32 = (_t30 * (2.08744777e-09 - _t29 * 1.13046204e-11) + (2.48015876e-05 - _t29 * 2.75573029e-07)) * _t31 + (_t30 * (0.0416666679 - 0.00138888892 * _t29) + (1.0 - _t29 * 0.5));
-    highp float _t33 = -(_t26 * _t22);
-    highp float _t34 = ((_t28) ? _t33 : ((_t33 > 0.0) ? 1.0 : (-1.0))) * ((0.00833333377 - _t29 * 0.000198412701) * _t30 + (1.0 - _t29 * 0.166666672) + (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - 7.54937183e-13 * _t29)) * _t31);
-    highp float _t35 = _t3 * _t32 + _t10 * _t34;
-    highp float _t36 = _t7 * _t13;
-    highp float _t37 = _t15 * (_t36 * _t36);
-    bool _t38 = _t37 <= 1.0;
-    highp float _t39 = (_t38) ? _t37 : 1.0;
-    highp float _t40 = _t39 * _t39;
-    highp float _t41 = _t40 * _t40;
-    highp float _t42 = -(_t22 * _t36);
-    highp float _t43 = ((_t40 * (1.60577024e-10 - _t39 * 7.54937183e-13) + (2.75573188e-06 - _t39 * 2.50520991e-08)) * _t41 + (_t40 * (0.00833333377 - _t39 * 0.000198412701) + (1.0 - _t39 * 0.166666672))) * ((_t38) ? _t42 : ((_t42 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t44 = 1.0 - _t39 * 0.5 + (0.0416666679 - _t39 * 0.00138888892) * _t40 + _t41 * ((2.08744777e-09 - _t39 * 1.13046204e-11) * _t40 + (2.48015876e-05 - _t39 * 2.75573029e-07));
-    highp float _t45 = _t43 * _t12 + _t44 * _t5;
-    highp float _t46 = 3.0 * _t25 + 4.0 * (_t25 * (_t35 * _t45));
-    highp float _t47 = _t44 * _t12 - _t43 * _t5;
-    highp float _t48 = _t1 * _t24 + _t9 * _t21;
-    highp float _t49 = 3.0 * _t47 + 4.0 * (_t35 * _t48 * _t47);
-    highp float _t50 = _t10 * _t32 - _t3 * _t34;
-    highp float _t51 = 4.0 * (_t45 * (_t48 * _t50)) + _t50 * 3.0;
-    highp float _t52 = _t46 * _t46 + (_t49 * _t49 + _t51 * _t51);
-    highp float _t53 = (_t52 > 0.0) ? 1.0 / _t52 : 0.0;
-    highp float _t54 = _t7 * _t51;
-    highp float _t55 = _t53 * (_t54 * _t54);
-    bool _t56 = _t55 <= 1.0;
-    highp float _t57 = sqrt(_t53);
-    highp float _t58 = -(_t54 * _t57);
-    highp float _t59 = (_t56) ? _t55 : 1.0;
-    highp float _t60 = _t59 * _t59;
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = ((_t56) ? _t58 : ((_t58 > 0.0) ? 1.0 : (-1.0))) * (_t60 * (0.00833333377 - 0.000198412701 * _t59) + (1.0 - 0.166666672 * _t59) + _t61 * (2.75573188e-06 - 2.50520991e-08 * _t59 + (1.60577024e-10 - 7.54937183e-13 * _t59) * _t60)) * _t10 + (_t61 * (2.48015876e-05 - _t59 * 2.75573029e-07 + (2.08744777e-09 - _t59 * 1.13046204e-11) * _t60) + (1.0 - _t59 * 0.5 + (0.0416666679 - 0.00138888892 * _t59) * _t60)) * _t3;
-    highp float _t63 = _t7 * _t49;
-    highp float _t64 = _t63 * _t63 * _t53;
-    bool _t65 = _t64 <= 1.0;
-    highp float _t66 = (_t65) ? _t64 : 1.0;
-    highp float _t67 = _t66 * _t66;
-    highp float _t68 = _t67 * _t67;
-    highp float _t69 = -(_t63 * _t57);
-    highp float _t70 = (1.0 - 0.166666672 * _t66 + (0.00833333377 - _t66 * 0.000198412701) * _t67 + _t68 * (2.75573188e-06 - 2.50520991e-08 * _t66 + _t67 * (1.60577024e-10 - 7.54937183e-13 * _t66))) * ((_t65) ? _t69 : ((_t69 > 0.0) ? 1.0 : (-1.0))) * _t12 + (_t67 * (0.0416666679 - 0.00138888892 * _t66) + (1.0 - _t66 * 0.5) + _t68 * (_t67 * (2.08744777e-09 - _t66 * 1.13046204e-11) + (2.48015876e-05 - _t66 * 2.75573029e-07))) * _t5;
-    highp float _t71 = _t7 * _t46;
-    highp float _t72 = _t53 * (_t71 * _t71);
-    bool _t73 = _t72 <= 1.0;
-    highp float _t74 = (_t73) ? _t72 : 1.0;
-    highp float _t75 = _t74 * _t74;
-    highp float _t76 = _t75 * _t75;
-    highp float _t77 = -(_t71 * _t57);
-    highp float _t78 = _t9 * ((_t75 * (2.08744777e-09 - _t74 * 1.13046204e-11) + (2.48015876e-05 - _t74 * 2.75573029e-07)) * _t76 + (1.0 - _t74 * 0.5 + _t75 * (0.0416666679 - _t74 * 0.00138888892))) + _t1 * (((_t75 * (1.60577024e-10 - _t74 * 7.54937183e-13) + (2.75573188e-06 - _t74 * 2.50520991e-08)) * _t76 + (1.0 - _t74 * 0.166666672 + _t75 * (0.00833333377 - _t74 * 0.000198412701))) * ((_t73) ? _t77 : ((_t77 > 0.0) ? 1.0 : (-1.0))));
-    return _t62 * 3.0 + 3.0 * _t70 + 4.0 * (_t78 * _t62 * _t70) + _t78 * 3.0;
-}
-
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 528.
-highp float neovius_proj_o4_shell(highp vec3 p, highp float t)
-{
-    highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = neovius_proj_o4_cos(_t0);
-    highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = neovius_proj_o4_sin(_t2);
-    highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = neovius_proj_o4_cos(_t4);
-    highp float _t6 = 4.0 * (_t1 * _t3 * _t5) + _t3 * 3.0;
-    highp float _t7 = neovius_proj_o4_sin(_t0);
-    highp float _t8 = neovius_proj_o4_cos(_t2);
-    highp float _t9 = _t7 * 3.0 + 4.0 * (_t7 * _t8 * _t5);
-    highp float _t10 = neovius_proj_o4_sin(_t4);
-    highp float _t11 = 3.0 * _t10 + 4.0 * (_t1 * _t8 * _t10);
-    highp float _t12 = _t6 * _t6 + _t9 * _t9 + _t11 * _t11;
-    highp float _t13 = (_t12 > 0.0) ? 1.0 / _t12 : 0.0;
-    highp float _t14 = 6.28318548 * (t * 0.5);
-    highp float _t15 = _t6 * _t14;
-    highp float _t16 = _t13 * (_t15 * _t15);
-    bool _t17 = _t16 <= 1.0;
-    highp float _t18 = (_t17) ? _t16 : 1.0;
-    highp float _t19 = _t18 * _t18;
-    highp float _t20 = _t19 * _t19;
-    highp float _t21 = _t19 * (0.0416666679 - _t18 * 0.00138888892) + (1.0 - _t18 * 0.5) + _t20 * (_t19 * (2.08744777e-09 - _t18 * 1.13046204e-11) + (2.48015876e-05 - _t18 * 2.75573029e-07));
-    highp float _t22 = _t21 * _t8;
-    highp float _t23 = sqrt(_t13);
-    highp float _t24 = _t23 * _t15;
-    highp float _t25 = -_t24;
-    highp float _t26 = _t19 * (0.00833333377 - _t18 * 0.000198412701) + (1.0 - _t18 * 0.166666672) + ((1.60577024e-10 - _t18 * 7.54937183e-13) * _t19 + (2.75573188e-06 - _t18 * 2.50520991e-08)) * _t20;
-    highp float _t27 = ((_t17) ? _t25 : ((_t25 > 0.0) ? 1.0 : (-1.0))) * _t26;
-    highp float _t28 = _t22 + _t3 * _t27;
-    highp float _t29 = _t14 * _t11;
-    highp float _t30 = _t13 * (_t29 * _t29);
-    bool _t31 = _t30 <= 1.0;
-    highp float _t32 = (_t31) ? _t30 : 1.0;
-    highp float _t33 = _t32 * _t32;
+    highp float _t7 = _t6 * _t6;
+    highp float _t8 = 6.28318548 * h;
+    highp float _t9 = (_t8 <= 1.0) ? (((-1.0) <= _t8) ? _t8 : (-1.0)) : 1.0;
+    highp float _t10 = _t9 * _t9;
+    highp float _t11 = neovius_proj_o4_cos(_t0);
+    highp float _t12 = neovius_proj_o4_sin(_t2);
+    highp float _t13 = 4.0 * (_t11 * _t12 * _t5) + _t12 * 3.0;
+    highp float _t14 = _t13 * _t13;
+    highp float _t15 = neovius_proj_o4_sin(_t4);
+    highp float _t16 = 3.0 * _t15 + 4.0 * (_t11 * _t3 * _t15);
+    highp float _t17 = _t16 * _t16;
+    highp float _t18 = _t14 + _t7 + _t17;
+    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
+    highp float _t20 = _t7 * _t10 * _t19;
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = 1.0 - _t20 * 0.5 + (0.0416666679 - _t20 * 0.00138888892) * _t21 + (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21) * _t22;
+    highp float _t24 = _t9 * (_t19 * sqrt(_t18));
+    highp float _t25 = (1.0 - _t20 * 0.166666672 + (0.00833333377 - _t20 * 0.000198412701) * _t21 + (2.75573188e-06 - _t20 * 2.50520991e-08 + (1.60577024e-10 - _t20 * 7.54937183e-13) * _t21) * _t22) * (_t6 * _t24);
+    highp float _t26 = _t1 * _t23 + _t25 * _t11;
+    highp float _t27 = _t10 * _t17 * _t19;
+    highp float _t28 = _t27 * _t27;
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = 1.0 - _t27 * 0.5 + (0.0416666679 - _t27 * 0.00138888892) * _t28 + _t29 * (2.48015876e-05 - _t27 * 2.75573029e-07 + _t28 * (2.08744777e-09 - _t27 * 1.13046204e-11));
+    highp float _t31 = (_t29 * ((1.60577024e-10 - _t27 * 7.54937183e-13) * _t28 + (2.75573188e-06 - _t27 * 2.50520991e-08)) + ((0.00833333377 - _t27 * 0.000198412701) * _t28 + (1.0 - _t27 * 0.166666672))) * (_t16 * _t24);
+    highp float _t32 = _t30 * _t5 - _t31 * _t15;
+    highp float _t33 = _t14 * _t10 * _t19;
     highp float _t34 = _t33 * _t33;
-    highp float _t35 = (0.0416666679 - 0.00138888892 * _t32) * _t33 + (1.0 - _t32 * 0.5) + (2.48015876e-05 - _t32 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t32) * _t33) * _t34;
-    highp float _t36 = _t10 * _t35;
-    highp float _t37 = _t23 * _t29;
-    highp float _t38 = -_t37;
-    highp float _t39 = (2.75573188e-06 - 2.50520991e-08 * _t32 + _t33 * (1.60577024e-10 - 7.54937183e-13 * _t32)) * _t34 + (_t33 * (0.00833333377 - 0.000198412701 * _t32) + (1.0 - 0.166666672 * _t32));
-    highp float _t40 = ((_t31) ? _t38 : ((_t38 > 0.0) ? 1.0 : (-1.0))) * _t39;
-    highp float _t41 = _t36 - _t40 * _t5;
-    highp float _t42 = _t9 * _t14;
-    highp float _t43 = _t42 * _t42 * _t13;
-    bool _t44 = _t43 <= 1.0;
-    highp float _t45 = (_t44) ? _t43 : 1.0;
-    highp float _t46 = _t45 * _t45;
+    highp float _t35 = _t34 * _t34;
+    highp float _t36 = 1.0 - _t33 * 0.5 + (0.0416666679 - _t33 * 0.00138888892) * _t34 + _t35 * (_t34 * (2.08744777e-09 - _t33 * 1.13046204e-11) + (2.48015876e-05 - _t33 * 2.75573029e-07));
+    highp float _t37 = _t13 * _t24 * (1.0 - _t33 * 0.166666672 + _t34 * (0.00833333377 - _t33 * 0.000198412701) + _t35 * (2.75573188e-06 - _t33 * 2.50520991e-08 + _t34 * (1.60577024e-10 - _t33 * 7.54937183e-13)));
+    highp float _t38 = _t3 * _t36 - _t37 * _t12;
+    highp float _t39 = 3.0 * _t26 + 4.0 * (_t32 * _t26 * _t38);
+    highp float _t40 = _t39 * _t39;
+    highp float _t41 = _t30 * _t15 + _t31 * _t5;
+    highp float _t42 = _t11 * _t23 - _t25 * _t1;
+    highp float _t43 = 4.0 * (_t41 * _t42 * _t38) + _t41 * 3.0;
+    highp float _t44 = _t43 * _t43;
+    highp float _t45 = _t37 * _t3 + _t12 * _t36;
+    highp float _t46 = 4.0 * (_t32 * (_t45 * _t42)) + _t45 * 3.0;
     highp float _t47 = _t46 * _t46;
-    highp float _t48 = ((1.60577024e-10 - _t45 * 7.54937183e-13) * _t46 + (2.75573188e-06 - _t45 * 2.50520991e-08)) * _t47 + ((0.00833333377 - _t45 * 0.000198412701) * _t46 + (1.0 - _t45 * 0.166666672));
-    highp float _t49 = _t23 * _t42;
-    highp float _t50 = -_t49;
-    highp float _t51 = _t48 * ((_t44) ? _t50 : ((_t50 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t52 = _t47 * ((2.08744777e-09 - _t45 * 1.13046204e-11) * _t46 + (2.48015876e-05 - _t45 * 2.75573029e-07)) + ((0.0416666679 - _t45 * 0.00138888892) * _t46 + (1.0 - _t45 * 0.5));
-    highp float _t53 = _t1 * _t52;
-    highp float _t54 = _t7 * _t51 + _t53;
-    highp float _t55 = 4.0 * (_t28 * _t41 * _t54) + _t41 * 3.0;
-    highp float _t56 = _t7 * _t52;
-    highp float _t57 = _t56 - _t1 * _t51;
-    highp float _t58 = _t5 * _t35;
-    highp float _t59 = _t58 + _t40 * _t10;
-    highp float _t60 = 3.0 * _t57 + 4.0 * (_t57 * (_t28 * _t59));
-    highp float _t61 = _t21 * _t3;
-    highp float _t62 = _t61 - _t8 * _t27;
-    highp float _t63 = 4.0 * (_t62 * (_t59 * _t54)) + 3.0 * _t62;
-    highp float _t64 = _t55 * _t55 + _t60 * _t60 + _t63 * _t63;
-    highp float _t65 = (_t64 > 0.0) ? 1.0 / _t64 : 0.0;
-    highp float _t66 = _t60 * _t14;
-    highp float _t67 = _t65 * (_t66 * _t66);
-    bool _t68 = _t67 <= 1.0;
-    highp float _t69 = (_t68) ? _t67 : 1.0;
-    highp float _t70 = _t69 * _t69;
-    highp float _t71 = _t70 * _t70;
-    highp float _t72 = sqrt(_t65);
-    highp float _t73 = -(_t72 * _t66);
-    highp float _t74 = ((0.0416666679 - 0.00138888892 * _t69) * _t70 + (1.0 - _t69 * 0.5) + _t71 * (_t70 * (2.08744777e-09 - 1.13046204e-11 * _t69) + (2.48015876e-05 - _t69 * 2.75573029e-07))) * _t1 + (_t70 * (0.00833333377 - 0.000198412701 * _t69) + (1.0 - 0.166666672 * _t69) + (2.75573188e-06 - 2.50520991e-08 * _t69 + _t70 * (1.60577024e-10 - 7.54937183e-13 * _t69)) * _t71) * ((_t68) ? _t73 : ((_t73 > 0.0) ? 1.0 : (-1.0))) * _t7;
-    highp float _t75 = _t14 * _t55;
-    highp float _t76 = _t65 * (_t75 * _t75);
-    bool _t77 = _t76 <= 1.0;
-    highp float _t78 = -(_t72 * _t75);
-    highp float _t79 = (_t77) ? _t76 : 1.0;
-    highp float _t80 = _t79 * _t79;
-    highp float _t81 = _t80 * _t80;
-    highp float _t82 = ((_t77) ? _t78 : ((_t78 > 0.0) ? 1.0 : (-1.0))) * (_t80 * (0.00833333377 - 0.000198412701 * _t79) + (1.0 - 0.166666672 * _t79) + _t81 * ((1.60577024e-10 - 7.54937183e-13 * _t79) * _t80 + (2.75573188e-06 - 2.50520991e-08 * _t79))) * _t10 + ((2.48015876e-05 - _t79 * 2.75573029e-07 + _t80 * (2.08744777e-09 - 1.13046204e-11 * _t79)) * _t81 + (1.0 - _t79 * 0.5 + _t80 * (0.0416666679 - 0.00138888892 * _t79))) * _t5;
-    highp float _t83 = _t63 * _t14;
-    highp float _t84 = _t65 * (_t83 * _t83);
-    bool _t85 = _t84 <= 1.0;
-    highp float _t86 = (_t85) ? _t84 : 1.0;
-    highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t87 * _t87;
-    highp float _t89 = -(_t72 * _t83);
-    highp float _t90 = _t8 * (_t87 * (0.0416666679 - _t86 * 0.00138888892) + (1.0 - _t86 * 0.5) + (_t87 * (2.08744777e-09 - _t86 * 1.13046204e-11) + (2.48015876e-05 - _t86 * 2.75573029e-07)) * _t88) + ((_t87 * (1.60577024e-10 - _t86 * 7.54937183e-13) + (2.75573188e-06 - _t86 * 2.50520991e-08)) * _t88 + (_t87 * (0.00833333377 - _t86 * 0.000198412701) + (1.0 - _t86 * 0.166666672))) * ((_t85) ? _t89 : ((_t89 > 0.0) ? 1.0 : (-1.0))) * _t3;
-    highp float _t91 = _t26 * ((_t17) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t92 = _t61 - _t8 * _t91;
-    highp float _t93 = _t48 * ((_t44) ? _t49 : ((_t49 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t94 = _t7 * _t93 + _t53;
-    highp float _t95 = ((_t31) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0))) * _t39;
-    highp float _t96 = _t58 + _t95 * _t10;
-    highp float _t97 = 3.0 * _t92 + 4.0 * (_t94 * _t92 * _t96);
-    highp float _t98 = _t14 * _t97;
-    highp float _t99 = _t36 - _t95 * _t5;
-    highp float _t100 = _t22 + _t91 * _t3;
-    highp float _t101 = 4.0 * (_t99 * _t100 * _t94) + _t99 * 3.0;
-    highp float _t102 = _t56 - _t1 * _t93;
-    highp float _t103 = 4.0 * (_t100 * _t102 * _t96) + 3.0 * _t102;
-    highp float _t104 = _t97 * _t97 + _t101 * _t101 + _t103 * _t103;
-    highp float _t105 = (_t104 > 0.0) ? 1.0 / _t104 : 0.0;
-    highp float _t106 = _t98 * _t98 * _t105;
-    bool _t107 = _t106 <= 1.0;
-    highp float _t108 = (_t107) ? _t106 : 1.0;
-    highp float _t109 = _t108 * _t108;
-    highp float _t110 = _t109 * _t109;
-    highp float _t111 = sqrt(_t105);
-    highp float _t112 = _t111 * _t98;
-    highp float _t113 = (1.0 - _t108 * 0.5 + (0.0416666679 - _t108 * 0.00138888892) * _t109 + (_t109 * (2.08744777e-09 - _t108 * 1.13046204e-11) + (2.48015876e-05 - _t108 * 2.75573029e-07)) * _t110) * _t8 + _t3 * (((_t107) ? _t112 : ((_t112 > 0.0) ? 1.0 : (-1.0))) * (_t109 * (0.00833333377 - _t108 * 0.000198412701) + (1.0 - _t108 * 0.166666672) + (2.75573188e-06 - _t108 * 2.50520991e-08 + (1.60577024e-10 - _t108 * 7.54937183e-13) * _t109) * _t110));
-    highp float _t114 = _t101 * _t14;
-    highp float _t115 = _t114 * _t114 * _t105;
-    bool _t116 = _t115 <= 1.0;
-    highp float _t117 = (_t116) ? _t115 : 1.0;
-    highp float _t118 = _t117 * _t117;
-    highp float _t119 = _t118 * _t118;
-    highp float _t120 = _t114 * _t111;
-    highp float _t121 = (_t119 * (2.48015876e-05 - _t117 * 2.75573029e-07 + (2.08744777e-09 - _t117 * 1.13046204e-11) * _t118) + (_t118 * (0.0416666679 - _t117 * 0.00138888892) + (1.0 - _t117 * 0.5))) * _t5 + ((_t116) ? _t120 : ((_t120 > 0.0) ? 1.0 : (-1.0))) * ((2.75573188e-06 - _t117 * 2.50520991e-08 + _t118 * (1.60577024e-10 - _t117 * 7.54937183e-13)) * _t119 + ((0.00833333377 - _t117 * 0.000198412701) * _t118 + (1.0 - _t117 * 0.166666672))) * _t10;
-    highp float _t122 = _t14 * _t103;
-    highp float _t123 = _t105 * (_t122 * _t122);
-    bool _t124 = _t123 <= 1.0;
-    highp float _t125 = (_t124) ? _t123 : 1.0;
-    highp float _t126 = _t125 * _t125;
-    highp float _t127 = _t126 * _t126;
-    highp float _t128 = _t111 * _t122;
-    highp float _t129 = _t1 * (1.0 - _t125 * 0.5 + _t126 * (0.0416666679 - _t125 * 0.00138888892) + (2.48015876e-05 - _t125 * 2.75573029e-07 + _t126 * (2.08744777e-09 - _t125 * 1.13046204e-11)) * _t127) + _t7 * (((_t124) ? _t128 : ((_t128 > 0.0) ? 1.0 : (-1.0))) * ((_t126 * (1.60577024e-10 - _t125 * 7.54937183e-13) + (2.75573188e-06 - _t125 * 2.50520991e-08)) * _t127 + (1.0 - _t125 * 0.166666672 + _t126 * (0.00833333377 - _t125 * 0.000198412701))));
-    return (4.0 * (_t74 * _t82 * _t90) + (_t74 * 3.0 + 3.0 * _t90) + 3.0 * _t82) * (_t113 * 3.0 + 3.0 * _t121 + 4.0 * (_t121 * (_t129 * _t113)) + _t129 * 3.0);
-}
-
-// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 370.
-highp vec3 neovius_proj_o4_normal(highp vec3 p, highp float h)
-{
-    highp float _t0 = 6.28318548 * h;
-    highp float _t1 = p.z * 6.28318548;
-    highp float _t2 = neovius_proj_o4_cos(_t1);
-    highp float _t3 = 6.28318548 * p.y;
-    highp float _t4 = neovius_proj_o4_sin(_t3);
-    highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = neovius_proj_o4_cos(_t5);
-    highp float _t7 = 4.0 * (_t2 * _t4 * _t6) + _t4 * 3.0;
-    highp float _t8 = neovius_proj_o4_sin(_t1);
-    highp float _t9 = neovius_proj_o4_cos(_t3);
-    highp float _t10 = _t8 * 3.0 + 4.0 * (_t8 * _t9 * _t6);
-    highp float _t11 = neovius_proj_o4_sin(_t5);
-    highp float _t12 = 3.0 * _t11 + 4.0 * (_t2 * _t9 * _t11);
-    highp float _t13 = _t7 * _t7 + _t10 * _t10 + _t12 * _t12;
-    highp float _t14 = (_t13 > 0.0) ? 1.0 / _t13 : 0.0;
-    highp float _t15 = _t0 * _t12;
-    highp float _t16 = _t14 * (_t15 * _t15);
-    bool _t17 = _t16 <= 1.0;
-    highp float _t18 = (_t17) ? _t16 : 1.0;
-    highp float _t19 = _t18 * _t18;
-    highp float _t20 = _t19 * _t19;
-    highp float _t21 = 1.0 - _t18 * 0.5 + (0.0416666679 - _t18 * 0.00138888892) * _t19 + _t20 * ((2.08744777e-09 - _t18 * 1.13046204e-11) * _t19 + (2.48015876e-05 - _t18 * 2.75573029e-07));
-    highp float _t22 = sqrt(_t14);
-    highp float _t23 = -(_t22 * _t15);
-    highp float _t24 = ((_t19 * (1.60577024e-10 - _t18 * 7.54937183e-13) + (2.75573188e-06 - _t18 * 2.50520991e-08)) * _t20 + (_t19 * (0.00833333377 - _t18 * 0.000198412701) + (1.0 - _t18 * 0.166666672))) * ((_t17) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t25 = _t21 * _t11 - _t24 * _t6;
-    highp float _t26 = _t0 * _t7;
-    highp float _t27 = _t14 * (_t26 * _t26);
-    bool _t28 = _t27 <= 1.0;
-    highp float _t29 = (_t28) ? _t27 : 1.0;
-    highp float _t30 = _t29 * _t29;
-    highp float _t31 = _t30 * _t30;
-    highp float _t32 = (_t30 * (2.08744777e-09 - _t29 * 1.13046204e-11) + (2.48015876e-05 - _t29 * 2.75573029e-07)) * _t31 + (_t30 * (0.0416666679 - 0.00138888892 * _t29) + (1.0 - _t29 * 0.5));
-    highp float _t33 = -(_t26 * _t22);
-    highp float _t34 = ((_t28) ? _t33 : ((_t33 > 0.0) ? 1.0 : (-1.0))) * ((0.00833333377 - _t29 * 0.000198412701) * _t30 + (1.0 - _t29 * 0.166666672) + (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - 7.54937183e-13 * _t29)) * _t31);
-    highp float _t35 = _t9 * _t32 + _t4 * _t34;
-    highp float _t36 = _t10 * _t0;
-    highp float _t37 = _t36 * _t36 * _t14;
-    bool _t38 = _t37 <= 1.0;
-    highp float _t39 = -(_t36 * _t22);
-    highp float _t40 = (_t38) ? _t37 : 1.0;
-    highp float _t41 = _t40 * _t40;
-    highp float _t42 = _t41 * _t41;
-    highp float _t43 = ((_t38) ? _t39 : ((_t39 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.166666672 * _t40 + _t41 * (0.00833333377 - 0.000198412701 * _t40) + _t42 * (2.75573188e-06 - 2.50520991e-08 * _t40 + _t41 * (1.60577024e-10 - 7.54937183e-13 * _t40)));
-    highp float _t44 = _t42 * (2.48015876e-05 - _t40 * 2.75573029e-07 + _t41 * (2.08744777e-09 - 1.13046204e-11 * _t40)) + (1.0 - _t40 * 0.5 + _t41 * (0.0416666679 - 0.00138888892 * _t40));
-    highp float _t45 = _t8 * _t43 + _t2 * _t44;
-    highp float _t46 = 3.0 * _t25 + 4.0 * (_t35 * _t45 * _t25);
-    highp float _t47 = _t0 * _t46;
-    highp float _t48 = _t8 * _t44 - _t2 * _t43;
-    highp float _t49 = _t24 * _t11 + _t21 * _t6;
-    highp float _t50 = 3.0 * _t48 + 4.0 * (_t48 * (_t35 * _t49));
-    highp float _t51 = _t4 * _t32 - _t9 * _t34;
-    highp float _t52 = 4.0 * (_t49 * (_t45 * _t51)) + _t51 * 3.0;
-    highp float _t53 = _t50 * _t50 + (_t46 * _t46 + _t52 * _t52);
-    highp float _t54 = (_t53 > 0.0) ? 1.0 / _t53 : 0.0;
-    highp float _t55 = _t47 * _t47 * _t54;
-    bool _t56 = _t55 <= 1.0;
-    highp float _t57 = (_t56) ? _t55 : 1.0;
+    highp float _t48 = _t40 + _t44 + _t47;
+    highp float _t49 = (_t48 > 1.17549435e-38) ? 1.0 / _t48 : 0.0;
+    highp float _t50 = _t40 * _t10 * _t49;
+    highp float _t51 = _t50 * _t50;
+    highp float _t52 = _t51 * _t51;
+    highp float _t53 = 1.0 - _t50 * 0.5 + _t51 * (0.0416666679 - 0.00138888892 * _t50) + ((2.08744777e-09 - 1.13046204e-11 * _t50) * _t51 + (2.48015876e-05 - _t50 * 2.75573029e-07)) * _t52;
+    highp float _t54 = _t9 * (sqrt(_t48) * _t49);
+    highp float _t55 = (_t51 * (0.00833333377 - 0.000198412701 * _t50) + (1.0 - 0.166666672 * _t50) + (2.75573188e-06 - 2.50520991e-08 * _t50 + (1.60577024e-10 - 7.54937183e-13 * _t50) * _t51) * _t52) * (_t39 * _t54);
+    highp float _t56 = _t53 * _t1 + _t11 * _t55;
+    highp float _t57 = _t10 * _t47 * _t49;
     highp float _t58 = _t57 * _t57;
     highp float _t59 = _t58 * _t58;
-    highp float _t60 = _t58 * (0.0416666679 - 0.00138888892 * _t57) + (1.0 - _t57 * 0.5) + _t59 * (_t58 * (2.08744777e-09 - _t57 * 1.13046204e-11) + (2.48015876e-05 - _t57 * 2.75573029e-07));
-    highp float _t61 = sqrt(_t54);
-    highp float _t62 = -(_t47 * _t61);
-    highp float _t63 = (1.0 - 0.166666672 * _t57 + (0.00833333377 - _t57 * 0.000198412701) * _t58 + _t59 * (2.75573188e-06 - 2.50520991e-08 * _t57 + _t58 * (1.60577024e-10 - 7.54937183e-13 * _t57))) * ((_t56) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t64 = _t60 * _t11 - _t63 * _t6;
-    highp float _t65 = _t0 * _t50;
-    highp float _t66 = _t54 * (_t65 * _t65);
-    bool _t67 = _t66 <= 1.0;
-    highp float _t68 = (_t67) ? _t66 : 1.0;
-    highp float _t69 = _t68 * _t68;
-    highp float _t70 = _t69 * _t69;
-    highp float _t71 = (_t69 * (2.08744777e-09 - _t68 * 1.13046204e-11) + (2.48015876e-05 - _t68 * 2.75573029e-07)) * _t70 + (1.0 - _t68 * 0.5 + _t69 * (0.0416666679 - _t68 * 0.00138888892));
-    highp float _t72 = -(_t65 * _t61);
-    highp float _t73 = ((_t69 * (1.60577024e-10 - _t68 * 7.54937183e-13) + (2.75573188e-06 - _t68 * 2.50520991e-08)) * _t70 + (1.0 - _t68 * 0.166666672 + _t69 * (0.00833333377 - _t68 * 0.000198412701))) * ((_t67) ? _t72 : ((_t72 > 0.0) ? 1.0 : (-1.0)));
-    highp float _t74 = _t2 * _t71 + _t8 * _t73;
-    highp float _t75 = _t0 * _t52;
-    highp float _t76 = _t54 * (_t75 * _t75);
-    bool _t77 = _t76 <= 1.0;
-    highp float _t78 = -(_t75 * _t61);
-    highp float _t79 = (_t77) ? _t76 : 1.0;
-    highp float _t80 = _t79 * _t79;
-    highp float _t81 = _t80 * _t80;
-    highp float _t82 = ((_t77) ? _t78 : ((_t78 > 0.0) ? 1.0 : (-1.0))) * (_t80 * (0.00833333377 - 0.000198412701 * _t79) + (1.0 - 0.166666672 * _t79) + _t81 * (2.75573188e-06 - 2.50520991e-08 * _t79 + (1.60577024e-10 - 7.54937183e-13 * _t79) * _t80));
-    highp float _t83 = _t81 * (2.48015876e-05 - _t79 * 2.75573029e-07 + (2.08744777e-09 - _t79 * 1.13046204e-11) * _t80) + (1.0 - _t79 * 0.5 + (0.0416666679 - 0.00138888892 * _t79) * _t80);
-    highp float _t84 = _t82 * _t4 + _t83 * _t9;
-    highp float _t85 = _t64 * 3.0 + _t74 * _t64 * _t84 * 4.0;
-    highp float _t86 = _t83 * _t4 - _t9 * _t82;
-    highp float _t87 = _t63 * _t11 + _t60 * _t6;
-    highp float _t88 = 4.0 * (_t74 * _t86 * _t87) + _t86 * 3.0;
-    highp float _t89 = _t8 * _t71 - _t2 * _t73;
-    highp float _t90 = 3.0 * _t89 + 4.0 * (_t84 * _t87 * _t89);
-    highp float _t91 = _t88 * _t88 + _t85 * _t85 + _t90 * _t90;
-    highp float _t92 = (_t91 > 0.0) ? 1.0 / sqrt(_t91) : 0.0;
-    return vec3(-(_t85 * _t92), -(_t92 * _t88), -(_t90 * _t92));
+    highp float _t60 = (2.48015876e-05 - _t57 * 2.75573029e-07 + _t58 * (2.08744777e-09 - 1.13046204e-11 * _t57)) * _t59 + (1.0 - _t57 * 0.5 + _t58 * (0.0416666679 - 0.00138888892 * _t57));
+    highp float _t61 = ((2.75573188e-06 - 2.50520991e-08 * _t57 + _t58 * (1.60577024e-10 - 7.54937183e-13 * _t57)) * _t59 + (1.0 - 0.166666672 * _t57 + _t58 * (0.00833333377 - 0.000198412701 * _t57))) * (_t46 * _t54);
+    highp float _t62 = _t3 * _t60 - _t61 * _t12;
+    highp float _t63 = _t49 * (_t44 * _t10);
+    highp float _t64 = _t63 * _t63;
+    highp float _t65 = _t64 * _t64;
+    highp float _t66 = 1.0 - _t63 * 0.5 + (0.0416666679 - 0.00138888892 * _t63) * _t64 + (2.48015876e-05 - _t63 * 2.75573029e-07 + _t64 * (2.08744777e-09 - 1.13046204e-11 * _t63)) * _t65;
+    highp float _t67 = (1.0 - 0.166666672 * _t63 + _t64 * (0.00833333377 - 0.000198412701 * _t63) + ((1.60577024e-10 - 7.54937183e-13 * _t63) * _t64 + (2.75573188e-06 - 2.50520991e-08 * _t63)) * _t65) * (_t54 * _t43);
+    highp float _t68 = _t66 * _t5 - _t15 * _t67;
+    highp float _t69 = 3.0 * _t56 + 4.0 * (_t62 * _t56 * _t68);
+    highp float _t70 = _t61 * _t3 + _t12 * _t60;
+    highp float _t71 = _t11 * _t53 - _t1 * _t55;
+    highp float _t72 = 4.0 * (_t70 * _t71 * _t68) + _t70 * 3.0;
+    highp float _t73 = _t5 * _t67 + _t66 * _t15;
+    highp float _t74 = 3.0 * _t73 + 4.0 * (_t62 * _t71 * _t73);
+    highp float _t75 = _t69 * _t69 + _t72 * _t72 + _t74 * _t74;
+    highp float _t76 = (_t75 > 0.0) ? 1.0 / sqrt(_t75) : 0.0;
+    return vec3(-(_t76 * _t74), -(_t76 * _t72), -(_t76 * _t69));
 }
 
 

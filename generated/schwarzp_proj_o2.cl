@@ -45,9 +45,10 @@
  *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
  *   0, so every function returns a finite value for finite input (do not compile with
  *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
- *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
- *   keeps |q_K - p| <= |h| and so the bound above.
+ *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
+ *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
+ *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
+ *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -56,11 +57,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   153
- *   shell    175
- *   normal   166
+ *   offset   139
+ *   shell    261
+ *   normal   152
  */
-/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":153,"shell":175,"normal":166}} */
+/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":139,"shell":261,"normal":152}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O2_CL
 #define OFFSETGEN_SCHWARZP_PROJ_O2_CL
 
@@ -73,152 +74,139 @@ float schwarzp_proj_o2_fieldf(float3 p)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 153
+ * Total ops: 139
  */
 float schwarzp_proj_o2_offsetf(float3 p, float h)
 {
     const float _t0 = p.z * 6.28318548f;
     const float _t1 = 6.28318548f * h;
+    const float _t2 = (_t1 <= 1.0f) ? (((-1.0f) <= _t1) ? _t1 : (-1.0f)) : 1.0f;
+    const float _t3 = _t2 * _t2;
     float _c0;
     const float _s0 = sincos(_t0, &_c0);
-    const float _t2 = _s0;
-    const float _t3 = _t1 * _t2;
-    const float _t4 = 6.28318548f * p.x;
+    const float _t4 = _s0;
+    const float _t5 = _t4 * _t4;
+    const float _t6 = 6.28318548f * p.x;
     float _c1;
-    const float _s1 = sincos(_t4, &_c1);
-    const float _t5 = _s1;
-    const float _t6 = 6.28318548f * p.y;
+    const float _s1 = sincos(_t6, &_c1);
+    const float _t7 = _s1;
+    const float _t8 = _t7 * _t7;
+    const float _t9 = 6.28318548f * p.y;
     float _c2;
-    const float _s2 = sincos(_t6, &_c2);
-    const float _t7 = _s2;
-    const float _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const bool _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
-    const float _t14 = _t13 * _t13;
-    const float _t15 = sqrt(_t9);
-    const float _t16 = -(_t3 * _t15);
-    const float _t17 = _t1 * _t5;
-    const float _t18 = _t17 * _t17 * _t9;
-    const bool _t19 = _t18 <= 1.0f;
-    const float _t20 = (_t19) ? _t18 : 1.0f;
-    const float _t21 = _t20 * _t20;
+    const float _s2 = sincos(_t9, &_c2);
+    const float _t10 = _s2;
+    const float _t11 = _t10 * _t10;
+    const float _t12 = _t8 + _t5 + _t11;
+    const float _t13 = (_t12 > 1.17549435e-38f) ? 1.0f / _t12 : 0.0f;
+    const float _t14 = _t3 * _t5 * _t13;
+    const float _t15 = _t14 * _t14;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t2 * (_t13 * sqrt(_t12));
+    const float _t18 = _t3 * _t11 * _t13;
+    const float _t19 = _t18 * _t18;
+    const float _t20 = _t19 * _t19;
+    const float _t21 = _t8 * _t3 * _t13;
     const float _t22 = _t21 * _t21;
-    const float _t23 = -(_t17 * _t15);
-    const float _t24 = _t1 * _t7;
-    const float _t25 = _t9 * (_t24 * _t24);
-    const bool _t26 = _t25 <= 1.0f;
-    const float _t27 = -(_t24 * _t15);
-    const float _t28 = (_t26) ? _t25 : 1.0f;
-    const float _t29 = _t28 * _t28;
-    const float _t30 = _t29 * _t29;
-    return _c0 * ((0.0416666679f - 0.00138888892f * _t12) * _t13 + (1.0f - _t12 * 0.5f) + _t14 * (2.48015876e-05f - _t12 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t12) * _t13)) + (((1.60577024e-10f - 7.54937183e-13f * _t12) * _t13 + (2.75573188e-06f - 2.50520991e-08f * _t12)) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0f) ? 1.0f : (-1.0f))) * _t2 + (((2.75573188e-06f - 2.50520991e-08f * _t20 + (1.60577024e-10f - 7.54937183e-13f * _t20) * _t21) * _t22 + ((0.00833333377f - 0.000198412701f * _t20) * _t21 + (1.0f - 0.166666672f * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f))) * _t5 + ((_t21 * (2.08744777e-09f - 1.13046204e-11f * _t20) + (2.48015876e-05f - _t20 * 2.75573029e-07f)) * _t22 + (1.0f - _t20 * 0.5f + _t21 * (0.0416666679f - 0.00138888892f * _t20))) * _c1) + (((_t26) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t28 * 0.166666672f + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + _t30 * (2.75573188e-06f - _t28 * 2.50520991e-08f + _t29 * (1.60577024e-10f - _t28 * 7.54937183e-13f))) * _t7 + (_t29 * (0.0416666679f - _t28 * 0.00138888892f) + (1.0f - _t28 * 0.5f) + (2.48015876e-05f - _t28 * 2.75573029e-07f + _t29 * (2.08744777e-09f - _t28 * 1.13046204e-11f)) * _t30) * _c2);
+    const float _t23 = _t22 * _t22;
+    return _c0 * ((_t15 * (2.08744777e-09f - 1.13046204e-11f * _t14) + (2.48015876e-05f - _t14 * 2.75573029e-07f)) * _t16 + (1.0f - _t14 * 0.5f + _t15 * (0.0416666679f - 0.00138888892f * _t14))) - ((0.00833333377f - 0.000198412701f * _t14) * _t15 + (1.0f - 0.166666672f * _t14) + (2.75573188e-06f - 2.50520991e-08f * _t14 + (1.60577024e-10f - 7.54937183e-13f * _t14) * _t15) * _t16) * (_t4 * _t17) * _t4 + (_c2 * (1.0f - _t18 * 0.5f + _t19 * (0.0416666679f - 0.00138888892f * _t18) + _t20 * (2.48015876e-05f - _t18 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t18) * _t19)) - ((2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20 + (1.0f - 0.166666672f * _t18 + _t19 * (0.00833333377f - 0.000198412701f * _t18))) * (_t10 * _t17) * _t10 + (((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * _c1 - (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t7 * _t17) * _t7));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 175
+ * Total ops: 261
  */
 float schwarzp_proj_o2_shellf(float3 p, float t)
 {
     const float _t0 = p.z * 6.28318548f;
-    float _c0;
-    const float _s0 = sincos(_t0, &_c0);
-    const float _t1 = _s0;
-    const float _t2 = 6.28318548f * (t * 0.5f);
-    const float _t3 = _t1 * _t2;
-    const float _t4 = 6.28318548f * p.x;
     float _c1;
-    const float _s1 = sincos(_t4, &_c1);
+    const float _s1 = sincos(_t0, &_c1);
+    const float _t1 = _c1;
+    const float _t2 = 6.28318548f * p.x;
+    float _c0;
+    const float _s0 = sincos(_t2, &_c0);
+    const float _t3 = _s0;
+    const float _t4 = _t3 * _t3;
     const float _t5 = _s1;
-    const float _t6 = 6.28318548f * p.y;
+    const float _t6 = _t5 * _t5;
+    const float _t7 = 6.28318548f * p.y;
     float _c2;
-    const float _s2 = sincos(_t6, &_c2);
-    const float _t7 = _s2;
-    const float _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const bool _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
+    const float _s2 = sincos(_t7, &_c2);
+    const float _t8 = _s2;
+    const float _t9 = _t8 * _t8;
+    const float _t10 = _t4 + _t6 + _t9;
+    const float _t11 = (_t10 > 1.17549435e-38f) ? 1.0f / _t10 : 0.0f;
+    const float _t12 = 6.28318548f * (t * 0.5f);
+    const float _t13 = (_t12 <= 1.0f) ? (((-1.0f) <= _t12) ? _t12 : (-1.0f)) : 1.0f;
     const float _t14 = _t13 * _t13;
-    const float _t15 = (((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + (0.0416666679f - _t12 * 0.00138888892f) * _t13)) * _c0;
-    const float _t16 = sqrt(_t9);
-    const float _t17 = _t3 * _t16;
-    const float _t18 = -_t17;
-    const float _t19 = _t13 * (0.00833333377f - _t12 * 0.000198412701f) + (1.0f - _t12 * 0.166666672f) + (2.75573188e-06f - _t12 * 2.50520991e-08f + (1.60577024e-10f - _t12 * 7.54937183e-13f) * _t13) * _t14;
-    const float _t20 = _t2 * _t5;
-    const float _t21 = _t20 * _t20 * _t9;
-    const bool _t22 = _t21 <= 1.0f;
-    const float _t23 = (_t22) ? _t21 : 1.0f;
-    const float _t24 = _t23 * _t23;
+    const float _t15 = _t11 * (_t14 * _t6);
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t11 * sqrt(_t10);
+    const float _t19 = _t18 * _t13;
+    const float _t20 = _t11 * (_t14 * _t4);
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = _c0;
+    const float _t24 = _t11 * (_t14 * _t9);
     const float _t25 = _t24 * _t24;
-    const float _t26 = ((2.48015876e-05f - _t23 * 2.75573029e-07f + _t24 * (2.08744777e-09f - _t23 * 1.13046204e-11f)) * _t25 + (_t24 * (0.0416666679f - 0.00138888892f * _t23) + (1.0f - _t23 * 0.5f))) * _c1;
-    const float _t27 = _t20 * _t16;
-    const float _t28 = -_t27;
-    const float _t29 = (_t24 * (1.60577024e-10f - 7.54937183e-13f * _t23) + (2.75573188e-06f - 2.50520991e-08f * _t23)) * _t25 + ((0.00833333377f - _t23 * 0.000198412701f) * _t24 + (1.0f - 0.166666672f * _t23));
-    const float _t30 = _t7 * _t2;
-    const float _t31 = _t30 * _t30 * _t9;
-    const bool _t32 = _t31 <= 1.0f;
-    const float _t33 = (_t32) ? _t31 : 1.0f;
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * _t34;
-    const float _t36 = (1.0f - _t33 * 0.5f + _t34 * (0.0416666679f - _t33 * 0.00138888892f) + _t35 * ((2.08744777e-09f - _t33 * 1.13046204e-11f) * _t34 + (2.48015876e-05f - _t33 * 2.75573029e-07f))) * _c2;
-    const float _t37 = _t30 * _t16;
-    const float _t38 = -_t37;
-    const float _t39 = 1.0f - _t33 * 0.166666672f + (0.00833333377f - _t33 * 0.000198412701f) * _t34 + _t35 * (_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f));
-    return (_t15 + ((_t11) ? _t18 : ((_t18 > 0.0f) ? 1.0f : (-1.0f))) * _t19 * _t1 + (_t26 + ((_t22) ? _t28 : ((_t28 > 0.0f) ? 1.0f : (-1.0f))) * _t29 * _t5 + (_t36 + ((_t32) ? _t38 : ((_t38 > 0.0f) ? 1.0f : (-1.0f))) * _t39 * _t7))) * (_t15 + ((_t11) ? _t17 : ((_t17 > 0.0f) ? 1.0f : (-1.0f))) * _t19 * _t1 + (_t26 + ((_t22) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f))) * _t29 * _t5) + (_t36 + _t7 * (_t39 * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f))))));
+    const float _t26 = _t25 * _t25;
+    const float _t27 = _c2;
+    const float _t28 = -_t12;
+    const float _t29 = (_t28 <= 1.0f) ? (((-1.0f) <= _t28) ? _t28 : (-1.0f)) : 1.0f;
+    const float _t30 = _t29 * _t29;
+    const float _t31 = _t30 * _t9 * _t11;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t18 * _t29;
+    const float _t35 = _t11 * (_t30 * _t6);
+    const float _t36 = _t35 * _t35;
+    const float _t37 = _t36 * _t36;
+    const float _t38 = _t30 * _t4 * _t11;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = _t39 * _t39;
+    return (_t1 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - _t15 * 0.00138888892f) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16)) - _t5 * (((0.00833333377f - _t15 * 0.000198412701f) * _t16 + (1.0f - _t15 * 0.166666672f) + _t17 * (2.75573188e-06f - _t15 * 2.50520991e-08f + (1.60577024e-10f - _t15 * 7.54937183e-13f) * _t16)) * (_t5 * _t19)) + (((0.0416666679f - _t20 * 0.00138888892f) * _t21 + (1.0f - _t20 * 0.5f) + _t22 * (2.48015876e-05f - _t20 * 2.75573029e-07f + (2.08744777e-09f - _t20 * 1.13046204e-11f) * _t21)) * _t23 - _t19 * _t3 * (1.0f - _t20 * 0.166666672f + (0.00833333377f - _t20 * 0.000198412701f) * _t21 + (_t21 * (1.60577024e-10f - _t20 * 7.54937183e-13f) + (2.75573188e-06f - _t20 * 2.50520991e-08f)) * _t22) * _t3 + ((_t26 * ((2.08744777e-09f - _t24 * 1.13046204e-11f) * _t25 + (2.48015876e-05f - _t24 * 2.75573029e-07f)) + (1.0f - _t24 * 0.5f + _t25 * (0.0416666679f - 0.00138888892f * _t24))) * _t27 - _t8 * (_t8 * _t19 * (_t25 * (0.00833333377f - _t24 * 0.000198412701f) + (1.0f - _t24 * 0.166666672f) + ((1.60577024e-10f - _t24 * 7.54937183e-13f) * _t25 + (2.75573188e-06f - _t24 * 2.50520991e-08f)) * _t26))))) * (_t27 * (_t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (_t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f) + (2.48015876e-05f - _t31 * 2.75573029e-07f))) - _t8 * (_t34 * _t8 * (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - _t31 * 0.000198412701f) + _t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)))) + ((1.0f - 0.5f * _t35 + _t36 * (0.0416666679f - 0.00138888892f * _t35) + (2.48015876e-05f - 2.75573029e-07f * _t35 + (2.08744777e-09f - 1.13046204e-11f * _t35) * _t36) * _t37) * _t1 - _t5 * (_t5 * _t34 * (_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + (1.60577024e-10f - 7.54937183e-13f * _t35) * _t36) + ((0.00833333377f - 0.000198412701f * _t35) * _t36 + (1.0f - 0.166666672f * _t35))))) + (((2.48015876e-05f - _t38 * 2.75573029e-07f + _t39 * (2.08744777e-09f - _t38 * 1.13046204e-11f)) * _t40 + (1.0f - _t38 * 0.5f + _t39 * (0.0416666679f - 0.00138888892f * _t38))) * _t23 - ((2.75573188e-06f - 2.50520991e-08f * _t38 + (1.60577024e-10f - 7.54937183e-13f * _t38) * _t39) * _t40 + (_t39 * (0.00833333377f - 0.000198412701f * _t38) + (1.0f - 0.166666672f * _t38))) * (_t34 * _t3) * _t3));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 166
+ * Total ops: 152
  */
 float3 schwarzp_proj_o2_normalf(float3 p, float h)
 {
-    const float _t0 = 6.28318548f * h;
-    const float _t1 = 6.28318548f * p.x;
+    const float _t0 = 6.28318548f * p.x;
     float _c0;
-    const float _s0 = sincos(_t1, &_c0);
-    const float _t2 = _s0;
-    const float _t3 = _t0 * _t2;
-    const float _t4 = p.z * 6.28318548f;
+    const float _s0 = sincos(_t0, &_c0);
+    const float _t1 = _s0;
+    const float _t2 = _t1 * _t1;
+    const float _t3 = 6.28318548f * h;
+    const float _t4 = (_t3 <= 1.0f) ? (((-1.0f) <= _t3) ? _t3 : (-1.0f)) : 1.0f;
+    const float _t5 = _t4 * _t4;
+    const float _t6 = p.z * 6.28318548f;
     float _c1;
-    const float _s1 = sincos(_t4, &_c1);
-    const float _t5 = _s1;
-    const float _t6 = 6.28318548f * p.y;
+    const float _s1 = sincos(_t6, &_c1);
+    const float _t7 = _s1;
+    const float _t8 = _t7 * _t7;
+    const float _t9 = 6.28318548f * p.y;
     float _c2;
-    const float _s2 = sincos(_t6, &_c2);
-    const float _t7 = _s2;
-    const float _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const bool _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
-    const float _t14 = _t13 * _t13;
-    const float _t15 = sqrt(_t9);
-    const float _t16 = -(_t3 * _t15);
-    const float _t17 = ((_t13 * (2.08744777e-09f - 1.13046204e-11f * _t12) + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - 0.00138888892f * _t12))) * _t2 - ((2.75573188e-06f - 2.50520991e-08f * _t12 + (1.60577024e-10f - 7.54937183e-13f * _t12) * _t13) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0f) ? 1.0f : (-1.0f))) * _c0;
-    const float _t18 = _t0 * _t5;
-    const float _t19 = _t18 * _t18 * _t9;
-    const bool _t20 = _t19 <= 1.0f;
-    const float _t21 = (_t20) ? _t19 : 1.0f;
-    const float _t22 = _t21 * _t21;
-    const float _t23 = _t22 * _t22;
-    const float _t24 = -(_t18 * _t15);
-    const float _t25 = _t5 * ((0.0416666679f - 0.00138888892f * _t21) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t21) * _t22)) - (((1.60577024e-10f - 7.54937183e-13f * _t21) * _t22 + (2.75573188e-06f - 2.50520991e-08f * _t21)) * _t23 + ((0.00833333377f - 0.000198412701f * _t21) * _t22 + (1.0f - 0.166666672f * _t21))) * ((_t20) ? _t24 : ((_t24 > 0.0f) ? 1.0f : (-1.0f))) * _c1;
-    const float _t26 = _t0 * _t7;
-    const float _t27 = _t9 * (_t26 * _t26);
-    const bool _t28 = _t27 <= 1.0f;
-    const float _t29 = (_t28) ? _t27 : 1.0f;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = _t30 * _t30;
-    const float _t32 = -(_t26 * _t15);
-    const float _t33 = (_t30 * (0.0416666679f - _t29 * 0.00138888892f) + (1.0f - _t29 * 0.5f) + (2.48015876e-05f - _t29 * 2.75573029e-07f + _t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f)) * _t31) * _t7 - _c2 * (((_t28) ? _t32 : ((_t32 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t29 * 0.166666672f + (0.00833333377f - _t29 * 0.000198412701f) * _t30 + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f))));
-    const float _t34 = _t17 * _t17 + _t25 * _t25 + _t33 * _t33;
-    const float _t35 = (_t34 > 0.0f) ? rsqrt(_t34) : 0.0f;
-    return (float3)(-(_t17 * _t35), -(_t33 * _t35), -(_t25 * _t35));
+    const float _s2 = sincos(_t9, &_c2);
+    const float _t10 = _s2;
+    const float _t11 = _t10 * _t10;
+    const float _t12 = _t2 + _t8 + _t11;
+    const float _t13 = (_t12 > 1.17549435e-38f) ? 1.0f / _t12 : 0.0f;
+    const float _t14 = _t2 * _t5 * _t13;
+    const float _t15 = _t14 * _t14;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t4 * (_t13 * sqrt(_t12));
+    const float _t18 = (1.0f - _t14 * 0.166666672f + (0.00833333377f - _t14 * 0.000198412701f) * _t15 + _t16 * (2.75573188e-06f - _t14 * 2.50520991e-08f + (1.60577024e-10f - _t14 * 7.54937183e-13f) * _t15)) * (_t1 * _t17) * _c0 + ((0.0416666679f - _t14 * 0.00138888892f) * _t15 + (1.0f - _t14 * 0.5f) + _t16 * (2.48015876e-05f - _t14 * 2.75573029e-07f + _t15 * (2.08744777e-09f - _t14 * 1.13046204e-11f))) * _t1;
+    const float _t19 = _t5 * _t11 * _t13;
+    const float _t20 = _t19 * _t19;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _c2 * (((2.75573188e-06f - 2.50520991e-08f * _t19 + _t20 * (1.60577024e-10f - 7.54937183e-13f * _t19)) * _t21 + (1.0f - 0.166666672f * _t19 + _t20 * (0.00833333377f - 0.000198412701f * _t19))) * (_t10 * _t17)) + _t10 * (1.0f - _t19 * 0.5f + _t20 * (0.0416666679f - 0.00138888892f * _t19) + _t21 * (2.48015876e-05f - _t19 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t19) * _t20));
+    const float _t23 = _t5 * _t8 * _t13;
+    const float _t24 = _t23 * _t23;
+    const float _t25 = _t24 * _t24;
+    const float _t26 = ((0.00833333377f - 0.000198412701f * _t23) * _t24 + (1.0f - 0.166666672f * _t23) + (2.75573188e-06f - 2.50520991e-08f * _t23 + (1.60577024e-10f - 7.54937183e-13f * _t23) * _t24) * _t25) * (_t7 * _t17) * _c1 + _t7 * ((_t24 * (2.08744777e-09f - 1.13046204e-11f * _t23) + (2.48015876e-05f - _t23 * 2.75573029e-07f)) * _t25 + (1.0f - _t23 * 0.5f + _t24 * (0.0416666679f - 0.00138888892f * _t23)));
+    const float _t27 = _t22 * _t22 + _t18 * _t18 + _t26 * _t26;
+    const float _t28 = (_t27 > 0.0f) ? rsqrt(_t27) : 0.0f;
+    return (float3)(-(_t18 * _t28), -(_t22 * _t28), -(_t28 * _t26));
 }
 
 #ifdef cl_khr_fp64
@@ -234,152 +222,139 @@ double schwarzp_proj_o2_field(double3 p)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 153
+ * Total ops: 139
  */
 double schwarzp_proj_o2_offset(double3 p, double h)
 {
     const double _t0 = p.z * 6.2831853071795862;
     const double _t1 = 6.2831853071795862 * h;
+    const double _t2 = (_t1 <= 1.0) ? (((-1.0) <= _t1) ? _t1 : (-1.0)) : 1.0;
+    const double _t3 = _t2 * _t2;
     double _c0;
     const double _s0 = sincos(_t0, &_c0);
-    const double _t2 = _s0;
-    const double _t3 = _t1 * _t2;
-    const double _t4 = 6.2831853071795862 * p.x;
+    const double _t4 = _s0;
+    const double _t5 = _t4 * _t4;
+    const double _t6 = 6.2831853071795862 * p.x;
     double _c1;
-    const double _s1 = sincos(_t4, &_c1);
-    const double _t5 = _s1;
-    const double _t6 = 6.2831853071795862 * p.y;
+    const double _s1 = sincos(_t6, &_c1);
+    const double _t7 = _s1;
+    const double _t8 = _t7 * _t7;
+    const double _t9 = 6.2831853071795862 * p.y;
     double _c2;
-    const double _s2 = sincos(_t6, &_c2);
-    const double _t7 = _s2;
-    const double _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const bool _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
-    const double _t14 = _t13 * _t13;
-    const double _t15 = sqrt(_t9);
-    const double _t16 = -(_t3 * _t15);
-    const double _t17 = _t1 * _t5;
-    const double _t18 = _t17 * _t17 * _t9;
-    const bool _t19 = _t18 <= 1.0;
-    const double _t20 = (_t19) ? _t18 : 1.0;
-    const double _t21 = _t20 * _t20;
+    const double _s2 = sincos(_t9, &_c2);
+    const double _t10 = _s2;
+    const double _t11 = _t10 * _t10;
+    const double _t12 = _t8 + _t5 + _t11;
+    const double _t13 = (_t12 > 1.1754943508222875e-38) ? 1.0 / _t12 : 0.0;
+    const double _t14 = _t3 * _t5 * _t13;
+    const double _t15 = _t14 * _t14;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t2 * (_t13 * sqrt(_t12));
+    const double _t18 = _t3 * _t11 * _t13;
+    const double _t19 = _t18 * _t18;
+    const double _t20 = _t19 * _t19;
+    const double _t21 = _t8 * _t3 * _t13;
     const double _t22 = _t21 * _t21;
-    const double _t23 = -(_t17 * _t15);
-    const double _t24 = _t1 * _t7;
-    const double _t25 = _t9 * (_t24 * _t24);
-    const bool _t26 = _t25 <= 1.0;
-    const double _t27 = -(_t24 * _t15);
-    const double _t28 = (_t26) ? _t25 : 1.0;
-    const double _t29 = _t28 * _t28;
-    const double _t30 = _t29 * _t29;
-    return _c0 * ((0.041666666666666102 - 0.0013888888888798428 * _t12) * _t13 + (1.0 - _t12 * 0.5) + _t14 * (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t12) * _t13)) + (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t12) * _t13 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t12)) * _t14 + ((0.0083333333333333003 - 0.00019841269841216566 * _t12) * _t13 + (1.0 - 0.16666666666666666 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t2 + (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t20 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) * _t21) * _t22 + ((0.0083333333333333003 - 0.00019841269841216566 * _t20) * _t21 + (1.0 - 0.16666666666666666 * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t5 + ((_t21 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t20) + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.041666666666666102 - 0.0013888888888798428 * _t20))) * _c1) + (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t28 * 0.16666666666666666 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + _t30 * (2.755731919201122e-06 - _t28 * 2.5052099244914114e-08 + _t29 * (1.6057701922579786e-10 - _t28 * 7.549371704181243e-13))) * _t7 + (_t29 * (0.041666666666666102 - _t28 * 0.0013888888888798428) + (1.0 - _t28 * 0.5) + (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + _t29 * (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11)) * _t30) * _c2);
+    const double _t23 = _t22 * _t22;
+    return _c0 * ((_t15 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t14) + (2.4801587247292686e-05 - _t14 * 2.7557303701922228e-07)) * _t16 + (1.0 - _t14 * 0.5 + _t15 * (0.041666666666666102 - 0.0013888888888798428 * _t14))) - ((0.0083333333333333003 - 0.00019841269841216566 * _t14) * _t15 + (1.0 - 0.16666666666666666 * _t14) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t14 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t14) * _t15) * _t16) * (_t4 * _t17) * _t4 + (_c2 * (1.0 - _t18 * 0.5 + _t19 * (0.041666666666666102 - 0.0013888888888798428 * _t18) + _t20 * (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t18) * _t19)) - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t18 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)) * _t20 + (1.0 - 0.16666666666666666 * _t18 + _t19 * (0.0083333333333333003 - 0.00019841269841216566 * _t18))) * (_t10 * _t17) * _t10 + (((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + _t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11))) * _c1 - (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22)) * (_t7 * _t17) * _t7));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 175
+ * Total ops: 261
  */
 double schwarzp_proj_o2_shell(double3 p, double t)
 {
     const double _t0 = p.z * 6.2831853071795862;
-    double _c0;
-    const double _s0 = sincos(_t0, &_c0);
-    const double _t1 = _s0;
-    const double _t2 = 6.2831853071795862 * (t * 0.5);
-    const double _t3 = _t1 * _t2;
-    const double _t4 = 6.2831853071795862 * p.x;
     double _c1;
-    const double _s1 = sincos(_t4, &_c1);
+    const double _s1 = sincos(_t0, &_c1);
+    const double _t1 = _c1;
+    const double _t2 = 6.2831853071795862 * p.x;
+    double _c0;
+    const double _s0 = sincos(_t2, &_c0);
+    const double _t3 = _s0;
+    const double _t4 = _t3 * _t3;
     const double _t5 = _s1;
-    const double _t6 = 6.2831853071795862 * p.y;
+    const double _t6 = _t5 * _t5;
+    const double _t7 = 6.2831853071795862 * p.y;
     double _c2;
-    const double _s2 = sincos(_t6, &_c2);
-    const double _t7 = _s2;
-    const double _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const bool _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
+    const double _s2 = sincos(_t7, &_c2);
+    const double _t8 = _s2;
+    const double _t9 = _t8 * _t8;
+    const double _t10 = _t4 + _t6 + _t9;
+    const double _t11 = (_t10 > 1.1754943508222875e-38) ? 1.0 / _t10 : 0.0;
+    const double _t12 = 6.2831853071795862 * (t * 0.5);
+    const double _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
     const double _t14 = _t13 * _t13;
-    const double _t15 = (((2.0874477943664777e-09 - _t12 * 1.1304620460700782e-11) * _t13 + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07)) * _t14 + (1.0 - _t12 * 0.5 + (0.041666666666666102 - _t12 * 0.0013888888888798428) * _t13)) * _c0;
-    const double _t16 = sqrt(_t9);
-    const double _t17 = _t3 * _t16;
-    const double _t18 = -_t17;
-    const double _t19 = _t13 * (0.0083333333333333003 - _t12 * 0.00019841269841216566) + (1.0 - _t12 * 0.16666666666666666) + (2.755731919201122e-06 - _t12 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t12 * 7.549371704181243e-13) * _t13) * _t14;
-    const double _t20 = _t2 * _t5;
-    const double _t21 = _t20 * _t20 * _t9;
-    const bool _t22 = _t21 <= 1.0;
-    const double _t23 = (_t22) ? _t21 : 1.0;
-    const double _t24 = _t23 * _t23;
+    const double _t15 = _t11 * (_t14 * _t6);
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t11 * sqrt(_t10);
+    const double _t19 = _t18 * _t13;
+    const double _t20 = _t11 * (_t14 * _t4);
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = _c0;
+    const double _t24 = _t11 * (_t14 * _t9);
     const double _t25 = _t24 * _t24;
-    const double _t26 = ((2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07 + _t24 * (2.0874477943664777e-09 - _t23 * 1.1304620460700782e-11)) * _t25 + (_t24 * (0.041666666666666102 - 0.0013888888888798428 * _t23) + (1.0 - _t23 * 0.5))) * _c1;
-    const double _t27 = _t20 * _t16;
-    const double _t28 = -_t27;
-    const double _t29 = (_t24 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23)) * _t25 + ((0.0083333333333333003 - _t23 * 0.00019841269841216566) * _t24 + (1.0 - 0.16666666666666666 * _t23));
-    const double _t30 = _t7 * _t2;
-    const double _t31 = _t30 * _t30 * _t9;
-    const bool _t32 = _t31 <= 1.0;
-    const double _t33 = (_t32) ? _t31 : 1.0;
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * _t34;
-    const double _t36 = (1.0 - _t33 * 0.5 + _t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + _t35 * ((2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11) * _t34 + (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07))) * _c2;
-    const double _t37 = _t30 * _t16;
-    const double _t38 = -_t37;
-    const double _t39 = 1.0 - _t33 * 0.16666666666666666 + (0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + _t35 * (_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08));
-    return (_t15 + ((_t11) ? _t18 : ((_t18 > 0.0) ? 1.0 : (-1.0))) * _t19 * _t1 + (_t26 + ((_t22) ? _t28 : ((_t28 > 0.0) ? 1.0 : (-1.0))) * _t29 * _t5 + (_t36 + ((_t32) ? _t38 : ((_t38 > 0.0) ? 1.0 : (-1.0))) * _t39 * _t7))) * (_t15 + ((_t11) ? _t17 : ((_t17 > 0.0) ? 1.0 : (-1.0))) * _t19 * _t1 + (_t26 + ((_t22) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * _t29 * _t5) + (_t36 + _t7 * (_t39 * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0))))));
+    const double _t26 = _t25 * _t25;
+    const double _t27 = _c2;
+    const double _t28 = -_t12;
+    const double _t29 = (_t28 <= 1.0) ? (((-1.0) <= _t28) ? _t28 : (-1.0)) : 1.0;
+    const double _t30 = _t29 * _t29;
+    const double _t31 = _t30 * _t9 * _t11;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t18 * _t29;
+    const double _t35 = _t11 * (_t30 * _t6);
+    const double _t36 = _t35 * _t35;
+    const double _t37 = _t36 * _t36;
+    const double _t38 = _t30 * _t4 * _t11;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = _t39 * _t39;
+    return (_t1 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - _t15 * 0.0013888888888798428) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t15 * 1.1304620460700782e-11) * _t16)) - _t5 * (((0.0083333333333333003 - _t15 * 0.00019841269841216566) * _t16 + (1.0 - _t15 * 0.16666666666666666) + _t17 * (2.755731919201122e-06 - _t15 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t15 * 7.549371704181243e-13) * _t16)) * (_t5 * _t19)) + (((0.041666666666666102 - _t20 * 0.0013888888888798428) * _t21 + (1.0 - _t20 * 0.5) + _t22 * (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11) * _t21)) * _t23 - _t19 * _t3 * (1.0 - _t20 * 0.16666666666666666 + (0.0083333333333333003 - _t20 * 0.00019841269841216566) * _t21 + (_t21 * (1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t20 * 2.5052099244914114e-08)) * _t22) * _t3 + ((_t26 * ((2.0874477943664777e-09 - _t24 * 1.1304620460700782e-11) * _t25 + (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07)) + (1.0 - _t24 * 0.5 + _t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24))) * _t27 - _t8 * (_t8 * _t19 * (_t25 * (0.0083333333333333003 - _t24 * 0.00019841269841216566) + (1.0 - _t24 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t24 * 7.549371704181243e-13) * _t25 + (2.755731919201122e-06 - _t24 * 2.5052099244914114e-08)) * _t26))))) * (_t27 * (_t32 * (0.041666666666666102 - 0.0013888888888798428 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (_t32 * (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07))) - _t8 * (_t34 * _t8 * (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - _t31 * 0.00019841269841216566) + _t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31)))) + ((1.0 - 0.5 * _t35 + _t36 * (0.041666666666666102 - 0.0013888888888798428 * _t35) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t35 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) * _t36) * _t37) * _t1 - _t5 * (_t5 * _t34 * (_t37 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36) + ((0.0083333333333333003 - 0.00019841269841216566 * _t35) * _t36 + (1.0 - 0.16666666666666666 * _t35))))) + (((2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07 + _t39 * (2.0874477943664777e-09 - _t38 * 1.1304620460700782e-11)) * _t40 + (1.0 - _t38 * 0.5 + _t39 * (0.041666666666666102 - 0.0013888888888798428 * _t38))) * _t23 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t38 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39) * _t40 + (_t39 * (0.0083333333333333003 - 0.00019841269841216566 * _t38) + (1.0 - 0.16666666666666666 * _t38))) * (_t34 * _t3) * _t3));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 166
+ * Total ops: 152
  */
 double3 schwarzp_proj_o2_normal(double3 p, double h)
 {
-    const double _t0 = 6.2831853071795862 * h;
-    const double _t1 = 6.2831853071795862 * p.x;
+    const double _t0 = 6.2831853071795862 * p.x;
     double _c0;
-    const double _s0 = sincos(_t1, &_c0);
-    const double _t2 = _s0;
-    const double _t3 = _t0 * _t2;
-    const double _t4 = p.z * 6.2831853071795862;
+    const double _s0 = sincos(_t0, &_c0);
+    const double _t1 = _s0;
+    const double _t2 = _t1 * _t1;
+    const double _t3 = 6.2831853071795862 * h;
+    const double _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
+    const double _t5 = _t4 * _t4;
+    const double _t6 = p.z * 6.2831853071795862;
     double _c1;
-    const double _s1 = sincos(_t4, &_c1);
-    const double _t5 = _s1;
-    const double _t6 = 6.2831853071795862 * p.y;
+    const double _s1 = sincos(_t6, &_c1);
+    const double _t7 = _s1;
+    const double _t8 = _t7 * _t7;
+    const double _t9 = 6.2831853071795862 * p.y;
     double _c2;
-    const double _s2 = sincos(_t6, &_c2);
-    const double _t7 = _s2;
-    const double _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const bool _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
-    const double _t14 = _t13 * _t13;
-    const double _t15 = sqrt(_t9);
-    const double _t16 = -(_t3 * _t15);
-    const double _t17 = ((_t13 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t12) + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - 0.0013888888888798428 * _t12))) * _t2 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t12 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t12) * _t13) * _t14 + ((0.0083333333333333003 - 0.00019841269841216566 * _t12) * _t13 + (1.0 - 0.16666666666666666 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _c0;
-    const double _t18 = _t0 * _t5;
-    const double _t19 = _t18 * _t18 * _t9;
-    const bool _t20 = _t19 <= 1.0;
-    const double _t21 = (_t20) ? _t19 : 1.0;
-    const double _t22 = _t21 * _t21;
-    const double _t23 = _t22 * _t22;
-    const double _t24 = -(_t18 * _t15);
-    const double _t25 = _t5 * ((0.041666666666666102 - 0.0013888888888798428 * _t21) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t21) * _t22)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t21) * _t22 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t21)) * _t23 + ((0.0083333333333333003 - 0.00019841269841216566 * _t21) * _t22 + (1.0 - 0.16666666666666666 * _t21))) * ((_t20) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0))) * _c1;
-    const double _t26 = _t0 * _t7;
-    const double _t27 = _t9 * (_t26 * _t26);
-    const bool _t28 = _t27 <= 1.0;
-    const double _t29 = (_t28) ? _t27 : 1.0;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = _t30 * _t30;
-    const double _t32 = -(_t26 * _t15);
-    const double _t33 = (_t30 * (0.041666666666666102 - _t29 * 0.0013888888888798428) + (1.0 - _t29 * 0.5) + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07 + _t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11)) * _t31) * _t7 - _c2 * (((_t28) ? _t32 : ((_t32 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t29 * 0.16666666666666666 + (0.0083333333333333003 - _t29 * 0.00019841269841216566) * _t30 + _t31 * (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13))));
-    const double _t34 = _t17 * _t17 + _t25 * _t25 + _t33 * _t33;
-    const double _t35 = (_t34 > 0.0) ? rsqrt(_t34) : 0.0;
-    return (double3)(-(_t17 * _t35), -(_t33 * _t35), -(_t25 * _t35));
+    const double _s2 = sincos(_t9, &_c2);
+    const double _t10 = _s2;
+    const double _t11 = _t10 * _t10;
+    const double _t12 = _t2 + _t8 + _t11;
+    const double _t13 = (_t12 > 1.1754943508222875e-38) ? 1.0 / _t12 : 0.0;
+    const double _t14 = _t2 * _t5 * _t13;
+    const double _t15 = _t14 * _t14;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t4 * (_t13 * sqrt(_t12));
+    const double _t18 = (1.0 - _t14 * 0.16666666666666666 + (0.0083333333333333003 - _t14 * 0.00019841269841216566) * _t15 + _t16 * (2.755731919201122e-06 - _t14 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t14 * 7.549371704181243e-13) * _t15)) * (_t1 * _t17) * _c0 + ((0.041666666666666102 - _t14 * 0.0013888888888798428) * _t15 + (1.0 - _t14 * 0.5) + _t16 * (2.4801587247292686e-05 - _t14 * 2.7557303701922228e-07 + _t15 * (2.0874477943664777e-09 - _t14 * 1.1304620460700782e-11))) * _t1;
+    const double _t19 = _t5 * _t11 * _t13;
+    const double _t20 = _t19 * _t19;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _c2 * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t19 + _t20 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t19)) * _t21 + (1.0 - 0.16666666666666666 * _t19 + _t20 * (0.0083333333333333003 - 0.00019841269841216566 * _t19))) * (_t10 * _t17)) + _t10 * (1.0 - _t19 * 0.5 + _t20 * (0.041666666666666102 - 0.0013888888888798428 * _t19) + _t21 * (2.4801587247292686e-05 - _t19 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t19) * _t20));
+    const double _t23 = _t5 * _t8 * _t13;
+    const double _t24 = _t23 * _t23;
+    const double _t25 = _t24 * _t24;
+    const double _t26 = ((0.0083333333333333003 - 0.00019841269841216566 * _t23) * _t24 + (1.0 - 0.16666666666666666 * _t23) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) * _t24) * _t25) * (_t7 * _t17) * _c1 + _t7 * ((_t24 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t23) + (2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07)) * _t25 + (1.0 - _t23 * 0.5 + _t24 * (0.041666666666666102 - 0.0013888888888798428 * _t23)));
+    const double _t27 = _t22 * _t22 + _t18 * _t18 + _t26 * _t26;
+    const double _t28 = (_t27 > 0.0) ? rsqrt(_t27) : 0.0;
+    return (double3)(-(_t18 * _t28), -(_t22 * _t28), -(_t28 * _t26));
 }
 
 #endif /* cl_khr_fp64 */

@@ -36,9 +36,10 @@ safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| wi
     has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
     every function returns a finite value for finite input (do not compile with -ffinite-math-only).
     sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while each component of d = h n stays within 1 (natural units, |h| <= 0.159 cell on a
-    2*pi-periodic surface); larger displacements are clamped to it, which keeps |q_K - p| <= |h| and
-    so the bound above.
+    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
+    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
+    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
+    1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -48,12 +49,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 8
-    - offset: 153
-    - shell: 175
-    - normal: 166
+    - offset: 139
+    - shell: 261
+    - normal: 152
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":153,"shell":175,"normal":166}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":139,"shell":261,"normal":152}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O2_GLSL
 #define OFFSETGEN_SCHWARZP_PROJ_O2_GLSL
 
@@ -88,129 +89,116 @@ highp float schwarzp_proj_o2_field(highp vec3 p)
     return schwarzp_proj_o2_cos(p.z * 6.28318548) + schwarzp_proj_o2_cos(6.28318548 * p.y) + schwarzp_proj_o2_cos(6.28318548 * p.x);
 }
 
-// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 153.
+// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 139.
 highp float schwarzp_proj_o2_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
     highp float _t1 = 6.28318548 * h;
-    highp float _t2 = schwarzp_proj_o2_sin(_t0);
-    highp float _t3 = _t1 * _t2;
-    highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = schwarzp_proj_o2_sin(_t4);
-    highp float _t6 = 6.28318548 * p.y;
+    highp float _t2 = (_t1 <= 1.0) ? (((-1.0) <= _t1) ? _t1 : (-1.0)) : 1.0;
+    highp float _t3 = _t2 * _t2;
+    highp float _t4 = schwarzp_proj_o2_sin(_t0);
+    highp float _t5 = _t4 * _t4;
+    highp float _t6 = 6.28318548 * p.x;
     highp float _t7 = schwarzp_proj_o2_sin(_t6);
-    highp float _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
-    highp float _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    highp float _t10 = _t3 * _t3 * _t9;
-    bool _t11 = _t10 <= 1.0;
-    highp float _t12 = (_t11) ? _t10 : 1.0;
-    highp float _t13 = _t12 * _t12;
-    highp float _t14 = _t13 * _t13;
-    highp float _t15 = sqrt(_t9);
-    highp float _t16 = -(_t3 * _t15);
-    highp float _t17 = _t1 * _t5;
-    highp float _t18 = _t17 * _t17 * _t9;
-    bool _t19 = _t18 <= 1.0;
-    highp float _t20 = (_t19) ? _t18 : 1.0;
-    highp float _t21 = _t20 * _t20;
+    highp float _t8 = _t7 * _t7;
+    highp float _t9 = 6.28318548 * p.y;
+    highp float _t10 = schwarzp_proj_o2_sin(_t9);
+    highp float _t11 = _t10 * _t10;
+    highp float _t12 = _t8 + _t5 + _t11;
+    highp float _t13 = (_t12 > 1.17549435e-38) ? 1.0 / _t12 : 0.0;
+    highp float _t14 = _t3 * _t5 * _t13;
+    highp float _t15 = _t14 * _t14;
+    highp float _t16 = _t15 * _t15;
+    highp float _t17 = _t2 * (_t13 * sqrt(_t12));
+    highp float _t18 = _t3 * _t11 * _t13;
+    highp float _t19 = _t18 * _t18;
+    highp float _t20 = _t19 * _t19;
+    highp float _t21 = _t8 * _t3 * _t13;
     highp float _t22 = _t21 * _t21;
-    highp float _t23 = -(_t17 * _t15);
-    highp float _t24 = _t1 * _t7;
-    highp float _t25 = _t9 * (_t24 * _t24);
-    bool _t26 = _t25 <= 1.0;
-    highp float _t27 = -(_t24 * _t15);
-    highp float _t28 = (_t26) ? _t25 : 1.0;
-    highp float _t29 = _t28 * _t28;
-    highp float _t30 = _t29 * _t29;
-    return schwarzp_proj_o2_cos(_t0) * ((0.0416666679 - 0.00138888892 * _t12) * _t13 + (1.0 - _t12 * 0.5) + _t14 * (2.48015876e-05 - _t12 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t12) * _t13)) + (((1.60577024e-10 - 7.54937183e-13 * _t12) * _t13 + (2.75573188e-06 - 2.50520991e-08 * _t12)) * _t14 + ((0.00833333377 - 0.000198412701 * _t12) * _t13 + (1.0 - 0.166666672 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t2 + (((2.75573188e-06 - 2.50520991e-08 * _t20 + (1.60577024e-10 - 7.54937183e-13 * _t20) * _t21) * _t22 + ((0.00833333377 - 0.000198412701 * _t20) * _t21 + (1.0 - 0.166666672 * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t5 + ((_t21 * (2.08744777e-09 - 1.13046204e-11 * _t20) + (2.48015876e-05 - _t20 * 2.75573029e-07)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.0416666679 - 0.00138888892 * _t20))) * schwarzp_proj_o2_cos(_t4)) + (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t28 * 0.166666672 + (0.00833333377 - _t28 * 0.000198412701) * _t29 + _t30 * (2.75573188e-06 - _t28 * 2.50520991e-08 + _t29 * (1.60577024e-10 - _t28 * 7.54937183e-13))) * _t7 + (_t29 * (0.0416666679 - _t28 * 0.00138888892) + (1.0 - _t28 * 0.5) + (2.48015876e-05 - _t28 * 2.75573029e-07 + _t29 * (2.08744777e-09 - _t28 * 1.13046204e-11)) * _t30) * schwarzp_proj_o2_cos(_t6));
+    highp float _t23 = _t22 * _t22;
+    return schwarzp_proj_o2_cos(_t0) * ((_t15 * (2.08744777e-09 - 1.13046204e-11 * _t14) + (2.48015876e-05 - _t14 * 2.75573029e-07)) * _t16 + (1.0 - _t14 * 0.5 + _t15 * (0.0416666679 - 0.00138888892 * _t14))) - ((0.00833333377 - 0.000198412701 * _t14) * _t15 + (1.0 - 0.166666672 * _t14) + (2.75573188e-06 - 2.50520991e-08 * _t14 + (1.60577024e-10 - 7.54937183e-13 * _t14) * _t15) * _t16) * (_t4 * _t17) * _t4 + (schwarzp_proj_o2_cos(_t9) * (1.0 - _t18 * 0.5 + _t19 * (0.0416666679 - 0.00138888892 * _t18) + _t20 * (2.48015876e-05 - _t18 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t18) * _t19)) - ((2.75573188e-06 - 2.50520991e-08 * _t18 + _t19 * (1.60577024e-10 - 7.54937183e-13 * _t18)) * _t20 + (1.0 - 0.166666672 * _t18 + _t19 * (0.00833333377 - 0.000198412701 * _t18))) * (_t10 * _t17) * _t10 + (((0.0416666679 - _t21 * 0.00138888892) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.48015876e-05 - _t21 * 2.75573029e-07 + _t22 * (2.08744777e-09 - _t21 * 1.13046204e-11))) * schwarzp_proj_o2_cos(_t6) - (1.0 - _t21 * 0.166666672 + (0.00833333377 - _t21 * 0.000198412701) * _t22 + _t23 * (2.75573188e-06 - _t21 * 2.50520991e-08 + (1.60577024e-10 - _t21 * 7.54937183e-13) * _t22)) * (_t7 * _t17) * _t7));
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 175.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 261.
 highp float schwarzp_proj_o2_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = schwarzp_proj_o2_sin(_t0);
-    highp float _t2 = 6.28318548 * (t * 0.5);
-    highp float _t3 = _t1 * _t2;
-    highp float _t4 = 6.28318548 * p.x;
-    highp float _t5 = schwarzp_proj_o2_sin(_t4);
-    highp float _t6 = 6.28318548 * p.y;
-    highp float _t7 = schwarzp_proj_o2_sin(_t6);
-    highp float _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
-    highp float _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    highp float _t10 = _t3 * _t3 * _t9;
-    bool _t11 = _t10 <= 1.0;
-    highp float _t12 = (_t11) ? _t10 : 1.0;
-    highp float _t13 = _t12 * _t12;
+    highp float _t1 = schwarzp_proj_o2_cos(_t0);
+    highp float _t2 = 6.28318548 * p.x;
+    highp float _t3 = schwarzp_proj_o2_sin(_t2);
+    highp float _t4 = _t3 * _t3;
+    highp float _t5 = schwarzp_proj_o2_sin(_t0);
+    highp float _t6 = _t5 * _t5;
+    highp float _t7 = 6.28318548 * p.y;
+    highp float _t8 = schwarzp_proj_o2_sin(_t7);
+    highp float _t9 = _t8 * _t8;
+    highp float _t10 = _t4 + _t6 + _t9;
+    highp float _t11 = (_t10 > 1.17549435e-38) ? 1.0 / _t10 : 0.0;
+    highp float _t12 = 6.28318548 * (t * 0.5);
+    highp float _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
     highp float _t14 = _t13 * _t13;
-    highp float _t15 = (((2.08744777e-09 - _t12 * 1.13046204e-11) * _t13 + (2.48015876e-05 - _t12 * 2.75573029e-07)) * _t14 + (1.0 - _t12 * 0.5 + (0.0416666679 - _t12 * 0.00138888892) * _t13)) * schwarzp_proj_o2_cos(_t0);
-    highp float _t16 = sqrt(_t9);
-    highp float _t17 = _t3 * _t16;
-    highp float _t18 = -_t17;
-    highp float _t19 = _t13 * (0.00833333377 - _t12 * 0.000198412701) + (1.0 - _t12 * 0.166666672) + (2.75573188e-06 - _t12 * 2.50520991e-08 + (1.60577024e-10 - _t12 * 7.54937183e-13) * _t13) * _t14;
-    highp float _t20 = _t2 * _t5;
-    highp float _t21 = _t20 * _t20 * _t9;
-    bool _t22 = _t21 <= 1.0;
-    highp float _t23 = (_t22) ? _t21 : 1.0;
-    highp float _t24 = _t23 * _t23;
+    highp float _t15 = _t11 * (_t14 * _t6);
+    highp float _t16 = _t15 * _t15;
+    highp float _t17 = _t16 * _t16;
+    highp float _t18 = _t11 * sqrt(_t10);
+    highp float _t19 = _t18 * _t13;
+    highp float _t20 = _t11 * (_t14 * _t4);
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = schwarzp_proj_o2_cos(_t2);
+    highp float _t24 = _t11 * (_t14 * _t9);
     highp float _t25 = _t24 * _t24;
-    highp float _t26 = ((2.48015876e-05 - _t23 * 2.75573029e-07 + _t24 * (2.08744777e-09 - _t23 * 1.13046204e-11)) * _t25 + (_t24 * (0.0416666679 - 0.00138888892 * _t23) + (1.0 - _t23 * 0.5))) * schwarzp_proj_o2_cos(_t4);
-    highp float _t27 = _t20 * _t16;
-    highp float _t28 = -_t27;
-    highp float _t29 = (_t24 * (1.60577024e-10 - 7.54937183e-13 * _t23) + (2.75573188e-06 - 2.50520991e-08 * _t23)) * _t25 + ((0.00833333377 - _t23 * 0.000198412701) * _t24 + (1.0 - 0.166666672 * _t23));
-    highp float _t30 = _t7 * _t2;
-    highp float _t31 = _t30 * _t30 * _t9;
-    bool _t32 = _t31 <= 1.0;
-    highp float _t33 = (_t32) ? _t31 : 1.0;
-    highp float _t34 = _t33 * _t33;
-    highp float _t35 = _t34 * _t34;
-    highp float _t36 = (1.0 - _t33 * 0.5 + _t34 * (0.0416666679 - _t33 * 0.00138888892) + _t35 * ((2.08744777e-09 - _t33 * 1.13046204e-11) * _t34 + (2.48015876e-05 - _t33 * 2.75573029e-07))) * schwarzp_proj_o2_cos(_t6);
-    highp float _t37 = _t30 * _t16;
-    highp float _t38 = -_t37;
-    highp float _t39 = 1.0 - _t33 * 0.166666672 + (0.00833333377 - _t33 * 0.000198412701) * _t34 + _t35 * (_t34 * (1.60577024e-10 - _t33 * 7.54937183e-13) + (2.75573188e-06 - _t33 * 2.50520991e-08));
-    return (_t15 + ((_t11) ? _t18 : ((_t18 > 0.0) ? 1.0 : (-1.0))) * _t19 * _t1 + (_t26 + ((_t22) ? _t28 : ((_t28 > 0.0) ? 1.0 : (-1.0))) * _t29 * _t5 + (_t36 + ((_t32) ? _t38 : ((_t38 > 0.0) ? 1.0 : (-1.0))) * _t39 * _t7))) * (_t15 + ((_t11) ? _t17 : ((_t17 > 0.0) ? 1.0 : (-1.0))) * _t19 * _t1 + (_t26 + ((_t22) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * _t29 * _t5) + (_t36 + _t7 * (_t39 * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0))))));
+    highp float _t26 = _t25 * _t25;
+    highp float _t27 = schwarzp_proj_o2_cos(_t7);
+    highp float _t28 = -_t12;
+    highp float _t29 = (_t28 <= 1.0) ? (((-1.0) <= _t28) ? _t28 : (-1.0)) : 1.0;
+    highp float _t30 = _t29 * _t29;
+    highp float _t31 = _t30 * _t9 * _t11;
+    highp float _t32 = _t31 * _t31;
+    highp float _t33 = _t32 * _t32;
+    highp float _t34 = _t18 * _t29;
+    highp float _t35 = _t11 * (_t30 * _t6);
+    highp float _t36 = _t35 * _t35;
+    highp float _t37 = _t36 * _t36;
+    highp float _t38 = _t30 * _t4 * _t11;
+    highp float _t39 = _t38 * _t38;
+    highp float _t40 = _t39 * _t39;
+    return (_t1 * (1.0 - _t15 * 0.5 + _t16 * (0.0416666679 - _t15 * 0.00138888892) + _t17 * (2.48015876e-05 - _t15 * 2.75573029e-07 + (2.08744777e-09 - _t15 * 1.13046204e-11) * _t16)) - _t5 * (((0.00833333377 - _t15 * 0.000198412701) * _t16 + (1.0 - _t15 * 0.166666672) + _t17 * (2.75573188e-06 - _t15 * 2.50520991e-08 + (1.60577024e-10 - _t15 * 7.54937183e-13) * _t16)) * (_t5 * _t19)) + (((0.0416666679 - _t20 * 0.00138888892) * _t21 + (1.0 - _t20 * 0.5) + _t22 * (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21)) * _t23 - _t19 * _t3 * (1.0 - _t20 * 0.166666672 + (0.00833333377 - _t20 * 0.000198412701) * _t21 + (_t21 * (1.60577024e-10 - _t20 * 7.54937183e-13) + (2.75573188e-06 - _t20 * 2.50520991e-08)) * _t22) * _t3 + ((_t26 * ((2.08744777e-09 - _t24 * 1.13046204e-11) * _t25 + (2.48015876e-05 - _t24 * 2.75573029e-07)) + (1.0 - _t24 * 0.5 + _t25 * (0.0416666679 - 0.00138888892 * _t24))) * _t27 - _t8 * (_t8 * _t19 * (_t25 * (0.00833333377 - _t24 * 0.000198412701) + (1.0 - _t24 * 0.166666672) + ((1.60577024e-10 - _t24 * 7.54937183e-13) * _t25 + (2.75573188e-06 - _t24 * 2.50520991e-08)) * _t26))))) * (_t27 * (_t32 * (0.0416666679 - 0.00138888892 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (_t32 * (2.08744777e-09 - _t31 * 1.13046204e-11) + (2.48015876e-05 - _t31 * 2.75573029e-07))) - _t8 * (_t34 * _t8 * (1.0 - 0.166666672 * _t31 + _t32 * (0.00833333377 - _t31 * 0.000198412701) + _t33 * (2.75573188e-06 - 2.50520991e-08 * _t31 + _t32 * (1.60577024e-10 - 7.54937183e-13 * _t31)))) + ((1.0 - 0.5 * _t35 + _t36 * (0.0416666679 - 0.00138888892 * _t35) + (2.48015876e-05 - 2.75573029e-07 * _t35 + (2.08744777e-09 - 1.13046204e-11 * _t35) * _t36) * _t37) * _t1 - _t5 * (_t5 * _t34 * (_t37 * (2.75573188e-06 - 2.50520991e-08 * _t35 + (1.60577024e-10 - 7.54937183e-13 * _t35) * _t36) + ((0.00833333377 - 0.000198412701 * _t35) * _t36 + (1.0 - 0.166666672 * _t35))))) + (((2.48015876e-05 - _t38 * 2.75573029e-07 + _t39 * (2.08744777e-09 - _t38 * 1.13046204e-11)) * _t40 + (1.0 - _t38 * 0.5 + _t39 * (0.0416666679 - 0.00138888892 * _t38))) * _t23 - ((2.75573188e-06 - 2.50520991e-08 * _t38 + (1.60577024e-10 - 7.54937183e-13 * _t38) * _t39) * _t40 + (_t39 * (0.00833333377 - 0.000198412701 * _t38) + (1.0 - 0.166666672 * _t38))) * (_t34 * _t3) * _t3));
 }
 
-// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 166.
+// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 152.
 highp vec3 schwarzp_proj_o2_normal(highp vec3 p, highp float h)
 {
-    highp float _t0 = 6.28318548 * h;
-    highp float _t1 = 6.28318548 * p.x;
-    highp float _t2 = schwarzp_proj_o2_sin(_t1);
-    highp float _t3 = _t0 * _t2;
-    highp float _t4 = p.z * 6.28318548;
-    highp float _t5 = schwarzp_proj_o2_sin(_t4);
-    highp float _t6 = 6.28318548 * p.y;
+    highp float _t0 = 6.28318548 * p.x;
+    highp float _t1 = schwarzp_proj_o2_sin(_t0);
+    highp float _t2 = _t1 * _t1;
+    highp float _t3 = 6.28318548 * h;
+    highp float _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
+    highp float _t5 = _t4 * _t4;
+    highp float _t6 = p.z * 6.28318548;
     highp float _t7 = schwarzp_proj_o2_sin(_t6);
-    highp float _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    highp float _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    highp float _t10 = _t3 * _t3 * _t9;
-    bool _t11 = _t10 <= 1.0;
-    highp float _t12 = (_t11) ? _t10 : 1.0;
-    highp float _t13 = _t12 * _t12;
-    highp float _t14 = _t13 * _t13;
-    highp float _t15 = sqrt(_t9);
-    highp float _t16 = -(_t3 * _t15);
-    highp float _t17 = ((_t13 * (2.08744777e-09 - 1.13046204e-11 * _t12) + (2.48015876e-05 - _t12 * 2.75573029e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.0416666679 - 0.00138888892 * _t12))) * _t2 - ((2.75573188e-06 - 2.50520991e-08 * _t12 + (1.60577024e-10 - 7.54937183e-13 * _t12) * _t13) * _t14 + ((0.00833333377 - 0.000198412701 * _t12) * _t13 + (1.0 - 0.166666672 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * schwarzp_proj_o2_cos(_t1);
-    highp float _t18 = _t0 * _t5;
-    highp float _t19 = _t18 * _t18 * _t9;
-    bool _t20 = _t19 <= 1.0;
-    highp float _t21 = (_t20) ? _t19 : 1.0;
-    highp float _t22 = _t21 * _t21;
-    highp float _t23 = _t22 * _t22;
-    highp float _t24 = -(_t18 * _t15);
-    highp float _t25 = _t5 * ((0.0416666679 - 0.00138888892 * _t21) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.48015876e-05 - _t21 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t21) * _t22)) - (((1.60577024e-10 - 7.54937183e-13 * _t21) * _t22 + (2.75573188e-06 - 2.50520991e-08 * _t21)) * _t23 + ((0.00833333377 - 0.000198412701 * _t21) * _t22 + (1.0 - 0.166666672 * _t21))) * ((_t20) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0))) * schwarzp_proj_o2_cos(_t4);
-    highp float _t26 = _t0 * _t7;
-    highp float _t27 = _t9 * (_t26 * _t26);
-    bool _t28 = _t27 <= 1.0;
-    highp float _t29 = (_t28) ? _t27 : 1.0;
-    highp float _t30 = _t29 * _t29;
-    highp float _t31 = _t30 * _t30;
-    highp float _t32 = -(_t26 * _t15);
-    highp float _t33 = (_t30 * (0.0416666679 - _t29 * 0.00138888892) + (1.0 - _t29 * 0.5) + (2.48015876e-05 - _t29 * 2.75573029e-07 + _t30 * (2.08744777e-09 - _t29 * 1.13046204e-11)) * _t31) * _t7 - schwarzp_proj_o2_cos(_t6) * (((_t28) ? _t32 : ((_t32 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t29 * 0.166666672 + (0.00833333377 - _t29 * 0.000198412701) * _t30 + _t31 * (2.75573188e-06 - _t29 * 2.50520991e-08 + _t30 * (1.60577024e-10 - _t29 * 7.54937183e-13))));
-    highp float _t34 = _t17 * _t17 + _t25 * _t25 + _t33 * _t33;
-    highp float _t35 = (_t34 > 0.0) ? 1.0 / sqrt(_t34) : 0.0;
-    return vec3(-(_t17 * _t35), -(_t33 * _t35), -(_t25 * _t35));
+    highp float _t8 = _t7 * _t7;
+    highp float _t9 = 6.28318548 * p.y;
+    highp float _t10 = schwarzp_proj_o2_sin(_t9);
+    highp float _t11 = _t10 * _t10;
+    highp float _t12 = _t2 + _t8 + _t11;
+    highp float _t13 = (_t12 > 1.17549435e-38) ? 1.0 / _t12 : 0.0;
+    highp float _t14 = _t2 * _t5 * _t13;
+    highp float _t15 = _t14 * _t14;
+    highp float _t16 = _t15 * _t15;
+    highp float _t17 = _t4 * (_t13 * sqrt(_t12));
+    highp float _t18 = (1.0 - _t14 * 0.166666672 + (0.00833333377 - _t14 * 0.000198412701) * _t15 + _t16 * (2.75573188e-06 - _t14 * 2.50520991e-08 + (1.60577024e-10 - _t14 * 7.54937183e-13) * _t15)) * (_t1 * _t17) * schwarzp_proj_o2_cos(_t0) + ((0.0416666679 - _t14 * 0.00138888892) * _t15 + (1.0 - _t14 * 0.5) + _t16 * (2.48015876e-05 - _t14 * 2.75573029e-07 + _t15 * (2.08744777e-09 - _t14 * 1.13046204e-11))) * _t1;
+    highp float _t19 = _t5 * _t11 * _t13;
+    highp float _t20 = _t19 * _t19;
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = schwarzp_proj_o2_cos(_t9) * (((2.75573188e-06 - 2.50520991e-08 * _t19 + _t20 * (1.60577024e-10 - 7.54937183e-13 * _t19)) * _t21 + (1.0 - 0.166666672 * _t19 + _t20 * (0.00833333377 - 0.000198412701 * _t19))) * (_t10 * _t17)) + _t10 * (1.0 - _t19 * 0.5 + _t20 * (0.0416666679 - 0.00138888892 * _t19) + _t21 * (2.48015876e-05 - _t19 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t19) * _t20));
+    highp float _t23 = _t5 * _t8 * _t13;
+    highp float _t24 = _t23 * _t23;
+    highp float _t25 = _t24 * _t24;
+    highp float _t26 = ((0.00833333377 - 0.000198412701 * _t23) * _t24 + (1.0 - 0.166666672 * _t23) + (2.75573188e-06 - 2.50520991e-08 * _t23 + (1.60577024e-10 - 7.54937183e-13 * _t23) * _t24) * _t25) * (_t7 * _t17) * schwarzp_proj_o2_cos(_t6) + _t7 * ((_t24 * (2.08744777e-09 - 1.13046204e-11 * _t23) + (2.48015876e-05 - _t23 * 2.75573029e-07)) * _t25 + (1.0 - _t23 * 0.5 + _t24 * (0.0416666679 - 0.00138888892 * _t23)));
+    highp float _t27 = _t22 * _t22 + _t18 * _t18 + _t26 * _t26;
+    highp float _t28 = (_t27 > 0.0) ? 1.0 / sqrt(_t27) : 0.0;
+    return vec3(-(_t18 * _t28), -(_t22 * _t28), -(_t28 * _t26));
 }
 
 

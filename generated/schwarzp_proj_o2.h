@@ -40,9 +40,10 @@
  *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
  *   0, so every function returns a finite value for finite input (do not compile with
  *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
- *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
- *   keeps |q_K - p| <= |h| and so the bound above.
+ *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
+ *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
+ *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
+ *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -51,11 +52,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   153
- *   shell    175
- *   normal   166
+ *   offset   139
+ *   shell    261
+ *   normal   152
  */
-/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":153,"shell":175,"normal":166}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":139,"shell":261,"normal":152}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O2_H
 #define OFFSETGEN_SCHWARZP_PROJ_O2_H
 
@@ -70,10 +71,17 @@
 #else
 #define OFFSETGEN_TRIG_INT_(x) ((int)(x))
 #endif
+/* Adding and subtracting 1.5 * 2^52 rounds to an integer only under IEEE evaluation in double. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUND_(v) rint(v)
+#else
+#define OFFSETGEN_TRIG_ROUND_(v) (((v) + 6755399441055744.0) - 6755399441055744.0)
+#endif
 /* sin and cos for the scalar functions, inline: libm's sin and cos cost more than the rest of a
  * low-order offset. The same reduction and polynomials as the batch helpers (within 1.5 ulp of
- * libm), so the scalar and batch functions agree to the last bits; the quadrant comes from an int
- * conversion, so plain -O2 needs no rint call. Arguments beyond 1.0e8 radians go to libm.
+ * libm), so the scalar and batch functions agree to the last bits. a * 2/pi is rounded by adding
+ * and subtracting 1.5 * 2^52 (no rint call at plain -O2, and a shorter dependency chain than an int
+ * conversion, which only picks the quadrant here). Arguments beyond 1.0e8 radians go to libm.
  * A sin and a cos of the same argument share the reduction and both polynomials after inlining.
  * Define OFFSETGEN_LIBM_TRIG before including this header to call libm's sin and cos instead. */
 static inline double offsetgen_sin(double a)
@@ -81,9 +89,8 @@ static inline double offsetgen_sin(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return sin(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -98,9 +105,8 @@ static inline double offsetgen_cos(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cos(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -110,6 +116,7 @@ static inline double offsetgen_cos(double a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INT_
+#undef OFFSETGEN_TRIG_ROUND_
 #endif /* OFFSETGEN_SCALAR_TRIG_DOUBLE_V1 */
 
 /* F, the field; the surface is F = 0.
@@ -121,158 +128,148 @@ static inline double schwarzp_proj_o2_field(double x, double y, double z)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 153
+ * Total ops: 139
  */
 static inline double schwarzp_proj_o2_offset(double x, double y, double z, double h)
 {
     const double _t0 = z * 6.2831853071795862;
     const double _t1 = 6.2831853071795862 * h;
-    const double _t2 = offsetgen_sin(_t0);
-    const double _t3 = _t1 * _t2;
-    const double _t4 = 6.2831853071795862 * x;
-    const double _t5 = offsetgen_sin(_t4);
-    const double _t6 = 6.2831853071795862 * y;
+    const double _t2 = (_t1 <= 1.0) ? (((-1.0) <= _t1) ? _t1 : (-1.0)) : 1.0;
+    const double _t3 = _t2 * _t2;
+    const double _t4 = offsetgen_sin(_t0);
+    const double _t5 = _t4 * _t4;
+    const double _t6 = 6.2831853071795862 * x;
     const double _t7 = offsetgen_sin(_t6);
-    const double _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
-    const double _t14 = _t13 * _t13;
-    const double _t15 = sqrt(_t9);
-    const double _t16 = -(_t3 * _t15);
-    const double _t17 = _t1 * _t5;
-    const double _t18 = _t17 * _t17 * _t9;
-    const int _t19 = _t18 <= 1.0;
-    const double _t20 = (_t19) ? _t18 : 1.0;
-    const double _t21 = _t20 * _t20;
+    const double _t8 = _t7 * _t7;
+    const double _t9 = 6.2831853071795862 * y;
+    const double _t10 = offsetgen_sin(_t9);
+    const double _t11 = _t10 * _t10;
+    const double _t12 = _t8 + _t5 + _t11;
+    const double _t13 = (_t12 > 1.1754943508222875e-38) ? 1.0 / _t12 : 0.0;
+    const double _t14 = _t3 * _t5 * _t13;
+    const double _t15 = _t14 * _t14;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t2 * (_t13 * sqrt(_t12));
+    const double _t18 = _t3 * _t11 * _t13;
+    const double _t19 = _t18 * _t18;
+    const double _t20 = _t19 * _t19;
+    const double _t21 = _t8 * _t3 * _t13;
     const double _t22 = _t21 * _t21;
-    const double _t23 = -(_t17 * _t15);
-    const double _t24 = _t1 * _t7;
-    const double _t25 = _t9 * (_t24 * _t24);
-    const int _t26 = _t25 <= 1.0;
-    const double _t27 = -(_t24 * _t15);
-    const double _t28 = (_t26) ? _t25 : 1.0;
-    const double _t29 = _t28 * _t28;
-    const double _t30 = _t29 * _t29;
-    return offsetgen_cos(_t0) * ((0.041666666666666102 - 0.0013888888888798428 * _t12) * _t13 + (1.0 - _t12 * 0.5) + _t14 * (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t12) * _t13)) + (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t12) * _t13 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t12)) * _t14 + ((0.0083333333333333003 - 0.00019841269841216566 * _t12) * _t13 + (1.0 - 0.16666666666666666 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t2 + (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t20 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) * _t21) * _t22 + ((0.0083333333333333003 - 0.00019841269841216566 * _t20) * _t21 + (1.0 - 0.16666666666666666 * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t5 + ((_t21 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t20) + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.041666666666666102 - 0.0013888888888798428 * _t20))) * offsetgen_cos(_t4)) + (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t28 * 0.16666666666666666 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + _t30 * (2.755731919201122e-06 - _t28 * 2.5052099244914114e-08 + _t29 * (1.6057701922579786e-10 - _t28 * 7.549371704181243e-13))) * _t7 + (_t29 * (0.041666666666666102 - _t28 * 0.0013888888888798428) + (1.0 - _t28 * 0.5) + (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + _t29 * (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11)) * _t30) * offsetgen_cos(_t6));
+    const double _t23 = _t22 * _t22;
+    return offsetgen_cos(_t0) * ((_t15 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t14) + (2.4801587247292686e-05 - _t14 * 2.7557303701922228e-07)) * _t16 + (1.0 - _t14 * 0.5 + _t15 * (0.041666666666666102 - 0.0013888888888798428 * _t14))) - ((0.0083333333333333003 - 0.00019841269841216566 * _t14) * _t15 + (1.0 - 0.16666666666666666 * _t14) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t14 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t14) * _t15) * _t16) * (_t4 * _t17) * _t4 + (offsetgen_cos(_t9) * (1.0 - _t18 * 0.5 + _t19 * (0.041666666666666102 - 0.0013888888888798428 * _t18) + _t20 * (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t18) * _t19)) - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t18 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)) * _t20 + (1.0 - 0.16666666666666666 * _t18 + _t19 * (0.0083333333333333003 - 0.00019841269841216566 * _t18))) * (_t10 * _t17) * _t10 + (((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + _t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11))) * offsetgen_cos(_t6) - (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22)) * (_t7 * _t17) * _t7));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 175
+ * Total ops: 261
  */
 static inline double schwarzp_proj_o2_shell(double x, double y, double z, double t)
 {
     const double _t0 = z * 6.2831853071795862;
-    const double _t1 = offsetgen_sin(_t0);
-    const double _t2 = 6.2831853071795862 * (t * 0.5);
-    const double _t3 = _t1 * _t2;
-    const double _t4 = 6.2831853071795862 * x;
-    const double _t5 = offsetgen_sin(_t4);
-    const double _t6 = 6.2831853071795862 * y;
-    const double _t7 = offsetgen_sin(_t6);
-    const double _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
+    const double _t1 = offsetgen_cos(_t0);
+    const double _t2 = 6.2831853071795862 * x;
+    const double _t3 = offsetgen_sin(_t2);
+    const double _t4 = _t3 * _t3;
+    const double _t5 = offsetgen_sin(_t0);
+    const double _t6 = _t5 * _t5;
+    const double _t7 = 6.2831853071795862 * y;
+    const double _t8 = offsetgen_sin(_t7);
+    const double _t9 = _t8 * _t8;
+    const double _t10 = _t4 + _t6 + _t9;
+    const double _t11 = (_t10 > 1.1754943508222875e-38) ? 1.0 / _t10 : 0.0;
+    const double _t12 = 6.2831853071795862 * (t * 0.5);
+    const double _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
     const double _t14 = _t13 * _t13;
-    const double _t15 = (((2.0874477943664777e-09 - _t12 * 1.1304620460700782e-11) * _t13 + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07)) * _t14 + (1.0 - _t12 * 0.5 + (0.041666666666666102 - _t12 * 0.0013888888888798428) * _t13)) * offsetgen_cos(_t0);
-    const double _t16 = sqrt(_t9);
-    const double _t17 = _t3 * _t16;
-    const double _t18 = -_t17;
-    const double _t19 = _t13 * (0.0083333333333333003 - _t12 * 0.00019841269841216566) + (1.0 - _t12 * 0.16666666666666666) + (2.755731919201122e-06 - _t12 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t12 * 7.549371704181243e-13) * _t13) * _t14;
-    const double _t20 = _t2 * _t5;
-    const double _t21 = _t20 * _t20 * _t9;
-    const int _t22 = _t21 <= 1.0;
-    const double _t23 = (_t22) ? _t21 : 1.0;
-    const double _t24 = _t23 * _t23;
+    const double _t15 = _t11 * (_t14 * _t6);
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t11 * sqrt(_t10);
+    const double _t19 = _t18 * _t13;
+    const double _t20 = _t11 * (_t14 * _t4);
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = offsetgen_cos(_t2);
+    const double _t24 = _t11 * (_t14 * _t9);
     const double _t25 = _t24 * _t24;
-    const double _t26 = ((2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07 + _t24 * (2.0874477943664777e-09 - _t23 * 1.1304620460700782e-11)) * _t25 + (_t24 * (0.041666666666666102 - 0.0013888888888798428 * _t23) + (1.0 - _t23 * 0.5))) * offsetgen_cos(_t4);
-    const double _t27 = _t20 * _t16;
-    const double _t28 = -_t27;
-    const double _t29 = (_t24 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23)) * _t25 + ((0.0083333333333333003 - _t23 * 0.00019841269841216566) * _t24 + (1.0 - 0.16666666666666666 * _t23));
-    const double _t30 = _t7 * _t2;
-    const double _t31 = _t30 * _t30 * _t9;
-    const int _t32 = _t31 <= 1.0;
-    const double _t33 = (_t32) ? _t31 : 1.0;
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * _t34;
-    const double _t36 = (1.0 - _t33 * 0.5 + _t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + _t35 * ((2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11) * _t34 + (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07))) * offsetgen_cos(_t6);
-    const double _t37 = _t30 * _t16;
-    const double _t38 = -_t37;
-    const double _t39 = 1.0 - _t33 * 0.16666666666666666 + (0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + _t35 * (_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08));
-    return (_t15 + ((_t11) ? _t18 : ((_t18 > 0.0) ? 1.0 : (-1.0))) * _t19 * _t1 + (_t26 + ((_t22) ? _t28 : ((_t28 > 0.0) ? 1.0 : (-1.0))) * _t29 * _t5 + (_t36 + ((_t32) ? _t38 : ((_t38 > 0.0) ? 1.0 : (-1.0))) * _t39 * _t7))) * (_t15 + ((_t11) ? _t17 : ((_t17 > 0.0) ? 1.0 : (-1.0))) * _t19 * _t1 + (_t26 + ((_t22) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * _t29 * _t5) + (_t36 + _t7 * (_t39 * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0))))));
+    const double _t26 = _t25 * _t25;
+    const double _t27 = offsetgen_cos(_t7);
+    const double _t28 = -_t12;
+    const double _t29 = (_t28 <= 1.0) ? (((-1.0) <= _t28) ? _t28 : (-1.0)) : 1.0;
+    const double _t30 = _t29 * _t29;
+    const double _t31 = _t30 * _t9 * _t11;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t18 * _t29;
+    const double _t35 = _t11 * (_t30 * _t6);
+    const double _t36 = _t35 * _t35;
+    const double _t37 = _t36 * _t36;
+    const double _t38 = _t30 * _t4 * _t11;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = _t39 * _t39;
+    return (_t1 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - _t15 * 0.0013888888888798428) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t15 * 1.1304620460700782e-11) * _t16)) - _t5 * (((0.0083333333333333003 - _t15 * 0.00019841269841216566) * _t16 + (1.0 - _t15 * 0.16666666666666666) + _t17 * (2.755731919201122e-06 - _t15 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t15 * 7.549371704181243e-13) * _t16)) * (_t5 * _t19)) + (((0.041666666666666102 - _t20 * 0.0013888888888798428) * _t21 + (1.0 - _t20 * 0.5) + _t22 * (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11) * _t21)) * _t23 - _t19 * _t3 * (1.0 - _t20 * 0.16666666666666666 + (0.0083333333333333003 - _t20 * 0.00019841269841216566) * _t21 + (_t21 * (1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t20 * 2.5052099244914114e-08)) * _t22) * _t3 + ((_t26 * ((2.0874477943664777e-09 - _t24 * 1.1304620460700782e-11) * _t25 + (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07)) + (1.0 - _t24 * 0.5 + _t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24))) * _t27 - _t8 * (_t8 * _t19 * (_t25 * (0.0083333333333333003 - _t24 * 0.00019841269841216566) + (1.0 - _t24 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t24 * 7.549371704181243e-13) * _t25 + (2.755731919201122e-06 - _t24 * 2.5052099244914114e-08)) * _t26))))) * (_t27 * (_t32 * (0.041666666666666102 - 0.0013888888888798428 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (_t32 * (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07))) - _t8 * (_t34 * _t8 * (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - _t31 * 0.00019841269841216566) + _t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31)))) + ((1.0 - 0.5 * _t35 + _t36 * (0.041666666666666102 - 0.0013888888888798428 * _t35) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t35 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) * _t36) * _t37) * _t1 - _t5 * (_t5 * _t34 * (_t37 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36) + ((0.0083333333333333003 - 0.00019841269841216566 * _t35) * _t36 + (1.0 - 0.16666666666666666 * _t35))))) + (((2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07 + _t39 * (2.0874477943664777e-09 - _t38 * 1.1304620460700782e-11)) * _t40 + (1.0 - _t38 * 0.5 + _t39 * (0.041666666666666102 - 0.0013888888888798428 * _t38))) * _t23 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t38 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39) * _t40 + (_t39 * (0.0083333333333333003 - 0.00019841269841216566 * _t38) + (1.0 - 0.16666666666666666 * _t38))) * (_t34 * _t3) * _t3));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 166
+ * Total ops: 152
  */
 static inline void schwarzp_proj_o2_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = 6.2831853071795862 * h;
-    const double _t1 = 6.2831853071795862 * x;
-    const double _t2 = offsetgen_sin(_t1);
-    const double _t3 = _t0 * _t2;
-    const double _t4 = z * 6.2831853071795862;
-    const double _t5 = offsetgen_sin(_t4);
-    const double _t6 = 6.2831853071795862 * y;
+    const double _t0 = 6.2831853071795862 * x;
+    const double _t1 = offsetgen_sin(_t0);
+    const double _t2 = _t1 * _t1;
+    const double _t3 = 6.2831853071795862 * h;
+    const double _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
+    const double _t5 = _t4 * _t4;
+    const double _t6 = z * 6.2831853071795862;
     const double _t7 = offsetgen_sin(_t6);
-    const double _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
-    const double _t14 = _t13 * _t13;
-    const double _t15 = sqrt(_t9);
-    const double _t16 = -(_t3 * _t15);
-    const double _t17 = ((_t13 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t12) + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - 0.0013888888888798428 * _t12))) * _t2 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t12 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t12) * _t13) * _t14 + ((0.0083333333333333003 - 0.00019841269841216566 * _t12) * _t13 + (1.0 - 0.16666666666666666 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * offsetgen_cos(_t1);
-    const double _t18 = _t0 * _t5;
-    const double _t19 = _t18 * _t18 * _t9;
-    const int _t20 = _t19 <= 1.0;
-    const double _t21 = (_t20) ? _t19 : 1.0;
-    const double _t22 = _t21 * _t21;
-    const double _t23 = _t22 * _t22;
-    const double _t24 = -(_t18 * _t15);
-    const double _t25 = _t5 * ((0.041666666666666102 - 0.0013888888888798428 * _t21) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t21) * _t22)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t21) * _t22 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t21)) * _t23 + ((0.0083333333333333003 - 0.00019841269841216566 * _t21) * _t22 + (1.0 - 0.16666666666666666 * _t21))) * ((_t20) ? _t24 : ((_t24 > 0.0) ? 1.0 : (-1.0))) * offsetgen_cos(_t4);
-    const double _t26 = _t0 * _t7;
-    const double _t27 = _t9 * (_t26 * _t26);
-    const int _t28 = _t27 <= 1.0;
-    const double _t29 = (_t28) ? _t27 : 1.0;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = _t30 * _t30;
-    const double _t32 = -(_t26 * _t15);
-    const double _t33 = (_t30 * (0.041666666666666102 - _t29 * 0.0013888888888798428) + (1.0 - _t29 * 0.5) + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07 + _t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11)) * _t31) * _t7 - offsetgen_cos(_t6) * (((_t28) ? _t32 : ((_t32 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t29 * 0.16666666666666666 + (0.0083333333333333003 - _t29 * 0.00019841269841216566) * _t30 + _t31 * (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13))));
-    const double _t34 = _t17 * _t17 + _t25 * _t25 + _t33 * _t33;
-    const double _t35 = (_t34 > 0.0) ? 1.0 / sqrt(_t34) : 0.0;
-    n[0] = -(_t17 * _t35);
-    n[1] = -(_t33 * _t35);
-    n[2] = -(_t25 * _t35);
+    const double _t8 = _t7 * _t7;
+    const double _t9 = 6.2831853071795862 * y;
+    const double _t10 = offsetgen_sin(_t9);
+    const double _t11 = _t10 * _t10;
+    const double _t12 = _t2 + _t8 + _t11;
+    const double _t13 = (_t12 > 1.1754943508222875e-38) ? 1.0 / _t12 : 0.0;
+    const double _t14 = _t2 * _t5 * _t13;
+    const double _t15 = _t14 * _t14;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t4 * (_t13 * sqrt(_t12));
+    const double _t18 = (1.0 - _t14 * 0.16666666666666666 + (0.0083333333333333003 - _t14 * 0.00019841269841216566) * _t15 + _t16 * (2.755731919201122e-06 - _t14 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t14 * 7.549371704181243e-13) * _t15)) * (_t1 * _t17) * offsetgen_cos(_t0) + ((0.041666666666666102 - _t14 * 0.0013888888888798428) * _t15 + (1.0 - _t14 * 0.5) + _t16 * (2.4801587247292686e-05 - _t14 * 2.7557303701922228e-07 + _t15 * (2.0874477943664777e-09 - _t14 * 1.1304620460700782e-11))) * _t1;
+    const double _t19 = _t5 * _t11 * _t13;
+    const double _t20 = _t19 * _t19;
+    const double _t21 = _t20 * _t20;
+    const double _t22 = offsetgen_cos(_t9) * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t19 + _t20 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t19)) * _t21 + (1.0 - 0.16666666666666666 * _t19 + _t20 * (0.0083333333333333003 - 0.00019841269841216566 * _t19))) * (_t10 * _t17)) + _t10 * (1.0 - _t19 * 0.5 + _t20 * (0.041666666666666102 - 0.0013888888888798428 * _t19) + _t21 * (2.4801587247292686e-05 - _t19 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t19) * _t20));
+    const double _t23 = _t5 * _t8 * _t13;
+    const double _t24 = _t23 * _t23;
+    const double _t25 = _t24 * _t24;
+    const double _t26 = ((0.0083333333333333003 - 0.00019841269841216566 * _t23) * _t24 + (1.0 - 0.16666666666666666 * _t23) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) * _t24) * _t25) * (_t7 * _t17) * offsetgen_cos(_t6) + _t7 * ((_t24 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t23) + (2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07)) * _t25 + (1.0 - _t23 * 0.5 + _t24 * (0.041666666666666102 - 0.0013888888888798428 * _t23)));
+    const double _t27 = _t22 * _t22 + _t18 * _t18 + _t26 * _t26;
+    const double _t28 = (_t27 > 0.0) ? 1.0 / sqrt(_t27) : 0.0;
+    n[0] = -(_t18 * _t28);
+    n[1] = -(_t22 * _t28);
+    n[2] = -(_t28 * _t26);
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #define OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #ifdef __cplusplus
 #define OFFSETGEN_TRIG_INTF_(x) static_cast<int>(x)
-#define OFFSETGEN_TRIG_FLOAT_(x) static_cast<float>(x)
 #else
 #define OFFSETGEN_TRIG_INTF_(x) ((int)(x))
-#define OFFSETGEN_TRIG_FLOAT_(x) ((float)(x))
+#endif
+/* Adding and subtracting 1.5 * 2^23 rounds to an integer only under IEEE evaluation in float. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUNDF_(v) rintf(v)
+#else
+#define OFFSETGEN_TRIG_ROUNDF_(v) (((v) + 12582912.0f) - 12582912.0f)
 #endif
 /* Float sin and cos for the scalar functions: the batch helpers' reduction and Cephes polynomials,
- * with an int-conversion quadrant; sinf/cosf beyond 8192.0 radians, or everywhere with
+ * with the quadrant rounded as in the double helpers; sinf/cosf beyond 8192.0 radians, or everywhere with
  * OFFSETGEN_LIBM_TRIG defined. */
 static inline float offsetgen_sinf(float a)
 {
 #ifdef OFFSETGEN_LIBM_TRIG
     return sinf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -287,9 +284,8 @@ static inline float offsetgen_cosf(float a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cosf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -299,7 +295,7 @@ static inline float offsetgen_cosf(float a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INTF_
-#undef OFFSETGEN_TRIG_FLOAT_
+#undef OFFSETGEN_TRIG_ROUNDF_
 #endif /* OFFSETGEN_SCALAR_TRIG_FLOAT_V1 */
 /* F, the field; the surface is F = 0.
  * Total ops: 8
@@ -310,136 +306,123 @@ static inline float schwarzp_proj_o2_fieldf(float x, float y, float z)
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
- * Total ops: 153
+ * Total ops: 139
  */
 static inline float schwarzp_proj_o2_offsetf(float x, float y, float z, float h)
 {
     const float _t0 = z * 6.28318548f;
     const float _t1 = 6.28318548f * h;
-    const float _t2 = offsetgen_sinf(_t0);
-    const float _t3 = _t1 * _t2;
-    const float _t4 = 6.28318548f * x;
-    const float _t5 = offsetgen_sinf(_t4);
-    const float _t6 = 6.28318548f * y;
+    const float _t2 = (_t1 <= 1.0f) ? (((-1.0f) <= _t1) ? _t1 : (-1.0f)) : 1.0f;
+    const float _t3 = _t2 * _t2;
+    const float _t4 = offsetgen_sinf(_t0);
+    const float _t5 = _t4 * _t4;
+    const float _t6 = 6.28318548f * x;
     const float _t7 = offsetgen_sinf(_t6);
-    const float _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
-    const float _t14 = _t13 * _t13;
-    const float _t15 = sqrtf(_t9);
-    const float _t16 = -(_t3 * _t15);
-    const float _t17 = _t1 * _t5;
-    const float _t18 = _t17 * _t17 * _t9;
-    const int _t19 = _t18 <= 1.0f;
-    const float _t20 = (_t19) ? _t18 : 1.0f;
-    const float _t21 = _t20 * _t20;
+    const float _t8 = _t7 * _t7;
+    const float _t9 = 6.28318548f * y;
+    const float _t10 = offsetgen_sinf(_t9);
+    const float _t11 = _t10 * _t10;
+    const float _t12 = _t8 + _t5 + _t11;
+    const float _t13 = (_t12 > 1.17549435e-38f) ? 1.0f / _t12 : 0.0f;
+    const float _t14 = _t3 * _t5 * _t13;
+    const float _t15 = _t14 * _t14;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t2 * (_t13 * sqrtf(_t12));
+    const float _t18 = _t3 * _t11 * _t13;
+    const float _t19 = _t18 * _t18;
+    const float _t20 = _t19 * _t19;
+    const float _t21 = _t8 * _t3 * _t13;
     const float _t22 = _t21 * _t21;
-    const float _t23 = -(_t17 * _t15);
-    const float _t24 = _t1 * _t7;
-    const float _t25 = _t9 * (_t24 * _t24);
-    const int _t26 = _t25 <= 1.0f;
-    const float _t27 = -(_t24 * _t15);
-    const float _t28 = (_t26) ? _t25 : 1.0f;
-    const float _t29 = _t28 * _t28;
-    const float _t30 = _t29 * _t29;
-    return offsetgen_cosf(_t0) * ((0.0416666679f - 0.00138888892f * _t12) * _t13 + (1.0f - _t12 * 0.5f) + _t14 * (2.48015876e-05f - _t12 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t12) * _t13)) + (((1.60577024e-10f - 7.54937183e-13f * _t12) * _t13 + (2.75573188e-06f - 2.50520991e-08f * _t12)) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0f) ? 1.0f : (-1.0f))) * _t2 + (((2.75573188e-06f - 2.50520991e-08f * _t20 + (1.60577024e-10f - 7.54937183e-13f * _t20) * _t21) * _t22 + ((0.00833333377f - 0.000198412701f * _t20) * _t21 + (1.0f - 0.166666672f * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f))) * _t5 + ((_t21 * (2.08744777e-09f - 1.13046204e-11f * _t20) + (2.48015876e-05f - _t20 * 2.75573029e-07f)) * _t22 + (1.0f - _t20 * 0.5f + _t21 * (0.0416666679f - 0.00138888892f * _t20))) * offsetgen_cosf(_t4)) + (((_t26) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t28 * 0.166666672f + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + _t30 * (2.75573188e-06f - _t28 * 2.50520991e-08f + _t29 * (1.60577024e-10f - _t28 * 7.54937183e-13f))) * _t7 + (_t29 * (0.0416666679f - _t28 * 0.00138888892f) + (1.0f - _t28 * 0.5f) + (2.48015876e-05f - _t28 * 2.75573029e-07f + _t29 * (2.08744777e-09f - _t28 * 1.13046204e-11f)) * _t30) * offsetgen_cosf(_t6));
+    const float _t23 = _t22 * _t22;
+    return offsetgen_cosf(_t0) * ((_t15 * (2.08744777e-09f - 1.13046204e-11f * _t14) + (2.48015876e-05f - _t14 * 2.75573029e-07f)) * _t16 + (1.0f - _t14 * 0.5f + _t15 * (0.0416666679f - 0.00138888892f * _t14))) - ((0.00833333377f - 0.000198412701f * _t14) * _t15 + (1.0f - 0.166666672f * _t14) + (2.75573188e-06f - 2.50520991e-08f * _t14 + (1.60577024e-10f - 7.54937183e-13f * _t14) * _t15) * _t16) * (_t4 * _t17) * _t4 + (offsetgen_cosf(_t9) * (1.0f - _t18 * 0.5f + _t19 * (0.0416666679f - 0.00138888892f * _t18) + _t20 * (2.48015876e-05f - _t18 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t18) * _t19)) - ((2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20 + (1.0f - 0.166666672f * _t18 + _t19 * (0.00833333377f - 0.000198412701f * _t18))) * (_t10 * _t17) * _t10 + (((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * offsetgen_cosf(_t6) - (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t7 * _t17) * _t7));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 175
+ * Total ops: 261
  */
 static inline float schwarzp_proj_o2_shellf(float x, float y, float z, float t)
 {
     const float _t0 = z * 6.28318548f;
-    const float _t1 = offsetgen_sinf(_t0);
-    const float _t2 = 6.28318548f * (t * 0.5f);
-    const float _t3 = _t1 * _t2;
-    const float _t4 = 6.28318548f * x;
-    const float _t5 = offsetgen_sinf(_t4);
-    const float _t6 = 6.28318548f * y;
-    const float _t7 = offsetgen_sinf(_t6);
-    const float _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
+    const float _t1 = offsetgen_cosf(_t0);
+    const float _t2 = 6.28318548f * x;
+    const float _t3 = offsetgen_sinf(_t2);
+    const float _t4 = _t3 * _t3;
+    const float _t5 = offsetgen_sinf(_t0);
+    const float _t6 = _t5 * _t5;
+    const float _t7 = 6.28318548f * y;
+    const float _t8 = offsetgen_sinf(_t7);
+    const float _t9 = _t8 * _t8;
+    const float _t10 = _t4 + _t6 + _t9;
+    const float _t11 = (_t10 > 1.17549435e-38f) ? 1.0f / _t10 : 0.0f;
+    const float _t12 = 6.28318548f * (t * 0.5f);
+    const float _t13 = (_t12 <= 1.0f) ? (((-1.0f) <= _t12) ? _t12 : (-1.0f)) : 1.0f;
     const float _t14 = _t13 * _t13;
-    const float _t15 = (((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + (0.0416666679f - _t12 * 0.00138888892f) * _t13)) * offsetgen_cosf(_t0);
-    const float _t16 = sqrtf(_t9);
-    const float _t17 = _t3 * _t16;
-    const float _t18 = -_t17;
-    const float _t19 = _t13 * (0.00833333377f - _t12 * 0.000198412701f) + (1.0f - _t12 * 0.166666672f) + (2.75573188e-06f - _t12 * 2.50520991e-08f + (1.60577024e-10f - _t12 * 7.54937183e-13f) * _t13) * _t14;
-    const float _t20 = _t2 * _t5;
-    const float _t21 = _t20 * _t20 * _t9;
-    const int _t22 = _t21 <= 1.0f;
-    const float _t23 = (_t22) ? _t21 : 1.0f;
-    const float _t24 = _t23 * _t23;
+    const float _t15 = _t11 * (_t14 * _t6);
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t11 * sqrtf(_t10);
+    const float _t19 = _t18 * _t13;
+    const float _t20 = _t11 * (_t14 * _t4);
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = offsetgen_cosf(_t2);
+    const float _t24 = _t11 * (_t14 * _t9);
     const float _t25 = _t24 * _t24;
-    const float _t26 = ((2.48015876e-05f - _t23 * 2.75573029e-07f + _t24 * (2.08744777e-09f - _t23 * 1.13046204e-11f)) * _t25 + (_t24 * (0.0416666679f - 0.00138888892f * _t23) + (1.0f - _t23 * 0.5f))) * offsetgen_cosf(_t4);
-    const float _t27 = _t20 * _t16;
-    const float _t28 = -_t27;
-    const float _t29 = (_t24 * (1.60577024e-10f - 7.54937183e-13f * _t23) + (2.75573188e-06f - 2.50520991e-08f * _t23)) * _t25 + ((0.00833333377f - _t23 * 0.000198412701f) * _t24 + (1.0f - 0.166666672f * _t23));
-    const float _t30 = _t7 * _t2;
-    const float _t31 = _t30 * _t30 * _t9;
-    const int _t32 = _t31 <= 1.0f;
-    const float _t33 = (_t32) ? _t31 : 1.0f;
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * _t34;
-    const float _t36 = (1.0f - _t33 * 0.5f + _t34 * (0.0416666679f - _t33 * 0.00138888892f) + _t35 * ((2.08744777e-09f - _t33 * 1.13046204e-11f) * _t34 + (2.48015876e-05f - _t33 * 2.75573029e-07f))) * offsetgen_cosf(_t6);
-    const float _t37 = _t30 * _t16;
-    const float _t38 = -_t37;
-    const float _t39 = 1.0f - _t33 * 0.166666672f + (0.00833333377f - _t33 * 0.000198412701f) * _t34 + _t35 * (_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f));
-    return (_t15 + ((_t11) ? _t18 : ((_t18 > 0.0f) ? 1.0f : (-1.0f))) * _t19 * _t1 + (_t26 + ((_t22) ? _t28 : ((_t28 > 0.0f) ? 1.0f : (-1.0f))) * _t29 * _t5 + (_t36 + ((_t32) ? _t38 : ((_t38 > 0.0f) ? 1.0f : (-1.0f))) * _t39 * _t7))) * (_t15 + ((_t11) ? _t17 : ((_t17 > 0.0f) ? 1.0f : (-1.0f))) * _t19 * _t1 + (_t26 + ((_t22) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f))) * _t29 * _t5) + (_t36 + _t7 * (_t39 * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f))))));
+    const float _t26 = _t25 * _t25;
+    const float _t27 = offsetgen_cosf(_t7);
+    const float _t28 = -_t12;
+    const float _t29 = (_t28 <= 1.0f) ? (((-1.0f) <= _t28) ? _t28 : (-1.0f)) : 1.0f;
+    const float _t30 = _t29 * _t29;
+    const float _t31 = _t30 * _t9 * _t11;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t18 * _t29;
+    const float _t35 = _t11 * (_t30 * _t6);
+    const float _t36 = _t35 * _t35;
+    const float _t37 = _t36 * _t36;
+    const float _t38 = _t30 * _t4 * _t11;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = _t39 * _t39;
+    return (_t1 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - _t15 * 0.00138888892f) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16)) - _t5 * (((0.00833333377f - _t15 * 0.000198412701f) * _t16 + (1.0f - _t15 * 0.166666672f) + _t17 * (2.75573188e-06f - _t15 * 2.50520991e-08f + (1.60577024e-10f - _t15 * 7.54937183e-13f) * _t16)) * (_t5 * _t19)) + (((0.0416666679f - _t20 * 0.00138888892f) * _t21 + (1.0f - _t20 * 0.5f) + _t22 * (2.48015876e-05f - _t20 * 2.75573029e-07f + (2.08744777e-09f - _t20 * 1.13046204e-11f) * _t21)) * _t23 - _t19 * _t3 * (1.0f - _t20 * 0.166666672f + (0.00833333377f - _t20 * 0.000198412701f) * _t21 + (_t21 * (1.60577024e-10f - _t20 * 7.54937183e-13f) + (2.75573188e-06f - _t20 * 2.50520991e-08f)) * _t22) * _t3 + ((_t26 * ((2.08744777e-09f - _t24 * 1.13046204e-11f) * _t25 + (2.48015876e-05f - _t24 * 2.75573029e-07f)) + (1.0f - _t24 * 0.5f + _t25 * (0.0416666679f - 0.00138888892f * _t24))) * _t27 - _t8 * (_t8 * _t19 * (_t25 * (0.00833333377f - _t24 * 0.000198412701f) + (1.0f - _t24 * 0.166666672f) + ((1.60577024e-10f - _t24 * 7.54937183e-13f) * _t25 + (2.75573188e-06f - _t24 * 2.50520991e-08f)) * _t26))))) * (_t27 * (_t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (_t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f) + (2.48015876e-05f - _t31 * 2.75573029e-07f))) - _t8 * (_t34 * _t8 * (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - _t31 * 0.000198412701f) + _t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)))) + ((1.0f - 0.5f * _t35 + _t36 * (0.0416666679f - 0.00138888892f * _t35) + (2.48015876e-05f - 2.75573029e-07f * _t35 + (2.08744777e-09f - 1.13046204e-11f * _t35) * _t36) * _t37) * _t1 - _t5 * (_t5 * _t34 * (_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + (1.60577024e-10f - 7.54937183e-13f * _t35) * _t36) + ((0.00833333377f - 0.000198412701f * _t35) * _t36 + (1.0f - 0.166666672f * _t35))))) + (((2.48015876e-05f - _t38 * 2.75573029e-07f + _t39 * (2.08744777e-09f - _t38 * 1.13046204e-11f)) * _t40 + (1.0f - _t38 * 0.5f + _t39 * (0.0416666679f - 0.00138888892f * _t38))) * _t23 - ((2.75573188e-06f - 2.50520991e-08f * _t38 + (1.60577024e-10f - 7.54937183e-13f * _t38) * _t39) * _t40 + (_t39 * (0.00833333377f - 0.000198412701f * _t38) + (1.0f - 0.166666672f * _t38))) * (_t34 * _t3) * _t3));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 166
+ * Total ops: 152
  */
 static inline void schwarzp_proj_o2_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = 6.28318548f * h;
-    const float _t1 = 6.28318548f * x;
-    const float _t2 = offsetgen_sinf(_t1);
-    const float _t3 = _t0 * _t2;
-    const float _t4 = z * 6.28318548f;
-    const float _t5 = offsetgen_sinf(_t4);
-    const float _t6 = 6.28318548f * y;
+    const float _t0 = 6.28318548f * x;
+    const float _t1 = offsetgen_sinf(_t0);
+    const float _t2 = _t1 * _t1;
+    const float _t3 = 6.28318548f * h;
+    const float _t4 = (_t3 <= 1.0f) ? (((-1.0f) <= _t3) ? _t3 : (-1.0f)) : 1.0f;
+    const float _t5 = _t4 * _t4;
+    const float _t6 = z * 6.28318548f;
     const float _t7 = offsetgen_sinf(_t6);
-    const float _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
-    const float _t14 = _t13 * _t13;
-    const float _t15 = sqrtf(_t9);
-    const float _t16 = -(_t3 * _t15);
-    const float _t17 = ((_t13 * (2.08744777e-09f - 1.13046204e-11f * _t12) + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - 0.00138888892f * _t12))) * _t2 - ((2.75573188e-06f - 2.50520991e-08f * _t12 + (1.60577024e-10f - 7.54937183e-13f * _t12) * _t13) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0f) ? 1.0f : (-1.0f))) * offsetgen_cosf(_t1);
-    const float _t18 = _t0 * _t5;
-    const float _t19 = _t18 * _t18 * _t9;
-    const int _t20 = _t19 <= 1.0f;
-    const float _t21 = (_t20) ? _t19 : 1.0f;
-    const float _t22 = _t21 * _t21;
-    const float _t23 = _t22 * _t22;
-    const float _t24 = -(_t18 * _t15);
-    const float _t25 = _t5 * ((0.0416666679f - 0.00138888892f * _t21) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t21) * _t22)) - (((1.60577024e-10f - 7.54937183e-13f * _t21) * _t22 + (2.75573188e-06f - 2.50520991e-08f * _t21)) * _t23 + ((0.00833333377f - 0.000198412701f * _t21) * _t22 + (1.0f - 0.166666672f * _t21))) * ((_t20) ? _t24 : ((_t24 > 0.0f) ? 1.0f : (-1.0f))) * offsetgen_cosf(_t4);
-    const float _t26 = _t0 * _t7;
-    const float _t27 = _t9 * (_t26 * _t26);
-    const int _t28 = _t27 <= 1.0f;
-    const float _t29 = (_t28) ? _t27 : 1.0f;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = _t30 * _t30;
-    const float _t32 = -(_t26 * _t15);
-    const float _t33 = (_t30 * (0.0416666679f - _t29 * 0.00138888892f) + (1.0f - _t29 * 0.5f) + (2.48015876e-05f - _t29 * 2.75573029e-07f + _t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f)) * _t31) * _t7 - offsetgen_cosf(_t6) * (((_t28) ? _t32 : ((_t32 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t29 * 0.166666672f + (0.00833333377f - _t29 * 0.000198412701f) * _t30 + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f))));
-    const float _t34 = _t17 * _t17 + _t25 * _t25 + _t33 * _t33;
-    const float _t35 = (_t34 > 0.0f) ? 1.0f / sqrtf(_t34) : 0.0f;
-    n[0] = -(_t17 * _t35);
-    n[1] = -(_t33 * _t35);
-    n[2] = -(_t25 * _t35);
+    const float _t8 = _t7 * _t7;
+    const float _t9 = 6.28318548f * y;
+    const float _t10 = offsetgen_sinf(_t9);
+    const float _t11 = _t10 * _t10;
+    const float _t12 = _t2 + _t8 + _t11;
+    const float _t13 = (_t12 > 1.17549435e-38f) ? 1.0f / _t12 : 0.0f;
+    const float _t14 = _t2 * _t5 * _t13;
+    const float _t15 = _t14 * _t14;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t4 * (_t13 * sqrtf(_t12));
+    const float _t18 = (1.0f - _t14 * 0.166666672f + (0.00833333377f - _t14 * 0.000198412701f) * _t15 + _t16 * (2.75573188e-06f - _t14 * 2.50520991e-08f + (1.60577024e-10f - _t14 * 7.54937183e-13f) * _t15)) * (_t1 * _t17) * offsetgen_cosf(_t0) + ((0.0416666679f - _t14 * 0.00138888892f) * _t15 + (1.0f - _t14 * 0.5f) + _t16 * (2.48015876e-05f - _t14 * 2.75573029e-07f + _t15 * (2.08744777e-09f - _t14 * 1.13046204e-11f))) * _t1;
+    const float _t19 = _t5 * _t11 * _t13;
+    const float _t20 = _t19 * _t19;
+    const float _t21 = _t20 * _t20;
+    const float _t22 = offsetgen_cosf(_t9) * (((2.75573188e-06f - 2.50520991e-08f * _t19 + _t20 * (1.60577024e-10f - 7.54937183e-13f * _t19)) * _t21 + (1.0f - 0.166666672f * _t19 + _t20 * (0.00833333377f - 0.000198412701f * _t19))) * (_t10 * _t17)) + _t10 * (1.0f - _t19 * 0.5f + _t20 * (0.0416666679f - 0.00138888892f * _t19) + _t21 * (2.48015876e-05f - _t19 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t19) * _t20));
+    const float _t23 = _t5 * _t8 * _t13;
+    const float _t24 = _t23 * _t23;
+    const float _t25 = _t24 * _t24;
+    const float _t26 = ((0.00833333377f - 0.000198412701f * _t23) * _t24 + (1.0f - 0.166666672f * _t23) + (2.75573188e-06f - 2.50520991e-08f * _t23 + (1.60577024e-10f - 7.54937183e-13f * _t23) * _t24) * _t25) * (_t7 * _t17) * offsetgen_cosf(_t6) + _t7 * ((_t24 * (2.08744777e-09f - 1.13046204e-11f * _t23) + (2.48015876e-05f - _t23 * 2.75573029e-07f)) * _t25 + (1.0f - _t23 * 0.5f + _t24 * (0.0416666679f - 0.00138888892f * _t23)));
+    const float _t27 = _t22 * _t22 + _t18 * _t18 + _t26 * _t26;
+    const float _t28 = (_t27 > 0.0f) ? 1.0f / sqrtf(_t27) : 0.0f;
+    n[0] = -(_t18 * _t28);
+    n[1] = -(_t22 * _t28);
+    n[2] = -(_t28 * _t26);
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -656,36 +639,29 @@ static inline void schwarzp_proj_o2_offset_n(size_t n, const double *x, const do
         for (j = 0; j < 8; ++j) {
             const double _t0 = z[i + j] * 6.2831853071795862;
             const double _t1 = 6.2831853071795862 * h[i + j];
-            const double _t2 = offsetgen_batch_sin(_t0);
-            const double _t3 = _t1 * _t2;
-            const double _t4 = 6.2831853071795862 * x[i + j];
-            const double _t5 = offsetgen_batch_sin(_t4);
-            const double _t6 = 6.2831853071795862 * y[i + j];
+            const double _t2 = (_t1 <= 1.0) ? (((-1.0) <= _t1) ? _t1 : (-1.0)) : 1.0;
+            const double _t3 = _t2 * _t2;
+            const double _t4 = offsetgen_batch_sin(_t0);
+            const double _t5 = _t4 * _t4;
+            const double _t6 = 6.2831853071795862 * x[i + j];
             const double _t7 = offsetgen_batch_sin(_t6);
-            const double _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
-            const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-            const double _t10 = _t3 * _t3 * _t9;
-            const int _t11 = _t10 <= 1.0;
-            const double _t12 = (_t11) ? _t10 : 1.0;
-            const double _t13 = _t12 * _t12;
-            const double _t14 = _t13 * _t13;
-            const double _t15 = offsetgen_batch_sqrt(_t9);
-            const double _t16 = -(_t3 * _t15);
-            const double _t17 = _t1 * _t5;
-            const double _t18 = _t17 * _t17 * _t9;
-            const int _t19 = _t18 <= 1.0;
-            const double _t20 = (_t19) ? _t18 : 1.0;
-            const double _t21 = _t20 * _t20;
+            const double _t8 = _t7 * _t7;
+            const double _t9 = 6.2831853071795862 * y[i + j];
+            const double _t10 = offsetgen_batch_sin(_t9);
+            const double _t11 = _t10 * _t10;
+            const double _t12 = _t8 + _t5 + _t11;
+            const double _t13 = (_t12 > 1.1754943508222875e-38) ? 1.0 / _t12 : 0.0;
+            const double _t14 = _t3 * _t5 * _t13;
+            const double _t15 = _t14 * _t14;
+            const double _t16 = _t15 * _t15;
+            const double _t17 = _t2 * (_t13 * offsetgen_batch_sqrt(_t12));
+            const double _t18 = _t3 * _t11 * _t13;
+            const double _t19 = _t18 * _t18;
+            const double _t20 = _t19 * _t19;
+            const double _t21 = _t8 * _t3 * _t13;
             const double _t22 = _t21 * _t21;
-            const double _t23 = -(_t17 * _t15);
-            const double _t24 = _t1 * _t7;
-            const double _t25 = _t9 * (_t24 * _t24);
-            const int _t26 = _t25 <= 1.0;
-            const double _t27 = -(_t24 * _t15);
-            const double _t28 = (_t26) ? _t25 : 1.0;
-            const double _t29 = _t28 * _t28;
-            const double _t30 = _t29 * _t29;
-            out[i + j] = offsetgen_batch_cos(_t0) * ((0.041666666666666102 - 0.0013888888888798428 * _t12) * _t13 + (1.0 - _t12 * 0.5) + _t14 * (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t12) * _t13)) + (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t12) * _t13 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t12)) * _t14 + ((0.0083333333333333003 - 0.00019841269841216566 * _t12) * _t13 + (1.0 - 0.16666666666666666 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t2 + (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t20 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) * _t21) * _t22 + ((0.0083333333333333003 - 0.00019841269841216566 * _t20) * _t21 + (1.0 - 0.16666666666666666 * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0) ? 1.0 : (-1.0))) * _t5 + ((_t21 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t20) + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.041666666666666102 - 0.0013888888888798428 * _t20))) * offsetgen_batch_cos(_t4)) + (((_t26) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t28 * 0.16666666666666666 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + _t30 * (2.755731919201122e-06 - _t28 * 2.5052099244914114e-08 + _t29 * (1.6057701922579786e-10 - _t28 * 7.549371704181243e-13))) * _t7 + (_t29 * (0.041666666666666102 - _t28 * 0.0013888888888798428) + (1.0 - _t28 * 0.5) + (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + _t29 * (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11)) * _t30) * offsetgen_batch_cos(_t6));
+            const double _t23 = _t22 * _t22;
+            out[i + j] = offsetgen_batch_cos(_t0) * ((_t15 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t14) + (2.4801587247292686e-05 - _t14 * 2.7557303701922228e-07)) * _t16 + (1.0 - _t14 * 0.5 + _t15 * (0.041666666666666102 - 0.0013888888888798428 * _t14))) - ((0.0083333333333333003 - 0.00019841269841216566 * _t14) * _t15 + (1.0 - 0.16666666666666666 * _t14) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t14 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t14) * _t15) * _t16) * (_t4 * _t17) * _t4 + (offsetgen_batch_cos(_t9) * (1.0 - _t18 * 0.5 + _t19 * (0.041666666666666102 - 0.0013888888888798428 * _t18) + _t20 * (2.4801587247292686e-05 - _t18 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t18) * _t19)) - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t18 + _t19 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t18)) * _t20 + (1.0 - 0.16666666666666666 * _t18 + _t19 * (0.0083333333333333003 - 0.00019841269841216566 * _t18))) * (_t10 * _t17) * _t10 + (((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + _t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11))) * offsetgen_batch_cos(_t6) - (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22)) * (_t7 * _t17) * _t7));
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -705,46 +681,47 @@ static inline void schwarzp_proj_o2_shell_n(size_t n, const double *x, const dou
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
             const double _t0 = z[i + j] * 6.2831853071795862;
-            const double _t1 = offsetgen_batch_sin(_t0);
-            const double _t2 = 6.2831853071795862 * (t[i + j] * 0.5);
-            const double _t3 = _t1 * _t2;
-            const double _t4 = 6.2831853071795862 * x[i + j];
-            const double _t5 = offsetgen_batch_sin(_t4);
-            const double _t6 = 6.2831853071795862 * y[i + j];
-            const double _t7 = offsetgen_batch_sin(_t6);
-            const double _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
-            const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-            const double _t10 = _t3 * _t3 * _t9;
-            const int _t11 = _t10 <= 1.0;
-            const double _t12 = (_t11) ? _t10 : 1.0;
-            const double _t13 = _t12 * _t12;
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = 6.2831853071795862 * x[i + j];
+            const double _t3 = offsetgen_batch_sin(_t2);
+            const double _t4 = _t3 * _t3;
+            const double _t5 = offsetgen_batch_sin(_t0);
+            const double _t6 = _t5 * _t5;
+            const double _t7 = 6.2831853071795862 * y[i + j];
+            const double _t8 = offsetgen_batch_sin(_t7);
+            const double _t9 = _t8 * _t8;
+            const double _t10 = _t4 + _t6 + _t9;
+            const double _t11 = (_t10 > 1.1754943508222875e-38) ? 1.0 / _t10 : 0.0;
+            const double _t12 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
             const double _t14 = _t13 * _t13;
-            const double _t15 = (((2.0874477943664777e-09 - _t12 * 1.1304620460700782e-11) * _t13 + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07)) * _t14 + (1.0 - _t12 * 0.5 + (0.041666666666666102 - _t12 * 0.0013888888888798428) * _t13)) * offsetgen_batch_cos(_t0);
-            const double _t16 = offsetgen_batch_sqrt(_t9);
-            const double _t17 = _t3 * _t16;
-            const double _t18 = -_t17;
-            const double _t19 = _t13 * (0.0083333333333333003 - _t12 * 0.00019841269841216566) + (1.0 - _t12 * 0.16666666666666666) + (2.755731919201122e-06 - _t12 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t12 * 7.549371704181243e-13) * _t13) * _t14;
-            const double _t20 = _t2 * _t5;
-            const double _t21 = _t20 * _t20 * _t9;
-            const int _t22 = _t21 <= 1.0;
-            const double _t23 = (_t22) ? _t21 : 1.0;
-            const double _t24 = _t23 * _t23;
+            const double _t15 = _t11 * (_t14 * _t6);
+            const double _t16 = _t15 * _t15;
+            const double _t17 = _t16 * _t16;
+            const double _t18 = _t11 * offsetgen_batch_sqrt(_t10);
+            const double _t19 = _t18 * _t13;
+            const double _t20 = _t11 * (_t14 * _t4);
+            const double _t21 = _t20 * _t20;
+            const double _t22 = _t21 * _t21;
+            const double _t23 = offsetgen_batch_cos(_t2);
+            const double _t24 = _t11 * (_t14 * _t9);
             const double _t25 = _t24 * _t24;
-            const double _t26 = ((2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07 + _t24 * (2.0874477943664777e-09 - _t23 * 1.1304620460700782e-11)) * _t25 + (_t24 * (0.041666666666666102 - 0.0013888888888798428 * _t23) + (1.0 - _t23 * 0.5))) * offsetgen_batch_cos(_t4);
-            const double _t27 = _t20 * _t16;
-            const double _t28 = -_t27;
-            const double _t29 = (_t24 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23)) * _t25 + ((0.0083333333333333003 - _t23 * 0.00019841269841216566) * _t24 + (1.0 - 0.16666666666666666 * _t23));
-            const double _t30 = _t7 * _t2;
-            const double _t31 = _t30 * _t30 * _t9;
-            const int _t32 = _t31 <= 1.0;
-            const double _t33 = (_t32) ? _t31 : 1.0;
-            const double _t34 = _t33 * _t33;
-            const double _t35 = _t34 * _t34;
-            const double _t36 = (1.0 - _t33 * 0.5 + _t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + _t35 * ((2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11) * _t34 + (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07))) * offsetgen_batch_cos(_t6);
-            const double _t37 = _t30 * _t16;
-            const double _t38 = -_t37;
-            const double _t39 = 1.0 - _t33 * 0.16666666666666666 + (0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + _t35 * (_t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08));
-            out[i + j] = (_t15 + ((_t11) ? _t18 : ((_t18 > 0.0) ? 1.0 : (-1.0))) * _t19 * _t1 + (_t26 + ((_t22) ? _t28 : ((_t28 > 0.0) ? 1.0 : (-1.0))) * _t29 * _t5 + (_t36 + ((_t32) ? _t38 : ((_t38 > 0.0) ? 1.0 : (-1.0))) * _t39 * _t7))) * (_t15 + ((_t11) ? _t17 : ((_t17 > 0.0) ? 1.0 : (-1.0))) * _t19 * _t1 + (_t26 + ((_t22) ? _t27 : ((_t27 > 0.0) ? 1.0 : (-1.0))) * _t29 * _t5) + (_t36 + _t7 * (_t39 * ((_t32) ? _t37 : ((_t37 > 0.0) ? 1.0 : (-1.0))))));
+            const double _t26 = _t25 * _t25;
+            const double _t27 = offsetgen_batch_cos(_t7);
+            const double _t28 = -_t12;
+            const double _t29 = (_t28 <= 1.0) ? (((-1.0) <= _t28) ? _t28 : (-1.0)) : 1.0;
+            const double _t30 = _t29 * _t29;
+            const double _t31 = _t30 * _t9 * _t11;
+            const double _t32 = _t31 * _t31;
+            const double _t33 = _t32 * _t32;
+            const double _t34 = _t18 * _t29;
+            const double _t35 = _t11 * (_t30 * _t6);
+            const double _t36 = _t35 * _t35;
+            const double _t37 = _t36 * _t36;
+            const double _t38 = _t30 * _t4 * _t11;
+            const double _t39 = _t38 * _t38;
+            const double _t40 = _t39 * _t39;
+            out[i + j] = (_t1 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - _t15 * 0.0013888888888798428) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t15 * 1.1304620460700782e-11) * _t16)) - _t5 * (((0.0083333333333333003 - _t15 * 0.00019841269841216566) * _t16 + (1.0 - _t15 * 0.16666666666666666) + _t17 * (2.755731919201122e-06 - _t15 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t15 * 7.549371704181243e-13) * _t16)) * (_t5 * _t19)) + (((0.041666666666666102 - _t20 * 0.0013888888888798428) * _t21 + (1.0 - _t20 * 0.5) + _t22 * (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11) * _t21)) * _t23 - _t19 * _t3 * (1.0 - _t20 * 0.16666666666666666 + (0.0083333333333333003 - _t20 * 0.00019841269841216566) * _t21 + (_t21 * (1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t20 * 2.5052099244914114e-08)) * _t22) * _t3 + ((_t26 * ((2.0874477943664777e-09 - _t24 * 1.1304620460700782e-11) * _t25 + (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07)) + (1.0 - _t24 * 0.5 + _t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24))) * _t27 - _t8 * (_t8 * _t19 * (_t25 * (0.0083333333333333003 - _t24 * 0.00019841269841216566) + (1.0 - _t24 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t24 * 7.549371704181243e-13) * _t25 + (2.755731919201122e-06 - _t24 * 2.5052099244914114e-08)) * _t26))))) * (_t27 * (_t32 * (0.041666666666666102 - 0.0013888888888798428 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (_t32 * (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07))) - _t8 * (_t34 * _t8 * (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - _t31 * 0.00019841269841216566) + _t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31)))) + ((1.0 - 0.5 * _t35 + _t36 * (0.041666666666666102 - 0.0013888888888798428 * _t35) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t35 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) * _t36) * _t37) * _t1 - _t5 * (_t5 * _t34 * (_t37 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36) + ((0.0083333333333333003 - 0.00019841269841216566 * _t35) * _t36 + (1.0 - 0.16666666666666666 * _t35))))) + (((2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07 + _t39 * (2.0874477943664777e-09 - _t38 * 1.1304620460700782e-11)) * _t40 + (1.0 - _t38 * 0.5 + _t39 * (0.041666666666666102 - 0.0013888888888798428 * _t38))) * _t23 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t38 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39) * _t40 + (_t39 * (0.0083333333333333003 - 0.00019841269841216566 * _t38) + (1.0 - 0.16666666666666666 * _t38))) * (_t34 * _t3) * _t3));
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -765,36 +742,29 @@ static inline void schwarzp_proj_o2_offsetf_n(size_t n, const float *x, const fl
         for (j = 0; j < 16; ++j) {
             const float _t0 = z[i + j] * 6.28318548f;
             const float _t1 = 6.28318548f * h[i + j];
-            const float _t2 = offsetgen_batch_sinf(_t0);
-            const float _t3 = _t1 * _t2;
-            const float _t4 = 6.28318548f * x[i + j];
-            const float _t5 = offsetgen_batch_sinf(_t4);
-            const float _t6 = 6.28318548f * y[i + j];
+            const float _t2 = (_t1 <= 1.0f) ? (((-1.0f) <= _t1) ? _t1 : (-1.0f)) : 1.0f;
+            const float _t3 = _t2 * _t2;
+            const float _t4 = offsetgen_batch_sinf(_t0);
+            const float _t5 = _t4 * _t4;
+            const float _t6 = 6.28318548f * x[i + j];
             const float _t7 = offsetgen_batch_sinf(_t6);
-            const float _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
-            const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-            const float _t10 = _t3 * _t3 * _t9;
-            const int _t11 = _t10 <= 1.0f;
-            const float _t12 = (_t11) ? _t10 : 1.0f;
-            const float _t13 = _t12 * _t12;
-            const float _t14 = _t13 * _t13;
-            const float _t15 = offsetgen_batch_sqrtf(_t9);
-            const float _t16 = -(_t3 * _t15);
-            const float _t17 = _t1 * _t5;
-            const float _t18 = _t17 * _t17 * _t9;
-            const int _t19 = _t18 <= 1.0f;
-            const float _t20 = (_t19) ? _t18 : 1.0f;
-            const float _t21 = _t20 * _t20;
+            const float _t8 = _t7 * _t7;
+            const float _t9 = 6.28318548f * y[i + j];
+            const float _t10 = offsetgen_batch_sinf(_t9);
+            const float _t11 = _t10 * _t10;
+            const float _t12 = _t8 + _t5 + _t11;
+            const float _t13 = (_t12 > 1.17549435e-38f) ? 1.0f / _t12 : 0.0f;
+            const float _t14 = _t3 * _t5 * _t13;
+            const float _t15 = _t14 * _t14;
+            const float _t16 = _t15 * _t15;
+            const float _t17 = _t2 * (_t13 * offsetgen_batch_sqrtf(_t12));
+            const float _t18 = _t3 * _t11 * _t13;
+            const float _t19 = _t18 * _t18;
+            const float _t20 = _t19 * _t19;
+            const float _t21 = _t8 * _t3 * _t13;
             const float _t22 = _t21 * _t21;
-            const float _t23 = -(_t17 * _t15);
-            const float _t24 = _t1 * _t7;
-            const float _t25 = _t9 * (_t24 * _t24);
-            const int _t26 = _t25 <= 1.0f;
-            const float _t27 = -(_t24 * _t15);
-            const float _t28 = (_t26) ? _t25 : 1.0f;
-            const float _t29 = _t28 * _t28;
-            const float _t30 = _t29 * _t29;
-            out[i + j] = offsetgen_batch_cosf(_t0) * ((0.0416666679f - 0.00138888892f * _t12) * _t13 + (1.0f - _t12 * 0.5f) + _t14 * (2.48015876e-05f - _t12 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t12) * _t13)) + (((1.60577024e-10f - 7.54937183e-13f * _t12) * _t13 + (2.75573188e-06f - 2.50520991e-08f * _t12)) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0f) ? 1.0f : (-1.0f))) * _t2 + (((2.75573188e-06f - 2.50520991e-08f * _t20 + (1.60577024e-10f - 7.54937183e-13f * _t20) * _t21) * _t22 + ((0.00833333377f - 0.000198412701f * _t20) * _t21 + (1.0f - 0.166666672f * _t20))) * ((_t19) ? _t23 : ((_t23 > 0.0f) ? 1.0f : (-1.0f))) * _t5 + ((_t21 * (2.08744777e-09f - 1.13046204e-11f * _t20) + (2.48015876e-05f - _t20 * 2.75573029e-07f)) * _t22 + (1.0f - _t20 * 0.5f + _t21 * (0.0416666679f - 0.00138888892f * _t20))) * offsetgen_batch_cosf(_t4)) + (((_t26) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t28 * 0.166666672f + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + _t30 * (2.75573188e-06f - _t28 * 2.50520991e-08f + _t29 * (1.60577024e-10f - _t28 * 7.54937183e-13f))) * _t7 + (_t29 * (0.0416666679f - _t28 * 0.00138888892f) + (1.0f - _t28 * 0.5f) + (2.48015876e-05f - _t28 * 2.75573029e-07f + _t29 * (2.08744777e-09f - _t28 * 1.13046204e-11f)) * _t30) * offsetgen_batch_cosf(_t6));
+            const float _t23 = _t22 * _t22;
+            out[i + j] = offsetgen_batch_cosf(_t0) * ((_t15 * (2.08744777e-09f - 1.13046204e-11f * _t14) + (2.48015876e-05f - _t14 * 2.75573029e-07f)) * _t16 + (1.0f - _t14 * 0.5f + _t15 * (0.0416666679f - 0.00138888892f * _t14))) - ((0.00833333377f - 0.000198412701f * _t14) * _t15 + (1.0f - 0.166666672f * _t14) + (2.75573188e-06f - 2.50520991e-08f * _t14 + (1.60577024e-10f - 7.54937183e-13f * _t14) * _t15) * _t16) * (_t4 * _t17) * _t4 + (offsetgen_batch_cosf(_t9) * (1.0f - _t18 * 0.5f + _t19 * (0.0416666679f - 0.00138888892f * _t18) + _t20 * (2.48015876e-05f - _t18 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t18) * _t19)) - ((2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20 + (1.0f - 0.166666672f * _t18 + _t19 * (0.00833333377f - 0.000198412701f * _t18))) * (_t10 * _t17) * _t10 + (((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * offsetgen_batch_cosf(_t6) - (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t7 * _t17) * _t7));
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -814,46 +784,47 @@ static inline void schwarzp_proj_o2_shellf_n(size_t n, const float *x, const flo
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
             const float _t0 = z[i + j] * 6.28318548f;
-            const float _t1 = offsetgen_batch_sinf(_t0);
-            const float _t2 = 6.28318548f * (t[i + j] * 0.5f);
-            const float _t3 = _t1 * _t2;
-            const float _t4 = 6.28318548f * x[i + j];
-            const float _t5 = offsetgen_batch_sinf(_t4);
-            const float _t6 = 6.28318548f * y[i + j];
-            const float _t7 = offsetgen_batch_sinf(_t6);
-            const float _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
-            const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-            const float _t10 = _t3 * _t3 * _t9;
-            const int _t11 = _t10 <= 1.0f;
-            const float _t12 = (_t11) ? _t10 : 1.0f;
-            const float _t13 = _t12 * _t12;
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = 6.28318548f * x[i + j];
+            const float _t3 = offsetgen_batch_sinf(_t2);
+            const float _t4 = _t3 * _t3;
+            const float _t5 = offsetgen_batch_sinf(_t0);
+            const float _t6 = _t5 * _t5;
+            const float _t7 = 6.28318548f * y[i + j];
+            const float _t8 = offsetgen_batch_sinf(_t7);
+            const float _t9 = _t8 * _t8;
+            const float _t10 = _t4 + _t6 + _t9;
+            const float _t11 = (_t10 > 1.17549435e-38f) ? 1.0f / _t10 : 0.0f;
+            const float _t12 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t13 = (_t12 <= 1.0f) ? (((-1.0f) <= _t12) ? _t12 : (-1.0f)) : 1.0f;
             const float _t14 = _t13 * _t13;
-            const float _t15 = (((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + (0.0416666679f - _t12 * 0.00138888892f) * _t13)) * offsetgen_batch_cosf(_t0);
-            const float _t16 = offsetgen_batch_sqrtf(_t9);
-            const float _t17 = _t3 * _t16;
-            const float _t18 = -_t17;
-            const float _t19 = _t13 * (0.00833333377f - _t12 * 0.000198412701f) + (1.0f - _t12 * 0.166666672f) + (2.75573188e-06f - _t12 * 2.50520991e-08f + (1.60577024e-10f - _t12 * 7.54937183e-13f) * _t13) * _t14;
-            const float _t20 = _t2 * _t5;
-            const float _t21 = _t20 * _t20 * _t9;
-            const int _t22 = _t21 <= 1.0f;
-            const float _t23 = (_t22) ? _t21 : 1.0f;
-            const float _t24 = _t23 * _t23;
+            const float _t15 = _t11 * (_t14 * _t6);
+            const float _t16 = _t15 * _t15;
+            const float _t17 = _t16 * _t16;
+            const float _t18 = _t11 * offsetgen_batch_sqrtf(_t10);
+            const float _t19 = _t18 * _t13;
+            const float _t20 = _t11 * (_t14 * _t4);
+            const float _t21 = _t20 * _t20;
+            const float _t22 = _t21 * _t21;
+            const float _t23 = offsetgen_batch_cosf(_t2);
+            const float _t24 = _t11 * (_t14 * _t9);
             const float _t25 = _t24 * _t24;
-            const float _t26 = ((2.48015876e-05f - _t23 * 2.75573029e-07f + _t24 * (2.08744777e-09f - _t23 * 1.13046204e-11f)) * _t25 + (_t24 * (0.0416666679f - 0.00138888892f * _t23) + (1.0f - _t23 * 0.5f))) * offsetgen_batch_cosf(_t4);
-            const float _t27 = _t20 * _t16;
-            const float _t28 = -_t27;
-            const float _t29 = (_t24 * (1.60577024e-10f - 7.54937183e-13f * _t23) + (2.75573188e-06f - 2.50520991e-08f * _t23)) * _t25 + ((0.00833333377f - _t23 * 0.000198412701f) * _t24 + (1.0f - 0.166666672f * _t23));
-            const float _t30 = _t7 * _t2;
-            const float _t31 = _t30 * _t30 * _t9;
-            const int _t32 = _t31 <= 1.0f;
-            const float _t33 = (_t32) ? _t31 : 1.0f;
-            const float _t34 = _t33 * _t33;
-            const float _t35 = _t34 * _t34;
-            const float _t36 = (1.0f - _t33 * 0.5f + _t34 * (0.0416666679f - _t33 * 0.00138888892f) + _t35 * ((2.08744777e-09f - _t33 * 1.13046204e-11f) * _t34 + (2.48015876e-05f - _t33 * 2.75573029e-07f))) * offsetgen_batch_cosf(_t6);
-            const float _t37 = _t30 * _t16;
-            const float _t38 = -_t37;
-            const float _t39 = 1.0f - _t33 * 0.166666672f + (0.00833333377f - _t33 * 0.000198412701f) * _t34 + _t35 * (_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f));
-            out[i + j] = (_t15 + ((_t11) ? _t18 : ((_t18 > 0.0f) ? 1.0f : (-1.0f))) * _t19 * _t1 + (_t26 + ((_t22) ? _t28 : ((_t28 > 0.0f) ? 1.0f : (-1.0f))) * _t29 * _t5 + (_t36 + ((_t32) ? _t38 : ((_t38 > 0.0f) ? 1.0f : (-1.0f))) * _t39 * _t7))) * (_t15 + ((_t11) ? _t17 : ((_t17 > 0.0f) ? 1.0f : (-1.0f))) * _t19 * _t1 + (_t26 + ((_t22) ? _t27 : ((_t27 > 0.0f) ? 1.0f : (-1.0f))) * _t29 * _t5) + (_t36 + _t7 * (_t39 * ((_t32) ? _t37 : ((_t37 > 0.0f) ? 1.0f : (-1.0f))))));
+            const float _t26 = _t25 * _t25;
+            const float _t27 = offsetgen_batch_cosf(_t7);
+            const float _t28 = -_t12;
+            const float _t29 = (_t28 <= 1.0f) ? (((-1.0f) <= _t28) ? _t28 : (-1.0f)) : 1.0f;
+            const float _t30 = _t29 * _t29;
+            const float _t31 = _t30 * _t9 * _t11;
+            const float _t32 = _t31 * _t31;
+            const float _t33 = _t32 * _t32;
+            const float _t34 = _t18 * _t29;
+            const float _t35 = _t11 * (_t30 * _t6);
+            const float _t36 = _t35 * _t35;
+            const float _t37 = _t36 * _t36;
+            const float _t38 = _t30 * _t4 * _t11;
+            const float _t39 = _t38 * _t38;
+            const float _t40 = _t39 * _t39;
+            out[i + j] = (_t1 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - _t15 * 0.00138888892f) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16)) - _t5 * (((0.00833333377f - _t15 * 0.000198412701f) * _t16 + (1.0f - _t15 * 0.166666672f) + _t17 * (2.75573188e-06f - _t15 * 2.50520991e-08f + (1.60577024e-10f - _t15 * 7.54937183e-13f) * _t16)) * (_t5 * _t19)) + (((0.0416666679f - _t20 * 0.00138888892f) * _t21 + (1.0f - _t20 * 0.5f) + _t22 * (2.48015876e-05f - _t20 * 2.75573029e-07f + (2.08744777e-09f - _t20 * 1.13046204e-11f) * _t21)) * _t23 - _t19 * _t3 * (1.0f - _t20 * 0.166666672f + (0.00833333377f - _t20 * 0.000198412701f) * _t21 + (_t21 * (1.60577024e-10f - _t20 * 7.54937183e-13f) + (2.75573188e-06f - _t20 * 2.50520991e-08f)) * _t22) * _t3 + ((_t26 * ((2.08744777e-09f - _t24 * 1.13046204e-11f) * _t25 + (2.48015876e-05f - _t24 * 2.75573029e-07f)) + (1.0f - _t24 * 0.5f + _t25 * (0.0416666679f - 0.00138888892f * _t24))) * _t27 - _t8 * (_t8 * _t19 * (_t25 * (0.00833333377f - _t24 * 0.000198412701f) + (1.0f - _t24 * 0.166666672f) + ((1.60577024e-10f - _t24 * 7.54937183e-13f) * _t25 + (2.75573188e-06f - _t24 * 2.50520991e-08f)) * _t26))))) * (_t27 * (_t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (_t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f) + (2.48015876e-05f - _t31 * 2.75573029e-07f))) - _t8 * (_t34 * _t8 * (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - _t31 * 0.000198412701f) + _t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)))) + ((1.0f - 0.5f * _t35 + _t36 * (0.0416666679f - 0.00138888892f * _t35) + (2.48015876e-05f - 2.75573029e-07f * _t35 + (2.08744777e-09f - 1.13046204e-11f * _t35) * _t36) * _t37) * _t1 - _t5 * (_t5 * _t34 * (_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + (1.60577024e-10f - 7.54937183e-13f * _t35) * _t36) + ((0.00833333377f - 0.000198412701f * _t35) * _t36 + (1.0f - 0.166666672f * _t35))))) + (((2.48015876e-05f - _t38 * 2.75573029e-07f + _t39 * (2.08744777e-09f - _t38 * 1.13046204e-11f)) * _t40 + (1.0f - _t38 * 0.5f + _t39 * (0.0416666679f - 0.00138888892f * _t38))) * _t23 - ((2.75573188e-06f - 2.50520991e-08f * _t38 + (1.60577024e-10f - 7.54937183e-13f * _t38) * _t39) * _t40 + (_t39 * (0.00833333377f - 0.000198412701f * _t38) + (1.0f - 0.166666672f * _t38))) * (_t34 * _t3) * _t3));
         }
     }
     for (i = 0; i < blocked; ++i) {

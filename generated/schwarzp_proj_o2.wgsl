@@ -39,9 +39,10 @@ safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| wi
     has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
     every function returns a finite value for finite input (do not compile with -ffinite-math-only).
     sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while each component of d = h n stays within 1 (natural units, |h| <= 0.159 cell on a
-    2*pi-periodic surface); larger displacements are clamped to it, which keeps |q_K - p| <= |h| and
-    so the bound above.
+    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
+    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
+    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
+    1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -51,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: WGSL (WebGPU): Dawn (Chrome, Node's webgpu), wgpu/naga (Firefox), WebKit.
 total ops after CSE:
     - field: 8
-    - offset: 153
-    - shell: 175
-    - normal: 166
+    - offset: 139
+    - shell: 261
+    - normal: 152
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":153,"shell":175,"normal":166}} */
+/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":139,"shell":261,"normal":152}} */
 
 // sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
 // 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
@@ -86,124 +87,111 @@ fn schwarzp_proj_o2_field(p: vec3<f32>) -> f32 {
     return schwarzp_proj_o2_cos(p.z * 6.28318548f) + schwarzp_proj_o2_cos(6.28318548f * p.y) + schwarzp_proj_o2_cos(6.28318548f * p.x);
 }
 
-// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 153.
+// phi(p, h) of order 2: zero on the surface moved by h along +grad F. Total ops: 139.
 fn schwarzp_proj_o2_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t0 = p.z * 6.28318548f;
     let _t1 = 6.28318548f * h;
-    let _t2 = schwarzp_proj_o2_sin(_t0);
-    let _t3 = _t1 * _t2;
-    let _t4 = 6.28318548f * p.x;
-    let _t5 = schwarzp_proj_o2_sin(_t4);
-    let _t6 = 6.28318548f * p.y;
+    let _t2 = select(1.0f, (select((-1.0f), _t1, (-1.0f) <= _t1)), _t1 <= 1.0f);
+    let _t3 = _t2 * _t2;
+    let _t4 = schwarzp_proj_o2_sin(_t0);
+    let _t5 = _t4 * _t4;
+    let _t6 = 6.28318548f * p.x;
     let _t7 = schwarzp_proj_o2_sin(_t6);
-    let _t8 = _t5 * _t5 + _t2 * _t2 + _t7 * _t7;
-    let _t9 = select(0.0f, 1.0f / _t8, _t8 > 0.0f);
-    let _t10 = _t3 * _t3 * _t9;
-    let _t11 = _t10 <= 1.0f;
-    let _t12 = select(1.0f, _t10, _t11);
-    let _t13 = _t12 * _t12;
-    let _t14 = _t13 * _t13;
-    let _t15 = sqrt(_t9);
-    let _t16 = -(_t3 * _t15);
-    let _t17 = _t1 * _t5;
-    let _t18 = _t17 * _t17 * _t9;
-    let _t19 = _t18 <= 1.0f;
-    let _t20 = select(1.0f, _t18, _t19);
-    let _t21 = _t20 * _t20;
-    let _t22 = _t21 * _t21;
-    let _t23 = -(_t17 * _t15);
-    let _t24 = _t1 * _t7;
-    let _t25 = _t9 * (_t24 * _t24);
-    let _t26 = _t25 <= 1.0f;
-    let _t27 = -(_t24 * _t15);
-    let _t28 = select(1.0f, _t25, _t26);
-    let _t29 = _t28 * _t28;
-    let _t30 = _t29 * _t29;
-    return schwarzp_proj_o2_cos(_t0) * ((0.0416666679f - 0.00138888892f * _t12) * _t13 + (1.0f - _t12 * 0.5f) + _t14 * (2.48015876e-05f - _t12 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t12) * _t13)) + (((1.60577024e-10f - 7.54937183e-13f * _t12) * _t13 + (2.75573188e-06f - 2.50520991e-08f * _t12)) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * (select((select((-1.0f), 1.0f, _t16 > 0.0f)), _t16, _t11)) * _t2 + (((2.75573188e-06f - 2.50520991e-08f * _t20 + (1.60577024e-10f - 7.54937183e-13f * _t20) * _t21) * _t22 + ((0.00833333377f - 0.000198412701f * _t20) * _t21 + (1.0f - 0.166666672f * _t20))) * (select((select((-1.0f), 1.0f, _t23 > 0.0f)), _t23, _t19)) * _t5 + ((_t21 * (2.08744777e-09f - 1.13046204e-11f * _t20) + (2.48015876e-05f - _t20 * 2.75573029e-07f)) * _t22 + (1.0f - _t20 * 0.5f + _t21 * (0.0416666679f - 0.00138888892f * _t20))) * schwarzp_proj_o2_cos(_t4)) + ((select((select((-1.0f), 1.0f, _t27 > 0.0f)), _t27, _t26)) * (1.0f - _t28 * 0.166666672f + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + _t30 * (2.75573188e-06f - _t28 * 2.50520991e-08f + _t29 * (1.60577024e-10f - _t28 * 7.54937183e-13f))) * _t7 + (_t29 * (0.0416666679f - _t28 * 0.00138888892f) + (1.0f - _t28 * 0.5f) + (2.48015876e-05f - _t28 * 2.75573029e-07f + _t29 * (2.08744777e-09f - _t28 * 1.13046204e-11f)) * _t30) * schwarzp_proj_o2_cos(_t6));
-}
-
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 175.
-fn schwarzp_proj_o2_shell(p: vec3<f32>, t: f32) -> f32 {
-    let _t0 = p.z * 6.28318548f;
-    let _t1 = schwarzp_proj_o2_sin(_t0);
-    let _t2 = 6.28318548f * (t * 0.5f);
-    let _t3 = _t1 * _t2;
-    let _t4 = 6.28318548f * p.x;
-    let _t5 = schwarzp_proj_o2_sin(_t4);
-    let _t6 = 6.28318548f * p.y;
-    let _t7 = schwarzp_proj_o2_sin(_t6);
-    let _t8 = _t5 * _t5 + _t1 * _t1 + _t7 * _t7;
-    let _t9 = select(0.0f, 1.0f / _t8, _t8 > 0.0f);
-    let _t10 = _t3 * _t3 * _t9;
-    let _t11 = _t10 <= 1.0f;
-    let _t12 = select(1.0f, _t10, _t11);
-    let _t13 = _t12 * _t12;
-    let _t14 = _t13 * _t13;
-    let _t15 = (((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + (0.0416666679f - _t12 * 0.00138888892f) * _t13)) * schwarzp_proj_o2_cos(_t0);
-    let _t16 = sqrt(_t9);
-    let _t17 = _t3 * _t16;
-    let _t18 = -_t17;
-    let _t19 = _t13 * (0.00833333377f - _t12 * 0.000198412701f) + (1.0f - _t12 * 0.166666672f) + (2.75573188e-06f - _t12 * 2.50520991e-08f + (1.60577024e-10f - _t12 * 7.54937183e-13f) * _t13) * _t14;
-    let _t20 = _t2 * _t5;
-    let _t21 = _t20 * _t20 * _t9;
-    let _t22 = _t21 <= 1.0f;
-    let _t23 = select(1.0f, _t21, _t22);
-    let _t24 = _t23 * _t23;
-    let _t25 = _t24 * _t24;
-    let _t26 = ((2.48015876e-05f - _t23 * 2.75573029e-07f + _t24 * (2.08744777e-09f - _t23 * 1.13046204e-11f)) * _t25 + (_t24 * (0.0416666679f - 0.00138888892f * _t23) + (1.0f - _t23 * 0.5f))) * schwarzp_proj_o2_cos(_t4);
-    let _t27 = _t20 * _t16;
-    let _t28 = -_t27;
-    let _t29 = (_t24 * (1.60577024e-10f - 7.54937183e-13f * _t23) + (2.75573188e-06f - 2.50520991e-08f * _t23)) * _t25 + ((0.00833333377f - _t23 * 0.000198412701f) * _t24 + (1.0f - 0.166666672f * _t23));
-    let _t30 = _t7 * _t2;
-    let _t31 = _t30 * _t30 * _t9;
-    let _t32 = _t31 <= 1.0f;
-    let _t33 = select(1.0f, _t31, _t32);
-    let _t34 = _t33 * _t33;
-    let _t35 = _t34 * _t34;
-    let _t36 = (1.0f - _t33 * 0.5f + _t34 * (0.0416666679f - _t33 * 0.00138888892f) + _t35 * ((2.08744777e-09f - _t33 * 1.13046204e-11f) * _t34 + (2.48015876e-05f - _t33 * 2.75573029e-07f))) * schwarzp_proj_o2_cos(_t6);
-    let _t37 = _t30 * _t16;
-    let _t38 = -_t37;
-    let _t39 = 1.0f - _t33 * 0.166666672f + (0.00833333377f - _t33 * 0.000198412701f) * _t34 + _t35 * (_t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f) + (2.75573188e-06f - _t33 * 2.50520991e-08f));
-    return (_t15 + (select((select((-1.0f), 1.0f, _t18 > 0.0f)), _t18, _t11)) * _t19 * _t1 + (_t26 + (select((select((-1.0f), 1.0f, _t28 > 0.0f)), _t28, _t22)) * _t29 * _t5 + (_t36 + (select((select((-1.0f), 1.0f, _t38 > 0.0f)), _t38, _t32)) * _t39 * _t7))) * (_t15 + (select((select((-1.0f), 1.0f, _t17 > 0.0f)), _t17, _t11)) * _t19 * _t1 + (_t26 + (select((select((-1.0f), 1.0f, _t27 > 0.0f)), _t27, _t22)) * _t29 * _t5) + (_t36 + _t7 * (_t39 * (select((select((-1.0f), 1.0f, _t37 > 0.0f)), _t37, _t32)))));
-}
-
-// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 166.
-fn schwarzp_proj_o2_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
-    let _t0 = 6.28318548f * h;
-    let _t1 = 6.28318548f * p.x;
-    let _t2 = schwarzp_proj_o2_sin(_t1);
-    let _t3 = _t0 * _t2;
-    let _t4 = p.z * 6.28318548f;
-    let _t5 = schwarzp_proj_o2_sin(_t4);
-    let _t6 = 6.28318548f * p.y;
-    let _t7 = schwarzp_proj_o2_sin(_t6);
-    let _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    let _t9 = select(0.0f, 1.0f / _t8, _t8 > 0.0f);
-    let _t10 = _t3 * _t3 * _t9;
-    let _t11 = _t10 <= 1.0f;
-    let _t12 = select(1.0f, _t10, _t11);
-    let _t13 = _t12 * _t12;
-    let _t14 = _t13 * _t13;
-    let _t15 = sqrt(_t9);
-    let _t16 = -(_t3 * _t15);
-    let _t17 = ((_t13 * (2.08744777e-09f - 1.13046204e-11f * _t12) + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - 0.00138888892f * _t12))) * _t2 - ((2.75573188e-06f - 2.50520991e-08f * _t12 + (1.60577024e-10f - 7.54937183e-13f * _t12) * _t13) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * (select((select((-1.0f), 1.0f, _t16 > 0.0f)), _t16, _t11)) * schwarzp_proj_o2_cos(_t1);
-    let _t18 = _t0 * _t5;
-    let _t19 = _t18 * _t18 * _t9;
-    let _t20 = _t19 <= 1.0f;
-    let _t21 = select(1.0f, _t19, _t20);
+    let _t8 = _t7 * _t7;
+    let _t9 = 6.28318548f * p.y;
+    let _t10 = schwarzp_proj_o2_sin(_t9);
+    let _t11 = _t10 * _t10;
+    let _t12 = _t8 + _t5 + _t11;
+    let _t13 = select(0.0f, 1.0f / _t12, _t12 > 1.17549435e-38f);
+    let _t14 = _t3 * _t5 * _t13;
+    let _t15 = _t14 * _t14;
+    let _t16 = _t15 * _t15;
+    let _t17 = _t2 * (_t13 * sqrt(_t12));
+    let _t18 = _t3 * _t11 * _t13;
+    let _t19 = _t18 * _t18;
+    let _t20 = _t19 * _t19;
+    let _t21 = _t8 * _t3 * _t13;
     let _t22 = _t21 * _t21;
     let _t23 = _t22 * _t22;
-    let _t24 = -(_t18 * _t15);
-    let _t25 = _t5 * ((0.0416666679f - 0.00138888892f * _t21) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t21) * _t22)) - (((1.60577024e-10f - 7.54937183e-13f * _t21) * _t22 + (2.75573188e-06f - 2.50520991e-08f * _t21)) * _t23 + ((0.00833333377f - 0.000198412701f * _t21) * _t22 + (1.0f - 0.166666672f * _t21))) * (select((select((-1.0f), 1.0f, _t24 > 0.0f)), _t24, _t20)) * schwarzp_proj_o2_cos(_t4);
-    let _t26 = _t0 * _t7;
-    let _t27 = _t9 * (_t26 * _t26);
-    let _t28 = _t27 <= 1.0f;
-    let _t29 = select(1.0f, _t27, _t28);
+    return schwarzp_proj_o2_cos(_t0) * ((_t15 * (2.08744777e-09f - 1.13046204e-11f * _t14) + (2.48015876e-05f - _t14 * 2.75573029e-07f)) * _t16 + (1.0f - _t14 * 0.5f + _t15 * (0.0416666679f - 0.00138888892f * _t14))) - ((0.00833333377f - 0.000198412701f * _t14) * _t15 + (1.0f - 0.166666672f * _t14) + (2.75573188e-06f - 2.50520991e-08f * _t14 + (1.60577024e-10f - 7.54937183e-13f * _t14) * _t15) * _t16) * (_t4 * _t17) * _t4 + (schwarzp_proj_o2_cos(_t9) * (1.0f - _t18 * 0.5f + _t19 * (0.0416666679f - 0.00138888892f * _t18) + _t20 * (2.48015876e-05f - _t18 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t18) * _t19)) - ((2.75573188e-06f - 2.50520991e-08f * _t18 + _t19 * (1.60577024e-10f - 7.54937183e-13f * _t18)) * _t20 + (1.0f - 0.166666672f * _t18 + _t19 * (0.00833333377f - 0.000198412701f * _t18))) * (_t10 * _t17) * _t10 + (((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * schwarzp_proj_o2_cos(_t6) - (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t7 * _t17) * _t7));
+}
+
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 261.
+fn schwarzp_proj_o2_shell(p: vec3<f32>, t: f32) -> f32 {
+    let _t0 = p.z * 6.28318548f;
+    let _t1 = schwarzp_proj_o2_cos(_t0);
+    let _t2 = 6.28318548f * p.x;
+    let _t3 = schwarzp_proj_o2_sin(_t2);
+    let _t4 = _t3 * _t3;
+    let _t5 = schwarzp_proj_o2_sin(_t0);
+    let _t6 = _t5 * _t5;
+    let _t7 = 6.28318548f * p.y;
+    let _t8 = schwarzp_proj_o2_sin(_t7);
+    let _t9 = _t8 * _t8;
+    let _t10 = _t4 + _t6 + _t9;
+    let _t11 = select(0.0f, 1.0f / _t10, _t10 > 1.17549435e-38f);
+    let _t12 = 6.28318548f * (t * 0.5f);
+    let _t13 = select(1.0f, (select((-1.0f), _t12, (-1.0f) <= _t12)), _t12 <= 1.0f);
+    let _t14 = _t13 * _t13;
+    let _t15 = _t11 * (_t14 * _t6);
+    let _t16 = _t15 * _t15;
+    let _t17 = _t16 * _t16;
+    let _t18 = _t11 * sqrt(_t10);
+    let _t19 = _t18 * _t13;
+    let _t20 = _t11 * (_t14 * _t4);
+    let _t21 = _t20 * _t20;
+    let _t22 = _t21 * _t21;
+    let _t23 = schwarzp_proj_o2_cos(_t2);
+    let _t24 = _t11 * (_t14 * _t9);
+    let _t25 = _t24 * _t24;
+    let _t26 = _t25 * _t25;
+    let _t27 = schwarzp_proj_o2_cos(_t7);
+    let _t28 = -_t12;
+    let _t29 = select(1.0f, (select((-1.0f), _t28, (-1.0f) <= _t28)), _t28 <= 1.0f);
     let _t30 = _t29 * _t29;
-    let _t31 = _t30 * _t30;
-    let _t32 = -(_t26 * _t15);
-    let _t33 = (_t30 * (0.0416666679f - _t29 * 0.00138888892f) + (1.0f - _t29 * 0.5f) + (2.48015876e-05f - _t29 * 2.75573029e-07f + _t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f)) * _t31) * _t7 - schwarzp_proj_o2_cos(_t6) * ((select((select((-1.0f), 1.0f, _t32 > 0.0f)), _t32, _t28)) * (1.0f - _t29 * 0.166666672f + (0.00833333377f - _t29 * 0.000198412701f) * _t30 + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f))));
-    let _t34 = _t17 * _t17 + _t25 * _t25 + _t33 * _t33;
-    let _t35 = select(0.0f, 1.0f / sqrt(_t34), _t34 > 0.0f);
-    return vec3<f32>(-(_t17 * _t35), -(_t33 * _t35), -(_t25 * _t35));
+    let _t31 = _t30 * _t9 * _t11;
+    let _t32 = _t31 * _t31;
+    let _t33 = _t32 * _t32;
+    let _t34 = _t18 * _t29;
+    let _t35 = _t11 * (_t30 * _t6);
+    let _t36 = _t35 * _t35;
+    let _t37 = _t36 * _t36;
+    let _t38 = _t30 * _t4 * _t11;
+    let _t39 = _t38 * _t38;
+    let _t40 = _t39 * _t39;
+    return (_t1 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - _t15 * 0.00138888892f) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16)) - _t5 * (((0.00833333377f - _t15 * 0.000198412701f) * _t16 + (1.0f - _t15 * 0.166666672f) + _t17 * (2.75573188e-06f - _t15 * 2.50520991e-08f + (1.60577024e-10f - _t15 * 7.54937183e-13f) * _t16)) * (_t5 * _t19)) + (((0.0416666679f - _t20 * 0.00138888892f) * _t21 + (1.0f - _t20 * 0.5f) + _t22 * (2.48015876e-05f - _t20 * 2.75573029e-07f + (2.08744777e-09f - _t20 * 1.13046204e-11f) * _t21)) * _t23 - _t19 * _t3 * (1.0f - _t20 * 0.166666672f + (0.00833333377f - _t20 * 0.000198412701f) * _t21 + (_t21 * (1.60577024e-10f - _t20 * 7.54937183e-13f) + (2.75573188e-06f - _t20 * 2.50520991e-08f)) * _t22) * _t3 + ((_t26 * ((2.08744777e-09f - _t24 * 1.13046204e-11f) * _t25 + (2.48015876e-05f - _t24 * 2.75573029e-07f)) + (1.0f - _t24 * 0.5f + _t25 * (0.0416666679f - 0.00138888892f * _t24))) * _t27 - _t8 * (_t8 * _t19 * (_t25 * (0.00833333377f - _t24 * 0.000198412701f) + (1.0f - _t24 * 0.166666672f) + ((1.60577024e-10f - _t24 * 7.54937183e-13f) * _t25 + (2.75573188e-06f - _t24 * 2.50520991e-08f)) * _t26))))) * (_t27 * (_t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (_t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f) + (2.48015876e-05f - _t31 * 2.75573029e-07f))) - _t8 * (_t34 * _t8 * (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - _t31 * 0.000198412701f) + _t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)))) + ((1.0f - 0.5f * _t35 + _t36 * (0.0416666679f - 0.00138888892f * _t35) + (2.48015876e-05f - 2.75573029e-07f * _t35 + (2.08744777e-09f - 1.13046204e-11f * _t35) * _t36) * _t37) * _t1 - _t5 * (_t5 * _t34 * (_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + (1.60577024e-10f - 7.54937183e-13f * _t35) * _t36) + ((0.00833333377f - 0.000198412701f * _t35) * _t36 + (1.0f - 0.166666672f * _t35))))) + (((2.48015876e-05f - _t38 * 2.75573029e-07f + _t39 * (2.08744777e-09f - _t38 * 1.13046204e-11f)) * _t40 + (1.0f - _t38 * 0.5f + _t39 * (0.0416666679f - 0.00138888892f * _t38))) * _t23 - ((2.75573188e-06f - 2.50520991e-08f * _t38 + (1.60577024e-10f - 7.54937183e-13f * _t38) * _t39) * _t40 + (_t39 * (0.00833333377f - 0.000198412701f * _t38) + (1.0f - 0.166666672f * _t38))) * (_t34 * _t3) * _t3));
+}
+
+// unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 152.
+fn schwarzp_proj_o2_normal(p: vec3<f32>, h: f32) -> vec3<f32> {
+    let _t0 = 6.28318548f * p.x;
+    let _t1 = schwarzp_proj_o2_sin(_t0);
+    let _t2 = _t1 * _t1;
+    let _t3 = 6.28318548f * h;
+    let _t4 = select(1.0f, (select((-1.0f), _t3, (-1.0f) <= _t3)), _t3 <= 1.0f);
+    let _t5 = _t4 * _t4;
+    let _t6 = p.z * 6.28318548f;
+    let _t7 = schwarzp_proj_o2_sin(_t6);
+    let _t8 = _t7 * _t7;
+    let _t9 = 6.28318548f * p.y;
+    let _t10 = schwarzp_proj_o2_sin(_t9);
+    let _t11 = _t10 * _t10;
+    let _t12 = _t2 + _t8 + _t11;
+    let _t13 = select(0.0f, 1.0f / _t12, _t12 > 1.17549435e-38f);
+    let _t14 = _t2 * _t5 * _t13;
+    let _t15 = _t14 * _t14;
+    let _t16 = _t15 * _t15;
+    let _t17 = _t4 * (_t13 * sqrt(_t12));
+    let _t18 = (1.0f - _t14 * 0.166666672f + (0.00833333377f - _t14 * 0.000198412701f) * _t15 + _t16 * (2.75573188e-06f - _t14 * 2.50520991e-08f + (1.60577024e-10f - _t14 * 7.54937183e-13f) * _t15)) * (_t1 * _t17) * schwarzp_proj_o2_cos(_t0) + ((0.0416666679f - _t14 * 0.00138888892f) * _t15 + (1.0f - _t14 * 0.5f) + _t16 * (2.48015876e-05f - _t14 * 2.75573029e-07f + _t15 * (2.08744777e-09f - _t14 * 1.13046204e-11f))) * _t1;
+    let _t19 = _t5 * _t11 * _t13;
+    let _t20 = _t19 * _t19;
+    let _t21 = _t20 * _t20;
+    let _t22 = schwarzp_proj_o2_cos(_t9) * (((2.75573188e-06f - 2.50520991e-08f * _t19 + _t20 * (1.60577024e-10f - 7.54937183e-13f * _t19)) * _t21 + (1.0f - 0.166666672f * _t19 + _t20 * (0.00833333377f - 0.000198412701f * _t19))) * (_t10 * _t17)) + _t10 * (1.0f - _t19 * 0.5f + _t20 * (0.0416666679f - 0.00138888892f * _t19) + _t21 * (2.48015876e-05f - _t19 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t19) * _t20));
+    let _t23 = _t5 * _t8 * _t13;
+    let _t24 = _t23 * _t23;
+    let _t25 = _t24 * _t24;
+    let _t26 = ((0.00833333377f - 0.000198412701f * _t23) * _t24 + (1.0f - 0.166666672f * _t23) + (2.75573188e-06f - 2.50520991e-08f * _t23 + (1.60577024e-10f - 7.54937183e-13f * _t23) * _t24) * _t25) * (_t7 * _t17) * schwarzp_proj_o2_cos(_t6) + _t7 * ((_t24 * (2.08744777e-09f - 1.13046204e-11f * _t23) + (2.48015876e-05f - _t23 * 2.75573029e-07f)) * _t25 + (1.0f - _t23 * 0.5f + _t24 * (0.0416666679f - 0.00138888892f * _t23)));
+    let _t27 = _t22 * _t22 + _t18 * _t18 + _t26 * _t26;
+    let _t28 = select(0.0f, 1.0f / sqrt(_t27), _t27 > 0.0f);
+    return vec3<f32>(-(_t18 * _t28), -(_t22 * _t28), -(_t28 * _t26));
 }

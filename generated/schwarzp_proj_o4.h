@@ -40,9 +40,10 @@
  *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
  *   0, so every function returns a finite value for finite input (do not compile with
  *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while each component of d = h n stays within 1 (natural units,
- *   |h| <= 0.159 cell on a 2*pi-periodic surface); larger displacements are clamped to it, which
- *   keeps |q_K - p| <= |h| and so the bound above.
+ *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
+ *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
+ *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
+ *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -51,11 +52,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   294
- *   shell    454
- *   normal   307
+ *   offset   261
+ *   shell    505
+ *   normal   274
  */
-/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":294,"shell":454,"normal":307}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":261,"shell":505,"normal":274}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O4_H
 #define OFFSETGEN_SCHWARZP_PROJ_O4_H
 
@@ -70,10 +71,17 @@
 #else
 #define OFFSETGEN_TRIG_INT_(x) ((int)(x))
 #endif
+/* Adding and subtracting 1.5 * 2^52 rounds to an integer only under IEEE evaluation in double. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUND_(v) rint(v)
+#else
+#define OFFSETGEN_TRIG_ROUND_(v) (((v) + 6755399441055744.0) - 6755399441055744.0)
+#endif
 /* sin and cos for the scalar functions, inline: libm's sin and cos cost more than the rest of a
  * low-order offset. The same reduction and polynomials as the batch helpers (within 1.5 ulp of
- * libm), so the scalar and batch functions agree to the last bits; the quadrant comes from an int
- * conversion, so plain -O2 needs no rint call. Arguments beyond 1.0e8 radians go to libm.
+ * libm), so the scalar and batch functions agree to the last bits. a * 2/pi is rounded by adding
+ * and subtracting 1.5 * 2^52 (no rint call at plain -O2, and a shorter dependency chain than an int
+ * conversion, which only picks the quadrant here). Arguments beyond 1.0e8 radians go to libm.
  * A sin and a cos of the same argument share the reduction and both polynomials after inlining.
  * Define OFFSETGEN_LIBM_TRIG before including this header to call libm's sin and cos instead. */
 static inline double offsetgen_sin(double a)
@@ -81,9 +89,8 @@ static inline double offsetgen_sin(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return sin(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -98,9 +105,8 @@ static inline double offsetgen_cos(double a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cos(a);
 #else
-    const double v = a * 0.63661977236758138;
-    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? v + (v >= 0.0 ? 0.5 : -0.5) : 0.0);
-    const double q = qi;
+    const double q = OFFSETGEN_TRIG_ROUND_(a * 0.63661977236758138);
+    const int qi = OFFSETGEN_TRIG_INT_((fabs(a) <= 1.0e8) ? q : 0.0);
     const double r = ((a - q * 1.5707962512969971) - q * 7.5497894158615964e-08) - q * 5.3903028581581190e-15;
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
@@ -110,6 +116,7 @@ static inline double offsetgen_cos(double a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INT_
+#undef OFFSETGEN_TRIG_ROUND_
 #endif /* OFFSETGEN_SCALAR_TRIG_DOUBLE_V1 */
 
 /* F, the field; the surface is F = 0.
@@ -121,275 +128,226 @@ static inline double schwarzp_proj_o4_field(double x, double y, double z)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 294
+ * Total ops: 261
  */
 static inline double schwarzp_proj_o4_offset(double x, double y, double z, double h)
 {
-    const double _t0 = 6.2831853071795862 * h;
-    const double _t1 = 6.2831853071795862 * x;
-    const double _t2 = offsetgen_sin(_t1);
-    const double _t3 = _t0 * _t2;
-    const double _t4 = z * 6.2831853071795862;
-    const double _t5 = offsetgen_sin(_t4);
-    const double _t6 = 6.2831853071795862 * y;
-    const double _t7 = offsetgen_sin(_t6);
-    const double _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
-    const double _t14 = _t13 * _t13;
-    const double _t15 = sqrt(_t9);
-    const double _t16 = -(_t3 * _t15);
-    const double _t17 = offsetgen_cos(_t1);
-    const double _t18 = ((_t13 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t12) + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - 0.0013888888888798428 * _t12))) * _t2 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t12 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t12) * _t13) * _t14 + ((0.0083333333333333003 - 0.00019841269841216566 * _t12) * _t13 + (1.0 - 0.16666666666666666 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t17;
-    const double _t19 = _t0 * _t5;
-    const double _t20 = _t19 * _t19 * _t9;
-    const int _t21 = _t20 <= 1.0;
-    const double _t22 = (_t21) ? _t20 : 1.0;
+    const double _t0 = 6.2831853071795862 * y;
+    const double _t1 = offsetgen_cos(_t0);
+    const double _t2 = 6.2831853071795862 * h;
+    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    const double _t4 = _t3 * _t3;
+    const double _t5 = offsetgen_sin(_t0);
+    const double _t6 = _t5 * _t5;
+    const double _t7 = 6.2831853071795862 * x;
+    const double _t8 = offsetgen_sin(_t7);
+    const double _t9 = _t8 * _t8;
+    const double _t10 = z * 6.2831853071795862;
+    const double _t11 = offsetgen_sin(_t10);
+    const double _t12 = _t11 * _t11;
+    const double _t13 = _t9 + _t12 + _t6;
+    const double _t14 = (_t13 > 1.1754943508222875e-38) ? 1.0 / _t13 : 0.0;
+    const double _t15 = _t4 * _t6 * _t14;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t3 * (_t14 * sqrt(_t13));
+    const double _t19 = _t1 * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + _t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15)) * _t17 + (1.0 - 0.16666666666666666 * _t15 + _t16 * (0.0083333333333333003 - 0.00019841269841216566 * _t15))) * (_t5 * _t18)) + _t5 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) * _t16));
+    const double _t20 = _t19 * _t19;
+    const double _t21 = _t9 * _t4 * _t14;
+    const double _t22 = _t21 * _t21;
     const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = -(_t19 * _t15);
-    const double _t26 = offsetgen_cos(_t4);
-    const double _t27 = _t5 * ((0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23 + (1.0 - _t22 * 0.5) + _t24 * (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) * _t23 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22)) * _t24 + ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22))) * ((_t21) ? _t25 : ((_t25 > 0.0) ? 1.0 : (-1.0))) * _t26;
-    const double _t28 = _t0 * _t7;
-    const double _t29 = _t9 * (_t28 * _t28);
-    const int _t30 = _t29 <= 1.0;
-    const double _t31 = (_t30) ? _t29 : 1.0;
+    const double _t24 = offsetgen_cos(_t7);
+    const double _t25 = (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22)) * (_t8 * _t18) * _t24 + ((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + _t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11))) * _t8;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = _t4 * _t12 * _t14;
+    const double _t28 = _t27 * _t27;
+    const double _t29 = _t28 * _t28;
+    const double _t30 = offsetgen_cos(_t10);
+    const double _t31 = ((0.0083333333333333003 - 0.00019841269841216566 * _t27) * _t28 + (1.0 - 0.16666666666666666 * _t27) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t27 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t27) + (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07)) * _t29 + (1.0 - _t27 * 0.5 + _t28 * (0.041666666666666102 - 0.0013888888888798428 * _t27)));
     const double _t32 = _t31 * _t31;
-    const double _t33 = _t32 * _t32;
-    const double _t34 = offsetgen_cos(_t6);
-    const double _t35 = -(_t28 * _t15);
-    const double _t36 = (_t32 * (0.041666666666666102 - _t31 * 0.0013888888888798428) + (1.0 - _t31 * 0.5) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07 + _t32 * (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11)) * _t33) * _t7 - _t34 * (((_t30) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t31 * 0.16666666666666666 + (0.0083333333333333003 - _t31 * 0.00019841269841216566) * _t32 + _t33 * (2.755731919201122e-06 - _t31 * 2.5052099244914114e-08 + _t32 * (1.6057701922579786e-10 - _t31 * 7.549371704181243e-13))));
-    const double _t37 = _t18 * _t18 + _t27 * _t27 + _t36 * _t36;
-    const double _t38 = (_t37 > 0.0) ? 1.0 / _t37 : 0.0;
-    const double _t39 = _t0 * _t18;
-    const double _t40 = _t38 * (_t39 * _t39);
-    const int _t41 = _t40 <= 1.0;
-    const double _t42 = (_t41) ? _t40 : 1.0;
+    const double _t33 = _t20 + _t26 + _t32;
+    const double _t34 = (_t33 > 1.1754943508222875e-38) ? 1.0 / _t33 : 0.0;
+    const double _t35 = _t34 * (_t4 * _t26);
+    const double _t36 = _t35 * _t35;
+    const double _t37 = _t36 * _t36;
+    const double _t38 = _t3 * (_t34 * sqrt(_t33));
+    const double _t39 = _t34 * (_t4 * _t32);
+    const double _t40 = _t39 * _t39;
+    const double _t41 = _t40 * _t40;
+    const double _t42 = _t34 * (_t20 * _t4);
     const double _t43 = _t42 * _t42;
     const double _t44 = _t43 * _t43;
-    const double _t45 = sqrt(_t38);
-    const double _t46 = -(_t45 * _t39);
-    const double _t47 = _t36 * _t0;
-    const double _t48 = _t38 * (_t47 * _t47);
-    const int _t49 = _t48 <= 1.0;
-    const double _t50 = (_t49) ? _t48 : 1.0;
-    const double _t51 = _t50 * _t50;
-    const double _t52 = _t51 * _t51;
-    const double _t53 = -(_t47 * _t45);
-    const double _t54 = _t27 * _t0;
-    const double _t55 = _t38 * (_t54 * _t54);
-    const int _t56 = _t55 <= 1.0;
-    const double _t57 = (_t56) ? _t55 : 1.0;
-    const double _t58 = _t57 * _t57;
-    const double _t59 = _t58 * _t58;
-    const double _t60 = -(_t54 * _t45);
-    return (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t42) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07)) * _t44 + ((0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43 + (1.0 - _t42 * 0.5))) * _t17 + ((_t41) ? _t46 : ((_t46 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t42 + (0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + _t44 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43)) * _t2 + (_t34 * (1.0 - _t50 * 0.5 + _t51 * (0.041666666666666102 - 0.0013888888888798428 * _t50) + (2.4801587247292686e-05 - _t50 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t50 * 1.1304620460700782e-11) * _t51) * _t52) + (_t52 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t50 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t50) * _t51) + (1.0 - 0.16666666666666666 * _t50 + (0.0083333333333333003 - _t50 * 0.00019841269841216566) * _t51)) * ((_t49) ? _t53 : ((_t53 > 0.0) ? 1.0 : (-1.0))) * _t7 + (_t5 * ((1.0 - 0.16666666666666666 * _t57 + (0.0083333333333333003 - 0.00019841269841216566 * _t57) * _t58 + _t59 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t57 + _t58 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57))) * ((_t56) ? _t60 : ((_t60 > 0.0) ? 1.0 : (-1.0)))) + _t26 * (1.0 - _t57 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t57) * _t58 + _t59 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t57) * _t58 + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)))));
+    return (1.0 - _t35 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t35 + _t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0 - 0.16666666666666666 * _t35 + (0.0083333333333333003 - 0.00019841269841216566 * _t35) * _t36 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.0874477943664777e-09 - _t39 * 1.1304620460700782e-11) * _t40 + (2.4801587247292686e-05 - _t39 * 2.7557303701922228e-07)) * _t41 + (_t40 * (0.041666666666666102 - 0.0013888888888798428 * _t39) + (1.0 - _t39 * 0.5))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t39) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t39)) + (_t40 * (0.0083333333333333003 - _t39 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t39))))) + (_t1 * (_t44 * (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t42 * 1.1304620460700782e-11) * _t43) + (1.0 - _t42 * 0.5 + (0.041666666666666102 - _t42 * 0.0013888888888798428) * _t43)) - _t5 * ((_t44 * ((1.6057701922579786e-10 - _t42 * 7.549371704181243e-13) * _t43 + (2.755731919201122e-06 - _t42 * 2.5052099244914114e-08)) + (_t43 * (0.0083333333333333003 - _t42 * 0.00019841269841216566) + (1.0 - _t42 * 0.16666666666666666))) * (_t19 * _t38)));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 454
+ * Total ops: 505
  */
 static inline double schwarzp_proj_o4_shell(double x, double y, double z, double t)
 {
-    const double _t0 = 6.2831853071795862 * y;
-    const double _t1 = offsetgen_sin(_t0);
-    const double _t2 = 6.2831853071795862 * (t * 0.5);
-    const double _t3 = _t1 * _t2;
-    const double _t4 = 6.2831853071795862 * x;
-    const double _t5 = offsetgen_sin(_t4);
-    const double _t6 = z * 6.2831853071795862;
-    const double _t7 = offsetgen_sin(_t6);
-    const double _t8 = _t5 * _t5 + _t7 * _t7 + _t1 * _t1;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
+    const double _t0 = z * 6.2831853071795862;
+    const double _t1 = offsetgen_cos(_t0);
+    const double _t2 = offsetgen_sin(_t0);
+    const double _t3 = 6.2831853071795862 * x;
+    const double _t4 = offsetgen_sin(_t3);
+    const double _t5 = _t4 * _t4;
+    const double _t6 = _t2 * _t2;
+    const double _t7 = 6.2831853071795862 * y;
+    const double _t8 = offsetgen_sin(_t7);
+    const double _t9 = _t8 * _t8;
+    const double _t10 = _t5 + _t6 + _t9;
+    const double _t11 = (_t10 > 1.1754943508222875e-38) ? 1.0 / _t10 : 0.0;
+    const double _t12 = 6.2831853071795862 * (t * 0.5);
+    const double _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
     const double _t14 = _t13 * _t13;
-    const double _t15 = (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - _t12 * 0.0013888888888798428) + _t14 * ((2.0874477943664777e-09 - _t12 * 1.1304620460700782e-11) * _t13 + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07))) * _t1;
-    const double _t16 = offsetgen_cos(_t0);
-    const double _t17 = sqrt(_t9);
-    const double _t18 = _t3 * _t17;
-    const double _t19 = -_t18;
-    const double _t20 = 1.0 - _t12 * 0.16666666666666666 + (0.0083333333333333003 - _t12 * 0.00019841269841216566) * _t13 + _t14 * (_t13 * (1.6057701922579786e-10 - _t12 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t12 * 2.5052099244914114e-08));
-    const double _t21 = _t15 - _t16 * (((_t11) ? _t19 : ((_t19 > 0.0) ? 1.0 : (-1.0))) * _t20);
-    const double _t22 = _t7 * _t2;
-    const double _t23 = _t22 * _t22 * _t9;
-    const int _t24 = _t23 <= 1.0;
-    const double _t25 = (_t24) ? _t23 : 1.0;
-    const double _t26 = _t25 * _t25;
+    const double _t15 = _t11 * (_t14 * _t6);
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t11 * sqrt(_t10);
+    const double _t19 = _t18 * _t13;
+    const double _t20 = _t2 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - _t15 * 0.0013888888888798428) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t15 * 1.1304620460700782e-11) * _t16)) + _t1 * (((0.0083333333333333003 - _t15 * 0.00019841269841216566) * _t16 + (1.0 - _t15 * 0.16666666666666666) + _t17 * (2.755731919201122e-06 - _t15 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t15 * 7.549371704181243e-13) * _t16)) * (_t2 * _t19));
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t11 * (_t14 * _t9);
+    const double _t23 = _t22 * _t22;
+    const double _t24 = _t23 * _t23;
+    const double _t25 = offsetgen_cos(_t7);
+    const double _t26 = (_t24 * ((2.0874477943664777e-09 - _t22 * 1.1304620460700782e-11) * _t23 + (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07)) + (1.0 - _t22 * 0.5 + _t23 * (0.041666666666666102 - 0.0013888888888798428 * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.0083333333333333003 - _t22 * 0.00019841269841216566) + (1.0 - _t22 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t22 * 7.549371704181243e-13) * _t23 + (2.755731919201122e-06 - _t22 * 2.5052099244914114e-08)) * _t24));
     const double _t27 = _t26 * _t26;
-    const double _t28 = (((2.0874477943664777e-09 - _t25 * 1.1304620460700782e-11) * _t26 + (2.4801587247292686e-05 - _t25 * 2.7557303701922228e-07)) * _t27 + (1.0 - _t25 * 0.5 + (0.041666666666666102 - _t25 * 0.0013888888888798428) * _t26)) * _t7;
-    const double _t29 = _t22 * _t17;
-    const double _t30 = -_t29;
-    const double _t31 = _t26 * (0.0083333333333333003 - _t25 * 0.00019841269841216566) + (1.0 - _t25 * 0.16666666666666666) + (2.755731919201122e-06 - _t25 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t25 * 7.549371704181243e-13) * _t26) * _t27;
-    const double _t32 = offsetgen_cos(_t6);
-    const double _t33 = _t28 - ((_t24) ? _t30 : ((_t30 > 0.0) ? 1.0 : (-1.0))) * _t31 * _t32;
-    const double _t34 = _t2 * _t5;
-    const double _t35 = _t34 * _t34 * _t9;
-    const int _t36 = _t35 <= 1.0;
-    const double _t37 = (_t36) ? _t35 : 1.0;
+    const double _t28 = _t11 * (_t14 * _t5);
+    const double _t29 = _t28 * _t28;
+    const double _t30 = _t29 * _t29;
+    const double _t31 = offsetgen_cos(_t3);
+    const double _t32 = ((0.041666666666666102 - _t28 * 0.0013888888888798428) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11) * _t29)) * _t4 + _t19 * _t4 * (1.0 - _t28 * 0.16666666666666666 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + (_t29 * (1.6057701922579786e-10 - _t28 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t28 * 2.5052099244914114e-08)) * _t30) * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t21 + _t27 + _t33;
+    const double _t35 = (_t34 > 1.1754943508222875e-38) ? 1.0 / _t34 : 0.0;
+    const double _t36 = _t35 * (_t14 * _t21);
+    const double _t37 = _t36 * _t36;
     const double _t38 = _t37 * _t37;
-    const double _t39 = _t38 * _t38;
-    const double _t40 = ((2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07 + _t38 * (2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11)) * _t39 + (_t38 * (0.041666666666666102 - 0.0013888888888798428 * _t37) + (1.0 - _t37 * 0.5))) * _t5;
-    const double _t41 = _t34 * _t17;
-    const double _t42 = -_t41;
-    const double _t43 = (_t38 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) * _t39 + ((0.0083333333333333003 - _t37 * 0.00019841269841216566) * _t38 + (1.0 - 0.16666666666666666 * _t37));
-    const double _t44 = offsetgen_cos(_t4);
-    const double _t45 = _t40 - ((_t36) ? _t42 : ((_t42 > 0.0) ? 1.0 : (-1.0))) * _t43 * _t44;
-    const double _t46 = _t21 * _t21 + _t33 * _t33 + _t45 * _t45;
-    const double _t47 = (_t46 > 0.0) ? 1.0 / _t46 : 0.0;
-    const double _t48 = _t21 * _t2;
-    const double _t49 = _t47 * (_t48 * _t48);
-    const int _t50 = _t49 <= 1.0;
-    const double _t51 = (_t50) ? _t49 : 1.0;
-    const double _t52 = _t51 * _t51;
-    const double _t53 = _t52 * _t52;
-    const double _t54 = sqrt(_t47);
-    const double _t55 = -(_t48 * _t54);
-    const double _t56 = _t45 * _t2;
-    const double _t57 = _t47 * (_t56 * _t56);
-    const int _t58 = _t57 <= 1.0;
-    const double _t59 = (_t58) ? _t57 : 1.0;
-    const double _t60 = _t59 * _t59;
+    const double _t39 = _t35 * sqrt(_t34) * _t13;
+    const double _t40 = _t35 * (_t14 * _t33);
+    const double _t41 = _t40 * _t40;
+    const double _t42 = _t41 * _t41;
+    const double _t43 = _t35 * (_t14 * _t27);
+    const double _t44 = _t43 * _t43;
+    const double _t45 = _t44 * _t44;
+    const double _t46 = -_t12;
+    const double _t47 = (_t46 <= 1.0) ? (((-1.0) <= _t46) ? _t46 : (-1.0)) : 1.0;
+    const double _t48 = _t47 * _t47;
+    const double _t49 = _t48 * _t9 * _t11;
+    const double _t50 = _t49 * _t49;
+    const double _t51 = _t50 * _t50;
+    const double _t52 = _t18 * _t47;
+    const double _t53 = _t8 * (_t50 * (0.041666666666666102 - 0.0013888888888798428 * _t49) + (1.0 - _t49 * 0.5) + _t51 * (_t50 * (2.0874477943664777e-09 - _t49 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t49 * 2.7557303701922228e-07))) + _t25 * (_t52 * _t8 * (1.0 - 0.16666666666666666 * _t49 + _t50 * (0.0083333333333333003 - _t49 * 0.00019841269841216566) + _t51 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t49 + _t50 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t49))));
+    const double _t54 = _t53 * _t53;
+    const double _t55 = _t11 * (_t48 * _t6);
+    const double _t56 = _t55 * _t55;
+    const double _t57 = _t56 * _t56;
+    const double _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t55 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t55) * _t56) + ((0.0083333333333333003 - 0.00019841269841216566 * _t55) * _t56 + (1.0 - 0.16666666666666666 * _t55)))) + (1.0 - 0.5 * _t55 + _t56 * (0.041666666666666102 - 0.0013888888888798428 * _t55) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t55 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t55) * _t56) * _t57) * _t2;
+    const double _t59 = _t58 * _t58;
+    const double _t60 = _t48 * _t5 * _t11;
     const double _t61 = _t60 * _t60;
-    const double _t62 = -(_t56 * _t54);
-    const double _t63 = _t33 * _t2;
-    const double _t64 = _t47 * (_t63 * _t63);
-    const int _t65 = _t64 <= 1.0;
-    const double _t66 = (_t65) ? _t64 : 1.0;
-    const double _t67 = _t66 * _t66;
+    const double _t62 = _t61 * _t61;
+    const double _t63 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t60 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t60) * _t61) * _t62 + (_t61 * (0.0083333333333333003 - 0.00019841269841216566 * _t60) + (1.0 - 0.16666666666666666 * _t60))) * (_t52 * _t4) * _t31 + ((2.4801587247292686e-05 - _t60 * 2.7557303701922228e-07 + _t61 * (2.0874477943664777e-09 - _t60 * 1.1304620460700782e-11)) * _t62 + (1.0 - _t60 * 0.5 + _t61 * (0.041666666666666102 - 0.0013888888888798428 * _t60))) * _t4;
+    const double _t64 = _t63 * _t63;
+    const double _t65 = _t54 + _t59 + _t64;
+    const double _t66 = (_t65 > 1.1754943508222875e-38) ? 1.0 / _t65 : 0.0;
+    const double _t67 = _t66 * (_t48 * _t54);
     const double _t68 = _t67 * _t67;
-    const double _t69 = -(_t63 * _t54);
-    const double _t70 = _t28 - _t32 * (((_t24) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0))) * _t31);
-    const double _t71 = _t70 * _t2;
-    const double _t72 = _t40 - ((_t36) ? _t41 : ((_t41 > 0.0) ? 1.0 : (-1.0))) * _t43 * _t44;
-    const double _t73 = _t15 - _t16 * (_t20 * ((_t11) ? _t18 : ((_t18 > 0.0) ? 1.0 : (-1.0))));
-    const double _t74 = _t72 * _t72 + _t73 * _t73 + _t70 * _t70;
-    const double _t75 = (_t74 > 0.0) ? 1.0 / _t74 : 0.0;
-    const double _t76 = _t71 * _t71 * _t75;
-    const int _t77 = _t76 <= 1.0;
-    const double _t78 = (_t77) ? _t76 : 1.0;
-    const double _t79 = _t78 * _t78;
-    const double _t80 = _t79 * _t79;
-    const double _t81 = sqrt(_t75);
-    const double _t82 = _t71 * _t81;
-    const double _t83 = _t72 * _t2;
-    const double _t84 = _t83 * _t83 * _t75;
-    const int _t85 = _t84 <= 1.0;
-    const double _t86 = (_t85) ? _t84 : 1.0;
-    const double _t87 = _t86 * _t86;
-    const double _t88 = _t87 * _t87;
-    const double _t89 = _t83 * _t81;
-    const double _t90 = _t73 * _t2;
-    const double _t91 = _t90 * _t90 * _t75;
-    const int _t92 = _t91 <= 1.0;
-    const double _t93 = (_t92) ? _t91 : 1.0;
-    const double _t94 = _t93 * _t93;
-    const double _t95 = _t94 * _t94;
-    const double _t96 = _t81 * _t90;
-    return (_t1 * (((0.0083333333333333003 - _t51 * 0.00019841269841216566) * _t52 + (1.0 - _t51 * 0.16666666666666666) + (2.755731919201122e-06 - _t51 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t51 * 7.549371704181243e-13) * _t52) * _t53) * ((_t50) ? _t55 : ((_t55 > 0.0) ? 1.0 : (-1.0)))) + _t16 * (1.0 - _t51 * 0.5 + (0.041666666666666102 - _t51 * 0.0013888888888798428) * _t52 + (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07 + _t52 * (2.0874477943664777e-09 - _t51 * 1.1304620460700782e-11)) * _t53) + (_t5 * ((1.0 - _t59 * 0.16666666666666666 + (0.0083333333333333003 - _t59 * 0.00019841269841216566) * _t60 + _t61 * (2.755731919201122e-06 - _t59 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t59 * 7.549371704181243e-13) * _t60)) * ((_t58) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0)))) + _t44 * (1.0 - _t59 * 0.5 + (0.041666666666666102 - _t59 * 0.0013888888888798428) * _t60 + _t61 * (_t60 * (2.0874477943664777e-09 - _t59 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t59 * 2.7557303701922228e-07)))) + (_t7 * (((2.755731919201122e-06 - _t66 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t66 * 7.549371704181243e-13) * _t67) * _t68 + (1.0 - _t66 * 0.16666666666666666 + (0.0083333333333333003 - _t66 * 0.00019841269841216566) * _t67)) * ((_t65) ? _t69 : ((_t69 > 0.0) ? 1.0 : (-1.0)))) + _t32 * ((_t67 * (2.0874477943664777e-09 - _t66 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t66 * 2.7557303701922228e-07)) * _t68 + (1.0 - _t66 * 0.5 + (0.041666666666666102 - _t66 * 0.0013888888888798428) * _t67)))) * (_t32 * (_t79 * (0.041666666666666102 - 0.0013888888888798428 * _t78) + (1.0 - _t78 * 0.5) + (_t79 * (2.0874477943664777e-09 - _t78 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t78 * 2.7557303701922228e-07)) * _t80) + (_t79 * (0.0083333333333333003 - _t78 * 0.00019841269841216566) + (1.0 - _t78 * 0.16666666666666666) + _t80 * (_t79 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t78) + (2.755731919201122e-06 - _t78 * 2.5052099244914114e-08))) * ((_t77) ? _t82 : ((_t82 > 0.0) ? 1.0 : (-1.0))) * _t7 + ((_t88 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t86 + _t87 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t86)) + (1.0 - _t86 * 0.5 + _t87 * (0.041666666666666102 - 0.0013888888888798428 * _t86))) * _t44 + ((0.0083333333333333003 - 0.00019841269841216566 * _t86) * _t87 + (1.0 - 0.16666666666666666 * _t86) + _t88 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t86 + _t87 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t86))) * ((_t85) ? _t89 : ((_t89 > 0.0) ? 1.0 : (-1.0))) * _t5) + (_t16 * ((2.4801587247292686e-05 - _t93 * 2.7557303701922228e-07 + _t94 * (2.0874477943664777e-09 - _t93 * 1.1304620460700782e-11)) * _t95 + (1.0 - _t93 * 0.5 + _t94 * (0.041666666666666102 - _t93 * 0.0013888888888798428))) + ((_t94 * (1.6057701922579786e-10 - _t93 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t93 * 2.5052099244914114e-08)) * _t95 + (1.0 - _t93 * 0.16666666666666666 + _t94 * (0.0083333333333333003 - _t93 * 0.00019841269841216566))) * ((_t92) ? _t96 : ((_t96 > 0.0) ? 1.0 : (-1.0))) * _t1));
+    const double _t69 = _t68 * _t68;
+    const double _t70 = _t47 * (_t66 * sqrt(_t65));
+    const double _t71 = _t66 * (_t48 * _t64);
+    const double _t72 = _t71 * _t71;
+    const double _t73 = _t72 * _t72;
+    const double _t74 = _t66 * (_t48 * _t59);
+    const double _t75 = _t74 * _t74;
+    const double _t76 = _t75 * _t75;
+    return (_t1 * ((2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11) * _t37) * _t38 + (1.0 - _t36 * 0.5 + _t37 * (0.041666666666666102 - 0.0013888888888798428 * _t36))) - _t39 * _t20 * ((0.0083333333333333003 - _t36 * 0.00019841269841216566) * _t37 + (1.0 - 0.16666666666666666 * _t36) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t36 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.0874477943664777e-09 - _t40 * 1.1304620460700782e-11) * _t41 + (2.4801587247292686e-05 - _t40 * 2.7557303701922228e-07)) + (_t41 * (0.041666666666666102 - _t40 * 0.0013888888888798428) + (1.0 - _t40 * 0.5))) * _t31 - _t39 * _t32 * (1.0 - _t40 * 0.16666666666666666 + _t41 * (0.0083333333333333003 - _t40 * 0.00019841269841216566) + _t42 * (2.755731919201122e-06 - _t40 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t40 * 7.549371704181243e-13) * _t41)) * _t4) + (_t25 * (1.0 - _t43 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t43) * _t44 + (_t44 * (2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45) - (_t45 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t43 + _t44 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t43)) + (1.0 - 0.16666666666666666 * _t43 + _t44 * (0.0083333333333333003 - _t43 * 0.00019841269841216566))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.4801587247292686e-05 - _t67 * 2.7557303701922228e-07 + _t68 * (2.0874477943664777e-09 - _t67 * 1.1304620460700782e-11)) + (1.0 - _t67 * 0.5 + _t68 * (0.041666666666666102 - _t67 * 0.0013888888888798428))) - _t8 * ((_t69 * ((1.6057701922579786e-10 - _t67 * 7.549371704181243e-13) * _t68 + (2.755731919201122e-06 - _t67 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t67 * 0.00019841269841216566) * _t68 + (1.0 - _t67 * 0.16666666666666666))) * (_t70 * _t53)) + ((((2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) * _t72 + (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07)) * _t73 + (1.0 - _t71 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0 - 0.16666666666666666 * _t71 + (0.0083333333333333003 - _t71 * 0.00019841269841216566) * _t72 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t71 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t74 + _t75 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t74)) * _t76 + ((0.041666666666666102 - 0.0013888888888798428 * _t74) * _t75 + (1.0 - _t74 * 0.5))) - _t58 * _t70 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t74 + _t75 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t74)) * _t76 + (_t75 * (0.0083333333333333003 - 0.00019841269841216566 * _t74) + (1.0 - 0.16666666666666666 * _t74))) * _t2)));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 307
+ * Total ops: 274
  */
 static inline void schwarzp_proj_o4_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = 6.2831853071795862 * h;
-    const double _t1 = 6.2831853071795862 * x;
-    const double _t2 = offsetgen_sin(_t1);
-    const double _t3 = _t0 * _t2;
-    const double _t4 = z * 6.2831853071795862;
-    const double _t5 = offsetgen_sin(_t4);
-    const double _t6 = 6.2831853071795862 * y;
-    const double _t7 = offsetgen_sin(_t6);
-    const double _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-    const double _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0;
-    const double _t12 = (_t11) ? _t10 : 1.0;
-    const double _t13 = _t12 * _t12;
-    const double _t14 = _t13 * _t13;
-    const double _t15 = sqrt(_t9);
-    const double _t16 = -(_t3 * _t15);
-    const double _t17 = offsetgen_cos(_t1);
-    const double _t18 = ((_t13 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t12) + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - 0.0013888888888798428 * _t12))) * _t2 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t12 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t12) * _t13) * _t14 + ((0.0083333333333333003 - 0.00019841269841216566 * _t12) * _t13 + (1.0 - 0.16666666666666666 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t17;
-    const double _t19 = _t0 * _t5;
-    const double _t20 = _t19 * _t19 * _t9;
-    const int _t21 = _t20 <= 1.0;
-    const double _t22 = (_t21) ? _t20 : 1.0;
+    const double _t0 = 6.2831853071795862 * y;
+    const double _t1 = offsetgen_sin(_t0);
+    const double _t2 = offsetgen_cos(_t0);
+    const double _t3 = 6.2831853071795862 * h;
+    const double _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
+    const double _t5 = _t4 * _t4;
+    const double _t6 = _t1 * _t1;
+    const double _t7 = 6.2831853071795862 * x;
+    const double _t8 = offsetgen_sin(_t7);
+    const double _t9 = _t8 * _t8;
+    const double _t10 = z * 6.2831853071795862;
+    const double _t11 = offsetgen_sin(_t10);
+    const double _t12 = _t11 * _t11;
+    const double _t13 = _t9 + _t12 + _t6;
+    const double _t14 = (_t13 > 1.1754943508222875e-38) ? 1.0 / _t13 : 0.0;
+    const double _t15 = _t5 * _t6 * _t14;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t4 * (_t14 * sqrt(_t13));
+    const double _t19 = _t2 * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + _t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15)) * _t17 + (1.0 - 0.16666666666666666 * _t15 + _t16 * (0.0083333333333333003 - 0.00019841269841216566 * _t15))) * (_t1 * _t18)) + _t1 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) * _t16));
+    const double _t20 = _t19 * _t19;
+    const double _t21 = _t9 * _t5 * _t14;
+    const double _t22 = _t21 * _t21;
     const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = -(_t19 * _t15);
-    const double _t26 = offsetgen_cos(_t4);
-    const double _t27 = _t5 * ((0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23 + (1.0 - _t22 * 0.5) + _t24 * (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) * _t23 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22)) * _t24 + ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22))) * ((_t21) ? _t25 : ((_t25 > 0.0) ? 1.0 : (-1.0))) * _t26;
-    const double _t28 = _t0 * _t7;
-    const double _t29 = _t9 * (_t28 * _t28);
-    const int _t30 = _t29 <= 1.0;
-    const double _t31 = (_t30) ? _t29 : 1.0;
+    const double _t24 = offsetgen_cos(_t7);
+    const double _t25 = (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22)) * (_t8 * _t18) * _t24 + ((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + _t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11))) * _t8;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = _t5 * _t12 * _t14;
+    const double _t28 = _t27 * _t27;
+    const double _t29 = _t28 * _t28;
+    const double _t30 = offsetgen_cos(_t10);
+    const double _t31 = ((0.0083333333333333003 - 0.00019841269841216566 * _t27) * _t28 + (1.0 - 0.16666666666666666 * _t27) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t27 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t27) + (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07)) * _t29 + (1.0 - _t27 * 0.5 + _t28 * (0.041666666666666102 - 0.0013888888888798428 * _t27)));
     const double _t32 = _t31 * _t31;
-    const double _t33 = _t32 * _t32;
-    const double _t34 = offsetgen_cos(_t6);
-    const double _t35 = -(_t28 * _t15);
-    const double _t36 = (_t32 * (0.041666666666666102 - _t31 * 0.0013888888888798428) + (1.0 - _t31 * 0.5) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07 + _t32 * (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11)) * _t33) * _t7 - _t34 * (((_t30) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t31 * 0.16666666666666666 + (0.0083333333333333003 - _t31 * 0.00019841269841216566) * _t32 + _t33 * (2.755731919201122e-06 - _t31 * 2.5052099244914114e-08 + _t32 * (1.6057701922579786e-10 - _t31 * 7.549371704181243e-13))));
-    const double _t37 = _t18 * _t18 + _t27 * _t27 + _t36 * _t36;
-    const double _t38 = (_t37 > 0.0) ? 1.0 / _t37 : 0.0;
-    const double _t39 = _t0 * _t18;
-    const double _t40 = _t38 * (_t39 * _t39);
-    const int _t41 = _t40 <= 1.0;
-    const double _t42 = (_t41) ? _t40 : 1.0;
-    const double _t43 = _t42 * _t42;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = sqrt(_t38);
-    const double _t46 = -(_t45 * _t39);
-    const double _t47 = (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t42) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07)) * _t44 + ((0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43 + (1.0 - _t42 * 0.5))) * _t2 - ((_t41) ? _t46 : ((_t46 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t42 + (0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + _t44 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43)) * _t17;
-    const double _t48 = _t36 * _t0;
-    const double _t49 = _t38 * (_t48 * _t48);
-    const int _t50 = _t49 <= 1.0;
-    const double _t51 = (_t50) ? _t49 : 1.0;
-    const double _t52 = _t51 * _t51;
-    const double _t53 = _t52 * _t52;
-    const double _t54 = -(_t48 * _t45);
-    const double _t55 = _t7 * (1.0 - _t51 * 0.5 + _t52 * (0.041666666666666102 - 0.0013888888888798428 * _t51) + (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t51 * 1.1304620460700782e-11) * _t52) * _t53) - _t34 * ((_t53 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t51 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t51) * _t52) + (1.0 - 0.16666666666666666 * _t51 + (0.0083333333333333003 - _t51 * 0.00019841269841216566) * _t52)) * ((_t50) ? _t54 : ((_t54 > 0.0) ? 1.0 : (-1.0))));
-    const double _t56 = _t27 * _t0;
-    const double _t57 = _t38 * (_t56 * _t56);
-    const int _t58 = _t57 <= 1.0;
-    const double _t59 = (_t58) ? _t57 : 1.0;
-    const double _t60 = _t59 * _t59;
-    const double _t61 = _t60 * _t60;
-    const double _t62 = -(_t56 * _t45);
-    const double _t63 = _t5 * (1.0 - _t59 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t59) * _t60 + _t61 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t59) * _t60 + (2.4801587247292686e-05 - _t59 * 2.7557303701922228e-07))) - _t26 * ((1.0 - 0.16666666666666666 * _t59 + (0.0083333333333333003 - 0.00019841269841216566 * _t59) * _t60 + _t61 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t59 + _t60 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t59))) * ((_t58) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0))));
-    const double _t64 = _t47 * _t47 + _t55 * _t55 + _t63 * _t63;
-    const double _t65 = (_t64 > 0.0) ? 1.0 / sqrt(_t64) : 0.0;
-    n[0] = -(_t65 * _t47);
-    n[1] = -(_t55 * _t65);
-    n[2] = -(_t63 * _t65);
+    const double _t33 = _t20 + _t26 + _t32;
+    const double _t34 = (_t33 > 1.1754943508222875e-38) ? 1.0 / _t33 : 0.0;
+    const double _t35 = _t34 * (_t20 * _t5);
+    const double _t36 = _t35 * _t35;
+    const double _t37 = _t36 * _t36;
+    const double _t38 = _t4 * (_t34 * sqrt(_t33));
+    const double _t39 = _t1 * (_t37 * (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t35 * 1.1304620460700782e-11) * _t36) + (1.0 - _t35 * 0.5 + (0.041666666666666102 - _t35 * 0.0013888888888798428) * _t36)) + _t2 * ((_t37 * ((1.6057701922579786e-10 - _t35 * 7.549371704181243e-13) * _t36 + (2.755731919201122e-06 - _t35 * 2.5052099244914114e-08)) + (_t36 * (0.0083333333333333003 - _t35 * 0.00019841269841216566) + (1.0 - _t35 * 0.16666666666666666))) * (_t19 * _t38));
+    const double _t40 = _t34 * (_t5 * _t26);
+    const double _t41 = _t40 * _t40;
+    const double _t42 = _t41 * _t41;
+    const double _t43 = (1.0 - _t40 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t40) * _t41 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t40 + _t41 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t40)) * _t42) * _t8 + _t25 * _t38 * (1.0 - 0.16666666666666666 * _t40 + (0.0083333333333333003 - 0.00019841269841216566 * _t40) * _t41 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t40 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t40) * _t41) * _t42) * _t24;
+    const double _t44 = _t34 * (_t5 * _t32);
+    const double _t45 = _t44 * _t44;
+    const double _t46 = _t45 * _t45;
+    const double _t47 = _t30 * (_t38 * _t31 * (_t46 * (_t45 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t44) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t44)) + (_t45 * (0.0083333333333333003 - _t44 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t44)))) + _t11 * (((2.0874477943664777e-09 - _t44 * 1.1304620460700782e-11) * _t45 + (2.4801587247292686e-05 - _t44 * 2.7557303701922228e-07)) * _t46 + (_t45 * (0.041666666666666102 - 0.0013888888888798428 * _t44) + (1.0 - _t44 * 0.5)));
+    const double _t48 = _t39 * _t39 + (_t43 * _t43 + _t47 * _t47);
+    const double _t49 = (_t48 > 0.0) ? 1.0 / sqrt(_t48) : 0.0;
+    n[0] = -(_t49 * _t43);
+    n[1] = -(_t49 * _t39);
+    n[2] = -(_t49 * _t47);
 }
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #define OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #ifdef __cplusplus
 #define OFFSETGEN_TRIG_INTF_(x) static_cast<int>(x)
-#define OFFSETGEN_TRIG_FLOAT_(x) static_cast<float>(x)
 #else
 #define OFFSETGEN_TRIG_INTF_(x) ((int)(x))
-#define OFFSETGEN_TRIG_FLOAT_(x) ((float)(x))
+#endif
+/* Adding and subtracting 1.5 * 2^23 rounds to an integer only under IEEE evaluation in float. */
+#if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
+#define OFFSETGEN_TRIG_ROUNDF_(v) rintf(v)
+#else
+#define OFFSETGEN_TRIG_ROUNDF_(v) (((v) + 12582912.0f) - 12582912.0f)
 #endif
 /* Float sin and cos for the scalar functions: the batch helpers' reduction and Cephes polynomials,
- * with an int-conversion quadrant; sinf/cosf beyond 8192.0 radians, or everywhere with
+ * with the quadrant rounded as in the double helpers; sinf/cosf beyond 8192.0 radians, or everywhere with
  * OFFSETGEN_LIBM_TRIG defined. */
 static inline float offsetgen_sinf(float a)
 {
 #ifdef OFFSETGEN_LIBM_TRIG
     return sinf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -404,9 +362,8 @@ static inline float offsetgen_cosf(float a)
 #ifdef OFFSETGEN_LIBM_TRIG
     return cosf(a);
 #else
-    const float v = a * 0.636619772f;
-    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? v + (v >= 0.0f ? 0.5f : -0.5f) : 0.0f);
-    const float q = OFFSETGEN_TRIG_FLOAT_(qi);
+    const float q = OFFSETGEN_TRIG_ROUNDF_(a * 0.636619772f);
+    const int qi = OFFSETGEN_TRIG_INTF_((fabsf(a) <= 8192.0f) ? q : 0.0f);
     const float r = ((a - q * 1.5703125f) - q * 4.83751297e-04f) - q * 7.54978995e-08f;
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
@@ -416,7 +373,7 @@ static inline float offsetgen_cosf(float a)
 #endif
 }
 #undef OFFSETGEN_TRIG_INTF_
-#undef OFFSETGEN_TRIG_FLOAT_
+#undef OFFSETGEN_TRIG_ROUNDF_
 #endif /* OFFSETGEN_SCALAR_TRIG_FLOAT_V1 */
 /* F, the field; the surface is F = 0.
  * Total ops: 8
@@ -427,253 +384,201 @@ static inline float schwarzp_proj_o4_fieldf(float x, float y, float z)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 294
+ * Total ops: 261
  */
 static inline float schwarzp_proj_o4_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = 6.28318548f * h;
-    const float _t1 = 6.28318548f * x;
-    const float _t2 = offsetgen_sinf(_t1);
-    const float _t3 = _t0 * _t2;
-    const float _t4 = z * 6.28318548f;
-    const float _t5 = offsetgen_sinf(_t4);
-    const float _t6 = 6.28318548f * y;
-    const float _t7 = offsetgen_sinf(_t6);
-    const float _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
-    const float _t14 = _t13 * _t13;
-    const float _t15 = sqrtf(_t9);
-    const float _t16 = -(_t3 * _t15);
-    const float _t17 = offsetgen_cosf(_t1);
-    const float _t18 = ((_t13 * (2.08744777e-09f - 1.13046204e-11f * _t12) + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - 0.00138888892f * _t12))) * _t2 - ((2.75573188e-06f - 2.50520991e-08f * _t12 + (1.60577024e-10f - 7.54937183e-13f * _t12) * _t13) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0f) ? 1.0f : (-1.0f))) * _t17;
-    const float _t19 = _t0 * _t5;
-    const float _t20 = _t19 * _t19 * _t9;
-    const int _t21 = _t20 <= 1.0f;
-    const float _t22 = (_t21) ? _t20 : 1.0f;
+    const float _t0 = 6.28318548f * y;
+    const float _t1 = offsetgen_cosf(_t0);
+    const float _t2 = 6.28318548f * h;
+    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+    const float _t4 = _t3 * _t3;
+    const float _t5 = offsetgen_sinf(_t0);
+    const float _t6 = _t5 * _t5;
+    const float _t7 = 6.28318548f * x;
+    const float _t8 = offsetgen_sinf(_t7);
+    const float _t9 = _t8 * _t8;
+    const float _t10 = z * 6.28318548f;
+    const float _t11 = offsetgen_sinf(_t10);
+    const float _t12 = _t11 * _t11;
+    const float _t13 = _t9 + _t12 + _t6;
+    const float _t14 = (_t13 > 1.17549435e-38f) ? 1.0f / _t13 : 0.0f;
+    const float _t15 = _t4 * _t6 * _t14;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t3 * (_t14 * sqrtf(_t13));
+    const float _t19 = _t1 * (((2.75573188e-06f - 2.50520991e-08f * _t15 + _t16 * (1.60577024e-10f - 7.54937183e-13f * _t15)) * _t17 + (1.0f - 0.166666672f * _t15 + _t16 * (0.00833333377f - 0.000198412701f * _t15))) * (_t5 * _t18)) + _t5 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - 0.00138888892f * _t15) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t15) * _t16));
+    const float _t20 = _t19 * _t19;
+    const float _t21 = _t9 * _t4 * _t14;
+    const float _t22 = _t21 * _t21;
     const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = -(_t19 * _t15);
-    const float _t26 = offsetgen_cosf(_t4);
-    const float _t27 = _t5 * ((0.0416666679f - 0.00138888892f * _t22) * _t23 + (1.0f - _t22 * 0.5f) + _t24 * (2.48015876e-05f - _t22 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t22) * _t23)) - (((1.60577024e-10f - 7.54937183e-13f * _t22) * _t23 + (2.75573188e-06f - 2.50520991e-08f * _t22)) * _t24 + ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22))) * ((_t21) ? _t25 : ((_t25 > 0.0f) ? 1.0f : (-1.0f))) * _t26;
-    const float _t28 = _t0 * _t7;
-    const float _t29 = _t9 * (_t28 * _t28);
-    const int _t30 = _t29 <= 1.0f;
-    const float _t31 = (_t30) ? _t29 : 1.0f;
+    const float _t24 = offsetgen_cosf(_t7);
+    const float _t25 = (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t8 * _t18) * _t24 + ((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * _t8;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = _t4 * _t12 * _t14;
+    const float _t28 = _t27 * _t27;
+    const float _t29 = _t28 * _t28;
+    const float _t30 = offsetgen_cosf(_t10);
+    const float _t31 = ((0.00833333377f - 0.000198412701f * _t27) * _t28 + (1.0f - 0.166666672f * _t27) + (2.75573188e-06f - 2.50520991e-08f * _t27 + (1.60577024e-10f - 7.54937183e-13f * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.08744777e-09f - 1.13046204e-11f * _t27) + (2.48015876e-05f - _t27 * 2.75573029e-07f)) * _t29 + (1.0f - _t27 * 0.5f + _t28 * (0.0416666679f - 0.00138888892f * _t27)));
     const float _t32 = _t31 * _t31;
-    const float _t33 = _t32 * _t32;
-    const float _t34 = offsetgen_cosf(_t6);
-    const float _t35 = -(_t28 * _t15);
-    const float _t36 = (_t32 * (0.0416666679f - _t31 * 0.00138888892f) + (1.0f - _t31 * 0.5f) + (2.48015876e-05f - _t31 * 2.75573029e-07f + _t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f)) * _t33) * _t7 - _t34 * (((_t30) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t31 * 0.166666672f + (0.00833333377f - _t31 * 0.000198412701f) * _t32 + _t33 * (2.75573188e-06f - _t31 * 2.50520991e-08f + _t32 * (1.60577024e-10f - _t31 * 7.54937183e-13f))));
-    const float _t37 = _t18 * _t18 + _t27 * _t27 + _t36 * _t36;
-    const float _t38 = (_t37 > 0.0f) ? 1.0f / _t37 : 0.0f;
-    const float _t39 = _t0 * _t18;
-    const float _t40 = _t38 * (_t39 * _t39);
-    const int _t41 = _t40 <= 1.0f;
-    const float _t42 = (_t41) ? _t40 : 1.0f;
+    const float _t33 = _t20 + _t26 + _t32;
+    const float _t34 = (_t33 > 1.17549435e-38f) ? 1.0f / _t33 : 0.0f;
+    const float _t35 = _t34 * (_t4 * _t26);
+    const float _t36 = _t35 * _t35;
+    const float _t37 = _t36 * _t36;
+    const float _t38 = _t3 * (_t34 * sqrtf(_t33));
+    const float _t39 = _t34 * (_t4 * _t32);
+    const float _t40 = _t39 * _t39;
+    const float _t41 = _t40 * _t40;
+    const float _t42 = _t34 * (_t20 * _t4);
     const float _t43 = _t42 * _t42;
     const float _t44 = _t43 * _t43;
-    const float _t45 = sqrtf(_t38);
-    const float _t46 = -(_t45 * _t39);
-    const float _t47 = _t36 * _t0;
-    const float _t48 = _t38 * (_t47 * _t47);
-    const int _t49 = _t48 <= 1.0f;
-    const float _t50 = (_t49) ? _t48 : 1.0f;
-    const float _t51 = _t50 * _t50;
-    const float _t52 = _t51 * _t51;
-    const float _t53 = -(_t47 * _t45);
-    const float _t54 = _t27 * _t0;
-    const float _t55 = _t38 * (_t54 * _t54);
-    const int _t56 = _t55 <= 1.0f;
-    const float _t57 = (_t56) ? _t55 : 1.0f;
-    const float _t58 = _t57 * _t57;
-    const float _t59 = _t58 * _t58;
-    const float _t60 = -(_t54 * _t45);
-    return (((2.08744777e-09f - 1.13046204e-11f * _t42) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f)) * _t44 + ((0.0416666679f - 0.00138888892f * _t42) * _t43 + (1.0f - _t42 * 0.5f))) * _t17 + ((_t41) ? _t46 : ((_t46 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t42 + (0.00833333377f - 0.000198412701f * _t42) * _t43 + _t44 * (2.75573188e-06f - 2.50520991e-08f * _t42 + (1.60577024e-10f - 7.54937183e-13f * _t42) * _t43)) * _t2 + (_t34 * (1.0f - _t50 * 0.5f + _t51 * (0.0416666679f - 0.00138888892f * _t50) + (2.48015876e-05f - _t50 * 2.75573029e-07f + (2.08744777e-09f - _t50 * 1.13046204e-11f) * _t51) * _t52) + (_t52 * (2.75573188e-06f - 2.50520991e-08f * _t50 + (1.60577024e-10f - 7.54937183e-13f * _t50) * _t51) + (1.0f - 0.166666672f * _t50 + (0.00833333377f - _t50 * 0.000198412701f) * _t51)) * ((_t49) ? _t53 : ((_t53 > 0.0f) ? 1.0f : (-1.0f))) * _t7 + (_t5 * ((1.0f - 0.166666672f * _t57 + (0.00833333377f - 0.000198412701f * _t57) * _t58 + _t59 * (2.75573188e-06f - 2.50520991e-08f * _t57 + _t58 * (1.60577024e-10f - 7.54937183e-13f * _t57))) * ((_t56) ? _t60 : ((_t60 > 0.0f) ? 1.0f : (-1.0f)))) + _t26 * (1.0f - _t57 * 0.5f + (0.0416666679f - 0.00138888892f * _t57) * _t58 + _t59 * ((2.08744777e-09f - 1.13046204e-11f * _t57) * _t58 + (2.48015876e-05f - _t57 * 2.75573029e-07f)))));
+    return (1.0f - _t35 * 0.5f + (0.0416666679f - 0.00138888892f * _t35) * _t36 + (2.48015876e-05f - 2.75573029e-07f * _t35 + _t36 * (2.08744777e-09f - 1.13046204e-11f * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0f - 0.166666672f * _t35 + (0.00833333377f - 0.000198412701f * _t35) * _t36 + (2.75573188e-06f - 2.50520991e-08f * _t35 + (1.60577024e-10f - 7.54937183e-13f * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40 + (2.48015876e-05f - _t39 * 2.75573029e-07f)) * _t41 + (_t40 * (0.0416666679f - 0.00138888892f * _t39) + (1.0f - _t39 * 0.5f))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.60577024e-10f - 7.54937183e-13f * _t39) + (2.75573188e-06f - 2.50520991e-08f * _t39)) + (_t40 * (0.00833333377f - _t39 * 0.000198412701f) + (1.0f - 0.166666672f * _t39))))) + (_t1 * (_t44 * (2.48015876e-05f - _t42 * 2.75573029e-07f + (2.08744777e-09f - _t42 * 1.13046204e-11f) * _t43) + (1.0f - _t42 * 0.5f + (0.0416666679f - _t42 * 0.00138888892f) * _t43)) - _t5 * ((_t44 * ((1.60577024e-10f - _t42 * 7.54937183e-13f) * _t43 + (2.75573188e-06f - _t42 * 2.50520991e-08f)) + (_t43 * (0.00833333377f - _t42 * 0.000198412701f) + (1.0f - _t42 * 0.166666672f))) * (_t19 * _t38)));
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 454
+ * Total ops: 505
  */
 static inline float schwarzp_proj_o4_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = 6.28318548f * y;
-    const float _t1 = offsetgen_sinf(_t0);
-    const float _t2 = 6.28318548f * (t * 0.5f);
-    const float _t3 = _t1 * _t2;
-    const float _t4 = 6.28318548f * x;
-    const float _t5 = offsetgen_sinf(_t4);
-    const float _t6 = z * 6.28318548f;
-    const float _t7 = offsetgen_sinf(_t6);
-    const float _t8 = _t5 * _t5 + _t7 * _t7 + _t1 * _t1;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
+    const float _t0 = z * 6.28318548f;
+    const float _t1 = offsetgen_cosf(_t0);
+    const float _t2 = offsetgen_sinf(_t0);
+    const float _t3 = 6.28318548f * x;
+    const float _t4 = offsetgen_sinf(_t3);
+    const float _t5 = _t4 * _t4;
+    const float _t6 = _t2 * _t2;
+    const float _t7 = 6.28318548f * y;
+    const float _t8 = offsetgen_sinf(_t7);
+    const float _t9 = _t8 * _t8;
+    const float _t10 = _t5 + _t6 + _t9;
+    const float _t11 = (_t10 > 1.17549435e-38f) ? 1.0f / _t10 : 0.0f;
+    const float _t12 = 6.28318548f * (t * 0.5f);
+    const float _t13 = (_t12 <= 1.0f) ? (((-1.0f) <= _t12) ? _t12 : (-1.0f)) : 1.0f;
     const float _t14 = _t13 * _t13;
-    const float _t15 = (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - _t12 * 0.00138888892f) + _t14 * ((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f))) * _t1;
-    const float _t16 = offsetgen_cosf(_t0);
-    const float _t17 = sqrtf(_t9);
-    const float _t18 = _t3 * _t17;
-    const float _t19 = -_t18;
-    const float _t20 = 1.0f - _t12 * 0.166666672f + (0.00833333377f - _t12 * 0.000198412701f) * _t13 + _t14 * (_t13 * (1.60577024e-10f - _t12 * 7.54937183e-13f) + (2.75573188e-06f - _t12 * 2.50520991e-08f));
-    const float _t21 = _t15 - _t16 * (((_t11) ? _t19 : ((_t19 > 0.0f) ? 1.0f : (-1.0f))) * _t20);
-    const float _t22 = _t7 * _t2;
-    const float _t23 = _t22 * _t22 * _t9;
-    const int _t24 = _t23 <= 1.0f;
-    const float _t25 = (_t24) ? _t23 : 1.0f;
-    const float _t26 = _t25 * _t25;
+    const float _t15 = _t11 * (_t14 * _t6);
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t11 * sqrtf(_t10);
+    const float _t19 = _t18 * _t13;
+    const float _t20 = _t2 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - _t15 * 0.00138888892f) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16)) + _t1 * (((0.00833333377f - _t15 * 0.000198412701f) * _t16 + (1.0f - _t15 * 0.166666672f) + _t17 * (2.75573188e-06f - _t15 * 2.50520991e-08f + (1.60577024e-10f - _t15 * 7.54937183e-13f) * _t16)) * (_t2 * _t19));
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t11 * (_t14 * _t9);
+    const float _t23 = _t22 * _t22;
+    const float _t24 = _t23 * _t23;
+    const float _t25 = offsetgen_cosf(_t7);
+    const float _t26 = (_t24 * ((2.08744777e-09f - _t22 * 1.13046204e-11f) * _t23 + (2.48015876e-05f - _t22 * 2.75573029e-07f)) + (1.0f - _t22 * 0.5f + _t23 * (0.0416666679f - 0.00138888892f * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.00833333377f - _t22 * 0.000198412701f) + (1.0f - _t22 * 0.166666672f) + ((1.60577024e-10f - _t22 * 7.54937183e-13f) * _t23 + (2.75573188e-06f - _t22 * 2.50520991e-08f)) * _t24));
     const float _t27 = _t26 * _t26;
-    const float _t28 = (((2.08744777e-09f - _t25 * 1.13046204e-11f) * _t26 + (2.48015876e-05f - _t25 * 2.75573029e-07f)) * _t27 + (1.0f - _t25 * 0.5f + (0.0416666679f - _t25 * 0.00138888892f) * _t26)) * _t7;
-    const float _t29 = _t22 * _t17;
-    const float _t30 = -_t29;
-    const float _t31 = _t26 * (0.00833333377f - _t25 * 0.000198412701f) + (1.0f - _t25 * 0.166666672f) + (2.75573188e-06f - _t25 * 2.50520991e-08f + (1.60577024e-10f - _t25 * 7.54937183e-13f) * _t26) * _t27;
-    const float _t32 = offsetgen_cosf(_t6);
-    const float _t33 = _t28 - ((_t24) ? _t30 : ((_t30 > 0.0f) ? 1.0f : (-1.0f))) * _t31 * _t32;
-    const float _t34 = _t2 * _t5;
-    const float _t35 = _t34 * _t34 * _t9;
-    const int _t36 = _t35 <= 1.0f;
-    const float _t37 = (_t36) ? _t35 : 1.0f;
+    const float _t28 = _t11 * (_t14 * _t5);
+    const float _t29 = _t28 * _t28;
+    const float _t30 = _t29 * _t29;
+    const float _t31 = offsetgen_cosf(_t3);
+    const float _t32 = ((0.0416666679f - _t28 * 0.00138888892f) * _t29 + (1.0f - _t28 * 0.5f) + _t30 * (2.48015876e-05f - _t28 * 2.75573029e-07f + (2.08744777e-09f - _t28 * 1.13046204e-11f) * _t29)) * _t4 + _t19 * _t4 * (1.0f - _t28 * 0.166666672f + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + (_t29 * (1.60577024e-10f - _t28 * 7.54937183e-13f) + (2.75573188e-06f - _t28 * 2.50520991e-08f)) * _t30) * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t21 + _t27 + _t33;
+    const float _t35 = (_t34 > 1.17549435e-38f) ? 1.0f / _t34 : 0.0f;
+    const float _t36 = _t35 * (_t14 * _t21);
+    const float _t37 = _t36 * _t36;
     const float _t38 = _t37 * _t37;
-    const float _t39 = _t38 * _t38;
-    const float _t40 = ((2.48015876e-05f - _t37 * 2.75573029e-07f + _t38 * (2.08744777e-09f - _t37 * 1.13046204e-11f)) * _t39 + (_t38 * (0.0416666679f - 0.00138888892f * _t37) + (1.0f - _t37 * 0.5f))) * _t5;
-    const float _t41 = _t34 * _t17;
-    const float _t42 = -_t41;
-    const float _t43 = (_t38 * (1.60577024e-10f - 7.54937183e-13f * _t37) + (2.75573188e-06f - 2.50520991e-08f * _t37)) * _t39 + ((0.00833333377f - _t37 * 0.000198412701f) * _t38 + (1.0f - 0.166666672f * _t37));
-    const float _t44 = offsetgen_cosf(_t4);
-    const float _t45 = _t40 - ((_t36) ? _t42 : ((_t42 > 0.0f) ? 1.0f : (-1.0f))) * _t43 * _t44;
-    const float _t46 = _t21 * _t21 + _t33 * _t33 + _t45 * _t45;
-    const float _t47 = (_t46 > 0.0f) ? 1.0f / _t46 : 0.0f;
-    const float _t48 = _t21 * _t2;
-    const float _t49 = _t47 * (_t48 * _t48);
-    const int _t50 = _t49 <= 1.0f;
-    const float _t51 = (_t50) ? _t49 : 1.0f;
-    const float _t52 = _t51 * _t51;
-    const float _t53 = _t52 * _t52;
-    const float _t54 = sqrtf(_t47);
-    const float _t55 = -(_t48 * _t54);
-    const float _t56 = _t45 * _t2;
-    const float _t57 = _t47 * (_t56 * _t56);
-    const int _t58 = _t57 <= 1.0f;
-    const float _t59 = (_t58) ? _t57 : 1.0f;
-    const float _t60 = _t59 * _t59;
+    const float _t39 = _t35 * sqrtf(_t34) * _t13;
+    const float _t40 = _t35 * (_t14 * _t33);
+    const float _t41 = _t40 * _t40;
+    const float _t42 = _t41 * _t41;
+    const float _t43 = _t35 * (_t14 * _t27);
+    const float _t44 = _t43 * _t43;
+    const float _t45 = _t44 * _t44;
+    const float _t46 = -_t12;
+    const float _t47 = (_t46 <= 1.0f) ? (((-1.0f) <= _t46) ? _t46 : (-1.0f)) : 1.0f;
+    const float _t48 = _t47 * _t47;
+    const float _t49 = _t48 * _t9 * _t11;
+    const float _t50 = _t49 * _t49;
+    const float _t51 = _t50 * _t50;
+    const float _t52 = _t18 * _t47;
+    const float _t53 = _t8 * (_t50 * (0.0416666679f - 0.00138888892f * _t49) + (1.0f - _t49 * 0.5f) + _t51 * (_t50 * (2.08744777e-09f - _t49 * 1.13046204e-11f) + (2.48015876e-05f - _t49 * 2.75573029e-07f))) + _t25 * (_t52 * _t8 * (1.0f - 0.166666672f * _t49 + _t50 * (0.00833333377f - _t49 * 0.000198412701f) + _t51 * (2.75573188e-06f - 2.50520991e-08f * _t49 + _t50 * (1.60577024e-10f - 7.54937183e-13f * _t49))));
+    const float _t54 = _t53 * _t53;
+    const float _t55 = _t11 * (_t48 * _t6);
+    const float _t56 = _t55 * _t55;
+    const float _t57 = _t56 * _t56;
+    const float _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.75573188e-06f - 2.50520991e-08f * _t55 + (1.60577024e-10f - 7.54937183e-13f * _t55) * _t56) + ((0.00833333377f - 0.000198412701f * _t55) * _t56 + (1.0f - 0.166666672f * _t55)))) + (1.0f - 0.5f * _t55 + _t56 * (0.0416666679f - 0.00138888892f * _t55) + (2.48015876e-05f - 2.75573029e-07f * _t55 + (2.08744777e-09f - 1.13046204e-11f * _t55) * _t56) * _t57) * _t2;
+    const float _t59 = _t58 * _t58;
+    const float _t60 = _t48 * _t5 * _t11;
     const float _t61 = _t60 * _t60;
-    const float _t62 = -(_t56 * _t54);
-    const float _t63 = _t33 * _t2;
-    const float _t64 = _t47 * (_t63 * _t63);
-    const int _t65 = _t64 <= 1.0f;
-    const float _t66 = (_t65) ? _t64 : 1.0f;
-    const float _t67 = _t66 * _t66;
+    const float _t62 = _t61 * _t61;
+    const float _t63 = ((2.75573188e-06f - 2.50520991e-08f * _t60 + (1.60577024e-10f - 7.54937183e-13f * _t60) * _t61) * _t62 + (_t61 * (0.00833333377f - 0.000198412701f * _t60) + (1.0f - 0.166666672f * _t60))) * (_t52 * _t4) * _t31 + ((2.48015876e-05f - _t60 * 2.75573029e-07f + _t61 * (2.08744777e-09f - _t60 * 1.13046204e-11f)) * _t62 + (1.0f - _t60 * 0.5f + _t61 * (0.0416666679f - 0.00138888892f * _t60))) * _t4;
+    const float _t64 = _t63 * _t63;
+    const float _t65 = _t54 + _t59 + _t64;
+    const float _t66 = (_t65 > 1.17549435e-38f) ? 1.0f / _t65 : 0.0f;
+    const float _t67 = _t66 * (_t48 * _t54);
     const float _t68 = _t67 * _t67;
-    const float _t69 = -(_t63 * _t54);
-    const float _t70 = _t28 - _t32 * (((_t24) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f))) * _t31);
-    const float _t71 = _t70 * _t2;
-    const float _t72 = _t40 - ((_t36) ? _t41 : ((_t41 > 0.0f) ? 1.0f : (-1.0f))) * _t43 * _t44;
-    const float _t73 = _t15 - _t16 * (_t20 * ((_t11) ? _t18 : ((_t18 > 0.0f) ? 1.0f : (-1.0f))));
-    const float _t74 = _t72 * _t72 + _t73 * _t73 + _t70 * _t70;
-    const float _t75 = (_t74 > 0.0f) ? 1.0f / _t74 : 0.0f;
-    const float _t76 = _t71 * _t71 * _t75;
-    const int _t77 = _t76 <= 1.0f;
-    const float _t78 = (_t77) ? _t76 : 1.0f;
-    const float _t79 = _t78 * _t78;
-    const float _t80 = _t79 * _t79;
-    const float _t81 = sqrtf(_t75);
-    const float _t82 = _t71 * _t81;
-    const float _t83 = _t72 * _t2;
-    const float _t84 = _t83 * _t83 * _t75;
-    const int _t85 = _t84 <= 1.0f;
-    const float _t86 = (_t85) ? _t84 : 1.0f;
-    const float _t87 = _t86 * _t86;
-    const float _t88 = _t87 * _t87;
-    const float _t89 = _t83 * _t81;
-    const float _t90 = _t73 * _t2;
-    const float _t91 = _t90 * _t90 * _t75;
-    const int _t92 = _t91 <= 1.0f;
-    const float _t93 = (_t92) ? _t91 : 1.0f;
-    const float _t94 = _t93 * _t93;
-    const float _t95 = _t94 * _t94;
-    const float _t96 = _t81 * _t90;
-    return (_t1 * (((0.00833333377f - _t51 * 0.000198412701f) * _t52 + (1.0f - _t51 * 0.166666672f) + (2.75573188e-06f - _t51 * 2.50520991e-08f + (1.60577024e-10f - _t51 * 7.54937183e-13f) * _t52) * _t53) * ((_t50) ? _t55 : ((_t55 > 0.0f) ? 1.0f : (-1.0f)))) + _t16 * (1.0f - _t51 * 0.5f + (0.0416666679f - _t51 * 0.00138888892f) * _t52 + (2.48015876e-05f - _t51 * 2.75573029e-07f + _t52 * (2.08744777e-09f - _t51 * 1.13046204e-11f)) * _t53) + (_t5 * ((1.0f - _t59 * 0.166666672f + (0.00833333377f - _t59 * 0.000198412701f) * _t60 + _t61 * (2.75573188e-06f - _t59 * 2.50520991e-08f + (1.60577024e-10f - _t59 * 7.54937183e-13f) * _t60)) * ((_t58) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f)))) + _t44 * (1.0f - _t59 * 0.5f + (0.0416666679f - _t59 * 0.00138888892f) * _t60 + _t61 * (_t60 * (2.08744777e-09f - _t59 * 1.13046204e-11f) + (2.48015876e-05f - _t59 * 2.75573029e-07f)))) + (_t7 * (((2.75573188e-06f - _t66 * 2.50520991e-08f + (1.60577024e-10f - _t66 * 7.54937183e-13f) * _t67) * _t68 + (1.0f - _t66 * 0.166666672f + (0.00833333377f - _t66 * 0.000198412701f) * _t67)) * ((_t65) ? _t69 : ((_t69 > 0.0f) ? 1.0f : (-1.0f)))) + _t32 * ((_t67 * (2.08744777e-09f - _t66 * 1.13046204e-11f) + (2.48015876e-05f - _t66 * 2.75573029e-07f)) * _t68 + (1.0f - _t66 * 0.5f + (0.0416666679f - _t66 * 0.00138888892f) * _t67)))) * (_t32 * (_t79 * (0.0416666679f - 0.00138888892f * _t78) + (1.0f - _t78 * 0.5f) + (_t79 * (2.08744777e-09f - _t78 * 1.13046204e-11f) + (2.48015876e-05f - _t78 * 2.75573029e-07f)) * _t80) + (_t79 * (0.00833333377f - _t78 * 0.000198412701f) + (1.0f - _t78 * 0.166666672f) + _t80 * (_t79 * (1.60577024e-10f - 7.54937183e-13f * _t78) + (2.75573188e-06f - _t78 * 2.50520991e-08f))) * ((_t77) ? _t82 : ((_t82 > 0.0f) ? 1.0f : (-1.0f))) * _t7 + ((_t88 * (2.48015876e-05f - 2.75573029e-07f * _t86 + _t87 * (2.08744777e-09f - 1.13046204e-11f * _t86)) + (1.0f - _t86 * 0.5f + _t87 * (0.0416666679f - 0.00138888892f * _t86))) * _t44 + ((0.00833333377f - 0.000198412701f * _t86) * _t87 + (1.0f - 0.166666672f * _t86) + _t88 * (2.75573188e-06f - 2.50520991e-08f * _t86 + _t87 * (1.60577024e-10f - 7.54937183e-13f * _t86))) * ((_t85) ? _t89 : ((_t89 > 0.0f) ? 1.0f : (-1.0f))) * _t5) + (_t16 * ((2.48015876e-05f - _t93 * 2.75573029e-07f + _t94 * (2.08744777e-09f - _t93 * 1.13046204e-11f)) * _t95 + (1.0f - _t93 * 0.5f + _t94 * (0.0416666679f - _t93 * 0.00138888892f))) + ((_t94 * (1.60577024e-10f - _t93 * 7.54937183e-13f) + (2.75573188e-06f - _t93 * 2.50520991e-08f)) * _t95 + (1.0f - _t93 * 0.166666672f + _t94 * (0.00833333377f - _t93 * 0.000198412701f))) * ((_t92) ? _t96 : ((_t96 > 0.0f) ? 1.0f : (-1.0f))) * _t1));
+    const float _t69 = _t68 * _t68;
+    const float _t70 = _t47 * (_t66 * sqrtf(_t65));
+    const float _t71 = _t66 * (_t48 * _t64);
+    const float _t72 = _t71 * _t71;
+    const float _t73 = _t72 * _t72;
+    const float _t74 = _t66 * (_t48 * _t59);
+    const float _t75 = _t74 * _t74;
+    const float _t76 = _t75 * _t75;
+    return (_t1 * ((2.48015876e-05f - _t36 * 2.75573029e-07f + (2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37) * _t38 + (1.0f - _t36 * 0.5f + _t37 * (0.0416666679f - 0.00138888892f * _t36))) - _t39 * _t20 * ((0.00833333377f - _t36 * 0.000198412701f) * _t37 + (1.0f - 0.166666672f * _t36) + (2.75573188e-06f - 2.50520991e-08f * _t36 + (1.60577024e-10f - 7.54937183e-13f * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.08744777e-09f - _t40 * 1.13046204e-11f) * _t41 + (2.48015876e-05f - _t40 * 2.75573029e-07f)) + (_t41 * (0.0416666679f - _t40 * 0.00138888892f) + (1.0f - _t40 * 0.5f))) * _t31 - _t39 * _t32 * (1.0f - _t40 * 0.166666672f + _t41 * (0.00833333377f - _t40 * 0.000198412701f) + _t42 * (2.75573188e-06f - _t40 * 2.50520991e-08f + (1.60577024e-10f - _t40 * 7.54937183e-13f) * _t41)) * _t4) + (_t25 * (1.0f - _t43 * 0.5f + (0.0416666679f - 0.00138888892f * _t43) * _t44 + (_t44 * (2.08744777e-09f - _t43 * 1.13046204e-11f) + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45) - (_t45 * (2.75573188e-06f - 2.50520991e-08f * _t43 + _t44 * (1.60577024e-10f - 7.54937183e-13f * _t43)) + (1.0f - 0.166666672f * _t43 + _t44 * (0.00833333377f - _t43 * 0.000198412701f))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.48015876e-05f - _t67 * 2.75573029e-07f + _t68 * (2.08744777e-09f - _t67 * 1.13046204e-11f)) + (1.0f - _t67 * 0.5f + _t68 * (0.0416666679f - _t67 * 0.00138888892f))) - _t8 * ((_t69 * ((1.60577024e-10f - _t67 * 7.54937183e-13f) * _t68 + (2.75573188e-06f - _t67 * 2.50520991e-08f)) + ((0.00833333377f - _t67 * 0.000198412701f) * _t68 + (1.0f - _t67 * 0.166666672f))) * (_t70 * _t53)) + ((((2.08744777e-09f - _t71 * 1.13046204e-11f) * _t72 + (2.48015876e-05f - _t71 * 2.75573029e-07f)) * _t73 + (1.0f - _t71 * 0.5f + (0.0416666679f - 0.00138888892f * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0f - 0.166666672f * _t71 + (0.00833333377f - _t71 * 0.000198412701f) * _t72 + (2.75573188e-06f - 2.50520991e-08f * _t71 + (1.60577024e-10f - 7.54937183e-13f * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.48015876e-05f - 2.75573029e-07f * _t74 + _t75 * (2.08744777e-09f - 1.13046204e-11f * _t74)) * _t76 + ((0.0416666679f - 0.00138888892f * _t74) * _t75 + (1.0f - _t74 * 0.5f))) - _t58 * _t70 * ((2.75573188e-06f - 2.50520991e-08f * _t74 + _t75 * (1.60577024e-10f - 7.54937183e-13f * _t74)) * _t76 + (_t75 * (0.00833333377f - 0.000198412701f * _t74) + (1.0f - 0.166666672f * _t74))) * _t2)));
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
- * Total ops: 307
+ * Total ops: 274
  */
 static inline void schwarzp_proj_o4_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = 6.28318548f * h;
-    const float _t1 = 6.28318548f * x;
-    const float _t2 = offsetgen_sinf(_t1);
-    const float _t3 = _t0 * _t2;
-    const float _t4 = z * 6.28318548f;
-    const float _t5 = offsetgen_sinf(_t4);
-    const float _t6 = 6.28318548f * y;
-    const float _t7 = offsetgen_sinf(_t6);
-    const float _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-    const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-    const float _t10 = _t3 * _t3 * _t9;
-    const int _t11 = _t10 <= 1.0f;
-    const float _t12 = (_t11) ? _t10 : 1.0f;
-    const float _t13 = _t12 * _t12;
-    const float _t14 = _t13 * _t13;
-    const float _t15 = sqrtf(_t9);
-    const float _t16 = -(_t3 * _t15);
-    const float _t17 = offsetgen_cosf(_t1);
-    const float _t18 = ((_t13 * (2.08744777e-09f - 1.13046204e-11f * _t12) + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - 0.00138888892f * _t12))) * _t2 - ((2.75573188e-06f - 2.50520991e-08f * _t12 + (1.60577024e-10f - 7.54937183e-13f * _t12) * _t13) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0f) ? 1.0f : (-1.0f))) * _t17;
-    const float _t19 = _t0 * _t5;
-    const float _t20 = _t19 * _t19 * _t9;
-    const int _t21 = _t20 <= 1.0f;
-    const float _t22 = (_t21) ? _t20 : 1.0f;
+    const float _t0 = 6.28318548f * y;
+    const float _t1 = offsetgen_sinf(_t0);
+    const float _t2 = offsetgen_cosf(_t0);
+    const float _t3 = 6.28318548f * h;
+    const float _t4 = (_t3 <= 1.0f) ? (((-1.0f) <= _t3) ? _t3 : (-1.0f)) : 1.0f;
+    const float _t5 = _t4 * _t4;
+    const float _t6 = _t1 * _t1;
+    const float _t7 = 6.28318548f * x;
+    const float _t8 = offsetgen_sinf(_t7);
+    const float _t9 = _t8 * _t8;
+    const float _t10 = z * 6.28318548f;
+    const float _t11 = offsetgen_sinf(_t10);
+    const float _t12 = _t11 * _t11;
+    const float _t13 = _t9 + _t12 + _t6;
+    const float _t14 = (_t13 > 1.17549435e-38f) ? 1.0f / _t13 : 0.0f;
+    const float _t15 = _t5 * _t6 * _t14;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t4 * (_t14 * sqrtf(_t13));
+    const float _t19 = _t2 * (((2.75573188e-06f - 2.50520991e-08f * _t15 + _t16 * (1.60577024e-10f - 7.54937183e-13f * _t15)) * _t17 + (1.0f - 0.166666672f * _t15 + _t16 * (0.00833333377f - 0.000198412701f * _t15))) * (_t1 * _t18)) + _t1 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - 0.00138888892f * _t15) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t15) * _t16));
+    const float _t20 = _t19 * _t19;
+    const float _t21 = _t9 * _t5 * _t14;
+    const float _t22 = _t21 * _t21;
     const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = -(_t19 * _t15);
-    const float _t26 = offsetgen_cosf(_t4);
-    const float _t27 = _t5 * ((0.0416666679f - 0.00138888892f * _t22) * _t23 + (1.0f - _t22 * 0.5f) + _t24 * (2.48015876e-05f - _t22 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t22) * _t23)) - (((1.60577024e-10f - 7.54937183e-13f * _t22) * _t23 + (2.75573188e-06f - 2.50520991e-08f * _t22)) * _t24 + ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22))) * ((_t21) ? _t25 : ((_t25 > 0.0f) ? 1.0f : (-1.0f))) * _t26;
-    const float _t28 = _t0 * _t7;
-    const float _t29 = _t9 * (_t28 * _t28);
-    const int _t30 = _t29 <= 1.0f;
-    const float _t31 = (_t30) ? _t29 : 1.0f;
+    const float _t24 = offsetgen_cosf(_t7);
+    const float _t25 = (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t8 * _t18) * _t24 + ((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * _t8;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = _t5 * _t12 * _t14;
+    const float _t28 = _t27 * _t27;
+    const float _t29 = _t28 * _t28;
+    const float _t30 = offsetgen_cosf(_t10);
+    const float _t31 = ((0.00833333377f - 0.000198412701f * _t27) * _t28 + (1.0f - 0.166666672f * _t27) + (2.75573188e-06f - 2.50520991e-08f * _t27 + (1.60577024e-10f - 7.54937183e-13f * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.08744777e-09f - 1.13046204e-11f * _t27) + (2.48015876e-05f - _t27 * 2.75573029e-07f)) * _t29 + (1.0f - _t27 * 0.5f + _t28 * (0.0416666679f - 0.00138888892f * _t27)));
     const float _t32 = _t31 * _t31;
-    const float _t33 = _t32 * _t32;
-    const float _t34 = offsetgen_cosf(_t6);
-    const float _t35 = -(_t28 * _t15);
-    const float _t36 = (_t32 * (0.0416666679f - _t31 * 0.00138888892f) + (1.0f - _t31 * 0.5f) + (2.48015876e-05f - _t31 * 2.75573029e-07f + _t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f)) * _t33) * _t7 - _t34 * (((_t30) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t31 * 0.166666672f + (0.00833333377f - _t31 * 0.000198412701f) * _t32 + _t33 * (2.75573188e-06f - _t31 * 2.50520991e-08f + _t32 * (1.60577024e-10f - _t31 * 7.54937183e-13f))));
-    const float _t37 = _t18 * _t18 + _t27 * _t27 + _t36 * _t36;
-    const float _t38 = (_t37 > 0.0f) ? 1.0f / _t37 : 0.0f;
-    const float _t39 = _t0 * _t18;
-    const float _t40 = _t38 * (_t39 * _t39);
-    const int _t41 = _t40 <= 1.0f;
-    const float _t42 = (_t41) ? _t40 : 1.0f;
-    const float _t43 = _t42 * _t42;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = sqrtf(_t38);
-    const float _t46 = -(_t45 * _t39);
-    const float _t47 = (((2.08744777e-09f - 1.13046204e-11f * _t42) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f)) * _t44 + ((0.0416666679f - 0.00138888892f * _t42) * _t43 + (1.0f - _t42 * 0.5f))) * _t2 - ((_t41) ? _t46 : ((_t46 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t42 + (0.00833333377f - 0.000198412701f * _t42) * _t43 + _t44 * (2.75573188e-06f - 2.50520991e-08f * _t42 + (1.60577024e-10f - 7.54937183e-13f * _t42) * _t43)) * _t17;
-    const float _t48 = _t36 * _t0;
-    const float _t49 = _t38 * (_t48 * _t48);
-    const int _t50 = _t49 <= 1.0f;
-    const float _t51 = (_t50) ? _t49 : 1.0f;
-    const float _t52 = _t51 * _t51;
-    const float _t53 = _t52 * _t52;
-    const float _t54 = -(_t48 * _t45);
-    const float _t55 = _t7 * (1.0f - _t51 * 0.5f + _t52 * (0.0416666679f - 0.00138888892f * _t51) + (2.48015876e-05f - _t51 * 2.75573029e-07f + (2.08744777e-09f - _t51 * 1.13046204e-11f) * _t52) * _t53) - _t34 * ((_t53 * (2.75573188e-06f - 2.50520991e-08f * _t51 + (1.60577024e-10f - 7.54937183e-13f * _t51) * _t52) + (1.0f - 0.166666672f * _t51 + (0.00833333377f - _t51 * 0.000198412701f) * _t52)) * ((_t50) ? _t54 : ((_t54 > 0.0f) ? 1.0f : (-1.0f))));
-    const float _t56 = _t27 * _t0;
-    const float _t57 = _t38 * (_t56 * _t56);
-    const int _t58 = _t57 <= 1.0f;
-    const float _t59 = (_t58) ? _t57 : 1.0f;
-    const float _t60 = _t59 * _t59;
-    const float _t61 = _t60 * _t60;
-    const float _t62 = -(_t56 * _t45);
-    const float _t63 = _t5 * (1.0f - _t59 * 0.5f + (0.0416666679f - 0.00138888892f * _t59) * _t60 + _t61 * ((2.08744777e-09f - 1.13046204e-11f * _t59) * _t60 + (2.48015876e-05f - _t59 * 2.75573029e-07f))) - _t26 * ((1.0f - 0.166666672f * _t59 + (0.00833333377f - 0.000198412701f * _t59) * _t60 + _t61 * (2.75573188e-06f - 2.50520991e-08f * _t59 + _t60 * (1.60577024e-10f - 7.54937183e-13f * _t59))) * ((_t58) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f))));
-    const float _t64 = _t47 * _t47 + _t55 * _t55 + _t63 * _t63;
-    const float _t65 = (_t64 > 0.0f) ? 1.0f / sqrtf(_t64) : 0.0f;
-    n[0] = -(_t65 * _t47);
-    n[1] = -(_t55 * _t65);
-    n[2] = -(_t63 * _t65);
+    const float _t33 = _t20 + _t26 + _t32;
+    const float _t34 = (_t33 > 1.17549435e-38f) ? 1.0f / _t33 : 0.0f;
+    const float _t35 = _t34 * (_t20 * _t5);
+    const float _t36 = _t35 * _t35;
+    const float _t37 = _t36 * _t36;
+    const float _t38 = _t4 * (_t34 * sqrtf(_t33));
+    const float _t39 = _t1 * (_t37 * (2.48015876e-05f - _t35 * 2.75573029e-07f + (2.08744777e-09f - _t35 * 1.13046204e-11f) * _t36) + (1.0f - _t35 * 0.5f + (0.0416666679f - _t35 * 0.00138888892f) * _t36)) + _t2 * ((_t37 * ((1.60577024e-10f - _t35 * 7.54937183e-13f) * _t36 + (2.75573188e-06f - _t35 * 2.50520991e-08f)) + (_t36 * (0.00833333377f - _t35 * 0.000198412701f) + (1.0f - _t35 * 0.166666672f))) * (_t19 * _t38));
+    const float _t40 = _t34 * (_t5 * _t26);
+    const float _t41 = _t40 * _t40;
+    const float _t42 = _t41 * _t41;
+    const float _t43 = (1.0f - _t40 * 0.5f + (0.0416666679f - 0.00138888892f * _t40) * _t41 + (2.48015876e-05f - 2.75573029e-07f * _t40 + _t41 * (2.08744777e-09f - 1.13046204e-11f * _t40)) * _t42) * _t8 + _t25 * _t38 * (1.0f - 0.166666672f * _t40 + (0.00833333377f - 0.000198412701f * _t40) * _t41 + (2.75573188e-06f - 2.50520991e-08f * _t40 + (1.60577024e-10f - 7.54937183e-13f * _t40) * _t41) * _t42) * _t24;
+    const float _t44 = _t34 * (_t5 * _t32);
+    const float _t45 = _t44 * _t44;
+    const float _t46 = _t45 * _t45;
+    const float _t47 = _t30 * (_t38 * _t31 * (_t46 * (_t45 * (1.60577024e-10f - 7.54937183e-13f * _t44) + (2.75573188e-06f - 2.50520991e-08f * _t44)) + (_t45 * (0.00833333377f - _t44 * 0.000198412701f) + (1.0f - 0.166666672f * _t44)))) + _t11 * (((2.08744777e-09f - _t44 * 1.13046204e-11f) * _t45 + (2.48015876e-05f - _t44 * 2.75573029e-07f)) * _t46 + (_t45 * (0.0416666679f - 0.00138888892f * _t44) + (1.0f - _t44 * 0.5f)));
+    const float _t48 = _t39 * _t39 + (_t43 * _t43 + _t47 * _t47);
+    const float _t49 = (_t48 > 0.0f) ? 1.0f / sqrtf(_t48) : 0.0f;
+    n[0] = -(_t49 * _t43);
+    n[1] = -(_t49 * _t39);
+    n[2] = -(_t49 * _t47);
 }
 
 /* ---- Batch API ------------------------------------------------------------------------------------
@@ -888,68 +793,52 @@ static inline void schwarzp_proj_o4_offset_n(size_t n, const double *x, const do
     for (i = 0; i < blocked; i += 8) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
-            const double _t0 = 6.2831853071795862 * h[i + j];
-            const double _t1 = 6.2831853071795862 * x[i + j];
-            const double _t2 = offsetgen_batch_sin(_t1);
-            const double _t3 = _t0 * _t2;
-            const double _t4 = z[i + j] * 6.2831853071795862;
-            const double _t5 = offsetgen_batch_sin(_t4);
-            const double _t6 = 6.2831853071795862 * y[i + j];
-            const double _t7 = offsetgen_batch_sin(_t6);
-            const double _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-            const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-            const double _t10 = _t3 * _t3 * _t9;
-            const int _t11 = _t10 <= 1.0;
-            const double _t12 = (_t11) ? _t10 : 1.0;
-            const double _t13 = _t12 * _t12;
-            const double _t14 = _t13 * _t13;
-            const double _t15 = offsetgen_batch_sqrt(_t9);
-            const double _t16 = -(_t3 * _t15);
-            const double _t17 = offsetgen_batch_cos(_t1);
-            const double _t18 = ((_t13 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t12) + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07)) * _t14 + (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - 0.0013888888888798428 * _t12))) * _t2 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t12 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t12) * _t13) * _t14 + ((0.0083333333333333003 - 0.00019841269841216566 * _t12) * _t13 + (1.0 - 0.16666666666666666 * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0) ? 1.0 : (-1.0))) * _t17;
-            const double _t19 = _t0 * _t5;
-            const double _t20 = _t19 * _t19 * _t9;
-            const int _t21 = _t20 <= 1.0;
-            const double _t22 = (_t21) ? _t20 : 1.0;
+            const double _t0 = 6.2831853071795862 * y[i + j];
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = 6.2831853071795862 * h[i + j];
+            const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+            const double _t4 = _t3 * _t3;
+            const double _t5 = offsetgen_batch_sin(_t0);
+            const double _t6 = _t5 * _t5;
+            const double _t7 = 6.2831853071795862 * x[i + j];
+            const double _t8 = offsetgen_batch_sin(_t7);
+            const double _t9 = _t8 * _t8;
+            const double _t10 = z[i + j] * 6.2831853071795862;
+            const double _t11 = offsetgen_batch_sin(_t10);
+            const double _t12 = _t11 * _t11;
+            const double _t13 = _t9 + _t12 + _t6;
+            const double _t14 = (_t13 > 1.1754943508222875e-38) ? 1.0 / _t13 : 0.0;
+            const double _t15 = _t4 * _t6 * _t14;
+            const double _t16 = _t15 * _t15;
+            const double _t17 = _t16 * _t16;
+            const double _t18 = _t3 * (_t14 * offsetgen_batch_sqrt(_t13));
+            const double _t19 = _t1 * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + _t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15)) * _t17 + (1.0 - 0.16666666666666666 * _t15 + _t16 * (0.0083333333333333003 - 0.00019841269841216566 * _t15))) * (_t5 * _t18)) + _t5 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) * _t16));
+            const double _t20 = _t19 * _t19;
+            const double _t21 = _t9 * _t4 * _t14;
+            const double _t22 = _t21 * _t21;
             const double _t23 = _t22 * _t22;
-            const double _t24 = _t23 * _t23;
-            const double _t25 = -(_t19 * _t15);
-            const double _t26 = offsetgen_batch_cos(_t4);
-            const double _t27 = _t5 * ((0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23 + (1.0 - _t22 * 0.5) + _t24 * (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) * _t23)) - (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) * _t23 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22)) * _t24 + ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22))) * ((_t21) ? _t25 : ((_t25 > 0.0) ? 1.0 : (-1.0))) * _t26;
-            const double _t28 = _t0 * _t7;
-            const double _t29 = _t9 * (_t28 * _t28);
-            const int _t30 = _t29 <= 1.0;
-            const double _t31 = (_t30) ? _t29 : 1.0;
+            const double _t24 = offsetgen_batch_cos(_t7);
+            const double _t25 = (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22)) * (_t8 * _t18) * _t24 + ((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + _t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11))) * _t8;
+            const double _t26 = _t25 * _t25;
+            const double _t27 = _t4 * _t12 * _t14;
+            const double _t28 = _t27 * _t27;
+            const double _t29 = _t28 * _t28;
+            const double _t30 = offsetgen_batch_cos(_t10);
+            const double _t31 = ((0.0083333333333333003 - 0.00019841269841216566 * _t27) * _t28 + (1.0 - 0.16666666666666666 * _t27) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t27 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t27) + (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07)) * _t29 + (1.0 - _t27 * 0.5 + _t28 * (0.041666666666666102 - 0.0013888888888798428 * _t27)));
             const double _t32 = _t31 * _t31;
-            const double _t33 = _t32 * _t32;
-            const double _t34 = offsetgen_batch_cos(_t6);
-            const double _t35 = -(_t28 * _t15);
-            const double _t36 = (_t32 * (0.041666666666666102 - _t31 * 0.0013888888888798428) + (1.0 - _t31 * 0.5) + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07 + _t32 * (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11)) * _t33) * _t7 - _t34 * (((_t30) ? _t35 : ((_t35 > 0.0) ? 1.0 : (-1.0))) * (1.0 - _t31 * 0.16666666666666666 + (0.0083333333333333003 - _t31 * 0.00019841269841216566) * _t32 + _t33 * (2.755731919201122e-06 - _t31 * 2.5052099244914114e-08 + _t32 * (1.6057701922579786e-10 - _t31 * 7.549371704181243e-13))));
-            const double _t37 = _t18 * _t18 + _t27 * _t27 + _t36 * _t36;
-            const double _t38 = (_t37 > 0.0) ? 1.0 / _t37 : 0.0;
-            const double _t39 = _t0 * _t18;
-            const double _t40 = _t38 * (_t39 * _t39);
-            const int _t41 = _t40 <= 1.0;
-            const double _t42 = (_t41) ? _t40 : 1.0;
+            const double _t33 = _t20 + _t26 + _t32;
+            const double _t34 = (_t33 > 1.1754943508222875e-38) ? 1.0 / _t33 : 0.0;
+            const double _t35 = _t34 * (_t4 * _t26);
+            const double _t36 = _t35 * _t35;
+            const double _t37 = _t36 * _t36;
+            const double _t38 = _t3 * (_t34 * offsetgen_batch_sqrt(_t33));
+            const double _t39 = _t34 * (_t4 * _t32);
+            const double _t40 = _t39 * _t39;
+            const double _t41 = _t40 * _t40;
+            const double _t42 = _t34 * (_t20 * _t4);
             const double _t43 = _t42 * _t42;
             const double _t44 = _t43 * _t43;
-            const double _t45 = offsetgen_batch_sqrt(_t38);
-            const double _t46 = -(_t45 * _t39);
-            const double _t47 = _t36 * _t0;
-            const double _t48 = _t38 * (_t47 * _t47);
-            const int _t49 = _t48 <= 1.0;
-            const double _t50 = (_t49) ? _t48 : 1.0;
-            const double _t51 = _t50 * _t50;
-            const double _t52 = _t51 * _t51;
-            const double _t53 = -(_t47 * _t45);
-            const double _t54 = _t27 * _t0;
-            const double _t55 = _t38 * (_t54 * _t54);
-            const int _t56 = _t55 <= 1.0;
-            const double _t57 = (_t56) ? _t55 : 1.0;
-            const double _t58 = _t57 * _t57;
-            const double _t59 = _t58 * _t58;
-            const double _t60 = -(_t54 * _t45);
-            out[i + j] = (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t42) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07)) * _t44 + ((0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43 + (1.0 - _t42 * 0.5))) * _t17 + ((_t41) ? _t46 : ((_t46 > 0.0) ? 1.0 : (-1.0))) * (1.0 - 0.16666666666666666 * _t42 + (0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + _t44 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43)) * _t2 + (_t34 * (1.0 - _t50 * 0.5 + _t51 * (0.041666666666666102 - 0.0013888888888798428 * _t50) + (2.4801587247292686e-05 - _t50 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t50 * 1.1304620460700782e-11) * _t51) * _t52) + (_t52 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t50 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t50) * _t51) + (1.0 - 0.16666666666666666 * _t50 + (0.0083333333333333003 - _t50 * 0.00019841269841216566) * _t51)) * ((_t49) ? _t53 : ((_t53 > 0.0) ? 1.0 : (-1.0))) * _t7 + (_t5 * ((1.0 - 0.16666666666666666 * _t57 + (0.0083333333333333003 - 0.00019841269841216566 * _t57) * _t58 + _t59 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t57 + _t58 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57))) * ((_t56) ? _t60 : ((_t60 > 0.0) ? 1.0 : (-1.0)))) + _t26 * (1.0 - _t57 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t57) * _t58 + _t59 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t57) * _t58 + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07)))));
+            out[i + j] = (1.0 - _t35 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t35 + _t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0 - 0.16666666666666666 * _t35 + (0.0083333333333333003 - 0.00019841269841216566 * _t35) * _t36 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.0874477943664777e-09 - _t39 * 1.1304620460700782e-11) * _t40 + (2.4801587247292686e-05 - _t39 * 2.7557303701922228e-07)) * _t41 + (_t40 * (0.041666666666666102 - 0.0013888888888798428 * _t39) + (1.0 - _t39 * 0.5))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t39) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t39)) + (_t40 * (0.0083333333333333003 - _t39 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t39))))) + (_t1 * (_t44 * (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t42 * 1.1304620460700782e-11) * _t43) + (1.0 - _t42 * 0.5 + (0.041666666666666102 - _t42 * 0.0013888888888798428) * _t43)) - _t5 * ((_t44 * ((1.6057701922579786e-10 - _t42 * 7.549371704181243e-13) * _t43 + (2.755731919201122e-06 - _t42 * 2.5052099244914114e-08)) + (_t43 * (0.0083333333333333003 - _t42 * 0.00019841269841216566) + (1.0 - _t42 * 0.16666666666666666))) * (_t19 * _t38)));
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -968,104 +857,84 @@ static inline void schwarzp_proj_o4_shell_n(size_t n, const double *x, const dou
     for (i = 0; i < blocked; i += 8) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
-            const double _t0 = 6.2831853071795862 * y[i + j];
-            const double _t1 = offsetgen_batch_sin(_t0);
-            const double _t2 = 6.2831853071795862 * (t[i + j] * 0.5);
-            const double _t3 = _t1 * _t2;
-            const double _t4 = 6.2831853071795862 * x[i + j];
-            const double _t5 = offsetgen_batch_sin(_t4);
-            const double _t6 = z[i + j] * 6.2831853071795862;
-            const double _t7 = offsetgen_batch_sin(_t6);
-            const double _t8 = _t5 * _t5 + _t7 * _t7 + _t1 * _t1;
-            const double _t9 = (_t8 > 0.0) ? 1.0 / _t8 : 0.0;
-            const double _t10 = _t3 * _t3 * _t9;
-            const int _t11 = _t10 <= 1.0;
-            const double _t12 = (_t11) ? _t10 : 1.0;
-            const double _t13 = _t12 * _t12;
+            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t1 = offsetgen_batch_cos(_t0);
+            const double _t2 = offsetgen_batch_sin(_t0);
+            const double _t3 = 6.2831853071795862 * x[i + j];
+            const double _t4 = offsetgen_batch_sin(_t3);
+            const double _t5 = _t4 * _t4;
+            const double _t6 = _t2 * _t2;
+            const double _t7 = 6.2831853071795862 * y[i + j];
+            const double _t8 = offsetgen_batch_sin(_t7);
+            const double _t9 = _t8 * _t8;
+            const double _t10 = _t5 + _t6 + _t9;
+            const double _t11 = (_t10 > 1.1754943508222875e-38) ? 1.0 / _t10 : 0.0;
+            const double _t12 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
             const double _t14 = _t13 * _t13;
-            const double _t15 = (1.0 - _t12 * 0.5 + _t13 * (0.041666666666666102 - _t12 * 0.0013888888888798428) + _t14 * ((2.0874477943664777e-09 - _t12 * 1.1304620460700782e-11) * _t13 + (2.4801587247292686e-05 - _t12 * 2.7557303701922228e-07))) * _t1;
-            const double _t16 = offsetgen_batch_cos(_t0);
-            const double _t17 = offsetgen_batch_sqrt(_t9);
-            const double _t18 = _t3 * _t17;
-            const double _t19 = -_t18;
-            const double _t20 = 1.0 - _t12 * 0.16666666666666666 + (0.0083333333333333003 - _t12 * 0.00019841269841216566) * _t13 + _t14 * (_t13 * (1.6057701922579786e-10 - _t12 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t12 * 2.5052099244914114e-08));
-            const double _t21 = _t15 - _t16 * (((_t11) ? _t19 : ((_t19 > 0.0) ? 1.0 : (-1.0))) * _t20);
-            const double _t22 = _t7 * _t2;
-            const double _t23 = _t22 * _t22 * _t9;
-            const int _t24 = _t23 <= 1.0;
-            const double _t25 = (_t24) ? _t23 : 1.0;
-            const double _t26 = _t25 * _t25;
+            const double _t15 = _t11 * (_t14 * _t6);
+            const double _t16 = _t15 * _t15;
+            const double _t17 = _t16 * _t16;
+            const double _t18 = _t11 * offsetgen_batch_sqrt(_t10);
+            const double _t19 = _t18 * _t13;
+            const double _t20 = _t2 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - _t15 * 0.0013888888888798428) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t15 * 1.1304620460700782e-11) * _t16)) + _t1 * (((0.0083333333333333003 - _t15 * 0.00019841269841216566) * _t16 + (1.0 - _t15 * 0.16666666666666666) + _t17 * (2.755731919201122e-06 - _t15 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t15 * 7.549371704181243e-13) * _t16)) * (_t2 * _t19));
+            const double _t21 = _t20 * _t20;
+            const double _t22 = _t11 * (_t14 * _t9);
+            const double _t23 = _t22 * _t22;
+            const double _t24 = _t23 * _t23;
+            const double _t25 = offsetgen_batch_cos(_t7);
+            const double _t26 = (_t24 * ((2.0874477943664777e-09 - _t22 * 1.1304620460700782e-11) * _t23 + (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07)) + (1.0 - _t22 * 0.5 + _t23 * (0.041666666666666102 - 0.0013888888888798428 * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.0083333333333333003 - _t22 * 0.00019841269841216566) + (1.0 - _t22 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t22 * 7.549371704181243e-13) * _t23 + (2.755731919201122e-06 - _t22 * 2.5052099244914114e-08)) * _t24));
             const double _t27 = _t26 * _t26;
-            const double _t28 = (((2.0874477943664777e-09 - _t25 * 1.1304620460700782e-11) * _t26 + (2.4801587247292686e-05 - _t25 * 2.7557303701922228e-07)) * _t27 + (1.0 - _t25 * 0.5 + (0.041666666666666102 - _t25 * 0.0013888888888798428) * _t26)) * _t7;
-            const double _t29 = _t22 * _t17;
-            const double _t30 = -_t29;
-            const double _t31 = _t26 * (0.0083333333333333003 - _t25 * 0.00019841269841216566) + (1.0 - _t25 * 0.16666666666666666) + (2.755731919201122e-06 - _t25 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t25 * 7.549371704181243e-13) * _t26) * _t27;
-            const double _t32 = offsetgen_batch_cos(_t6);
-            const double _t33 = _t28 - ((_t24) ? _t30 : ((_t30 > 0.0) ? 1.0 : (-1.0))) * _t31 * _t32;
-            const double _t34 = _t2 * _t5;
-            const double _t35 = _t34 * _t34 * _t9;
-            const int _t36 = _t35 <= 1.0;
-            const double _t37 = (_t36) ? _t35 : 1.0;
+            const double _t28 = _t11 * (_t14 * _t5);
+            const double _t29 = _t28 * _t28;
+            const double _t30 = _t29 * _t29;
+            const double _t31 = offsetgen_batch_cos(_t3);
+            const double _t32 = ((0.041666666666666102 - _t28 * 0.0013888888888798428) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11) * _t29)) * _t4 + _t19 * _t4 * (1.0 - _t28 * 0.16666666666666666 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + (_t29 * (1.6057701922579786e-10 - _t28 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t28 * 2.5052099244914114e-08)) * _t30) * _t31;
+            const double _t33 = _t32 * _t32;
+            const double _t34 = _t21 + _t27 + _t33;
+            const double _t35 = (_t34 > 1.1754943508222875e-38) ? 1.0 / _t34 : 0.0;
+            const double _t36 = _t35 * (_t14 * _t21);
+            const double _t37 = _t36 * _t36;
             const double _t38 = _t37 * _t37;
-            const double _t39 = _t38 * _t38;
-            const double _t40 = ((2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07 + _t38 * (2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11)) * _t39 + (_t38 * (0.041666666666666102 - 0.0013888888888798428 * _t37) + (1.0 - _t37 * 0.5))) * _t5;
-            const double _t41 = _t34 * _t17;
-            const double _t42 = -_t41;
-            const double _t43 = (_t38 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) * _t39 + ((0.0083333333333333003 - _t37 * 0.00019841269841216566) * _t38 + (1.0 - 0.16666666666666666 * _t37));
-            const double _t44 = offsetgen_batch_cos(_t4);
-            const double _t45 = _t40 - ((_t36) ? _t42 : ((_t42 > 0.0) ? 1.0 : (-1.0))) * _t43 * _t44;
-            const double _t46 = _t21 * _t21 + _t33 * _t33 + _t45 * _t45;
-            const double _t47 = (_t46 > 0.0) ? 1.0 / _t46 : 0.0;
-            const double _t48 = _t21 * _t2;
-            const double _t49 = _t47 * (_t48 * _t48);
-            const int _t50 = _t49 <= 1.0;
-            const double _t51 = (_t50) ? _t49 : 1.0;
-            const double _t52 = _t51 * _t51;
-            const double _t53 = _t52 * _t52;
-            const double _t54 = offsetgen_batch_sqrt(_t47);
-            const double _t55 = -(_t48 * _t54);
-            const double _t56 = _t45 * _t2;
-            const double _t57 = _t47 * (_t56 * _t56);
-            const int _t58 = _t57 <= 1.0;
-            const double _t59 = (_t58) ? _t57 : 1.0;
-            const double _t60 = _t59 * _t59;
+            const double _t39 = _t35 * offsetgen_batch_sqrt(_t34) * _t13;
+            const double _t40 = _t35 * (_t14 * _t33);
+            const double _t41 = _t40 * _t40;
+            const double _t42 = _t41 * _t41;
+            const double _t43 = _t35 * (_t14 * _t27);
+            const double _t44 = _t43 * _t43;
+            const double _t45 = _t44 * _t44;
+            const double _t46 = -_t12;
+            const double _t47 = (_t46 <= 1.0) ? (((-1.0) <= _t46) ? _t46 : (-1.0)) : 1.0;
+            const double _t48 = _t47 * _t47;
+            const double _t49 = _t48 * _t9 * _t11;
+            const double _t50 = _t49 * _t49;
+            const double _t51 = _t50 * _t50;
+            const double _t52 = _t18 * _t47;
+            const double _t53 = _t8 * (_t50 * (0.041666666666666102 - 0.0013888888888798428 * _t49) + (1.0 - _t49 * 0.5) + _t51 * (_t50 * (2.0874477943664777e-09 - _t49 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t49 * 2.7557303701922228e-07))) + _t25 * (_t52 * _t8 * (1.0 - 0.16666666666666666 * _t49 + _t50 * (0.0083333333333333003 - _t49 * 0.00019841269841216566) + _t51 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t49 + _t50 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t49))));
+            const double _t54 = _t53 * _t53;
+            const double _t55 = _t11 * (_t48 * _t6);
+            const double _t56 = _t55 * _t55;
+            const double _t57 = _t56 * _t56;
+            const double _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t55 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t55) * _t56) + ((0.0083333333333333003 - 0.00019841269841216566 * _t55) * _t56 + (1.0 - 0.16666666666666666 * _t55)))) + (1.0 - 0.5 * _t55 + _t56 * (0.041666666666666102 - 0.0013888888888798428 * _t55) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t55 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t55) * _t56) * _t57) * _t2;
+            const double _t59 = _t58 * _t58;
+            const double _t60 = _t48 * _t5 * _t11;
             const double _t61 = _t60 * _t60;
-            const double _t62 = -(_t56 * _t54);
-            const double _t63 = _t33 * _t2;
-            const double _t64 = _t47 * (_t63 * _t63);
-            const int _t65 = _t64 <= 1.0;
-            const double _t66 = (_t65) ? _t64 : 1.0;
-            const double _t67 = _t66 * _t66;
+            const double _t62 = _t61 * _t61;
+            const double _t63 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t60 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t60) * _t61) * _t62 + (_t61 * (0.0083333333333333003 - 0.00019841269841216566 * _t60) + (1.0 - 0.16666666666666666 * _t60))) * (_t52 * _t4) * _t31 + ((2.4801587247292686e-05 - _t60 * 2.7557303701922228e-07 + _t61 * (2.0874477943664777e-09 - _t60 * 1.1304620460700782e-11)) * _t62 + (1.0 - _t60 * 0.5 + _t61 * (0.041666666666666102 - 0.0013888888888798428 * _t60))) * _t4;
+            const double _t64 = _t63 * _t63;
+            const double _t65 = _t54 + _t59 + _t64;
+            const double _t66 = (_t65 > 1.1754943508222875e-38) ? 1.0 / _t65 : 0.0;
+            const double _t67 = _t66 * (_t48 * _t54);
             const double _t68 = _t67 * _t67;
-            const double _t69 = -(_t63 * _t54);
-            const double _t70 = _t28 - _t32 * (((_t24) ? _t29 : ((_t29 > 0.0) ? 1.0 : (-1.0))) * _t31);
-            const double _t71 = _t70 * _t2;
-            const double _t72 = _t40 - ((_t36) ? _t41 : ((_t41 > 0.0) ? 1.0 : (-1.0))) * _t43 * _t44;
-            const double _t73 = _t15 - _t16 * (_t20 * ((_t11) ? _t18 : ((_t18 > 0.0) ? 1.0 : (-1.0))));
-            const double _t74 = _t72 * _t72 + _t73 * _t73 + _t70 * _t70;
-            const double _t75 = (_t74 > 0.0) ? 1.0 / _t74 : 0.0;
-            const double _t76 = _t71 * _t71 * _t75;
-            const int _t77 = _t76 <= 1.0;
-            const double _t78 = (_t77) ? _t76 : 1.0;
-            const double _t79 = _t78 * _t78;
-            const double _t80 = _t79 * _t79;
-            const double _t81 = offsetgen_batch_sqrt(_t75);
-            const double _t82 = _t71 * _t81;
-            const double _t83 = _t72 * _t2;
-            const double _t84 = _t83 * _t83 * _t75;
-            const int _t85 = _t84 <= 1.0;
-            const double _t86 = (_t85) ? _t84 : 1.0;
-            const double _t87 = _t86 * _t86;
-            const double _t88 = _t87 * _t87;
-            const double _t89 = _t83 * _t81;
-            const double _t90 = _t73 * _t2;
-            const double _t91 = _t90 * _t90 * _t75;
-            const int _t92 = _t91 <= 1.0;
-            const double _t93 = (_t92) ? _t91 : 1.0;
-            const double _t94 = _t93 * _t93;
-            const double _t95 = _t94 * _t94;
-            const double _t96 = _t81 * _t90;
-            out[i + j] = (_t1 * (((0.0083333333333333003 - _t51 * 0.00019841269841216566) * _t52 + (1.0 - _t51 * 0.16666666666666666) + (2.755731919201122e-06 - _t51 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t51 * 7.549371704181243e-13) * _t52) * _t53) * ((_t50) ? _t55 : ((_t55 > 0.0) ? 1.0 : (-1.0)))) + _t16 * (1.0 - _t51 * 0.5 + (0.041666666666666102 - _t51 * 0.0013888888888798428) * _t52 + (2.4801587247292686e-05 - _t51 * 2.7557303701922228e-07 + _t52 * (2.0874477943664777e-09 - _t51 * 1.1304620460700782e-11)) * _t53) + (_t5 * ((1.0 - _t59 * 0.16666666666666666 + (0.0083333333333333003 - _t59 * 0.00019841269841216566) * _t60 + _t61 * (2.755731919201122e-06 - _t59 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t59 * 7.549371704181243e-13) * _t60)) * ((_t58) ? _t62 : ((_t62 > 0.0) ? 1.0 : (-1.0)))) + _t44 * (1.0 - _t59 * 0.5 + (0.041666666666666102 - _t59 * 0.0013888888888798428) * _t60 + _t61 * (_t60 * (2.0874477943664777e-09 - _t59 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t59 * 2.7557303701922228e-07)))) + (_t7 * (((2.755731919201122e-06 - _t66 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t66 * 7.549371704181243e-13) * _t67) * _t68 + (1.0 - _t66 * 0.16666666666666666 + (0.0083333333333333003 - _t66 * 0.00019841269841216566) * _t67)) * ((_t65) ? _t69 : ((_t69 > 0.0) ? 1.0 : (-1.0)))) + _t32 * ((_t67 * (2.0874477943664777e-09 - _t66 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t66 * 2.7557303701922228e-07)) * _t68 + (1.0 - _t66 * 0.5 + (0.041666666666666102 - _t66 * 0.0013888888888798428) * _t67)))) * (_t32 * (_t79 * (0.041666666666666102 - 0.0013888888888798428 * _t78) + (1.0 - _t78 * 0.5) + (_t79 * (2.0874477943664777e-09 - _t78 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t78 * 2.7557303701922228e-07)) * _t80) + (_t79 * (0.0083333333333333003 - _t78 * 0.00019841269841216566) + (1.0 - _t78 * 0.16666666666666666) + _t80 * (_t79 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t78) + (2.755731919201122e-06 - _t78 * 2.5052099244914114e-08))) * ((_t77) ? _t82 : ((_t82 > 0.0) ? 1.0 : (-1.0))) * _t7 + ((_t88 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t86 + _t87 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t86)) + (1.0 - _t86 * 0.5 + _t87 * (0.041666666666666102 - 0.0013888888888798428 * _t86))) * _t44 + ((0.0083333333333333003 - 0.00019841269841216566 * _t86) * _t87 + (1.0 - 0.16666666666666666 * _t86) + _t88 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t86 + _t87 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t86))) * ((_t85) ? _t89 : ((_t89 > 0.0) ? 1.0 : (-1.0))) * _t5) + (_t16 * ((2.4801587247292686e-05 - _t93 * 2.7557303701922228e-07 + _t94 * (2.0874477943664777e-09 - _t93 * 1.1304620460700782e-11)) * _t95 + (1.0 - _t93 * 0.5 + _t94 * (0.041666666666666102 - _t93 * 0.0013888888888798428))) + ((_t94 * (1.6057701922579786e-10 - _t93 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t93 * 2.5052099244914114e-08)) * _t95 + (1.0 - _t93 * 0.16666666666666666 + _t94 * (0.0083333333333333003 - _t93 * 0.00019841269841216566))) * ((_t92) ? _t96 : ((_t96 > 0.0) ? 1.0 : (-1.0))) * _t1));
+            const double _t69 = _t68 * _t68;
+            const double _t70 = _t47 * (_t66 * offsetgen_batch_sqrt(_t65));
+            const double _t71 = _t66 * (_t48 * _t64);
+            const double _t72 = _t71 * _t71;
+            const double _t73 = _t72 * _t72;
+            const double _t74 = _t66 * (_t48 * _t59);
+            const double _t75 = _t74 * _t74;
+            const double _t76 = _t75 * _t75;
+            out[i + j] = (_t1 * ((2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11) * _t37) * _t38 + (1.0 - _t36 * 0.5 + _t37 * (0.041666666666666102 - 0.0013888888888798428 * _t36))) - _t39 * _t20 * ((0.0083333333333333003 - _t36 * 0.00019841269841216566) * _t37 + (1.0 - 0.16666666666666666 * _t36) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t36 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.0874477943664777e-09 - _t40 * 1.1304620460700782e-11) * _t41 + (2.4801587247292686e-05 - _t40 * 2.7557303701922228e-07)) + (_t41 * (0.041666666666666102 - _t40 * 0.0013888888888798428) + (1.0 - _t40 * 0.5))) * _t31 - _t39 * _t32 * (1.0 - _t40 * 0.16666666666666666 + _t41 * (0.0083333333333333003 - _t40 * 0.00019841269841216566) + _t42 * (2.755731919201122e-06 - _t40 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t40 * 7.549371704181243e-13) * _t41)) * _t4) + (_t25 * (1.0 - _t43 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t43) * _t44 + (_t44 * (2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45) - (_t45 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t43 + _t44 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t43)) + (1.0 - 0.16666666666666666 * _t43 + _t44 * (0.0083333333333333003 - _t43 * 0.00019841269841216566))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.4801587247292686e-05 - _t67 * 2.7557303701922228e-07 + _t68 * (2.0874477943664777e-09 - _t67 * 1.1304620460700782e-11)) + (1.0 - _t67 * 0.5 + _t68 * (0.041666666666666102 - _t67 * 0.0013888888888798428))) - _t8 * ((_t69 * ((1.6057701922579786e-10 - _t67 * 7.549371704181243e-13) * _t68 + (2.755731919201122e-06 - _t67 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t67 * 0.00019841269841216566) * _t68 + (1.0 - _t67 * 0.16666666666666666))) * (_t70 * _t53)) + ((((2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) * _t72 + (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07)) * _t73 + (1.0 - _t71 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0 - 0.16666666666666666 * _t71 + (0.0083333333333333003 - _t71 * 0.00019841269841216566) * _t72 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t71 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t74 + _t75 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t74)) * _t76 + ((0.041666666666666102 - 0.0013888888888798428 * _t74) * _t75 + (1.0 - _t74 * 0.5))) - _t58 * _t70 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t74 + _t75 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t74)) * _t76 + (_t75 * (0.0083333333333333003 - 0.00019841269841216566 * _t74) + (1.0 - 0.16666666666666666 * _t74))) * _t2)));
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -1084,68 +953,52 @@ static inline void schwarzp_proj_o4_offsetf_n(size_t n, const float *x, const fl
     for (i = 0; i < blocked; i += 16) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
-            const float _t0 = 6.28318548f * h[i + j];
-            const float _t1 = 6.28318548f * x[i + j];
-            const float _t2 = offsetgen_batch_sinf(_t1);
-            const float _t3 = _t0 * _t2;
-            const float _t4 = z[i + j] * 6.28318548f;
-            const float _t5 = offsetgen_batch_sinf(_t4);
-            const float _t6 = 6.28318548f * y[i + j];
-            const float _t7 = offsetgen_batch_sinf(_t6);
-            const float _t8 = _t2 * _t2 + _t5 * _t5 + _t7 * _t7;
-            const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-            const float _t10 = _t3 * _t3 * _t9;
-            const int _t11 = _t10 <= 1.0f;
-            const float _t12 = (_t11) ? _t10 : 1.0f;
-            const float _t13 = _t12 * _t12;
-            const float _t14 = _t13 * _t13;
-            const float _t15 = offsetgen_batch_sqrtf(_t9);
-            const float _t16 = -(_t3 * _t15);
-            const float _t17 = offsetgen_batch_cosf(_t1);
-            const float _t18 = ((_t13 * (2.08744777e-09f - 1.13046204e-11f * _t12) + (2.48015876e-05f - _t12 * 2.75573029e-07f)) * _t14 + (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - 0.00138888892f * _t12))) * _t2 - ((2.75573188e-06f - 2.50520991e-08f * _t12 + (1.60577024e-10f - 7.54937183e-13f * _t12) * _t13) * _t14 + ((0.00833333377f - 0.000198412701f * _t12) * _t13 + (1.0f - 0.166666672f * _t12))) * ((_t11) ? _t16 : ((_t16 > 0.0f) ? 1.0f : (-1.0f))) * _t17;
-            const float _t19 = _t0 * _t5;
-            const float _t20 = _t19 * _t19 * _t9;
-            const int _t21 = _t20 <= 1.0f;
-            const float _t22 = (_t21) ? _t20 : 1.0f;
+            const float _t0 = 6.28318548f * y[i + j];
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = 6.28318548f * h[i + j];
+            const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+            const float _t4 = _t3 * _t3;
+            const float _t5 = offsetgen_batch_sinf(_t0);
+            const float _t6 = _t5 * _t5;
+            const float _t7 = 6.28318548f * x[i + j];
+            const float _t8 = offsetgen_batch_sinf(_t7);
+            const float _t9 = _t8 * _t8;
+            const float _t10 = z[i + j] * 6.28318548f;
+            const float _t11 = offsetgen_batch_sinf(_t10);
+            const float _t12 = _t11 * _t11;
+            const float _t13 = _t9 + _t12 + _t6;
+            const float _t14 = (_t13 > 1.17549435e-38f) ? 1.0f / _t13 : 0.0f;
+            const float _t15 = _t4 * _t6 * _t14;
+            const float _t16 = _t15 * _t15;
+            const float _t17 = _t16 * _t16;
+            const float _t18 = _t3 * (_t14 * offsetgen_batch_sqrtf(_t13));
+            const float _t19 = _t1 * (((2.75573188e-06f - 2.50520991e-08f * _t15 + _t16 * (1.60577024e-10f - 7.54937183e-13f * _t15)) * _t17 + (1.0f - 0.166666672f * _t15 + _t16 * (0.00833333377f - 0.000198412701f * _t15))) * (_t5 * _t18)) + _t5 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - 0.00138888892f * _t15) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t15) * _t16));
+            const float _t20 = _t19 * _t19;
+            const float _t21 = _t9 * _t4 * _t14;
+            const float _t22 = _t21 * _t21;
             const float _t23 = _t22 * _t22;
-            const float _t24 = _t23 * _t23;
-            const float _t25 = -(_t19 * _t15);
-            const float _t26 = offsetgen_batch_cosf(_t4);
-            const float _t27 = _t5 * ((0.0416666679f - 0.00138888892f * _t22) * _t23 + (1.0f - _t22 * 0.5f) + _t24 * (2.48015876e-05f - _t22 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t22) * _t23)) - (((1.60577024e-10f - 7.54937183e-13f * _t22) * _t23 + (2.75573188e-06f - 2.50520991e-08f * _t22)) * _t24 + ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22))) * ((_t21) ? _t25 : ((_t25 > 0.0f) ? 1.0f : (-1.0f))) * _t26;
-            const float _t28 = _t0 * _t7;
-            const float _t29 = _t9 * (_t28 * _t28);
-            const int _t30 = _t29 <= 1.0f;
-            const float _t31 = (_t30) ? _t29 : 1.0f;
+            const float _t24 = offsetgen_batch_cosf(_t7);
+            const float _t25 = (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t8 * _t18) * _t24 + ((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * _t8;
+            const float _t26 = _t25 * _t25;
+            const float _t27 = _t4 * _t12 * _t14;
+            const float _t28 = _t27 * _t27;
+            const float _t29 = _t28 * _t28;
+            const float _t30 = offsetgen_batch_cosf(_t10);
+            const float _t31 = ((0.00833333377f - 0.000198412701f * _t27) * _t28 + (1.0f - 0.166666672f * _t27) + (2.75573188e-06f - 2.50520991e-08f * _t27 + (1.60577024e-10f - 7.54937183e-13f * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.08744777e-09f - 1.13046204e-11f * _t27) + (2.48015876e-05f - _t27 * 2.75573029e-07f)) * _t29 + (1.0f - _t27 * 0.5f + _t28 * (0.0416666679f - 0.00138888892f * _t27)));
             const float _t32 = _t31 * _t31;
-            const float _t33 = _t32 * _t32;
-            const float _t34 = offsetgen_batch_cosf(_t6);
-            const float _t35 = -(_t28 * _t15);
-            const float _t36 = (_t32 * (0.0416666679f - _t31 * 0.00138888892f) + (1.0f - _t31 * 0.5f) + (2.48015876e-05f - _t31 * 2.75573029e-07f + _t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f)) * _t33) * _t7 - _t34 * (((_t30) ? _t35 : ((_t35 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - _t31 * 0.166666672f + (0.00833333377f - _t31 * 0.000198412701f) * _t32 + _t33 * (2.75573188e-06f - _t31 * 2.50520991e-08f + _t32 * (1.60577024e-10f - _t31 * 7.54937183e-13f))));
-            const float _t37 = _t18 * _t18 + _t27 * _t27 + _t36 * _t36;
-            const float _t38 = (_t37 > 0.0f) ? 1.0f / _t37 : 0.0f;
-            const float _t39 = _t0 * _t18;
-            const float _t40 = _t38 * (_t39 * _t39);
-            const int _t41 = _t40 <= 1.0f;
-            const float _t42 = (_t41) ? _t40 : 1.0f;
+            const float _t33 = _t20 + _t26 + _t32;
+            const float _t34 = (_t33 > 1.17549435e-38f) ? 1.0f / _t33 : 0.0f;
+            const float _t35 = _t34 * (_t4 * _t26);
+            const float _t36 = _t35 * _t35;
+            const float _t37 = _t36 * _t36;
+            const float _t38 = _t3 * (_t34 * offsetgen_batch_sqrtf(_t33));
+            const float _t39 = _t34 * (_t4 * _t32);
+            const float _t40 = _t39 * _t39;
+            const float _t41 = _t40 * _t40;
+            const float _t42 = _t34 * (_t20 * _t4);
             const float _t43 = _t42 * _t42;
             const float _t44 = _t43 * _t43;
-            const float _t45 = offsetgen_batch_sqrtf(_t38);
-            const float _t46 = -(_t45 * _t39);
-            const float _t47 = _t36 * _t0;
-            const float _t48 = _t38 * (_t47 * _t47);
-            const int _t49 = _t48 <= 1.0f;
-            const float _t50 = (_t49) ? _t48 : 1.0f;
-            const float _t51 = _t50 * _t50;
-            const float _t52 = _t51 * _t51;
-            const float _t53 = -(_t47 * _t45);
-            const float _t54 = _t27 * _t0;
-            const float _t55 = _t38 * (_t54 * _t54);
-            const int _t56 = _t55 <= 1.0f;
-            const float _t57 = (_t56) ? _t55 : 1.0f;
-            const float _t58 = _t57 * _t57;
-            const float _t59 = _t58 * _t58;
-            const float _t60 = -(_t54 * _t45);
-            out[i + j] = (((2.08744777e-09f - 1.13046204e-11f * _t42) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f)) * _t44 + ((0.0416666679f - 0.00138888892f * _t42) * _t43 + (1.0f - _t42 * 0.5f))) * _t17 + ((_t41) ? _t46 : ((_t46 > 0.0f) ? 1.0f : (-1.0f))) * (1.0f - 0.166666672f * _t42 + (0.00833333377f - 0.000198412701f * _t42) * _t43 + _t44 * (2.75573188e-06f - 2.50520991e-08f * _t42 + (1.60577024e-10f - 7.54937183e-13f * _t42) * _t43)) * _t2 + (_t34 * (1.0f - _t50 * 0.5f + _t51 * (0.0416666679f - 0.00138888892f * _t50) + (2.48015876e-05f - _t50 * 2.75573029e-07f + (2.08744777e-09f - _t50 * 1.13046204e-11f) * _t51) * _t52) + (_t52 * (2.75573188e-06f - 2.50520991e-08f * _t50 + (1.60577024e-10f - 7.54937183e-13f * _t50) * _t51) + (1.0f - 0.166666672f * _t50 + (0.00833333377f - _t50 * 0.000198412701f) * _t51)) * ((_t49) ? _t53 : ((_t53 > 0.0f) ? 1.0f : (-1.0f))) * _t7 + (_t5 * ((1.0f - 0.166666672f * _t57 + (0.00833333377f - 0.000198412701f * _t57) * _t58 + _t59 * (2.75573188e-06f - 2.50520991e-08f * _t57 + _t58 * (1.60577024e-10f - 7.54937183e-13f * _t57))) * ((_t56) ? _t60 : ((_t60 > 0.0f) ? 1.0f : (-1.0f)))) + _t26 * (1.0f - _t57 * 0.5f + (0.0416666679f - 0.00138888892f * _t57) * _t58 + _t59 * ((2.08744777e-09f - 1.13046204e-11f * _t57) * _t58 + (2.48015876e-05f - _t57 * 2.75573029e-07f)))));
+            out[i + j] = (1.0f - _t35 * 0.5f + (0.0416666679f - 0.00138888892f * _t35) * _t36 + (2.48015876e-05f - 2.75573029e-07f * _t35 + _t36 * (2.08744777e-09f - 1.13046204e-11f * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0f - 0.166666672f * _t35 + (0.00833333377f - 0.000198412701f * _t35) * _t36 + (2.75573188e-06f - 2.50520991e-08f * _t35 + (1.60577024e-10f - 7.54937183e-13f * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40 + (2.48015876e-05f - _t39 * 2.75573029e-07f)) * _t41 + (_t40 * (0.0416666679f - 0.00138888892f * _t39) + (1.0f - _t39 * 0.5f))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.60577024e-10f - 7.54937183e-13f * _t39) + (2.75573188e-06f - 2.50520991e-08f * _t39)) + (_t40 * (0.00833333377f - _t39 * 0.000198412701f) + (1.0f - 0.166666672f * _t39))))) + (_t1 * (_t44 * (2.48015876e-05f - _t42 * 2.75573029e-07f + (2.08744777e-09f - _t42 * 1.13046204e-11f) * _t43) + (1.0f - _t42 * 0.5f + (0.0416666679f - _t42 * 0.00138888892f) * _t43)) - _t5 * ((_t44 * ((1.60577024e-10f - _t42 * 7.54937183e-13f) * _t43 + (2.75573188e-06f - _t42 * 2.50520991e-08f)) + (_t43 * (0.00833333377f - _t42 * 0.000198412701f) + (1.0f - _t42 * 0.166666672f))) * (_t19 * _t38)));
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -1164,104 +1017,84 @@ static inline void schwarzp_proj_o4_shellf_n(size_t n, const float *x, const flo
     for (i = 0; i < blocked; i += 16) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
-            const float _t0 = 6.28318548f * y[i + j];
-            const float _t1 = offsetgen_batch_sinf(_t0);
-            const float _t2 = 6.28318548f * (t[i + j] * 0.5f);
-            const float _t3 = _t1 * _t2;
-            const float _t4 = 6.28318548f * x[i + j];
-            const float _t5 = offsetgen_batch_sinf(_t4);
-            const float _t6 = z[i + j] * 6.28318548f;
-            const float _t7 = offsetgen_batch_sinf(_t6);
-            const float _t8 = _t5 * _t5 + _t7 * _t7 + _t1 * _t1;
-            const float _t9 = (_t8 > 0.0f) ? 1.0f / _t8 : 0.0f;
-            const float _t10 = _t3 * _t3 * _t9;
-            const int _t11 = _t10 <= 1.0f;
-            const float _t12 = (_t11) ? _t10 : 1.0f;
-            const float _t13 = _t12 * _t12;
+            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t1 = offsetgen_batch_cosf(_t0);
+            const float _t2 = offsetgen_batch_sinf(_t0);
+            const float _t3 = 6.28318548f * x[i + j];
+            const float _t4 = offsetgen_batch_sinf(_t3);
+            const float _t5 = _t4 * _t4;
+            const float _t6 = _t2 * _t2;
+            const float _t7 = 6.28318548f * y[i + j];
+            const float _t8 = offsetgen_batch_sinf(_t7);
+            const float _t9 = _t8 * _t8;
+            const float _t10 = _t5 + _t6 + _t9;
+            const float _t11 = (_t10 > 1.17549435e-38f) ? 1.0f / _t10 : 0.0f;
+            const float _t12 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t13 = (_t12 <= 1.0f) ? (((-1.0f) <= _t12) ? _t12 : (-1.0f)) : 1.0f;
             const float _t14 = _t13 * _t13;
-            const float _t15 = (1.0f - _t12 * 0.5f + _t13 * (0.0416666679f - _t12 * 0.00138888892f) + _t14 * ((2.08744777e-09f - _t12 * 1.13046204e-11f) * _t13 + (2.48015876e-05f - _t12 * 2.75573029e-07f))) * _t1;
-            const float _t16 = offsetgen_batch_cosf(_t0);
-            const float _t17 = offsetgen_batch_sqrtf(_t9);
-            const float _t18 = _t3 * _t17;
-            const float _t19 = -_t18;
-            const float _t20 = 1.0f - _t12 * 0.166666672f + (0.00833333377f - _t12 * 0.000198412701f) * _t13 + _t14 * (_t13 * (1.60577024e-10f - _t12 * 7.54937183e-13f) + (2.75573188e-06f - _t12 * 2.50520991e-08f));
-            const float _t21 = _t15 - _t16 * (((_t11) ? _t19 : ((_t19 > 0.0f) ? 1.0f : (-1.0f))) * _t20);
-            const float _t22 = _t7 * _t2;
-            const float _t23 = _t22 * _t22 * _t9;
-            const int _t24 = _t23 <= 1.0f;
-            const float _t25 = (_t24) ? _t23 : 1.0f;
-            const float _t26 = _t25 * _t25;
+            const float _t15 = _t11 * (_t14 * _t6);
+            const float _t16 = _t15 * _t15;
+            const float _t17 = _t16 * _t16;
+            const float _t18 = _t11 * offsetgen_batch_sqrtf(_t10);
+            const float _t19 = _t18 * _t13;
+            const float _t20 = _t2 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - _t15 * 0.00138888892f) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16)) + _t1 * (((0.00833333377f - _t15 * 0.000198412701f) * _t16 + (1.0f - _t15 * 0.166666672f) + _t17 * (2.75573188e-06f - _t15 * 2.50520991e-08f + (1.60577024e-10f - _t15 * 7.54937183e-13f) * _t16)) * (_t2 * _t19));
+            const float _t21 = _t20 * _t20;
+            const float _t22 = _t11 * (_t14 * _t9);
+            const float _t23 = _t22 * _t22;
+            const float _t24 = _t23 * _t23;
+            const float _t25 = offsetgen_batch_cosf(_t7);
+            const float _t26 = (_t24 * ((2.08744777e-09f - _t22 * 1.13046204e-11f) * _t23 + (2.48015876e-05f - _t22 * 2.75573029e-07f)) + (1.0f - _t22 * 0.5f + _t23 * (0.0416666679f - 0.00138888892f * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.00833333377f - _t22 * 0.000198412701f) + (1.0f - _t22 * 0.166666672f) + ((1.60577024e-10f - _t22 * 7.54937183e-13f) * _t23 + (2.75573188e-06f - _t22 * 2.50520991e-08f)) * _t24));
             const float _t27 = _t26 * _t26;
-            const float _t28 = (((2.08744777e-09f - _t25 * 1.13046204e-11f) * _t26 + (2.48015876e-05f - _t25 * 2.75573029e-07f)) * _t27 + (1.0f - _t25 * 0.5f + (0.0416666679f - _t25 * 0.00138888892f) * _t26)) * _t7;
-            const float _t29 = _t22 * _t17;
-            const float _t30 = -_t29;
-            const float _t31 = _t26 * (0.00833333377f - _t25 * 0.000198412701f) + (1.0f - _t25 * 0.166666672f) + (2.75573188e-06f - _t25 * 2.50520991e-08f + (1.60577024e-10f - _t25 * 7.54937183e-13f) * _t26) * _t27;
-            const float _t32 = offsetgen_batch_cosf(_t6);
-            const float _t33 = _t28 - ((_t24) ? _t30 : ((_t30 > 0.0f) ? 1.0f : (-1.0f))) * _t31 * _t32;
-            const float _t34 = _t2 * _t5;
-            const float _t35 = _t34 * _t34 * _t9;
-            const int _t36 = _t35 <= 1.0f;
-            const float _t37 = (_t36) ? _t35 : 1.0f;
+            const float _t28 = _t11 * (_t14 * _t5);
+            const float _t29 = _t28 * _t28;
+            const float _t30 = _t29 * _t29;
+            const float _t31 = offsetgen_batch_cosf(_t3);
+            const float _t32 = ((0.0416666679f - _t28 * 0.00138888892f) * _t29 + (1.0f - _t28 * 0.5f) + _t30 * (2.48015876e-05f - _t28 * 2.75573029e-07f + (2.08744777e-09f - _t28 * 1.13046204e-11f) * _t29)) * _t4 + _t19 * _t4 * (1.0f - _t28 * 0.166666672f + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + (_t29 * (1.60577024e-10f - _t28 * 7.54937183e-13f) + (2.75573188e-06f - _t28 * 2.50520991e-08f)) * _t30) * _t31;
+            const float _t33 = _t32 * _t32;
+            const float _t34 = _t21 + _t27 + _t33;
+            const float _t35 = (_t34 > 1.17549435e-38f) ? 1.0f / _t34 : 0.0f;
+            const float _t36 = _t35 * (_t14 * _t21);
+            const float _t37 = _t36 * _t36;
             const float _t38 = _t37 * _t37;
-            const float _t39 = _t38 * _t38;
-            const float _t40 = ((2.48015876e-05f - _t37 * 2.75573029e-07f + _t38 * (2.08744777e-09f - _t37 * 1.13046204e-11f)) * _t39 + (_t38 * (0.0416666679f - 0.00138888892f * _t37) + (1.0f - _t37 * 0.5f))) * _t5;
-            const float _t41 = _t34 * _t17;
-            const float _t42 = -_t41;
-            const float _t43 = (_t38 * (1.60577024e-10f - 7.54937183e-13f * _t37) + (2.75573188e-06f - 2.50520991e-08f * _t37)) * _t39 + ((0.00833333377f - _t37 * 0.000198412701f) * _t38 + (1.0f - 0.166666672f * _t37));
-            const float _t44 = offsetgen_batch_cosf(_t4);
-            const float _t45 = _t40 - ((_t36) ? _t42 : ((_t42 > 0.0f) ? 1.0f : (-1.0f))) * _t43 * _t44;
-            const float _t46 = _t21 * _t21 + _t33 * _t33 + _t45 * _t45;
-            const float _t47 = (_t46 > 0.0f) ? 1.0f / _t46 : 0.0f;
-            const float _t48 = _t21 * _t2;
-            const float _t49 = _t47 * (_t48 * _t48);
-            const int _t50 = _t49 <= 1.0f;
-            const float _t51 = (_t50) ? _t49 : 1.0f;
-            const float _t52 = _t51 * _t51;
-            const float _t53 = _t52 * _t52;
-            const float _t54 = offsetgen_batch_sqrtf(_t47);
-            const float _t55 = -(_t48 * _t54);
-            const float _t56 = _t45 * _t2;
-            const float _t57 = _t47 * (_t56 * _t56);
-            const int _t58 = _t57 <= 1.0f;
-            const float _t59 = (_t58) ? _t57 : 1.0f;
-            const float _t60 = _t59 * _t59;
+            const float _t39 = _t35 * offsetgen_batch_sqrtf(_t34) * _t13;
+            const float _t40 = _t35 * (_t14 * _t33);
+            const float _t41 = _t40 * _t40;
+            const float _t42 = _t41 * _t41;
+            const float _t43 = _t35 * (_t14 * _t27);
+            const float _t44 = _t43 * _t43;
+            const float _t45 = _t44 * _t44;
+            const float _t46 = -_t12;
+            const float _t47 = (_t46 <= 1.0f) ? (((-1.0f) <= _t46) ? _t46 : (-1.0f)) : 1.0f;
+            const float _t48 = _t47 * _t47;
+            const float _t49 = _t48 * _t9 * _t11;
+            const float _t50 = _t49 * _t49;
+            const float _t51 = _t50 * _t50;
+            const float _t52 = _t18 * _t47;
+            const float _t53 = _t8 * (_t50 * (0.0416666679f - 0.00138888892f * _t49) + (1.0f - _t49 * 0.5f) + _t51 * (_t50 * (2.08744777e-09f - _t49 * 1.13046204e-11f) + (2.48015876e-05f - _t49 * 2.75573029e-07f))) + _t25 * (_t52 * _t8 * (1.0f - 0.166666672f * _t49 + _t50 * (0.00833333377f - _t49 * 0.000198412701f) + _t51 * (2.75573188e-06f - 2.50520991e-08f * _t49 + _t50 * (1.60577024e-10f - 7.54937183e-13f * _t49))));
+            const float _t54 = _t53 * _t53;
+            const float _t55 = _t11 * (_t48 * _t6);
+            const float _t56 = _t55 * _t55;
+            const float _t57 = _t56 * _t56;
+            const float _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.75573188e-06f - 2.50520991e-08f * _t55 + (1.60577024e-10f - 7.54937183e-13f * _t55) * _t56) + ((0.00833333377f - 0.000198412701f * _t55) * _t56 + (1.0f - 0.166666672f * _t55)))) + (1.0f - 0.5f * _t55 + _t56 * (0.0416666679f - 0.00138888892f * _t55) + (2.48015876e-05f - 2.75573029e-07f * _t55 + (2.08744777e-09f - 1.13046204e-11f * _t55) * _t56) * _t57) * _t2;
+            const float _t59 = _t58 * _t58;
+            const float _t60 = _t48 * _t5 * _t11;
             const float _t61 = _t60 * _t60;
-            const float _t62 = -(_t56 * _t54);
-            const float _t63 = _t33 * _t2;
-            const float _t64 = _t47 * (_t63 * _t63);
-            const int _t65 = _t64 <= 1.0f;
-            const float _t66 = (_t65) ? _t64 : 1.0f;
-            const float _t67 = _t66 * _t66;
+            const float _t62 = _t61 * _t61;
+            const float _t63 = ((2.75573188e-06f - 2.50520991e-08f * _t60 + (1.60577024e-10f - 7.54937183e-13f * _t60) * _t61) * _t62 + (_t61 * (0.00833333377f - 0.000198412701f * _t60) + (1.0f - 0.166666672f * _t60))) * (_t52 * _t4) * _t31 + ((2.48015876e-05f - _t60 * 2.75573029e-07f + _t61 * (2.08744777e-09f - _t60 * 1.13046204e-11f)) * _t62 + (1.0f - _t60 * 0.5f + _t61 * (0.0416666679f - 0.00138888892f * _t60))) * _t4;
+            const float _t64 = _t63 * _t63;
+            const float _t65 = _t54 + _t59 + _t64;
+            const float _t66 = (_t65 > 1.17549435e-38f) ? 1.0f / _t65 : 0.0f;
+            const float _t67 = _t66 * (_t48 * _t54);
             const float _t68 = _t67 * _t67;
-            const float _t69 = -(_t63 * _t54);
-            const float _t70 = _t28 - _t32 * (((_t24) ? _t29 : ((_t29 > 0.0f) ? 1.0f : (-1.0f))) * _t31);
-            const float _t71 = _t70 * _t2;
-            const float _t72 = _t40 - ((_t36) ? _t41 : ((_t41 > 0.0f) ? 1.0f : (-1.0f))) * _t43 * _t44;
-            const float _t73 = _t15 - _t16 * (_t20 * ((_t11) ? _t18 : ((_t18 > 0.0f) ? 1.0f : (-1.0f))));
-            const float _t74 = _t72 * _t72 + _t73 * _t73 + _t70 * _t70;
-            const float _t75 = (_t74 > 0.0f) ? 1.0f / _t74 : 0.0f;
-            const float _t76 = _t71 * _t71 * _t75;
-            const int _t77 = _t76 <= 1.0f;
-            const float _t78 = (_t77) ? _t76 : 1.0f;
-            const float _t79 = _t78 * _t78;
-            const float _t80 = _t79 * _t79;
-            const float _t81 = offsetgen_batch_sqrtf(_t75);
-            const float _t82 = _t71 * _t81;
-            const float _t83 = _t72 * _t2;
-            const float _t84 = _t83 * _t83 * _t75;
-            const int _t85 = _t84 <= 1.0f;
-            const float _t86 = (_t85) ? _t84 : 1.0f;
-            const float _t87 = _t86 * _t86;
-            const float _t88 = _t87 * _t87;
-            const float _t89 = _t83 * _t81;
-            const float _t90 = _t73 * _t2;
-            const float _t91 = _t90 * _t90 * _t75;
-            const int _t92 = _t91 <= 1.0f;
-            const float _t93 = (_t92) ? _t91 : 1.0f;
-            const float _t94 = _t93 * _t93;
-            const float _t95 = _t94 * _t94;
-            const float _t96 = _t81 * _t90;
-            out[i + j] = (_t1 * (((0.00833333377f - _t51 * 0.000198412701f) * _t52 + (1.0f - _t51 * 0.166666672f) + (2.75573188e-06f - _t51 * 2.50520991e-08f + (1.60577024e-10f - _t51 * 7.54937183e-13f) * _t52) * _t53) * ((_t50) ? _t55 : ((_t55 > 0.0f) ? 1.0f : (-1.0f)))) + _t16 * (1.0f - _t51 * 0.5f + (0.0416666679f - _t51 * 0.00138888892f) * _t52 + (2.48015876e-05f - _t51 * 2.75573029e-07f + _t52 * (2.08744777e-09f - _t51 * 1.13046204e-11f)) * _t53) + (_t5 * ((1.0f - _t59 * 0.166666672f + (0.00833333377f - _t59 * 0.000198412701f) * _t60 + _t61 * (2.75573188e-06f - _t59 * 2.50520991e-08f + (1.60577024e-10f - _t59 * 7.54937183e-13f) * _t60)) * ((_t58) ? _t62 : ((_t62 > 0.0f) ? 1.0f : (-1.0f)))) + _t44 * (1.0f - _t59 * 0.5f + (0.0416666679f - _t59 * 0.00138888892f) * _t60 + _t61 * (_t60 * (2.08744777e-09f - _t59 * 1.13046204e-11f) + (2.48015876e-05f - _t59 * 2.75573029e-07f)))) + (_t7 * (((2.75573188e-06f - _t66 * 2.50520991e-08f + (1.60577024e-10f - _t66 * 7.54937183e-13f) * _t67) * _t68 + (1.0f - _t66 * 0.166666672f + (0.00833333377f - _t66 * 0.000198412701f) * _t67)) * ((_t65) ? _t69 : ((_t69 > 0.0f) ? 1.0f : (-1.0f)))) + _t32 * ((_t67 * (2.08744777e-09f - _t66 * 1.13046204e-11f) + (2.48015876e-05f - _t66 * 2.75573029e-07f)) * _t68 + (1.0f - _t66 * 0.5f + (0.0416666679f - _t66 * 0.00138888892f) * _t67)))) * (_t32 * (_t79 * (0.0416666679f - 0.00138888892f * _t78) + (1.0f - _t78 * 0.5f) + (_t79 * (2.08744777e-09f - _t78 * 1.13046204e-11f) + (2.48015876e-05f - _t78 * 2.75573029e-07f)) * _t80) + (_t79 * (0.00833333377f - _t78 * 0.000198412701f) + (1.0f - _t78 * 0.166666672f) + _t80 * (_t79 * (1.60577024e-10f - 7.54937183e-13f * _t78) + (2.75573188e-06f - _t78 * 2.50520991e-08f))) * ((_t77) ? _t82 : ((_t82 > 0.0f) ? 1.0f : (-1.0f))) * _t7 + ((_t88 * (2.48015876e-05f - 2.75573029e-07f * _t86 + _t87 * (2.08744777e-09f - 1.13046204e-11f * _t86)) + (1.0f - _t86 * 0.5f + _t87 * (0.0416666679f - 0.00138888892f * _t86))) * _t44 + ((0.00833333377f - 0.000198412701f * _t86) * _t87 + (1.0f - 0.166666672f * _t86) + _t88 * (2.75573188e-06f - 2.50520991e-08f * _t86 + _t87 * (1.60577024e-10f - 7.54937183e-13f * _t86))) * ((_t85) ? _t89 : ((_t89 > 0.0f) ? 1.0f : (-1.0f))) * _t5) + (_t16 * ((2.48015876e-05f - _t93 * 2.75573029e-07f + _t94 * (2.08744777e-09f - _t93 * 1.13046204e-11f)) * _t95 + (1.0f - _t93 * 0.5f + _t94 * (0.0416666679f - _t93 * 0.00138888892f))) + ((_t94 * (1.60577024e-10f - _t93 * 7.54937183e-13f) + (2.75573188e-06f - _t93 * 2.50520991e-08f)) * _t95 + (1.0f - _t93 * 0.166666672f + _t94 * (0.00833333377f - _t93 * 0.000198412701f))) * ((_t92) ? _t96 : ((_t96 > 0.0f) ? 1.0f : (-1.0f))) * _t1));
+            const float _t69 = _t68 * _t68;
+            const float _t70 = _t47 * (_t66 * offsetgen_batch_sqrtf(_t65));
+            const float _t71 = _t66 * (_t48 * _t64);
+            const float _t72 = _t71 * _t71;
+            const float _t73 = _t72 * _t72;
+            const float _t74 = _t66 * (_t48 * _t59);
+            const float _t75 = _t74 * _t74;
+            const float _t76 = _t75 * _t75;
+            out[i + j] = (_t1 * ((2.48015876e-05f - _t36 * 2.75573029e-07f + (2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37) * _t38 + (1.0f - _t36 * 0.5f + _t37 * (0.0416666679f - 0.00138888892f * _t36))) - _t39 * _t20 * ((0.00833333377f - _t36 * 0.000198412701f) * _t37 + (1.0f - 0.166666672f * _t36) + (2.75573188e-06f - 2.50520991e-08f * _t36 + (1.60577024e-10f - 7.54937183e-13f * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.08744777e-09f - _t40 * 1.13046204e-11f) * _t41 + (2.48015876e-05f - _t40 * 2.75573029e-07f)) + (_t41 * (0.0416666679f - _t40 * 0.00138888892f) + (1.0f - _t40 * 0.5f))) * _t31 - _t39 * _t32 * (1.0f - _t40 * 0.166666672f + _t41 * (0.00833333377f - _t40 * 0.000198412701f) + _t42 * (2.75573188e-06f - _t40 * 2.50520991e-08f + (1.60577024e-10f - _t40 * 7.54937183e-13f) * _t41)) * _t4) + (_t25 * (1.0f - _t43 * 0.5f + (0.0416666679f - 0.00138888892f * _t43) * _t44 + (_t44 * (2.08744777e-09f - _t43 * 1.13046204e-11f) + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45) - (_t45 * (2.75573188e-06f - 2.50520991e-08f * _t43 + _t44 * (1.60577024e-10f - 7.54937183e-13f * _t43)) + (1.0f - 0.166666672f * _t43 + _t44 * (0.00833333377f - _t43 * 0.000198412701f))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.48015876e-05f - _t67 * 2.75573029e-07f + _t68 * (2.08744777e-09f - _t67 * 1.13046204e-11f)) + (1.0f - _t67 * 0.5f + _t68 * (0.0416666679f - _t67 * 0.00138888892f))) - _t8 * ((_t69 * ((1.60577024e-10f - _t67 * 7.54937183e-13f) * _t68 + (2.75573188e-06f - _t67 * 2.50520991e-08f)) + ((0.00833333377f - _t67 * 0.000198412701f) * _t68 + (1.0f - _t67 * 0.166666672f))) * (_t70 * _t53)) + ((((2.08744777e-09f - _t71 * 1.13046204e-11f) * _t72 + (2.48015876e-05f - _t71 * 2.75573029e-07f)) * _t73 + (1.0f - _t71 * 0.5f + (0.0416666679f - 0.00138888892f * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0f - 0.166666672f * _t71 + (0.00833333377f - _t71 * 0.000198412701f) * _t72 + (2.75573188e-06f - 2.50520991e-08f * _t71 + (1.60577024e-10f - 7.54937183e-13f * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.48015876e-05f - 2.75573029e-07f * _t74 + _t75 * (2.08744777e-09f - 1.13046204e-11f * _t74)) * _t76 + ((0.0416666679f - 0.00138888892f * _t74) * _t75 + (1.0f - _t74 * 0.5f))) - _t58 * _t70 * ((2.75573188e-06f - 2.50520991e-08f * _t74 + _t75 * (1.60577024e-10f - 7.54937183e-13f * _t74)) * _t76 + (_t75 * (0.00833333377f - 0.000198412701f * _t74) + (1.0f - 0.166666672f * _t74))) * _t2)));
         }
     }
     for (i = 0; i < blocked; ++i) {

@@ -20,6 +20,9 @@ constexpr const char* kMethodName = "projection";
 constexpr int kMethodMaxOrder = 16;
 constexpr bool kMethodEvenOrdersOnly = true;  // order 2(K+1): an odd order rounds up
 
+// |grad F|^2 at or below FLT_MIN counts as zero on the angle-addition path (see foot_point).
+constexpr double kTinyLength2 = 1.1754943508222875e-38;
+
 constexpr int projections_for(int order) { return (order + 1) / 2 - 1; }  // K = ceil(m/2) - 1
 static_assert(kMethodEvenOrdersOnly && 2 * (projections_for(3) + 1) == 4, "odd orders round up");
 
@@ -62,10 +65,12 @@ MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addit
       b.gradient,
       angle_addition
           ? fmt::format(" sin and cos at the foot-point estimates come from their values at p by angle addition, "
-                        "which is exact while each component of d = h n stays within {:g} (natural units, "
-                        "|h| <= {:.3g} cell on a 2*pi-periodic surface); larger displacements are clamped to it, "
-                        "which keeps |q_K - p| <= |h| and so the bound above.",
-                        kSmallAngleMax, kSmallAngleMax / (2 * 3.14159265358979323846))
+                        "which is exact while |h| <= {:g} (natural units: |h| <= {:.3g} cell on a 2*pi-periodic "
+                        "surface, walls up to {:.3g} cell thick); a larger |h| is clamped to {:g}, so thicker walls "
+                        "stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad "
+                        "F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.",
+                        kSmallAngleMax, kSmallAngleMax / (2 * 3.14159265358979323846),
+                        kSmallAngleMax / 3.14159265358979323846, kSmallAngleMax)
           : "");
   f.normal =
       "unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset "
@@ -131,10 +136,10 @@ class Projection final : public OffsetConstruction {
     return n;
   }
 
-  static std::vector<GiNaC::numeric> unit(std::vector<GiNaC::numeric> g) {
+  static std::vector<GiNaC::numeric> unit(std::vector<GiNaC::numeric> g, const GiNaC::numeric& tiny = 0) {
     GiNaC::numeric length2 = 0;
     for (const auto& c : g) length2 += c * c;
-    if (!(length2 > 0)) return std::vector<GiNaC::numeric>(g.size(), 0);
+    if (!(length2 > tiny)) return std::vector<GiNaC::numeric>(g.size(), 0);
     const GiNaC::numeric inverse = 1 / numeric_of(GiNaC::sqrt(length2));
     for (auto& c : g) c *= inverse;
     return g;
@@ -147,7 +152,7 @@ class Projection final : public OffsetConstruction {
     at.use_angle_addition(angle_addition_);
     const Environment* estimate = &at.base();
     std::vector<NodeId> point = at.point();
-    static_assert(kSmallAngleMax == 1.0, "the clamp below compares d^2 with 1");
+    static_assert(kSmallAngleMax == 1.0, "the clamp below compares h with 1");
     for (int j = 0; j <= projections_; ++j) {
       const std::vector<NodeId> g = at.gradient(*estimate);
       NodeId step = h(point);
@@ -159,22 +164,26 @@ class Projection final : public OffsetConstruction {
         point = q.point;
         continue;
       }
-      // d_i = h g_i / |g| and d_i^2 = (h g_i)^2 / |g|^2: the small-angle polynomials start from d^2,
-      // which needs a division but no square root, so the square root overlaps with them.
+      // |d_i| <= |h| with d = h n, so clamping h to [-1, 1] once keeps every d_i within the
+      // small-angle polynomials' range; NaN maps to 1, which keeps F(q) finite.
+      NodeId zero = program.constant(0), one = program.constant(1), minus_one = program.constant(-1);
+      step = program.select(program.less_eq(step, one),
+                            program.select(program.less_eq(minus_one, step), step, minus_one), one);
+      // d_i = g_i (h / |g|) and d_i^2 = g_i^2 (h^2 / |g|^2): the polynomials start from d^2, which
+      // needs the division but no square root, and 1/|g| = sqrt(|g|^2) / |g|^2 runs the square root
+      // beside the division instead of after it. Below FLT_MIN, |g|^2 counts as zero (n = 0), which
+      // keeps 1/|g|^2 finite in float and double alike.
       std::vector<NodeId> squares;
       for (NodeId c : g) squares.push_back(program.mul(c, c));
       NodeId length2 = program.sum(squares);
-      NodeId zero = program.constant(0), one = program.constant(1);
-      NodeId w = program.select(program.greater(length2, zero), program.div(one, length2), zero);
-      NodeId inverse = program.sqrt(w);
+      NodeId w = program.select(program.greater(length2, program.constant(kTinyLength2)),
+                                program.div(one, length2), zero);
+      NodeId h_inverse = program.mul(step, program.mul(program.sqrt(length2), w));
+      NodeId step2 = program.mul(step, step);
       std::vector<NodeId> d, d2;
-      for (NodeId c : g) {
-        NodeId u = program.mul(step, c);
-        NodeId di = program.mul(u, inverse), zi = program.mul(program.mul(u, u), w);
-        // |d_i| <= kSmallAngleMax (= 1): beyond, d_i = +-1. NaN maps to -1: finite F(q) still.
-        NodeId inside = program.less_eq(zi, one);
-        d.push_back(program.select(inside, di, program.select(program.greater(di, zero), one, program.neg(one))));
-        d2.push_back(program.select(inside, zi, one));
+      for (size_t i = 0; i < g.size(); ++i) {
+        d.push_back(program.mul(g[i], h_inverse));
+        d2.push_back(program.mul(program.mul(squares[i], step2), w));
       }
       const auto q = at.displaced(d, d2);
       estimate = q.env;
@@ -189,15 +198,13 @@ class Projection final : public OffsetConstruction {
     std::vector<GiNaC::numeric> estimate = p;
     for (int j = 0; j <= projections_; ++j) {
       auto scope = at.at(estimate);
-      const auto n = unit(at.gradient(scope));
-      const GiNaC::numeric step = h(estimate);
+      const auto n = unit(at.gradient(scope), angle_addition_ ? GiNaC::numeric(kTinyLength2) : GiNaC::numeric(0));
+      GiNaC::numeric step = h(estimate);
+      // The same clamp as the lowering: |h| <= 1, so every |d_i| <= 1.
+      if (angle_addition_ && step > limit) step = limit;
+      if (angle_addition_ && step < -limit) step = -limit;
       std::vector<GiNaC::numeric> next;
-      for (size_t i = 0; i < p.size(); ++i) {
-        GiNaC::numeric d = step * n[i];
-        // The same clamp as the lowering: |d| <= 1, else d = +-1.
-        if (angle_addition_ && !(d * d <= limit * limit)) d = d > 0 ? limit : -limit;
-        next.push_back(p[i] - d);
-      }
+      for (size_t i = 0; i < p.size(); ++i) next.push_back(p[i] - step * n[i]);
       estimate = std::move(next);
     }
     return estimate;
