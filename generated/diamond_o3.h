@@ -57,11 +57,15 @@
 
 #ifndef OFFSETGEN_SCALAR_TRIG_DOUBLE_V1
 #define OFFSETGEN_SCALAR_TRIG_DOUBLE_V1
+#include <stdint.h>
+#include <string.h>
 /* C++'s -Wold-style-cast and C's lack of static_cast: one spelling of the int conversion for both. */
 #ifdef __cplusplus
 #define OFFSETGEN_TRIG_INT_(x) static_cast<int>(x)
+#define OFFSETGEN_TRIG_U64_(x) static_cast<uint64_t>(x)
 #else
 #define OFFSETGEN_TRIG_INT_(x) ((int)(x))
+#define OFFSETGEN_TRIG_U64_(x) ((uint64_t)(x))
 #endif
 /* Adding and subtracting 1.5 * 2^52 rounds to an integer only under IEEE evaluation in double. */
 #if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
@@ -69,6 +73,21 @@
 #else
 #define OFFSETGEN_TRIG_ROUND_(v) (((v) + 6755399441055744.0) - 6755399441055744.0)
 #endif
+/* The polynomial (s when even, c when odd) and sign of a quadrant, by bit masks rather than
+ * branches: the time does not depend on the data, and scattered points (sphere tracing, particles)
+ * do not pay a mispredicted branch per call. */
+static inline double offsetgen_trig_pick(double s, double c, int quadrant)
+{
+    uint64_t sb, cb, ub;
+    double u;
+    const uint64_t odd = UINT64_C(0) - OFFSETGEN_TRIG_U64_(quadrant & 1);
+    memcpy(&sb, &s, sizeof sb);
+    memcpy(&cb, &c, sizeof cb);
+    ub = ((cb & odd) | (sb & ~odd)) ^ (OFFSETGEN_TRIG_U64_(quadrant & 2) << 62);
+    memcpy(&u, &ub, sizeof u);
+    return u;
+}
+
 /* sin and cos for the scalar functions, inline: libm's sin and cos cost more than the rest of a
  * low-order offset. The same reduction and polynomials as the batch helpers (within 1.5 ulp of
  * libm), so the scalar and batch functions agree to the last bits. a * 2/pi is rounded by adding
@@ -87,8 +106,7 @@ static inline double offsetgen_sin(double a)
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double u = (qi & 1) ? c : s;
-    return (fabs(a) <= 1.0e8) ? ((qi & 2) ? -u : u) : sin(a);
+    return (fabs(a) <= 1.0e8) ? offsetgen_trig_pick(s, c, qi) : sin(a);
 #endif
 }
 
@@ -103,11 +121,11 @@ static inline double offsetgen_cos(double a)
     const double z = r * r;
     const double s = r + r * z * (((((1.58962301576546568e-10 * z - 2.50507477628578073e-08) * z + 2.75573136213857245e-06) * z - 1.98412698295895386e-04) * z + 8.33333333332211859e-03) * z - 1.66666666666666307e-01);
     const double c = 1.0 - 0.5 * z + z * z * (((((-1.13585365213876817e-11 * z + 2.08757008419747317e-09) * z - 2.75573141792967388e-07) * z + 2.48015872888517045e-05) * z - 1.38888888888730564e-03) * z + 4.16666666666665929e-02);
-    const double u = (qi & 1) ? s : c;
-    return (fabs(a) <= 1.0e8) ? (((qi + 1) & 2) ? -u : u) : cos(a);
+    return (fabs(a) <= 1.0e8) ? offsetgen_trig_pick(s, c, qi + 1) : cos(a);
 #endif
 }
 #undef OFFSETGEN_TRIG_INT_
+#undef OFFSETGEN_TRIG_U64_
 #undef OFFSETGEN_TRIG_ROUND_
 #endif /* OFFSETGEN_SCALAR_TRIG_DOUBLE_V1 */
 
@@ -467,10 +485,14 @@ static inline void diamond_o3_normal(double x, double y, double z, double h, dou
 
 #ifndef OFFSETGEN_SCALAR_TRIG_FLOAT_V1
 #define OFFSETGEN_SCALAR_TRIG_FLOAT_V1
+#include <stdint.h>
+#include <string.h>
 #ifdef __cplusplus
 #define OFFSETGEN_TRIG_INTF_(x) static_cast<int>(x)
+#define OFFSETGEN_TRIG_U32_(x) static_cast<uint32_t>(x)
 #else
 #define OFFSETGEN_TRIG_INTF_(x) ((int)(x))
+#define OFFSETGEN_TRIG_U32_(x) ((uint32_t)(x))
 #endif
 /* Adding and subtracting 1.5 * 2^23 rounds to an integer only under IEEE evaluation in float. */
 #if defined(__FAST_MATH__) || (defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0)
@@ -481,6 +503,19 @@ static inline void diamond_o3_normal(double x, double y, double z, double h, dou
 /* Float sin and cos for the scalar functions: the batch helpers' reduction and Cephes polynomials,
  * with the quadrant rounded as in the double helpers; sinf/cosf beyond 8192.0 radians, or everywhere with
  * OFFSETGEN_LIBM_TRIG defined. */
+/* As offsetgen_trig_pick, in float. */
+static inline float offsetgen_trig_pickf(float s, float c, int quadrant)
+{
+    uint32_t sb, cb, ub;
+    float u;
+    const uint32_t odd = UINT32_C(0) - OFFSETGEN_TRIG_U32_(quadrant & 1);
+    memcpy(&sb, &s, sizeof sb);
+    memcpy(&cb, &c, sizeof cb);
+    ub = ((cb & odd) | (sb & ~odd)) ^ (OFFSETGEN_TRIG_U32_(quadrant & 2) << 30);
+    memcpy(&u, &ub, sizeof u);
+    return u;
+}
+
 static inline float offsetgen_sinf(float a)
 {
 #ifdef OFFSETGEN_LIBM_TRIG
@@ -492,8 +527,7 @@ static inline float offsetgen_sinf(float a)
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float u = (qi & 1) ? c : s;
-    return (fabsf(a) <= 8192.0f) ? ((qi & 2) ? -u : u) : sinf(a);
+    return (fabsf(a) <= 8192.0f) ? offsetgen_trig_pickf(s, c, qi) : sinf(a);
 #endif
 }
 
@@ -508,11 +542,11 @@ static inline float offsetgen_cosf(float a)
     const float z = r * r;
     const float s = r + r * z * ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f);
     const float c = 1.0f - 0.5f * z + z * z * ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f);
-    const float u = (qi & 1) ? s : c;
-    return (fabsf(a) <= 8192.0f) ? (((qi + 1) & 2) ? -u : u) : cosf(a);
+    return (fabsf(a) <= 8192.0f) ? offsetgen_trig_pickf(s, c, qi + 1) : cosf(a);
 #endif
 }
 #undef OFFSETGEN_TRIG_INTF_
+#undef OFFSETGEN_TRIG_U32_
 #undef OFFSETGEN_TRIG_ROUNDF_
 #endif /* OFFSETGEN_SCALAR_TRIG_FLOAT_V1 */
 /* F, the field; the surface is F = 0.
