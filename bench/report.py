@@ -688,7 +688,7 @@ def main(argv=None):
         w("### Inline sin/cos against libm's")
         w("")
         w("The scalar functions call the header's inline `offsetgen_sin`/`offsetgen_cos` (the batch API's Cody-Waite "
-          "reduction and polynomials, within 1.5 ulp of libm, int-conversion quadrant; libm beyond |argument| 1e8). "
+          "reduction and polynomials, within 1.5 ulp of libm, the quadrant rounded by adding 1.5 * 2^52 and picked by bit masks; libm beyond |argument| 1e8). "
           "Defining `OFFSETGEN_LIBM_TRIG` before the `#include` makes them call libm's `sin`/`cos` instead: the "
           "`libm` columns are the same header built that way, in the same executable. libm's `sincos` costs ~11 ns "
           "per distinct argument (3 per point for these surfaces), which dominates the low orders.")
