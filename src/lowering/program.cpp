@@ -245,7 +245,8 @@ NodeId Program::call(Fn fn, NodeId a) {
   if (is_const(a)) return constant(apply_function(fn, node(a).value));
   if (node(a).op == Op::Neg) {  // odd and even symmetry keeps one argument per sin/cos pair
     if (fn == Fn::Cos || fn == Fn::Cosh || fn == Fn::CosPi) return call(fn, node(a).a);
-    if (fn == Fn::Sin || fn == Fn::SinPi || fn == Fn::Tan || fn == Fn::Sinh || fn == Fn::Tanh || fn == Fn::Atan || fn == Fn::Asin)
+    if (fn == Fn::Sin || fn == Fn::SinPi || fn == Fn::Tan || fn == Fn::Sinh || fn == Fn::Tanh || fn == Fn::Atan ||
+        fn == Fn::Asin)
       return neg(call(fn, node(a).a));
   }
   Node n;

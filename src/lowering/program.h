@@ -31,7 +31,8 @@ enum class Op : uint8_t {
 enum class Fn : uint8_t { None, Sin, Cos, Tan, Exp, Log, Sinh, Cosh, Tanh, Atan, Asin, Acos, SinPi, CosPi };
 
 const char* function_name(Fn fn);  // C/GLSL spelling of the double-precision name, e.g. "sin"
-double apply_function(Fn fn, double value);  // in double; SinPi/CosPi reduce their argument exactly
+// fn(value) in double; SinPi and CosPi reduce their argument exactly.
+double apply_function(Fn fn, double value);
 
 struct Node {
   Op op = Op::Const;
