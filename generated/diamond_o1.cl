@@ -62,22 +62,16 @@
  */
 float diamond_o1_fieldf(float3 p)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * p.y;
-    float _c2;
-    const float _s2 = sincos(_t2, &_c2);
-    const float _t3 = _c2;
-    const float _t4 = 6.28318548f * p.x;
-    float _c0;
-    const float _s0 = sincos(_t4, &_c0);
-    const float _t5 = _s0;
-    const float _t6 = _s1;
-    const float _t7 = _s2;
-    const float _t8 = _c0;
-    return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = p.y * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = sinpi(_t0);
+    const float _t7 = sinpi(_t2);
+    const float _t8 = cospi(_t4);
+    return _t1 * (_t3 * _t5) + _t6 * (_t7 * _t5) + _t8 * _t3 * _t6 + _t1 * (_t7 * _t8);
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -85,34 +79,28 @@ float diamond_o1_fieldf(float3 p)
  */
 float diamond_o1_offsetf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * p.y;
-    float _c2;
-    const float _s2 = sincos(_t2, &_c2);
-    const float _t3 = _c2;
-    const float _t4 = _t1 * _t3;
-    const float _t5 = 6.28318548f * p.x;
-    float _c0;
-    const float _s0 = sincos(_t5, &_c0);
-    const float _t6 = _s0;
-    const float _t7 = _s1;
-    const float _t8 = _s2;
-    const float _t9 = _t7 * _t8;
-    const float _t10 = _t1 * _t8;
-    const float _t11 = _c0;
-    const float _t12 = _t7 * _t3;
-    const float _t13 = _t4 * _t11;
-    const float _t14 = _t10 * _t6;
-    const float _t15 = _t12 * _t6;
-    const float _t16 = _t11 * _t9;
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = p.y * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = _t3 * _t5;
+    const float _t7 = sinpi(_t0);
+    const float _t8 = sinpi(_t2);
+    const float _t9 = _t8 * _t5;
+    const float _t10 = cospi(_t4);
+    const float _t11 = _t10 * _t3;
+    const float _t12 = _t8 * _t10;
+    const float _t13 = _t1 * _t9;
+    const float _t14 = _t1 * _t11;
+    const float _t15 = _t7 * _t12;
+    const float _t16 = _t7 * _t6;
     const float _t17 = _t13 + _t14 - _t15 - _t16;
-    const float _t18 = _t13 + _t16 - _t15 - _t14;
-    const float _t19 = _t13 + _t15 - _t14 - _t16;
+    const float _t18 = _t16 + _t14 - _t15 - _t13;
+    const float _t19 = _t14 + _t15 - _t16 - _t13;
     const float _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    return _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.28318548f * h * ((_t20 <= 1.73205256f) ? (((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f)) : 1.73205256f);
+    return _t1 * _t6 + _t7 * _t9 + _t11 * _t7 + _t1 * _t12 - 6.28318548f * h * ((_t20 <= 1.73205256f) ? (((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f)) : 1.73205256f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -120,36 +108,30 @@ float diamond_o1_offsetf(float3 p, float h)
  */
 float diamond_o1_shellf(float3 p, float t)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c2;
-    const float _s2 = sincos(_t0, &_c2);
-    const float _t1 = _c2;
-    const float _t2 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _c0;
-    const float _t4 = _t1 * _t3;
-    const float _t5 = 6.28318548f * p.x;
-    float _c1;
-    const float _s1 = sincos(_t5, &_c1);
-    const float _t6 = _c1;
-    const float _t7 = _t4 * _t6;
-    const float _t8 = _s0;
-    const float _t9 = _t1 * _t8;
-    const float _t10 = _s1;
-    const float _t11 = _t9 * _t10;
-    const float _t12 = _s2;
-    const float _t13 = _t12 * _t3;
-    const float _t14 = _t13 * _t10;
-    const float _t15 = _t12 * _t8;
-    const float _t16 = _t6 * _t15;
-    const float _t17 = _t7 + _t11 - _t14 - _t16;
-    const float _t18 = _t7 + _t16 - _t14 - _t11;
-    const float _t19 = _t7 + _t14 - _t11 - _t16;
-    const float _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    const float _t21 = 6.28318548f * (t * 0.5f) * ((_t20 <= 1.73205256f) ? (((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f)) : 1.73205256f);
-    const float _t22 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
-    return (_t21 + _t22) * (_t22 - _t21);
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = p.y * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = _t3 * _t5;
+    const float _t7 = sinpi(_t0);
+    const float _t8 = sinpi(_t2);
+    const float _t9 = _t8 * _t5;
+    const float _t10 = cospi(_t4);
+    const float _t11 = _t10 * _t3;
+    const float _t12 = _t8 * _t10;
+    const float _t13 = _t1 * _t6 + _t7 * _t9 + _t11 * _t7 + _t1 * _t12;
+    const float _t14 = _t1 * _t9;
+    const float _t15 = _t1 * _t11;
+    const float _t16 = _t7 * _t12;
+    const float _t17 = _t7 * _t6;
+    const float _t18 = _t14 + _t15 - _t16 - _t17;
+    const float _t19 = _t17 + _t15 - _t16 - _t14;
+    const float _t20 = _t15 + _t16 - _t17 - _t14;
+    const float _t21 = sqrt(_t18 * _t18 + _t19 * _t19 + _t20 * _t20);
+    const float _t22 = ((_t21 <= 1.73205256f) ? (((-1.73205256f) <= _t21) ? _t21 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t * 0.5f));
+    return (_t13 - _t22) * (_t13 + _t22);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -157,59 +139,53 @@ float diamond_o1_shellf(float3 p, float t)
  */
 float3 diamond_o1_normalf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c2;
-    const float _s2 = sincos(_t0, &_c2);
-    const float _t1 = _c2;
-    const float _t2 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _c0;
-    const float _t4 = _t1 * _t3;
-    const float _t5 = 6.28318548f * p.x;
-    float _c1;
-    const float _s1 = sincos(_t5, &_c1);
-    const float _t6 = _c1;
-    const float _t7 = _t4 * _t6;
-    const float _t8 = _s0;
-    const float _t9 = _t1 * _t8;
-    const float _t10 = _s1;
-    const float _t11 = _t9 * _t10;
-    const float _t12 = _s2;
-    const float _t13 = _t12 * _t3;
-    const float _t14 = _t13 * _t10;
-    const float _t15 = _t12 * _t8;
-    const float _t16 = _t6 * _t15;
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = p.y * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = _t3 * _t5;
+    const float _t7 = _t1 * _t6;
+    const float _t8 = cospi(_t4);
+    const float _t9 = cospi(_t2);
+    const float _t10 = _t8 * _t9;
+    const float _t11 = _t1 * _t10;
+    const float _t12 = sinpi(_t0);
+    const float _t13 = _t3 * _t8;
+    const float _t14 = _t12 * _t13;
+    const float _t15 = _t9 * _t5;
+    const float _t16 = _t12 * _t15;
     const float _t17 = _t7 + _t11 - _t14 - _t16;
-    const float _t18 = _t7 + _t16 - _t14 - _t11;
-    const float _t19 = _t7 + _t14 - _t11 - _t16;
+    const float _t18 = _t16 + _t11 - _t14 - _t7;
+    const float _t19 = _t11 + _t14 - _t16 - _t7;
     const float _t20 = _t17 * _t17 + _t18 * _t18 + _t19 * _t19;
     const float _t21 = sqrt(_t20);
     const bool _t22 = _t21 <= 1.73205256f;
     const bool _t23 = (-1.73205256f) <= _t21;
     const float _t24 = 6.28318548f * h;
-    const float _t25 = _t10 * _t15;
-    const float _t26 = _t13 * _t6;
-    const float _t27 = _t9 * _t6;
-    const float _t28 = _t4 * _t10;
+    const float _t25 = _t1 * _t13;
+    const float _t26 = _t12 * _t6;
+    const float _t27 = _t1 * _t15;
+    const float _t28 = _t10 * _t12;
     const float _t29 = _t25 + _t26 - _t27 - _t28;
-    const float _t30 = _t25 + _t28 - _t27 - _t26;
-    const float _t31 = _t25 + _t27;
-    const float _t32 = _t28 + _t31 + _t26;
+    const float _t30 = _t28 + _t26 - _t27 - _t25;
+    const float _t31 = _t27 + _t26;
+    const float _t32 = _t31 + _t28 + _t25;
     const float _t33 = rsqrt(_t20);
-    const float _t34 = (_t22) ? ((_t23) ? _t19 - _t24 * ((_t29 * _t18 + _t30 * _t17 - _t19 * _t32) * _t33) : _t19) : _t19;
-    const float _t35 = _t31 - _t28 - _t26;
-    const float _t36 = (_t22) ? ((_t23) ? _t17 - _t24 * (_t33 * (_t19 * _t30 + _t35 * _t18 - _t32 * _t17)) : _t17) : _t17;
-    const float _t37 = (_t22) ? ((_t23) ? _t18 - _t24 * (_t33 * (_t35 * _t17 + _t19 * _t29 - _t18 * _t32)) : _t18) : _t18;
+    const float _t34 = (_t22) ? ((_t23) ? _t19 - _t24 * ((_t17 * _t29 + _t18 * _t30 - _t32 * _t19) * _t33) : _t19) : _t19;
+    const float _t35 = _t31 - _t28 - _t25;
+    const float _t36 = (_t22) ? ((_t23) ? _t17 - _t24 * (_t33 * (_t18 * _t35 + _t19 * _t29 - _t32 * _t17)) : _t17) : _t17;
+    const float _t37 = (_t22) ? ((_t23) ? _t18 - _t24 * ((_t19 * _t30 + _t17 * _t35 - _t18 * _t32) * _t33) : _t18) : _t18;
     const float _t38 = _t34 * _t34 + (_t36 * _t36 + _t37 * _t37);
     const bool _t39 = _t38 > 0.0f;
     const bool _t40 = _t38 <= 1.00000002e+30f;
     const float _t41 = rsqrt(_t38);
     const float _t42 = (_t20 > 0.0f) ? _t33 : 0.0f;
-    const float _t43 = _t18 * _t42;
+    const float _t43 = _t17 * _t42;
     const float _t44 = _t19 * _t42;
-    const float _t45 = _t42 * _t17;
-    return (float3)((_t39) ? ((_t40) ? _t37 * _t41 : _t43) : _t43, (_t39) ? ((_t40) ? _t34 * _t41 : _t44) : _t44, (_t39) ? ((_t40) ? _t36 * _t41 : _t45) : _t45);
+    const float _t45 = _t18 * _t42;
+    return (float3)((_t39) ? ((_t40) ? _t36 * _t41 : _t43) : _t43, (_t39) ? ((_t40) ? _t41 * _t34 : _t44) : _t44, (_t39) ? ((_t40) ? _t41 * _t37 : _t45) : _t45);
 }
 
 #ifdef cl_khr_fp64
@@ -221,22 +197,16 @@ float3 diamond_o1_normalf(float3 p, float h)
  */
 double diamond_o1_field(double3 p)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c2;
-    const double _s2 = sincos(_t2, &_c2);
-    const double _t3 = _c2;
-    const double _t4 = 6.2831853071795862 * p.x;
-    double _c0;
-    const double _s0 = sincos(_t4, &_c0);
-    const double _t5 = _s0;
-    const double _t6 = _s1;
-    const double _t7 = _s2;
-    const double _t8 = _c0;
-    return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
+    const double _t0 = p.x * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = p.y * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = sinpi(_t0);
+    const double _t7 = sinpi(_t2);
+    const double _t8 = cospi(_t4);
+    return _t1 * (_t3 * _t5) + _t6 * (_t7 * _t5) + _t8 * _t3 * _t6 + _t1 * (_t7 * _t8);
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -244,34 +214,28 @@ double diamond_o1_field(double3 p)
  */
 double diamond_o1_offset(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c2;
-    const double _s2 = sincos(_t2, &_c2);
-    const double _t3 = _c2;
-    const double _t4 = _t1 * _t3;
-    const double _t5 = 6.2831853071795862 * p.x;
-    double _c0;
-    const double _s0 = sincos(_t5, &_c0);
-    const double _t6 = _s0;
-    const double _t7 = _s1;
-    const double _t8 = _s2;
-    const double _t9 = _t7 * _t8;
-    const double _t10 = _t1 * _t8;
-    const double _t11 = _c0;
-    const double _t12 = _t7 * _t3;
-    const double _t13 = _t4 * _t11;
-    const double _t14 = _t10 * _t6;
-    const double _t15 = _t12 * _t6;
-    const double _t16 = _t11 * _t9;
+    const double _t0 = p.x * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = p.y * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = _t3 * _t5;
+    const double _t7 = sinpi(_t0);
+    const double _t8 = sinpi(_t2);
+    const double _t9 = _t8 * _t5;
+    const double _t10 = cospi(_t4);
+    const double _t11 = _t10 * _t3;
+    const double _t12 = _t8 * _t10;
+    const double _t13 = _t1 * _t9;
+    const double _t14 = _t1 * _t11;
+    const double _t15 = _t7 * _t12;
+    const double _t16 = _t7 * _t6;
     const double _t17 = _t13 + _t14 - _t15 - _t16;
-    const double _t18 = _t13 + _t16 - _t15 - _t14;
-    const double _t19 = _t13 + _t15 - _t14 - _t16;
+    const double _t18 = _t16 + _t14 - _t15 - _t13;
+    const double _t19 = _t14 + _t15 - _t16 - _t13;
     const double _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    return _t4 * _t6 + (_t6 * _t9 + _t10 * _t11) + _t12 * _t11 - 6.2831853071795862 * h * ((_t20 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846)) : 1.7320525396196846);
+    return _t1 * _t6 + _t7 * _t9 + _t11 * _t7 + _t1 * _t12 - 6.2831853071795862 * h * ((_t20 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846)) : 1.7320525396196846);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -279,36 +243,30 @@ double diamond_o1_offset(double3 p, double h)
  */
 double diamond_o1_shell(double3 p, double t)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c2;
-    const double _s2 = sincos(_t0, &_c2);
-    const double _t1 = _c2;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _c0;
-    const double _t4 = _t1 * _t3;
-    const double _t5 = 6.2831853071795862 * p.x;
-    double _c1;
-    const double _s1 = sincos(_t5, &_c1);
-    const double _t6 = _c1;
-    const double _t7 = _t4 * _t6;
-    const double _t8 = _s0;
-    const double _t9 = _t1 * _t8;
-    const double _t10 = _s1;
-    const double _t11 = _t9 * _t10;
-    const double _t12 = _s2;
-    const double _t13 = _t12 * _t3;
-    const double _t14 = _t13 * _t10;
-    const double _t15 = _t12 * _t8;
-    const double _t16 = _t6 * _t15;
-    const double _t17 = _t7 + _t11 - _t14 - _t16;
-    const double _t18 = _t7 + _t16 - _t14 - _t11;
-    const double _t19 = _t7 + _t14 - _t11 - _t16;
-    const double _t20 = sqrt(_t17 * _t17 + _t18 * _t18 + _t19 * _t19);
-    const double _t21 = 6.2831853071795862 * (t * 0.5) * ((_t20 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846)) : 1.7320525396196846);
-    const double _t22 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
-    return (_t21 + _t22) * (_t22 - _t21);
+    const double _t0 = p.x * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = p.y * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = _t3 * _t5;
+    const double _t7 = sinpi(_t0);
+    const double _t8 = sinpi(_t2);
+    const double _t9 = _t8 * _t5;
+    const double _t10 = cospi(_t4);
+    const double _t11 = _t10 * _t3;
+    const double _t12 = _t8 * _t10;
+    const double _t13 = _t1 * _t6 + _t7 * _t9 + _t11 * _t7 + _t1 * _t12;
+    const double _t14 = _t1 * _t9;
+    const double _t15 = _t1 * _t11;
+    const double _t16 = _t7 * _t12;
+    const double _t17 = _t7 * _t6;
+    const double _t18 = _t14 + _t15 - _t16 - _t17;
+    const double _t19 = _t17 + _t15 - _t16 - _t14;
+    const double _t20 = _t15 + _t16 - _t17 - _t14;
+    const double _t21 = sqrt(_t18 * _t18 + _t19 * _t19 + _t20 * _t20);
+    const double _t22 = ((_t21 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t21) ? _t21 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t * 0.5));
+    return (_t13 - _t22) * (_t13 + _t22);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -316,59 +274,53 @@ double diamond_o1_shell(double3 p, double t)
  */
 double3 diamond_o1_normal(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c2;
-    const double _s2 = sincos(_t0, &_c2);
-    const double _t1 = _c2;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _c0;
-    const double _t4 = _t1 * _t3;
-    const double _t5 = 6.2831853071795862 * p.x;
-    double _c1;
-    const double _s1 = sincos(_t5, &_c1);
-    const double _t6 = _c1;
-    const double _t7 = _t4 * _t6;
-    const double _t8 = _s0;
-    const double _t9 = _t1 * _t8;
-    const double _t10 = _s1;
-    const double _t11 = _t9 * _t10;
-    const double _t12 = _s2;
-    const double _t13 = _t12 * _t3;
-    const double _t14 = _t13 * _t10;
-    const double _t15 = _t12 * _t8;
-    const double _t16 = _t6 * _t15;
+    const double _t0 = p.x * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = p.y * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = _t3 * _t5;
+    const double _t7 = _t1 * _t6;
+    const double _t8 = cospi(_t4);
+    const double _t9 = cospi(_t2);
+    const double _t10 = _t8 * _t9;
+    const double _t11 = _t1 * _t10;
+    const double _t12 = sinpi(_t0);
+    const double _t13 = _t3 * _t8;
+    const double _t14 = _t12 * _t13;
+    const double _t15 = _t9 * _t5;
+    const double _t16 = _t12 * _t15;
     const double _t17 = _t7 + _t11 - _t14 - _t16;
-    const double _t18 = _t7 + _t16 - _t14 - _t11;
-    const double _t19 = _t7 + _t14 - _t11 - _t16;
+    const double _t18 = _t16 + _t11 - _t14 - _t7;
+    const double _t19 = _t11 + _t14 - _t16 - _t7;
     const double _t20 = _t17 * _t17 + _t18 * _t18 + _t19 * _t19;
     const double _t21 = sqrt(_t20);
     const bool _t22 = _t21 <= 1.7320525396196846;
     const bool _t23 = (-1.7320525396196846) <= _t21;
     const double _t24 = 6.2831853071795862 * h;
-    const double _t25 = _t10 * _t15;
-    const double _t26 = _t13 * _t6;
-    const double _t27 = _t9 * _t6;
-    const double _t28 = _t4 * _t10;
+    const double _t25 = _t1 * _t13;
+    const double _t26 = _t12 * _t6;
+    const double _t27 = _t1 * _t15;
+    const double _t28 = _t10 * _t12;
     const double _t29 = _t25 + _t26 - _t27 - _t28;
-    const double _t30 = _t25 + _t28 - _t27 - _t26;
-    const double _t31 = _t25 + _t27;
-    const double _t32 = _t28 + _t31 + _t26;
+    const double _t30 = _t28 + _t26 - _t27 - _t25;
+    const double _t31 = _t27 + _t26;
+    const double _t32 = _t31 + _t28 + _t25;
     const double _t33 = rsqrt(_t20);
-    const double _t34 = (_t22) ? ((_t23) ? _t19 - _t24 * ((_t29 * _t18 + _t30 * _t17 - _t19 * _t32) * _t33) : _t19) : _t19;
-    const double _t35 = _t31 - _t28 - _t26;
-    const double _t36 = (_t22) ? ((_t23) ? _t17 - _t24 * (_t33 * (_t19 * _t30 + _t35 * _t18 - _t32 * _t17)) : _t17) : _t17;
-    const double _t37 = (_t22) ? ((_t23) ? _t18 - _t24 * (_t33 * (_t35 * _t17 + _t19 * _t29 - _t18 * _t32)) : _t18) : _t18;
+    const double _t34 = (_t22) ? ((_t23) ? _t19 - _t24 * ((_t17 * _t29 + _t18 * _t30 - _t32 * _t19) * _t33) : _t19) : _t19;
+    const double _t35 = _t31 - _t28 - _t25;
+    const double _t36 = (_t22) ? ((_t23) ? _t17 - _t24 * (_t33 * (_t18 * _t35 + _t19 * _t29 - _t32 * _t17)) : _t17) : _t17;
+    const double _t37 = (_t22) ? ((_t23) ? _t18 - _t24 * ((_t19 * _t30 + _t17 * _t35 - _t18 * _t32) * _t33) : _t18) : _t18;
     const double _t38 = _t34 * _t34 + (_t36 * _t36 + _t37 * _t37);
     const bool _t39 = _t38 > 0.0;
     const bool _t40 = _t38 <= 1.0e+30;
     const double _t41 = rsqrt(_t38);
     const double _t42 = (_t20 > 0.0) ? _t33 : 0.0;
-    const double _t43 = _t18 * _t42;
+    const double _t43 = _t17 * _t42;
     const double _t44 = _t19 * _t42;
-    const double _t45 = _t42 * _t17;
-    return (double3)((_t39) ? ((_t40) ? _t37 * _t41 : _t43) : _t43, (_t39) ? ((_t40) ? _t34 * _t41 : _t44) : _t44, (_t39) ? ((_t40) ? _t36 * _t41 : _t45) : _t45);
+    const double _t45 = _t18 * _t42;
+    return (double3)((_t39) ? ((_t40) ? _t36 * _t41 : _t43) : _t43, (_t39) ? ((_t40) ? _t41 * _t34 : _t44) : _t44, (_t39) ? ((_t40) ? _t41 * _t37 : _t45) : _t45);
 }
 
 #endif /* cl_khr_fp64 */

@@ -62,16 +62,10 @@
  */
 float gyroid_o1_fieldf(float3 p)
 {
-    const float _t0 = p.z * 6.28318548f;
-    const float _t1 = 6.28318548f * p.y;
-    const float _t2 = 6.28318548f * p.x;
-    float _c0;
-    const float _s0 = sincos(_t1, &_c0);
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    float _c2;
-    const float _s2 = sincos(_t2, &_c2);
-    return _c1 * _s0 + _s1 * _c2 + _c0 * _s2;
+    const float _t0 = p.y * 2.0f;
+    const float _t1 = p.x * 2.0f;
+    const float _t2 = p.z * 2.0f;
+    return cospi(_t0) * sinpi(_t1) + (cospi(_t1) * sinpi(_t2) + cospi(_t2) * sinpi(_t0));
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -79,26 +73,20 @@ float gyroid_o1_fieldf(float3 p)
  */
 float gyroid_o1_offsetf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _s0;
-    const float _t4 = _s1;
-    const float _t5 = 6.28318548f * p.x;
-    float _c2;
-    const float _s2 = sincos(_t5, &_c2);
-    const float _t6 = _c2;
-    const float _t7 = _c0;
-    const float _t8 = _s2;
-    const float _t9 = _t1 * _t6 - _t4 * _t3;
+    const float _t0 = p.y * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.x * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = cospi(_t2);
+    const float _t5 = p.z * 2.0f;
+    const float _t6 = sinpi(_t5);
+    const float _t7 = cospi(_t5);
+    const float _t8 = sinpi(_t0);
+    const float _t9 = _t6 * _t3 - _t4 * _t1;
     const float _t10 = _t3 * _t8 - _t1 * _t7;
-    const float _t11 = _t4 * _t8 - _t7 * _t6;
-    const float _t12 = sqrt(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.28318548f * h * ((_t12 <= 1.73205256f) ? (((-1.73205256f) <= _t12) ? _t12 : (-1.73205256f)) : 1.73205256f);
+    const float _t11 = _t4 * _t7 - _t6 * _t8;
+    const float _t12 = sqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    return _t1 * _t3 + (_t4 * _t6 + _t7 * _t8) - 6.28318548f * h * ((_t12 <= 1.73205256f) ? (((-1.73205256f) <= _t12) ? _t12 : (-1.73205256f)) : 1.73205256f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -106,28 +94,22 @@ float gyroid_o1_offsetf(float3 p, float h)
  */
 float gyroid_o1_shellf(float3 p, float t)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _s0;
-    const float _t4 = _s1;
-    const float _t5 = 6.28318548f * p.x;
-    float _c2;
-    const float _s2 = sincos(_t5, &_c2);
-    const float _t6 = _c2;
-    const float _t7 = _c0;
-    const float _t8 = _s2;
-    const float _t9 = _t1 * _t3 + _t4 * _t6 + _t7 * _t8;
-    const float _t10 = _t1 * _t6 - _t4 * _t3;
-    const float _t11 = _t3 * _t8 - _t1 * _t7;
-    const float _t12 = _t4 * _t8 - _t7 * _t6;
-    const float _t13 = sqrt(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-    const float _t14 = ((_t13 <= 1.73205256f) ? (((-1.73205256f) <= _t13) ? _t13 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t * 0.5f));
-    return (_t9 - _t14) * (_t14 + _t9);
+    const float _t0 = p.z * 2.0f;
+    const float _t1 = sinpi(_t0);
+    const float _t2 = p.x * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = cospi(_t2);
+    const float _t5 = p.y * 2.0f;
+    const float _t6 = cospi(_t5);
+    const float _t7 = _t1 * _t3 - _t4 * _t6;
+    const float _t8 = sinpi(_t5);
+    const float _t9 = cospi(_t0);
+    const float _t10 = _t3 * _t8 - _t6 * _t9;
+    const float _t11 = _t4 * _t9 - _t1 * _t8;
+    const float _t12 = sqrt(_t7 * _t7 + (_t10 * _t10 + _t11 * _t11));
+    const float _t13 = ((_t12 <= 1.73205256f) ? (((-1.73205256f) <= _t12) ? _t12 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t * 0.5f));
+    const float _t14 = _t6 * _t3 + (_t4 * _t1 + _t9 * _t8);
+    return (_t13 + _t14) * (_t14 - _t13);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -135,50 +117,44 @@ float gyroid_o1_shellf(float3 p, float t)
  */
 float3 gyroid_o1_normalf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c0;
-    const float _s0 = sincos(_t0, &_c0);
-    const float _t1 = _c0;
-    const float _t2 = 6.28318548f * p.x;
-    float _c2;
-    const float _s2 = sincos(_t2, &_c2);
-    const float _t3 = _c2;
-    const float _t4 = _s0;
-    const float _t5 = 6.28318548f * p.y;
-    float _c1;
-    const float _s1 = sincos(_t5, &_c1);
-    const float _t6 = _s1;
+    const float _t0 = p.z * 2.0f;
+    const float _t1 = sinpi(_t0);
+    const float _t2 = p.x * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = cospi(_t2);
+    const float _t5 = p.y * 2.0f;
+    const float _t6 = cospi(_t5);
     const float _t7 = _t1 * _t3 - _t4 * _t6;
-    const float _t8 = _s2;
-    const float _t9 = _c1;
-    const float _t10 = _t6 * _t8 - _t1 * _t9;
-    const float _t11 = _t4 * _t8 - _t9 * _t3;
-    const float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
+    const float _t8 = sinpi(_t5);
+    const float _t9 = cospi(_t0);
+    const float _t10 = _t3 * _t8 - _t6 * _t9;
+    const float _t11 = _t4 * _t9 - _t1 * _t8;
+    const float _t12 = _t7 * _t7 + (_t10 * _t10 + _t11 * _t11);
     const float _t13 = sqrt(_t12);
     const bool _t14 = _t13 <= 1.73205256f;
     const bool _t15 = (-1.73205256f) <= _t13;
     const float _t16 = 6.28318548f * h;
     const float _t17 = rsqrt(_t12);
-    const float _t18 = _t4 * _t9;
-    const float _t19 = _t1 * _t8;
-    const float _t20 = _t1 * _t6;
-    const float _t21 = _t4 * _t3;
-    const float _t22 = (_t14) ? ((_t15) ? _t7 - _t16 * (_t17 * (_t18 * _t10 + _t19 * _t11 - _t7 * (_t20 + _t21))) : _t7) : _t7;
-    const float _t23 = _t9 * _t8;
-    const float _t24 = _t6 * _t3;
-    const float _t25 = -_t11;
-    const float _t26 = (_t14) ? ((_t15) ? -(_t16 * (_t17 * ((_t21 + _t23) * _t11 + _t10 * _t24 - _t7 * _t19)) + _t11) : _t25) : _t25;
-    const float _t27 = -_t10;
-    const float _t28 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t7 * _t18 - _t24 * _t11 - _t10 * (_t20 + _t23))) - _t10 : _t27) : _t27;
-    const float _t29 = _t22 * _t22 + _t26 * _t26 + _t28 * _t28;
+    const float _t18 = _t1 * _t6;
+    const float _t19 = _t4 * _t8;
+    const float _t20 = _t6 * _t3;
+    const float _t21 = _t9 * _t8;
+    const float _t22 = -_t10;
+    const float _t23 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t18 * _t11 - _t19 * _t7 - (_t20 + _t21) * _t10)) - _t10 : _t22) : _t22;
+    const float _t24 = _t4 * _t1;
+    const float _t25 = _t9 * _t3;
+    const float _t26 = -_t7;
+    const float _t27 = (_t14) ? ((_t15) ? -(_t7 + _t16 * (_t17 * (_t7 * (_t20 + _t24) + _t19 * _t10 - _t25 * _t11))) : _t26) : _t26;
+    const float _t28 = (_t14) ? ((_t15) ? _t11 - _t16 * ((_t7 * _t25 + _t18 * _t10 - (_t24 + _t21) * _t11) * _t17) : _t11) : _t11;
+    const float _t29 = _t23 * _t23 + (_t27 * _t27 + _t28 * _t28);
     const bool _t30 = _t29 > 0.0f;
     const bool _t31 = _t29 <= 1.00000002e+30f;
     const float _t32 = rsqrt(_t29);
     const float _t33 = (_t12 > 0.0f) ? _t17 : 0.0f;
-    const float _t34 = -(_t33 * _t11);
-    const float _t35 = -(_t10 * _t33);
-    const float _t36 = _t7 * _t33;
-    return (float3)((_t30) ? ((_t31) ? _t26 * _t32 : _t34) : _t34, (_t30) ? ((_t31) ? _t28 * _t32 : _t35) : _t35, (_t30) ? ((_t31) ? _t22 * _t32 : _t36) : _t36);
+    const float _t34 = -(_t33 * _t7);
+    const float _t35 = -(_t33 * _t10);
+    const float _t36 = _t33 * _t11;
+    return (float3)((_t30) ? ((_t31) ? _t32 * _t27 : _t34) : _t34, (_t30) ? ((_t31) ? _t23 * _t32 : _t35) : _t35, (_t30) ? ((_t31) ? _t28 * _t32 : _t36) : _t36);
 }
 
 #ifdef cl_khr_fp64
@@ -190,16 +166,10 @@ float3 gyroid_o1_normalf(float3 p, float h)
  */
 double gyroid_o1_field(double3 p)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    const double _t1 = 6.2831853071795862 * p.y;
-    const double _t2 = 6.2831853071795862 * p.x;
-    double _c0;
-    const double _s0 = sincos(_t1, &_c0);
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    double _c2;
-    const double _s2 = sincos(_t2, &_c2);
-    return _c1 * _s0 + _s1 * _c2 + _c0 * _s2;
+    const double _t0 = p.y * 2.0;
+    const double _t1 = p.x * 2.0;
+    const double _t2 = p.z * 2.0;
+    return cospi(_t0) * sinpi(_t1) + (cospi(_t1) * sinpi(_t2) + cospi(_t2) * sinpi(_t0));
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -207,26 +177,20 @@ double gyroid_o1_field(double3 p)
  */
 double gyroid_o1_offset(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _s0;
-    const double _t4 = _s1;
-    const double _t5 = 6.2831853071795862 * p.x;
-    double _c2;
-    const double _s2 = sincos(_t5, &_c2);
-    const double _t6 = _c2;
-    const double _t7 = _c0;
-    const double _t8 = _s2;
-    const double _t9 = _t1 * _t6 - _t4 * _t3;
+    const double _t0 = p.y * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.x * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = cospi(_t2);
+    const double _t5 = p.z * 2.0;
+    const double _t6 = sinpi(_t5);
+    const double _t7 = cospi(_t5);
+    const double _t8 = sinpi(_t0);
+    const double _t9 = _t6 * _t3 - _t4 * _t1;
     const double _t10 = _t3 * _t8 - _t1 * _t7;
-    const double _t11 = _t4 * _t8 - _t7 * _t6;
-    const double _t12 = sqrt(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.2831853071795862 * h * ((_t12 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t12) ? _t12 : (-1.7320525396196846)) : 1.7320525396196846);
+    const double _t11 = _t4 * _t7 - _t6 * _t8;
+    const double _t12 = sqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    return _t1 * _t3 + (_t4 * _t6 + _t7 * _t8) - 6.2831853071795862 * h * ((_t12 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t12) ? _t12 : (-1.7320525396196846)) : 1.7320525396196846);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -234,28 +198,22 @@ double gyroid_o1_offset(double3 p, double h)
  */
 double gyroid_o1_shell(double3 p, double t)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _s0;
-    const double _t4 = _s1;
-    const double _t5 = 6.2831853071795862 * p.x;
-    double _c2;
-    const double _s2 = sincos(_t5, &_c2);
-    const double _t6 = _c2;
-    const double _t7 = _c0;
-    const double _t8 = _s2;
-    const double _t9 = _t1 * _t3 + _t4 * _t6 + _t7 * _t8;
-    const double _t10 = _t1 * _t6 - _t4 * _t3;
-    const double _t11 = _t3 * _t8 - _t1 * _t7;
-    const double _t12 = _t4 * _t8 - _t7 * _t6;
-    const double _t13 = sqrt(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-    const double _t14 = ((_t13 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t13) ? _t13 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t * 0.5));
-    return (_t9 - _t14) * (_t14 + _t9);
+    const double _t0 = p.z * 2.0;
+    const double _t1 = sinpi(_t0);
+    const double _t2 = p.x * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = cospi(_t2);
+    const double _t5 = p.y * 2.0;
+    const double _t6 = cospi(_t5);
+    const double _t7 = _t1 * _t3 - _t4 * _t6;
+    const double _t8 = sinpi(_t5);
+    const double _t9 = cospi(_t0);
+    const double _t10 = _t3 * _t8 - _t6 * _t9;
+    const double _t11 = _t4 * _t9 - _t1 * _t8;
+    const double _t12 = sqrt(_t7 * _t7 + (_t10 * _t10 + _t11 * _t11));
+    const double _t13 = ((_t12 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t12) ? _t12 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t * 0.5));
+    const double _t14 = _t6 * _t3 + (_t4 * _t1 + _t9 * _t8);
+    return (_t13 + _t14) * (_t14 - _t13);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -263,50 +221,44 @@ double gyroid_o1_shell(double3 p, double t)
  */
 double3 gyroid_o1_normal(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c0;
-    const double _s0 = sincos(_t0, &_c0);
-    const double _t1 = _c0;
-    const double _t2 = 6.2831853071795862 * p.x;
-    double _c2;
-    const double _s2 = sincos(_t2, &_c2);
-    const double _t3 = _c2;
-    const double _t4 = _s0;
-    const double _t5 = 6.2831853071795862 * p.y;
-    double _c1;
-    const double _s1 = sincos(_t5, &_c1);
-    const double _t6 = _s1;
+    const double _t0 = p.z * 2.0;
+    const double _t1 = sinpi(_t0);
+    const double _t2 = p.x * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = cospi(_t2);
+    const double _t5 = p.y * 2.0;
+    const double _t6 = cospi(_t5);
     const double _t7 = _t1 * _t3 - _t4 * _t6;
-    const double _t8 = _s2;
-    const double _t9 = _c1;
-    const double _t10 = _t6 * _t8 - _t1 * _t9;
-    const double _t11 = _t4 * _t8 - _t9 * _t3;
-    const double _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
+    const double _t8 = sinpi(_t5);
+    const double _t9 = cospi(_t0);
+    const double _t10 = _t3 * _t8 - _t6 * _t9;
+    const double _t11 = _t4 * _t9 - _t1 * _t8;
+    const double _t12 = _t7 * _t7 + (_t10 * _t10 + _t11 * _t11);
     const double _t13 = sqrt(_t12);
     const bool _t14 = _t13 <= 1.7320525396196846;
     const bool _t15 = (-1.7320525396196846) <= _t13;
     const double _t16 = 6.2831853071795862 * h;
     const double _t17 = rsqrt(_t12);
-    const double _t18 = _t4 * _t9;
-    const double _t19 = _t1 * _t8;
-    const double _t20 = _t1 * _t6;
-    const double _t21 = _t4 * _t3;
-    const double _t22 = (_t14) ? ((_t15) ? _t7 - _t16 * (_t17 * (_t18 * _t10 + _t19 * _t11 - _t7 * (_t20 + _t21))) : _t7) : _t7;
-    const double _t23 = _t9 * _t8;
-    const double _t24 = _t6 * _t3;
-    const double _t25 = -_t11;
-    const double _t26 = (_t14) ? ((_t15) ? -(_t16 * (_t17 * ((_t21 + _t23) * _t11 + _t10 * _t24 - _t7 * _t19)) + _t11) : _t25) : _t25;
-    const double _t27 = -_t10;
-    const double _t28 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t7 * _t18 - _t24 * _t11 - _t10 * (_t20 + _t23))) - _t10 : _t27) : _t27;
-    const double _t29 = _t22 * _t22 + _t26 * _t26 + _t28 * _t28;
+    const double _t18 = _t1 * _t6;
+    const double _t19 = _t4 * _t8;
+    const double _t20 = _t6 * _t3;
+    const double _t21 = _t9 * _t8;
+    const double _t22 = -_t10;
+    const double _t23 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t18 * _t11 - _t19 * _t7 - (_t20 + _t21) * _t10)) - _t10 : _t22) : _t22;
+    const double _t24 = _t4 * _t1;
+    const double _t25 = _t9 * _t3;
+    const double _t26 = -_t7;
+    const double _t27 = (_t14) ? ((_t15) ? -(_t7 + _t16 * (_t17 * (_t7 * (_t20 + _t24) + _t19 * _t10 - _t25 * _t11))) : _t26) : _t26;
+    const double _t28 = (_t14) ? ((_t15) ? _t11 - _t16 * ((_t7 * _t25 + _t18 * _t10 - (_t24 + _t21) * _t11) * _t17) : _t11) : _t11;
+    const double _t29 = _t23 * _t23 + (_t27 * _t27 + _t28 * _t28);
     const bool _t30 = _t29 > 0.0;
     const bool _t31 = _t29 <= 1.0e+30;
     const double _t32 = rsqrt(_t29);
     const double _t33 = (_t12 > 0.0) ? _t17 : 0.0;
-    const double _t34 = -(_t33 * _t11);
-    const double _t35 = -(_t10 * _t33);
-    const double _t36 = _t7 * _t33;
-    return (double3)((_t30) ? ((_t31) ? _t26 * _t32 : _t34) : _t34, (_t30) ? ((_t31) ? _t28 * _t32 : _t35) : _t35, (_t30) ? ((_t31) ? _t22 * _t32 : _t36) : _t36);
+    const double _t34 = -(_t33 * _t7);
+    const double _t35 = -(_t33 * _t10);
+    const double _t36 = _t33 * _t11;
+    return (double3)((_t30) ? ((_t31) ? _t32 * _t27 : _t34) : _t34, (_t30) ? ((_t31) ? _t23 * _t32 : _t35) : _t35, (_t30) ? ((_t31) ? _t28 * _t32 : _t36) : _t36);
 }
 
 #endif /* cl_khr_fp64 */

@@ -83,16 +83,16 @@ __host__ __device__ inline double offsetgen_rsqrt(double a)
  */
 __host__ __device__ inline double gyroid_o1_field(double x, double y, double z)
 {
-    const double _t0 = z * 6.2831853071795862;
-    const double _t1 = 6.2831853071795862 * y;
-    const double _t2 = 6.2831853071795862 * x;
-    double _s0, _c0;
-    sincos(_t1, &_s0, &_c0);
-    double _s1, _c1;
-    sincos(_t0, &_s1, &_c1);
-    double _s2, _c2;
-    sincos(_t2, &_s2, &_c2);
-    return _c1 * _s0 + _s1 * _c2 + _c0 * _s2;
+    const double _t0 = y * 2.0;
+    const double _t1 = x * 2.0;
+    const double _t2 = z * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t1, &_sp0, &_cp0);
+    double _sp1, _cp1;
+    sincospi(_t2, &_sp1, &_cp1);
+    double _sp2, _cp2;
+    sincospi(_t0, &_sp2, &_cp2);
+    return _cp2 * _sp0 + (_cp0 * _sp1 + _cp1 * _sp2);
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -100,26 +100,26 @@ __host__ __device__ inline double gyroid_o1_field(double x, double y, double z)
  */
 __host__ __device__ inline double gyroid_o1_offset(double x, double y, double z, double h)
 {
-    const double _t0 = z * 6.2831853071795862;
-    double _s1, _c1;
-    sincos(_t0, &_s1, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * y;
-    double _s0, _c0;
-    sincos(_t2, &_s0, &_c0);
-    const double _t3 = _s0;
-    const double _t4 = _s1;
-    const double _t5 = 6.2831853071795862 * x;
-    double _s2, _c2;
-    sincos(_t5, &_s2, &_c2);
-    const double _t6 = _c2;
-    const double _t7 = _c0;
-    const double _t8 = _s2;
-    const double _t9 = _t1 * _t6 - _t4 * _t3;
+    const double _t0 = y * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t0, &_sp2, &_cp2);
+    const double _t1 = _cp2;
+    const double _t2 = x * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t2, &_sp0, &_cp0);
+    const double _t3 = _sp0;
+    const double _t4 = _cp0;
+    const double _t5 = z * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t5, &_sp1, &_cp1);
+    const double _t6 = _sp1;
+    const double _t7 = _cp1;
+    const double _t8 = _sp2;
+    const double _t9 = _t6 * _t3 - _t4 * _t1;
     const double _t10 = _t3 * _t8 - _t1 * _t7;
-    const double _t11 = _t4 * _t8 - _t7 * _t6;
-    const double _t12 = sqrt(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.2831853071795862 * h * ((_t12 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t12) ? _t12 : (-1.7320525396196846)) : 1.7320525396196846);
+    const double _t11 = _t4 * _t7 - _t6 * _t8;
+    const double _t12 = sqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    return _t1 * _t3 + (_t4 * _t6 + _t7 * _t8) - 6.2831853071795862 * h * ((_t12 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t12) ? _t12 : (-1.7320525396196846)) : 1.7320525396196846);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -127,28 +127,28 @@ __host__ __device__ inline double gyroid_o1_offset(double x, double y, double z,
  */
 __host__ __device__ inline double gyroid_o1_shell(double x, double y, double z, double t)
 {
-    const double _t0 = z * 6.2831853071795862;
-    double _s1, _c1;
-    sincos(_t0, &_s1, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * y;
-    double _s0, _c0;
-    sincos(_t2, &_s0, &_c0);
-    const double _t3 = _s0;
-    const double _t4 = _s1;
-    const double _t5 = 6.2831853071795862 * x;
-    double _s2, _c2;
-    sincos(_t5, &_s2, &_c2);
-    const double _t6 = _c2;
-    const double _t7 = _c0;
-    const double _t8 = _s2;
-    const double _t9 = _t1 * _t3 + _t4 * _t6 + _t7 * _t8;
-    const double _t10 = _t1 * _t6 - _t4 * _t3;
-    const double _t11 = _t3 * _t8 - _t1 * _t7;
-    const double _t12 = _t4 * _t8 - _t7 * _t6;
-    const double _t13 = sqrt(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-    const double _t14 = ((_t13 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t13) ? _t13 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t * 0.5));
-    return (_t9 - _t14) * (_t14 + _t9);
+    const double _t0 = z * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t0, &_sp0, &_cp0);
+    const double _t1 = _sp0;
+    const double _t2 = x * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t2, &_sp1, &_cp1);
+    const double _t3 = _sp1;
+    const double _t4 = _cp1;
+    const double _t5 = y * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t5, &_sp2, &_cp2);
+    const double _t6 = _cp2;
+    const double _t7 = _t1 * _t3 - _t4 * _t6;
+    const double _t8 = _sp2;
+    const double _t9 = _cp0;
+    const double _t10 = _t3 * _t8 - _t6 * _t9;
+    const double _t11 = _t4 * _t9 - _t1 * _t8;
+    const double _t12 = sqrt(_t7 * _t7 + (_t10 * _t10 + _t11 * _t11));
+    const double _t13 = ((_t12 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t12) ? _t12 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t * 0.5));
+    const double _t14 = _t6 * _t3 + (_t4 * _t1 + _t9 * _t8);
+    return (_t13 + _t14) * (_t14 - _t13);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -156,52 +156,52 @@ __host__ __device__ inline double gyroid_o1_shell(double x, double y, double z, 
  */
 __host__ __device__ inline void gyroid_o1_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = z * 6.2831853071795862;
-    double _s0, _c0;
-    sincos(_t0, &_s0, &_c0);
-    const double _t1 = _c0;
-    const double _t2 = 6.2831853071795862 * x;
-    double _s2, _c2;
-    sincos(_t2, &_s2, &_c2);
-    const double _t3 = _c2;
-    const double _t4 = _s0;
-    const double _t5 = 6.2831853071795862 * y;
-    double _s1, _c1;
-    sincos(_t5, &_s1, &_c1);
-    const double _t6 = _s1;
+    const double _t0 = z * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t0, &_sp0, &_cp0);
+    const double _t1 = _sp0;
+    const double _t2 = x * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t2, &_sp1, &_cp1);
+    const double _t3 = _sp1;
+    const double _t4 = _cp1;
+    const double _t5 = y * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t5, &_sp2, &_cp2);
+    const double _t6 = _cp2;
     const double _t7 = _t1 * _t3 - _t4 * _t6;
-    const double _t8 = _s2;
-    const double _t9 = _c1;
-    const double _t10 = _t6 * _t8 - _t1 * _t9;
-    const double _t11 = _t4 * _t8 - _t9 * _t3;
-    const double _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
+    const double _t8 = _sp2;
+    const double _t9 = _cp0;
+    const double _t10 = _t3 * _t8 - _t6 * _t9;
+    const double _t11 = _t4 * _t9 - _t1 * _t8;
+    const double _t12 = _t7 * _t7 + (_t10 * _t10 + _t11 * _t11);
     const double _t13 = sqrt(_t12);
     const bool _t14 = _t13 <= 1.7320525396196846;
     const bool _t15 = (-1.7320525396196846) <= _t13;
     const double _t16 = 6.2831853071795862 * h;
     const double _t17 = offsetgen_rsqrt(_t12);
-    const double _t18 = _t4 * _t9;
-    const double _t19 = _t1 * _t8;
-    const double _t20 = _t1 * _t6;
-    const double _t21 = _t4 * _t3;
-    const double _t22 = (_t14) ? ((_t15) ? _t7 - _t16 * (_t17 * (_t18 * _t10 + _t19 * _t11 - _t7 * (_t20 + _t21))) : _t7) : _t7;
-    const double _t23 = _t9 * _t8;
-    const double _t24 = _t6 * _t3;
-    const double _t25 = -_t11;
-    const double _t26 = (_t14) ? ((_t15) ? -(_t16 * (_t17 * ((_t21 + _t23) * _t11 + _t10 * _t24 - _t7 * _t19)) + _t11) : _t25) : _t25;
-    const double _t27 = -_t10;
-    const double _t28 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t7 * _t18 - _t24 * _t11 - _t10 * (_t20 + _t23))) - _t10 : _t27) : _t27;
-    const double _t29 = _t22 * _t22 + _t26 * _t26 + _t28 * _t28;
+    const double _t18 = _t1 * _t6;
+    const double _t19 = _t4 * _t8;
+    const double _t20 = _t6 * _t3;
+    const double _t21 = _t9 * _t8;
+    const double _t22 = -_t10;
+    const double _t23 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t18 * _t11 - _t19 * _t7 - (_t20 + _t21) * _t10)) - _t10 : _t22) : _t22;
+    const double _t24 = _t4 * _t1;
+    const double _t25 = _t9 * _t3;
+    const double _t26 = -_t7;
+    const double _t27 = (_t14) ? ((_t15) ? -(_t7 + _t16 * (_t17 * (_t7 * (_t20 + _t24) + _t19 * _t10 - _t25 * _t11))) : _t26) : _t26;
+    const double _t28 = (_t14) ? ((_t15) ? _t11 - _t16 * ((_t7 * _t25 + _t18 * _t10 - (_t24 + _t21) * _t11) * _t17) : _t11) : _t11;
+    const double _t29 = _t23 * _t23 + (_t27 * _t27 + _t28 * _t28);
     const bool _t30 = _t29 > 0.0;
     const bool _t31 = _t29 <= 1.0e+30;
     const double _t32 = offsetgen_rsqrt(_t29);
     const double _t33 = (_t12 > 0.0) ? _t17 : 0.0;
-    const double _t34 = -(_t33 * _t11);
-    const double _t35 = -(_t10 * _t33);
-    const double _t36 = _t7 * _t33;
-    n[0] = (_t30) ? ((_t31) ? _t26 * _t32 : _t34) : _t34;
-    n[1] = (_t30) ? ((_t31) ? _t28 * _t32 : _t35) : _t35;
-    n[2] = (_t30) ? ((_t31) ? _t22 * _t32 : _t36) : _t36;
+    const double _t34 = -(_t33 * _t7);
+    const double _t35 = -(_t33 * _t10);
+    const double _t36 = _t33 * _t11;
+    n[0] = (_t30) ? ((_t31) ? _t32 * _t27 : _t34) : _t34;
+    n[1] = (_t30) ? ((_t31) ? _t23 * _t32 : _t35) : _t35;
+    n[2] = (_t30) ? ((_t31) ? _t28 * _t32 : _t36) : _t36;
 }
 
 #ifndef OFFSETGEN_CUDA_RSQRT_FLOAT_V1
@@ -221,16 +221,16 @@ __host__ __device__ inline float offsetgen_rsqrtf(float a)
  */
 __host__ __device__ inline float gyroid_o1_fieldf(float x, float y, float z)
 {
-    const float _t0 = z * 6.28318548f;
-    const float _t1 = 6.28318548f * y;
-    const float _t2 = 6.28318548f * x;
-    float _s0, _c0;
-    sincosf(_t1, &_s0, &_c0);
-    float _s1, _c1;
-    sincosf(_t0, &_s1, &_c1);
-    float _s2, _c2;
-    sincosf(_t2, &_s2, &_c2);
-    return _c1 * _s0 + _s1 * _c2 + _c0 * _s2;
+    const float _t0 = y * 2.0f;
+    const float _t1 = x * 2.0f;
+    const float _t2 = z * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t1, &_sp0, &_cp0);
+    float _sp1, _cp1;
+    sincospif(_t2, &_sp1, &_cp1);
+    float _sp2, _cp2;
+    sincospif(_t0, &_sp2, &_cp2);
+    return _cp2 * _sp0 + (_cp0 * _sp1 + _cp1 * _sp2);
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -238,26 +238,26 @@ __host__ __device__ inline float gyroid_o1_fieldf(float x, float y, float z)
  */
 __host__ __device__ inline float gyroid_o1_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = z * 6.28318548f;
-    float _s1, _c1;
-    sincosf(_t0, &_s1, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * y;
-    float _s0, _c0;
-    sincosf(_t2, &_s0, &_c0);
-    const float _t3 = _s0;
-    const float _t4 = _s1;
-    const float _t5 = 6.28318548f * x;
-    float _s2, _c2;
-    sincosf(_t5, &_s2, &_c2);
-    const float _t6 = _c2;
-    const float _t7 = _c0;
-    const float _t8 = _s2;
-    const float _t9 = _t1 * _t6 - _t4 * _t3;
+    const float _t0 = y * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t0, &_sp2, &_cp2);
+    const float _t1 = _cp2;
+    const float _t2 = x * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t2, &_sp0, &_cp0);
+    const float _t3 = _sp0;
+    const float _t4 = _cp0;
+    const float _t5 = z * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t5, &_sp1, &_cp1);
+    const float _t6 = _sp1;
+    const float _t7 = _cp1;
+    const float _t8 = _sp2;
+    const float _t9 = _t6 * _t3 - _t4 * _t1;
     const float _t10 = _t3 * _t8 - _t1 * _t7;
-    const float _t11 = _t4 * _t8 - _t7 * _t6;
-    const float _t12 = sqrtf(_t9 * _t9 + _t10 * _t10 + _t11 * _t11);
-    return _t1 * _t3 + _t4 * _t6 + _t7 * _t8 - 6.28318548f * h * ((_t12 <= 1.73205256f) ? (((-1.73205256f) <= _t12) ? _t12 : (-1.73205256f)) : 1.73205256f);
+    const float _t11 = _t4 * _t7 - _t6 * _t8;
+    const float _t12 = sqrtf(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    return _t1 * _t3 + (_t4 * _t6 + _t7 * _t8) - 6.28318548f * h * ((_t12 <= 1.73205256f) ? (((-1.73205256f) <= _t12) ? _t12 : (-1.73205256f)) : 1.73205256f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -265,28 +265,28 @@ __host__ __device__ inline float gyroid_o1_offsetf(float x, float y, float z, fl
  */
 __host__ __device__ inline float gyroid_o1_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = z * 6.28318548f;
-    float _s1, _c1;
-    sincosf(_t0, &_s1, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * y;
-    float _s0, _c0;
-    sincosf(_t2, &_s0, &_c0);
-    const float _t3 = _s0;
-    const float _t4 = _s1;
-    const float _t5 = 6.28318548f * x;
-    float _s2, _c2;
-    sincosf(_t5, &_s2, &_c2);
-    const float _t6 = _c2;
-    const float _t7 = _c0;
-    const float _t8 = _s2;
-    const float _t9 = _t1 * _t3 + _t4 * _t6 + _t7 * _t8;
-    const float _t10 = _t1 * _t6 - _t4 * _t3;
-    const float _t11 = _t3 * _t8 - _t1 * _t7;
-    const float _t12 = _t4 * _t8 - _t7 * _t6;
-    const float _t13 = sqrtf(_t10 * _t10 + _t11 * _t11 + _t12 * _t12);
-    const float _t14 = ((_t13 <= 1.73205256f) ? (((-1.73205256f) <= _t13) ? _t13 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t * 0.5f));
-    return (_t9 - _t14) * (_t14 + _t9);
+    const float _t0 = z * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t0, &_sp0, &_cp0);
+    const float _t1 = _sp0;
+    const float _t2 = x * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t2, &_sp1, &_cp1);
+    const float _t3 = _sp1;
+    const float _t4 = _cp1;
+    const float _t5 = y * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t5, &_sp2, &_cp2);
+    const float _t6 = _cp2;
+    const float _t7 = _t1 * _t3 - _t4 * _t6;
+    const float _t8 = _sp2;
+    const float _t9 = _cp0;
+    const float _t10 = _t3 * _t8 - _t6 * _t9;
+    const float _t11 = _t4 * _t9 - _t1 * _t8;
+    const float _t12 = sqrtf(_t7 * _t7 + (_t10 * _t10 + _t11 * _t11));
+    const float _t13 = ((_t12 <= 1.73205256f) ? (((-1.73205256f) <= _t12) ? _t12 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t * 0.5f));
+    const float _t14 = _t6 * _t3 + (_t4 * _t1 + _t9 * _t8);
+    return (_t13 + _t14) * (_t14 - _t13);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -294,52 +294,52 @@ __host__ __device__ inline float gyroid_o1_shellf(float x, float y, float z, flo
  */
 __host__ __device__ inline void gyroid_o1_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = z * 6.28318548f;
-    float _s0, _c0;
-    sincosf(_t0, &_s0, &_c0);
-    const float _t1 = _c0;
-    const float _t2 = 6.28318548f * x;
-    float _s2, _c2;
-    sincosf(_t2, &_s2, &_c2);
-    const float _t3 = _c2;
-    const float _t4 = _s0;
-    const float _t5 = 6.28318548f * y;
-    float _s1, _c1;
-    sincosf(_t5, &_s1, &_c1);
-    const float _t6 = _s1;
+    const float _t0 = z * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t0, &_sp0, &_cp0);
+    const float _t1 = _sp0;
+    const float _t2 = x * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t2, &_sp1, &_cp1);
+    const float _t3 = _sp1;
+    const float _t4 = _cp1;
+    const float _t5 = y * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t5, &_sp2, &_cp2);
+    const float _t6 = _cp2;
     const float _t7 = _t1 * _t3 - _t4 * _t6;
-    const float _t8 = _s2;
-    const float _t9 = _c1;
-    const float _t10 = _t6 * _t8 - _t1 * _t9;
-    const float _t11 = _t4 * _t8 - _t9 * _t3;
-    const float _t12 = _t7 * _t7 + _t10 * _t10 + _t11 * _t11;
+    const float _t8 = _sp2;
+    const float _t9 = _cp0;
+    const float _t10 = _t3 * _t8 - _t6 * _t9;
+    const float _t11 = _t4 * _t9 - _t1 * _t8;
+    const float _t12 = _t7 * _t7 + (_t10 * _t10 + _t11 * _t11);
     const float _t13 = sqrtf(_t12);
     const bool _t14 = _t13 <= 1.73205256f;
     const bool _t15 = (-1.73205256f) <= _t13;
     const float _t16 = 6.28318548f * h;
     const float _t17 = offsetgen_rsqrtf(_t12);
-    const float _t18 = _t4 * _t9;
-    const float _t19 = _t1 * _t8;
-    const float _t20 = _t1 * _t6;
-    const float _t21 = _t4 * _t3;
-    const float _t22 = (_t14) ? ((_t15) ? _t7 - _t16 * (_t17 * (_t18 * _t10 + _t19 * _t11 - _t7 * (_t20 + _t21))) : _t7) : _t7;
-    const float _t23 = _t9 * _t8;
-    const float _t24 = _t6 * _t3;
-    const float _t25 = -_t11;
-    const float _t26 = (_t14) ? ((_t15) ? -(_t16 * (_t17 * ((_t21 + _t23) * _t11 + _t10 * _t24 - _t7 * _t19)) + _t11) : _t25) : _t25;
-    const float _t27 = -_t10;
-    const float _t28 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t7 * _t18 - _t24 * _t11 - _t10 * (_t20 + _t23))) - _t10 : _t27) : _t27;
-    const float _t29 = _t22 * _t22 + _t26 * _t26 + _t28 * _t28;
+    const float _t18 = _t1 * _t6;
+    const float _t19 = _t4 * _t8;
+    const float _t20 = _t6 * _t3;
+    const float _t21 = _t9 * _t8;
+    const float _t22 = -_t10;
+    const float _t23 = (_t14) ? ((_t15) ? _t16 * (_t17 * (_t18 * _t11 - _t19 * _t7 - (_t20 + _t21) * _t10)) - _t10 : _t22) : _t22;
+    const float _t24 = _t4 * _t1;
+    const float _t25 = _t9 * _t3;
+    const float _t26 = -_t7;
+    const float _t27 = (_t14) ? ((_t15) ? -(_t7 + _t16 * (_t17 * (_t7 * (_t20 + _t24) + _t19 * _t10 - _t25 * _t11))) : _t26) : _t26;
+    const float _t28 = (_t14) ? ((_t15) ? _t11 - _t16 * ((_t7 * _t25 + _t18 * _t10 - (_t24 + _t21) * _t11) * _t17) : _t11) : _t11;
+    const float _t29 = _t23 * _t23 + (_t27 * _t27 + _t28 * _t28);
     const bool _t30 = _t29 > 0.0f;
     const bool _t31 = _t29 <= 1.00000002e+30f;
     const float _t32 = offsetgen_rsqrtf(_t29);
     const float _t33 = (_t12 > 0.0f) ? _t17 : 0.0f;
-    const float _t34 = -(_t33 * _t11);
-    const float _t35 = -(_t10 * _t33);
-    const float _t36 = _t7 * _t33;
-    n[0] = (_t30) ? ((_t31) ? _t26 * _t32 : _t34) : _t34;
-    n[1] = (_t30) ? ((_t31) ? _t28 * _t32 : _t35) : _t35;
-    n[2] = (_t30) ? ((_t31) ? _t22 * _t32 : _t36) : _t36;
+    const float _t34 = -(_t33 * _t7);
+    const float _t35 = -(_t33 * _t10);
+    const float _t36 = _t33 * _t11;
+    n[0] = (_t30) ? ((_t31) ? _t32 * _t27 : _t34) : _t34;
+    n[1] = (_t30) ? ((_t31) ? _t23 * _t32 : _t35) : _t35;
+    n[2] = (_t30) ? ((_t31) ? _t28 * _t32 : _t36) : _t36;
 }
 
 /* ---- Batch kernels ----------------------------------------------------------------------------

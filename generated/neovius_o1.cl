@@ -62,10 +62,10 @@
  */
 float neovius_o1_fieldf(float3 p)
 {
-    const float _t0 = cos(p.z * 6.28318548f);
-    const float _t1 = cos(6.28318548f * p.y);
-    const float _t2 = cos(6.28318548f * p.x);
-    return _t0 * _t1 * _t2 * 4.0f + 3.0f * _t2 + _t0 * 3.0f + _t1 * 3.0f;
+    const float _t0 = cospi(p.y * 2.0f);
+    const float _t1 = cospi(p.z * 2.0f);
+    const float _t2 = cospi(p.x * 2.0f);
+    return _t0 * 3.0f + (3.0f * _t1 + (_t2 * 3.0f + 4.0f * (_t2 * (_t0 * _t1))));
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -73,27 +73,21 @@ float neovius_o1_fieldf(float3 p)
  */
 float neovius_o1_offsetf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _c0;
-    const float _t4 = _t1 * _t3;
-    const float _t5 = 6.28318548f * p.x;
-    float _c2;
-    const float _s2 = sincos(_t5, &_c2);
-    const float _t6 = _c2;
-    const float _t7 = _s0;
-    const float _t8 = 4.0f * (_t1 * _t7 * _t6) + _t7 * 3.0f;
-    const float _t9 = _s1;
-    const float _t10 = _t9 * 3.0f + 4.0f * (_t9 * _t3 * _t6);
-    const float _t11 = _s2;
-    const float _t12 = 3.0f * _t11 + 4.0f * (_t4 * _t11);
-    const float _t13 = sqrt(_t8 * _t8 + _t10 * _t10 + _t12 * _t12);
-    return _t4 * _t6 * 4.0f + 3.0f * _t6 + _t1 * 3.0f + _t3 * 3.0f - 6.28318548f * h * ((_t13 <= 7.00000715f) ? (((-7.00000715f) <= _t13) ? _t13 : (-7.00000715f)) : 7.00000715f);
+    const float _t0 = p.y * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = p.x * 2.0f;
+    const float _t5 = cospi(_t4);
+    const float _t6 = _t1 * _t3;
+    const float _t7 = sinpi(_t4);
+    const float _t8 = 3.0f * _t7 + 4.0f * (_t6 * _t7);
+    const float _t9 = sinpi(_t0);
+    const float _t10 = 4.0f * (_t5 * (_t3 * _t9)) + 3.0f * _t9;
+    const float _t11 = sinpi(_t2);
+    const float _t12 = 4.0f * (_t5 * (_t11 * _t1)) + _t11 * 3.0f;
+    const float _t13 = sqrt(_t8 * _t8 + (_t10 * _t10 + _t12 * _t12));
+    return _t1 * 3.0f + (3.0f * _t3 + (_t5 * 3.0f + 4.0f * (_t5 * _t6))) - 6.28318548f * h * ((_t13 <= 7.00000715f) ? (((-7.00000715f) <= _t13) ? _t13 : (-7.00000715f)) : 7.00000715f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -101,29 +95,23 @@ float neovius_o1_offsetf(float3 p, float h)
  */
 float neovius_o1_shellf(float3 p, float t)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _s0;
-    const float _t4 = 6.28318548f * p.x;
-    float _c2;
-    const float _s2 = sincos(_t4, &_c2);
-    const float _t5 = _c2;
-    const float _t6 = 4.0f * (_t1 * _t3 * _t5) + _t3 * 3.0f;
-    const float _t7 = _s1;
-    const float _t8 = _c0;
-    const float _t9 = _t7 * 3.0f + 4.0f * (_t7 * _t8 * _t5);
-    const float _t10 = _s2;
-    const float _t11 = _t1 * _t8;
-    const float _t12 = 3.0f * _t10 + 4.0f * (_t11 * _t10);
-    const float _t13 = sqrt(_t6 * _t6 + _t9 * _t9 + _t12 * _t12);
-    const float _t14 = 6.28318548f * (t * 0.5f) * ((_t13 <= 7.00000715f) ? (((-7.00000715f) <= _t13) ? _t13 : (-7.00000715f)) : 7.00000715f);
-    const float _t15 = _t11 * _t5 * 4.0f + 3.0f * _t5 + _t1 * 3.0f + _t8 * 3.0f;
-    return (_t14 + _t15) * (_t15 - _t14);
+    const float _t0 = p.y * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = p.x * 2.0f;
+    const float _t5 = cospi(_t4);
+    const float _t6 = _t1 * _t3;
+    const float _t7 = _t1 * 3.0f + (3.0f * _t3 + (_t5 * 3.0f + 4.0f * (_t5 * _t6)));
+    const float _t8 = sinpi(_t4);
+    const float _t9 = 3.0f * _t8 + 4.0f * (_t6 * _t8);
+    const float _t10 = sinpi(_t0);
+    const float _t11 = 4.0f * (_t5 * (_t3 * _t10)) + 3.0f * _t10;
+    const float _t12 = sinpi(_t2);
+    const float _t13 = 4.0f * (_t5 * (_t12 * _t1)) + _t12 * 3.0f;
+    const float _t14 = sqrt(_t9 * _t9 + (_t11 * _t11 + _t13 * _t13));
+    const float _t15 = 6.28318548f * (t * 0.5f) * ((_t14 <= 7.00000715f) ? (((-7.00000715f) <= _t14) ? _t14 : (-7.00000715f)) : 7.00000715f);
+    return (_t7 - _t15) * (_t15 + _t7);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -131,52 +119,46 @@ float neovius_o1_shellf(float3 p, float t)
  */
 float3 neovius_o1_normalf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _s0;
-    const float _t4 = _t1 * _t3;
-    const float _t5 = 6.28318548f * p.x;
-    float _c2;
-    const float _s2 = sincos(_t5, &_c2);
-    const float _t6 = _c2;
-    const float _t7 = 4.0f * (_t4 * _t6) + _t3 * 3.0f;
-    const float _t8 = _s1;
-    const float _t9 = _c0;
-    const float _t10 = _t8 * _t9;
-    const float _t11 = _t8 * 3.0f + 4.0f * (_t10 * _t6);
-    const float _t12 = _s2;
-    const float _t13 = _t1 * _t9;
-    const float _t14 = 3.0f * _t12 + 4.0f * (_t13 * _t12);
-    const float _t15 = _t7 * _t7 + _t11 * _t11 + _t14 * _t14;
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = sinpi(_t0);
+    const float _t2 = p.y * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = p.z * 2.0f;
+    const float _t5 = cospi(_t4);
+    const float _t6 = _t3 * _t5;
+    const float _t7 = 3.0f * _t1 + 4.0f * (_t6 * _t1);
+    const float _t8 = cospi(_t0);
+    const float _t9 = sinpi(_t2);
+    const float _t10 = _t5 * _t9;
+    const float _t11 = 4.0f * (_t8 * _t10) + 3.0f * _t9;
+    const float _t12 = sinpi(_t4);
+    const float _t13 = _t12 * _t3;
+    const float _t14 = 4.0f * (_t8 * _t13) + _t12 * 3.0f;
+    const float _t15 = _t7 * _t7 + (_t11 * _t11 + _t14 * _t14);
     const float _t16 = sqrt(_t15);
     const bool _t17 = _t16 <= 7.00000715f;
     const bool _t18 = (-7.00000715f) <= _t16;
     const float _t19 = 6.28318548f * h;
-    const float _t20 = 4.0f * (_t4 * _t12);
-    const float _t21 = 4.0f * (_t10 * _t12);
-    const float _t22 = _t13 * _t6 * 4.0f;
+    const float _t20 = 4.0f * (_t8 * (_t12 * _t9));
+    const float _t21 = 4.0f * (_t1 * _t10);
+    const float _t22 = 4.0f * (_t8 * _t6);
     const float _t23 = rsqrt(_t15);
-    const float _t24 = -_t14;
-    const float _t25 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t7 + _t11 * _t21 - (_t22 + 3.0f * _t6) * _t14) * _t23) - _t14 : _t24) : _t24;
-    const float _t26 = 4.0f * (_t6 * (_t8 * _t3));
+    const float _t24 = -_t11;
+    const float _t25 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t14 + _t7 * _t21 - (_t3 * 3.0f + _t22) * _t11) * _t23) - _t11 : _t24) : _t24;
+    const float _t26 = 4.0f * (_t1 * _t13);
     const float _t27 = -_t7;
-    const float _t28 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t11 * _t26 + _t20 * _t14 - _t7 * (_t22 + _t9 * 3.0f))) - _t7 : _t27) : _t27;
-    const float _t29 = -_t11;
-    const float _t30 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t7 * _t26 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0f))) - _t11 : _t29) : _t29;
+    const float _t28 = (_t17) ? ((_t18) ? _t19 * ((_t11 * _t21 + _t14 * _t26 - _t7 * (_t8 * 3.0f + _t22)) * _t23) - _t7 : _t27) : _t27;
+    const float _t29 = -_t14;
+    const float _t30 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t11 + _t7 * _t26 - _t14 * (3.0f * _t5 + _t22)) * _t23) - _t14 : _t29) : _t29;
     const float _t31 = _t25 * _t25 + _t28 * _t28 + _t30 * _t30;
     const bool _t32 = _t31 > 0.0f;
     const bool _t33 = _t31 <= 1.00000002e+30f;
     const float _t34 = rsqrt(_t31);
     const float _t35 = (_t15 > 0.0f) ? _t23 : 0.0f;
-    const float _t36 = -(_t35 * _t14);
-    const float _t37 = -(_t7 * _t35);
-    const float _t38 = -(_t11 * _t35);
-    return (float3)((_t32) ? ((_t33) ? _t34 * _t25 : _t36) : _t36, (_t32) ? ((_t33) ? _t28 * _t34 : _t37) : _t37, (_t32) ? ((_t33) ? _t30 * _t34 : _t38) : _t38);
+    const float _t36 = -(_t35 * _t7);
+    const float _t37 = -(_t35 * _t11);
+    const float _t38 = -(_t35 * _t14);
+    return (float3)((_t32) ? ((_t33) ? _t34 * _t28 : _t36) : _t36, (_t32) ? ((_t33) ? _t34 * _t25 : _t37) : _t37, (_t32) ? ((_t33) ? _t34 * _t30 : _t38) : _t38);
 }
 
 #ifdef cl_khr_fp64
@@ -188,10 +170,10 @@ float3 neovius_o1_normalf(float3 p, float h)
  */
 double neovius_o1_field(double3 p)
 {
-    const double _t0 = cos(p.z * 6.2831853071795862);
-    const double _t1 = cos(6.2831853071795862 * p.y);
-    const double _t2 = cos(6.2831853071795862 * p.x);
-    return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
+    const double _t0 = cospi(p.y * 2.0);
+    const double _t1 = cospi(p.z * 2.0);
+    const double _t2 = cospi(p.x * 2.0);
+    return _t0 * 3.0 + (3.0 * _t1 + (_t2 * 3.0 + 4.0 * (_t2 * (_t0 * _t1))));
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -199,27 +181,21 @@ double neovius_o1_field(double3 p)
  */
 double neovius_o1_offset(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _c0;
-    const double _t4 = _t1 * _t3;
-    const double _t5 = 6.2831853071795862 * p.x;
-    double _c2;
-    const double _s2 = sincos(_t5, &_c2);
-    const double _t6 = _c2;
-    const double _t7 = _s0;
-    const double _t8 = 4.0 * (_t1 * _t7 * _t6) + _t7 * 3.0;
-    const double _t9 = _s1;
-    const double _t10 = _t9 * 3.0 + 4.0 * (_t9 * _t3 * _t6);
-    const double _t11 = _s2;
-    const double _t12 = 3.0 * _t11 + 4.0 * (_t4 * _t11);
-    const double _t13 = sqrt(_t8 * _t8 + _t10 * _t10 + _t12 * _t12);
-    return _t4 * _t6 * 4.0 + 3.0 * _t6 + _t1 * 3.0 + _t3 * 3.0 - 6.2831853071795862 * h * ((_t13 <= 7.0000069999999992) ? (((-7.0000069999999992) <= _t13) ? _t13 : (-7.0000069999999992)) : 7.0000069999999992);
+    const double _t0 = p.y * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = p.x * 2.0;
+    const double _t5 = cospi(_t4);
+    const double _t6 = _t1 * _t3;
+    const double _t7 = sinpi(_t4);
+    const double _t8 = 3.0 * _t7 + 4.0 * (_t6 * _t7);
+    const double _t9 = sinpi(_t0);
+    const double _t10 = 4.0 * (_t5 * (_t3 * _t9)) + 3.0 * _t9;
+    const double _t11 = sinpi(_t2);
+    const double _t12 = 4.0 * (_t5 * (_t11 * _t1)) + _t11 * 3.0;
+    const double _t13 = sqrt(_t8 * _t8 + (_t10 * _t10 + _t12 * _t12));
+    return _t1 * 3.0 + (3.0 * _t3 + (_t5 * 3.0 + 4.0 * (_t5 * _t6))) - 6.2831853071795862 * h * ((_t13 <= 7.0000069999999992) ? (((-7.0000069999999992) <= _t13) ? _t13 : (-7.0000069999999992)) : 7.0000069999999992);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -227,29 +203,23 @@ double neovius_o1_offset(double3 p, double h)
  */
 double neovius_o1_shell(double3 p, double t)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _s0;
-    const double _t4 = 6.2831853071795862 * p.x;
-    double _c2;
-    const double _s2 = sincos(_t4, &_c2);
-    const double _t5 = _c2;
-    const double _t6 = 4.0 * (_t1 * _t3 * _t5) + _t3 * 3.0;
-    const double _t7 = _s1;
-    const double _t8 = _c0;
-    const double _t9 = _t7 * 3.0 + 4.0 * (_t7 * _t8 * _t5);
-    const double _t10 = _s2;
-    const double _t11 = _t1 * _t8;
-    const double _t12 = 3.0 * _t10 + 4.0 * (_t11 * _t10);
-    const double _t13 = sqrt(_t6 * _t6 + _t9 * _t9 + _t12 * _t12);
-    const double _t14 = 6.2831853071795862 * (t * 0.5) * ((_t13 <= 7.0000069999999992) ? (((-7.0000069999999992) <= _t13) ? _t13 : (-7.0000069999999992)) : 7.0000069999999992);
-    const double _t15 = _t11 * _t5 * 4.0 + 3.0 * _t5 + _t1 * 3.0 + _t8 * 3.0;
-    return (_t14 + _t15) * (_t15 - _t14);
+    const double _t0 = p.y * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = p.x * 2.0;
+    const double _t5 = cospi(_t4);
+    const double _t6 = _t1 * _t3;
+    const double _t7 = _t1 * 3.0 + (3.0 * _t3 + (_t5 * 3.0 + 4.0 * (_t5 * _t6)));
+    const double _t8 = sinpi(_t4);
+    const double _t9 = 3.0 * _t8 + 4.0 * (_t6 * _t8);
+    const double _t10 = sinpi(_t0);
+    const double _t11 = 4.0 * (_t5 * (_t3 * _t10)) + 3.0 * _t10;
+    const double _t12 = sinpi(_t2);
+    const double _t13 = 4.0 * (_t5 * (_t12 * _t1)) + _t12 * 3.0;
+    const double _t14 = sqrt(_t9 * _t9 + (_t11 * _t11 + _t13 * _t13));
+    const double _t15 = 6.2831853071795862 * (t * 0.5) * ((_t14 <= 7.0000069999999992) ? (((-7.0000069999999992) <= _t14) ? _t14 : (-7.0000069999999992)) : 7.0000069999999992);
+    return (_t7 - _t15) * (_t15 + _t7);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -257,52 +227,46 @@ double neovius_o1_shell(double3 p, double t)
  */
 double3 neovius_o1_normal(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _s0;
-    const double _t4 = _t1 * _t3;
-    const double _t5 = 6.2831853071795862 * p.x;
-    double _c2;
-    const double _s2 = sincos(_t5, &_c2);
-    const double _t6 = _c2;
-    const double _t7 = 4.0 * (_t4 * _t6) + _t3 * 3.0;
-    const double _t8 = _s1;
-    const double _t9 = _c0;
-    const double _t10 = _t8 * _t9;
-    const double _t11 = _t8 * 3.0 + 4.0 * (_t10 * _t6);
-    const double _t12 = _s2;
-    const double _t13 = _t1 * _t9;
-    const double _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
-    const double _t15 = _t7 * _t7 + _t11 * _t11 + _t14 * _t14;
+    const double _t0 = p.x * 2.0;
+    const double _t1 = sinpi(_t0);
+    const double _t2 = p.y * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = p.z * 2.0;
+    const double _t5 = cospi(_t4);
+    const double _t6 = _t3 * _t5;
+    const double _t7 = 3.0 * _t1 + 4.0 * (_t6 * _t1);
+    const double _t8 = cospi(_t0);
+    const double _t9 = sinpi(_t2);
+    const double _t10 = _t5 * _t9;
+    const double _t11 = 4.0 * (_t8 * _t10) + 3.0 * _t9;
+    const double _t12 = sinpi(_t4);
+    const double _t13 = _t12 * _t3;
+    const double _t14 = 4.0 * (_t8 * _t13) + _t12 * 3.0;
+    const double _t15 = _t7 * _t7 + (_t11 * _t11 + _t14 * _t14);
     const double _t16 = sqrt(_t15);
     const bool _t17 = _t16 <= 7.0000069999999992;
     const bool _t18 = (-7.0000069999999992) <= _t16;
     const double _t19 = 6.2831853071795862 * h;
-    const double _t20 = 4.0 * (_t4 * _t12);
-    const double _t21 = 4.0 * (_t10 * _t12);
-    const double _t22 = _t13 * _t6 * 4.0;
+    const double _t20 = 4.0 * (_t8 * (_t12 * _t9));
+    const double _t21 = 4.0 * (_t1 * _t10);
+    const double _t22 = 4.0 * (_t8 * _t6);
     const double _t23 = rsqrt(_t15);
-    const double _t24 = -_t14;
-    const double _t25 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t7 + _t11 * _t21 - (_t22 + 3.0 * _t6) * _t14) * _t23) - _t14 : _t24) : _t24;
-    const double _t26 = 4.0 * (_t6 * (_t8 * _t3));
+    const double _t24 = -_t11;
+    const double _t25 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t14 + _t7 * _t21 - (_t3 * 3.0 + _t22) * _t11) * _t23) - _t11 : _t24) : _t24;
+    const double _t26 = 4.0 * (_t1 * _t13);
     const double _t27 = -_t7;
-    const double _t28 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t11 * _t26 + _t20 * _t14 - _t7 * (_t22 + _t9 * 3.0))) - _t7 : _t27) : _t27;
-    const double _t29 = -_t11;
-    const double _t30 = (_t17) ? ((_t18) ? _t19 * (_t23 * (_t7 * _t26 + _t21 * _t14 - _t11 * (_t22 + _t1 * 3.0))) - _t11 : _t29) : _t29;
+    const double _t28 = (_t17) ? ((_t18) ? _t19 * ((_t11 * _t21 + _t14 * _t26 - _t7 * (_t8 * 3.0 + _t22)) * _t23) - _t7 : _t27) : _t27;
+    const double _t29 = -_t14;
+    const double _t30 = (_t17) ? ((_t18) ? _t19 * ((_t20 * _t11 + _t7 * _t26 - _t14 * (3.0 * _t5 + _t22)) * _t23) - _t14 : _t29) : _t29;
     const double _t31 = _t25 * _t25 + _t28 * _t28 + _t30 * _t30;
     const bool _t32 = _t31 > 0.0;
     const bool _t33 = _t31 <= 1.0e+30;
     const double _t34 = rsqrt(_t31);
     const double _t35 = (_t15 > 0.0) ? _t23 : 0.0;
-    const double _t36 = -(_t35 * _t14);
-    const double _t37 = -(_t7 * _t35);
-    const double _t38 = -(_t11 * _t35);
-    return (double3)((_t32) ? ((_t33) ? _t34 * _t25 : _t36) : _t36, (_t32) ? ((_t33) ? _t28 * _t34 : _t37) : _t37, (_t32) ? ((_t33) ? _t30 * _t34 : _t38) : _t38);
+    const double _t36 = -(_t35 * _t7);
+    const double _t37 = -(_t35 * _t11);
+    const double _t38 = -(_t35 * _t14);
+    return (double3)((_t32) ? ((_t33) ? _t34 * _t28 : _t36) : _t36, (_t32) ? ((_t33) ? _t34 * _t25 : _t37) : _t37, (_t32) ? ((_t33) ? _t34 * _t30 : _t38) : _t38);
 }
 
 #endif /* cl_khr_fp64 */

@@ -62,7 +62,7 @@
  */
 float schwarzp_o1_fieldf(float3 p)
 {
-    return cos(p.z * 6.28318548f) + cos(6.28318548f * p.y) + cos(6.28318548f * p.x);
+    return cospi(p.x * 2.0f) + (cospi(p.y * 2.0f) + cospi(p.z * 2.0f));
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -70,20 +70,14 @@ float schwarzp_o1_fieldf(float3 p)
  */
 float schwarzp_o1_offsetf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    const float _t1 = 6.28318548f * p.y;
-    const float _t2 = 6.28318548f * p.x;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _s0;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t4 = _s1;
-    float _c2;
-    const float _s2 = sincos(_t1, &_c2);
-    const float _t5 = _s2;
-    const float _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return _c1 + _c2 + _c0 - 6.28318548f * h * ((_t6 <= 1.73205256f) ? (((-1.73205256f) <= _t6) ? _t6 : (-1.73205256f)) : 1.73205256f);
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = p.y * 2.0f;
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = sinpi(_t1);
+    const float _t4 = sinpi(_t2);
+    const float _t5 = sinpi(_t0);
+    const float _t6 = sqrt(_t3 * _t3 + (_t4 * _t4 + _t5 * _t5));
+    return cospi(_t0) + (cospi(_t1) + cospi(_t2)) - 6.28318548f * h * ((_t6 <= 1.73205256f) ? (((-1.73205256f) <= _t6) ? _t6 : (-1.73205256f)) : 1.73205256f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -91,22 +85,16 @@ float schwarzp_o1_offsetf(float3 p, float h)
  */
 float schwarzp_o1_shellf(float3 p, float t)
 {
-    const float _t0 = p.z * 6.28318548f;
-    const float _t1 = 6.28318548f * p.y;
-    const float _t2 = 6.28318548f * p.x;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    float _c2;
-    const float _s2 = sincos(_t1, &_c2);
-    const float _t3 = _c1 + _c2 + _c0;
-    const float _t4 = _s0;
-    const float _t5 = _s1;
-    const float _t6 = _s2;
-    const float _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-    const float _t8 = 6.28318548f * (t * 0.5f) * ((_t7 <= 1.73205256f) ? (((-1.73205256f) <= _t7) ? _t7 : (-1.73205256f)) : 1.73205256f);
-    return (_t3 - _t8) * (_t3 + _t8);
+    const float _t0 = p.y * 2.0f;
+    const float _t1 = sinpi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = p.x * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = sqrt(_t1 * _t1 + (_t3 * _t3 + _t5 * _t5));
+    const float _t7 = ((_t6 <= 1.73205256f) ? (((-1.73205256f) <= _t6) ? _t6 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t * 0.5f));
+    const float _t8 = cospi(_t4) + (cospi(_t0) + cospi(_t2));
+    return (_t7 + _t8) * (_t8 - _t7);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -114,39 +102,33 @@ float schwarzp_o1_shellf(float3 p, float t)
  */
 float3 schwarzp_o1_normalf(float3 p, float h)
 {
-    const float _t0 = 6.28318548f * p.x;
-    float _c0;
-    const float _s0 = sincos(_t0, &_c0);
-    const float _t1 = _s0;
-    const float _t2 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t2, &_c1);
-    const float _t3 = _s1;
-    const float _t4 = 6.28318548f * p.y;
-    float _c2;
-    const float _s2 = sincos(_t4, &_c2);
-    const float _t5 = _s2;
-    const float _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
+    const float _t0 = p.y * 2.0f;
+    const float _t1 = sinpi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = p.x * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = _t1 * _t1 + (_t3 * _t3 + _t5 * _t5);
     const float _t7 = sqrt(_t6);
     const bool _t8 = _t7 <= 1.73205256f;
     const bool _t9 = (-1.73205256f) <= _t7;
     const float _t10 = 6.28318548f * h;
     const float _t11 = rsqrt(_t6);
-    const float _t12 = -_t5;
-    const float _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (_c2 * _t5 * _t11)) : _t12) : _t12;
-    const float _t14 = -_t1;
-    const float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * _c0 * _t11) + _t1) : _t14) : _t14;
+    const float _t12 = -_t1;
+    const float _t13 = (_t8) ? ((_t9) ? -(_t10 * (_t11 * (cospi(_t0) * _t1)) + _t1) : _t12) : _t12;
+    const float _t14 = -_t5;
+    const float _t15 = (_t8) ? ((_t9) ? -(_t10 * (cospi(_t4) * _t5 * _t11) + _t5) : _t14) : _t14;
     const float _t16 = -_t3;
-    const float _t17 = (_t8) ? ((_t9) ? -(_t10 * (_c1 * _t3 * _t11) + _t3) : _t16) : _t16;
+    const float _t17 = (_t8) ? ((_t9) ? -(_t3 + _t10 * (_t3 * cospi(_t2) * _t11)) : _t16) : _t16;
     const float _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
     const bool _t19 = _t18 > 0.0f;
     const bool _t20 = _t18 <= 1.00000002e+30f;
     const float _t21 = rsqrt(_t18);
     const float _t22 = (_t6 > 0.0f) ? _t11 : 0.0f;
-    const float _t23 = -(_t22 * _t1);
-    const float _t24 = -(_t5 * _t22);
+    const float _t23 = -(_t22 * _t5);
+    const float _t24 = -(_t22 * _t1);
     const float _t25 = -(_t3 * _t22);
-    return (float3)((_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23, (_t19) ? ((_t20) ? _t21 * _t13 : _t24) : _t24, (_t19) ? ((_t20) ? _t21 * _t17 : _t25) : _t25);
+    return (float3)((_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23, (_t19) ? ((_t20) ? _t13 * _t21 : _t24) : _t24, (_t19) ? ((_t20) ? _t17 * _t21 : _t25) : _t25);
 }
 
 #ifdef cl_khr_fp64
@@ -158,7 +140,7 @@ float3 schwarzp_o1_normalf(float3 p, float h)
  */
 double schwarzp_o1_field(double3 p)
 {
-    return cos(p.z * 6.2831853071795862) + cos(6.2831853071795862 * p.y) + cos(6.2831853071795862 * p.x);
+    return cospi(p.x * 2.0) + (cospi(p.y * 2.0) + cospi(p.z * 2.0));
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -166,20 +148,14 @@ double schwarzp_o1_field(double3 p)
  */
 double schwarzp_o1_offset(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    const double _t1 = 6.2831853071795862 * p.y;
-    const double _t2 = 6.2831853071795862 * p.x;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _s0;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t4 = _s1;
-    double _c2;
-    const double _s2 = sincos(_t1, &_c2);
-    const double _t5 = _s2;
-    const double _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return _c1 + _c2 + _c0 - 6.2831853071795862 * h * ((_t6 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t6) ? _t6 : (-1.7320525396196846)) : 1.7320525396196846);
+    const double _t0 = p.x * 2.0;
+    const double _t1 = p.y * 2.0;
+    const double _t2 = p.z * 2.0;
+    const double _t3 = sinpi(_t1);
+    const double _t4 = sinpi(_t2);
+    const double _t5 = sinpi(_t0);
+    const double _t6 = sqrt(_t3 * _t3 + (_t4 * _t4 + _t5 * _t5));
+    return cospi(_t0) + (cospi(_t1) + cospi(_t2)) - 6.2831853071795862 * h * ((_t6 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t6) ? _t6 : (-1.7320525396196846)) : 1.7320525396196846);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -187,22 +163,16 @@ double schwarzp_o1_offset(double3 p, double h)
  */
 double schwarzp_o1_shell(double3 p, double t)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    const double _t1 = 6.2831853071795862 * p.y;
-    const double _t2 = 6.2831853071795862 * p.x;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    double _c2;
-    const double _s2 = sincos(_t1, &_c2);
-    const double _t3 = _c1 + _c2 + _c0;
-    const double _t4 = _s0;
-    const double _t5 = _s1;
-    const double _t6 = _s2;
-    const double _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-    const double _t8 = 6.2831853071795862 * (t * 0.5) * ((_t7 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t7) ? _t7 : (-1.7320525396196846)) : 1.7320525396196846);
-    return (_t3 - _t8) * (_t3 + _t8);
+    const double _t0 = p.y * 2.0;
+    const double _t1 = sinpi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = p.x * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = sqrt(_t1 * _t1 + (_t3 * _t3 + _t5 * _t5));
+    const double _t7 = ((_t6 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t6) ? _t6 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t * 0.5));
+    const double _t8 = cospi(_t4) + (cospi(_t0) + cospi(_t2));
+    return (_t7 + _t8) * (_t8 - _t7);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -210,39 +180,33 @@ double schwarzp_o1_shell(double3 p, double t)
  */
 double3 schwarzp_o1_normal(double3 p, double h)
 {
-    const double _t0 = 6.2831853071795862 * p.x;
-    double _c0;
-    const double _s0 = sincos(_t0, &_c0);
-    const double _t1 = _s0;
-    const double _t2 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t2, &_c1);
-    const double _t3 = _s1;
-    const double _t4 = 6.2831853071795862 * p.y;
-    double _c2;
-    const double _s2 = sincos(_t4, &_c2);
-    const double _t5 = _s2;
-    const double _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
+    const double _t0 = p.y * 2.0;
+    const double _t1 = sinpi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = p.x * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = _t1 * _t1 + (_t3 * _t3 + _t5 * _t5);
     const double _t7 = sqrt(_t6);
     const bool _t8 = _t7 <= 1.7320525396196846;
     const bool _t9 = (-1.7320525396196846) <= _t7;
     const double _t10 = 6.2831853071795862 * h;
     const double _t11 = rsqrt(_t6);
-    const double _t12 = -_t5;
-    const double _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (_c2 * _t5 * _t11)) : _t12) : _t12;
-    const double _t14 = -_t1;
-    const double _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * _c0 * _t11) + _t1) : _t14) : _t14;
+    const double _t12 = -_t1;
+    const double _t13 = (_t8) ? ((_t9) ? -(_t10 * (_t11 * (cospi(_t0) * _t1)) + _t1) : _t12) : _t12;
+    const double _t14 = -_t5;
+    const double _t15 = (_t8) ? ((_t9) ? -(_t10 * (cospi(_t4) * _t5 * _t11) + _t5) : _t14) : _t14;
     const double _t16 = -_t3;
-    const double _t17 = (_t8) ? ((_t9) ? -(_t10 * (_c1 * _t3 * _t11) + _t3) : _t16) : _t16;
+    const double _t17 = (_t8) ? ((_t9) ? -(_t3 + _t10 * (_t3 * cospi(_t2) * _t11)) : _t16) : _t16;
     const double _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
     const bool _t19 = _t18 > 0.0;
     const bool _t20 = _t18 <= 1.0e+30;
     const double _t21 = rsqrt(_t18);
     const double _t22 = (_t6 > 0.0) ? _t11 : 0.0;
-    const double _t23 = -(_t22 * _t1);
-    const double _t24 = -(_t5 * _t22);
+    const double _t23 = -(_t22 * _t5);
+    const double _t24 = -(_t22 * _t1);
     const double _t25 = -(_t3 * _t22);
-    return (double3)((_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23, (_t19) ? ((_t20) ? _t21 * _t13 : _t24) : _t24, (_t19) ? ((_t20) ? _t21 * _t17 : _t25) : _t25);
+    return (double3)((_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23, (_t19) ? ((_t20) ? _t13 * _t21 : _t24) : _t24, (_t19) ? ((_t20) ? _t17 * _t21 : _t25) : _t25);
 }
 
 #endif /* cl_khr_fp64 */

@@ -83,7 +83,7 @@ __host__ __device__ inline double offsetgen_rsqrt(double a)
  */
 __host__ __device__ inline double schwarzp_o1_field(double x, double y, double z)
 {
-    return cos(z * 6.2831853071795862) + cos(6.2831853071795862 * y) + cos(6.2831853071795862 * x);
+    return cospi(x * 2.0) + (cospi(y * 2.0) + cospi(z * 2.0));
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -91,20 +91,20 @@ __host__ __device__ inline double schwarzp_o1_field(double x, double y, double z
  */
 __host__ __device__ inline double schwarzp_o1_offset(double x, double y, double z, double h)
 {
-    const double _t0 = z * 6.2831853071795862;
-    const double _t1 = 6.2831853071795862 * y;
-    const double _t2 = 6.2831853071795862 * x;
-    double _s0, _c0;
-    sincos(_t2, &_s0, &_c0);
-    const double _t3 = _s0;
-    double _s1, _c1;
-    sincos(_t0, &_s1, &_c1);
-    const double _t4 = _s1;
-    double _s2, _c2;
-    sincos(_t1, &_s2, &_c2);
-    const double _t5 = _s2;
-    const double _t6 = sqrt(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return _c1 + _c2 + _c0 - 6.2831853071795862 * h * ((_t6 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t6) ? _t6 : (-1.7320525396196846)) : 1.7320525396196846);
+    const double _t0 = x * 2.0;
+    const double _t1 = y * 2.0;
+    const double _t2 = z * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t1, &_sp0, &_cp0);
+    const double _t3 = _sp0;
+    double _sp1, _cp1;
+    sincospi(_t2, &_sp1, &_cp1);
+    const double _t4 = _sp1;
+    double _sp2, _cp2;
+    sincospi(_t0, &_sp2, &_cp2);
+    const double _t5 = _sp2;
+    const double _t6 = sqrt(_t3 * _t3 + (_t4 * _t4 + _t5 * _t5));
+    return _cp2 + (_cp0 + _cp1) - 6.2831853071795862 * h * ((_t6 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t6) ? _t6 : (-1.7320525396196846)) : 1.7320525396196846);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -112,22 +112,22 @@ __host__ __device__ inline double schwarzp_o1_offset(double x, double y, double 
  */
 __host__ __device__ inline double schwarzp_o1_shell(double x, double y, double z, double t)
 {
-    const double _t0 = z * 6.2831853071795862;
-    const double _t1 = 6.2831853071795862 * y;
-    const double _t2 = 6.2831853071795862 * x;
-    double _s0, _c0;
-    sincos(_t2, &_s0, &_c0);
-    double _s1, _c1;
-    sincos(_t0, &_s1, &_c1);
-    double _s2, _c2;
-    sincos(_t1, &_s2, &_c2);
-    const double _t3 = _c1 + _c2 + _c0;
-    const double _t4 = _s0;
-    const double _t5 = _s1;
-    const double _t6 = _s2;
-    const double _t7 = sqrt(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-    const double _t8 = 6.2831853071795862 * (t * 0.5) * ((_t7 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t7) ? _t7 : (-1.7320525396196846)) : 1.7320525396196846);
-    return (_t3 - _t8) * (_t3 + _t8);
+    const double _t0 = y * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t0, &_sp0, &_cp0);
+    const double _t1 = _sp0;
+    const double _t2 = z * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t2, &_sp1, &_cp1);
+    const double _t3 = _sp1;
+    const double _t4 = x * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t4, &_sp2, &_cp2);
+    const double _t5 = _sp2;
+    const double _t6 = sqrt(_t1 * _t1 + (_t3 * _t3 + _t5 * _t5));
+    const double _t7 = ((_t6 <= 1.7320525396196846) ? (((-1.7320525396196846) <= _t6) ? _t6 : (-1.7320525396196846)) : 1.7320525396196846) * (6.2831853071795862 * (t * 0.5));
+    const double _t8 = _cp2 + (_cp0 + _cp1);
+    return (_t7 + _t8) * (_t8 - _t7);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -135,41 +135,41 @@ __host__ __device__ inline double schwarzp_o1_shell(double x, double y, double z
  */
 __host__ __device__ inline void schwarzp_o1_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = 6.2831853071795862 * x;
-    double _s0, _c0;
-    sincos(_t0, &_s0, &_c0);
-    const double _t1 = _s0;
-    const double _t2 = z * 6.2831853071795862;
-    double _s1, _c1;
-    sincos(_t2, &_s1, &_c1);
-    const double _t3 = _s1;
-    const double _t4 = 6.2831853071795862 * y;
-    double _s2, _c2;
-    sincos(_t4, &_s2, &_c2);
-    const double _t5 = _s2;
-    const double _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
+    const double _t0 = y * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t0, &_sp0, &_cp0);
+    const double _t1 = _sp0;
+    const double _t2 = z * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t2, &_sp1, &_cp1);
+    const double _t3 = _sp1;
+    const double _t4 = x * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t4, &_sp2, &_cp2);
+    const double _t5 = _sp2;
+    const double _t6 = _t1 * _t1 + (_t3 * _t3 + _t5 * _t5);
     const double _t7 = sqrt(_t6);
     const bool _t8 = _t7 <= 1.7320525396196846;
     const bool _t9 = (-1.7320525396196846) <= _t7;
     const double _t10 = 6.2831853071795862 * h;
     const double _t11 = offsetgen_rsqrt(_t6);
-    const double _t12 = -_t5;
-    const double _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (_c2 * _t5 * _t11)) : _t12) : _t12;
-    const double _t14 = -_t1;
-    const double _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * _c0 * _t11) + _t1) : _t14) : _t14;
+    const double _t12 = -_t1;
+    const double _t13 = (_t8) ? ((_t9) ? -(_t10 * (_t11 * (_cp0 * _t1)) + _t1) : _t12) : _t12;
+    const double _t14 = -_t5;
+    const double _t15 = (_t8) ? ((_t9) ? -(_t10 * (_cp2 * _t5 * _t11) + _t5) : _t14) : _t14;
     const double _t16 = -_t3;
-    const double _t17 = (_t8) ? ((_t9) ? -(_t10 * (_c1 * _t3 * _t11) + _t3) : _t16) : _t16;
+    const double _t17 = (_t8) ? ((_t9) ? -(_t3 + _t10 * (_t3 * _cp1 * _t11)) : _t16) : _t16;
     const double _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
     const bool _t19 = _t18 > 0.0;
     const bool _t20 = _t18 <= 1.0e+30;
     const double _t21 = offsetgen_rsqrt(_t18);
     const double _t22 = (_t6 > 0.0) ? _t11 : 0.0;
-    const double _t23 = -(_t22 * _t1);
-    const double _t24 = -(_t5 * _t22);
+    const double _t23 = -(_t22 * _t5);
+    const double _t24 = -(_t22 * _t1);
     const double _t25 = -(_t3 * _t22);
     n[0] = (_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23;
-    n[1] = (_t19) ? ((_t20) ? _t21 * _t13 : _t24) : _t24;
-    n[2] = (_t19) ? ((_t20) ? _t21 * _t17 : _t25) : _t25;
+    n[1] = (_t19) ? ((_t20) ? _t13 * _t21 : _t24) : _t24;
+    n[2] = (_t19) ? ((_t20) ? _t17 * _t21 : _t25) : _t25;
 }
 
 #ifndef OFFSETGEN_CUDA_RSQRT_FLOAT_V1
@@ -189,7 +189,7 @@ __host__ __device__ inline float offsetgen_rsqrtf(float a)
  */
 __host__ __device__ inline float schwarzp_o1_fieldf(float x, float y, float z)
 {
-    return cosf(z * 6.28318548f) + cosf(6.28318548f * y) + cosf(6.28318548f * x);
+    return cospif(x * 2.0f) + (cospif(y * 2.0f) + cospif(z * 2.0f));
 }
 
 /* phi(p, h) of order 1: zero on the surface moved by h along +grad F.
@@ -197,20 +197,20 @@ __host__ __device__ inline float schwarzp_o1_fieldf(float x, float y, float z)
  */
 __host__ __device__ inline float schwarzp_o1_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = z * 6.28318548f;
-    const float _t1 = 6.28318548f * y;
-    const float _t2 = 6.28318548f * x;
-    float _s0, _c0;
-    sincosf(_t2, &_s0, &_c0);
-    const float _t3 = _s0;
-    float _s1, _c1;
-    sincosf(_t0, &_s1, &_c1);
-    const float _t4 = _s1;
-    float _s2, _c2;
-    sincosf(_t1, &_s2, &_c2);
-    const float _t5 = _s2;
-    const float _t6 = sqrtf(_t3 * _t3 + _t4 * _t4 + _t5 * _t5);
-    return _c1 + _c2 + _c0 - 6.28318548f * h * ((_t6 <= 1.73205256f) ? (((-1.73205256f) <= _t6) ? _t6 : (-1.73205256f)) : 1.73205256f);
+    const float _t0 = x * 2.0f;
+    const float _t1 = y * 2.0f;
+    const float _t2 = z * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t1, &_sp0, &_cp0);
+    const float _t3 = _sp0;
+    float _sp1, _cp1;
+    sincospif(_t2, &_sp1, &_cp1);
+    const float _t4 = _sp1;
+    float _sp2, _cp2;
+    sincospif(_t0, &_sp2, &_cp2);
+    const float _t5 = _sp2;
+    const float _t6 = sqrtf(_t3 * _t3 + (_t4 * _t4 + _t5 * _t5));
+    return _cp2 + (_cp0 + _cp1) - 6.28318548f * h * ((_t6 <= 1.73205256f) ? (((-1.73205256f) <= _t6) ? _t6 : (-1.73205256f)) : 1.73205256f);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -218,22 +218,22 @@ __host__ __device__ inline float schwarzp_o1_offsetf(float x, float y, float z, 
  */
 __host__ __device__ inline float schwarzp_o1_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = z * 6.28318548f;
-    const float _t1 = 6.28318548f * y;
-    const float _t2 = 6.28318548f * x;
-    float _s0, _c0;
-    sincosf(_t2, &_s0, &_c0);
-    float _s1, _c1;
-    sincosf(_t0, &_s1, &_c1);
-    float _s2, _c2;
-    sincosf(_t1, &_s2, &_c2);
-    const float _t3 = _c1 + _c2 + _c0;
-    const float _t4 = _s0;
-    const float _t5 = _s1;
-    const float _t6 = _s2;
-    const float _t7 = sqrtf(_t4 * _t4 + _t5 * _t5 + _t6 * _t6);
-    const float _t8 = 6.28318548f * (t * 0.5f) * ((_t7 <= 1.73205256f) ? (((-1.73205256f) <= _t7) ? _t7 : (-1.73205256f)) : 1.73205256f);
-    return (_t3 - _t8) * (_t3 + _t8);
+    const float _t0 = y * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t0, &_sp0, &_cp0);
+    const float _t1 = _sp0;
+    const float _t2 = z * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t2, &_sp1, &_cp1);
+    const float _t3 = _sp1;
+    const float _t4 = x * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t4, &_sp2, &_cp2);
+    const float _t5 = _sp2;
+    const float _t6 = sqrtf(_t1 * _t1 + (_t3 * _t3 + _t5 * _t5));
+    const float _t7 = ((_t6 <= 1.73205256f) ? (((-1.73205256f) <= _t6) ? _t6 : (-1.73205256f)) : 1.73205256f) * (6.28318548f * (t * 0.5f));
+    const float _t8 = _cp2 + (_cp0 + _cp1);
+    return (_t7 + _t8) * (_t8 - _t7);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -241,41 +241,41 @@ __host__ __device__ inline float schwarzp_o1_shellf(float x, float y, float z, f
  */
 __host__ __device__ inline void schwarzp_o1_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = 6.28318548f * x;
-    float _s0, _c0;
-    sincosf(_t0, &_s0, &_c0);
-    const float _t1 = _s0;
-    const float _t2 = z * 6.28318548f;
-    float _s1, _c1;
-    sincosf(_t2, &_s1, &_c1);
-    const float _t3 = _s1;
-    const float _t4 = 6.28318548f * y;
-    float _s2, _c2;
-    sincosf(_t4, &_s2, &_c2);
-    const float _t5 = _s2;
-    const float _t6 = _t1 * _t1 + _t3 * _t3 + _t5 * _t5;
+    const float _t0 = y * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t0, &_sp0, &_cp0);
+    const float _t1 = _sp0;
+    const float _t2 = z * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t2, &_sp1, &_cp1);
+    const float _t3 = _sp1;
+    const float _t4 = x * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t4, &_sp2, &_cp2);
+    const float _t5 = _sp2;
+    const float _t6 = _t1 * _t1 + (_t3 * _t3 + _t5 * _t5);
     const float _t7 = sqrtf(_t6);
     const bool _t8 = _t7 <= 1.73205256f;
     const bool _t9 = (-1.73205256f) <= _t7;
     const float _t10 = 6.28318548f * h;
     const float _t11 = offsetgen_rsqrtf(_t6);
-    const float _t12 = -_t5;
-    const float _t13 = (_t8) ? ((_t9) ? -(_t5 + _t10 * (_c2 * _t5 * _t11)) : _t12) : _t12;
-    const float _t14 = -_t1;
-    const float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_t1 * _c0 * _t11) + _t1) : _t14) : _t14;
+    const float _t12 = -_t1;
+    const float _t13 = (_t8) ? ((_t9) ? -(_t10 * (_t11 * (_cp0 * _t1)) + _t1) : _t12) : _t12;
+    const float _t14 = -_t5;
+    const float _t15 = (_t8) ? ((_t9) ? -(_t10 * (_cp2 * _t5 * _t11) + _t5) : _t14) : _t14;
     const float _t16 = -_t3;
-    const float _t17 = (_t8) ? ((_t9) ? -(_t10 * (_c1 * _t3 * _t11) + _t3) : _t16) : _t16;
+    const float _t17 = (_t8) ? ((_t9) ? -(_t3 + _t10 * (_t3 * _cp1 * _t11)) : _t16) : _t16;
     const float _t18 = _t13 * _t13 + _t15 * _t15 + _t17 * _t17;
     const bool _t19 = _t18 > 0.0f;
     const bool _t20 = _t18 <= 1.00000002e+30f;
     const float _t21 = offsetgen_rsqrtf(_t18);
     const float _t22 = (_t6 > 0.0f) ? _t11 : 0.0f;
-    const float _t23 = -(_t22 * _t1);
-    const float _t24 = -(_t5 * _t22);
+    const float _t23 = -(_t22 * _t5);
+    const float _t24 = -(_t22 * _t1);
     const float _t25 = -(_t3 * _t22);
     n[0] = (_t19) ? ((_t20) ? _t15 * _t21 : _t23) : _t23;
-    n[1] = (_t19) ? ((_t20) ? _t21 * _t13 : _t24) : _t24;
-    n[2] = (_t19) ? ((_t20) ? _t21 * _t17 : _t25) : _t25;
+    n[1] = (_t19) ? ((_t20) ? _t13 * _t21 : _t24) : _t24;
+    n[2] = (_t19) ? ((_t20) ? _t17 * _t21 : _t25) : _t25;
 }
 
 /* ---- Batch kernels ----------------------------------------------------------------------------

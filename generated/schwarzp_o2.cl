@@ -62,7 +62,7 @@
  */
 float schwarzp_o2_fieldf(float3 p)
 {
-    return cos(p.z * 6.28318548f) + cos(6.28318548f * p.y) + cos(6.28318548f * p.x);
+    return cospi(p.x * 2.0f) + (cospi(p.y * 2.0f) + cospi(p.z * 2.0f));
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
@@ -70,35 +70,29 @@ float schwarzp_o2_fieldf(float3 p)
  */
 float schwarzp_o2_offsetf(float3 p, float h)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c2;
-    const float _s2 = sincos(_t0, &_c2);
-    const float _t1 = _c2;
-    const float _t2 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t2, &_c0);
-    const float _t3 = _c0;
-    const float _t4 = 6.28318548f * p.x;
-    float _c1;
-    const float _s1 = sincos(_t4, &_c1);
-    const float _t5 = _c1;
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.y * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = p.z * 2.0f;
+    const float _t5 = cospi(_t4);
     const float _t6 = 6.28318548f * h;
-    const float _t7 = _s0;
-    const float _t8 = _s1;
-    const float _t9 = _s2;
-    const float _t10 = sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-    const float _t11 = rsqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+    const float _t7 = sinpi(_t2);
+    const float _t8 = sinpi(_t4);
+    const float _t9 = sinpi(_t0);
+    const float _t10 = sqrt(_t7 * _t7 + (_t8 * _t8 + _t9 * _t9));
+    const float _t11 = rsqrt(_t7 * _t7 + (_t8 * _t8 + _t9 * _t9));
     const float _t12 = _t6 * 0.5f;
-    const float _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
-    const float _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
-    const float _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const float _t13 = _t11 * (_t3 * _t7) * _t12 + _t7;
+    const float _t14 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const float _t15 = _t8 + _t8 * _t5 * _t11 * _t12;
     const float _t16 = sqrt(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
     const float _t17 = fabs(_t6);
     const float _t18 = _t10 + _t17 * 0.500000477f;
     const float _t19 = (_t18 <= 1.73205256f) ? _t18 : 1.73205256f;
     const float _t20 = _t10 - _t17 * 1.50000155f;
     const float _t21 = ((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f);
-    return _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
+    return _t1 + (_t3 + _t5) - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -106,43 +100,37 @@ float schwarzp_o2_offsetf(float3 p, float h)
  */
 float schwarzp_o2_shellf(float3 p, float t)
 {
-    const float _t0 = p.z * 6.28318548f;
-    float _c1;
-    const float _s1 = sincos(_t0, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * p.y;
-    float _c2;
-    const float _s2 = sincos(_t2, &_c2);
-    const float _t3 = _c2;
-    const float _t4 = 6.28318548f * p.x;
-    float _c0;
-    const float _s0 = sincos(_t4, &_c0);
-    const float _t5 = _c0;
-    const float _t6 = _t1 + _t3 + _t5;
-    const float _t7 = _s0;
-    const float _t8 = _s1;
-    const float _t9 = _s2;
-    const float _t10 = sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
-    const float _t11 = rsqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
-    const float _t12 = 6.28318548f * (t * 0.5f);
-    const float _t13 = _t12 * 0.5f;
-    const float _t14 = _t7 * _t5 * _t11 * _t13;
-    const float _t15 = _t14 + _t7;
-    const float _t16 = _t13 * (_t1 * _t8 * _t11);
-    const float _t17 = _t8 + _t16;
-    const float _t18 = _t13 * (_t3 * _t9 * _t11);
-    const float _t19 = _t18 + _t9;
-    const float _t20 = sqrt(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
-    const float _t21 = fabs(_t12);
-    const float _t22 = _t21 * 0.500000477f + _t10;
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.y * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = p.z * 2.0f;
+    const float _t5 = cospi(_t4);
+    const float _t6 = _t1 + (_t3 + _t5);
+    const float _t7 = 6.28318548f * (t * 0.5f);
+    const float _t8 = _t7 * 0.5f;
+    const float _t9 = sinpi(_t2);
+    const float _t10 = sinpi(_t4);
+    const float _t11 = sinpi(_t0);
+    const float _t12 = sqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    const float _t13 = rsqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    const float _t14 = _t8 * (_t13 * (_t3 * _t9));
+    const float _t15 = _t14 + _t9;
+    const float _t16 = _t8 * (_t10 * _t5 * _t13);
+    const float _t17 = _t10 + _t16;
+    const float _t18 = _t8 * (_t1 * _t11 * _t13);
+    const float _t19 = _t18 + _t11;
+    const float _t20 = sqrt(_t15 * _t15 + _t17 * _t17 + _t19 * _t19);
+    const float _t21 = fabs(_t7);
+    const float _t22 = _t21 * 0.500000477f + _t12;
     const float _t23 = (_t22 <= 1.73205256f) ? _t22 : 1.73205256f;
-    const float _t24 = _t10 - _t21 * 1.50000155f;
+    const float _t24 = _t12 - _t21 * 1.50000155f;
     const float _t25 = ((-1.73205256f) <= _t24) ? _t24 : (-1.73205256f);
-    const float _t26 = _t18 - _t9;
-    const float _t27 = _t14 - _t7;
-    const float _t28 = _t8 - _t16;
+    const float _t26 = _t14 - _t9;
+    const float _t27 = _t18 - _t11;
+    const float _t28 = _t10 - _t16;
     const float _t29 = sqrt(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
-    return (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
+    return (_t6 - _t7 * ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23)) * (_t7 * ((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) + _t6);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -150,65 +138,59 @@ float schwarzp_o2_shellf(float3 p, float t)
  */
 float3 schwarzp_o2_normalf(float3 p, float h)
 {
-    const float _t0 = 6.28318548f * p.y;
-    float _c0;
-    const float _s0 = sincos(_t0, &_c0);
-    const float _t1 = _s0;
-    const float _t2 = _c0;
-    const float _t3 = 6.28318548f * p.x;
-    float _c1;
-    const float _s1 = sincos(_t3, &_c1);
-    const float _t4 = _s1;
+    const float _t0 = p.y * 2.0f;
+    const float _t1 = sinpi(_t0);
+    const float _t2 = _t1 * _t1;
+    const float _t3 = p.z * 2.0f;
+    const float _t4 = sinpi(_t3);
     const float _t5 = _t4 * _t4;
-    const float _t6 = p.z * 6.28318548f;
-    float _c2;
-    const float _s2 = sincos(_t6, &_c2);
-    const float _t7 = _s2;
+    const float _t6 = p.x * 2.0f;
+    const float _t7 = sinpi(_t6);
     const float _t8 = _t7 * _t7;
-    const float _t9 = _t1 * _t1;
-    const float _t10 = _t5 + _t8 + _t9;
-    const float _t11 = sqrt(_t10);
-    const float _t12 = rsqrt(_t10);
-    const float _t13 = _t2 * _t1 * _t12;
+    const float _t9 = _t2 + (_t5 + _t8);
+    const float _t10 = sqrt(_t9);
+    const float _t11 = rsqrt(_t9);
+    const float _t12 = cospi(_t0);
+    const float _t13 = _t11 * (_t12 * _t1);
     const float _t14 = 6.28318548f * h;
     const float _t15 = _t14 * 0.5f;
-    const float _t16 = _t1 + _t13 * _t15;
-    const float _t17 = _c1;
-    const float _t18 = _t4 * _t17 * _t12;
-    const float _t19 = _t18 * _t15 + _t4;
-    const float _t20 = _c2;
-    const float _t21 = _t20 * _t7 * _t12;
-    const float _t22 = _t21 * _t15 + _t7;
+    const float _t16 = _t13 * _t15 + _t1;
+    const float _t17 = cospi(_t6);
+    const float _t18 = _t17 * _t7 * _t11;
+    const float _t19 = _t18 * _t15 + _t7;
+    const float _t20 = cospi(_t3);
+    const float _t21 = _t4 * _t20 * _t11;
+    const float _t22 = _t4 + _t21 * _t15;
     const float _t23 = sqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
     const float _t24 = fabs(_t14);
-    const float _t25 = _t11 + _t24 * 0.500000477f;
+    const float _t25 = _t10 + _t24 * 0.500000477f;
     const bool _t26 = _t25 <= 1.73205256f;
     const bool _t27 = _t23 <= ((_t26) ? _t25 : 1.73205256f);
-    const float _t28 = _t11 - _t24 * 1.50000155f;
+    const float _t28 = _t10 - _t24 * 1.50000155f;
     const bool _t29 = (-1.73205256f) <= _t28;
     const bool _t30 = ((_t29) ? _t28 : (-1.73205256f)) <= _t23;
-    const float _t31 = rsqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
-    const float _t32 = _t18 * _t13 * _t12 * _t15;
-    const float _t33 = _t21 * _t13 * _t12 * _t15;
-    const float _t34 = -(_t1 + _t14 * _t13);
+    const float _t31 = _t13 * _t18 * _t11 * _t15;
+    const float _t32 = _t13 * _t21 * _t11 * _t15;
+    const float _t33 = rsqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
+    const float _t34 = -(_t14 * _t13 + _t1);
     const float _t35 = -_t1;
-    const float _t36 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t2 - (_t13 * _t13 - (_t2 * _t2 - _t9)) * _t12 * _t15) * _t16 - _t19 * _t32 - _t22 * _t33)) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
-    const float _t37 = _t18 * _t21 * _t12 * _t15;
-    const float _t38 = -(_t14 * _t18 + _t4);
+    const float _t36 = (_t27) ? ((_t30) ? -(_t14 * (((_t12 - _t11 * (_t13 * _t13 - (_t12 * _t12 - _t2)) * _t15) * _t16 - _t31 * _t19 - _t22 * _t32) * _t33) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
+    const float _t37 = _t21 * _t18 * _t11 * _t15;
+    const float _t38 = -(_t4 + _t14 * _t21);
     const float _t39 = -_t4;
-    const float _t40 = (_t27) ? ((_t30) ? _t14 * ((_t37 * _t22 + (_t32 * _t16 + _t19 * ((_t5 - _t17 * _t17 + _t18 * _t18) * _t12 * _t15 - _t17))) * _t31) - _t4 : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
-    const float _t41 = -(_t14 * _t21 + _t7);
+    const float _t40 = (_t27) ? ((_t30) ? -(_t14 * (((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t5)) * _t11 * _t15) * _t22 - _t37 * _t19 - _t32 * _t16) * _t33) + _t4) : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
+    const float _t41 = -(_t14 * _t18 + _t7);
     const float _t42 = -_t7;
-    const float _t43 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t8)) * _t12 * _t15) * _t22 - _t19 * _t37 - _t16 * _t33)) + _t7) : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
+    const float _t43 = (_t27) ? ((_t30) ? _t14 * ((((_t8 - _t17 * _t17 + _t18 * _t18) * _t11 * _t15 - _t17) * _t19 + _t31 * _t16 + _t22 * _t37) * _t33) - _t7 : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
     const float _t44 = _t36 * _t36 + (_t40 * _t40 + _t43 * _t43);
     const bool _t45 = _t44 > 0.0f;
     const bool _t46 = _t44 <= 1.00000002e+30f;
     const float _t47 = rsqrt(_t44);
-    const float _t48 = (_t10 > 0.0f) ? _t12 : 0.0f;
-    const float _t49 = -(_t48 * _t4);
-    const float _t50 = -(_t1 * _t48);
-    const float _t51 = -(_t7 * _t48);
-    return (float3)((_t45) ? ((_t46) ? _t40 * _t47 : _t49) : _t49, (_t45) ? ((_t46) ? _t36 * _t47 : _t50) : _t50, (_t45) ? ((_t46) ? _t43 * _t47 : _t51) : _t51);
+    const float _t48 = (_t9 > 0.0f) ? _t11 : 0.0f;
+    const float _t49 = -(_t48 * _t7);
+    const float _t50 = -(_t48 * _t1);
+    const float _t51 = -(_t4 * _t48);
+    return (float3)((_t45) ? ((_t46) ? _t43 * _t47 : _t49) : _t49, (_t45) ? ((_t46) ? _t47 * _t36 : _t50) : _t50, (_t45) ? ((_t46) ? _t40 * _t47 : _t51) : _t51);
 }
 
 #ifdef cl_khr_fp64
@@ -220,7 +202,7 @@ float3 schwarzp_o2_normalf(float3 p, float h)
  */
 double schwarzp_o2_field(double3 p)
 {
-    return cos(p.z * 6.2831853071795862) + cos(6.2831853071795862 * p.y) + cos(6.2831853071795862 * p.x);
+    return cospi(p.x * 2.0) + (cospi(p.y * 2.0) + cospi(p.z * 2.0));
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
@@ -228,35 +210,29 @@ double schwarzp_o2_field(double3 p)
  */
 double schwarzp_o2_offset(double3 p, double h)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c2;
-    const double _s2 = sincos(_t0, &_c2);
-    const double _t1 = _c2;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t2, &_c0);
-    const double _t3 = _c0;
-    const double _t4 = 6.2831853071795862 * p.x;
-    double _c1;
-    const double _s1 = sincos(_t4, &_c1);
-    const double _t5 = _c1;
+    const double _t0 = p.x * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.y * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = p.z * 2.0;
+    const double _t5 = cospi(_t4);
     const double _t6 = 6.2831853071795862 * h;
-    const double _t7 = _s0;
-    const double _t8 = _s1;
-    const double _t9 = _s2;
-    const double _t10 = sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-    const double _t11 = rsqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+    const double _t7 = sinpi(_t2);
+    const double _t8 = sinpi(_t4);
+    const double _t9 = sinpi(_t0);
+    const double _t10 = sqrt(_t7 * _t7 + (_t8 * _t8 + _t9 * _t9));
+    const double _t11 = rsqrt(_t7 * _t7 + (_t8 * _t8 + _t9 * _t9));
     const double _t12 = _t6 * 0.5;
-    const double _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
-    const double _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
-    const double _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const double _t13 = _t11 * (_t3 * _t7) * _t12 + _t7;
+    const double _t14 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const double _t15 = _t8 + _t8 * _t5 * _t11 * _t12;
     const double _t16 = sqrt(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
     const double _t17 = fabs(_t6);
     const double _t18 = _t10 + _t17 * 0.50000050630325232;
     const double _t19 = (_t18 <= 1.7320525396196846) ? _t18 : 1.7320525396196846;
     const double _t20 = _t10 - _t17 * 1.5000015189097571;
     const double _t21 = ((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846);
-    return _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
+    return _t1 + (_t3 + _t5) - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -264,43 +240,37 @@ double schwarzp_o2_offset(double3 p, double h)
  */
 double schwarzp_o2_shell(double3 p, double t)
 {
-    const double _t0 = p.z * 6.2831853071795862;
-    double _c1;
-    const double _s1 = sincos(_t0, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * p.y;
-    double _c2;
-    const double _s2 = sincos(_t2, &_c2);
-    const double _t3 = _c2;
-    const double _t4 = 6.2831853071795862 * p.x;
-    double _c0;
-    const double _s0 = sincos(_t4, &_c0);
-    const double _t5 = _c0;
-    const double _t6 = _t1 + _t3 + _t5;
-    const double _t7 = _s0;
-    const double _t8 = _s1;
-    const double _t9 = _s2;
-    const double _t10 = sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
-    const double _t11 = rsqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
-    const double _t12 = 6.2831853071795862 * (t * 0.5);
-    const double _t13 = _t12 * 0.5;
-    const double _t14 = _t7 * _t5 * _t11 * _t13;
-    const double _t15 = _t14 + _t7;
-    const double _t16 = _t13 * (_t1 * _t8 * _t11);
-    const double _t17 = _t8 + _t16;
-    const double _t18 = _t13 * (_t3 * _t9 * _t11);
-    const double _t19 = _t18 + _t9;
-    const double _t20 = sqrt(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
-    const double _t21 = fabs(_t12);
-    const double _t22 = _t21 * 0.50000050630325232 + _t10;
+    const double _t0 = p.x * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.y * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = p.z * 2.0;
+    const double _t5 = cospi(_t4);
+    const double _t6 = _t1 + (_t3 + _t5);
+    const double _t7 = 6.2831853071795862 * (t * 0.5);
+    const double _t8 = _t7 * 0.5;
+    const double _t9 = sinpi(_t2);
+    const double _t10 = sinpi(_t4);
+    const double _t11 = sinpi(_t0);
+    const double _t12 = sqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    const double _t13 = rsqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    const double _t14 = _t8 * (_t13 * (_t3 * _t9));
+    const double _t15 = _t14 + _t9;
+    const double _t16 = _t8 * (_t10 * _t5 * _t13);
+    const double _t17 = _t10 + _t16;
+    const double _t18 = _t8 * (_t1 * _t11 * _t13);
+    const double _t19 = _t18 + _t11;
+    const double _t20 = sqrt(_t15 * _t15 + _t17 * _t17 + _t19 * _t19);
+    const double _t21 = fabs(_t7);
+    const double _t22 = _t21 * 0.50000050630325232 + _t12;
     const double _t23 = (_t22 <= 1.7320525396196846) ? _t22 : 1.7320525396196846;
-    const double _t24 = _t10 - _t21 * 1.5000015189097571;
+    const double _t24 = _t12 - _t21 * 1.5000015189097571;
     const double _t25 = ((-1.7320525396196846) <= _t24) ? _t24 : (-1.7320525396196846);
-    const double _t26 = _t18 - _t9;
-    const double _t27 = _t14 - _t7;
-    const double _t28 = _t8 - _t16;
+    const double _t26 = _t14 - _t9;
+    const double _t27 = _t18 - _t11;
+    const double _t28 = _t10 - _t16;
     const double _t29 = sqrt(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
-    return (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
+    return (_t6 - _t7 * ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23)) * (_t7 * ((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) + _t6);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -308,65 +278,59 @@ double schwarzp_o2_shell(double3 p, double t)
  */
 double3 schwarzp_o2_normal(double3 p, double h)
 {
-    const double _t0 = 6.2831853071795862 * p.y;
-    double _c0;
-    const double _s0 = sincos(_t0, &_c0);
-    const double _t1 = _s0;
-    const double _t2 = _c0;
-    const double _t3 = 6.2831853071795862 * p.x;
-    double _c1;
-    const double _s1 = sincos(_t3, &_c1);
-    const double _t4 = _s1;
+    const double _t0 = p.y * 2.0;
+    const double _t1 = sinpi(_t0);
+    const double _t2 = _t1 * _t1;
+    const double _t3 = p.z * 2.0;
+    const double _t4 = sinpi(_t3);
     const double _t5 = _t4 * _t4;
-    const double _t6 = p.z * 6.2831853071795862;
-    double _c2;
-    const double _s2 = sincos(_t6, &_c2);
-    const double _t7 = _s2;
+    const double _t6 = p.x * 2.0;
+    const double _t7 = sinpi(_t6);
     const double _t8 = _t7 * _t7;
-    const double _t9 = _t1 * _t1;
-    const double _t10 = _t5 + _t8 + _t9;
-    const double _t11 = sqrt(_t10);
-    const double _t12 = rsqrt(_t10);
-    const double _t13 = _t2 * _t1 * _t12;
+    const double _t9 = _t2 + (_t5 + _t8);
+    const double _t10 = sqrt(_t9);
+    const double _t11 = rsqrt(_t9);
+    const double _t12 = cospi(_t0);
+    const double _t13 = _t11 * (_t12 * _t1);
     const double _t14 = 6.2831853071795862 * h;
     const double _t15 = _t14 * 0.5;
-    const double _t16 = _t1 + _t13 * _t15;
-    const double _t17 = _c1;
-    const double _t18 = _t4 * _t17 * _t12;
-    const double _t19 = _t18 * _t15 + _t4;
-    const double _t20 = _c2;
-    const double _t21 = _t20 * _t7 * _t12;
-    const double _t22 = _t21 * _t15 + _t7;
+    const double _t16 = _t13 * _t15 + _t1;
+    const double _t17 = cospi(_t6);
+    const double _t18 = _t17 * _t7 * _t11;
+    const double _t19 = _t18 * _t15 + _t7;
+    const double _t20 = cospi(_t3);
+    const double _t21 = _t4 * _t20 * _t11;
+    const double _t22 = _t4 + _t21 * _t15;
     const double _t23 = sqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
     const double _t24 = fabs(_t14);
-    const double _t25 = _t11 + _t24 * 0.50000050630325232;
+    const double _t25 = _t10 + _t24 * 0.50000050630325232;
     const bool _t26 = _t25 <= 1.7320525396196846;
     const bool _t27 = _t23 <= ((_t26) ? _t25 : 1.7320525396196846);
-    const double _t28 = _t11 - _t24 * 1.5000015189097571;
+    const double _t28 = _t10 - _t24 * 1.5000015189097571;
     const bool _t29 = (-1.7320525396196846) <= _t28;
     const bool _t30 = ((_t29) ? _t28 : (-1.7320525396196846)) <= _t23;
-    const double _t31 = rsqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
-    const double _t32 = _t18 * _t13 * _t12 * _t15;
-    const double _t33 = _t21 * _t13 * _t12 * _t15;
-    const double _t34 = -(_t1 + _t14 * _t13);
+    const double _t31 = _t13 * _t18 * _t11 * _t15;
+    const double _t32 = _t13 * _t21 * _t11 * _t15;
+    const double _t33 = rsqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
+    const double _t34 = -(_t14 * _t13 + _t1);
     const double _t35 = -_t1;
-    const double _t36 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t2 - (_t13 * _t13 - (_t2 * _t2 - _t9)) * _t12 * _t15) * _t16 - _t19 * _t32 - _t22 * _t33)) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
-    const double _t37 = _t18 * _t21 * _t12 * _t15;
-    const double _t38 = -(_t14 * _t18 + _t4);
+    const double _t36 = (_t27) ? ((_t30) ? -(_t14 * (((_t12 - _t11 * (_t13 * _t13 - (_t12 * _t12 - _t2)) * _t15) * _t16 - _t31 * _t19 - _t22 * _t32) * _t33) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
+    const double _t37 = _t21 * _t18 * _t11 * _t15;
+    const double _t38 = -(_t4 + _t14 * _t21);
     const double _t39 = -_t4;
-    const double _t40 = (_t27) ? ((_t30) ? _t14 * ((_t37 * _t22 + (_t32 * _t16 + _t19 * ((_t5 - _t17 * _t17 + _t18 * _t18) * _t12 * _t15 - _t17))) * _t31) - _t4 : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
-    const double _t41 = -(_t14 * _t21 + _t7);
+    const double _t40 = (_t27) ? ((_t30) ? -(_t14 * (((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t5)) * _t11 * _t15) * _t22 - _t37 * _t19 - _t32 * _t16) * _t33) + _t4) : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
+    const double _t41 = -(_t14 * _t18 + _t7);
     const double _t42 = -_t7;
-    const double _t43 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t8)) * _t12 * _t15) * _t22 - _t19 * _t37 - _t16 * _t33)) + _t7) : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
+    const double _t43 = (_t27) ? ((_t30) ? _t14 * ((((_t8 - _t17 * _t17 + _t18 * _t18) * _t11 * _t15 - _t17) * _t19 + _t31 * _t16 + _t22 * _t37) * _t33) - _t7 : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
     const double _t44 = _t36 * _t36 + (_t40 * _t40 + _t43 * _t43);
     const bool _t45 = _t44 > 0.0;
     const bool _t46 = _t44 <= 1.0e+30;
     const double _t47 = rsqrt(_t44);
-    const double _t48 = (_t10 > 0.0) ? _t12 : 0.0;
-    const double _t49 = -(_t48 * _t4);
-    const double _t50 = -(_t1 * _t48);
-    const double _t51 = -(_t7 * _t48);
-    return (double3)((_t45) ? ((_t46) ? _t40 * _t47 : _t49) : _t49, (_t45) ? ((_t46) ? _t36 * _t47 : _t50) : _t50, (_t45) ? ((_t46) ? _t43 * _t47 : _t51) : _t51);
+    const double _t48 = (_t9 > 0.0) ? _t11 : 0.0;
+    const double _t49 = -(_t48 * _t7);
+    const double _t50 = -(_t48 * _t1);
+    const double _t51 = -(_t4 * _t48);
+    return (double3)((_t45) ? ((_t46) ? _t43 * _t47 : _t49) : _t49, (_t45) ? ((_t46) ? _t47 * _t36 : _t50) : _t50, (_t45) ? ((_t46) ? _t40 * _t47 : _t51) : _t51);
 }
 
 #endif /* cl_khr_fp64 */

@@ -83,7 +83,7 @@ __host__ __device__ inline double offsetgen_rsqrt(double a)
  */
 __host__ __device__ inline double schwarzp_o2_field(double x, double y, double z)
 {
-    return cos(z * 6.2831853071795862) + cos(6.2831853071795862 * y) + cos(6.2831853071795862 * x);
+    return cospi(x * 2.0) + (cospi(y * 2.0) + cospi(z * 2.0));
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
@@ -91,35 +91,35 @@ __host__ __device__ inline double schwarzp_o2_field(double x, double y, double z
  */
 __host__ __device__ inline double schwarzp_o2_offset(double x, double y, double z, double h)
 {
-    const double _t0 = z * 6.2831853071795862;
-    double _s2, _c2;
-    sincos(_t0, &_s2, &_c2);
-    const double _t1 = _c2;
-    const double _t2 = 6.2831853071795862 * y;
-    double _s0, _c0;
-    sincos(_t2, &_s0, &_c0);
-    const double _t3 = _c0;
-    const double _t4 = 6.2831853071795862 * x;
-    double _s1, _c1;
-    sincos(_t4, &_s1, &_c1);
-    const double _t5 = _c1;
+    const double _t0 = x * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t0, &_sp2, &_cp2);
+    const double _t1 = _cp2;
+    const double _t2 = y * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t2, &_sp0, &_cp0);
+    const double _t3 = _cp0;
+    const double _t4 = z * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t4, &_sp1, &_cp1);
+    const double _t5 = _cp1;
     const double _t6 = 6.2831853071795862 * h;
-    const double _t7 = _s0;
-    const double _t8 = _s1;
-    const double _t9 = _s2;
-    const double _t10 = sqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-    const double _t11 = offsetgen_rsqrt(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+    const double _t7 = _sp0;
+    const double _t8 = _sp1;
+    const double _t9 = _sp2;
+    const double _t10 = sqrt(_t7 * _t7 + (_t8 * _t8 + _t9 * _t9));
+    const double _t11 = offsetgen_rsqrt(_t7 * _t7 + (_t8 * _t8 + _t9 * _t9));
     const double _t12 = _t6 * 0.5;
-    const double _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
-    const double _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
-    const double _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const double _t13 = _t11 * (_t3 * _t7) * _t12 + _t7;
+    const double _t14 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const double _t15 = _t8 + _t8 * _t5 * _t11 * _t12;
     const double _t16 = sqrt(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
     const double _t17 = fabs(_t6);
     const double _t18 = _t10 + _t17 * 0.50000050630325232;
     const double _t19 = (_t18 <= 1.7320525396196846) ? _t18 : 1.7320525396196846;
     const double _t20 = _t10 - _t17 * 1.5000015189097571;
     const double _t21 = ((-1.7320525396196846) <= _t20) ? _t20 : (-1.7320525396196846);
-    return _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
+    return _t1 + (_t3 + _t5) - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -127,43 +127,43 @@ __host__ __device__ inline double schwarzp_o2_offset(double x, double y, double 
  */
 __host__ __device__ inline double schwarzp_o2_shell(double x, double y, double z, double t)
 {
-    const double _t0 = z * 6.2831853071795862;
-    double _s1, _c1;
-    sincos(_t0, &_s1, &_c1);
-    const double _t1 = _c1;
-    const double _t2 = 6.2831853071795862 * y;
-    double _s2, _c2;
-    sincos(_t2, &_s2, &_c2);
-    const double _t3 = _c2;
-    const double _t4 = 6.2831853071795862 * x;
-    double _s0, _c0;
-    sincos(_t4, &_s0, &_c0);
-    const double _t5 = _c0;
-    const double _t6 = _t1 + _t3 + _t5;
-    const double _t7 = _s0;
-    const double _t8 = _s1;
-    const double _t9 = _s2;
-    const double _t10 = sqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
-    const double _t11 = offsetgen_rsqrt(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
-    const double _t12 = 6.2831853071795862 * (t * 0.5);
-    const double _t13 = _t12 * 0.5;
-    const double _t14 = _t7 * _t5 * _t11 * _t13;
-    const double _t15 = _t14 + _t7;
-    const double _t16 = _t13 * (_t1 * _t8 * _t11);
-    const double _t17 = _t8 + _t16;
-    const double _t18 = _t13 * (_t3 * _t9 * _t11);
-    const double _t19 = _t18 + _t9;
-    const double _t20 = sqrt(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
-    const double _t21 = fabs(_t12);
-    const double _t22 = _t21 * 0.50000050630325232 + _t10;
+    const double _t0 = x * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t0, &_sp2, &_cp2);
+    const double _t1 = _cp2;
+    const double _t2 = y * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t2, &_sp0, &_cp0);
+    const double _t3 = _cp0;
+    const double _t4 = z * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t4, &_sp1, &_cp1);
+    const double _t5 = _cp1;
+    const double _t6 = _t1 + (_t3 + _t5);
+    const double _t7 = 6.2831853071795862 * (t * 0.5);
+    const double _t8 = _t7 * 0.5;
+    const double _t9 = _sp0;
+    const double _t10 = _sp1;
+    const double _t11 = _sp2;
+    const double _t12 = sqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    const double _t13 = offsetgen_rsqrt(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    const double _t14 = _t8 * (_t13 * (_t3 * _t9));
+    const double _t15 = _t14 + _t9;
+    const double _t16 = _t8 * (_t10 * _t5 * _t13);
+    const double _t17 = _t10 + _t16;
+    const double _t18 = _t8 * (_t1 * _t11 * _t13);
+    const double _t19 = _t18 + _t11;
+    const double _t20 = sqrt(_t15 * _t15 + _t17 * _t17 + _t19 * _t19);
+    const double _t21 = fabs(_t7);
+    const double _t22 = _t21 * 0.50000050630325232 + _t12;
     const double _t23 = (_t22 <= 1.7320525396196846) ? _t22 : 1.7320525396196846;
-    const double _t24 = _t10 - _t21 * 1.5000015189097571;
+    const double _t24 = _t12 - _t21 * 1.5000015189097571;
     const double _t25 = ((-1.7320525396196846) <= _t24) ? _t24 : (-1.7320525396196846);
-    const double _t26 = _t18 - _t9;
-    const double _t27 = _t14 - _t7;
-    const double _t28 = _t8 - _t16;
+    const double _t26 = _t14 - _t9;
+    const double _t27 = _t18 - _t11;
+    const double _t28 = _t10 - _t16;
     const double _t29 = sqrt(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
-    return (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
+    return (_t6 - _t7 * ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23)) * (_t7 * ((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) + _t6);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -171,67 +171,67 @@ __host__ __device__ inline double schwarzp_o2_shell(double x, double y, double z
  */
 __host__ __device__ inline void schwarzp_o2_normal(double x, double y, double z, double h, double n[3])
 {
-    const double _t0 = 6.2831853071795862 * y;
-    double _s0, _c0;
-    sincos(_t0, &_s0, &_c0);
-    const double _t1 = _s0;
-    const double _t2 = _c0;
-    const double _t3 = 6.2831853071795862 * x;
-    double _s1, _c1;
-    sincos(_t3, &_s1, &_c1);
-    const double _t4 = _s1;
+    const double _t0 = y * 2.0;
+    double _sp0, _cp0;
+    sincospi(_t0, &_sp0, &_cp0);
+    const double _t1 = _sp0;
+    const double _t2 = _t1 * _t1;
+    const double _t3 = z * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t3, &_sp1, &_cp1);
+    const double _t4 = _sp1;
     const double _t5 = _t4 * _t4;
-    const double _t6 = z * 6.2831853071795862;
-    double _s2, _c2;
-    sincos(_t6, &_s2, &_c2);
-    const double _t7 = _s2;
+    const double _t6 = x * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t6, &_sp2, &_cp2);
+    const double _t7 = _sp2;
     const double _t8 = _t7 * _t7;
-    const double _t9 = _t1 * _t1;
-    const double _t10 = _t5 + _t8 + _t9;
-    const double _t11 = sqrt(_t10);
-    const double _t12 = offsetgen_rsqrt(_t10);
-    const double _t13 = _t2 * _t1 * _t12;
+    const double _t9 = _t2 + (_t5 + _t8);
+    const double _t10 = sqrt(_t9);
+    const double _t11 = offsetgen_rsqrt(_t9);
+    const double _t12 = _cp0;
+    const double _t13 = _t11 * (_t12 * _t1);
     const double _t14 = 6.2831853071795862 * h;
     const double _t15 = _t14 * 0.5;
-    const double _t16 = _t1 + _t13 * _t15;
-    const double _t17 = _c1;
-    const double _t18 = _t4 * _t17 * _t12;
-    const double _t19 = _t18 * _t15 + _t4;
-    const double _t20 = _c2;
-    const double _t21 = _t20 * _t7 * _t12;
-    const double _t22 = _t21 * _t15 + _t7;
+    const double _t16 = _t13 * _t15 + _t1;
+    const double _t17 = _cp2;
+    const double _t18 = _t17 * _t7 * _t11;
+    const double _t19 = _t18 * _t15 + _t7;
+    const double _t20 = _cp1;
+    const double _t21 = _t4 * _t20 * _t11;
+    const double _t22 = _t4 + _t21 * _t15;
     const double _t23 = sqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
     const double _t24 = fabs(_t14);
-    const double _t25 = _t11 + _t24 * 0.50000050630325232;
+    const double _t25 = _t10 + _t24 * 0.50000050630325232;
     const bool _t26 = _t25 <= 1.7320525396196846;
     const bool _t27 = _t23 <= ((_t26) ? _t25 : 1.7320525396196846);
-    const double _t28 = _t11 - _t24 * 1.5000015189097571;
+    const double _t28 = _t10 - _t24 * 1.5000015189097571;
     const bool _t29 = (-1.7320525396196846) <= _t28;
     const bool _t30 = ((_t29) ? _t28 : (-1.7320525396196846)) <= _t23;
-    const double _t31 = offsetgen_rsqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
-    const double _t32 = _t18 * _t13 * _t12 * _t15;
-    const double _t33 = _t21 * _t13 * _t12 * _t15;
-    const double _t34 = -(_t1 + _t14 * _t13);
+    const double _t31 = _t13 * _t18 * _t11 * _t15;
+    const double _t32 = _t13 * _t21 * _t11 * _t15;
+    const double _t33 = offsetgen_rsqrt(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
+    const double _t34 = -(_t14 * _t13 + _t1);
     const double _t35 = -_t1;
-    const double _t36 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t2 - (_t13 * _t13 - (_t2 * _t2 - _t9)) * _t12 * _t15) * _t16 - _t19 * _t32 - _t22 * _t33)) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
-    const double _t37 = _t18 * _t21 * _t12 * _t15;
-    const double _t38 = -(_t14 * _t18 + _t4);
+    const double _t36 = (_t27) ? ((_t30) ? -(_t14 * (((_t12 - _t11 * (_t13 * _t13 - (_t12 * _t12 - _t2)) * _t15) * _t16 - _t31 * _t19 - _t22 * _t32) * _t33) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
+    const double _t37 = _t21 * _t18 * _t11 * _t15;
+    const double _t38 = -(_t4 + _t14 * _t21);
     const double _t39 = -_t4;
-    const double _t40 = (_t27) ? ((_t30) ? _t14 * ((_t37 * _t22 + (_t32 * _t16 + _t19 * ((_t5 - _t17 * _t17 + _t18 * _t18) * _t12 * _t15 - _t17))) * _t31) - _t4 : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
-    const double _t41 = -(_t14 * _t21 + _t7);
+    const double _t40 = (_t27) ? ((_t30) ? -(_t14 * (((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t5)) * _t11 * _t15) * _t22 - _t37 * _t19 - _t32 * _t16) * _t33) + _t4) : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
+    const double _t41 = -(_t14 * _t18 + _t7);
     const double _t42 = -_t7;
-    const double _t43 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t8)) * _t12 * _t15) * _t22 - _t19 * _t37 - _t16 * _t33)) + _t7) : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
+    const double _t43 = (_t27) ? ((_t30) ? _t14 * ((((_t8 - _t17 * _t17 + _t18 * _t18) * _t11 * _t15 - _t17) * _t19 + _t31 * _t16 + _t22 * _t37) * _t33) - _t7 : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
     const double _t44 = _t36 * _t36 + (_t40 * _t40 + _t43 * _t43);
     const bool _t45 = _t44 > 0.0;
     const bool _t46 = _t44 <= 1.0e+30;
     const double _t47 = offsetgen_rsqrt(_t44);
-    const double _t48 = (_t10 > 0.0) ? _t12 : 0.0;
-    const double _t49 = -(_t48 * _t4);
-    const double _t50 = -(_t1 * _t48);
-    const double _t51 = -(_t7 * _t48);
-    n[0] = (_t45) ? ((_t46) ? _t40 * _t47 : _t49) : _t49;
-    n[1] = (_t45) ? ((_t46) ? _t36 * _t47 : _t50) : _t50;
-    n[2] = (_t45) ? ((_t46) ? _t43 * _t47 : _t51) : _t51;
+    const double _t48 = (_t9 > 0.0) ? _t11 : 0.0;
+    const double _t49 = -(_t48 * _t7);
+    const double _t50 = -(_t48 * _t1);
+    const double _t51 = -(_t4 * _t48);
+    n[0] = (_t45) ? ((_t46) ? _t43 * _t47 : _t49) : _t49;
+    n[1] = (_t45) ? ((_t46) ? _t47 * _t36 : _t50) : _t50;
+    n[2] = (_t45) ? ((_t46) ? _t40 * _t47 : _t51) : _t51;
 }
 
 #ifndef OFFSETGEN_CUDA_RSQRT_FLOAT_V1
@@ -251,7 +251,7 @@ __host__ __device__ inline float offsetgen_rsqrtf(float a)
  */
 __host__ __device__ inline float schwarzp_o2_fieldf(float x, float y, float z)
 {
-    return cosf(z * 6.28318548f) + cosf(6.28318548f * y) + cosf(6.28318548f * x);
+    return cospif(x * 2.0f) + (cospif(y * 2.0f) + cospif(z * 2.0f));
 }
 
 /* phi(p, h) of order 2: zero on the surface moved by h along +grad F.
@@ -259,35 +259,35 @@ __host__ __device__ inline float schwarzp_o2_fieldf(float x, float y, float z)
  */
 __host__ __device__ inline float schwarzp_o2_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = z * 6.28318548f;
-    float _s2, _c2;
-    sincosf(_t0, &_s2, &_c2);
-    const float _t1 = _c2;
-    const float _t2 = 6.28318548f * y;
-    float _s0, _c0;
-    sincosf(_t2, &_s0, &_c0);
-    const float _t3 = _c0;
-    const float _t4 = 6.28318548f * x;
-    float _s1, _c1;
-    sincosf(_t4, &_s1, &_c1);
-    const float _t5 = _c1;
+    const float _t0 = x * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t0, &_sp2, &_cp2);
+    const float _t1 = _cp2;
+    const float _t2 = y * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t2, &_sp0, &_cp0);
+    const float _t3 = _cp0;
+    const float _t4 = z * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t4, &_sp1, &_cp1);
+    const float _t5 = _cp1;
     const float _t6 = 6.28318548f * h;
-    const float _t7 = _s0;
-    const float _t8 = _s1;
-    const float _t9 = _s2;
-    const float _t10 = sqrtf(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
-    const float _t11 = offsetgen_rsqrtf(_t8 * _t8 + _t9 * _t9 + _t7 * _t7);
+    const float _t7 = _sp0;
+    const float _t8 = _sp1;
+    const float _t9 = _sp2;
+    const float _t10 = sqrtf(_t7 * _t7 + (_t8 * _t8 + _t9 * _t9));
+    const float _t11 = offsetgen_rsqrtf(_t7 * _t7 + (_t8 * _t8 + _t9 * _t9));
     const float _t12 = _t6 * 0.5f;
-    const float _t13 = _t7 + _t3 * _t7 * _t11 * _t12;
-    const float _t14 = _t8 * _t5 * _t11 * _t12 + _t8;
-    const float _t15 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const float _t13 = _t11 * (_t3 * _t7) * _t12 + _t7;
+    const float _t14 = _t1 * _t9 * _t11 * _t12 + _t9;
+    const float _t15 = _t8 + _t8 * _t5 * _t11 * _t12;
     const float _t16 = sqrtf(_t13 * _t13 + _t14 * _t14 + _t15 * _t15);
     const float _t17 = fabsf(_t6);
     const float _t18 = _t10 + _t17 * 0.500000477f;
     const float _t19 = (_t18 <= 1.73205256f) ? _t18 : 1.73205256f;
     const float _t20 = _t10 - _t17 * 1.50000155f;
     const float _t21 = ((-1.73205256f) <= _t20) ? _t20 : (-1.73205256f);
-    return _t1 + _t3 + _t5 - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
+    return _t1 + (_t3 + _t5) - _t6 * ((_t16 <= _t19) ? ((_t21 <= _t16) ? _t16 : _t21) : _t19);
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
@@ -295,43 +295,43 @@ __host__ __device__ inline float schwarzp_o2_offsetf(float x, float y, float z, 
  */
 __host__ __device__ inline float schwarzp_o2_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = z * 6.28318548f;
-    float _s1, _c1;
-    sincosf(_t0, &_s1, &_c1);
-    const float _t1 = _c1;
-    const float _t2 = 6.28318548f * y;
-    float _s2, _c2;
-    sincosf(_t2, &_s2, &_c2);
-    const float _t3 = _c2;
-    const float _t4 = 6.28318548f * x;
-    float _s0, _c0;
-    sincosf(_t4, &_s0, &_c0);
-    const float _t5 = _c0;
-    const float _t6 = _t1 + _t3 + _t5;
-    const float _t7 = _s0;
-    const float _t8 = _s1;
-    const float _t9 = _s2;
-    const float _t10 = sqrtf(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
-    const float _t11 = offsetgen_rsqrtf(_t7 * _t7 + _t8 * _t8 + _t9 * _t9);
-    const float _t12 = 6.28318548f * (t * 0.5f);
-    const float _t13 = _t12 * 0.5f;
-    const float _t14 = _t7 * _t5 * _t11 * _t13;
-    const float _t15 = _t14 + _t7;
-    const float _t16 = _t13 * (_t1 * _t8 * _t11);
-    const float _t17 = _t8 + _t16;
-    const float _t18 = _t13 * (_t3 * _t9 * _t11);
-    const float _t19 = _t18 + _t9;
-    const float _t20 = sqrtf(_t15 * _t15 + (_t17 * _t17 + _t19 * _t19));
-    const float _t21 = fabsf(_t12);
-    const float _t22 = _t21 * 0.500000477f + _t10;
+    const float _t0 = x * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t0, &_sp2, &_cp2);
+    const float _t1 = _cp2;
+    const float _t2 = y * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t2, &_sp0, &_cp0);
+    const float _t3 = _cp0;
+    const float _t4 = z * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t4, &_sp1, &_cp1);
+    const float _t5 = _cp1;
+    const float _t6 = _t1 + (_t3 + _t5);
+    const float _t7 = 6.28318548f * (t * 0.5f);
+    const float _t8 = _t7 * 0.5f;
+    const float _t9 = _sp0;
+    const float _t10 = _sp1;
+    const float _t11 = _sp2;
+    const float _t12 = sqrtf(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    const float _t13 = offsetgen_rsqrtf(_t9 * _t9 + (_t10 * _t10 + _t11 * _t11));
+    const float _t14 = _t8 * (_t13 * (_t3 * _t9));
+    const float _t15 = _t14 + _t9;
+    const float _t16 = _t8 * (_t10 * _t5 * _t13);
+    const float _t17 = _t10 + _t16;
+    const float _t18 = _t8 * (_t1 * _t11 * _t13);
+    const float _t19 = _t18 + _t11;
+    const float _t20 = sqrtf(_t15 * _t15 + _t17 * _t17 + _t19 * _t19);
+    const float _t21 = fabsf(_t7);
+    const float _t22 = _t21 * 0.500000477f + _t12;
     const float _t23 = (_t22 <= 1.73205256f) ? _t22 : 1.73205256f;
-    const float _t24 = _t10 - _t21 * 1.50000155f;
+    const float _t24 = _t12 - _t21 * 1.50000155f;
     const float _t25 = ((-1.73205256f) <= _t24) ? _t24 : (-1.73205256f);
-    const float _t26 = _t18 - _t9;
-    const float _t27 = _t14 - _t7;
-    const float _t28 = _t8 - _t16;
+    const float _t26 = _t14 - _t9;
+    const float _t27 = _t18 - _t11;
+    const float _t28 = _t10 - _t16;
     const float _t29 = sqrtf(_t26 * _t26 + _t27 * _t27 + _t28 * _t28);
-    return (_t6 - ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23) * _t12) * (((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) * _t12 + _t6);
+    return (_t6 - _t7 * ((_t20 <= _t23) ? ((_t25 <= _t20) ? _t20 : _t25) : _t23)) * (_t7 * ((_t29 <= _t23) ? ((_t25 <= _t29) ? _t29 : _t25) : _t23) + _t6);
 }
 
 /* unit normal (direction of +grad phi) of the offset surface at distance h, derived analytically; zero where the gradient vanishes.
@@ -339,67 +339,67 @@ __host__ __device__ inline float schwarzp_o2_shellf(float x, float y, float z, f
  */
 __host__ __device__ inline void schwarzp_o2_normalf(float x, float y, float z, float h, float n[3])
 {
-    const float _t0 = 6.28318548f * y;
-    float _s0, _c0;
-    sincosf(_t0, &_s0, &_c0);
-    const float _t1 = _s0;
-    const float _t2 = _c0;
-    const float _t3 = 6.28318548f * x;
-    float _s1, _c1;
-    sincosf(_t3, &_s1, &_c1);
-    const float _t4 = _s1;
+    const float _t0 = y * 2.0f;
+    float _sp0, _cp0;
+    sincospif(_t0, &_sp0, &_cp0);
+    const float _t1 = _sp0;
+    const float _t2 = _t1 * _t1;
+    const float _t3 = z * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t3, &_sp1, &_cp1);
+    const float _t4 = _sp1;
     const float _t5 = _t4 * _t4;
-    const float _t6 = z * 6.28318548f;
-    float _s2, _c2;
-    sincosf(_t6, &_s2, &_c2);
-    const float _t7 = _s2;
+    const float _t6 = x * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t6, &_sp2, &_cp2);
+    const float _t7 = _sp2;
     const float _t8 = _t7 * _t7;
-    const float _t9 = _t1 * _t1;
-    const float _t10 = _t5 + _t8 + _t9;
-    const float _t11 = sqrtf(_t10);
-    const float _t12 = offsetgen_rsqrtf(_t10);
-    const float _t13 = _t2 * _t1 * _t12;
+    const float _t9 = _t2 + (_t5 + _t8);
+    const float _t10 = sqrtf(_t9);
+    const float _t11 = offsetgen_rsqrtf(_t9);
+    const float _t12 = _cp0;
+    const float _t13 = _t11 * (_t12 * _t1);
     const float _t14 = 6.28318548f * h;
     const float _t15 = _t14 * 0.5f;
-    const float _t16 = _t1 + _t13 * _t15;
-    const float _t17 = _c1;
-    const float _t18 = _t4 * _t17 * _t12;
-    const float _t19 = _t18 * _t15 + _t4;
-    const float _t20 = _c2;
-    const float _t21 = _t20 * _t7 * _t12;
-    const float _t22 = _t21 * _t15 + _t7;
+    const float _t16 = _t13 * _t15 + _t1;
+    const float _t17 = _cp2;
+    const float _t18 = _t17 * _t7 * _t11;
+    const float _t19 = _t18 * _t15 + _t7;
+    const float _t20 = _cp1;
+    const float _t21 = _t4 * _t20 * _t11;
+    const float _t22 = _t4 + _t21 * _t15;
     const float _t23 = sqrtf(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
     const float _t24 = fabsf(_t14);
-    const float _t25 = _t11 + _t24 * 0.500000477f;
+    const float _t25 = _t10 + _t24 * 0.500000477f;
     const bool _t26 = _t25 <= 1.73205256f;
     const bool _t27 = _t23 <= ((_t26) ? _t25 : 1.73205256f);
-    const float _t28 = _t11 - _t24 * 1.50000155f;
+    const float _t28 = _t10 - _t24 * 1.50000155f;
     const bool _t29 = (-1.73205256f) <= _t28;
     const bool _t30 = ((_t29) ? _t28 : (-1.73205256f)) <= _t23;
-    const float _t31 = offsetgen_rsqrtf(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
-    const float _t32 = _t18 * _t13 * _t12 * _t15;
-    const float _t33 = _t21 * _t13 * _t12 * _t15;
-    const float _t34 = -(_t1 + _t14 * _t13);
+    const float _t31 = _t13 * _t18 * _t11 * _t15;
+    const float _t32 = _t13 * _t21 * _t11 * _t15;
+    const float _t33 = offsetgen_rsqrtf(_t16 * _t16 + _t19 * _t19 + _t22 * _t22);
+    const float _t34 = -(_t14 * _t13 + _t1);
     const float _t35 = -_t1;
-    const float _t36 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t2 - (_t13 * _t13 - (_t2 * _t2 - _t9)) * _t12 * _t15) * _t16 - _t19 * _t32 - _t22 * _t33)) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
-    const float _t37 = _t18 * _t21 * _t12 * _t15;
-    const float _t38 = -(_t14 * _t18 + _t4);
+    const float _t36 = (_t27) ? ((_t30) ? -(_t14 * (((_t12 - _t11 * (_t13 * _t13 - (_t12 * _t12 - _t2)) * _t15) * _t16 - _t31 * _t19 - _t22 * _t32) * _t33) + _t1) : ((_t29) ? _t34 : _t35)) : ((_t26) ? _t34 : _t35);
+    const float _t37 = _t21 * _t18 * _t11 * _t15;
+    const float _t38 = -(_t4 + _t14 * _t21);
     const float _t39 = -_t4;
-    const float _t40 = (_t27) ? ((_t30) ? _t14 * ((_t37 * _t22 + (_t32 * _t16 + _t19 * ((_t5 - _t17 * _t17 + _t18 * _t18) * _t12 * _t15 - _t17))) * _t31) - _t4 : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
-    const float _t41 = -(_t14 * _t21 + _t7);
+    const float _t40 = (_t27) ? ((_t30) ? -(_t14 * (((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t5)) * _t11 * _t15) * _t22 - _t37 * _t19 - _t32 * _t16) * _t33) + _t4) : ((_t29) ? _t38 : _t39)) : ((_t26) ? _t38 : _t39);
+    const float _t41 = -(_t14 * _t18 + _t7);
     const float _t42 = -_t7;
-    const float _t43 = (_t27) ? ((_t30) ? -(_t14 * (_t31 * ((_t20 - (_t21 * _t21 - (_t20 * _t20 - _t8)) * _t12 * _t15) * _t22 - _t19 * _t37 - _t16 * _t33)) + _t7) : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
+    const float _t43 = (_t27) ? ((_t30) ? _t14 * ((((_t8 - _t17 * _t17 + _t18 * _t18) * _t11 * _t15 - _t17) * _t19 + _t31 * _t16 + _t22 * _t37) * _t33) - _t7 : ((_t29) ? _t41 : _t42)) : ((_t26) ? _t41 : _t42);
     const float _t44 = _t36 * _t36 + (_t40 * _t40 + _t43 * _t43);
     const bool _t45 = _t44 > 0.0f;
     const bool _t46 = _t44 <= 1.00000002e+30f;
     const float _t47 = offsetgen_rsqrtf(_t44);
-    const float _t48 = (_t10 > 0.0f) ? _t12 : 0.0f;
-    const float _t49 = -(_t48 * _t4);
-    const float _t50 = -(_t1 * _t48);
-    const float _t51 = -(_t7 * _t48);
-    n[0] = (_t45) ? ((_t46) ? _t40 * _t47 : _t49) : _t49;
-    n[1] = (_t45) ? ((_t46) ? _t36 * _t47 : _t50) : _t50;
-    n[2] = (_t45) ? ((_t46) ? _t43 * _t47 : _t51) : _t51;
+    const float _t48 = (_t9 > 0.0f) ? _t11 : 0.0f;
+    const float _t49 = -(_t48 * _t7);
+    const float _t50 = -(_t48 * _t1);
+    const float _t51 = -(_t4 * _t48);
+    n[0] = (_t45) ? ((_t46) ? _t43 * _t47 : _t49) : _t49;
+    n[1] = (_t45) ? ((_t46) ? _t47 * _t36 : _t50) : _t50;
+    n[2] = (_t45) ? ((_t46) ? _t40 * _t47 : _t51) : _t51;
 }
 
 /* ---- Batch kernels ----------------------------------------------------------------------------

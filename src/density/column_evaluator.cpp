@@ -4,39 +4,6 @@
 #include <stdexcept>
 
 namespace offsetgen::density {
-namespace {
-
-double apply(Fn fn, double v) {
-  switch (fn) {
-    case Fn::Sin:
-      return std::sin(v);
-    case Fn::Cos:
-      return std::cos(v);
-    case Fn::Tan:
-      return std::tan(v);
-    case Fn::Exp:
-      return std::exp(v);
-    case Fn::Log:
-      return std::log(v);
-    case Fn::Sinh:
-      return std::sinh(v);
-    case Fn::Cosh:
-      return std::cosh(v);
-    case Fn::Tanh:
-      return std::tanh(v);
-    case Fn::Atan:
-      return std::atan(v);
-    case Fn::Asin:
-      return std::asin(v);
-    case Fn::Acos:
-      return std::acos(v);
-    case Fn::None:
-      break;
-  }
-  throw std::logic_error("ColumnEvaluator: no function");
-}
-
-}  // namespace
 
 ColumnEvaluator::ColumnEvaluator(const Program& program, int varying_input)
     : program_(program), varying_(varying_input), values_(program.nodes().size(), 0.0) {
@@ -88,7 +55,7 @@ void ColumnEvaluator::run(const std::vector<Instruction>& code) {
         r = std::fabs(v[n.a]);
         break;
       case Op::Call:
-        r = apply(n.fn, v[n.a]);
+        r = apply_function(n.fn, v[n.a]);
         break;
       case Op::Pow:
         r = std::pow(v[n.a], v[n.b]);

@@ -39,6 +39,9 @@ class Backend {
   virtual std::string literal(double value, Precision p) const = 0;
   virtual std::string suffix(Precision) const { return ""; }  // appended to function names: "" or "f"
   virtual std::string function(Fn fn, Precision p) const { return offsetgen::function_name(fn) + suffix(p); }
+  // Whether the target has sinpi and cospi (Fn::SinPi, Fn::CosPi): it is then given its programs in
+  // half-turns (lowering/program.h, in_half_turns), so the trig of 2 pi x never rounds 2 pi x.
+  virtual bool half_turn_trig() const { return false; }
   virtual std::string sqrt_name(Precision p) const { return "sqrt" + suffix(p); }
   virtual std::string abs_name(Precision p) const { return "abs" + suffix(p); }
   virtual std::string pow_name(Precision p) const { return "pow" + suffix(p); }

@@ -59,7 +59,7 @@ std::string replace_call(const std::string& text, const std::string& name, const
 }  // namespace
 
 std::string fuse_sincos(const std::string& body, const std::string& sin_name, const std::string& cos_name,
-                        const SincosDeclaration& declare) {
+                        const SincosDeclaration& declare, const std::string& stem) {
   std::string text = body;
   for (int k = 0;; ++k) {
     // The first argument that both functions take, innermost first: one without calls of either.
@@ -76,7 +76,7 @@ std::string fuse_sincos(const std::string& body, const std::string& sin_name, co
       }
     }
     if (!found) return text;
-    const std::string sin_var = fmt::format("_s{}", k), cos_var = fmt::format("_c{}", k);
+    const std::string sin_var = fmt::format("_s{}{}", stem, k), cos_var = fmt::format("_c{}{}", stem, k);
     size_t first = std::string::npos;
     text = replace_call(text, sin_name, shared, sin_var, first);
     text = replace_call(text, cos_name, shared, cos_var, first);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <deque>
 #include <sstream>
 
 namespace offsetgen {
@@ -46,10 +47,25 @@ std::string density_comment(const Backend& b, const FileFacts& facts) {
   return out;
 }
 
+// The functions as `b` prints them: in half-turns where it has sinpi and cospi (their programs kept
+// in `storage`), else as given.
+std::vector<EmittedFunction> functions_for(const Backend& b, const std::vector<EmittedFunction>& given,
+                                           std::deque<Program>& storage) {
+  if (!b.half_turn_trig()) return given;
+  std::vector<EmittedFunction> functions = given;
+  for (auto& f : functions) {
+    storage.push_back(in_half_turns(*f.program));
+    f.program = &storage.back();
+  }
+  return functions;
+}
+
 }  // namespace
 
-std::string render_file(const Backend& b, const FileFacts& facts, const std::vector<EmittedFunction>& functions,
+std::string render_file(const Backend& b, const FileFacts& facts, const std::vector<EmittedFunction>& given,
                         const std::vector<Precision>& precisions) {
+  std::deque<Program> half_turn_programs;
+  const std::vector<EmittedFunction> functions = functions_for(b, given, half_turn_programs);
   const std::string skeleton = load_template(b.name() + "/" + b.function_template());
   std::string rendered, function_list, ops_list;
   for (Precision precision : b.precisions(precisions)) {

@@ -16,6 +16,8 @@ FieldLowering::FieldLowering(Program& program, const Surface& surface, const Ato
   for (int i = 0; i < surface.dims; ++i) {
     point_.push_back(program_.mul(k, program_.input(i)));
     env.bindings.emplace_back(Symbols::get().natural(i), point_.back());
+    // X_i = k x_i = pi (k / pi) x_i: trig of multiples of X_i can be evaluated in half-turns of x_i.
+    env.half_turns.push_back({Symbols::get().natural(i), i, surface.scale / GiNaC::Pi});
   }
   points_.push_back({point_, &env});
 }
@@ -69,6 +71,7 @@ const Environment& FieldLowering::with(const Environment& from, const GiNaC::sym
   }
   Environment& env = add_environment(from.shared_id);
   env.bindings = from.bindings;
+  env.half_turns = from.half_turns;
   env.bindings.emplace_back(symbol, value);
   return env;
 }
@@ -91,6 +94,7 @@ NodeId FieldLowering::cell_expression(const GiNaC::ex& e, const std::vector<Node
       NodeId cell =
           natural_point == point_ ? program_.input(i) : program_.mul(inverse, natural_point[static_cast<size_t>(i)]);
       env.bindings.emplace_back(Symbols::get().cell(i), cell);
+      if (natural_point == point_) env.half_turns.push_back({Symbols::get().cell(i), i, 1 / GiNaC::Pi});
     }
     cell_points_.push_back({natural_point, &env});
     found = &env;

@@ -128,7 +128,46 @@ NodeId Lowerer::lower_function(const GiNaC::ex& e, const Environment& env) {
   }
   NodeId argument = lower(e.op(0), env);
   if (f.get_name() == "abs") return program_.abs(argument);
-  return program_.call(function_of(f.get_name()), argument);
+  const NodeId result = program_.call(function_of(f.get_name()), argument);
+  if (!env.half_turns.empty() && (f.get_name() == "sin" || f.get_name() == "cos"))
+    note_half_turns(result, e.op(0), argument, env);
+  return result;
+}
+
+namespace {
+
+// Whether `e` is a number: no symbols, only numerics and constants such as Pi.
+bool is_constant_expression(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::constant>(e)) return true;
+  if (!GiNaC::is_a<GiNaC::add>(e) && !GiNaC::is_a<GiNaC::mul>(e) && !GiNaC::is_a<GiNaC::power>(e)) return false;
+  for (size_t i = 0; i < e.nops(); ++i)
+    if (!is_constant_expression(e.op(i))) return false;
+  return true;
+}
+
+}  // namespace
+
+void Lowerer::note_half_turns(NodeId result, const GiNaC::ex& argument, NodeId argument_node, const Environment& env) {
+  for (const auto& coordinate : env.half_turns) {
+    if (!argument.has(coordinate.coordinate)) continue;
+    // argument = c * coordinate with c constant: in half-turns of the input, c * per_half_turn.
+    const GiNaC::ex c = (argument / coordinate.coordinate).normal();
+    if (!is_constant_expression(c)) return;
+    const GiNaC::ex turns = c * coordinate.per_half_turn;
+    if (!GiNaC::is_a<GiNaC::numeric>(turns) || !GiNaC::ex_to<GiNaC::numeric>(turns).is_rational()) return;
+    double coefficient = GiNaC::ex_to<GiNaC::numeric>(turns).to_double();
+    // Program::call takes a negated argument's sign out (sin(-a) = -sin(a), cos(-a) = cos(a)): the
+    // call node then has the negation's operand, -c * coordinate.
+    NodeId operand = argument_node;
+    if (program_.node(operand).op == Op::Neg) {
+      operand = program_.node(operand).a;
+      coefficient = -coefficient;
+    }
+    const NodeId call = program_.node(result).op == Op::Neg ? program_.node(result).a : result;
+    if (program_.node(call).op == Op::Call && program_.node(call).a == operand)
+      program_.note_half_turns(call, {coefficient, coordinate.input});
+    return;
+  }
 }
 
 namespace {

@@ -31,6 +31,15 @@ struct Environment {
     NodeId d_squared;      // d^2, possibly computed on a shorter path than d * d
   };
   std::vector<Displacement> displacement;
+  // Coordinates bound to pi * per_half_turn * input(input), per_half_turn exact (k/pi for X = k x at
+  // the base point): sin and cos of c * coordinate with c * per_half_turn rational are noted in
+  // half-turns (Program::note_half_turns).
+  struct HalfTurnCoordinate {
+    GiNaC::ex coordinate;
+    int input = -1;
+    GiNaC::ex per_half_turn;
+  };
+  std::vector<HalfTurnCoordinate> half_turns;
 };
 
 // The largest |d| the small-angle polynomials of displaced environments are exact for (within
@@ -59,6 +68,8 @@ class Lowerer {
   // is not an integer multiple of one displaced coordinate.
   std::optional<std::pair<NodeId, NodeId>> displaced_sincos(const GiNaC::ex& argument, const Environment& env);
   std::pair<NodeId, NodeId> small_angle_sincos(NodeId d, NodeId d_squared);
+  // Notes the sin/cos node `result` of `argument` in half-turns where env allows (Environment::half_turns).
+  void note_half_turns(NodeId result, const GiNaC::ex& argument, NodeId argument_node, const Environment& env);
 
   Program& program_;
   const AtomTable& atoms_;

@@ -27,7 +27,25 @@ bool same_node(const Node& x, const Node& y) {
          double_bits(x.value) == double_bits(y.value);
 }
 
-double apply(Fn fn, double v) {
+// sin(pi (a + n/2)) for the quadrant n = rint(2a): a - n/2 is exact (Sterbenz), |pi r| <= pi/4.
+double sin_half_turns(double a, int shift) {
+  const double n = std::nearbyint(2 * a);
+  const double t = 3.14159265358979323846 * (a - n / 2);
+  switch ((static_cast<long long>(std::fmod(n, 4.0)) + shift + 8) % 4) {
+    case 0:
+      return std::sin(t);
+    case 1:
+      return std::cos(t);
+    case 2:
+      return -std::sin(t);
+    default:
+      return -std::cos(t);
+  }
+}
+
+}  // namespace
+
+double apply_function(Fn fn, double v) {
   switch (fn) {
     case Fn::Sin:
       return std::sin(v);
@@ -51,13 +69,15 @@ double apply(Fn fn, double v) {
       return std::asin(v);
     case Fn::Acos:
       return std::acos(v);
+    case Fn::SinPi:
+      return sin_half_turns(v, 0);
+    case Fn::CosPi:
+      return sin_half_turns(v, 1);  // cos(pi a) = sin(pi a + pi/2)
     case Fn::None:
       break;
   }
   throw std::logic_error("apply: no function");
 }
-
-}  // namespace
 
 const char* function_name(Fn fn) {
   switch (fn) {
@@ -83,6 +103,10 @@ const char* function_name(Fn fn) {
       return "asin";
     case Fn::Acos:
       return "acos";
+    case Fn::SinPi:
+      return "sinpi";
+    case Fn::CosPi:
+      return "cospi";
     case Fn::None:
       break;
   }
@@ -218,10 +242,11 @@ NodeId Program::abs(NodeId a) {
 }
 
 NodeId Program::call(Fn fn, NodeId a) {
-  if (is_const(a)) return constant(apply(fn, node(a).value));
+  if (is_const(a)) return constant(apply_function(fn, node(a).value));
   if (node(a).op == Op::Neg) {  // odd and even symmetry keeps one argument per sin/cos pair
-    if (fn == Fn::Cos || fn == Fn::Cosh) return call(fn, node(a).a);
-    if (fn == Fn::Sin || fn == Fn::Tan || fn == Fn::Sinh || fn == Fn::Tanh || fn == Fn::Atan || fn == Fn::Asin)
+    if (fn == Fn::Cos || fn == Fn::Cosh || fn == Fn::CosPi) return call(fn, node(a).a);
+    if (fn == Fn::Sin || fn == Fn::SinPi || fn == Fn::Tan || fn == Fn::Sinh || fn == Fn::Tanh || fn == Fn::Atan ||
+        fn == Fn::Asin)
       return neg(call(fn, node(a).a));
   }
   Node n;
@@ -337,6 +362,81 @@ NodeId Program::integer_power(NodeId base, int exponent) {
 
 void Program::add_output(const std::string& name, NodeId node) { outputs_.emplace_back(name, node); }
 
+void Program::note_half_turns(NodeId call, HalfTurns form) {
+  const Node& n = node(call);
+  if (n.op != Op::Call || (n.fn != Fn::Sin && n.fn != Fn::Cos))
+    throw std::logic_error("note_half_turns: not a sin or cos node");
+  for (const auto& [id, noted] : half_turns_)
+    if (id == call) return;  // the same node reached again (hash-consing): the same value
+  half_turns_.emplace_back(call, form);
+}
+
+Program in_half_turns(const Program& program) {
+  Program out(program.inputs());
+  std::vector<NodeId> map(program.nodes().size(), -1);
+  std::unordered_map<NodeId, Program::HalfTurns> forms(program.half_turns().begin(), program.half_turns().end());
+  auto at = [&map](int operand) { return map[static_cast<size_t>(operand)]; };
+  // Nodes are interned operands first, so index order is an evaluation order.
+  for (size_t id = 0; id < program.nodes().size(); ++id) {
+    const Node& n = program.node(static_cast<NodeId>(id));
+    NodeId r = -1;
+    switch (n.op) {
+      case Op::Input:
+        r = out.input(n.input);
+        break;
+      case Op::Const:
+        r = out.constant(n.value);
+        break;
+      case Op::Add:
+        r = out.add(at(n.a), at(n.b));
+        break;
+      case Op::Sub:
+        r = out.sub(at(n.a), at(n.b));
+        break;
+      case Op::Mul:
+        r = out.mul(at(n.a), at(n.b));
+        break;
+      case Op::Div:
+        r = out.div(at(n.a), at(n.b));
+        break;
+      case Op::Neg:
+        r = out.neg(at(n.a));
+        break;
+      case Op::Sqrt:
+        r = out.sqrt(at(n.a));
+        break;
+      case Op::Abs:
+        r = out.abs(at(n.a));
+        break;
+      case Op::Call: {
+        auto form = forms.find(static_cast<NodeId>(id));
+        if (form == forms.end()) {
+          r = out.call(n.fn, at(n.a));
+        } else {
+          const NodeId turns = out.mul(out.constant(form->second.coefficient), out.input(form->second.input));
+          r = out.call(n.fn == Fn::Sin ? Fn::SinPi : Fn::CosPi, turns);
+        }
+        break;
+      }
+      case Op::Pow:
+        r = out.pow(at(n.a), at(n.b));
+        break;
+      case Op::LessEq:
+        r = out.less_eq(at(n.a), at(n.b));
+        break;
+      case Op::Greater:
+        r = out.greater(at(n.a), at(n.b));
+        break;
+      case Op::Select:
+        r = out.select(at(n.a), at(n.b), at(n.c));
+        break;
+    }
+    map[id] = r;
+  }
+  for (const auto& [name, node] : program.outputs()) out.add_output(name, at(node));
+  return out;
+}
+
 std::vector<NodeId> schedule(const Program& program) {
   std::vector<NodeId> order;
   std::vector<char> state(program.nodes().size(), 0);  // 0 new, 1 visiting, 2 done
@@ -404,7 +504,7 @@ const std::vector<double>& Evaluator::operator()(const std::vector<double>& inpu
         r = std::fabs(A());
         break;
       case Op::Call:
-        r = apply(n.fn, A());
+        r = apply_function(n.fn, A());
         break;
       case Op::Pow:
         r = std::pow(A(), B());

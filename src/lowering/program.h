@@ -27,9 +27,12 @@ enum class Op : uint8_t {
   Select,  // comparisons yield booleans; Select(c, a, b) = c ? a : b
 };
 
-enum class Fn : uint8_t { None, Sin, Cos, Tan, Exp, Log, Sinh, Cosh, Tanh, Atan, Asin, Acos };
+// SinPi(a) = sin(pi a) and CosPi(a) = cos(pi a): the half-turn forms (see in_half_turns below).
+enum class Fn : uint8_t { None, Sin, Cos, Tan, Exp, Log, Sinh, Cosh, Tanh, Atan, Asin, Acos, SinPi, CosPi };
 
 const char* function_name(Fn fn);  // C/GLSL spelling of the double-precision name, e.g. "sin"
+// fn(value) in double; SinPi and CosPi reduce their argument exactly.
+double apply_function(Fn fn, double value);
 
 struct Node {
   Op op = Op::Const;
@@ -72,6 +75,17 @@ class Program {
 
   void add_output(const std::string& name, NodeId node);
 
+  // A sin or cos node whose argument is pi * coefficient * input(input), with `coefficient` exact
+  // (m k / pi for sin(m X) with X = k x and k a rational multiple of pi). Where a target has sinpi and
+  // cospi, in_half_turns() evaluates it as sinpi(coefficient * x): no rounded 2 pi x ever exists, and
+  // the argument reduction is exact (docs/neovius_o4_float.md).
+  struct HalfTurns {
+    double coefficient = 0;
+    int input = -1;
+  };
+  void note_half_turns(NodeId call, HalfTurns form);
+  const std::vector<std::pair<NodeId, HalfTurns>>& half_turns() const { return half_turns_; }
+
   const Node& node(NodeId id) const { return nodes_[static_cast<size_t>(id)]; }
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<std::string>& inputs() const { return inputs_; }
@@ -88,7 +102,12 @@ class Program {
   std::vector<Node> nodes_;
   std::unordered_map<uint64_t, std::vector<NodeId>> by_shape_;
   std::vector<std::pair<std::string, NodeId>> outputs_;
+  std::vector<std::pair<NodeId, HalfTurns>> half_turns_;  // in the order noted, one entry per node
 };
+
+// `program` with every noted sin/cos node (Program::note_half_turns) rebuilt as SinPi/CosPi of
+// coefficient * input, for targets with sinpi and cospi (Backend::half_turn_trig). Same outputs.
+Program in_half_turns(const Program& program);
 
 // Nodes reachable from the outputs, in a deterministic evaluation order (operands first).
 std::vector<NodeId> schedule(const Program& program);

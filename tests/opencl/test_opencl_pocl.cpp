@@ -1,9 +1,8 @@
 // The generated OpenCL C sources run on pocl's CPU device: each builds with -Werror (OpenCL C 1.2);
 // its batch kernels and a kernel that calls every function run on points near the zero set, and the
 // values are compared with the C header's double functions as zero-set shifts (zero_set_points.h):
-// within 2e-5 in float (float_shift_limit: 2e-4 for neovius order 4, as for the C header's float
-// twins) and 1e-12 in double (where the device reports cl_khr_fp64); the unit normals
-// within 1e-3 in float (offsetgen check's float limit) and 1e-12 in double.
+// within 2e-5 in float (kFloatShiftLimit, every case) and 1e-12 in double (where the device reports
+// cl_khr_fp64); the unit normals within 1e-3 in float (offsetgen check's float limit) and 1e-12 in double.
 #include "opencl_cases.h"
 #include "opencl_runner.h"
 
@@ -136,9 +135,9 @@ TEST_P(OpenclOnPocl, BuildsWithWarningsAsErrorsAndMatchesTheCHeader) {
   const double batch_f = batch_shift<float>(program, c, c.prefix + "_offsetf_kernel");
   std::cout << c.prefix << " on " << program.device_name() << ": float " << describe(f) << ", batch kernel " << batch_f
             << "\n";
-  EXPECT_LE(f.largest_shift(), float_shift_limit(c.prefix)) << c.prefix << " float: " << describe(f);
+  EXPECT_LE(f.largest_shift(), kFloatShiftLimit) << c.prefix << " float: " << describe(f);
   EXPECT_LE(f.normal, kFloatNormalTolerance) << c.prefix << " float: " << describe(f);
-  EXPECT_LE(batch_f, float_shift_limit(c.prefix)) << c.prefix << "_offsetf_kernel";
+  EXPECT_LE(batch_f, kFloatShiftLimit) << c.prefix << "_offsetf_kernel";
   if (!program.has_fp64()) {
     std::cout << c.prefix << ": " << program.device_name() << " has no cl_khr_fp64, double not run\n";
     return;
@@ -163,7 +162,7 @@ TEST_P(OpenclWithoutFp64, BuildsAndRunsInFloat) {
   const OpenclCase& c = GetParam();
   const OpenclProgram program("#undef cl_khr_fp64\n" + with_test_kernels(c), "-cl-std=CL1.2 -Werror");
   const ZeroSetShifts f = every_function<float>(program, c, "offsetgen_test_every_functionf");
-  EXPECT_LE(f.largest_shift(), float_shift_limit(c.prefix)) << describe(f);
+  EXPECT_LE(f.largest_shift(), kFloatShiftLimit) << describe(f);
   EXPECT_LE(f.normal, kFloatNormalTolerance) << describe(f);
 }
 

@@ -1,6 +1,7 @@
 // The CUDA target: <prefix>.cuh, a header for .cu files with __host__ __device__ functions in double
-// and float (f-suffixed names, as in the C header), written with CUDA's own math (sincos for a sin and
-// a cos of the same argument, rsqrt for a division by a square root), and a batch kernel
+// and float (f-suffixed names, as in the C header), written with CUDA's own math (sincospi and sinpi/
+// cospi for the trig of 2 pi x, sincos for a sin and a cos of the same argument, rsqrt for a division
+// by a square root), and a batch kernel
 // <prefix>_offset_kernel (and <prefix>_offsetf_kernel). Skeletons: templates/cuda/.
 #include "emit/backend.h"
 #include "emit/c_family.h"
@@ -86,13 +87,19 @@ class CudaBackend final : public Backend {
   std::string vector_return(const FileFacts&, const std::vector<std::string>& components) const override {
     return c_family::vector_return(components);
   }
+  bool half_turn_trig() const override { return true; }  // sinpi, cospi, sincospi (and the f forms)
   std::string finish_body(const FileFacts&, const std::string& body, Precision p) const override {
     const std::string f = suffix(p), real = real_type(p);
-    const std::string fused = fuse_sincos(
-        body, "sin" + f, "cos" + f, [&](const std::string& argument, const std::string& s, const std::string& c) {
-          return fmt::format("    {} {}, {};\n    sincos{}({}, &{}, &{});\n", real, s, c, f, argument, s, c);
-        });
-    return use_rsqrt(fused, "sqrt" + f, "offsetgen_rsqrt" + f);
+    // One sincos (sincospi) per argument of both a sin and a cos (a sinpi and a cospi).
+    auto fuse = [&](const std::string& text, const std::string& kind, const std::string& stem) {
+      return fuse_sincos(
+          text, "sin" + kind + f, "cos" + kind + f,
+          [&](const std::string& argument, const std::string& s, const std::string& c) {
+            return fmt::format("    {} {}, {};\n    sincos{}{}({}, &{}, &{});\n", real, s, c, kind, f, argument, s, c);
+          },
+          stem);
+    };
+    return use_rsqrt(fuse(fuse(body, "pi", "p"), "", ""), "sqrt" + f, "offsetgen_rsqrt" + f);
   }
 
   std::string list_entry(const FileFacts& facts, const EmittedFunction& f, Precision p) const override {

@@ -1,7 +1,7 @@
 // The OpenCL C target: <prefix>.cl, program source for OpenCL C 1.2 and later, with the functions
 // and a batch kernel in float (f-suffixed names: <prefix>_offsetf, <prefix>_offsetf_kernel) and, where
 // the device reports cl_khr_fp64, in double (the C header's names). float3/double3 points, OpenCL's
-// own math (sincos, rsqrt). Skeletons: templates/opencl/.
+// own math (sinpi and cospi for the trig of 2 pi x, sincos, rsqrt). Skeletons: templates/opencl/.
 #include "emit/backend.h"
 #include "emit/c_family.h"
 #include "emit/call_rewrites.h"
@@ -110,6 +110,7 @@ class OpenclBackend final : public Backend {
     for (const auto& c : components) list += (list.empty() ? "" : ", ") + c;
     return fmt::format("    return ({}{})({});\n", kRealPlaceholder, facts.dims, list);
   }
+  bool half_turn_trig() const override { return true; }  // sinpi, cospi (OpenCL C 1.0)
   std::string finish_body(const FileFacts&, const std::string& body, Precision p) const override {
     const std::string real = real_type(p);
     std::string text =
