@@ -1,7 +1,10 @@
 // Method "projection": offsets by foot-point projection (docs/projection.md). With
 // n = grad F / |grad F| (0 where grad F = 0):
 //   q_0 = p - h n(p),  q_{j+1} = p - h n(q_j)  (j < K),  phi(p, h) = F(q_K).
-// K projections give order 2(K+1). |q_K - p| = |h|, so |phi - F(p)| <= M |h| without any clamp.
+// K projections give order 2(K+1). |q_K - p| = |h|, so |F(q_K) - F(p)| <= M |h| without any clamp.
+// For K >= 1, phi is F's second-order Taylor polynomial at q_(K-1) evaluated at q_K: the step
+// q_K - q_(K-1) is O(h^(K+1)), so the remainder is of the method's own order, and q_K needs no trig
+// of its own. phi is kept within F(p) -+ M |h|, which holds F(q_K), so |phi - F(p)| <= M |h| still.
 // Graded walls read the half thickness at the foot-point estimate: h_0 = h(p), h_{j+1} = h(q_j),
 // q_{j+1} = p - h_{j+1} n(q_j), which gains one order per projection.
 #include "lowering/cell_bounds.h"
@@ -96,7 +99,7 @@ class Projection final : public OffsetConstruction {
   const CellBounds& bounds() const override { return bounds_; }
 
   NodeId lower_offset(FieldLowering& at, NodeId h) const override {
-    return at.field(foot_point(at, [h](const std::vector<NodeId>&) { return h; }));
+    return value_at_foot_point(at, [h](const std::vector<NodeId>&) { return h; });
   }
 
   std::vector<NodeId> lower_normal(FieldLowering& at, NodeId h) const override {
@@ -104,12 +107,11 @@ class Projection final : public OffsetConstruction {
   }
 
   NodeId lower_graded_offset(FieldLowering& at, const LoweredHalfThickness& h) const override {
-    return at.field(foot_point(at, h));
+    return value_at_foot_point(at, h);
   }
 
   GiNaC::numeric offset(FieldReference& at, const GiNaC::numeric& h) const override {
-    auto scope = at.at(foot_point(at, [&h](const FieldReference::Point&) { return h; }));
-    return at.field(scope);
+    return value_at_foot_point(at, [&h](const FieldReference::Point&) { return h; });
   }
 
   std::vector<GiNaC::numeric> normal(FieldReference& at, const GiNaC::numeric& h) const override {
@@ -118,8 +120,7 @@ class Projection final : public OffsetConstruction {
   }
 
   GiNaC::numeric graded_offset(FieldReference& at, const ReferenceHalfThickness& h) const override {
-    auto scope = at.at(foot_point(at, h));
-    return at.field(scope);
+    return value_at_foot_point(at, h);
   }
 
  private:
@@ -145,9 +146,85 @@ class Projection final : public OffsetConstruction {
     return g;
   }
 
+  // One foot-point estimate q_j = p - d, reached with the (clamped) half thickness `step`.
+  struct Estimate {
+    const Environment* env;
+    std::vector<NodeId> d;
+    NodeId step;
+  };
+  struct ReferenceEstimate {
+    FieldReference::Point q;
+    GiNaC::numeric step;
+  };
+
+  // phi = F(q_K), for K >= 1 through F, grad F and Hess F at q_(K-1), with delta = q_K - q_(K-1):
+  //   T = F + grad F . delta + delta^T (Hess F) delta / 2,
+  // all from the trig at q_(K-1), which grad F there needs anyway. T is kept within F(p) -+ M |h_K|,
+  // the interval that holds F(q_K) exactly, so keeping it there never moves it away from F(q_K).
+  // Near the walls delta is small and the interval is never reached; far from them, where n turns
+  // fast, delta is not small, and the interval is what keeps phi's sign that of F.
+  NodeId value_at_foot_point(FieldLowering& at, const LoweredHalfThickness& h) const {
+    std::vector<Estimate> walk;
+    const Environment& last_env = foot_point(at, h, &walk);
+    if (walk.size() < 2) return at.field(last_env);
+    Program& program = at.program();
+    const Estimate& last = walk[walk.size() - 1];
+    const Estimate& before = walk[walk.size() - 2];
+    const std::vector<NodeId> g = at.gradient(*before.env);
+    std::vector<NodeId> delta;  // q_K - q_(K-1) = d_(K-1) - d_K
+    for (size_t i = 0; i < g.size(); ++i) delta.push_back(program.sub(before.d[i], last.d[i]));
+    std::vector<NodeId> terms = {at.field(*before.env)};
+    for (size_t i = 0; i < delta.size(); ++i) {
+      // delta_i (g_i + H_ii delta_i / 2 + sum_(j > i) H_ij delta_j)
+      std::vector<NodeId> row = {g[i], program.mul(program.constant(0.5),
+                                                   program.mul(hessian(at, *before.env, i, i), delta[i]))};
+      for (size_t j = i + 1; j < delta.size(); ++j)
+        row.push_back(program.mul(hessian(at, *before.env, i, j), delta[j]));
+      terms.push_back(program.mul(delta[i], program.sum(row)));
+    }
+    const NodeId taylor = program.sum(terms);
+    const NodeId f_p = at.field(at.base());
+    const NodeId reach = program.mul(program.constant(bounds_.gradient), program.abs(last.step));
+    const NodeId low = program.sub(f_p, reach), high = program.add(f_p, reach);
+    return program.select(program.less_eq(taylor, high), program.select(program.less_eq(low, taylor), taylor, low),
+                          high);
+  }
+
+  GiNaC::numeric value_at_foot_point(FieldReference& at, const ReferenceHalfThickness& h) const {
+    const std::vector<ReferenceEstimate> walk = foot_point_walk(at, h);
+    if (walk.size() < 2) {
+      auto scope = at.at(walk.back().q);
+      return at.field(scope);
+    }
+    const ReferenceEstimate& last = walk[walk.size() - 1];
+    const ReferenceEstimate& before = walk[walk.size() - 2];
+    auto scope = at.at(before.q);
+    const auto g = at.gradient(scope);
+    GiNaC::numeric taylor = at.field(scope);
+    for (size_t i = 0; i < g.size(); ++i) {
+      GiNaC::numeric row = g[i] + GiNaC::numeric(1, 2) * hessian(at, scope, i, i) * (last.q[i] - before.q[i]);
+      for (size_t j = i + 1; j < g.size(); ++j) row += hessian(at, scope, i, j) * (last.q[j] - before.q[j]);
+      taylor += (last.q[i] - before.q[i]) * row;
+    }
+    const GiNaC::numeric f_p = at.field(at.base());
+    const GiNaC::numeric reach = GiNaC::numeric(bounds_.gradient) * GiNaC::abs(last.step);
+    if (taylor > f_p + reach) return f_p + reach;
+    if (taylor < f_p - reach) return f_p - reach;
+    return taylor;
+  }
+
+  NodeId hessian(FieldLowering& at, const Environment& env, size_t i, size_t j) const {
+    return at.lower(field_.hessian(static_cast<int>(i), static_cast<int>(j)), env);
+  }
+  GiNaC::numeric hessian(FieldReference& at, FieldReference::Scope& scope, size_t i, size_t j) const {
+    return at.eval(field_.hessian(static_cast<int>(i), static_cast<int>(j)), scope);
+  }
+
   // The environment of q_K, with the half thickness read at p first and at each foot-point estimate
-  // after. With angle addition the displacement d = h n is clamped to |d_i| <= kSmallAngleMax.
-  const Environment& foot_point(FieldLowering& at, const LoweredHalfThickness& h) const {
+  // after; `walk` (optional) receives q_0 .. q_K. With angle addition the displacement d = h n is
+  // clamped to |d_i| <= kSmallAngleMax.
+  const Environment& foot_point(FieldLowering& at, const LoweredHalfThickness& h,
+                                std::vector<Estimate>* walk = nullptr) const {
     Program& program = at.program();
     at.use_angle_addition(angle_addition_);
     const Environment* estimate = &at.base();
@@ -162,6 +239,7 @@ class Projection final : public OffsetConstruction {
         const auto q = at.displaced(d);
         estimate = q.env;
         point = q.point;
+        if (walk) walk->push_back({estimate, d, step});
         continue;
       }
       // |d_i| <= |h| with d = h n, so clamping h to [-1, 1] once keeps every d_i within the
@@ -188,13 +266,20 @@ class Projection final : public OffsetConstruction {
       const auto q = at.displaced(d, d2);
       estimate = q.env;
       point = q.point;
+      if (walk) walk->push_back({estimate, d, step});
     }
     return *estimate;
   }
 
   std::vector<GiNaC::numeric> foot_point(FieldReference& at, const ReferenceHalfThickness& h) const {
+    return foot_point_walk(at, h).back().q;
+  }
+
+  // q_0 .. q_K, each with the (clamped) half thickness that reached it.
+  std::vector<ReferenceEstimate> foot_point_walk(FieldReference& at, const ReferenceHalfThickness& h) const {
     const auto& p = at.point();
     const GiNaC::numeric limit(kSmallAngleMax);
+    std::vector<ReferenceEstimate> walk;
     std::vector<GiNaC::numeric> estimate = p;
     for (int j = 0; j <= projections_; ++j) {
       auto scope = at.at(estimate);
@@ -206,8 +291,9 @@ class Projection final : public OffsetConstruction {
       std::vector<GiNaC::numeric> next;
       for (size_t i = 0; i < p.size(); ++i) next.push_back(p[i] - step * n[i]);
       estimate = std::move(next);
+      walk.push_back({estimate, step});
     }
-    return estimate;
+    return walk;
   }
 
   // In the band |F(p)| <= M|h| that holds the zero set, the estimates q_j lie within |h| of p, so
