@@ -2,9 +2,10 @@
 // n = grad F / |grad F| (0 where grad F = 0):
 //   q_0 = p - h n(p),  q_{j+1} = p - h n(q_j)  (j < K),  phi(p, h) = F(q_K).
 // K projections give order 2(K+1). |q_K - p| = |h|, so |F(q_K) - F(p)| <= M |h| without any clamp.
-// For K >= 1, phi is F's second-order Taylor polynomial at q_(K-1) evaluated at q_K: the step
-// q_K - q_(K-1) is O(h^(K+1)), so the remainder is of the method's own order, and q_K needs no trig
-// of its own. phi is kept within F(p) -+ M |h|, which holds F(q_K), so |phi - F(p)| <= M |h| still.
+// For K >= 1 on periodic trig polynomials (the catalog), phi is F's second-order Taylor polynomial
+// at q_(K-1) evaluated at q_K: the step q_K - q_(K-1) is O(h^(K+1)), so the remainder is of the
+// method's own order, and q_K needs no trig of its own. phi is kept within F(p) -+ M |h|, which
+// holds F(q_K), so |phi - F(p)| <= M |h| still.
 // Graded walls read the half thickness at the foot-point estimate: h_0 = h(p), h_{j+1} = h(q_j),
 // q_{j+1} = p - h_{j+1} n(q_j), which gains one order per projection.
 #include "lowering/cell_bounds.h"
@@ -29,7 +30,7 @@ constexpr double kTinyLength2 = 1.1754943508222875e-38;
 constexpr int projections_for(int order) { return (order + 1) / 2 - 1; }  // K = ceil(m/2) - 1
 static_assert(kMethodEvenOrdersOnly && 2 * (projections_for(3) + 1) == 4, "odd orders round up");
 
-MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addition) {
+MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addition, bool taylor_last_step) {
   MethodFacts f;
   f.method = kMethodName;
   f.requested_order = requested;
@@ -44,10 +45,14 @@ MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addit
   f.graded_paper_order = k == 0 ? 2 : 1;
   f.summary = fmt::format(
       "foot-point projection with K = {} projection step{}: q_0 = p - h n(p), q_(j+1) = p - h n(q_j), "
-      "phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order 2(K+1) = {}{}.",
+      "phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order 2(K+1) = {}{}.{}",
       k, k == 1 ? "" : "s", f.order,
       requested != f.order
           ? fmt::format(" (order {} was asked for; odd orders round up to the next even one)", requested)
+          : "",
+      taylor_last_step
+          ? " F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K (q_K - q_(K-1) = "
+            "O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig of its own)."
           : "");
   f.citation = "offsetgen, docs/projection.md (foot-point projection).";
   f.accuracy = fmt::format(
@@ -61,11 +66,14 @@ MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addit
       "second order at best.",
       f.graded_wall_order, f.graded_order);
   f.safety = fmt::format(
-      "no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M = {:.17g} >= max |grad F| "
-      "over the cell (2*pi/L scaled coordinates, h in them too): phi has the sign of F wherever |F| > M |h|, so "
-      "no phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite "
+      "no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M = {:.17g} >= max |grad "
+      "F| over the cell (2*pi/L scaled coordinates, h in them too){}: phi has the sign of F wherever |F| > M |h|, "
+      "so no phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite "
       "input (do not compile with -ffinite-math-only).{}",
       b.gradient,
+      taylor_last_step ? ", and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) "
+                         "(so this never moves it away from F(q_K))"
+                       : ", and phi = F(q_K)",
       angle_addition
           ? fmt::format(" sin and cos at the foot-point estimates come from their values at p by angle addition, "
                         "which is exact while |h| <= {:g} (natural units: |h| <= {:.3g} cell on a 2*pi-periodic "
@@ -80,16 +88,19 @@ MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addit
       "surface's normal); zero where grad F = 0.";
   f.metadata["projections"] = k;
   f.metadata["foot_point_trig"] = angle_addition ? "angle addition" : "direct";
+  f.metadata["last_estimate"] = taylor_last_step ? "taylor" : "field";
   return f;
 }
 
 class Projection final : public OffsetConstruction {
  public:
   Projection(const Surface& surface, int requested_order)
-      : projections_(projections_for(requested_order)), angle_addition_(is_trigonometric_polynomial(surface.field)) {
+      : projections_(projections_for(requested_order)),
+        angle_addition_(is_trigonometric_polynomial(surface.field)),
+        taylor_last_step_(projections_ >= 1 && angle_addition_ && surface.scale.is_equal(2 * GiNaC::Pi)) {
     field_ = define_field_atoms(surface, 2, atoms_);  // second derivatives for the cell bounds
     bounds_ = cell_bounds(surface, atoms_, field_);
-    facts_ = describe(requested_order, projections_, bounds_, angle_addition_);
+    facts_ = describe(requested_order, projections_, bounds_, angle_addition_, taylor_last_step_);
     add_lipschitz_bounds(surface);
   }
 
@@ -157,7 +168,8 @@ class Projection final : public OffsetConstruction {
     GiNaC::numeric step;
   };
 
-  // phi = F(q_K), for K >= 1 through F, grad F and Hess F at q_(K-1), with delta = q_K - q_(K-1):
+  // phi = F(q_K). For K >= 1 on periodic trig polynomials (taylor_last_step_), through F, grad F and
+  // Hess F at q_(K-1), with delta = q_K - q_(K-1):
   //   T = F + grad F . delta + delta^T (Hess F) delta / 2,
   // all from the trig at q_(K-1), which grad F there needs anyway. T is kept within F(p) -+ M |h_K|,
   // the interval that holds F(q_K) exactly, so keeping it there never moves it away from F(q_K).
@@ -166,7 +178,7 @@ class Projection final : public OffsetConstruction {
   NodeId value_at_foot_point(FieldLowering& at, const LoweredHalfThickness& h) const {
     std::vector<Estimate> walk;
     const Environment& last_env = foot_point(at, h, &walk);
-    if (walk.size() < 2) return at.field(last_env);
+    if (!taylor_last_step_) return at.field(last_env);
     Program& program = at.program();
     const Estimate& last = walk[walk.size() - 1];
     const Estimate& before = walk[walk.size() - 2];
@@ -192,7 +204,7 @@ class Projection final : public OffsetConstruction {
 
   GiNaC::numeric value_at_foot_point(FieldReference& at, const ReferenceHalfThickness& h) const {
     const std::vector<ReferenceEstimate> walk = foot_point_walk(at, h);
-    if (walk.size() < 2) {
+    if (!taylor_last_step_) {
       auto scope = at.at(walk.back().q);
       return at.field(scope);
     }
@@ -326,6 +338,9 @@ class Projection final : public OffsetConstruction {
 
   int projections_;
   bool angle_addition_;  // trig at the foot-point estimates from trig at p (catalog-like fields)
+  // phi from F's Taylor polynomial at q_(K-1) (value_at_foot_point). Only where M bounds |grad F|
+  // everywhere, not just in the cell: trig polynomials of period 1 cell.
+  bool taylor_last_step_;
   AtomTable atoms_;
   FieldAtoms field_;
   CellBounds bounds_;
