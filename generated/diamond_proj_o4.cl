@@ -11,7 +11,9 @@
  * Source:  Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
  * Method:  foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
  *          n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections
- *          give order 2(K+1) = 4.
+ *          give order 2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1),
+ *          evaluated at q_K (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own
+ *          order, and q_K needs no trig of its own).
  *          offsetgen, docs/projection.md (foot-point projection).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
@@ -40,15 +42,16 @@
  *   foot-point estimate and updates it at every projection: each wall converges at order 2 = K + 1
  *   to the distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2.
  *   Passing a local t(p) to _shell reads it at p instead: second order at best.
- * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
- *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too):
- *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
- *   0, so every function returns a finite value for finite input (do not compile with
- *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
- *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
- *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
- *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
+ * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+ *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too),
+ *   and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so
+ *   this never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no
+ *   phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for
+ *   finite input (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates
+ *   come from their values at p by angle addition, which is exact while |h| <= 1 (natural units:
+ *   |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is
+ *   clamped to 1, so thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above.
+ *   n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -57,11 +60,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    20
- *   offset   322
- *   shell    610
+ *   offset   251
+ *   shell    459
  *   normal   342
  */
-/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":322,"shell":610,"normal":342}} */
+/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":251,"shell":459,"normal":342}} */
 #ifndef OFFSETGEN_DIAMOND_PROJ_O4_CL
 #define OFFSETGEN_DIAMOND_PROJ_O4_CL
 
@@ -83,239 +86,227 @@ float diamond_proj_o4_fieldf(float3 p)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 322
+ * Total ops: 251
  */
 float diamond_proj_o4_offsetf(float3 p, float h)
 {
-    const float _t0 = 6.28318548f * h;
-    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
-    const float _t2 = _t1 * _t1;
-    const float _t3 = p.x * 2.0f;
-    const float _t4 = cospi(_t3);
-    const float _t5 = p.z * 2.0f;
-    const float _t6 = sinpi(_t5);
-    const float _t7 = p.y * 2.0f;
-    const float _t8 = sinpi(_t7);
-    const float _t9 = _t4 * (_t6 * _t8);
-    const float _t10 = cospi(_t7);
-    const float _t11 = cospi(_t5);
-    const float _t12 = _t4 * (_t10 * _t11);
-    const float _t13 = sinpi(_t3);
-    const float _t14 = _t13 * (_t6 * _t10);
-    const float _t15 = _t13 * (_t11 * _t8);
-    const float _t16 = _t9 + _t12 - _t14 - _t15;
-    const float _t17 = _t16 * _t16;
-    const float _t18 = _t15 + _t12 - _t14 - _t9;
-    const float _t19 = _t18 * _t18;
-    const float _t20 = _t12 + _t14 - _t15 - _t9;
-    const float _t21 = _t20 * _t20;
-    const float _t22 = _t17 + _t19 + _t21;
-    const float _t23 = (_t22 > 1.17549435e-38f) ? 1.0f / _t22 : 0.0f;
-    const float _t24 = _t23 * (_t2 * _t21);
-    const float _t25 = _t24 * _t24;
-    const float _t26 = _t25 * _t25;
-    const float _t27 = (2.48015876e-05f - _t24 * 2.75573029e-07f + (2.08744777e-09f - _t24 * 1.13046204e-11f) * _t25) * _t26 + ((0.0416666679f - _t24 * 0.00138888892f) * _t25 + (1.0f - _t24 * 0.5f));
-    const float _t28 = _t1 * (_t23 * sqrt(_t22));
-    const float _t29 = _t20 * _t28 * (1.0f - _t24 * 0.166666672f + (0.00833333377f - _t24 * 0.000198412701f) * _t25 + (2.75573188e-06f - _t24 * 2.50520991e-08f + (1.60577024e-10f - _t24 * 7.54937183e-13f) * _t25) * _t26);
-    const float _t30 = _t27 * _t8 - _t29 * _t10;
-    const float _t31 = _t17 * _t2 * _t23;
+    const float _t0 = p.x * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = p.y * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = _t3 * _t5;
+    const float _t7 = _t1 * _t6;
+    const float _t8 = cospi(_t4);
+    const float _t9 = cospi(_t2);
+    const float _t10 = _t8 * _t9;
+    const float _t11 = _t1 * _t10;
+    const float _t12 = sinpi(_t0);
+    const float _t13 = _t3 * _t8;
+    const float _t14 = _t12 * _t13;
+    const float _t15 = _t9 * _t5;
+    const float _t16 = _t12 * _t15;
+    const float _t17 = _t7 + _t11 - _t14 - _t16;
+    const float _t18 = 6.28318548f * h;
+    const float _t19 = (_t18 <= 1.0f) ? (((-1.0f) <= _t18) ? _t18 : (-1.0f)) : 1.0f;
+    const float _t20 = _t17 * _t17;
+    const float _t21 = _t16 + _t11 - _t14 - _t7;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = _t11 + _t14 - _t16 - _t7;
+    const float _t24 = _t23 * _t23;
+    const float _t25 = _t20 + _t22 + _t24;
+    const float _t26 = (_t25 > 1.17549435e-38f) ? 1.0f / _t25 : 0.0f;
+    const float _t27 = _t19 * (_t26 * sqrt(_t25));
+    const float _t28 = _t17 * _t27;
+    const float _t29 = _t19 * _t19;
+    const float _t30 = _t26 * (_t29 * _t24);
+    const float _t31 = _t30 * _t30;
     const float _t32 = _t31 * _t31;
-    const float _t33 = _t32 * _t32;
-    const float _t34 = (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31) + (_t32 * (1.60577024e-10f - 7.54937183e-13f * _t31) + (2.75573188e-06f - 2.50520991e-08f * _t31)) * _t33) * (_t16 * _t28);
-    const float _t35 = _t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f) + _t33 * (2.48015876e-05f - _t31 * 2.75573029e-07f + _t32 * (2.08744777e-09f - 1.13046204e-11f * _t31));
-    const float _t36 = _t13 * _t34 + _t4 * _t35;
-    const float _t37 = _t19 * _t2 * _t23;
+    const float _t33 = (2.48015876e-05f - _t30 * 2.75573029e-07f + (2.08744777e-09f - _t30 * 1.13046204e-11f) * _t31) * _t32 + ((0.0416666679f - _t30 * 0.00138888892f) * _t31 + (1.0f - _t30 * 0.5f));
+    const float _t34 = _t23 * _t27;
+    const float _t35 = _t34 * (1.0f - _t30 * 0.166666672f + (0.00833333377f - _t30 * 0.000198412701f) * _t31 + (2.75573188e-06f - _t30 * 2.50520991e-08f + (1.60577024e-10f - _t30 * 7.54937183e-13f) * _t31) * _t32);
+    const float _t36 = _t33 * _t5 - _t35 * _t8;
+    const float _t37 = _t20 * _t29 * _t26;
     const float _t38 = _t37 * _t37;
     const float _t39 = _t38 * _t38;
-    const float _t40 = (0.0416666679f - 0.00138888892f * _t37) * _t38 + (1.0f - _t37 * 0.5f) + ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f)) * _t39;
-    const float _t41 = _t18 * _t28 * (1.0f - 0.166666672f * _t37 + (0.00833333377f - 0.000198412701f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37 + _t38 * (1.60577024e-10f - 7.54937183e-13f * _t37)) * _t39);
-    const float _t42 = _t6 * _t40 - _t41 * _t11;
-    const float _t43 = _t30 * _t36 * _t42;
-    const float _t44 = _t29 * _t8 + _t10 * _t27;
-    const float _t45 = _t35 * _t13 - _t4 * _t34;
-    const float _t46 = _t44 * (_t42 * _t45);
-    const float _t47 = _t40 * _t11 + _t6 * _t41;
-    const float _t48 = _t44 * (_t47 * _t36);
-    const float _t49 = _t47 * _t30 * _t45;
-    const float _t50 = _t43 + _t46 - _t48 - _t49;
-    const float _t51 = _t50 * _t50;
-    const float _t52 = _t43 + _t48 - _t49 - _t46;
-    const float _t53 = _t52 * _t52;
-    const float _t54 = _t43 + _t49 - _t48 - _t46;
-    const float _t55 = _t54 * _t54;
-    const float _t56 = _t53 + _t51 + _t55;
-    const float _t57 = (_t56 > 1.17549435e-38f) ? 1.0f / _t56 : 0.0f;
-    const float _t58 = _t2 * _t51 * _t57;
-    const float _t59 = _t58 * _t58;
-    const float _t60 = _t59 * _t59;
-    const float _t61 = _t1 * (_t57 * sqrt(_t56));
-    const float _t62 = (_t59 * (0.00833333377f - _t58 * 0.000198412701f) + (1.0f - _t58 * 0.166666672f) + (2.75573188e-06f - _t58 * 2.50520991e-08f + (1.60577024e-10f - 7.54937183e-13f * _t58) * _t59) * _t60) * (_t50 * _t61);
-    const float _t63 = 1.0f - _t58 * 0.5f + _t59 * (0.0416666679f - 0.00138888892f * _t58) + ((2.08744777e-09f - _t58 * 1.13046204e-11f) * _t59 + (2.48015876e-05f - _t58 * 2.75573029e-07f)) * _t60;
-    const float _t64 = _t62 * _t11 + _t6 * _t63;
-    const float _t65 = _t57 * (_t55 * _t2);
-    const float _t66 = _t65 * _t65;
-    const float _t67 = _t66 * _t66;
-    const float _t68 = (2.48015876e-05f - _t65 * 2.75573029e-07f + _t66 * (2.08744777e-09f - _t65 * 1.13046204e-11f)) * _t67 + ((0.0416666679f - _t65 * 0.00138888892f) * _t66 + (1.0f - _t65 * 0.5f));
-    const float _t69 = _t54 * _t61 * ((0.00833333377f - _t65 * 0.000198412701f) * _t66 + (1.0f - _t65 * 0.166666672f) + ((1.60577024e-10f - _t65 * 7.54937183e-13f) * _t66 + (2.75573188e-06f - _t65 * 2.50520991e-08f)) * _t67);
-    const float _t70 = _t10 * _t68 - _t69 * _t8;
-    const float _t71 = _t57 * (_t53 * _t2);
-    const float _t72 = _t71 * _t71;
-    const float _t73 = _t72 * _t72;
-    const float _t74 = (0.0416666679f - _t71 * 0.00138888892f) * _t72 + (1.0f - _t71 * 0.5f) + _t73 * (_t72 * (2.08744777e-09f - _t71 * 1.13046204e-11f) + (2.48015876e-05f - _t71 * 2.75573029e-07f));
-    const float _t75 = ((_t72 * (1.60577024e-10f - _t71 * 7.54937183e-13f) + (2.75573188e-06f - _t71 * 2.50520991e-08f)) * _t73 + (1.0f - _t71 * 0.166666672f + _t72 * (0.00833333377f - _t71 * 0.000198412701f))) * (_t52 * _t61);
-    const float _t76 = _t4 * _t74 + _t75 * _t13;
-    const float _t77 = _t10 * _t69 + _t68 * _t8;
-    const float _t78 = _t11 * _t63 - _t62 * _t6;
-    const float _t79 = _t74 * _t13 - _t75 * _t4;
-    return _t64 * (_t70 * _t76) + (_t77 * _t78 * _t76 + _t79 * _t77 * _t64) + _t79 * (_t70 * _t78);
+    const float _t40 = (1.0f - 0.166666672f * _t37 + _t38 * (0.00833333377f - 0.000198412701f * _t37) + (_t38 * (1.60577024e-10f - 7.54937183e-13f * _t37) + (2.75573188e-06f - 2.50520991e-08f * _t37)) * _t39) * _t28;
+    const float _t41 = _t38 * (0.0416666679f - 0.00138888892f * _t37) + (1.0f - _t37 * 0.5f) + _t39 * (2.48015876e-05f - _t37 * 2.75573029e-07f + _t38 * (2.08744777e-09f - 1.13046204e-11f * _t37));
+    const float _t42 = _t12 * _t40 + _t1 * _t41;
+    const float _t43 = _t36 * _t42;
+    const float _t44 = _t22 * _t29 * _t26;
+    const float _t45 = _t44 * _t44;
+    const float _t46 = _t45 * _t45;
+    const float _t47 = (0.0416666679f - 0.00138888892f * _t44) * _t45 + (1.0f - _t44 * 0.5f) + ((2.08744777e-09f - _t44 * 1.13046204e-11f) * _t45 + (2.48015876e-05f - _t44 * 2.75573029e-07f)) * _t46;
+    const float _t48 = _t21 * _t27;
+    const float _t49 = _t48 * (1.0f - 0.166666672f * _t44 + (0.00833333377f - 0.000198412701f * _t44) * _t45 + (2.75573188e-06f - 2.50520991e-08f * _t44 + _t45 * (1.60577024e-10f - 7.54937183e-13f * _t44)) * _t46);
+    const float _t50 = _t3 * _t47 - _t49 * _t9;
+    const float _t51 = _t43 * _t50;
+    const float _t52 = _t35 * _t5 + _t8 * _t33;
+    const float _t53 = _t47 * _t9 + _t3 * _t49;
+    const float _t54 = _t52 * (_t53 * _t42);
+    const float _t55 = _t41 * _t12 - _t1 * _t40;
+    const float _t56 = _t53 * _t36 * _t55;
+    const float _t57 = _t52 * (_t50 * _t55);
+    const float _t58 = _t51 + _t54 - _t56 - _t57;
+    const float _t59 = _t51 + _t57 - _t54 - _t56;
+    const float _t60 = _t51 + _t56 - _t54 - _t57;
+    const float _t61 = _t58 * _t58 + _t59 * _t59 + _t60 * _t60;
+    const float _t62 = _t19 * (((_t61 > 1.17549435e-38f) ? 1.0f / _t61 : 0.0f) * sqrt(_t61));
+    const float _t63 = _t28 - _t58 * _t62;
+    const float _t64 = _t36 * _t50 * _t55;
+    const float _t65 = _t52 * (_t50 * _t42);
+    const float _t66 = _t52 * (_t53 * _t55);
+    const float _t67 = _t43 * _t53;
+    const float _t68 = _t34 + _t60 * _t62;
+    const float _t69 = _t48 + _t59 * _t62;
+    const float _t70 = _t64 + _t66;
+    const float _t71 = _t70 + _t65 + _t67;
+    const float _t72 = _t63 * (_t58 + ((_t64 + _t65 - _t66 - _t67) * _t68 + _t69 * (_t64 + _t67 - _t66 - _t65)) - _t63 * _t71 * 0.5f) + _t71 - _t68 * (_t60 + _t68 * _t71 * 0.5f - _t69 * (_t70 - _t65 - _t67)) - (_t59 + _t69 * _t71 * 0.5f) * _t69;
+    const float _t73 = 1.73205256f * fabs(_t19);
+    const float _t74 = _t1 * _t15 + _t12 * _t6 + _t10 * _t12 + _t1 * _t13;
+    const float _t75 = _t73 + _t74;
+    const float _t76 = _t74 - _t73;
+    return (_t72 <= _t75) ? ((_t76 <= _t72) ? _t72 : _t76) : _t75;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 610
+ * Total ops: 459
  */
 float diamond_proj_o4_shellf(float3 p, float t)
 {
     const float _t0 = p.x * 2.0f;
     const float _t1 = cospi(_t0);
-    const float _t2 = 6.28318548f * (t * 0.5f);
-    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
-    const float _t4 = _t3 * _t3;
-    const float _t5 = p.y * 2.0f;
-    const float _t6 = cospi(_t5);
-    const float _t7 = p.z * 2.0f;
-    const float _t8 = cospi(_t7);
-    const float _t9 = _t1 * (_t6 * _t8);
-    const float _t10 = sinpi(_t0);
-    const float _t11 = sinpi(_t7);
-    const float _t12 = _t10 * (_t11 * _t6);
-    const float _t13 = sinpi(_t5);
-    const float _t14 = _t10 * (_t8 * _t13);
-    const float _t15 = _t1 * (_t11 * _t13);
-    const float _t16 = _t9 + _t12 - _t14 - _t15;
-    const float _t17 = _t16 * _t16;
-    const float _t18 = _t15 + _t9 - _t12 - _t14;
-    const float _t19 = _t18 * _t18;
-    const float _t20 = _t14 + _t9 - _t12 - _t15;
-    const float _t21 = _t20 * _t20;
-    const float _t22 = _t19 + _t21 + _t17;
-    const float _t23 = (_t22 > 1.17549435e-38f) ? 1.0f / _t22 : 0.0f;
-    const float _t24 = _t4 * _t17 * _t23;
-    const float _t25 = _t24 * _t24;
-    const float _t26 = _t25 * _t25;
-    const float _t27 = (0.0416666679f - 0.00138888892f * _t24) * _t25 + (1.0f - _t24 * 0.5f) + ((2.08744777e-09f - 1.13046204e-11f * _t24) * _t25 + (2.48015876e-05f - _t24 * 2.75573029e-07f)) * _t26;
-    const float _t28 = _t23 * sqrt(_t22);
-    const float _t29 = _t3 * _t28;
-    const float _t30 = _t16 * _t29 * ((0.00833333377f - 0.000198412701f * _t24) * _t25 + (1.0f - 0.166666672f * _t24) + (2.75573188e-06f - 2.50520991e-08f * _t24 + (1.60577024e-10f - 7.54937183e-13f * _t24) * _t25) * _t26);
-    const float _t31 = _t27 * _t6 + _t30 * _t13;
-    const float _t32 = _t19 * _t4 * _t23;
-    const float _t33 = _t32 * _t32;
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * ((2.08744777e-09f - _t32 * 1.13046204e-11f) * _t33 + (2.48015876e-05f - _t32 * 2.75573029e-07f)) + (_t33 * (0.0416666679f - 0.00138888892f * _t32) + (1.0f - _t32 * 0.5f));
-    const float _t36 = (1.0f - 0.166666672f * _t32 + _t33 * (0.00833333377f - _t32 * 0.000198412701f) + _t34 * ((1.60577024e-10f - 7.54937183e-13f * _t32) * _t33 + (2.75573188e-06f - 2.50520991e-08f * _t32))) * (_t18 * _t29);
-    const float _t37 = _t35 * _t10 - _t1 * _t36;
-    const float _t38 = _t23 * (_t4 * _t21);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = p.y * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = _t3 * _t5;
+    const float _t7 = _t1 * _t6;
+    const float _t8 = cospi(_t4);
+    const float _t9 = cospi(_t2);
+    const float _t10 = _t8 * _t9;
+    const float _t11 = _t1 * _t10;
+    const float _t12 = sinpi(_t0);
+    const float _t13 = _t3 * _t8;
+    const float _t14 = _t12 * _t13;
+    const float _t15 = _t9 * _t5;
+    const float _t16 = _t12 * _t15;
+    const float _t17 = _t7 + _t11 - _t14 - _t16;
+    const float _t18 = _t17 * _t17;
+    const float _t19 = _t16 + _t11 - _t14 - _t7;
+    const float _t20 = _t19 * _t19;
+    const float _t21 = _t11 + _t14 - _t16 - _t7;
+    const float _t22 = _t21 * _t21;
+    const float _t23 = _t18 + _t20 + _t22;
+    const float _t24 = (_t23 > 1.17549435e-38f) ? 1.0f / _t23 : 0.0f;
+    const float _t25 = 6.28318548f * (t * 0.5f);
+    const float _t26 = (_t25 <= 1.0f) ? (((-1.0f) <= _t25) ? _t25 : (-1.0f)) : 1.0f;
+    const float _t27 = _t26 * _t26;
+    const float _t28 = _t24 * (_t27 * _t20);
+    const float _t29 = _t28 * _t28;
+    const float _t30 = _t29 * _t29;
+    const float _t31 = _t30 * ((2.08744777e-09f - _t28 * 1.13046204e-11f) * _t29 + (2.48015876e-05f - _t28 * 2.75573029e-07f)) + (1.0f - _t28 * 0.5f + (0.0416666679f - 0.00138888892f * _t28) * _t29);
+    const float _t32 = _t24 * sqrt(_t23);
+    const float _t33 = _t26 * _t32;
+    const float _t34 = _t19 * _t33;
+    const float _t35 = (1.0f - 0.166666672f * _t28 + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + _t30 * ((1.60577024e-10f - 7.54937183e-13f * _t28) * _t29 + (2.75573188e-06f - 2.50520991e-08f * _t28))) * _t34;
+    const float _t36 = _t31 * _t9 + _t3 * _t35;
+    const float _t37 = _t27 * _t22 * _t24;
+    const float _t38 = _t37 * _t37;
     const float _t39 = _t38 * _t38;
-    const float _t40 = _t39 * _t39;
-    const float _t41 = _t40 * ((2.08744777e-09f - _t38 * 1.13046204e-11f) * _t39 + (2.48015876e-05f - _t38 * 2.75573029e-07f)) + (1.0f - _t38 * 0.5f + (0.0416666679f - 0.00138888892f * _t38) * _t39);
-    const float _t42 = (1.0f - 0.166666672f * _t38 + (0.00833333377f - _t38 * 0.000198412701f) * _t39 + _t40 * ((1.60577024e-10f - 7.54937183e-13f * _t38) * _t39 + (2.75573188e-06f - 2.50520991e-08f * _t38))) * (_t20 * _t29);
-    const float _t43 = _t11 * _t41 - _t42 * _t8;
-    const float _t44 = _t31 * _t37 * _t43;
-    const float _t45 = _t41 * _t8 + _t11 * _t42;
-    const float _t46 = _t27 * _t13 - _t6 * _t30;
-    const float _t47 = _t45 * (_t46 * _t37);
-    const float _t48 = _t1 * _t35 + _t10 * _t36;
-    const float _t49 = _t31 * (_t45 * _t48);
-    const float _t50 = _t46 * _t48 * _t43;
-    const float _t51 = _t44 + _t47 - _t49 - _t50;
-    const float _t52 = _t51 * _t51;
-    const float _t53 = _t44 + _t50 - _t49 - _t47;
-    const float _t54 = _t53 * _t53;
-    const float _t55 = _t44 + _t49 - _t50 - _t47;
-    const float _t56 = _t55 * _t55;
-    const float _t57 = _t52 + _t54 + _t56;
-    const float _t58 = (_t57 > 1.17549435e-38f) ? 1.0f / _t57 : 0.0f;
-    const float _t59 = _t4 * _t52 * _t58;
-    const float _t60 = _t59 * _t59;
-    const float _t61 = _t60 * _t60;
-    const float _t62 = 1.0f - _t59 * 0.5f + (0.0416666679f - _t59 * 0.00138888892f) * _t60 + (2.48015876e-05f - _t59 * 2.75573029e-07f + (2.08744777e-09f - _t59 * 1.13046204e-11f) * _t60) * _t61;
-    const float _t63 = _t3 * (sqrt(_t57) * _t58);
-    const float _t64 = ((2.75573188e-06f - _t59 * 2.50520991e-08f + (1.60577024e-10f - _t59 * 7.54937183e-13f) * _t60) * _t61 + ((0.00833333377f - _t59 * 0.000198412701f) * _t60 + (1.0f - _t59 * 0.166666672f))) * (_t51 * _t63);
-    const float _t65 = _t1 * _t62 - _t64 * _t10;
-    const float _t66 = _t58 * (_t4 * _t54);
-    const float _t67 = _t66 * _t66;
-    const float _t68 = _t67 * _t67;
-    const float _t69 = _t67 * (0.0416666679f - 0.00138888892f * _t66) + (1.0f - _t66 * 0.5f) + ((2.08744777e-09f - 1.13046204e-11f * _t66) * _t67 + (2.48015876e-05f - _t66 * 2.75573029e-07f)) * _t68;
-    const float _t70 = ((2.75573188e-06f - 2.50520991e-08f * _t66 + (1.60577024e-10f - 7.54937183e-13f * _t66) * _t67) * _t68 + (_t67 * (0.00833333377f - 0.000198412701f * _t66) + (1.0f - 0.166666672f * _t66))) * (_t53 * _t63);
-    const float _t71 = _t69 * _t8 - _t11 * _t70;
-    const float _t72 = _t4 * _t56 * _t58;
-    const float _t73 = _t72 * _t72;
-    const float _t74 = _t73 * _t73;
-    const float _t75 = _t74 * (2.48015876e-05f - _t72 * 2.75573029e-07f + _t73 * (2.08744777e-09f - _t72 * 1.13046204e-11f)) + (_t73 * (0.0416666679f - 0.00138888892f * _t72) + (1.0f - _t72 * 0.5f));
-    const float _t76 = (_t73 * (0.00833333377f - _t72 * 0.000198412701f) + (1.0f - 0.166666672f * _t72) + _t74 * (_t73 * (1.60577024e-10f - 7.54937183e-13f * _t72) + (2.75573188e-06f - 2.50520991e-08f * _t72))) * (_t55 * _t63);
-    const float _t77 = _t75 * _t13 - _t6 * _t76;
-    const float _t78 = _t1 * _t64 + _t62 * _t10;
-    const float _t79 = _t70 * _t8 + _t11 * _t69;
-    const float _t80 = _t76 * _t13 + _t6 * _t75;
-    const float _t81 = -_t2;
-    const float _t82 = (_t81 <= 1.0f) ? (((-1.0f) <= _t81) ? _t81 : (-1.0f)) : 1.0f;
-    const float _t83 = _t28 * _t82;
-    const float _t84 = _t82 * _t82;
-    const float _t85 = _t23 * (_t84 * _t21);
+    const float _t40 = (0.0416666679f - 0.00138888892f * _t37) * _t38 + (1.0f - _t37 * 0.5f) + ((2.08744777e-09f - 1.13046204e-11f * _t37) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f)) * _t39;
+    const float _t41 = _t21 * _t33;
+    const float _t42 = _t41 * ((0.00833333377f - 0.000198412701f * _t37) * _t38 + (1.0f - 0.166666672f * _t37) + (2.75573188e-06f - 2.50520991e-08f * _t37 + (1.60577024e-10f - 7.54937183e-13f * _t37) * _t38) * _t39);
+    const float _t43 = _t40 * _t5 - _t8 * _t42;
+    const float _t44 = _t18 * _t27 * _t24;
+    const float _t45 = _t44 * _t44;
+    const float _t46 = _t45 * _t45;
+    const float _t47 = _t46 * ((2.08744777e-09f - _t44 * 1.13046204e-11f) * _t45 + (2.48015876e-05f - _t44 * 2.75573029e-07f)) + (_t45 * (0.0416666679f - 0.00138888892f * _t44) + (1.0f - _t44 * 0.5f));
+    const float _t48 = _t17 * _t33;
+    const float _t49 = (1.0f - 0.166666672f * _t44 + _t45 * (0.00833333377f - _t44 * 0.000198412701f) + _t46 * ((1.60577024e-10f - 7.54937183e-13f * _t44) * _t45 + (2.75573188e-06f - 2.50520991e-08f * _t44))) * _t48;
+    const float _t50 = _t1 * _t47 + _t12 * _t49;
+    const float _t51 = _t43 * _t50;
+    const float _t52 = _t36 * _t51;
+    const float _t53 = _t47 * _t12 - _t1 * _t49;
+    const float _t54 = _t43 * _t53;
+    const float _t55 = _t3 * _t31 - _t35 * _t9;
+    const float _t56 = _t54 * _t55;
+    const float _t57 = _t52 + _t56;
+    const float _t58 = _t40 * _t8 + _t42 * _t5;
+    const float _t59 = _t58 * (_t36 * _t53);
+    const float _t60 = _t58 * _t50 * _t55;
+    const float _t61 = _t57 + _t59 + _t60;
+    const float _t62 = _t58 * _t53 * _t55;
+    const float _t63 = _t36 * _t54;
+    const float _t64 = _t58 * (_t36 * _t50);
+    const float _t65 = _t51 * _t55;
+    const float _t66 = _t62 + _t63 - _t64 - _t65;
+    const float _t67 = _t62 + _t65 - _t64 - _t63;
+    const float _t68 = _t62 + _t64 - _t65 - _t63;
+    const float _t69 = _t66 * _t66 + _t67 * _t67 + _t68 * _t68;
+    const float _t70 = _t26 * (sqrt(_t69) * ((_t69 > 1.17549435e-38f) ? 1.0f / _t69 : 0.0f));
+    const float _t71 = _t48 + _t66 * _t70;
+    const float _t72 = _t67 * _t70 + _t34;
+    const float _t73 = _t41 - _t68 * _t70;
+    const float _t74 = _t61 + _t71 * ((_t57 - _t59 - _t60) * _t72 + (_t60 + _t56 - _t52 - _t59) * _t73 - _t66 - _t61 * _t71 * 0.5f) - (_t61 * _t72 * 0.5f + _t67) * _t72 - _t73 * (_t61 * _t73 * 0.5f - _t68 - (_t59 + _t56 - _t52 - _t60) * _t72);
+    const float _t75 = _t1 * _t15 + _t12 * _t6 + _t10 * _t12 + _t1 * _t13;
+    const float _t76 = 1.73205256f * fabs(_t26);
+    const float _t77 = _t75 + _t76;
+    const float _t78 = _t75 - _t76;
+    const float _t79 = -_t25;
+    const float _t80 = (_t79 <= 1.0f) ? (((-1.0f) <= _t79) ? _t79 : (-1.0f)) : 1.0f;
+    const float _t81 = _t32 * _t80;
+    const float _t82 = _t17 * _t81;
+    const float _t83 = _t19 * _t81;
+    const float _t84 = _t80 * _t80;
+    const float _t85 = _t24 * (_t84 * _t20);
     const float _t86 = _t85 * _t85;
     const float _t87 = _t86 * _t86;
-    const float _t88 = _t20 * _t83 * ((2.75573188e-06f - 2.50520991e-08f * _t85 + _t86 * (1.60577024e-10f - 7.54937183e-13f * _t85)) * _t87 + (1.0f - 0.166666672f * _t85 + (0.00833333377f - 0.000198412701f * _t85) * _t86));
+    const float _t88 = _t83 * ((2.75573188e-06f - 2.50520991e-08f * _t85 + _t86 * (1.60577024e-10f - 7.54937183e-13f * _t85)) * _t87 + (1.0f - 0.166666672f * _t85 + (0.00833333377f - 0.000198412701f * _t85) * _t86));
     const float _t89 = (2.48015876e-05f - _t85 * 2.75573029e-07f + (2.08744777e-09f - _t85 * 1.13046204e-11f) * _t86) * _t87 + ((0.0416666679f - 0.00138888892f * _t85) * _t86 + (1.0f - _t85 * 0.5f));
-    const float _t90 = _t11 * _t88 + _t89 * _t8;
-    const float _t91 = _t23 * (_t19 * _t84);
+    const float _t90 = _t3 * _t88 + _t89 * _t9;
+    const float _t91 = _t24 * (_t18 * _t84);
     const float _t92 = _t91 * _t91;
     const float _t93 = _t92 * _t92;
     const float _t94 = (_t92 * (2.08744777e-09f - 1.13046204e-11f * _t91) + (2.48015876e-05f - 2.75573029e-07f * _t91)) * _t93 + (1.0f - _t91 * 0.5f + (0.0416666679f - 0.00138888892f * _t91) * _t92);
-    const float _t95 = ((0.00833333377f - 0.000198412701f * _t91) * _t92 + (1.0f - 0.166666672f * _t91) + ((1.60577024e-10f - 7.54937183e-13f * _t91) * _t92 + (2.75573188e-06f - 2.50520991e-08f * _t91)) * _t93) * (_t18 * _t83);
-    const float _t96 = _t1 * _t94 + _t95 * _t10;
-    const float _t97 = _t23 * (_t84 * _t17);
+    const float _t95 = ((0.00833333377f - 0.000198412701f * _t91) * _t92 + (1.0f - 0.166666672f * _t91) + ((1.60577024e-10f - 7.54937183e-13f * _t91) * _t92 + (2.75573188e-06f - 2.50520991e-08f * _t91)) * _t93) * _t82;
+    const float _t96 = _t1 * _t94 + _t95 * _t12;
+    const float _t97 = _t24 * (_t84 * _t22);
     const float _t98 = _t97 * _t97;
     const float _t99 = _t98 * _t98;
     const float _t100 = 1.0f - _t97 * 0.5f + (0.0416666679f - _t97 * 0.00138888892f) * _t98 + _t99 * ((2.08744777e-09f - _t97 * 1.13046204e-11f) * _t98 + (2.48015876e-05f - _t97 * 2.75573029e-07f));
-    const float _t101 = (_t99 * ((1.60577024e-10f - _t97 * 7.54937183e-13f) * _t98 + (2.75573188e-06f - _t97 * 2.50520991e-08f)) + (1.0f - _t97 * 0.166666672f + (0.00833333377f - _t97 * 0.000198412701f) * _t98)) * (_t16 * _t83);
-    const float _t102 = _t6 * _t100 + _t101 * _t13;
-    const float _t103 = _t90 * (_t96 * _t102);
-    const float _t104 = _t10 * _t94 - _t95 * _t1;
-    const float _t105 = _t100 * _t13 - _t6 * _t101;
-    const float _t106 = _t104 * _t105 * _t90;
-    const float _t107 = _t11 * _t89 - _t88 * _t8;
-    const float _t108 = _t107 * _t96 * _t105;
-    const float _t109 = _t107 * (_t104 * _t102);
-    const float _t110 = _t103 + _t106 - _t108 - _t109;
-    const float _t111 = _t110 * _t110;
-    const float _t112 = _t109 + _t103 - _t108 - _t106;
-    const float _t113 = _t112 * _t112;
-    const float _t114 = _t103 + _t108 - _t106 - _t109;
-    const float _t115 = _t114 * _t114;
-    const float _t116 = _t111 + (_t113 + _t115);
-    const float _t117 = (_t116 > 1.17549435e-38f) ? 1.0f / _t116 : 0.0f;
-    const float _t118 = _t111 * _t84 * _t117;
-    const float _t119 = _t118 * _t118;
-    const float _t120 = _t119 * _t119;
-    const float _t121 = _t119 * (0.0416666679f - _t118 * 0.00138888892f) + (1.0f - _t118 * 0.5f) + _t120 * ((2.08744777e-09f - _t118 * 1.13046204e-11f) * _t119 + (2.48015876e-05f - _t118 * 2.75573029e-07f));
-    const float _t122 = sqrt(_t116) * _t117 * _t82;
-    const float _t123 = ((0.00833333377f - _t118 * 0.000198412701f) * _t119 + (1.0f - _t118 * 0.166666672f) + _t120 * ((1.60577024e-10f - _t118 * 7.54937183e-13f) * _t119 + (2.75573188e-06f - _t118 * 2.50520991e-08f))) * (_t122 * _t110);
-    const float _t124 = _t11 * _t121 - _t8 * _t123;
-    const float _t125 = _t84 * _t113 * _t117;
-    const float _t126 = _t125 * _t125;
-    const float _t127 = _t126 * _t126;
-    const float _t128 = _t122 * _t112 * ((0.00833333377f - _t125 * 0.000198412701f) * _t126 + (1.0f - _t125 * 0.166666672f) + _t127 * (_t126 * (1.60577024e-10f - _t125 * 7.54937183e-13f) + (2.75573188e-06f - _t125 * 2.50520991e-08f)));
-    const float _t129 = _t127 * (_t126 * (2.08744777e-09f - _t125 * 1.13046204e-11f) + (2.48015876e-05f - _t125 * 2.75573029e-07f)) + (_t126 * (0.0416666679f - _t125 * 0.00138888892f) + (1.0f - _t125 * 0.5f));
-    const float _t130 = _t128 * _t13 + _t6 * _t129;
-    const float _t131 = _t84 * _t115 * _t117;
-    const float _t132 = _t131 * _t131;
-    const float _t133 = _t132 * _t132;
-    const float _t134 = 1.0f - _t131 * 0.5f + (0.0416666679f - 0.00138888892f * _t131) * _t132 + _t133 * ((2.08744777e-09f - 1.13046204e-11f * _t131) * _t132 + (2.48015876e-05f - _t131 * 2.75573029e-07f));
-    const float _t135 = _t122 * _t114 * (((1.60577024e-10f - 7.54937183e-13f * _t131) * _t132 + (2.75573188e-06f - 2.50520991e-08f * _t131)) * _t133 + ((0.00833333377f - 0.000198412701f * _t131) * _t132 + (1.0f - 0.166666672f * _t131)));
-    const float _t136 = _t1 * _t134 + _t135 * _t10;
-    const float _t137 = _t134 * _t10 - _t1 * _t135;
-    const float _t138 = _t129 * _t13 - _t6 * _t128;
-    const float _t139 = _t121 * _t8 + _t11 * _t123;
-    return (_t65 * (_t71 * _t77) + (_t78 * _t77 * _t79 + _t78 * _t71 * _t80 + _t79 * _t80 * _t65)) * (_t124 * (_t130 * _t136) + (_t124 * (_t137 * _t138) + _t137 * (_t130 * _t139) + _t138 * _t139 * _t136));
+    const float _t101 = _t21 * _t81;
+    const float _t102 = (_t99 * ((1.60577024e-10f - _t97 * 7.54937183e-13f) * _t98 + (2.75573188e-06f - _t97 * 2.50520991e-08f)) + (1.0f - _t97 * 0.166666672f + (0.00833333377f - _t97 * 0.000198412701f) * _t98)) * _t101;
+    const float _t103 = _t8 * _t100 + _t102 * _t5;
+    const float _t104 = _t96 * _t103;
+    const float _t105 = _t90 * _t104;
+    const float _t106 = _t12 * _t94 - _t95 * _t1;
+    const float _t107 = _t100 * _t5 - _t8 * _t102;
+    const float _t108 = _t106 * _t107 * _t90;
+    const float _t109 = _t3 * _t89 - _t88 * _t9;
+    const float _t110 = _t109 * _t96 * _t107;
+    const float _t111 = _t106 * _t103;
+    const float _t112 = _t109 * _t111;
+    const float _t113 = _t105 + _t108 - _t110 - _t112;
+    const float _t114 = _t112 + _t105 - _t110 - _t108;
+    const float _t115 = _t105 + _t110 - _t108 - _t112;
+    const float _t116 = _t113 * _t113 + (_t114 * _t114 + _t115 * _t115);
+    const float _t117 = sqrt(_t116) * ((_t116 > 1.17549435e-38f) ? 1.0f / _t116 : 0.0f) * _t80;
+    const float _t118 = _t82 - _t117 * _t115;
+    const float _t119 = _t106 * _t109 * _t107;
+    const float _t120 = _t109 * _t104;
+    const float _t121 = _t90 * _t111;
+    const float _t122 = _t90 * (_t107 * _t96);
+    const float _t123 = _t101 - _t117 * _t114;
+    const float _t124 = _t121 + _t120;
+    const float _t125 = _t122 + _t124 + _t119;
+    const float _t126 = _t83 - _t117 * _t113;
+    const float _t127 = _t118 * ((_t119 + _t120 - _t121 - _t122) * _t123 + _t115 - _t125 * _t118 * 0.5f - _t126 * (_t124 - _t122 - _t119)) + _t126 * (_t113 - _t125 * _t126 * 0.5f) + _t125 + (_t114 - (_t122 + _t120 - _t121 - _t119) * _t126 - _t125 * _t123 * 0.5f) * _t123;
+    const float _t128 = 1.73205256f * fabs(_t80);
+    const float _t129 = _t75 + _t128;
+    const float _t130 = _t75 - _t128;
+    return ((_t74 <= _t77) ? ((_t78 <= _t74) ? _t74 : _t78) : _t77) * ((_t127 <= _t129) ? ((_t130 <= _t127) ? _t127 : _t130) : _t129);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
@@ -437,239 +428,227 @@ double diamond_proj_o4_field(double3 p)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 322
+ * Total ops: 251
  */
 double diamond_proj_o4_offset(double3 p, double h)
 {
-    const double _t0 = 6.2831853071795862 * h;
-    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
-    const double _t2 = _t1 * _t1;
-    const double _t3 = p.x * 2.0;
-    const double _t4 = cospi(_t3);
-    const double _t5 = p.z * 2.0;
-    const double _t6 = sinpi(_t5);
-    const double _t7 = p.y * 2.0;
-    const double _t8 = sinpi(_t7);
-    const double _t9 = _t4 * (_t6 * _t8);
-    const double _t10 = cospi(_t7);
-    const double _t11 = cospi(_t5);
-    const double _t12 = _t4 * (_t10 * _t11);
-    const double _t13 = sinpi(_t3);
-    const double _t14 = _t13 * (_t6 * _t10);
-    const double _t15 = _t13 * (_t11 * _t8);
-    const double _t16 = _t9 + _t12 - _t14 - _t15;
-    const double _t17 = _t16 * _t16;
-    const double _t18 = _t15 + _t12 - _t14 - _t9;
-    const double _t19 = _t18 * _t18;
-    const double _t20 = _t12 + _t14 - _t15 - _t9;
-    const double _t21 = _t20 * _t20;
-    const double _t22 = _t17 + _t19 + _t21;
-    const double _t23 = (_t22 > 1.1754943508222875e-38) ? 1.0 / _t22 : 0.0;
-    const double _t24 = _t23 * (_t2 * _t21);
-    const double _t25 = _t24 * _t24;
-    const double _t26 = _t25 * _t25;
-    const double _t27 = (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t24 * 1.1304620460700782e-11) * _t25) * _t26 + ((0.041666666666666102 - _t24 * 0.0013888888888798428) * _t25 + (1.0 - _t24 * 0.5));
-    const double _t28 = _t1 * (_t23 * sqrt(_t22));
-    const double _t29 = _t20 * _t28 * (1.0 - _t24 * 0.16666666666666666 + (0.0083333333333333003 - _t24 * 0.00019841269841216566) * _t25 + (2.755731919201122e-06 - _t24 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t24 * 7.549371704181243e-13) * _t25) * _t26);
-    const double _t30 = _t27 * _t8 - _t29 * _t10;
-    const double _t31 = _t17 * _t2 * _t23;
+    const double _t0 = p.x * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = p.y * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = _t3 * _t5;
+    const double _t7 = _t1 * _t6;
+    const double _t8 = cospi(_t4);
+    const double _t9 = cospi(_t2);
+    const double _t10 = _t8 * _t9;
+    const double _t11 = _t1 * _t10;
+    const double _t12 = sinpi(_t0);
+    const double _t13 = _t3 * _t8;
+    const double _t14 = _t12 * _t13;
+    const double _t15 = _t9 * _t5;
+    const double _t16 = _t12 * _t15;
+    const double _t17 = _t7 + _t11 - _t14 - _t16;
+    const double _t18 = 6.2831853071795862 * h;
+    const double _t19 = (_t18 <= 1.0) ? (((-1.0) <= _t18) ? _t18 : (-1.0)) : 1.0;
+    const double _t20 = _t17 * _t17;
+    const double _t21 = _t16 + _t11 - _t14 - _t7;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = _t11 + _t14 - _t16 - _t7;
+    const double _t24 = _t23 * _t23;
+    const double _t25 = _t20 + _t22 + _t24;
+    const double _t26 = (_t25 > 1.1754943508222875e-38) ? 1.0 / _t25 : 0.0;
+    const double _t27 = _t19 * (_t26 * sqrt(_t25));
+    const double _t28 = _t17 * _t27;
+    const double _t29 = _t19 * _t19;
+    const double _t30 = _t26 * (_t29 * _t24);
+    const double _t31 = _t30 * _t30;
     const double _t32 = _t31 * _t31;
-    const double _t33 = _t32 * _t32;
-    const double _t34 = (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - 0.00019841269841216566 * _t31) + (_t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31)) * _t33) * (_t16 * _t28);
-    const double _t35 = _t32 * (0.041666666666666102 - 0.0013888888888798428 * _t31) + (1.0 - _t31 * 0.5) + _t33 * (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07 + _t32 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t31));
-    const double _t36 = _t13 * _t34 + _t4 * _t35;
-    const double _t37 = _t19 * _t2 * _t23;
+    const double _t33 = (2.4801587247292686e-05 - _t30 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t30 * 1.1304620460700782e-11) * _t31) * _t32 + ((0.041666666666666102 - _t30 * 0.0013888888888798428) * _t31 + (1.0 - _t30 * 0.5));
+    const double _t34 = _t23 * _t27;
+    const double _t35 = _t34 * (1.0 - _t30 * 0.16666666666666666 + (0.0083333333333333003 - _t30 * 0.00019841269841216566) * _t31 + (2.755731919201122e-06 - _t30 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t30 * 7.549371704181243e-13) * _t31) * _t32);
+    const double _t36 = _t33 * _t5 - _t35 * _t8;
+    const double _t37 = _t20 * _t29 * _t26;
     const double _t38 = _t37 * _t37;
     const double _t39 = _t38 * _t38;
-    const double _t40 = (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38 + (1.0 - _t37 * 0.5) + ((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07)) * _t39;
-    const double _t41 = _t18 * _t28 * (1.0 - 0.16666666666666666 * _t37 + (0.0083333333333333003 - 0.00019841269841216566 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37 + _t38 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t37)) * _t39);
-    const double _t42 = _t6 * _t40 - _t41 * _t11;
-    const double _t43 = _t30 * _t36 * _t42;
-    const double _t44 = _t29 * _t8 + _t10 * _t27;
-    const double _t45 = _t35 * _t13 - _t4 * _t34;
-    const double _t46 = _t44 * (_t42 * _t45);
-    const double _t47 = _t40 * _t11 + _t6 * _t41;
-    const double _t48 = _t44 * (_t47 * _t36);
-    const double _t49 = _t47 * _t30 * _t45;
-    const double _t50 = _t43 + _t46 - _t48 - _t49;
-    const double _t51 = _t50 * _t50;
-    const double _t52 = _t43 + _t48 - _t49 - _t46;
-    const double _t53 = _t52 * _t52;
-    const double _t54 = _t43 + _t49 - _t48 - _t46;
-    const double _t55 = _t54 * _t54;
-    const double _t56 = _t53 + _t51 + _t55;
-    const double _t57 = (_t56 > 1.1754943508222875e-38) ? 1.0 / _t56 : 0.0;
-    const double _t58 = _t2 * _t51 * _t57;
-    const double _t59 = _t58 * _t58;
-    const double _t60 = _t59 * _t59;
-    const double _t61 = _t1 * (_t57 * sqrt(_t56));
-    const double _t62 = (_t59 * (0.0083333333333333003 - _t58 * 0.00019841269841216566) + (1.0 - _t58 * 0.16666666666666666) + (2.755731919201122e-06 - _t58 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t58) * _t59) * _t60) * (_t50 * _t61);
-    const double _t63 = 1.0 - _t58 * 0.5 + _t59 * (0.041666666666666102 - 0.0013888888888798428 * _t58) + ((2.0874477943664777e-09 - _t58 * 1.1304620460700782e-11) * _t59 + (2.4801587247292686e-05 - _t58 * 2.7557303701922228e-07)) * _t60;
-    const double _t64 = _t62 * _t11 + _t6 * _t63;
-    const double _t65 = _t57 * (_t55 * _t2);
-    const double _t66 = _t65 * _t65;
-    const double _t67 = _t66 * _t66;
-    const double _t68 = (2.4801587247292686e-05 - _t65 * 2.7557303701922228e-07 + _t66 * (2.0874477943664777e-09 - _t65 * 1.1304620460700782e-11)) * _t67 + ((0.041666666666666102 - _t65 * 0.0013888888888798428) * _t66 + (1.0 - _t65 * 0.5));
-    const double _t69 = _t54 * _t61 * ((0.0083333333333333003 - _t65 * 0.00019841269841216566) * _t66 + (1.0 - _t65 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t65 * 7.549371704181243e-13) * _t66 + (2.755731919201122e-06 - _t65 * 2.5052099244914114e-08)) * _t67);
-    const double _t70 = _t10 * _t68 - _t69 * _t8;
-    const double _t71 = _t57 * (_t53 * _t2);
-    const double _t72 = _t71 * _t71;
-    const double _t73 = _t72 * _t72;
-    const double _t74 = (0.041666666666666102 - _t71 * 0.0013888888888798428) * _t72 + (1.0 - _t71 * 0.5) + _t73 * (_t72 * (2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07));
-    const double _t75 = ((_t72 * (1.6057701922579786e-10 - _t71 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t71 * 2.5052099244914114e-08)) * _t73 + (1.0 - _t71 * 0.16666666666666666 + _t72 * (0.0083333333333333003 - _t71 * 0.00019841269841216566))) * (_t52 * _t61);
-    const double _t76 = _t4 * _t74 + _t75 * _t13;
-    const double _t77 = _t10 * _t69 + _t68 * _t8;
-    const double _t78 = _t11 * _t63 - _t62 * _t6;
-    const double _t79 = _t74 * _t13 - _t75 * _t4;
-    return _t64 * (_t70 * _t76) + (_t77 * _t78 * _t76 + _t79 * _t77 * _t64) + _t79 * (_t70 * _t78);
+    const double _t40 = (1.0 - 0.16666666666666666 * _t37 + _t38 * (0.0083333333333333003 - 0.00019841269841216566 * _t37) + (_t38 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) * _t39) * _t28;
+    const double _t41 = _t38 * (0.041666666666666102 - 0.0013888888888798428 * _t37) + (1.0 - _t37 * 0.5) + _t39 * (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07 + _t38 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t37));
+    const double _t42 = _t12 * _t40 + _t1 * _t41;
+    const double _t43 = _t36 * _t42;
+    const double _t44 = _t22 * _t29 * _t26;
+    const double _t45 = _t44 * _t44;
+    const double _t46 = _t45 * _t45;
+    const double _t47 = (0.041666666666666102 - 0.0013888888888798428 * _t44) * _t45 + (1.0 - _t44 * 0.5) + ((2.0874477943664777e-09 - _t44 * 1.1304620460700782e-11) * _t45 + (2.4801587247292686e-05 - _t44 * 2.7557303701922228e-07)) * _t46;
+    const double _t48 = _t21 * _t27;
+    const double _t49 = _t48 * (1.0 - 0.16666666666666666 * _t44 + (0.0083333333333333003 - 0.00019841269841216566 * _t44) * _t45 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t44 + _t45 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t44)) * _t46);
+    const double _t50 = _t3 * _t47 - _t49 * _t9;
+    const double _t51 = _t43 * _t50;
+    const double _t52 = _t35 * _t5 + _t8 * _t33;
+    const double _t53 = _t47 * _t9 + _t3 * _t49;
+    const double _t54 = _t52 * (_t53 * _t42);
+    const double _t55 = _t41 * _t12 - _t1 * _t40;
+    const double _t56 = _t53 * _t36 * _t55;
+    const double _t57 = _t52 * (_t50 * _t55);
+    const double _t58 = _t51 + _t54 - _t56 - _t57;
+    const double _t59 = _t51 + _t57 - _t54 - _t56;
+    const double _t60 = _t51 + _t56 - _t54 - _t57;
+    const double _t61 = _t58 * _t58 + _t59 * _t59 + _t60 * _t60;
+    const double _t62 = _t19 * (((_t61 > 1.1754943508222875e-38) ? 1.0 / _t61 : 0.0) * sqrt(_t61));
+    const double _t63 = _t28 - _t58 * _t62;
+    const double _t64 = _t36 * _t50 * _t55;
+    const double _t65 = _t52 * (_t50 * _t42);
+    const double _t66 = _t52 * (_t53 * _t55);
+    const double _t67 = _t43 * _t53;
+    const double _t68 = _t34 + _t60 * _t62;
+    const double _t69 = _t48 + _t59 * _t62;
+    const double _t70 = _t64 + _t66;
+    const double _t71 = _t70 + _t65 + _t67;
+    const double _t72 = _t63 * (_t58 + ((_t64 + _t65 - _t66 - _t67) * _t68 + _t69 * (_t64 + _t67 - _t66 - _t65)) - _t63 * _t71 * 0.5) + _t71 - _t68 * (_t60 + _t68 * _t71 * 0.5 - _t69 * (_t70 - _t65 - _t67)) - (_t59 + _t69 * _t71 * 0.5) * _t69;
+    const double _t73 = 1.7320525396196846 * fabs(_t19);
+    const double _t74 = _t1 * _t15 + _t12 * _t6 + _t10 * _t12 + _t1 * _t13;
+    const double _t75 = _t73 + _t74;
+    const double _t76 = _t74 - _t73;
+    return (_t72 <= _t75) ? ((_t76 <= _t72) ? _t72 : _t76) : _t75;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 610
+ * Total ops: 459
  */
 double diamond_proj_o4_shell(double3 p, double t)
 {
     const double _t0 = p.x * 2.0;
     const double _t1 = cospi(_t0);
-    const double _t2 = 6.2831853071795862 * (t * 0.5);
-    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    const double _t4 = _t3 * _t3;
-    const double _t5 = p.y * 2.0;
-    const double _t6 = cospi(_t5);
-    const double _t7 = p.z * 2.0;
-    const double _t8 = cospi(_t7);
-    const double _t9 = _t1 * (_t6 * _t8);
-    const double _t10 = sinpi(_t0);
-    const double _t11 = sinpi(_t7);
-    const double _t12 = _t10 * (_t11 * _t6);
-    const double _t13 = sinpi(_t5);
-    const double _t14 = _t10 * (_t8 * _t13);
-    const double _t15 = _t1 * (_t11 * _t13);
-    const double _t16 = _t9 + _t12 - _t14 - _t15;
-    const double _t17 = _t16 * _t16;
-    const double _t18 = _t15 + _t9 - _t12 - _t14;
-    const double _t19 = _t18 * _t18;
-    const double _t20 = _t14 + _t9 - _t12 - _t15;
-    const double _t21 = _t20 * _t20;
-    const double _t22 = _t19 + _t21 + _t17;
-    const double _t23 = (_t22 > 1.1754943508222875e-38) ? 1.0 / _t22 : 0.0;
-    const double _t24 = _t4 * _t17 * _t23;
-    const double _t25 = _t24 * _t24;
-    const double _t26 = _t25 * _t25;
-    const double _t27 = (0.041666666666666102 - 0.0013888888888798428 * _t24) * _t25 + (1.0 - _t24 * 0.5) + ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24) * _t25 + (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07)) * _t26;
-    const double _t28 = _t23 * sqrt(_t22);
-    const double _t29 = _t3 * _t28;
-    const double _t30 = _t16 * _t29 * ((0.0083333333333333003 - 0.00019841269841216566 * _t24) * _t25 + (1.0 - 0.16666666666666666 * _t24) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24) * _t25) * _t26);
-    const double _t31 = _t27 * _t6 + _t30 * _t13;
-    const double _t32 = _t19 * _t4 * _t23;
-    const double _t33 = _t32 * _t32;
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * ((2.0874477943664777e-09 - _t32 * 1.1304620460700782e-11) * _t33 + (2.4801587247292686e-05 - _t32 * 2.7557303701922228e-07)) + (_t33 * (0.041666666666666102 - 0.0013888888888798428 * _t32) + (1.0 - _t32 * 0.5));
-    const double _t36 = (1.0 - 0.16666666666666666 * _t32 + _t33 * (0.0083333333333333003 - _t32 * 0.00019841269841216566) + _t34 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t32) * _t33 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t32))) * (_t18 * _t29);
-    const double _t37 = _t35 * _t10 - _t1 * _t36;
-    const double _t38 = _t23 * (_t4 * _t21);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = p.y * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = _t3 * _t5;
+    const double _t7 = _t1 * _t6;
+    const double _t8 = cospi(_t4);
+    const double _t9 = cospi(_t2);
+    const double _t10 = _t8 * _t9;
+    const double _t11 = _t1 * _t10;
+    const double _t12 = sinpi(_t0);
+    const double _t13 = _t3 * _t8;
+    const double _t14 = _t12 * _t13;
+    const double _t15 = _t9 * _t5;
+    const double _t16 = _t12 * _t15;
+    const double _t17 = _t7 + _t11 - _t14 - _t16;
+    const double _t18 = _t17 * _t17;
+    const double _t19 = _t16 + _t11 - _t14 - _t7;
+    const double _t20 = _t19 * _t19;
+    const double _t21 = _t11 + _t14 - _t16 - _t7;
+    const double _t22 = _t21 * _t21;
+    const double _t23 = _t18 + _t20 + _t22;
+    const double _t24 = (_t23 > 1.1754943508222875e-38) ? 1.0 / _t23 : 0.0;
+    const double _t25 = 6.2831853071795862 * (t * 0.5);
+    const double _t26 = (_t25 <= 1.0) ? (((-1.0) <= _t25) ? _t25 : (-1.0)) : 1.0;
+    const double _t27 = _t26 * _t26;
+    const double _t28 = _t24 * (_t27 * _t20);
+    const double _t29 = _t28 * _t28;
+    const double _t30 = _t29 * _t29;
+    const double _t31 = _t30 * ((2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11) * _t29 + (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07)) + (1.0 - _t28 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t28) * _t29);
+    const double _t32 = _t24 * sqrt(_t23);
+    const double _t33 = _t26 * _t32;
+    const double _t34 = _t19 * _t33;
+    const double _t35 = (1.0 - 0.16666666666666666 * _t28 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + _t30 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) * _t29 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t28))) * _t34;
+    const double _t36 = _t31 * _t9 + _t3 * _t35;
+    const double _t37 = _t27 * _t22 * _t24;
+    const double _t38 = _t37 * _t37;
     const double _t39 = _t38 * _t38;
-    const double _t40 = _t39 * _t39;
-    const double _t41 = _t40 * ((2.0874477943664777e-09 - _t38 * 1.1304620460700782e-11) * _t39 + (2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07)) + (1.0 - _t38 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t38) * _t39);
-    const double _t42 = (1.0 - 0.16666666666666666 * _t38 + (0.0083333333333333003 - _t38 * 0.00019841269841216566) * _t39 + _t40 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t38))) * (_t20 * _t29);
-    const double _t43 = _t11 * _t41 - _t42 * _t8;
-    const double _t44 = _t31 * _t37 * _t43;
-    const double _t45 = _t41 * _t8 + _t11 * _t42;
-    const double _t46 = _t27 * _t13 - _t6 * _t30;
-    const double _t47 = _t45 * (_t46 * _t37);
-    const double _t48 = _t1 * _t35 + _t10 * _t36;
-    const double _t49 = _t31 * (_t45 * _t48);
-    const double _t50 = _t46 * _t48 * _t43;
-    const double _t51 = _t44 + _t47 - _t49 - _t50;
-    const double _t52 = _t51 * _t51;
-    const double _t53 = _t44 + _t50 - _t49 - _t47;
-    const double _t54 = _t53 * _t53;
-    const double _t55 = _t44 + _t49 - _t50 - _t47;
-    const double _t56 = _t55 * _t55;
-    const double _t57 = _t52 + _t54 + _t56;
-    const double _t58 = (_t57 > 1.1754943508222875e-38) ? 1.0 / _t57 : 0.0;
-    const double _t59 = _t4 * _t52 * _t58;
-    const double _t60 = _t59 * _t59;
-    const double _t61 = _t60 * _t60;
-    const double _t62 = 1.0 - _t59 * 0.5 + (0.041666666666666102 - _t59 * 0.0013888888888798428) * _t60 + (2.4801587247292686e-05 - _t59 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t59 * 1.1304620460700782e-11) * _t60) * _t61;
-    const double _t63 = _t3 * (sqrt(_t57) * _t58);
-    const double _t64 = ((2.755731919201122e-06 - _t59 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t59 * 7.549371704181243e-13) * _t60) * _t61 + ((0.0083333333333333003 - _t59 * 0.00019841269841216566) * _t60 + (1.0 - _t59 * 0.16666666666666666))) * (_t51 * _t63);
-    const double _t65 = _t1 * _t62 - _t64 * _t10;
-    const double _t66 = _t58 * (_t4 * _t54);
-    const double _t67 = _t66 * _t66;
-    const double _t68 = _t67 * _t67;
-    const double _t69 = _t67 * (0.041666666666666102 - 0.0013888888888798428 * _t66) + (1.0 - _t66 * 0.5) + ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t66) * _t67 + (2.4801587247292686e-05 - _t66 * 2.7557303701922228e-07)) * _t68;
-    const double _t70 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t66 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t66) * _t67) * _t68 + (_t67 * (0.0083333333333333003 - 0.00019841269841216566 * _t66) + (1.0 - 0.16666666666666666 * _t66))) * (_t53 * _t63);
-    const double _t71 = _t69 * _t8 - _t11 * _t70;
-    const double _t72 = _t4 * _t56 * _t58;
-    const double _t73 = _t72 * _t72;
-    const double _t74 = _t73 * _t73;
-    const double _t75 = _t74 * (2.4801587247292686e-05 - _t72 * 2.7557303701922228e-07 + _t73 * (2.0874477943664777e-09 - _t72 * 1.1304620460700782e-11)) + (_t73 * (0.041666666666666102 - 0.0013888888888798428 * _t72) + (1.0 - _t72 * 0.5));
-    const double _t76 = (_t73 * (0.0083333333333333003 - _t72 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t72) + _t74 * (_t73 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t72) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t72))) * (_t55 * _t63);
-    const double _t77 = _t75 * _t13 - _t6 * _t76;
-    const double _t78 = _t1 * _t64 + _t62 * _t10;
-    const double _t79 = _t70 * _t8 + _t11 * _t69;
-    const double _t80 = _t76 * _t13 + _t6 * _t75;
-    const double _t81 = -_t2;
-    const double _t82 = (_t81 <= 1.0) ? (((-1.0) <= _t81) ? _t81 : (-1.0)) : 1.0;
-    const double _t83 = _t28 * _t82;
-    const double _t84 = _t82 * _t82;
-    const double _t85 = _t23 * (_t84 * _t21);
+    const double _t40 = (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38 + (1.0 - _t37 * 0.5) + ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t37) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07)) * _t39;
+    const double _t41 = _t21 * _t33;
+    const double _t42 = _t41 * ((0.0083333333333333003 - 0.00019841269841216566 * _t37) * _t38 + (1.0 - 0.16666666666666666 * _t37) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38) * _t39);
+    const double _t43 = _t40 * _t5 - _t8 * _t42;
+    const double _t44 = _t18 * _t27 * _t24;
+    const double _t45 = _t44 * _t44;
+    const double _t46 = _t45 * _t45;
+    const double _t47 = _t46 * ((2.0874477943664777e-09 - _t44 * 1.1304620460700782e-11) * _t45 + (2.4801587247292686e-05 - _t44 * 2.7557303701922228e-07)) + (_t45 * (0.041666666666666102 - 0.0013888888888798428 * _t44) + (1.0 - _t44 * 0.5));
+    const double _t48 = _t17 * _t33;
+    const double _t49 = (1.0 - 0.16666666666666666 * _t44 + _t45 * (0.0083333333333333003 - _t44 * 0.00019841269841216566) + _t46 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t44) * _t45 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t44))) * _t48;
+    const double _t50 = _t1 * _t47 + _t12 * _t49;
+    const double _t51 = _t43 * _t50;
+    const double _t52 = _t36 * _t51;
+    const double _t53 = _t47 * _t12 - _t1 * _t49;
+    const double _t54 = _t43 * _t53;
+    const double _t55 = _t3 * _t31 - _t35 * _t9;
+    const double _t56 = _t54 * _t55;
+    const double _t57 = _t52 + _t56;
+    const double _t58 = _t40 * _t8 + _t42 * _t5;
+    const double _t59 = _t58 * (_t36 * _t53);
+    const double _t60 = _t58 * _t50 * _t55;
+    const double _t61 = _t57 + _t59 + _t60;
+    const double _t62 = _t58 * _t53 * _t55;
+    const double _t63 = _t36 * _t54;
+    const double _t64 = _t58 * (_t36 * _t50);
+    const double _t65 = _t51 * _t55;
+    const double _t66 = _t62 + _t63 - _t64 - _t65;
+    const double _t67 = _t62 + _t65 - _t64 - _t63;
+    const double _t68 = _t62 + _t64 - _t65 - _t63;
+    const double _t69 = _t66 * _t66 + _t67 * _t67 + _t68 * _t68;
+    const double _t70 = _t26 * (sqrt(_t69) * ((_t69 > 1.1754943508222875e-38) ? 1.0 / _t69 : 0.0));
+    const double _t71 = _t48 + _t66 * _t70;
+    const double _t72 = _t67 * _t70 + _t34;
+    const double _t73 = _t41 - _t68 * _t70;
+    const double _t74 = _t61 + _t71 * ((_t57 - _t59 - _t60) * _t72 + (_t60 + _t56 - _t52 - _t59) * _t73 - _t66 - _t61 * _t71 * 0.5) - (_t61 * _t72 * 0.5 + _t67) * _t72 - _t73 * (_t61 * _t73 * 0.5 - _t68 - (_t59 + _t56 - _t52 - _t60) * _t72);
+    const double _t75 = _t1 * _t15 + _t12 * _t6 + _t10 * _t12 + _t1 * _t13;
+    const double _t76 = 1.7320525396196846 * fabs(_t26);
+    const double _t77 = _t75 + _t76;
+    const double _t78 = _t75 - _t76;
+    const double _t79 = -_t25;
+    const double _t80 = (_t79 <= 1.0) ? (((-1.0) <= _t79) ? _t79 : (-1.0)) : 1.0;
+    const double _t81 = _t32 * _t80;
+    const double _t82 = _t17 * _t81;
+    const double _t83 = _t19 * _t81;
+    const double _t84 = _t80 * _t80;
+    const double _t85 = _t24 * (_t84 * _t20);
     const double _t86 = _t85 * _t85;
     const double _t87 = _t86 * _t86;
-    const double _t88 = _t20 * _t83 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t85 + _t86 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t85)) * _t87 + (1.0 - 0.16666666666666666 * _t85 + (0.0083333333333333003 - 0.00019841269841216566 * _t85) * _t86));
+    const double _t88 = _t83 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t85 + _t86 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t85)) * _t87 + (1.0 - 0.16666666666666666 * _t85 + (0.0083333333333333003 - 0.00019841269841216566 * _t85) * _t86));
     const double _t89 = (2.4801587247292686e-05 - _t85 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t85 * 1.1304620460700782e-11) * _t86) * _t87 + ((0.041666666666666102 - 0.0013888888888798428 * _t85) * _t86 + (1.0 - _t85 * 0.5));
-    const double _t90 = _t11 * _t88 + _t89 * _t8;
-    const double _t91 = _t23 * (_t19 * _t84);
+    const double _t90 = _t3 * _t88 + _t89 * _t9;
+    const double _t91 = _t24 * (_t18 * _t84);
     const double _t92 = _t91 * _t91;
     const double _t93 = _t92 * _t92;
     const double _t94 = (_t92 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t91) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t91)) * _t93 + (1.0 - _t91 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t91) * _t92);
-    const double _t95 = ((0.0083333333333333003 - 0.00019841269841216566 * _t91) * _t92 + (1.0 - 0.16666666666666666 * _t91) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t91) * _t92 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t91)) * _t93) * (_t18 * _t83);
-    const double _t96 = _t1 * _t94 + _t95 * _t10;
-    const double _t97 = _t23 * (_t84 * _t17);
+    const double _t95 = ((0.0083333333333333003 - 0.00019841269841216566 * _t91) * _t92 + (1.0 - 0.16666666666666666 * _t91) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t91) * _t92 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t91)) * _t93) * _t82;
+    const double _t96 = _t1 * _t94 + _t95 * _t12;
+    const double _t97 = _t24 * (_t84 * _t22);
     const double _t98 = _t97 * _t97;
     const double _t99 = _t98 * _t98;
     const double _t100 = 1.0 - _t97 * 0.5 + (0.041666666666666102 - _t97 * 0.0013888888888798428) * _t98 + _t99 * ((2.0874477943664777e-09 - _t97 * 1.1304620460700782e-11) * _t98 + (2.4801587247292686e-05 - _t97 * 2.7557303701922228e-07));
-    const double _t101 = (_t99 * ((1.6057701922579786e-10 - _t97 * 7.549371704181243e-13) * _t98 + (2.755731919201122e-06 - _t97 * 2.5052099244914114e-08)) + (1.0 - _t97 * 0.16666666666666666 + (0.0083333333333333003 - _t97 * 0.00019841269841216566) * _t98)) * (_t16 * _t83);
-    const double _t102 = _t6 * _t100 + _t101 * _t13;
-    const double _t103 = _t90 * (_t96 * _t102);
-    const double _t104 = _t10 * _t94 - _t95 * _t1;
-    const double _t105 = _t100 * _t13 - _t6 * _t101;
-    const double _t106 = _t104 * _t105 * _t90;
-    const double _t107 = _t11 * _t89 - _t88 * _t8;
-    const double _t108 = _t107 * _t96 * _t105;
-    const double _t109 = _t107 * (_t104 * _t102);
-    const double _t110 = _t103 + _t106 - _t108 - _t109;
-    const double _t111 = _t110 * _t110;
-    const double _t112 = _t109 + _t103 - _t108 - _t106;
-    const double _t113 = _t112 * _t112;
-    const double _t114 = _t103 + _t108 - _t106 - _t109;
-    const double _t115 = _t114 * _t114;
-    const double _t116 = _t111 + (_t113 + _t115);
-    const double _t117 = (_t116 > 1.1754943508222875e-38) ? 1.0 / _t116 : 0.0;
-    const double _t118 = _t111 * _t84 * _t117;
-    const double _t119 = _t118 * _t118;
-    const double _t120 = _t119 * _t119;
-    const double _t121 = _t119 * (0.041666666666666102 - _t118 * 0.0013888888888798428) + (1.0 - _t118 * 0.5) + _t120 * ((2.0874477943664777e-09 - _t118 * 1.1304620460700782e-11) * _t119 + (2.4801587247292686e-05 - _t118 * 2.7557303701922228e-07));
-    const double _t122 = sqrt(_t116) * _t117 * _t82;
-    const double _t123 = ((0.0083333333333333003 - _t118 * 0.00019841269841216566) * _t119 + (1.0 - _t118 * 0.16666666666666666) + _t120 * ((1.6057701922579786e-10 - _t118 * 7.549371704181243e-13) * _t119 + (2.755731919201122e-06 - _t118 * 2.5052099244914114e-08))) * (_t122 * _t110);
-    const double _t124 = _t11 * _t121 - _t8 * _t123;
-    const double _t125 = _t84 * _t113 * _t117;
-    const double _t126 = _t125 * _t125;
-    const double _t127 = _t126 * _t126;
-    const double _t128 = _t122 * _t112 * ((0.0083333333333333003 - _t125 * 0.00019841269841216566) * _t126 + (1.0 - _t125 * 0.16666666666666666) + _t127 * (_t126 * (1.6057701922579786e-10 - _t125 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t125 * 2.5052099244914114e-08)));
-    const double _t129 = _t127 * (_t126 * (2.0874477943664777e-09 - _t125 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t125 * 2.7557303701922228e-07)) + (_t126 * (0.041666666666666102 - _t125 * 0.0013888888888798428) + (1.0 - _t125 * 0.5));
-    const double _t130 = _t128 * _t13 + _t6 * _t129;
-    const double _t131 = _t84 * _t115 * _t117;
-    const double _t132 = _t131 * _t131;
-    const double _t133 = _t132 * _t132;
-    const double _t134 = 1.0 - _t131 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t131) * _t132 + _t133 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t131) * _t132 + (2.4801587247292686e-05 - _t131 * 2.7557303701922228e-07));
-    const double _t135 = _t122 * _t114 * (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t131) * _t132 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t131)) * _t133 + ((0.0083333333333333003 - 0.00019841269841216566 * _t131) * _t132 + (1.0 - 0.16666666666666666 * _t131)));
-    const double _t136 = _t1 * _t134 + _t135 * _t10;
-    const double _t137 = _t134 * _t10 - _t1 * _t135;
-    const double _t138 = _t129 * _t13 - _t6 * _t128;
-    const double _t139 = _t121 * _t8 + _t11 * _t123;
-    return (_t65 * (_t71 * _t77) + (_t78 * _t77 * _t79 + _t78 * _t71 * _t80 + _t79 * _t80 * _t65)) * (_t124 * (_t130 * _t136) + (_t124 * (_t137 * _t138) + _t137 * (_t130 * _t139) + _t138 * _t139 * _t136));
+    const double _t101 = _t21 * _t81;
+    const double _t102 = (_t99 * ((1.6057701922579786e-10 - _t97 * 7.549371704181243e-13) * _t98 + (2.755731919201122e-06 - _t97 * 2.5052099244914114e-08)) + (1.0 - _t97 * 0.16666666666666666 + (0.0083333333333333003 - _t97 * 0.00019841269841216566) * _t98)) * _t101;
+    const double _t103 = _t8 * _t100 + _t102 * _t5;
+    const double _t104 = _t96 * _t103;
+    const double _t105 = _t90 * _t104;
+    const double _t106 = _t12 * _t94 - _t95 * _t1;
+    const double _t107 = _t100 * _t5 - _t8 * _t102;
+    const double _t108 = _t106 * _t107 * _t90;
+    const double _t109 = _t3 * _t89 - _t88 * _t9;
+    const double _t110 = _t109 * _t96 * _t107;
+    const double _t111 = _t106 * _t103;
+    const double _t112 = _t109 * _t111;
+    const double _t113 = _t105 + _t108 - _t110 - _t112;
+    const double _t114 = _t112 + _t105 - _t110 - _t108;
+    const double _t115 = _t105 + _t110 - _t108 - _t112;
+    const double _t116 = _t113 * _t113 + (_t114 * _t114 + _t115 * _t115);
+    const double _t117 = sqrt(_t116) * ((_t116 > 1.1754943508222875e-38) ? 1.0 / _t116 : 0.0) * _t80;
+    const double _t118 = _t82 - _t117 * _t115;
+    const double _t119 = _t106 * _t109 * _t107;
+    const double _t120 = _t109 * _t104;
+    const double _t121 = _t90 * _t111;
+    const double _t122 = _t90 * (_t107 * _t96);
+    const double _t123 = _t101 - _t117 * _t114;
+    const double _t124 = _t121 + _t120;
+    const double _t125 = _t122 + _t124 + _t119;
+    const double _t126 = _t83 - _t117 * _t113;
+    const double _t127 = _t118 * ((_t119 + _t120 - _t121 - _t122) * _t123 + _t115 - _t125 * _t118 * 0.5 - _t126 * (_t124 - _t122 - _t119)) + _t126 * (_t113 - _t125 * _t126 * 0.5) + _t125 + (_t114 - (_t122 + _t120 - _t121 - _t119) * _t126 - _t125 * _t123 * 0.5) * _t123;
+    const double _t128 = 1.7320525396196846 * fabs(_t80);
+    const double _t129 = _t75 + _t128;
+    const double _t130 = _t75 - _t128;
+    return ((_t74 <= _t77) ? ((_t78 <= _t74) ? _t74 : _t78) : _t77) * ((_t127 <= _t129) ? ((_t130 <= _t127) ? _t127 : _t130) : _t129);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.

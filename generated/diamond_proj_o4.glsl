@@ -8,7 +8,9 @@ description: |
     Source: Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 4. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> diamond_proj_o4_field(<vec3 p>)
     - <float> diamond_proj_o4_offset(<vec3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 2 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 20
-    - offset: 322
-    - shell: 610
+    - offset: 251
+    - shell: 459
     - normal: 342
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":322,"shell":610,"normal":342}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":251,"shell":459,"normal":342}} */
 #ifndef OFFSETGEN_DIAMOND_PROJ_O4_GLSL
 #define OFFSETGEN_DIAMOND_PROJ_O4_GLSL
 
@@ -98,236 +101,224 @@ highp float diamond_proj_o4_field(highp vec3 p)
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 322.
+// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 251.
 highp float diamond_proj_o4_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = 6.28318548 * h;
     highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
     highp float _t2 = _t1 * _t1;
-    highp float _t3 = 6.28318548 * p.y;
-    highp float _t4 = diamond_proj_o4_sin(_t3);
-    highp float _t5 = p.z * 6.28318548;
+    highp float _t3 = p.z * 6.28318548;
+    highp float _t4 = diamond_proj_o4_cos(_t3);
+    highp float _t5 = 6.28318548 * p.y;
     highp float _t6 = diamond_proj_o4_cos(_t5);
-    highp float _t7 = diamond_proj_o4_cos(_t3);
+    highp float _t7 = _t4 * _t6;
     highp float _t8 = 6.28318548 * p.x;
     highp float _t9 = diamond_proj_o4_cos(_t8);
-    highp float _t10 = _t6 * _t7 * _t9;
-    highp float _t11 = diamond_proj_o4_sin(_t5);
-    highp float _t12 = diamond_proj_o4_sin(_t8);
-    highp float _t13 = _t11 * _t7 * _t12;
-    highp float _t14 = _t6 * _t4 * _t12;
-    highp float _t15 = _t9 * (_t11 * _t4);
-    highp float _t16 = _t10 + _t13 - _t14 - _t15;
-    highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t10 + _t14 - _t13 - _t15;
-    highp float _t19 = _t18 * _t18;
-    highp float _t20 = _t10 + _t15 - _t13 - _t14;
+    highp float _t10 = _t7 * _t9;
+    highp float _t11 = diamond_proj_o4_sin(_t3);
+    highp float _t12 = diamond_proj_o4_sin(_t5);
+    highp float _t13 = _t11 * _t12;
+    highp float _t14 = _t9 * _t13;
+    highp float _t15 = _t11 * _t6;
+    highp float _t16 = diamond_proj_o4_sin(_t8);
+    highp float _t17 = _t15 * _t16;
+    highp float _t18 = _t4 * _t12;
+    highp float _t19 = _t18 * _t16;
+    highp float _t20 = _t10 + _t14 - _t17 - _t19;
     highp float _t21 = _t20 * _t20;
-    highp float _t22 = _t19 + _t21 + _t17;
-    highp float _t23 = (_t22 > 1.17549435e-38) ? 1.0 / _t22 : 0.0;
-    highp float _t24 = _t2 * _t17 * _t23;
+    highp float _t22 = _t10 + _t19 - _t17 - _t14;
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = _t10 + _t17 - _t19 - _t14;
     highp float _t25 = _t24 * _t24;
-    highp float _t26 = _t25 * _t25;
-    highp float _t27 = _t25 * (0.0416666679 - 0.00138888892 * _t24) + (1.0 - _t24 * 0.5) + _t26 * (_t25 * (2.08744777e-09 - 1.13046204e-11 * _t24) + (2.48015876e-05 - _t24 * 2.75573029e-07));
-    highp float _t28 = _t1 * (sqrt(_t22) * _t23);
-    highp float _t29 = (_t26 * (2.75573188e-06 - 2.50520991e-08 * _t24 + _t25 * (1.60577024e-10 - 7.54937183e-13 * _t24)) + (1.0 - 0.166666672 * _t24 + _t25 * (0.00833333377 - 0.000198412701 * _t24))) * (_t16 * _t28);
-    highp float _t30 = _t4 * _t27 - _t7 * _t29;
-    highp float _t31 = _t2 * _t21 * _t23;
-    highp float _t32 = _t31 * _t31;
-    highp float _t33 = _t32 * _t32;
-    highp float _t34 = (0.0416666679 - 0.00138888892 * _t31) * _t32 + (1.0 - 0.5 * _t31) + _t33 * (2.48015876e-05 - 2.75573029e-07 * _t31 + (2.08744777e-09 - 1.13046204e-11 * _t31) * _t32);
-    highp float _t35 = (_t33 * (2.75573188e-06 - 2.50520991e-08 * _t31 + _t32 * (1.60577024e-10 - 7.54937183e-13 * _t31)) + (1.0 - 0.166666672 * _t31 + _t32 * (0.00833333377 - 0.000198412701 * _t31))) * (_t20 * _t28);
-    highp float _t36 = _t34 * _t9 + _t35 * _t12;
-    highp float _t37 = _t23 * (_t2 * _t19);
+    highp float _t26 = _t23 + _t21 + _t25;
+    highp float _t27 = (_t26 > 1.17549435e-38) ? 1.0 / _t26 : 0.0;
+    highp float _t28 = _t2 * _t21 * _t27;
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = _t29 * _t29;
+    highp float _t31 = (0.0416666679 - 0.00138888892 * _t28) * _t29 + (1.0 - 0.5 * _t28) + _t30 * (2.48015876e-05 - 2.75573029e-07 * _t28 + (2.08744777e-09 - 1.13046204e-11 * _t28) * _t29);
+    highp float _t32 = _t1 * (sqrt(_t26) * _t27);
+    highp float _t33 = _t20 * _t32;
+    highp float _t34 = (_t30 * (2.75573188e-06 - 2.50520991e-08 * _t28 + _t29 * (1.60577024e-10 - 7.54937183e-13 * _t28)) + (1.0 - 0.166666672 * _t28 + _t29 * (0.00833333377 - 0.000198412701 * _t28))) * _t33;
+    highp float _t35 = _t31 * _t16 - _t34 * _t9;
+    highp float _t36 = _t2 * _t25 * _t27;
+    highp float _t37 = _t36 * _t36;
     highp float _t38 = _t37 * _t37;
-    highp float _t39 = _t38 * _t38;
-    highp float _t40 = 1.0 - _t37 * 0.5 + (0.0416666679 - 0.00138888892 * _t37) * _t38 + _t39 * ((2.08744777e-09 - _t37 * 1.13046204e-11) * _t38 + (2.48015876e-05 - _t37 * 2.75573029e-07));
-    highp float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10 - 7.54937183e-13 * _t37) * _t38 + (2.75573188e-06 - 2.50520991e-08 * _t37)) + (1.0 - 0.166666672 * _t37 + (0.00833333377 - _t37 * 0.000198412701) * _t38));
-    highp float _t42 = _t11 * _t40 - _t6 * _t41;
-    highp float _t43 = _t30 * _t36 * _t42;
-    highp float _t44 = _t6 * _t40 + _t11 * _t41;
-    highp float _t45 = _t4 * _t29 + _t7 * _t27;
-    highp float _t46 = _t36 * _t44 * _t45;
-    highp float _t47 = _t34 * _t12 - _t35 * _t9;
-    highp float _t48 = _t30 * _t44 * _t47;
-    highp float _t49 = _t45 * (_t42 * _t47);
-    highp float _t50 = _t43 + _t46 - _t48 - _t49;
-    highp float _t51 = _t50 * _t50;
-    highp float _t52 = _t43 + _t49 - _t46 - _t48;
-    highp float _t53 = _t52 * _t52;
-    highp float _t54 = _t43 + _t48 - _t46 - _t49;
-    highp float _t55 = _t54 * _t54;
-    highp float _t56 = _t53 + _t51 + _t55;
-    highp float _t57 = (_t56 > 1.17549435e-38) ? 1.0 / _t56 : 0.0;
-    highp float _t58 = _t2 * _t51 * _t57;
-    highp float _t59 = _t58 * _t58;
-    highp float _t60 = _t59 * _t59;
-    highp float _t61 = _t1 * (sqrt(_t56) * _t57);
-    highp float _t62 = (((1.60577024e-10 - _t58 * 7.54937183e-13) * _t59 + (2.75573188e-06 - _t58 * 2.50520991e-08)) * _t60 + ((0.00833333377 - _t58 * 0.000198412701) * _t59 + (1.0 - _t58 * 0.166666672))) * (_t61 * _t50);
-    highp float _t63 = _t60 * ((2.08744777e-09 - _t58 * 1.13046204e-11) * _t59 + (2.48015876e-05 - _t58 * 2.75573029e-07)) + ((0.0416666679 - _t58 * 0.00138888892) * _t59 + (1.0 - _t58 * 0.5));
-    highp float _t64 = _t62 * _t12 + _t63 * _t9;
-    highp float _t65 = _t2 * _t55 * _t57;
-    highp float _t66 = _t65 * _t65;
-    highp float _t67 = _t66 * _t66;
-    highp float _t68 = (1.0 - 0.166666672 * _t65 + _t66 * (0.00833333377 - _t65 * 0.000198412701) + _t67 * (2.75573188e-06 - 2.50520991e-08 * _t65 + (1.60577024e-10 - 7.54937183e-13 * _t65) * _t66)) * (_t54 * _t61);
-    highp float _t69 = 1.0 - _t65 * 0.5 + _t66 * (0.0416666679 - 0.00138888892 * _t65) + _t67 * (2.48015876e-05 - _t65 * 2.75573029e-07 + _t66 * (2.08744777e-09 - _t65 * 1.13046204e-11));
-    highp float _t70 = _t7 * _t68 + _t69 * _t4;
-    highp float _t71 = _t57 * (_t53 * _t2);
-    highp float _t72 = _t71 * _t71;
-    highp float _t73 = _t72 * _t72;
-    highp float _t74 = _t72 * (0.0416666679 - 0.00138888892 * _t71) + (1.0 - _t71 * 0.5) + (2.48015876e-05 - _t71 * 2.75573029e-07 + _t72 * (2.08744777e-09 - _t71 * 1.13046204e-11)) * _t73;
-    highp float _t75 = (((1.60577024e-10 - 7.54937183e-13 * _t71) * _t72 + (2.75573188e-06 - 2.50520991e-08 * _t71)) * _t73 + (1.0 - 0.166666672 * _t71 + _t72 * (0.00833333377 - _t71 * 0.000198412701))) * (_t52 * _t61);
-    highp float _t76 = _t6 * _t74 - _t11 * _t75;
-    highp float _t77 = _t6 * _t75 + _t11 * _t74;
-    highp float _t78 = _t63 * _t12 - _t62 * _t9;
-    highp float _t79 = _t69 * _t7 - _t4 * _t68;
-    return _t64 * (_t70 * _t76) + _t77 * (_t70 * _t78) + _t79 * _t64 * _t77 + _t79 * _t76 * _t78;
+    highp float _t39 = _t37 * (0.0416666679 - 0.00138888892 * _t36) + (1.0 - _t36 * 0.5) + _t38 * (_t37 * (2.08744777e-09 - 1.13046204e-11 * _t36) + (2.48015876e-05 - _t36 * 2.75573029e-07));
+    highp float _t40 = _t24 * _t32;
+    highp float _t41 = (_t38 * (2.75573188e-06 - 2.50520991e-08 * _t36 + _t37 * (1.60577024e-10 - 7.54937183e-13 * _t36)) + (1.0 - 0.166666672 * _t36 + _t37 * (0.00833333377 - 0.000198412701 * _t36))) * _t40;
+    highp float _t42 = _t12 * _t39 - _t6 * _t41;
+    highp float _t43 = _t27 * (_t2 * _t23);
+    highp float _t44 = _t43 * _t43;
+    highp float _t45 = _t44 * _t44;
+    highp float _t46 = 1.0 - _t43 * 0.5 + (0.0416666679 - 0.00138888892 * _t43) * _t44 + _t45 * ((2.08744777e-09 - _t43 * 1.13046204e-11) * _t44 + (2.48015876e-05 - _t43 * 2.75573029e-07));
+    highp float _t47 = _t32 * _t22;
+    highp float _t48 = _t47 * (_t45 * ((1.60577024e-10 - 7.54937183e-13 * _t43) * _t44 + (2.75573188e-06 - 2.50520991e-08 * _t43)) + (1.0 - 0.166666672 * _t43 + (0.00833333377 - _t43 * 0.000198412701) * _t44));
+    highp float _t49 = _t11 * _t46 - _t4 * _t48;
+    highp float _t50 = _t35 * (_t42 * _t49);
+    highp float _t51 = _t4 * _t46 + _t11 * _t48;
+    highp float _t52 = _t12 * _t41 + _t6 * _t39;
+    highp float _t53 = _t51 * _t35 * _t52;
+    highp float _t54 = _t50 + _t53;
+    highp float _t55 = _t31 * _t9 + _t34 * _t16;
+    highp float _t56 = _t55 * _t49 * _t52;
+    highp float _t57 = _t42 * _t55;
+    highp float _t58 = _t57 * _t51;
+    highp float _t59 = _t54 + _t56 + _t58;
+    highp float _t60 = _t57 * _t49;
+    highp float _t61 = _t42 * _t51 * _t35;
+    highp float _t62 = _t55 * _t51 * _t52;
+    highp float _t63 = _t52 * (_t49 * _t35);
+    highp float _t64 = _t60 + _t61 - _t62 - _t63;
+    highp float _t65 = _t60 + _t63 - _t62 - _t61;
+    highp float _t66 = _t60 + _t62 - _t61 - _t63;
+    highp float _t67 = _t65 * _t65 + _t66 * _t66 + _t64 * _t64;
+    highp float _t68 = _t1 * (sqrt(_t67) * ((_t67 > 1.17549435e-38) ? 1.0 / _t67 : 0.0));
+    highp float _t69 = _t64 * _t68 + _t40;
+    highp float _t70 = _t47 + _t65 * _t68;
+    highp float _t71 = _t33 - _t68 * _t66;
+    highp float _t72 = _t59 + ((_t50 + _t56 - _t53 - _t58) * _t69 + _t70 * (_t50 + _t58 - _t53 - _t56) + _t66 - _t59 * _t71 * 0.5) * _t71 - _t69 * (_t64 + _t59 * _t69 * 0.5 - _t70 * (_t54 - _t56 - _t58)) - _t70 * (_t70 * _t59 * 0.5 + _t65);
+    highp float _t73 = 1.73205256 * abs(_t1);
+    highp float _t74 = _t7 * _t16 + (_t16 * _t13 + _t18 * _t9) + _t15 * _t9;
+    highp float _t75 = _t73 + _t74;
+    highp float _t76 = _t74 - _t73;
+    return (_t72 <= _t75) ? ((_t76 <= _t72) ? _t72 : _t76) : _t75;
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 610.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 459.
 highp float diamond_proj_o4_shell(highp vec3 p, highp float t)
 {
-    highp float _t0 = 6.28318548 * p.x;
-    highp float _t1 = diamond_proj_o4_sin(_t0);
-    highp float _t2 = p.z * 6.28318548;
+    highp float _t0 = p.z * 6.28318548;
+    highp float _t1 = diamond_proj_o4_cos(_t0);
+    highp float _t2 = 6.28318548 * p.y;
     highp float _t3 = diamond_proj_o4_cos(_t2);
-    highp float _t4 = 6.28318548 * p.y;
-    highp float _t5 = diamond_proj_o4_cos(_t4);
-    highp float _t6 = diamond_proj_o4_cos(_t0);
-    highp float _t7 = _t3 * _t5 * _t6;
-    highp float _t8 = diamond_proj_o4_sin(_t4);
-    highp float _t9 = _t3 * _t8 * _t1;
-    highp float _t10 = diamond_proj_o4_sin(_t2);
-    highp float _t11 = _t10 * _t5 * _t1;
-    highp float _t12 = _t6 * (_t10 * _t8);
-    highp float _t13 = _t7 + _t9 - _t11 - _t12;
-    highp float _t14 = _t13 * _t13;
-    highp float _t15 = _t7 + _t12 - _t11 - _t9;
-    highp float _t16 = _t15 * _t15;
-    highp float _t17 = _t7 + _t11 - _t9 - _t12;
+    highp float _t4 = _t1 * _t3;
+    highp float _t5 = 6.28318548 * p.x;
+    highp float _t6 = diamond_proj_o4_cos(_t5);
+    highp float _t7 = _t4 * _t6;
+    highp float _t8 = diamond_proj_o4_sin(_t2);
+    highp float _t9 = _t1 * _t8;
+    highp float _t10 = diamond_proj_o4_sin(_t5);
+    highp float _t11 = _t9 * _t10;
+    highp float _t12 = diamond_proj_o4_sin(_t0);
+    highp float _t13 = _t12 * _t3;
+    highp float _t14 = _t13 * _t10;
+    highp float _t15 = _t12 * _t8;
+    highp float _t16 = _t6 * _t15;
+    highp float _t17 = _t7 + _t11 - _t14 - _t16;
     highp float _t18 = _t17 * _t17;
-    highp float _t19 = _t14 + _t16 + _t18;
-    highp float _t20 = (_t19 > 1.17549435e-38) ? 1.0 / _t19 : 0.0;
-    highp float _t21 = sqrt(_t19) * _t20;
-    highp float _t22 = 6.28318548 * (t * 0.5);
-    highp float _t23 = -_t22;
-    highp float _t24 = (_t23 <= 1.0) ? (((-1.0) <= _t23) ? _t23 : (-1.0)) : 1.0;
-    highp float _t25 = _t21 * _t24;
-    highp float _t26 = _t24 * _t24;
-    highp float _t27 = _t20 * (_t26 * _t16);
-    highp float _t28 = _t27 * _t27;
-    highp float _t29 = _t28 * _t28;
-    highp float _t30 = _t25 * _t15 * ((0.00833333377 - _t27 * 0.000198412701) * _t28 + (1.0 - _t27 * 0.166666672) + _t29 * (2.75573188e-06 - _t27 * 2.50520991e-08 + (1.60577024e-10 - _t27 * 7.54937183e-13) * _t28));
-    highp float _t31 = ((2.08744777e-09 - _t27 * 1.13046204e-11) * _t28 + (2.48015876e-05 - _t27 * 2.75573029e-07)) * _t29 + (1.0 - _t27 * 0.5 + (0.0416666679 - _t27 * 0.00138888892) * _t28);
-    highp float _t32 = _t1 * _t30 + _t6 * _t31;
-    highp float _t33 = _t26 * _t18 * _t20;
+    highp float _t19 = _t7 + _t16 - _t14 - _t11;
+    highp float _t20 = _t19 * _t19;
+    highp float _t21 = _t7 + _t14 - _t11 - _t16;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = _t18 + _t20 + _t22;
+    highp float _t24 = (_t23 > 1.17549435e-38) ? 1.0 / _t23 : 0.0;
+    highp float _t25 = sqrt(_t23) * _t24;
+    highp float _t26 = 6.28318548 * (t * 0.5);
+    highp float _t27 = -_t26;
+    highp float _t28 = (_t27 <= 1.0) ? (((-1.0) <= _t27) ? _t27 : (-1.0)) : 1.0;
+    highp float _t29 = _t25 * _t28;
+    highp float _t30 = _t29 * _t19;
+    highp float _t31 = _t28 * _t28;
+    highp float _t32 = _t24 * (_t31 * _t20);
+    highp float _t33 = _t32 * _t32;
     highp float _t34 = _t33 * _t33;
-    highp float _t35 = _t34 * _t34;
-    highp float _t36 = (1.0 - 0.166666672 * _t33 + (0.00833333377 - 0.000198412701 * _t33) * _t34 + (_t34 * (1.60577024e-10 - 7.54937183e-13 * _t33) + (2.75573188e-06 - 2.50520991e-08 * _t33)) * _t35) * (_t25 * _t17);
-    highp float _t37 = 1.0 - _t33 * 0.5 + (0.0416666679 - 0.00138888892 * _t33) * _t34 + (_t34 * (2.08744777e-09 - 1.13046204e-11 * _t33) + (2.48015876e-05 - _t33 * 2.75573029e-07)) * _t35;
-    highp float _t38 = _t8 * _t36 + _t5 * _t37;
-    highp float _t39 = _t26 * _t14 * _t20;
+    highp float _t35 = _t30 * ((0.00833333377 - _t32 * 0.000198412701) * _t33 + (1.0 - _t32 * 0.166666672) + _t34 * (2.75573188e-06 - _t32 * 2.50520991e-08 + (1.60577024e-10 - _t32 * 7.54937183e-13) * _t33));
+    highp float _t36 = ((2.08744777e-09 - _t32 * 1.13046204e-11) * _t33 + (2.48015876e-05 - _t32 * 2.75573029e-07)) * _t34 + (1.0 - _t32 * 0.5 + (0.0416666679 - _t32 * 0.00138888892) * _t33);
+    highp float _t37 = _t10 * _t35 + _t6 * _t36;
+    highp float _t38 = _t31 * _t22 * _t24;
+    highp float _t39 = _t38 * _t38;
     highp float _t40 = _t39 * _t39;
-    highp float _t41 = _t40 * _t40;
-    highp float _t42 = 1.0 - _t39 * 0.5 + (0.0416666679 - _t39 * 0.00138888892) * _t40 + ((2.08744777e-09 - _t39 * 1.13046204e-11) * _t40 + (2.48015876e-05 - _t39 * 2.75573029e-07)) * _t41;
-    highp float _t43 = _t25 * _t13 * (_t40 * (0.00833333377 - _t39 * 0.000198412701) + (1.0 - _t39 * 0.166666672) + _t41 * (2.75573188e-06 - _t39 * 2.50520991e-08 + _t40 * (1.60577024e-10 - _t39 * 7.54937183e-13)));
-    highp float _t44 = _t3 * _t42 + _t10 * _t43;
-    highp float _t45 = _t32 * _t38 * _t44;
-    highp float _t46 = _t10 * _t42 - _t3 * _t43;
-    highp float _t47 = _t8 * _t37 - _t5 * _t36;
-    highp float _t48 = _t32 * _t46 * _t47;
-    highp float _t49 = _t1 * _t31 - _t6 * _t30;
-    highp float _t50 = _t49 * _t47 * _t44;
-    highp float _t51 = _t49 * _t38 * _t46;
-    highp float _t52 = _t45 + _t48 - _t50 - _t51;
-    highp float _t53 = _t52 * _t52;
-    highp float _t54 = _t45 + _t51 - _t48 - _t50;
-    highp float _t55 = _t54 * _t54;
-    highp float _t56 = _t45 + _t50 - _t48 - _t51;
-    highp float _t57 = _t56 * _t56;
-    highp float _t58 = _t53 + _t55 + _t57;
-    highp float _t59 = (_t58 > 1.17549435e-38) ? 1.0 / _t58 : 0.0;
-    highp float _t60 = _t59 * (_t53 * _t26);
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = _t61 * _t61;
-    highp float _t63 = _t61 * (0.0416666679 - _t60 * 0.00138888892) + (1.0 - _t60 * 0.5) + (_t61 * (2.08744777e-09 - _t60 * 1.13046204e-11) + (2.48015876e-05 - _t60 * 2.75573029e-07)) * _t62;
-    highp float _t64 = _t59 * sqrt(_t58) * _t24;
-    highp float _t65 = _t52 * _t64 * (1.0 - _t60 * 0.166666672 + _t61 * (0.00833333377 - _t60 * 0.000198412701) + (_t61 * (1.60577024e-10 - _t60 * 7.54937183e-13) + (2.75573188e-06 - _t60 * 2.50520991e-08)) * _t62);
-    highp float _t66 = _t63 * _t6 + _t65 * _t1;
-    highp float _t67 = _t59 * (_t26 * _t55);
-    highp float _t68 = _t67 * _t67;
-    highp float _t69 = _t68 * _t68;
-    highp float _t70 = _t68 * (0.0416666679 - _t67 * 0.00138888892) + (1.0 - _t67 * 0.5) + _t69 * (2.48015876e-05 - _t67 * 2.75573029e-07 + (2.08744777e-09 - _t67 * 1.13046204e-11) * _t68);
-    highp float _t71 = (_t68 * (0.00833333377 - _t67 * 0.000198412701) + (1.0 - _t67 * 0.166666672) + _t69 * ((1.60577024e-10 - _t67 * 7.54937183e-13) * _t68 + (2.75573188e-06 - _t67 * 2.50520991e-08))) * (_t54 * _t64);
-    highp float _t72 = _t8 * _t70 - _t5 * _t71;
-    highp float _t73 = _t59 * (_t26 * _t57);
-    highp float _t74 = _t73 * _t73;
-    highp float _t75 = _t74 * _t74;
-    highp float _t76 = (_t75 * (_t74 * (1.60577024e-10 - _t73 * 7.54937183e-13) + (2.75573188e-06 - _t73 * 2.50520991e-08)) + (_t74 * (0.00833333377 - _t73 * 0.000198412701) + (1.0 - _t73 * 0.166666672))) * (_t56 * _t64);
-    highp float _t77 = _t74 * (0.0416666679 - _t73 * 0.00138888892) + (1.0 - _t73 * 0.5) + _t75 * (2.48015876e-05 - _t73 * 2.75573029e-07 + _t74 * (2.08744777e-09 - _t73 * 1.13046204e-11));
-    highp float _t78 = _t76 * _t10 + _t3 * _t77;
-    highp float _t79 = _t5 * _t70 + _t8 * _t71;
-    highp float _t80 = _t63 * _t1 - _t65 * _t6;
-    highp float _t81 = _t10 * _t77 - _t76 * _t3;
-    highp float _t82 = (_t22 <= 1.0) ? (((-1.0) <= _t22) ? _t22 : (-1.0)) : 1.0;
+    highp float _t41 = _t29 * _t21;
+    highp float _t42 = (1.0 - 0.166666672 * _t38 + (0.00833333377 - 0.000198412701 * _t38) * _t39 + (_t39 * (1.60577024e-10 - 7.54937183e-13 * _t38) + (2.75573188e-06 - 2.50520991e-08 * _t38)) * _t40) * _t41;
+    highp float _t43 = 1.0 - _t38 * 0.5 + (0.0416666679 - 0.00138888892 * _t38) * _t39 + (_t39 * (2.08744777e-09 - 1.13046204e-11 * _t38) + (2.48015876e-05 - _t38 * 2.75573029e-07)) * _t40;
+    highp float _t44 = _t8 * _t42 + _t3 * _t43;
+    highp float _t45 = _t37 * _t44;
+    highp float _t46 = _t31 * _t18 * _t24;
+    highp float _t47 = _t46 * _t46;
+    highp float _t48 = _t47 * _t47;
+    highp float _t49 = 1.0 - _t46 * 0.5 + (0.0416666679 - _t46 * 0.00138888892) * _t47 + ((2.08744777e-09 - _t46 * 1.13046204e-11) * _t47 + (2.48015876e-05 - _t46 * 2.75573029e-07)) * _t48;
+    highp float _t50 = _t29 * _t17;
+    highp float _t51 = _t50 * (_t47 * (0.00833333377 - _t46 * 0.000198412701) + (1.0 - _t46 * 0.166666672) + _t48 * (2.75573188e-06 - _t46 * 2.50520991e-08 + _t47 * (1.60577024e-10 - _t46 * 7.54937183e-13)));
+    highp float _t52 = _t1 * _t49 + _t12 * _t51;
+    highp float _t53 = _t45 * _t52;
+    highp float _t54 = _t12 * _t49 - _t1 * _t51;
+    highp float _t55 = _t8 * _t43 - _t3 * _t42;
+    highp float _t56 = _t37 * _t54 * _t55;
+    highp float _t57 = _t10 * _t36 - _t6 * _t35;
+    highp float _t58 = _t57 * _t55 * _t52;
+    highp float _t59 = _t57 * _t44;
+    highp float _t60 = _t59 * _t54;
+    highp float _t61 = _t53 + _t56 - _t58 - _t60;
+    highp float _t62 = _t53 + _t60 - _t56 - _t58;
+    highp float _t63 = _t53 + _t58 - _t56 - _t60;
+    highp float _t64 = _t61 * _t61 + _t62 * _t62 + _t63 * _t63;
+    highp float _t65 = ((_t64 > 1.17549435e-38) ? 1.0 / _t64 : 0.0) * sqrt(_t64) * _t28;
+    highp float _t66 = _t30 - _t61 * _t65;
+    highp float _t67 = _t45 * _t54;
+    highp float _t68 = _t55 * (_t57 * _t54);
+    highp float _t69 = _t59 * _t52;
+    highp float _t70 = _t37 * _t55 * _t52;
+    highp float _t71 = _t41 - _t62 * _t65;
+    highp float _t72 = _t67 + _t69;
+    highp float _t73 = _t72 + _t70 + _t68;
+    highp float _t74 = _t50 - _t63 * _t65;
+    highp float _t75 = _t66 * ((_t67 + _t68 - _t69 - _t70) * _t71 + _t61 - _t66 * _t73 * 0.5 - (_t72 - _t70 - _t68) * _t74) + (_t63 - _t73 * _t74 * 0.5) * _t74 + _t73 + (_t62 - (_t67 + _t70 - _t69 - _t68) * _t74 - _t73 * _t71 * 0.5) * _t71;
+    highp float _t76 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
+    highp float _t77 = 1.73205256 * abs(_t28);
+    highp float _t78 = _t76 + _t77;
+    highp float _t79 = _t76 - _t77;
+    highp float _t80 = (_t26 <= 1.0) ? (((-1.0) <= _t26) ? _t26 : (-1.0)) : 1.0;
+    highp float _t81 = _t80 * _t80;
+    highp float _t82 = _t24 * (_t81 * _t20);
     highp float _t83 = _t82 * _t82;
-    highp float _t84 = _t20 * (_t83 * _t16);
-    highp float _t85 = _t84 * _t84;
-    highp float _t86 = _t85 * _t85;
-    highp float _t87 = (2.48015876e-05 - _t84 * 2.75573029e-07 + _t85 * (2.08744777e-09 - 1.13046204e-11 * _t84)) * _t86 + (_t85 * (0.0416666679 - 0.00138888892 * _t84) + (1.0 - _t84 * 0.5));
-    highp float _t88 = _t82 * _t21;
-    highp float _t89 = ((2.75573188e-06 - 2.50520991e-08 * _t84 + _t85 * (1.60577024e-10 - 7.54937183e-13 * _t84)) * _t86 + ((0.00833333377 - 0.000198412701 * _t84) * _t85 + (1.0 - 0.166666672 * _t84))) * (_t88 * _t15);
-    highp float _t90 = _t1 * _t87 - _t89 * _t6;
-    highp float _t91 = _t83 * _t18 * _t20;
+    highp float _t84 = _t83 * _t83;
+    highp float _t85 = (2.48015876e-05 - _t82 * 2.75573029e-07 + _t83 * (2.08744777e-09 - 1.13046204e-11 * _t82)) * _t84 + (_t83 * (0.0416666679 - 0.00138888892 * _t82) + (1.0 - _t82 * 0.5));
+    highp float _t86 = _t80 * _t25;
+    highp float _t87 = _t86 * _t19;
+    highp float _t88 = ((2.75573188e-06 - 2.50520991e-08 * _t82 + _t83 * (1.60577024e-10 - 7.54937183e-13 * _t82)) * _t84 + ((0.00833333377 - 0.000198412701 * _t82) * _t83 + (1.0 - 0.166666672 * _t82))) * _t87;
+    highp float _t89 = _t6 * _t85 + _t88 * _t10;
+    highp float _t90 = _t81 * _t22 * _t24;
+    highp float _t91 = _t90 * _t90;
     highp float _t92 = _t91 * _t91;
-    highp float _t93 = _t92 * _t92;
-    highp float _t94 = _t93 * (2.48015876e-05 - _t91 * 2.75573029e-07 + (2.08744777e-09 - _t91 * 1.13046204e-11) * _t92) + ((0.0416666679 - 0.00138888892 * _t91) * _t92 + (1.0 - _t91 * 0.5));
-    highp float _t95 = _t88 * _t17 * (1.0 - 0.166666672 * _t91 + (0.00833333377 - 0.000198412701 * _t91) * _t92 + _t93 * (2.75573188e-06 - 2.50520991e-08 * _t91 + _t92 * (1.60577024e-10 - 7.54937183e-13 * _t91)));
-    highp float _t96 = _t5 * _t94 + _t8 * _t95;
-    highp float _t97 = _t83 * _t14 * _t20;
+    highp float _t93 = _t92 * (2.48015876e-05 - _t90 * 2.75573029e-07 + (2.08744777e-09 - _t90 * 1.13046204e-11) * _t91) + ((0.0416666679 - 0.00138888892 * _t90) * _t91 + (1.0 - _t90 * 0.5));
+    highp float _t94 = _t86 * _t21;
+    highp float _t95 = _t94 * (1.0 - 0.166666672 * _t90 + (0.00833333377 - 0.000198412701 * _t90) * _t91 + _t92 * (2.75573188e-06 - 2.50520991e-08 * _t90 + _t91 * (1.60577024e-10 - 7.54937183e-13 * _t90)));
+    highp float _t96 = _t3 * _t93 + _t8 * _t95;
+    highp float _t97 = _t81 * _t18 * _t24;
     highp float _t98 = _t97 * _t97;
     highp float _t99 = _t98 * _t98;
     highp float _t100 = 1.0 - _t97 * 0.5 + (0.0416666679 - 0.00138888892 * _t97) * _t98 + (2.48015876e-05 - _t97 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t97) * _t98) * _t99;
-    highp float _t101 = ((0.00833333377 - 0.000198412701 * _t97) * _t98 + (1.0 - 0.166666672 * _t97) + ((1.60577024e-10 - 7.54937183e-13 * _t97) * _t98 + (2.75573188e-06 - 2.50520991e-08 * _t97)) * _t99) * (_t88 * _t13);
-    highp float _t102 = _t10 * _t100 - _t3 * _t101;
-    highp float _t103 = _t90 * _t96 * _t102;
-    highp float _t104 = _t94 * _t8 - _t5 * _t95;
-    highp float _t105 = _t6 * _t87 + _t89 * _t1;
-    highp float _t106 = _t104 * _t105 * _t102;
-    highp float _t107 = _t3 * _t100 + _t10 * _t101;
-    highp float _t108 = _t105 * _t107 * _t96;
-    highp float _t109 = _t90 * _t104 * _t107;
-    highp float _t110 = _t103 + _t106 - _t108 - _t109;
-    highp float _t111 = _t103 + _t108 - _t106 - _t109;
-    highp float _t112 = _t111 * _t111;
-    highp float _t113 = _t103 + _t109 - _t108 - _t106;
-    highp float _t114 = _t113 * _t113;
-    highp float _t115 = _t110 * _t110;
-    highp float _t116 = _t112 + (_t114 + _t115);
-    highp float _t117 = (_t116 > 1.17549435e-38) ? 1.0 / _t116 : 0.0;
-    highp float _t118 = _t82 * (sqrt(_t116) * _t117);
-    highp float _t119 = _t83 * _t115 * _t117;
-    highp float _t120 = _t119 * _t119;
-    highp float _t121 = _t120 * _t120;
-    highp float _t122 = _t110 * _t118 * (((1.60577024e-10 - _t119 * 7.54937183e-13) * _t120 + (2.75573188e-06 - _t119 * 2.50520991e-08)) * _t121 + (1.0 - _t119 * 0.166666672 + (0.00833333377 - _t119 * 0.000198412701) * _t120));
-    highp float _t123 = ((2.08744777e-09 - _t119 * 1.13046204e-11) * _t120 + (2.48015876e-05 - _t119 * 2.75573029e-07)) * _t121 + (1.0 - _t119 * 0.5 + (0.0416666679 - _t119 * 0.00138888892) * _t120);
-    highp float _t124 = _t3 * _t122 + _t10 * _t123;
-    highp float _t125 = _t117 * (_t83 * _t112);
-    highp float _t126 = _t125 * _t125;
-    highp float _t127 = _t126 * _t126;
-    highp float _t128 = (0.0416666679 - _t125 * 0.00138888892) * _t126 + (1.0 - _t125 * 0.5) + (2.48015876e-05 - _t125 * 2.75573029e-07 + (2.08744777e-09 - _t125 * 1.13046204e-11) * _t126) * _t127;
-    highp float _t129 = _t111 * _t118 * ((0.00833333377 - _t125 * 0.000198412701) * _t126 + (1.0 - _t125 * 0.166666672) + (2.75573188e-06 - _t125 * 2.50520991e-08 + _t126 * (1.60577024e-10 - _t125 * 7.54937183e-13)) * _t127);
-    highp float _t130 = _t5 * _t128 + _t129 * _t8;
-    highp float _t131 = _t117 * (_t83 * _t114);
-    highp float _t132 = _t131 * _t131;
-    highp float _t133 = _t132 * _t132;
-    highp float _t134 = (2.48015876e-05 - _t131 * 2.75573029e-07 + (2.08744777e-09 - _t131 * 1.13046204e-11) * _t132) * _t133 + ((0.0416666679 - 0.00138888892 * _t131) * _t132 + (1.0 - _t131 * 0.5));
-    highp float _t135 = _t113 * _t118 * (((1.60577024e-10 - 7.54937183e-13 * _t131) * _t132 + (2.75573188e-06 - 2.50520991e-08 * _t131)) * _t133 + (1.0 - 0.166666672 * _t131 + (0.00833333377 - 0.000198412701 * _t131) * _t132));
-    highp float _t136 = _t134 * _t6 - _t135 * _t1;
-    highp float _t137 = _t128 * _t8 - _t129 * _t5;
-    highp float _t138 = _t134 * _t1 + _t135 * _t6;
-    highp float _t139 = _t3 * _t123 - _t10 * _t122;
-    return (_t66 * (_t72 * _t78) + (_t79 * _t78 * _t80 + _t72 * _t80 * _t81) + _t79 * _t66 * _t81) * (_t124 * _t130 * _t136 + (_t124 * (_t137 * _t138) + _t130 * (_t138 * _t139)) + _t137 * _t139 * _t136);
+    highp float _t101 = _t86 * _t17;
+    highp float _t102 = ((0.00833333377 - 0.000198412701 * _t97) * _t98 + (1.0 - 0.166666672 * _t97) + ((1.60577024e-10 - 7.54937183e-13 * _t97) * _t98 + (2.75573188e-06 - 2.50520991e-08 * _t97)) * _t99) * _t101;
+    highp float _t103 = _t12 * _t100 - _t1 * _t102;
+    highp float _t104 = _t89 * _t96 * _t103;
+    highp float _t105 = _t10 * _t85 - _t88 * _t6;
+    highp float _t106 = _t1 * _t100 + _t12 * _t102;
+    highp float _t107 = _t105 * _t106 * _t96;
+    highp float _t108 = _t93 * _t8 - _t3 * _t95;
+    highp float _t109 = _t105 * _t108;
+    highp float _t110 = _t109 * _t103;
+    highp float _t111 = _t108 * _t89;
+    highp float _t112 = _t111 * _t106;
+    highp float _t113 = _t110 + _t112;
+    highp float _t114 = _t104 + (_t107 + _t113);
+    highp float _t115 = _t105 * _t96 * _t103;
+    highp float _t116 = _t109 * _t106;
+    highp float _t117 = _t89 * _t106 * _t96;
+    highp float _t118 = _t111 * _t103;
+    highp float _t119 = _t115 + _t116 - _t117 - _t118;
+    highp float _t120 = _t115 + _t117 - _t118 - _t116;
+    highp float _t121 = _t115 + _t118 - _t117 - _t116;
+    highp float _t122 = _t120 * _t120 + (_t119 * _t119 + _t121 * _t121);
+    highp float _t123 = _t80 * (sqrt(_t122) * ((_t122 > 1.17549435e-38) ? 1.0 / _t122 : 0.0));
+    highp float _t124 = _t119 * _t123 + _t87;
+    highp float _t125 = _t101 + _t121 * _t123;
+    highp float _t126 = _t94 - _t120 * _t123;
+    highp float _t127 = _t114 + _t124 * (_t125 * (_t113 - _t107 - _t104) + _t126 * (_t110 + _t104 - _t112 - _t107) - _t119 - _t114 * _t124 * 0.5) - (_t121 + _t114 * _t125 * 0.5) * _t125 - (_t114 * _t126 * 0.5 - _t120 - _t125 * (_t110 + _t107 - _t112 - _t104)) * _t126;
+    highp float _t128 = 1.73205256 * abs(_t80);
+    highp float _t129 = _t76 + _t128;
+    highp float _t130 = _t76 - _t128;
+    return ((_t75 <= _t78) ? ((_t79 <= _t75) ? _t75 : _t79) : _t78) * ((_t127 <= _t129) ? ((_t130 <= _t127) ? _t127 : _t130) : _t129);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 342.

@@ -8,7 +8,9 @@ description: |
     Source: Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 4. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - fn diamond_proj_o4_field(p: vec3<f32>) -> f32
     - fn diamond_proj_o4_offset(p: vec3<f32>, h: f32) -> f32
@@ -34,15 +36,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 2 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -52,12 +55,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: WGSL (WebGPU): Dawn (Chrome, Node's webgpu), wgpu/naga (Firefox), WebKit.
 total ops after CSE:
     - field: 20
-    - offset: 322
-    - shell: 610
+    - offset: 251
+    - shell: 459
     - normal: 342
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":322,"shell":610,"normal":342}} */
+/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o4","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":251,"shell":459,"normal":342}} */
 
 // sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
 // 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
@@ -96,234 +99,222 @@ fn diamond_proj_o4_field(p: vec3<f32>) -> f32 {
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 322.
+// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 251.
 fn diamond_proj_o4_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t0 = 6.28318548f * h;
     let _t1 = select(1.0f, (select((-1.0f), _t0, (-1.0f) <= _t0)), _t0 <= 1.0f);
     let _t2 = _t1 * _t1;
-    let _t3 = 6.28318548f * p.y;
-    let _t4 = diamond_proj_o4_sin(_t3);
-    let _t5 = p.z * 6.28318548f;
+    let _t3 = p.z * 6.28318548f;
+    let _t4 = diamond_proj_o4_cos(_t3);
+    let _t5 = 6.28318548f * p.y;
     let _t6 = diamond_proj_o4_cos(_t5);
-    let _t7 = diamond_proj_o4_cos(_t3);
+    let _t7 = _t4 * _t6;
     let _t8 = 6.28318548f * p.x;
     let _t9 = diamond_proj_o4_cos(_t8);
-    let _t10 = _t6 * _t7 * _t9;
-    let _t11 = diamond_proj_o4_sin(_t5);
-    let _t12 = diamond_proj_o4_sin(_t8);
-    let _t13 = _t11 * _t7 * _t12;
-    let _t14 = _t6 * _t4 * _t12;
-    let _t15 = _t9 * (_t11 * _t4);
-    let _t16 = _t10 + _t13 - _t14 - _t15;
-    let _t17 = _t16 * _t16;
-    let _t18 = _t10 + _t14 - _t13 - _t15;
-    let _t19 = _t18 * _t18;
-    let _t20 = _t10 + _t15 - _t13 - _t14;
+    let _t10 = _t7 * _t9;
+    let _t11 = diamond_proj_o4_sin(_t3);
+    let _t12 = diamond_proj_o4_sin(_t5);
+    let _t13 = _t11 * _t12;
+    let _t14 = _t9 * _t13;
+    let _t15 = _t11 * _t6;
+    let _t16 = diamond_proj_o4_sin(_t8);
+    let _t17 = _t15 * _t16;
+    let _t18 = _t4 * _t12;
+    let _t19 = _t18 * _t16;
+    let _t20 = _t10 + _t14 - _t17 - _t19;
     let _t21 = _t20 * _t20;
-    let _t22 = _t19 + _t21 + _t17;
-    let _t23 = select(0.0f, 1.0f / _t22, _t22 > 1.17549435e-38f);
-    let _t24 = _t2 * _t17 * _t23;
+    let _t22 = _t10 + _t19 - _t17 - _t14;
+    let _t23 = _t22 * _t22;
+    let _t24 = _t10 + _t17 - _t19 - _t14;
     let _t25 = _t24 * _t24;
-    let _t26 = _t25 * _t25;
-    let _t27 = _t25 * (0.0416666679f - 0.00138888892f * _t24) + (1.0f - _t24 * 0.5f) + _t26 * (_t25 * (2.08744777e-09f - 1.13046204e-11f * _t24) + (2.48015876e-05f - _t24 * 2.75573029e-07f));
-    let _t28 = _t1 * (sqrt(_t22) * _t23);
-    let _t29 = (_t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * (_t16 * _t28);
-    let _t30 = _t4 * _t27 - _t7 * _t29;
-    let _t31 = _t2 * _t21 * _t23;
-    let _t32 = _t31 * _t31;
-    let _t33 = _t32 * _t32;
-    let _t34 = (0.0416666679f - 0.00138888892f * _t31) * _t32 + (1.0f - 0.5f * _t31) + _t33 * (2.48015876e-05f - 2.75573029e-07f * _t31 + (2.08744777e-09f - 1.13046204e-11f * _t31) * _t32);
-    let _t35 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * (_t20 * _t28);
-    let _t36 = _t34 * _t9 + _t35 * _t12;
-    let _t37 = _t23 * (_t2 * _t19);
+    let _t26 = _t23 + _t21 + _t25;
+    let _t27 = select(0.0f, 1.0f / _t26, _t26 > 1.17549435e-38f);
+    let _t28 = _t2 * _t21 * _t27;
+    let _t29 = _t28 * _t28;
+    let _t30 = _t29 * _t29;
+    let _t31 = (0.0416666679f - 0.00138888892f * _t28) * _t29 + (1.0f - 0.5f * _t28) + _t30 * (2.48015876e-05f - 2.75573029e-07f * _t28 + (2.08744777e-09f - 1.13046204e-11f * _t28) * _t29);
+    let _t32 = _t1 * (sqrt(_t26) * _t27);
+    let _t33 = _t20 * _t32;
+    let _t34 = (_t30 * (2.75573188e-06f - 2.50520991e-08f * _t28 + _t29 * (1.60577024e-10f - 7.54937183e-13f * _t28)) + (1.0f - 0.166666672f * _t28 + _t29 * (0.00833333377f - 0.000198412701f * _t28))) * _t33;
+    let _t35 = _t31 * _t16 - _t34 * _t9;
+    let _t36 = _t2 * _t25 * _t27;
+    let _t37 = _t36 * _t36;
     let _t38 = _t37 * _t37;
-    let _t39 = _t38 * _t38;
-    let _t40 = 1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38 + _t39 * ((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f));
-    let _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) + (1.0f - 0.166666672f * _t37 + (0.00833333377f - _t37 * 0.000198412701f) * _t38));
-    let _t42 = _t11 * _t40 - _t6 * _t41;
-    let _t43 = _t30 * _t36 * _t42;
-    let _t44 = _t6 * _t40 + _t11 * _t41;
-    let _t45 = _t4 * _t29 + _t7 * _t27;
-    let _t46 = _t36 * _t44 * _t45;
-    let _t47 = _t34 * _t12 - _t35 * _t9;
-    let _t48 = _t30 * _t44 * _t47;
-    let _t49 = _t45 * (_t42 * _t47);
-    let _t50 = _t43 + _t46 - _t48 - _t49;
-    let _t51 = _t50 * _t50;
-    let _t52 = _t43 + _t49 - _t46 - _t48;
-    let _t53 = _t52 * _t52;
-    let _t54 = _t43 + _t48 - _t46 - _t49;
-    let _t55 = _t54 * _t54;
-    let _t56 = _t53 + _t51 + _t55;
-    let _t57 = select(0.0f, 1.0f / _t56, _t56 > 1.17549435e-38f);
-    let _t58 = _t2 * _t51 * _t57;
-    let _t59 = _t58 * _t58;
-    let _t60 = _t59 * _t59;
-    let _t61 = _t1 * (sqrt(_t56) * _t57);
-    let _t62 = (((1.60577024e-10f - _t58 * 7.54937183e-13f) * _t59 + (2.75573188e-06f - _t58 * 2.50520991e-08f)) * _t60 + ((0.00833333377f - _t58 * 0.000198412701f) * _t59 + (1.0f - _t58 * 0.166666672f))) * (_t61 * _t50);
-    let _t63 = _t60 * ((2.08744777e-09f - _t58 * 1.13046204e-11f) * _t59 + (2.48015876e-05f - _t58 * 2.75573029e-07f)) + ((0.0416666679f - _t58 * 0.00138888892f) * _t59 + (1.0f - _t58 * 0.5f));
-    let _t64 = _t62 * _t12 + _t63 * _t9;
-    let _t65 = _t2 * _t55 * _t57;
-    let _t66 = _t65 * _t65;
-    let _t67 = _t66 * _t66;
-    let _t68 = (1.0f - 0.166666672f * _t65 + _t66 * (0.00833333377f - _t65 * 0.000198412701f) + _t67 * (2.75573188e-06f - 2.50520991e-08f * _t65 + (1.60577024e-10f - 7.54937183e-13f * _t65) * _t66)) * (_t54 * _t61);
-    let _t69 = 1.0f - _t65 * 0.5f + _t66 * (0.0416666679f - 0.00138888892f * _t65) + _t67 * (2.48015876e-05f - _t65 * 2.75573029e-07f + _t66 * (2.08744777e-09f - _t65 * 1.13046204e-11f));
-    let _t70 = _t7 * _t68 + _t69 * _t4;
-    let _t71 = _t57 * (_t53 * _t2);
-    let _t72 = _t71 * _t71;
-    let _t73 = _t72 * _t72;
-    let _t74 = _t72 * (0.0416666679f - 0.00138888892f * _t71) + (1.0f - _t71 * 0.5f) + (2.48015876e-05f - _t71 * 2.75573029e-07f + _t72 * (2.08744777e-09f - _t71 * 1.13046204e-11f)) * _t73;
-    let _t75 = (((1.60577024e-10f - 7.54937183e-13f * _t71) * _t72 + (2.75573188e-06f - 2.50520991e-08f * _t71)) * _t73 + (1.0f - 0.166666672f * _t71 + _t72 * (0.00833333377f - _t71 * 0.000198412701f))) * (_t52 * _t61);
-    let _t76 = _t6 * _t74 - _t11 * _t75;
-    let _t77 = _t6 * _t75 + _t11 * _t74;
-    let _t78 = _t63 * _t12 - _t62 * _t9;
-    let _t79 = _t69 * _t7 - _t4 * _t68;
-    return _t64 * (_t70 * _t76) + _t77 * (_t70 * _t78) + _t79 * _t64 * _t77 + _t79 * _t76 * _t78;
+    let _t39 = _t37 * (0.0416666679f - 0.00138888892f * _t36) + (1.0f - _t36 * 0.5f) + _t38 * (_t37 * (2.08744777e-09f - 1.13046204e-11f * _t36) + (2.48015876e-05f - _t36 * 2.75573029e-07f));
+    let _t40 = _t24 * _t32;
+    let _t41 = (_t38 * (2.75573188e-06f - 2.50520991e-08f * _t36 + _t37 * (1.60577024e-10f - 7.54937183e-13f * _t36)) + (1.0f - 0.166666672f * _t36 + _t37 * (0.00833333377f - 0.000198412701f * _t36))) * _t40;
+    let _t42 = _t12 * _t39 - _t6 * _t41;
+    let _t43 = _t27 * (_t2 * _t23);
+    let _t44 = _t43 * _t43;
+    let _t45 = _t44 * _t44;
+    let _t46 = 1.0f - _t43 * 0.5f + (0.0416666679f - 0.00138888892f * _t43) * _t44 + _t45 * ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f));
+    let _t47 = _t32 * _t22;
+    let _t48 = _t47 * (_t45 * ((1.60577024e-10f - 7.54937183e-13f * _t43) * _t44 + (2.75573188e-06f - 2.50520991e-08f * _t43)) + (1.0f - 0.166666672f * _t43 + (0.00833333377f - _t43 * 0.000198412701f) * _t44));
+    let _t49 = _t11 * _t46 - _t4 * _t48;
+    let _t50 = _t35 * (_t42 * _t49);
+    let _t51 = _t4 * _t46 + _t11 * _t48;
+    let _t52 = _t12 * _t41 + _t6 * _t39;
+    let _t53 = _t51 * _t35 * _t52;
+    let _t54 = _t50 + _t53;
+    let _t55 = _t31 * _t9 + _t34 * _t16;
+    let _t56 = _t55 * _t49 * _t52;
+    let _t57 = _t42 * _t55;
+    let _t58 = _t57 * _t51;
+    let _t59 = _t54 + _t56 + _t58;
+    let _t60 = _t57 * _t49;
+    let _t61 = _t42 * _t51 * _t35;
+    let _t62 = _t55 * _t51 * _t52;
+    let _t63 = _t52 * (_t49 * _t35);
+    let _t64 = _t60 + _t61 - _t62 - _t63;
+    let _t65 = _t60 + _t63 - _t62 - _t61;
+    let _t66 = _t60 + _t62 - _t61 - _t63;
+    let _t67 = _t65 * _t65 + _t66 * _t66 + _t64 * _t64;
+    let _t68 = _t1 * (sqrt(_t67) * (select(0.0f, 1.0f / _t67, _t67 > 1.17549435e-38f)));
+    let _t69 = _t64 * _t68 + _t40;
+    let _t70 = _t47 + _t65 * _t68;
+    let _t71 = _t33 - _t68 * _t66;
+    let _t72 = _t59 + ((_t50 + _t56 - _t53 - _t58) * _t69 + _t70 * (_t50 + _t58 - _t53 - _t56) + _t66 - _t59 * _t71 * 0.5f) * _t71 - _t69 * (_t64 + _t59 * _t69 * 0.5f - _t70 * (_t54 - _t56 - _t58)) - _t70 * (_t70 * _t59 * 0.5f + _t65);
+    let _t73 = 1.73205256f * abs(_t1);
+    let _t74 = _t7 * _t16 + (_t16 * _t13 + _t18 * _t9) + _t15 * _t9;
+    let _t75 = _t73 + _t74;
+    let _t76 = _t74 - _t73;
+    return select(_t75, (select(_t76, _t72, _t76 <= _t72)), _t72 <= _t75);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 610.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 459.
 fn diamond_proj_o4_shell(p: vec3<f32>, t: f32) -> f32 {
-    let _t0 = 6.28318548f * p.x;
-    let _t1 = diamond_proj_o4_sin(_t0);
-    let _t2 = p.z * 6.28318548f;
+    let _t0 = p.z * 6.28318548f;
+    let _t1 = diamond_proj_o4_cos(_t0);
+    let _t2 = 6.28318548f * p.y;
     let _t3 = diamond_proj_o4_cos(_t2);
-    let _t4 = 6.28318548f * p.y;
-    let _t5 = diamond_proj_o4_cos(_t4);
-    let _t6 = diamond_proj_o4_cos(_t0);
-    let _t7 = _t3 * _t5 * _t6;
-    let _t8 = diamond_proj_o4_sin(_t4);
-    let _t9 = _t3 * _t8 * _t1;
-    let _t10 = diamond_proj_o4_sin(_t2);
-    let _t11 = _t10 * _t5 * _t1;
-    let _t12 = _t6 * (_t10 * _t8);
-    let _t13 = _t7 + _t9 - _t11 - _t12;
-    let _t14 = _t13 * _t13;
-    let _t15 = _t7 + _t12 - _t11 - _t9;
-    let _t16 = _t15 * _t15;
-    let _t17 = _t7 + _t11 - _t9 - _t12;
+    let _t4 = _t1 * _t3;
+    let _t5 = 6.28318548f * p.x;
+    let _t6 = diamond_proj_o4_cos(_t5);
+    let _t7 = _t4 * _t6;
+    let _t8 = diamond_proj_o4_sin(_t2);
+    let _t9 = _t1 * _t8;
+    let _t10 = diamond_proj_o4_sin(_t5);
+    let _t11 = _t9 * _t10;
+    let _t12 = diamond_proj_o4_sin(_t0);
+    let _t13 = _t12 * _t3;
+    let _t14 = _t13 * _t10;
+    let _t15 = _t12 * _t8;
+    let _t16 = _t6 * _t15;
+    let _t17 = _t7 + _t11 - _t14 - _t16;
     let _t18 = _t17 * _t17;
-    let _t19 = _t14 + _t16 + _t18;
-    let _t20 = select(0.0f, 1.0f / _t19, _t19 > 1.17549435e-38f);
-    let _t21 = sqrt(_t19) * _t20;
-    let _t22 = 6.28318548f * (t * 0.5f);
-    let _t23 = -_t22;
-    let _t24 = select(1.0f, (select((-1.0f), _t23, (-1.0f) <= _t23)), _t23 <= 1.0f);
-    let _t25 = _t21 * _t24;
-    let _t26 = _t24 * _t24;
-    let _t27 = _t20 * (_t26 * _t16);
-    let _t28 = _t27 * _t27;
-    let _t29 = _t28 * _t28;
-    let _t30 = _t25 * _t15 * ((0.00833333377f - _t27 * 0.000198412701f) * _t28 + (1.0f - _t27 * 0.166666672f) + _t29 * (2.75573188e-06f - _t27 * 2.50520991e-08f + (1.60577024e-10f - _t27 * 7.54937183e-13f) * _t28));
-    let _t31 = ((2.08744777e-09f - _t27 * 1.13046204e-11f) * _t28 + (2.48015876e-05f - _t27 * 2.75573029e-07f)) * _t29 + (1.0f - _t27 * 0.5f + (0.0416666679f - _t27 * 0.00138888892f) * _t28);
-    let _t32 = _t1 * _t30 + _t6 * _t31;
-    let _t33 = _t26 * _t18 * _t20;
+    let _t19 = _t7 + _t16 - _t14 - _t11;
+    let _t20 = _t19 * _t19;
+    let _t21 = _t7 + _t14 - _t11 - _t16;
+    let _t22 = _t21 * _t21;
+    let _t23 = _t18 + _t20 + _t22;
+    let _t24 = select(0.0f, 1.0f / _t23, _t23 > 1.17549435e-38f);
+    let _t25 = sqrt(_t23) * _t24;
+    let _t26 = 6.28318548f * (t * 0.5f);
+    let _t27 = -_t26;
+    let _t28 = select(1.0f, (select((-1.0f), _t27, (-1.0f) <= _t27)), _t27 <= 1.0f);
+    let _t29 = _t25 * _t28;
+    let _t30 = _t29 * _t19;
+    let _t31 = _t28 * _t28;
+    let _t32 = _t24 * (_t31 * _t20);
+    let _t33 = _t32 * _t32;
     let _t34 = _t33 * _t33;
-    let _t35 = _t34 * _t34;
-    let _t36 = (1.0f - 0.166666672f * _t33 + (0.00833333377f - 0.000198412701f * _t33) * _t34 + (_t34 * (1.60577024e-10f - 7.54937183e-13f * _t33) + (2.75573188e-06f - 2.50520991e-08f * _t33)) * _t35) * (_t25 * _t17);
-    let _t37 = 1.0f - _t33 * 0.5f + (0.0416666679f - 0.00138888892f * _t33) * _t34 + (_t34 * (2.08744777e-09f - 1.13046204e-11f * _t33) + (2.48015876e-05f - _t33 * 2.75573029e-07f)) * _t35;
-    let _t38 = _t8 * _t36 + _t5 * _t37;
-    let _t39 = _t26 * _t14 * _t20;
+    let _t35 = _t30 * ((0.00833333377f - _t32 * 0.000198412701f) * _t33 + (1.0f - _t32 * 0.166666672f) + _t34 * (2.75573188e-06f - _t32 * 2.50520991e-08f + (1.60577024e-10f - _t32 * 7.54937183e-13f) * _t33));
+    let _t36 = ((2.08744777e-09f - _t32 * 1.13046204e-11f) * _t33 + (2.48015876e-05f - _t32 * 2.75573029e-07f)) * _t34 + (1.0f - _t32 * 0.5f + (0.0416666679f - _t32 * 0.00138888892f) * _t33);
+    let _t37 = _t10 * _t35 + _t6 * _t36;
+    let _t38 = _t31 * _t22 * _t24;
+    let _t39 = _t38 * _t38;
     let _t40 = _t39 * _t39;
-    let _t41 = _t40 * _t40;
-    let _t42 = 1.0f - _t39 * 0.5f + (0.0416666679f - _t39 * 0.00138888892f) * _t40 + ((2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40 + (2.48015876e-05f - _t39 * 2.75573029e-07f)) * _t41;
-    let _t43 = _t25 * _t13 * (_t40 * (0.00833333377f - _t39 * 0.000198412701f) + (1.0f - _t39 * 0.166666672f) + _t41 * (2.75573188e-06f - _t39 * 2.50520991e-08f + _t40 * (1.60577024e-10f - _t39 * 7.54937183e-13f)));
-    let _t44 = _t3 * _t42 + _t10 * _t43;
-    let _t45 = _t32 * _t38 * _t44;
-    let _t46 = _t10 * _t42 - _t3 * _t43;
-    let _t47 = _t8 * _t37 - _t5 * _t36;
-    let _t48 = _t32 * _t46 * _t47;
-    let _t49 = _t1 * _t31 - _t6 * _t30;
-    let _t50 = _t49 * _t47 * _t44;
-    let _t51 = _t49 * _t38 * _t46;
-    let _t52 = _t45 + _t48 - _t50 - _t51;
-    let _t53 = _t52 * _t52;
-    let _t54 = _t45 + _t51 - _t48 - _t50;
-    let _t55 = _t54 * _t54;
-    let _t56 = _t45 + _t50 - _t48 - _t51;
-    let _t57 = _t56 * _t56;
-    let _t58 = _t53 + _t55 + _t57;
-    let _t59 = select(0.0f, 1.0f / _t58, _t58 > 1.17549435e-38f);
-    let _t60 = _t59 * (_t53 * _t26);
-    let _t61 = _t60 * _t60;
-    let _t62 = _t61 * _t61;
-    let _t63 = _t61 * (0.0416666679f - _t60 * 0.00138888892f) + (1.0f - _t60 * 0.5f) + (_t61 * (2.08744777e-09f - _t60 * 1.13046204e-11f) + (2.48015876e-05f - _t60 * 2.75573029e-07f)) * _t62;
-    let _t64 = _t59 * sqrt(_t58) * _t24;
-    let _t65 = _t52 * _t64 * (1.0f - _t60 * 0.166666672f + _t61 * (0.00833333377f - _t60 * 0.000198412701f) + (_t61 * (1.60577024e-10f - _t60 * 7.54937183e-13f) + (2.75573188e-06f - _t60 * 2.50520991e-08f)) * _t62);
-    let _t66 = _t63 * _t6 + _t65 * _t1;
-    let _t67 = _t59 * (_t26 * _t55);
-    let _t68 = _t67 * _t67;
-    let _t69 = _t68 * _t68;
-    let _t70 = _t68 * (0.0416666679f - _t67 * 0.00138888892f) + (1.0f - _t67 * 0.5f) + _t69 * (2.48015876e-05f - _t67 * 2.75573029e-07f + (2.08744777e-09f - _t67 * 1.13046204e-11f) * _t68);
-    let _t71 = (_t68 * (0.00833333377f - _t67 * 0.000198412701f) + (1.0f - _t67 * 0.166666672f) + _t69 * ((1.60577024e-10f - _t67 * 7.54937183e-13f) * _t68 + (2.75573188e-06f - _t67 * 2.50520991e-08f))) * (_t54 * _t64);
-    let _t72 = _t8 * _t70 - _t5 * _t71;
-    let _t73 = _t59 * (_t26 * _t57);
-    let _t74 = _t73 * _t73;
-    let _t75 = _t74 * _t74;
-    let _t76 = (_t75 * (_t74 * (1.60577024e-10f - _t73 * 7.54937183e-13f) + (2.75573188e-06f - _t73 * 2.50520991e-08f)) + (_t74 * (0.00833333377f - _t73 * 0.000198412701f) + (1.0f - _t73 * 0.166666672f))) * (_t56 * _t64);
-    let _t77 = _t74 * (0.0416666679f - _t73 * 0.00138888892f) + (1.0f - _t73 * 0.5f) + _t75 * (2.48015876e-05f - _t73 * 2.75573029e-07f + _t74 * (2.08744777e-09f - _t73 * 1.13046204e-11f));
-    let _t78 = _t76 * _t10 + _t3 * _t77;
-    let _t79 = _t5 * _t70 + _t8 * _t71;
-    let _t80 = _t63 * _t1 - _t65 * _t6;
-    let _t81 = _t10 * _t77 - _t76 * _t3;
-    let _t82 = select(1.0f, (select((-1.0f), _t22, (-1.0f) <= _t22)), _t22 <= 1.0f);
+    let _t41 = _t29 * _t21;
+    let _t42 = (1.0f - 0.166666672f * _t38 + (0.00833333377f - 0.000198412701f * _t38) * _t39 + (_t39 * (1.60577024e-10f - 7.54937183e-13f * _t38) + (2.75573188e-06f - 2.50520991e-08f * _t38)) * _t40) * _t41;
+    let _t43 = 1.0f - _t38 * 0.5f + (0.0416666679f - 0.00138888892f * _t38) * _t39 + (_t39 * (2.08744777e-09f - 1.13046204e-11f * _t38) + (2.48015876e-05f - _t38 * 2.75573029e-07f)) * _t40;
+    let _t44 = _t8 * _t42 + _t3 * _t43;
+    let _t45 = _t37 * _t44;
+    let _t46 = _t31 * _t18 * _t24;
+    let _t47 = _t46 * _t46;
+    let _t48 = _t47 * _t47;
+    let _t49 = 1.0f - _t46 * 0.5f + (0.0416666679f - _t46 * 0.00138888892f) * _t47 + ((2.08744777e-09f - _t46 * 1.13046204e-11f) * _t47 + (2.48015876e-05f - _t46 * 2.75573029e-07f)) * _t48;
+    let _t50 = _t29 * _t17;
+    let _t51 = _t50 * (_t47 * (0.00833333377f - _t46 * 0.000198412701f) + (1.0f - _t46 * 0.166666672f) + _t48 * (2.75573188e-06f - _t46 * 2.50520991e-08f + _t47 * (1.60577024e-10f - _t46 * 7.54937183e-13f)));
+    let _t52 = _t1 * _t49 + _t12 * _t51;
+    let _t53 = _t45 * _t52;
+    let _t54 = _t12 * _t49 - _t1 * _t51;
+    let _t55 = _t8 * _t43 - _t3 * _t42;
+    let _t56 = _t37 * _t54 * _t55;
+    let _t57 = _t10 * _t36 - _t6 * _t35;
+    let _t58 = _t57 * _t55 * _t52;
+    let _t59 = _t57 * _t44;
+    let _t60 = _t59 * _t54;
+    let _t61 = _t53 + _t56 - _t58 - _t60;
+    let _t62 = _t53 + _t60 - _t56 - _t58;
+    let _t63 = _t53 + _t58 - _t56 - _t60;
+    let _t64 = _t61 * _t61 + _t62 * _t62 + _t63 * _t63;
+    let _t65 = (select(0.0f, 1.0f / _t64, _t64 > 1.17549435e-38f)) * sqrt(_t64) * _t28;
+    let _t66 = _t30 - _t61 * _t65;
+    let _t67 = _t45 * _t54;
+    let _t68 = _t55 * (_t57 * _t54);
+    let _t69 = _t59 * _t52;
+    let _t70 = _t37 * _t55 * _t52;
+    let _t71 = _t41 - _t62 * _t65;
+    let _t72 = _t67 + _t69;
+    let _t73 = _t72 + _t70 + _t68;
+    let _t74 = _t50 - _t63 * _t65;
+    let _t75 = _t66 * ((_t67 + _t68 - _t69 - _t70) * _t71 + _t61 - _t66 * _t73 * 0.5f - (_t72 - _t70 - _t68) * _t74) + (_t63 - _t73 * _t74 * 0.5f) * _t74 + _t73 + (_t62 - (_t67 + _t70 - _t69 - _t68) * _t74 - _t73 * _t71 * 0.5f) * _t71;
+    let _t76 = _t4 * _t10 + (_t10 * _t15 + _t9 * _t6) + _t13 * _t6;
+    let _t77 = 1.73205256f * abs(_t28);
+    let _t78 = _t76 + _t77;
+    let _t79 = _t76 - _t77;
+    let _t80 = select(1.0f, (select((-1.0f), _t26, (-1.0f) <= _t26)), _t26 <= 1.0f);
+    let _t81 = _t80 * _t80;
+    let _t82 = _t24 * (_t81 * _t20);
     let _t83 = _t82 * _t82;
-    let _t84 = _t20 * (_t83 * _t16);
-    let _t85 = _t84 * _t84;
-    let _t86 = _t85 * _t85;
-    let _t87 = (2.48015876e-05f - _t84 * 2.75573029e-07f + _t85 * (2.08744777e-09f - 1.13046204e-11f * _t84)) * _t86 + (_t85 * (0.0416666679f - 0.00138888892f * _t84) + (1.0f - _t84 * 0.5f));
-    let _t88 = _t82 * _t21;
-    let _t89 = ((2.75573188e-06f - 2.50520991e-08f * _t84 + _t85 * (1.60577024e-10f - 7.54937183e-13f * _t84)) * _t86 + ((0.00833333377f - 0.000198412701f * _t84) * _t85 + (1.0f - 0.166666672f * _t84))) * (_t88 * _t15);
-    let _t90 = _t1 * _t87 - _t89 * _t6;
-    let _t91 = _t83 * _t18 * _t20;
+    let _t84 = _t83 * _t83;
+    let _t85 = (2.48015876e-05f - _t82 * 2.75573029e-07f + _t83 * (2.08744777e-09f - 1.13046204e-11f * _t82)) * _t84 + (_t83 * (0.0416666679f - 0.00138888892f * _t82) + (1.0f - _t82 * 0.5f));
+    let _t86 = _t80 * _t25;
+    let _t87 = _t86 * _t19;
+    let _t88 = ((2.75573188e-06f - 2.50520991e-08f * _t82 + _t83 * (1.60577024e-10f - 7.54937183e-13f * _t82)) * _t84 + ((0.00833333377f - 0.000198412701f * _t82) * _t83 + (1.0f - 0.166666672f * _t82))) * _t87;
+    let _t89 = _t6 * _t85 + _t88 * _t10;
+    let _t90 = _t81 * _t22 * _t24;
+    let _t91 = _t90 * _t90;
     let _t92 = _t91 * _t91;
-    let _t93 = _t92 * _t92;
-    let _t94 = _t93 * (2.48015876e-05f - _t91 * 2.75573029e-07f + (2.08744777e-09f - _t91 * 1.13046204e-11f) * _t92) + ((0.0416666679f - 0.00138888892f * _t91) * _t92 + (1.0f - _t91 * 0.5f));
-    let _t95 = _t88 * _t17 * (1.0f - 0.166666672f * _t91 + (0.00833333377f - 0.000198412701f * _t91) * _t92 + _t93 * (2.75573188e-06f - 2.50520991e-08f * _t91 + _t92 * (1.60577024e-10f - 7.54937183e-13f * _t91)));
-    let _t96 = _t5 * _t94 + _t8 * _t95;
-    let _t97 = _t83 * _t14 * _t20;
+    let _t93 = _t92 * (2.48015876e-05f - _t90 * 2.75573029e-07f + (2.08744777e-09f - _t90 * 1.13046204e-11f) * _t91) + ((0.0416666679f - 0.00138888892f * _t90) * _t91 + (1.0f - _t90 * 0.5f));
+    let _t94 = _t86 * _t21;
+    let _t95 = _t94 * (1.0f - 0.166666672f * _t90 + (0.00833333377f - 0.000198412701f * _t90) * _t91 + _t92 * (2.75573188e-06f - 2.50520991e-08f * _t90 + _t91 * (1.60577024e-10f - 7.54937183e-13f * _t90)));
+    let _t96 = _t3 * _t93 + _t8 * _t95;
+    let _t97 = _t81 * _t18 * _t24;
     let _t98 = _t97 * _t97;
     let _t99 = _t98 * _t98;
     let _t100 = 1.0f - _t97 * 0.5f + (0.0416666679f - 0.00138888892f * _t97) * _t98 + (2.48015876e-05f - _t97 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t97) * _t98) * _t99;
-    let _t101 = ((0.00833333377f - 0.000198412701f * _t97) * _t98 + (1.0f - 0.166666672f * _t97) + ((1.60577024e-10f - 7.54937183e-13f * _t97) * _t98 + (2.75573188e-06f - 2.50520991e-08f * _t97)) * _t99) * (_t88 * _t13);
-    let _t102 = _t10 * _t100 - _t3 * _t101;
-    let _t103 = _t90 * _t96 * _t102;
-    let _t104 = _t94 * _t8 - _t5 * _t95;
-    let _t105 = _t6 * _t87 + _t89 * _t1;
-    let _t106 = _t104 * _t105 * _t102;
-    let _t107 = _t3 * _t100 + _t10 * _t101;
-    let _t108 = _t105 * _t107 * _t96;
-    let _t109 = _t90 * _t104 * _t107;
-    let _t110 = _t103 + _t106 - _t108 - _t109;
-    let _t111 = _t103 + _t108 - _t106 - _t109;
-    let _t112 = _t111 * _t111;
-    let _t113 = _t103 + _t109 - _t108 - _t106;
-    let _t114 = _t113 * _t113;
-    let _t115 = _t110 * _t110;
-    let _t116 = _t112 + (_t114 + _t115);
-    let _t117 = select(0.0f, 1.0f / _t116, _t116 > 1.17549435e-38f);
-    let _t118 = _t82 * (sqrt(_t116) * _t117);
-    let _t119 = _t83 * _t115 * _t117;
-    let _t120 = _t119 * _t119;
-    let _t121 = _t120 * _t120;
-    let _t122 = _t110 * _t118 * (((1.60577024e-10f - _t119 * 7.54937183e-13f) * _t120 + (2.75573188e-06f - _t119 * 2.50520991e-08f)) * _t121 + (1.0f - _t119 * 0.166666672f + (0.00833333377f - _t119 * 0.000198412701f) * _t120));
-    let _t123 = ((2.08744777e-09f - _t119 * 1.13046204e-11f) * _t120 + (2.48015876e-05f - _t119 * 2.75573029e-07f)) * _t121 + (1.0f - _t119 * 0.5f + (0.0416666679f - _t119 * 0.00138888892f) * _t120);
-    let _t124 = _t3 * _t122 + _t10 * _t123;
-    let _t125 = _t117 * (_t83 * _t112);
-    let _t126 = _t125 * _t125;
-    let _t127 = _t126 * _t126;
-    let _t128 = (0.0416666679f - _t125 * 0.00138888892f) * _t126 + (1.0f - _t125 * 0.5f) + (2.48015876e-05f - _t125 * 2.75573029e-07f + (2.08744777e-09f - _t125 * 1.13046204e-11f) * _t126) * _t127;
-    let _t129 = _t111 * _t118 * ((0.00833333377f - _t125 * 0.000198412701f) * _t126 + (1.0f - _t125 * 0.166666672f) + (2.75573188e-06f - _t125 * 2.50520991e-08f + _t126 * (1.60577024e-10f - _t125 * 7.54937183e-13f)) * _t127);
-    let _t130 = _t5 * _t128 + _t129 * _t8;
-    let _t131 = _t117 * (_t83 * _t114);
-    let _t132 = _t131 * _t131;
-    let _t133 = _t132 * _t132;
-    let _t134 = (2.48015876e-05f - _t131 * 2.75573029e-07f + (2.08744777e-09f - _t131 * 1.13046204e-11f) * _t132) * _t133 + ((0.0416666679f - 0.00138888892f * _t131) * _t132 + (1.0f - _t131 * 0.5f));
-    let _t135 = _t113 * _t118 * (((1.60577024e-10f - 7.54937183e-13f * _t131) * _t132 + (2.75573188e-06f - 2.50520991e-08f * _t131)) * _t133 + (1.0f - 0.166666672f * _t131 + (0.00833333377f - 0.000198412701f * _t131) * _t132));
-    let _t136 = _t134 * _t6 - _t135 * _t1;
-    let _t137 = _t128 * _t8 - _t129 * _t5;
-    let _t138 = _t134 * _t1 + _t135 * _t6;
-    let _t139 = _t3 * _t123 - _t10 * _t122;
-    return (_t66 * (_t72 * _t78) + (_t79 * _t78 * _t80 + _t72 * _t80 * _t81) + _t79 * _t66 * _t81) * (_t124 * _t130 * _t136 + (_t124 * (_t137 * _t138) + _t130 * (_t138 * _t139)) + _t137 * _t139 * _t136);
+    let _t101 = _t86 * _t17;
+    let _t102 = ((0.00833333377f - 0.000198412701f * _t97) * _t98 + (1.0f - 0.166666672f * _t97) + ((1.60577024e-10f - 7.54937183e-13f * _t97) * _t98 + (2.75573188e-06f - 2.50520991e-08f * _t97)) * _t99) * _t101;
+    let _t103 = _t12 * _t100 - _t1 * _t102;
+    let _t104 = _t89 * _t96 * _t103;
+    let _t105 = _t10 * _t85 - _t88 * _t6;
+    let _t106 = _t1 * _t100 + _t12 * _t102;
+    let _t107 = _t105 * _t106 * _t96;
+    let _t108 = _t93 * _t8 - _t3 * _t95;
+    let _t109 = _t105 * _t108;
+    let _t110 = _t109 * _t103;
+    let _t111 = _t108 * _t89;
+    let _t112 = _t111 * _t106;
+    let _t113 = _t110 + _t112;
+    let _t114 = _t104 + (_t107 + _t113);
+    let _t115 = _t105 * _t96 * _t103;
+    let _t116 = _t109 * _t106;
+    let _t117 = _t89 * _t106 * _t96;
+    let _t118 = _t111 * _t103;
+    let _t119 = _t115 + _t116 - _t117 - _t118;
+    let _t120 = _t115 + _t117 - _t118 - _t116;
+    let _t121 = _t115 + _t118 - _t117 - _t116;
+    let _t122 = _t120 * _t120 + (_t119 * _t119 + _t121 * _t121);
+    let _t123 = _t80 * (sqrt(_t122) * (select(0.0f, 1.0f / _t122, _t122 > 1.17549435e-38f)));
+    let _t124 = _t119 * _t123 + _t87;
+    let _t125 = _t101 + _t121 * _t123;
+    let _t126 = _t94 - _t120 * _t123;
+    let _t127 = _t114 + _t124 * (_t125 * (_t113 - _t107 - _t104) + _t126 * (_t110 + _t104 - _t112 - _t107) - _t119 - _t114 * _t124 * 0.5f) - (_t121 + _t114 * _t125 * 0.5f) * _t125 - (_t114 * _t126 * 0.5f - _t120 - _t125 * (_t110 + _t107 - _t112 - _t104)) * _t126;
+    let _t128 = 1.73205256f * abs(_t80);
+    let _t129 = _t76 + _t128;
+    let _t130 = _t76 - _t128;
+    return (select(_t78, (select(_t79, _t75, _t79 <= _t75)), _t75 <= _t78)) * (select(_t129, (select(_t130, _t127, _t130 <= _t127)), _t127 <= _t129));
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 342.

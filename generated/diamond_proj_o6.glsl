@@ -8,7 +8,9 @@ description: |
     Source: Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 2 projection steps: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 6. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 6. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> diamond_proj_o6_field(<vec3 p>)
     - <float> diamond_proj_o6_offset(<vec3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 3 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 4. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 20
-    - offset: 470
-    - shell: 906
+    - offset: 399
+    - shell: 756
     - normal: 490
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o6","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":470,"shell":906,"normal":490}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"diamond_proj_o6","surface":"diamond","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.550371167993493},{"h":0.01,"bound":12.352678512519516},{"h":0.025,"bound":17.39004995123494},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.000002000000006,"ops":{"field":20,"offset":399,"shell":756,"normal":490}} */
 #ifndef OFFSETGEN_DIAMOND_PROJ_O6_GLSL
 #define OFFSETGEN_DIAMOND_PROJ_O6_GLSL
 
@@ -98,338 +101,326 @@ highp float diamond_proj_o6_field(highp vec3 p)
     return _t1 * _t3 * _t5 + (_t5 * (_t6 * _t7) + _t1 * _t7 * _t8) + _t6 * _t3 * _t8;
 }
 
-// phi(p, h) of order 6: zero on the surface moved by h along +grad F. Total ops: 470.
+// phi(p, h) of order 6: zero on the surface moved by h along +grad F. Total ops: 399.
 highp float diamond_proj_o6_offset(highp vec3 p, highp float h)
 {
-    highp float _t0 = 6.28318548 * p.x;
-    highp float _t1 = diamond_proj_o6_cos(_t0);
+    highp float _t0 = 6.28318548 * p.y;
+    highp float _t1 = diamond_proj_o6_sin(_t0);
     highp float _t2 = 6.28318548 * h;
     highp float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
     highp float _t4 = _t3 * _t3;
-    highp float _t5 = 6.28318548 * p.y;
-    highp float _t6 = diamond_proj_o6_sin(_t5);
-    highp float _t7 = p.z * 6.28318548;
-    highp float _t8 = diamond_proj_o6_cos(_t7);
-    highp float _t9 = diamond_proj_o6_cos(_t5);
-    highp float _t10 = _t8 * _t9 * _t1;
-    highp float _t11 = diamond_proj_o6_sin(_t7);
-    highp float _t12 = diamond_proj_o6_sin(_t0);
-    highp float _t13 = _t11 * _t9 * _t12;
-    highp float _t14 = _t8 * _t6 * _t12;
-    highp float _t15 = _t1 * (_t11 * _t6);
-    highp float _t16 = _t10 + _t13 - _t14 - _t15;
-    highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t10 + _t14 - _t13 - _t15;
-    highp float _t19 = _t18 * _t18;
-    highp float _t20 = _t10 + _t15 - _t13 - _t14;
+    highp float _t5 = p.z * 6.28318548;
+    highp float _t6 = diamond_proj_o6_cos(_t5);
+    highp float _t7 = diamond_proj_o6_cos(_t0);
+    highp float _t8 = _t6 * _t7;
+    highp float _t9 = 6.28318548 * p.x;
+    highp float _t10 = diamond_proj_o6_cos(_t9);
+    highp float _t11 = _t8 * _t10;
+    highp float _t12 = diamond_proj_o6_sin(_t5);
+    highp float _t13 = _t12 * _t7;
+    highp float _t14 = diamond_proj_o6_sin(_t9);
+    highp float _t15 = _t13 * _t14;
+    highp float _t16 = _t6 * _t1;
+    highp float _t17 = _t16 * _t14;
+    highp float _t18 = _t12 * _t1;
+    highp float _t19 = _t10 * _t18;
+    highp float _t20 = _t11 + _t15 - _t17 - _t19;
     highp float _t21 = _t20 * _t20;
-    highp float _t22 = _t19 + _t21 + _t17;
-    highp float _t23 = (_t22 > 1.17549435e-38) ? 1.0 / _t22 : 0.0;
-    highp float _t24 = _t4 * _t17 * _t23;
+    highp float _t22 = _t11 + _t17 - _t15 - _t19;
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = _t11 + _t19 - _t15 - _t17;
     highp float _t25 = _t24 * _t24;
-    highp float _t26 = _t25 * _t25;
-    highp float _t27 = _t25 * (0.0416666679 - 0.00138888892 * _t24) + (1.0 - _t24 * 0.5) + _t26 * (_t25 * (2.08744777e-09 - 1.13046204e-11 * _t24) + (2.48015876e-05 - _t24 * 2.75573029e-07));
-    highp float _t28 = _t3 * (sqrt(_t22) * _t23);
-    highp float _t29 = (_t26 * (2.75573188e-06 - 2.50520991e-08 * _t24 + _t25 * (1.60577024e-10 - 7.54937183e-13 * _t24)) + (1.0 - 0.166666672 * _t24 + _t25 * (0.00833333377 - 0.000198412701 * _t24))) * (_t16 * _t28);
-    highp float _t30 = _t6 * _t27 - _t9 * _t29;
-    highp float _t31 = _t4 * _t21 * _t23;
-    highp float _t32 = _t31 * _t31;
-    highp float _t33 = _t32 * _t32;
-    highp float _t34 = (0.0416666679 - 0.00138888892 * _t31) * _t32 + (1.0 - 0.5 * _t31) + _t33 * (2.48015876e-05 - 2.75573029e-07 * _t31 + (2.08744777e-09 - 1.13046204e-11 * _t31) * _t32);
-    highp float _t35 = (_t33 * (2.75573188e-06 - 2.50520991e-08 * _t31 + _t32 * (1.60577024e-10 - 7.54937183e-13 * _t31)) + (1.0 - 0.166666672 * _t31 + _t32 * (0.00833333377 - 0.000198412701 * _t31))) * (_t20 * _t28);
-    highp float _t36 = _t34 * _t1 + _t35 * _t12;
-    highp float _t37 = _t23 * (_t4 * _t19);
-    highp float _t38 = _t37 * _t37;
-    highp float _t39 = _t38 * _t38;
-    highp float _t40 = 1.0 - _t37 * 0.5 + (0.0416666679 - 0.00138888892 * _t37) * _t38 + _t39 * ((2.08744777e-09 - _t37 * 1.13046204e-11) * _t38 + (2.48015876e-05 - _t37 * 2.75573029e-07));
-    highp float _t41 = _t28 * _t18 * (_t39 * ((1.60577024e-10 - 7.54937183e-13 * _t37) * _t38 + (2.75573188e-06 - 2.50520991e-08 * _t37)) + (1.0 - 0.166666672 * _t37 + (0.00833333377 - _t37 * 0.000198412701) * _t38));
-    highp float _t42 = _t11 * _t40 - _t8 * _t41;
-    highp float _t43 = _t30 * _t36 * _t42;
-    highp float _t44 = _t8 * _t40 + _t11 * _t41;
-    highp float _t45 = _t34 * _t12 - _t35 * _t1;
-    highp float _t46 = _t30 * _t44 * _t45;
-    highp float _t47 = _t6 * _t29 + _t9 * _t27;
-    highp float _t48 = _t36 * _t44 * _t47;
-    highp float _t49 = _t47 * (_t42 * _t45);
-    highp float _t50 = _t43 + _t46 - _t48 - _t49;
-    highp float _t51 = _t50 * _t50;
-    highp float _t52 = _t43 + _t49 - _t48 - _t46;
-    highp float _t53 = _t52 * _t52;
-    highp float _t54 = _t43 + _t48 - _t46 - _t49;
-    highp float _t55 = _t54 * _t54;
-    highp float _t56 = _t53 + _t55 + _t51;
-    highp float _t57 = (_t56 > 1.17549435e-38) ? 1.0 / _t56 : 0.0;
-    highp float _t58 = _t4 * _t51 * _t57;
-    highp float _t59 = _t58 * _t58;
-    highp float _t60 = _t59 * _t59;
-    highp float _t61 = 1.0 - _t58 * 0.5 + _t59 * (0.0416666679 - 0.00138888892 * _t58) + _t60 * (2.48015876e-05 - _t58 * 2.75573029e-07 + _t59 * (2.08744777e-09 - _t58 * 1.13046204e-11));
-    highp float _t62 = _t3 * (sqrt(_t56) * _t57);
-    highp float _t63 = (1.0 - 0.166666672 * _t58 + _t59 * (0.00833333377 - _t58 * 0.000198412701) + _t60 * (2.75573188e-06 - 2.50520991e-08 * _t58 + (1.60577024e-10 - 7.54937183e-13 * _t58) * _t59)) * (_t50 * _t62);
-    highp float _t64 = _t61 * _t9 - _t6 * _t63;
-    highp float _t65 = _t4 * _t55 * _t57;
+    highp float _t26 = _t23 + _t25 + _t21;
+    highp float _t27 = (_t26 > 1.17549435e-38) ? 1.0 / _t26 : 0.0;
+    highp float _t28 = _t4 * _t21 * _t27;
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = _t29 * _t29;
+    highp float _t31 = _t29 * (0.0416666679 - 0.00138888892 * _t28) + (1.0 - _t28 * 0.5) + _t30 * (_t29 * (2.08744777e-09 - 1.13046204e-11 * _t28) + (2.48015876e-05 - _t28 * 2.75573029e-07));
+    highp float _t32 = _t3 * (sqrt(_t26) * _t27);
+    highp float _t33 = (_t30 * (2.75573188e-06 - 2.50520991e-08 * _t28 + _t29 * (1.60577024e-10 - 7.54937183e-13 * _t28)) + (1.0 - 0.166666672 * _t28 + _t29 * (0.00833333377 - 0.000198412701 * _t28))) * (_t20 * _t32);
+    highp float _t34 = _t1 * _t31 - _t7 * _t33;
+    highp float _t35 = _t4 * _t25 * _t27;
+    highp float _t36 = _t35 * _t35;
+    highp float _t37 = _t36 * _t36;
+    highp float _t38 = (0.0416666679 - 0.00138888892 * _t35) * _t36 + (1.0 - 0.5 * _t35) + _t37 * (2.48015876e-05 - 2.75573029e-07 * _t35 + (2.08744777e-09 - 1.13046204e-11 * _t35) * _t36);
+    highp float _t39 = (_t37 * (2.75573188e-06 - 2.50520991e-08 * _t35 + _t36 * (1.60577024e-10 - 7.54937183e-13 * _t35)) + (1.0 - 0.166666672 * _t35 + _t36 * (0.00833333377 - 0.000198412701 * _t35))) * (_t24 * _t32);
+    highp float _t40 = _t38 * _t10 + _t39 * _t14;
+    highp float _t41 = _t27 * (_t4 * _t23);
+    highp float _t42 = _t41 * _t41;
+    highp float _t43 = _t42 * _t42;
+    highp float _t44 = 1.0 - _t41 * 0.5 + (0.0416666679 - 0.00138888892 * _t41) * _t42 + _t43 * ((2.08744777e-09 - _t41 * 1.13046204e-11) * _t42 + (2.48015876e-05 - _t41 * 2.75573029e-07));
+    highp float _t45 = _t32 * _t22 * (_t43 * ((1.60577024e-10 - 7.54937183e-13 * _t41) * _t42 + (2.75573188e-06 - 2.50520991e-08 * _t41)) + (1.0 - 0.166666672 * _t41 + (0.00833333377 - _t41 * 0.000198412701) * _t42));
+    highp float _t46 = _t12 * _t44 - _t6 * _t45;
+    highp float _t47 = _t34 * _t40 * _t46;
+    highp float _t48 = _t6 * _t44 + _t12 * _t45;
+    highp float _t49 = _t38 * _t14 - _t39 * _t10;
+    highp float _t50 = _t34 * _t48 * _t49;
+    highp float _t51 = _t1 * _t33 + _t7 * _t31;
+    highp float _t52 = _t40 * _t48 * _t51;
+    highp float _t53 = _t51 * (_t46 * _t49);
+    highp float _t54 = _t47 + _t50 - _t52 - _t53;
+    highp float _t55 = _t47 + _t53 - _t52 - _t50;
+    highp float _t56 = _t55 * _t55;
+    highp float _t57 = _t47 + _t52 - _t50 - _t53;
+    highp float _t58 = _t57 * _t57;
+    highp float _t59 = _t54 * _t54;
+    highp float _t60 = _t56 + _t58 + _t59;
+    highp float _t61 = (_t60 > 1.17549435e-38) ? 1.0 / _t60 : 0.0;
+    highp float _t62 = _t3 * (sqrt(_t60) * _t61);
+    highp float _t63 = _t54 * _t62;
+    highp float _t64 = _t4 * _t59 * _t61;
+    highp float _t65 = _t64 * _t64;
     highp float _t66 = _t65 * _t65;
-    highp float _t67 = _t66 * _t66;
-    highp float _t68 = _t67 * ((2.08744777e-09 - _t65 * 1.13046204e-11) * _t66 + (2.48015876e-05 - _t65 * 2.75573029e-07)) + ((0.0416666679 - _t65 * 0.00138888892) * _t66 + (1.0 - _t65 * 0.5));
-    highp float _t69 = (((1.60577024e-10 - _t65 * 7.54937183e-13) * _t66 + (2.75573188e-06 - _t65 * 2.50520991e-08)) * _t67 + ((0.00833333377 - _t65 * 0.000198412701) * _t66 + (1.0 - _t65 * 0.166666672))) * (_t62 * _t54);
-    highp float _t70 = _t68 * _t12 - _t69 * _t1;
-    highp float _t71 = _t57 * (_t53 * _t4);
+    highp float _t67 = 1.0 - _t64 * 0.5 + _t65 * (0.0416666679 - 0.00138888892 * _t64) + _t66 * (2.48015876e-05 - _t64 * 2.75573029e-07 + _t65 * (2.08744777e-09 - _t64 * 1.13046204e-11));
+    highp float _t68 = (1.0 - 0.166666672 * _t64 + _t65 * (0.00833333377 - _t64 * 0.000198412701) + _t66 * (2.75573188e-06 - 2.50520991e-08 * _t64 + (1.60577024e-10 - 7.54937183e-13 * _t64) * _t65)) * _t63;
+    highp float _t69 = _t67 * _t7 - _t1 * _t68;
+    highp float _t70 = _t4 * _t58 * _t61;
+    highp float _t71 = _t70 * _t70;
     highp float _t72 = _t71 * _t71;
-    highp float _t73 = _t72 * _t72;
-    highp float _t74 = (((1.60577024e-10 - 7.54937183e-13 * _t71) * _t72 + (2.75573188e-06 - 2.50520991e-08 * _t71)) * _t73 + (1.0 - 0.166666672 * _t71 + _t72 * (0.00833333377 - _t71 * 0.000198412701))) * (_t52 * _t62);
-    highp float _t75 = _t72 * (0.0416666679 - 0.00138888892 * _t71) + (1.0 - _t71 * 0.5) + (2.48015876e-05 - _t71 * 2.75573029e-07 + _t72 * (2.08744777e-09 - _t71 * 1.13046204e-11)) * _t73;
-    highp float _t76 = _t8 * _t74 + _t11 * _t75;
-    highp float _t77 = _t64 * _t70 * _t76;
-    highp float _t78 = _t9 * _t63 + _t61 * _t6;
-    highp float _t79 = _t8 * _t75 - _t11 * _t74;
-    highp float _t80 = _t70 * (_t78 * _t79);
-    highp float _t81 = _t69 * _t12 + _t68 * _t1;
-    highp float _t82 = _t78 * _t81 * _t76;
-    highp float _t83 = _t64 * _t79 * _t81;
-    highp float _t84 = _t77 + _t80 - _t82 - _t83;
-    highp float _t85 = _t84 * _t84;
-    highp float _t86 = _t77 + _t83 - _t80 - _t82;
-    highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t77 + _t82 - _t80 - _t83;
-    highp float _t89 = _t88 * _t88;
-    highp float _t90 = _t85 + _t87 + _t89;
-    highp float _t91 = (_t90 > 1.17549435e-38) ? 1.0 / _t90 : 0.0;
-    highp float _t92 = _t91 * (_t85 * _t4);
-    highp float _t93 = _t92 * _t92;
-    highp float _t94 = _t93 * _t93;
-    highp float _t95 = _t3 * (_t91 * sqrt(_t90));
-    highp float _t96 = (_t93 * (0.00833333377 - 0.000198412701 * _t92) + (1.0 - 0.166666672 * _t92) + _t94 * (_t93 * (1.60577024e-10 - 7.54937183e-13 * _t92) + (2.75573188e-06 - 2.50520991e-08 * _t92))) * (_t84 * _t95);
-    highp float _t97 = _t94 * (2.48015876e-05 - _t92 * 2.75573029e-07 + _t93 * (2.08744777e-09 - 1.13046204e-11 * _t92)) + (_t93 * (0.0416666679 - 0.00138888892 * _t92) + (1.0 - _t92 * 0.5));
-    highp float _t98 = _t1 * _t96 + _t97 * _t12;
-    highp float _t99 = _t91 * (_t87 * _t4);
-    highp float _t100 = _t99 * _t99;
-    highp float _t101 = _t100 * _t100;
-    highp float _t102 = 1.0 - _t99 * 0.5 + _t100 * (0.0416666679 - 0.00138888892 * _t99) + (2.48015876e-05 - _t99 * 2.75573029e-07 + (2.08744777e-09 - _t99 * 1.13046204e-11) * _t100) * _t101;
-    highp float _t103 = (_t101 * (_t100 * (1.60577024e-10 - 7.54937183e-13 * _t99) + (2.75573188e-06 - 2.50520991e-08 * _t99)) + (1.0 - 0.166666672 * _t99 + _t100 * (0.00833333377 - _t99 * 0.000198412701))) * (_t86 * _t95);
-    highp float _t104 = _t9 * _t102 + _t6 * _t103;
-    highp float _t105 = _t91 * (_t4 * _t89);
-    highp float _t106 = _t105 * _t105;
-    highp float _t107 = _t106 * _t106;
-    highp float _t108 = 1.0 - _t105 * 0.5 + (0.0416666679 - _t105 * 0.00138888892) * _t106 + (2.48015876e-05 - _t105 * 2.75573029e-07 + (2.08744777e-09 - _t105 * 1.13046204e-11) * _t106) * _t107;
-    highp float _t109 = (1.0 - _t105 * 0.166666672 + (0.00833333377 - _t105 * 0.000198412701) * _t106 + (2.75573188e-06 - _t105 * 2.50520991e-08 + (1.60577024e-10 - _t105 * 7.54937183e-13) * _t106) * _t107) * (_t95 * _t88);
-    highp float _t110 = _t8 * _t108 - _t11 * _t109;
-    highp float _t111 = _t11 * _t108 + _t8 * _t109;
-    highp float _t112 = _t102 * _t6 - _t9 * _t103;
-    highp float _t113 = _t97 * _t1 - _t12 * _t96;
-    return _t98 * (_t104 * _t110) + (_t111 * _t112 * _t98 + _t113 * _t110 * _t112) + _t111 * (_t104 * _t113);
+    highp float _t73 = _t72 * ((2.08744777e-09 - _t70 * 1.13046204e-11) * _t71 + (2.48015876e-05 - _t70 * 2.75573029e-07)) + ((0.0416666679 - _t70 * 0.00138888892) * _t71 + (1.0 - _t70 * 0.5));
+    highp float _t74 = _t62 * _t57;
+    highp float _t75 = (((1.60577024e-10 - _t70 * 7.54937183e-13) * _t71 + (2.75573188e-06 - _t70 * 2.50520991e-08)) * _t72 + ((0.00833333377 - _t70 * 0.000198412701) * _t71 + (1.0 - _t70 * 0.166666672))) * _t74;
+    highp float _t76 = _t73 * _t14 - _t75 * _t10;
+    highp float _t77 = _t61 * (_t56 * _t4);
+    highp float _t78 = _t77 * _t77;
+    highp float _t79 = _t78 * _t78;
+    highp float _t80 = _t55 * _t62;
+    highp float _t81 = (((1.60577024e-10 - 7.54937183e-13 * _t77) * _t78 + (2.75573188e-06 - 2.50520991e-08 * _t77)) * _t79 + (1.0 - 0.166666672 * _t77 + _t78 * (0.00833333377 - _t77 * 0.000198412701))) * _t80;
+    highp float _t82 = _t78 * (0.0416666679 - 0.00138888892 * _t77) + (1.0 - _t77 * 0.5) + (2.48015876e-05 - _t77 * 2.75573029e-07 + _t78 * (2.08744777e-09 - _t77 * 1.13046204e-11)) * _t79;
+    highp float _t83 = _t6 * _t81 + _t12 * _t82;
+    highp float _t84 = _t69 * _t76 * _t83;
+    highp float _t85 = _t6 * _t82 - _t12 * _t81;
+    highp float _t86 = _t69 * _t85;
+    highp float _t87 = _t75 * _t14 + _t73 * _t10;
+    highp float _t88 = _t86 * _t87;
+    highp float _t89 = _t7 * _t68 + _t67 * _t1;
+    highp float _t90 = _t89 * _t85;
+    highp float _t91 = _t76 * _t90;
+    highp float _t92 = _t89 * _t87 * _t83;
+    highp float _t93 = _t84 + _t88 - _t91 - _t92;
+    highp float _t94 = _t84 + _t91 - _t92 - _t88;
+    highp float _t95 = _t84 + _t92 - _t91 - _t88;
+    highp float _t96 = _t94 * _t94 + _t93 * _t93 + _t95 * _t95;
+    highp float _t97 = _t3 * (((_t96 > 1.17549435e-38) ? 1.0 / _t96 : 0.0) * sqrt(_t96));
+    highp float _t98 = _t63 + _t93 * _t97;
+    highp float _t99 = _t87 * _t90;
+    highp float _t100 = _t83 * (_t89 * _t76);
+    highp float _t101 = _t99 + _t100;
+    highp float _t102 = _t69 * _t87 * _t83;
+    highp float _t103 = _t86 * _t76;
+    highp float _t104 = _t101 + _t102 + _t103;
+    highp float _t105 = _t97 * _t95 - _t80;
+    highp float _t106 = _t74 + _t94 * _t97;
+    highp float _t107 = -((_t98 * _t104 * 0.5 + _t93 - _t105 * (_t99 + _t102 - _t100 - _t103)) * _t98 + (_t105 * _t104 * 0.5 + _t95) * _t105 + (_t106 * _t104 * 0.5 + _t94 - (_t101 - _t102 - _t103) * _t105 - _t98 * (_t99 + _t103 - _t100 - _t102)) * _t106 - _t104);
+    highp float _t108 = 1.73205256 * abs(_t3);
+    highp float _t109 = _t8 * _t14 + (_t14 * _t18 + _t16 * _t10) + _t13 * _t10;
+    highp float _t110 = _t108 + _t109;
+    highp float _t111 = _t109 - _t108;
+    return (_t107 <= _t110) ? ((_t111 <= _t107) ? _t107 : _t111) : _t110;
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 906.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 756.
 highp float diamond_proj_o6_shell(highp vec3 p, highp float t)
 {
-    highp float _t0 = 6.28318548 * (t * 0.5);
-    highp float _t1 = -_t0;
-    highp float _t2 = (_t1 <= 1.0) ? (((-1.0) <= _t1) ? _t1 : (-1.0)) : 1.0;
-    highp float _t3 = _t2 * _t2;
+    highp float _t0 = p.z * 6.28318548;
+    highp float _t1 = diamond_proj_o6_cos(_t0);
+    highp float _t2 = 6.28318548 * p.x;
+    highp float _t3 = diamond_proj_o6_sin(_t2);
     highp float _t4 = 6.28318548 * p.y;
     highp float _t5 = diamond_proj_o6_cos(_t4);
-    highp float _t6 = 6.28318548 * p.x;
-    highp float _t7 = diamond_proj_o6_sin(_t6);
-    highp float _t8 = p.z * 6.28318548;
-    highp float _t9 = diamond_proj_o6_cos(_t8);
-    highp float _t10 = diamond_proj_o6_cos(_t6);
-    highp float _t11 = _t9 * _t5 * _t10;
-    highp float _t12 = diamond_proj_o6_sin(_t4);
-    highp float _t13 = _t9 * _t12 * _t7;
-    highp float _t14 = diamond_proj_o6_sin(_t8);
-    highp float _t15 = _t14 * _t5 * _t7;
-    highp float _t16 = _t10 * (_t14 * _t12);
-    highp float _t17 = _t11 + _t13 - _t15 - _t16;
+    highp float _t6 = _t1 * _t5;
+    highp float _t7 = diamond_proj_o6_cos(_t2);
+    highp float _t8 = _t6 * _t7;
+    highp float _t9 = diamond_proj_o6_sin(_t4);
+    highp float _t10 = _t1 * _t9;
+    highp float _t11 = _t10 * _t3;
+    highp float _t12 = diamond_proj_o6_sin(_t0);
+    highp float _t13 = _t12 * _t5;
+    highp float _t14 = _t13 * _t3;
+    highp float _t15 = _t12 * _t9;
+    highp float _t16 = _t7 * _t15;
+    highp float _t17 = _t8 + _t11 - _t14 - _t16;
     highp float _t18 = _t17 * _t17;
-    highp float _t19 = _t11 + _t16 - _t15 - _t13;
+    highp float _t19 = _t8 + _t16 - _t14 - _t11;
     highp float _t20 = _t19 * _t19;
-    highp float _t21 = _t11 + _t15 - _t13 - _t16;
+    highp float _t21 = _t8 + _t14 - _t11 - _t16;
     highp float _t22 = _t21 * _t21;
     highp float _t23 = _t18 + _t20 + _t22;
     highp float _t24 = (_t23 > 1.17549435e-38) ? 1.0 / _t23 : 0.0;
-    highp float _t25 = sqrt(_t23) * _t24;
-    highp float _t26 = _t25 * _t2;
-    highp float _t27 = _t24 * (_t3 * _t20);
-    highp float _t28 = _t27 * _t27;
+    highp float _t25 = 6.28318548 * (t * 0.5);
+    highp float _t26 = (_t25 <= 1.0) ? (((-1.0) <= _t25) ? _t25 : (-1.0)) : 1.0;
+    highp float _t27 = _t26 * _t26;
+    highp float _t28 = _t24 * (_t27 * _t20);
     highp float _t29 = _t28 * _t28;
-    highp float _t30 = _t26 * _t19 * ((0.00833333377 - _t27 * 0.000198412701) * _t28 + (1.0 - _t27 * 0.166666672) + _t29 * (2.75573188e-06 - _t27 * 2.50520991e-08 + (1.60577024e-10 - _t27 * 7.54937183e-13) * _t28));
-    highp float _t31 = ((2.08744777e-09 - _t27 * 1.13046204e-11) * _t28 + (2.48015876e-05 - _t27 * 2.75573029e-07)) * _t29 + (1.0 - _t27 * 0.5 + (0.0416666679 - _t27 * 0.00138888892) * _t28);
-    highp float _t32 = _t7 * _t30 + _t10 * _t31;
-    highp float _t33 = _t3 * _t22 * _t24;
-    highp float _t34 = _t33 * _t33;
-    highp float _t35 = _t34 * _t34;
-    highp float _t36 = (1.0 - 0.166666672 * _t33 + (0.00833333377 - 0.000198412701 * _t33) * _t34 + (_t34 * (1.60577024e-10 - 7.54937183e-13 * _t33) + (2.75573188e-06 - 2.50520991e-08 * _t33)) * _t35) * (_t26 * _t21);
-    highp float _t37 = 1.0 - _t33 * 0.5 + (0.0416666679 - 0.00138888892 * _t33) * _t34 + (_t34 * (2.08744777e-09 - 1.13046204e-11 * _t33) + (2.48015876e-05 - _t33 * 2.75573029e-07)) * _t35;
-    highp float _t38 = _t12 * _t36 + _t5 * _t37;
-    highp float _t39 = _t3 * _t18 * _t24;
-    highp float _t40 = _t39 * _t39;
-    highp float _t41 = _t40 * _t40;
-    highp float _t42 = 1.0 - _t39 * 0.5 + (0.0416666679 - _t39 * 0.00138888892) * _t40 + ((2.08744777e-09 - _t39 * 1.13046204e-11) * _t40 + (2.48015876e-05 - _t39 * 2.75573029e-07)) * _t41;
-    highp float _t43 = _t26 * _t17 * (_t40 * (0.00833333377 - _t39 * 0.000198412701) + (1.0 - _t39 * 0.166666672) + _t41 * (2.75573188e-06 - _t39 * 2.50520991e-08 + _t40 * (1.60577024e-10 - _t39 * 7.54937183e-13)));
-    highp float _t44 = _t9 * _t42 + _t14 * _t43;
-    highp float _t45 = _t32 * _t38 * _t44;
-    highp float _t46 = _t14 * _t42 - _t9 * _t43;
-    highp float _t47 = _t12 * _t37 - _t5 * _t36;
-    highp float _t48 = _t32 * _t46 * _t47;
-    highp float _t49 = _t7 * _t31 - _t10 * _t30;
-    highp float _t50 = _t49 * _t47 * _t44;
-    highp float _t51 = _t49 * _t38 * _t46;
-    highp float _t52 = _t45 + _t48 - _t50 - _t51;
-    highp float _t53 = _t52 * _t52;
-    highp float _t54 = _t45 + _t51 - _t48 - _t50;
-    highp float _t55 = _t54 * _t54;
-    highp float _t56 = _t45 + _t50 - _t48 - _t51;
+    highp float _t30 = _t29 * _t29;
+    highp float _t31 = (2.48015876e-05 - _t28 * 2.75573029e-07 + _t29 * (2.08744777e-09 - 1.13046204e-11 * _t28)) * _t30 + (_t29 * (0.0416666679 - 0.00138888892 * _t28) + (1.0 - _t28 * 0.5));
+    highp float _t32 = sqrt(_t23) * _t24;
+    highp float _t33 = _t26 * _t32;
+    highp float _t34 = ((2.75573188e-06 - 2.50520991e-08 * _t28 + _t29 * (1.60577024e-10 - 7.54937183e-13 * _t28)) * _t30 + ((0.00833333377 - 0.000198412701 * _t28) * _t29 + (1.0 - 0.166666672 * _t28))) * (_t33 * _t19);
+    highp float _t35 = _t3 * _t31 - _t34 * _t7;
+    highp float _t36 = _t27 * _t22 * _t24;
+    highp float _t37 = _t36 * _t36;
+    highp float _t38 = _t37 * _t37;
+    highp float _t39 = _t38 * (2.48015876e-05 - _t36 * 2.75573029e-07 + (2.08744777e-09 - _t36 * 1.13046204e-11) * _t37) + ((0.0416666679 - 0.00138888892 * _t36) * _t37 + (1.0 - _t36 * 0.5));
+    highp float _t40 = _t33 * _t21 * (1.0 - 0.166666672 * _t36 + (0.00833333377 - 0.000198412701 * _t36) * _t37 + _t38 * (2.75573188e-06 - 2.50520991e-08 * _t36 + _t37 * (1.60577024e-10 - 7.54937183e-13 * _t36)));
+    highp float _t41 = _t5 * _t39 + _t9 * _t40;
+    highp float _t42 = _t27 * _t18 * _t24;
+    highp float _t43 = _t42 * _t42;
+    highp float _t44 = _t43 * _t43;
+    highp float _t45 = 1.0 - _t42 * 0.5 + (0.0416666679 - 0.00138888892 * _t42) * _t43 + (2.48015876e-05 - _t42 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t42) * _t43) * _t44;
+    highp float _t46 = ((0.00833333377 - 0.000198412701 * _t42) * _t43 + (1.0 - 0.166666672 * _t42) + ((1.60577024e-10 - 7.54937183e-13 * _t42) * _t43 + (2.75573188e-06 - 2.50520991e-08 * _t42)) * _t44) * (_t33 * _t17);
+    highp float _t47 = _t12 * _t45 - _t1 * _t46;
+    highp float _t48 = _t35 * _t41 * _t47;
+    highp float _t49 = _t39 * _t9 - _t5 * _t40;
+    highp float _t50 = _t7 * _t31 + _t34 * _t3;
+    highp float _t51 = _t49 * _t50 * _t47;
+    highp float _t52 = _t1 * _t45 + _t12 * _t46;
+    highp float _t53 = _t50 * _t52 * _t41;
+    highp float _t54 = _t35 * _t49 * _t52;
+    highp float _t55 = _t48 + _t51 - _t53 - _t54;
+    highp float _t56 = _t48 + _t53 - _t51 - _t54;
     highp float _t57 = _t56 * _t56;
-    highp float _t58 = _t53 + _t55 + _t57;
-    highp float _t59 = (_t58 > 1.17549435e-38) ? 1.0 / _t58 : 0.0;
-    highp float _t60 = _t59 * (_t3 * _t55);
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = _t61 * _t61;
-    highp float _t63 = _t61 * (0.0416666679 - _t60 * 0.00138888892) + (1.0 - _t60 * 0.5) + _t62 * (2.48015876e-05 - _t60 * 2.75573029e-07 + (2.08744777e-09 - _t60 * 1.13046204e-11) * _t61);
-    highp float _t64 = _t59 * sqrt(_t58) * _t2;
-    highp float _t65 = (_t61 * (0.00833333377 - _t60 * 0.000198412701) + (1.0 - _t60 * 0.166666672) + _t62 * ((1.60577024e-10 - _t60 * 7.54937183e-13) * _t61 + (2.75573188e-06 - _t60 * 2.50520991e-08))) * (_t54 * _t64);
-    highp float _t66 = _t5 * _t63 + _t12 * _t65;
-    highp float _t67 = _t59 * (_t3 * _t57);
-    highp float _t68 = _t67 * _t67;
-    highp float _t69 = _t68 * _t68;
-    highp float _t70 = (_t69 * (_t68 * (1.60577024e-10 - _t67 * 7.54937183e-13) + (2.75573188e-06 - _t67 * 2.50520991e-08)) + (_t68 * (0.00833333377 - _t67 * 0.000198412701) + (1.0 - _t67 * 0.166666672))) * (_t56 * _t64);
-    highp float _t71 = _t68 * (0.0416666679 - _t67 * 0.00138888892) + (1.0 - _t67 * 0.5) + _t69 * (2.48015876e-05 - _t67 * 2.75573029e-07 + _t68 * (2.08744777e-09 - _t67 * 1.13046204e-11));
-    highp float _t72 = _t70 * _t14 + _t9 * _t71;
-    highp float _t73 = _t59 * (_t53 * _t3);
-    highp float _t74 = _t73 * _t73;
-    highp float _t75 = _t74 * _t74;
-    highp float _t76 = _t74 * (0.0416666679 - _t73 * 0.00138888892) + (1.0 - _t73 * 0.5) + (_t74 * (2.08744777e-09 - _t73 * 1.13046204e-11) + (2.48015876e-05 - _t73 * 2.75573029e-07)) * _t75;
-    highp float _t77 = _t52 * _t64 * (1.0 - _t73 * 0.166666672 + _t74 * (0.00833333377 - _t73 * 0.000198412701) + (_t74 * (1.60577024e-10 - _t73 * 7.54937183e-13) + (2.75573188e-06 - _t73 * 2.50520991e-08)) * _t75);
-    highp float _t78 = _t76 * _t10 + _t77 * _t7;
-    highp float _t79 = _t66 * _t72 * _t78;
-    highp float _t80 = _t12 * _t63 - _t5 * _t65;
-    highp float _t81 = _t14 * _t71 - _t70 * _t9;
-    highp float _t82 = _t80 * _t78 * _t81;
-    highp float _t83 = _t76 * _t7 - _t77 * _t10;
-    highp float _t84 = _t66 * _t83 * _t81;
-    highp float _t85 = _t83 * (_t80 * _t72);
-    highp float _t86 = _t79 + _t82 - _t84 - _t85;
-    highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t79 + _t84 - _t85 - _t82;
-    highp float _t89 = _t88 * _t88;
-    highp float _t90 = _t79 + _t85 - _t84 - _t82;
-    highp float _t91 = _t90 * _t90;
-    highp float _t92 = _t89 + _t87 + _t91;
-    highp float _t93 = (_t92 > 1.17549435e-38) ? 1.0 / _t92 : 0.0;
-    highp float _t94 = _t3 * _t87 * _t93;
-    highp float _t95 = _t94 * _t94;
-    highp float _t96 = _t95 * _t95;
-    highp float _t97 = (2.48015876e-05 - _t94 * 2.75573029e-07 + _t95 * (2.08744777e-09 - 1.13046204e-11 * _t94)) * _t96 + (1.0 - _t94 * 0.5 + _t95 * (0.0416666679 - 0.00138888892 * _t94));
-    highp float _t98 = sqrt(_t92) * _t93 * _t2;
-    highp float _t99 = ((_t95 * (1.60577024e-10 - 7.54937183e-13 * _t94) + (2.75573188e-06 - 2.50520991e-08 * _t94)) * _t96 + (_t95 * (0.00833333377 - 0.000198412701 * _t94) + (1.0 - 0.166666672 * _t94))) * (_t98 * _t86);
-    highp float _t100 = _t97 * _t7 - _t99 * _t10;
-    highp float _t101 = _t3 * _t89 * _t93;
-    highp float _t102 = _t101 * _t101;
-    highp float _t103 = _t102 * _t102;
-    highp float _t104 = _t103 * (2.48015876e-05 - _t101 * 2.75573029e-07 + (2.08744777e-09 - _t101 * 1.13046204e-11) * _t102) + (1.0 - _t101 * 0.5 + _t102 * (0.0416666679 - _t101 * 0.00138888892));
-    highp float _t105 = _t98 * _t88 * (_t103 * (_t102 * (1.60577024e-10 - _t101 * 7.54937183e-13) + (2.75573188e-06 - _t101 * 2.50520991e-08)) + (1.0 - _t101 * 0.166666672 + (0.00833333377 - _t101 * 0.000198412701) * _t102));
-    highp float _t106 = _t12 * _t104 - _t5 * _t105;
-    highp float _t107 = _t3 * _t91 * _t93;
-    highp float _t108 = _t107 * _t107;
-    highp float _t109 = _t108 * _t108;
-    highp float _t110 = 1.0 - 0.5 * _t107 + _t108 * (0.0416666679 - 0.00138888892 * _t107) + _t109 * ((2.08744777e-09 - 1.13046204e-11 * _t107) * _t108 + (2.48015876e-05 - 2.75573029e-07 * _t107));
-    highp float _t111 = _t98 * _t90 * (_t109 * ((1.60577024e-10 - 7.54937183e-13 * _t107) * _t108 + (2.75573188e-06 - 2.50520991e-08 * _t107)) + ((0.00833333377 - 0.000198412701 * _t107) * _t108 + (1.0 - 0.166666672 * _t107)));
-    highp float _t112 = _t14 * _t110 - _t9 * _t111;
-    highp float _t113 = _t99 * _t7 + _t97 * _t10;
-    highp float _t114 = _t9 * _t110 + _t14 * _t111;
-    highp float _t115 = _t12 * _t105 + _t5 * _t104;
-    highp float _t116 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t58 = _t48 + _t54 - _t53 - _t51;
+    highp float _t59 = _t58 * _t58;
+    highp float _t60 = _t55 * _t55;
+    highp float _t61 = _t57 + (_t59 + _t60);
+    highp float _t62 = (_t61 > 1.17549435e-38) ? 1.0 / _t61 : 0.0;
+    highp float _t63 = _t26 * (sqrt(_t61) * _t62);
+    highp float _t64 = _t55 * _t63;
+    highp float _t65 = _t27 * _t60 * _t62;
+    highp float _t66 = _t65 * _t65;
+    highp float _t67 = _t66 * _t66;
+    highp float _t68 = _t64 * (((1.60577024e-10 - _t65 * 7.54937183e-13) * _t66 + (2.75573188e-06 - _t65 * 2.50520991e-08)) * _t67 + (1.0 - _t65 * 0.166666672 + (0.00833333377 - _t65 * 0.000198412701) * _t66));
+    highp float _t69 = ((2.08744777e-09 - _t65 * 1.13046204e-11) * _t66 + (2.48015876e-05 - _t65 * 2.75573029e-07)) * _t67 + (1.0 - _t65 * 0.5 + (0.0416666679 - _t65 * 0.00138888892) * _t66);
+    highp float _t70 = _t1 * _t68 + _t12 * _t69;
+    highp float _t71 = _t62 * (_t27 * _t57);
+    highp float _t72 = _t71 * _t71;
+    highp float _t73 = _t72 * _t72;
+    highp float _t74 = (0.0416666679 - _t71 * 0.00138888892) * _t72 + (1.0 - _t71 * 0.5) + (2.48015876e-05 - _t71 * 2.75573029e-07 + (2.08744777e-09 - _t71 * 1.13046204e-11) * _t72) * _t73;
+    highp float _t75 = _t56 * _t63;
+    highp float _t76 = _t75 * ((0.00833333377 - _t71 * 0.000198412701) * _t72 + (1.0 - _t71 * 0.166666672) + (2.75573188e-06 - _t71 * 2.50520991e-08 + _t72 * (1.60577024e-10 - _t71 * 7.54937183e-13)) * _t73);
+    highp float _t77 = _t5 * _t74 + _t76 * _t9;
+    highp float _t78 = _t62 * (_t27 * _t59);
+    highp float _t79 = _t78 * _t78;
+    highp float _t80 = _t79 * _t79;
+    highp float _t81 = (2.48015876e-05 - _t78 * 2.75573029e-07 + (2.08744777e-09 - _t78 * 1.13046204e-11) * _t79) * _t80 + ((0.0416666679 - 0.00138888892 * _t78) * _t79 + (1.0 - _t78 * 0.5));
+    highp float _t82 = _t58 * _t63;
+    highp float _t83 = _t82 * (((1.60577024e-10 - 7.54937183e-13 * _t78) * _t79 + (2.75573188e-06 - 2.50520991e-08 * _t78)) * _t80 + (1.0 - 0.166666672 * _t78 + (0.00833333377 - 0.000198412701 * _t78) * _t79));
+    highp float _t84 = _t81 * _t7 - _t83 * _t3;
+    highp float _t85 = _t70 * _t77 * _t84;
+    highp float _t86 = _t74 * _t9 - _t76 * _t5;
+    highp float _t87 = _t81 * _t3 + _t83 * _t7;
+    highp float _t88 = _t86 * _t87;
+    highp float _t89 = _t70 * _t88;
+    highp float _t90 = _t1 * _t69 - _t12 * _t68;
+    highp float _t91 = _t77 * (_t87 * _t90);
+    highp float _t92 = _t89 + _t91;
+    highp float _t93 = _t86 * _t90 * _t84;
+    highp float _t94 = _t85 + _t92 + _t93;
+    highp float _t95 = _t90 * _t88;
+    highp float _t96 = _t90 * _t77 * _t84;
+    highp float _t97 = _t86 * _t70 * _t84;
+    highp float _t98 = _t87 * _t70 * _t77;
+    highp float _t99 = _t95 + _t96 - _t97 - _t98;
+    highp float _t100 = _t95 + _t97 - _t96 - _t98;
+    highp float _t101 = _t95 + _t98 - _t96 - _t97;
+    highp float _t102 = _t100 * _t100 + _t99 * _t99 + _t101 * _t101;
+    highp float _t103 = _t26 * (sqrt(_t102) * ((_t102 > 1.17549435e-38) ? 1.0 / _t102 : 0.0));
+    highp float _t104 = _t64 + _t103 * _t99;
+    highp float _t105 = _t103 * _t101 - _t82;
+    highp float _t106 = _t100 * _t103 + _t75;
+    highp float _t107 = _t94 - (_t99 + _t104 * _t94 * 0.5) * _t104 - _t105 * ((_t89 + _t93 - _t91 - _t85) * _t104 + _t101 + _t94 * _t105 * 0.5 - _t106 * (_t89 + _t85 - _t91 - _t93)) - _t106 * (_t100 + _t104 * (_t92 - _t85 - _t93) + _t106 * _t94 * 0.5);
+    highp float _t108 = _t6 * _t3 + (_t3 * _t15 + _t10 * _t7) + _t13 * _t7;
+    highp float _t109 = 1.73205256 * abs(_t26);
+    highp float _t110 = _t108 + _t109;
+    highp float _t111 = _t108 - _t109;
+    highp float _t112 = -_t25;
+    highp float _t113 = (_t112 <= 1.0) ? (((-1.0) <= _t112) ? _t112 : (-1.0)) : 1.0;
+    highp float _t114 = _t32 * _t113;
+    highp float _t115 = _t113 * _t113;
+    highp float _t116 = _t24 * (_t115 * _t20);
     highp float _t117 = _t116 * _t116;
-    highp float _t118 = _t24 * (_t117 * _t20);
-    highp float _t119 = _t118 * _t118;
-    highp float _t120 = _t119 * _t119;
-    highp float _t121 = (2.48015876e-05 - _t118 * 2.75573029e-07 + _t119 * (2.08744777e-09 - 1.13046204e-11 * _t118)) * _t120 + (_t119 * (0.0416666679 - 0.00138888892 * _t118) + (1.0 - _t118 * 0.5));
-    highp float _t122 = _t116 * _t25;
-    highp float _t123 = ((2.75573188e-06 - 2.50520991e-08 * _t118 + _t119 * (1.60577024e-10 - 7.54937183e-13 * _t118)) * _t120 + ((0.00833333377 - 0.000198412701 * _t118) * _t119 + (1.0 - 0.166666672 * _t118))) * (_t122 * _t19);
-    highp float _t124 = _t7 * _t121 - _t123 * _t10;
-    highp float _t125 = _t117 * _t22 * _t24;
-    highp float _t126 = _t125 * _t125;
-    highp float _t127 = _t126 * _t126;
-    highp float _t128 = _t127 * (2.48015876e-05 - _t125 * 2.75573029e-07 + (2.08744777e-09 - _t125 * 1.13046204e-11) * _t126) + ((0.0416666679 - 0.00138888892 * _t125) * _t126 + (1.0 - _t125 * 0.5));
-    highp float _t129 = _t122 * _t21 * (1.0 - 0.166666672 * _t125 + (0.00833333377 - 0.000198412701 * _t125) * _t126 + _t127 * (2.75573188e-06 - 2.50520991e-08 * _t125 + _t126 * (1.60577024e-10 - 7.54937183e-13 * _t125)));
-    highp float _t130 = _t5 * _t128 + _t12 * _t129;
-    highp float _t131 = _t117 * _t18 * _t24;
-    highp float _t132 = _t131 * _t131;
-    highp float _t133 = _t132 * _t132;
-    highp float _t134 = 1.0 - _t131 * 0.5 + (0.0416666679 - 0.00138888892 * _t131) * _t132 + (2.48015876e-05 - _t131 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t131) * _t132) * _t133;
-    highp float _t135 = ((0.00833333377 - 0.000198412701 * _t131) * _t132 + (1.0 - 0.166666672 * _t131) + ((1.60577024e-10 - 7.54937183e-13 * _t131) * _t132 + (2.75573188e-06 - 2.50520991e-08 * _t131)) * _t133) * (_t122 * _t17);
-    highp float _t136 = _t14 * _t134 - _t9 * _t135;
-    highp float _t137 = _t124 * _t130 * _t136;
-    highp float _t138 = _t128 * _t12 - _t5 * _t129;
-    highp float _t139 = _t10 * _t121 + _t123 * _t7;
-    highp float _t140 = _t138 * _t139 * _t136;
-    highp float _t141 = _t9 * _t134 + _t14 * _t135;
-    highp float _t142 = _t139 * _t141 * _t130;
-    highp float _t143 = _t124 * _t138 * _t141;
-    highp float _t144 = _t137 + _t140 - _t142 - _t143;
-    highp float _t145 = _t144 * _t144;
-    highp float _t146 = _t137 + _t142 - _t140 - _t143;
-    highp float _t147 = _t146 * _t146;
-    highp float _t148 = _t137 + _t143 - _t142 - _t140;
-    highp float _t149 = _t148 * _t148;
-    highp float _t150 = _t147 + (_t149 + _t145);
-    highp float _t151 = (_t150 > 1.17549435e-38) ? 1.0 / _t150 : 0.0;
-    highp float _t152 = _t117 * _t145 * _t151;
-    highp float _t153 = _t152 * _t152;
-    highp float _t154 = _t153 * _t153;
-    highp float _t155 = ((2.08744777e-09 - _t152 * 1.13046204e-11) * _t153 + (2.48015876e-05 - _t152 * 2.75573029e-07)) * _t154 + (1.0 - _t152 * 0.5 + (0.0416666679 - _t152 * 0.00138888892) * _t153);
-    highp float _t156 = _t116 * (sqrt(_t150) * _t151);
-    highp float _t157 = _t144 * _t156 * (((1.60577024e-10 - _t152 * 7.54937183e-13) * _t153 + (2.75573188e-06 - _t152 * 2.50520991e-08)) * _t154 + (1.0 - _t152 * 0.166666672 + (0.00833333377 - _t152 * 0.000198412701) * _t153));
-    highp float _t158 = _t9 * _t155 - _t14 * _t157;
-    highp float _t159 = _t151 * (_t117 * _t147);
-    highp float _t160 = _t159 * _t159;
-    highp float _t161 = _t160 * _t160;
-    highp float _t162 = (0.0416666679 - _t159 * 0.00138888892) * _t160 + (1.0 - _t159 * 0.5) + (2.48015876e-05 - _t159 * 2.75573029e-07 + (2.08744777e-09 - _t159 * 1.13046204e-11) * _t160) * _t161;
-    highp float _t163 = _t146 * _t156 * ((0.00833333377 - _t159 * 0.000198412701) * _t160 + (1.0 - _t159 * 0.166666672) + (2.75573188e-06 - _t159 * 2.50520991e-08 + _t160 * (1.60577024e-10 - _t159 * 7.54937183e-13)) * _t161);
-    highp float _t164 = _t162 * _t12 - _t163 * _t5;
-    highp float _t165 = _t151 * (_t117 * _t149);
+    highp float _t118 = _t117 * _t117;
+    highp float _t119 = _t114 * _t19 * ((0.00833333377 - _t116 * 0.000198412701) * _t117 + (1.0 - _t116 * 0.166666672) + _t118 * (2.75573188e-06 - _t116 * 2.50520991e-08 + (1.60577024e-10 - _t116 * 7.54937183e-13) * _t117));
+    highp float _t120 = ((2.08744777e-09 - _t116 * 1.13046204e-11) * _t117 + (2.48015876e-05 - _t116 * 2.75573029e-07)) * _t118 + (1.0 - _t116 * 0.5 + (0.0416666679 - _t116 * 0.00138888892) * _t117);
+    highp float _t121 = _t3 * _t119 + _t7 * _t120;
+    highp float _t122 = _t115 * _t22 * _t24;
+    highp float _t123 = _t122 * _t122;
+    highp float _t124 = _t123 * _t123;
+    highp float _t125 = (1.0 - 0.166666672 * _t122 + (0.00833333377 - 0.000198412701 * _t122) * _t123 + (_t123 * (1.60577024e-10 - 7.54937183e-13 * _t122) + (2.75573188e-06 - 2.50520991e-08 * _t122)) * _t124) * (_t114 * _t21);
+    highp float _t126 = 1.0 - _t122 * 0.5 + (0.0416666679 - 0.00138888892 * _t122) * _t123 + (_t123 * (2.08744777e-09 - 1.13046204e-11 * _t122) + (2.48015876e-05 - _t122 * 2.75573029e-07)) * _t124;
+    highp float _t127 = _t9 * _t125 + _t5 * _t126;
+    highp float _t128 = _t115 * _t18 * _t24;
+    highp float _t129 = _t128 * _t128;
+    highp float _t130 = _t129 * _t129;
+    highp float _t131 = 1.0 - _t128 * 0.5 + (0.0416666679 - _t128 * 0.00138888892) * _t129 + ((2.08744777e-09 - _t128 * 1.13046204e-11) * _t129 + (2.48015876e-05 - _t128 * 2.75573029e-07)) * _t130;
+    highp float _t132 = _t114 * _t17 * (_t129 * (0.00833333377 - _t128 * 0.000198412701) + (1.0 - _t128 * 0.166666672) + _t130 * (2.75573188e-06 - _t128 * 2.50520991e-08 + _t129 * (1.60577024e-10 - _t128 * 7.54937183e-13)));
+    highp float _t133 = _t1 * _t131 + _t12 * _t132;
+    highp float _t134 = _t121 * _t127 * _t133;
+    highp float _t135 = _t12 * _t131 - _t1 * _t132;
+    highp float _t136 = _t9 * _t126 - _t5 * _t125;
+    highp float _t137 = _t121 * _t135 * _t136;
+    highp float _t138 = _t3 * _t120 - _t7 * _t119;
+    highp float _t139 = _t138 * _t136 * _t133;
+    highp float _t140 = _t138 * _t127 * _t135;
+    highp float _t141 = _t134 + _t137 - _t139 - _t140;
+    highp float _t142 = _t141 * _t141;
+    highp float _t143 = _t134 + _t140 - _t137 - _t139;
+    highp float _t144 = _t143 * _t143;
+    highp float _t145 = _t134 + _t139 - _t137 - _t140;
+    highp float _t146 = _t145 * _t145;
+    highp float _t147 = _t142 + _t144 + _t146;
+    highp float _t148 = (_t147 > 1.17549435e-38) ? 1.0 / _t147 : 0.0;
+    highp float _t149 = _t148 * (_t142 * _t115);
+    highp float _t150 = _t149 * _t149;
+    highp float _t151 = _t150 * _t150;
+    highp float _t152 = _t150 * (0.0416666679 - _t149 * 0.00138888892) + (1.0 - _t149 * 0.5) + (_t150 * (2.08744777e-09 - _t149 * 1.13046204e-11) + (2.48015876e-05 - _t149 * 2.75573029e-07)) * _t151;
+    highp float _t153 = _t148 * sqrt(_t147) * _t113;
+    highp float _t154 = _t141 * _t153;
+    highp float _t155 = _t154 * (1.0 - _t149 * 0.166666672 + _t150 * (0.00833333377 - _t149 * 0.000198412701) + (_t150 * (1.60577024e-10 - _t149 * 7.54937183e-13) + (2.75573188e-06 - _t149 * 2.50520991e-08)) * _t151);
+    highp float _t156 = _t152 * _t7 + _t155 * _t3;
+    highp float _t157 = _t148 * (_t115 * _t144);
+    highp float _t158 = _t157 * _t157;
+    highp float _t159 = _t158 * _t158;
+    highp float _t160 = _t158 * (0.0416666679 - _t157 * 0.00138888892) + (1.0 - _t157 * 0.5) + _t159 * (2.48015876e-05 - _t157 * 2.75573029e-07 + (2.08744777e-09 - _t157 * 1.13046204e-11) * _t158);
+    highp float _t161 = _t143 * _t153;
+    highp float _t162 = (_t158 * (0.00833333377 - _t157 * 0.000198412701) + (1.0 - _t157 * 0.166666672) + _t159 * ((1.60577024e-10 - _t157 * 7.54937183e-13) * _t158 + (2.75573188e-06 - _t157 * 2.50520991e-08))) * _t161;
+    highp float _t163 = _t9 * _t160 - _t5 * _t162;
+    highp float _t164 = _t148 * (_t115 * _t146);
+    highp float _t165 = _t164 * _t164;
     highp float _t166 = _t165 * _t165;
-    highp float _t167 = _t166 * _t166;
-    highp float _t168 = (2.48015876e-05 - _t165 * 2.75573029e-07 + (2.08744777e-09 - _t165 * 1.13046204e-11) * _t166) * _t167 + ((0.0416666679 - 0.00138888892 * _t165) * _t166 + (1.0 - _t165 * 0.5));
-    highp float _t169 = _t148 * _t156 * (((1.60577024e-10 - 7.54937183e-13 * _t165) * _t166 + (2.75573188e-06 - 2.50520991e-08 * _t165)) * _t167 + (1.0 - 0.166666672 * _t165 + (0.00833333377 - 0.000198412701 * _t165) * _t166));
-    highp float _t170 = _t168 * _t7 + _t169 * _t10;
-    highp float _t171 = _t158 * (_t164 * _t170);
-    highp float _t172 = _t5 * _t162 + _t163 * _t12;
-    highp float _t173 = _t168 * _t10 - _t169 * _t7;
-    highp float _t174 = _t158 * _t172 * _t173;
-    highp float _t175 = _t9 * _t157 + _t14 * _t155;
-    highp float _t176 = _t164 * _t175 * _t173;
-    highp float _t177 = _t170 * _t175 * _t172;
-    highp float _t178 = _t171 + _t174 - _t176 - _t177;
-    highp float _t179 = _t178 * _t178;
-    highp float _t180 = _t171 + _t176 - _t174 - _t177;
-    highp float _t181 = _t180 * _t180;
-    highp float _t182 = _t171 + _t177 - _t174 - _t176;
-    highp float _t183 = _t182 * _t182;
-    highp float _t184 = _t181 + _t179 + _t183;
-    highp float _t185 = (_t184 > 1.17549435e-38) ? 1.0 / _t184 : 0.0;
-    highp float _t186 = _t117 * _t179 * _t185;
-    highp float _t187 = _t186 * _t186;
-    highp float _t188 = _t187 * _t187;
-    highp float _t189 = (2.48015876e-05 - _t186 * 2.75573029e-07 + _t187 * (2.08744777e-09 - 1.13046204e-11 * _t186)) * _t188 + (1.0 - _t186 * 0.5 + _t187 * (0.0416666679 - 0.00138888892 * _t186));
-    highp float _t190 = _t116 * (sqrt(_t184) * _t185);
-    highp float _t191 = ((2.75573188e-06 - 2.50520991e-08 * _t186 + _t187 * (1.60577024e-10 - 7.54937183e-13 * _t186)) * _t188 + (1.0 - 0.166666672 * _t186 + _t187 * (0.00833333377 - 0.000198412701 * _t186))) * (_t190 * _t178);
-    highp float _t192 = _t14 * _t189 - _t9 * _t191;
-    highp float _t193 = _t117 * _t181 * _t185;
-    highp float _t194 = _t193 * _t193;
-    highp float _t195 = _t194 * _t194;
-    highp float _t196 = _t194 * (0.0416666679 - 0.00138888892 * _t193) + (1.0 - _t193 * 0.5) + _t195 * ((2.08744777e-09 - 1.13046204e-11 * _t193) * _t194 + (2.48015876e-05 - _t193 * 2.75573029e-07));
-    highp float _t197 = (_t195 * (2.75573188e-06 - 2.50520991e-08 * _t193 + (1.60577024e-10 - 7.54937183e-13 * _t193) * _t194) + ((0.00833333377 - 0.000198412701 * _t193) * _t194 + (1.0 - 0.166666672 * _t193))) * (_t180 * _t190);
-    highp float _t198 = _t196 * _t5 - _t197 * _t12;
-    highp float _t199 = _t117 * _t183 * _t185;
-    highp float _t200 = _t199 * _t199;
-    highp float _t201 = _t200 * _t200;
-    highp float _t202 = _t201 * (2.48015876e-05 - _t199 * 2.75573029e-07 + (2.08744777e-09 - _t199 * 1.13046204e-11) * _t200) + ((0.0416666679 - _t199 * 0.00138888892) * _t200 + (1.0 - _t199 * 0.5));
-    highp float _t203 = _t190 * _t182 * (1.0 - _t199 * 0.166666672 + (0.00833333377 - _t199 * 0.000198412701) * _t200 + ((1.60577024e-10 - _t199 * 7.54937183e-13) * _t200 + (2.75573188e-06 - _t199 * 2.50520991e-08)) * _t201);
-    highp float _t204 = _t10 * _t202 - _t203 * _t7;
-    highp float _t205 = _t203 * _t10 + _t7 * _t202;
-    highp float _t206 = _t196 * _t12 + _t5 * _t197;
-    highp float _t207 = _t9 * _t189 + _t14 * _t191;
-    return (_t100 * (_t106 * _t112) + (_t113 * (_t106 * _t114) + _t112 * _t113 * _t115) + _t114 * _t100 * _t115) * (_t192 * _t198 * _t204 + _t205 * _t206 * _t192 + _t205 * _t207 * _t198 + _t206 * _t207 * _t204);
+    highp float _t167 = _t145 * _t153;
+    highp float _t168 = (_t166 * (_t165 * (1.60577024e-10 - _t164 * 7.54937183e-13) + (2.75573188e-06 - _t164 * 2.50520991e-08)) + (_t165 * (0.00833333377 - _t164 * 0.000198412701) + (1.0 - _t164 * 0.166666672))) * _t167;
+    highp float _t169 = _t165 * (0.0416666679 - _t164 * 0.00138888892) + (1.0 - _t164 * 0.5) + _t166 * (2.48015876e-05 - _t164 * 2.75573029e-07 + _t165 * (2.08744777e-09 - _t164 * 1.13046204e-11));
+    highp float _t170 = _t168 * _t12 + _t1 * _t169;
+    highp float _t171 = _t163 * _t170;
+    highp float _t172 = _t156 * _t171;
+    highp float _t173 = _t5 * _t160 + _t9 * _t162;
+    highp float _t174 = _t173 * _t170;
+    highp float _t175 = _t152 * _t3 - _t155 * _t7;
+    highp float _t176 = _t174 * _t175;
+    highp float _t177 = _t12 * _t169 - _t168 * _t1;
+    highp float _t178 = _t163 * _t175 * _t177;
+    highp float _t179 = _t176 + _t178;
+    highp float _t180 = _t173 * _t156 * _t177;
+    highp float _t181 = _t172 + _t179 + _t180;
+    highp float _t182 = _t174 * _t156;
+    highp float _t183 = _t173 * _t175 * _t177;
+    highp float _t184 = _t175 * _t171;
+    highp float _t185 = _t163 * _t156 * _t177;
+    highp float _t186 = _t182 + _t183 - _t184 - _t185;
+    highp float _t187 = _t182 + _t185 - _t183 - _t184;
+    highp float _t188 = _t182 + _t184 - _t183 - _t185;
+    highp float _t189 = _t186 * _t186 + _t187 * _t187 + _t188 * _t188;
+    highp float _t190 = sqrt(_t189) * ((_t189 > 1.17549435e-38) ? 1.0 / _t189 : 0.0) * _t113;
+    highp float _t191 = _t161 - _t190 * _t186;
+    highp float _t192 = _t167 - _t190 * _t188;
+    highp float _t193 = _t154 - _t190 * _t187;
+    highp float _t194 = _t181 + _t191 * ((_t179 - _t172 - _t180) * _t192 + _t186 - _t181 * _t191 * 0.5) - (_t181 * _t192 * 0.5 - _t188) * _t192 - _t193 * (_t181 * _t193 * 0.5 + (_t176 + _t180 - _t178 - _t172) * _t192 + (_t176 + _t172 - _t178 - _t180) * _t191 - _t187);
+    highp float _t195 = 1.73205256 * abs(_t113);
+    highp float _t196 = _t108 + _t195;
+    highp float _t197 = _t108 - _t195;
+    return ((_t107 <= _t110) ? ((_t111 <= _t107) ? _t107 : _t111) : _t110) * ((_t194 <= _t196) ? ((_t197 <= _t194) ? _t194 : _t197) : _t196);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 490.

@@ -11,7 +11,9 @@
  * Source:  Schoen 1970, NASA TN D-5541; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
  * Method:  foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
  *          n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections
- *          give order 2(K+1) = 4.
+ *          give order 2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1),
+ *          evaluated at q_K (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own
+ *          order, and q_K needs no trig of its own).
  *          offsetgen, docs/projection.md (foot-point projection).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
@@ -40,15 +42,16 @@
  *   foot-point estimate and updates it at every projection: each wall converges at order 2 = K + 1
  *   to the distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2.
  *   Passing a local t(p) to _shell reads it at p instead: second order at best.
- * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
- *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too):
- *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
- *   0, so every function returns a finite value for finite input (do not compile with
- *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
- *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
- *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
- *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
+ * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+ *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too),
+ *   and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so
+ *   this never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no
+ *   phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for
+ *   finite input (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates
+ *   come from their values at p by angle addition, which is exact while |h| <= 1 (natural units:
+ *   |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is
+ *   clamped to 1, so thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above.
+ *   n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -57,11 +60,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    14
- *   offset   300
- *   shell    574
+ *   offset   226
+ *   shell    420
  *   normal   319
  */
-/* offsetgen-metadata {"format":1,"language":"cuda","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o4","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":300,"shell":574,"normal":319}} */
+/* offsetgen-metadata {"format":1,"language":"cuda","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o4","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":226,"shell":420,"normal":319}} */
 #ifndef OFFSETGEN_GYROID_PROJ_O4_CUH
 #define OFFSETGEN_GYROID_PROJ_O4_CUH
 
@@ -104,92 +107,90 @@ __host__ __device__ inline double gyroid_proj_o4_field(double x, double y, doubl
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 300
+ * Total ops: 226
  */
 __host__ __device__ inline double gyroid_proj_o4_offset(double x, double y, double z, double h)
 {
-    const double _t0 = x * 2.0;
-    double _sp1, _cp1;
-    sincospi(_t0, &_sp1, &_cp1);
-    const double _t1 = _cp1;
-    const double _t2 = 6.2831853071795862 * h;
-    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    const double _t4 = _t3 * _t3;
-    const double _t5 = z * 2.0;
+    const double _t0 = z * 2.0;
     double _sp0, _cp0;
-    sincospi(_t5, &_sp0, &_cp0);
-    const double _t6 = _sp0;
-    const double _t7 = _sp1;
-    const double _t8 = y * 2.0;
+    sincospi(_t0, &_sp0, &_cp0);
+    const double _t1 = _sp0;
+    const double _t2 = x * 2.0;
+    double _sp1, _cp1;
+    sincospi(_t2, &_sp1, &_cp1);
+    const double _t3 = _sp1;
+    const double _t4 = _cp1;
+    const double _t5 = y * 2.0;
     double _sp2, _cp2;
-    sincospi(_t8, &_sp2, &_cp2);
-    const double _t9 = _cp2;
-    const double _t10 = _t6 * _t7 - _t1 * _t9;
-    const double _t11 = _t10 * _t10;
-    const double _t12 = _sp2;
-    const double _t13 = _cp0;
-    const double _t14 = _t7 * _t12 - _t9 * _t13;
-    const double _t15 = _t14 * _t14;
-    const double _t16 = _t1 * _t13 - _t6 * _t12;
-    const double _t17 = _t16 * _t16;
-    const double _t18 = _t11 + (_t15 + _t17);
-    const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
-    const double _t20 = _t19 * (_t4 * _t17);
+    sincospi(_t5, &_sp2, &_cp2);
+    const double _t6 = _cp2;
+    const double _t7 = _t1 * _t3 - _t4 * _t6;
+    const double _t8 = _t7 * _t7;
+    const double _t9 = _sp2;
+    const double _t10 = _cp0;
+    const double _t11 = _t3 * _t9 - _t6 * _t10;
+    const double _t12 = _t11 * _t11;
+    const double _t13 = _t4 * _t10 - _t1 * _t9;
+    const double _t14 = _t13 * _t13;
+    const double _t15 = _t8 + (_t12 + _t14);
+    const double _t16 = (_t15 > 1.1754943508222875e-38) ? 1.0 / _t15 : 0.0;
+    const double _t17 = 6.2831853071795862 * h;
+    const double _t18 = (_t17 <= 1.0) ? (((-1.0) <= _t17) ? _t17 : (-1.0)) : 1.0;
+    const double _t19 = _t18 * _t18;
+    const double _t20 = _t16 * (_t19 * _t14);
     const double _t21 = _t20 * _t20;
     const double _t22 = _t21 * _t21;
     const double _t23 = _t22 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t20) * _t21 + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07)) + (_t21 * (0.041666666666666102 - 0.0013888888888798428 * _t20) + (1.0 - _t20 * 0.5));
-    const double _t24 = _t3 * (_t19 * sqrt(_t18));
-    const double _t25 = _t16 * _t24 * (1.0 - 0.16666666666666666 * _t20 + _t21 * (0.0083333333333333003 - 0.00019841269841216566 * _t20) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) * _t21 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t20)) * _t22);
-    const double _t26 = _t6 * _t23 - _t25 * _t13;
-    const double _t27 = _t19 * (_t11 * _t4);
-    const double _t28 = _t27 * _t27;
-    const double _t29 = _t28 * _t28;
-    const double _t30 = _t10 * _t24 * (_t29 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t27 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t27) * _t28) + (1.0 - 0.16666666666666666 * _t27 + (0.0083333333333333003 - 0.00019841269841216566 * _t27) * _t28));
-    const double _t31 = _t28 * (0.041666666666666102 - 0.0013888888888798428 * _t27) + (1.0 - _t27 * 0.5) + (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t27 * 1.1304620460700782e-11) * _t28) * _t29;
-    const double _t32 = _t1 * _t30 + _t31 * _t7;
-    const double _t33 = _t19 * (_t15 * _t4);
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * _t34;
-    const double _t36 = _t35 * (_t34 * (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07)) + (1.0 - _t33 * 0.5 + _t34 * (0.041666666666666102 - 0.0013888888888798428 * _t33));
-    const double _t37 = _t24 * _t14 * (_t34 * (0.0083333333333333003 - _t33 * 0.00019841269841216566) + (1.0 - _t33 * 0.16666666666666666) + _t35 * (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08 + _t34 * (1.6057701922579786e-10 - _t33 * 7.549371704181243e-13)));
-    const double _t38 = _t9 * _t36 - _t37 * _t12;
-    const double _t39 = _t1 * _t31 - _t30 * _t7;
-    const double _t40 = _t26 * _t32 - _t38 * _t39;
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t23 * _t13 + _t6 * _t25;
-    const double _t43 = _t37 * _t9 + _t36 * _t12;
-    const double _t44 = _t42 * _t39 - _t43 * _t26;
-    const double _t45 = _t44 * _t44;
-    const double _t46 = _t43 * _t32 - _t42 * _t38;
-    const double _t47 = _t46 * _t46;
-    const double _t48 = _t45 + _t41 + _t47;
-    const double _t49 = (_t48 > 1.1754943508222875e-38) ? 1.0 / _t48 : 0.0;
-    const double _t50 = _t4 * _t41 * _t49;
-    const double _t51 = _t50 * _t50;
-    const double _t52 = _t51 * _t51;
-    const double _t53 = (0.041666666666666102 - 0.0013888888888798428 * _t50) * _t51 + (1.0 - _t50 * 0.5) + (2.4801587247292686e-05 - _t50 * 2.7557303701922228e-07 + _t51 * (2.0874477943664777e-09 - _t50 * 1.1304620460700782e-11)) * _t52;
-    const double _t54 = _t3 * (sqrt(_t48) * _t49);
-    const double _t55 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t50 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t50) * _t51) * _t52 + (1.0 - 0.16666666666666666 * _t50 + _t51 * (0.0083333333333333003 - 0.00019841269841216566 * _t50))) * (_t54 * _t40);
-    const double _t56 = _t4 * _t45 * _t49;
-    const double _t57 = _t56 * _t56;
-    const double _t58 = _t57 * _t57;
-    const double _t59 = 1.0 - _t56 * 0.5 + (0.041666666666666102 - _t56 * 0.0013888888888798428) * _t57 + (2.4801587247292686e-05 - _t56 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t56 * 1.1304620460700782e-11) * _t57) * _t58;
-    const double _t60 = (1.0 - _t56 * 0.16666666666666666 + (0.0083333333333333003 - _t56 * 0.00019841269841216566) * _t57 + _t58 * (_t57 * (1.6057701922579786e-10 - _t56 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t56 * 2.5052099244914114e-08))) * (_t54 * _t44);
-    const double _t61 = _t4 * _t47 * _t49;
-    const double _t62 = _t61 * _t61;
-    const double _t63 = _t62 * _t62;
-    const double _t64 = _t63 * (2.4801587247292686e-05 - _t61 * 2.7557303701922228e-07 + _t62 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t61)) + ((0.041666666666666102 - 0.0013888888888798428 * _t61) * _t62 + (1.0 - _t61 * 0.5));
-    const double _t65 = (_t63 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t61 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t61) * _t62) + (1.0 - 0.16666666666666666 * _t61 + (0.0083333333333333003 - 0.00019841269841216566 * _t61) * _t62)) * (_t54 * _t46);
-    return (_t1 * _t53 - _t55 * _t7) * (_t6 * _t59 - _t60 * _t13) + (_t1 * _t55 + _t7 * _t53) * (_t9 * _t64 - _t65 * _t12) + (_t6 * _t60 + _t59 * _t13) * (_t9 * _t65 + _t64 * _t12);
+    const double _t24 = _t18 * (_t16 * sqrt(_t15));
+    const double _t25 = _t13 * _t24;
+    const double _t26 = _t25 * (1.0 - 0.16666666666666666 * _t20 + _t21 * (0.0083333333333333003 - 0.00019841269841216566 * _t20) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t20) * _t21 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t20)) * _t22);
+    const double _t27 = _t23 * _t10 + _t1 * _t26;
+    const double _t28 = _t24 * _t11;
+    const double _t29 = _t16 * (_t12 * _t19);
+    const double _t30 = _t29 * _t29;
+    const double _t31 = _t30 * _t30;
+    const double _t32 = _t28 * (_t30 * (0.0083333333333333003 - _t29 * 0.00019841269841216566) + (1.0 - _t29 * 0.16666666666666666) + _t31 * (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13)));
+    const double _t33 = _t31 * (_t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07)) + (1.0 - _t29 * 0.5 + _t30 * (0.041666666666666102 - 0.0013888888888798428 * _t29));
+    const double _t34 = _t32 * _t6 + _t33 * _t9;
+    const double _t35 = _t27 * _t34;
+    const double _t36 = _t16 * (_t8 * _t19);
+    const double _t37 = _t36 * _t36;
+    const double _t38 = _t37 * _t37;
+    const double _t39 = _t37 * (0.041666666666666102 - 0.0013888888888798428 * _t36) + (1.0 - _t36 * 0.5) + (2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11) * _t37) * _t38;
+    const double _t40 = _t7 * _t24;
+    const double _t41 = _t40 * (_t38 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t36 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t36) * _t37) + (1.0 - 0.16666666666666666 * _t36 + (0.0083333333333333003 - 0.00019841269841216566 * _t36) * _t37));
+    const double _t42 = _t4 * _t39 - _t41 * _t3;
+    const double _t43 = _t1 * _t23 - _t26 * _t10;
+    const double _t44 = _t42 * _t43;
+    const double _t45 = _t27 * _t42 - _t34 * _t43;
+    const double _t46 = _t4 * _t41 + _t39 * _t3;
+    const double _t47 = _t6 * _t33 - _t32 * _t9;
+    const double _t48 = _t43 * _t46 - _t47 * _t42;
+    const double _t49 = _t34 * _t46 - _t27 * _t47;
+    const double _t50 = _t45 * _t45 + _t48 * _t48 + _t49 * _t49;
+    const double _t51 = _t18 * (sqrt(_t50) * ((_t50 > 1.1754943508222875e-38) ? 1.0 / _t50 : 0.0));
+    const double _t52 = _t25 - _t51 * _t45;
+    const double _t53 = _t51 * _t49 - _t28;
+    const double _t54 = _t47 * _t46;
+    const double _t55 = _t35 + _t54;
+    const double _t56 = _t51 * _t48 - _t40;
+    const double _t57 = -(((_t35 + _t44) * _t52 * 0.5 - _t45) * _t52 + ((_t47 * _t43 * _t52 + _t53 * _t55 * 0.5 + _t49) * _t53 + _t56 * (_t56 * (_t44 + _t54) * 0.5 + (_t27 * _t46 * _t52 + (_t42 * _t34 * _t53 + _t48)))) - (_t44 + _t55));
+    const double _t58 = 1.7320525396196846 * fabs(_t18);
+    const double _t59 = _t6 * _t3 + (_t4 * _t1 + _t10 * _t9);
+    const double _t60 = _t58 + _t59;
+    const double _t61 = _t59 - _t58;
+    return (_t57 <= _t60) ? ((_t61 <= _t57) ? _t57 : _t61) : _t60;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 574
+ * Total ops: 420
  */
 __host__ __device__ inline double gyroid_proj_o4_shell(double x, double y, double z, double t)
 {
-    const double _t0 = 6.2831853071795862 * (t * 0.5);
-    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    const double _t0 = y * 2.0;
+    double _sp2, _cp2;
+    sincospi(_t0, &_sp2, &_cp2);
+    const double _t1 = _cp2;
     const double _t2 = z * 2.0;
     double _sp0, _cp0;
     sincospi(_t2, &_sp0, &_cp0);
@@ -199,118 +200,107 @@ __host__ __device__ inline double gyroid_proj_o4_shell(double x, double y, doubl
     sincospi(_t4, &_sp1, &_cp1);
     const double _t5 = _sp1;
     const double _t6 = _cp1;
-    const double _t7 = y * 2.0;
-    double _sp2, _cp2;
-    sincospi(_t7, &_sp2, &_cp2);
-    const double _t8 = _cp2;
-    const double _t9 = _t3 * _t5 - _t6 * _t8;
-    const double _t10 = _t9 * _t9;
-    const double _t11 = _sp2;
-    const double _t12 = _cp0;
-    const double _t13 = _t5 * _t11 - _t8 * _t12;
+    const double _t7 = _t3 * _t5 - _t6 * _t1;
+    const double _t8 = _t7 * _t7;
+    const double _t9 = _sp2;
+    const double _t10 = _cp0;
+    const double _t11 = _t5 * _t9 - _t1 * _t10;
+    const double _t12 = _t11 * _t11;
+    const double _t13 = _t6 * _t10 - _t3 * _t9;
     const double _t14 = _t13 * _t13;
-    const double _t15 = _t6 * _t12 - _t3 * _t11;
-    const double _t16 = _t15 * _t15;
-    const double _t17 = _t10 + (_t14 + _t16);
-    const double _t18 = (_t17 > 1.1754943508222875e-38) ? 1.0 / _t17 : 0.0;
-    const double _t19 = _t1 * _t1;
-    const double _t20 = _t18 * (_t19 * _t14);
+    const double _t15 = _t8 + (_t12 + _t14);
+    const double _t16 = (_t15 > 1.1754943508222875e-38) ? 1.0 / _t15 : 0.0;
+    const double _t17 = 6.2831853071795862 * (t * 0.5);
+    const double _t18 = (_t17 <= 1.0) ? (((-1.0) <= _t17) ? _t17 : (-1.0)) : 1.0;
+    const double _t19 = _t18 * _t18;
+    const double _t20 = _t16 * (_t19 * _t12);
     const double _t21 = _t20 * _t20;
     const double _t22 = _t21 * _t21;
     const double _t23 = (_t21 * (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07)) * _t22 + ((0.041666666666666102 - _t20 * 0.0013888888888798428) * _t21 + (1.0 - _t20 * 0.5));
-    const double _t24 = _t18 * sqrt(_t17);
-    const double _t25 = _t1 * _t24;
-    const double _t26 = (_t21 * (0.0083333333333333003 - _t20 * 0.00019841269841216566) + (1.0 - _t20 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) * _t21 + (2.755731919201122e-06 - _t20 * 2.5052099244914114e-08)) * _t22) * (_t25 * _t13);
-    const double _t27 = _t23 * _t11 + _t26 * _t8;
-    const double _t28 = _t19 * _t16 * _t18;
-    const double _t29 = _t28 * _t28;
+    const double _t24 = _t16 * sqrt(_t15);
+    const double _t25 = _t18 * _t24;
+    const double _t26 = _t25 * _t11;
+    const double _t27 = (_t21 * (0.0083333333333333003 - _t20 * 0.00019841269841216566) + (1.0 - _t20 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) * _t21 + (2.755731919201122e-06 - _t20 * 2.5052099244914114e-08)) * _t22) * _t26;
+    const double _t28 = _t1 * _t23 - _t27 * _t9;
+    const double _t29 = _t16 * (_t8 * _t19);
     const double _t30 = _t29 * _t29;
-    const double _t31 = _t29 * (0.041666666666666102 - 0.0013888888888798428 * _t28) + (1.0 - _t28 * 0.5) + _t30 * (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11) * _t29);
-    const double _t32 = ((0.0083333333333333003 - 0.00019841269841216566 * _t28) * _t29 + (1.0 - 0.16666666666666666 * _t28) + _t30 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) * _t29)) * (_t25 * _t15);
-    const double _t33 = _t3 * _t31 - _t32 * _t12;
-    const double _t34 = _t31 * _t12 + _t32 * _t3;
-    const double _t35 = _t18 * (_t10 * _t19);
-    const double _t36 = _t35 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = 1.0 - _t35 * 0.5 + _t36 * (0.041666666666666102 - _t35 * 0.0013888888888798428) + _t37 * (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07 + _t36 * (2.0874477943664777e-09 - _t35 * 1.1304620460700782e-11));
-    const double _t39 = (_t36 * (0.0083333333333333003 - _t35 * 0.00019841269841216566) + (1.0 - _t35 * 0.16666666666666666) + _t37 * (_t36 * (1.6057701922579786e-10 - _t35 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t35 * 2.5052099244914114e-08))) * (_t25 * _t9);
-    const double _t40 = _t6 * _t38 - _t39 * _t5;
-    const double _t41 = _t27 * _t33 - _t34 * _t40;
-    const double _t42 = _t41 * _t41;
-    const double _t43 = _t6 * _t39 + _t5 * _t38;
-    const double _t44 = _t8 * _t23 - _t26 * _t11;
-    const double _t45 = _t33 * _t43 - _t44 * _t40;
-    const double _t46 = _t45 * _t45;
-    const double _t47 = _t34 * _t44 - _t27 * _t43;
-    const double _t48 = _t47 * _t47;
-    const double _t49 = _t42 + _t46 + _t48;
-    const double _t50 = (_t49 > 1.1754943508222875e-38) ? 1.0 / _t49 : 0.0;
-    const double _t51 = _t1 * (_t50 * sqrt(_t49));
-    const double _t52 = _t50 * (_t19 * _t42);
-    const double _t53 = _t52 * _t52;
-    const double _t54 = _t53 * _t53;
-    const double _t55 = _t51 * _t41 * (_t54 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t52) * _t53 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t52)) + ((0.0083333333333333003 - 0.00019841269841216566 * _t52) * _t53 + (1.0 - 0.16666666666666666 * _t52)));
-    const double _t56 = ((2.0874477943664777e-09 - _t52 * 1.1304620460700782e-11) * _t53 + (2.4801587247292686e-05 - _t52 * 2.7557303701922228e-07)) * _t54 + ((0.041666666666666102 - 0.0013888888888798428 * _t52) * _t53 + (1.0 - _t52 * 0.5));
-    const double _t57 = _t50 * (_t19 * _t46);
-    const double _t58 = _t57 * _t57;
-    const double _t59 = _t58 * _t58;
-    const double _t60 = (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t57 * 1.1304620460700782e-11) * _t58) * _t59 + (1.0 - _t57 * 0.5 + _t58 * (0.041666666666666102 - _t57 * 0.0013888888888798428));
-    const double _t61 = (_t59 * ((1.6057701922579786e-10 - _t57 * 7.549371704181243e-13) * _t58 + (2.755731919201122e-06 - _t57 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t57 * 0.00019841269841216566) * _t58 + (1.0 - _t57 * 0.16666666666666666))) * (_t51 * _t45);
-    const double _t62 = _t50 * (_t19 * _t48);
-    const double _t63 = _t62 * _t62;
-    const double _t64 = _t63 * _t63;
-    const double _t65 = (2.4801587247292686e-05 - _t62 * 2.7557303701922228e-07 + _t63 * (2.0874477943664777e-09 - _t62 * 1.1304620460700782e-11)) * _t64 + (_t63 * (0.041666666666666102 - _t62 * 0.0013888888888798428) + (1.0 - _t62 * 0.5));
-    const double _t66 = _t51 * _t47 * (1.0 - _t62 * 0.16666666666666666 + _t63 * (0.0083333333333333003 - _t62 * 0.00019841269841216566) + _t64 * (_t63 * (1.6057701922579786e-10 - _t62 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t62 * 2.5052099244914114e-08)));
-    const double _t67 = -_t0;
-    const double _t68 = (_t67 <= 1.0) ? (((-1.0) <= _t67) ? _t67 : (-1.0)) : 1.0;
-    const double _t69 = _t68 * _t68;
-    const double _t70 = _t18 * (_t69 * _t14);
-    const double _t71 = _t70 * _t70;
-    const double _t72 = _t71 * _t71;
-    const double _t73 = 1.0 - _t70 * 0.5 + (0.041666666666666102 - _t70 * 0.0013888888888798428) * _t71 + ((2.0874477943664777e-09 - _t70 * 1.1304620460700782e-11) * _t71 + (2.4801587247292686e-05 - _t70 * 2.7557303701922228e-07)) * _t72;
-    const double _t74 = _t24 * _t68;
-    const double _t75 = _t74 * _t13 * ((_t71 * (1.6057701922579786e-10 - _t70 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t70 * 2.5052099244914114e-08)) * _t72 + ((0.0083333333333333003 - _t70 * 0.00019841269841216566) * _t71 + (1.0 - _t70 * 0.16666666666666666)));
-    const double _t76 = _t73 * _t11 + _t75 * _t8;
-    const double _t77 = _t18 * (_t10 * _t69);
-    const double _t78 = _t77 * _t77;
-    const double _t79 = _t78 * _t78;
-    const double _t80 = ((0.0083333333333333003 - _t77 * 0.00019841269841216566) * _t78 + (1.0 - _t77 * 0.16666666666666666) + _t79 * (2.755731919201122e-06 - _t77 * 2.5052099244914114e-08 + _t78 * (1.6057701922579786e-10 - _t77 * 7.549371704181243e-13))) * (_t9 * _t74);
-    const double _t81 = 1.0 - _t77 * 0.5 + _t78 * (0.041666666666666102 - _t77 * 0.0013888888888798428) + _t79 * (2.4801587247292686e-05 - _t77 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t77 * 1.1304620460700782e-11) * _t78);
-    const double _t82 = _t6 * _t80 + _t81 * _t5;
-    const double _t83 = _t8 * _t73 - _t75 * _t11;
-    const double _t84 = _t18 * (_t69 * _t16);
-    const double _t85 = _t84 * _t84;
-    const double _t86 = _t85 * _t85;
-    const double _t87 = (_t86 * (_t85 * (1.6057701922579786e-10 - _t84 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t84 * 2.5052099244914114e-08)) + (_t85 * (0.0083333333333333003 - _t84 * 0.00019841269841216566) + (1.0 - _t84 * 0.16666666666666666))) * (_t74 * _t15);
-    const double _t88 = ((2.0874477943664777e-09 - _t84 * 1.1304620460700782e-11) * _t85 + (2.4801587247292686e-05 - _t84 * 2.7557303701922228e-07)) * _t86 + (1.0 - _t84 * 0.5 + _t85 * (0.041666666666666102 - _t84 * 0.0013888888888798428));
-    const double _t89 = _t3 * _t87 + _t12 * _t88;
-    const double _t90 = _t76 * _t82 - _t83 * _t89;
-    const double _t91 = _t90 * _t90;
-    const double _t92 = _t81 * _t6 - _t5 * _t80;
-    const double _t93 = _t3 * _t88 - _t87 * _t12;
-    const double _t94 = _t92 * _t89 - _t76 * _t93;
-    const double _t95 = _t94 * _t94;
-    const double _t96 = _t82 * _t93 - _t83 * _t92;
-    const double _t97 = _t96 * _t96;
-    const double _t98 = _t91 + (_t95 + _t97);
-    const double _t99 = (_t98 > 1.1754943508222875e-38) ? 1.0 / _t98 : 0.0;
-    const double _t100 = _t99 * (_t69 * _t95);
-    const double _t101 = _t100 * _t100;
-    const double _t102 = _t101 * _t101;
-    const double _t103 = 1.0 - _t100 * 0.5 + _t101 * (0.041666666666666102 - 0.0013888888888798428 * _t100) + ((2.0874477943664777e-09 - _t100 * 1.1304620460700782e-11) * _t101 + (2.4801587247292686e-05 - _t100 * 2.7557303701922228e-07)) * _t102;
-    const double _t104 = sqrt(_t98) * _t99 * _t68;
-    const double _t105 = _t104 * _t94 * (1.0 - 0.16666666666666666 * _t100 + (0.0083333333333333003 - _t100 * 0.00019841269841216566) * _t101 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t100 + _t101 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t100)) * _t102);
-    const double _t106 = _t99 * (_t69 * _t97);
-    const double _t107 = _t106 * _t106;
-    const double _t108 = _t107 * _t107;
-    const double _t109 = _t108 * (2.4801587247292686e-05 - _t106 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t106) * _t107) + ((0.041666666666666102 - 0.0013888888888798428 * _t106) * _t107 + (1.0 - _t106 * 0.5));
-    const double _t110 = ((0.0083333333333333003 - 0.00019841269841216566 * _t106) * _t107 + (1.0 - 0.16666666666666666 * _t106) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t106) * _t107 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t106)) * _t108) * (_t104 * _t96);
-    const double _t111 = _t99 * (_t69 * _t91);
-    const double _t112 = _t111 * _t111;
-    const double _t113 = _t112 * _t112;
-    const double _t114 = (0.041666666666666102 - 0.0013888888888798428 * _t111) * _t112 + (1.0 - _t111 * 0.5) + (_t112 * (2.0874477943664777e-09 - _t111 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t111 * 2.7557303701922228e-07)) * _t113;
-    const double _t115 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t111 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t111) * _t112) * _t113 + (1.0 - 0.16666666666666666 * _t111 + (0.0083333333333333003 - 0.00019841269841216566 * _t111) * _t112)) * (_t104 * _t90);
-    return ((_t55 * _t12 + _t3 * _t56) * (_t6 * _t60 - _t61 * _t5) + ((_t56 * _t12 - _t3 * _t55) * (_t65 * _t11 - _t8 * _t66) + (_t66 * _t11 + _t8 * _t65) * (_t5 * _t60 + _t61 * _t6))) * ((_t3 * _t103 - _t105 * _t12) * (_t6 * _t109 - _t110 * _t5) + ((_t114 * _t11 + _t8 * _t115) * (_t105 * _t3 + _t12 * _t103) + (_t8 * _t114 - _t115 * _t11) * (_t109 * _t5 + _t6 * _t110)));
+    const double _t31 = _t30 * _t30;
+    const double _t32 = _t25 * _t7;
+    const double _t33 = (_t30 * (0.0083333333333333003 - _t29 * 0.00019841269841216566) + (1.0 - _t29 * 0.16666666666666666) + _t31 * (_t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08))) * _t32;
+    const double _t34 = 1.0 - _t29 * 0.5 + _t30 * (0.041666666666666102 - _t29 * 0.0013888888888798428) + _t31 * (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07 + _t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11));
+    const double _t35 = _t6 * _t33 + _t5 * _t34;
+    const double _t36 = _t28 * _t35;
+    const double _t37 = _t23 * _t9 + _t27 * _t1;
+    const double _t38 = _t19 * _t14 * _t16;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = _t39 * _t39;
+    const double _t41 = _t39 * (0.041666666666666102 - 0.0013888888888798428 * _t38) + (1.0 - _t38 * 0.5) + _t40 * (2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t38 * 1.1304620460700782e-11) * _t39);
+    const double _t42 = _t25 * _t13;
+    const double _t43 = ((0.0083333333333333003 - 0.00019841269841216566 * _t38) * _t39 + (1.0 - 0.16666666666666666 * _t38) + _t40 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t38 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39)) * _t42;
+    const double _t44 = _t41 * _t10 + _t43 * _t3;
+    const double _t45 = _t37 * _t44;
+    const double _t46 = _t3 * _t41 - _t43 * _t10;
+    const double _t47 = _t6 * _t34 - _t33 * _t5;
+    const double _t48 = _t46 * _t47;
+    const double _t49 = _t45 + _t48;
+    const double _t50 = _t44 * _t28 - _t37 * _t35;
+    const double _t51 = _t37 * _t46 - _t44 * _t47;
+    const double _t52 = _t46 * _t35 - _t28 * _t47;
+    const double _t53 = _t51 * _t51 + _t52 * _t52 + _t50 * _t50;
+    const double _t54 = _t18 * (((_t53 > 1.1754943508222875e-38) ? 1.0 / _t53 : 0.0) * sqrt(_t53));
+    const double _t55 = _t54 * _t50 + _t26;
+    const double _t56 = _t54 * _t51 + _t42;
+    const double _t57 = _t54 * _t52 - _t32;
+    const double _t58 = _t36 + _t49 - (_t50 + (_t45 + _t36) * _t55 * 0.5 - _t28 * _t46 * _t56) * _t55 - _t57 * (_t52 + (0.5 * ((_t48 + _t36) * _t57) + _t44 * _t35 * _t56) - _t37 * _t47 * _t55) - (_t56 * _t49 * 0.5 + _t51) * _t56;
+    const double _t59 = _t1 * _t5 + (_t6 * _t3 + _t10 * _t9);
+    const double _t60 = 1.7320525396196846 * fabs(_t18);
+    const double _t61 = _t59 + _t60;
+    const double _t62 = _t59 - _t60;
+    const double _t63 = -_t17;
+    const double _t64 = (_t63 <= 1.0) ? (((-1.0) <= _t63) ? _t63 : (-1.0)) : 1.0;
+    const double _t65 = _t64 * _t64;
+    const double _t66 = _t16 * (_t65 * _t14);
+    const double _t67 = _t66 * _t66;
+    const double _t68 = _t67 * _t67;
+    const double _t69 = ((2.0874477943664777e-09 - _t66 * 1.1304620460700782e-11) * _t67 + (2.4801587247292686e-05 - _t66 * 2.7557303701922228e-07)) * _t68 + (1.0 - _t66 * 0.5 + _t67 * (0.041666666666666102 - _t66 * 0.0013888888888798428));
+    const double _t70 = _t24 * _t64;
+    const double _t71 = _t70 * _t13;
+    const double _t72 = (_t68 * (_t67 * (1.6057701922579786e-10 - _t66 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t66 * 2.5052099244914114e-08)) + (_t67 * (0.0083333333333333003 - _t66 * 0.00019841269841216566) + (1.0 - _t66 * 0.16666666666666666))) * _t71;
+    const double _t73 = _t3 * _t69 - _t72 * _t10;
+    const double _t74 = _t16 * (_t8 * _t65);
+    const double _t75 = _t74 * _t74;
+    const double _t76 = _t75 * _t75;
+    const double _t77 = 1.0 - _t74 * 0.5 + _t75 * (0.041666666666666102 - _t74 * 0.0013888888888798428) + _t76 * (2.4801587247292686e-05 - _t74 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t74 * 1.1304620460700782e-11) * _t75);
+    const double _t78 = _t7 * _t70;
+    const double _t79 = ((0.0083333333333333003 - _t74 * 0.00019841269841216566) * _t75 + (1.0 - _t74 * 0.16666666666666666) + _t76 * (2.755731919201122e-06 - _t74 * 2.5052099244914114e-08 + _t75 * (1.6057701922579786e-10 - _t74 * 7.549371704181243e-13))) * _t78;
+    const double _t80 = _t77 * _t6 - _t5 * _t79;
+    const double _t81 = _t73 * _t80;
+    const double _t82 = _t16 * (_t65 * _t12);
+    const double _t83 = _t82 * _t82;
+    const double _t84 = _t83 * _t83;
+    const double _t85 = 1.0 - _t82 * 0.5 + (0.041666666666666102 - _t82 * 0.0013888888888798428) * _t83 + ((2.0874477943664777e-09 - _t82 * 1.1304620460700782e-11) * _t83 + (2.4801587247292686e-05 - _t82 * 2.7557303701922228e-07)) * _t84;
+    const double _t86 = _t70 * _t11;
+    const double _t87 = _t86 * ((_t83 * (1.6057701922579786e-10 - _t82 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t82 * 2.5052099244914114e-08)) * _t84 + ((0.0083333333333333003 - _t82 * 0.00019841269841216566) * _t83 + (1.0 - _t82 * 0.16666666666666666)));
+    const double _t88 = _t85 * _t9 + _t87 * _t1;
+    const double _t89 = _t3 * _t72 + _t10 * _t69;
+    const double _t90 = _t88 * _t89;
+    const double _t91 = _t6 * _t79 + _t77 * _t5;
+    const double _t92 = _t1 * _t85 - _t87 * _t9;
+    const double _t93 = _t88 * _t91 - _t92 * _t89;
+    const double _t94 = _t80 * _t89 - _t88 * _t73;
+    const double _t95 = _t91 * _t73 - _t92 * _t80;
+    const double _t96 = _t93 * _t93 + (_t94 * _t94 + _t95 * _t95);
+    const double _t97 = sqrt(_t96) * ((_t96 > 1.1754943508222875e-38) ? 1.0 / _t96 : 0.0) * _t64;
+    const double _t98 = _t71 - _t97 * _t94;
+    const double _t99 = _t97 * _t95 - _t78;
+    const double _t100 = _t97 * _t93 - _t86;
+    const double _t101 = _t92 * _t91;
+    const double _t102 = _t101 + _t81;
+    const double _t103 = -(((_t81 + _t90) * _t98 * 0.5 - _t94) * _t98 + (_t99 * (_t91 * _t89 * _t98 + (_t88 * _t80 * _t100 + (_t99 * _t102 * 0.5 + _t95))) + (_t92 * _t73 * _t98 + _t93 + 0.5 * ((_t101 + _t90) * _t100)) * _t100) - (_t102 + _t90));
+    const double _t104 = 1.7320525396196846 * fabs(_t64);
+    const double _t105 = _t104 + _t59;
+    const double _t106 = _t59 - _t104;
+    return ((_t58 <= _t61) ? ((_t62 <= _t58) ? _t58 : _t62) : _t61) * ((_t103 <= _t105) ? ((_t106 <= _t103) ? _t103 : _t106) : _t105);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
@@ -436,92 +426,90 @@ __host__ __device__ inline float gyroid_proj_o4_fieldf(float x, float y, float z
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 300
+ * Total ops: 226
  */
 __host__ __device__ inline float gyroid_proj_o4_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = x * 2.0f;
-    float _sp1, _cp1;
-    sincospif(_t0, &_sp1, &_cp1);
-    const float _t1 = _cp1;
-    const float _t2 = 6.28318548f * h;
-    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
-    const float _t4 = _t3 * _t3;
-    const float _t5 = z * 2.0f;
+    const float _t0 = z * 2.0f;
     float _sp0, _cp0;
-    sincospif(_t5, &_sp0, &_cp0);
-    const float _t6 = _sp0;
-    const float _t7 = _sp1;
-    const float _t8 = y * 2.0f;
+    sincospif(_t0, &_sp0, &_cp0);
+    const float _t1 = _sp0;
+    const float _t2 = x * 2.0f;
+    float _sp1, _cp1;
+    sincospif(_t2, &_sp1, &_cp1);
+    const float _t3 = _sp1;
+    const float _t4 = _cp1;
+    const float _t5 = y * 2.0f;
     float _sp2, _cp2;
-    sincospif(_t8, &_sp2, &_cp2);
-    const float _t9 = _cp2;
-    const float _t10 = _t6 * _t7 - _t1 * _t9;
-    const float _t11 = _t10 * _t10;
-    const float _t12 = _sp2;
-    const float _t13 = _cp0;
-    const float _t14 = _t7 * _t12 - _t9 * _t13;
-    const float _t15 = _t14 * _t14;
-    const float _t16 = _t1 * _t13 - _t6 * _t12;
-    const float _t17 = _t16 * _t16;
-    const float _t18 = _t11 + (_t15 + _t17);
-    const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
-    const float _t20 = _t19 * (_t4 * _t17);
+    sincospif(_t5, &_sp2, &_cp2);
+    const float _t6 = _cp2;
+    const float _t7 = _t1 * _t3 - _t4 * _t6;
+    const float _t8 = _t7 * _t7;
+    const float _t9 = _sp2;
+    const float _t10 = _cp0;
+    const float _t11 = _t3 * _t9 - _t6 * _t10;
+    const float _t12 = _t11 * _t11;
+    const float _t13 = _t4 * _t10 - _t1 * _t9;
+    const float _t14 = _t13 * _t13;
+    const float _t15 = _t8 + (_t12 + _t14);
+    const float _t16 = (_t15 > 1.17549435e-38f) ? 1.0f / _t15 : 0.0f;
+    const float _t17 = 6.28318548f * h;
+    const float _t18 = (_t17 <= 1.0f) ? (((-1.0f) <= _t17) ? _t17 : (-1.0f)) : 1.0f;
+    const float _t19 = _t18 * _t18;
+    const float _t20 = _t16 * (_t19 * _t14);
     const float _t21 = _t20 * _t20;
     const float _t22 = _t21 * _t21;
     const float _t23 = _t22 * ((2.08744777e-09f - 1.13046204e-11f * _t20) * _t21 + (2.48015876e-05f - _t20 * 2.75573029e-07f)) + (_t21 * (0.0416666679f - 0.00138888892f * _t20) + (1.0f - _t20 * 0.5f));
-    const float _t24 = _t3 * (_t19 * sqrtf(_t18));
-    const float _t25 = _t16 * _t24 * (1.0f - 0.166666672f * _t20 + _t21 * (0.00833333377f - 0.000198412701f * _t20) + ((1.60577024e-10f - 7.54937183e-13f * _t20) * _t21 + (2.75573188e-06f - 2.50520991e-08f * _t20)) * _t22);
-    const float _t26 = _t6 * _t23 - _t25 * _t13;
-    const float _t27 = _t19 * (_t11 * _t4);
-    const float _t28 = _t27 * _t27;
-    const float _t29 = _t28 * _t28;
-    const float _t30 = _t10 * _t24 * (_t29 * (2.75573188e-06f - 2.50520991e-08f * _t27 + (1.60577024e-10f - 7.54937183e-13f * _t27) * _t28) + (1.0f - 0.166666672f * _t27 + (0.00833333377f - 0.000198412701f * _t27) * _t28));
-    const float _t31 = _t28 * (0.0416666679f - 0.00138888892f * _t27) + (1.0f - _t27 * 0.5f) + (2.48015876e-05f - _t27 * 2.75573029e-07f + (2.08744777e-09f - _t27 * 1.13046204e-11f) * _t28) * _t29;
-    const float _t32 = _t1 * _t30 + _t31 * _t7;
-    const float _t33 = _t19 * (_t15 * _t4);
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * _t34;
-    const float _t36 = _t35 * (_t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f) + (2.48015876e-05f - _t33 * 2.75573029e-07f)) + (1.0f - _t33 * 0.5f + _t34 * (0.0416666679f - 0.00138888892f * _t33));
-    const float _t37 = _t24 * _t14 * (_t34 * (0.00833333377f - _t33 * 0.000198412701f) + (1.0f - _t33 * 0.166666672f) + _t35 * (2.75573188e-06f - _t33 * 2.50520991e-08f + _t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f)));
-    const float _t38 = _t9 * _t36 - _t37 * _t12;
-    const float _t39 = _t1 * _t31 - _t30 * _t7;
-    const float _t40 = _t26 * _t32 - _t38 * _t39;
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t23 * _t13 + _t6 * _t25;
-    const float _t43 = _t37 * _t9 + _t36 * _t12;
-    const float _t44 = _t42 * _t39 - _t43 * _t26;
-    const float _t45 = _t44 * _t44;
-    const float _t46 = _t43 * _t32 - _t42 * _t38;
-    const float _t47 = _t46 * _t46;
-    const float _t48 = _t45 + _t41 + _t47;
-    const float _t49 = (_t48 > 1.17549435e-38f) ? 1.0f / _t48 : 0.0f;
-    const float _t50 = _t4 * _t41 * _t49;
-    const float _t51 = _t50 * _t50;
-    const float _t52 = _t51 * _t51;
-    const float _t53 = (0.0416666679f - 0.00138888892f * _t50) * _t51 + (1.0f - _t50 * 0.5f) + (2.48015876e-05f - _t50 * 2.75573029e-07f + _t51 * (2.08744777e-09f - _t50 * 1.13046204e-11f)) * _t52;
-    const float _t54 = _t3 * (sqrtf(_t48) * _t49);
-    const float _t55 = ((2.75573188e-06f - 2.50520991e-08f * _t50 + (1.60577024e-10f - 7.54937183e-13f * _t50) * _t51) * _t52 + (1.0f - 0.166666672f * _t50 + _t51 * (0.00833333377f - 0.000198412701f * _t50))) * (_t54 * _t40);
-    const float _t56 = _t4 * _t45 * _t49;
-    const float _t57 = _t56 * _t56;
-    const float _t58 = _t57 * _t57;
-    const float _t59 = 1.0f - _t56 * 0.5f + (0.0416666679f - _t56 * 0.00138888892f) * _t57 + (2.48015876e-05f - _t56 * 2.75573029e-07f + (2.08744777e-09f - _t56 * 1.13046204e-11f) * _t57) * _t58;
-    const float _t60 = (1.0f - _t56 * 0.166666672f + (0.00833333377f - _t56 * 0.000198412701f) * _t57 + _t58 * (_t57 * (1.60577024e-10f - _t56 * 7.54937183e-13f) + (2.75573188e-06f - _t56 * 2.50520991e-08f))) * (_t54 * _t44);
-    const float _t61 = _t4 * _t47 * _t49;
-    const float _t62 = _t61 * _t61;
-    const float _t63 = _t62 * _t62;
-    const float _t64 = _t63 * (2.48015876e-05f - _t61 * 2.75573029e-07f + _t62 * (2.08744777e-09f - 1.13046204e-11f * _t61)) + ((0.0416666679f - 0.00138888892f * _t61) * _t62 + (1.0f - _t61 * 0.5f));
-    const float _t65 = (_t63 * (2.75573188e-06f - 2.50520991e-08f * _t61 + (1.60577024e-10f - 7.54937183e-13f * _t61) * _t62) + (1.0f - 0.166666672f * _t61 + (0.00833333377f - 0.000198412701f * _t61) * _t62)) * (_t54 * _t46);
-    return (_t1 * _t53 - _t55 * _t7) * (_t6 * _t59 - _t60 * _t13) + (_t1 * _t55 + _t7 * _t53) * (_t9 * _t64 - _t65 * _t12) + (_t6 * _t60 + _t59 * _t13) * (_t9 * _t65 + _t64 * _t12);
+    const float _t24 = _t18 * (_t16 * sqrtf(_t15));
+    const float _t25 = _t13 * _t24;
+    const float _t26 = _t25 * (1.0f - 0.166666672f * _t20 + _t21 * (0.00833333377f - 0.000198412701f * _t20) + ((1.60577024e-10f - 7.54937183e-13f * _t20) * _t21 + (2.75573188e-06f - 2.50520991e-08f * _t20)) * _t22);
+    const float _t27 = _t23 * _t10 + _t1 * _t26;
+    const float _t28 = _t24 * _t11;
+    const float _t29 = _t16 * (_t12 * _t19);
+    const float _t30 = _t29 * _t29;
+    const float _t31 = _t30 * _t30;
+    const float _t32 = _t28 * (_t30 * (0.00833333377f - _t29 * 0.000198412701f) + (1.0f - _t29 * 0.166666672f) + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f)));
+    const float _t33 = _t31 * (_t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f) + (2.48015876e-05f - _t29 * 2.75573029e-07f)) + (1.0f - _t29 * 0.5f + _t30 * (0.0416666679f - 0.00138888892f * _t29));
+    const float _t34 = _t32 * _t6 + _t33 * _t9;
+    const float _t35 = _t27 * _t34;
+    const float _t36 = _t16 * (_t8 * _t19);
+    const float _t37 = _t36 * _t36;
+    const float _t38 = _t37 * _t37;
+    const float _t39 = _t37 * (0.0416666679f - 0.00138888892f * _t36) + (1.0f - _t36 * 0.5f) + (2.48015876e-05f - _t36 * 2.75573029e-07f + (2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37) * _t38;
+    const float _t40 = _t7 * _t24;
+    const float _t41 = _t40 * (_t38 * (2.75573188e-06f - 2.50520991e-08f * _t36 + (1.60577024e-10f - 7.54937183e-13f * _t36) * _t37) + (1.0f - 0.166666672f * _t36 + (0.00833333377f - 0.000198412701f * _t36) * _t37));
+    const float _t42 = _t4 * _t39 - _t41 * _t3;
+    const float _t43 = _t1 * _t23 - _t26 * _t10;
+    const float _t44 = _t42 * _t43;
+    const float _t45 = _t27 * _t42 - _t34 * _t43;
+    const float _t46 = _t4 * _t41 + _t39 * _t3;
+    const float _t47 = _t6 * _t33 - _t32 * _t9;
+    const float _t48 = _t43 * _t46 - _t47 * _t42;
+    const float _t49 = _t34 * _t46 - _t27 * _t47;
+    const float _t50 = _t45 * _t45 + _t48 * _t48 + _t49 * _t49;
+    const float _t51 = _t18 * (sqrtf(_t50) * ((_t50 > 1.17549435e-38f) ? 1.0f / _t50 : 0.0f));
+    const float _t52 = _t25 - _t51 * _t45;
+    const float _t53 = _t51 * _t49 - _t28;
+    const float _t54 = _t47 * _t46;
+    const float _t55 = _t35 + _t54;
+    const float _t56 = _t51 * _t48 - _t40;
+    const float _t57 = -(((_t35 + _t44) * _t52 * 0.5f - _t45) * _t52 + ((_t47 * _t43 * _t52 + _t53 * _t55 * 0.5f + _t49) * _t53 + _t56 * (_t56 * (_t44 + _t54) * 0.5f + (_t27 * _t46 * _t52 + (_t42 * _t34 * _t53 + _t48)))) - (_t44 + _t55));
+    const float _t58 = 1.73205256f * fabsf(_t18);
+    const float _t59 = _t6 * _t3 + (_t4 * _t1 + _t10 * _t9);
+    const float _t60 = _t58 + _t59;
+    const float _t61 = _t59 - _t58;
+    return (_t57 <= _t60) ? ((_t61 <= _t57) ? _t57 : _t61) : _t60;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 574
+ * Total ops: 420
  */
 __host__ __device__ inline float gyroid_proj_o4_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = 6.28318548f * (t * 0.5f);
-    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+    const float _t0 = y * 2.0f;
+    float _sp2, _cp2;
+    sincospif(_t0, &_sp2, &_cp2);
+    const float _t1 = _cp2;
     const float _t2 = z * 2.0f;
     float _sp0, _cp0;
     sincospif(_t2, &_sp0, &_cp0);
@@ -531,118 +519,107 @@ __host__ __device__ inline float gyroid_proj_o4_shellf(float x, float y, float z
     sincospif(_t4, &_sp1, &_cp1);
     const float _t5 = _sp1;
     const float _t6 = _cp1;
-    const float _t7 = y * 2.0f;
-    float _sp2, _cp2;
-    sincospif(_t7, &_sp2, &_cp2);
-    const float _t8 = _cp2;
-    const float _t9 = _t3 * _t5 - _t6 * _t8;
-    const float _t10 = _t9 * _t9;
-    const float _t11 = _sp2;
-    const float _t12 = _cp0;
-    const float _t13 = _t5 * _t11 - _t8 * _t12;
+    const float _t7 = _t3 * _t5 - _t6 * _t1;
+    const float _t8 = _t7 * _t7;
+    const float _t9 = _sp2;
+    const float _t10 = _cp0;
+    const float _t11 = _t5 * _t9 - _t1 * _t10;
+    const float _t12 = _t11 * _t11;
+    const float _t13 = _t6 * _t10 - _t3 * _t9;
     const float _t14 = _t13 * _t13;
-    const float _t15 = _t6 * _t12 - _t3 * _t11;
-    const float _t16 = _t15 * _t15;
-    const float _t17 = _t10 + (_t14 + _t16);
-    const float _t18 = (_t17 > 1.17549435e-38f) ? 1.0f / _t17 : 0.0f;
-    const float _t19 = _t1 * _t1;
-    const float _t20 = _t18 * (_t19 * _t14);
+    const float _t15 = _t8 + (_t12 + _t14);
+    const float _t16 = (_t15 > 1.17549435e-38f) ? 1.0f / _t15 : 0.0f;
+    const float _t17 = 6.28318548f * (t * 0.5f);
+    const float _t18 = (_t17 <= 1.0f) ? (((-1.0f) <= _t17) ? _t17 : (-1.0f)) : 1.0f;
+    const float _t19 = _t18 * _t18;
+    const float _t20 = _t16 * (_t19 * _t12);
     const float _t21 = _t20 * _t20;
     const float _t22 = _t21 * _t21;
     const float _t23 = (_t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f) + (2.48015876e-05f - _t20 * 2.75573029e-07f)) * _t22 + ((0.0416666679f - _t20 * 0.00138888892f) * _t21 + (1.0f - _t20 * 0.5f));
-    const float _t24 = _t18 * sqrtf(_t17);
-    const float _t25 = _t1 * _t24;
-    const float _t26 = (_t21 * (0.00833333377f - _t20 * 0.000198412701f) + (1.0f - _t20 * 0.166666672f) + ((1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21 + (2.75573188e-06f - _t20 * 2.50520991e-08f)) * _t22) * (_t25 * _t13);
-    const float _t27 = _t23 * _t11 + _t26 * _t8;
-    const float _t28 = _t19 * _t16 * _t18;
-    const float _t29 = _t28 * _t28;
+    const float _t24 = _t16 * sqrtf(_t15);
+    const float _t25 = _t18 * _t24;
+    const float _t26 = _t25 * _t11;
+    const float _t27 = (_t21 * (0.00833333377f - _t20 * 0.000198412701f) + (1.0f - _t20 * 0.166666672f) + ((1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21 + (2.75573188e-06f - _t20 * 2.50520991e-08f)) * _t22) * _t26;
+    const float _t28 = _t1 * _t23 - _t27 * _t9;
+    const float _t29 = _t16 * (_t8 * _t19);
     const float _t30 = _t29 * _t29;
-    const float _t31 = _t29 * (0.0416666679f - 0.00138888892f * _t28) + (1.0f - _t28 * 0.5f) + _t30 * (2.48015876e-05f - _t28 * 2.75573029e-07f + (2.08744777e-09f - _t28 * 1.13046204e-11f) * _t29);
-    const float _t32 = ((0.00833333377f - 0.000198412701f * _t28) * _t29 + (1.0f - 0.166666672f * _t28) + _t30 * (2.75573188e-06f - 2.50520991e-08f * _t28 + (1.60577024e-10f - 7.54937183e-13f * _t28) * _t29)) * (_t25 * _t15);
-    const float _t33 = _t3 * _t31 - _t32 * _t12;
-    const float _t34 = _t31 * _t12 + _t32 * _t3;
-    const float _t35 = _t18 * (_t10 * _t19);
-    const float _t36 = _t35 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = 1.0f - _t35 * 0.5f + _t36 * (0.0416666679f - _t35 * 0.00138888892f) + _t37 * (2.48015876e-05f - _t35 * 2.75573029e-07f + _t36 * (2.08744777e-09f - _t35 * 1.13046204e-11f));
-    const float _t39 = (_t36 * (0.00833333377f - _t35 * 0.000198412701f) + (1.0f - _t35 * 0.166666672f) + _t37 * (_t36 * (1.60577024e-10f - _t35 * 7.54937183e-13f) + (2.75573188e-06f - _t35 * 2.50520991e-08f))) * (_t25 * _t9);
-    const float _t40 = _t6 * _t38 - _t39 * _t5;
-    const float _t41 = _t27 * _t33 - _t34 * _t40;
-    const float _t42 = _t41 * _t41;
-    const float _t43 = _t6 * _t39 + _t5 * _t38;
-    const float _t44 = _t8 * _t23 - _t26 * _t11;
-    const float _t45 = _t33 * _t43 - _t44 * _t40;
-    const float _t46 = _t45 * _t45;
-    const float _t47 = _t34 * _t44 - _t27 * _t43;
-    const float _t48 = _t47 * _t47;
-    const float _t49 = _t42 + _t46 + _t48;
-    const float _t50 = (_t49 > 1.17549435e-38f) ? 1.0f / _t49 : 0.0f;
-    const float _t51 = _t1 * (_t50 * sqrtf(_t49));
-    const float _t52 = _t50 * (_t19 * _t42);
-    const float _t53 = _t52 * _t52;
-    const float _t54 = _t53 * _t53;
-    const float _t55 = _t51 * _t41 * (_t54 * ((1.60577024e-10f - 7.54937183e-13f * _t52) * _t53 + (2.75573188e-06f - 2.50520991e-08f * _t52)) + ((0.00833333377f - 0.000198412701f * _t52) * _t53 + (1.0f - 0.166666672f * _t52)));
-    const float _t56 = ((2.08744777e-09f - _t52 * 1.13046204e-11f) * _t53 + (2.48015876e-05f - _t52 * 2.75573029e-07f)) * _t54 + ((0.0416666679f - 0.00138888892f * _t52) * _t53 + (1.0f - _t52 * 0.5f));
-    const float _t57 = _t50 * (_t19 * _t46);
-    const float _t58 = _t57 * _t57;
-    const float _t59 = _t58 * _t58;
-    const float _t60 = (2.48015876e-05f - _t57 * 2.75573029e-07f + (2.08744777e-09f - _t57 * 1.13046204e-11f) * _t58) * _t59 + (1.0f - _t57 * 0.5f + _t58 * (0.0416666679f - _t57 * 0.00138888892f));
-    const float _t61 = (_t59 * ((1.60577024e-10f - _t57 * 7.54937183e-13f) * _t58 + (2.75573188e-06f - _t57 * 2.50520991e-08f)) + ((0.00833333377f - _t57 * 0.000198412701f) * _t58 + (1.0f - _t57 * 0.166666672f))) * (_t51 * _t45);
-    const float _t62 = _t50 * (_t19 * _t48);
-    const float _t63 = _t62 * _t62;
-    const float _t64 = _t63 * _t63;
-    const float _t65 = (2.48015876e-05f - _t62 * 2.75573029e-07f + _t63 * (2.08744777e-09f - _t62 * 1.13046204e-11f)) * _t64 + (_t63 * (0.0416666679f - _t62 * 0.00138888892f) + (1.0f - _t62 * 0.5f));
-    const float _t66 = _t51 * _t47 * (1.0f - _t62 * 0.166666672f + _t63 * (0.00833333377f - _t62 * 0.000198412701f) + _t64 * (_t63 * (1.60577024e-10f - _t62 * 7.54937183e-13f) + (2.75573188e-06f - _t62 * 2.50520991e-08f)));
-    const float _t67 = -_t0;
-    const float _t68 = (_t67 <= 1.0f) ? (((-1.0f) <= _t67) ? _t67 : (-1.0f)) : 1.0f;
-    const float _t69 = _t68 * _t68;
-    const float _t70 = _t18 * (_t69 * _t14);
-    const float _t71 = _t70 * _t70;
-    const float _t72 = _t71 * _t71;
-    const float _t73 = 1.0f - _t70 * 0.5f + (0.0416666679f - _t70 * 0.00138888892f) * _t71 + ((2.08744777e-09f - _t70 * 1.13046204e-11f) * _t71 + (2.48015876e-05f - _t70 * 2.75573029e-07f)) * _t72;
-    const float _t74 = _t24 * _t68;
-    const float _t75 = _t74 * _t13 * ((_t71 * (1.60577024e-10f - _t70 * 7.54937183e-13f) + (2.75573188e-06f - _t70 * 2.50520991e-08f)) * _t72 + ((0.00833333377f - _t70 * 0.000198412701f) * _t71 + (1.0f - _t70 * 0.166666672f)));
-    const float _t76 = _t73 * _t11 + _t75 * _t8;
-    const float _t77 = _t18 * (_t10 * _t69);
-    const float _t78 = _t77 * _t77;
-    const float _t79 = _t78 * _t78;
-    const float _t80 = ((0.00833333377f - _t77 * 0.000198412701f) * _t78 + (1.0f - _t77 * 0.166666672f) + _t79 * (2.75573188e-06f - _t77 * 2.50520991e-08f + _t78 * (1.60577024e-10f - _t77 * 7.54937183e-13f))) * (_t9 * _t74);
-    const float _t81 = 1.0f - _t77 * 0.5f + _t78 * (0.0416666679f - _t77 * 0.00138888892f) + _t79 * (2.48015876e-05f - _t77 * 2.75573029e-07f + (2.08744777e-09f - _t77 * 1.13046204e-11f) * _t78);
-    const float _t82 = _t6 * _t80 + _t81 * _t5;
-    const float _t83 = _t8 * _t73 - _t75 * _t11;
-    const float _t84 = _t18 * (_t69 * _t16);
-    const float _t85 = _t84 * _t84;
-    const float _t86 = _t85 * _t85;
-    const float _t87 = (_t86 * (_t85 * (1.60577024e-10f - _t84 * 7.54937183e-13f) + (2.75573188e-06f - _t84 * 2.50520991e-08f)) + (_t85 * (0.00833333377f - _t84 * 0.000198412701f) + (1.0f - _t84 * 0.166666672f))) * (_t74 * _t15);
-    const float _t88 = ((2.08744777e-09f - _t84 * 1.13046204e-11f) * _t85 + (2.48015876e-05f - _t84 * 2.75573029e-07f)) * _t86 + (1.0f - _t84 * 0.5f + _t85 * (0.0416666679f - _t84 * 0.00138888892f));
-    const float _t89 = _t3 * _t87 + _t12 * _t88;
-    const float _t90 = _t76 * _t82 - _t83 * _t89;
-    const float _t91 = _t90 * _t90;
-    const float _t92 = _t81 * _t6 - _t5 * _t80;
-    const float _t93 = _t3 * _t88 - _t87 * _t12;
-    const float _t94 = _t92 * _t89 - _t76 * _t93;
-    const float _t95 = _t94 * _t94;
-    const float _t96 = _t82 * _t93 - _t83 * _t92;
-    const float _t97 = _t96 * _t96;
-    const float _t98 = _t91 + (_t95 + _t97);
-    const float _t99 = (_t98 > 1.17549435e-38f) ? 1.0f / _t98 : 0.0f;
-    const float _t100 = _t99 * (_t69 * _t95);
-    const float _t101 = _t100 * _t100;
-    const float _t102 = _t101 * _t101;
-    const float _t103 = 1.0f - _t100 * 0.5f + _t101 * (0.0416666679f - 0.00138888892f * _t100) + ((2.08744777e-09f - _t100 * 1.13046204e-11f) * _t101 + (2.48015876e-05f - _t100 * 2.75573029e-07f)) * _t102;
-    const float _t104 = sqrtf(_t98) * _t99 * _t68;
-    const float _t105 = _t104 * _t94 * (1.0f - 0.166666672f * _t100 + (0.00833333377f - _t100 * 0.000198412701f) * _t101 + (2.75573188e-06f - 2.50520991e-08f * _t100 + _t101 * (1.60577024e-10f - 7.54937183e-13f * _t100)) * _t102);
-    const float _t106 = _t99 * (_t69 * _t97);
-    const float _t107 = _t106 * _t106;
-    const float _t108 = _t107 * _t107;
-    const float _t109 = _t108 * (2.48015876e-05f - _t106 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t106) * _t107) + ((0.0416666679f - 0.00138888892f * _t106) * _t107 + (1.0f - _t106 * 0.5f));
-    const float _t110 = ((0.00833333377f - 0.000198412701f * _t106) * _t107 + (1.0f - 0.166666672f * _t106) + ((1.60577024e-10f - 7.54937183e-13f * _t106) * _t107 + (2.75573188e-06f - 2.50520991e-08f * _t106)) * _t108) * (_t104 * _t96);
-    const float _t111 = _t99 * (_t69 * _t91);
-    const float _t112 = _t111 * _t111;
-    const float _t113 = _t112 * _t112;
-    const float _t114 = (0.0416666679f - 0.00138888892f * _t111) * _t112 + (1.0f - _t111 * 0.5f) + (_t112 * (2.08744777e-09f - _t111 * 1.13046204e-11f) + (2.48015876e-05f - _t111 * 2.75573029e-07f)) * _t113;
-    const float _t115 = ((2.75573188e-06f - 2.50520991e-08f * _t111 + (1.60577024e-10f - 7.54937183e-13f * _t111) * _t112) * _t113 + (1.0f - 0.166666672f * _t111 + (0.00833333377f - 0.000198412701f * _t111) * _t112)) * (_t104 * _t90);
-    return ((_t55 * _t12 + _t3 * _t56) * (_t6 * _t60 - _t61 * _t5) + ((_t56 * _t12 - _t3 * _t55) * (_t65 * _t11 - _t8 * _t66) + (_t66 * _t11 + _t8 * _t65) * (_t5 * _t60 + _t61 * _t6))) * ((_t3 * _t103 - _t105 * _t12) * (_t6 * _t109 - _t110 * _t5) + ((_t114 * _t11 + _t8 * _t115) * (_t105 * _t3 + _t12 * _t103) + (_t8 * _t114 - _t115 * _t11) * (_t109 * _t5 + _t6 * _t110)));
+    const float _t31 = _t30 * _t30;
+    const float _t32 = _t25 * _t7;
+    const float _t33 = (_t30 * (0.00833333377f - _t29 * 0.000198412701f) + (1.0f - _t29 * 0.166666672f) + _t31 * (_t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f) + (2.75573188e-06f - _t29 * 2.50520991e-08f))) * _t32;
+    const float _t34 = 1.0f - _t29 * 0.5f + _t30 * (0.0416666679f - _t29 * 0.00138888892f) + _t31 * (2.48015876e-05f - _t29 * 2.75573029e-07f + _t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f));
+    const float _t35 = _t6 * _t33 + _t5 * _t34;
+    const float _t36 = _t28 * _t35;
+    const float _t37 = _t23 * _t9 + _t27 * _t1;
+    const float _t38 = _t19 * _t14 * _t16;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = _t39 * _t39;
+    const float _t41 = _t39 * (0.0416666679f - 0.00138888892f * _t38) + (1.0f - _t38 * 0.5f) + _t40 * (2.48015876e-05f - _t38 * 2.75573029e-07f + (2.08744777e-09f - _t38 * 1.13046204e-11f) * _t39);
+    const float _t42 = _t25 * _t13;
+    const float _t43 = ((0.00833333377f - 0.000198412701f * _t38) * _t39 + (1.0f - 0.166666672f * _t38) + _t40 * (2.75573188e-06f - 2.50520991e-08f * _t38 + (1.60577024e-10f - 7.54937183e-13f * _t38) * _t39)) * _t42;
+    const float _t44 = _t41 * _t10 + _t43 * _t3;
+    const float _t45 = _t37 * _t44;
+    const float _t46 = _t3 * _t41 - _t43 * _t10;
+    const float _t47 = _t6 * _t34 - _t33 * _t5;
+    const float _t48 = _t46 * _t47;
+    const float _t49 = _t45 + _t48;
+    const float _t50 = _t44 * _t28 - _t37 * _t35;
+    const float _t51 = _t37 * _t46 - _t44 * _t47;
+    const float _t52 = _t46 * _t35 - _t28 * _t47;
+    const float _t53 = _t51 * _t51 + _t52 * _t52 + _t50 * _t50;
+    const float _t54 = _t18 * (((_t53 > 1.17549435e-38f) ? 1.0f / _t53 : 0.0f) * sqrtf(_t53));
+    const float _t55 = _t54 * _t50 + _t26;
+    const float _t56 = _t54 * _t51 + _t42;
+    const float _t57 = _t54 * _t52 - _t32;
+    const float _t58 = _t36 + _t49 - (_t50 + (_t45 + _t36) * _t55 * 0.5f - _t28 * _t46 * _t56) * _t55 - _t57 * (_t52 + (0.5f * ((_t48 + _t36) * _t57) + _t44 * _t35 * _t56) - _t37 * _t47 * _t55) - (_t56 * _t49 * 0.5f + _t51) * _t56;
+    const float _t59 = _t1 * _t5 + (_t6 * _t3 + _t10 * _t9);
+    const float _t60 = 1.73205256f * fabsf(_t18);
+    const float _t61 = _t59 + _t60;
+    const float _t62 = _t59 - _t60;
+    const float _t63 = -_t17;
+    const float _t64 = (_t63 <= 1.0f) ? (((-1.0f) <= _t63) ? _t63 : (-1.0f)) : 1.0f;
+    const float _t65 = _t64 * _t64;
+    const float _t66 = _t16 * (_t65 * _t14);
+    const float _t67 = _t66 * _t66;
+    const float _t68 = _t67 * _t67;
+    const float _t69 = ((2.08744777e-09f - _t66 * 1.13046204e-11f) * _t67 + (2.48015876e-05f - _t66 * 2.75573029e-07f)) * _t68 + (1.0f - _t66 * 0.5f + _t67 * (0.0416666679f - _t66 * 0.00138888892f));
+    const float _t70 = _t24 * _t64;
+    const float _t71 = _t70 * _t13;
+    const float _t72 = (_t68 * (_t67 * (1.60577024e-10f - _t66 * 7.54937183e-13f) + (2.75573188e-06f - _t66 * 2.50520991e-08f)) + (_t67 * (0.00833333377f - _t66 * 0.000198412701f) + (1.0f - _t66 * 0.166666672f))) * _t71;
+    const float _t73 = _t3 * _t69 - _t72 * _t10;
+    const float _t74 = _t16 * (_t8 * _t65);
+    const float _t75 = _t74 * _t74;
+    const float _t76 = _t75 * _t75;
+    const float _t77 = 1.0f - _t74 * 0.5f + _t75 * (0.0416666679f - _t74 * 0.00138888892f) + _t76 * (2.48015876e-05f - _t74 * 2.75573029e-07f + (2.08744777e-09f - _t74 * 1.13046204e-11f) * _t75);
+    const float _t78 = _t7 * _t70;
+    const float _t79 = ((0.00833333377f - _t74 * 0.000198412701f) * _t75 + (1.0f - _t74 * 0.166666672f) + _t76 * (2.75573188e-06f - _t74 * 2.50520991e-08f + _t75 * (1.60577024e-10f - _t74 * 7.54937183e-13f))) * _t78;
+    const float _t80 = _t77 * _t6 - _t5 * _t79;
+    const float _t81 = _t73 * _t80;
+    const float _t82 = _t16 * (_t65 * _t12);
+    const float _t83 = _t82 * _t82;
+    const float _t84 = _t83 * _t83;
+    const float _t85 = 1.0f - _t82 * 0.5f + (0.0416666679f - _t82 * 0.00138888892f) * _t83 + ((2.08744777e-09f - _t82 * 1.13046204e-11f) * _t83 + (2.48015876e-05f - _t82 * 2.75573029e-07f)) * _t84;
+    const float _t86 = _t70 * _t11;
+    const float _t87 = _t86 * ((_t83 * (1.60577024e-10f - _t82 * 7.54937183e-13f) + (2.75573188e-06f - _t82 * 2.50520991e-08f)) * _t84 + ((0.00833333377f - _t82 * 0.000198412701f) * _t83 + (1.0f - _t82 * 0.166666672f)));
+    const float _t88 = _t85 * _t9 + _t87 * _t1;
+    const float _t89 = _t3 * _t72 + _t10 * _t69;
+    const float _t90 = _t88 * _t89;
+    const float _t91 = _t6 * _t79 + _t77 * _t5;
+    const float _t92 = _t1 * _t85 - _t87 * _t9;
+    const float _t93 = _t88 * _t91 - _t92 * _t89;
+    const float _t94 = _t80 * _t89 - _t88 * _t73;
+    const float _t95 = _t91 * _t73 - _t92 * _t80;
+    const float _t96 = _t93 * _t93 + (_t94 * _t94 + _t95 * _t95);
+    const float _t97 = sqrtf(_t96) * ((_t96 > 1.17549435e-38f) ? 1.0f / _t96 : 0.0f) * _t64;
+    const float _t98 = _t71 - _t97 * _t94;
+    const float _t99 = _t97 * _t95 - _t78;
+    const float _t100 = _t97 * _t93 - _t86;
+    const float _t101 = _t92 * _t91;
+    const float _t102 = _t101 + _t81;
+    const float _t103 = -(((_t81 + _t90) * _t98 * 0.5f - _t94) * _t98 + (_t99 * (_t91 * _t89 * _t98 + (_t88 * _t80 * _t100 + (_t99 * _t102 * 0.5f + _t95))) + (_t92 * _t73 * _t98 + _t93 + 0.5f * ((_t101 + _t90) * _t100)) * _t100) - (_t102 + _t90));
+    const float _t104 = 1.73205256f * fabsf(_t64);
+    const float _t105 = _t104 + _t59;
+    const float _t106 = _t59 - _t104;
+    return ((_t58 <= _t61) ? ((_t62 <= _t58) ? _t58 : _t62) : _t61) * ((_t103 <= _t105) ? ((_t106 <= _t103) ? _t103 : _t106) : _t105);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.

@@ -8,7 +8,9 @@ description: |
     Source: Schoen 1970, NASA TN D-5541; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 4. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - fn gyroid_proj_o4_field(p: vec3<f32>) -> f32
     - fn gyroid_proj_o4_offset(p: vec3<f32>, h: f32) -> f32
@@ -34,15 +36,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 2 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -52,12 +55,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: WGSL (WebGPU): Dawn (Chrome, Node's webgpu), wgpu/naga (Firefox), WebKit.
 total ops after CSE:
     - field: 14
-    - offset: 300
-    - shell: 574
+    - offset: 226
+    - shell: 420
     - normal: 319
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o4","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":300,"shell":574,"normal":319}} */
+/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o4","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":226,"shell":420,"normal":319}} */
 
 // sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
 // 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
@@ -90,7 +93,7 @@ fn gyroid_proj_o4_field(p: vec3<f32>) -> f32 {
     return gyroid_proj_o4_cos(_t0) * gyroid_proj_o4_sin(_t1) + gyroid_proj_o4_sin(_t0) * gyroid_proj_o4_cos(_t2) + gyroid_proj_o4_cos(_t1) * gyroid_proj_o4_sin(_t2);
 }
 
-// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 300.
+// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 226.
 fn gyroid_proj_o4_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t0 = 6.28318548f * h;
     let _t1 = select(1.0f, (select((-1.0f), _t0, (-1.0f) <= _t0)), _t0 <= 1.0f);
@@ -117,169 +120,156 @@ fn gyroid_proj_o4_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t22 = _t21 * _t21;
     let _t23 = (2.48015876e-05f - _t20 * 2.75573029e-07f + _t21 * (2.08744777e-09f - 1.13046204e-11f * _t20)) * _t22 + (1.0f - _t20 * 0.5f + _t21 * (0.0416666679f - 0.00138888892f * _t20));
     let _t24 = _t1 * (sqrt(_t18) * _t19);
-    let _t25 = ((_t21 * (1.60577024e-10f - 7.54937183e-13f * _t20) + (2.75573188e-06f - 2.50520991e-08f * _t20)) * _t22 + (1.0f - 0.166666672f * _t20 + _t21 * (0.00833333377f - 0.000198412701f * _t20))) * (_t24 * _t10);
-    let _t26 = _t23 * _t6 + _t25 * _t9;
-    let _t27 = _t2 * _t17 * _t19;
-    let _t28 = _t27 * _t27;
-    let _t29 = _t28 * _t28;
-    let _t30 = _t16 * _t24 * (1.0f - _t27 * 0.166666672f + (0.00833333377f - _t27 * 0.000198412701f) * _t28 + _t29 * (2.75573188e-06f - _t27 * 2.50520991e-08f + (1.60577024e-10f - _t27 * 7.54937183e-13f) * _t28));
-    let _t31 = _t29 * (2.48015876e-05f - _t27 * 2.75573029e-07f + (2.08744777e-09f - _t27 * 1.13046204e-11f) * _t28) + ((0.0416666679f - _t27 * 0.00138888892f) * _t28 + (1.0f - _t27 * 0.5f));
-    let _t32 = _t30 * _t8 + _t13 * _t31;
-    let _t33 = _t15 * _t2 * _t19;
-    let _t34 = _t33 * _t33;
-    let _t35 = _t34 * _t34;
-    let _t36 = ((2.75573188e-06f - 2.50520991e-08f * _t33 + _t34 * (1.60577024e-10f - 7.54937183e-13f * _t33)) * _t35 + (_t34 * (0.00833333377f - 0.000198412701f * _t33) + (1.0f - 0.166666672f * _t33))) * (_t14 * _t24);
-    let _t37 = (_t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f) + (2.48015876e-05f - _t33 * 2.75573029e-07f)) * _t35 + ((0.0416666679f - 0.00138888892f * _t33) * _t34 + (1.0f - _t33 * 0.5f));
-    let _t38 = _t4 * _t36 + _t12 * _t37;
-    let _t39 = _t8 * _t31 - _t30 * _t13;
-    let _t40 = _t26 * _t32 - _t38 * _t39;
-    let _t41 = _t40 * _t40;
-    let _t42 = _t23 * _t9 - _t25 * _t6;
-    let _t43 = _t4 * _t37 - _t12 * _t36;
-    let _t44 = _t42 * _t38 - _t32 * _t43;
-    let _t45 = _t44 * _t44;
-    let _t46 = _t26 * _t43 - _t42 * _t39;
-    let _t47 = _t46 * _t46;
-    let _t48 = _t41 + (_t45 + _t47);
-    let _t49 = select(0.0f, 1.0f / _t48, _t48 > 1.17549435e-38f);
-    let _t50 = _t49 * (_t2 * _t41);
-    let _t51 = _t50 * _t50;
-    let _t52 = _t51 * _t51;
-    let _t53 = _t52 * ((2.08744777e-09f - _t50 * 1.13046204e-11f) * _t51 + (2.48015876e-05f - _t50 * 2.75573029e-07f)) + (1.0f - _t50 * 0.5f + (0.0416666679f - _t50 * 0.00138888892f) * _t51);
-    let _t54 = _t1 * (sqrt(_t48) * _t49);
-    let _t55 = _t54 * _t40 * (1.0f - _t50 * 0.166666672f + (0.00833333377f - _t50 * 0.000198412701f) * _t51 + _t52 * (_t51 * (1.60577024e-10f - _t50 * 7.54937183e-13f) + (2.75573188e-06f - _t50 * 2.50520991e-08f)));
-    let _t56 = _t49 * (_t45 * _t2);
-    let _t57 = _t56 * _t56;
-    let _t58 = _t57 * _t57;
-    let _t59 = (1.0f - 0.166666672f * _t56 + (0.00833333377f - 0.000198412701f * _t56) * _t57 + _t58 * ((1.60577024e-10f - 7.54937183e-13f * _t56) * _t57 + (2.75573188e-06f - 2.50520991e-08f * _t56))) * (_t54 * _t44);
-    let _t60 = _t58 * ((2.08744777e-09f - _t56 * 1.13046204e-11f) * _t57 + (2.48015876e-05f - _t56 * 2.75573029e-07f)) + (1.0f - _t56 * 0.5f + (0.0416666679f - 0.00138888892f * _t56) * _t57);
-    let _t61 = _t2 * _t47 * _t49;
-    let _t62 = _t61 * _t61;
-    let _t63 = _t62 * _t62;
-    let _t64 = _t62 * (0.0416666679f - _t61 * 0.00138888892f) + (1.0f - _t61 * 0.5f) + _t63 * (2.48015876e-05f - _t61 * 2.75573029e-07f + _t62 * (2.08744777e-09f - _t61 * 1.13046204e-11f));
-    let _t65 = ((2.75573188e-06f - _t61 * 2.50520991e-08f + (1.60577024e-10f - _t61 * 7.54937183e-13f) * _t62) * _t63 + (_t62 * (0.00833333377f - _t61 * 0.000198412701f) + (1.0f - _t61 * 0.166666672f))) * (_t46 * _t54);
-    return (_t53 * _t13 + _t8 * _t55) * (_t4 * _t59 + _t12 * _t60) + ((_t53 * _t8 - _t55 * _t13) * (_t64 * _t6 + _t9 * _t65) + (_t4 * _t60 - _t12 * _t59) * (_t64 * _t9 - _t6 * _t65));
-}
-
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 574.
-fn gyroid_proj_o4_shell(p: vec3<f32>, t: f32) -> f32 {
-    let _t0 = 6.28318548f * p.y;
-    let _t1 = gyroid_proj_o4_sin(_t0);
-    let _t2 = 6.28318548f * (t * 0.5f);
-    let _t3 = select(1.0f, (select((-1.0f), _t2, (-1.0f) <= _t2)), _t2 <= 1.0f);
-    let _t4 = _t3 * _t3;
-    let _t5 = 6.28318548f * p.x;
-    let _t6 = gyroid_proj_o4_sin(_t5);
-    let _t7 = p.z * 6.28318548f;
-    let _t8 = gyroid_proj_o4_cos(_t7);
-    let _t9 = gyroid_proj_o4_cos(_t0);
-    let _t10 = _t1 * _t6 - _t8 * _t9;
-    let _t11 = _t10 * _t10;
-    let _t12 = gyroid_proj_o4_cos(_t5);
-    let _t13 = gyroid_proj_o4_sin(_t7);
-    let _t14 = _t8 * _t12 - _t13 * _t1;
-    let _t15 = _t14 * _t14;
-    let _t16 = _t13 * _t6 - _t9 * _t12;
-    let _t17 = _t16 * _t16;
-    let _t18 = _t15 + _t11 + _t17;
-    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 1.17549435e-38f);
-    let _t20 = _t4 * _t11 * _t19;
-    let _t21 = _t20 * _t20;
-    let _t22 = _t21 * _t21;
-    let _t23 = 1.0f - _t20 * 0.5f + _t21 * (0.0416666679f - _t20 * 0.00138888892f) + _t22 * (2.48015876e-05f - _t20 * 2.75573029e-07f + _t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f));
-    let _t24 = sqrt(_t18) * _t19;
-    let _t25 = _t3 * _t24;
-    let _t26 = (1.0f - _t20 * 0.166666672f + _t21 * (0.00833333377f - _t20 * 0.000198412701f) + (2.75573188e-06f - _t20 * 2.50520991e-08f + _t21 * (1.60577024e-10f - _t20 * 7.54937183e-13f)) * _t22) * (_t10 * _t25);
-    let _t27 = _t1 * _t23 + _t9 * _t26;
-    let _t28 = _t4 * _t15 * _t19;
-    let _t29 = _t28 * _t28;
+    let _t25 = _t24 * _t10;
+    let _t26 = ((_t21 * (1.60577024e-10f - 7.54937183e-13f * _t20) + (2.75573188e-06f - 2.50520991e-08f * _t20)) * _t22 + (1.0f - 0.166666672f * _t20 + _t21 * (0.00833333377f - 0.000198412701f * _t20))) * _t25;
+    let _t27 = _t23 * _t6 + _t26 * _t9;
+    let _t28 = _t16 * _t24;
+    let _t29 = _t2 * _t17 * _t19;
     let _t30 = _t29 * _t29;
-    let _t31 = 1.0f - _t28 * 0.5f + (0.0416666679f - 0.00138888892f * _t28) * _t29 + _t30 * ((2.08744777e-09f - 1.13046204e-11f * _t28) * _t29 + (2.48015876e-05f - _t28 * 2.75573029e-07f));
-    let _t32 = (_t30 * (2.75573188e-06f - 2.50520991e-08f * _t28 + (1.60577024e-10f - 7.54937183e-13f * _t28) * _t29) + (1.0f - 0.166666672f * _t28 + (0.00833333377f - 0.000198412701f * _t28) * _t29)) * (_t14 * _t25);
-    let _t33 = _t13 * _t31 - _t8 * _t32;
-    let _t34 = _t13 * _t32 + _t8 * _t31;
-    let _t35 = _t4 * _t17 * _t19;
+    let _t31 = _t30 * _t30;
+    let _t32 = _t28 * (1.0f - _t29 * 0.166666672f + (0.00833333377f - _t29 * 0.000198412701f) * _t30 + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + (1.60577024e-10f - _t29 * 7.54937183e-13f) * _t30));
+    let _t33 = _t31 * (2.48015876e-05f - _t29 * 2.75573029e-07f + (2.08744777e-09f - _t29 * 1.13046204e-11f) * _t30) + ((0.0416666679f - _t29 * 0.00138888892f) * _t30 + (1.0f - _t29 * 0.5f));
+    let _t34 = _t32 * _t8 + _t13 * _t33;
+    let _t35 = _t15 * _t2 * _t19;
     let _t36 = _t35 * _t35;
     let _t37 = _t36 * _t36;
-    let _t38 = _t37 * ((2.08744777e-09f - _t35 * 1.13046204e-11f) * _t36 + (2.48015876e-05f - _t35 * 2.75573029e-07f)) + ((0.0416666679f - _t35 * 0.00138888892f) * _t36 + (1.0f - _t35 * 0.5f));
-    let _t39 = ((0.00833333377f - _t35 * 0.000198412701f) * _t36 + (1.0f - _t35 * 0.166666672f) + ((1.60577024e-10f - _t35 * 7.54937183e-13f) * _t36 + (2.75573188e-06f - _t35 * 2.50520991e-08f)) * _t37) * (_t25 * _t16);
-    let _t40 = _t38 * _t12 - _t39 * _t6;
-    let _t41 = _t27 * _t33 - _t34 * _t40;
-    let _t42 = _t41 * _t41;
-    let _t43 = _t38 * _t6 + _t39 * _t12;
-    let _t44 = _t9 * _t23 - _t26 * _t1;
-    let _t45 = _t33 * _t43 - _t44 * _t40;
-    let _t46 = _t45 * _t45;
-    let _t47 = _t34 * _t44 - _t27 * _t43;
-    let _t48 = _t47 * _t47;
-    let _t49 = _t42 + _t46 + _t48;
-    let _t50 = select(0.0f, 1.0f / _t49, _t49 > 1.17549435e-38f);
-    let _t51 = _t42 * _t4 * _t50;
-    let _t52 = _t51 * _t51;
-    let _t53 = _t52 * _t52;
-    let _t54 = (2.48015876e-05f - _t51 * 2.75573029e-07f + _t52 * (2.08744777e-09f - _t51 * 1.13046204e-11f)) * _t53 + (1.0f - _t51 * 0.5f + _t52 * (0.0416666679f - _t51 * 0.00138888892f));
-    let _t55 = _t3 * (sqrt(_t49) * _t50);
-    let _t56 = _t41 * _t55 * (1.0f - _t51 * 0.166666672f + _t52 * (0.00833333377f - _t51 * 0.000198412701f) + (2.75573188e-06f - _t51 * 2.50520991e-08f + _t52 * (1.60577024e-10f - _t51 * 7.54937183e-13f)) * _t53);
-    let _t57 = _t4 * _t48 * _t50;
-    let _t58 = _t57 * _t57;
-    let _t59 = _t58 * _t58;
-    let _t60 = _t58 * (0.0416666679f - _t57 * 0.00138888892f) + (1.0f - _t57 * 0.5f) + (_t58 * (2.08744777e-09f - _t57 * 1.13046204e-11f) + (2.48015876e-05f - _t57 * 2.75573029e-07f)) * _t59;
-    let _t61 = (_t58 * (0.00833333377f - _t57 * 0.000198412701f) + (1.0f - _t57 * 0.166666672f) + (2.75573188e-06f - _t57 * 2.50520991e-08f + _t58 * (1.60577024e-10f - _t57 * 7.54937183e-13f)) * _t59) * (_t47 * _t55);
-    let _t62 = _t50 * (_t4 * _t46);
-    let _t63 = _t62 * _t62;
-    let _t64 = _t63 * _t63;
-    let _t65 = (2.48015876e-05f - _t62 * 2.75573029e-07f + _t63 * (2.08744777e-09f - _t62 * 1.13046204e-11f)) * _t64 + (_t63 * (0.0416666679f - _t62 * 0.00138888892f) + (1.0f - _t62 * 0.5f));
-    let _t66 = _t55 * _t45 * ((_t63 * (1.60577024e-10f - _t62 * 7.54937183e-13f) + (2.75573188e-06f - _t62 * 2.50520991e-08f)) * _t64 + (_t63 * (0.00833333377f - _t62 * 0.000198412701f) + (1.0f - _t62 * 0.166666672f)));
-    let _t67 = -_t2;
-    let _t68 = select(1.0f, (select((-1.0f), _t67, (-1.0f) <= _t67)), _t67 <= 1.0f);
-    let _t69 = _t68 * _t68;
-    let _t70 = _t69 * _t15 * _t19;
-    let _t71 = _t70 * _t70;
-    let _t72 = _t71 * _t71;
-    let _t73 = _t72 * (2.48015876e-05f - 2.75573029e-07f * _t70 + _t71 * (2.08744777e-09f - 1.13046204e-11f * _t70)) + (_t71 * (0.0416666679f - 0.00138888892f * _t70) + (1.0f - 0.5f * _t70));
-    let _t74 = _t24 * _t68;
-    let _t75 = (1.0f - 0.166666672f * _t70 + _t71 * (0.00833333377f - 0.000198412701f * _t70) + (2.75573188e-06f - 2.50520991e-08f * _t70 + _t71 * (1.60577024e-10f - 7.54937183e-13f * _t70)) * _t72) * (_t14 * _t74);
-    let _t76 = _t13 * _t73 - _t8 * _t75;
-    let _t77 = _t69 * _t17 * _t19;
-    let _t78 = _t77 * _t77;
-    let _t79 = _t78 * _t78;
-    let _t80 = _t74 * _t16 * (_t79 * (2.75573188e-06f - 2.50520991e-08f * _t77 + (1.60577024e-10f - 7.54937183e-13f * _t77) * _t78) + (_t78 * (0.00833333377f - 0.000198412701f * _t77) + (1.0f - 0.166666672f * _t77)));
-    let _t81 = (2.48015876e-05f - _t77 * 2.75573029e-07f + _t78 * (2.08744777e-09f - 1.13046204e-11f * _t77)) * _t79 + ((0.0416666679f - 0.00138888892f * _t77) * _t78 + (1.0f - _t77 * 0.5f));
-    let _t82 = _t80 * _t12 + _t81 * _t6;
-    let _t83 = _t81 * _t12 - _t80 * _t6;
-    let _t84 = _t69 * _t11 * _t19;
+    let _t38 = _t14 * _t24;
+    let _t39 = ((2.75573188e-06f - 2.50520991e-08f * _t35 + _t36 * (1.60577024e-10f - 7.54937183e-13f * _t35)) * _t37 + (_t36 * (0.00833333377f - 0.000198412701f * _t35) + (1.0f - 0.166666672f * _t35))) * _t38;
+    let _t40 = (_t36 * (2.08744777e-09f - _t35 * 1.13046204e-11f) + (2.48015876e-05f - _t35 * 2.75573029e-07f)) * _t37 + ((0.0416666679f - 0.00138888892f * _t35) * _t36 + (1.0f - _t35 * 0.5f));
+    let _t41 = _t4 * _t39 + _t12 * _t40;
+    let _t42 = _t8 * _t33 - _t32 * _t13;
+    let _t43 = _t27 * _t34 - _t41 * _t42;
+    let _t44 = _t4 * _t40 - _t12 * _t39;
+    let _t45 = _t23 * _t9 - _t26 * _t6;
+    let _t46 = _t45 * _t41 - _t34 * _t44;
+    let _t47 = _t27 * _t44 - _t45 * _t42;
+    let _t48 = _t43 * _t43 + (_t46 * _t46 + _t47 * _t47);
+    let _t49 = _t1 * (sqrt(_t48) * (select(0.0f, 1.0f / _t48, _t48 > 1.17549435e-38f)));
+    let _t50 = _t38 - _t49 * _t46;
+    let _t51 = _t27 * _t42;
+    let _t52 = _t34 * _t41;
+    let _t53 = _t51 + _t52;
+    let _t54 = _t49 * _t43 - _t28;
+    let _t55 = _t47 * _t49 - _t25;
+    let _t56 = _t45 * _t44;
+    let _t57 = -((_t43 + (_t42 * _t44 * _t50 + _t53 * _t54 * 0.5f)) * _t54 + _t55 * (_t27 * _t41 * _t50 + (_t47 + _t45 * _t34 * _t54) + _t55 * (_t51 + _t56) * 0.5f) + _t50 * (_t50 * (_t52 + _t56) * 0.5f - _t46) - (_t56 + _t53));
+    let _t58 = 1.73205256f * abs(_t1);
+    let _t59 = _t12 * _t13 + _t4 * _t9 + _t8 * _t6;
+    let _t60 = _t58 + _t59;
+    let _t61 = _t59 - _t58;
+    return select(_t60, (select(_t61, _t57, _t61 <= _t57)), _t57 <= _t60);
+}
+
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 420.
+fn gyroid_proj_o4_shell(p: vec3<f32>, t: f32) -> f32 {
+    let _t0 = p.z * 6.28318548f;
+    let _t1 = gyroid_proj_o4_sin(_t0);
+    let _t2 = 6.28318548f * (t * 0.5f);
+    let _t3 = -_t2;
+    let _t4 = select(1.0f, (select((-1.0f), _t3, (-1.0f) <= _t3)), _t3 <= 1.0f);
+    let _t5 = _t4 * _t4;
+    let _t6 = gyroid_proj_o4_cos(_t0);
+    let _t7 = 6.28318548f * p.x;
+    let _t8 = gyroid_proj_o4_cos(_t7);
+    let _t9 = 6.28318548f * p.y;
+    let _t10 = gyroid_proj_o4_sin(_t9);
+    let _t11 = _t6 * _t8 - _t1 * _t10;
+    let _t12 = _t11 * _t11;
+    let _t13 = gyroid_proj_o4_sin(_t7);
+    let _t14 = gyroid_proj_o4_cos(_t9);
+    let _t15 = _t10 * _t13 - _t6 * _t14;
+    let _t16 = _t15 * _t15;
+    let _t17 = _t1 * _t13 - _t14 * _t8;
+    let _t18 = _t17 * _t17;
+    let _t19 = _t12 + _t16 + _t18;
+    let _t20 = select(0.0f, 1.0f / _t19, _t19 > 1.17549435e-38f);
+    let _t21 = _t5 * _t12 * _t20;
+    let _t22 = _t21 * _t21;
+    let _t23 = _t22 * _t22;
+    let _t24 = _t23 * (2.48015876e-05f - 2.75573029e-07f * _t21 + _t22 * (2.08744777e-09f - 1.13046204e-11f * _t21)) + (_t22 * (0.0416666679f - 0.00138888892f * _t21) + (1.0f - 0.5f * _t21));
+    let _t25 = sqrt(_t19) * _t20;
+    let _t26 = _t25 * _t4;
+    let _t27 = _t11 * _t26;
+    let _t28 = (1.0f - 0.166666672f * _t21 + _t22 * (0.00833333377f - 0.000198412701f * _t21) + (2.75573188e-06f - 2.50520991e-08f * _t21 + _t22 * (1.60577024e-10f - 7.54937183e-13f * _t21)) * _t23) * _t27;
+    let _t29 = _t1 * _t24 - _t6 * _t28;
+    let _t30 = _t26 * _t17;
+    let _t31 = _t5 * _t18 * _t20;
+    let _t32 = _t31 * _t31;
+    let _t33 = _t32 * _t32;
+    let _t34 = _t30 * (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + (1.60577024e-10f - 7.54937183e-13f * _t31) * _t32) + (_t32 * (0.00833333377f - 0.000198412701f * _t31) + (1.0f - 0.166666672f * _t31)));
+    let _t35 = (2.48015876e-05f - _t31 * 2.75573029e-07f + _t32 * (2.08744777e-09f - 1.13046204e-11f * _t31)) * _t33 + ((0.0416666679f - 0.00138888892f * _t31) * _t32 + (1.0f - _t31 * 0.5f));
+    let _t36 = _t34 * _t8 + _t35 * _t13;
+    let _t37 = _t35 * _t8 - _t34 * _t13;
+    let _t38 = _t5 * _t16 * _t20;
+    let _t39 = _t38 * _t38;
+    let _t40 = _t39 * _t39;
+    let _t41 = _t40 * (_t39 * (2.08744777e-09f - _t38 * 1.13046204e-11f) + (2.48015876e-05f - _t38 * 2.75573029e-07f)) + (1.0f - _t38 * 0.5f + _t39 * (0.0416666679f - 0.00138888892f * _t38));
+    let _t42 = _t26 * _t15;
+    let _t43 = (_t39 * (0.00833333377f - _t38 * 0.000198412701f) + (1.0f - 0.166666672f * _t38) + (_t39 * (1.60577024e-10f - 7.54937183e-13f * _t38) + (2.75573188e-06f - 2.50520991e-08f * _t38)) * _t40) * _t42;
+    let _t44 = _t14 * _t41 - _t10 * _t43;
+    let _t45 = _t29 * _t36 - _t37 * _t44;
+    let _t46 = _t6 * _t24 + _t1 * _t28;
+    let _t47 = _t41 * _t10 + _t14 * _t43;
+    let _t48 = _t46 * _t37 - _t29 * _t47;
+    let _t49 = _t36 * _t47 - _t46 * _t44;
+    let _t50 = _t45 * _t45 + _t48 * _t48 + _t49 * _t49;
+    let _t51 = (select(0.0f, 1.0f / _t50, _t50 > 1.17549435e-38f)) * sqrt(_t50) * _t4;
+    let _t52 = _t45 * _t51 - _t30;
+    let _t53 = _t27 - _t51 * _t48;
+    let _t54 = _t44 * _t36;
+    let _t55 = _t37 * _t29;
+    let _t56 = _t54 + _t55;
+    let _t57 = _t51 * _t49 - _t42;
+    let _t58 = _t46 * _t47;
+    let _t59 = -(_t52 * (_t53 * (_t46 * _t36) + (_t45 + _t52 * _t56 * 0.5f + _t37 * _t47 * _t57)) + _t57 * (_t29 * _t44 * _t53 + _t49 + 0.5f * ((_t54 + _t58) * _t57)) + ((_t55 + _t58) * _t53 * 0.5f - _t48) * _t53 - (_t58 + _t56));
+    let _t60 = 1.73205256f * abs(_t4);
+    let _t61 = _t6 * _t10 + _t1 * _t8 + _t14 * _t13;
+    let _t62 = _t60 + _t61;
+    let _t63 = _t61 - _t60;
+    let _t64 = select(1.0f, (select((-1.0f), _t2, (-1.0f) <= _t2)), _t2 <= 1.0f);
+    let _t65 = _t64 * _t64;
+    let _t66 = _t65 * _t12 * _t20;
+    let _t67 = _t66 * _t66;
+    let _t68 = _t67 * _t67;
+    let _t69 = _t64 * _t25;
+    let _t70 = _t11 * _t69;
+    let _t71 = (_t68 * (2.75573188e-06f - 2.50520991e-08f * _t66 + (1.60577024e-10f - 7.54937183e-13f * _t66) * _t67) + (1.0f - 0.166666672f * _t66 + (0.00833333377f - 0.000198412701f * _t66) * _t67)) * _t70;
+    let _t72 = 1.0f - _t66 * 0.5f + (0.0416666679f - 0.00138888892f * _t66) * _t67 + _t68 * ((2.08744777e-09f - 1.13046204e-11f * _t66) * _t67 + (2.48015876e-05f - _t66 * 2.75573029e-07f));
+    let _t73 = _t1 * _t71 + _t6 * _t72;
+    let _t74 = _t65 * _t16 * _t20;
+    let _t75 = _t74 * _t74;
+    let _t76 = _t75 * _t75;
+    let _t77 = 1.0f - _t74 * 0.5f + _t75 * (0.0416666679f - _t74 * 0.00138888892f) + _t76 * (2.48015876e-05f - _t74 * 2.75573029e-07f + _t75 * (2.08744777e-09f - _t74 * 1.13046204e-11f));
+    let _t78 = _t15 * _t69;
+    let _t79 = (1.0f - _t74 * 0.166666672f + _t75 * (0.00833333377f - _t74 * 0.000198412701f) + (2.75573188e-06f - _t74 * 2.50520991e-08f + _t75 * (1.60577024e-10f - _t74 * 7.54937183e-13f)) * _t76) * _t78;
+    let _t80 = _t10 * _t77 + _t14 * _t79;
+    let _t81 = _t73 * _t80;
+    let _t82 = _t1 * _t72 - _t6 * _t71;
+    let _t83 = _t65 * _t18 * _t20;
+    let _t84 = _t83 * _t83;
     let _t85 = _t84 * _t84;
-    let _t86 = _t85 * _t85;
-    let _t87 = _t86 * (_t85 * (2.08744777e-09f - _t84 * 1.13046204e-11f) + (2.48015876e-05f - _t84 * 2.75573029e-07f)) + (1.0f - _t84 * 0.5f + _t85 * (0.0416666679f - 0.00138888892f * _t84));
-    let _t88 = (_t85 * (0.00833333377f - _t84 * 0.000198412701f) + (1.0f - 0.166666672f * _t84) + (_t85 * (1.60577024e-10f - 7.54937183e-13f * _t84) + (2.75573188e-06f - 2.50520991e-08f * _t84)) * _t86) * (_t74 * _t10);
-    let _t89 = _t9 * _t87 - _t1 * _t88;
-    let _t90 = _t76 * _t82 - _t83 * _t89;
-    let _t91 = _t90 * _t90;
-    let _t92 = _t8 * _t73 + _t13 * _t75;
-    let _t93 = _t87 * _t1 + _t9 * _t88;
-    let _t94 = _t92 * _t83 - _t76 * _t93;
-    let _t95 = _t94 * _t94;
-    let _t96 = _t82 * _t93 - _t92 * _t89;
-    let _t97 = _t96 * _t96;
-    let _t98 = _t91 + _t95 + _t97;
-    let _t99 = select(0.0f, 1.0f / _t98, _t98 > 1.17549435e-38f);
-    let _t100 = _t69 * _t91 * _t99;
-    let _t101 = _t100 * _t100;
-    let _t102 = _t101 * _t101;
-    let _t103 = (0.0416666679f - _t100 * 0.00138888892f) * _t101 + (1.0f - _t100 * 0.5f) + _t102 * ((2.08744777e-09f - _t100 * 1.13046204e-11f) * _t101 + (2.48015876e-05f - _t100 * 2.75573029e-07f));
-    let _t104 = _t99 * sqrt(_t98) * _t68;
-    let _t105 = ((2.75573188e-06f - _t100 * 2.50520991e-08f + (1.60577024e-10f - _t100 * 7.54937183e-13f) * _t101) * _t102 + (1.0f - _t100 * 0.166666672f + (0.00833333377f - _t100 * 0.000198412701f) * _t101)) * (_t90 * _t104);
-    let _t106 = _t69 * _t97 * _t99;
-    let _t107 = _t106 * _t106;
-    let _t108 = _t107 * _t107;
-    let _t109 = 1.0f - _t106 * 0.5f + _t107 * (0.0416666679f - 0.00138888892f * _t106) + (_t107 * (2.08744777e-09f - _t106 * 1.13046204e-11f) + (2.48015876e-05f - _t106 * 2.75573029e-07f)) * _t108;
-    let _t110 = ((2.75573188e-06f - 2.50520991e-08f * _t106 + _t107 * (1.60577024e-10f - 7.54937183e-13f * _t106)) * _t108 + (1.0f - 0.166666672f * _t106 + _t107 * (0.00833333377f - 0.000198412701f * _t106))) * (_t104 * _t96);
-    let _t111 = _t69 * _t95 * _t99;
-    let _t112 = _t111 * _t111;
-    let _t113 = _t112 * _t112;
-    let _t114 = (2.48015876e-05f - 2.75573029e-07f * _t111 + _t112 * (2.08744777e-09f - 1.13046204e-11f * _t111)) * _t113 + (1.0f - 0.5f * _t111 + (0.0416666679f - 0.00138888892f * _t111) * _t112);
-    let _t115 = _t104 * _t94 * (((1.60577024e-10f - 7.54937183e-13f * _t111) * _t112 + (2.75573188e-06f - 2.50520991e-08f * _t111)) * _t113 + (1.0f - 0.166666672f * _t111 + _t112 * (0.00833333377f - 0.000198412701f * _t111)));
-    return ((_t54 * _t8 - _t13 * _t56) * (_t1 * _t60 - _t9 * _t61) + (_t65 * _t6 + _t66 * _t12) * (_t9 * _t60 + _t1 * _t61) + (_t65 * _t12 - _t66 * _t6) * (_t54 * _t13 + _t8 * _t56)) * ((_t103 * _t6 + _t105 * _t12) * (_t9 * _t109 - _t110 * _t1) + (_t109 * _t1 + _t110 * _t9) * (_t8 * _t114 + _t13 * _t115) + (_t13 * _t114 - _t8 * _t115) * (_t103 * _t12 - _t105 * _t6));
+    let _t86 = _t85 * ((2.08744777e-09f - _t83 * 1.13046204e-11f) * _t84 + (2.48015876e-05f - _t83 * 2.75573029e-07f)) + ((0.0416666679f - _t83 * 0.00138888892f) * _t84 + (1.0f - _t83 * 0.5f));
+    let _t87 = _t69 * _t17;
+    let _t88 = ((0.00833333377f - _t83 * 0.000198412701f) * _t84 + (1.0f - _t83 * 0.166666672f) + ((1.60577024e-10f - _t83 * 7.54937183e-13f) * _t84 + (2.75573188e-06f - _t83 * 2.50520991e-08f)) * _t85) * _t87;
+    let _t89 = _t86 * _t8 - _t88 * _t13;
+    let _t90 = _t82 * _t89;
+    let _t91 = _t81 + _t90;
+    let _t92 = _t14 * _t77 - _t79 * _t10;
+    let _t93 = _t86 * _t13 + _t88 * _t8;
+    let _t94 = _t92 * _t93;
+    let _t95 = _t73 * _t92 - _t80 * _t93;
+    let _t96 = _t80 * _t82 - _t73 * _t89;
+    let _t97 = _t82 * _t93 - _t92 * _t89;
+    let _t98 = _t96 * _t96 + _t97 * _t97 + _t95 * _t95;
+    let _t99 = _t64 * (sqrt(_t98) * (select(0.0f, 1.0f / _t98, _t98 > 1.17549435e-38f)));
+    let _t100 = _t95 * _t99 + _t78;
+    let _t101 = _t70 + _t96 * _t99;
+    let _t102 = _t99 * _t97 - _t87;
+    let _t103 = _t91 + _t94 - (_t95 + (_t81 + _t94) * _t100 * 0.5f - _t101 * (_t82 * _t92)) * _t100 - _t102 * (_t101 * (_t73 * _t93) + (_t90 + _t94) * _t102 * 0.5f + _t97 - _t80 * _t89 * _t100) - _t101 * (_t96 + _t91 * _t101 * 0.5f);
+    let _t104 = 1.73205256f * abs(_t64);
+    let _t105 = _t61 + _t104;
+    let _t106 = _t61 - _t104;
+    return (select(_t62, (select(_t63, _t59, _t63 <= _t59)), _t59 <= _t62)) * (select(_t105, (select(_t106, _t103, _t106 <= _t103)), _t103 <= _t105));
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 319.

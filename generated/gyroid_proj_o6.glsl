@@ -8,7 +8,9 @@ description: |
     Source: Schoen 1970, NASA TN D-5541; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 2 projection steps: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 6. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 6. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> gyroid_proj_o6_field(<vec3 p>)
     - <float> gyroid_proj_o6_offset(<vec3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 3 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 4. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 14
-    - offset: 440
-    - shell: 854
+    - offset: 366
+    - shell: 701
     - normal: 458
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o6","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":440,"shell":854,"normal":458}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o6","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":366,"shell":701,"normal":458}} */
 #ifndef OFFSETGEN_GYROID_PROJ_O6_GLSL
 #define OFFSETGEN_GYROID_PROJ_O6_GLSL
 
@@ -92,288 +95,275 @@ highp float gyroid_proj_o6_field(highp vec3 p)
     return gyroid_proj_o6_cos(_t0) * gyroid_proj_o6_sin(_t1) + gyroid_proj_o6_sin(_t0) * gyroid_proj_o6_cos(_t2) + gyroid_proj_o6_cos(_t1) * gyroid_proj_o6_sin(_t2);
 }
 
-// phi(p, h) of order 6: zero on the surface moved by h along +grad F. Total ops: 440.
+// phi(p, h) of order 6: zero on the surface moved by h along +grad F. Total ops: 366.
 highp float gyroid_proj_o6_offset(highp vec3 p, highp float h)
 {
-    highp float _t0 = 6.28318548 * p.y;
-    highp float _t1 = gyroid_proj_o6_cos(_t0);
-    highp float _t2 = 6.28318548 * h;
-    highp float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    highp float _t4 = _t3 * _t3;
-    highp float _t5 = p.z * 6.28318548;
+    highp float _t0 = 6.28318548 * h;
+    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t2 = _t1 * _t1;
+    highp float _t3 = p.z * 6.28318548;
+    highp float _t4 = gyroid_proj_o6_sin(_t3);
+    highp float _t5 = 6.28318548 * p.x;
     highp float _t6 = gyroid_proj_o6_sin(_t5);
-    highp float _t7 = 6.28318548 * p.x;
-    highp float _t8 = gyroid_proj_o6_sin(_t7);
-    highp float _t9 = gyroid_proj_o6_cos(_t7);
-    highp float _t10 = _t6 * _t8 - _t1 * _t9;
+    highp float _t7 = 6.28318548 * p.y;
+    highp float _t8 = gyroid_proj_o6_cos(_t7);
+    highp float _t9 = gyroid_proj_o6_cos(_t5);
+    highp float _t10 = _t4 * _t6 - _t8 * _t9;
     highp float _t11 = _t10 * _t10;
-    highp float _t12 = gyroid_proj_o6_cos(_t5);
-    highp float _t13 = gyroid_proj_o6_sin(_t0);
-    highp float _t14 = _t12 * _t9 - _t6 * _t13;
+    highp float _t12 = gyroid_proj_o6_cos(_t3);
+    highp float _t13 = gyroid_proj_o6_sin(_t7);
+    highp float _t14 = _t12 * _t9 - _t4 * _t13;
     highp float _t15 = _t14 * _t14;
-    highp float _t16 = _t13 * _t8 - _t12 * _t1;
+    highp float _t16 = _t13 * _t6 - _t12 * _t8;
     highp float _t17 = _t16 * _t16;
     highp float _t18 = _t15 + _t17 + _t11;
     highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
-    highp float _t20 = _t4 * _t11 * _t19;
+    highp float _t20 = _t2 * _t11 * _t19;
     highp float _t21 = _t20 * _t20;
     highp float _t22 = _t21 * _t21;
     highp float _t23 = (2.48015876e-05 - _t20 * 2.75573029e-07 + _t21 * (2.08744777e-09 - 1.13046204e-11 * _t20)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.0416666679 - 0.00138888892 * _t20));
-    highp float _t24 = _t3 * (sqrt(_t18) * _t19);
+    highp float _t24 = _t1 * (sqrt(_t18) * _t19);
     highp float _t25 = ((_t21 * (1.60577024e-10 - 7.54937183e-13 * _t20) + (2.75573188e-06 - 2.50520991e-08 * _t20)) * _t22 + (1.0 - 0.166666672 * _t20 + _t21 * (0.00833333377 - 0.000198412701 * _t20))) * (_t24 * _t10);
-    highp float _t26 = _t23 * _t8 + _t25 * _t9;
-    highp float _t27 = _t4 * _t17 * _t19;
+    highp float _t26 = _t23 * _t6 + _t25 * _t9;
+    highp float _t27 = _t15 * _t2 * _t19;
     highp float _t28 = _t27 * _t27;
     highp float _t29 = _t28 * _t28;
-    highp float _t30 = _t16 * _t24 * (1.0 - _t27 * 0.166666672 + (0.00833333377 - _t27 * 0.000198412701) * _t28 + _t29 * (2.75573188e-06 - _t27 * 2.50520991e-08 + (1.60577024e-10 - _t27 * 7.54937183e-13) * _t28));
-    highp float _t31 = _t29 * (2.48015876e-05 - _t27 * 2.75573029e-07 + (2.08744777e-09 - _t27 * 1.13046204e-11) * _t28) + ((0.0416666679 - _t27 * 0.00138888892) * _t28 + (1.0 - _t27 * 0.5));
-    highp float _t32 = _t30 * _t1 + _t13 * _t31;
-    highp float _t33 = _t15 * _t4 * _t19;
-    highp float _t34 = _t33 * _t33;
+    highp float _t30 = (_t28 * (2.08744777e-09 - _t27 * 1.13046204e-11) + (2.48015876e-05 - _t27 * 2.75573029e-07)) * _t29 + ((0.0416666679 - 0.00138888892 * _t27) * _t28 + (1.0 - _t27 * 0.5));
+    highp float _t31 = ((2.75573188e-06 - 2.50520991e-08 * _t27 + _t28 * (1.60577024e-10 - 7.54937183e-13 * _t27)) * _t29 + (_t28 * (0.00833333377 - 0.000198412701 * _t27) + (1.0 - 0.166666672 * _t27))) * (_t14 * _t24);
+    highp float _t32 = _t4 * _t30 - _t12 * _t31;
+    highp float _t33 = _t23 * _t9 - _t25 * _t6;
+    highp float _t34 = _t2 * _t17 * _t19;
     highp float _t35 = _t34 * _t34;
-    highp float _t36 = ((2.75573188e-06 - 2.50520991e-08 * _t33 + _t34 * (1.60577024e-10 - 7.54937183e-13 * _t33)) * _t35 + (_t34 * (0.00833333377 - 0.000198412701 * _t33) + (1.0 - 0.166666672 * _t33))) * (_t14 * _t24);
-    highp float _t37 = (_t34 * (2.08744777e-09 - _t33 * 1.13046204e-11) + (2.48015876e-05 - _t33 * 2.75573029e-07)) * _t35 + ((0.0416666679 - 0.00138888892 * _t33) * _t34 + (1.0 - _t33 * 0.5));
-    highp float _t38 = _t6 * _t36 + _t12 * _t37;
-    highp float _t39 = _t1 * _t31 - _t30 * _t13;
-    highp float _t40 = _t26 * _t32 - _t38 * _t39;
+    highp float _t36 = _t35 * _t35;
+    highp float _t37 = _t36 * (2.48015876e-05 - _t34 * 2.75573029e-07 + (2.08744777e-09 - _t34 * 1.13046204e-11) * _t35) + ((0.0416666679 - _t34 * 0.00138888892) * _t35 + (1.0 - _t34 * 0.5));
+    highp float _t38 = _t16 * _t24 * (1.0 - _t34 * 0.166666672 + (0.00833333377 - _t34 * 0.000198412701) * _t35 + _t36 * (2.75573188e-06 - _t34 * 2.50520991e-08 + (1.60577024e-10 - _t34 * 7.54937183e-13) * _t35));
+    highp float _t39 = _t8 * _t37 - _t38 * _t13;
+    highp float _t40 = _t26 * _t32 - _t33 * _t39;
     highp float _t41 = _t40 * _t40;
-    highp float _t42 = _t23 * _t9 - _t25 * _t8;
-    highp float _t43 = _t6 * _t37 - _t12 * _t36;
-    highp float _t44 = _t42 * _t38 - _t32 * _t43;
+    highp float _t42 = _t38 * _t8 + _t13 * _t37;
+    highp float _t43 = _t4 * _t31 + _t12 * _t30;
+    highp float _t44 = _t26 * _t42 - _t43 * _t39;
     highp float _t45 = _t44 * _t44;
-    highp float _t46 = _t26 * _t43 - _t42 * _t39;
+    highp float _t46 = _t33 * _t43 - _t42 * _t32;
     highp float _t47 = _t46 * _t46;
-    highp float _t48 = _t41 + (_t45 + _t47);
+    highp float _t48 = _t45 + (_t47 + _t41);
     highp float _t49 = (_t48 > 1.17549435e-38) ? 1.0 / _t48 : 0.0;
-    highp float _t50 = _t49 * (_t4 * _t41);
+    highp float _t50 = _t2 * _t41 * _t49;
     highp float _t51 = _t50 * _t50;
     highp float _t52 = _t51 * _t51;
-    highp float _t53 = _t52 * ((2.08744777e-09 - _t50 * 1.13046204e-11) * _t51 + (2.48015876e-05 - _t50 * 2.75573029e-07)) + (1.0 - _t50 * 0.5 + (0.0416666679 - _t50 * 0.00138888892) * _t51);
-    highp float _t54 = _t3 * (sqrt(_t48) * _t49);
-    highp float _t55 = _t54 * _t40 * (1.0 - _t50 * 0.166666672 + (0.00833333377 - _t50 * 0.000198412701) * _t51 + _t52 * (_t51 * (1.60577024e-10 - _t50 * 7.54937183e-13) + (2.75573188e-06 - _t50 * 2.50520991e-08)));
-    highp float _t56 = _t53 * _t13 + _t1 * _t55;
-    highp float _t57 = _t49 * (_t45 * _t4);
-    highp float _t58 = _t57 * _t57;
+    highp float _t53 = _t51 * (0.0416666679 - _t50 * 0.00138888892) + (1.0 - _t50 * 0.5) + _t52 * (2.48015876e-05 - _t50 * 2.75573029e-07 + _t51 * (2.08744777e-09 - _t50 * 1.13046204e-11));
+    highp float _t54 = _t1 * (sqrt(_t48) * _t49);
+    highp float _t55 = _t40 * _t54;
+    highp float _t56 = ((2.75573188e-06 - _t50 * 2.50520991e-08 + (1.60577024e-10 - _t50 * 7.54937183e-13) * _t51) * _t52 + (_t51 * (0.00833333377 - _t50 * 0.000198412701) + (1.0 - _t50 * 0.166666672))) * _t55;
+    highp float _t57 = _t53 * _t6 + _t9 * _t56;
+    highp float _t58 = _t49 * (_t47 * _t2);
     highp float _t59 = _t58 * _t58;
-    highp float _t60 = _t59 * ((2.08744777e-09 - _t57 * 1.13046204e-11) * _t58 + (2.48015876e-05 - _t57 * 2.75573029e-07)) + (1.0 - _t57 * 0.5 + (0.0416666679 - 0.00138888892 * _t57) * _t58);
-    highp float _t61 = (1.0 - 0.166666672 * _t57 + (0.00833333377 - 0.000198412701 * _t57) * _t58 + _t59 * ((1.60577024e-10 - 7.54937183e-13 * _t57) * _t58 + (2.75573188e-06 - 2.50520991e-08 * _t57))) * (_t54 * _t44);
-    highp float _t62 = _t6 * _t60 - _t12 * _t61;
-    highp float _t63 = _t6 * _t61 + _t12 * _t60;
-    highp float _t64 = _t4 * _t47 * _t49;
-    highp float _t65 = _t64 * _t64;
+    highp float _t60 = _t59 * _t59;
+    highp float _t61 = _t60 * ((2.08744777e-09 - _t58 * 1.13046204e-11) * _t59 + (2.48015876e-05 - _t58 * 2.75573029e-07)) + (1.0 - _t58 * 0.5 + (0.0416666679 - 0.00138888892 * _t58) * _t59);
+    highp float _t62 = _t54 * _t46;
+    highp float _t63 = (1.0 - 0.166666672 * _t58 + (0.00833333377 - 0.000198412701 * _t58) * _t59 + _t60 * ((1.60577024e-10 - 7.54937183e-13 * _t58) * _t59 + (2.75573188e-06 - 2.50520991e-08 * _t58))) * _t62;
+    highp float _t64 = _t4 * _t61 - _t12 * _t63;
+    highp float _t65 = _t49 * (_t2 * _t45);
     highp float _t66 = _t65 * _t65;
-    highp float _t67 = _t65 * (0.0416666679 - _t64 * 0.00138888892) + (1.0 - _t64 * 0.5) + _t66 * (2.48015876e-05 - _t64 * 2.75573029e-07 + _t65 * (2.08744777e-09 - _t64 * 1.13046204e-11));
-    highp float _t68 = ((2.75573188e-06 - _t64 * 2.50520991e-08 + (1.60577024e-10 - _t64 * 7.54937183e-13) * _t65) * _t66 + (_t65 * (0.00833333377 - _t64 * 0.000198412701) + (1.0 - _t64 * 0.166666672))) * (_t46 * _t54);
-    highp float _t69 = _t67 * _t9 - _t8 * _t68;
-    highp float _t70 = _t56 * _t62 - _t63 * _t69;
-    highp float _t71 = _t70 * _t70;
-    highp float _t72 = _t67 * _t8 + _t9 * _t68;
-    highp float _t73 = _t53 * _t1 - _t55 * _t13;
-    highp float _t74 = _t72 * _t56 - _t73 * _t63;
-    highp float _t75 = _t74 * _t74;
-    highp float _t76 = _t72 * _t62 - _t73 * _t69;
-    highp float _t77 = _t76 * _t76;
-    highp float _t78 = _t71 + _t75 + _t77;
-    highp float _t79 = (_t78 > 1.17549435e-38) ? 1.0 / _t78 : 0.0;
-    highp float _t80 = _t79 * (_t75 * _t4);
-    highp float _t81 = _t80 * _t80;
-    highp float _t82 = _t81 * _t81;
-    highp float _t83 = _t82 * (2.48015876e-05 - _t80 * 2.75573029e-07 + _t81 * (2.08744777e-09 - 1.13046204e-11 * _t80)) + (1.0 - _t80 * 0.5 + (0.0416666679 - 0.00138888892 * _t80) * _t81);
-    highp float _t84 = _t3 * (_t79 * sqrt(_t78));
-    highp float _t85 = (1.0 - 0.166666672 * _t80 + (0.00833333377 - 0.000198412701 * _t80) * _t81 + _t82 * (2.75573188e-06 - 2.50520991e-08 * _t80 + _t81 * (1.60577024e-10 - 7.54937183e-13 * _t80))) * (_t84 * _t74);
-    highp float _t86 = _t79 * (_t4 * _t77);
-    highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t87 * _t87;
-    highp float _t89 = _t76 * _t84 * (1.0 - _t86 * 0.166666672 + _t87 * (0.00833333377 - _t86 * 0.000198412701) + (_t87 * (1.60577024e-10 - _t86 * 7.54937183e-13) + (2.75573188e-06 - _t86 * 2.50520991e-08)) * _t88);
-    highp float _t90 = _t87 * (0.0416666679 - _t86 * 0.00138888892) + (1.0 - _t86 * 0.5) + (_t87 * (2.08744777e-09 - _t86 * 1.13046204e-11) + (2.48015876e-05 - _t86 * 2.75573029e-07)) * _t88;
-    highp float _t91 = _t79 * (_t71 * _t4);
-    highp float _t92 = _t91 * _t91;
-    highp float _t93 = _t92 * _t92;
-    highp float _t94 = _t92 * (0.0416666679 - 0.00138888892 * _t91) + (1.0 - _t91 * 0.5) + (_t92 * (2.08744777e-09 - _t91 * 1.13046204e-11) + (2.48015876e-05 - _t91 * 2.75573029e-07)) * _t93;
-    highp float _t95 = _t70 * _t84 * (_t93 * (2.75573188e-06 - 2.50520991e-08 * _t91 + _t92 * (1.60577024e-10 - 7.54937183e-13 * _t91)) + (1.0 - 0.166666672 * _t91 + _t92 * (0.00833333377 - 0.000198412701 * _t91)));
-    return (_t1 * _t83 - _t85 * _t13) * (_t89 * _t9 + _t90 * _t8) + (_t94 * _t12 - _t6 * _t95) * (_t13 * _t83 + _t85 * _t1) + (_t12 * _t95 + _t94 * _t6) * (_t90 * _t9 - _t89 * _t8);
+    highp float _t67 = _t66 * _t66;
+    highp float _t68 = _t67 * ((2.08744777e-09 - _t65 * 1.13046204e-11) * _t66 + (2.48015876e-05 - _t65 * 2.75573029e-07)) + (1.0 - _t65 * 0.5 + (0.0416666679 - _t65 * 0.00138888892) * _t66);
+    highp float _t69 = _t54 * _t44;
+    highp float _t70 = _t69 * (1.0 - _t65 * 0.166666672 + (0.00833333377 - _t65 * 0.000198412701) * _t66 + _t67 * (_t66 * (1.60577024e-10 - _t65 * 7.54937183e-13) + (2.75573188e-06 - _t65 * 2.50520991e-08)));
+    highp float _t71 = _t68 * _t8 - _t70 * _t13;
+    highp float _t72 = _t53 * _t9 - _t6 * _t56;
+    highp float _t73 = _t57 * _t64 - _t71 * _t72;
+    highp float _t74 = _t68 * _t13 + _t8 * _t70;
+    highp float _t75 = _t4 * _t63 + _t12 * _t61;
+    highp float _t76 = _t74 * _t64 - _t75 * _t72;
+    highp float _t77 = _t57 * _t74 - _t71 * _t75;
+    highp float _t78 = _t76 * _t76 + _t77 * _t77 + _t73 * _t73;
+    highp float _t79 = _t1 * (((_t78 > 1.17549435e-38) ? 1.0 / _t78 : 0.0) * sqrt(_t78));
+    highp float _t80 = _t73 * _t79 - _t55;
+    highp float _t81 = _t79 * _t77 - _t69;
+    highp float _t82 = _t71 * _t57;
+    highp float _t83 = _t64 * _t72;
+    highp float _t84 = _t82 + _t83;
+    highp float _t85 = _t76 * _t79 + _t62;
+    highp float _t86 = _t74 * _t75;
+    highp float _t87 = -(_t80 * (_t74 * _t72 * _t81 + (_t80 * _t84 * 0.5 + (_t85 * (_t57 * _t75) + _t73))) + (_t71 * _t64 * _t85 + (_t82 + _t86) * _t81 * 0.5 + _t77) * _t81 + (_t76 + (_t83 + _t86) * _t85 * 0.5) * _t85 - (_t86 + _t84));
+    highp float _t88 = 1.73205256 * abs(_t1);
+    highp float _t89 = _t12 * _t13 + _t4 * _t9 + _t8 * _t6;
+    highp float _t90 = _t88 + _t89;
+    highp float _t91 = _t89 - _t88;
+    return (_t87 <= _t90) ? ((_t91 <= _t87) ? _t87 : _t91) : _t90;
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 854.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 701.
 highp float gyroid_proj_o6_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = gyroid_proj_o6_sin(_t0);
-    highp float _t2 = 6.28318548 * p.y;
-    highp float _t3 = gyroid_proj_o6_sin(_t2);
-    highp float _t4 = 6.28318548 * (t * 0.5);
-    highp float _t5 = (_t4 <= 1.0) ? (((-1.0) <= _t4) ? _t4 : (-1.0)) : 1.0;
-    highp float _t6 = _t5 * _t5;
-    highp float _t7 = 6.28318548 * p.x;
-    highp float _t8 = gyroid_proj_o6_sin(_t7);
-    highp float _t9 = gyroid_proj_o6_cos(_t0);
-    highp float _t10 = gyroid_proj_o6_cos(_t2);
-    highp float _t11 = _t3 * _t8 - _t9 * _t10;
+    highp float _t1 = gyroid_proj_o6_cos(_t0);
+    highp float _t2 = 6.28318548 * (t * 0.5);
+    highp float _t3 = -_t2;
+    highp float _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
+    highp float _t5 = _t4 * _t4;
+    highp float _t6 = 6.28318548 * p.x;
+    highp float _t7 = gyroid_proj_o6_cos(_t6);
+    highp float _t8 = gyroid_proj_o6_sin(_t0);
+    highp float _t9 = 6.28318548 * p.y;
+    highp float _t10 = gyroid_proj_o6_sin(_t9);
+    highp float _t11 = _t1 * _t7 - _t8 * _t10;
     highp float _t12 = _t11 * _t11;
-    highp float _t13 = gyroid_proj_o6_cos(_t7);
-    highp float _t14 = _t9 * _t13 - _t1 * _t3;
-    highp float _t15 = _t14 * _t14;
-    highp float _t16 = _t1 * _t8 - _t10 * _t13;
-    highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t15 + _t12 + _t17;
-    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
-    highp float _t20 = _t6 * _t12 * _t19;
-    highp float _t21 = _t20 * _t20;
+    highp float _t13 = gyroid_proj_o6_sin(_t6);
+    highp float _t14 = gyroid_proj_o6_cos(_t9);
+    highp float _t15 = _t10 * _t13 - _t1 * _t14;
+    highp float _t16 = _t15 * _t15;
+    highp float _t17 = _t8 * _t13 - _t14 * _t7;
+    highp float _t18 = _t17 * _t17;
+    highp float _t19 = _t12 + _t16 + _t18;
+    highp float _t20 = (_t19 > 1.17549435e-38) ? 1.0 / _t19 : 0.0;
+    highp float _t21 = _t5 * _t12 * _t20;
     highp float _t22 = _t21 * _t21;
-    highp float _t23 = 1.0 - _t20 * 0.5 + _t21 * (0.0416666679 - _t20 * 0.00138888892) + _t22 * (2.48015876e-05 - _t20 * 2.75573029e-07 + _t21 * (2.08744777e-09 - _t20 * 1.13046204e-11));
-    highp float _t24 = sqrt(_t18) * _t19;
-    highp float _t25 = _t5 * _t24;
-    highp float _t26 = (1.0 - _t20 * 0.166666672 + _t21 * (0.00833333377 - _t20 * 0.000198412701) + (2.75573188e-06 - _t20 * 2.50520991e-08 + _t21 * (1.60577024e-10 - _t20 * 7.54937183e-13)) * _t22) * (_t11 * _t25);
-    highp float _t27 = _t3 * _t23 + _t10 * _t26;
-    highp float _t28 = _t6 * _t15 * _t19;
-    highp float _t29 = _t28 * _t28;
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = _t23 * (2.48015876e-05 - 2.75573029e-07 * _t21 + _t22 * (2.08744777e-09 - 1.13046204e-11 * _t21)) + (_t22 * (0.0416666679 - 0.00138888892 * _t21) + (1.0 - 0.5 * _t21));
+    highp float _t25 = sqrt(_t19) * _t20;
+    highp float _t26 = _t25 * _t4;
+    highp float _t27 = (1.0 - 0.166666672 * _t21 + _t22 * (0.00833333377 - 0.000198412701 * _t21) + (2.75573188e-06 - 2.50520991e-08 * _t21 + _t22 * (1.60577024e-10 - 7.54937183e-13 * _t21)) * _t23) * (_t11 * _t26);
+    highp float _t28 = _t1 * _t24 + _t8 * _t27;
+    highp float _t29 = _t5 * _t18 * _t20;
     highp float _t30 = _t29 * _t29;
-    highp float _t31 = 1.0 - _t28 * 0.5 + (0.0416666679 - 0.00138888892 * _t28) * _t29 + _t30 * ((2.08744777e-09 - 1.13046204e-11 * _t28) * _t29 + (2.48015876e-05 - _t28 * 2.75573029e-07));
-    highp float _t32 = (_t30 * (2.75573188e-06 - 2.50520991e-08 * _t28 + (1.60577024e-10 - 7.54937183e-13 * _t28) * _t29) + (1.0 - 0.166666672 * _t28 + (0.00833333377 - 0.000198412701 * _t28) * _t29)) * (_t14 * _t25);
-    highp float _t33 = _t1 * _t31 - _t9 * _t32;
-    highp float _t34 = _t1 * _t32 + _t9 * _t31;
-    highp float _t35 = _t6 * _t17 * _t19;
-    highp float _t36 = _t35 * _t35;
+    highp float _t31 = _t30 * _t30;
+    highp float _t32 = (2.48015876e-05 - _t29 * 2.75573029e-07 + _t30 * (2.08744777e-09 - 1.13046204e-11 * _t29)) * _t31 + ((0.0416666679 - 0.00138888892 * _t29) * _t30 + (1.0 - _t29 * 0.5));
+    highp float _t33 = _t26 * _t17 * (_t31 * (2.75573188e-06 - 2.50520991e-08 * _t29 + (1.60577024e-10 - 7.54937183e-13 * _t29) * _t30) + (_t30 * (0.00833333377 - 0.000198412701 * _t29) + (1.0 - 0.166666672 * _t29)));
+    highp float _t34 = _t32 * _t7 - _t33 * _t13;
+    highp float _t35 = _t8 * _t24 - _t1 * _t27;
+    highp float _t36 = _t5 * _t16 * _t20;
     highp float _t37 = _t36 * _t36;
-    highp float _t38 = _t37 * ((2.08744777e-09 - _t35 * 1.13046204e-11) * _t36 + (2.48015876e-05 - _t35 * 2.75573029e-07)) + ((0.0416666679 - _t35 * 0.00138888892) * _t36 + (1.0 - _t35 * 0.5));
-    highp float _t39 = ((0.00833333377 - _t35 * 0.000198412701) * _t36 + (1.0 - _t35 * 0.166666672) + ((1.60577024e-10 - _t35 * 7.54937183e-13) * _t36 + (2.75573188e-06 - _t35 * 2.50520991e-08)) * _t37) * (_t25 * _t16);
-    highp float _t40 = _t38 * _t13 - _t39 * _t8;
-    highp float _t41 = _t27 * _t33 - _t34 * _t40;
-    highp float _t42 = _t41 * _t41;
-    highp float _t43 = _t38 * _t8 + _t39 * _t13;
-    highp float _t44 = _t10 * _t23 - _t26 * _t3;
-    highp float _t45 = _t33 * _t43 - _t44 * _t40;
-    highp float _t46 = _t45 * _t45;
-    highp float _t47 = _t34 * _t44 - _t27 * _t43;
-    highp float _t48 = _t47 * _t47;
-    highp float _t49 = _t42 + _t46 + _t48;
-    highp float _t50 = (_t49 > 1.17549435e-38) ? 1.0 / _t49 : 0.0;
-    highp float _t51 = _t50 * (_t6 * _t46);
-    highp float _t52 = _t51 * _t51;
+    highp float _t38 = _t37 * _t37;
+    highp float _t39 = _t38 * (_t37 * (2.08744777e-09 - _t36 * 1.13046204e-11) + (2.48015876e-05 - _t36 * 2.75573029e-07)) + (1.0 - _t36 * 0.5 + _t37 * (0.0416666679 - 0.00138888892 * _t36));
+    highp float _t40 = (_t37 * (0.00833333377 - _t36 * 0.000198412701) + (1.0 - 0.166666672 * _t36) + (_t37 * (1.60577024e-10 - 7.54937183e-13 * _t36) + (2.75573188e-06 - 2.50520991e-08 * _t36)) * _t38) * (_t26 * _t15);
+    highp float _t41 = _t39 * _t10 + _t14 * _t40;
+    highp float _t42 = _t28 * _t34 - _t35 * _t41;
+    highp float _t43 = _t42 * _t42;
+    highp float _t44 = _t33 * _t7 + _t32 * _t13;
+    highp float _t45 = _t14 * _t39 - _t10 * _t40;
+    highp float _t46 = _t35 * _t44 - _t34 * _t45;
+    highp float _t47 = _t46 * _t46;
+    highp float _t48 = _t44 * _t41 - _t28 * _t45;
+    highp float _t49 = _t48 * _t48;
+    highp float _t50 = _t47 + _t43 + _t49;
+    highp float _t51 = (_t50 > 1.17549435e-38) ? 1.0 / _t50 : 0.0;
+    highp float _t52 = _t5 * _t43 * _t51;
     highp float _t53 = _t52 * _t52;
-    highp float _t54 = (2.48015876e-05 - _t51 * 2.75573029e-07 + _t52 * (2.08744777e-09 - _t51 * 1.13046204e-11)) * _t53 + (_t52 * (0.0416666679 - _t51 * 0.00138888892) + (1.0 - _t51 * 0.5));
-    highp float _t55 = _t5 * (sqrt(_t49) * _t50);
-    highp float _t56 = _t55 * _t45 * ((_t52 * (1.60577024e-10 - _t51 * 7.54937183e-13) + (2.75573188e-06 - _t51 * 2.50520991e-08)) * _t53 + (_t52 * (0.00833333377 - _t51 * 0.000198412701) + (1.0 - _t51 * 0.166666672)));
-    highp float _t57 = _t54 * _t13 - _t56 * _t8;
-    highp float _t58 = _t42 * _t6 * _t50;
-    highp float _t59 = _t58 * _t58;
-    highp float _t60 = _t59 * _t59;
-    highp float _t61 = (2.48015876e-05 - _t58 * 2.75573029e-07 + _t59 * (2.08744777e-09 - _t58 * 1.13046204e-11)) * _t60 + (1.0 - _t58 * 0.5 + _t59 * (0.0416666679 - _t58 * 0.00138888892));
-    highp float _t62 = _t41 * _t55 * (1.0 - _t58 * 0.166666672 + _t59 * (0.00833333377 - _t58 * 0.000198412701) + (2.75573188e-06 - _t58 * 2.50520991e-08 + _t59 * (1.60577024e-10 - _t58 * 7.54937183e-13)) * _t60);
-    highp float _t63 = _t61 * _t9 - _t1 * _t62;
-    highp float _t64 = _t61 * _t1 + _t9 * _t62;
-    highp float _t65 = _t6 * _t48 * _t50;
-    highp float _t66 = _t65 * _t65;
-    highp float _t67 = _t66 * _t66;
-    highp float _t68 = _t66 * (0.0416666679 - _t65 * 0.00138888892) + (1.0 - _t65 * 0.5) + (_t66 * (2.08744777e-09 - _t65 * 1.13046204e-11) + (2.48015876e-05 - _t65 * 2.75573029e-07)) * _t67;
-    highp float _t69 = (_t66 * (0.00833333377 - _t65 * 0.000198412701) + (1.0 - _t65 * 0.166666672) + (2.75573188e-06 - _t65 * 2.50520991e-08 + _t66 * (1.60577024e-10 - _t65 * 7.54937183e-13)) * _t67) * (_t47 * _t55);
-    highp float _t70 = _t3 * _t68 - _t10 * _t69;
-    highp float _t71 = _t57 * _t63 - _t64 * _t70;
-    highp float _t72 = _t71 * _t71;
-    highp float _t73 = _t10 * _t68 + _t3 * _t69;
-    highp float _t74 = _t54 * _t8 + _t56 * _t13;
-    highp float _t75 = _t57 * _t73 - _t74 * _t64;
-    highp float _t76 = _t75 * _t75;
-    highp float _t77 = _t73 * _t63 - _t74 * _t70;
-    highp float _t78 = _t77 * _t77;
-    highp float _t79 = _t72 + (_t76 + _t78);
-    highp float _t80 = (_t79 > 1.17549435e-38) ? 1.0 / _t79 : 0.0;
-    highp float _t81 = _t80 * (_t6 * _t72);
-    highp float _t82 = _t81 * _t81;
-    highp float _t83 = _t82 * _t82;
-    highp float _t84 = _t5 * (_t80 * sqrt(_t79));
-    highp float _t85 = (((1.60577024e-10 - 7.54937183e-13 * _t81) * _t82 + (2.75573188e-06 - 2.50520991e-08 * _t81)) * _t83 + (_t82 * (0.00833333377 - 0.000198412701 * _t81) + (1.0 - 0.166666672 * _t81))) * (_t71 * _t84);
-    highp float _t86 = _t83 * (2.48015876e-05 - _t81 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t81) * _t82) + ((0.0416666679 - 0.00138888892 * _t81) * _t82 + (1.0 - _t81 * 0.5));
-    highp float _t87 = _t6 * _t78 * _t80;
-    highp float _t88 = _t87 * _t87;
-    highp float _t89 = _t88 * _t88;
-    highp float _t90 = _t89 * (2.48015876e-05 - _t87 * 2.75573029e-07 + _t88 * (2.08744777e-09 - _t87 * 1.13046204e-11)) + (1.0 - _t87 * 0.5 + (0.0416666679 - _t87 * 0.00138888892) * _t88);
-    highp float _t91 = ((2.75573188e-06 - _t87 * 2.50520991e-08 + _t88 * (1.60577024e-10 - _t87 * 7.54937183e-13)) * _t89 + ((0.00833333377 - _t87 * 0.000198412701) * _t88 + (1.0 - _t87 * 0.166666672))) * (_t77 * _t84);
-    highp float _t92 = _t6 * _t76 * _t80;
-    highp float _t93 = _t92 * _t92;
-    highp float _t94 = _t93 * _t93;
-    highp float _t95 = _t94 * ((2.08744777e-09 - 1.13046204e-11 * _t92) * _t93 + (2.48015876e-05 - _t92 * 2.75573029e-07)) + (1.0 - _t92 * 0.5 + (0.0416666679 - 0.00138888892 * _t92) * _t93);
-    highp float _t96 = _t75 * _t84 * ((0.00833333377 - 0.000198412701 * _t92) * _t93 + (1.0 - 0.166666672 * _t92) + _t94 * ((1.60577024e-10 - 7.54937183e-13 * _t92) * _t93 + (2.75573188e-06 - 2.50520991e-08 * _t92)));
-    highp float _t97 = -_t4;
-    highp float _t98 = (_t97 <= 1.0) ? (((-1.0) <= _t97) ? _t97 : (-1.0)) : 1.0;
-    highp float _t99 = _t98 * _t98;
-    highp float _t100 = _t99 * _t15 * _t19;
-    highp float _t101 = _t100 * _t100;
-    highp float _t102 = _t101 * _t101;
-    highp float _t103 = _t102 * (2.48015876e-05 - 2.75573029e-07 * _t100 + _t101 * (2.08744777e-09 - 1.13046204e-11 * _t100)) + (_t101 * (0.0416666679 - 0.00138888892 * _t100) + (1.0 - 0.5 * _t100));
-    highp float _t104 = _t24 * _t98;
-    highp float _t105 = (1.0 - 0.166666672 * _t100 + _t101 * (0.00833333377 - 0.000198412701 * _t100) + (2.75573188e-06 - 2.50520991e-08 * _t100 + _t101 * (1.60577024e-10 - 7.54937183e-13 * _t100)) * _t102) * (_t14 * _t104);
-    highp float _t106 = _t1 * _t103 - _t9 * _t105;
-    highp float _t107 = _t99 * _t17 * _t19;
-    highp float _t108 = _t107 * _t107;
-    highp float _t109 = _t108 * _t108;
-    highp float _t110 = _t104 * _t16 * (_t109 * (2.75573188e-06 - 2.50520991e-08 * _t107 + (1.60577024e-10 - 7.54937183e-13 * _t107) * _t108) + (_t108 * (0.00833333377 - 0.000198412701 * _t107) + (1.0 - 0.166666672 * _t107)));
-    highp float _t111 = (2.48015876e-05 - _t107 * 2.75573029e-07 + _t108 * (2.08744777e-09 - 1.13046204e-11 * _t107)) * _t109 + ((0.0416666679 - 0.00138888892 * _t107) * _t108 + (1.0 - _t107 * 0.5));
-    highp float _t112 = _t110 * _t13 + _t111 * _t8;
-    highp float _t113 = _t111 * _t13 - _t110 * _t8;
-    highp float _t114 = _t99 * _t12 * _t19;
-    highp float _t115 = _t114 * _t114;
-    highp float _t116 = _t115 * _t115;
-    highp float _t117 = _t116 * (_t115 * (2.08744777e-09 - _t114 * 1.13046204e-11) + (2.48015876e-05 - _t114 * 2.75573029e-07)) + (1.0 - _t114 * 0.5 + _t115 * (0.0416666679 - 0.00138888892 * _t114));
-    highp float _t118 = (_t115 * (0.00833333377 - _t114 * 0.000198412701) + (1.0 - 0.166666672 * _t114) + (_t115 * (1.60577024e-10 - 7.54937183e-13 * _t114) + (2.75573188e-06 - 2.50520991e-08 * _t114)) * _t116) * (_t104 * _t11);
-    highp float _t119 = _t10 * _t117 - _t3 * _t118;
-    highp float _t120 = _t106 * _t112 - _t113 * _t119;
+    highp float _t54 = _t53 * _t53;
+    highp float _t55 = (2.48015876e-05 - 2.75573029e-07 * _t52 + _t53 * (2.08744777e-09 - 1.13046204e-11 * _t52)) * _t54 + (1.0 - 0.5 * _t52 + (0.0416666679 - 0.00138888892 * _t52) * _t53);
+    highp float _t56 = _t51 * sqrt(_t50) * _t4;
+    highp float _t57 = _t56 * _t42;
+    highp float _t58 = _t57 * (((1.60577024e-10 - 7.54937183e-13 * _t52) * _t53 + (2.75573188e-06 - 2.50520991e-08 * _t52)) * _t54 + (1.0 - 0.166666672 * _t52 + _t53 * (0.00833333377 - 0.000198412701 * _t52)));
+    highp float _t59 = _t1 * _t55 + _t8 * _t58;
+    highp float _t60 = _t5 * _t49 * _t51;
+    highp float _t61 = _t60 * _t60;
+    highp float _t62 = _t61 * _t61;
+    highp float _t63 = 1.0 - _t60 * 0.5 + _t61 * (0.0416666679 - 0.00138888892 * _t60) + (_t61 * (2.08744777e-09 - _t60 * 1.13046204e-11) + (2.48015876e-05 - _t60 * 2.75573029e-07)) * _t62;
+    highp float _t64 = _t56 * _t48;
+    highp float _t65 = ((2.75573188e-06 - 2.50520991e-08 * _t60 + _t61 * (1.60577024e-10 - 7.54937183e-13 * _t60)) * _t62 + (1.0 - 0.166666672 * _t60 + _t61 * (0.00833333377 - 0.000198412701 * _t60))) * _t64;
+    highp float _t66 = _t14 * _t63 - _t65 * _t10;
+    highp float _t67 = _t63 * _t10 + _t65 * _t14;
+    highp float _t68 = _t5 * _t47 * _t51;
+    highp float _t69 = _t68 * _t68;
+    highp float _t70 = _t69 * _t69;
+    highp float _t71 = (0.0416666679 - _t68 * 0.00138888892) * _t69 + (1.0 - _t68 * 0.5) + _t70 * ((2.08744777e-09 - _t68 * 1.13046204e-11) * _t69 + (2.48015876e-05 - _t68 * 2.75573029e-07));
+    highp float _t72 = _t46 * _t56;
+    highp float _t73 = ((2.75573188e-06 - _t68 * 2.50520991e-08 + (1.60577024e-10 - _t68 * 7.54937183e-13) * _t69) * _t70 + (1.0 - _t68 * 0.166666672 + (0.00833333377 - _t68 * 0.000198412701) * _t69)) * _t72;
+    highp float _t74 = _t71 * _t13 + _t73 * _t7;
+    highp float _t75 = _t59 * _t66 - _t67 * _t74;
+    highp float _t76 = _t71 * _t7 - _t73 * _t13;
+    highp float _t77 = _t8 * _t55 - _t1 * _t58;
+    highp float _t78 = _t76 * _t66 - _t77 * _t74;
+    highp float _t79 = _t59 * _t76 - _t77 * _t67;
+    highp float _t80 = _t75 * _t75 + (_t78 * _t78 + _t79 * _t79);
+    highp float _t81 = _t4 * (sqrt(_t80) * ((_t80 > 1.17549435e-38) ? 1.0 / _t80 : 0.0));
+    highp float _t82 = _t75 * _t81 + _t64;
+    highp float _t83 = _t74 * _t66;
+    highp float _t84 = _t67 * _t59;
+    highp float _t85 = _t83 + _t84;
+    highp float _t86 = _t57 - _t79 * _t81;
+    highp float _t87 = _t78 * _t81 + _t72;
+    highp float _t88 = _t77 * _t76;
+    highp float _t89 = -((_t75 + _t82 * _t85 * 0.5 - _t77 * _t66 * _t86) * _t82 + _t87 * (_t78 + _t82 * (_t67 * _t76) + _t87 * (_t83 + _t88) * 0.5 - _t86 * (_t59 * _t74)) - (_t85 + _t88) - _t86 * (_t79 - _t86 * (_t84 + _t88) * 0.5));
+    highp float _t90 = 1.73205256 * abs(_t4);
+    highp float _t91 = _t1 * _t10 + _t8 * _t7 + _t14 * _t13;
+    highp float _t92 = _t90 + _t91;
+    highp float _t93 = _t91 - _t90;
+    highp float _t94 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    highp float _t95 = _t94 * _t94;
+    highp float _t96 = _t95 * _t16 * _t20;
+    highp float _t97 = _t96 * _t96;
+    highp float _t98 = _t97 * _t97;
+    highp float _t99 = 1.0 - _t96 * 0.5 + _t97 * (0.0416666679 - _t96 * 0.00138888892) + _t98 * (2.48015876e-05 - _t96 * 2.75573029e-07 + _t97 * (2.08744777e-09 - _t96 * 1.13046204e-11));
+    highp float _t100 = _t94 * _t25;
+    highp float _t101 = (1.0 - _t96 * 0.166666672 + _t97 * (0.00833333377 - _t96 * 0.000198412701) + (2.75573188e-06 - _t96 * 2.50520991e-08 + _t97 * (1.60577024e-10 - _t96 * 7.54937183e-13)) * _t98) * (_t15 * _t100);
+    highp float _t102 = _t10 * _t99 + _t14 * _t101;
+    highp float _t103 = _t95 * _t12 * _t20;
+    highp float _t104 = _t103 * _t103;
+    highp float _t105 = _t104 * _t104;
+    highp float _t106 = 1.0 - _t103 * 0.5 + (0.0416666679 - 0.00138888892 * _t103) * _t104 + _t105 * ((2.08744777e-09 - 1.13046204e-11 * _t103) * _t104 + (2.48015876e-05 - _t103 * 2.75573029e-07));
+    highp float _t107 = (_t105 * (2.75573188e-06 - 2.50520991e-08 * _t103 + (1.60577024e-10 - 7.54937183e-13 * _t103) * _t104) + (1.0 - 0.166666672 * _t103 + (0.00833333377 - 0.000198412701 * _t103) * _t104)) * (_t11 * _t100);
+    highp float _t108 = _t8 * _t106 - _t1 * _t107;
+    highp float _t109 = _t8 * _t107 + _t1 * _t106;
+    highp float _t110 = _t95 * _t18 * _t20;
+    highp float _t111 = _t110 * _t110;
+    highp float _t112 = _t111 * _t111;
+    highp float _t113 = _t112 * ((2.08744777e-09 - _t110 * 1.13046204e-11) * _t111 + (2.48015876e-05 - _t110 * 2.75573029e-07)) + ((0.0416666679 - _t110 * 0.00138888892) * _t111 + (1.0 - _t110 * 0.5));
+    highp float _t114 = ((0.00833333377 - _t110 * 0.000198412701) * _t111 + (1.0 - _t110 * 0.166666672) + ((1.60577024e-10 - _t110 * 7.54937183e-13) * _t111 + (2.75573188e-06 - _t110 * 2.50520991e-08)) * _t112) * (_t100 * _t17);
+    highp float _t115 = _t113 * _t7 - _t114 * _t13;
+    highp float _t116 = _t102 * _t108 - _t109 * _t115;
+    highp float _t117 = _t116 * _t116;
+    highp float _t118 = _t113 * _t13 + _t114 * _t7;
+    highp float _t119 = _t14 * _t99 - _t101 * _t10;
+    highp float _t120 = _t108 * _t118 - _t119 * _t115;
     highp float _t121 = _t120 * _t120;
-    highp float _t122 = _t9 * _t103 + _t1 * _t105;
-    highp float _t123 = _t117 * _t3 + _t10 * _t118;
-    highp float _t124 = _t122 * _t113 - _t106 * _t123;
-    highp float _t125 = _t124 * _t124;
-    highp float _t126 = _t112 * _t123 - _t122 * _t119;
+    highp float _t122 = _t109 * _t119 - _t102 * _t118;
+    highp float _t123 = _t122 * _t122;
+    highp float _t124 = _t117 + _t121 + _t123;
+    highp float _t125 = (_t124 > 1.17549435e-38) ? 1.0 / _t124 : 0.0;
+    highp float _t126 = _t125 * (_t95 * _t121);
     highp float _t127 = _t126 * _t126;
-    highp float _t128 = _t121 + _t125 + _t127;
-    highp float _t129 = (_t128 > 1.17549435e-38) ? 1.0 / _t128 : 0.0;
-    highp float _t130 = _t99 * _t121 * _t129;
-    highp float _t131 = _t130 * _t130;
-    highp float _t132 = _t131 * _t131;
-    highp float _t133 = (0.0416666679 - _t130 * 0.00138888892) * _t131 + (1.0 - _t130 * 0.5) + _t132 * ((2.08744777e-09 - _t130 * 1.13046204e-11) * _t131 + (2.48015876e-05 - _t130 * 2.75573029e-07));
-    highp float _t134 = _t129 * sqrt(_t128) * _t98;
-    highp float _t135 = ((2.75573188e-06 - _t130 * 2.50520991e-08 + (1.60577024e-10 - _t130 * 7.54937183e-13) * _t131) * _t132 + (1.0 - _t130 * 0.166666672 + (0.00833333377 - _t130 * 0.000198412701) * _t131)) * (_t120 * _t134);
-    highp float _t136 = _t133 * _t13 - _t135 * _t8;
-    highp float _t137 = _t99 * _t127 * _t129;
-    highp float _t138 = _t137 * _t137;
-    highp float _t139 = _t138 * _t138;
-    highp float _t140 = 1.0 - _t137 * 0.5 + _t138 * (0.0416666679 - 0.00138888892 * _t137) + (_t138 * (2.08744777e-09 - _t137 * 1.13046204e-11) + (2.48015876e-05 - _t137 * 2.75573029e-07)) * _t139;
-    highp float _t141 = ((2.75573188e-06 - 2.50520991e-08 * _t137 + _t138 * (1.60577024e-10 - 7.54937183e-13 * _t137)) * _t139 + (1.0 - 0.166666672 * _t137 + _t138 * (0.00833333377 - 0.000198412701 * _t137))) * (_t134 * _t126);
-    highp float _t142 = _t10 * _t140 - _t141 * _t3;
-    highp float _t143 = _t99 * _t125 * _t129;
+    highp float _t128 = _t127 * _t127;
+    highp float _t129 = (2.48015876e-05 - _t126 * 2.75573029e-07 + _t127 * (2.08744777e-09 - _t126 * 1.13046204e-11)) * _t128 + (_t127 * (0.0416666679 - _t126 * 0.00138888892) + (1.0 - _t126 * 0.5));
+    highp float _t130 = _t94 * (sqrt(_t124) * _t125);
+    highp float _t131 = _t130 * _t120;
+    highp float _t132 = _t131 * ((_t127 * (1.60577024e-10 - _t126 * 7.54937183e-13) + (2.75573188e-06 - _t126 * 2.50520991e-08)) * _t128 + (_t127 * (0.00833333377 - _t126 * 0.000198412701) + (1.0 - _t126 * 0.166666672)));
+    highp float _t133 = _t129 * _t7 - _t132 * _t13;
+    highp float _t134 = _t117 * _t95 * _t125;
+    highp float _t135 = _t134 * _t134;
+    highp float _t136 = _t135 * _t135;
+    highp float _t137 = (2.48015876e-05 - _t134 * 2.75573029e-07 + _t135 * (2.08744777e-09 - _t134 * 1.13046204e-11)) * _t136 + (1.0 - _t134 * 0.5 + _t135 * (0.0416666679 - _t134 * 0.00138888892));
+    highp float _t138 = _t116 * _t130;
+    highp float _t139 = _t138 * (1.0 - _t134 * 0.166666672 + _t135 * (0.00833333377 - _t134 * 0.000198412701) + (2.75573188e-06 - _t134 * 2.50520991e-08 + _t135 * (1.60577024e-10 - _t134 * 7.54937183e-13)) * _t136);
+    highp float _t140 = _t137 * _t1 - _t8 * _t139;
+    highp float _t141 = _t137 * _t8 + _t1 * _t139;
+    highp float _t142 = _t95 * _t123 * _t125;
+    highp float _t143 = _t142 * _t142;
     highp float _t144 = _t143 * _t143;
-    highp float _t145 = _t144 * _t144;
-    highp float _t146 = (2.48015876e-05 - 2.75573029e-07 * _t143 + _t144 * (2.08744777e-09 - 1.13046204e-11 * _t143)) * _t145 + (1.0 - 0.5 * _t143 + (0.0416666679 - 0.00138888892 * _t143) * _t144);
-    highp float _t147 = _t134 * _t124 * (((1.60577024e-10 - 7.54937183e-13 * _t143) * _t144 + (2.75573188e-06 - 2.50520991e-08 * _t143)) * _t145 + (1.0 - 0.166666672 * _t143 + _t144 * (0.00833333377 - 0.000198412701 * _t143)));
-    highp float _t148 = _t1 * _t146 - _t9 * _t147;
-    highp float _t149 = _t133 * _t8 + _t135 * _t13;
-    highp float _t150 = _t136 * _t142 - _t148 * _t149;
-    highp float _t151 = _t9 * _t146 + _t1 * _t147;
-    highp float _t152 = _t140 * _t3 + _t141 * _t10;
-    highp float _t153 = _t151 * _t142 - _t152 * _t149;
-    highp float _t154 = _t153 * _t153;
-    highp float _t155 = _t150 * _t150;
-    highp float _t156 = _t151 * _t136 - _t148 * _t152;
-    highp float _t157 = _t156 * _t156;
-    highp float _t158 = _t154 + (_t155 + _t157);
-    highp float _t159 = (_t158 > 1.17549435e-38) ? 1.0 / _t158 : 0.0;
-    highp float _t160 = _t98 * (sqrt(_t158) * _t159);
-    highp float _t161 = _t99 * _t155 * _t159;
-    highp float _t162 = _t161 * _t161;
-    highp float _t163 = _t162 * _t162;
-    highp float _t164 = _t150 * _t160 * (1.0 - 0.166666672 * _t161 + _t162 * (0.00833333377 - 0.000198412701 * _t161) + _t163 * (_t162 * (1.60577024e-10 - 7.54937183e-13 * _t161) + (2.75573188e-06 - 2.50520991e-08 * _t161)));
-    highp float _t165 = 1.0 - _t161 * 0.5 + _t162 * (0.0416666679 - 0.00138888892 * _t161) + (_t162 * (2.08744777e-09 - 1.13046204e-11 * _t161) + (2.48015876e-05 - _t161 * 2.75573029e-07)) * _t163;
-    highp float _t166 = _t99 * _t157 * _t159;
-    highp float _t167 = _t166 * _t166;
-    highp float _t168 = _t167 * _t167;
-    highp float _t169 = _t168 * (2.48015876e-05 - _t166 * 2.75573029e-07 + _t167 * (2.08744777e-09 - _t166 * 1.13046204e-11)) + (1.0 - _t166 * 0.5 + _t167 * (0.0416666679 - 0.00138888892 * _t166));
-    highp float _t170 = _t156 * _t160 * (1.0 - 0.166666672 * _t166 + _t167 * (0.00833333377 - 0.000198412701 * _t166) + ((1.60577024e-10 - 7.54937183e-13 * _t166) * _t167 + (2.75573188e-06 - 2.50520991e-08 * _t166)) * _t168);
-    highp float _t171 = _t99 * _t154 * _t159;
-    highp float _t172 = _t171 * _t171;
-    highp float _t173 = _t172 * _t172;
-    highp float _t174 = (0.0416666679 - 0.00138888892 * _t171) * _t172 + (1.0 - _t171 * 0.5) + _t173 * (2.48015876e-05 - _t171 * 2.75573029e-07 + _t172 * (2.08744777e-09 - _t171 * 1.13046204e-11));
-    highp float _t175 = _t153 * _t160 * ((0.00833333377 - 0.000198412701 * _t171) * _t172 + (1.0 - 0.166666672 * _t171) + (_t172 * (1.60577024e-10 - 7.54937183e-13 * _t171) + (2.75573188e-06 - 2.50520991e-08 * _t171)) * _t173);
-    return ((_t1 * _t85 + _t9 * _t86) * (_t3 * _t90 - _t10 * _t91) + (_t95 * _t13 + _t96 * _t8) * (_t1 * _t86 - _t9 * _t85) + (_t10 * _t90 + _t91 * _t3) * (_t95 * _t8 - _t96 * _t13)) * ((_t164 * _t8 + _t165 * _t13) * (_t1 * _t169 - _t9 * _t170) + (_t3 * _t174 - _t10 * _t175) * (_t9 * _t169 + _t1 * _t170) + (_t165 * _t8 - _t164 * _t13) * (_t10 * _t174 + _t175 * _t3));
+    highp float _t145 = _t143 * (0.0416666679 - _t142 * 0.00138888892) + (1.0 - _t142 * 0.5) + (_t143 * (2.08744777e-09 - _t142 * 1.13046204e-11) + (2.48015876e-05 - _t142 * 2.75573029e-07)) * _t144;
+    highp float _t146 = _t122 * _t130;
+    highp float _t147 = (_t143 * (0.00833333377 - _t142 * 0.000198412701) + (1.0 - _t142 * 0.166666672) + (2.75573188e-06 - _t142 * 2.50520991e-08 + _t143 * (1.60577024e-10 - _t142 * 7.54937183e-13)) * _t144) * _t146;
+    highp float _t148 = _t10 * _t145 - _t14 * _t147;
+    highp float _t149 = _t133 * _t140 - _t141 * _t148;
+    highp float _t150 = _t14 * _t145 + _t10 * _t147;
+    highp float _t151 = _t129 * _t13 + _t132 * _t7;
+    highp float _t152 = _t133 * _t150 - _t151 * _t141;
+    highp float _t153 = _t150 * _t140 - _t151 * _t148;
+    highp float _t154 = _t149 * _t149 + (_t152 * _t152 + _t153 * _t153);
+    highp float _t155 = _t94 * (((_t154 > 1.17549435e-38) ? 1.0 / _t154 : 0.0) * sqrt(_t154));
+    highp float _t156 = _t149 * _t155 + _t138;
+    highp float _t157 = _t140 * _t148;
+    highp float _t158 = _t133 * _t141;
+    highp float _t159 = _t151 * _t150;
+    highp float _t160 = _t157 + _t159;
+    highp float _t161 = _t152 * _t155 + _t131;
+    highp float _t162 = _t146 - _t153 * _t155;
+    highp float _t163 = -(_t156 * (_t149 + _t156 * (_t157 + _t158) * 0.5) - (_t160 + _t158) - _t161 * (_t133 * _t148 * _t162 - _t156 * (_t151 * _t140) - _t152 - 0.5 * (_t161 * (_t159 + _t158))) - _t162 * (_t153 + _t150 * _t141 * _t156 - _t162 * _t160 * 0.5));
+    highp float _t164 = 1.73205256 * abs(_t94);
+    highp float _t165 = _t91 + _t164;
+    highp float _t166 = _t91 - _t164;
+    return ((_t89 <= _t92) ? ((_t93 <= _t89) ? _t89 : _t93) : _t92) * ((_t163 <= _t165) ? ((_t166 <= _t163) ? _t163 : _t166) : _t165);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 458.

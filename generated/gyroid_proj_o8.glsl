@@ -8,7 +8,9 @@ description: |
     Source: Schoen 1970, NASA TN D-5541; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 3 projection steps: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 8. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 8. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> gyroid_proj_o8_field(<vec3 p>)
     - <float> gyroid_proj_o8_offset(<vec3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 4 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 4. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 14
-    - offset: 580
-    - shell: 1134
+    - offset: 505
+    - shell: 979
     - normal: 598
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o8","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":580,"shell":1134,"normal":598}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"gyroid_proj_o8","surface":"gyroid","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.501980420733096},{"h":0.01,"bound":12.252402924070696},{"h":0.025,"bound":15.803565778592748},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":2.0000020000000003,"ops":{"field":14,"offset":505,"shell":979,"normal":598}} */
 #ifndef OFFSETGEN_GYROID_PROJ_O8_GLSL
 #define OFFSETGEN_GYROID_PROJ_O8_GLSL
 
@@ -92,178 +95,174 @@ highp float gyroid_proj_o8_field(highp vec3 p)
     return gyroid_proj_o8_cos(_t0) * gyroid_proj_o8_sin(_t1) + gyroid_proj_o8_sin(_t0) * gyroid_proj_o8_cos(_t2) + gyroid_proj_o8_cos(_t1) * gyroid_proj_o8_sin(_t2);
 }
 
-// phi(p, h) of order 8: zero on the surface moved by h along +grad F. Total ops: 580.
+// phi(p, h) of order 8: zero on the surface moved by h along +grad F. Total ops: 505.
 highp float gyroid_proj_o8_offset(highp vec3 p, highp float h)
 {
-    highp float _t0 = 6.28318548 * p.x;
-    highp float _t1 = gyroid_proj_o8_sin(_t0);
-    highp float _t2 = p.z * 6.28318548;
-    highp float _t3 = gyroid_proj_o8_cos(_t2);
-    highp float _t4 = 6.28318548 * h;
-    highp float _t5 = (_t4 <= 1.0) ? (((-1.0) <= _t4) ? _t4 : (-1.0)) : 1.0;
-    highp float _t6 = _t5 * _t5;
-    highp float _t7 = gyroid_proj_o8_sin(_t2);
-    highp float _t8 = 6.28318548 * p.y;
-    highp float _t9 = gyroid_proj_o8_cos(_t8);
-    highp float _t10 = gyroid_proj_o8_cos(_t0);
-    highp float _t11 = _t7 * _t1 - _t9 * _t10;
-    highp float _t12 = _t11 * _t11;
-    highp float _t13 = gyroid_proj_o8_sin(_t8);
-    highp float _t14 = _t3 * _t10 - _t7 * _t13;
+    highp float _t0 = 6.28318548 * p.y;
+    highp float _t1 = gyroid_proj_o8_cos(_t0);
+    highp float _t2 = 6.28318548 * h;
+    highp float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    highp float _t4 = _t3 * _t3;
+    highp float _t5 = p.z * 6.28318548;
+    highp float _t6 = gyroid_proj_o8_sin(_t5);
+    highp float _t7 = 6.28318548 * p.x;
+    highp float _t8 = gyroid_proj_o8_sin(_t7);
+    highp float _t9 = gyroid_proj_o8_cos(_t7);
+    highp float _t10 = _t6 * _t8 - _t1 * _t9;
+    highp float _t11 = _t10 * _t10;
+    highp float _t12 = gyroid_proj_o8_cos(_t5);
+    highp float _t13 = gyroid_proj_o8_sin(_t0);
+    highp float _t14 = _t12 * _t9 - _t6 * _t13;
     highp float _t15 = _t14 * _t14;
-    highp float _t16 = _t13 * _t1 - _t3 * _t9;
+    highp float _t16 = _t13 * _t8 - _t12 * _t1;
     highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t15 + _t17 + _t12;
+    highp float _t18 = _t15 + _t17 + _t11;
     highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
-    highp float _t20 = _t6 * _t12 * _t19;
+    highp float _t20 = _t4 * _t11 * _t19;
     highp float _t21 = _t20 * _t20;
     highp float _t22 = _t21 * _t21;
     highp float _t23 = (2.48015876e-05 - _t20 * 2.75573029e-07 + _t21 * (2.08744777e-09 - 1.13046204e-11 * _t20)) * _t22 + (1.0 - _t20 * 0.5 + _t21 * (0.0416666679 - 0.00138888892 * _t20));
-    highp float _t24 = _t5 * (sqrt(_t18) * _t19);
-    highp float _t25 = ((_t21 * (1.60577024e-10 - 7.54937183e-13 * _t20) + (2.75573188e-06 - 2.50520991e-08 * _t20)) * _t22 + (1.0 - 0.166666672 * _t20 + _t21 * (0.00833333377 - 0.000198412701 * _t20))) * (_t24 * _t11);
-    highp float _t26 = _t23 * _t1 + _t25 * _t10;
-    highp float _t27 = _t6 * _t17 * _t19;
+    highp float _t24 = _t3 * (sqrt(_t18) * _t19);
+    highp float _t25 = ((_t21 * (1.60577024e-10 - 7.54937183e-13 * _t20) + (2.75573188e-06 - 2.50520991e-08 * _t20)) * _t22 + (1.0 - 0.166666672 * _t20 + _t21 * (0.00833333377 - 0.000198412701 * _t20))) * (_t24 * _t10);
+    highp float _t26 = _t23 * _t8 + _t25 * _t9;
+    highp float _t27 = _t4 * _t17 * _t19;
     highp float _t28 = _t27 * _t27;
     highp float _t29 = _t28 * _t28;
     highp float _t30 = _t16 * _t24 * (1.0 - _t27 * 0.166666672 + (0.00833333377 - _t27 * 0.000198412701) * _t28 + _t29 * (2.75573188e-06 - _t27 * 2.50520991e-08 + (1.60577024e-10 - _t27 * 7.54937183e-13) * _t28));
     highp float _t31 = _t29 * (2.48015876e-05 - _t27 * 2.75573029e-07 + (2.08744777e-09 - _t27 * 1.13046204e-11) * _t28) + ((0.0416666679 - _t27 * 0.00138888892) * _t28 + (1.0 - _t27 * 0.5));
-    highp float _t32 = _t30 * _t9 + _t13 * _t31;
-    highp float _t33 = _t15 * _t6 * _t19;
+    highp float _t32 = _t30 * _t1 + _t13 * _t31;
+    highp float _t33 = _t15 * _t4 * _t19;
     highp float _t34 = _t33 * _t33;
     highp float _t35 = _t34 * _t34;
     highp float _t36 = ((2.75573188e-06 - 2.50520991e-08 * _t33 + _t34 * (1.60577024e-10 - 7.54937183e-13 * _t33)) * _t35 + (_t34 * (0.00833333377 - 0.000198412701 * _t33) + (1.0 - 0.166666672 * _t33))) * (_t14 * _t24);
     highp float _t37 = (_t34 * (2.08744777e-09 - _t33 * 1.13046204e-11) + (2.48015876e-05 - _t33 * 2.75573029e-07)) * _t35 + ((0.0416666679 - 0.00138888892 * _t33) * _t34 + (1.0 - _t33 * 0.5));
-    highp float _t38 = _t7 * _t36 + _t3 * _t37;
-    highp float _t39 = _t9 * _t31 - _t30 * _t13;
+    highp float _t38 = _t6 * _t36 + _t12 * _t37;
+    highp float _t39 = _t1 * _t31 - _t30 * _t13;
     highp float _t40 = _t26 * _t32 - _t38 * _t39;
     highp float _t41 = _t40 * _t40;
-    highp float _t42 = _t23 * _t10 - _t25 * _t1;
-    highp float _t43 = _t7 * _t37 - _t3 * _t36;
+    highp float _t42 = _t23 * _t9 - _t25 * _t8;
+    highp float _t43 = _t6 * _t37 - _t12 * _t36;
     highp float _t44 = _t42 * _t38 - _t32 * _t43;
     highp float _t45 = _t44 * _t44;
     highp float _t46 = _t26 * _t43 - _t42 * _t39;
     highp float _t47 = _t46 * _t46;
     highp float _t48 = _t41 + (_t45 + _t47);
     highp float _t49 = (_t48 > 1.17549435e-38) ? 1.0 / _t48 : 0.0;
-    highp float _t50 = _t49 * (_t6 * _t41);
+    highp float _t50 = _t49 * (_t4 * _t41);
     highp float _t51 = _t50 * _t50;
     highp float _t52 = _t51 * _t51;
     highp float _t53 = _t52 * ((2.08744777e-09 - _t50 * 1.13046204e-11) * _t51 + (2.48015876e-05 - _t50 * 2.75573029e-07)) + (1.0 - _t50 * 0.5 + (0.0416666679 - _t50 * 0.00138888892) * _t51);
-    highp float _t54 = _t5 * (sqrt(_t48) * _t49);
+    highp float _t54 = _t3 * (sqrt(_t48) * _t49);
     highp float _t55 = _t54 * _t40 * (1.0 - _t50 * 0.166666672 + (0.00833333377 - _t50 * 0.000198412701) * _t51 + _t52 * (_t51 * (1.60577024e-10 - _t50 * 7.54937183e-13) + (2.75573188e-06 - _t50 * 2.50520991e-08)));
-    highp float _t56 = _t53 * _t13 + _t9 * _t55;
-    highp float _t57 = _t49 * (_t45 * _t6);
+    highp float _t56 = _t53 * _t13 + _t1 * _t55;
+    highp float _t57 = _t49 * (_t45 * _t4);
     highp float _t58 = _t57 * _t57;
     highp float _t59 = _t58 * _t58;
     highp float _t60 = _t59 * ((2.08744777e-09 - _t57 * 1.13046204e-11) * _t58 + (2.48015876e-05 - _t57 * 2.75573029e-07)) + (1.0 - _t57 * 0.5 + (0.0416666679 - 0.00138888892 * _t57) * _t58);
     highp float _t61 = (1.0 - 0.166666672 * _t57 + (0.00833333377 - 0.000198412701 * _t57) * _t58 + _t59 * ((1.60577024e-10 - 7.54937183e-13 * _t57) * _t58 + (2.75573188e-06 - 2.50520991e-08 * _t57))) * (_t54 * _t44);
-    highp float _t62 = _t7 * _t60 - _t3 * _t61;
-    highp float _t63 = _t7 * _t61 + _t3 * _t60;
-    highp float _t64 = _t6 * _t47 * _t49;
+    highp float _t62 = _t6 * _t60 - _t12 * _t61;
+    highp float _t63 = _t6 * _t61 + _t12 * _t60;
+    highp float _t64 = _t4 * _t47 * _t49;
     highp float _t65 = _t64 * _t64;
     highp float _t66 = _t65 * _t65;
     highp float _t67 = _t65 * (0.0416666679 - _t64 * 0.00138888892) + (1.0 - _t64 * 0.5) + _t66 * (2.48015876e-05 - _t64 * 2.75573029e-07 + _t65 * (2.08744777e-09 - _t64 * 1.13046204e-11));
     highp float _t68 = ((2.75573188e-06 - _t64 * 2.50520991e-08 + (1.60577024e-10 - _t64 * 7.54937183e-13) * _t65) * _t66 + (_t65 * (0.00833333377 - _t64 * 0.000198412701) + (1.0 - _t64 * 0.166666672))) * (_t46 * _t54);
-    highp float _t69 = _t67 * _t10 - _t1 * _t68;
+    highp float _t69 = _t67 * _t9 - _t8 * _t68;
     highp float _t70 = _t56 * _t62 - _t63 * _t69;
     highp float _t71 = _t70 * _t70;
-    highp float _t72 = _t67 * _t1 + _t10 * _t68;
-    highp float _t73 = _t53 * _t9 - _t55 * _t13;
+    highp float _t72 = _t67 * _t8 + _t9 * _t68;
+    highp float _t73 = _t53 * _t1 - _t55 * _t13;
     highp float _t74 = _t72 * _t56 - _t73 * _t63;
     highp float _t75 = _t74 * _t74;
     highp float _t76 = _t72 * _t62 - _t73 * _t69;
     highp float _t77 = _t76 * _t76;
     highp float _t78 = _t71 + _t75 + _t77;
     highp float _t79 = (_t78 > 1.17549435e-38) ? 1.0 / _t78 : 0.0;
-    highp float _t80 = _t5 * (_t79 * sqrt(_t78));
-    highp float _t81 = _t79 * (_t71 * _t6);
+    highp float _t80 = _t79 * (_t75 * _t4);
+    highp float _t81 = _t80 * _t80;
     highp float _t82 = _t81 * _t81;
-    highp float _t83 = _t82 * _t82;
-    highp float _t84 = _t70 * _t80 * (_t83 * (2.75573188e-06 - 2.50520991e-08 * _t81 + _t82 * (1.60577024e-10 - 7.54937183e-13 * _t81)) + (1.0 - 0.166666672 * _t81 + _t82 * (0.00833333377 - 0.000198412701 * _t81)));
-    highp float _t85 = _t82 * (0.0416666679 - 0.00138888892 * _t81) + (1.0 - _t81 * 0.5) + (_t82 * (2.08744777e-09 - _t81 * 1.13046204e-11) + (2.48015876e-05 - _t81 * 2.75573029e-07)) * _t83;
-    highp float _t86 = _t3 * _t84 + _t85 * _t7;
-    highp float _t87 = _t79 * (_t6 * _t77);
-    highp float _t88 = _t87 * _t87;
-    highp float _t89 = _t88 * _t88;
-    highp float _t90 = _t76 * _t80 * (1.0 - _t87 * 0.166666672 + _t88 * (0.00833333377 - _t87 * 0.000198412701) + (_t88 * (1.60577024e-10 - _t87 * 7.54937183e-13) + (2.75573188e-06 - _t87 * 2.50520991e-08)) * _t89);
-    highp float _t91 = _t88 * (0.0416666679 - _t87 * 0.00138888892) + (1.0 - _t87 * 0.5) + (_t88 * (2.08744777e-09 - _t87 * 1.13046204e-11) + (2.48015876e-05 - _t87 * 2.75573029e-07)) * _t89;
-    highp float _t92 = _t90 * _t10 + _t91 * _t1;
-    highp float _t93 = _t79 * (_t75 * _t6);
-    highp float _t94 = _t93 * _t93;
-    highp float _t95 = _t94 * _t94;
-    highp float _t96 = _t95 * (2.48015876e-05 - _t93 * 2.75573029e-07 + _t94 * (2.08744777e-09 - 1.13046204e-11 * _t93)) + (1.0 - _t93 * 0.5 + (0.0416666679 - 0.00138888892 * _t93) * _t94);
-    highp float _t97 = (1.0 - 0.166666672 * _t93 + (0.00833333377 - 0.000198412701 * _t93) * _t94 + _t95 * (2.75573188e-06 - 2.50520991e-08 * _t93 + _t94 * (1.60577024e-10 - 7.54937183e-13 * _t93))) * (_t80 * _t74);
-    highp float _t98 = _t9 * _t96 - _t97 * _t13;
-    highp float _t99 = _t91 * _t10 - _t90 * _t1;
-    highp float _t100 = _t86 * _t92 - _t98 * _t99;
-    highp float _t101 = _t100 * _t100;
-    highp float _t102 = _t85 * _t3 - _t7 * _t84;
-    highp float _t103 = _t13 * _t96 + _t97 * _t9;
-    highp float _t104 = _t102 * _t98 - _t92 * _t103;
-    highp float _t105 = _t104 * _t104;
-    highp float _t106 = _t86 * _t103 - _t102 * _t99;
-    highp float _t107 = _t106 * _t106;
-    highp float _t108 = _t101 + _t105 + _t107;
-    highp float _t109 = (_t108 > 1.17549435e-38) ? 1.0 / _t108 : 0.0;
-    highp float _t110 = _t109 * (_t101 * _t6);
-    highp float _t111 = _t110 * _t110;
-    highp float _t112 = _t111 * _t111;
-    highp float _t113 = 1.0 - 0.5 * _t110 + (0.0416666679 - 0.00138888892 * _t110) * _t111 + (2.48015876e-05 - 2.75573029e-07 * _t110 + (2.08744777e-09 - 1.13046204e-11 * _t110) * _t111) * _t112;
-    highp float _t114 = _t109 * sqrt(_t108) * _t5;
-    highp float _t115 = (1.0 - 0.166666672 * _t110 + (0.00833333377 - 0.000198412701 * _t110) * _t111 + (2.75573188e-06 - 2.50520991e-08 * _t110 + _t111 * (1.60577024e-10 - 7.54937183e-13 * _t110)) * _t112) * (_t114 * _t100);
-    highp float _t116 = _t109 * (_t6 * _t105);
-    highp float _t117 = _t116 * _t116;
-    highp float _t118 = _t117 * _t117;
-    highp float _t119 = ((2.75573188e-06 - 2.50520991e-08 * _t116 + _t117 * (1.60577024e-10 - 7.54937183e-13 * _t116)) * _t118 + ((0.00833333377 - 0.000198412701 * _t116) * _t117 + (1.0 - 0.166666672 * _t116))) * (_t114 * _t104);
-    highp float _t120 = 1.0 - _t116 * 0.5 + _t117 * (0.0416666679 - 0.00138888892 * _t116) + ((2.08744777e-09 - _t116 * 1.13046204e-11) * _t117 + (2.48015876e-05 - _t116 * 2.75573029e-07)) * _t118;
-    highp float _t121 = _t6 * _t107 * _t109;
-    highp float _t122 = _t121 * _t121;
-    highp float _t123 = _t122 * _t122;
-    highp float _t124 = _t114 * _t106 * ((2.75573188e-06 - 2.50520991e-08 * _t121 + (1.60577024e-10 - 7.54937183e-13 * _t121) * _t122) * _t123 + (1.0 - 0.166666672 * _t121 + (0.00833333377 - 0.000198412701 * _t121) * _t122));
-    highp float _t125 = (0.0416666679 - 0.00138888892 * _t121) * _t122 + (1.0 - _t121 * 0.5) + _t123 * (2.48015876e-05 - _t121 * 2.75573029e-07 + _t122 * (2.08744777e-09 - 1.13046204e-11 * _t121));
-    return (_t1 * _t113 + _t115 * _t10) * (_t119 * _t13 + _t9 * _t120) + (_t3 * _t124 + _t7 * _t125) * (_t10 * _t113 - _t115 * _t1) + (_t3 * _t125 - _t7 * _t124) * (_t13 * _t120 - _t119 * _t9);
+    highp float _t83 = _t82 * (2.48015876e-05 - _t80 * 2.75573029e-07 + _t81 * (2.08744777e-09 - 1.13046204e-11 * _t80)) + (1.0 - _t80 * 0.5 + (0.0416666679 - 0.00138888892 * _t80) * _t81);
+    highp float _t84 = _t3 * (_t79 * sqrt(_t78));
+    highp float _t85 = _t84 * _t74;
+    highp float _t86 = (1.0 - 0.166666672 * _t80 + (0.00833333377 - 0.000198412701 * _t80) * _t81 + _t82 * (2.75573188e-06 - 2.50520991e-08 * _t80 + _t81 * (1.60577024e-10 - 7.54937183e-13 * _t80))) * _t85;
+    highp float _t87 = _t1 * _t83 - _t86 * _t13;
+    highp float _t88 = _t76 * _t84;
+    highp float _t89 = _t79 * (_t4 * _t77);
+    highp float _t90 = _t89 * _t89;
+    highp float _t91 = _t90 * _t90;
+    highp float _t92 = _t88 * (1.0 - _t89 * 0.166666672 + _t90 * (0.00833333377 - _t89 * 0.000198412701) + (_t90 * (1.60577024e-10 - _t89 * 7.54937183e-13) + (2.75573188e-06 - _t89 * 2.50520991e-08)) * _t91);
+    highp float _t93 = _t90 * (0.0416666679 - _t89 * 0.00138888892) + (1.0 - _t89 * 0.5) + (_t90 * (2.08744777e-09 - _t89 * 1.13046204e-11) + (2.48015876e-05 - _t89 * 2.75573029e-07)) * _t91;
+    highp float _t94 = _t92 * _t9 + _t93 * _t8;
+    highp float _t95 = _t87 * _t94;
+    highp float _t96 = _t79 * (_t71 * _t4);
+    highp float _t97 = _t96 * _t96;
+    highp float _t98 = _t97 * _t97;
+    highp float _t99 = _t97 * (0.0416666679 - 0.00138888892 * _t96) + (1.0 - _t96 * 0.5) + (_t97 * (2.08744777e-09 - _t96 * 1.13046204e-11) + (2.48015876e-05 - _t96 * 2.75573029e-07)) * _t98;
+    highp float _t100 = _t70 * _t84;
+    highp float _t101 = _t100 * (_t98 * (2.75573188e-06 - 2.50520991e-08 * _t96 + _t97 * (1.60577024e-10 - 7.54937183e-13 * _t96)) + (1.0 - 0.166666672 * _t96 + _t97 * (0.00833333377 - 0.000198412701 * _t96)));
+    highp float _t102 = _t99 * _t12 - _t6 * _t101;
+    highp float _t103 = _t13 * _t83 + _t86 * _t1;
+    highp float _t104 = _t102 * _t103;
+    highp float _t105 = _t95 + _t104;
+    highp float _t106 = _t12 * _t101 + _t99 * _t6;
+    highp float _t107 = _t93 * _t9 - _t92 * _t8;
+    highp float _t108 = _t106 * _t107;
+    highp float _t109 = _t106 * _t94 - _t87 * _t107;
+    highp float _t110 = _t102 * _t87 - _t94 * _t103;
+    highp float _t111 = _t106 * _t103 - _t102 * _t107;
+    highp float _t112 = _t109 * _t109 + _t110 * _t110 + _t111 * _t111;
+    highp float _t113 = ((_t112 > 1.17549435e-38) ? 1.0 / _t112 : 0.0) * sqrt(_t112) * _t3;
+    highp float _t114 = _t113 * _t110 + _t85;
+    highp float _t115 = _t113 * _t111 - _t100;
+    highp float _t116 = _t113 * _t109 - _t88;
+    highp float _t117 = _t105 + _t108 + _t114 * (_t115 * (_t106 * _t87) - _t110 - _t105 * _t114 * 0.5) - _t116 * (_t116 * (_t95 + _t108) * 0.5 + _t102 * _t94 * _t115 + _t109 - _t107 * _t103 * _t114) - _t115 * (_t111 + _t115 * (_t104 + _t108) * 0.5);
+    highp float _t118 = 1.73205256 * abs(_t3);
+    highp float _t119 = _t12 * _t13 + _t6 * _t9 + _t1 * _t8;
+    highp float _t120 = _t118 + _t119;
+    highp float _t121 = _t119 - _t118;
+    return (_t117 <= _t120) ? ((_t121 <= _t117) ? _t117 : _t121) : _t120;
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 1134.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 979.
 highp float gyroid_proj_o8_shell(highp vec3 p, highp float t)
 {
-    highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = gyroid_proj_o8_sin(_t0);
-    highp float _t2 = 6.28318548 * (t * 0.5);
-    highp float _t3 = -_t2;
-    highp float _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
-    highp float _t5 = _t4 * _t4;
-    highp float _t6 = gyroid_proj_o8_cos(_t0);
+    highp float _t0 = 6.28318548 * (t * 0.5);
+    highp float _t1 = -_t0;
+    highp float _t2 = (_t1 <= 1.0) ? (((-1.0) <= _t1) ? _t1 : (-1.0)) : 1.0;
+    highp float _t3 = _t2 * _t2;
+    highp float _t4 = p.z * 6.28318548;
+    highp float _t5 = gyroid_proj_o8_sin(_t4);
+    highp float _t6 = gyroid_proj_o8_cos(_t4);
     highp float _t7 = 6.28318548 * p.x;
     highp float _t8 = gyroid_proj_o8_cos(_t7);
     highp float _t9 = 6.28318548 * p.y;
     highp float _t10 = gyroid_proj_o8_sin(_t9);
-    highp float _t11 = _t6 * _t8 - _t1 * _t10;
+    highp float _t11 = _t6 * _t8 - _t5 * _t10;
     highp float _t12 = _t11 * _t11;
     highp float _t13 = gyroid_proj_o8_sin(_t7);
     highp float _t14 = gyroid_proj_o8_cos(_t9);
     highp float _t15 = _t10 * _t13 - _t6 * _t14;
     highp float _t16 = _t15 * _t15;
-    highp float _t17 = _t1 * _t13 - _t14 * _t8;
+    highp float _t17 = _t5 * _t13 - _t14 * _t8;
     highp float _t18 = _t17 * _t17;
     highp float _t19 = _t12 + _t16 + _t18;
     highp float _t20 = (_t19 > 1.17549435e-38) ? 1.0 / _t19 : 0.0;
-    highp float _t21 = _t5 * _t12 * _t20;
+    highp float _t21 = _t3 * _t12 * _t20;
     highp float _t22 = _t21 * _t21;
     highp float _t23 = _t22 * _t22;
     highp float _t24 = _t23 * (2.48015876e-05 - 2.75573029e-07 * _t21 + _t22 * (2.08744777e-09 - 1.13046204e-11 * _t21)) + (_t22 * (0.0416666679 - 0.00138888892 * _t21) + (1.0 - 0.5 * _t21));
     highp float _t25 = sqrt(_t19) * _t20;
-    highp float _t26 = _t25 * _t4;
+    highp float _t26 = _t25 * _t2;
     highp float _t27 = (1.0 - 0.166666672 * _t21 + _t22 * (0.00833333377 - 0.000198412701 * _t21) + (2.75573188e-06 - 2.50520991e-08 * _t21 + _t22 * (1.60577024e-10 - 7.54937183e-13 * _t21)) * _t23) * (_t11 * _t26);
-    highp float _t28 = _t1 * _t24 - _t6 * _t27;
-    highp float _t29 = _t5 * _t18 * _t20;
+    highp float _t28 = _t5 * _t24 - _t6 * _t27;
+    highp float _t29 = _t3 * _t18 * _t20;
     highp float _t30 = _t29 * _t29;
     highp float _t31 = _t30 * _t30;
     highp float _t32 = _t26 * _t17 * (_t31 * (2.75573188e-06 - 2.50520991e-08 * _t29 + (1.60577024e-10 - 7.54937183e-13 * _t29) * _t30) + (_t30 * (0.00833333377 - 0.000198412701 * _t29) + (1.0 - 0.166666672 * _t29)));
     highp float _t33 = (2.48015876e-05 - _t29 * 2.75573029e-07 + _t30 * (2.08744777e-09 - 1.13046204e-11 * _t29)) * _t31 + ((0.0416666679 - 0.00138888892 * _t29) * _t30 + (1.0 - _t29 * 0.5));
     highp float _t34 = _t32 * _t8 + _t33 * _t13;
     highp float _t35 = _t33 * _t8 - _t32 * _t13;
-    highp float _t36 = _t5 * _t16 * _t20;
+    highp float _t36 = _t3 * _t16 * _t20;
     highp float _t37 = _t36 * _t36;
     highp float _t38 = _t37 * _t37;
     highp float _t39 = _t38 * (_t37 * (2.08744777e-09 - _t36 * 1.13046204e-11) + (2.48015876e-05 - _t36 * 2.75573029e-07)) + (1.0 - _t36 * 0.5 + _t37 * (0.0416666679 - 0.00138888892 * _t36));
@@ -271,7 +270,7 @@ highp float gyroid_proj_o8_shell(highp vec3 p, highp float t)
     highp float _t41 = _t14 * _t39 - _t10 * _t40;
     highp float _t42 = _t28 * _t34 - _t35 * _t41;
     highp float _t43 = _t42 * _t42;
-    highp float _t44 = _t6 * _t24 + _t1 * _t27;
+    highp float _t44 = _t6 * _t24 + _t5 * _t27;
     highp float _t45 = _t39 * _t10 + _t14 * _t40;
     highp float _t46 = _t44 * _t35 - _t28 * _t45;
     highp float _t47 = _t46 * _t46;
@@ -279,28 +278,28 @@ highp float gyroid_proj_o8_shell(highp vec3 p, highp float t)
     highp float _t49 = _t48 * _t48;
     highp float _t50 = _t43 + _t47 + _t49;
     highp float _t51 = (_t50 > 1.17549435e-38) ? 1.0 / _t50 : 0.0;
-    highp float _t52 = _t5 * _t43 * _t51;
+    highp float _t52 = _t3 * _t43 * _t51;
     highp float _t53 = _t52 * _t52;
     highp float _t54 = _t53 * _t53;
     highp float _t55 = (0.0416666679 - _t52 * 0.00138888892) * _t53 + (1.0 - _t52 * 0.5) + _t54 * ((2.08744777e-09 - _t52 * 1.13046204e-11) * _t53 + (2.48015876e-05 - _t52 * 2.75573029e-07));
-    highp float _t56 = _t51 * sqrt(_t50) * _t4;
+    highp float _t56 = _t51 * sqrt(_t50) * _t2;
     highp float _t57 = ((2.75573188e-06 - _t52 * 2.50520991e-08 + (1.60577024e-10 - _t52 * 7.54937183e-13) * _t53) * _t54 + (1.0 - _t52 * 0.166666672 + (0.00833333377 - _t52 * 0.000198412701) * _t53)) * (_t42 * _t56);
     highp float _t58 = _t55 * _t8 - _t57 * _t13;
-    highp float _t59 = _t5 * _t49 * _t51;
+    highp float _t59 = _t3 * _t49 * _t51;
     highp float _t60 = _t59 * _t59;
     highp float _t61 = _t60 * _t60;
     highp float _t62 = 1.0 - _t59 * 0.5 + _t60 * (0.0416666679 - 0.00138888892 * _t59) + (_t60 * (2.08744777e-09 - _t59 * 1.13046204e-11) + (2.48015876e-05 - _t59 * 2.75573029e-07)) * _t61;
     highp float _t63 = ((2.75573188e-06 - 2.50520991e-08 * _t59 + _t60 * (1.60577024e-10 - 7.54937183e-13 * _t59)) * _t61 + (1.0 - 0.166666672 * _t59 + _t60 * (0.00833333377 - 0.000198412701 * _t59))) * (_t56 * _t48);
     highp float _t64 = _t14 * _t62 - _t63 * _t10;
-    highp float _t65 = _t5 * _t47 * _t51;
+    highp float _t65 = _t3 * _t47 * _t51;
     highp float _t66 = _t65 * _t65;
     highp float _t67 = _t66 * _t66;
     highp float _t68 = (2.48015876e-05 - 2.75573029e-07 * _t65 + _t66 * (2.08744777e-09 - 1.13046204e-11 * _t65)) * _t67 + (1.0 - 0.5 * _t65 + (0.0416666679 - 0.00138888892 * _t65) * _t66);
     highp float _t69 = _t56 * _t46 * (((1.60577024e-10 - 7.54937183e-13 * _t65) * _t66 + (2.75573188e-06 - 2.50520991e-08 * _t65)) * _t67 + (1.0 - 0.166666672 * _t65 + _t66 * (0.00833333377 - 0.000198412701 * _t65)));
-    highp float _t70 = _t1 * _t68 - _t6 * _t69;
+    highp float _t70 = _t5 * _t68 - _t6 * _t69;
     highp float _t71 = _t55 * _t13 + _t57 * _t8;
     highp float _t72 = _t58 * _t64 - _t70 * _t71;
-    highp float _t73 = _t6 * _t68 + _t1 * _t69;
+    highp float _t73 = _t6 * _t68 + _t5 * _t69;
     highp float _t74 = _t62 * _t10 + _t63 * _t14;
     highp float _t75 = _t73 * _t64 - _t74 * _t71;
     highp float _t76 = _t75 * _t75;
@@ -309,161 +308,152 @@ highp float gyroid_proj_o8_shell(highp vec3 p, highp float t)
     highp float _t79 = _t78 * _t78;
     highp float _t80 = _t76 + (_t77 + _t79);
     highp float _t81 = (_t80 > 1.17549435e-38) ? 1.0 / _t80 : 0.0;
-    highp float _t82 = _t4 * (sqrt(_t80) * _t81);
-    highp float _t83 = _t5 * _t77 * _t81;
-    highp float _t84 = _t83 * _t83;
+    highp float _t82 = _t2 * (sqrt(_t80) * _t81);
+    highp float _t83 = _t72 * _t82;
+    highp float _t84 = _t3 * _t77 * _t81;
     highp float _t85 = _t84 * _t84;
-    highp float _t86 = _t72 * _t82 * (1.0 - 0.166666672 * _t83 + _t84 * (0.00833333377 - 0.000198412701 * _t83) + _t85 * (_t84 * (1.60577024e-10 - 7.54937183e-13 * _t83) + (2.75573188e-06 - 2.50520991e-08 * _t83)));
-    highp float _t87 = 1.0 - _t83 * 0.5 + _t84 * (0.0416666679 - 0.00138888892 * _t83) + (_t84 * (2.08744777e-09 - 1.13046204e-11 * _t83) + (2.48015876e-05 - _t83 * 2.75573029e-07)) * _t85;
-    highp float _t88 = _t86 * _t13 + _t87 * _t8;
-    highp float _t89 = _t5 * _t79 * _t81;
-    highp float _t90 = _t89 * _t89;
+    highp float _t86 = _t85 * _t85;
+    highp float _t87 = _t83 * (1.0 - 0.166666672 * _t84 + _t85 * (0.00833333377 - 0.000198412701 * _t84) + _t86 * (_t85 * (1.60577024e-10 - 7.54937183e-13 * _t84) + (2.75573188e-06 - 2.50520991e-08 * _t84)));
+    highp float _t88 = 1.0 - _t84 * 0.5 + _t85 * (0.0416666679 - 0.00138888892 * _t84) + (_t85 * (2.08744777e-09 - 1.13046204e-11 * _t84) + (2.48015876e-05 - _t84 * 2.75573029e-07)) * _t86;
+    highp float _t89 = _t87 * _t13 + _t88 * _t8;
+    highp float _t90 = _t3 * _t76 * _t81;
     highp float _t91 = _t90 * _t90;
-    highp float _t92 = _t91 * (2.48015876e-05 - _t89 * 2.75573029e-07 + _t90 * (2.08744777e-09 - _t89 * 1.13046204e-11)) + (1.0 - _t89 * 0.5 + _t90 * (0.0416666679 - 0.00138888892 * _t89));
-    highp float _t93 = _t78 * _t82 * (1.0 - 0.166666672 * _t89 + _t90 * (0.00833333377 - 0.000198412701 * _t89) + ((1.60577024e-10 - 7.54937183e-13 * _t89) * _t90 + (2.75573188e-06 - 2.50520991e-08 * _t89)) * _t91);
-    highp float _t94 = _t6 * _t92 + _t1 * _t93;
-    highp float _t95 = _t5 * _t76 * _t81;
-    highp float _t96 = _t95 * _t95;
-    highp float _t97 = _t96 * _t96;
-    highp float _t98 = (0.0416666679 - 0.00138888892 * _t95) * _t96 + (1.0 - _t95 * 0.5) + _t97 * (2.48015876e-05 - _t95 * 2.75573029e-07 + _t96 * (2.08744777e-09 - _t95 * 1.13046204e-11));
-    highp float _t99 = _t75 * _t82 * ((0.00833333377 - 0.000198412701 * _t95) * _t96 + (1.0 - 0.166666672 * _t95) + (_t96 * (1.60577024e-10 - 7.54937183e-13 * _t95) + (2.75573188e-06 - 2.50520991e-08 * _t95)) * _t97);
-    highp float _t100 = _t10 * _t98 - _t14 * _t99;
-    highp float _t101 = _t1 * _t92 - _t6 * _t93;
-    highp float _t102 = _t88 * _t94 - _t100 * _t101;
-    highp float _t103 = _t102 * _t102;
-    highp float _t104 = _t14 * _t98 + _t99 * _t10;
-    highp float _t105 = _t87 * _t13 - _t86 * _t8;
-    highp float _t106 = _t88 * _t104 - _t105 * _t101;
-    highp float _t107 = _t106 * _t106;
-    highp float _t108 = _t105 * _t100 - _t104 * _t94;
-    highp float _t109 = _t108 * _t108;
-    highp float _t110 = _t107 + _t109 + _t103;
-    highp float _t111 = (_t110 > 1.17549435e-38) ? 1.0 / _t110 : 0.0;
-    highp float _t112 = _t5 * _t103 * _t111;
-    highp float _t113 = _t112 * _t112;
-    highp float _t114 = _t113 * _t113;
-    highp float _t115 = _t114 * ((2.08744777e-09 - _t112 * 1.13046204e-11) * _t113 + (2.48015876e-05 - _t112 * 2.75573029e-07)) + ((0.0416666679 - 0.00138888892 * _t112) * _t113 + (1.0 - _t112 * 0.5));
-    highp float _t116 = sqrt(_t110) * _t111 * _t4;
-    highp float _t117 = _t116 * _t102 * ((0.00833333377 - _t112 * 0.000198412701) * _t113 + (1.0 - 0.166666672 * _t112) + _t114 * ((1.60577024e-10 - 7.54937183e-13 * _t112) * _t113 + (2.75573188e-06 - 2.50520991e-08 * _t112)));
-    highp float _t118 = _t111 * (_t5 * _t107);
-    highp float _t119 = _t118 * _t118;
-    highp float _t120 = _t119 * _t119;
-    highp float _t121 = (1.0 - _t118 * 0.166666672 + _t119 * (0.00833333377 - _t118 * 0.000198412701) + _t120 * (_t119 * (1.60577024e-10 - _t118 * 7.54937183e-13) + (2.75573188e-06 - _t118 * 2.50520991e-08))) * (_t106 * _t116);
-    highp float _t122 = _t120 * (_t119 * (2.08744777e-09 - _t118 * 1.13046204e-11) + (2.48015876e-05 - _t118 * 2.75573029e-07)) + (1.0 - _t118 * 0.5 + _t119 * (0.0416666679 - _t118 * 0.00138888892));
-    highp float _t123 = _t5 * _t109 * _t111;
-    highp float _t124 = _t123 * _t123;
+    highp float _t92 = _t91 * _t91;
+    highp float _t93 = (0.0416666679 - 0.00138888892 * _t90) * _t91 + (1.0 - _t90 * 0.5) + _t92 * (2.48015876e-05 - _t90 * 2.75573029e-07 + _t91 * (2.08744777e-09 - _t90 * 1.13046204e-11));
+    highp float _t94 = _t75 * _t82;
+    highp float _t95 = _t94 * ((0.00833333377 - 0.000198412701 * _t90) * _t91 + (1.0 - 0.166666672 * _t90) + (_t91 * (1.60577024e-10 - 7.54937183e-13 * _t90) + (2.75573188e-06 - 2.50520991e-08 * _t90)) * _t92);
+    highp float _t96 = _t14 * _t93 + _t95 * _t10;
+    highp float _t97 = _t88 * _t13 - _t87 * _t8;
+    highp float _t98 = _t3 * _t79 * _t81;
+    highp float _t99 = _t98 * _t98;
+    highp float _t100 = _t99 * _t99;
+    highp float _t101 = _t100 * (2.48015876e-05 - _t98 * 2.75573029e-07 + _t99 * (2.08744777e-09 - _t98 * 1.13046204e-11)) + (1.0 - _t98 * 0.5 + _t99 * (0.0416666679 - 0.00138888892 * _t98));
+    highp float _t102 = _t78 * _t82;
+    highp float _t103 = _t102 * (1.0 - 0.166666672 * _t98 + _t99 * (0.00833333377 - 0.000198412701 * _t98) + ((1.60577024e-10 - 7.54937183e-13 * _t98) * _t99 + (2.75573188e-06 - 2.50520991e-08 * _t98)) * _t100);
+    highp float _t104 = _t5 * _t101 - _t6 * _t103;
+    highp float _t105 = _t89 * _t96 - _t97 * _t104;
+    highp float _t106 = _t10 * _t93 - _t14 * _t95;
+    highp float _t107 = _t6 * _t101 + _t5 * _t103;
+    highp float _t108 = _t97 * _t106 - _t96 * _t107;
+    highp float _t109 = _t89 * _t107 - _t106 * _t104;
+    highp float _t110 = _t105 * _t105 + _t108 * _t108 + _t109 * _t109;
+    highp float _t111 = sqrt(_t110) * ((_t110 > 1.17549435e-38) ? 1.0 / _t110 : 0.0) * _t2;
+    highp float _t112 = _t83 - _t105 * _t111;
+    highp float _t113 = _t102 - _t111 * _t109;
+    highp float _t114 = _t94 + _t111 * _t108;
+    highp float _t115 = _t89 * _t104;
+    highp float _t116 = _t97 * _t96;
+    highp float _t117 = _t106 * _t107;
+    highp float _t118 = _t115 + _t117;
+    highp float _t119 = _t112 * (_t105 - _t97 * _t107 * _t113 - _t114 * (_t89 * _t106) - _t112 * (_t115 + _t116) * 0.5) + (_t118 + _t116) - _t114 * (_t96 * _t104 * _t113 + (_t114 * (_t117 + _t116) * 0.5 + _t108)) - (_t118 * _t113 * 0.5 - _t109) * _t113;
+    highp float _t120 = 1.73205256 * abs(_t2);
+    highp float _t121 = _t6 * _t10 + _t5 * _t8 + _t14 * _t13;
+    highp float _t122 = _t120 + _t121;
+    highp float _t123 = _t121 - _t120;
+    highp float _t124 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
     highp float _t125 = _t124 * _t124;
-    highp float _t126 = (_t124 * (2.08744777e-09 - 1.13046204e-11 * _t123) + (2.48015876e-05 - 2.75573029e-07 * _t123)) * _t125 + (1.0 - 0.5 * _t123 + _t124 * (0.0416666679 - 0.00138888892 * _t123));
-    highp float _t127 = ((0.00833333377 - 0.000198412701 * _t123) * _t124 + (1.0 - 0.166666672 * _t123) + _t125 * ((1.60577024e-10 - 7.54937183e-13 * _t123) * _t124 + (2.75573188e-06 - 2.50520991e-08 * _t123))) * (_t116 * _t108);
-    highp float _t128 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    highp float _t129 = _t128 * _t128;
-    highp float _t130 = _t129 * _t12 * _t20;
-    highp float _t131 = _t130 * _t130;
-    highp float _t132 = _t131 * _t131;
-    highp float _t133 = _t128 * _t25;
-    highp float _t134 = (_t132 * (2.75573188e-06 - 2.50520991e-08 * _t130 + (1.60577024e-10 - 7.54937183e-13 * _t130) * _t131) + (1.0 - 0.166666672 * _t130 + (0.00833333377 - 0.000198412701 * _t130) * _t131)) * (_t11 * _t133);
-    highp float _t135 = 1.0 - _t130 * 0.5 + (0.0416666679 - 0.00138888892 * _t130) * _t131 + _t132 * ((2.08744777e-09 - 1.13046204e-11 * _t130) * _t131 + (2.48015876e-05 - _t130 * 2.75573029e-07));
-    highp float _t136 = _t1 * _t134 + _t6 * _t135;
-    highp float _t137 = _t129 * _t16 * _t20;
-    highp float _t138 = _t137 * _t137;
-    highp float _t139 = _t138 * _t138;
-    highp float _t140 = 1.0 - _t137 * 0.5 + _t138 * (0.0416666679 - _t137 * 0.00138888892) + _t139 * (2.48015876e-05 - _t137 * 2.75573029e-07 + _t138 * (2.08744777e-09 - _t137 * 1.13046204e-11));
-    highp float _t141 = (1.0 - _t137 * 0.166666672 + _t138 * (0.00833333377 - _t137 * 0.000198412701) + (2.75573188e-06 - _t137 * 2.50520991e-08 + _t138 * (1.60577024e-10 - _t137 * 7.54937183e-13)) * _t139) * (_t15 * _t133);
-    highp float _t142 = _t14 * _t140 - _t141 * _t10;
-    highp float _t143 = _t10 * _t140 + _t14 * _t141;
-    highp float _t144 = _t129 * _t18 * _t20;
-    highp float _t145 = _t144 * _t144;
-    highp float _t146 = _t145 * _t145;
-    highp float _t147 = _t146 * ((2.08744777e-09 - _t144 * 1.13046204e-11) * _t145 + (2.48015876e-05 - _t144 * 2.75573029e-07)) + ((0.0416666679 - _t144 * 0.00138888892) * _t145 + (1.0 - _t144 * 0.5));
-    highp float _t148 = ((0.00833333377 - _t144 * 0.000198412701) * _t145 + (1.0 - _t144 * 0.166666672) + ((1.60577024e-10 - _t144 * 7.54937183e-13) * _t145 + (2.75573188e-06 - _t144 * 2.50520991e-08)) * _t146) * (_t133 * _t17);
-    highp float _t149 = _t147 * _t13 + _t148 * _t8;
-    highp float _t150 = _t136 * _t142 - _t143 * _t149;
+    highp float _t126 = _t125 * _t16 * _t20;
+    highp float _t127 = _t126 * _t126;
+    highp float _t128 = _t127 * _t127;
+    highp float _t129 = 1.0 - _t126 * 0.5 + _t127 * (0.0416666679 - _t126 * 0.00138888892) + _t128 * (2.48015876e-05 - _t126 * 2.75573029e-07 + _t127 * (2.08744777e-09 - _t126 * 1.13046204e-11));
+    highp float _t130 = _t124 * _t25;
+    highp float _t131 = (1.0 - _t126 * 0.166666672 + _t127 * (0.00833333377 - _t126 * 0.000198412701) + (2.75573188e-06 - _t126 * 2.50520991e-08 + _t127 * (1.60577024e-10 - _t126 * 7.54937183e-13)) * _t128) * (_t15 * _t130);
+    highp float _t132 = _t10 * _t129 + _t14 * _t131;
+    highp float _t133 = _t125 * _t12 * _t20;
+    highp float _t134 = _t133 * _t133;
+    highp float _t135 = _t134 * _t134;
+    highp float _t136 = 1.0 - _t133 * 0.5 + (0.0416666679 - 0.00138888892 * _t133) * _t134 + _t135 * ((2.08744777e-09 - 1.13046204e-11 * _t133) * _t134 + (2.48015876e-05 - _t133 * 2.75573029e-07));
+    highp float _t137 = (_t135 * (2.75573188e-06 - 2.50520991e-08 * _t133 + (1.60577024e-10 - 7.54937183e-13 * _t133) * _t134) + (1.0 - 0.166666672 * _t133 + (0.00833333377 - 0.000198412701 * _t133) * _t134)) * (_t11 * _t130);
+    highp float _t138 = _t5 * _t136 - _t6 * _t137;
+    highp float _t139 = _t5 * _t137 + _t6 * _t136;
+    highp float _t140 = _t125 * _t18 * _t20;
+    highp float _t141 = _t140 * _t140;
+    highp float _t142 = _t141 * _t141;
+    highp float _t143 = _t142 * ((2.08744777e-09 - _t140 * 1.13046204e-11) * _t141 + (2.48015876e-05 - _t140 * 2.75573029e-07)) + ((0.0416666679 - _t140 * 0.00138888892) * _t141 + (1.0 - _t140 * 0.5));
+    highp float _t144 = ((0.00833333377 - _t140 * 0.000198412701) * _t141 + (1.0 - _t140 * 0.166666672) + ((1.60577024e-10 - _t140 * 7.54937183e-13) * _t141 + (2.75573188e-06 - _t140 * 2.50520991e-08)) * _t142) * (_t130 * _t17);
+    highp float _t145 = _t143 * _t8 - _t144 * _t13;
+    highp float _t146 = _t132 * _t138 - _t139 * _t145;
+    highp float _t147 = _t146 * _t146;
+    highp float _t148 = _t143 * _t13 + _t144 * _t8;
+    highp float _t149 = _t14 * _t129 - _t131 * _t10;
+    highp float _t150 = _t138 * _t148 - _t149 * _t145;
     highp float _t151 = _t150 * _t150;
-    highp float _t152 = _t1 * _t135 - _t6 * _t134;
-    highp float _t153 = _t147 * _t8 - _t148 * _t13;
-    highp float _t154 = _t143 * _t152 - _t136 * _t153;
-    highp float _t155 = _t154 * _t154;
-    highp float _t156 = _t152 * _t149 - _t142 * _t153;
+    highp float _t152 = _t139 * _t149 - _t132 * _t148;
+    highp float _t153 = _t152 * _t152;
+    highp float _t154 = _t147 + _t151 + _t153;
+    highp float _t155 = (_t154 > 1.17549435e-38) ? 1.0 / _t154 : 0.0;
+    highp float _t156 = _t155 * (_t125 * _t151);
     highp float _t157 = _t156 * _t156;
-    highp float _t158 = _t155 + _t157 + _t151;
-    highp float _t159 = (_t158 > 1.17549435e-38) ? 1.0 / _t158 : 0.0;
-    highp float _t160 = _t129 * _t151 * _t159;
-    highp float _t161 = _t160 * _t160;
-    highp float _t162 = _t161 * _t161;
-    highp float _t163 = _t161 * (0.0416666679 - _t160 * 0.00138888892) + (1.0 - _t160 * 0.5) + (_t161 * (2.08744777e-09 - _t160 * 1.13046204e-11) + (2.48015876e-05 - _t160 * 2.75573029e-07)) * _t162;
-    highp float _t164 = _t128 * (sqrt(_t158) * _t159);
-    highp float _t165 = (_t161 * (0.00833333377 - _t160 * 0.000198412701) + (1.0 - _t160 * 0.166666672) + (2.75573188e-06 - _t160 * 2.50520991e-08 + _t161 * (1.60577024e-10 - _t160 * 7.54937183e-13)) * _t162) * (_t150 * _t164);
-    highp float _t166 = _t14 * _t163 + _t10 * _t165;
-    highp float _t167 = _t155 * _t129 * _t159;
-    highp float _t168 = _t167 * _t167;
-    highp float _t169 = _t168 * _t168;
-    highp float _t170 = (2.48015876e-05 - _t167 * 2.75573029e-07 + _t168 * (2.08744777e-09 - _t167 * 1.13046204e-11)) * _t169 + (1.0 - _t167 * 0.5 + _t168 * (0.0416666679 - _t167 * 0.00138888892));
-    highp float _t171 = _t154 * _t164 * (1.0 - _t167 * 0.166666672 + _t168 * (0.00833333377 - _t167 * 0.000198412701) + (2.75573188e-06 - _t167 * 2.50520991e-08 + _t168 * (1.60577024e-10 - _t167 * 7.54937183e-13)) * _t169);
-    highp float _t172 = _t170 * _t6 - _t1 * _t171;
-    highp float _t173 = _t159 * (_t129 * _t157);
-    highp float _t174 = _t173 * _t173;
-    highp float _t175 = _t174 * _t174;
-    highp float _t176 = (2.48015876e-05 - _t173 * 2.75573029e-07 + _t174 * (2.08744777e-09 - _t173 * 1.13046204e-11)) * _t175 + (_t174 * (0.0416666679 - _t173 * 0.00138888892) + (1.0 - _t173 * 0.5));
-    highp float _t177 = _t164 * _t156 * ((_t174 * (1.60577024e-10 - _t173 * 7.54937183e-13) + (2.75573188e-06 - _t173 * 2.50520991e-08)) * _t175 + (_t174 * (0.00833333377 - _t173 * 0.000198412701) + (1.0 - _t173 * 0.166666672)));
-    highp float _t178 = _t176 * _t13 + _t177 * _t8;
-    highp float _t179 = _t10 * _t163 - _t14 * _t165;
-    highp float _t180 = _t166 * _t172 - _t178 * _t179;
+    highp float _t158 = _t157 * _t157;
+    highp float _t159 = (2.48015876e-05 - _t156 * 2.75573029e-07 + _t157 * (2.08744777e-09 - _t156 * 1.13046204e-11)) * _t158 + (_t157 * (0.0416666679 - _t156 * 0.00138888892) + (1.0 - _t156 * 0.5));
+    highp float _t160 = _t124 * (sqrt(_t154) * _t155);
+    highp float _t161 = _t160 * _t150 * ((_t157 * (1.60577024e-10 - _t156 * 7.54937183e-13) + (2.75573188e-06 - _t156 * 2.50520991e-08)) * _t158 + (_t157 * (0.00833333377 - _t156 * 0.000198412701) + (1.0 - _t156 * 0.166666672)));
+    highp float _t162 = _t159 * _t8 - _t161 * _t13;
+    highp float _t163 = _t147 * _t125 * _t155;
+    highp float _t164 = _t163 * _t163;
+    highp float _t165 = _t164 * _t164;
+    highp float _t166 = (2.48015876e-05 - _t163 * 2.75573029e-07 + _t164 * (2.08744777e-09 - _t163 * 1.13046204e-11)) * _t165 + (1.0 - _t163 * 0.5 + _t164 * (0.0416666679 - _t163 * 0.00138888892));
+    highp float _t167 = _t146 * _t160 * (1.0 - _t163 * 0.166666672 + _t164 * (0.00833333377 - _t163 * 0.000198412701) + (2.75573188e-06 - _t163 * 2.50520991e-08 + _t164 * (1.60577024e-10 - _t163 * 7.54937183e-13)) * _t165);
+    highp float _t168 = _t166 * _t6 - _t5 * _t167;
+    highp float _t169 = _t166 * _t5 + _t6 * _t167;
+    highp float _t170 = _t125 * _t153 * _t155;
+    highp float _t171 = _t170 * _t170;
+    highp float _t172 = _t171 * _t171;
+    highp float _t173 = _t171 * (0.0416666679 - _t170 * 0.00138888892) + (1.0 - _t170 * 0.5) + (_t171 * (2.08744777e-09 - _t170 * 1.13046204e-11) + (2.48015876e-05 - _t170 * 2.75573029e-07)) * _t172;
+    highp float _t174 = (_t171 * (0.00833333377 - _t170 * 0.000198412701) + (1.0 - _t170 * 0.166666672) + (2.75573188e-06 - _t170 * 2.50520991e-08 + _t171 * (1.60577024e-10 - _t170 * 7.54937183e-13)) * _t172) * (_t152 * _t160);
+    highp float _t175 = _t10 * _t173 - _t14 * _t174;
+    highp float _t176 = _t162 * _t168 - _t169 * _t175;
+    highp float _t177 = _t176 * _t176;
+    highp float _t178 = _t14 * _t173 + _t10 * _t174;
+    highp float _t179 = _t159 * _t13 + _t161 * _t8;
+    highp float _t180 = _t162 * _t178 - _t179 * _t169;
     highp float _t181 = _t180 * _t180;
-    highp float _t182 = _t176 * _t8 - _t177 * _t13;
-    highp float _t183 = _t170 * _t1 + _t6 * _t171;
-    highp float _t184 = _t182 * _t172 - _t183 * _t179;
-    highp float _t185 = _t184 * _t184;
-    highp float _t186 = _t182 * _t166 - _t178 * _t183;
+    highp float _t182 = _t178 * _t168 - _t179 * _t175;
+    highp float _t183 = _t182 * _t182;
+    highp float _t184 = _t177 + (_t181 + _t183);
+    highp float _t185 = (_t184 > 1.17549435e-38) ? 1.0 / _t184 : 0.0;
+    highp float _t186 = _t185 * (_t125 * _t177);
     highp float _t187 = _t186 * _t186;
-    highp float _t188 = _t185 + (_t187 + _t181);
-    highp float _t189 = (_t188 > 1.17549435e-38) ? 1.0 / _t188 : 0.0;
-    highp float _t190 = _t129 * _t181 * _t189;
-    highp float _t191 = _t190 * _t190;
-    highp float _t192 = _t191 * _t191;
-    highp float _t193 = _t192 * (2.48015876e-05 - _t190 * 2.75573029e-07 + _t191 * (2.08744777e-09 - _t190 * 1.13046204e-11)) + (1.0 - _t190 * 0.5 + (0.0416666679 - _t190 * 0.00138888892) * _t191);
-    highp float _t194 = _t128 * (_t189 * sqrt(_t188));
-    highp float _t195 = ((2.75573188e-06 - _t190 * 2.50520991e-08 + _t191 * (1.60577024e-10 - _t190 * 7.54937183e-13)) * _t192 + ((0.00833333377 - _t190 * 0.000198412701) * _t191 + (1.0 - _t190 * 0.166666672))) * (_t180 * _t194);
-    highp float _t196 = _t10 * _t193 - _t14 * _t195;
-    highp float _t197 = _t129 * _t187 * _t189;
-    highp float _t198 = _t197 * _t197;
-    highp float _t199 = _t198 * _t198;
-    highp float _t200 = _t199 * ((2.08744777e-09 - 1.13046204e-11 * _t197) * _t198 + (2.48015876e-05 - _t197 * 2.75573029e-07)) + (1.0 - _t197 * 0.5 + (0.0416666679 - 0.00138888892 * _t197) * _t198);
-    highp float _t201 = _t186 * _t194 * ((0.00833333377 - 0.000198412701 * _t197) * _t198 + (1.0 - 0.166666672 * _t197) + _t199 * ((1.60577024e-10 - 7.54937183e-13 * _t197) * _t198 + (2.75573188e-06 - 2.50520991e-08 * _t197)));
-    highp float _t202 = _t200 * _t13 - _t201 * _t8;
-    highp float _t203 = _t189 * (_t129 * _t185);
+    highp float _t188 = _t187 * _t187;
+    highp float _t189 = _t124 * (_t185 * sqrt(_t184));
+    highp float _t190 = _t176 * _t189;
+    highp float _t191 = (((1.60577024e-10 - 7.54937183e-13 * _t186) * _t187 + (2.75573188e-06 - 2.50520991e-08 * _t186)) * _t188 + (_t187 * (0.00833333377 - 0.000198412701 * _t186) + (1.0 - 0.166666672 * _t186))) * _t190;
+    highp float _t192 = _t188 * (2.48015876e-05 - _t186 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t186) * _t187) + ((0.0416666679 - 0.00138888892 * _t186) * _t187 + (1.0 - _t186 * 0.5));
+    highp float _t193 = _t5 * _t191 + _t6 * _t192;
+    highp float _t194 = _t125 * _t183 * _t185;
+    highp float _t195 = _t194 * _t194;
+    highp float _t196 = _t195 * _t195;
+    highp float _t197 = _t196 * (2.48015876e-05 - _t194 * 2.75573029e-07 + _t195 * (2.08744777e-09 - _t194 * 1.13046204e-11)) + (1.0 - _t194 * 0.5 + (0.0416666679 - _t194 * 0.00138888892) * _t195);
+    highp float _t198 = _t182 * _t189;
+    highp float _t199 = ((2.75573188e-06 - _t194 * 2.50520991e-08 + _t195 * (1.60577024e-10 - _t194 * 7.54937183e-13)) * _t196 + ((0.00833333377 - _t194 * 0.000198412701) * _t195 + (1.0 - _t194 * 0.166666672))) * _t198;
+    highp float _t200 = _t10 * _t197 - _t14 * _t199;
+    highp float _t201 = _t193 * _t200;
+    highp float _t202 = _t125 * _t181 * _t185;
+    highp float _t203 = _t202 * _t202;
     highp float _t204 = _t203 * _t203;
-    highp float _t205 = _t204 * _t204;
-    highp float _t206 = (((1.60577024e-10 - 7.54937183e-13 * _t203) * _t204 + (2.75573188e-06 - 2.50520991e-08 * _t203)) * _t205 + (_t204 * (0.00833333377 - 0.000198412701 * _t203) + (1.0 - 0.166666672 * _t203))) * (_t184 * _t194);
-    highp float _t207 = _t205 * (2.48015876e-05 - _t203 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t203) * _t204) + ((0.0416666679 - 0.00138888892 * _t203) * _t204 + (1.0 - _t203 * 0.5));
-    highp float _t208 = _t1 * _t206 + _t6 * _t207;
-    highp float _t209 = _t14 * _t193 + _t195 * _t10;
-    highp float _t210 = _t196 * _t202 - _t208 * _t209;
-    highp float _t211 = _t210 * _t210;
-    highp float _t212 = _t200 * _t8 + _t201 * _t13;
-    highp float _t213 = _t1 * _t207 - _t6 * _t206;
-    highp float _t214 = _t209 * _t212 - _t202 * _t213;
-    highp float _t215 = _t214 * _t214;
-    highp float _t216 = _t208 * _t212 - _t196 * _t213;
-    highp float _t217 = _t216 * _t216;
-    highp float _t218 = _t211 + _t215 + _t217;
-    highp float _t219 = (_t218 > 1.17549435e-38) ? 1.0 / _t218 : 0.0;
-    highp float _t220 = _t219 * (_t129 * _t215);
-    highp float _t221 = _t220 * _t220;
-    highp float _t222 = _t221 * _t221;
-    highp float _t223 = (2.48015876e-05 - _t220 * 2.75573029e-07 + _t221 * (2.08744777e-09 - _t220 * 1.13046204e-11)) * _t222 + (1.0 - _t220 * 0.5 + _t221 * (0.0416666679 - _t220 * 0.00138888892));
-    highp float _t224 = _t128 * (_t219 * sqrt(_t218));
-    highp float _t225 = _t214 * _t224 * (_t221 * (0.00833333377 - _t220 * 0.000198412701) + (1.0 - _t220 * 0.166666672) + (_t221 * (1.60577024e-10 - _t220 * 7.54937183e-13) + (2.75573188e-06 - _t220 * 2.50520991e-08)) * _t222);
-    highp float _t226 = _t129 * _t217 * _t219;
-    highp float _t227 = _t226 * _t226;
-    highp float _t228 = _t227 * _t227;
-    highp float _t229 = _t228 * ((2.08744777e-09 - _t226 * 1.13046204e-11) * _t227 + (2.48015876e-05 - _t226 * 2.75573029e-07)) + (_t227 * (0.0416666679 - 0.00138888892 * _t226) + (1.0 - _t226 * 0.5));
-    highp float _t230 = _t224 * _t216 * (1.0 - 0.166666672 * _t226 + _t227 * (0.00833333377 - _t226 * 0.000198412701) + ((1.60577024e-10 - 7.54937183e-13 * _t226) * _t227 + (2.75573188e-06 - 2.50520991e-08 * _t226)) * _t228);
-    highp float _t231 = _t129 * _t211 * _t219;
-    highp float _t232 = _t231 * _t231;
-    highp float _t233 = _t232 * _t232;
-    highp float _t234 = _t210 * _t224 * (_t233 * (2.75573188e-06 - 2.50520991e-08 * _t231 + _t232 * (1.60577024e-10 - 7.54937183e-13 * _t231)) + (_t232 * (0.00833333377 - 0.000198412701 * _t231) + (1.0 - 0.166666672 * _t231)));
-    highp float _t235 = _t233 * ((2.08744777e-09 - 1.13046204e-11 * _t231) * _t232 + (2.48015876e-05 - _t231 * 2.75573029e-07)) + (_t232 * (0.0416666679 - 0.00138888892 * _t231) + (1.0 - _t231 * 0.5));
-    return ((_t1 * _t115 - _t6 * _t117) * (_t121 * _t13 + _t122 * _t8) + (_t6 * _t115 + _t1 * _t117) * (_t126 * _t10 + _t14 * _t127) + (_t122 * _t13 - _t121 * _t8) * (_t14 * _t126 - _t127 * _t10)) * ((_t223 * _t8 + _t225 * _t13) * (_t1 * _t229 - _t6 * _t230) + ((_t1 * _t230 + _t6 * _t229) * (_t234 * _t14 + _t235 * _t10) + (_t223 * _t13 - _t225 * _t8) * (_t14 * _t235 - _t234 * _t10)));
+    highp float _t205 = _t204 * ((2.08744777e-09 - 1.13046204e-11 * _t202) * _t203 + (2.48015876e-05 - _t202 * 2.75573029e-07)) + (1.0 - _t202 * 0.5 + (0.0416666679 - 0.00138888892 * _t202) * _t203);
+    highp float _t206 = _t180 * _t189;
+    highp float _t207 = _t206 * ((0.00833333377 - 0.000198412701 * _t202) * _t203 + (1.0 - 0.166666672 * _t202) + _t204 * ((1.60577024e-10 - 7.54937183e-13 * _t202) * _t203 + (2.75573188e-06 - 2.50520991e-08 * _t202)));
+    highp float _t208 = _t205 * _t8 + _t207 * _t13;
+    highp float _t209 = _t5 * _t192 - _t6 * _t191;
+    highp float _t210 = _t208 * _t209;
+    highp float _t211 = _t201 + _t210;
+    highp float _t212 = _t14 * _t197 + _t199 * _t10;
+    highp float _t213 = _t205 * _t13 - _t207 * _t8;
+    highp float _t214 = _t212 * _t213;
+    highp float _t215 = _t212 * _t208 - _t213 * _t209;
+    highp float _t216 = _t200 * _t213 - _t193 * _t212;
+    highp float _t217 = _t193 * _t208 - _t200 * _t209;
+    highp float _t218 = _t216 * _t216 + _t215 * _t215 + _t217 * _t217;
+    highp float _t219 = _t124 * (((_t218 > 1.17549435e-38) ? 1.0 / _t218 : 0.0) * sqrt(_t218));
+    highp float _t220 = _t206 - _t215 * _t219;
+    highp float _t221 = _t216 * _t219 + _t198;
+    highp float _t222 = _t190 - _t219 * _t217;
+    highp float _t223 = _t211 + _t214 + _t220 * (_t215 - _t221 * (_t200 * _t208) - _t193 * _t213 * _t222 - _t220 * (_t210 + _t214) * 0.5) - (_t216 + _t212 * _t209 * _t222 + (_t201 + _t214) * _t221 * 0.5) * _t221 - (_t211 * _t222 * 0.5 - _t217) * _t222;
+    highp float _t224 = 1.73205256 * abs(_t124);
+    highp float _t225 = _t121 + _t224;
+    highp float _t226 = _t121 - _t224;
+    return ((_t119 <= _t122) ? ((_t123 <= _t119) ? _t119 : _t123) : _t122) * ((_t223 <= _t225) ? ((_t226 <= _t223) ? _t223 : _t226) : _t225);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 598.

@@ -11,7 +11,9 @@
  * Source:  Neovius 1883; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
  * Method:  foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
  *          n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections
- *          give order 2(K+1) = 4.
+ *          give order 2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1),
+ *          evaluated at q_K (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own
+ *          order, and q_K needs no trig of its own).
  *          offsetgen, docs/projection.md (foot-point projection).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
@@ -40,15 +42,16 @@
  *   foot-point estimate and updates it at every projection: each wall converges at order 2 = K + 1
  *   to the distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2.
  *   Passing a local t(p) to _shell reads it at p instead: second order at best.
- * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
- *   7.0000069999999992 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too):
- *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
- *   0, so every function returns a finite value for finite input (do not compile with
- *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
- *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
- *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
- *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
+ * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+ *   7.0000069999999992 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too),
+ *   and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so
+ *   this never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no
+ *   phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for
+ *   finite input (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates
+ *   come from their values at p by angle addition, which is exact while |h| <= 1 (natural units:
+ *   |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is
+ *   clamped to 1, so thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above.
+ *   n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -57,11 +60,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    15
- *   offset   307
- *   shell    582
+ *   offset   252
+ *   shell    458
  *   normal   337
  */
-/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":307,"shell":582,"normal":337}} */
+/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":252,"shell":458,"normal":337}} */
 #ifndef OFFSETGEN_NEOVIUS_PROJ_O4_CL
 #define OFFSETGEN_NEOVIUS_PROJ_O4_CL
 
@@ -77,192 +80,194 @@ float neovius_proj_o4_fieldf(float3 p)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 307
+ * Total ops: 252
  */
 float neovius_proj_o4_offsetf(float3 p, float h)
 {
     const float _t0 = 6.28318548f * h;
     const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
-    const float _t2 = _t1 * _t1;
-    const float _t3 = p.y * 2.0f;
-    const float _t4 = cospi(_t3);
+    const float _t2 = p.y * 2.0f;
+    const float _t3 = cospi(_t2);
+    const float _t4 = _t1 * _t1;
     const float _t5 = p.x * 2.0f;
     const float _t6 = cospi(_t5);
     const float _t7 = p.z * 2.0f;
     const float _t8 = cospi(_t7);
-    const float _t9 = sinpi(_t3);
+    const float _t9 = sinpi(_t2);
     const float _t10 = 4.0f * (_t6 * (_t8 * _t9)) + 3.0f * _t9;
     const float _t11 = _t10 * _t10;
     const float _t12 = sinpi(_t5);
-    const float _t13 = 3.0f * _t12 + 4.0f * (_t4 * _t8 * _t12);
-    const float _t14 = _t13 * _t13;
-    const float _t15 = sinpi(_t7);
-    const float _t16 = 4.0f * (_t6 * (_t15 * _t4)) + _t15 * 3.0f;
-    const float _t17 = _t16 * _t16;
-    const float _t18 = _t14 + (_t11 + _t17);
-    const float _t19 = (_t18 > 1.17549435e-38f) ? 1.0f / _t18 : 0.0f;
-    const float _t20 = _t2 * _t11 * _t19;
-    const float _t21 = _t20 * _t20;
+    const float _t13 = _t3 * _t8;
+    const float _t14 = 3.0f * _t12 + 4.0f * (_t13 * _t12);
+    const float _t15 = _t14 * _t14;
+    const float _t16 = sinpi(_t7);
+    const float _t17 = 4.0f * (_t6 * (_t16 * _t3)) + _t16 * 3.0f;
+    const float _t18 = _t17 * _t17;
+    const float _t19 = _t15 + (_t11 + _t18);
+    const float _t20 = (_t19 > 1.17549435e-38f) ? 1.0f / _t19 : 0.0f;
+    const float _t21 = _t4 * _t11 * _t20;
     const float _t22 = _t21 * _t21;
-    const float _t23 = _t1 * (_t19 * sqrt(_t18));
-    const float _t24 = ((2.75573188e-06f - _t20 * 2.50520991e-08f + (1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21) * _t22 + (1.0f - _t20 * 0.166666672f + _t21 * (0.00833333377f - _t20 * 0.000198412701f))) * (_t10 * _t23);
-    const float _t25 = _t22 * (_t21 * (2.08744777e-09f - _t20 * 1.13046204e-11f) + (2.48015876e-05f - _t20 * 2.75573029e-07f)) + ((0.0416666679f - _t20 * 0.00138888892f) * _t21 + (1.0f - _t20 * 0.5f));
-    const float _t26 = _t4 * _t24 + _t25 * _t9;
-    const float _t27 = _t19 * (_t14 * _t2);
-    const float _t28 = _t27 * _t27;
-    const float _t29 = _t28 * _t28;
-    const float _t30 = 1.0f - _t27 * 0.5f + _t28 * (0.0416666679f - _t27 * 0.00138888892f) + _t29 * (2.48015876e-05f - _t27 * 2.75573029e-07f + _t28 * (2.08744777e-09f - _t27 * 1.13046204e-11f));
-    const float _t31 = _t13 * _t23 * (1.0f - _t27 * 0.166666672f + _t28 * (0.00833333377f - _t27 * 0.000198412701f) + _t29 * (2.75573188e-06f - _t27 * 2.50520991e-08f + _t28 * (1.60577024e-10f - _t27 * 7.54937183e-13f)));
-    const float _t32 = _t6 * _t30 - _t31 * _t12;
-    const float _t33 = _t19 * (_t2 * _t17);
-    const float _t34 = _t33 * _t33;
-    const float _t35 = _t34 * _t34;
-    const float _t36 = _t34 * (0.0416666679f - _t33 * 0.00138888892f) + (1.0f - _t33 * 0.5f) + (2.48015876e-05f - _t33 * 2.75573029e-07f + (2.08744777e-09f - _t33 * 1.13046204e-11f) * _t34) * _t35;
-    const float _t37 = _t16 * _t23 * (((1.60577024e-10f - _t33 * 7.54937183e-13f) * _t34 + (2.75573188e-06f - _t33 * 2.50520991e-08f)) * _t35 + ((0.00833333377f - _t33 * 0.000198412701f) * _t34 + (1.0f - _t33 * 0.166666672f)));
-    const float _t38 = _t36 * _t8 - _t15 * _t37;
-    const float _t39 = _t26 * 3.0f + 4.0f * (_t32 * (_t38 * _t26));
-    const float _t40 = _t39 * _t39;
-    const float _t41 = _t4 * _t25 - _t24 * _t9;
-    const float _t42 = _t15 * _t36 + _t37 * _t8;
-    const float _t43 = 4.0f * (_t41 * (_t42 * _t32)) + _t42 * 3.0f;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = _t30 * _t12 + _t31 * _t6;
-    const float _t46 = _t45 * 3.0f + 4.0f * (_t41 * (_t38 * _t45));
-    const float _t47 = _t46 * _t46;
-    const float _t48 = _t40 + (_t44 + _t47);
-    const float _t49 = (_t48 > 1.17549435e-38f) ? 1.0f / _t48 : 0.0f;
-    const float _t50 = _t2 * _t40 * _t49;
-    const float _t51 = _t50 * _t50;
-    const float _t52 = _t51 * _t51;
-    const float _t53 = _t1 * (_t49 * sqrt(_t48));
-    const float _t54 = (_t52 * (2.48015876e-05f - _t50 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t50) * _t51) + ((0.0416666679f - 0.00138888892f * _t50) * _t51 + (1.0f - _t50 * 0.5f))) * _t4 - ((2.75573188e-06f - 2.50520991e-08f * _t50 + (1.60577024e-10f - 7.54937183e-13f * _t50) * _t51) * _t52 + ((0.00833333377f - 0.000198412701f * _t50) * _t51 + (1.0f - 0.166666672f * _t50))) * (_t53 * _t39) * _t9;
-    const float _t55 = _t2 * _t47 * _t49;
-    const float _t56 = _t55 * _t55;
-    const float _t57 = _t56 * _t56;
-    const float _t58 = _t6 * (((2.08744777e-09f - 1.13046204e-11f * _t55) * _t56 + (2.48015876e-05f - _t55 * 2.75573029e-07f)) * _t57 + (1.0f - _t55 * 0.5f + (0.0416666679f - 0.00138888892f * _t55) * _t56)) - (_t57 * (_t56 * (1.60577024e-10f - 7.54937183e-13f * _t55) + (2.75573188e-06f - 2.50520991e-08f * _t55)) + (_t56 * (0.00833333377f - 0.000198412701f * _t55) + (1.0f - 0.166666672f * _t55))) * (_t46 * _t53) * _t12;
-    const float _t59 = _t44 * _t2 * _t49;
-    const float _t60 = _t59 * _t59;
-    const float _t61 = _t60 * _t60;
-    const float _t62 = ((2.48015876e-05f - _t59 * 2.75573029e-07f + _t60 * (2.08744777e-09f - 1.13046204e-11f * _t59)) * _t61 + (_t60 * (0.0416666679f - 0.00138888892f * _t59) + (1.0f - _t59 * 0.5f))) * _t8 - _t15 * (_t53 * _t43 * (1.0f - 0.166666672f * _t59 + (0.00833333377f - 0.000198412701f * _t59) * _t60 + (2.75573188e-06f - 2.50520991e-08f * _t59 + (1.60577024e-10f - 7.54937183e-13f * _t59) * _t60) * _t61));
-    return _t54 * 3.0f + (_t58 * 3.0f + 4.0f * (_t58 * (_t54 * _t62))) + 3.0f * _t62;
+    const float _t23 = _t22 * _t22;
+    const float _t24 = _t1 * (_t20 * sqrt(_t19));
+    const float _t25 = _t10 * _t24;
+    const float _t26 = ((2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22) * _t23 + (1.0f - _t21 * 0.166666672f + _t22 * (0.00833333377f - _t21 * 0.000198412701f))) * _t25;
+    const float _t27 = _t23 * (_t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f) + (2.48015876e-05f - _t21 * 2.75573029e-07f)) + ((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f));
+    const float _t28 = _t3 * _t26 + _t27 * _t9;
+    const float _t29 = _t20 * (_t15 * _t4);
+    const float _t30 = _t29 * _t29;
+    const float _t31 = _t30 * _t30;
+    const float _t32 = 1.0f - _t29 * 0.5f + _t30 * (0.0416666679f - _t29 * 0.00138888892f) + _t31 * (2.48015876e-05f - _t29 * 2.75573029e-07f + _t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f));
+    const float _t33 = _t14 * _t24;
+    const float _t34 = _t33 * (1.0f - _t29 * 0.166666672f + _t30 * (0.00833333377f - _t29 * 0.000198412701f) + _t31 * (2.75573188e-06f - _t29 * 2.50520991e-08f + _t30 * (1.60577024e-10f - _t29 * 7.54937183e-13f)));
+    const float _t35 = _t6 * _t32 - _t34 * _t12;
+    const float _t36 = _t20 * (_t4 * _t18);
+    const float _t37 = _t36 * _t36;
+    const float _t38 = _t37 * _t37;
+    const float _t39 = _t37 * (0.0416666679f - _t36 * 0.00138888892f) + (1.0f - _t36 * 0.5f) + (2.48015876e-05f - _t36 * 2.75573029e-07f + (2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37) * _t38;
+    const float _t40 = _t17 * _t24;
+    const float _t41 = _t40 * (((1.60577024e-10f - _t36 * 7.54937183e-13f) * _t37 + (2.75573188e-06f - _t36 * 2.50520991e-08f)) * _t38 + ((0.00833333377f - _t36 * 0.000198412701f) * _t37 + (1.0f - _t36 * 0.166666672f)));
+    const float _t42 = _t39 * _t8 - _t16 * _t41;
+    const float _t43 = _t28 * 3.0f + 4.0f * (_t35 * (_t42 * _t28));
+    const float _t44 = _t3 * _t27 - _t26 * _t9;
+    const float _t45 = _t16 * _t39 + _t41 * _t8;
+    const float _t46 = 4.0f * (_t44 * (_t45 * _t35)) + _t45 * 3.0f;
+    const float _t47 = _t32 * _t12 + _t34 * _t6;
+    const float _t48 = _t47 * 3.0f + 4.0f * (_t44 * (_t42 * _t47));
+    const float _t49 = _t43 * _t43 + (_t46 * _t46 + _t48 * _t48);
+    const float _t50 = _t1 * (((_t49 > 1.17549435e-38f) ? 1.0f / _t49 : 0.0f) * sqrt(_t49));
+    const float _t51 = _t50 * _t46 - _t40;
+    const float _t52 = _t35 * _t42 * _t44 * 4.0f;
+    const float _t53 = _t42 * 3.0f;
+    const float _t54 = _t44 * 3.0f;
+    const float _t55 = _t35 * 3.0f;
+    const float _t56 = _t50 * _t43 - _t25;
+    const float _t57 = _t48 * _t50 - _t33;
+    const float _t58 = -(_t51 * (_t51 * (_t52 + _t53) * 0.5f + _t46) - (_t52 + (_t53 + _t54 + _t55)) - (_t56 * (4.0f * (_t42 * (_t47 * _t28))) + _t51 * (4.0f * (_t45 * _t47 * _t44)) - (_t52 + _t55) * _t57 * 0.5f - _t48) * _t57 - (_t51 * (4.0f * (_t45 * (_t35 * _t28))) - (_t52 + _t54) * _t56 * 0.5f - _t43) * _t56);
+    const float _t59 = 7.00000715f * fabs(_t1);
+    const float _t60 = _t3 * 3.0f + (3.0f * _t8 + (_t6 * 3.0f + 4.0f * (_t6 * _t13)));
+    const float _t61 = _t59 + _t60;
+    const float _t62 = _t60 - _t59;
+    return (_t58 <= _t61) ? ((_t62 <= _t58) ? _t58 : _t62) : _t61;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 582
+ * Total ops: 458
  */
 float neovius_proj_o4_shellf(float3 p, float t)
 {
-    const float _t0 = p.z * 2.0f;
+    const float _t0 = p.y * 2.0f;
     const float _t1 = cospi(_t0);
     const float _t2 = 6.28318548f * (t * 0.5f);
-    const float _t3 = -_t2;
-    const float _t4 = (_t3 <= 1.0f) ? (((-1.0f) <= _t3) ? _t3 : (-1.0f)) : 1.0f;
-    const float _t5 = _t4 * _t4;
-    const float _t6 = p.y * 2.0f;
-    const float _t7 = cospi(_t6);
-    const float _t8 = p.x * 2.0f;
-    const float _t9 = sinpi(_t8);
-    const float _t10 = 3.0f * _t9 + 4.0f * (_t7 * _t1 * _t9);
+    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+    const float _t4 = _t3 * _t3;
+    const float _t5 = p.x * 2.0f;
+    const float _t6 = cospi(_t5);
+    const float _t7 = p.z * 2.0f;
+    const float _t8 = cospi(_t7);
+    const float _t9 = sinpi(_t0);
+    const float _t10 = 4.0f * (_t6 * (_t8 * _t9)) + 3.0f * _t9;
     const float _t11 = _t10 * _t10;
-    const float _t12 = cospi(_t8);
-    const float _t13 = sinpi(_t6);
-    const float _t14 = 4.0f * (_t12 * (_t1 * _t13)) + 3.0f * _t13;
+    const float _t12 = sinpi(_t5);
+    const float _t13 = _t1 * _t8;
+    const float _t14 = 3.0f * _t12 + 4.0f * (_t13 * _t12);
     const float _t15 = _t14 * _t14;
-    const float _t16 = sinpi(_t0);
-    const float _t17 = 4.0f * (_t12 * (_t16 * _t7)) + _t16 * 3.0f;
+    const float _t16 = sinpi(_t7);
+    const float _t17 = 4.0f * (_t6 * (_t16 * _t1)) + _t16 * 3.0f;
     const float _t18 = _t17 * _t17;
-    const float _t19 = _t11 + (_t15 + _t18);
+    const float _t19 = _t15 + (_t11 + _t18);
     const float _t20 = (_t19 > 1.17549435e-38f) ? 1.0f / _t19 : 0.0f;
-    const float _t21 = _t20 * (_t5 * _t15);
+    const float _t21 = _t4 * _t11 * _t20;
     const float _t22 = _t21 * _t21;
     const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + (2.08744777e-09f - _t21 * 1.13046204e-11f) * _t22) + (1.0f - _t21 * 0.5f + (0.0416666679f - _t21 * 0.00138888892f) * _t22);
+    const float _t24 = 1.0f - 0.5f * _t21 + (0.0416666679f - 0.00138888892f * _t21) * _t22 + _t23 * (2.48015876e-05f - 2.75573029e-07f * _t21 + (2.08744777e-09f - 1.13046204e-11f * _t21) * _t22);
     const float _t25 = _t20 * sqrt(_t19);
-    const float _t26 = _t25 * _t4;
-    const float _t27 = _t14 * _t26 * (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * ((1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22 + (2.75573188e-06f - _t21 * 2.50520991e-08f)));
-    const float _t28 = _t7 * _t24 - _t27 * _t13;
-    const float _t29 = _t5 * _t18 * _t20;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = _t30 * _t30;
-    const float _t32 = 1.0f - _t29 * 0.5f + _t30 * (0.0416666679f - 0.00138888892f * _t29) + ((2.08744777e-09f - _t29 * 1.13046204e-11f) * _t30 + (2.48015876e-05f - _t29 * 2.75573029e-07f)) * _t31;
-    const float _t33 = _t17 * _t26 * ((0.00833333377f - _t29 * 0.000198412701f) * _t30 + (1.0f - 0.166666672f * _t29) + (_t30 * (1.60577024e-10f - 7.54937183e-13f * _t29) + (2.75573188e-06f - 2.50520991e-08f * _t29)) * _t31);
-    const float _t34 = _t16 * _t32 + _t33 * _t1;
-    const float _t35 = _t20 * (_t5 * _t11);
-    const float _t36 = _t35 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = 1.0f - 0.5f * _t35 + _t36 * (0.0416666679f - 0.00138888892f * _t35) + _t37 * (_t36 * (2.08744777e-09f - 1.13046204e-11f * _t35) + (2.48015876e-05f - 2.75573029e-07f * _t35));
-    const float _t39 = _t26 * _t10 * (_t36 * (0.00833333377f - 0.000198412701f * _t35) + (1.0f - 0.166666672f * _t35) + (_t36 * (1.60577024e-10f - 7.54937183e-13f * _t35) + (2.75573188e-06f - 2.50520991e-08f * _t35)) * _t37);
-    const float _t40 = _t38 * _t12 - _t39 * _t9;
-    const float _t41 = 4.0f * (_t28 * _t34 * _t40) + 3.0f * _t34;
-    const float _t42 = _t41 * _t41;
-    const float _t43 = _t38 * _t9 + _t39 * _t12;
-    const float _t44 = _t1 * _t32 - _t33 * _t16;
-    const float _t45 = _t43 * 3.0f + 4.0f * (_t43 * (_t44 * _t28));
-    const float _t46 = _t45 * _t45;
-    const float _t47 = _t7 * _t27 + _t24 * _t13;
-    const float _t48 = _t40 * (_t44 * _t47) * 4.0f + 3.0f * _t47;
-    const float _t49 = _t48 * _t48;
-    const float _t50 = _t46 + (_t49 + _t42);
-    const float _t51 = (_t50 > 1.17549435e-38f) ? 1.0f / _t50 : 0.0f;
-    const float _t52 = _t5 * _t42 * _t51;
-    const float _t53 = _t52 * _t52;
-    const float _t54 = _t53 * _t53;
-    const float _t55 = _t4 * (sqrt(_t50) * _t51);
-    const float _t56 = _t1 * ((0.0416666679f - 0.00138888892f * _t52) * _t53 + (1.0f - _t52 * 0.5f) + ((2.08744777e-09f - _t52 * 1.13046204e-11f) * _t53 + (2.48015876e-05f - _t52 * 2.75573029e-07f)) * _t54) - _t16 * (_t41 * _t55 * ((0.00833333377f - 0.000198412701f * _t52) * _t53 + (1.0f - 0.166666672f * _t52) + ((1.60577024e-10f - 7.54937183e-13f * _t52) * _t53 + (2.75573188e-06f - 2.50520991e-08f * _t52)) * _t54));
-    const float _t57 = _t5 * _t49 * _t51;
-    const float _t58 = _t57 * _t57;
-    const float _t59 = _t58 * _t58;
-    const float _t60 = _t7 * ((0.0416666679f - 0.00138888892f * _t57) * _t58 + (1.0f - _t57 * 0.5f) + _t59 * ((2.08744777e-09f - _t57 * 1.13046204e-11f) * _t58 + (2.48015876e-05f - _t57 * 2.75573029e-07f))) - _t55 * _t48 * ((0.00833333377f - _t57 * 0.000198412701f) * _t58 + (1.0f - _t57 * 0.166666672f) + (2.75573188e-06f - _t57 * 2.50520991e-08f + (1.60577024e-10f - 7.54937183e-13f * _t57) * _t58) * _t59) * _t13;
-    const float _t61 = _t5 * _t46 * _t51;
-    const float _t62 = _t61 * _t61;
-    const float _t63 = _t62 * _t62;
-    const float _t64 = _t12 * (((2.08744777e-09f - _t61 * 1.13046204e-11f) * _t62 + (2.48015876e-05f - _t61 * 2.75573029e-07f)) * _t63 + (1.0f - _t61 * 0.5f + (0.0416666679f - _t61 * 0.00138888892f) * _t62)) - ((0.00833333377f - _t61 * 0.000198412701f) * _t62 + (1.0f - _t61 * 0.166666672f) + _t63 * ((1.60577024e-10f - _t61 * 7.54937183e-13f) * _t62 + (2.75573188e-06f - _t61 * 2.50520991e-08f))) * (_t45 * _t55) * _t9;
-    const float _t65 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
-    const float _t66 = _t65 * _t65;
-    const float _t67 = _t66 * _t11 * _t20;
-    const float _t68 = _t67 * _t67;
+    const float _t26 = _t3 * _t25;
+    const float _t27 = _t26 * _t10;
+    const float _t28 = (_t23 * ((1.60577024e-10f - 7.54937183e-13f * _t21) * _t22 + (2.75573188e-06f - 2.50520991e-08f * _t21)) + (1.0f - 0.166666672f * _t21 + (0.00833333377f - 0.000198412701f * _t21) * _t22)) * _t27;
+    const float _t29 = _t1 * _t24 - _t28 * _t9;
+    const float _t30 = _t29 * 3.0f;
+    const float _t31 = _t4 * _t18 * _t20;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = ((2.08744777e-09f - _t31 * 1.13046204e-11f) * _t32 + (2.48015876e-05f - _t31 * 2.75573029e-07f)) * _t33 + ((0.0416666679f - 0.00138888892f * _t31) * _t32 + (1.0f - _t31 * 0.5f));
+    const float _t35 = _t17 * _t26;
+    const float _t36 = (_t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + (1.60577024e-10f - 7.54937183e-13f * _t31) * _t32) + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - _t31 * 0.000198412701f))) * _t35;
+    const float _t37 = _t8 * _t34 - _t16 * _t36;
+    const float _t38 = _t4 * _t15 * _t20;
+    const float _t39 = _t38 * _t38;
+    const float _t40 = _t39 * _t39;
+    const float _t41 = (0.0416666679f - 0.00138888892f * _t38) * _t39 + (1.0f - _t38 * 0.5f) + _t40 * ((2.08744777e-09f - 1.13046204e-11f * _t38) * _t39 + (2.48015876e-05f - _t38 * 2.75573029e-07f));
+    const float _t42 = _t26 * _t14;
+    const float _t43 = ((0.00833333377f - 0.000198412701f * _t38) * _t39 + (1.0f - 0.166666672f * _t38) + ((1.60577024e-10f - 7.54937183e-13f * _t38) * _t39 + (2.75573188e-06f - 2.50520991e-08f * _t38)) * _t40) * _t42;
+    const float _t44 = _t6 * _t41 - _t43 * _t12;
+    const float _t45 = 4.0f * (_t29 * _t37 * _t44);
+    const float _t46 = 3.0f * _t44;
+    const float _t47 = 3.0f * _t37;
+    const float _t48 = _t6 * _t43 + _t12 * _t41;
+    const float _t49 = _t48 * _t37;
+    const float _t50 = _t48 * 3.0f + 4.0f * (_t49 * _t29);
+    const float _t51 = _t16 * _t34 + _t8 * _t36;
+    const float _t52 = 4.0f * (_t51 * (_t29 * _t44)) + _t51 * 3.0f;
+    const float _t53 = _t1 * _t28 + _t24 * _t9;
+    const float _t54 = 3.0f * _t53 + 4.0f * (_t44 * _t37 * _t53);
+    const float _t55 = _t52 * _t52 + _t50 * _t50 + _t54 * _t54;
+    const float _t56 = sqrt(_t55) * ((_t55 > 1.17549435e-38f) ? 1.0f / _t55 : 0.0f) * _t3;
+    const float _t57 = _t50 * _t56 - _t42;
+    const float _t58 = _t52 * _t56 - _t35;
+    const float _t59 = _t54 * _t56 - _t27;
+    const float _t60 = _t30 + (_t45 + (_t46 + _t47)) - _t57 * (_t50 + _t57 * (_t46 + _t45) * 0.5f - _t58 * (4.0f * (_t29 * _t48 * _t51)) - 4.0f * (_t49 * _t53) * _t59) - (_t52 + (_t45 + _t47) * _t58 * 0.5f) * _t58 - (_t54 + 0.5f * ((_t30 + _t45) * _t59) - _t58 * (4.0f * (_t51 * (_t44 * _t53)))) * _t59;
+    const float _t61 = 7.00000715f * fabs(_t3);
+    const float _t62 = _t1 * 3.0f + (3.0f * _t8 + (_t6 * 3.0f + 4.0f * (_t6 * _t13)));
+    const float _t63 = _t61 + _t62;
+    const float _t64 = _t62 - _t61;
+    const float _t65 = -_t2;
+    const float _t66 = (_t65 <= 1.0f) ? (((-1.0f) <= _t65) ? _t65 : (-1.0f)) : 1.0f;
+    const float _t67 = _t66 * _t66;
+    const float _t68 = _t20 * (_t67 * _t15);
     const float _t69 = _t68 * _t68;
-    const float _t70 = _t65 * _t25;
-    const float _t71 = ((0.00833333377f - 0.000198412701f * _t67) * _t68 + (1.0f - 0.166666672f * _t67) + ((1.60577024e-10f - 7.54937183e-13f * _t67) * _t68 + (2.75573188e-06f - 2.50520991e-08f * _t67)) * _t69) * (_t70 * _t10);
-    const float _t72 = (0.0416666679f - 0.00138888892f * _t67) * _t68 + (1.0f - _t67 * 0.5f) + _t69 * ((2.08744777e-09f - 1.13046204e-11f * _t67) * _t68 + (2.48015876e-05f - _t67 * 2.75573029e-07f));
-    const float _t73 = _t12 * _t71 + _t9 * _t72;
-    const float _t74 = _t66 * _t18 * _t20;
-    const float _t75 = _t74 * _t74;
-    const float _t76 = _t75 * _t75;
-    const float _t77 = ((2.08744777e-09f - _t74 * 1.13046204e-11f) * _t75 + (2.48015876e-05f - _t74 * 2.75573029e-07f)) * _t76 + ((0.0416666679f - 0.00138888892f * _t74) * _t75 + (1.0f - _t74 * 0.5f));
-    const float _t78 = (_t76 * (2.75573188e-06f - 2.50520991e-08f * _t74 + (1.60577024e-10f - 7.54937183e-13f * _t74) * _t75) + (1.0f - 0.166666672f * _t74 + _t75 * (0.00833333377f - _t74 * 0.000198412701f))) * (_t17 * _t70);
-    const float _t79 = _t1 * _t77 - _t16 * _t78;
-    const float _t80 = _t66 * _t15 * _t20;
-    const float _t81 = _t80 * _t80;
-    const float _t82 = _t81 * _t81;
-    const float _t83 = 1.0f - 0.5f * _t80 + (0.0416666679f - 0.00138888892f * _t80) * _t81 + _t82 * (2.48015876e-05f - 2.75573029e-07f * _t80 + (2.08744777e-09f - 1.13046204e-11f * _t80) * _t81);
-    const float _t84 = (_t82 * ((1.60577024e-10f - 7.54937183e-13f * _t80) * _t81 + (2.75573188e-06f - 2.50520991e-08f * _t80)) + (1.0f - 0.166666672f * _t80 + (0.00833333377f - 0.000198412701f * _t80) * _t81)) * (_t70 * _t14);
-    const float _t85 = _t7 * _t83 - _t84 * _t13;
-    const float _t86 = _t73 * 3.0f + 4.0f * (_t73 * _t79 * _t85);
-    const float _t87 = _t86 * _t86;
-    const float _t88 = _t16 * _t77 + _t1 * _t78;
-    const float _t89 = _t12 * _t72 - _t71 * _t9;
-    const float _t90 = 4.0f * (_t88 * (_t85 * _t89)) + _t88 * 3.0f;
-    const float _t91 = _t90 * _t90;
-    const float _t92 = _t7 * _t84 + _t83 * _t13;
-    const float _t93 = 3.0f * _t92 + 4.0f * (_t89 * _t79 * _t92);
-    const float _t94 = _t93 * _t93;
-    const float _t95 = _t91 + _t87 + _t94;
-    const float _t96 = (_t95 > 1.17549435e-38f) ? 1.0f / _t95 : 0.0f;
-    const float _t97 = _t66 * _t87 * _t96;
-    const float _t98 = _t97 * _t97;
-    const float _t99 = _t98 * _t98;
-    const float _t100 = sqrt(_t95) * _t96 * _t65;
-    const float _t101 = _t12 * (1.0f - _t97 * 0.5f + _t98 * (0.0416666679f - 0.00138888892f * _t97) + (_t98 * (2.08744777e-09f - _t97 * 1.13046204e-11f) + (2.48015876e-05f - _t97 * 2.75573029e-07f)) * _t99) - (_t98 * (0.00833333377f - 0.000198412701f * _t97) + (1.0f - 0.166666672f * _t97) + _t99 * ((1.60577024e-10f - 7.54937183e-13f * _t97) * _t98 + (2.75573188e-06f - 2.50520991e-08f * _t97))) * (_t86 * _t100) * _t9;
-    const float _t102 = _t66 * _t94 * _t96;
-    const float _t103 = _t102 * _t102;
-    const float _t104 = _t103 * _t103;
-    const float _t105 = _t7 * ((0.0416666679f - _t102 * 0.00138888892f) * _t103 + (1.0f - _t102 * 0.5f) + ((2.08744777e-09f - _t102 * 1.13046204e-11f) * _t103 + (2.48015876e-05f - _t102 * 2.75573029e-07f)) * _t104) - _t13 * (_t93 * _t100 * (_t104 * (2.75573188e-06f - _t102 * 2.50520991e-08f + _t103 * (1.60577024e-10f - _t102 * 7.54937183e-13f)) + ((0.00833333377f - _t102 * 0.000198412701f) * _t103 + (1.0f - _t102 * 0.166666672f))));
-    const float _t106 = _t66 * _t91 * _t96;
-    const float _t107 = _t106 * _t106;
-    const float _t108 = _t107 * _t107;
-    const float _t109 = _t1 * (_t108 * (2.48015876e-05f - _t106 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t106) * _t107) + ((0.0416666679f - 0.00138888892f * _t106) * _t107 + (1.0f - _t106 * 0.5f))) - _t16 * (_t90 * _t100 * (_t107 * (0.00833333377f - 0.000198412701f * _t106) + (1.0f - 0.166666672f * _t106) + (2.75573188e-06f - 2.50520991e-08f * _t106 + (1.60577024e-10f - 7.54937183e-13f * _t106) * _t107) * _t108));
-    return (_t56 * 3.0f + (4.0f * (_t60 * _t64 * _t56) + (_t60 * 3.0f + _t64 * 3.0f))) * (3.0f * _t101 + (4.0f * (_t105 * _t101 * _t109) + _t105 * 3.0f) + 3.0f * _t109);
+    const float _t70 = _t69 * _t69;
+    const float _t71 = 1.0f - 0.5f * _t68 + _t69 * (0.0416666679f - 0.00138888892f * _t68) + _t70 * (_t69 * (2.08744777e-09f - 1.13046204e-11f * _t68) + (2.48015876e-05f - 2.75573029e-07f * _t68));
+    const float _t72 = _t25 * _t66;
+    const float _t73 = _t72 * _t14;
+    const float _t74 = _t73 * (_t69 * (0.00833333377f - 0.000198412701f * _t68) + (1.0f - 0.166666672f * _t68) + (_t69 * (1.60577024e-10f - 7.54937183e-13f * _t68) + (2.75573188e-06f - 2.50520991e-08f * _t68)) * _t70);
+    const float _t75 = _t71 * _t12 + _t74 * _t6;
+    const float _t76 = _t67 * _t18 * _t20;
+    const float _t77 = _t76 * _t76;
+    const float _t78 = _t77 * _t77;
+    const float _t79 = 1.0f - _t76 * 0.5f + _t77 * (0.0416666679f - 0.00138888892f * _t76) + ((2.08744777e-09f - _t76 * 1.13046204e-11f) * _t77 + (2.48015876e-05f - _t76 * 2.75573029e-07f)) * _t78;
+    const float _t80 = _t17 * _t72;
+    const float _t81 = _t80 * ((0.00833333377f - _t76 * 0.000198412701f) * _t77 + (1.0f - 0.166666672f * _t76) + (_t77 * (1.60577024e-10f - 7.54937183e-13f * _t76) + (2.75573188e-06f - 2.50520991e-08f * _t76)) * _t78);
+    const float _t82 = _t8 * _t79 - _t81 * _t16;
+    const float _t83 = _t20 * (_t67 * _t11);
+    const float _t84 = _t83 * _t83;
+    const float _t85 = _t84 * _t84;
+    const float _t86 = _t85 * (2.48015876e-05f - _t83 * 2.75573029e-07f + (2.08744777e-09f - _t83 * 1.13046204e-11f) * _t84) + (1.0f - _t83 * 0.5f + (0.0416666679f - _t83 * 0.00138888892f) * _t84);
+    const float _t87 = _t10 * _t72;
+    const float _t88 = _t87 * (1.0f - _t83 * 0.166666672f + (0.00833333377f - _t83 * 0.000198412701f) * _t84 + _t85 * ((1.60577024e-10f - _t83 * 7.54937183e-13f) * _t84 + (2.75573188e-06f - _t83 * 2.50520991e-08f)));
+    const float _t89 = _t1 * _t86 - _t88 * _t9;
+    const float _t90 = _t82 * _t89;
+    const float _t91 = _t75 * 3.0f + 4.0f * (_t75 * _t90);
+    const float _t92 = _t71 * _t6 - _t74 * _t12;
+    const float _t93 = _t1 * _t88 + _t86 * _t9;
+    const float _t94 = _t82 * _t93;
+    const float _t95 = _t92 * _t94 * 4.0f + 3.0f * _t93;
+    const float _t96 = _t16 * _t79 + _t81 * _t8;
+    const float _t97 = _t89 * _t96;
+    const float _t98 = 4.0f * (_t97 * _t92) + 3.0f * _t96;
+    const float _t99 = _t91 * _t91 + (_t95 * _t95 + _t98 * _t98);
+    const float _t100 = _t66 * (sqrt(_t99) * ((_t99 > 1.17549435e-38f) ? 1.0f / _t99 : 0.0f));
+    const float _t101 = _t100 * _t95 - _t87;
+    const float _t102 = 4.0f * (_t92 * _t90);
+    const float _t103 = 3.0f * _t89;
+    const float _t104 = _t98 * _t100 - _t80;
+    const float _t105 = _t102 + 3.0f * _t82;
+    const float _t106 = _t91 * _t100 - _t73;
+    const float _t107 = _t92 * 3.0f;
+    const float _t108 = -(_t101 * (_t95 + _t101 * (_t102 + _t103) * 0.5f - 4.0f * (_t93 * _t96 * _t92) * _t104) + (_t98 + _t104 * _t105 * 0.5f) * _t104 - _t106 * (4.0f * (_t75 * _t94) * _t101 + _t104 * (4.0f * (_t75 * _t97)) - _t91 - (_t102 + _t107) * _t106 * 0.5f) - (_t107 + _t105 + _t103));
+    const float _t109 = 7.00000715f * fabs(_t66);
+    const float _t110 = _t62 + _t109;
+    const float _t111 = _t62 - _t109;
+    return ((_t60 <= _t63) ? ((_t64 <= _t60) ? _t60 : _t64) : _t63) * ((_t108 <= _t110) ? ((_t111 <= _t108) ? _t108 : _t111) : _t110);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
@@ -366,192 +371,194 @@ double neovius_proj_o4_field(double3 p)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 307
+ * Total ops: 252
  */
 double neovius_proj_o4_offset(double3 p, double h)
 {
     const double _t0 = 6.2831853071795862 * h;
     const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
-    const double _t2 = _t1 * _t1;
-    const double _t3 = p.y * 2.0;
-    const double _t4 = cospi(_t3);
+    const double _t2 = p.y * 2.0;
+    const double _t3 = cospi(_t2);
+    const double _t4 = _t1 * _t1;
     const double _t5 = p.x * 2.0;
     const double _t6 = cospi(_t5);
     const double _t7 = p.z * 2.0;
     const double _t8 = cospi(_t7);
-    const double _t9 = sinpi(_t3);
+    const double _t9 = sinpi(_t2);
     const double _t10 = 4.0 * (_t6 * (_t8 * _t9)) + 3.0 * _t9;
     const double _t11 = _t10 * _t10;
     const double _t12 = sinpi(_t5);
-    const double _t13 = 3.0 * _t12 + 4.0 * (_t4 * _t8 * _t12);
-    const double _t14 = _t13 * _t13;
-    const double _t15 = sinpi(_t7);
-    const double _t16 = 4.0 * (_t6 * (_t15 * _t4)) + _t15 * 3.0;
-    const double _t17 = _t16 * _t16;
-    const double _t18 = _t14 + (_t11 + _t17);
-    const double _t19 = (_t18 > 1.1754943508222875e-38) ? 1.0 / _t18 : 0.0;
-    const double _t20 = _t2 * _t11 * _t19;
-    const double _t21 = _t20 * _t20;
+    const double _t13 = _t3 * _t8;
+    const double _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
+    const double _t15 = _t14 * _t14;
+    const double _t16 = sinpi(_t7);
+    const double _t17 = 4.0 * (_t6 * (_t16 * _t3)) + _t16 * 3.0;
+    const double _t18 = _t17 * _t17;
+    const double _t19 = _t15 + (_t11 + _t18);
+    const double _t20 = (_t19 > 1.1754943508222875e-38) ? 1.0 / _t19 : 0.0;
+    const double _t21 = _t4 * _t11 * _t20;
     const double _t22 = _t21 * _t21;
-    const double _t23 = _t1 * (_t19 * sqrt(_t18));
-    const double _t24 = ((2.755731919201122e-06 - _t20 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t20 * 7.549371704181243e-13) * _t21) * _t22 + (1.0 - _t20 * 0.16666666666666666 + _t21 * (0.0083333333333333003 - _t20 * 0.00019841269841216566))) * (_t10 * _t23);
-    const double _t25 = _t22 * (_t21 * (2.0874477943664777e-09 - _t20 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t20 * 2.7557303701922228e-07)) + ((0.041666666666666102 - _t20 * 0.0013888888888798428) * _t21 + (1.0 - _t20 * 0.5));
-    const double _t26 = _t4 * _t24 + _t25 * _t9;
-    const double _t27 = _t19 * (_t14 * _t2);
-    const double _t28 = _t27 * _t27;
-    const double _t29 = _t28 * _t28;
-    const double _t30 = 1.0 - _t27 * 0.5 + _t28 * (0.041666666666666102 - _t27 * 0.0013888888888798428) + _t29 * (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07 + _t28 * (2.0874477943664777e-09 - _t27 * 1.1304620460700782e-11));
-    const double _t31 = _t13 * _t23 * (1.0 - _t27 * 0.16666666666666666 + _t28 * (0.0083333333333333003 - _t27 * 0.00019841269841216566) + _t29 * (2.755731919201122e-06 - _t27 * 2.5052099244914114e-08 + _t28 * (1.6057701922579786e-10 - _t27 * 7.549371704181243e-13)));
-    const double _t32 = _t6 * _t30 - _t31 * _t12;
-    const double _t33 = _t19 * (_t2 * _t17);
-    const double _t34 = _t33 * _t33;
-    const double _t35 = _t34 * _t34;
-    const double _t36 = _t34 * (0.041666666666666102 - _t33 * 0.0013888888888798428) + (1.0 - _t33 * 0.5) + (2.4801587247292686e-05 - _t33 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t33 * 1.1304620460700782e-11) * _t34) * _t35;
-    const double _t37 = _t16 * _t23 * (((1.6057701922579786e-10 - _t33 * 7.549371704181243e-13) * _t34 + (2.755731919201122e-06 - _t33 * 2.5052099244914114e-08)) * _t35 + ((0.0083333333333333003 - _t33 * 0.00019841269841216566) * _t34 + (1.0 - _t33 * 0.16666666666666666)));
-    const double _t38 = _t36 * _t8 - _t15 * _t37;
-    const double _t39 = _t26 * 3.0 + 4.0 * (_t32 * (_t38 * _t26));
-    const double _t40 = _t39 * _t39;
-    const double _t41 = _t4 * _t25 - _t24 * _t9;
-    const double _t42 = _t15 * _t36 + _t37 * _t8;
-    const double _t43 = 4.0 * (_t41 * (_t42 * _t32)) + _t42 * 3.0;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = _t30 * _t12 + _t31 * _t6;
-    const double _t46 = _t45 * 3.0 + 4.0 * (_t41 * (_t38 * _t45));
-    const double _t47 = _t46 * _t46;
-    const double _t48 = _t40 + (_t44 + _t47);
-    const double _t49 = (_t48 > 1.1754943508222875e-38) ? 1.0 / _t48 : 0.0;
-    const double _t50 = _t2 * _t40 * _t49;
-    const double _t51 = _t50 * _t50;
-    const double _t52 = _t51 * _t51;
-    const double _t53 = _t1 * (_t49 * sqrt(_t48));
-    const double _t54 = (_t52 * (2.4801587247292686e-05 - _t50 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t50) * _t51) + ((0.041666666666666102 - 0.0013888888888798428 * _t50) * _t51 + (1.0 - _t50 * 0.5))) * _t4 - ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t50 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t50) * _t51) * _t52 + ((0.0083333333333333003 - 0.00019841269841216566 * _t50) * _t51 + (1.0 - 0.16666666666666666 * _t50))) * (_t53 * _t39) * _t9;
-    const double _t55 = _t2 * _t47 * _t49;
-    const double _t56 = _t55 * _t55;
-    const double _t57 = _t56 * _t56;
-    const double _t58 = _t6 * (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t55) * _t56 + (2.4801587247292686e-05 - _t55 * 2.7557303701922228e-07)) * _t57 + (1.0 - _t55 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t55) * _t56)) - (_t57 * (_t56 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t55) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t55)) + (_t56 * (0.0083333333333333003 - 0.00019841269841216566 * _t55) + (1.0 - 0.16666666666666666 * _t55))) * (_t46 * _t53) * _t12;
-    const double _t59 = _t44 * _t2 * _t49;
-    const double _t60 = _t59 * _t59;
-    const double _t61 = _t60 * _t60;
-    const double _t62 = ((2.4801587247292686e-05 - _t59 * 2.7557303701922228e-07 + _t60 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t59)) * _t61 + (_t60 * (0.041666666666666102 - 0.0013888888888798428 * _t59) + (1.0 - _t59 * 0.5))) * _t8 - _t15 * (_t53 * _t43 * (1.0 - 0.16666666666666666 * _t59 + (0.0083333333333333003 - 0.00019841269841216566 * _t59) * _t60 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t59 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t59) * _t60) * _t61));
-    return _t54 * 3.0 + (_t58 * 3.0 + 4.0 * (_t58 * (_t54 * _t62))) + 3.0 * _t62;
+    const double _t23 = _t22 * _t22;
+    const double _t24 = _t1 * (_t20 * sqrt(_t19));
+    const double _t25 = _t10 * _t24;
+    const double _t26 = ((2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22) * _t23 + (1.0 - _t21 * 0.16666666666666666 + _t22 * (0.0083333333333333003 - _t21 * 0.00019841269841216566))) * _t25;
+    const double _t27 = _t23 * (_t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07)) + ((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5));
+    const double _t28 = _t3 * _t26 + _t27 * _t9;
+    const double _t29 = _t20 * (_t15 * _t4);
+    const double _t30 = _t29 * _t29;
+    const double _t31 = _t30 * _t30;
+    const double _t32 = 1.0 - _t29 * 0.5 + _t30 * (0.041666666666666102 - _t29 * 0.0013888888888798428) + _t31 * (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07 + _t30 * (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11));
+    const double _t33 = _t14 * _t24;
+    const double _t34 = _t33 * (1.0 - _t29 * 0.16666666666666666 + _t30 * (0.0083333333333333003 - _t29 * 0.00019841269841216566) + _t31 * (2.755731919201122e-06 - _t29 * 2.5052099244914114e-08 + _t30 * (1.6057701922579786e-10 - _t29 * 7.549371704181243e-13)));
+    const double _t35 = _t6 * _t32 - _t34 * _t12;
+    const double _t36 = _t20 * (_t4 * _t18);
+    const double _t37 = _t36 * _t36;
+    const double _t38 = _t37 * _t37;
+    const double _t39 = _t37 * (0.041666666666666102 - _t36 * 0.0013888888888798428) + (1.0 - _t36 * 0.5) + (2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11) * _t37) * _t38;
+    const double _t40 = _t17 * _t24;
+    const double _t41 = _t40 * (((1.6057701922579786e-10 - _t36 * 7.549371704181243e-13) * _t37 + (2.755731919201122e-06 - _t36 * 2.5052099244914114e-08)) * _t38 + ((0.0083333333333333003 - _t36 * 0.00019841269841216566) * _t37 + (1.0 - _t36 * 0.16666666666666666)));
+    const double _t42 = _t39 * _t8 - _t16 * _t41;
+    const double _t43 = _t28 * 3.0 + 4.0 * (_t35 * (_t42 * _t28));
+    const double _t44 = _t3 * _t27 - _t26 * _t9;
+    const double _t45 = _t16 * _t39 + _t41 * _t8;
+    const double _t46 = 4.0 * (_t44 * (_t45 * _t35)) + _t45 * 3.0;
+    const double _t47 = _t32 * _t12 + _t34 * _t6;
+    const double _t48 = _t47 * 3.0 + 4.0 * (_t44 * (_t42 * _t47));
+    const double _t49 = _t43 * _t43 + (_t46 * _t46 + _t48 * _t48);
+    const double _t50 = _t1 * (((_t49 > 1.1754943508222875e-38) ? 1.0 / _t49 : 0.0) * sqrt(_t49));
+    const double _t51 = _t50 * _t46 - _t40;
+    const double _t52 = _t35 * _t42 * _t44 * 4.0;
+    const double _t53 = _t42 * 3.0;
+    const double _t54 = _t44 * 3.0;
+    const double _t55 = _t35 * 3.0;
+    const double _t56 = _t50 * _t43 - _t25;
+    const double _t57 = _t48 * _t50 - _t33;
+    const double _t58 = -(_t51 * (_t51 * (_t52 + _t53) * 0.5 + _t46) - (_t52 + (_t53 + _t54 + _t55)) - (_t56 * (4.0 * (_t42 * (_t47 * _t28))) + _t51 * (4.0 * (_t45 * _t47 * _t44)) - (_t52 + _t55) * _t57 * 0.5 - _t48) * _t57 - (_t51 * (4.0 * (_t45 * (_t35 * _t28))) - (_t52 + _t54) * _t56 * 0.5 - _t43) * _t56);
+    const double _t59 = 7.0000069999999992 * fabs(_t1);
+    const double _t60 = _t3 * 3.0 + (3.0 * _t8 + (_t6 * 3.0 + 4.0 * (_t6 * _t13)));
+    const double _t61 = _t59 + _t60;
+    const double _t62 = _t60 - _t59;
+    return (_t58 <= _t61) ? ((_t62 <= _t58) ? _t58 : _t62) : _t61;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 582
+ * Total ops: 458
  */
 double neovius_proj_o4_shell(double3 p, double t)
 {
-    const double _t0 = p.z * 2.0;
+    const double _t0 = p.y * 2.0;
     const double _t1 = cospi(_t0);
     const double _t2 = 6.2831853071795862 * (t * 0.5);
-    const double _t3 = -_t2;
-    const double _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
-    const double _t5 = _t4 * _t4;
-    const double _t6 = p.y * 2.0;
-    const double _t7 = cospi(_t6);
-    const double _t8 = p.x * 2.0;
-    const double _t9 = sinpi(_t8);
-    const double _t10 = 3.0 * _t9 + 4.0 * (_t7 * _t1 * _t9);
+    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    const double _t4 = _t3 * _t3;
+    const double _t5 = p.x * 2.0;
+    const double _t6 = cospi(_t5);
+    const double _t7 = p.z * 2.0;
+    const double _t8 = cospi(_t7);
+    const double _t9 = sinpi(_t0);
+    const double _t10 = 4.0 * (_t6 * (_t8 * _t9)) + 3.0 * _t9;
     const double _t11 = _t10 * _t10;
-    const double _t12 = cospi(_t8);
-    const double _t13 = sinpi(_t6);
-    const double _t14 = 4.0 * (_t12 * (_t1 * _t13)) + 3.0 * _t13;
+    const double _t12 = sinpi(_t5);
+    const double _t13 = _t1 * _t8;
+    const double _t14 = 3.0 * _t12 + 4.0 * (_t13 * _t12);
     const double _t15 = _t14 * _t14;
-    const double _t16 = sinpi(_t0);
-    const double _t17 = 4.0 * (_t12 * (_t16 * _t7)) + _t16 * 3.0;
+    const double _t16 = sinpi(_t7);
+    const double _t17 = 4.0 * (_t6 * (_t16 * _t1)) + _t16 * 3.0;
     const double _t18 = _t17 * _t17;
-    const double _t19 = _t11 + (_t15 + _t18);
+    const double _t19 = _t15 + (_t11 + _t18);
     const double _t20 = (_t19 > 1.1754943508222875e-38) ? 1.0 / _t19 : 0.0;
-    const double _t21 = _t20 * (_t5 * _t15);
+    const double _t21 = _t4 * _t11 * _t20;
     const double _t22 = _t21 * _t21;
     const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11) * _t22) + (1.0 - _t21 * 0.5 + (0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22);
+    const double _t24 = 1.0 - 0.5 * _t21 + (0.041666666666666102 - 0.0013888888888798428 * _t21) * _t22 + _t23 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t21 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t21) * _t22);
     const double _t25 = _t20 * sqrt(_t19);
-    const double _t26 = _t25 * _t4;
-    const double _t27 = _t14 * _t26 * (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * ((1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22 + (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08)));
-    const double _t28 = _t7 * _t24 - _t27 * _t13;
-    const double _t29 = _t5 * _t18 * _t20;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = _t30 * _t30;
-    const double _t32 = 1.0 - _t29 * 0.5 + _t30 * (0.041666666666666102 - 0.0013888888888798428 * _t29) + ((2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) * _t30 + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07)) * _t31;
-    const double _t33 = _t17 * _t26 * ((0.0083333333333333003 - _t29 * 0.00019841269841216566) * _t30 + (1.0 - 0.16666666666666666 * _t29) + (_t30 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t29) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t29)) * _t31);
-    const double _t34 = _t16 * _t32 + _t33 * _t1;
-    const double _t35 = _t20 * (_t5 * _t11);
-    const double _t36 = _t35 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = 1.0 - 0.5 * _t35 + _t36 * (0.041666666666666102 - 0.0013888888888798428 * _t35) + _t37 * (_t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t35));
-    const double _t39 = _t26 * _t10 * (_t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35) + (1.0 - 0.16666666666666666 * _t35) + (_t36 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35)) * _t37);
-    const double _t40 = _t38 * _t12 - _t39 * _t9;
-    const double _t41 = 4.0 * (_t28 * _t34 * _t40) + 3.0 * _t34;
-    const double _t42 = _t41 * _t41;
-    const double _t43 = _t38 * _t9 + _t39 * _t12;
-    const double _t44 = _t1 * _t32 - _t33 * _t16;
-    const double _t45 = _t43 * 3.0 + 4.0 * (_t43 * (_t44 * _t28));
-    const double _t46 = _t45 * _t45;
-    const double _t47 = _t7 * _t27 + _t24 * _t13;
-    const double _t48 = _t40 * (_t44 * _t47) * 4.0 + 3.0 * _t47;
-    const double _t49 = _t48 * _t48;
-    const double _t50 = _t46 + (_t49 + _t42);
-    const double _t51 = (_t50 > 1.1754943508222875e-38) ? 1.0 / _t50 : 0.0;
-    const double _t52 = _t5 * _t42 * _t51;
-    const double _t53 = _t52 * _t52;
-    const double _t54 = _t53 * _t53;
-    const double _t55 = _t4 * (sqrt(_t50) * _t51);
-    const double _t56 = _t1 * ((0.041666666666666102 - 0.0013888888888798428 * _t52) * _t53 + (1.0 - _t52 * 0.5) + ((2.0874477943664777e-09 - _t52 * 1.1304620460700782e-11) * _t53 + (2.4801587247292686e-05 - _t52 * 2.7557303701922228e-07)) * _t54) - _t16 * (_t41 * _t55 * ((0.0083333333333333003 - 0.00019841269841216566 * _t52) * _t53 + (1.0 - 0.16666666666666666 * _t52) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t52) * _t53 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t52)) * _t54));
-    const double _t57 = _t5 * _t49 * _t51;
-    const double _t58 = _t57 * _t57;
-    const double _t59 = _t58 * _t58;
-    const double _t60 = _t7 * ((0.041666666666666102 - 0.0013888888888798428 * _t57) * _t58 + (1.0 - _t57 * 0.5) + _t59 * ((2.0874477943664777e-09 - _t57 * 1.1304620460700782e-11) * _t58 + (2.4801587247292686e-05 - _t57 * 2.7557303701922228e-07))) - _t55 * _t48 * ((0.0083333333333333003 - _t57 * 0.00019841269841216566) * _t58 + (1.0 - _t57 * 0.16666666666666666) + (2.755731919201122e-06 - _t57 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57) * _t58) * _t59) * _t13;
-    const double _t61 = _t5 * _t46 * _t51;
-    const double _t62 = _t61 * _t61;
-    const double _t63 = _t62 * _t62;
-    const double _t64 = _t12 * (((2.0874477943664777e-09 - _t61 * 1.1304620460700782e-11) * _t62 + (2.4801587247292686e-05 - _t61 * 2.7557303701922228e-07)) * _t63 + (1.0 - _t61 * 0.5 + (0.041666666666666102 - _t61 * 0.0013888888888798428) * _t62)) - ((0.0083333333333333003 - _t61 * 0.00019841269841216566) * _t62 + (1.0 - _t61 * 0.16666666666666666) + _t63 * ((1.6057701922579786e-10 - _t61 * 7.549371704181243e-13) * _t62 + (2.755731919201122e-06 - _t61 * 2.5052099244914114e-08))) * (_t45 * _t55) * _t9;
-    const double _t65 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    const double _t66 = _t65 * _t65;
-    const double _t67 = _t66 * _t11 * _t20;
-    const double _t68 = _t67 * _t67;
+    const double _t26 = _t3 * _t25;
+    const double _t27 = _t26 * _t10;
+    const double _t28 = (_t23 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t21) * _t22 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t21)) + (1.0 - 0.16666666666666666 * _t21 + (0.0083333333333333003 - 0.00019841269841216566 * _t21) * _t22)) * _t27;
+    const double _t29 = _t1 * _t24 - _t28 * _t9;
+    const double _t30 = _t29 * 3.0;
+    const double _t31 = _t4 * _t18 * _t20;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = ((2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11) * _t32 + (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07)) * _t33 + ((0.041666666666666102 - 0.0013888888888798428 * _t31) * _t32 + (1.0 - _t31 * 0.5));
+    const double _t35 = _t17 * _t26;
+    const double _t36 = (_t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31) * _t32) + (1.0 - 0.16666666666666666 * _t31 + _t32 * (0.0083333333333333003 - _t31 * 0.00019841269841216566))) * _t35;
+    const double _t37 = _t8 * _t34 - _t16 * _t36;
+    const double _t38 = _t4 * _t15 * _t20;
+    const double _t39 = _t38 * _t38;
+    const double _t40 = _t39 * _t39;
+    const double _t41 = (0.041666666666666102 - 0.0013888888888798428 * _t38) * _t39 + (1.0 - _t38 * 0.5) + _t40 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t38) * _t39 + (2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07));
+    const double _t42 = _t26 * _t14;
+    const double _t43 = ((0.0083333333333333003 - 0.00019841269841216566 * _t38) * _t39 + (1.0 - 0.16666666666666666 * _t38) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t38)) * _t40) * _t42;
+    const double _t44 = _t6 * _t41 - _t43 * _t12;
+    const double _t45 = 4.0 * (_t29 * _t37 * _t44);
+    const double _t46 = 3.0 * _t44;
+    const double _t47 = 3.0 * _t37;
+    const double _t48 = _t6 * _t43 + _t12 * _t41;
+    const double _t49 = _t48 * _t37;
+    const double _t50 = _t48 * 3.0 + 4.0 * (_t49 * _t29);
+    const double _t51 = _t16 * _t34 + _t8 * _t36;
+    const double _t52 = 4.0 * (_t51 * (_t29 * _t44)) + _t51 * 3.0;
+    const double _t53 = _t1 * _t28 + _t24 * _t9;
+    const double _t54 = 3.0 * _t53 + 4.0 * (_t44 * _t37 * _t53);
+    const double _t55 = _t52 * _t52 + _t50 * _t50 + _t54 * _t54;
+    const double _t56 = sqrt(_t55) * ((_t55 > 1.1754943508222875e-38) ? 1.0 / _t55 : 0.0) * _t3;
+    const double _t57 = _t50 * _t56 - _t42;
+    const double _t58 = _t52 * _t56 - _t35;
+    const double _t59 = _t54 * _t56 - _t27;
+    const double _t60 = _t30 + (_t45 + (_t46 + _t47)) - _t57 * (_t50 + _t57 * (_t46 + _t45) * 0.5 - _t58 * (4.0 * (_t29 * _t48 * _t51)) - 4.0 * (_t49 * _t53) * _t59) - (_t52 + (_t45 + _t47) * _t58 * 0.5) * _t58 - (_t54 + 0.5 * ((_t30 + _t45) * _t59) - _t58 * (4.0 * (_t51 * (_t44 * _t53)))) * _t59;
+    const double _t61 = 7.0000069999999992 * fabs(_t3);
+    const double _t62 = _t1 * 3.0 + (3.0 * _t8 + (_t6 * 3.0 + 4.0 * (_t6 * _t13)));
+    const double _t63 = _t61 + _t62;
+    const double _t64 = _t62 - _t61;
+    const double _t65 = -_t2;
+    const double _t66 = (_t65 <= 1.0) ? (((-1.0) <= _t65) ? _t65 : (-1.0)) : 1.0;
+    const double _t67 = _t66 * _t66;
+    const double _t68 = _t20 * (_t67 * _t15);
     const double _t69 = _t68 * _t68;
-    const double _t70 = _t65 * _t25;
-    const double _t71 = ((0.0083333333333333003 - 0.00019841269841216566 * _t67) * _t68 + (1.0 - 0.16666666666666666 * _t67) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t67) * _t68 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t67)) * _t69) * (_t70 * _t10);
-    const double _t72 = (0.041666666666666102 - 0.0013888888888798428 * _t67) * _t68 + (1.0 - _t67 * 0.5) + _t69 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t67) * _t68 + (2.4801587247292686e-05 - _t67 * 2.7557303701922228e-07));
-    const double _t73 = _t12 * _t71 + _t9 * _t72;
-    const double _t74 = _t66 * _t18 * _t20;
-    const double _t75 = _t74 * _t74;
-    const double _t76 = _t75 * _t75;
-    const double _t77 = ((2.0874477943664777e-09 - _t74 * 1.1304620460700782e-11) * _t75 + (2.4801587247292686e-05 - _t74 * 2.7557303701922228e-07)) * _t76 + ((0.041666666666666102 - 0.0013888888888798428 * _t74) * _t75 + (1.0 - _t74 * 0.5));
-    const double _t78 = (_t76 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t74 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t74) * _t75) + (1.0 - 0.16666666666666666 * _t74 + _t75 * (0.0083333333333333003 - _t74 * 0.00019841269841216566))) * (_t17 * _t70);
-    const double _t79 = _t1 * _t77 - _t16 * _t78;
-    const double _t80 = _t66 * _t15 * _t20;
-    const double _t81 = _t80 * _t80;
-    const double _t82 = _t81 * _t81;
-    const double _t83 = 1.0 - 0.5 * _t80 + (0.041666666666666102 - 0.0013888888888798428 * _t80) * _t81 + _t82 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t80 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t80) * _t81);
-    const double _t84 = (_t82 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t80) * _t81 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t80)) + (1.0 - 0.16666666666666666 * _t80 + (0.0083333333333333003 - 0.00019841269841216566 * _t80) * _t81)) * (_t70 * _t14);
-    const double _t85 = _t7 * _t83 - _t84 * _t13;
-    const double _t86 = _t73 * 3.0 + 4.0 * (_t73 * _t79 * _t85);
-    const double _t87 = _t86 * _t86;
-    const double _t88 = _t16 * _t77 + _t1 * _t78;
-    const double _t89 = _t12 * _t72 - _t71 * _t9;
-    const double _t90 = 4.0 * (_t88 * (_t85 * _t89)) + _t88 * 3.0;
-    const double _t91 = _t90 * _t90;
-    const double _t92 = _t7 * _t84 + _t83 * _t13;
-    const double _t93 = 3.0 * _t92 + 4.0 * (_t89 * _t79 * _t92);
-    const double _t94 = _t93 * _t93;
-    const double _t95 = _t91 + _t87 + _t94;
-    const double _t96 = (_t95 > 1.1754943508222875e-38) ? 1.0 / _t95 : 0.0;
-    const double _t97 = _t66 * _t87 * _t96;
-    const double _t98 = _t97 * _t97;
-    const double _t99 = _t98 * _t98;
-    const double _t100 = sqrt(_t95) * _t96 * _t65;
-    const double _t101 = _t12 * (1.0 - _t97 * 0.5 + _t98 * (0.041666666666666102 - 0.0013888888888798428 * _t97) + (_t98 * (2.0874477943664777e-09 - _t97 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t97 * 2.7557303701922228e-07)) * _t99) - (_t98 * (0.0083333333333333003 - 0.00019841269841216566 * _t97) + (1.0 - 0.16666666666666666 * _t97) + _t99 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t97) * _t98 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t97))) * (_t86 * _t100) * _t9;
-    const double _t102 = _t66 * _t94 * _t96;
-    const double _t103 = _t102 * _t102;
-    const double _t104 = _t103 * _t103;
-    const double _t105 = _t7 * ((0.041666666666666102 - _t102 * 0.0013888888888798428) * _t103 + (1.0 - _t102 * 0.5) + ((2.0874477943664777e-09 - _t102 * 1.1304620460700782e-11) * _t103 + (2.4801587247292686e-05 - _t102 * 2.7557303701922228e-07)) * _t104) - _t13 * (_t93 * _t100 * (_t104 * (2.755731919201122e-06 - _t102 * 2.5052099244914114e-08 + _t103 * (1.6057701922579786e-10 - _t102 * 7.549371704181243e-13)) + ((0.0083333333333333003 - _t102 * 0.00019841269841216566) * _t103 + (1.0 - _t102 * 0.16666666666666666))));
-    const double _t106 = _t66 * _t91 * _t96;
-    const double _t107 = _t106 * _t106;
-    const double _t108 = _t107 * _t107;
-    const double _t109 = _t1 * (_t108 * (2.4801587247292686e-05 - _t106 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t106) * _t107) + ((0.041666666666666102 - 0.0013888888888798428 * _t106) * _t107 + (1.0 - _t106 * 0.5))) - _t16 * (_t90 * _t100 * (_t107 * (0.0083333333333333003 - 0.00019841269841216566 * _t106) + (1.0 - 0.16666666666666666 * _t106) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t106 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t106) * _t107) * _t108));
-    return (_t56 * 3.0 + (4.0 * (_t60 * _t64 * _t56) + (_t60 * 3.0 + _t64 * 3.0))) * (3.0 * _t101 + (4.0 * (_t105 * _t101 * _t109) + _t105 * 3.0) + 3.0 * _t109);
+    const double _t70 = _t69 * _t69;
+    const double _t71 = 1.0 - 0.5 * _t68 + _t69 * (0.041666666666666102 - 0.0013888888888798428 * _t68) + _t70 * (_t69 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t68) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t68));
+    const double _t72 = _t25 * _t66;
+    const double _t73 = _t72 * _t14;
+    const double _t74 = _t73 * (_t69 * (0.0083333333333333003 - 0.00019841269841216566 * _t68) + (1.0 - 0.16666666666666666 * _t68) + (_t69 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t68) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t68)) * _t70);
+    const double _t75 = _t71 * _t12 + _t74 * _t6;
+    const double _t76 = _t67 * _t18 * _t20;
+    const double _t77 = _t76 * _t76;
+    const double _t78 = _t77 * _t77;
+    const double _t79 = 1.0 - _t76 * 0.5 + _t77 * (0.041666666666666102 - 0.0013888888888798428 * _t76) + ((2.0874477943664777e-09 - _t76 * 1.1304620460700782e-11) * _t77 + (2.4801587247292686e-05 - _t76 * 2.7557303701922228e-07)) * _t78;
+    const double _t80 = _t17 * _t72;
+    const double _t81 = _t80 * ((0.0083333333333333003 - _t76 * 0.00019841269841216566) * _t77 + (1.0 - 0.16666666666666666 * _t76) + (_t77 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t76) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t76)) * _t78);
+    const double _t82 = _t8 * _t79 - _t81 * _t16;
+    const double _t83 = _t20 * (_t67 * _t11);
+    const double _t84 = _t83 * _t83;
+    const double _t85 = _t84 * _t84;
+    const double _t86 = _t85 * (2.4801587247292686e-05 - _t83 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t83 * 1.1304620460700782e-11) * _t84) + (1.0 - _t83 * 0.5 + (0.041666666666666102 - _t83 * 0.0013888888888798428) * _t84);
+    const double _t87 = _t10 * _t72;
+    const double _t88 = _t87 * (1.0 - _t83 * 0.16666666666666666 + (0.0083333333333333003 - _t83 * 0.00019841269841216566) * _t84 + _t85 * ((1.6057701922579786e-10 - _t83 * 7.549371704181243e-13) * _t84 + (2.755731919201122e-06 - _t83 * 2.5052099244914114e-08)));
+    const double _t89 = _t1 * _t86 - _t88 * _t9;
+    const double _t90 = _t82 * _t89;
+    const double _t91 = _t75 * 3.0 + 4.0 * (_t75 * _t90);
+    const double _t92 = _t71 * _t6 - _t74 * _t12;
+    const double _t93 = _t1 * _t88 + _t86 * _t9;
+    const double _t94 = _t82 * _t93;
+    const double _t95 = _t92 * _t94 * 4.0 + 3.0 * _t93;
+    const double _t96 = _t16 * _t79 + _t81 * _t8;
+    const double _t97 = _t89 * _t96;
+    const double _t98 = 4.0 * (_t97 * _t92) + 3.0 * _t96;
+    const double _t99 = _t91 * _t91 + (_t95 * _t95 + _t98 * _t98);
+    const double _t100 = _t66 * (sqrt(_t99) * ((_t99 > 1.1754943508222875e-38) ? 1.0 / _t99 : 0.0));
+    const double _t101 = _t100 * _t95 - _t87;
+    const double _t102 = 4.0 * (_t92 * _t90);
+    const double _t103 = 3.0 * _t89;
+    const double _t104 = _t98 * _t100 - _t80;
+    const double _t105 = _t102 + 3.0 * _t82;
+    const double _t106 = _t91 * _t100 - _t73;
+    const double _t107 = _t92 * 3.0;
+    const double _t108 = -(_t101 * (_t95 + _t101 * (_t102 + _t103) * 0.5 - 4.0 * (_t93 * _t96 * _t92) * _t104) + (_t98 + _t104 * _t105 * 0.5) * _t104 - _t106 * (4.0 * (_t75 * _t94) * _t101 + _t104 * (4.0 * (_t75 * _t97)) - _t91 - (_t102 + _t107) * _t106 * 0.5) - (_t107 + _t105 + _t103));
+    const double _t109 = 7.0000069999999992 * fabs(_t66);
+    const double _t110 = _t62 + _t109;
+    const double _t111 = _t62 - _t109;
+    return ((_t60 <= _t63) ? ((_t64 <= _t60) ? _t60 : _t64) : _t63) * ((_t108 <= _t110) ? ((_t111 <= _t108) ? _t108 : _t111) : _t110);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.

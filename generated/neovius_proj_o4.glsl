@@ -8,7 +8,9 @@ description: |
     Source: Neovius 1883; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 4. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> neovius_proj_o4_field(<vec3 p>)
     - <float> neovius_proj_o4_offset(<vec3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 2 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    7.0000069999999992 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    7.0000069999999992 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 15
-    - offset: 307
-    - shell: 582
+    - offset: 252
+    - shell: 458
     - normal: 337
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":307,"shell":582,"normal":337}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":252,"shell":458,"normal":337}} */
 #ifndef OFFSETGEN_NEOVIUS_PROJ_O4_GLSL
 #define OFFSETGEN_NEOVIUS_PROJ_O4_GLSL
 
@@ -92,189 +95,191 @@ highp float neovius_proj_o4_field(highp vec3 p)
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
-// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 307.
+// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 252.
 highp float neovius_proj_o4_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = neovius_proj_o4_cos(_t0);
-    highp float _t2 = neovius_proj_o4_sin(_t0);
-    highp float _t3 = 6.28318548 * p.y;
-    highp float _t4 = neovius_proj_o4_cos(_t3);
-    highp float _t5 = 6.28318548 * p.x;
-    highp float _t6 = neovius_proj_o4_cos(_t5);
-    highp float _t7 = _t2 * 3.0 + 4.0 * (_t2 * _t4 * _t6);
-    highp float _t8 = _t7 * _t7;
-    highp float _t9 = 6.28318548 * h;
-    highp float _t10 = (_t9 <= 1.0) ? (((-1.0) <= _t9) ? _t9 : (-1.0)) : 1.0;
-    highp float _t11 = _t10 * _t10;
-    highp float _t12 = neovius_proj_o4_sin(_t3);
-    highp float _t13 = 4.0 * (_t1 * _t12 * _t6) + _t12 * 3.0;
+    highp float _t1 = neovius_proj_o4_sin(_t0);
+    highp float _t2 = 6.28318548 * p.y;
+    highp float _t3 = neovius_proj_o4_cos(_t2);
+    highp float _t4 = 6.28318548 * p.x;
+    highp float _t5 = neovius_proj_o4_cos(_t4);
+    highp float _t6 = _t1 * 3.0 + 4.0 * (_t1 * _t3 * _t5);
+    highp float _t7 = _t6 * _t6;
+    highp float _t8 = 6.28318548 * h;
+    highp float _t9 = (_t8 <= 1.0) ? (((-1.0) <= _t8) ? _t8 : (-1.0)) : 1.0;
+    highp float _t10 = _t9 * _t9;
+    highp float _t11 = neovius_proj_o4_cos(_t0);
+    highp float _t12 = neovius_proj_o4_sin(_t2);
+    highp float _t13 = 4.0 * (_t11 * _t12 * _t5) + _t12 * 3.0;
     highp float _t14 = _t13 * _t13;
-    highp float _t15 = neovius_proj_o4_sin(_t5);
-    highp float _t16 = 3.0 * _t15 + 4.0 * (_t1 * _t4 * _t15);
-    highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t14 + _t8 + _t17;
-    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
-    highp float _t20 = _t8 * _t11 * _t19;
-    highp float _t21 = _t20 * _t20;
+    highp float _t15 = neovius_proj_o4_sin(_t4);
+    highp float _t16 = _t11 * _t3;
+    highp float _t17 = 3.0 * _t15 + 4.0 * (_t16 * _t15);
+    highp float _t18 = _t17 * _t17;
+    highp float _t19 = _t14 + _t7 + _t18;
+    highp float _t20 = (_t19 > 1.17549435e-38) ? 1.0 / _t19 : 0.0;
+    highp float _t21 = _t7 * _t10 * _t20;
     highp float _t22 = _t21 * _t21;
-    highp float _t23 = 1.0 - _t20 * 0.5 + (0.0416666679 - _t20 * 0.00138888892) * _t21 + (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21) * _t22;
-    highp float _t24 = _t10 * (_t19 * sqrt(_t18));
-    highp float _t25 = (1.0 - _t20 * 0.166666672 + (0.00833333377 - _t20 * 0.000198412701) * _t21 + (2.75573188e-06 - _t20 * 2.50520991e-08 + (1.60577024e-10 - _t20 * 7.54937183e-13) * _t21) * _t22) * (_t7 * _t24);
-    highp float _t26 = _t2 * _t23 + _t25 * _t1;
-    highp float _t27 = _t11 * _t17 * _t19;
-    highp float _t28 = _t27 * _t27;
-    highp float _t29 = _t28 * _t28;
-    highp float _t30 = 1.0 - _t27 * 0.5 + (0.0416666679 - _t27 * 0.00138888892) * _t28 + _t29 * (2.48015876e-05 - _t27 * 2.75573029e-07 + _t28 * (2.08744777e-09 - _t27 * 1.13046204e-11));
-    highp float _t31 = (_t29 * ((1.60577024e-10 - _t27 * 7.54937183e-13) * _t28 + (2.75573188e-06 - _t27 * 2.50520991e-08)) + ((0.00833333377 - _t27 * 0.000198412701) * _t28 + (1.0 - _t27 * 0.166666672))) * (_t16 * _t24);
-    highp float _t32 = _t30 * _t6 - _t31 * _t15;
-    highp float _t33 = _t14 * _t11 * _t19;
-    highp float _t34 = _t33 * _t33;
-    highp float _t35 = _t34 * _t34;
-    highp float _t36 = 1.0 - _t33 * 0.5 + (0.0416666679 - _t33 * 0.00138888892) * _t34 + _t35 * (_t34 * (2.08744777e-09 - _t33 * 1.13046204e-11) + (2.48015876e-05 - _t33 * 2.75573029e-07));
-    highp float _t37 = _t13 * _t24 * (1.0 - _t33 * 0.166666672 + _t34 * (0.00833333377 - _t33 * 0.000198412701) + _t35 * (2.75573188e-06 - _t33 * 2.50520991e-08 + _t34 * (1.60577024e-10 - _t33 * 7.54937183e-13)));
-    highp float _t38 = _t4 * _t36 - _t37 * _t12;
-    highp float _t39 = 3.0 * _t26 + 4.0 * (_t32 * _t26 * _t38);
-    highp float _t40 = _t39 * _t39;
-    highp float _t41 = _t30 * _t15 + _t31 * _t6;
-    highp float _t42 = _t1 * _t23 - _t25 * _t2;
-    highp float _t43 = 4.0 * (_t41 * _t42 * _t38) + _t41 * 3.0;
-    highp float _t44 = _t43 * _t43;
-    highp float _t45 = _t37 * _t4 + _t12 * _t36;
-    highp float _t46 = 4.0 * (_t32 * (_t45 * _t42)) + _t45 * 3.0;
-    highp float _t47 = _t46 * _t46;
-    highp float _t48 = _t40 + _t44 + _t47;
-    highp float _t49 = (_t48 > 1.17549435e-38) ? 1.0 / _t48 : 0.0;
-    highp float _t50 = _t40 * _t11 * _t49;
-    highp float _t51 = _t50 * _t50;
-    highp float _t52 = _t51 * _t51;
-    highp float _t53 = _t10 * (sqrt(_t48) * _t49);
-    highp float _t54 = _t1 * (1.0 - _t50 * 0.5 + _t51 * (0.0416666679 - 0.00138888892 * _t50) + ((2.08744777e-09 - 1.13046204e-11 * _t50) * _t51 + (2.48015876e-05 - _t50 * 2.75573029e-07)) * _t52) - _t2 * ((_t51 * (0.00833333377 - 0.000198412701 * _t50) + (1.0 - 0.166666672 * _t50) + (2.75573188e-06 - 2.50520991e-08 * _t50 + (1.60577024e-10 - 7.54937183e-13 * _t50) * _t51) * _t52) * (_t39 * _t53));
-    highp float _t55 = _t11 * _t47 * _t49;
-    highp float _t56 = _t55 * _t55;
-    highp float _t57 = _t56 * _t56;
-    highp float _t58 = _t4 * ((2.48015876e-05 - _t55 * 2.75573029e-07 + _t56 * (2.08744777e-09 - 1.13046204e-11 * _t55)) * _t57 + (1.0 - _t55 * 0.5 + _t56 * (0.0416666679 - 0.00138888892 * _t55))) - ((2.75573188e-06 - 2.50520991e-08 * _t55 + _t56 * (1.60577024e-10 - 7.54937183e-13 * _t55)) * _t57 + (1.0 - 0.166666672 * _t55 + _t56 * (0.00833333377 - 0.000198412701 * _t55))) * (_t46 * _t53) * _t12;
-    highp float _t59 = _t49 * (_t44 * _t11);
-    highp float _t60 = _t59 * _t59;
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = (1.0 - _t59 * 0.5 + (0.0416666679 - 0.00138888892 * _t59) * _t60 + (2.48015876e-05 - _t59 * 2.75573029e-07 + _t60 * (2.08744777e-09 - 1.13046204e-11 * _t59)) * _t61) * _t6 - _t15 * ((1.0 - 0.166666672 * _t59 + _t60 * (0.00833333377 - 0.000198412701 * _t59) + ((1.60577024e-10 - 7.54937183e-13 * _t59) * _t60 + (2.75573188e-06 - 2.50520991e-08 * _t59)) * _t61) * (_t53 * _t43));
-    return 3.0 * _t54 + (_t58 * 3.0 + (3.0 * _t62 + _t58 * _t54 * _t62 * 4.0));
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = 1.0 - _t21 * 0.5 + (0.0416666679 - _t21 * 0.00138888892) * _t22 + (2.48015876e-05 - _t21 * 2.75573029e-07 + (2.08744777e-09 - _t21 * 1.13046204e-11) * _t22) * _t23;
+    highp float _t25 = _t9 * (_t20 * sqrt(_t19));
+    highp float _t26 = _t6 * _t25;
+    highp float _t27 = (1.0 - _t21 * 0.166666672 + (0.00833333377 - _t21 * 0.000198412701) * _t22 + (2.75573188e-06 - _t21 * 2.50520991e-08 + (1.60577024e-10 - _t21 * 7.54937183e-13) * _t22) * _t23) * _t26;
+    highp float _t28 = _t1 * _t24 + _t27 * _t11;
+    highp float _t29 = _t10 * _t18 * _t20;
+    highp float _t30 = _t29 * _t29;
+    highp float _t31 = _t30 * _t30;
+    highp float _t32 = 1.0 - _t29 * 0.5 + (0.0416666679 - _t29 * 0.00138888892) * _t30 + _t31 * (2.48015876e-05 - _t29 * 2.75573029e-07 + _t30 * (2.08744777e-09 - _t29 * 1.13046204e-11));
+    highp float _t33 = _t17 * _t25;
+    highp float _t34 = (_t31 * ((1.60577024e-10 - _t29 * 7.54937183e-13) * _t30 + (2.75573188e-06 - _t29 * 2.50520991e-08)) + ((0.00833333377 - _t29 * 0.000198412701) * _t30 + (1.0 - _t29 * 0.166666672))) * _t33;
+    highp float _t35 = _t32 * _t5 - _t34 * _t15;
+    highp float _t36 = _t14 * _t10 * _t20;
+    highp float _t37 = _t36 * _t36;
+    highp float _t38 = _t37 * _t37;
+    highp float _t39 = 1.0 - _t36 * 0.5 + (0.0416666679 - _t36 * 0.00138888892) * _t37 + _t38 * (_t37 * (2.08744777e-09 - _t36 * 1.13046204e-11) + (2.48015876e-05 - _t36 * 2.75573029e-07));
+    highp float _t40 = _t13 * _t25;
+    highp float _t41 = _t40 * (1.0 - _t36 * 0.166666672 + _t37 * (0.00833333377 - _t36 * 0.000198412701) + _t38 * (2.75573188e-06 - _t36 * 2.50520991e-08 + _t37 * (1.60577024e-10 - _t36 * 7.54937183e-13)));
+    highp float _t42 = _t3 * _t39 - _t41 * _t12;
+    highp float _t43 = 3.0 * _t28 + 4.0 * (_t35 * _t28 * _t42);
+    highp float _t44 = _t32 * _t15 + _t34 * _t5;
+    highp float _t45 = _t11 * _t24 - _t27 * _t1;
+    highp float _t46 = 4.0 * (_t44 * _t45 * _t42) + _t44 * 3.0;
+    highp float _t47 = _t41 * _t3 + _t12 * _t39;
+    highp float _t48 = 4.0 * (_t35 * (_t47 * _t45)) + _t47 * 3.0;
+    highp float _t49 = _t43 * _t43 + _t46 * _t46 + _t48 * _t48;
+    highp float _t50 = _t9 * (sqrt(_t49) * ((_t49 > 1.17549435e-38) ? 1.0 / _t49 : 0.0));
+    highp float _t51 = _t43 * _t50 - _t26;
+    highp float _t52 = _t45 * 3.0;
+    highp float _t53 = 4.0 * (_t45 * _t35 * _t42);
+    highp float _t54 = 3.0 * _t35;
+    highp float _t55 = 3.0 * _t42;
+    highp float _t56 = _t50 * _t46 - _t33;
+    highp float _t57 = _t48 * _t50 - _t40;
+    highp float _t58 = -(_t51 * (_t43 + _t51 * (_t52 + _t53) * 0.5) - (_t54 + (_t52 + _t55) + _t53) - _t56 * (4.0 * (_t45 * (_t47 * _t44)) * _t57 + _t51 * (4.0 * (_t44 * _t28 * _t42)) - _t56 * (_t54 + _t53) * 0.5 - _t46) - (_t51 * (4.0 * (_t47 * _t35 * _t28)) - (_t55 + _t53) * _t57 * 0.5 - _t48) * _t57);
+    highp float _t59 = 7.00000715 * abs(_t9);
+    highp float _t60 = _t16 * _t5 * 4.0 + 3.0 * _t5 + _t11 * 3.0 + _t3 * 3.0;
+    highp float _t61 = _t59 + _t60;
+    highp float _t62 = _t60 - _t59;
+    return (_t58 <= _t61) ? ((_t62 <= _t58) ? _t58 : _t62) : _t61;
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 582.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 458.
 highp float neovius_proj_o4_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = 6.28318548 * (t * 0.5);
     highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
     highp float _t2 = _t1 * _t1;
     highp float _t3 = p.z * 6.28318548;
-    highp float _t4 = neovius_proj_o4_cos(_t3);
+    highp float _t4 = neovius_proj_o4_sin(_t3);
     highp float _t5 = 6.28318548 * p.y;
-    highp float _t6 = neovius_proj_o4_sin(_t5);
+    highp float _t6 = neovius_proj_o4_cos(_t5);
     highp float _t7 = 6.28318548 * p.x;
     highp float _t8 = neovius_proj_o4_cos(_t7);
-    highp float _t9 = 4.0 * (_t4 * _t6 * _t8) + _t6 * 3.0;
+    highp float _t9 = _t4 * 3.0 + 4.0 * (_t4 * _t6 * _t8);
     highp float _t10 = _t9 * _t9;
-    highp float _t11 = neovius_proj_o4_sin(_t3);
-    highp float _t12 = neovius_proj_o4_cos(_t5);
-    highp float _t13 = _t11 * 3.0 + 4.0 * (_t11 * _t12 * _t8);
+    highp float _t11 = neovius_proj_o4_cos(_t3);
+    highp float _t12 = neovius_proj_o4_sin(_t5);
+    highp float _t13 = 4.0 * (_t11 * _t12 * _t8) + _t12 * 3.0;
     highp float _t14 = _t13 * _t13;
     highp float _t15 = neovius_proj_o4_sin(_t7);
-    highp float _t16 = 3.0 * _t15 + 4.0 * (_t4 * _t12 * _t15);
-    highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t10 + _t14 + _t17;
-    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
-    highp float _t20 = _t2 * _t10 * _t19;
-    highp float _t21 = _t20 * _t20;
+    highp float _t16 = _t11 * _t6;
+    highp float _t17 = 3.0 * _t15 + 4.0 * (_t16 * _t15);
+    highp float _t18 = _t17 * _t17;
+    highp float _t19 = _t14 + _t10 + _t18;
+    highp float _t20 = (_t19 > 1.17549435e-38) ? 1.0 / _t19 : 0.0;
+    highp float _t21 = _t2 * _t10 * _t20;
     highp float _t22 = _t21 * _t21;
-    highp float _t23 = (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21) * _t22 + ((0.0416666679 - 0.00138888892 * _t20) * _t21 + (1.0 - _t20 * 0.5));
-    highp float _t24 = _t19 * sqrt(_t18);
-    highp float _t25 = _t1 * _t24;
-    highp float _t26 = _t9 * _t25 * ((0.00833333377 - _t20 * 0.000198412701) * _t21 + (1.0 - _t20 * 0.166666672) + (_t21 * (1.60577024e-10 - 7.54937183e-13 * _t20) + (2.75573188e-06 - _t20 * 2.50520991e-08)) * _t22);
-    highp float _t27 = _t23 * _t6 + _t12 * _t26;
-    highp float _t28 = _t2 * _t14 * _t19;
-    highp float _t29 = _t28 * _t28;
-    highp float _t30 = _t29 * _t29;
-    highp float _t31 = (0.0416666679 - 0.00138888892 * _t28) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (_t29 * (2.08744777e-09 - _t28 * 1.13046204e-11) + (2.48015876e-05 - _t28 * 2.75573029e-07));
-    highp float _t32 = ((0.00833333377 - _t28 * 0.000198412701) * _t29 + (1.0 - 0.166666672 * _t28) + _t30 * ((1.60577024e-10 - 7.54937183e-13 * _t28) * _t29 + (2.75573188e-06 - 2.50520991e-08 * _t28))) * (_t13 * _t25);
-    highp float _t33 = _t31 * _t4 - _t11 * _t32;
-    highp float _t34 = _t19 * (_t2 * _t17);
-    highp float _t35 = _t34 * _t34;
-    highp float _t36 = _t35 * _t35;
-    highp float _t37 = 1.0 - _t34 * 0.5 + _t35 * (0.0416666679 - 0.00138888892 * _t34) + (2.48015876e-05 - _t34 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t34) * _t35) * _t36;
-    highp float _t38 = ((2.75573188e-06 - 2.50520991e-08 * _t34 + _t35 * (1.60577024e-10 - 7.54937183e-13 * _t34)) * _t36 + (1.0 - 0.166666672 * _t34 + _t35 * (0.00833333377 - 0.000198412701 * _t34))) * (_t25 * _t16);
-    highp float _t39 = _t37 * _t8 - _t15 * _t38;
-    highp float _t40 = 3.0 * _t27 + 4.0 * (_t33 * _t39 * _t27);
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = (0.0416666679 - 0.00138888892 * _t21) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (_t22 * (2.08744777e-09 - _t21 * 1.13046204e-11) + (2.48015876e-05 - _t21 * 2.75573029e-07));
+    highp float _t25 = _t20 * sqrt(_t19);
+    highp float _t26 = _t1 * _t25;
+    highp float _t27 = _t9 * _t26;
+    highp float _t28 = ((0.00833333377 - _t21 * 0.000198412701) * _t22 + (1.0 - 0.166666672 * _t21) + _t23 * ((1.60577024e-10 - 7.54937183e-13 * _t21) * _t22 + (2.75573188e-06 - 2.50520991e-08 * _t21))) * _t27;
+    highp float _t29 = _t24 * _t11 - _t4 * _t28;
+    highp float _t30 = _t29 * 3.0;
+    highp float _t31 = _t20 * (_t2 * _t18);
+    highp float _t32 = _t31 * _t31;
+    highp float _t33 = _t32 * _t32;
+    highp float _t34 = 1.0 - _t31 * 0.5 + _t32 * (0.0416666679 - 0.00138888892 * _t31) + (2.48015876e-05 - _t31 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t31) * _t32) * _t33;
+    highp float _t35 = _t26 * _t17;
+    highp float _t36 = ((2.75573188e-06 - 2.50520991e-08 * _t31 + _t32 * (1.60577024e-10 - 7.54937183e-13 * _t31)) * _t33 + (1.0 - 0.166666672 * _t31 + _t32 * (0.00833333377 - 0.000198412701 * _t31))) * _t35;
+    highp float _t37 = _t34 * _t8 - _t15 * _t36;
+    highp float _t38 = 3.0 * _t37;
+    highp float _t39 = _t2 * _t14 * _t20;
+    highp float _t40 = _t39 * _t39;
     highp float _t41 = _t40 * _t40;
-    highp float _t42 = _t8 * _t38 + _t37 * _t15;
-    highp float _t43 = _t12 * _t23 - _t26 * _t6;
-    highp float _t44 = _t42 * 3.0 + 4.0 * (_t33 * _t42 * _t43);
-    highp float _t45 = _t44 * _t44;
-    highp float _t46 = _t31 * _t11 + _t4 * _t32;
-    highp float _t47 = 4.0 * (_t43 * _t39 * _t46) + 3.0 * _t46;
-    highp float _t48 = _t47 * _t47;
-    highp float _t49 = _t41 + (_t45 + _t48);
-    highp float _t50 = (_t49 > 1.17549435e-38) ? 1.0 / _t49 : 0.0;
-    highp float _t51 = _t50 * (_t2 * _t45);
-    highp float _t52 = _t51 * _t51;
-    highp float _t53 = _t52 * _t52;
-    highp float _t54 = _t1 * (_t50 * sqrt(_t49));
-    highp float _t55 = (1.0 - _t51 * 0.5 + _t52 * (0.0416666679 - 0.00138888892 * _t51) + (_t52 * (2.08744777e-09 - _t51 * 1.13046204e-11) + (2.48015876e-05 - _t51 * 2.75573029e-07)) * _t53) * _t8 - (1.0 - 0.166666672 * _t51 + _t52 * (0.00833333377 - 0.000198412701 * _t51) + _t53 * (_t52 * (1.60577024e-10 - 7.54937183e-13 * _t51) + (2.75573188e-06 - 2.50520991e-08 * _t51))) * (_t44 * _t54) * _t15;
-    highp float _t56 = _t50 * (_t2 * _t41);
-    highp float _t57 = _t56 * _t56;
-    highp float _t58 = _t57 * _t57;
-    highp float _t59 = _t12 * (_t58 * (_t57 * (2.08744777e-09 - 1.13046204e-11 * _t56) + (2.48015876e-05 - 2.75573029e-07 * _t56)) + (1.0 - _t56 * 0.5 + (0.0416666679 - 0.00138888892 * _t56) * _t57)) - ((0.00833333377 - 0.000198412701 * _t56) * _t57 + (1.0 - 0.166666672 * _t56) + (2.75573188e-06 - 2.50520991e-08 * _t56 + (1.60577024e-10 - 7.54937183e-13 * _t56) * _t57) * _t58) * (_t40 * _t54) * _t6;
-    highp float _t60 = _t50 * (_t2 * _t48);
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = _t61 * _t61;
-    highp float _t63 = _t4 * ((2.48015876e-05 - _t60 * 2.75573029e-07 + (2.08744777e-09 - _t60 * 1.13046204e-11) * _t61) * _t62 + ((0.0416666679 - _t60 * 0.00138888892) * _t61 + (1.0 - _t60 * 0.5))) - _t11 * (_t54 * _t47 * (1.0 - _t60 * 0.166666672 + (0.00833333377 - _t60 * 0.000198412701) * _t61 + ((1.60577024e-10 - _t60 * 7.54937183e-13) * _t61 + (2.75573188e-06 - _t60 * 2.50520991e-08)) * _t62));
-    highp float _t64 = -_t0;
-    highp float _t65 = (_t64 <= 1.0) ? (((-1.0) <= _t64) ? _t64 : (-1.0)) : 1.0;
-    highp float _t66 = _t65 * _t65;
-    highp float _t67 = _t19 * (_t66 * _t17);
-    highp float _t68 = _t67 * _t67;
+    highp float _t42 = (2.48015876e-05 - _t39 * 2.75573029e-07 + (2.08744777e-09 - _t39 * 1.13046204e-11) * _t40) * _t41 + ((0.0416666679 - 0.00138888892 * _t39) * _t40 + (1.0 - _t39 * 0.5));
+    highp float _t43 = _t13 * _t26;
+    highp float _t44 = _t43 * ((0.00833333377 - _t39 * 0.000198412701) * _t40 + (1.0 - _t39 * 0.166666672) + (_t40 * (1.60577024e-10 - 7.54937183e-13 * _t39) + (2.75573188e-06 - _t39 * 2.50520991e-08)) * _t41);
+    highp float _t45 = _t6 * _t42 - _t44 * _t12;
+    highp float _t46 = 4.0 * (_t29 * _t45 * _t37);
+    highp float _t47 = _t45 * 3.0;
+    highp float _t48 = _t8 * _t36 + _t34 * _t15;
+    highp float _t49 = _t29 * _t48;
+    highp float _t50 = _t48 * 3.0 + 4.0 * (_t49 * _t45);
+    highp float _t51 = _t42 * _t12 + _t6 * _t44;
+    highp float _t52 = 3.0 * _t51 + 4.0 * (_t29 * _t37 * _t51);
+    highp float _t53 = _t24 * _t4 + _t11 * _t28;
+    highp float _t54 = 4.0 * (_t45 * _t37 * _t53) + 3.0 * _t53;
+    highp float _t55 = _t52 * _t52 + (_t50 * _t50 + _t54 * _t54);
+    highp float _t56 = _t1 * (((_t55 > 1.17549435e-38) ? 1.0 / _t55 : 0.0) * sqrt(_t55));
+    highp float _t57 = _t50 * _t56 - _t35;
+    highp float _t58 = _t56 * _t54 - _t27;
+    highp float _t59 = _t52 * _t56 - _t43;
+    highp float _t60 = _t30 + _t38 + _t46 + _t47 - _t57 * (_t50 + (_t38 + _t46) * _t57 * 0.5 - _t58 * (4.0 * (_t48 * _t45 * _t53)) - 4.0 * (_t49 * _t51) * _t59) - ((_t30 + _t46) * _t58 * 0.5 + _t54) * _t58 - _t59 * (_t52 + _t59 * (_t46 + _t47) * 0.5 - 4.0 * (_t53 * (_t37 * _t51)) * _t58);
+    highp float _t61 = 7.00000715 * abs(_t1);
+    highp float _t62 = _t16 * _t8 * 4.0 + 3.0 * _t8 + _t11 * 3.0 + _t6 * 3.0;
+    highp float _t63 = _t61 + _t62;
+    highp float _t64 = _t62 - _t61;
+    highp float _t65 = -_t0;
+    highp float _t66 = (_t65 <= 1.0) ? (((-1.0) <= _t65) ? _t65 : (-1.0)) : 1.0;
+    highp float _t67 = _t66 * _t66;
+    highp float _t68 = _t67 * _t10 * _t20;
     highp float _t69 = _t68 * _t68;
-    highp float _t70 = _t65 * _t24;
-    highp float _t71 = ((_t68 * (1.60577024e-10 - 7.54937183e-13 * _t67) + (2.75573188e-06 - 2.50520991e-08 * _t67)) * _t69 + ((0.00833333377 - 0.000198412701 * _t67) * _t68 + (1.0 - 0.166666672 * _t67))) * (_t70 * _t16);
-    highp float _t72 = (2.48015876e-05 - _t67 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t67) * _t68) * _t69 + (1.0 - _t67 * 0.5 + _t68 * (0.0416666679 - 0.00138888892 * _t67));
-    highp float _t73 = _t71 * _t8 + _t72 * _t15;
-    highp float _t74 = _t66 * _t14 * _t19;
-    highp float _t75 = _t74 * _t74;
-    highp float _t76 = _t75 * _t75;
-    highp float _t77 = (2.48015876e-05 - _t74 * 2.75573029e-07 + _t75 * (2.08744777e-09 - _t74 * 1.13046204e-11)) * _t76 + ((0.0416666679 - 0.00138888892 * _t74) * _t75 + (1.0 - _t74 * 0.5));
-    highp float _t78 = ((0.00833333377 - _t74 * 0.000198412701) * _t75 + (1.0 - 0.166666672 * _t74) + _t76 * (_t75 * (1.60577024e-10 - 7.54937183e-13 * _t74) + (2.75573188e-06 - 2.50520991e-08 * _t74))) * (_t13 * _t70);
-    highp float _t79 = _t4 * _t77 - _t78 * _t11;
-    highp float _t80 = _t66 * _t10 * _t19;
-    highp float _t81 = _t80 * _t80;
-    highp float _t82 = _t81 * _t81;
-    highp float _t83 = _t82 * ((2.08744777e-09 - 1.13046204e-11 * _t80) * _t81 + (2.48015876e-05 - _t80 * 2.75573029e-07)) + (1.0 - _t80 * 0.5 + (0.0416666679 - 0.00138888892 * _t80) * _t81);
-    highp float _t84 = (((1.60577024e-10 - 7.54937183e-13 * _t80) * _t81 + (2.75573188e-06 - 2.50520991e-08 * _t80)) * _t82 + ((0.00833333377 - 0.000198412701 * _t80) * _t81 + (1.0 - 0.166666672 * _t80))) * (_t9 * _t70);
-    highp float _t85 = _t12 * _t83 - _t84 * _t6;
-    highp float _t86 = 4.0 * (_t73 * (_t79 * _t85)) + _t73 * 3.0;
-    highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t78 * _t4 + _t11 * _t77;
-    highp float _t89 = _t72 * _t8 - _t71 * _t15;
-    highp float _t90 = 4.0 * (_t88 * _t85 * _t89) + _t88 * 3.0;
-    highp float _t91 = _t90 * _t90;
-    highp float _t92 = _t84 * _t12 + _t83 * _t6;
-    highp float _t93 = _t92 * 3.0 + 4.0 * (_t92 * _t79 * _t89);
-    highp float _t94 = _t93 * _t93;
-    highp float _t95 = _t87 + (_t91 + _t94);
-    highp float _t96 = (_t95 > 1.17549435e-38) ? 1.0 / _t95 : 0.0;
-    highp float _t97 = _t96 * (_t66 * _t94);
-    highp float _t98 = _t97 * _t97;
-    highp float _t99 = _t98 * _t98;
-    highp float _t100 = sqrt(_t95) * _t96 * _t65;
-    highp float _t101 = (1.0 - _t97 * 0.5 + _t98 * (0.0416666679 - 0.00138888892 * _t97) + ((2.08744777e-09 - _t97 * 1.13046204e-11) * _t98 + (2.48015876e-05 - _t97 * 2.75573029e-07)) * _t99) * _t12 - _t100 * _t93 * (1.0 - 0.166666672 * _t97 + (0.00833333377 - 0.000198412701 * _t97) * _t98 + _t99 * (2.75573188e-06 - 2.50520991e-08 * _t97 + (1.60577024e-10 - 7.54937183e-13 * _t97) * _t98)) * _t6;
-    highp float _t102 = _t96 * (_t66 * _t87);
-    highp float _t103 = _t102 * _t102;
-    highp float _t104 = _t103 * _t103;
-    highp float _t105 = ((0.0416666679 - 0.00138888892 * _t102) * _t103 + (1.0 - _t102 * 0.5) + (2.48015876e-05 - _t102 * 2.75573029e-07 + (2.08744777e-09 - _t102 * 1.13046204e-11) * _t103) * _t104) * _t8 - _t86 * _t100 * (1.0 - _t102 * 0.166666672 + (0.00833333377 - _t102 * 0.000198412701) * _t103 + (_t103 * (1.60577024e-10 - 7.54937183e-13 * _t102) + (2.75573188e-06 - _t102 * 2.50520991e-08)) * _t104) * _t15;
-    highp float _t106 = _t96 * (_t66 * _t91);
-    highp float _t107 = _t106 * _t106;
-    highp float _t108 = _t107 * _t107;
-    highp float _t109 = _t4 * (1.0 - _t106 * 0.5 + (0.0416666679 - 0.00138888892 * _t106) * _t107 + (_t107 * (2.08744777e-09 - _t106 * 1.13046204e-11) + (2.48015876e-05 - _t106 * 2.75573029e-07)) * _t108) - _t11 * ((1.0 - 0.166666672 * _t106 + (0.00833333377 - 0.000198412701 * _t106) * _t107 + ((1.60577024e-10 - 7.54937183e-13 * _t106) * _t107 + (2.75573188e-06 - 2.50520991e-08 * _t106)) * _t108) * (_t90 * _t100));
-    return (3.0 * _t55 + (_t59 * 3.0 + _t63 * (_t59 * _t55) * 4.0) + 3.0 * _t63) * (_t101 * 3.0 + _t105 * 3.0 + 4.0 * (_t101 * _t105 * _t109) + 3.0 * _t109);
+    highp float _t70 = _t69 * _t69;
+    highp float _t71 = _t66 * _t25;
+    highp float _t72 = _t9 * _t71;
+    highp float _t73 = ((0.00833333377 - _t68 * 0.000198412701) * _t69 + (1.0 - 0.166666672 * _t68) + _t70 * (_t69 * (1.60577024e-10 - 7.54937183e-13 * _t68) + (2.75573188e-06 - 2.50520991e-08 * _t68))) * _t72;
+    highp float _t74 = (2.48015876e-05 - _t68 * 2.75573029e-07 + _t69 * (2.08744777e-09 - _t68 * 1.13046204e-11)) * _t70 + ((0.0416666679 - 0.00138888892 * _t68) * _t69 + (1.0 - _t68 * 0.5));
+    highp float _t75 = _t73 * _t11 + _t4 * _t74;
+    highp float _t76 = _t67 * _t14 * _t20;
+    highp float _t77 = _t76 * _t76;
+    highp float _t78 = _t77 * _t77;
+    highp float _t79 = _t78 * ((2.08744777e-09 - 1.13046204e-11 * _t76) * _t77 + (2.48015876e-05 - _t76 * 2.75573029e-07)) + (1.0 - _t76 * 0.5 + (0.0416666679 - 0.00138888892 * _t76) * _t77);
+    highp float _t80 = _t13 * _t71;
+    highp float _t81 = (((1.60577024e-10 - 7.54937183e-13 * _t76) * _t77 + (2.75573188e-06 - 2.50520991e-08 * _t76)) * _t78 + ((0.00833333377 - 0.000198412701 * _t76) * _t77 + (1.0 - 0.166666672 * _t76))) * _t80;
+    highp float _t82 = _t6 * _t79 - _t81 * _t12;
+    highp float _t83 = _t75 * _t82;
+    highp float _t84 = _t20 * (_t67 * _t18);
+    highp float _t85 = _t84 * _t84;
+    highp float _t86 = _t85 * _t85;
+    highp float _t87 = (2.48015876e-05 - _t84 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t84) * _t85) * _t86 + (1.0 - _t84 * 0.5 + _t85 * (0.0416666679 - 0.00138888892 * _t84));
+    highp float _t88 = _t71 * _t17;
+    highp float _t89 = ((_t85 * (1.60577024e-10 - 7.54937183e-13 * _t84) + (2.75573188e-06 - 2.50520991e-08 * _t84)) * _t86 + ((0.00833333377 - 0.000198412701 * _t84) * _t85 + (1.0 - 0.166666672 * _t84))) * _t88;
+    highp float _t90 = _t87 * _t8 - _t89 * _t15;
+    highp float _t91 = 4.0 * (_t83 * _t90) + _t75 * 3.0;
+    highp float _t92 = _t11 * _t74 - _t73 * _t4;
+    highp float _t93 = _t92 * _t82;
+    highp float _t94 = 4.0 * (_t90 * _t93);
+    highp float _t95 = _t94 + _t92 * 3.0;
+    highp float _t96 = _t89 * _t8 + _t87 * _t15;
+    highp float _t97 = 4.0 * (_t96 * _t93) + _t96 * 3.0;
+    highp float _t98 = _t81 * _t6 + _t79 * _t12;
+    highp float _t99 = _t98 * _t92;
+    highp float _t100 = _t98 * 3.0 + 4.0 * (_t99 * _t90);
+    highp float _t101 = _t97 * _t97 + (_t91 * _t91 + _t100 * _t100);
+    highp float _t102 = sqrt(_t101) * ((_t101 > 1.17549435e-38) ? 1.0 / _t101 : 0.0) * _t66;
+    highp float _t103 = _t91 * _t102 - _t72;
+    highp float _t104 = _t82 * 3.0;
+    highp float _t105 = _t102 * _t100 - _t80;
+    highp float _t106 = _t90 * 3.0;
+    highp float _t107 = _t97 * _t102 - _t88;
+    highp float _t108 = -((_t91 + _t95 * _t103 * 0.5) * _t103 + ((_t94 + _t104) * _t105 * 0.5 + _t100 - 4.0 * (_t90 * (_t98 * _t75)) * _t103) * _t105 - (_t105 * (4.0 * (_t99 * _t96)) + _t103 * (4.0 * (_t83 * _t96)) - _t97 - (_t94 + _t106) * _t107 * 0.5) * _t107 - (_t104 + (_t95 + _t106)));
+    highp float _t109 = 7.00000715 * abs(_t66);
+    highp float _t110 = _t62 + _t109;
+    highp float _t111 = _t62 - _t109;
+    return ((_t60 <= _t63) ? ((_t64 <= _t60) ? _t60 : _t64) : _t63) * ((_t108 <= _t110) ? ((_t111 <= _t108) ? _t108 : _t111) : _t110);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 337.

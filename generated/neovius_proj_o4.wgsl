@@ -8,7 +8,9 @@ description: |
     Source: Neovius 1883; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 4. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - fn neovius_proj_o4_field(p: vec3<f32>) -> f32
     - fn neovius_proj_o4_offset(p: vec3<f32>, h: f32) -> f32
@@ -34,15 +36,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 2 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    7.0000069999999992 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    7.0000069999999992 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -52,12 +55,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: WGSL (WebGPU): Dawn (Chrome, Node's webgpu), wgpu/naga (Firefox), WebKit.
 total ops after CSE:
     - field: 15
-    - offset: 307
-    - shell: 582
+    - offset: 252
+    - shell: 458
     - normal: 337
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":307,"shell":582,"normal":337}} */
+/* offsetgen-metadata {"format":1,"language":"wgsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o4","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":252,"shell":458,"normal":337}} */
 
 // sin and cos of the snippet's own, not the driver's: GPU and software builtins are off by up to
 // 2e-4. Cody-Waite reduction by pi/2 in three parts and Cephes' float polynomials on [-pi/4, pi/4],
@@ -90,187 +93,189 @@ fn neovius_proj_o4_field(p: vec3<f32>) -> f32 {
     return _t0 * _t1 * _t2 * 4.0f + 3.0f * _t2 + _t0 * 3.0f + _t1 * 3.0f;
 }
 
-// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 307.
+// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 252.
 fn neovius_proj_o4_offset(p: vec3<f32>, h: f32) -> f32 {
     let _t0 = p.z * 6.28318548f;
-    let _t1 = neovius_proj_o4_cos(_t0);
-    let _t2 = neovius_proj_o4_sin(_t0);
-    let _t3 = 6.28318548f * p.y;
-    let _t4 = neovius_proj_o4_cos(_t3);
-    let _t5 = 6.28318548f * p.x;
-    let _t6 = neovius_proj_o4_cos(_t5);
-    let _t7 = _t2 * 3.0f + 4.0f * (_t2 * _t4 * _t6);
-    let _t8 = _t7 * _t7;
-    let _t9 = 6.28318548f * h;
-    let _t10 = select(1.0f, (select((-1.0f), _t9, (-1.0f) <= _t9)), _t9 <= 1.0f);
-    let _t11 = _t10 * _t10;
-    let _t12 = neovius_proj_o4_sin(_t3);
-    let _t13 = 4.0f * (_t1 * _t12 * _t6) + _t12 * 3.0f;
+    let _t1 = neovius_proj_o4_sin(_t0);
+    let _t2 = 6.28318548f * p.y;
+    let _t3 = neovius_proj_o4_cos(_t2);
+    let _t4 = 6.28318548f * p.x;
+    let _t5 = neovius_proj_o4_cos(_t4);
+    let _t6 = _t1 * 3.0f + 4.0f * (_t1 * _t3 * _t5);
+    let _t7 = _t6 * _t6;
+    let _t8 = 6.28318548f * h;
+    let _t9 = select(1.0f, (select((-1.0f), _t8, (-1.0f) <= _t8)), _t8 <= 1.0f);
+    let _t10 = _t9 * _t9;
+    let _t11 = neovius_proj_o4_cos(_t0);
+    let _t12 = neovius_proj_o4_sin(_t2);
+    let _t13 = 4.0f * (_t11 * _t12 * _t5) + _t12 * 3.0f;
     let _t14 = _t13 * _t13;
-    let _t15 = neovius_proj_o4_sin(_t5);
-    let _t16 = 3.0f * _t15 + 4.0f * (_t1 * _t4 * _t15);
-    let _t17 = _t16 * _t16;
-    let _t18 = _t14 + _t8 + _t17;
-    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 1.17549435e-38f);
-    let _t20 = _t8 * _t11 * _t19;
-    let _t21 = _t20 * _t20;
+    let _t15 = neovius_proj_o4_sin(_t4);
+    let _t16 = _t11 * _t3;
+    let _t17 = 3.0f * _t15 + 4.0f * (_t16 * _t15);
+    let _t18 = _t17 * _t17;
+    let _t19 = _t14 + _t7 + _t18;
+    let _t20 = select(0.0f, 1.0f / _t19, _t19 > 1.17549435e-38f);
+    let _t21 = _t7 * _t10 * _t20;
     let _t22 = _t21 * _t21;
-    let _t23 = 1.0f - _t20 * 0.5f + (0.0416666679f - _t20 * 0.00138888892f) * _t21 + (2.48015876e-05f - _t20 * 2.75573029e-07f + (2.08744777e-09f - _t20 * 1.13046204e-11f) * _t21) * _t22;
-    let _t24 = _t10 * (_t19 * sqrt(_t18));
-    let _t25 = (1.0f - _t20 * 0.166666672f + (0.00833333377f - _t20 * 0.000198412701f) * _t21 + (2.75573188e-06f - _t20 * 2.50520991e-08f + (1.60577024e-10f - _t20 * 7.54937183e-13f) * _t21) * _t22) * (_t7 * _t24);
-    let _t26 = _t2 * _t23 + _t25 * _t1;
-    let _t27 = _t11 * _t17 * _t19;
-    let _t28 = _t27 * _t27;
-    let _t29 = _t28 * _t28;
-    let _t30 = 1.0f - _t27 * 0.5f + (0.0416666679f - _t27 * 0.00138888892f) * _t28 + _t29 * (2.48015876e-05f - _t27 * 2.75573029e-07f + _t28 * (2.08744777e-09f - _t27 * 1.13046204e-11f));
-    let _t31 = (_t29 * ((1.60577024e-10f - _t27 * 7.54937183e-13f) * _t28 + (2.75573188e-06f - _t27 * 2.50520991e-08f)) + ((0.00833333377f - _t27 * 0.000198412701f) * _t28 + (1.0f - _t27 * 0.166666672f))) * (_t16 * _t24);
-    let _t32 = _t30 * _t6 - _t31 * _t15;
-    let _t33 = _t14 * _t11 * _t19;
-    let _t34 = _t33 * _t33;
-    let _t35 = _t34 * _t34;
-    let _t36 = 1.0f - _t33 * 0.5f + (0.0416666679f - _t33 * 0.00138888892f) * _t34 + _t35 * (_t34 * (2.08744777e-09f - _t33 * 1.13046204e-11f) + (2.48015876e-05f - _t33 * 2.75573029e-07f));
-    let _t37 = _t13 * _t24 * (1.0f - _t33 * 0.166666672f + _t34 * (0.00833333377f - _t33 * 0.000198412701f) + _t35 * (2.75573188e-06f - _t33 * 2.50520991e-08f + _t34 * (1.60577024e-10f - _t33 * 7.54937183e-13f)));
-    let _t38 = _t4 * _t36 - _t37 * _t12;
-    let _t39 = 3.0f * _t26 + 4.0f * (_t32 * _t26 * _t38);
-    let _t40 = _t39 * _t39;
-    let _t41 = _t30 * _t15 + _t31 * _t6;
-    let _t42 = _t1 * _t23 - _t25 * _t2;
-    let _t43 = 4.0f * (_t41 * _t42 * _t38) + _t41 * 3.0f;
-    let _t44 = _t43 * _t43;
-    let _t45 = _t37 * _t4 + _t12 * _t36;
-    let _t46 = 4.0f * (_t32 * (_t45 * _t42)) + _t45 * 3.0f;
-    let _t47 = _t46 * _t46;
-    let _t48 = _t40 + _t44 + _t47;
-    let _t49 = select(0.0f, 1.0f / _t48, _t48 > 1.17549435e-38f);
-    let _t50 = _t40 * _t11 * _t49;
-    let _t51 = _t50 * _t50;
-    let _t52 = _t51 * _t51;
-    let _t53 = _t10 * (sqrt(_t48) * _t49);
-    let _t54 = _t1 * (1.0f - _t50 * 0.5f + _t51 * (0.0416666679f - 0.00138888892f * _t50) + ((2.08744777e-09f - 1.13046204e-11f * _t50) * _t51 + (2.48015876e-05f - _t50 * 2.75573029e-07f)) * _t52) - _t2 * ((_t51 * (0.00833333377f - 0.000198412701f * _t50) + (1.0f - 0.166666672f * _t50) + (2.75573188e-06f - 2.50520991e-08f * _t50 + (1.60577024e-10f - 7.54937183e-13f * _t50) * _t51) * _t52) * (_t39 * _t53));
-    let _t55 = _t11 * _t47 * _t49;
-    let _t56 = _t55 * _t55;
-    let _t57 = _t56 * _t56;
-    let _t58 = _t4 * ((2.48015876e-05f - _t55 * 2.75573029e-07f + _t56 * (2.08744777e-09f - 1.13046204e-11f * _t55)) * _t57 + (1.0f - _t55 * 0.5f + _t56 * (0.0416666679f - 0.00138888892f * _t55))) - ((2.75573188e-06f - 2.50520991e-08f * _t55 + _t56 * (1.60577024e-10f - 7.54937183e-13f * _t55)) * _t57 + (1.0f - 0.166666672f * _t55 + _t56 * (0.00833333377f - 0.000198412701f * _t55))) * (_t46 * _t53) * _t12;
-    let _t59 = _t49 * (_t44 * _t11);
-    let _t60 = _t59 * _t59;
-    let _t61 = _t60 * _t60;
-    let _t62 = (1.0f - _t59 * 0.5f + (0.0416666679f - 0.00138888892f * _t59) * _t60 + (2.48015876e-05f - _t59 * 2.75573029e-07f + _t60 * (2.08744777e-09f - 1.13046204e-11f * _t59)) * _t61) * _t6 - _t15 * ((1.0f - 0.166666672f * _t59 + _t60 * (0.00833333377f - 0.000198412701f * _t59) + ((1.60577024e-10f - 7.54937183e-13f * _t59) * _t60 + (2.75573188e-06f - 2.50520991e-08f * _t59)) * _t61) * (_t53 * _t43));
-    return 3.0f * _t54 + (_t58 * 3.0f + (3.0f * _t62 + _t58 * _t54 * _t62 * 4.0f));
+    let _t23 = _t22 * _t22;
+    let _t24 = 1.0f - _t21 * 0.5f + (0.0416666679f - _t21 * 0.00138888892f) * _t22 + (2.48015876e-05f - _t21 * 2.75573029e-07f + (2.08744777e-09f - _t21 * 1.13046204e-11f) * _t22) * _t23;
+    let _t25 = _t9 * (_t20 * sqrt(_t19));
+    let _t26 = _t6 * _t25;
+    let _t27 = (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22) * _t23) * _t26;
+    let _t28 = _t1 * _t24 + _t27 * _t11;
+    let _t29 = _t10 * _t18 * _t20;
+    let _t30 = _t29 * _t29;
+    let _t31 = _t30 * _t30;
+    let _t32 = 1.0f - _t29 * 0.5f + (0.0416666679f - _t29 * 0.00138888892f) * _t30 + _t31 * (2.48015876e-05f - _t29 * 2.75573029e-07f + _t30 * (2.08744777e-09f - _t29 * 1.13046204e-11f));
+    let _t33 = _t17 * _t25;
+    let _t34 = (_t31 * ((1.60577024e-10f - _t29 * 7.54937183e-13f) * _t30 + (2.75573188e-06f - _t29 * 2.50520991e-08f)) + ((0.00833333377f - _t29 * 0.000198412701f) * _t30 + (1.0f - _t29 * 0.166666672f))) * _t33;
+    let _t35 = _t32 * _t5 - _t34 * _t15;
+    let _t36 = _t14 * _t10 * _t20;
+    let _t37 = _t36 * _t36;
+    let _t38 = _t37 * _t37;
+    let _t39 = 1.0f - _t36 * 0.5f + (0.0416666679f - _t36 * 0.00138888892f) * _t37 + _t38 * (_t37 * (2.08744777e-09f - _t36 * 1.13046204e-11f) + (2.48015876e-05f - _t36 * 2.75573029e-07f));
+    let _t40 = _t13 * _t25;
+    let _t41 = _t40 * (1.0f - _t36 * 0.166666672f + _t37 * (0.00833333377f - _t36 * 0.000198412701f) + _t38 * (2.75573188e-06f - _t36 * 2.50520991e-08f + _t37 * (1.60577024e-10f - _t36 * 7.54937183e-13f)));
+    let _t42 = _t3 * _t39 - _t41 * _t12;
+    let _t43 = 3.0f * _t28 + 4.0f * (_t35 * _t28 * _t42);
+    let _t44 = _t32 * _t15 + _t34 * _t5;
+    let _t45 = _t11 * _t24 - _t27 * _t1;
+    let _t46 = 4.0f * (_t44 * _t45 * _t42) + _t44 * 3.0f;
+    let _t47 = _t41 * _t3 + _t12 * _t39;
+    let _t48 = 4.0f * (_t35 * (_t47 * _t45)) + _t47 * 3.0f;
+    let _t49 = _t43 * _t43 + _t46 * _t46 + _t48 * _t48;
+    let _t50 = _t9 * (sqrt(_t49) * (select(0.0f, 1.0f / _t49, _t49 > 1.17549435e-38f)));
+    let _t51 = _t43 * _t50 - _t26;
+    let _t52 = _t45 * 3.0f;
+    let _t53 = 4.0f * (_t45 * _t35 * _t42);
+    let _t54 = 3.0f * _t35;
+    let _t55 = 3.0f * _t42;
+    let _t56 = _t50 * _t46 - _t33;
+    let _t57 = _t48 * _t50 - _t40;
+    let _t58 = -(_t51 * (_t43 + _t51 * (_t52 + _t53) * 0.5f) - (_t54 + (_t52 + _t55) + _t53) - _t56 * (4.0f * (_t45 * (_t47 * _t44)) * _t57 + _t51 * (4.0f * (_t44 * _t28 * _t42)) - _t56 * (_t54 + _t53) * 0.5f - _t46) - (_t51 * (4.0f * (_t47 * _t35 * _t28)) - (_t55 + _t53) * _t57 * 0.5f - _t48) * _t57);
+    let _t59 = 7.00000715f * abs(_t9);
+    let _t60 = _t16 * _t5 * 4.0f + 3.0f * _t5 + _t11 * 3.0f + _t3 * 3.0f;
+    let _t61 = _t59 + _t60;
+    let _t62 = _t60 - _t59;
+    return select(_t61, (select(_t62, _t58, _t62 <= _t58)), _t58 <= _t61);
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 582.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 458.
 fn neovius_proj_o4_shell(p: vec3<f32>, t: f32) -> f32 {
     let _t0 = 6.28318548f * (t * 0.5f);
     let _t1 = select(1.0f, (select((-1.0f), _t0, (-1.0f) <= _t0)), _t0 <= 1.0f);
     let _t2 = _t1 * _t1;
     let _t3 = p.z * 6.28318548f;
-    let _t4 = neovius_proj_o4_cos(_t3);
+    let _t4 = neovius_proj_o4_sin(_t3);
     let _t5 = 6.28318548f * p.y;
-    let _t6 = neovius_proj_o4_sin(_t5);
+    let _t6 = neovius_proj_o4_cos(_t5);
     let _t7 = 6.28318548f * p.x;
     let _t8 = neovius_proj_o4_cos(_t7);
-    let _t9 = 4.0f * (_t4 * _t6 * _t8) + _t6 * 3.0f;
+    let _t9 = _t4 * 3.0f + 4.0f * (_t4 * _t6 * _t8);
     let _t10 = _t9 * _t9;
-    let _t11 = neovius_proj_o4_sin(_t3);
-    let _t12 = neovius_proj_o4_cos(_t5);
-    let _t13 = _t11 * 3.0f + 4.0f * (_t11 * _t12 * _t8);
+    let _t11 = neovius_proj_o4_cos(_t3);
+    let _t12 = neovius_proj_o4_sin(_t5);
+    let _t13 = 4.0f * (_t11 * _t12 * _t8) + _t12 * 3.0f;
     let _t14 = _t13 * _t13;
     let _t15 = neovius_proj_o4_sin(_t7);
-    let _t16 = 3.0f * _t15 + 4.0f * (_t4 * _t12 * _t15);
-    let _t17 = _t16 * _t16;
-    let _t18 = _t10 + _t14 + _t17;
-    let _t19 = select(0.0f, 1.0f / _t18, _t18 > 1.17549435e-38f);
-    let _t20 = _t2 * _t10 * _t19;
-    let _t21 = _t20 * _t20;
+    let _t16 = _t11 * _t6;
+    let _t17 = 3.0f * _t15 + 4.0f * (_t16 * _t15);
+    let _t18 = _t17 * _t17;
+    let _t19 = _t14 + _t10 + _t18;
+    let _t20 = select(0.0f, 1.0f / _t19, _t19 > 1.17549435e-38f);
+    let _t21 = _t2 * _t10 * _t20;
     let _t22 = _t21 * _t21;
-    let _t23 = (2.48015876e-05f - _t20 * 2.75573029e-07f + (2.08744777e-09f - _t20 * 1.13046204e-11f) * _t21) * _t22 + ((0.0416666679f - 0.00138888892f * _t20) * _t21 + (1.0f - _t20 * 0.5f));
-    let _t24 = _t19 * sqrt(_t18);
-    let _t25 = _t1 * _t24;
-    let _t26 = _t9 * _t25 * ((0.00833333377f - _t20 * 0.000198412701f) * _t21 + (1.0f - _t20 * 0.166666672f) + (_t21 * (1.60577024e-10f - 7.54937183e-13f * _t20) + (2.75573188e-06f - _t20 * 2.50520991e-08f)) * _t22);
-    let _t27 = _t23 * _t6 + _t12 * _t26;
-    let _t28 = _t2 * _t14 * _t19;
-    let _t29 = _t28 * _t28;
-    let _t30 = _t29 * _t29;
-    let _t31 = (0.0416666679f - 0.00138888892f * _t28) * _t29 + (1.0f - _t28 * 0.5f) + _t30 * (_t29 * (2.08744777e-09f - _t28 * 1.13046204e-11f) + (2.48015876e-05f - _t28 * 2.75573029e-07f));
-    let _t32 = ((0.00833333377f - _t28 * 0.000198412701f) * _t29 + (1.0f - 0.166666672f * _t28) + _t30 * ((1.60577024e-10f - 7.54937183e-13f * _t28) * _t29 + (2.75573188e-06f - 2.50520991e-08f * _t28))) * (_t13 * _t25);
-    let _t33 = _t31 * _t4 - _t11 * _t32;
-    let _t34 = _t19 * (_t2 * _t17);
-    let _t35 = _t34 * _t34;
-    let _t36 = _t35 * _t35;
-    let _t37 = 1.0f - _t34 * 0.5f + _t35 * (0.0416666679f - 0.00138888892f * _t34) + (2.48015876e-05f - _t34 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t34) * _t35) * _t36;
-    let _t38 = ((2.75573188e-06f - 2.50520991e-08f * _t34 + _t35 * (1.60577024e-10f - 7.54937183e-13f * _t34)) * _t36 + (1.0f - 0.166666672f * _t34 + _t35 * (0.00833333377f - 0.000198412701f * _t34))) * (_t25 * _t16);
-    let _t39 = _t37 * _t8 - _t15 * _t38;
-    let _t40 = 3.0f * _t27 + 4.0f * (_t33 * _t39 * _t27);
+    let _t23 = _t22 * _t22;
+    let _t24 = (0.0416666679f - 0.00138888892f * _t21) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (_t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f) + (2.48015876e-05f - _t21 * 2.75573029e-07f));
+    let _t25 = _t20 * sqrt(_t19);
+    let _t26 = _t1 * _t25;
+    let _t27 = _t9 * _t26;
+    let _t28 = ((0.00833333377f - _t21 * 0.000198412701f) * _t22 + (1.0f - 0.166666672f * _t21) + _t23 * ((1.60577024e-10f - 7.54937183e-13f * _t21) * _t22 + (2.75573188e-06f - 2.50520991e-08f * _t21))) * _t27;
+    let _t29 = _t24 * _t11 - _t4 * _t28;
+    let _t30 = _t29 * 3.0f;
+    let _t31 = _t20 * (_t2 * _t18);
+    let _t32 = _t31 * _t31;
+    let _t33 = _t32 * _t32;
+    let _t34 = 1.0f - _t31 * 0.5f + _t32 * (0.0416666679f - 0.00138888892f * _t31) + (2.48015876e-05f - _t31 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t31) * _t32) * _t33;
+    let _t35 = _t26 * _t17;
+    let _t36 = ((2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31)) * _t33 + (1.0f - 0.166666672f * _t31 + _t32 * (0.00833333377f - 0.000198412701f * _t31))) * _t35;
+    let _t37 = _t34 * _t8 - _t15 * _t36;
+    let _t38 = 3.0f * _t37;
+    let _t39 = _t2 * _t14 * _t20;
+    let _t40 = _t39 * _t39;
     let _t41 = _t40 * _t40;
-    let _t42 = _t8 * _t38 + _t37 * _t15;
-    let _t43 = _t12 * _t23 - _t26 * _t6;
-    let _t44 = _t42 * 3.0f + 4.0f * (_t33 * _t42 * _t43);
-    let _t45 = _t44 * _t44;
-    let _t46 = _t31 * _t11 + _t4 * _t32;
-    let _t47 = 4.0f * (_t43 * _t39 * _t46) + 3.0f * _t46;
-    let _t48 = _t47 * _t47;
-    let _t49 = _t41 + (_t45 + _t48);
-    let _t50 = select(0.0f, 1.0f / _t49, _t49 > 1.17549435e-38f);
-    let _t51 = _t50 * (_t2 * _t45);
-    let _t52 = _t51 * _t51;
-    let _t53 = _t52 * _t52;
-    let _t54 = _t1 * (_t50 * sqrt(_t49));
-    let _t55 = (1.0f - _t51 * 0.5f + _t52 * (0.0416666679f - 0.00138888892f * _t51) + (_t52 * (2.08744777e-09f - _t51 * 1.13046204e-11f) + (2.48015876e-05f - _t51 * 2.75573029e-07f)) * _t53) * _t8 - (1.0f - 0.166666672f * _t51 + _t52 * (0.00833333377f - 0.000198412701f * _t51) + _t53 * (_t52 * (1.60577024e-10f - 7.54937183e-13f * _t51) + (2.75573188e-06f - 2.50520991e-08f * _t51))) * (_t44 * _t54) * _t15;
-    let _t56 = _t50 * (_t2 * _t41);
-    let _t57 = _t56 * _t56;
-    let _t58 = _t57 * _t57;
-    let _t59 = _t12 * (_t58 * (_t57 * (2.08744777e-09f - 1.13046204e-11f * _t56) + (2.48015876e-05f - 2.75573029e-07f * _t56)) + (1.0f - _t56 * 0.5f + (0.0416666679f - 0.00138888892f * _t56) * _t57)) - ((0.00833333377f - 0.000198412701f * _t56) * _t57 + (1.0f - 0.166666672f * _t56) + (2.75573188e-06f - 2.50520991e-08f * _t56 + (1.60577024e-10f - 7.54937183e-13f * _t56) * _t57) * _t58) * (_t40 * _t54) * _t6;
-    let _t60 = _t50 * (_t2 * _t48);
-    let _t61 = _t60 * _t60;
-    let _t62 = _t61 * _t61;
-    let _t63 = _t4 * ((2.48015876e-05f - _t60 * 2.75573029e-07f + (2.08744777e-09f - _t60 * 1.13046204e-11f) * _t61) * _t62 + ((0.0416666679f - _t60 * 0.00138888892f) * _t61 + (1.0f - _t60 * 0.5f))) - _t11 * (_t54 * _t47 * (1.0f - _t60 * 0.166666672f + (0.00833333377f - _t60 * 0.000198412701f) * _t61 + ((1.60577024e-10f - _t60 * 7.54937183e-13f) * _t61 + (2.75573188e-06f - _t60 * 2.50520991e-08f)) * _t62));
-    let _t64 = -_t0;
-    let _t65 = select(1.0f, (select((-1.0f), _t64, (-1.0f) <= _t64)), _t64 <= 1.0f);
-    let _t66 = _t65 * _t65;
-    let _t67 = _t19 * (_t66 * _t17);
-    let _t68 = _t67 * _t67;
+    let _t42 = (2.48015876e-05f - _t39 * 2.75573029e-07f + (2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40) * _t41 + ((0.0416666679f - 0.00138888892f * _t39) * _t40 + (1.0f - _t39 * 0.5f));
+    let _t43 = _t13 * _t26;
+    let _t44 = _t43 * ((0.00833333377f - _t39 * 0.000198412701f) * _t40 + (1.0f - _t39 * 0.166666672f) + (_t40 * (1.60577024e-10f - 7.54937183e-13f * _t39) + (2.75573188e-06f - _t39 * 2.50520991e-08f)) * _t41);
+    let _t45 = _t6 * _t42 - _t44 * _t12;
+    let _t46 = 4.0f * (_t29 * _t45 * _t37);
+    let _t47 = _t45 * 3.0f;
+    let _t48 = _t8 * _t36 + _t34 * _t15;
+    let _t49 = _t29 * _t48;
+    let _t50 = _t48 * 3.0f + 4.0f * (_t49 * _t45);
+    let _t51 = _t42 * _t12 + _t6 * _t44;
+    let _t52 = 3.0f * _t51 + 4.0f * (_t29 * _t37 * _t51);
+    let _t53 = _t24 * _t4 + _t11 * _t28;
+    let _t54 = 4.0f * (_t45 * _t37 * _t53) + 3.0f * _t53;
+    let _t55 = _t52 * _t52 + (_t50 * _t50 + _t54 * _t54);
+    let _t56 = _t1 * ((select(0.0f, 1.0f / _t55, _t55 > 1.17549435e-38f)) * sqrt(_t55));
+    let _t57 = _t50 * _t56 - _t35;
+    let _t58 = _t56 * _t54 - _t27;
+    let _t59 = _t52 * _t56 - _t43;
+    let _t60 = _t30 + _t38 + _t46 + _t47 - _t57 * (_t50 + (_t38 + _t46) * _t57 * 0.5f - _t58 * (4.0f * (_t48 * _t45 * _t53)) - 4.0f * (_t49 * _t51) * _t59) - ((_t30 + _t46) * _t58 * 0.5f + _t54) * _t58 - _t59 * (_t52 + _t59 * (_t46 + _t47) * 0.5f - 4.0f * (_t53 * (_t37 * _t51)) * _t58);
+    let _t61 = 7.00000715f * abs(_t1);
+    let _t62 = _t16 * _t8 * 4.0f + 3.0f * _t8 + _t11 * 3.0f + _t6 * 3.0f;
+    let _t63 = _t61 + _t62;
+    let _t64 = _t62 - _t61;
+    let _t65 = -_t0;
+    let _t66 = select(1.0f, (select((-1.0f), _t65, (-1.0f) <= _t65)), _t65 <= 1.0f);
+    let _t67 = _t66 * _t66;
+    let _t68 = _t67 * _t10 * _t20;
     let _t69 = _t68 * _t68;
-    let _t70 = _t65 * _t24;
-    let _t71 = ((_t68 * (1.60577024e-10f - 7.54937183e-13f * _t67) + (2.75573188e-06f - 2.50520991e-08f * _t67)) * _t69 + ((0.00833333377f - 0.000198412701f * _t67) * _t68 + (1.0f - 0.166666672f * _t67))) * (_t70 * _t16);
-    let _t72 = (2.48015876e-05f - _t67 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t67) * _t68) * _t69 + (1.0f - _t67 * 0.5f + _t68 * (0.0416666679f - 0.00138888892f * _t67));
-    let _t73 = _t71 * _t8 + _t72 * _t15;
-    let _t74 = _t66 * _t14 * _t19;
-    let _t75 = _t74 * _t74;
-    let _t76 = _t75 * _t75;
-    let _t77 = (2.48015876e-05f - _t74 * 2.75573029e-07f + _t75 * (2.08744777e-09f - _t74 * 1.13046204e-11f)) * _t76 + ((0.0416666679f - 0.00138888892f * _t74) * _t75 + (1.0f - _t74 * 0.5f));
-    let _t78 = ((0.00833333377f - _t74 * 0.000198412701f) * _t75 + (1.0f - 0.166666672f * _t74) + _t76 * (_t75 * (1.60577024e-10f - 7.54937183e-13f * _t74) + (2.75573188e-06f - 2.50520991e-08f * _t74))) * (_t13 * _t70);
-    let _t79 = _t4 * _t77 - _t78 * _t11;
-    let _t80 = _t66 * _t10 * _t19;
-    let _t81 = _t80 * _t80;
-    let _t82 = _t81 * _t81;
-    let _t83 = _t82 * ((2.08744777e-09f - 1.13046204e-11f * _t80) * _t81 + (2.48015876e-05f - _t80 * 2.75573029e-07f)) + (1.0f - _t80 * 0.5f + (0.0416666679f - 0.00138888892f * _t80) * _t81);
-    let _t84 = (((1.60577024e-10f - 7.54937183e-13f * _t80) * _t81 + (2.75573188e-06f - 2.50520991e-08f * _t80)) * _t82 + ((0.00833333377f - 0.000198412701f * _t80) * _t81 + (1.0f - 0.166666672f * _t80))) * (_t9 * _t70);
-    let _t85 = _t12 * _t83 - _t84 * _t6;
-    let _t86 = 4.0f * (_t73 * (_t79 * _t85)) + _t73 * 3.0f;
-    let _t87 = _t86 * _t86;
-    let _t88 = _t78 * _t4 + _t11 * _t77;
-    let _t89 = _t72 * _t8 - _t71 * _t15;
-    let _t90 = 4.0f * (_t88 * _t85 * _t89) + _t88 * 3.0f;
-    let _t91 = _t90 * _t90;
-    let _t92 = _t84 * _t12 + _t83 * _t6;
-    let _t93 = _t92 * 3.0f + 4.0f * (_t92 * _t79 * _t89);
-    let _t94 = _t93 * _t93;
-    let _t95 = _t87 + (_t91 + _t94);
-    let _t96 = select(0.0f, 1.0f / _t95, _t95 > 1.17549435e-38f);
-    let _t97 = _t96 * (_t66 * _t94);
-    let _t98 = _t97 * _t97;
-    let _t99 = _t98 * _t98;
-    let _t100 = sqrt(_t95) * _t96 * _t65;
-    let _t101 = (1.0f - _t97 * 0.5f + _t98 * (0.0416666679f - 0.00138888892f * _t97) + ((2.08744777e-09f - _t97 * 1.13046204e-11f) * _t98 + (2.48015876e-05f - _t97 * 2.75573029e-07f)) * _t99) * _t12 - _t100 * _t93 * (1.0f - 0.166666672f * _t97 + (0.00833333377f - 0.000198412701f * _t97) * _t98 + _t99 * (2.75573188e-06f - 2.50520991e-08f * _t97 + (1.60577024e-10f - 7.54937183e-13f * _t97) * _t98)) * _t6;
-    let _t102 = _t96 * (_t66 * _t87);
-    let _t103 = _t102 * _t102;
-    let _t104 = _t103 * _t103;
-    let _t105 = ((0.0416666679f - 0.00138888892f * _t102) * _t103 + (1.0f - _t102 * 0.5f) + (2.48015876e-05f - _t102 * 2.75573029e-07f + (2.08744777e-09f - _t102 * 1.13046204e-11f) * _t103) * _t104) * _t8 - _t86 * _t100 * (1.0f - _t102 * 0.166666672f + (0.00833333377f - _t102 * 0.000198412701f) * _t103 + (_t103 * (1.60577024e-10f - 7.54937183e-13f * _t102) + (2.75573188e-06f - _t102 * 2.50520991e-08f)) * _t104) * _t15;
-    let _t106 = _t96 * (_t66 * _t91);
-    let _t107 = _t106 * _t106;
-    let _t108 = _t107 * _t107;
-    let _t109 = _t4 * (1.0f - _t106 * 0.5f + (0.0416666679f - 0.00138888892f * _t106) * _t107 + (_t107 * (2.08744777e-09f - _t106 * 1.13046204e-11f) + (2.48015876e-05f - _t106 * 2.75573029e-07f)) * _t108) - _t11 * ((1.0f - 0.166666672f * _t106 + (0.00833333377f - 0.000198412701f * _t106) * _t107 + ((1.60577024e-10f - 7.54937183e-13f * _t106) * _t107 + (2.75573188e-06f - 2.50520991e-08f * _t106)) * _t108) * (_t90 * _t100));
-    return (3.0f * _t55 + (_t59 * 3.0f + _t63 * (_t59 * _t55) * 4.0f) + 3.0f * _t63) * (_t101 * 3.0f + _t105 * 3.0f + 4.0f * (_t101 * _t105 * _t109) + 3.0f * _t109);
+    let _t70 = _t69 * _t69;
+    let _t71 = _t66 * _t25;
+    let _t72 = _t9 * _t71;
+    let _t73 = ((0.00833333377f - _t68 * 0.000198412701f) * _t69 + (1.0f - 0.166666672f * _t68) + _t70 * (_t69 * (1.60577024e-10f - 7.54937183e-13f * _t68) + (2.75573188e-06f - 2.50520991e-08f * _t68))) * _t72;
+    let _t74 = (2.48015876e-05f - _t68 * 2.75573029e-07f + _t69 * (2.08744777e-09f - _t68 * 1.13046204e-11f)) * _t70 + ((0.0416666679f - 0.00138888892f * _t68) * _t69 + (1.0f - _t68 * 0.5f));
+    let _t75 = _t73 * _t11 + _t4 * _t74;
+    let _t76 = _t67 * _t14 * _t20;
+    let _t77 = _t76 * _t76;
+    let _t78 = _t77 * _t77;
+    let _t79 = _t78 * ((2.08744777e-09f - 1.13046204e-11f * _t76) * _t77 + (2.48015876e-05f - _t76 * 2.75573029e-07f)) + (1.0f - _t76 * 0.5f + (0.0416666679f - 0.00138888892f * _t76) * _t77);
+    let _t80 = _t13 * _t71;
+    let _t81 = (((1.60577024e-10f - 7.54937183e-13f * _t76) * _t77 + (2.75573188e-06f - 2.50520991e-08f * _t76)) * _t78 + ((0.00833333377f - 0.000198412701f * _t76) * _t77 + (1.0f - 0.166666672f * _t76))) * _t80;
+    let _t82 = _t6 * _t79 - _t81 * _t12;
+    let _t83 = _t75 * _t82;
+    let _t84 = _t20 * (_t67 * _t18);
+    let _t85 = _t84 * _t84;
+    let _t86 = _t85 * _t85;
+    let _t87 = (2.48015876e-05f - _t84 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t84) * _t85) * _t86 + (1.0f - _t84 * 0.5f + _t85 * (0.0416666679f - 0.00138888892f * _t84));
+    let _t88 = _t71 * _t17;
+    let _t89 = ((_t85 * (1.60577024e-10f - 7.54937183e-13f * _t84) + (2.75573188e-06f - 2.50520991e-08f * _t84)) * _t86 + ((0.00833333377f - 0.000198412701f * _t84) * _t85 + (1.0f - 0.166666672f * _t84))) * _t88;
+    let _t90 = _t87 * _t8 - _t89 * _t15;
+    let _t91 = 4.0f * (_t83 * _t90) + _t75 * 3.0f;
+    let _t92 = _t11 * _t74 - _t73 * _t4;
+    let _t93 = _t92 * _t82;
+    let _t94 = 4.0f * (_t90 * _t93);
+    let _t95 = _t94 + _t92 * 3.0f;
+    let _t96 = _t89 * _t8 + _t87 * _t15;
+    let _t97 = 4.0f * (_t96 * _t93) + _t96 * 3.0f;
+    let _t98 = _t81 * _t6 + _t79 * _t12;
+    let _t99 = _t98 * _t92;
+    let _t100 = _t98 * 3.0f + 4.0f * (_t99 * _t90);
+    let _t101 = _t97 * _t97 + (_t91 * _t91 + _t100 * _t100);
+    let _t102 = sqrt(_t101) * (select(0.0f, 1.0f / _t101, _t101 > 1.17549435e-38f)) * _t66;
+    let _t103 = _t91 * _t102 - _t72;
+    let _t104 = _t82 * 3.0f;
+    let _t105 = _t102 * _t100 - _t80;
+    let _t106 = _t90 * 3.0f;
+    let _t107 = _t97 * _t102 - _t88;
+    let _t108 = -((_t91 + _t95 * _t103 * 0.5f) * _t103 + ((_t94 + _t104) * _t105 * 0.5f + _t100 - 4.0f * (_t90 * (_t98 * _t75)) * _t103) * _t105 - (_t105 * (4.0f * (_t99 * _t96)) + _t103 * (4.0f * (_t83 * _t96)) - _t97 - (_t94 + _t106) * _t107 * 0.5f) * _t107 - (_t104 + (_t95 + _t106)));
+    let _t109 = 7.00000715f * abs(_t66);
+    let _t110 = _t62 + _t109;
+    let _t111 = _t62 - _t109;
+    return (select(_t63, (select(_t64, _t60, _t64 <= _t60)), _t60 <= _t63)) * (select(_t110, (select(_t111, _t108, _t111 <= _t108)), _t108 <= _t110));
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 337.

@@ -8,7 +8,9 @@ description: |
     Source: Neovius 1883; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 2 projection steps: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 6. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 6. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> neovius_proj_o6_field(<vec3 p>)
     - <float> neovius_proj_o6_offset(<vec3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 3 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 4. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    7.0000069999999992 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    7.0000069999999992 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 15
-    - offset: 453
-    - shell: 874
+    - offset: 394
+    - shell: 752
     - normal: 483
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o6","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":453,"shell":874,"normal":483}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"neovius_proj_o6","surface":"neovius","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":null},{"h":0.01,"bound":null},{"h":0.025,"bound":null},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":7.000006999999999,"hessian_bound":7.000007,"ops":{"field":15,"offset":394,"shell":752,"normal":483}} */
 #ifndef OFFSETGEN_NEOVIUS_PROJ_O6_GLSL
 #define OFFSETGEN_NEOVIUS_PROJ_O6_GLSL
 
@@ -92,279 +95,282 @@ highp float neovius_proj_o6_field(highp vec3 p)
     return _t0 * _t1 * _t2 * 4.0 + 3.0 * _t2 + _t0 * 3.0 + _t1 * 3.0;
 }
 
-// phi(p, h) of order 6: zero on the surface moved by h along +grad F. Total ops: 453.
+// phi(p, h) of order 6: zero on the surface moved by h along +grad F. Total ops: 394.
 highp float neovius_proj_o6_offset(highp vec3 p, highp float h)
-{
-    highp float _t0 = 6.28318548 * h;
-    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
-    highp float _t2 = _t1 * _t1;
-    highp float _t3 = 6.28318548 * p.x;
-    highp float _t4 = neovius_proj_o6_cos(_t3);
-    highp float _t5 = p.z * 6.28318548;
-    highp float _t6 = neovius_proj_o6_sin(_t5);
-    highp float _t7 = 6.28318548 * p.y;
-    highp float _t8 = neovius_proj_o6_cos(_t7);
-    highp float _t9 = _t6 * 3.0 + 4.0 * (_t6 * _t8 * _t4);
-    highp float _t10 = _t9 * _t9;
-    highp float _t11 = neovius_proj_o6_cos(_t5);
-    highp float _t12 = neovius_proj_o6_sin(_t7);
-    highp float _t13 = 4.0 * (_t11 * _t12 * _t4) + _t12 * 3.0;
-    highp float _t14 = _t13 * _t13;
-    highp float _t15 = neovius_proj_o6_sin(_t3);
-    highp float _t16 = 3.0 * _t15 + 4.0 * (_t11 * _t8 * _t15);
-    highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t14 + _t10 + _t17;
-    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
-    highp float _t20 = _t10 * _t2 * _t19;
-    highp float _t21 = _t20 * _t20;
-    highp float _t22 = _t21 * _t21;
-    highp float _t23 = 1.0 - _t20 * 0.5 + (0.0416666679 - _t20 * 0.00138888892) * _t21 + (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21) * _t22;
-    highp float _t24 = _t1 * (_t19 * sqrt(_t18));
-    highp float _t25 = (1.0 - _t20 * 0.166666672 + (0.00833333377 - _t20 * 0.000198412701) * _t21 + (2.75573188e-06 - _t20 * 2.50520991e-08 + (1.60577024e-10 - _t20 * 7.54937183e-13) * _t21) * _t22) * (_t9 * _t24);
-    highp float _t26 = _t6 * _t23 + _t25 * _t11;
-    highp float _t27 = _t2 * _t17 * _t19;
-    highp float _t28 = _t27 * _t27;
-    highp float _t29 = _t28 * _t28;
-    highp float _t30 = 1.0 - _t27 * 0.5 + (0.0416666679 - _t27 * 0.00138888892) * _t28 + _t29 * (2.48015876e-05 - _t27 * 2.75573029e-07 + _t28 * (2.08744777e-09 - _t27 * 1.13046204e-11));
-    highp float _t31 = (_t29 * ((1.60577024e-10 - _t27 * 7.54937183e-13) * _t28 + (2.75573188e-06 - _t27 * 2.50520991e-08)) + ((0.00833333377 - _t27 * 0.000198412701) * _t28 + (1.0 - _t27 * 0.166666672))) * (_t16 * _t24);
-    highp float _t32 = _t30 * _t4 - _t31 * _t15;
-    highp float _t33 = _t14 * _t2 * _t19;
-    highp float _t34 = _t33 * _t33;
-    highp float _t35 = _t34 * _t34;
-    highp float _t36 = 1.0 - _t33 * 0.5 + (0.0416666679 - _t33 * 0.00138888892) * _t34 + _t35 * (_t34 * (2.08744777e-09 - _t33 * 1.13046204e-11) + (2.48015876e-05 - _t33 * 2.75573029e-07));
-    highp float _t37 = _t13 * _t24 * (1.0 - _t33 * 0.166666672 + _t34 * (0.00833333377 - _t33 * 0.000198412701) + _t35 * (2.75573188e-06 - _t33 * 2.50520991e-08 + _t34 * (1.60577024e-10 - _t33 * 7.54937183e-13)));
-    highp float _t38 = _t8 * _t36 - _t37 * _t12;
-    highp float _t39 = 3.0 * _t26 + 4.0 * (_t32 * _t26 * _t38);
-    highp float _t40 = _t39 * _t39;
-    highp float _t41 = _t30 * _t15 + _t31 * _t4;
-    highp float _t42 = _t11 * _t23 - _t25 * _t6;
-    highp float _t43 = 4.0 * (_t41 * _t42 * _t38) + _t41 * 3.0;
-    highp float _t44 = _t43 * _t43;
-    highp float _t45 = _t37 * _t8 + _t12 * _t36;
-    highp float _t46 = 4.0 * (_t32 * (_t45 * _t42)) + _t45 * 3.0;
-    highp float _t47 = _t46 * _t46;
-    highp float _t48 = _t40 + _t44 + _t47;
-    highp float _t49 = (_t48 > 1.17549435e-38) ? 1.0 / _t48 : 0.0;
-    highp float _t50 = _t49 * (_t44 * _t2);
-    highp float _t51 = _t50 * _t50;
-    highp float _t52 = _t51 * _t51;
-    highp float _t53 = _t1 * (sqrt(_t48) * _t49);
-    highp float _t54 = (1.0 - 0.166666672 * _t50 + _t51 * (0.00833333377 - 0.000198412701 * _t50) + ((1.60577024e-10 - 7.54937183e-13 * _t50) * _t51 + (2.75573188e-06 - 2.50520991e-08 * _t50)) * _t52) * (_t53 * _t43);
-    highp float _t55 = 1.0 - _t50 * 0.5 + (0.0416666679 - 0.00138888892 * _t50) * _t51 + (2.48015876e-05 - _t50 * 2.75573029e-07 + _t51 * (2.08744777e-09 - 1.13046204e-11 * _t50)) * _t52;
-    highp float _t56 = _t4 * _t54 + _t55 * _t15;
-    highp float _t57 = _t2 * _t47 * _t49;
-    highp float _t58 = _t57 * _t57;
-    highp float _t59 = _t58 * _t58;
-    highp float _t60 = (2.48015876e-05 - _t57 * 2.75573029e-07 + _t58 * (2.08744777e-09 - 1.13046204e-11 * _t57)) * _t59 + (1.0 - _t57 * 0.5 + _t58 * (0.0416666679 - 0.00138888892 * _t57));
-    highp float _t61 = ((2.75573188e-06 - 2.50520991e-08 * _t57 + _t58 * (1.60577024e-10 - 7.54937183e-13 * _t57)) * _t59 + (1.0 - 0.166666672 * _t57 + _t58 * (0.00833333377 - 0.000198412701 * _t57))) * (_t46 * _t53);
-    highp float _t62 = _t8 * _t60 - _t61 * _t12;
-    highp float _t63 = _t40 * _t2 * _t49;
-    highp float _t64 = _t63 * _t63;
-    highp float _t65 = _t64 * _t64;
-    highp float _t66 = 1.0 - _t63 * 0.5 + _t64 * (0.0416666679 - 0.00138888892 * _t63) + ((2.08744777e-09 - 1.13046204e-11 * _t63) * _t64 + (2.48015876e-05 - _t63 * 2.75573029e-07)) * _t65;
-    highp float _t67 = (_t64 * (0.00833333377 - 0.000198412701 * _t63) + (1.0 - 0.166666672 * _t63) + (2.75573188e-06 - 2.50520991e-08 * _t63 + (1.60577024e-10 - 7.54937183e-13 * _t63) * _t64) * _t65) * (_t39 * _t53);
-    highp float _t68 = _t11 * _t66 - _t6 * _t67;
-    highp float _t69 = 3.0 * _t56 + 4.0 * (_t62 * _t68 * _t56);
-    highp float _t70 = _t69 * _t69;
-    highp float _t71 = _t66 * _t6 + _t11 * _t67;
-    highp float _t72 = _t55 * _t4 - _t15 * _t54;
-    highp float _t73 = 3.0 * _t71 + 4.0 * (_t62 * _t71 * _t72);
-    highp float _t74 = _t73 * _t73;
-    highp float _t75 = _t61 * _t8 + _t12 * _t60;
-    highp float _t76 = 4.0 * (_t75 * _t68 * _t72) + _t75 * 3.0;
-    highp float _t77 = _t76 * _t76;
-    highp float _t78 = _t74 + _t77 + _t70;
-    highp float _t79 = (_t78 > 1.17549435e-38) ? 1.0 / _t78 : 0.0;
-    highp float _t80 = _t2 * _t70 * _t79;
-    highp float _t81 = _t80 * _t80;
-    highp float _t82 = _t81 * _t81;
-    highp float _t83 = _t1 * (sqrt(_t78) * _t79);
-    highp float _t84 = ((0.0416666679 - 0.00138888892 * _t80) * _t81 + (1.0 - _t80 * 0.5) + (2.48015876e-05 - 2.75573029e-07 * _t80 + _t81 * (2.08744777e-09 - 1.13046204e-11 * _t80)) * _t82) * _t4 - _t83 * _t69 * ((0.00833333377 - 0.000198412701 * _t80) * _t81 + (1.0 - 0.166666672 * _t80) + (2.75573188e-06 - 2.50520991e-08 * _t80 + _t81 * (1.60577024e-10 - 7.54937183e-13 * _t80)) * _t82) * _t15;
-    highp float _t85 = _t74 * _t2 * _t79;
-    highp float _t86 = _t85 * _t85;
-    highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t11 * (1.0 - _t85 * 0.5 + (0.0416666679 - 0.00138888892 * _t85) * _t86 + (_t86 * (2.08744777e-09 - 1.13046204e-11 * _t85) + (2.48015876e-05 - _t85 * 2.75573029e-07)) * _t87) - _t6 * (_t83 * _t73 * (((1.60577024e-10 - 7.54937183e-13 * _t85) * _t86 + (2.75573188e-06 - 2.50520991e-08 * _t85)) * _t87 + (1.0 - 0.166666672 * _t85 + _t86 * (0.00833333377 - 0.000198412701 * _t85))));
-    highp float _t89 = _t2 * _t77 * _t79;
-    highp float _t90 = _t89 * _t89;
-    highp float _t91 = _t90 * _t90;
-    highp float _t92 = (1.0 - _t89 * 0.5 + _t90 * (0.0416666679 - 0.00138888892 * _t89) + _t91 * (2.48015876e-05 - 2.75573029e-07 * _t89 + (2.08744777e-09 - 1.13046204e-11 * _t89) * _t90)) * _t8 - (_t91 * ((1.60577024e-10 - 7.54937183e-13 * _t89) * _t90 + (2.75573188e-06 - 2.50520991e-08 * _t89)) + (_t90 * (0.00833333377 - 0.000198412701 * _t89) + (1.0 - 0.166666672 * _t89))) * (_t83 * _t76) * _t12;
-    return 4.0 * (_t84 * _t88 * _t92) + _t84 * 3.0 + 3.0 * _t92 + _t88 * 3.0;
-}
-
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 874.
-highp float neovius_proj_o6_shell(highp vec3 p, highp float t)
 {
     highp float _t0 = 6.28318548 * p.y;
     highp float _t1 = neovius_proj_o6_cos(_t0);
-    highp float _t2 = 6.28318548 * (t * 0.5);
+    highp float _t2 = 6.28318548 * h;
     highp float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
     highp float _t4 = _t3 * _t3;
-    highp float _t5 = p.z * 6.28318548;
-    highp float _t6 = neovius_proj_o6_cos(_t5);
-    highp float _t7 = neovius_proj_o6_sin(_t0);
-    highp float _t8 = 6.28318548 * p.x;
-    highp float _t9 = neovius_proj_o6_cos(_t8);
-    highp float _t10 = 4.0 * (_t6 * _t7 * _t9) + _t7 * 3.0;
+    highp float _t5 = 6.28318548 * p.x;
+    highp float _t6 = neovius_proj_o6_sin(_t5);
+    highp float _t7 = p.z * 6.28318548;
+    highp float _t8 = neovius_proj_o6_cos(_t7);
+    highp float _t9 = _t8 * _t1;
+    highp float _t10 = 3.0 * _t6 + 4.0 * (_t9 * _t6);
     highp float _t11 = _t10 * _t10;
-    highp float _t12 = neovius_proj_o6_sin(_t5);
-    highp float _t13 = _t12 * 3.0 + 4.0 * (_t12 * _t1 * _t9);
-    highp float _t14 = _t13 * _t13;
-    highp float _t15 = neovius_proj_o6_sin(_t8);
-    highp float _t16 = 3.0 * _t15 + 4.0 * (_t6 * _t1 * _t15);
-    highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t11 + _t14 + _t17;
-    highp float _t19 = (_t18 > 1.17549435e-38) ? 1.0 / _t18 : 0.0;
-    highp float _t20 = _t4 * _t11 * _t19;
-    highp float _t21 = _t20 * _t20;
+    highp float _t12 = neovius_proj_o6_sin(_t0);
+    highp float _t13 = neovius_proj_o6_cos(_t5);
+    highp float _t14 = 4.0 * (_t8 * _t12 * _t13) + _t12 * 3.0;
+    highp float _t15 = _t14 * _t14;
+    highp float _t16 = neovius_proj_o6_sin(_t7);
+    highp float _t17 = _t16 * 3.0 + 4.0 * (_t16 * _t1 * _t13);
+    highp float _t18 = _t17 * _t17;
+    highp float _t19 = _t15 + _t18 + _t11;
+    highp float _t20 = (_t19 > 1.17549435e-38) ? 1.0 / _t19 : 0.0;
+    highp float _t21 = _t4 * _t11 * _t20;
     highp float _t22 = _t21 * _t21;
-    highp float _t23 = (2.48015876e-05 - _t20 * 2.75573029e-07 + (2.08744777e-09 - _t20 * 1.13046204e-11) * _t21) * _t22 + ((0.0416666679 - 0.00138888892 * _t20) * _t21 + (1.0 - _t20 * 0.5));
-    highp float _t24 = _t19 * sqrt(_t18);
-    highp float _t25 = _t3 * _t24;
-    highp float _t26 = _t10 * _t25 * ((0.00833333377 - _t20 * 0.000198412701) * _t21 + (1.0 - _t20 * 0.166666672) + (_t21 * (1.60577024e-10 - 7.54937183e-13 * _t20) + (2.75573188e-06 - _t20 * 2.50520991e-08)) * _t22);
-    highp float _t27 = _t23 * _t7 + _t1 * _t26;
-    highp float _t28 = _t4 * _t14 * _t19;
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = 1.0 - _t21 * 0.5 + (0.0416666679 - _t21 * 0.00138888892) * _t22 + _t23 * (2.48015876e-05 - _t21 * 2.75573029e-07 + _t22 * (2.08744777e-09 - _t21 * 1.13046204e-11));
+    highp float _t25 = _t3 * (_t20 * sqrt(_t19));
+    highp float _t26 = (_t23 * ((1.60577024e-10 - _t21 * 7.54937183e-13) * _t22 + (2.75573188e-06 - _t21 * 2.50520991e-08)) + ((0.00833333377 - _t21 * 0.000198412701) * _t22 + (1.0 - _t21 * 0.166666672))) * (_t10 * _t25);
+    highp float _t27 = _t24 * _t13 - _t26 * _t6;
+    highp float _t28 = _t15 * _t4 * _t20;
     highp float _t29 = _t28 * _t28;
     highp float _t30 = _t29 * _t29;
-    highp float _t31 = (0.0416666679 - 0.00138888892 * _t28) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (_t29 * (2.08744777e-09 - _t28 * 1.13046204e-11) + (2.48015876e-05 - _t28 * 2.75573029e-07));
-    highp float _t32 = ((0.00833333377 - _t28 * 0.000198412701) * _t29 + (1.0 - 0.166666672 * _t28) + _t30 * ((1.60577024e-10 - 7.54937183e-13 * _t28) * _t29 + (2.75573188e-06 - 2.50520991e-08 * _t28))) * (_t13 * _t25);
-    highp float _t33 = _t31 * _t6 - _t12 * _t32;
-    highp float _t34 = _t19 * (_t4 * _t17);
+    highp float _t31 = _t14 * _t25 * (1.0 - _t28 * 0.166666672 + _t29 * (0.00833333377 - _t28 * 0.000198412701) + _t30 * (2.75573188e-06 - _t28 * 2.50520991e-08 + _t29 * (1.60577024e-10 - _t28 * 7.54937183e-13)));
+    highp float _t32 = 1.0 - _t28 * 0.5 + (0.0416666679 - _t28 * 0.00138888892) * _t29 + _t30 * (_t29 * (2.08744777e-09 - _t28 * 1.13046204e-11) + (2.48015876e-05 - _t28 * 2.75573029e-07));
+    highp float _t33 = _t31 * _t1 + _t12 * _t32;
+    highp float _t34 = _t18 * _t4 * _t20;
     highp float _t35 = _t34 * _t34;
     highp float _t36 = _t35 * _t35;
-    highp float _t37 = 1.0 - _t34 * 0.5 + _t35 * (0.0416666679 - 0.00138888892 * _t34) + (2.48015876e-05 - _t34 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t34) * _t35) * _t36;
-    highp float _t38 = ((2.75573188e-06 - 2.50520991e-08 * _t34 + _t35 * (1.60577024e-10 - 7.54937183e-13 * _t34)) * _t36 + (1.0 - 0.166666672 * _t34 + _t35 * (0.00833333377 - 0.000198412701 * _t34))) * (_t25 * _t16);
-    highp float _t39 = _t37 * _t9 - _t15 * _t38;
-    highp float _t40 = 3.0 * _t27 + 4.0 * (_t33 * _t39 * _t27);
+    highp float _t37 = 1.0 - _t34 * 0.5 + (0.0416666679 - _t34 * 0.00138888892) * _t35 + (2.48015876e-05 - _t34 * 2.75573029e-07 + (2.08744777e-09 - _t34 * 1.13046204e-11) * _t35) * _t36;
+    highp float _t38 = (1.0 - _t34 * 0.166666672 + (0.00833333377 - _t34 * 0.000198412701) * _t35 + (2.75573188e-06 - _t34 * 2.50520991e-08 + (1.60577024e-10 - _t34 * 7.54937183e-13) * _t35) * _t36) * (_t17 * _t25);
+    highp float _t39 = _t8 * _t37 - _t38 * _t16;
+    highp float _t40 = 4.0 * (_t27 * (_t33 * _t39)) + _t33 * 3.0;
     highp float _t41 = _t40 * _t40;
-    highp float _t42 = _t9 * _t38 + _t37 * _t15;
-    highp float _t43 = _t1 * _t23 - _t26 * _t7;
-    highp float _t44 = _t42 * 3.0 + 4.0 * (_t33 * _t42 * _t43);
+    highp float _t42 = _t16 * _t37 + _t38 * _t8;
+    highp float _t43 = _t1 * _t32 - _t31 * _t12;
+    highp float _t44 = 3.0 * _t42 + 4.0 * (_t27 * _t42 * _t43);
     highp float _t45 = _t44 * _t44;
-    highp float _t46 = _t31 * _t12 + _t6 * _t32;
-    highp float _t47 = 4.0 * (_t43 * _t39 * _t46) + 3.0 * _t46;
+    highp float _t46 = _t24 * _t6 + _t26 * _t13;
+    highp float _t47 = 4.0 * (_t46 * _t39 * _t43) + _t46 * 3.0;
     highp float _t48 = _t47 * _t47;
-    highp float _t49 = _t41 + (_t45 + _t48);
+    highp float _t49 = _t45 + _t48 + _t41;
     highp float _t50 = (_t49 > 1.17549435e-38) ? 1.0 / _t49 : 0.0;
-    highp float _t51 = _t50 * (_t4 * _t41);
+    highp float _t51 = _t4 * _t41 * _t50;
     highp float _t52 = _t51 * _t51;
     highp float _t53 = _t52 * _t52;
-    highp float _t54 = _t53 * (_t52 * (2.08744777e-09 - 1.13046204e-11 * _t51) + (2.48015876e-05 - 2.75573029e-07 * _t51)) + (1.0 - _t51 * 0.5 + (0.0416666679 - 0.00138888892 * _t51) * _t52);
-    highp float _t55 = _t3 * (_t50 * sqrt(_t49));
-    highp float _t56 = ((0.00833333377 - 0.000198412701 * _t51) * _t52 + (1.0 - 0.166666672 * _t51) + (2.75573188e-06 - 2.50520991e-08 * _t51 + (1.60577024e-10 - 7.54937183e-13 * _t51) * _t52) * _t53) * (_t40 * _t55);
-    highp float _t57 = _t54 * _t7 + _t56 * _t1;
-    highp float _t58 = _t50 * (_t4 * _t45);
-    highp float _t59 = _t58 * _t58;
+    highp float _t54 = (2.48015876e-05 - _t51 * 2.75573029e-07 + _t52 * (2.08744777e-09 - 1.13046204e-11 * _t51)) * _t53 + (1.0 - _t51 * 0.5 + _t52 * (0.0416666679 - 0.00138888892 * _t51));
+    highp float _t55 = _t3 * (sqrt(_t49) * _t50);
+    highp float _t56 = _t40 * _t55;
+    highp float _t57 = ((2.75573188e-06 - 2.50520991e-08 * _t51 + _t52 * (1.60577024e-10 - 7.54937183e-13 * _t51)) * _t53 + (1.0 - 0.166666672 * _t51 + _t52 * (0.00833333377 - 0.000198412701 * _t51))) * _t56;
+    highp float _t58 = _t1 * _t54 - _t57 * _t12;
+    highp float _t59 = _t45 * _t4 * _t50;
     highp float _t60 = _t59 * _t59;
-    highp float _t61 = 1.0 - _t58 * 0.5 + _t59 * (0.0416666679 - 0.00138888892 * _t58) + (_t59 * (2.08744777e-09 - _t58 * 1.13046204e-11) + (2.48015876e-05 - _t58 * 2.75573029e-07)) * _t60;
-    highp float _t62 = (1.0 - 0.166666672 * _t58 + _t59 * (0.00833333377 - 0.000198412701 * _t58) + _t60 * (_t59 * (1.60577024e-10 - 7.54937183e-13 * _t58) + (2.75573188e-06 - 2.50520991e-08 * _t58))) * (_t44 * _t55);
-    highp float _t63 = _t61 * _t9 - _t62 * _t15;
-    highp float _t64 = _t50 * (_t4 * _t48);
-    highp float _t65 = _t64 * _t64;
-    highp float _t66 = _t65 * _t65;
-    highp float _t67 = (2.48015876e-05 - _t64 * 2.75573029e-07 + (2.08744777e-09 - _t64 * 1.13046204e-11) * _t65) * _t66 + ((0.0416666679 - _t64 * 0.00138888892) * _t65 + (1.0 - _t64 * 0.5));
-    highp float _t68 = _t55 * _t47 * (1.0 - _t64 * 0.166666672 + (0.00833333377 - _t64 * 0.000198412701) * _t65 + ((1.60577024e-10 - _t64 * 7.54937183e-13) * _t65 + (2.75573188e-06 - _t64 * 2.50520991e-08)) * _t66);
-    highp float _t69 = _t6 * _t67 - _t12 * _t68;
-    highp float _t70 = 4.0 * (_t57 * _t63 * _t69) + _t57 * 3.0;
-    highp float _t71 = _t70 * _t70;
-    highp float _t72 = _t67 * _t12 + _t6 * _t68;
-    highp float _t73 = _t1 * _t54 - _t56 * _t7;
-    highp float _t74 = 3.0 * _t72 + 4.0 * (_t63 * (_t73 * _t72));
-    highp float _t75 = _t74 * _t74;
-    highp float _t76 = _t62 * _t9 + _t61 * _t15;
-    highp float _t77 = 3.0 * _t76 + 4.0 * (_t73 * _t76 * _t69);
-    highp float _t78 = _t77 * _t77;
-    highp float _t79 = _t75 + (_t71 + _t78);
-    highp float _t80 = (_t79 > 1.17549435e-38) ? 1.0 / _t79 : 0.0;
-    highp float _t81 = _t4 * _t71 * _t80;
-    highp float _t82 = _t81 * _t81;
-    highp float _t83 = _t82 * _t82;
-    highp float _t84 = _t3 * (sqrt(_t79) * _t80);
-    highp float _t85 = _t1 * ((2.48015876e-05 - 2.75573029e-07 * _t81 + _t82 * (2.08744777e-09 - 1.13046204e-11 * _t81)) * _t83 + (_t82 * (0.0416666679 - 0.00138888892 * _t81) + (1.0 - 0.5 * _t81))) - _t7 * ((((1.60577024e-10 - 7.54937183e-13 * _t81) * _t82 + (2.75573188e-06 - 2.50520991e-08 * _t81)) * _t83 + (_t82 * (0.00833333377 - 0.000198412701 * _t81) + (1.0 - 0.166666672 * _t81))) * (_t84 * _t70));
-    highp float _t86 = _t80 * (_t4 * _t75);
-    highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t87 * _t87;
-    highp float _t89 = _t6 * (1.0 - _t86 * 0.5 + _t87 * (0.0416666679 - 0.00138888892 * _t86) + _t88 * (2.48015876e-05 - _t86 * 2.75573029e-07 + _t87 * (2.08744777e-09 - 1.13046204e-11 * _t86))) - (_t88 * (2.75573188e-06 - 2.50520991e-08 * _t86 + (1.60577024e-10 - 7.54937183e-13 * _t86) * _t87) + ((0.00833333377 - 0.000198412701 * _t86) * _t87 + (1.0 - 0.166666672 * _t86))) * (_t84 * _t74) * _t12;
-    highp float _t90 = _t80 * (_t4 * _t78);
-    highp float _t91 = _t90 * _t90;
-    highp float _t92 = _t91 * _t91;
-    highp float _t93 = (_t91 * (0.0416666679 - _t90 * 0.00138888892) + (1.0 - _t90 * 0.5) + _t92 * (_t91 * (2.08744777e-09 - _t90 * 1.13046204e-11) + (2.48015876e-05 - _t90 * 2.75573029e-07))) * _t9 - ((_t91 * (1.60577024e-10 - _t90 * 7.54937183e-13) + (2.75573188e-06 - _t90 * 2.50520991e-08)) * _t92 + (1.0 - _t90 * 0.166666672 + _t91 * (0.00833333377 - _t90 * 0.000198412701))) * (_t84 * _t77) * _t15;
-    highp float _t94 = -_t2;
-    highp float _t95 = (_t94 <= 1.0) ? (((-1.0) <= _t94) ? _t94 : (-1.0)) : 1.0;
-    highp float _t96 = _t95 * _t95;
-    highp float _t97 = _t19 * (_t96 * _t17);
-    highp float _t98 = _t97 * _t97;
+    highp float _t61 = _t60 * _t60;
+    highp float _t62 = 1.0 - _t59 * 0.5 + _t60 * (0.0416666679 - 0.00138888892 * _t59) + ((2.08744777e-09 - 1.13046204e-11 * _t59) * _t60 + (2.48015876e-05 - _t59 * 2.75573029e-07)) * _t61;
+    highp float _t63 = _t44 * _t55;
+    highp float _t64 = (_t60 * (0.00833333377 - 0.000198412701 * _t59) + (1.0 - 0.166666672 * _t59) + (2.75573188e-06 - 2.50520991e-08 * _t59 + (1.60577024e-10 - 7.54937183e-13 * _t59) * _t60) * _t61) * _t63;
+    highp float _t65 = _t8 * _t62 - _t16 * _t64;
+    highp float _t66 = _t58 * _t65;
+    highp float _t67 = _t50 * (_t48 * _t4);
+    highp float _t68 = _t67 * _t67;
+    highp float _t69 = _t68 * _t68;
+    highp float _t70 = 1.0 - _t67 * 0.5 + (0.0416666679 - 0.00138888892 * _t67) * _t68 + (2.48015876e-05 - _t67 * 2.75573029e-07 + _t68 * (2.08744777e-09 - 1.13046204e-11 * _t67)) * _t69;
+    highp float _t71 = _t55 * _t47;
+    highp float _t72 = (1.0 - 0.166666672 * _t67 + _t68 * (0.00833333377 - 0.000198412701 * _t67) + ((1.60577024e-10 - 7.54937183e-13 * _t67) * _t68 + (2.75573188e-06 - 2.50520991e-08 * _t67)) * _t69) * _t71;
+    highp float _t73 = _t70 * _t13 - _t6 * _t72;
+    highp float _t74 = _t66 * _t73 * 4.0;
+    highp float _t75 = 3.0 * _t65;
+    highp float _t76 = _t62 * _t16 + _t8 * _t64;
+    highp float _t77 = _t58 * _t76;
+    highp float _t78 = 3.0 * _t76 + 4.0 * (_t77 * _t73);
+    highp float _t79 = _t57 * _t1 + _t12 * _t54;
+    highp float _t80 = _t79 * _t65;
+    highp float _t81 = 4.0 * (_t80 * _t73) + _t79 * 3.0;
+    highp float _t82 = _t13 * _t72 + _t70 * _t6;
+    highp float _t83 = 3.0 * _t82 + 4.0 * (_t66 * _t82);
+    highp float _t84 = _t78 * _t78 + _t81 * _t81 + _t83 * _t83;
+    highp float _t85 = _t3 * (sqrt(_t84) * ((_t84 > 1.17549435e-38) ? 1.0 / _t84 : 0.0));
+    highp float _t86 = _t85 * _t78 - _t63;
+    highp float _t87 = 3.0 * _t73 + _t74;
+    highp float _t88 = _t85 * _t83 - _t71;
+    highp float _t89 = _t85 * _t81 - _t56;
+    highp float _t90 = _t58 * 3.0;
+    highp float _t91 = -(((_t74 + _t75) * _t86 * 0.5 + _t78) * _t86 + (_t87 * _t88 * 0.5 + _t83 - _t86 * (_t77 * _t82 * 4.0) - _t89 * (_t80 * _t82 * 4.0)) * _t88 - _t89 * (4.0 * (_t79 * _t76 * _t73) * _t86 - _t81 - _t89 * (_t74 + _t90) * 0.5) - (_t75 + (_t90 + _t87)));
+    highp float _t92 = 7.00000715 * abs(_t3);
+    highp float _t93 = _t9 * _t13 * 4.0 + 3.0 * _t13 + _t8 * 3.0 + _t1 * 3.0;
+    highp float _t94 = _t92 + _t93;
+    highp float _t95 = _t93 - _t92;
+    return (_t91 <= _t94) ? ((_t95 <= _t91) ? _t91 : _t95) : _t94;
+}
+
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 752.
+highp float neovius_proj_o6_shell(highp vec3 p, highp float t)
+{
+    highp float _t0 = 6.28318548 * (t * 0.5);
+    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t2 = _t1 * _t1;
+    highp float _t3 = p.z * 6.28318548;
+    highp float _t4 = neovius_proj_o6_cos(_t3);
+    highp float _t5 = 6.28318548 * p.y;
+    highp float _t6 = neovius_proj_o6_sin(_t5);
+    highp float _t7 = 6.28318548 * p.x;
+    highp float _t8 = neovius_proj_o6_cos(_t7);
+    highp float _t9 = 4.0 * (_t4 * _t6 * _t8) + _t6 * 3.0;
+    highp float _t10 = _t9 * _t9;
+    highp float _t11 = neovius_proj_o6_sin(_t3);
+    highp float _t12 = neovius_proj_o6_cos(_t5);
+    highp float _t13 = _t11 * 3.0 + 4.0 * (_t11 * _t12 * _t8);
+    highp float _t14 = _t13 * _t13;
+    highp float _t15 = neovius_proj_o6_sin(_t7);
+    highp float _t16 = _t4 * _t12;
+    highp float _t17 = 3.0 * _t15 + 4.0 * (_t16 * _t15);
+    highp float _t18 = _t17 * _t17;
+    highp float _t19 = _t10 + _t14 + _t18;
+    highp float _t20 = (_t19 > 1.17549435e-38) ? 1.0 / _t19 : 0.0;
+    highp float _t21 = _t2 * _t10 * _t20;
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = (2.48015876e-05 - _t21 * 2.75573029e-07 + (2.08744777e-09 - _t21 * 1.13046204e-11) * _t22) * _t23 + ((0.0416666679 - 0.00138888892 * _t21) * _t22 + (1.0 - _t21 * 0.5));
+    highp float _t25 = _t20 * sqrt(_t19);
+    highp float _t26 = _t1 * _t25;
+    highp float _t27 = _t9 * _t26 * ((0.00833333377 - _t21 * 0.000198412701) * _t22 + (1.0 - _t21 * 0.166666672) + (_t22 * (1.60577024e-10 - 7.54937183e-13 * _t21) + (2.75573188e-06 - _t21 * 2.50520991e-08)) * _t23);
+    highp float _t28 = _t24 * _t6 + _t12 * _t27;
+    highp float _t29 = _t2 * _t14 * _t20;
+    highp float _t30 = _t29 * _t29;
+    highp float _t31 = _t30 * _t30;
+    highp float _t32 = (0.0416666679 - 0.00138888892 * _t29) * _t30 + (1.0 - _t29 * 0.5) + _t31 * (_t30 * (2.08744777e-09 - _t29 * 1.13046204e-11) + (2.48015876e-05 - _t29 * 2.75573029e-07));
+    highp float _t33 = ((0.00833333377 - _t29 * 0.000198412701) * _t30 + (1.0 - 0.166666672 * _t29) + _t31 * ((1.60577024e-10 - 7.54937183e-13 * _t29) * _t30 + (2.75573188e-06 - 2.50520991e-08 * _t29))) * (_t13 * _t26);
+    highp float _t34 = _t32 * _t4 - _t11 * _t33;
+    highp float _t35 = _t20 * (_t2 * _t18);
+    highp float _t36 = _t35 * _t35;
+    highp float _t37 = _t36 * _t36;
+    highp float _t38 = 1.0 - _t35 * 0.5 + _t36 * (0.0416666679 - 0.00138888892 * _t35) + (2.48015876e-05 - _t35 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t35) * _t36) * _t37;
+    highp float _t39 = ((2.75573188e-06 - 2.50520991e-08 * _t35 + _t36 * (1.60577024e-10 - 7.54937183e-13 * _t35)) * _t37 + (1.0 - 0.166666672 * _t35 + _t36 * (0.00833333377 - 0.000198412701 * _t35))) * (_t26 * _t17);
+    highp float _t40 = _t38 * _t8 - _t15 * _t39;
+    highp float _t41 = 3.0 * _t28 + 4.0 * (_t34 * _t40 * _t28);
+    highp float _t42 = _t41 * _t41;
+    highp float _t43 = _t8 * _t39 + _t38 * _t15;
+    highp float _t44 = _t12 * _t24 - _t27 * _t6;
+    highp float _t45 = _t43 * 3.0 + 4.0 * (_t34 * _t43 * _t44);
+    highp float _t46 = _t45 * _t45;
+    highp float _t47 = _t32 * _t11 + _t4 * _t33;
+    highp float _t48 = 4.0 * (_t44 * _t40 * _t47) + 3.0 * _t47;
+    highp float _t49 = _t48 * _t48;
+    highp float _t50 = _t42 + (_t46 + _t49);
+    highp float _t51 = (_t50 > 1.17549435e-38) ? 1.0 / _t50 : 0.0;
+    highp float _t52 = _t51 * (_t2 * _t46);
+    highp float _t53 = _t52 * _t52;
+    highp float _t54 = _t53 * _t53;
+    highp float _t55 = 1.0 - _t52 * 0.5 + _t53 * (0.0416666679 - 0.00138888892 * _t52) + (_t53 * (2.08744777e-09 - _t52 * 1.13046204e-11) + (2.48015876e-05 - _t52 * 2.75573029e-07)) * _t54;
+    highp float _t56 = _t1 * (_t51 * sqrt(_t50));
+    highp float _t57 = _t45 * _t56;
+    highp float _t58 = (1.0 - 0.166666672 * _t52 + _t53 * (0.00833333377 - 0.000198412701 * _t52) + _t54 * (_t53 * (1.60577024e-10 - 7.54937183e-13 * _t52) + (2.75573188e-06 - 2.50520991e-08 * _t52))) * _t57;
+    highp float _t59 = _t55 * _t8 - _t58 * _t15;
+    highp float _t60 = 3.0 * _t59;
+    highp float _t61 = _t51 * (_t2 * _t42);
+    highp float _t62 = _t61 * _t61;
+    highp float _t63 = _t62 * _t62;
+    highp float _t64 = _t63 * (_t62 * (2.08744777e-09 - 1.13046204e-11 * _t61) + (2.48015876e-05 - 2.75573029e-07 * _t61)) + (1.0 - _t61 * 0.5 + (0.0416666679 - 0.00138888892 * _t61) * _t62);
+    highp float _t65 = _t41 * _t56;
+    highp float _t66 = ((0.00833333377 - 0.000198412701 * _t61) * _t62 + (1.0 - 0.166666672 * _t61) + (2.75573188e-06 - 2.50520991e-08 * _t61 + (1.60577024e-10 - 7.54937183e-13 * _t61) * _t62) * _t63) * _t65;
+    highp float _t67 = _t12 * _t64 - _t66 * _t6;
+    highp float _t68 = _t51 * (_t2 * _t49);
+    highp float _t69 = _t68 * _t68;
+    highp float _t70 = _t69 * _t69;
+    highp float _t71 = (2.48015876e-05 - _t68 * 2.75573029e-07 + (2.08744777e-09 - _t68 * 1.13046204e-11) * _t69) * _t70 + ((0.0416666679 - _t68 * 0.00138888892) * _t69 + (1.0 - _t68 * 0.5));
+    highp float _t72 = _t56 * _t48;
+    highp float _t73 = _t72 * (1.0 - _t68 * 0.166666672 + (0.00833333377 - _t68 * 0.000198412701) * _t69 + ((1.60577024e-10 - _t68 * 7.54937183e-13) * _t69 + (2.75573188e-06 - _t68 * 2.50520991e-08)) * _t70);
+    highp float _t74 = _t4 * _t71 - _t11 * _t73;
+    highp float _t75 = _t74 * (_t67 * _t59) * 4.0;
+    highp float _t76 = _t67 * 3.0 + _t75;
+    highp float _t77 = 3.0 * _t74;
+    highp float _t78 = _t58 * _t8 + _t55 * _t15;
+    highp float _t79 = _t67 * _t78;
+    highp float _t80 = 3.0 * _t78 + 4.0 * (_t79 * _t74);
+    highp float _t81 = _t71 * _t11 + _t4 * _t73;
+    highp float _t82 = 3.0 * _t81 + 4.0 * (_t59 * (_t67 * _t81));
+    highp float _t83 = _t64 * _t6 + _t66 * _t12;
+    highp float _t84 = 4.0 * (_t83 * _t59 * _t74) + _t83 * 3.0;
+    highp float _t85 = _t82 * _t82 + (_t84 * _t84 + _t80 * _t80);
+    highp float _t86 = _t1 * (sqrt(_t85) * ((_t85 > 1.17549435e-38) ? 1.0 / _t85 : 0.0));
+    highp float _t87 = _t86 * _t80 - _t57;
+    highp float _t88 = _t86 * _t84 - _t65;
+    highp float _t89 = _t86 * _t82 - _t72;
+    highp float _t90 = _t60 + _t76 + _t77 - (_t80 + (_t75 + _t60) * _t87 * 0.5 - _t83 * _t78 * _t74 * 4.0 * _t88 - _t89 * (_t79 * _t81 * 4.0)) * _t87 - _t88 * (_t84 + _t88 * _t76 * 0.5 - _t89 * (_t83 * _t81 * _t59 * 4.0)) - _t89 * (_t82 + _t89 * (_t75 + _t77) * 0.5);
+    highp float _t91 = 7.00000715 * abs(_t1);
+    highp float _t92 = _t16 * _t8 * 4.0 + 3.0 * _t8 + _t4 * 3.0 + _t12 * 3.0;
+    highp float _t93 = _t91 + _t92;
+    highp float _t94 = _t92 - _t91;
+    highp float _t95 = -_t0;
+    highp float _t96 = (_t95 <= 1.0) ? (((-1.0) <= _t95) ? _t95 : (-1.0)) : 1.0;
+    highp float _t97 = _t96 * _t96;
+    highp float _t98 = _t20 * (_t97 * _t18);
     highp float _t99 = _t98 * _t98;
-    highp float _t100 = _t95 * _t24;
-    highp float _t101 = ((_t98 * (1.60577024e-10 - 7.54937183e-13 * _t97) + (2.75573188e-06 - 2.50520991e-08 * _t97)) * _t99 + ((0.00833333377 - 0.000198412701 * _t97) * _t98 + (1.0 - 0.166666672 * _t97))) * (_t100 * _t16);
-    highp float _t102 = (2.48015876e-05 - _t97 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t97) * _t98) * _t99 + (1.0 - _t97 * 0.5 + _t98 * (0.0416666679 - 0.00138888892 * _t97));
-    highp float _t103 = _t101 * _t9 + _t102 * _t15;
-    highp float _t104 = _t96 * _t14 * _t19;
-    highp float _t105 = _t104 * _t104;
+    highp float _t100 = _t99 * _t99;
+    highp float _t101 = _t96 * _t25;
+    highp float _t102 = ((_t99 * (1.60577024e-10 - 7.54937183e-13 * _t98) + (2.75573188e-06 - 2.50520991e-08 * _t98)) * _t100 + ((0.00833333377 - 0.000198412701 * _t98) * _t99 + (1.0 - 0.166666672 * _t98))) * (_t101 * _t17);
+    highp float _t103 = (2.48015876e-05 - _t98 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t98) * _t99) * _t100 + (1.0 - _t98 * 0.5 + _t99 * (0.0416666679 - 0.00138888892 * _t98));
+    highp float _t104 = _t102 * _t8 + _t103 * _t15;
+    highp float _t105 = _t97 * _t14 * _t20;
     highp float _t106 = _t105 * _t105;
-    highp float _t107 = (2.48015876e-05 - _t104 * 2.75573029e-07 + _t105 * (2.08744777e-09 - _t104 * 1.13046204e-11)) * _t106 + ((0.0416666679 - 0.00138888892 * _t104) * _t105 + (1.0 - _t104 * 0.5));
-    highp float _t108 = ((0.00833333377 - _t104 * 0.000198412701) * _t105 + (1.0 - 0.166666672 * _t104) + _t106 * (_t105 * (1.60577024e-10 - 7.54937183e-13 * _t104) + (2.75573188e-06 - 2.50520991e-08 * _t104))) * (_t13 * _t100);
-    highp float _t109 = _t6 * _t107 - _t108 * _t12;
-    highp float _t110 = _t96 * _t11 * _t19;
-    highp float _t111 = _t110 * _t110;
+    highp float _t107 = _t106 * _t106;
+    highp float _t108 = (2.48015876e-05 - _t105 * 2.75573029e-07 + _t106 * (2.08744777e-09 - _t105 * 1.13046204e-11)) * _t107 + ((0.0416666679 - 0.00138888892 * _t105) * _t106 + (1.0 - _t105 * 0.5));
+    highp float _t109 = ((0.00833333377 - _t105 * 0.000198412701) * _t106 + (1.0 - 0.166666672 * _t105) + _t107 * (_t106 * (1.60577024e-10 - 7.54937183e-13 * _t105) + (2.75573188e-06 - 2.50520991e-08 * _t105))) * (_t13 * _t101);
+    highp float _t110 = _t4 * _t108 - _t109 * _t11;
+    highp float _t111 = _t97 * _t10 * _t20;
     highp float _t112 = _t111 * _t111;
-    highp float _t113 = _t112 * ((2.08744777e-09 - 1.13046204e-11 * _t110) * _t111 + (2.48015876e-05 - _t110 * 2.75573029e-07)) + (1.0 - _t110 * 0.5 + (0.0416666679 - 0.00138888892 * _t110) * _t111);
-    highp float _t114 = (((1.60577024e-10 - 7.54937183e-13 * _t110) * _t111 + (2.75573188e-06 - 2.50520991e-08 * _t110)) * _t112 + ((0.00833333377 - 0.000198412701 * _t110) * _t111 + (1.0 - 0.166666672 * _t110))) * (_t10 * _t100);
-    highp float _t115 = _t1 * _t113 - _t114 * _t7;
-    highp float _t116 = 4.0 * (_t103 * (_t109 * _t115)) + _t103 * 3.0;
-    highp float _t117 = _t116 * _t116;
-    highp float _t118 = _t108 * _t6 + _t12 * _t107;
-    highp float _t119 = _t102 * _t9 - _t101 * _t15;
-    highp float _t120 = 4.0 * (_t118 * _t115 * _t119) + _t118 * 3.0;
-    highp float _t121 = _t120 * _t120;
-    highp float _t122 = _t114 * _t1 + _t113 * _t7;
-    highp float _t123 = _t122 * 3.0 + 4.0 * (_t122 * _t109 * _t119);
-    highp float _t124 = _t123 * _t123;
-    highp float _t125 = _t117 + (_t121 + _t124);
-    highp float _t126 = (_t125 > 1.17549435e-38) ? 1.0 / _t125 : 0.0;
-    highp float _t127 = _t126 * (_t96 * _t117);
-    highp float _t128 = _t127 * _t127;
-    highp float _t129 = _t128 * _t128;
-    highp float _t130 = (0.0416666679 - 0.00138888892 * _t127) * _t128 + (1.0 - _t127 * 0.5) + (2.48015876e-05 - _t127 * 2.75573029e-07 + (2.08744777e-09 - _t127 * 1.13046204e-11) * _t128) * _t129;
-    highp float _t131 = sqrt(_t125) * _t126 * _t95;
-    highp float _t132 = _t116 * _t131 * (1.0 - _t127 * 0.166666672 + (0.00833333377 - _t127 * 0.000198412701) * _t128 + (_t128 * (1.60577024e-10 - 7.54937183e-13 * _t127) + (2.75573188e-06 - _t127 * 2.50520991e-08)) * _t129);
-    highp float _t133 = _t130 * _t15 + _t132 * _t9;
-    highp float _t134 = _t126 * (_t96 * _t124);
-    highp float _t135 = _t134 * _t134;
-    highp float _t136 = _t135 * _t135;
-    highp float _t137 = 1.0 - _t134 * 0.5 + _t135 * (0.0416666679 - 0.00138888892 * _t134) + ((2.08744777e-09 - _t134 * 1.13046204e-11) * _t135 + (2.48015876e-05 - _t134 * 2.75573029e-07)) * _t136;
-    highp float _t138 = _t131 * _t123 * (1.0 - 0.166666672 * _t134 + (0.00833333377 - 0.000198412701 * _t134) * _t135 + _t136 * (2.75573188e-06 - 2.50520991e-08 * _t134 + (1.60577024e-10 - 7.54937183e-13 * _t134) * _t135));
-    highp float _t139 = _t137 * _t1 - _t138 * _t7;
-    highp float _t140 = _t126 * (_t96 * _t121);
-    highp float _t141 = _t140 * _t140;
-    highp float _t142 = _t141 * _t141;
-    highp float _t143 = 1.0 - _t140 * 0.5 + (0.0416666679 - 0.00138888892 * _t140) * _t141 + (_t141 * (2.08744777e-09 - _t140 * 1.13046204e-11) + (2.48015876e-05 - _t140 * 2.75573029e-07)) * _t142;
-    highp float _t144 = (1.0 - 0.166666672 * _t140 + (0.00833333377 - 0.000198412701 * _t140) * _t141 + ((1.60577024e-10 - 7.54937183e-13 * _t140) * _t141 + (2.75573188e-06 - 2.50520991e-08 * _t140)) * _t142) * (_t120 * _t131);
-    highp float _t145 = _t6 * _t143 - _t12 * _t144;
-    highp float _t146 = 3.0 * _t133 + 4.0 * (_t139 * _t133 * _t145);
-    highp float _t147 = _t146 * _t146;
-    highp float _t148 = _t1 * _t138 + _t137 * _t7;
-    highp float _t149 = _t130 * _t9 - _t132 * _t15;
-    highp float _t150 = _t148 * 3.0 + 4.0 * (_t149 * _t148 * _t145);
-    highp float _t151 = _t150 * _t150;
-    highp float _t152 = _t6 * _t144 + _t12 * _t143;
-    highp float _t153 = 4.0 * (_t152 * _t139 * _t149) + _t152 * 3.0;
-    highp float _t154 = _t153 * _t153;
-    highp float _t155 = _t147 + _t151 + _t154;
-    highp float _t156 = (_t155 > 1.17549435e-38) ? 1.0 / _t155 : 0.0;
-    highp float _t157 = _t156 * (_t96 * _t151);
-    highp float _t158 = _t157 * _t157;
-    highp float _t159 = _t158 * _t158;
-    highp float _t160 = sqrt(_t155) * _t156 * _t95;
-    highp float _t161 = _t1 * (_t159 * ((2.08744777e-09 - 1.13046204e-11 * _t157) * _t158 + (2.48015876e-05 - _t157 * 2.75573029e-07)) + (1.0 - _t157 * 0.5 + (0.0416666679 - 0.00138888892 * _t157) * _t158)) - _t7 * ((1.0 - 0.166666672 * _t157 + (0.00833333377 - 0.000198412701 * _t157) * _t158 + ((1.60577024e-10 - 7.54937183e-13 * _t157) * _t158 + (2.75573188e-06 - 2.50520991e-08 * _t157)) * _t159) * (_t150 * _t160));
-    highp float _t162 = _t156 * (_t96 * _t147);
-    highp float _t163 = _t162 * _t162;
-    highp float _t164 = _t163 * _t163;
-    highp float _t165 = _t9 * (_t163 * (0.0416666679 - _t162 * 0.00138888892) + (1.0 - _t162 * 0.5) + (2.48015876e-05 - _t162 * 2.75573029e-07 + _t163 * (2.08744777e-09 - _t162 * 1.13046204e-11)) * _t164) - (_t164 * (_t163 * (1.60577024e-10 - _t162 * 7.54937183e-13) + (2.75573188e-06 - _t162 * 2.50520991e-08)) + (1.0 - _t162 * 0.166666672 + _t163 * (0.00833333377 - _t162 * 0.000198412701))) * (_t146 * _t160) * _t15;
-    highp float _t166 = _t156 * (_t96 * _t154);
-    highp float _t167 = _t166 * _t166;
-    highp float _t168 = _t167 * _t167;
-    highp float _t169 = (1.0 - 0.5 * _t166 + _t167 * (0.0416666679 - 0.00138888892 * _t166) + ((2.08744777e-09 - 1.13046204e-11 * _t166) * _t167 + (2.48015876e-05 - 2.75573029e-07 * _t166)) * _t168) * _t6 - _t12 * (_t160 * _t153 * ((0.00833333377 - 0.000198412701 * _t166) * _t167 + (1.0 - 0.166666672 * _t166) + _t168 * (2.75573188e-06 - 2.50520991e-08 * _t166 + (1.60577024e-10 - 7.54937183e-13 * _t166) * _t167)));
-    return (_t85 * 3.0 + 4.0 * (_t89 * _t85 * _t93) + 3.0 * _t93 + _t89 * 3.0) * (_t161 * 3.0 + (_t165 * 3.0 + (_t169 * 3.0 + _t161 * (_t169 * _t165) * 4.0)));
+    highp float _t113 = _t112 * _t112;
+    highp float _t114 = _t113 * ((2.08744777e-09 - 1.13046204e-11 * _t111) * _t112 + (2.48015876e-05 - _t111 * 2.75573029e-07)) + (1.0 - _t111 * 0.5 + (0.0416666679 - 0.00138888892 * _t111) * _t112);
+    highp float _t115 = (((1.60577024e-10 - 7.54937183e-13 * _t111) * _t112 + (2.75573188e-06 - 2.50520991e-08 * _t111)) * _t113 + ((0.00833333377 - 0.000198412701 * _t111) * _t112 + (1.0 - 0.166666672 * _t111))) * (_t9 * _t101);
+    highp float _t116 = _t12 * _t114 - _t115 * _t6;
+    highp float _t117 = 4.0 * (_t104 * (_t110 * _t116)) + _t104 * 3.0;
+    highp float _t118 = _t117 * _t117;
+    highp float _t119 = _t109 * _t4 + _t11 * _t108;
+    highp float _t120 = _t103 * _t8 - _t102 * _t15;
+    highp float _t121 = 4.0 * (_t119 * _t116 * _t120) + _t119 * 3.0;
+    highp float _t122 = _t121 * _t121;
+    highp float _t123 = _t115 * _t12 + _t114 * _t6;
+    highp float _t124 = _t123 * 3.0 + 4.0 * (_t123 * _t110 * _t120);
+    highp float _t125 = _t124 * _t124;
+    highp float _t126 = _t118 + (_t122 + _t125);
+    highp float _t127 = (_t126 > 1.17549435e-38) ? 1.0 / _t126 : 0.0;
+    highp float _t128 = sqrt(_t126) * _t127 * _t96;
+    highp float _t129 = _t128 * _t124;
+    highp float _t130 = _t127 * (_t97 * _t125);
+    highp float _t131 = _t130 * _t130;
+    highp float _t132 = _t131 * _t131;
+    highp float _t133 = _t129 * (1.0 - 0.166666672 * _t130 + (0.00833333377 - 0.000198412701 * _t130) * _t131 + _t132 * (2.75573188e-06 - 2.50520991e-08 * _t130 + (1.60577024e-10 - 7.54937183e-13 * _t130) * _t131));
+    highp float _t134 = 1.0 - _t130 * 0.5 + _t131 * (0.0416666679 - 0.00138888892 * _t130) + ((2.08744777e-09 - _t130 * 1.13046204e-11) * _t131 + (2.48015876e-05 - _t130 * 2.75573029e-07)) * _t132;
+    highp float _t135 = _t12 * _t133 + _t134 * _t6;
+    highp float _t136 = _t127 * (_t97 * _t118);
+    highp float _t137 = _t136 * _t136;
+    highp float _t138 = _t137 * _t137;
+    highp float _t139 = (0.0416666679 - 0.00138888892 * _t136) * _t137 + (1.0 - _t136 * 0.5) + (2.48015876e-05 - _t136 * 2.75573029e-07 + (2.08744777e-09 - _t136 * 1.13046204e-11) * _t137) * _t138;
+    highp float _t140 = _t117 * _t128;
+    highp float _t141 = _t140 * (1.0 - _t136 * 0.166666672 + (0.00833333377 - _t136 * 0.000198412701) * _t137 + (_t137 * (1.60577024e-10 - 7.54937183e-13 * _t136) + (2.75573188e-06 - _t136 * 2.50520991e-08)) * _t138);
+    highp float _t142 = _t139 * _t8 - _t141 * _t15;
+    highp float _t143 = _t127 * (_t97 * _t122);
+    highp float _t144 = _t143 * _t143;
+    highp float _t145 = _t144 * _t144;
+    highp float _t146 = 1.0 - _t143 * 0.5 + (0.0416666679 - 0.00138888892 * _t143) * _t144 + (_t144 * (2.08744777e-09 - _t143 * 1.13046204e-11) + (2.48015876e-05 - _t143 * 2.75573029e-07)) * _t145;
+    highp float _t147 = _t121 * _t128;
+    highp float _t148 = (1.0 - 0.166666672 * _t143 + (0.00833333377 - 0.000198412701 * _t143) * _t144 + ((1.60577024e-10 - 7.54937183e-13 * _t143) * _t144 + (2.75573188e-06 - 2.50520991e-08 * _t143)) * _t145) * _t147;
+    highp float _t149 = _t4 * _t146 - _t11 * _t148;
+    highp float _t150 = _t135 * 3.0 + 4.0 * (_t142 * _t135 * _t149);
+    highp float _t151 = _t139 * _t15 + _t141 * _t8;
+    highp float _t152 = _t134 * _t12 - _t133 * _t6;
+    highp float _t153 = 3.0 * _t151 + 4.0 * (_t152 * _t151 * _t149);
+    highp float _t154 = _t4 * _t148 + _t11 * _t146;
+    highp float _t155 = _t154 * _t152;
+    highp float _t156 = 4.0 * (_t155 * _t142) + _t154 * 3.0;
+    highp float _t157 = _t153 * _t153 + _t150 * _t150 + _t156 * _t156;
+    highp float _t158 = sqrt(_t157) * ((_t157 > 1.17549435e-38) ? 1.0 / _t157 : 0.0) * _t96;
+    highp float _t159 = _t150 * _t158 - _t129;
+    highp float _t160 = _t152 * 3.0;
+    highp float _t161 = 4.0 * (_t152 * _t142 * _t149);
+    highp float _t162 = _t158 * _t156 - _t147;
+    highp float _t163 = _t153 * _t158 - _t140;
+    highp float _t164 = _t142 * 3.0;
+    highp float _t165 = 3.0 * _t149;
+    highp float _t166 = -((_t150 + _t159 * (_t160 + _t161) * 0.5 - 4.0 * (_t135 * (_t154 * _t142)) * _t162) * _t159 + _t163 * ((_t164 + _t161) * _t163 * 0.5 + _t153 - _t162 * (_t155 * _t151 * 4.0) - _t159 * (4.0 * (_t135 * _t151 * _t149))) + _t162 * (_t162 * (_t161 + _t165) * 0.5 + _t156) - (_t160 + _t164 + _t161 + _t165));
+    highp float _t167 = 7.00000715 * abs(_t96);
+    highp float _t168 = _t92 + _t167;
+    highp float _t169 = _t92 - _t167;
+    return ((_t90 <= _t93) ? ((_t94 <= _t90) ? _t90 : _t94) : _t93) * ((_t166 <= _t168) ? ((_t169 <= _t166) ? _t166 : _t169) : _t168);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 483.

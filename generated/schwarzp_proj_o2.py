@@ -48,15 +48,15 @@ Variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 1 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-Safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+Safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi = F(q_K): phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0
+    where grad F = 0, so every function returns a finite value for finite input (do not compile with
+    -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
+    angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
+    2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
+    walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
+    F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -69,7 +69,7 @@ Total ops after CSE (each +, -, *, /, negation, call, comparison and select coun
     shell    261
     normal   152
 """
-# offsetgen-metadata {"format":1,"language":"numpy","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":139,"shell":261,"normal":152}}
+# offsetgen-metadata {"format":1,"language":"numpy","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o2","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":2,"graded_order":2,"graded_wall_order":1,"projections":0,"foot_point_trig":"angle addition","last_estimate":"field","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":139,"shell":261,"normal":152}}
 
 import numpy as np
 

@@ -11,7 +11,9 @@
  * Source:  Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
  * Method:  foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
  *          n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections
- *          give order 2(K+1) = 4.
+ *          give order 2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1),
+ *          evaluated at q_K (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own
+ *          order, and q_K needs no trig of its own).
  *          offsetgen, docs/projection.md (foot-point projection).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
@@ -40,15 +42,16 @@
  *   foot-point estimate and updates it at every projection: each wall converges at order 2 = K + 1
  *   to the distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2.
  *   Passing a local t(p) to _shell reads it at p instead: second order at best.
- * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
- *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too):
- *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
- *   0, so every function returns a finite value for finite input (do not compile with
- *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
- *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
- *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
- *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
+ * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+ *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too),
+ *   and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so
+ *   this never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no
+ *   phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for
+ *   finite input (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates
+ *   come from their values at p by angle addition, which is exact while |h| <= 1 (natural units:
+ *   |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is
+ *   clamped to 1, so thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above.
+ *   n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -57,11 +60,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   261
- *   shell    505
+ *   offset   190
+ *   shell    363
  *   normal   274
  */
-/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":261,"shell":505,"normal":274}} */
+/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":190,"shell":363,"normal":274}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O4_CL
 #define OFFSETGEN_SCHWARZP_PROJ_O4_CL
 
@@ -74,141 +77,161 @@ float schwarzp_proj_o4_fieldf(float3 p)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 261
+ * Total ops: 190
  */
 float schwarzp_proj_o4_offsetf(float3 p, float h)
 {
     const float _t0 = p.y * 2.0f;
     const float _t1 = cospi(_t0);
-    const float _t2 = p.z * 2.0f;
-    const float _t3 = sinpi(_t2);
-    const float _t4 = _t3 * _t3;
-    const float _t5 = 6.28318548f * h;
-    const float _t6 = (_t5 <= 1.0f) ? (((-1.0f) <= _t5) ? _t5 : (-1.0f)) : 1.0f;
-    const float _t7 = _t6 * _t6;
-    const float _t8 = sinpi(_t0);
+    const float _t2 = sinpi(_t0);
+    const float _t3 = _t2 * _t2;
+    const float _t4 = p.z * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = _t5 * _t5;
+    const float _t7 = p.x * 2.0f;
+    const float _t8 = sinpi(_t7);
+    const float _t9 = _t8 * _t8;
+    const float _t10 = _t3 + (_t6 + _t9);
+    const float _t11 = (_t10 > 1.17549435e-38f) ? 1.0f / _t10 : 0.0f;
+    const float _t12 = 6.28318548f * h;
+    const float _t13 = (_t12 <= 1.0f) ? (((-1.0f) <= _t12) ? _t12 : (-1.0f)) : 1.0f;
+    const float _t14 = _t13 * _t13;
+    const float _t15 = _t11 * (_t3 * _t14);
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = ((2.08744777e-09f - 1.13046204e-11f * _t15) * _t16 + (2.48015876e-05f - _t15 * 2.75573029e-07f)) * _t17 + (1.0f - _t15 * 0.5f + (0.0416666679f - 0.00138888892f * _t15) * _t16);
+    const float _t19 = _t13 * (_t11 * sqrt(_t10));
+    const float _t20 = _t19 * _t2;
+    const float _t21 = _t20 * ((2.75573188e-06f - 2.50520991e-08f * _t15 + (1.60577024e-10f - 7.54937183e-13f * _t15) * _t16) * _t17 + ((0.00833333377f - 0.000198412701f * _t15) * _t16 + (1.0f - 0.166666672f * _t15)));
+    const float _t22 = _t1 * _t18 - _t21 * _t2;
+    const float _t23 = cospi(_t7);
+    const float _t24 = _t11 * (_t9 * _t14);
+    const float _t25 = _t24 * _t24;
+    const float _t26 = _t25 * _t25;
+    const float _t27 = (2.48015876e-05f - _t24 * 2.75573029e-07f + _t25 * (2.08744777e-09f - 1.13046204e-11f * _t24)) * _t26 + (1.0f - _t24 * 0.5f + (0.0416666679f - 0.00138888892f * _t24) * _t25);
+    const float _t28 = _t8 * _t19;
+    const float _t29 = _t28 * ((0.00833333377f - 0.000198412701f * _t24) * _t25 + (1.0f - 0.166666672f * _t24) + _t26 * (2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)));
+    const float _t30 = _t23 * _t27 - _t8 * _t29;
+    const float _t31 = _t6 * _t14 * _t11;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t32 * _t32;
+    const float _t34 = _t33 * ((2.08744777e-09f - 1.13046204e-11f * _t31) * _t32 + (2.48015876e-05f - 2.75573029e-07f * _t31)) + (_t32 * (0.0416666679f - 0.00138888892f * _t31) + (1.0f - _t31 * 0.5f));
+    const float _t35 = cospi(_t4);
+    const float _t36 = _t5 * _t19;
+    const float _t37 = (1.0f - 0.166666672f * _t31 + (0.00833333377f - 0.000198412701f * _t31) * _t32 + _t33 * (2.75573188e-06f - 2.50520991e-08f * _t31 + _t32 * (1.60577024e-10f - 7.54937183e-13f * _t31))) * _t36;
+    const float _t38 = _t34 * _t35 - _t5 * _t37;
+    const float _t39 = _t1 * _t21 + _t18 * _t2;
+    const float _t40 = _t37 * _t35 + _t5 * _t34;
+    const float _t41 = _t27 * _t8 + _t23 * _t29;
+    const float _t42 = _t40 * _t40 + (_t41 * _t41 + _t39 * _t39);
+    const float _t43 = _t13 * (((_t42 > 1.17549435e-38f) ? 1.0f / _t42 : 0.0f) * sqrt(_t42));
+    const float _t44 = _t39 * _t43 - _t20;
+    const float _t45 = _t40 * _t43 - _t36;
+    const float _t46 = _t41 * _t43 - _t28;
+    const float _t47 = _t22 + _t30 + _t38 - _t44 * (_t39 + _t44 * _t22 * 0.5f) - (_t40 + _t38 * _t45 * 0.5f) * _t45 - (_t30 * _t46 * 0.5f + _t41) * _t46;
+    const float _t48 = 1.73205256f * fabs(_t13);
+    const float _t49 = _t23 + (_t1 + _t35);
+    const float _t50 = _t48 + _t49;
+    const float _t51 = _t49 - _t48;
+    return (_t47 <= _t50) ? ((_t51 <= _t47) ? _t47 : _t51) : _t50;
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Total ops: 363
+ */
+float schwarzp_proj_o4_shellf(float3 p, float t)
+{
+    const float _t0 = 6.28318548f * (t * 0.5f);
+    const float _t1 = -_t0;
+    const float _t2 = (_t1 <= 1.0f) ? (((-1.0f) <= _t1) ? _t1 : (-1.0f)) : 1.0f;
+    const float _t3 = _t2 * _t2;
+    const float _t4 = p.y * 2.0f;
+    const float _t5 = sinpi(_t4);
+    const float _t6 = _t5 * _t5;
+    const float _t7 = p.z * 2.0f;
+    const float _t8 = sinpi(_t7);
     const float _t9 = _t8 * _t8;
     const float _t10 = p.x * 2.0f;
     const float _t11 = sinpi(_t10);
     const float _t12 = _t11 * _t11;
-    const float _t13 = _t9 + (_t4 + _t12);
+    const float _t13 = _t6 + (_t9 + _t12);
     const float _t14 = (_t13 > 1.17549435e-38f) ? 1.0f / _t13 : 0.0f;
-    const float _t15 = _t4 * _t7 * _t14;
+    const float _t15 = _t3 * _t6 * _t14;
     const float _t16 = _t15 * _t15;
     const float _t17 = _t16 * _t16;
-    const float _t18 = _t6 * (_t14 * sqrt(_t13));
-    const float _t19 = cospi(_t2);
-    const float _t20 = (1.0f - 0.166666672f * _t15 + (0.00833333377f - 0.000198412701f * _t15) * _t16 + _t17 * (2.75573188e-06f - 2.50520991e-08f * _t15 + _t16 * (1.60577024e-10f - 7.54937183e-13f * _t15))) * (_t3 * _t18) * _t19 + _t3 * (_t17 * ((2.08744777e-09f - 1.13046204e-11f * _t15) * _t16 + (2.48015876e-05f - 2.75573029e-07f * _t15)) + (_t16 * (0.0416666679f - 0.00138888892f * _t15) + (1.0f - _t15 * 0.5f)));
-    const float _t21 = _t20 * _t20;
-    const float _t22 = _t14 * (_t12 * _t7);
-    const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = cospi(_t10);
-    const float _t26 = ((2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - 1.13046204e-11f * _t22)) * _t24 + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23)) * _t11 + _t25 * (_t11 * _t18 * ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (2.75573188e-06f - 2.50520991e-08f * _t22 + _t23 * (1.60577024e-10f - 7.54937183e-13f * _t22))));
+    const float _t18 = 1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - 0.00138888892f * _t15) + (_t16 * (2.08744777e-09f - 1.13046204e-11f * _t15) + (2.48015876e-05f - _t15 * 2.75573029e-07f)) * _t17;
+    const float _t19 = cospi(_t4);
+    const float _t20 = _t14 * sqrt(_t13);
+    const float _t21 = _t20 * _t2;
+    const float _t22 = _t21 * _t5;
+    const float _t23 = _t22 * (1.0f - 0.166666672f * _t15 + _t16 * (0.00833333377f - 0.000198412701f * _t15) + (_t16 * (1.60577024e-10f - 7.54937183e-13f * _t15) + (2.75573188e-06f - 2.50520991e-08f * _t15)) * _t17);
+    const float _t24 = _t18 * _t5 + _t19 * _t23;
+    const float _t25 = _t14 * (_t3 * _t9);
+    const float _t26 = _t25 * _t25;
     const float _t27 = _t26 * _t26;
-    const float _t28 = _t14 * (_t9 * _t7);
-    const float _t29 = _t28 * _t28;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = _t1 * (_t18 * _t8 * ((2.75573188e-06f - 2.50520991e-08f * _t28 + (1.60577024e-10f - 7.54937183e-13f * _t28) * _t29) * _t30 + ((0.00833333377f - 0.000198412701f * _t28) * _t29 + (1.0f - 0.166666672f * _t28)))) + (((2.08744777e-09f - 1.13046204e-11f * _t28) * _t29 + (2.48015876e-05f - _t28 * 2.75573029e-07f)) * _t30 + (1.0f - _t28 * 0.5f + (0.0416666679f - 0.00138888892f * _t28) * _t29)) * _t8;
-    const float _t32 = _t31 * _t31;
-    const float _t33 = _t21 + (_t27 + _t32);
-    const float _t34 = (_t33 > 1.17549435e-38f) ? 1.0f / _t33 : 0.0f;
-    const float _t35 = _t34 * (_t32 * _t7);
-    const float _t36 = _t35 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = _t6 * (_t34 * sqrt(_t33));
-    const float _t39 = _t34 * (_t27 * _t7);
-    const float _t40 = _t39 * _t39;
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t34 * (_t21 * _t7);
-    const float _t43 = _t42 * _t42;
-    const float _t44 = _t43 * _t43;
-    return _t1 * ((_t36 * (2.08744777e-09f - 1.13046204e-11f * _t35) + (2.48015876e-05f - _t35 * 2.75573029e-07f)) * _t37 + ((0.0416666679f - 0.00138888892f * _t35) * _t36 + (1.0f - _t35 * 0.5f))) - (_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + _t36 * (1.60577024e-10f - 7.54937183e-13f * _t35)) + (1.0f - 0.166666672f * _t35 + _t36 * (0.00833333377f - 0.000198412701f * _t35))) * (_t31 * _t38) * _t8 + (_t25 * ((0.0416666679f - 0.00138888892f * _t39) * _t40 + (1.0f - _t39 * 0.5f) + _t41 * ((2.08744777e-09f - 1.13046204e-11f * _t39) * _t40 + (2.48015876e-05f - _t39 * 2.75573029e-07f))) - ((0.00833333377f - 0.000198412701f * _t39) * _t40 + (1.0f - 0.166666672f * _t39) + _t41 * (2.75573188e-06f - 2.50520991e-08f * _t39 + (1.60577024e-10f - 7.54937183e-13f * _t39) * _t40)) * (_t26 * _t38) * _t11 + (_t19 * (((2.08744777e-09f - _t42 * 1.13046204e-11f) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f)) * _t44 + (1.0f - _t42 * 0.5f + (0.0416666679f - 0.00138888892f * _t42) * _t43)) - _t3 * ((1.0f - 0.166666672f * _t42 + (0.00833333377f - 0.000198412701f * _t42) * _t43 + (2.75573188e-06f - 2.50520991e-08f * _t42 + (1.60577024e-10f - 7.54937183e-13f * _t42) * _t43) * _t44) * (_t20 * _t38))));
-}
-
-/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 505
- */
-float schwarzp_proj_o4_shellf(float3 p, float t)
-{
-    const float _t0 = p.x * 2.0f;
-    const float _t1 = cospi(_t0);
-    const float _t2 = 6.28318548f * (t * 0.5f);
-    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
-    const float _t4 = _t3 * _t3;
-    const float _t5 = p.y * 2.0f;
-    const float _t6 = sinpi(_t5);
-    const float _t7 = _t6 * _t6;
-    const float _t8 = p.z * 2.0f;
-    const float _t9 = sinpi(_t8);
-    const float _t10 = _t9 * _t9;
-    const float _t11 = sinpi(_t0);
-    const float _t12 = _t11 * _t11;
-    const float _t13 = _t7 + (_t10 + _t12);
-    const float _t14 = (_t13 > 1.17549435e-38f) ? 1.0f / _t13 : 0.0f;
-    const float _t15 = _t14 * (_t4 * _t12);
-    const float _t16 = _t15 * _t15;
-    const float _t17 = _t16 * _t16;
-    const float _t18 = _t14 * sqrt(_t13);
-    const float _t19 = _t3 * _t18;
-    const float _t20 = ((2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16) * _t17 + (1.0f - _t15 * 0.5f + (0.0416666679f - 0.00138888892f * _t15) * _t16)) * _t11 + _t1 * (((_t16 * (1.60577024e-10f - 7.54937183e-13f * _t15) + (2.75573188e-06f - 2.50520991e-08f * _t15)) * _t17 + (_t16 * (0.00833333377f - _t15 * 0.000198412701f) + (1.0f - 0.166666672f * _t15))) * (_t19 * _t11));
-    const float _t21 = _t20 * _t20;
-    const float _t22 = _t14 * (_t4 * _t10);
-    const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = cospi(_t8);
-    const float _t26 = _t9 * (_t24 * (_t23 * (2.08744777e-09f - 1.13046204e-11f * _t22) + (2.48015876e-05f - _t22 * 2.75573029e-07f)) + (_t23 * (0.0416666679f - 0.00138888892f * _t22) + (1.0f - _t22 * 0.5f))) + _t25 * ((1.0f - 0.166666672f * _t22 + _t23 * (0.00833333377f - 0.000198412701f * _t22) + _t24 * (2.75573188e-06f - 2.50520991e-08f * _t22 + (1.60577024e-10f - 7.54937183e-13f * _t22) * _t23)) * (_t19 * _t9));
-    const float _t27 = _t26 * _t26;
-    const float _t28 = _t4 * _t7 * _t14;
-    const float _t29 = _t28 * _t28;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = cospi(_t5);
-    const float _t32 = ((2.48015876e-05f - _t28 * 2.75573029e-07f + (2.08744777e-09f - _t28 * 1.13046204e-11f) * _t29) * _t30 + ((0.0416666679f - 0.00138888892f * _t28) * _t29 + (1.0f - _t28 * 0.5f))) * _t6 + _t19 * _t6 * (1.0f - 0.166666672f * _t28 + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + (2.75573188e-06f - 2.50520991e-08f * _t28 + (1.60577024e-10f - 7.54937183e-13f * _t28) * _t29) * _t30) * _t31;
-    const float _t33 = _t32 * _t32;
-    const float _t34 = _t27 + _t33 + _t21;
-    const float _t35 = (_t34 > 1.17549435e-38f) ? 1.0f / _t34 : 0.0f;
-    const float _t36 = _t4 * _t21 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = _t37 * _t37;
-    const float _t39 = _t3 * (sqrt(_t34) * _t35);
-    const float _t40 = _t4 * _t27 * _t35;
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t41 * _t41;
-    const float _t43 = _t4 * _t33 * _t35;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = _t44 * _t44;
-    const float _t46 = -_t2;
-    const float _t47 = (_t46 <= 1.0f) ? (((-1.0f) <= _t46) ? _t46 : (-1.0f)) : 1.0f;
-    const float _t48 = _t47 * _t47;
-    const float _t49 = _t48 * _t12 * _t14;
-    const float _t50 = _t49 * _t49;
-    const float _t51 = _t50 * _t50;
-    const float _t52 = _t18 * _t47;
-    const float _t53 = _t11 * ((_t50 * (2.08744777e-09f - 1.13046204e-11f * _t49) + (2.48015876e-05f - 2.75573029e-07f * _t49)) * _t51 + (1.0f - _t49 * 0.5f + (0.0416666679f - 0.00138888892f * _t49) * _t50)) + _t1 * (_t52 * _t11 * ((0.00833333377f - 0.000198412701f * _t49) * _t50 + (1.0f - 0.166666672f * _t49) + (2.75573188e-06f - 2.50520991e-08f * _t49 + (1.60577024e-10f - 7.54937183e-13f * _t49) * _t50) * _t51));
-    const float _t54 = _t53 * _t53;
-    const float _t55 = _t48 * _t7 * _t14;
-    const float _t56 = _t55 * _t55;
+    const float _t28 = _t26 * (0.0416666679f - 0.00138888892f * _t25) + (1.0f - _t25 * 0.5f) + _t27 * ((2.08744777e-09f - _t25 * 1.13046204e-11f) * _t26 + (2.48015876e-05f - _t25 * 2.75573029e-07f));
+    const float _t29 = cospi(_t7);
+    const float _t30 = _t21 * _t8;
+    const float _t31 = ((0.00833333377f - _t25 * 0.000198412701f) * _t26 + (1.0f - 0.166666672f * _t25) + _t27 * ((1.60577024e-10f - 7.54937183e-13f * _t25) * _t26 + (2.75573188e-06f - 2.50520991e-08f * _t25))) * _t30;
+    const float _t32 = _t8 * _t28 + _t29 * _t31;
+    const float _t33 = _t3 * _t12 * _t14;
+    const float _t34 = _t33 * _t33;
+    const float _t35 = _t34 * _t34;
+    const float _t36 = (_t34 * (2.08744777e-09f - 1.13046204e-11f * _t33) + (2.48015876e-05f - 2.75573029e-07f * _t33)) * _t35 + (1.0f - _t33 * 0.5f + (0.0416666679f - 0.00138888892f * _t33) * _t34);
+    const float _t37 = cospi(_t10);
+    const float _t38 = _t21 * _t11;
+    const float _t39 = _t38 * ((0.00833333377f - 0.000198412701f * _t33) * _t34 + (1.0f - 0.166666672f * _t33) + (2.75573188e-06f - 2.50520991e-08f * _t33 + (1.60577024e-10f - 7.54937183e-13f * _t33) * _t34) * _t35);
+    const float _t40 = _t11 * _t36 + _t37 * _t39;
+    const float _t41 = _t24 * _t24 + _t32 * _t32 + _t40 * _t40;
+    const float _t42 = _t2 * (((_t41 > 1.17549435e-38f) ? 1.0f / _t41 : 0.0f) * sqrt(_t41));
+    const float _t43 = _t42 * _t24 - _t22;
+    const float _t44 = _t18 * _t19 - _t23 * _t5;
+    const float _t45 = _t42 * _t40 - _t38;
+    const float _t46 = _t37 * _t36 - _t39 * _t11;
+    const float _t47 = _t42 * _t32 - _t30;
+    const float _t48 = _t29 * _t28 - _t8 * _t31;
+    const float _t49 = -((_t43 * _t44 * 0.5f + _t24) * _t43 + (_t45 * (_t45 * _t46 * 0.5f + _t40) + (_t47 * _t48 * 0.5f + _t32) * _t47) - (_t44 + _t48 + _t46));
+    const float _t50 = 1.73205256f * fabs(_t2);
+    const float _t51 = _t37 + (_t19 + _t29);
+    const float _t52 = _t50 + _t51;
+    const float _t53 = _t51 - _t50;
+    const float _t54 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
+    const float _t55 = _t54 * _t54;
+    const float _t56 = _t14 * (_t55 * _t9);
     const float _t57 = _t56 * _t56;
-    const float _t58 = (1.0f - _t55 * 0.5f + _t56 * (0.0416666679f - 0.00138888892f * _t55) + (_t56 * (2.08744777e-09f - 1.13046204e-11f * _t55) + (2.48015876e-05f - _t55 * 2.75573029e-07f)) * _t57) * _t6 + _t31 * (_t52 * _t6 * (1.0f - 0.166666672f * _t55 + _t56 * (0.00833333377f - 0.000198412701f * _t55) + (_t56 * (1.60577024e-10f - 7.54937183e-13f * _t55) + (2.75573188e-06f - 2.50520991e-08f * _t55)) * _t57));
-    const float _t59 = _t58 * _t58;
-    const float _t60 = _t14 * (_t48 * _t10);
-    const float _t61 = _t60 * _t60;
-    const float _t62 = _t61 * _t61;
-    const float _t63 = _t9 * (_t61 * (0.0416666679f - 0.00138888892f * _t60) + (1.0f - _t60 * 0.5f) + _t62 * ((2.08744777e-09f - _t60 * 1.13046204e-11f) * _t61 + (2.48015876e-05f - _t60 * 2.75573029e-07f))) + _t25 * (((0.00833333377f - _t60 * 0.000198412701f) * _t61 + (1.0f - 0.166666672f * _t60) + _t62 * ((1.60577024e-10f - 7.54937183e-13f * _t60) * _t61 + (2.75573188e-06f - 2.50520991e-08f * _t60))) * (_t52 * _t9));
-    const float _t64 = _t63 * _t63;
-    const float _t65 = _t59 + _t64 + _t54;
-    const float _t66 = (_t65 > 1.17549435e-38f) ? 1.0f / _t65 : 0.0f;
-    const float _t67 = _t48 * _t54 * _t66;
-    const float _t68 = _t67 * _t67;
-    const float _t69 = _t68 * _t68;
-    const float _t70 = _t47 * (_t66 * sqrt(_t65));
-    const float _t71 = _t48 * _t64 * _t66;
+    const float _t58 = _t57 * _t57;
+    const float _t59 = _t58 * (_t57 * (2.08744777e-09f - 1.13046204e-11f * _t56) + (2.48015876e-05f - _t56 * 2.75573029e-07f)) + (_t57 * (0.0416666679f - 0.00138888892f * _t56) + (1.0f - _t56 * 0.5f));
+    const float _t60 = _t54 * _t20;
+    const float _t61 = _t60 * _t8;
+    const float _t62 = (1.0f - 0.166666672f * _t56 + _t57 * (0.00833333377f - 0.000198412701f * _t56) + _t58 * (2.75573188e-06f - 2.50520991e-08f * _t56 + (1.60577024e-10f - 7.54937183e-13f * _t56) * _t57)) * _t61;
+    const float _t63 = _t8 * _t59 + _t29 * _t62;
+    const float _t64 = _t55 * _t6 * _t14;
+    const float _t65 = _t64 * _t64;
+    const float _t66 = _t65 * _t65;
+    const float _t67 = (2.48015876e-05f - _t64 * 2.75573029e-07f + (2.08744777e-09f - _t64 * 1.13046204e-11f) * _t65) * _t66 + ((0.0416666679f - 0.00138888892f * _t64) * _t65 + (1.0f - _t64 * 0.5f));
+    const float _t68 = _t60 * _t5;
+    const float _t69 = _t68 * (1.0f - 0.166666672f * _t64 + (0.00833333377f - _t64 * 0.000198412701f) * _t65 + (2.75573188e-06f - 2.50520991e-08f * _t64 + (1.60577024e-10f - 7.54937183e-13f * _t64) * _t65) * _t66);
+    const float _t70 = _t67 * _t5 + _t69 * _t19;
+    const float _t71 = _t14 * (_t55 * _t12);
     const float _t72 = _t71 * _t71;
     const float _t73 = _t72 * _t72;
-    const float _t74 = _t66 * (_t48 * _t59);
-    const float _t75 = _t74 * _t74;
-    const float _t76 = _t75 * _t75;
-    return (_t1 * ((2.48015876e-05f - _t36 * 2.75573029e-07f + _t37 * (2.08744777e-09f - _t36 * 1.13046204e-11f)) * _t38 + ((0.0416666679f - _t36 * 0.00138888892f) * _t37 + (1.0f - _t36 * 0.5f))) - _t39 * _t20 * (1.0f - _t36 * 0.166666672f + _t37 * (0.00833333377f - _t36 * 0.000198412701f) + _t38 * (2.75573188e-06f - _t36 * 2.50520991e-08f + _t37 * (1.60577024e-10f - _t36 * 7.54937183e-13f))) * _t11 + (_t25 * (((2.08744777e-09f - _t40 * 1.13046204e-11f) * _t41 + (2.48015876e-05f - _t40 * 2.75573029e-07f)) * _t42 + (1.0f - _t40 * 0.5f + (0.0416666679f - 0.00138888892f * _t40) * _t41)) - _t9 * (_t39 * _t26 * (((1.60577024e-10f - 7.54937183e-13f * _t40) * _t41 + (2.75573188e-06f - 2.50520991e-08f * _t40)) * _t42 + (1.0f - 0.166666672f * _t40 + (0.00833333377f - 0.000198412701f * _t40) * _t41)))) + (_t31 * (_t45 * ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) + ((0.0416666679f - 0.00138888892f * _t43) * _t44 + (1.0f - _t43 * 0.5f))) - _t39 * _t32 * (1.0f - 0.166666672f * _t43 + (0.00833333377f - _t43 * 0.000198412701f) * _t44 + _t45 * ((1.60577024e-10f - 7.54937183e-13f * _t43) * _t44 + (2.75573188e-06f - 2.50520991e-08f * _t43))) * _t6)) * (_t1 * (_t68 * (0.0416666679f - _t67 * 0.00138888892f) + (1.0f - _t67 * 0.5f) + _t69 * (_t68 * (2.08744777e-09f - _t67 * 1.13046204e-11f) + (2.48015876e-05f - _t67 * 2.75573029e-07f))) - (1.0f - _t67 * 0.166666672f + (0.00833333377f - _t67 * 0.000198412701f) * _t68 + _t69 * (2.75573188e-06f - _t67 * 2.50520991e-08f + _t68 * (1.60577024e-10f - _t67 * 7.54937183e-13f))) * (_t70 * _t53) * _t11 + ((1.0f - _t71 * 0.5f + (0.0416666679f - _t71 * 0.00138888892f) * _t72 + (2.48015876e-05f - _t71 * 2.75573029e-07f + (2.08744777e-09f - _t71 * 1.13046204e-11f) * _t72) * _t73) * _t25 - _t9 * ((1.0f - _t71 * 0.166666672f + (0.00833333377f - _t71 * 0.000198412701f) * _t72 + (2.75573188e-06f - _t71 * 2.50520991e-08f + (1.60577024e-10f - _t71 * 7.54937183e-13f) * _t72) * _t73) * (_t70 * _t63))) + (((2.48015876e-05f - _t74 * 2.75573029e-07f + _t75 * (2.08744777e-09f - _t74 * 1.13046204e-11f)) * _t76 + (_t75 * (0.0416666679f - 0.00138888892f * _t74) + (1.0f - _t74 * 0.5f))) * _t31 - _t70 * _t58 * ((2.75573188e-06f - 2.50520991e-08f * _t74 + (1.60577024e-10f - 7.54937183e-13f * _t74) * _t75) * _t76 + (_t75 * (0.00833333377f - 0.000198412701f * _t74) + (1.0f - 0.166666672f * _t74))) * _t6));
+    const float _t74 = (2.48015876e-05f - _t71 * 2.75573029e-07f + (2.08744777e-09f - _t71 * 1.13046204e-11f) * _t72) * _t73 + (1.0f - _t71 * 0.5f + (0.0416666679f - 0.00138888892f * _t71) * _t72);
+    const float _t75 = _t60 * _t11;
+    const float _t76 = ((_t72 * (1.60577024e-10f - 7.54937183e-13f * _t71) + (2.75573188e-06f - 2.50520991e-08f * _t71)) * _t73 + (_t72 * (0.00833333377f - _t71 * 0.000198412701f) + (1.0f - 0.166666672f * _t71))) * _t75;
+    const float _t77 = _t74 * _t11 + _t37 * _t76;
+    const float _t78 = _t63 * _t63 + _t70 * _t70 + _t77 * _t77;
+    const float _t79 = _t54 * (sqrt(_t78) * ((_t78 > 1.17549435e-38f) ? 1.0f / _t78 : 0.0f));
+    const float _t80 = _t79 * _t77 - _t75;
+    const float _t81 = _t74 * _t37 - _t76 * _t11;
+    const float _t82 = _t29 * _t59 - _t8 * _t62;
+    const float _t83 = _t79 * _t63 - _t61;
+    const float _t84 = _t67 * _t19 - _t69 * _t5;
+    const float _t85 = _t79 * _t70 - _t68;
+    const float _t86 = -(_t80 * (_t81 * _t80 * 0.5f + _t77) + ((_t63 + _t82 * _t83 * 0.5f) * _t83 + (_t84 * _t85 * 0.5f + _t70) * _t85) - (_t81 + _t84 + _t82));
+    const float _t87 = 1.73205256f * fabs(_t54);
+    const float _t88 = _t51 + _t87;
+    const float _t89 = _t51 - _t87;
+    return ((_t49 <= _t52) ? ((_t53 <= _t49) ? _t49 : _t53) : _t52) * ((_t86 <= _t88) ? ((_t89 <= _t86) ? _t86 : _t89) : _t88);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
@@ -282,141 +305,161 @@ double schwarzp_proj_o4_field(double3 p)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 261
+ * Total ops: 190
  */
 double schwarzp_proj_o4_offset(double3 p, double h)
 {
     const double _t0 = p.y * 2.0;
     const double _t1 = cospi(_t0);
-    const double _t2 = p.z * 2.0;
-    const double _t3 = sinpi(_t2);
-    const double _t4 = _t3 * _t3;
-    const double _t5 = 6.2831853071795862 * h;
-    const double _t6 = (_t5 <= 1.0) ? (((-1.0) <= _t5) ? _t5 : (-1.0)) : 1.0;
-    const double _t7 = _t6 * _t6;
-    const double _t8 = sinpi(_t0);
+    const double _t2 = sinpi(_t0);
+    const double _t3 = _t2 * _t2;
+    const double _t4 = p.z * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = _t5 * _t5;
+    const double _t7 = p.x * 2.0;
+    const double _t8 = sinpi(_t7);
+    const double _t9 = _t8 * _t8;
+    const double _t10 = _t3 + (_t6 + _t9);
+    const double _t11 = (_t10 > 1.1754943508222875e-38) ? 1.0 / _t10 : 0.0;
+    const double _t12 = 6.2831853071795862 * h;
+    const double _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
+    const double _t14 = _t13 * _t13;
+    const double _t15 = _t11 * (_t3 * _t14);
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) * _t16 + (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07)) * _t17 + (1.0 - _t15 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t15) * _t16);
+    const double _t19 = _t13 * (_t11 * sqrt(_t10));
+    const double _t20 = _t19 * _t2;
+    const double _t21 = _t20 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15) * _t16) * _t17 + ((0.0083333333333333003 - 0.00019841269841216566 * _t15) * _t16 + (1.0 - 0.16666666666666666 * _t15)));
+    const double _t22 = _t1 * _t18 - _t21 * _t2;
+    const double _t23 = cospi(_t7);
+    const double _t24 = _t11 * (_t9 * _t14);
+    const double _t25 = _t24 * _t24;
+    const double _t26 = _t25 * _t25;
+    const double _t27 = (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07 + _t25 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24)) * _t26 + (1.0 - _t24 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t24) * _t25);
+    const double _t28 = _t8 * _t19;
+    const double _t29 = _t28 * ((0.0083333333333333003 - 0.00019841269841216566 * _t24) * _t25 + (1.0 - 0.16666666666666666 * _t24) + _t26 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)));
+    const double _t30 = _t23 * _t27 - _t8 * _t29;
+    const double _t31 = _t6 * _t14 * _t11;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t32 * _t32;
+    const double _t34 = _t33 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t31) * _t32 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t31)) + (_t32 * (0.041666666666666102 - 0.0013888888888798428 * _t31) + (1.0 - _t31 * 0.5));
+    const double _t35 = cospi(_t4);
+    const double _t36 = _t5 * _t19;
+    const double _t37 = (1.0 - 0.16666666666666666 * _t31 + (0.0083333333333333003 - 0.00019841269841216566 * _t31) * _t32 + _t33 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t31 + _t32 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t31))) * _t36;
+    const double _t38 = _t34 * _t35 - _t5 * _t37;
+    const double _t39 = _t1 * _t21 + _t18 * _t2;
+    const double _t40 = _t37 * _t35 + _t5 * _t34;
+    const double _t41 = _t27 * _t8 + _t23 * _t29;
+    const double _t42 = _t40 * _t40 + (_t41 * _t41 + _t39 * _t39);
+    const double _t43 = _t13 * (((_t42 > 1.1754943508222875e-38) ? 1.0 / _t42 : 0.0) * sqrt(_t42));
+    const double _t44 = _t39 * _t43 - _t20;
+    const double _t45 = _t40 * _t43 - _t36;
+    const double _t46 = _t41 * _t43 - _t28;
+    const double _t47 = _t22 + _t30 + _t38 - _t44 * (_t39 + _t44 * _t22 * 0.5) - (_t40 + _t38 * _t45 * 0.5) * _t45 - (_t30 * _t46 * 0.5 + _t41) * _t46;
+    const double _t48 = 1.7320525396196846 * fabs(_t13);
+    const double _t49 = _t23 + (_t1 + _t35);
+    const double _t50 = _t48 + _t49;
+    const double _t51 = _t49 - _t48;
+    return (_t47 <= _t50) ? ((_t51 <= _t47) ? _t47 : _t51) : _t50;
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Total ops: 363
+ */
+double schwarzp_proj_o4_shell(double3 p, double t)
+{
+    const double _t0 = 6.2831853071795862 * (t * 0.5);
+    const double _t1 = -_t0;
+    const double _t2 = (_t1 <= 1.0) ? (((-1.0) <= _t1) ? _t1 : (-1.0)) : 1.0;
+    const double _t3 = _t2 * _t2;
+    const double _t4 = p.y * 2.0;
+    const double _t5 = sinpi(_t4);
+    const double _t6 = _t5 * _t5;
+    const double _t7 = p.z * 2.0;
+    const double _t8 = sinpi(_t7);
     const double _t9 = _t8 * _t8;
     const double _t10 = p.x * 2.0;
     const double _t11 = sinpi(_t10);
     const double _t12 = _t11 * _t11;
-    const double _t13 = _t9 + (_t4 + _t12);
+    const double _t13 = _t6 + (_t9 + _t12);
     const double _t14 = (_t13 > 1.1754943508222875e-38) ? 1.0 / _t13 : 0.0;
-    const double _t15 = _t4 * _t7 * _t14;
+    const double _t15 = _t3 * _t6 * _t14;
     const double _t16 = _t15 * _t15;
     const double _t17 = _t16 * _t16;
-    const double _t18 = _t6 * (_t14 * sqrt(_t13));
-    const double _t19 = cospi(_t2);
-    const double _t20 = (1.0 - 0.16666666666666666 * _t15 + (0.0083333333333333003 - 0.00019841269841216566 * _t15) * _t16 + _t17 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + _t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15))) * (_t3 * _t18) * _t19 + _t3 * (_t17 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) * _t16 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t15)) + (_t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + (1.0 - _t15 * 0.5)));
-    const double _t21 = _t20 * _t20;
-    const double _t22 = _t14 * (_t12 * _t7);
-    const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = cospi(_t10);
-    const double _t26 = ((2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + _t23 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22)) * _t24 + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23)) * _t11 + _t25 * (_t11 * _t18 * ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22 + _t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22))));
+    const double _t18 = 1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + (_t16 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) + (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07)) * _t17;
+    const double _t19 = cospi(_t4);
+    const double _t20 = _t14 * sqrt(_t13);
+    const double _t21 = _t20 * _t2;
+    const double _t22 = _t21 * _t5;
+    const double _t23 = _t22 * (1.0 - 0.16666666666666666 * _t15 + _t16 * (0.0083333333333333003 - 0.00019841269841216566 * _t15) + (_t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t15)) * _t17);
+    const double _t24 = _t18 * _t5 + _t19 * _t23;
+    const double _t25 = _t14 * (_t3 * _t9);
+    const double _t26 = _t25 * _t25;
     const double _t27 = _t26 * _t26;
-    const double _t28 = _t14 * (_t9 * _t7);
-    const double _t29 = _t28 * _t28;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = _t1 * (_t18 * _t8 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) * _t29) * _t30 + ((0.0083333333333333003 - 0.00019841269841216566 * _t28) * _t29 + (1.0 - 0.16666666666666666 * _t28)))) + (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t28) * _t29 + (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07)) * _t30 + (1.0 - _t28 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t28) * _t29)) * _t8;
-    const double _t32 = _t31 * _t31;
-    const double _t33 = _t21 + (_t27 + _t32);
-    const double _t34 = (_t33 > 1.1754943508222875e-38) ? 1.0 / _t33 : 0.0;
-    const double _t35 = _t34 * (_t32 * _t7);
-    const double _t36 = _t35 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = _t6 * (_t34 * sqrt(_t33));
-    const double _t39 = _t34 * (_t27 * _t7);
-    const double _t40 = _t39 * _t39;
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t34 * (_t21 * _t7);
-    const double _t43 = _t42 * _t42;
-    const double _t44 = _t43 * _t43;
-    return _t1 * ((_t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07)) * _t37 + ((0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (1.0 - _t35 * 0.5))) - (_t37 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + _t36 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35)) + (1.0 - 0.16666666666666666 * _t35 + _t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35))) * (_t31 * _t38) * _t8 + (_t25 * ((0.041666666666666102 - 0.0013888888888798428 * _t39) * _t40 + (1.0 - _t39 * 0.5) + _t41 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t39) * _t40 + (2.4801587247292686e-05 - _t39 * 2.7557303701922228e-07))) - ((0.0083333333333333003 - 0.00019841269841216566 * _t39) * _t40 + (1.0 - 0.16666666666666666 * _t39) + _t41 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t39 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t39) * _t40)) * (_t26 * _t38) * _t11 + (_t19 * (((2.0874477943664777e-09 - _t42 * 1.1304620460700782e-11) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07)) * _t44 + (1.0 - _t42 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43)) - _t3 * ((1.0 - 0.16666666666666666 * _t42 + (0.0083333333333333003 - 0.00019841269841216566 * _t42) * _t43 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43) * _t44) * (_t20 * _t38))));
-}
-
-/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 505
- */
-double schwarzp_proj_o4_shell(double3 p, double t)
-{
-    const double _t0 = p.x * 2.0;
-    const double _t1 = cospi(_t0);
-    const double _t2 = 6.2831853071795862 * (t * 0.5);
-    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    const double _t4 = _t3 * _t3;
-    const double _t5 = p.y * 2.0;
-    const double _t6 = sinpi(_t5);
-    const double _t7 = _t6 * _t6;
-    const double _t8 = p.z * 2.0;
-    const double _t9 = sinpi(_t8);
-    const double _t10 = _t9 * _t9;
-    const double _t11 = sinpi(_t0);
-    const double _t12 = _t11 * _t11;
-    const double _t13 = _t7 + (_t10 + _t12);
-    const double _t14 = (_t13 > 1.1754943508222875e-38) ? 1.0 / _t13 : 0.0;
-    const double _t15 = _t14 * (_t4 * _t12);
-    const double _t16 = _t15 * _t15;
-    const double _t17 = _t16 * _t16;
-    const double _t18 = _t14 * sqrt(_t13);
-    const double _t19 = _t3 * _t18;
-    const double _t20 = ((2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t15 * 1.1304620460700782e-11) * _t16) * _t17 + (1.0 - _t15 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t15) * _t16)) * _t11 + _t1 * (((_t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t15)) * _t17 + (_t16 * (0.0083333333333333003 - _t15 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t15))) * (_t19 * _t11));
-    const double _t21 = _t20 * _t20;
-    const double _t22 = _t14 * (_t4 * _t10);
-    const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = cospi(_t8);
-    const double _t26 = _t9 * (_t24 * (_t23 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22) + (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07)) + (_t23 * (0.041666666666666102 - 0.0013888888888798428 * _t22) + (1.0 - _t22 * 0.5))) + _t25 * ((1.0 - 0.16666666666666666 * _t22 + _t23 * (0.0083333333333333003 - 0.00019841269841216566 * _t22) + _t24 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) * _t23)) * (_t19 * _t9));
-    const double _t27 = _t26 * _t26;
-    const double _t28 = _t4 * _t7 * _t14;
-    const double _t29 = _t28 * _t28;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = cospi(_t5);
-    const double _t32 = ((2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11) * _t29) * _t30 + ((0.041666666666666102 - 0.0013888888888798428 * _t28) * _t29 + (1.0 - _t28 * 0.5))) * _t6 + _t19 * _t6 * (1.0 - 0.16666666666666666 * _t28 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) * _t29) * _t30) * _t31;
-    const double _t33 = _t32 * _t32;
-    const double _t34 = _t27 + _t33 + _t21;
-    const double _t35 = (_t34 > 1.1754943508222875e-38) ? 1.0 / _t34 : 0.0;
-    const double _t36 = _t4 * _t21 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = _t37 * _t37;
-    const double _t39 = _t3 * (sqrt(_t34) * _t35);
-    const double _t40 = _t4 * _t27 * _t35;
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t41 * _t41;
-    const double _t43 = _t4 * _t33 * _t35;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = _t44 * _t44;
-    const double _t46 = -_t2;
-    const double _t47 = (_t46 <= 1.0) ? (((-1.0) <= _t46) ? _t46 : (-1.0)) : 1.0;
-    const double _t48 = _t47 * _t47;
-    const double _t49 = _t48 * _t12 * _t14;
-    const double _t50 = _t49 * _t49;
-    const double _t51 = _t50 * _t50;
-    const double _t52 = _t18 * _t47;
-    const double _t53 = _t11 * ((_t50 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t49) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t49)) * _t51 + (1.0 - _t49 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t49) * _t50)) + _t1 * (_t52 * _t11 * ((0.0083333333333333003 - 0.00019841269841216566 * _t49) * _t50 + (1.0 - 0.16666666666666666 * _t49) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t49 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t49) * _t50) * _t51));
-    const double _t54 = _t53 * _t53;
-    const double _t55 = _t48 * _t7 * _t14;
-    const double _t56 = _t55 * _t55;
+    const double _t28 = _t26 * (0.041666666666666102 - 0.0013888888888798428 * _t25) + (1.0 - _t25 * 0.5) + _t27 * ((2.0874477943664777e-09 - _t25 * 1.1304620460700782e-11) * _t26 + (2.4801587247292686e-05 - _t25 * 2.7557303701922228e-07));
+    const double _t29 = cospi(_t7);
+    const double _t30 = _t21 * _t8;
+    const double _t31 = ((0.0083333333333333003 - _t25 * 0.00019841269841216566) * _t26 + (1.0 - 0.16666666666666666 * _t25) + _t27 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t25) * _t26 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t25))) * _t30;
+    const double _t32 = _t8 * _t28 + _t29 * _t31;
+    const double _t33 = _t3 * _t12 * _t14;
+    const double _t34 = _t33 * _t33;
+    const double _t35 = _t34 * _t34;
+    const double _t36 = (_t34 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t33) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t33)) * _t35 + (1.0 - _t33 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t33) * _t34);
+    const double _t37 = cospi(_t10);
+    const double _t38 = _t21 * _t11;
+    const double _t39 = _t38 * ((0.0083333333333333003 - 0.00019841269841216566 * _t33) * _t34 + (1.0 - 0.16666666666666666 * _t33) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t33 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t33) * _t34) * _t35);
+    const double _t40 = _t11 * _t36 + _t37 * _t39;
+    const double _t41 = _t24 * _t24 + _t32 * _t32 + _t40 * _t40;
+    const double _t42 = _t2 * (((_t41 > 1.1754943508222875e-38) ? 1.0 / _t41 : 0.0) * sqrt(_t41));
+    const double _t43 = _t42 * _t24 - _t22;
+    const double _t44 = _t18 * _t19 - _t23 * _t5;
+    const double _t45 = _t42 * _t40 - _t38;
+    const double _t46 = _t37 * _t36 - _t39 * _t11;
+    const double _t47 = _t42 * _t32 - _t30;
+    const double _t48 = _t29 * _t28 - _t8 * _t31;
+    const double _t49 = -((_t43 * _t44 * 0.5 + _t24) * _t43 + (_t45 * (_t45 * _t46 * 0.5 + _t40) + (_t47 * _t48 * 0.5 + _t32) * _t47) - (_t44 + _t48 + _t46));
+    const double _t50 = 1.7320525396196846 * fabs(_t2);
+    const double _t51 = _t37 + (_t19 + _t29);
+    const double _t52 = _t50 + _t51;
+    const double _t53 = _t51 - _t50;
+    const double _t54 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    const double _t55 = _t54 * _t54;
+    const double _t56 = _t14 * (_t55 * _t9);
     const double _t57 = _t56 * _t56;
-    const double _t58 = (1.0 - _t55 * 0.5 + _t56 * (0.041666666666666102 - 0.0013888888888798428 * _t55) + (_t56 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t55) + (2.4801587247292686e-05 - _t55 * 2.7557303701922228e-07)) * _t57) * _t6 + _t31 * (_t52 * _t6 * (1.0 - 0.16666666666666666 * _t55 + _t56 * (0.0083333333333333003 - 0.00019841269841216566 * _t55) + (_t56 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t55) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t55)) * _t57));
-    const double _t59 = _t58 * _t58;
-    const double _t60 = _t14 * (_t48 * _t10);
-    const double _t61 = _t60 * _t60;
-    const double _t62 = _t61 * _t61;
-    const double _t63 = _t9 * (_t61 * (0.041666666666666102 - 0.0013888888888798428 * _t60) + (1.0 - _t60 * 0.5) + _t62 * ((2.0874477943664777e-09 - _t60 * 1.1304620460700782e-11) * _t61 + (2.4801587247292686e-05 - _t60 * 2.7557303701922228e-07))) + _t25 * (((0.0083333333333333003 - _t60 * 0.00019841269841216566) * _t61 + (1.0 - 0.16666666666666666 * _t60) + _t62 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t60) * _t61 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t60))) * (_t52 * _t9));
-    const double _t64 = _t63 * _t63;
-    const double _t65 = _t59 + _t64 + _t54;
-    const double _t66 = (_t65 > 1.1754943508222875e-38) ? 1.0 / _t65 : 0.0;
-    const double _t67 = _t48 * _t54 * _t66;
-    const double _t68 = _t67 * _t67;
-    const double _t69 = _t68 * _t68;
-    const double _t70 = _t47 * (_t66 * sqrt(_t65));
-    const double _t71 = _t48 * _t64 * _t66;
+    const double _t58 = _t57 * _t57;
+    const double _t59 = _t58 * (_t57 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t56) + (2.4801587247292686e-05 - _t56 * 2.7557303701922228e-07)) + (_t57 * (0.041666666666666102 - 0.0013888888888798428 * _t56) + (1.0 - _t56 * 0.5));
+    const double _t60 = _t54 * _t20;
+    const double _t61 = _t60 * _t8;
+    const double _t62 = (1.0 - 0.16666666666666666 * _t56 + _t57 * (0.0083333333333333003 - 0.00019841269841216566 * _t56) + _t58 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t56 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t56) * _t57)) * _t61;
+    const double _t63 = _t8 * _t59 + _t29 * _t62;
+    const double _t64 = _t55 * _t6 * _t14;
+    const double _t65 = _t64 * _t64;
+    const double _t66 = _t65 * _t65;
+    const double _t67 = (2.4801587247292686e-05 - _t64 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t64 * 1.1304620460700782e-11) * _t65) * _t66 + ((0.041666666666666102 - 0.0013888888888798428 * _t64) * _t65 + (1.0 - _t64 * 0.5));
+    const double _t68 = _t60 * _t5;
+    const double _t69 = _t68 * (1.0 - 0.16666666666666666 * _t64 + (0.0083333333333333003 - _t64 * 0.00019841269841216566) * _t65 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t64 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t64) * _t65) * _t66);
+    const double _t70 = _t67 * _t5 + _t69 * _t19;
+    const double _t71 = _t14 * (_t55 * _t12);
     const double _t72 = _t71 * _t71;
     const double _t73 = _t72 * _t72;
-    const double _t74 = _t66 * (_t48 * _t59);
-    const double _t75 = _t74 * _t74;
-    const double _t76 = _t75 * _t75;
-    return (_t1 * ((2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + _t37 * (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11)) * _t38 + ((0.041666666666666102 - _t36 * 0.0013888888888798428) * _t37 + (1.0 - _t36 * 0.5))) - _t39 * _t20 * (1.0 - _t36 * 0.16666666666666666 + _t37 * (0.0083333333333333003 - _t36 * 0.00019841269841216566) + _t38 * (2.755731919201122e-06 - _t36 * 2.5052099244914114e-08 + _t37 * (1.6057701922579786e-10 - _t36 * 7.549371704181243e-13))) * _t11 + (_t25 * (((2.0874477943664777e-09 - _t40 * 1.1304620460700782e-11) * _t41 + (2.4801587247292686e-05 - _t40 * 2.7557303701922228e-07)) * _t42 + (1.0 - _t40 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t40) * _t41)) - _t9 * (_t39 * _t26 * (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t40) * _t41 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t40)) * _t42 + (1.0 - 0.16666666666666666 * _t40 + (0.0083333333333333003 - 0.00019841269841216566 * _t40) * _t41)))) + (_t31 * (_t45 * ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) + ((0.041666666666666102 - 0.0013888888888798428 * _t43) * _t44 + (1.0 - _t43 * 0.5))) - _t39 * _t32 * (1.0 - 0.16666666666666666 * _t43 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44 + _t45 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t43) * _t44 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t43))) * _t6)) * (_t1 * (_t68 * (0.041666666666666102 - _t67 * 0.0013888888888798428) + (1.0 - _t67 * 0.5) + _t69 * (_t68 * (2.0874477943664777e-09 - _t67 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t67 * 2.7557303701922228e-07))) - (1.0 - _t67 * 0.16666666666666666 + (0.0083333333333333003 - _t67 * 0.00019841269841216566) * _t68 + _t69 * (2.755731919201122e-06 - _t67 * 2.5052099244914114e-08 + _t68 * (1.6057701922579786e-10 - _t67 * 7.549371704181243e-13))) * (_t70 * _t53) * _t11 + ((1.0 - _t71 * 0.5 + (0.041666666666666102 - _t71 * 0.0013888888888798428) * _t72 + (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) * _t72) * _t73) * _t25 - _t9 * ((1.0 - _t71 * 0.16666666666666666 + (0.0083333333333333003 - _t71 * 0.00019841269841216566) * _t72 + (2.755731919201122e-06 - _t71 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t71 * 7.549371704181243e-13) * _t72) * _t73) * (_t70 * _t63))) + (((2.4801587247292686e-05 - _t74 * 2.7557303701922228e-07 + _t75 * (2.0874477943664777e-09 - _t74 * 1.1304620460700782e-11)) * _t76 + (_t75 * (0.041666666666666102 - 0.0013888888888798428 * _t74) + (1.0 - _t74 * 0.5))) * _t31 - _t70 * _t58 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t74 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t74) * _t75) * _t76 + (_t75 * (0.0083333333333333003 - 0.00019841269841216566 * _t74) + (1.0 - 0.16666666666666666 * _t74))) * _t6));
+    const double _t74 = (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) * _t72) * _t73 + (1.0 - _t71 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t71) * _t72);
+    const double _t75 = _t60 * _t11;
+    const double _t76 = ((_t72 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t71) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t71)) * _t73 + (_t72 * (0.0083333333333333003 - _t71 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t71))) * _t75;
+    const double _t77 = _t74 * _t11 + _t37 * _t76;
+    const double _t78 = _t63 * _t63 + _t70 * _t70 + _t77 * _t77;
+    const double _t79 = _t54 * (sqrt(_t78) * ((_t78 > 1.1754943508222875e-38) ? 1.0 / _t78 : 0.0));
+    const double _t80 = _t79 * _t77 - _t75;
+    const double _t81 = _t74 * _t37 - _t76 * _t11;
+    const double _t82 = _t29 * _t59 - _t8 * _t62;
+    const double _t83 = _t79 * _t63 - _t61;
+    const double _t84 = _t67 * _t19 - _t69 * _t5;
+    const double _t85 = _t79 * _t70 - _t68;
+    const double _t86 = -(_t80 * (_t81 * _t80 * 0.5 + _t77) + ((_t63 + _t82 * _t83 * 0.5) * _t83 + (_t84 * _t85 * 0.5 + _t70) * _t85) - (_t81 + _t84 + _t82));
+    const double _t87 = 1.7320525396196846 * fabs(_t54);
+    const double _t88 = _t51 + _t87;
+    const double _t89 = _t51 - _t87;
+    return ((_t49 <= _t52) ? ((_t53 <= _t49) ? _t49 : _t53) : _t52) * ((_t86 <= _t88) ? ((_t89 <= _t86) ? _t86 : _t89) : _t88);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.

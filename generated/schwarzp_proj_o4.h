@@ -8,7 +8,9 @@
  * Source:  Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
  * Method:  foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
  *          n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections
- *          give order 2(K+1) = 4.
+ *          give order 2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1),
+ *          evaluated at q_K (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own
+ *          order, and q_K needs no trig of its own).
  *          offsetgen, docs/projection.md (foot-point projection).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
@@ -35,15 +37,16 @@
  *   foot-point estimate and updates it at every projection: each wall converges at order 2 = K + 1
  *   to the distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2.
  *   Passing a local t(p) to _shell reads it at p instead: second order at best.
- * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
- *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too):
- *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
- *   0, so every function returns a finite value for finite input (do not compile with
- *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
- *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
- *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
- *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
+ * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+ *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too),
+ *   and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so
+ *   this never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no
+ *   phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for
+ *   finite input (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates
+ *   come from their values at p by angle addition, which is exact while |h| <= 1 (natural units:
+ *   |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is
+ *   clamped to 1, so thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above.
+ *   n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -52,11 +55,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   261
- *   shell    505
+ *   offset   190
+ *   shell    363
  *   normal   274
  */
-/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":261,"shell":505,"normal":274}} */
+/* offsetgen-metadata {"format":1,"language":"c","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["double","float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":190,"shell":363,"normal":274}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O4_H
 #define OFFSETGEN_SCHWARZP_PROJ_O4_H
 
@@ -146,11 +149,11 @@ static inline double schwarzp_proj_o4_field(double x, double y, double z)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 261
+ * Total ops: 190
  */
 static inline double schwarzp_proj_o4_offset(double x, double y, double z, double h)
 {
-    const double _t0 = 6.2831853071795862 * y;
+    const double _t0 = z * 6.2831853071795862;
     const double _t1 = offsetgen_cos(_t0);
     const double _t2 = 6.2831853071795862 * h;
     const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
@@ -160,127 +163,147 @@ static inline double schwarzp_proj_o4_offset(double x, double y, double z, doubl
     const double _t7 = 6.2831853071795862 * x;
     const double _t8 = offsetgen_sin(_t7);
     const double _t9 = _t8 * _t8;
-    const double _t10 = z * 6.2831853071795862;
+    const double _t10 = 6.2831853071795862 * y;
     const double _t11 = offsetgen_sin(_t10);
     const double _t12 = _t11 * _t11;
-    const double _t13 = _t9 + _t12 + _t6;
+    const double _t13 = _t9 + _t6 + _t12;
     const double _t14 = (_t13 > 1.1754943508222875e-38) ? 1.0 / _t13 : 0.0;
     const double _t15 = _t4 * _t6 * _t14;
     const double _t16 = _t15 * _t15;
     const double _t17 = _t16 * _t16;
-    const double _t18 = _t3 * (_t14 * sqrt(_t13));
-    const double _t19 = _t1 * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + _t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15)) * _t17 + (1.0 - 0.16666666666666666 * _t15 + _t16 * (0.0083333333333333003 - 0.00019841269841216566 * _t15))) * (_t5 * _t18)) + _t5 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) * _t16));
-    const double _t20 = _t19 * _t19;
-    const double _t21 = _t9 * _t4 * _t14;
-    const double _t22 = _t21 * _t21;
-    const double _t23 = _t22 * _t22;
-    const double _t24 = offsetgen_cos(_t7);
-    const double _t25 = (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22)) * (_t8 * _t18) * _t24 + ((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + _t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11))) * _t8;
+    const double _t18 = (_t16 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) + (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07)) * _t17 + (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15));
+    const double _t19 = _t3 * (_t14 * sqrt(_t13));
+    const double _t20 = _t5 * _t19;
+    const double _t21 = ((0.0083333333333333003 - 0.00019841269841216566 * _t15) * _t16 + (1.0 - 0.16666666666666666 * _t15) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15) * _t16) * _t17) * _t20;
+    const double _t22 = _t1 * _t18 - _t21 * _t5;
+    const double _t23 = offsetgen_cos(_t10);
+    const double _t24 = _t4 * _t12 * _t14;
+    const double _t25 = _t24 * _t24;
     const double _t26 = _t25 * _t25;
-    const double _t27 = _t4 * _t12 * _t14;
-    const double _t28 = _t27 * _t27;
-    const double _t29 = _t28 * _t28;
-    const double _t30 = offsetgen_cos(_t10);
-    const double _t31 = ((0.0083333333333333003 - 0.00019841269841216566 * _t27) * _t28 + (1.0 - 0.16666666666666666 * _t27) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t27 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t27) + (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07)) * _t29 + (1.0 - _t27 * 0.5 + _t28 * (0.041666666666666102 - 0.0013888888888798428 * _t27)));
+    const double _t27 = 1.0 - _t24 * 0.5 + _t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24) + _t26 * (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24) * _t25);
+    const double _t28 = _t11 * _t19;
+    const double _t29 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) * _t26 + (1.0 - 0.16666666666666666 * _t24 + _t25 * (0.0083333333333333003 - 0.00019841269841216566 * _t24))) * _t28;
+    const double _t30 = _t23 * _t27 - _t29 * _t11;
+    const double _t31 = _t9 * _t4 * _t14;
     const double _t32 = _t31 * _t31;
-    const double _t33 = _t20 + _t26 + _t32;
-    const double _t34 = (_t33 > 1.1754943508222875e-38) ? 1.0 / _t33 : 0.0;
-    const double _t35 = _t34 * (_t4 * _t26);
-    const double _t36 = _t35 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = _t3 * (_t34 * sqrt(_t33));
-    const double _t39 = _t34 * (_t4 * _t32);
-    const double _t40 = _t39 * _t39;
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t34 * (_t20 * _t4);
-    const double _t43 = _t42 * _t42;
-    const double _t44 = _t43 * _t43;
-    return (1.0 - _t35 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t35 + _t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0 - 0.16666666666666666 * _t35 + (0.0083333333333333003 - 0.00019841269841216566 * _t35) * _t36 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.0874477943664777e-09 - _t39 * 1.1304620460700782e-11) * _t40 + (2.4801587247292686e-05 - _t39 * 2.7557303701922228e-07)) * _t41 + (_t40 * (0.041666666666666102 - 0.0013888888888798428 * _t39) + (1.0 - _t39 * 0.5))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t39) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t39)) + (_t40 * (0.0083333333333333003 - _t39 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t39))))) + (_t1 * (_t44 * (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t42 * 1.1304620460700782e-11) * _t43) + (1.0 - _t42 * 0.5 + (0.041666666666666102 - _t42 * 0.0013888888888798428) * _t43)) - _t5 * ((_t44 * ((1.6057701922579786e-10 - _t42 * 7.549371704181243e-13) * _t43 + (2.755731919201122e-06 - _t42 * 2.5052099244914114e-08)) + (_t43 * (0.0083333333333333003 - _t42 * 0.00019841269841216566) + (1.0 - _t42 * 0.16666666666666666))) * (_t19 * _t38)));
+    const double _t33 = _t32 * _t32;
+    const double _t34 = (0.041666666666666102 - _t31 * 0.0013888888888798428) * _t32 + (1.0 - _t31 * 0.5) + _t33 * (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07 + _t32 * (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11));
+    const double _t35 = offsetgen_cos(_t7);
+    const double _t36 = _t8 * _t19;
+    const double _t37 = (1.0 - _t31 * 0.16666666666666666 + (0.0083333333333333003 - _t31 * 0.00019841269841216566) * _t32 + _t33 * (2.755731919201122e-06 - _t31 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t31 * 7.549371704181243e-13) * _t32)) * _t36;
+    const double _t38 = _t34 * _t35 - _t37 * _t8;
+    const double _t39 = _t23 * _t29 + _t11 * _t27;
+    const double _t40 = _t37 * _t35 + _t34 * _t8;
+    const double _t41 = _t21 * _t1 + _t5 * _t18;
+    const double _t42 = _t39 * _t39 + _t40 * _t40 + _t41 * _t41;
+    const double _t43 = _t3 * (((_t42 > 1.1754943508222875e-38) ? 1.0 / _t42 : 0.0) * sqrt(_t42));
+    const double _t44 = _t39 * _t43 - _t28;
+    const double _t45 = _t43 * _t41 - _t20;
+    const double _t46 = _t40 * _t43 - _t36;
+    const double _t47 = _t22 + (_t30 + _t38) - _t44 * (_t39 + _t30 * _t44 * 0.5) - (_t22 * _t45 * 0.5 + _t41) * _t45 - (_t40 + _t38 * _t46 * 0.5) * _t46;
+    const double _t48 = 1.7320525396196846 * fabs(_t3);
+    const double _t49 = _t1 + _t23 + _t35;
+    const double _t50 = _t48 + _t49;
+    const double _t51 = _t49 - _t48;
+    return (_t47 <= _t50) ? ((_t51 <= _t47) ? _t47 : _t51) : _t50;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 505
+ * Total ops: 363
  */
 static inline double schwarzp_proj_o4_shell(double x, double y, double z, double t)
 {
-    const double _t0 = z * 6.2831853071795862;
+    const double _t0 = 6.2831853071795862 * y;
     const double _t1 = offsetgen_cos(_t0);
-    const double _t2 = offsetgen_sin(_t0);
-    const double _t3 = 6.2831853071795862 * x;
-    const double _t4 = offsetgen_sin(_t3);
+    const double _t2 = 6.2831853071795862 * (t * 0.5);
+    const double _t3 = -_t2;
+    const double _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
     const double _t5 = _t4 * _t4;
-    const double _t6 = _t2 * _t2;
-    const double _t7 = 6.2831853071795862 * y;
-    const double _t8 = offsetgen_sin(_t7);
-    const double _t9 = _t8 * _t8;
-    const double _t10 = _t5 + _t6 + _t9;
-    const double _t11 = (_t10 > 1.1754943508222875e-38) ? 1.0 / _t10 : 0.0;
-    const double _t12 = 6.2831853071795862 * (t * 0.5);
-    const double _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
-    const double _t14 = _t13 * _t13;
-    const double _t15 = _t11 * (_t14 * _t6);
-    const double _t16 = _t15 * _t15;
+    const double _t6 = offsetgen_sin(_t0);
+    const double _t7 = _t6 * _t6;
+    const double _t8 = 6.2831853071795862 * x;
+    const double _t9 = offsetgen_sin(_t8);
+    const double _t10 = _t9 * _t9;
+    const double _t11 = z * 6.2831853071795862;
+    const double _t12 = offsetgen_sin(_t11);
+    const double _t13 = _t12 * _t12;
+    const double _t14 = _t10 + _t13 + _t7;
+    const double _t15 = (_t14 > 1.1754943508222875e-38) ? 1.0 / _t14 : 0.0;
+    const double _t16 = _t5 * _t7 * _t15;
     const double _t17 = _t16 * _t16;
-    const double _t18 = _t11 * sqrt(_t10);
-    const double _t19 = _t18 * _t13;
-    const double _t20 = _t2 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - _t15 * 0.0013888888888798428) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t15 * 1.1304620460700782e-11) * _t16)) + _t1 * (((0.0083333333333333003 - _t15 * 0.00019841269841216566) * _t16 + (1.0 - _t15 * 0.16666666666666666) + _t17 * (2.755731919201122e-06 - _t15 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t15 * 7.549371704181243e-13) * _t16)) * (_t2 * _t19));
-    const double _t21 = _t20 * _t20;
-    const double _t22 = _t11 * (_t14 * _t9);
-    const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = offsetgen_cos(_t7);
-    const double _t26 = (_t24 * ((2.0874477943664777e-09 - _t22 * 1.1304620460700782e-11) * _t23 + (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07)) + (1.0 - _t22 * 0.5 + _t23 * (0.041666666666666102 - 0.0013888888888798428 * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.0083333333333333003 - _t22 * 0.00019841269841216566) + (1.0 - _t22 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t22 * 7.549371704181243e-13) * _t23 + (2.755731919201122e-06 - _t22 * 2.5052099244914114e-08)) * _t24));
-    const double _t27 = _t26 * _t26;
-    const double _t28 = _t11 * (_t14 * _t5);
+    const double _t18 = _t17 * _t17;
+    const double _t19 = _t17 * (0.041666666666666102 - 0.0013888888888798428 * _t16) + (1.0 - _t16 * 0.5) + _t18 * (_t17 * (2.0874477943664777e-09 - _t16 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t16 * 2.7557303701922228e-07));
+    const double _t20 = _t15 * sqrt(_t14);
+    const double _t21 = _t20 * _t4;
+    const double _t22 = _t21 * _t6;
+    const double _t23 = _t22 * (1.0 - 0.16666666666666666 * _t16 + _t17 * (0.0083333333333333003 - _t16 * 0.00019841269841216566) + _t18 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t16 + _t17 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t16)));
+    const double _t24 = _t1 * _t19 - _t6 * _t23;
+    const double _t25 = _t6 * _t19 + _t1 * _t23;
+    const double _t26 = offsetgen_cos(_t11);
+    const double _t27 = _t12 * _t21;
+    const double _t28 = _t15 * (_t5 * _t13);
     const double _t29 = _t28 * _t28;
     const double _t30 = _t29 * _t29;
-    const double _t31 = offsetgen_cos(_t3);
-    const double _t32 = ((0.041666666666666102 - _t28 * 0.0013888888888798428) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11) * _t29)) * _t4 + _t19 * _t4 * (1.0 - _t28 * 0.16666666666666666 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + (_t29 * (1.6057701922579786e-10 - _t28 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t28 * 2.5052099244914114e-08)) * _t30) * _t31;
-    const double _t33 = _t32 * _t32;
-    const double _t34 = _t21 + _t27 + _t33;
-    const double _t35 = (_t34 > 1.1754943508222875e-38) ? 1.0 / _t34 : 0.0;
-    const double _t36 = _t35 * (_t14 * _t21);
-    const double _t37 = _t36 * _t36;
-    const double _t38 = _t37 * _t37;
-    const double _t39 = _t35 * sqrt(_t34) * _t13;
-    const double _t40 = _t35 * (_t14 * _t33);
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t41 * _t41;
-    const double _t43 = _t35 * (_t14 * _t27);
-    const double _t44 = _t43 * _t43;
-    const double _t45 = _t44 * _t44;
-    const double _t46 = -_t12;
-    const double _t47 = (_t46 <= 1.0) ? (((-1.0) <= _t46) ? _t46 : (-1.0)) : 1.0;
-    const double _t48 = _t47 * _t47;
-    const double _t49 = _t48 * _t9 * _t11;
-    const double _t50 = _t49 * _t49;
-    const double _t51 = _t50 * _t50;
-    const double _t52 = _t18 * _t47;
-    const double _t53 = _t8 * (_t50 * (0.041666666666666102 - 0.0013888888888798428 * _t49) + (1.0 - _t49 * 0.5) + _t51 * (_t50 * (2.0874477943664777e-09 - _t49 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t49 * 2.7557303701922228e-07))) + _t25 * (_t52 * _t8 * (1.0 - 0.16666666666666666 * _t49 + _t50 * (0.0083333333333333003 - _t49 * 0.00019841269841216566) + _t51 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t49 + _t50 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t49))));
-    const double _t54 = _t53 * _t53;
-    const double _t55 = _t11 * (_t48 * _t6);
-    const double _t56 = _t55 * _t55;
+    const double _t31 = _t27 * (_t30 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) * _t29) + ((0.0083333333333333003 - 0.00019841269841216566 * _t28) * _t29 + (1.0 - 0.16666666666666666 * _t28)));
+    const double _t32 = 1.0 - 0.5 * _t28 + _t29 * (0.041666666666666102 - 0.0013888888888798428 * _t28) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t28 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t28) * _t29) * _t30;
+    const double _t33 = _t26 * _t31 + _t32 * _t12;
+    const double _t34 = _t5 * _t10 * _t15;
+    const double _t35 = _t34 * _t34;
+    const double _t36 = _t35 * _t35;
+    const double _t37 = _t21 * _t9;
+    const double _t38 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t34 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t34) * _t35) * _t36 + (_t35 * (0.0083333333333333003 - 0.00019841269841216566 * _t34) + (1.0 - 0.16666666666666666 * _t34))) * _t37;
+    const double _t39 = offsetgen_cos(_t8);
+    const double _t40 = (2.4801587247292686e-05 - _t34 * 2.7557303701922228e-07 + _t35 * (2.0874477943664777e-09 - _t34 * 1.1304620460700782e-11)) * _t36 + (1.0 - _t34 * 0.5 + _t35 * (0.041666666666666102 - 0.0013888888888798428 * _t34));
+    const double _t41 = _t38 * _t39 + _t40 * _t9;
+    const double _t42 = _t25 * _t25 + _t33 * _t33 + _t41 * _t41;
+    const double _t43 = _t4 * (((_t42 > 1.1754943508222875e-38) ? 1.0 / _t42 : 0.0) * sqrt(_t42));
+    const double _t44 = _t43 * _t25 - _t22;
+    const double _t45 = _t43 * _t41 - _t37;
+    const double _t46 = _t40 * _t39 - _t38 * _t9;
+    const double _t47 = _t33 * _t43 - _t27;
+    const double _t48 = _t32 * _t26 - _t12 * _t31;
+    const double _t49 = -((_t24 * _t44 * 0.5 + _t25) * _t44 + ((_t41 + _t45 * _t46 * 0.5) * _t45 + _t47 * (_t33 + 0.5 * (_t47 * _t48))) - (_t24 + _t48 + _t46));
+    const double _t50 = 1.7320525396196846 * fabs(_t4);
+    const double _t51 = _t26 + _t1 + _t39;
+    const double _t52 = _t50 + _t51;
+    const double _t53 = _t51 - _t50;
+    const double _t54 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    const double _t55 = _t54 * _t54;
+    const double _t56 = _t15 * (_t55 * _t13);
     const double _t57 = _t56 * _t56;
-    const double _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t55 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t55) * _t56) + ((0.0083333333333333003 - 0.00019841269841216566 * _t55) * _t56 + (1.0 - 0.16666666666666666 * _t55)))) + (1.0 - 0.5 * _t55 + _t56 * (0.041666666666666102 - 0.0013888888888798428 * _t55) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t55 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t55) * _t56) * _t57) * _t2;
-    const double _t59 = _t58 * _t58;
-    const double _t60 = _t48 * _t5 * _t11;
-    const double _t61 = _t60 * _t60;
-    const double _t62 = _t61 * _t61;
-    const double _t63 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t60 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t60) * _t61) * _t62 + (_t61 * (0.0083333333333333003 - 0.00019841269841216566 * _t60) + (1.0 - 0.16666666666666666 * _t60))) * (_t52 * _t4) * _t31 + ((2.4801587247292686e-05 - _t60 * 2.7557303701922228e-07 + _t61 * (2.0874477943664777e-09 - _t60 * 1.1304620460700782e-11)) * _t62 + (1.0 - _t60 * 0.5 + _t61 * (0.041666666666666102 - 0.0013888888888798428 * _t60))) * _t4;
-    const double _t64 = _t63 * _t63;
-    const double _t65 = _t54 + _t59 + _t64;
-    const double _t66 = (_t65 > 1.1754943508222875e-38) ? 1.0 / _t65 : 0.0;
-    const double _t67 = _t66 * (_t48 * _t54);
-    const double _t68 = _t67 * _t67;
-    const double _t69 = _t68 * _t68;
-    const double _t70 = _t47 * (_t66 * sqrt(_t65));
-    const double _t71 = _t66 * (_t48 * _t64);
+    const double _t58 = _t57 * _t57;
+    const double _t59 = 1.0 - _t56 * 0.5 + _t57 * (0.041666666666666102 - _t56 * 0.0013888888888798428) + _t58 * (2.4801587247292686e-05 - _t56 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t56 * 1.1304620460700782e-11) * _t57);
+    const double _t60 = _t20 * _t54;
+    const double _t61 = _t12 * _t60;
+    const double _t62 = ((0.0083333333333333003 - _t56 * 0.00019841269841216566) * _t57 + (1.0 - _t56 * 0.16666666666666666) + _t58 * (2.755731919201122e-06 - _t56 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t56 * 7.549371704181243e-13) * _t57)) * _t61;
+    const double _t63 = _t12 * _t59 + _t26 * _t62;
+    const double _t64 = _t15 * (_t55 * _t7);
+    const double _t65 = _t64 * _t64;
+    const double _t66 = _t65 * _t65;
+    const double _t67 = _t66 * ((2.0874477943664777e-09 - _t64 * 1.1304620460700782e-11) * _t65 + (2.4801587247292686e-05 - _t64 * 2.7557303701922228e-07)) + (1.0 - _t64 * 0.5 + _t65 * (0.041666666666666102 - 0.0013888888888798428 * _t64));
+    const double _t68 = _t6 * _t60;
+    const double _t69 = _t68 * (_t65 * (0.0083333333333333003 - _t64 * 0.00019841269841216566) + (1.0 - _t64 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t64 * 7.549371704181243e-13) * _t65 + (2.755731919201122e-06 - _t64 * 2.5052099244914114e-08)) * _t66);
+    const double _t70 = _t67 * _t6 + _t1 * _t69;
+    const double _t71 = _t15 * (_t55 * _t10);
     const double _t72 = _t71 * _t71;
     const double _t73 = _t72 * _t72;
-    const double _t74 = _t66 * (_t48 * _t59);
-    const double _t75 = _t74 * _t74;
-    const double _t76 = _t75 * _t75;
-    return (_t1 * ((2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11) * _t37) * _t38 + (1.0 - _t36 * 0.5 + _t37 * (0.041666666666666102 - 0.0013888888888798428 * _t36))) - _t39 * _t20 * ((0.0083333333333333003 - _t36 * 0.00019841269841216566) * _t37 + (1.0 - 0.16666666666666666 * _t36) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t36 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.0874477943664777e-09 - _t40 * 1.1304620460700782e-11) * _t41 + (2.4801587247292686e-05 - _t40 * 2.7557303701922228e-07)) + (_t41 * (0.041666666666666102 - _t40 * 0.0013888888888798428) + (1.0 - _t40 * 0.5))) * _t31 - _t39 * _t32 * (1.0 - _t40 * 0.16666666666666666 + _t41 * (0.0083333333333333003 - _t40 * 0.00019841269841216566) + _t42 * (2.755731919201122e-06 - _t40 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t40 * 7.549371704181243e-13) * _t41)) * _t4) + (_t25 * (1.0 - _t43 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t43) * _t44 + (_t44 * (2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45) - (_t45 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t43 + _t44 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t43)) + (1.0 - 0.16666666666666666 * _t43 + _t44 * (0.0083333333333333003 - _t43 * 0.00019841269841216566))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.4801587247292686e-05 - _t67 * 2.7557303701922228e-07 + _t68 * (2.0874477943664777e-09 - _t67 * 1.1304620460700782e-11)) + (1.0 - _t67 * 0.5 + _t68 * (0.041666666666666102 - _t67 * 0.0013888888888798428))) - _t8 * ((_t69 * ((1.6057701922579786e-10 - _t67 * 7.549371704181243e-13) * _t68 + (2.755731919201122e-06 - _t67 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t67 * 0.00019841269841216566) * _t68 + (1.0 - _t67 * 0.16666666666666666))) * (_t70 * _t53)) + ((((2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) * _t72 + (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07)) * _t73 + (1.0 - _t71 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0 - 0.16666666666666666 * _t71 + (0.0083333333333333003 - _t71 * 0.00019841269841216566) * _t72 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t71 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t74 + _t75 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t74)) * _t76 + ((0.041666666666666102 - 0.0013888888888798428 * _t74) * _t75 + (1.0 - _t74 * 0.5))) - _t58 * _t70 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t74 + _t75 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t74)) * _t76 + (_t75 * (0.0083333333333333003 - 0.00019841269841216566 * _t74) + (1.0 - 0.16666666666666666 * _t74))) * _t2)));
+    const double _t74 = (0.041666666666666102 - _t71 * 0.0013888888888798428) * _t72 + (1.0 - _t71 * 0.5) + _t73 * (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) * _t72);
+    const double _t75 = _t60 * _t9;
+    const double _t76 = _t75 * (1.0 - _t71 * 0.16666666666666666 + (0.0083333333333333003 - _t71 * 0.00019841269841216566) * _t72 + (_t72 * (1.6057701922579786e-10 - _t71 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t71 * 2.5052099244914114e-08)) * _t73);
+    const double _t77 = _t74 * _t9 + _t76 * _t39;
+    const double _t78 = _t63 * _t63 + _t70 * _t70 + _t77 * _t77;
+    const double _t79 = ((_t78 > 1.1754943508222875e-38) ? 1.0 / _t78 : 0.0) * sqrt(_t78) * _t54;
+    const double _t80 = _t79 * _t63 - _t61;
+    const double _t81 = _t26 * _t59 - _t12 * _t62;
+    const double _t82 = _t70 * _t79 - _t68;
+    const double _t83 = _t67 * _t1 - _t6 * _t69;
+    const double _t84 = _t79 * _t77 - _t75;
+    const double _t85 = _t74 * _t39 - _t76 * _t9;
+    const double _t86 = -(_t80 * (_t80 * _t81 * 0.5 + _t63) + _t82 * (_t70 + _t82 * _t83 * 0.5) + _t84 * (_t84 * _t85 * 0.5 + _t77) - (_t81 + (_t85 + _t83)));
+    const double _t87 = 1.7320525396196846 * fabs(_t54);
+    const double _t88 = _t51 + _t87;
+    const double _t89 = _t51 - _t87;
+    return ((_t49 <= _t52) ? ((_t53 <= _t49) ? _t49 : _t53) : _t52) * ((_t86 <= _t88) ? ((_t89 <= _t86) ? _t86 : _t89) : _t88);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
@@ -418,11 +441,11 @@ static inline float schwarzp_proj_o4_fieldf(float x, float y, float z)
 }
 
 /* phi(p, h) of order 4: zero on the surface moved by h along +grad F.
- * Total ops: 261
+ * Total ops: 190
  */
 static inline float schwarzp_proj_o4_offsetf(float x, float y, float z, float h)
 {
-    const float _t0 = 6.28318548f * y;
+    const float _t0 = z * 6.28318548f;
     const float _t1 = offsetgen_cosf(_t0);
     const float _t2 = 6.28318548f * h;
     const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
@@ -432,127 +455,147 @@ static inline float schwarzp_proj_o4_offsetf(float x, float y, float z, float h)
     const float _t7 = 6.28318548f * x;
     const float _t8 = offsetgen_sinf(_t7);
     const float _t9 = _t8 * _t8;
-    const float _t10 = z * 6.28318548f;
+    const float _t10 = 6.28318548f * y;
     const float _t11 = offsetgen_sinf(_t10);
     const float _t12 = _t11 * _t11;
-    const float _t13 = _t9 + _t12 + _t6;
+    const float _t13 = _t9 + _t6 + _t12;
     const float _t14 = (_t13 > 1.17549435e-38f) ? 1.0f / _t13 : 0.0f;
     const float _t15 = _t4 * _t6 * _t14;
     const float _t16 = _t15 * _t15;
     const float _t17 = _t16 * _t16;
-    const float _t18 = _t3 * (_t14 * sqrtf(_t13));
-    const float _t19 = _t1 * (((2.75573188e-06f - 2.50520991e-08f * _t15 + _t16 * (1.60577024e-10f - 7.54937183e-13f * _t15)) * _t17 + (1.0f - 0.166666672f * _t15 + _t16 * (0.00833333377f - 0.000198412701f * _t15))) * (_t5 * _t18)) + _t5 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - 0.00138888892f * _t15) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t15) * _t16));
-    const float _t20 = _t19 * _t19;
-    const float _t21 = _t9 * _t4 * _t14;
-    const float _t22 = _t21 * _t21;
-    const float _t23 = _t22 * _t22;
-    const float _t24 = offsetgen_cosf(_t7);
-    const float _t25 = (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t8 * _t18) * _t24 + ((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * _t8;
+    const float _t18 = (_t16 * (2.08744777e-09f - 1.13046204e-11f * _t15) + (2.48015876e-05f - _t15 * 2.75573029e-07f)) * _t17 + (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - 0.00138888892f * _t15));
+    const float _t19 = _t3 * (_t14 * sqrtf(_t13));
+    const float _t20 = _t5 * _t19;
+    const float _t21 = ((0.00833333377f - 0.000198412701f * _t15) * _t16 + (1.0f - 0.166666672f * _t15) + (2.75573188e-06f - 2.50520991e-08f * _t15 + (1.60577024e-10f - 7.54937183e-13f * _t15) * _t16) * _t17) * _t20;
+    const float _t22 = _t1 * _t18 - _t21 * _t5;
+    const float _t23 = offsetgen_cosf(_t10);
+    const float _t24 = _t4 * _t12 * _t14;
+    const float _t25 = _t24 * _t24;
     const float _t26 = _t25 * _t25;
-    const float _t27 = _t4 * _t12 * _t14;
-    const float _t28 = _t27 * _t27;
-    const float _t29 = _t28 * _t28;
-    const float _t30 = offsetgen_cosf(_t10);
-    const float _t31 = ((0.00833333377f - 0.000198412701f * _t27) * _t28 + (1.0f - 0.166666672f * _t27) + (2.75573188e-06f - 2.50520991e-08f * _t27 + (1.60577024e-10f - 7.54937183e-13f * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.08744777e-09f - 1.13046204e-11f * _t27) + (2.48015876e-05f - _t27 * 2.75573029e-07f)) * _t29 + (1.0f - _t27 * 0.5f + _t28 * (0.0416666679f - 0.00138888892f * _t27)));
+    const float _t27 = 1.0f - _t24 * 0.5f + _t25 * (0.0416666679f - 0.00138888892f * _t24) + _t26 * (2.48015876e-05f - _t24 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t24) * _t25);
+    const float _t28 = _t11 * _t19;
+    const float _t29 = ((2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) * _t26 + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * _t28;
+    const float _t30 = _t23 * _t27 - _t29 * _t11;
+    const float _t31 = _t9 * _t4 * _t14;
     const float _t32 = _t31 * _t31;
-    const float _t33 = _t20 + _t26 + _t32;
-    const float _t34 = (_t33 > 1.17549435e-38f) ? 1.0f / _t33 : 0.0f;
-    const float _t35 = _t34 * (_t4 * _t26);
-    const float _t36 = _t35 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = _t3 * (_t34 * sqrtf(_t33));
-    const float _t39 = _t34 * (_t4 * _t32);
-    const float _t40 = _t39 * _t39;
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t34 * (_t20 * _t4);
-    const float _t43 = _t42 * _t42;
-    const float _t44 = _t43 * _t43;
-    return (1.0f - _t35 * 0.5f + (0.0416666679f - 0.00138888892f * _t35) * _t36 + (2.48015876e-05f - 2.75573029e-07f * _t35 + _t36 * (2.08744777e-09f - 1.13046204e-11f * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0f - 0.166666672f * _t35 + (0.00833333377f - 0.000198412701f * _t35) * _t36 + (2.75573188e-06f - 2.50520991e-08f * _t35 + (1.60577024e-10f - 7.54937183e-13f * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40 + (2.48015876e-05f - _t39 * 2.75573029e-07f)) * _t41 + (_t40 * (0.0416666679f - 0.00138888892f * _t39) + (1.0f - _t39 * 0.5f))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.60577024e-10f - 7.54937183e-13f * _t39) + (2.75573188e-06f - 2.50520991e-08f * _t39)) + (_t40 * (0.00833333377f - _t39 * 0.000198412701f) + (1.0f - 0.166666672f * _t39))))) + (_t1 * (_t44 * (2.48015876e-05f - _t42 * 2.75573029e-07f + (2.08744777e-09f - _t42 * 1.13046204e-11f) * _t43) + (1.0f - _t42 * 0.5f + (0.0416666679f - _t42 * 0.00138888892f) * _t43)) - _t5 * ((_t44 * ((1.60577024e-10f - _t42 * 7.54937183e-13f) * _t43 + (2.75573188e-06f - _t42 * 2.50520991e-08f)) + (_t43 * (0.00833333377f - _t42 * 0.000198412701f) + (1.0f - _t42 * 0.166666672f))) * (_t19 * _t38)));
+    const float _t33 = _t32 * _t32;
+    const float _t34 = (0.0416666679f - _t31 * 0.00138888892f) * _t32 + (1.0f - _t31 * 0.5f) + _t33 * (2.48015876e-05f - _t31 * 2.75573029e-07f + _t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f));
+    const float _t35 = offsetgen_cosf(_t7);
+    const float _t36 = _t8 * _t19;
+    const float _t37 = (1.0f - _t31 * 0.166666672f + (0.00833333377f - _t31 * 0.000198412701f) * _t32 + _t33 * (2.75573188e-06f - _t31 * 2.50520991e-08f + (1.60577024e-10f - _t31 * 7.54937183e-13f) * _t32)) * _t36;
+    const float _t38 = _t34 * _t35 - _t37 * _t8;
+    const float _t39 = _t23 * _t29 + _t11 * _t27;
+    const float _t40 = _t37 * _t35 + _t34 * _t8;
+    const float _t41 = _t21 * _t1 + _t5 * _t18;
+    const float _t42 = _t39 * _t39 + _t40 * _t40 + _t41 * _t41;
+    const float _t43 = _t3 * (((_t42 > 1.17549435e-38f) ? 1.0f / _t42 : 0.0f) * sqrtf(_t42));
+    const float _t44 = _t39 * _t43 - _t28;
+    const float _t45 = _t43 * _t41 - _t20;
+    const float _t46 = _t40 * _t43 - _t36;
+    const float _t47 = _t22 + (_t30 + _t38) - _t44 * (_t39 + _t30 * _t44 * 0.5f) - (_t22 * _t45 * 0.5f + _t41) * _t45 - (_t40 + _t38 * _t46 * 0.5f) * _t46;
+    const float _t48 = 1.73205256f * fabsf(_t3);
+    const float _t49 = _t1 + _t23 + _t35;
+    const float _t50 = _t48 + _t49;
+    const float _t51 = _t49 - _t48;
+    return (_t47 <= _t50) ? ((_t51 <= _t47) ? _t47 : _t51) : _t50;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 505
+ * Total ops: 363
  */
 static inline float schwarzp_proj_o4_shellf(float x, float y, float z, float t)
 {
-    const float _t0 = z * 6.28318548f;
+    const float _t0 = 6.28318548f * y;
     const float _t1 = offsetgen_cosf(_t0);
-    const float _t2 = offsetgen_sinf(_t0);
-    const float _t3 = 6.28318548f * x;
-    const float _t4 = offsetgen_sinf(_t3);
+    const float _t2 = 6.28318548f * (t * 0.5f);
+    const float _t3 = -_t2;
+    const float _t4 = (_t3 <= 1.0f) ? (((-1.0f) <= _t3) ? _t3 : (-1.0f)) : 1.0f;
     const float _t5 = _t4 * _t4;
-    const float _t6 = _t2 * _t2;
-    const float _t7 = 6.28318548f * y;
-    const float _t8 = offsetgen_sinf(_t7);
-    const float _t9 = _t8 * _t8;
-    const float _t10 = _t5 + _t6 + _t9;
-    const float _t11 = (_t10 > 1.17549435e-38f) ? 1.0f / _t10 : 0.0f;
-    const float _t12 = 6.28318548f * (t * 0.5f);
-    const float _t13 = (_t12 <= 1.0f) ? (((-1.0f) <= _t12) ? _t12 : (-1.0f)) : 1.0f;
-    const float _t14 = _t13 * _t13;
-    const float _t15 = _t11 * (_t14 * _t6);
-    const float _t16 = _t15 * _t15;
+    const float _t6 = offsetgen_sinf(_t0);
+    const float _t7 = _t6 * _t6;
+    const float _t8 = 6.28318548f * x;
+    const float _t9 = offsetgen_sinf(_t8);
+    const float _t10 = _t9 * _t9;
+    const float _t11 = z * 6.28318548f;
+    const float _t12 = offsetgen_sinf(_t11);
+    const float _t13 = _t12 * _t12;
+    const float _t14 = _t10 + _t13 + _t7;
+    const float _t15 = (_t14 > 1.17549435e-38f) ? 1.0f / _t14 : 0.0f;
+    const float _t16 = _t5 * _t7 * _t15;
     const float _t17 = _t16 * _t16;
-    const float _t18 = _t11 * sqrtf(_t10);
-    const float _t19 = _t18 * _t13;
-    const float _t20 = _t2 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - _t15 * 0.00138888892f) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16)) + _t1 * (((0.00833333377f - _t15 * 0.000198412701f) * _t16 + (1.0f - _t15 * 0.166666672f) + _t17 * (2.75573188e-06f - _t15 * 2.50520991e-08f + (1.60577024e-10f - _t15 * 7.54937183e-13f) * _t16)) * (_t2 * _t19));
-    const float _t21 = _t20 * _t20;
-    const float _t22 = _t11 * (_t14 * _t9);
-    const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = offsetgen_cosf(_t7);
-    const float _t26 = (_t24 * ((2.08744777e-09f - _t22 * 1.13046204e-11f) * _t23 + (2.48015876e-05f - _t22 * 2.75573029e-07f)) + (1.0f - _t22 * 0.5f + _t23 * (0.0416666679f - 0.00138888892f * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.00833333377f - _t22 * 0.000198412701f) + (1.0f - _t22 * 0.166666672f) + ((1.60577024e-10f - _t22 * 7.54937183e-13f) * _t23 + (2.75573188e-06f - _t22 * 2.50520991e-08f)) * _t24));
-    const float _t27 = _t26 * _t26;
-    const float _t28 = _t11 * (_t14 * _t5);
+    const float _t18 = _t17 * _t17;
+    const float _t19 = _t17 * (0.0416666679f - 0.00138888892f * _t16) + (1.0f - _t16 * 0.5f) + _t18 * (_t17 * (2.08744777e-09f - _t16 * 1.13046204e-11f) + (2.48015876e-05f - _t16 * 2.75573029e-07f));
+    const float _t20 = _t15 * sqrtf(_t14);
+    const float _t21 = _t20 * _t4;
+    const float _t22 = _t21 * _t6;
+    const float _t23 = _t22 * (1.0f - 0.166666672f * _t16 + _t17 * (0.00833333377f - _t16 * 0.000198412701f) + _t18 * (2.75573188e-06f - 2.50520991e-08f * _t16 + _t17 * (1.60577024e-10f - 7.54937183e-13f * _t16)));
+    const float _t24 = _t1 * _t19 - _t6 * _t23;
+    const float _t25 = _t6 * _t19 + _t1 * _t23;
+    const float _t26 = offsetgen_cosf(_t11);
+    const float _t27 = _t12 * _t21;
+    const float _t28 = _t15 * (_t5 * _t13);
     const float _t29 = _t28 * _t28;
     const float _t30 = _t29 * _t29;
-    const float _t31 = offsetgen_cosf(_t3);
-    const float _t32 = ((0.0416666679f - _t28 * 0.00138888892f) * _t29 + (1.0f - _t28 * 0.5f) + _t30 * (2.48015876e-05f - _t28 * 2.75573029e-07f + (2.08744777e-09f - _t28 * 1.13046204e-11f) * _t29)) * _t4 + _t19 * _t4 * (1.0f - _t28 * 0.166666672f + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + (_t29 * (1.60577024e-10f - _t28 * 7.54937183e-13f) + (2.75573188e-06f - _t28 * 2.50520991e-08f)) * _t30) * _t31;
-    const float _t33 = _t32 * _t32;
-    const float _t34 = _t21 + _t27 + _t33;
-    const float _t35 = (_t34 > 1.17549435e-38f) ? 1.0f / _t34 : 0.0f;
-    const float _t36 = _t35 * (_t14 * _t21);
-    const float _t37 = _t36 * _t36;
-    const float _t38 = _t37 * _t37;
-    const float _t39 = _t35 * sqrtf(_t34) * _t13;
-    const float _t40 = _t35 * (_t14 * _t33);
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t41 * _t41;
-    const float _t43 = _t35 * (_t14 * _t27);
-    const float _t44 = _t43 * _t43;
-    const float _t45 = _t44 * _t44;
-    const float _t46 = -_t12;
-    const float _t47 = (_t46 <= 1.0f) ? (((-1.0f) <= _t46) ? _t46 : (-1.0f)) : 1.0f;
-    const float _t48 = _t47 * _t47;
-    const float _t49 = _t48 * _t9 * _t11;
-    const float _t50 = _t49 * _t49;
-    const float _t51 = _t50 * _t50;
-    const float _t52 = _t18 * _t47;
-    const float _t53 = _t8 * (_t50 * (0.0416666679f - 0.00138888892f * _t49) + (1.0f - _t49 * 0.5f) + _t51 * (_t50 * (2.08744777e-09f - _t49 * 1.13046204e-11f) + (2.48015876e-05f - _t49 * 2.75573029e-07f))) + _t25 * (_t52 * _t8 * (1.0f - 0.166666672f * _t49 + _t50 * (0.00833333377f - _t49 * 0.000198412701f) + _t51 * (2.75573188e-06f - 2.50520991e-08f * _t49 + _t50 * (1.60577024e-10f - 7.54937183e-13f * _t49))));
-    const float _t54 = _t53 * _t53;
-    const float _t55 = _t11 * (_t48 * _t6);
-    const float _t56 = _t55 * _t55;
+    const float _t31 = _t27 * (_t30 * (2.75573188e-06f - 2.50520991e-08f * _t28 + (1.60577024e-10f - 7.54937183e-13f * _t28) * _t29) + ((0.00833333377f - 0.000198412701f * _t28) * _t29 + (1.0f - 0.166666672f * _t28)));
+    const float _t32 = 1.0f - 0.5f * _t28 + _t29 * (0.0416666679f - 0.00138888892f * _t28) + (2.48015876e-05f - 2.75573029e-07f * _t28 + (2.08744777e-09f - 1.13046204e-11f * _t28) * _t29) * _t30;
+    const float _t33 = _t26 * _t31 + _t32 * _t12;
+    const float _t34 = _t5 * _t10 * _t15;
+    const float _t35 = _t34 * _t34;
+    const float _t36 = _t35 * _t35;
+    const float _t37 = _t21 * _t9;
+    const float _t38 = ((2.75573188e-06f - 2.50520991e-08f * _t34 + (1.60577024e-10f - 7.54937183e-13f * _t34) * _t35) * _t36 + (_t35 * (0.00833333377f - 0.000198412701f * _t34) + (1.0f - 0.166666672f * _t34))) * _t37;
+    const float _t39 = offsetgen_cosf(_t8);
+    const float _t40 = (2.48015876e-05f - _t34 * 2.75573029e-07f + _t35 * (2.08744777e-09f - _t34 * 1.13046204e-11f)) * _t36 + (1.0f - _t34 * 0.5f + _t35 * (0.0416666679f - 0.00138888892f * _t34));
+    const float _t41 = _t38 * _t39 + _t40 * _t9;
+    const float _t42 = _t25 * _t25 + _t33 * _t33 + _t41 * _t41;
+    const float _t43 = _t4 * (((_t42 > 1.17549435e-38f) ? 1.0f / _t42 : 0.0f) * sqrtf(_t42));
+    const float _t44 = _t43 * _t25 - _t22;
+    const float _t45 = _t43 * _t41 - _t37;
+    const float _t46 = _t40 * _t39 - _t38 * _t9;
+    const float _t47 = _t33 * _t43 - _t27;
+    const float _t48 = _t32 * _t26 - _t12 * _t31;
+    const float _t49 = -((_t24 * _t44 * 0.5f + _t25) * _t44 + ((_t41 + _t45 * _t46 * 0.5f) * _t45 + _t47 * (_t33 + 0.5f * (_t47 * _t48))) - (_t24 + _t48 + _t46));
+    const float _t50 = 1.73205256f * fabsf(_t4);
+    const float _t51 = _t26 + _t1 + _t39;
+    const float _t52 = _t50 + _t51;
+    const float _t53 = _t51 - _t50;
+    const float _t54 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+    const float _t55 = _t54 * _t54;
+    const float _t56 = _t15 * (_t55 * _t13);
     const float _t57 = _t56 * _t56;
-    const float _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.75573188e-06f - 2.50520991e-08f * _t55 + (1.60577024e-10f - 7.54937183e-13f * _t55) * _t56) + ((0.00833333377f - 0.000198412701f * _t55) * _t56 + (1.0f - 0.166666672f * _t55)))) + (1.0f - 0.5f * _t55 + _t56 * (0.0416666679f - 0.00138888892f * _t55) + (2.48015876e-05f - 2.75573029e-07f * _t55 + (2.08744777e-09f - 1.13046204e-11f * _t55) * _t56) * _t57) * _t2;
-    const float _t59 = _t58 * _t58;
-    const float _t60 = _t48 * _t5 * _t11;
-    const float _t61 = _t60 * _t60;
-    const float _t62 = _t61 * _t61;
-    const float _t63 = ((2.75573188e-06f - 2.50520991e-08f * _t60 + (1.60577024e-10f - 7.54937183e-13f * _t60) * _t61) * _t62 + (_t61 * (0.00833333377f - 0.000198412701f * _t60) + (1.0f - 0.166666672f * _t60))) * (_t52 * _t4) * _t31 + ((2.48015876e-05f - _t60 * 2.75573029e-07f + _t61 * (2.08744777e-09f - _t60 * 1.13046204e-11f)) * _t62 + (1.0f - _t60 * 0.5f + _t61 * (0.0416666679f - 0.00138888892f * _t60))) * _t4;
-    const float _t64 = _t63 * _t63;
-    const float _t65 = _t54 + _t59 + _t64;
-    const float _t66 = (_t65 > 1.17549435e-38f) ? 1.0f / _t65 : 0.0f;
-    const float _t67 = _t66 * (_t48 * _t54);
-    const float _t68 = _t67 * _t67;
-    const float _t69 = _t68 * _t68;
-    const float _t70 = _t47 * (_t66 * sqrtf(_t65));
-    const float _t71 = _t66 * (_t48 * _t64);
+    const float _t58 = _t57 * _t57;
+    const float _t59 = 1.0f - _t56 * 0.5f + _t57 * (0.0416666679f - _t56 * 0.00138888892f) + _t58 * (2.48015876e-05f - _t56 * 2.75573029e-07f + (2.08744777e-09f - _t56 * 1.13046204e-11f) * _t57);
+    const float _t60 = _t20 * _t54;
+    const float _t61 = _t12 * _t60;
+    const float _t62 = ((0.00833333377f - _t56 * 0.000198412701f) * _t57 + (1.0f - _t56 * 0.166666672f) + _t58 * (2.75573188e-06f - _t56 * 2.50520991e-08f + (1.60577024e-10f - _t56 * 7.54937183e-13f) * _t57)) * _t61;
+    const float _t63 = _t12 * _t59 + _t26 * _t62;
+    const float _t64 = _t15 * (_t55 * _t7);
+    const float _t65 = _t64 * _t64;
+    const float _t66 = _t65 * _t65;
+    const float _t67 = _t66 * ((2.08744777e-09f - _t64 * 1.13046204e-11f) * _t65 + (2.48015876e-05f - _t64 * 2.75573029e-07f)) + (1.0f - _t64 * 0.5f + _t65 * (0.0416666679f - 0.00138888892f * _t64));
+    const float _t68 = _t6 * _t60;
+    const float _t69 = _t68 * (_t65 * (0.00833333377f - _t64 * 0.000198412701f) + (1.0f - _t64 * 0.166666672f) + ((1.60577024e-10f - _t64 * 7.54937183e-13f) * _t65 + (2.75573188e-06f - _t64 * 2.50520991e-08f)) * _t66);
+    const float _t70 = _t67 * _t6 + _t1 * _t69;
+    const float _t71 = _t15 * (_t55 * _t10);
     const float _t72 = _t71 * _t71;
     const float _t73 = _t72 * _t72;
-    const float _t74 = _t66 * (_t48 * _t59);
-    const float _t75 = _t74 * _t74;
-    const float _t76 = _t75 * _t75;
-    return (_t1 * ((2.48015876e-05f - _t36 * 2.75573029e-07f + (2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37) * _t38 + (1.0f - _t36 * 0.5f + _t37 * (0.0416666679f - 0.00138888892f * _t36))) - _t39 * _t20 * ((0.00833333377f - _t36 * 0.000198412701f) * _t37 + (1.0f - 0.166666672f * _t36) + (2.75573188e-06f - 2.50520991e-08f * _t36 + (1.60577024e-10f - 7.54937183e-13f * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.08744777e-09f - _t40 * 1.13046204e-11f) * _t41 + (2.48015876e-05f - _t40 * 2.75573029e-07f)) + (_t41 * (0.0416666679f - _t40 * 0.00138888892f) + (1.0f - _t40 * 0.5f))) * _t31 - _t39 * _t32 * (1.0f - _t40 * 0.166666672f + _t41 * (0.00833333377f - _t40 * 0.000198412701f) + _t42 * (2.75573188e-06f - _t40 * 2.50520991e-08f + (1.60577024e-10f - _t40 * 7.54937183e-13f) * _t41)) * _t4) + (_t25 * (1.0f - _t43 * 0.5f + (0.0416666679f - 0.00138888892f * _t43) * _t44 + (_t44 * (2.08744777e-09f - _t43 * 1.13046204e-11f) + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45) - (_t45 * (2.75573188e-06f - 2.50520991e-08f * _t43 + _t44 * (1.60577024e-10f - 7.54937183e-13f * _t43)) + (1.0f - 0.166666672f * _t43 + _t44 * (0.00833333377f - _t43 * 0.000198412701f))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.48015876e-05f - _t67 * 2.75573029e-07f + _t68 * (2.08744777e-09f - _t67 * 1.13046204e-11f)) + (1.0f - _t67 * 0.5f + _t68 * (0.0416666679f - _t67 * 0.00138888892f))) - _t8 * ((_t69 * ((1.60577024e-10f - _t67 * 7.54937183e-13f) * _t68 + (2.75573188e-06f - _t67 * 2.50520991e-08f)) + ((0.00833333377f - _t67 * 0.000198412701f) * _t68 + (1.0f - _t67 * 0.166666672f))) * (_t70 * _t53)) + ((((2.08744777e-09f - _t71 * 1.13046204e-11f) * _t72 + (2.48015876e-05f - _t71 * 2.75573029e-07f)) * _t73 + (1.0f - _t71 * 0.5f + (0.0416666679f - 0.00138888892f * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0f - 0.166666672f * _t71 + (0.00833333377f - _t71 * 0.000198412701f) * _t72 + (2.75573188e-06f - 2.50520991e-08f * _t71 + (1.60577024e-10f - 7.54937183e-13f * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.48015876e-05f - 2.75573029e-07f * _t74 + _t75 * (2.08744777e-09f - 1.13046204e-11f * _t74)) * _t76 + ((0.0416666679f - 0.00138888892f * _t74) * _t75 + (1.0f - _t74 * 0.5f))) - _t58 * _t70 * ((2.75573188e-06f - 2.50520991e-08f * _t74 + _t75 * (1.60577024e-10f - 7.54937183e-13f * _t74)) * _t76 + (_t75 * (0.00833333377f - 0.000198412701f * _t74) + (1.0f - 0.166666672f * _t74))) * _t2)));
+    const float _t74 = (0.0416666679f - _t71 * 0.00138888892f) * _t72 + (1.0f - _t71 * 0.5f) + _t73 * (2.48015876e-05f - _t71 * 2.75573029e-07f + (2.08744777e-09f - _t71 * 1.13046204e-11f) * _t72);
+    const float _t75 = _t60 * _t9;
+    const float _t76 = _t75 * (1.0f - _t71 * 0.166666672f + (0.00833333377f - _t71 * 0.000198412701f) * _t72 + (_t72 * (1.60577024e-10f - _t71 * 7.54937183e-13f) + (2.75573188e-06f - _t71 * 2.50520991e-08f)) * _t73);
+    const float _t77 = _t74 * _t9 + _t76 * _t39;
+    const float _t78 = _t63 * _t63 + _t70 * _t70 + _t77 * _t77;
+    const float _t79 = ((_t78 > 1.17549435e-38f) ? 1.0f / _t78 : 0.0f) * sqrtf(_t78) * _t54;
+    const float _t80 = _t79 * _t63 - _t61;
+    const float _t81 = _t26 * _t59 - _t12 * _t62;
+    const float _t82 = _t70 * _t79 - _t68;
+    const float _t83 = _t67 * _t1 - _t6 * _t69;
+    const float _t84 = _t79 * _t77 - _t75;
+    const float _t85 = _t74 * _t39 - _t76 * _t9;
+    const float _t86 = -(_t80 * (_t80 * _t81 * 0.5f + _t63) + _t82 * (_t70 + _t82 * _t83 * 0.5f) + _t84 * (_t84 * _t85 * 0.5f + _t77) - (_t81 + (_t85 + _t83)));
+    const float _t87 = 1.73205256f * fabsf(_t54);
+    const float _t88 = _t51 + _t87;
+    const float _t89 = _t51 - _t87;
+    return ((_t49 <= _t52) ? ((_t53 <= _t49) ? _t49 : _t53) : _t52) * ((_t86 <= _t88) ? ((_t89 <= _t86) ? _t86 : _t89) : _t88);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
@@ -827,7 +870,7 @@ static inline void schwarzp_proj_o4_offset_n(size_t n, const double *x, const do
     for (i = 0; i < blocked; i += 8) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
-            const double _t0 = 6.2831853071795862 * y[i + j];
+            const double _t0 = z[i + j] * 6.2831853071795862;
             const double _t1 = offsetgen_batch_cos(_t0);
             const double _t2 = 6.2831853071795862 * h[i + j];
             const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
@@ -837,42 +880,49 @@ static inline void schwarzp_proj_o4_offset_n(size_t n, const double *x, const do
             const double _t7 = 6.2831853071795862 * x[i + j];
             const double _t8 = offsetgen_batch_sin(_t7);
             const double _t9 = _t8 * _t8;
-            const double _t10 = z[i + j] * 6.2831853071795862;
+            const double _t10 = 6.2831853071795862 * y[i + j];
             const double _t11 = offsetgen_batch_sin(_t10);
             const double _t12 = _t11 * _t11;
-            const double _t13 = _t9 + _t12 + _t6;
+            const double _t13 = _t9 + _t6 + _t12;
             const double _t14 = (_t13 > 1.1754943508222875e-38) ? 1.0 / _t13 : 0.0;
             const double _t15 = _t4 * _t6 * _t14;
             const double _t16 = _t15 * _t15;
             const double _t17 = _t16 * _t16;
-            const double _t18 = _t3 * (_t14 * offsetgen_batch_sqrt(_t13));
-            const double _t19 = _t1 * (((2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + _t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15)) * _t17 + (1.0 - 0.16666666666666666 * _t15 + _t16 * (0.0083333333333333003 - 0.00019841269841216566 * _t15))) * (_t5 * _t18)) + _t5 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) * _t16));
-            const double _t20 = _t19 * _t19;
-            const double _t21 = _t9 * _t4 * _t14;
-            const double _t22 = _t21 * _t21;
-            const double _t23 = _t22 * _t22;
-            const double _t24 = offsetgen_batch_cos(_t7);
-            const double _t25 = (1.0 - _t21 * 0.16666666666666666 + (0.0083333333333333003 - _t21 * 0.00019841269841216566) * _t22 + _t23 * (2.755731919201122e-06 - _t21 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t21 * 7.549371704181243e-13) * _t22)) * (_t8 * _t18) * _t24 + ((0.041666666666666102 - _t21 * 0.0013888888888798428) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.4801587247292686e-05 - _t21 * 2.7557303701922228e-07 + _t22 * (2.0874477943664777e-09 - _t21 * 1.1304620460700782e-11))) * _t8;
+            const double _t18 = (_t16 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) + (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07)) * _t17 + (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15));
+            const double _t19 = _t3 * (_t14 * offsetgen_batch_sqrt(_t13));
+            const double _t20 = _t5 * _t19;
+            const double _t21 = ((0.0083333333333333003 - 0.00019841269841216566 * _t15) * _t16 + (1.0 - 0.16666666666666666 * _t15) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15) * _t16) * _t17) * _t20;
+            const double _t22 = _t1 * _t18 - _t21 * _t5;
+            const double _t23 = offsetgen_batch_cos(_t10);
+            const double _t24 = _t4 * _t12 * _t14;
+            const double _t25 = _t24 * _t24;
             const double _t26 = _t25 * _t25;
-            const double _t27 = _t4 * _t12 * _t14;
-            const double _t28 = _t27 * _t27;
-            const double _t29 = _t28 * _t28;
-            const double _t30 = offsetgen_batch_cos(_t10);
-            const double _t31 = ((0.0083333333333333003 - 0.00019841269841216566 * _t27) * _t28 + (1.0 - 0.16666666666666666 * _t27) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t27 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t27) + (2.4801587247292686e-05 - _t27 * 2.7557303701922228e-07)) * _t29 + (1.0 - _t27 * 0.5 + _t28 * (0.041666666666666102 - 0.0013888888888798428 * _t27)));
+            const double _t27 = 1.0 - _t24 * 0.5 + _t25 * (0.041666666666666102 - 0.0013888888888798428 * _t24) + _t26 * (2.4801587247292686e-05 - _t24 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t24) * _t25);
+            const double _t28 = _t11 * _t19;
+            const double _t29 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t24 + _t25 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t24)) * _t26 + (1.0 - 0.16666666666666666 * _t24 + _t25 * (0.0083333333333333003 - 0.00019841269841216566 * _t24))) * _t28;
+            const double _t30 = _t23 * _t27 - _t29 * _t11;
+            const double _t31 = _t9 * _t4 * _t14;
             const double _t32 = _t31 * _t31;
-            const double _t33 = _t20 + _t26 + _t32;
-            const double _t34 = (_t33 > 1.1754943508222875e-38) ? 1.0 / _t33 : 0.0;
-            const double _t35 = _t34 * (_t4 * _t26);
-            const double _t36 = _t35 * _t35;
-            const double _t37 = _t36 * _t36;
-            const double _t38 = _t3 * (_t34 * offsetgen_batch_sqrt(_t33));
-            const double _t39 = _t34 * (_t4 * _t32);
-            const double _t40 = _t39 * _t39;
-            const double _t41 = _t40 * _t40;
-            const double _t42 = _t34 * (_t20 * _t4);
-            const double _t43 = _t42 * _t42;
-            const double _t44 = _t43 * _t43;
-            out[i + j] = (1.0 - _t35 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t35 + _t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0 - 0.16666666666666666 * _t35 + (0.0083333333333333003 - 0.00019841269841216566 * _t35) * _t36 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.0874477943664777e-09 - _t39 * 1.1304620460700782e-11) * _t40 + (2.4801587247292686e-05 - _t39 * 2.7557303701922228e-07)) * _t41 + (_t40 * (0.041666666666666102 - 0.0013888888888798428 * _t39) + (1.0 - _t39 * 0.5))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t39) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t39)) + (_t40 * (0.0083333333333333003 - _t39 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t39))))) + (_t1 * (_t44 * (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t42 * 1.1304620460700782e-11) * _t43) + (1.0 - _t42 * 0.5 + (0.041666666666666102 - _t42 * 0.0013888888888798428) * _t43)) - _t5 * ((_t44 * ((1.6057701922579786e-10 - _t42 * 7.549371704181243e-13) * _t43 + (2.755731919201122e-06 - _t42 * 2.5052099244914114e-08)) + (_t43 * (0.0083333333333333003 - _t42 * 0.00019841269841216566) + (1.0 - _t42 * 0.16666666666666666))) * (_t19 * _t38)));
+            const double _t33 = _t32 * _t32;
+            const double _t34 = (0.041666666666666102 - _t31 * 0.0013888888888798428) * _t32 + (1.0 - _t31 * 0.5) + _t33 * (2.4801587247292686e-05 - _t31 * 2.7557303701922228e-07 + _t32 * (2.0874477943664777e-09 - _t31 * 1.1304620460700782e-11));
+            const double _t35 = offsetgen_batch_cos(_t7);
+            const double _t36 = _t8 * _t19;
+            const double _t37 = (1.0 - _t31 * 0.16666666666666666 + (0.0083333333333333003 - _t31 * 0.00019841269841216566) * _t32 + _t33 * (2.755731919201122e-06 - _t31 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t31 * 7.549371704181243e-13) * _t32)) * _t36;
+            const double _t38 = _t34 * _t35 - _t37 * _t8;
+            const double _t39 = _t23 * _t29 + _t11 * _t27;
+            const double _t40 = _t37 * _t35 + _t34 * _t8;
+            const double _t41 = _t21 * _t1 + _t5 * _t18;
+            const double _t42 = _t39 * _t39 + _t40 * _t40 + _t41 * _t41;
+            const double _t43 = _t3 * (((_t42 > 1.1754943508222875e-38) ? 1.0 / _t42 : 0.0) * offsetgen_batch_sqrt(_t42));
+            const double _t44 = _t39 * _t43 - _t28;
+            const double _t45 = _t43 * _t41 - _t20;
+            const double _t46 = _t40 * _t43 - _t36;
+            const double _t47 = _t22 + (_t30 + _t38) - _t44 * (_t39 + _t30 * _t44 * 0.5) - (_t22 * _t45 * 0.5 + _t41) * _t45 - (_t40 + _t38 * _t46 * 0.5) * _t46;
+            const double _t48 = 1.7320525396196846 * fabs(_t3);
+            const double _t49 = _t1 + _t23 + _t35;
+            const double _t50 = _t48 + _t49;
+            const double _t51 = _t49 - _t48;
+            out[i + j] = (_t47 <= _t50) ? ((_t51 <= _t47) ? _t47 : _t51) : _t50;
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -891,84 +941,97 @@ static inline void schwarzp_proj_o4_shell_n(size_t n, const double *x, const dou
     for (i = 0; i < blocked; i += 8) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 8; ++j) {
-            const double _t0 = z[i + j] * 6.2831853071795862;
+            const double _t0 = 6.2831853071795862 * y[i + j];
             const double _t1 = offsetgen_batch_cos(_t0);
-            const double _t2 = offsetgen_batch_sin(_t0);
-            const double _t3 = 6.2831853071795862 * x[i + j];
-            const double _t4 = offsetgen_batch_sin(_t3);
+            const double _t2 = 6.2831853071795862 * (t[i + j] * 0.5);
+            const double _t3 = -_t2;
+            const double _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
             const double _t5 = _t4 * _t4;
-            const double _t6 = _t2 * _t2;
-            const double _t7 = 6.2831853071795862 * y[i + j];
-            const double _t8 = offsetgen_batch_sin(_t7);
-            const double _t9 = _t8 * _t8;
-            const double _t10 = _t5 + _t6 + _t9;
-            const double _t11 = (_t10 > 1.1754943508222875e-38) ? 1.0 / _t10 : 0.0;
-            const double _t12 = 6.2831853071795862 * (t[i + j] * 0.5);
-            const double _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
-            const double _t14 = _t13 * _t13;
-            const double _t15 = _t11 * (_t14 * _t6);
-            const double _t16 = _t15 * _t15;
+            const double _t6 = offsetgen_batch_sin(_t0);
+            const double _t7 = _t6 * _t6;
+            const double _t8 = 6.2831853071795862 * x[i + j];
+            const double _t9 = offsetgen_batch_sin(_t8);
+            const double _t10 = _t9 * _t9;
+            const double _t11 = z[i + j] * 6.2831853071795862;
+            const double _t12 = offsetgen_batch_sin(_t11);
+            const double _t13 = _t12 * _t12;
+            const double _t14 = _t10 + _t13 + _t7;
+            const double _t15 = (_t14 > 1.1754943508222875e-38) ? 1.0 / _t14 : 0.0;
+            const double _t16 = _t5 * _t7 * _t15;
             const double _t17 = _t16 * _t16;
-            const double _t18 = _t11 * offsetgen_batch_sqrt(_t10);
-            const double _t19 = _t18 * _t13;
-            const double _t20 = _t2 * (1.0 - _t15 * 0.5 + _t16 * (0.041666666666666102 - _t15 * 0.0013888888888798428) + _t17 * (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t15 * 1.1304620460700782e-11) * _t16)) + _t1 * (((0.0083333333333333003 - _t15 * 0.00019841269841216566) * _t16 + (1.0 - _t15 * 0.16666666666666666) + _t17 * (2.755731919201122e-06 - _t15 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t15 * 7.549371704181243e-13) * _t16)) * (_t2 * _t19));
-            const double _t21 = _t20 * _t20;
-            const double _t22 = _t11 * (_t14 * _t9);
-            const double _t23 = _t22 * _t22;
-            const double _t24 = _t23 * _t23;
-            const double _t25 = offsetgen_batch_cos(_t7);
-            const double _t26 = (_t24 * ((2.0874477943664777e-09 - _t22 * 1.1304620460700782e-11) * _t23 + (2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07)) + (1.0 - _t22 * 0.5 + _t23 * (0.041666666666666102 - 0.0013888888888798428 * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.0083333333333333003 - _t22 * 0.00019841269841216566) + (1.0 - _t22 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t22 * 7.549371704181243e-13) * _t23 + (2.755731919201122e-06 - _t22 * 2.5052099244914114e-08)) * _t24));
-            const double _t27 = _t26 * _t26;
-            const double _t28 = _t11 * (_t14 * _t5);
+            const double _t18 = _t17 * _t17;
+            const double _t19 = _t17 * (0.041666666666666102 - 0.0013888888888798428 * _t16) + (1.0 - _t16 * 0.5) + _t18 * (_t17 * (2.0874477943664777e-09 - _t16 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t16 * 2.7557303701922228e-07));
+            const double _t20 = _t15 * offsetgen_batch_sqrt(_t14);
+            const double _t21 = _t20 * _t4;
+            const double _t22 = _t21 * _t6;
+            const double _t23 = _t22 * (1.0 - 0.16666666666666666 * _t16 + _t17 * (0.0083333333333333003 - _t16 * 0.00019841269841216566) + _t18 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t16 + _t17 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t16)));
+            const double _t24 = _t1 * _t19 - _t6 * _t23;
+            const double _t25 = _t6 * _t19 + _t1 * _t23;
+            const double _t26 = offsetgen_batch_cos(_t11);
+            const double _t27 = _t12 * _t21;
+            const double _t28 = _t15 * (_t5 * _t13);
             const double _t29 = _t28 * _t28;
             const double _t30 = _t29 * _t29;
-            const double _t31 = offsetgen_batch_cos(_t3);
-            const double _t32 = ((0.041666666666666102 - _t28 * 0.0013888888888798428) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11) * _t29)) * _t4 + _t19 * _t4 * (1.0 - _t28 * 0.16666666666666666 + (0.0083333333333333003 - _t28 * 0.00019841269841216566) * _t29 + (_t29 * (1.6057701922579786e-10 - _t28 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t28 * 2.5052099244914114e-08)) * _t30) * _t31;
-            const double _t33 = _t32 * _t32;
-            const double _t34 = _t21 + _t27 + _t33;
-            const double _t35 = (_t34 > 1.1754943508222875e-38) ? 1.0 / _t34 : 0.0;
-            const double _t36 = _t35 * (_t14 * _t21);
-            const double _t37 = _t36 * _t36;
-            const double _t38 = _t37 * _t37;
-            const double _t39 = _t35 * offsetgen_batch_sqrt(_t34) * _t13;
-            const double _t40 = _t35 * (_t14 * _t33);
-            const double _t41 = _t40 * _t40;
-            const double _t42 = _t41 * _t41;
-            const double _t43 = _t35 * (_t14 * _t27);
-            const double _t44 = _t43 * _t43;
-            const double _t45 = _t44 * _t44;
-            const double _t46 = -_t12;
-            const double _t47 = (_t46 <= 1.0) ? (((-1.0) <= _t46) ? _t46 : (-1.0)) : 1.0;
-            const double _t48 = _t47 * _t47;
-            const double _t49 = _t48 * _t9 * _t11;
-            const double _t50 = _t49 * _t49;
-            const double _t51 = _t50 * _t50;
-            const double _t52 = _t18 * _t47;
-            const double _t53 = _t8 * (_t50 * (0.041666666666666102 - 0.0013888888888798428 * _t49) + (1.0 - _t49 * 0.5) + _t51 * (_t50 * (2.0874477943664777e-09 - _t49 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t49 * 2.7557303701922228e-07))) + _t25 * (_t52 * _t8 * (1.0 - 0.16666666666666666 * _t49 + _t50 * (0.0083333333333333003 - _t49 * 0.00019841269841216566) + _t51 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t49 + _t50 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t49))));
-            const double _t54 = _t53 * _t53;
-            const double _t55 = _t11 * (_t48 * _t6);
-            const double _t56 = _t55 * _t55;
+            const double _t31 = _t27 * (_t30 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) * _t29) + ((0.0083333333333333003 - 0.00019841269841216566 * _t28) * _t29 + (1.0 - 0.16666666666666666 * _t28)));
+            const double _t32 = 1.0 - 0.5 * _t28 + _t29 * (0.041666666666666102 - 0.0013888888888798428 * _t28) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t28 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t28) * _t29) * _t30;
+            const double _t33 = _t26 * _t31 + _t32 * _t12;
+            const double _t34 = _t5 * _t10 * _t15;
+            const double _t35 = _t34 * _t34;
+            const double _t36 = _t35 * _t35;
+            const double _t37 = _t21 * _t9;
+            const double _t38 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t34 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t34) * _t35) * _t36 + (_t35 * (0.0083333333333333003 - 0.00019841269841216566 * _t34) + (1.0 - 0.16666666666666666 * _t34))) * _t37;
+            const double _t39 = offsetgen_batch_cos(_t8);
+            const double _t40 = (2.4801587247292686e-05 - _t34 * 2.7557303701922228e-07 + _t35 * (2.0874477943664777e-09 - _t34 * 1.1304620460700782e-11)) * _t36 + (1.0 - _t34 * 0.5 + _t35 * (0.041666666666666102 - 0.0013888888888798428 * _t34));
+            const double _t41 = _t38 * _t39 + _t40 * _t9;
+            const double _t42 = _t25 * _t25 + _t33 * _t33 + _t41 * _t41;
+            const double _t43 = _t4 * (((_t42 > 1.1754943508222875e-38) ? 1.0 / _t42 : 0.0) * offsetgen_batch_sqrt(_t42));
+            const double _t44 = _t43 * _t25 - _t22;
+            const double _t45 = _t43 * _t41 - _t37;
+            const double _t46 = _t40 * _t39 - _t38 * _t9;
+            const double _t47 = _t33 * _t43 - _t27;
+            const double _t48 = _t32 * _t26 - _t12 * _t31;
+            const double _t49 = -((_t24 * _t44 * 0.5 + _t25) * _t44 + ((_t41 + _t45 * _t46 * 0.5) * _t45 + _t47 * (_t33 + 0.5 * (_t47 * _t48))) - (_t24 + _t48 + _t46));
+            const double _t50 = 1.7320525396196846 * fabs(_t4);
+            const double _t51 = _t26 + _t1 + _t39;
+            const double _t52 = _t50 + _t51;
+            const double _t53 = _t51 - _t50;
+            const double _t54 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+            const double _t55 = _t54 * _t54;
+            const double _t56 = _t15 * (_t55 * _t13);
             const double _t57 = _t56 * _t56;
-            const double _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t55 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t55) * _t56) + ((0.0083333333333333003 - 0.00019841269841216566 * _t55) * _t56 + (1.0 - 0.16666666666666666 * _t55)))) + (1.0 - 0.5 * _t55 + _t56 * (0.041666666666666102 - 0.0013888888888798428 * _t55) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t55 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t55) * _t56) * _t57) * _t2;
-            const double _t59 = _t58 * _t58;
-            const double _t60 = _t48 * _t5 * _t11;
-            const double _t61 = _t60 * _t60;
-            const double _t62 = _t61 * _t61;
-            const double _t63 = ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t60 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t60) * _t61) * _t62 + (_t61 * (0.0083333333333333003 - 0.00019841269841216566 * _t60) + (1.0 - 0.16666666666666666 * _t60))) * (_t52 * _t4) * _t31 + ((2.4801587247292686e-05 - _t60 * 2.7557303701922228e-07 + _t61 * (2.0874477943664777e-09 - _t60 * 1.1304620460700782e-11)) * _t62 + (1.0 - _t60 * 0.5 + _t61 * (0.041666666666666102 - 0.0013888888888798428 * _t60))) * _t4;
-            const double _t64 = _t63 * _t63;
-            const double _t65 = _t54 + _t59 + _t64;
-            const double _t66 = (_t65 > 1.1754943508222875e-38) ? 1.0 / _t65 : 0.0;
-            const double _t67 = _t66 * (_t48 * _t54);
-            const double _t68 = _t67 * _t67;
-            const double _t69 = _t68 * _t68;
-            const double _t70 = _t47 * (_t66 * offsetgen_batch_sqrt(_t65));
-            const double _t71 = _t66 * (_t48 * _t64);
+            const double _t58 = _t57 * _t57;
+            const double _t59 = 1.0 - _t56 * 0.5 + _t57 * (0.041666666666666102 - _t56 * 0.0013888888888798428) + _t58 * (2.4801587247292686e-05 - _t56 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t56 * 1.1304620460700782e-11) * _t57);
+            const double _t60 = _t20 * _t54;
+            const double _t61 = _t12 * _t60;
+            const double _t62 = ((0.0083333333333333003 - _t56 * 0.00019841269841216566) * _t57 + (1.0 - _t56 * 0.16666666666666666) + _t58 * (2.755731919201122e-06 - _t56 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t56 * 7.549371704181243e-13) * _t57)) * _t61;
+            const double _t63 = _t12 * _t59 + _t26 * _t62;
+            const double _t64 = _t15 * (_t55 * _t7);
+            const double _t65 = _t64 * _t64;
+            const double _t66 = _t65 * _t65;
+            const double _t67 = _t66 * ((2.0874477943664777e-09 - _t64 * 1.1304620460700782e-11) * _t65 + (2.4801587247292686e-05 - _t64 * 2.7557303701922228e-07)) + (1.0 - _t64 * 0.5 + _t65 * (0.041666666666666102 - 0.0013888888888798428 * _t64));
+            const double _t68 = _t6 * _t60;
+            const double _t69 = _t68 * (_t65 * (0.0083333333333333003 - _t64 * 0.00019841269841216566) + (1.0 - _t64 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t64 * 7.549371704181243e-13) * _t65 + (2.755731919201122e-06 - _t64 * 2.5052099244914114e-08)) * _t66);
+            const double _t70 = _t67 * _t6 + _t1 * _t69;
+            const double _t71 = _t15 * (_t55 * _t10);
             const double _t72 = _t71 * _t71;
             const double _t73 = _t72 * _t72;
-            const double _t74 = _t66 * (_t48 * _t59);
-            const double _t75 = _t74 * _t74;
-            const double _t76 = _t75 * _t75;
-            out[i + j] = (_t1 * ((2.4801587247292686e-05 - _t36 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t36 * 1.1304620460700782e-11) * _t37) * _t38 + (1.0 - _t36 * 0.5 + _t37 * (0.041666666666666102 - 0.0013888888888798428 * _t36))) - _t39 * _t20 * ((0.0083333333333333003 - _t36 * 0.00019841269841216566) * _t37 + (1.0 - 0.16666666666666666 * _t36) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t36 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.0874477943664777e-09 - _t40 * 1.1304620460700782e-11) * _t41 + (2.4801587247292686e-05 - _t40 * 2.7557303701922228e-07)) + (_t41 * (0.041666666666666102 - _t40 * 0.0013888888888798428) + (1.0 - _t40 * 0.5))) * _t31 - _t39 * _t32 * (1.0 - _t40 * 0.16666666666666666 + _t41 * (0.0083333333333333003 - _t40 * 0.00019841269841216566) + _t42 * (2.755731919201122e-06 - _t40 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t40 * 7.549371704181243e-13) * _t41)) * _t4) + (_t25 * (1.0 - _t43 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t43) * _t44 + (_t44 * (2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45) - (_t45 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t43 + _t44 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t43)) + (1.0 - 0.16666666666666666 * _t43 + _t44 * (0.0083333333333333003 - _t43 * 0.00019841269841216566))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.4801587247292686e-05 - _t67 * 2.7557303701922228e-07 + _t68 * (2.0874477943664777e-09 - _t67 * 1.1304620460700782e-11)) + (1.0 - _t67 * 0.5 + _t68 * (0.041666666666666102 - _t67 * 0.0013888888888798428))) - _t8 * ((_t69 * ((1.6057701922579786e-10 - _t67 * 7.549371704181243e-13) * _t68 + (2.755731919201122e-06 - _t67 * 2.5052099244914114e-08)) + ((0.0083333333333333003 - _t67 * 0.00019841269841216566) * _t68 + (1.0 - _t67 * 0.16666666666666666))) * (_t70 * _t53)) + ((((2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) * _t72 + (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07)) * _t73 + (1.0 - _t71 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0 - 0.16666666666666666 * _t71 + (0.0083333333333333003 - _t71 * 0.00019841269841216566) * _t72 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t71 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t74 + _t75 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t74)) * _t76 + ((0.041666666666666102 - 0.0013888888888798428 * _t74) * _t75 + (1.0 - _t74 * 0.5))) - _t58 * _t70 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t74 + _t75 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t74)) * _t76 + (_t75 * (0.0083333333333333003 - 0.00019841269841216566 * _t74) + (1.0 - 0.16666666666666666 * _t74))) * _t2)));
+            const double _t74 = (0.041666666666666102 - _t71 * 0.0013888888888798428) * _t72 + (1.0 - _t71 * 0.5) + _t73 * (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11) * _t72);
+            const double _t75 = _t60 * _t9;
+            const double _t76 = _t75 * (1.0 - _t71 * 0.16666666666666666 + (0.0083333333333333003 - _t71 * 0.00019841269841216566) * _t72 + (_t72 * (1.6057701922579786e-10 - _t71 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t71 * 2.5052099244914114e-08)) * _t73);
+            const double _t77 = _t74 * _t9 + _t76 * _t39;
+            const double _t78 = _t63 * _t63 + _t70 * _t70 + _t77 * _t77;
+            const double _t79 = ((_t78 > 1.1754943508222875e-38) ? 1.0 / _t78 : 0.0) * offsetgen_batch_sqrt(_t78) * _t54;
+            const double _t80 = _t79 * _t63 - _t61;
+            const double _t81 = _t26 * _t59 - _t12 * _t62;
+            const double _t82 = _t70 * _t79 - _t68;
+            const double _t83 = _t67 * _t1 - _t6 * _t69;
+            const double _t84 = _t79 * _t77 - _t75;
+            const double _t85 = _t74 * _t39 - _t76 * _t9;
+            const double _t86 = -(_t80 * (_t80 * _t81 * 0.5 + _t63) + _t82 * (_t70 + _t82 * _t83 * 0.5) + _t84 * (_t84 * _t85 * 0.5 + _t77) - (_t81 + (_t85 + _t83)));
+            const double _t87 = 1.7320525396196846 * fabs(_t54);
+            const double _t88 = _t51 + _t87;
+            const double _t89 = _t51 - _t87;
+            out[i + j] = ((_t49 <= _t52) ? ((_t53 <= _t49) ? _t49 : _t53) : _t52) * ((_t86 <= _t88) ? ((_t89 <= _t86) ? _t86 : _t89) : _t88);
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -987,7 +1050,7 @@ static inline void schwarzp_proj_o4_offsetf_n(size_t n, const float *x, const fl
     for (i = 0; i < blocked; i += 16) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
-            const float _t0 = 6.28318548f * y[i + j];
+            const float _t0 = z[i + j] * 6.28318548f;
             const float _t1 = offsetgen_batch_cosf(_t0);
             const float _t2 = 6.28318548f * h[i + j];
             const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
@@ -997,42 +1060,49 @@ static inline void schwarzp_proj_o4_offsetf_n(size_t n, const float *x, const fl
             const float _t7 = 6.28318548f * x[i + j];
             const float _t8 = offsetgen_batch_sinf(_t7);
             const float _t9 = _t8 * _t8;
-            const float _t10 = z[i + j] * 6.28318548f;
+            const float _t10 = 6.28318548f * y[i + j];
             const float _t11 = offsetgen_batch_sinf(_t10);
             const float _t12 = _t11 * _t11;
-            const float _t13 = _t9 + _t12 + _t6;
+            const float _t13 = _t9 + _t6 + _t12;
             const float _t14 = (_t13 > 1.17549435e-38f) ? 1.0f / _t13 : 0.0f;
             const float _t15 = _t4 * _t6 * _t14;
             const float _t16 = _t15 * _t15;
             const float _t17 = _t16 * _t16;
-            const float _t18 = _t3 * (_t14 * offsetgen_batch_sqrtf(_t13));
-            const float _t19 = _t1 * (((2.75573188e-06f - 2.50520991e-08f * _t15 + _t16 * (1.60577024e-10f - 7.54937183e-13f * _t15)) * _t17 + (1.0f - 0.166666672f * _t15 + _t16 * (0.00833333377f - 0.000198412701f * _t15))) * (_t5 * _t18)) + _t5 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - 0.00138888892f * _t15) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t15) * _t16));
-            const float _t20 = _t19 * _t19;
-            const float _t21 = _t9 * _t4 * _t14;
-            const float _t22 = _t21 * _t21;
-            const float _t23 = _t22 * _t22;
-            const float _t24 = offsetgen_batch_cosf(_t7);
-            const float _t25 = (1.0f - _t21 * 0.166666672f + (0.00833333377f - _t21 * 0.000198412701f) * _t22 + _t23 * (2.75573188e-06f - _t21 * 2.50520991e-08f + (1.60577024e-10f - _t21 * 7.54937183e-13f) * _t22)) * (_t8 * _t18) * _t24 + ((0.0416666679f - _t21 * 0.00138888892f) * _t22 + (1.0f - _t21 * 0.5f) + _t23 * (2.48015876e-05f - _t21 * 2.75573029e-07f + _t22 * (2.08744777e-09f - _t21 * 1.13046204e-11f))) * _t8;
+            const float _t18 = (_t16 * (2.08744777e-09f - 1.13046204e-11f * _t15) + (2.48015876e-05f - _t15 * 2.75573029e-07f)) * _t17 + (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - 0.00138888892f * _t15));
+            const float _t19 = _t3 * (_t14 * offsetgen_batch_sqrtf(_t13));
+            const float _t20 = _t5 * _t19;
+            const float _t21 = ((0.00833333377f - 0.000198412701f * _t15) * _t16 + (1.0f - 0.166666672f * _t15) + (2.75573188e-06f - 2.50520991e-08f * _t15 + (1.60577024e-10f - 7.54937183e-13f * _t15) * _t16) * _t17) * _t20;
+            const float _t22 = _t1 * _t18 - _t21 * _t5;
+            const float _t23 = offsetgen_batch_cosf(_t10);
+            const float _t24 = _t4 * _t12 * _t14;
+            const float _t25 = _t24 * _t24;
             const float _t26 = _t25 * _t25;
-            const float _t27 = _t4 * _t12 * _t14;
-            const float _t28 = _t27 * _t27;
-            const float _t29 = _t28 * _t28;
-            const float _t30 = offsetgen_batch_cosf(_t10);
-            const float _t31 = ((0.00833333377f - 0.000198412701f * _t27) * _t28 + (1.0f - 0.166666672f * _t27) + (2.75573188e-06f - 2.50520991e-08f * _t27 + (1.60577024e-10f - 7.54937183e-13f * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.08744777e-09f - 1.13046204e-11f * _t27) + (2.48015876e-05f - _t27 * 2.75573029e-07f)) * _t29 + (1.0f - _t27 * 0.5f + _t28 * (0.0416666679f - 0.00138888892f * _t27)));
+            const float _t27 = 1.0f - _t24 * 0.5f + _t25 * (0.0416666679f - 0.00138888892f * _t24) + _t26 * (2.48015876e-05f - _t24 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t24) * _t25);
+            const float _t28 = _t11 * _t19;
+            const float _t29 = ((2.75573188e-06f - 2.50520991e-08f * _t24 + _t25 * (1.60577024e-10f - 7.54937183e-13f * _t24)) * _t26 + (1.0f - 0.166666672f * _t24 + _t25 * (0.00833333377f - 0.000198412701f * _t24))) * _t28;
+            const float _t30 = _t23 * _t27 - _t29 * _t11;
+            const float _t31 = _t9 * _t4 * _t14;
             const float _t32 = _t31 * _t31;
-            const float _t33 = _t20 + _t26 + _t32;
-            const float _t34 = (_t33 > 1.17549435e-38f) ? 1.0f / _t33 : 0.0f;
-            const float _t35 = _t34 * (_t4 * _t26);
-            const float _t36 = _t35 * _t35;
-            const float _t37 = _t36 * _t36;
-            const float _t38 = _t3 * (_t34 * offsetgen_batch_sqrtf(_t33));
-            const float _t39 = _t34 * (_t4 * _t32);
-            const float _t40 = _t39 * _t39;
-            const float _t41 = _t40 * _t40;
-            const float _t42 = _t34 * (_t20 * _t4);
-            const float _t43 = _t42 * _t42;
-            const float _t44 = _t43 * _t43;
-            out[i + j] = (1.0f - _t35 * 0.5f + (0.0416666679f - 0.00138888892f * _t35) * _t36 + (2.48015876e-05f - 2.75573029e-07f * _t35 + _t36 * (2.08744777e-09f - 1.13046204e-11f * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0f - 0.166666672f * _t35 + (0.00833333377f - 0.000198412701f * _t35) * _t36 + (2.75573188e-06f - 2.50520991e-08f * _t35 + (1.60577024e-10f - 7.54937183e-13f * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.08744777e-09f - _t39 * 1.13046204e-11f) * _t40 + (2.48015876e-05f - _t39 * 2.75573029e-07f)) * _t41 + (_t40 * (0.0416666679f - 0.00138888892f * _t39) + (1.0f - _t39 * 0.5f))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.60577024e-10f - 7.54937183e-13f * _t39) + (2.75573188e-06f - 2.50520991e-08f * _t39)) + (_t40 * (0.00833333377f - _t39 * 0.000198412701f) + (1.0f - 0.166666672f * _t39))))) + (_t1 * (_t44 * (2.48015876e-05f - _t42 * 2.75573029e-07f + (2.08744777e-09f - _t42 * 1.13046204e-11f) * _t43) + (1.0f - _t42 * 0.5f + (0.0416666679f - _t42 * 0.00138888892f) * _t43)) - _t5 * ((_t44 * ((1.60577024e-10f - _t42 * 7.54937183e-13f) * _t43 + (2.75573188e-06f - _t42 * 2.50520991e-08f)) + (_t43 * (0.00833333377f - _t42 * 0.000198412701f) + (1.0f - _t42 * 0.166666672f))) * (_t19 * _t38)));
+            const float _t33 = _t32 * _t32;
+            const float _t34 = (0.0416666679f - _t31 * 0.00138888892f) * _t32 + (1.0f - _t31 * 0.5f) + _t33 * (2.48015876e-05f - _t31 * 2.75573029e-07f + _t32 * (2.08744777e-09f - _t31 * 1.13046204e-11f));
+            const float _t35 = offsetgen_batch_cosf(_t7);
+            const float _t36 = _t8 * _t19;
+            const float _t37 = (1.0f - _t31 * 0.166666672f + (0.00833333377f - _t31 * 0.000198412701f) * _t32 + _t33 * (2.75573188e-06f - _t31 * 2.50520991e-08f + (1.60577024e-10f - _t31 * 7.54937183e-13f) * _t32)) * _t36;
+            const float _t38 = _t34 * _t35 - _t37 * _t8;
+            const float _t39 = _t23 * _t29 + _t11 * _t27;
+            const float _t40 = _t37 * _t35 + _t34 * _t8;
+            const float _t41 = _t21 * _t1 + _t5 * _t18;
+            const float _t42 = _t39 * _t39 + _t40 * _t40 + _t41 * _t41;
+            const float _t43 = _t3 * (((_t42 > 1.17549435e-38f) ? 1.0f / _t42 : 0.0f) * offsetgen_batch_sqrtf(_t42));
+            const float _t44 = _t39 * _t43 - _t28;
+            const float _t45 = _t43 * _t41 - _t20;
+            const float _t46 = _t40 * _t43 - _t36;
+            const float _t47 = _t22 + (_t30 + _t38) - _t44 * (_t39 + _t30 * _t44 * 0.5f) - (_t22 * _t45 * 0.5f + _t41) * _t45 - (_t40 + _t38 * _t46 * 0.5f) * _t46;
+            const float _t48 = 1.73205256f * fabsf(_t3);
+            const float _t49 = _t1 + _t23 + _t35;
+            const float _t50 = _t48 + _t49;
+            const float _t51 = _t49 - _t48;
+            out[i + j] = (_t47 <= _t50) ? ((_t51 <= _t47) ? _t47 : _t51) : _t50;
         }
     }
     for (i = 0; i < blocked; ++i) {
@@ -1051,84 +1121,97 @@ static inline void schwarzp_proj_o4_shellf_n(size_t n, const float *x, const flo
     for (i = 0; i < blocked; i += 16) {
         OFFSETGEN_SIMD_LOOP
         for (j = 0; j < 16; ++j) {
-            const float _t0 = z[i + j] * 6.28318548f;
+            const float _t0 = 6.28318548f * y[i + j];
             const float _t1 = offsetgen_batch_cosf(_t0);
-            const float _t2 = offsetgen_batch_sinf(_t0);
-            const float _t3 = 6.28318548f * x[i + j];
-            const float _t4 = offsetgen_batch_sinf(_t3);
+            const float _t2 = 6.28318548f * (t[i + j] * 0.5f);
+            const float _t3 = -_t2;
+            const float _t4 = (_t3 <= 1.0f) ? (((-1.0f) <= _t3) ? _t3 : (-1.0f)) : 1.0f;
             const float _t5 = _t4 * _t4;
-            const float _t6 = _t2 * _t2;
-            const float _t7 = 6.28318548f * y[i + j];
-            const float _t8 = offsetgen_batch_sinf(_t7);
-            const float _t9 = _t8 * _t8;
-            const float _t10 = _t5 + _t6 + _t9;
-            const float _t11 = (_t10 > 1.17549435e-38f) ? 1.0f / _t10 : 0.0f;
-            const float _t12 = 6.28318548f * (t[i + j] * 0.5f);
-            const float _t13 = (_t12 <= 1.0f) ? (((-1.0f) <= _t12) ? _t12 : (-1.0f)) : 1.0f;
-            const float _t14 = _t13 * _t13;
-            const float _t15 = _t11 * (_t14 * _t6);
-            const float _t16 = _t15 * _t15;
+            const float _t6 = offsetgen_batch_sinf(_t0);
+            const float _t7 = _t6 * _t6;
+            const float _t8 = 6.28318548f * x[i + j];
+            const float _t9 = offsetgen_batch_sinf(_t8);
+            const float _t10 = _t9 * _t9;
+            const float _t11 = z[i + j] * 6.28318548f;
+            const float _t12 = offsetgen_batch_sinf(_t11);
+            const float _t13 = _t12 * _t12;
+            const float _t14 = _t10 + _t13 + _t7;
+            const float _t15 = (_t14 > 1.17549435e-38f) ? 1.0f / _t14 : 0.0f;
+            const float _t16 = _t5 * _t7 * _t15;
             const float _t17 = _t16 * _t16;
-            const float _t18 = _t11 * offsetgen_batch_sqrtf(_t10);
-            const float _t19 = _t18 * _t13;
-            const float _t20 = _t2 * (1.0f - _t15 * 0.5f + _t16 * (0.0416666679f - _t15 * 0.00138888892f) + _t17 * (2.48015876e-05f - _t15 * 2.75573029e-07f + (2.08744777e-09f - _t15 * 1.13046204e-11f) * _t16)) + _t1 * (((0.00833333377f - _t15 * 0.000198412701f) * _t16 + (1.0f - _t15 * 0.166666672f) + _t17 * (2.75573188e-06f - _t15 * 2.50520991e-08f + (1.60577024e-10f - _t15 * 7.54937183e-13f) * _t16)) * (_t2 * _t19));
-            const float _t21 = _t20 * _t20;
-            const float _t22 = _t11 * (_t14 * _t9);
-            const float _t23 = _t22 * _t22;
-            const float _t24 = _t23 * _t23;
-            const float _t25 = offsetgen_batch_cosf(_t7);
-            const float _t26 = (_t24 * ((2.08744777e-09f - _t22 * 1.13046204e-11f) * _t23 + (2.48015876e-05f - _t22 * 2.75573029e-07f)) + (1.0f - _t22 * 0.5f + _t23 * (0.0416666679f - 0.00138888892f * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.00833333377f - _t22 * 0.000198412701f) + (1.0f - _t22 * 0.166666672f) + ((1.60577024e-10f - _t22 * 7.54937183e-13f) * _t23 + (2.75573188e-06f - _t22 * 2.50520991e-08f)) * _t24));
-            const float _t27 = _t26 * _t26;
-            const float _t28 = _t11 * (_t14 * _t5);
+            const float _t18 = _t17 * _t17;
+            const float _t19 = _t17 * (0.0416666679f - 0.00138888892f * _t16) + (1.0f - _t16 * 0.5f) + _t18 * (_t17 * (2.08744777e-09f - _t16 * 1.13046204e-11f) + (2.48015876e-05f - _t16 * 2.75573029e-07f));
+            const float _t20 = _t15 * offsetgen_batch_sqrtf(_t14);
+            const float _t21 = _t20 * _t4;
+            const float _t22 = _t21 * _t6;
+            const float _t23 = _t22 * (1.0f - 0.166666672f * _t16 + _t17 * (0.00833333377f - _t16 * 0.000198412701f) + _t18 * (2.75573188e-06f - 2.50520991e-08f * _t16 + _t17 * (1.60577024e-10f - 7.54937183e-13f * _t16)));
+            const float _t24 = _t1 * _t19 - _t6 * _t23;
+            const float _t25 = _t6 * _t19 + _t1 * _t23;
+            const float _t26 = offsetgen_batch_cosf(_t11);
+            const float _t27 = _t12 * _t21;
+            const float _t28 = _t15 * (_t5 * _t13);
             const float _t29 = _t28 * _t28;
             const float _t30 = _t29 * _t29;
-            const float _t31 = offsetgen_batch_cosf(_t3);
-            const float _t32 = ((0.0416666679f - _t28 * 0.00138888892f) * _t29 + (1.0f - _t28 * 0.5f) + _t30 * (2.48015876e-05f - _t28 * 2.75573029e-07f + (2.08744777e-09f - _t28 * 1.13046204e-11f) * _t29)) * _t4 + _t19 * _t4 * (1.0f - _t28 * 0.166666672f + (0.00833333377f - _t28 * 0.000198412701f) * _t29 + (_t29 * (1.60577024e-10f - _t28 * 7.54937183e-13f) + (2.75573188e-06f - _t28 * 2.50520991e-08f)) * _t30) * _t31;
-            const float _t33 = _t32 * _t32;
-            const float _t34 = _t21 + _t27 + _t33;
-            const float _t35 = (_t34 > 1.17549435e-38f) ? 1.0f / _t34 : 0.0f;
-            const float _t36 = _t35 * (_t14 * _t21);
-            const float _t37 = _t36 * _t36;
-            const float _t38 = _t37 * _t37;
-            const float _t39 = _t35 * offsetgen_batch_sqrtf(_t34) * _t13;
-            const float _t40 = _t35 * (_t14 * _t33);
-            const float _t41 = _t40 * _t40;
-            const float _t42 = _t41 * _t41;
-            const float _t43 = _t35 * (_t14 * _t27);
-            const float _t44 = _t43 * _t43;
-            const float _t45 = _t44 * _t44;
-            const float _t46 = -_t12;
-            const float _t47 = (_t46 <= 1.0f) ? (((-1.0f) <= _t46) ? _t46 : (-1.0f)) : 1.0f;
-            const float _t48 = _t47 * _t47;
-            const float _t49 = _t48 * _t9 * _t11;
-            const float _t50 = _t49 * _t49;
-            const float _t51 = _t50 * _t50;
-            const float _t52 = _t18 * _t47;
-            const float _t53 = _t8 * (_t50 * (0.0416666679f - 0.00138888892f * _t49) + (1.0f - _t49 * 0.5f) + _t51 * (_t50 * (2.08744777e-09f - _t49 * 1.13046204e-11f) + (2.48015876e-05f - _t49 * 2.75573029e-07f))) + _t25 * (_t52 * _t8 * (1.0f - 0.166666672f * _t49 + _t50 * (0.00833333377f - _t49 * 0.000198412701f) + _t51 * (2.75573188e-06f - 2.50520991e-08f * _t49 + _t50 * (1.60577024e-10f - 7.54937183e-13f * _t49))));
-            const float _t54 = _t53 * _t53;
-            const float _t55 = _t11 * (_t48 * _t6);
-            const float _t56 = _t55 * _t55;
+            const float _t31 = _t27 * (_t30 * (2.75573188e-06f - 2.50520991e-08f * _t28 + (1.60577024e-10f - 7.54937183e-13f * _t28) * _t29) + ((0.00833333377f - 0.000198412701f * _t28) * _t29 + (1.0f - 0.166666672f * _t28)));
+            const float _t32 = 1.0f - 0.5f * _t28 + _t29 * (0.0416666679f - 0.00138888892f * _t28) + (2.48015876e-05f - 2.75573029e-07f * _t28 + (2.08744777e-09f - 1.13046204e-11f * _t28) * _t29) * _t30;
+            const float _t33 = _t26 * _t31 + _t32 * _t12;
+            const float _t34 = _t5 * _t10 * _t15;
+            const float _t35 = _t34 * _t34;
+            const float _t36 = _t35 * _t35;
+            const float _t37 = _t21 * _t9;
+            const float _t38 = ((2.75573188e-06f - 2.50520991e-08f * _t34 + (1.60577024e-10f - 7.54937183e-13f * _t34) * _t35) * _t36 + (_t35 * (0.00833333377f - 0.000198412701f * _t34) + (1.0f - 0.166666672f * _t34))) * _t37;
+            const float _t39 = offsetgen_batch_cosf(_t8);
+            const float _t40 = (2.48015876e-05f - _t34 * 2.75573029e-07f + _t35 * (2.08744777e-09f - _t34 * 1.13046204e-11f)) * _t36 + (1.0f - _t34 * 0.5f + _t35 * (0.0416666679f - 0.00138888892f * _t34));
+            const float _t41 = _t38 * _t39 + _t40 * _t9;
+            const float _t42 = _t25 * _t25 + _t33 * _t33 + _t41 * _t41;
+            const float _t43 = _t4 * (((_t42 > 1.17549435e-38f) ? 1.0f / _t42 : 0.0f) * offsetgen_batch_sqrtf(_t42));
+            const float _t44 = _t43 * _t25 - _t22;
+            const float _t45 = _t43 * _t41 - _t37;
+            const float _t46 = _t40 * _t39 - _t38 * _t9;
+            const float _t47 = _t33 * _t43 - _t27;
+            const float _t48 = _t32 * _t26 - _t12 * _t31;
+            const float _t49 = -((_t24 * _t44 * 0.5f + _t25) * _t44 + ((_t41 + _t45 * _t46 * 0.5f) * _t45 + _t47 * (_t33 + 0.5f * (_t47 * _t48))) - (_t24 + _t48 + _t46));
+            const float _t50 = 1.73205256f * fabsf(_t4);
+            const float _t51 = _t26 + _t1 + _t39;
+            const float _t52 = _t50 + _t51;
+            const float _t53 = _t51 - _t50;
+            const float _t54 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+            const float _t55 = _t54 * _t54;
+            const float _t56 = _t15 * (_t55 * _t13);
             const float _t57 = _t56 * _t56;
-            const float _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.75573188e-06f - 2.50520991e-08f * _t55 + (1.60577024e-10f - 7.54937183e-13f * _t55) * _t56) + ((0.00833333377f - 0.000198412701f * _t55) * _t56 + (1.0f - 0.166666672f * _t55)))) + (1.0f - 0.5f * _t55 + _t56 * (0.0416666679f - 0.00138888892f * _t55) + (2.48015876e-05f - 2.75573029e-07f * _t55 + (2.08744777e-09f - 1.13046204e-11f * _t55) * _t56) * _t57) * _t2;
-            const float _t59 = _t58 * _t58;
-            const float _t60 = _t48 * _t5 * _t11;
-            const float _t61 = _t60 * _t60;
-            const float _t62 = _t61 * _t61;
-            const float _t63 = ((2.75573188e-06f - 2.50520991e-08f * _t60 + (1.60577024e-10f - 7.54937183e-13f * _t60) * _t61) * _t62 + (_t61 * (0.00833333377f - 0.000198412701f * _t60) + (1.0f - 0.166666672f * _t60))) * (_t52 * _t4) * _t31 + ((2.48015876e-05f - _t60 * 2.75573029e-07f + _t61 * (2.08744777e-09f - _t60 * 1.13046204e-11f)) * _t62 + (1.0f - _t60 * 0.5f + _t61 * (0.0416666679f - 0.00138888892f * _t60))) * _t4;
-            const float _t64 = _t63 * _t63;
-            const float _t65 = _t54 + _t59 + _t64;
-            const float _t66 = (_t65 > 1.17549435e-38f) ? 1.0f / _t65 : 0.0f;
-            const float _t67 = _t66 * (_t48 * _t54);
-            const float _t68 = _t67 * _t67;
-            const float _t69 = _t68 * _t68;
-            const float _t70 = _t47 * (_t66 * offsetgen_batch_sqrtf(_t65));
-            const float _t71 = _t66 * (_t48 * _t64);
+            const float _t58 = _t57 * _t57;
+            const float _t59 = 1.0f - _t56 * 0.5f + _t57 * (0.0416666679f - _t56 * 0.00138888892f) + _t58 * (2.48015876e-05f - _t56 * 2.75573029e-07f + (2.08744777e-09f - _t56 * 1.13046204e-11f) * _t57);
+            const float _t60 = _t20 * _t54;
+            const float _t61 = _t12 * _t60;
+            const float _t62 = ((0.00833333377f - _t56 * 0.000198412701f) * _t57 + (1.0f - _t56 * 0.166666672f) + _t58 * (2.75573188e-06f - _t56 * 2.50520991e-08f + (1.60577024e-10f - _t56 * 7.54937183e-13f) * _t57)) * _t61;
+            const float _t63 = _t12 * _t59 + _t26 * _t62;
+            const float _t64 = _t15 * (_t55 * _t7);
+            const float _t65 = _t64 * _t64;
+            const float _t66 = _t65 * _t65;
+            const float _t67 = _t66 * ((2.08744777e-09f - _t64 * 1.13046204e-11f) * _t65 + (2.48015876e-05f - _t64 * 2.75573029e-07f)) + (1.0f - _t64 * 0.5f + _t65 * (0.0416666679f - 0.00138888892f * _t64));
+            const float _t68 = _t6 * _t60;
+            const float _t69 = _t68 * (_t65 * (0.00833333377f - _t64 * 0.000198412701f) + (1.0f - _t64 * 0.166666672f) + ((1.60577024e-10f - _t64 * 7.54937183e-13f) * _t65 + (2.75573188e-06f - _t64 * 2.50520991e-08f)) * _t66);
+            const float _t70 = _t67 * _t6 + _t1 * _t69;
+            const float _t71 = _t15 * (_t55 * _t10);
             const float _t72 = _t71 * _t71;
             const float _t73 = _t72 * _t72;
-            const float _t74 = _t66 * (_t48 * _t59);
-            const float _t75 = _t74 * _t74;
-            const float _t76 = _t75 * _t75;
-            out[i + j] = (_t1 * ((2.48015876e-05f - _t36 * 2.75573029e-07f + (2.08744777e-09f - _t36 * 1.13046204e-11f) * _t37) * _t38 + (1.0f - _t36 * 0.5f + _t37 * (0.0416666679f - 0.00138888892f * _t36))) - _t39 * _t20 * ((0.00833333377f - _t36 * 0.000198412701f) * _t37 + (1.0f - 0.166666672f * _t36) + (2.75573188e-06f - 2.50520991e-08f * _t36 + (1.60577024e-10f - 7.54937183e-13f * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.08744777e-09f - _t40 * 1.13046204e-11f) * _t41 + (2.48015876e-05f - _t40 * 2.75573029e-07f)) + (_t41 * (0.0416666679f - _t40 * 0.00138888892f) + (1.0f - _t40 * 0.5f))) * _t31 - _t39 * _t32 * (1.0f - _t40 * 0.166666672f + _t41 * (0.00833333377f - _t40 * 0.000198412701f) + _t42 * (2.75573188e-06f - _t40 * 2.50520991e-08f + (1.60577024e-10f - _t40 * 7.54937183e-13f) * _t41)) * _t4) + (_t25 * (1.0f - _t43 * 0.5f + (0.0416666679f - 0.00138888892f * _t43) * _t44 + (_t44 * (2.08744777e-09f - _t43 * 1.13046204e-11f) + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45) - (_t45 * (2.75573188e-06f - 2.50520991e-08f * _t43 + _t44 * (1.60577024e-10f - 7.54937183e-13f * _t43)) + (1.0f - 0.166666672f * _t43 + _t44 * (0.00833333377f - _t43 * 0.000198412701f))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.48015876e-05f - _t67 * 2.75573029e-07f + _t68 * (2.08744777e-09f - _t67 * 1.13046204e-11f)) + (1.0f - _t67 * 0.5f + _t68 * (0.0416666679f - _t67 * 0.00138888892f))) - _t8 * ((_t69 * ((1.60577024e-10f - _t67 * 7.54937183e-13f) * _t68 + (2.75573188e-06f - _t67 * 2.50520991e-08f)) + ((0.00833333377f - _t67 * 0.000198412701f) * _t68 + (1.0f - _t67 * 0.166666672f))) * (_t70 * _t53)) + ((((2.08744777e-09f - _t71 * 1.13046204e-11f) * _t72 + (2.48015876e-05f - _t71 * 2.75573029e-07f)) * _t73 + (1.0f - _t71 * 0.5f + (0.0416666679f - 0.00138888892f * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0f - 0.166666672f * _t71 + (0.00833333377f - _t71 * 0.000198412701f) * _t72 + (2.75573188e-06f - 2.50520991e-08f * _t71 + (1.60577024e-10f - 7.54937183e-13f * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.48015876e-05f - 2.75573029e-07f * _t74 + _t75 * (2.08744777e-09f - 1.13046204e-11f * _t74)) * _t76 + ((0.0416666679f - 0.00138888892f * _t74) * _t75 + (1.0f - _t74 * 0.5f))) - _t58 * _t70 * ((2.75573188e-06f - 2.50520991e-08f * _t74 + _t75 * (1.60577024e-10f - 7.54937183e-13f * _t74)) * _t76 + (_t75 * (0.00833333377f - 0.000198412701f * _t74) + (1.0f - 0.166666672f * _t74))) * _t2)));
+            const float _t74 = (0.0416666679f - _t71 * 0.00138888892f) * _t72 + (1.0f - _t71 * 0.5f) + _t73 * (2.48015876e-05f - _t71 * 2.75573029e-07f + (2.08744777e-09f - _t71 * 1.13046204e-11f) * _t72);
+            const float _t75 = _t60 * _t9;
+            const float _t76 = _t75 * (1.0f - _t71 * 0.166666672f + (0.00833333377f - _t71 * 0.000198412701f) * _t72 + (_t72 * (1.60577024e-10f - _t71 * 7.54937183e-13f) + (2.75573188e-06f - _t71 * 2.50520991e-08f)) * _t73);
+            const float _t77 = _t74 * _t9 + _t76 * _t39;
+            const float _t78 = _t63 * _t63 + _t70 * _t70 + _t77 * _t77;
+            const float _t79 = ((_t78 > 1.17549435e-38f) ? 1.0f / _t78 : 0.0f) * offsetgen_batch_sqrtf(_t78) * _t54;
+            const float _t80 = _t79 * _t63 - _t61;
+            const float _t81 = _t26 * _t59 - _t12 * _t62;
+            const float _t82 = _t70 * _t79 - _t68;
+            const float _t83 = _t67 * _t1 - _t6 * _t69;
+            const float _t84 = _t79 * _t77 - _t75;
+            const float _t85 = _t74 * _t39 - _t76 * _t9;
+            const float _t86 = -(_t80 * (_t80 * _t81 * 0.5f + _t63) + _t82 * (_t70 + _t82 * _t83 * 0.5f) + _t84 * (_t84 * _t85 * 0.5f + _t77) - (_t81 + (_t85 + _t83)));
+            const float _t87 = 1.73205256f * fabsf(_t54);
+            const float _t88 = _t51 + _t87;
+            const float _t89 = _t51 - _t87;
+            out[i + j] = ((_t49 <= _t52) ? ((_t53 <= _t49) ? _t49 : _t53) : _t52) * ((_t86 <= _t88) ? ((_t89 <= _t86) ? _t86 : _t89) : _t88);
         }
     }
     for (i = 0; i < blocked; ++i) {

@@ -8,7 +8,9 @@ description: |
     Source: Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 1 projection step: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 4. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 4. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> schwarzp_proj_o4_field(<float3 p>)
     - <float> schwarzp_proj_o4_offset(<float3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 2 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 2. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: HLSL Shader Model 5.0 and later (DXC, FXC, glslang's HLSL front end).
 total ops after CSE:
     - field: 8
-    - offset: 261
-    - shell: 505
+    - offset: 190
+    - shell: 363
     - normal: 274
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"hlsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":261,"shell":505,"normal":274}} */
+/* offsetgen-metadata {"format":1,"language":"hlsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o4","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":4,"graded_order":2,"graded_wall_order":2,"projections":1,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":190,"shell":363,"normal":274}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O4_HLSL
 #define OFFSETGEN_SCHWARZP_PROJ_O4_HLSL
 
@@ -89,10 +92,10 @@ float schwarzp_proj_o4_field(float3 p)
     return schwarzp_proj_o4_cos(p.z * 6.28318548) + schwarzp_proj_o4_cos(6.28318548 * p.y) + schwarzp_proj_o4_cos(6.28318548 * p.x);
 }
 
-// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 261.
+// phi(p, h) of order 4: zero on the surface moved by h along +grad F. Total ops: 190.
 float schwarzp_proj_o4_offset(float3 p, float h)
 {
-    float _t0 = 6.28318548 * p.y;
+    float _t0 = p.z * 6.28318548;
     float _t1 = schwarzp_proj_o4_cos(_t0);
     float _t2 = 6.28318548 * h;
     float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
@@ -102,125 +105,145 @@ float schwarzp_proj_o4_offset(float3 p, float h)
     float _t7 = 6.28318548 * p.x;
     float _t8 = schwarzp_proj_o4_sin(_t7);
     float _t9 = _t8 * _t8;
-    float _t10 = p.z * 6.28318548;
+    float _t10 = 6.28318548 * p.y;
     float _t11 = schwarzp_proj_o4_sin(_t10);
     float _t12 = _t11 * _t11;
-    float _t13 = _t9 + _t12 + _t6;
+    float _t13 = _t9 + _t6 + _t12;
     float _t14 = (_t13 > 1.17549435e-38) ? 1.0 / _t13 : 0.0;
     float _t15 = _t4 * _t6 * _t14;
     float _t16 = _t15 * _t15;
     float _t17 = _t16 * _t16;
-    float _t18 = _t3 * (_t14 * sqrt(_t13));
-    float _t19 = _t1 * (((2.75573188e-06 - 2.50520991e-08 * _t15 + _t16 * (1.60577024e-10 - 7.54937183e-13 * _t15)) * _t17 + (1.0 - 0.166666672 * _t15 + _t16 * (0.00833333377 - 0.000198412701 * _t15))) * (_t5 * _t18)) + _t5 * (1.0 - _t15 * 0.5 + _t16 * (0.0416666679 - 0.00138888892 * _t15) + _t17 * (2.48015876e-05 - _t15 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t15) * _t16));
-    float _t20 = _t19 * _t19;
-    float _t21 = _t9 * _t4 * _t14;
-    float _t22 = _t21 * _t21;
-    float _t23 = _t22 * _t22;
-    float _t24 = schwarzp_proj_o4_cos(_t7);
-    float _t25 = (1.0 - _t21 * 0.166666672 + (0.00833333377 - _t21 * 0.000198412701) * _t22 + _t23 * (2.75573188e-06 - _t21 * 2.50520991e-08 + (1.60577024e-10 - _t21 * 7.54937183e-13) * _t22)) * (_t8 * _t18) * _t24 + ((0.0416666679 - _t21 * 0.00138888892) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.48015876e-05 - _t21 * 2.75573029e-07 + _t22 * (2.08744777e-09 - _t21 * 1.13046204e-11))) * _t8;
+    float _t18 = (_t16 * (2.08744777e-09 - 1.13046204e-11 * _t15) + (2.48015876e-05 - _t15 * 2.75573029e-07)) * _t17 + (1.0 - _t15 * 0.5 + _t16 * (0.0416666679 - 0.00138888892 * _t15));
+    float _t19 = _t3 * (_t14 * sqrt(_t13));
+    float _t20 = _t5 * _t19;
+    float _t21 = ((0.00833333377 - 0.000198412701 * _t15) * _t16 + (1.0 - 0.166666672 * _t15) + (2.75573188e-06 - 2.50520991e-08 * _t15 + (1.60577024e-10 - 7.54937183e-13 * _t15) * _t16) * _t17) * _t20;
+    float _t22 = _t1 * _t18 - _t21 * _t5;
+    float _t23 = schwarzp_proj_o4_cos(_t10);
+    float _t24 = _t4 * _t12 * _t14;
+    float _t25 = _t24 * _t24;
     float _t26 = _t25 * _t25;
-    float _t27 = _t4 * _t12 * _t14;
-    float _t28 = _t27 * _t27;
-    float _t29 = _t28 * _t28;
-    float _t30 = schwarzp_proj_o4_cos(_t10);
-    float _t31 = ((0.00833333377 - 0.000198412701 * _t27) * _t28 + (1.0 - 0.166666672 * _t27) + (2.75573188e-06 - 2.50520991e-08 * _t27 + (1.60577024e-10 - 7.54937183e-13 * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.08744777e-09 - 1.13046204e-11 * _t27) + (2.48015876e-05 - _t27 * 2.75573029e-07)) * _t29 + (1.0 - _t27 * 0.5 + _t28 * (0.0416666679 - 0.00138888892 * _t27)));
+    float _t27 = 1.0 - _t24 * 0.5 + _t25 * (0.0416666679 - 0.00138888892 * _t24) + _t26 * (2.48015876e-05 - _t24 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t24) * _t25);
+    float _t28 = _t11 * _t19;
+    float _t29 = ((2.75573188e-06 - 2.50520991e-08 * _t24 + _t25 * (1.60577024e-10 - 7.54937183e-13 * _t24)) * _t26 + (1.0 - 0.166666672 * _t24 + _t25 * (0.00833333377 - 0.000198412701 * _t24))) * _t28;
+    float _t30 = _t23 * _t27 - _t29 * _t11;
+    float _t31 = _t9 * _t4 * _t14;
     float _t32 = _t31 * _t31;
-    float _t33 = _t20 + _t26 + _t32;
-    float _t34 = (_t33 > 1.17549435e-38) ? 1.0 / _t33 : 0.0;
-    float _t35 = _t34 * (_t4 * _t26);
-    float _t36 = _t35 * _t35;
-    float _t37 = _t36 * _t36;
-    float _t38 = _t3 * (_t34 * sqrt(_t33));
-    float _t39 = _t34 * (_t4 * _t32);
-    float _t40 = _t39 * _t39;
-    float _t41 = _t40 * _t40;
-    float _t42 = _t34 * (_t20 * _t4);
-    float _t43 = _t42 * _t42;
-    float _t44 = _t43 * _t43;
-    return (1.0 - _t35 * 0.5 + (0.0416666679 - 0.00138888892 * _t35) * _t36 + (2.48015876e-05 - 2.75573029e-07 * _t35 + _t36 * (2.08744777e-09 - 1.13046204e-11 * _t35)) * _t37) * _t24 - _t25 * _t38 * (1.0 - 0.166666672 * _t35 + (0.00833333377 - 0.000198412701 * _t35) * _t36 + (2.75573188e-06 - 2.50520991e-08 * _t35 + (1.60577024e-10 - 7.54937183e-13 * _t35) * _t36) * _t37) * _t8 + (_t30 * (((2.08744777e-09 - _t39 * 1.13046204e-11) * _t40 + (2.48015876e-05 - _t39 * 2.75573029e-07)) * _t41 + (_t40 * (0.0416666679 - 0.00138888892 * _t39) + (1.0 - _t39 * 0.5))) - _t11 * (_t38 * _t31 * (_t41 * (_t40 * (1.60577024e-10 - 7.54937183e-13 * _t39) + (2.75573188e-06 - 2.50520991e-08 * _t39)) + (_t40 * (0.00833333377 - _t39 * 0.000198412701) + (1.0 - 0.166666672 * _t39))))) + (_t1 * (_t44 * (2.48015876e-05 - _t42 * 2.75573029e-07 + (2.08744777e-09 - _t42 * 1.13046204e-11) * _t43) + (1.0 - _t42 * 0.5 + (0.0416666679 - _t42 * 0.00138888892) * _t43)) - _t5 * ((_t44 * ((1.60577024e-10 - _t42 * 7.54937183e-13) * _t43 + (2.75573188e-06 - _t42 * 2.50520991e-08)) + (_t43 * (0.00833333377 - _t42 * 0.000198412701) + (1.0 - _t42 * 0.166666672))) * (_t19 * _t38)));
+    float _t33 = _t32 * _t32;
+    float _t34 = (0.0416666679 - _t31 * 0.00138888892) * _t32 + (1.0 - _t31 * 0.5) + _t33 * (2.48015876e-05 - _t31 * 2.75573029e-07 + _t32 * (2.08744777e-09 - _t31 * 1.13046204e-11));
+    float _t35 = schwarzp_proj_o4_cos(_t7);
+    float _t36 = _t8 * _t19;
+    float _t37 = (1.0 - _t31 * 0.166666672 + (0.00833333377 - _t31 * 0.000198412701) * _t32 + _t33 * (2.75573188e-06 - _t31 * 2.50520991e-08 + (1.60577024e-10 - _t31 * 7.54937183e-13) * _t32)) * _t36;
+    float _t38 = _t34 * _t35 - _t37 * _t8;
+    float _t39 = _t23 * _t29 + _t11 * _t27;
+    float _t40 = _t37 * _t35 + _t34 * _t8;
+    float _t41 = _t21 * _t1 + _t5 * _t18;
+    float _t42 = _t39 * _t39 + _t40 * _t40 + _t41 * _t41;
+    float _t43 = _t3 * (((_t42 > 1.17549435e-38) ? 1.0 / _t42 : 0.0) * sqrt(_t42));
+    float _t44 = _t39 * _t43 - _t28;
+    float _t45 = _t43 * _t41 - _t20;
+    float _t46 = _t40 * _t43 - _t36;
+    float _t47 = _t22 + (_t30 + _t38) - _t44 * (_t39 + _t30 * _t44 * 0.5) - (_t22 * _t45 * 0.5 + _t41) * _t45 - (_t40 + _t38 * _t46 * 0.5) * _t46;
+    float _t48 = 1.73205256 * abs(_t3);
+    float _t49 = _t1 + _t23 + _t35;
+    float _t50 = _t48 + _t49;
+    float _t51 = _t49 - _t48;
+    return (_t47 <= _t50) ? ((_t51 <= _t47) ? _t47 : _t51) : _t50;
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 505.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 363.
 float schwarzp_proj_o4_shell(float3 p, float t)
 {
-    float _t0 = p.z * 6.28318548;
+    float _t0 = 6.28318548 * p.y;
     float _t1 = schwarzp_proj_o4_cos(_t0);
-    float _t2 = schwarzp_proj_o4_sin(_t0);
-    float _t3 = 6.28318548 * p.x;
-    float _t4 = schwarzp_proj_o4_sin(_t3);
+    float _t2 = 6.28318548 * (t * 0.5);
+    float _t3 = -_t2;
+    float _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
     float _t5 = _t4 * _t4;
-    float _t6 = _t2 * _t2;
-    float _t7 = 6.28318548 * p.y;
-    float _t8 = schwarzp_proj_o4_sin(_t7);
-    float _t9 = _t8 * _t8;
-    float _t10 = _t5 + _t6 + _t9;
-    float _t11 = (_t10 > 1.17549435e-38) ? 1.0 / _t10 : 0.0;
-    float _t12 = 6.28318548 * (t * 0.5);
-    float _t13 = (_t12 <= 1.0) ? (((-1.0) <= _t12) ? _t12 : (-1.0)) : 1.0;
-    float _t14 = _t13 * _t13;
-    float _t15 = _t11 * (_t14 * _t6);
-    float _t16 = _t15 * _t15;
+    float _t6 = schwarzp_proj_o4_sin(_t0);
+    float _t7 = _t6 * _t6;
+    float _t8 = 6.28318548 * p.x;
+    float _t9 = schwarzp_proj_o4_sin(_t8);
+    float _t10 = _t9 * _t9;
+    float _t11 = p.z * 6.28318548;
+    float _t12 = schwarzp_proj_o4_sin(_t11);
+    float _t13 = _t12 * _t12;
+    float _t14 = _t10 + _t13 + _t7;
+    float _t15 = (_t14 > 1.17549435e-38) ? 1.0 / _t14 : 0.0;
+    float _t16 = _t5 * _t7 * _t15;
     float _t17 = _t16 * _t16;
-    float _t18 = _t11 * sqrt(_t10);
-    float _t19 = _t18 * _t13;
-    float _t20 = _t2 * (1.0 - _t15 * 0.5 + _t16 * (0.0416666679 - _t15 * 0.00138888892) + _t17 * (2.48015876e-05 - _t15 * 2.75573029e-07 + (2.08744777e-09 - _t15 * 1.13046204e-11) * _t16)) + _t1 * (((0.00833333377 - _t15 * 0.000198412701) * _t16 + (1.0 - _t15 * 0.166666672) + _t17 * (2.75573188e-06 - _t15 * 2.50520991e-08 + (1.60577024e-10 - _t15 * 7.54937183e-13) * _t16)) * (_t2 * _t19));
-    float _t21 = _t20 * _t20;
-    float _t22 = _t11 * (_t14 * _t9);
-    float _t23 = _t22 * _t22;
-    float _t24 = _t23 * _t23;
-    float _t25 = schwarzp_proj_o4_cos(_t7);
-    float _t26 = (_t24 * ((2.08744777e-09 - _t22 * 1.13046204e-11) * _t23 + (2.48015876e-05 - _t22 * 2.75573029e-07)) + (1.0 - _t22 * 0.5 + _t23 * (0.0416666679 - 0.00138888892 * _t22))) * _t8 + _t25 * (_t8 * _t19 * (_t23 * (0.00833333377 - _t22 * 0.000198412701) + (1.0 - _t22 * 0.166666672) + ((1.60577024e-10 - _t22 * 7.54937183e-13) * _t23 + (2.75573188e-06 - _t22 * 2.50520991e-08)) * _t24));
-    float _t27 = _t26 * _t26;
-    float _t28 = _t11 * (_t14 * _t5);
+    float _t18 = _t17 * _t17;
+    float _t19 = _t17 * (0.0416666679 - 0.00138888892 * _t16) + (1.0 - _t16 * 0.5) + _t18 * (_t17 * (2.08744777e-09 - _t16 * 1.13046204e-11) + (2.48015876e-05 - _t16 * 2.75573029e-07));
+    float _t20 = _t15 * sqrt(_t14);
+    float _t21 = _t20 * _t4;
+    float _t22 = _t21 * _t6;
+    float _t23 = _t22 * (1.0 - 0.166666672 * _t16 + _t17 * (0.00833333377 - _t16 * 0.000198412701) + _t18 * (2.75573188e-06 - 2.50520991e-08 * _t16 + _t17 * (1.60577024e-10 - 7.54937183e-13 * _t16)));
+    float _t24 = _t1 * _t19 - _t6 * _t23;
+    float _t25 = _t6 * _t19 + _t1 * _t23;
+    float _t26 = schwarzp_proj_o4_cos(_t11);
+    float _t27 = _t12 * _t21;
+    float _t28 = _t15 * (_t5 * _t13);
     float _t29 = _t28 * _t28;
     float _t30 = _t29 * _t29;
-    float _t31 = schwarzp_proj_o4_cos(_t3);
-    float _t32 = ((0.0416666679 - _t28 * 0.00138888892) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (2.48015876e-05 - _t28 * 2.75573029e-07 + (2.08744777e-09 - _t28 * 1.13046204e-11) * _t29)) * _t4 + _t19 * _t4 * (1.0 - _t28 * 0.166666672 + (0.00833333377 - _t28 * 0.000198412701) * _t29 + (_t29 * (1.60577024e-10 - _t28 * 7.54937183e-13) + (2.75573188e-06 - _t28 * 2.50520991e-08)) * _t30) * _t31;
-    float _t33 = _t32 * _t32;
-    float _t34 = _t21 + _t27 + _t33;
-    float _t35 = (_t34 > 1.17549435e-38) ? 1.0 / _t34 : 0.0;
-    float _t36 = _t35 * (_t14 * _t21);
-    float _t37 = _t36 * _t36;
-    float _t38 = _t37 * _t37;
-    float _t39 = _t35 * sqrt(_t34) * _t13;
-    float _t40 = _t35 * (_t14 * _t33);
-    float _t41 = _t40 * _t40;
-    float _t42 = _t41 * _t41;
-    float _t43 = _t35 * (_t14 * _t27);
-    float _t44 = _t43 * _t43;
-    float _t45 = _t44 * _t44;
-    float _t46 = -_t12;
-    float _t47 = (_t46 <= 1.0) ? (((-1.0) <= _t46) ? _t46 : (-1.0)) : 1.0;
-    float _t48 = _t47 * _t47;
-    float _t49 = _t48 * _t9 * _t11;
-    float _t50 = _t49 * _t49;
-    float _t51 = _t50 * _t50;
-    float _t52 = _t18 * _t47;
-    float _t53 = _t8 * (_t50 * (0.0416666679 - 0.00138888892 * _t49) + (1.0 - _t49 * 0.5) + _t51 * (_t50 * (2.08744777e-09 - _t49 * 1.13046204e-11) + (2.48015876e-05 - _t49 * 2.75573029e-07))) + _t25 * (_t52 * _t8 * (1.0 - 0.166666672 * _t49 + _t50 * (0.00833333377 - _t49 * 0.000198412701) + _t51 * (2.75573188e-06 - 2.50520991e-08 * _t49 + _t50 * (1.60577024e-10 - 7.54937183e-13 * _t49))));
-    float _t54 = _t53 * _t53;
-    float _t55 = _t11 * (_t48 * _t6);
-    float _t56 = _t55 * _t55;
+    float _t31 = _t27 * (_t30 * (2.75573188e-06 - 2.50520991e-08 * _t28 + (1.60577024e-10 - 7.54937183e-13 * _t28) * _t29) + ((0.00833333377 - 0.000198412701 * _t28) * _t29 + (1.0 - 0.166666672 * _t28)));
+    float _t32 = 1.0 - 0.5 * _t28 + _t29 * (0.0416666679 - 0.00138888892 * _t28) + (2.48015876e-05 - 2.75573029e-07 * _t28 + (2.08744777e-09 - 1.13046204e-11 * _t28) * _t29) * _t30;
+    float _t33 = _t26 * _t31 + _t32 * _t12;
+    float _t34 = _t5 * _t10 * _t15;
+    float _t35 = _t34 * _t34;
+    float _t36 = _t35 * _t35;
+    float _t37 = _t21 * _t9;
+    float _t38 = ((2.75573188e-06 - 2.50520991e-08 * _t34 + (1.60577024e-10 - 7.54937183e-13 * _t34) * _t35) * _t36 + (_t35 * (0.00833333377 - 0.000198412701 * _t34) + (1.0 - 0.166666672 * _t34))) * _t37;
+    float _t39 = schwarzp_proj_o4_cos(_t8);
+    float _t40 = (2.48015876e-05 - _t34 * 2.75573029e-07 + _t35 * (2.08744777e-09 - _t34 * 1.13046204e-11)) * _t36 + (1.0 - _t34 * 0.5 + _t35 * (0.0416666679 - 0.00138888892 * _t34));
+    float _t41 = _t38 * _t39 + _t40 * _t9;
+    float _t42 = _t25 * _t25 + _t33 * _t33 + _t41 * _t41;
+    float _t43 = _t4 * (((_t42 > 1.17549435e-38) ? 1.0 / _t42 : 0.0) * sqrt(_t42));
+    float _t44 = _t43 * _t25 - _t22;
+    float _t45 = _t43 * _t41 - _t37;
+    float _t46 = _t40 * _t39 - _t38 * _t9;
+    float _t47 = _t33 * _t43 - _t27;
+    float _t48 = _t32 * _t26 - _t12 * _t31;
+    float _t49 = -((_t24 * _t44 * 0.5 + _t25) * _t44 + ((_t41 + _t45 * _t46 * 0.5) * _t45 + _t47 * (_t33 + 0.5 * (_t47 * _t48))) - (_t24 + _t48 + _t46));
+    float _t50 = 1.73205256 * abs(_t4);
+    float _t51 = _t26 + _t1 + _t39;
+    float _t52 = _t50 + _t51;
+    float _t53 = _t51 - _t50;
+    float _t54 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    float _t55 = _t54 * _t54;
+    float _t56 = _t15 * (_t55 * _t13);
     float _t57 = _t56 * _t56;
-    float _t58 = _t1 * (_t2 * _t52 * (_t57 * (2.75573188e-06 - 2.50520991e-08 * _t55 + (1.60577024e-10 - 7.54937183e-13 * _t55) * _t56) + ((0.00833333377 - 0.000198412701 * _t55) * _t56 + (1.0 - 0.166666672 * _t55)))) + (1.0 - 0.5 * _t55 + _t56 * (0.0416666679 - 0.00138888892 * _t55) + (2.48015876e-05 - 2.75573029e-07 * _t55 + (2.08744777e-09 - 1.13046204e-11 * _t55) * _t56) * _t57) * _t2;
-    float _t59 = _t58 * _t58;
-    float _t60 = _t48 * _t5 * _t11;
-    float _t61 = _t60 * _t60;
-    float _t62 = _t61 * _t61;
-    float _t63 = ((2.75573188e-06 - 2.50520991e-08 * _t60 + (1.60577024e-10 - 7.54937183e-13 * _t60) * _t61) * _t62 + (_t61 * (0.00833333377 - 0.000198412701 * _t60) + (1.0 - 0.166666672 * _t60))) * (_t52 * _t4) * _t31 + ((2.48015876e-05 - _t60 * 2.75573029e-07 + _t61 * (2.08744777e-09 - _t60 * 1.13046204e-11)) * _t62 + (1.0 - _t60 * 0.5 + _t61 * (0.0416666679 - 0.00138888892 * _t60))) * _t4;
-    float _t64 = _t63 * _t63;
-    float _t65 = _t54 + _t59 + _t64;
-    float _t66 = (_t65 > 1.17549435e-38) ? 1.0 / _t65 : 0.0;
-    float _t67 = _t66 * (_t48 * _t54);
-    float _t68 = _t67 * _t67;
-    float _t69 = _t68 * _t68;
-    float _t70 = _t47 * (_t66 * sqrt(_t65));
-    float _t71 = _t66 * (_t48 * _t64);
+    float _t58 = _t57 * _t57;
+    float _t59 = 1.0 - _t56 * 0.5 + _t57 * (0.0416666679 - _t56 * 0.00138888892) + _t58 * (2.48015876e-05 - _t56 * 2.75573029e-07 + (2.08744777e-09 - _t56 * 1.13046204e-11) * _t57);
+    float _t60 = _t20 * _t54;
+    float _t61 = _t12 * _t60;
+    float _t62 = ((0.00833333377 - _t56 * 0.000198412701) * _t57 + (1.0 - _t56 * 0.166666672) + _t58 * (2.75573188e-06 - _t56 * 2.50520991e-08 + (1.60577024e-10 - _t56 * 7.54937183e-13) * _t57)) * _t61;
+    float _t63 = _t12 * _t59 + _t26 * _t62;
+    float _t64 = _t15 * (_t55 * _t7);
+    float _t65 = _t64 * _t64;
+    float _t66 = _t65 * _t65;
+    float _t67 = _t66 * ((2.08744777e-09 - _t64 * 1.13046204e-11) * _t65 + (2.48015876e-05 - _t64 * 2.75573029e-07)) + (1.0 - _t64 * 0.5 + _t65 * (0.0416666679 - 0.00138888892 * _t64));
+    float _t68 = _t6 * _t60;
+    float _t69 = _t68 * (_t65 * (0.00833333377 - _t64 * 0.000198412701) + (1.0 - _t64 * 0.166666672) + ((1.60577024e-10 - _t64 * 7.54937183e-13) * _t65 + (2.75573188e-06 - _t64 * 2.50520991e-08)) * _t66);
+    float _t70 = _t67 * _t6 + _t1 * _t69;
+    float _t71 = _t15 * (_t55 * _t10);
     float _t72 = _t71 * _t71;
     float _t73 = _t72 * _t72;
-    float _t74 = _t66 * (_t48 * _t59);
-    float _t75 = _t74 * _t74;
-    float _t76 = _t75 * _t75;
-    return (_t1 * ((2.48015876e-05 - _t36 * 2.75573029e-07 + (2.08744777e-09 - _t36 * 1.13046204e-11) * _t37) * _t38 + (1.0 - _t36 * 0.5 + _t37 * (0.0416666679 - 0.00138888892 * _t36))) - _t39 * _t20 * ((0.00833333377 - _t36 * 0.000198412701) * _t37 + (1.0 - 0.166666672 * _t36) + (2.75573188e-06 - 2.50520991e-08 * _t36 + (1.60577024e-10 - 7.54937183e-13 * _t36) * _t37) * _t38) * _t2 + ((_t42 * ((2.08744777e-09 - _t40 * 1.13046204e-11) * _t41 + (2.48015876e-05 - _t40 * 2.75573029e-07)) + (_t41 * (0.0416666679 - _t40 * 0.00138888892) + (1.0 - _t40 * 0.5))) * _t31 - _t39 * _t32 * (1.0 - _t40 * 0.166666672 + _t41 * (0.00833333377 - _t40 * 0.000198412701) + _t42 * (2.75573188e-06 - _t40 * 2.50520991e-08 + (1.60577024e-10 - _t40 * 7.54937183e-13) * _t41)) * _t4) + (_t25 * (1.0 - _t43 * 0.5 + (0.0416666679 - 0.00138888892 * _t43) * _t44 + (_t44 * (2.08744777e-09 - _t43 * 1.13046204e-11) + (2.48015876e-05 - _t43 * 2.75573029e-07)) * _t45) - (_t45 * (2.75573188e-06 - 2.50520991e-08 * _t43 + _t44 * (1.60577024e-10 - 7.54937183e-13 * _t43)) + (1.0 - 0.166666672 * _t43 + _t44 * (0.00833333377 - _t43 * 0.000198412701))) * (_t26 * _t39) * _t8)) * (_t25 * (_t69 * (2.48015876e-05 - _t67 * 2.75573029e-07 + _t68 * (2.08744777e-09 - _t67 * 1.13046204e-11)) + (1.0 - _t67 * 0.5 + _t68 * (0.0416666679 - _t67 * 0.00138888892))) - _t8 * ((_t69 * ((1.60577024e-10 - _t67 * 7.54937183e-13) * _t68 + (2.75573188e-06 - _t67 * 2.50520991e-08)) + ((0.00833333377 - _t67 * 0.000198412701) * _t68 + (1.0 - _t67 * 0.166666672))) * (_t70 * _t53)) + ((((2.08744777e-09 - _t71 * 1.13046204e-11) * _t72 + (2.48015876e-05 - _t71 * 2.75573029e-07)) * _t73 + (1.0 - _t71 * 0.5 + (0.0416666679 - 0.00138888892 * _t71) * _t72)) * _t31 - _t70 * _t63 * (1.0 - 0.166666672 * _t71 + (0.00833333377 - _t71 * 0.000198412701) * _t72 + (2.75573188e-06 - 2.50520991e-08 * _t71 + (1.60577024e-10 - 7.54937183e-13 * _t71) * _t72) * _t73) * _t4 + (_t1 * ((2.48015876e-05 - 2.75573029e-07 * _t74 + _t75 * (2.08744777e-09 - 1.13046204e-11 * _t74)) * _t76 + ((0.0416666679 - 0.00138888892 * _t74) * _t75 + (1.0 - _t74 * 0.5))) - _t58 * _t70 * ((2.75573188e-06 - 2.50520991e-08 * _t74 + _t75 * (1.60577024e-10 - 7.54937183e-13 * _t74)) * _t76 + (_t75 * (0.00833333377 - 0.000198412701 * _t74) + (1.0 - 0.166666672 * _t74))) * _t2)));
+    float _t74 = (0.0416666679 - _t71 * 0.00138888892) * _t72 + (1.0 - _t71 * 0.5) + _t73 * (2.48015876e-05 - _t71 * 2.75573029e-07 + (2.08744777e-09 - _t71 * 1.13046204e-11) * _t72);
+    float _t75 = _t60 * _t9;
+    float _t76 = _t75 * (1.0 - _t71 * 0.166666672 + (0.00833333377 - _t71 * 0.000198412701) * _t72 + (_t72 * (1.60577024e-10 - _t71 * 7.54937183e-13) + (2.75573188e-06 - _t71 * 2.50520991e-08)) * _t73);
+    float _t77 = _t74 * _t9 + _t76 * _t39;
+    float _t78 = _t63 * _t63 + _t70 * _t70 + _t77 * _t77;
+    float _t79 = ((_t78 > 1.17549435e-38) ? 1.0 / _t78 : 0.0) * sqrt(_t78) * _t54;
+    float _t80 = _t79 * _t63 - _t61;
+    float _t81 = _t26 * _t59 - _t12 * _t62;
+    float _t82 = _t70 * _t79 - _t68;
+    float _t83 = _t67 * _t1 - _t6 * _t69;
+    float _t84 = _t79 * _t77 - _t75;
+    float _t85 = _t74 * _t39 - _t76 * _t9;
+    float _t86 = -(_t80 * (_t80 * _t81 * 0.5 + _t63) + _t82 * (_t70 + _t82 * _t83 * 0.5) + _t84 * (_t84 * _t85 * 0.5 + _t77) - (_t81 + (_t85 + _t83)));
+    float _t87 = 1.73205256 * abs(_t54);
+    float _t88 = _t51 + _t87;
+    float _t89 = _t51 - _t87;
+    return ((_t49 <= _t52) ? ((_t53 <= _t49) ? _t49 : _t53) : _t52) * ((_t86 <= _t88) ? ((_t89 <= _t86) ? _t86 : _t89) : _t88);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 274.

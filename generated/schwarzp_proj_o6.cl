@@ -11,7 +11,9 @@
  * Source:  Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
  * Method:  foot-point projection with K = 2 projection steps: q_0 = p - h n(p), q_(j+1) = p - h
  *          n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections
- *          give order 2(K+1) = 6.
+ *          give order 2(K+1) = 6. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1),
+ *          evaluated at q_K (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own
+ *          order, and q_K needs no trig of its own).
  *          offsetgen, docs/projection.md (foot-point projection).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
@@ -40,15 +42,16 @@
  *   foot-point estimate and updates it at every projection: each wall converges at order 3 = K + 1
  *   to the distance t(p0)/2 from its foot point p0, and the total wall thickness at order 4.
  *   Passing a local t(p) to _shell reads it at p instead: second order at best.
- * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
- *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too):
- *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
- *   0, so every function returns a finite value for finite input (do not compile with
- *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
- *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
- *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
- *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
+ * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+ *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too),
+ *   and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so
+ *   this never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no
+ *   phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for
+ *   finite input (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates
+ *   come from their values at p by angle addition, which is exact while |h| <= 1 (natural units:
+ *   |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is
+ *   clamped to 1, so thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above.
+ *   n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -57,11 +60,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   383
- *   shell    749
+ *   offset   313
+ *   shell    607
  *   normal   396
  */
-/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o6","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":383,"shell":749,"normal":396}} */
+/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o6","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":313,"shell":607,"normal":396}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O6_CL
 #define OFFSETGEN_SCHWARZP_PROJ_O6_CL
 
@@ -74,7 +77,7 @@ float schwarzp_proj_o6_fieldf(float3 p)
 }
 
 /* phi(p, h) of order 6: zero on the surface moved by h along +grad F.
- * Total ops: 383
+ * Total ops: 313
  */
 float schwarzp_proj_o6_offsetf(float3 p, float h)
 {
@@ -117,152 +120,172 @@ float schwarzp_proj_o6_offsetf(float3 p, float h)
     const float _t36 = _t35 * _t35;
     const float _t37 = _t36 * _t36;
     const float _t38 = _t6 * (_t34 * sqrt(_t33));
-    const float _t39 = _t1 * ((_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + _t36 * (1.60577024e-10f - 7.54937183e-13f * _t35)) + (1.0f - 0.166666672f * _t35 + _t36 * (0.00833333377f - 0.000198412701f * _t35))) * (_t31 * _t38)) + ((_t36 * (2.08744777e-09f - 1.13046204e-11f * _t35) + (2.48015876e-05f - _t35 * 2.75573029e-07f)) * _t37 + ((0.0416666679f - 0.00138888892f * _t35) * _t36 + (1.0f - _t35 * 0.5f))) * _t8;
-    const float _t40 = _t39 * _t39;
-    const float _t41 = _t34 * (_t21 * _t7);
-    const float _t42 = _t41 * _t41;
-    const float _t43 = _t42 * _t42;
-    const float _t44 = _t3 * (((2.08744777e-09f - _t41 * 1.13046204e-11f) * _t42 + (2.48015876e-05f - _t41 * 2.75573029e-07f)) * _t43 + (1.0f - _t41 * 0.5f + (0.0416666679f - 0.00138888892f * _t41) * _t42)) + _t19 * ((1.0f - 0.166666672f * _t41 + (0.00833333377f - 0.000198412701f * _t41) * _t42 + (2.75573188e-06f - 2.50520991e-08f * _t41 + (1.60577024e-10f - 7.54937183e-13f * _t41) * _t42) * _t43) * (_t20 * _t38));
+    const float _t39 = _t31 * _t38;
+    const float _t40 = (_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + _t36 * (1.60577024e-10f - 7.54937183e-13f * _t35)) + (1.0f - 0.166666672f * _t35 + _t36 * (0.00833333377f - 0.000198412701f * _t35))) * _t39;
+    const float _t41 = (_t36 * (2.08744777e-09f - 1.13046204e-11f * _t35) + (2.48015876e-05f - _t35 * 2.75573029e-07f)) * _t37 + ((0.0416666679f - 0.00138888892f * _t35) * _t36 + (1.0f - _t35 * 0.5f));
+    const float _t42 = _t1 * _t40 + _t41 * _t8;
+    const float _t43 = _t34 * (_t21 * _t7);
+    const float _t44 = _t43 * _t43;
     const float _t45 = _t44 * _t44;
-    const float _t46 = _t34 * (_t27 * _t7);
-    const float _t47 = _t46 * _t46;
-    const float _t48 = _t47 * _t47;
-    const float _t49 = ((0.0416666679f - 0.00138888892f * _t46) * _t47 + (1.0f - _t46 * 0.5f) + _t48 * ((2.08744777e-09f - 1.13046204e-11f * _t46) * _t47 + (2.48015876e-05f - _t46 * 2.75573029e-07f))) * _t11 + ((0.00833333377f - 0.000198412701f * _t46) * _t47 + (1.0f - 0.166666672f * _t46) + _t48 * (2.75573188e-06f - 2.50520991e-08f * _t46 + (1.60577024e-10f - 7.54937183e-13f * _t46) * _t47)) * (_t26 * _t38) * _t25;
-    const float _t50 = _t49 * _t49;
-    const float _t51 = _t40 + (_t45 + _t50);
-    const float _t52 = (_t51 > 1.17549435e-38f) ? 1.0f / _t51 : 0.0f;
-    const float _t53 = _t52 * (_t40 * _t7);
-    const float _t54 = _t53 * _t53;
-    const float _t55 = _t54 * _t54;
-    const float _t56 = sqrt(_t51) * _t52 * _t6;
-    const float _t57 = _t50 * _t7 * _t52;
-    const float _t58 = _t57 * _t57;
-    const float _t59 = _t58 * _t58;
-    const float _t60 = _t45 * _t7 * _t52;
-    const float _t61 = _t60 * _t60;
-    const float _t62 = _t61 * _t61;
-    return _t1 * (_t55 * (2.48015876e-05f - _t53 * 2.75573029e-07f + _t54 * (2.08744777e-09f - _t53 * 1.13046204e-11f)) + (1.0f - _t53 * 0.5f + _t54 * (0.0416666679f - 0.00138888892f * _t53))) - _t39 * _t56 * (_t55 * ((1.60577024e-10f - 7.54937183e-13f * _t53) * _t54 + (2.75573188e-06f - 2.50520991e-08f * _t53)) + (1.0f - 0.166666672f * _t53 + _t54 * (0.00833333377f - 0.000198412701f * _t53))) * _t8 + (_t25 * (_t59 * (2.48015876e-05f - 2.75573029e-07f * _t57 + _t58 * (2.08744777e-09f - 1.13046204e-11f * _t57)) + (_t58 * (0.0416666679f - 0.00138888892f * _t57) + (1.0f - 0.5f * _t57))) - (1.0f - 0.166666672f * _t57 + _t58 * (0.00833333377f - 0.000198412701f * _t57) + _t59 * (_t58 * (1.60577024e-10f - 7.54937183e-13f * _t57) + (2.75573188e-06f - 2.50520991e-08f * _t57))) * (_t49 * _t56) * _t11) + (_t19 * (1.0f - _t60 * 0.5f + _t61 * (0.0416666679f - 0.00138888892f * _t60) + (_t61 * (2.08744777e-09f - 1.13046204e-11f * _t60) + (2.48015876e-05f - _t60 * 2.75573029e-07f)) * _t62) - ((0.00833333377f - 0.000198412701f * _t60) * _t61 + (1.0f - 0.166666672f * _t60) + _t62 * (2.75573188e-06f - 2.50520991e-08f * _t60 + _t61 * (1.60577024e-10f - 7.54937183e-13f * _t60))) * (_t56 * _t44) * _t3);
+    const float _t46 = ((2.08744777e-09f - _t43 * 1.13046204e-11f) * _t44 + (2.48015876e-05f - _t43 * 2.75573029e-07f)) * _t45 + (1.0f - _t43 * 0.5f + (0.0416666679f - 0.00138888892f * _t43) * _t44);
+    const float _t47 = _t20 * _t38;
+    const float _t48 = (1.0f - 0.166666672f * _t43 + (0.00833333377f - 0.000198412701f * _t43) * _t44 + (2.75573188e-06f - 2.50520991e-08f * _t43 + (1.60577024e-10f - 7.54937183e-13f * _t43) * _t44) * _t45) * _t47;
+    const float _t49 = _t3 * _t46 + _t19 * _t48;
+    const float _t50 = _t34 * (_t27 * _t7);
+    const float _t51 = _t50 * _t50;
+    const float _t52 = _t51 * _t51;
+    const float _t53 = (0.0416666679f - 0.00138888892f * _t50) * _t51 + (1.0f - _t50 * 0.5f) + _t52 * ((2.08744777e-09f - 1.13046204e-11f * _t50) * _t51 + (2.48015876e-05f - _t50 * 2.75573029e-07f));
+    const float _t54 = _t26 * _t38;
+    const float _t55 = ((0.00833333377f - 0.000198412701f * _t50) * _t51 + (1.0f - 0.166666672f * _t50) + _t52 * (2.75573188e-06f - 2.50520991e-08f * _t50 + (1.60577024e-10f - 7.54937183e-13f * _t50) * _t51)) * _t54;
+    const float _t56 = _t53 * _t11 + _t55 * _t25;
+    const float _t57 = _t42 * _t42 + (_t49 * _t49 + _t56 * _t56);
+    const float _t58 = sqrt(_t57) * ((_t57 > 1.17549435e-38f) ? 1.0f / _t57 : 0.0f) * _t6;
+    const float _t59 = _t42 * _t58 - _t39;
+    const float _t60 = _t1 * _t41 - _t40 * _t8;
+    const float _t61 = _t58 * _t49 - _t47;
+    const float _t62 = _t19 * _t46 - _t3 * _t48;
+    const float _t63 = _t56 * _t58 - _t54;
+    const float _t64 = _t25 * _t53 - _t55 * _t11;
+    const float _t65 = -((_t59 * _t60 * 0.5f + _t42) * _t59 + _t61 * (_t61 * _t62 * 0.5f + _t49) + _t63 * (_t56 + _t63 * _t64 * 0.5f) - (_t60 + (_t64 + _t62)));
+    const float _t66 = 1.73205256f * fabs(_t6);
+    const float _t67 = _t25 + (_t1 + _t19);
+    const float _t68 = _t66 + _t67;
+    const float _t69 = _t67 - _t66;
+    return (_t65 <= _t68) ? ((_t69 <= _t65) ? _t65 : _t69) : _t68;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 749
+ * Total ops: 607
  */
 float schwarzp_proj_o6_shellf(float3 p, float t)
 {
     const float _t0 = p.x * 2.0f;
     const float _t1 = cospi(_t0);
     const float _t2 = 6.28318548f * (t * 0.5f);
-    const float _t3 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
-    const float _t4 = p.z * 2.0f;
-    const float _t5 = sinpi(_t4);
-    const float _t6 = p.y * 2.0f;
-    const float _t7 = sinpi(_t6);
-    const float _t8 = _t7 * _t7;
-    const float _t9 = _t5 * _t5;
-    const float _t10 = sinpi(_t0);
-    const float _t11 = _t10 * _t10;
-    const float _t12 = _t8 + (_t9 + _t11);
-    const float _t13 = (_t12 > 1.17549435e-38f) ? 1.0f / _t12 : 0.0f;
-    const float _t14 = _t3 * _t3;
-    const float _t15 = _t13 * (_t14 * _t9);
-    const float _t16 = _t15 * _t15;
+    const float _t3 = -_t2;
+    const float _t4 = (_t3 <= 1.0f) ? (((-1.0f) <= _t3) ? _t3 : (-1.0f)) : 1.0f;
+    const float _t5 = _t4 * _t4;
+    const float _t6 = sinpi(_t0);
+    const float _t7 = _t6 * _t6;
+    const float _t8 = p.y * 2.0f;
+    const float _t9 = sinpi(_t8);
+    const float _t10 = _t9 * _t9;
+    const float _t11 = p.z * 2.0f;
+    const float _t12 = sinpi(_t11);
+    const float _t13 = _t12 * _t12;
+    const float _t14 = _t10 + (_t13 + _t7);
+    const float _t15 = (_t14 > 1.17549435e-38f) ? 1.0f / _t14 : 0.0f;
+    const float _t16 = _t5 * _t7 * _t15;
     const float _t17 = _t16 * _t16;
-    const float _t18 = cospi(_t4);
-    const float _t19 = _t13 * sqrt(_t12);
-    const float _t20 = _t3 * _t19;
-    const float _t21 = _t5 * (_t17 * (_t16 * (2.08744777e-09f - 1.13046204e-11f * _t15) + (2.48015876e-05f - _t15 * 2.75573029e-07f)) + (_t16 * (0.0416666679f - 0.00138888892f * _t15) + (1.0f - _t15 * 0.5f))) + _t18 * ((1.0f - 0.166666672f * _t15 + _t16 * (0.00833333377f - 0.000198412701f * _t15) + _t17 * (2.75573188e-06f - 2.50520991e-08f * _t15 + (1.60577024e-10f - 7.54937183e-13f * _t15) * _t16)) * (_t20 * _t5));
+    const float _t18 = _t17 * _t17;
+    const float _t19 = _t15 * sqrt(_t14);
+    const float _t20 = _t19 * _t4;
+    const float _t21 = _t6 * ((_t17 * (2.08744777e-09f - 1.13046204e-11f * _t16) + (2.48015876e-05f - 2.75573029e-07f * _t16)) * _t18 + (1.0f - _t16 * 0.5f + (0.0416666679f - 0.00138888892f * _t16) * _t17)) + _t1 * (_t20 * _t6 * ((0.00833333377f - 0.000198412701f * _t16) * _t17 + (1.0f - 0.166666672f * _t16) + (2.75573188e-06f - 2.50520991e-08f * _t16 + (1.60577024e-10f - 7.54937183e-13f * _t16) * _t17) * _t18));
     const float _t22 = _t21 * _t21;
-    const float _t23 = _t14 * _t8 * _t13;
+    const float _t23 = _t5 * _t10 * _t15;
     const float _t24 = _t23 * _t23;
     const float _t25 = _t24 * _t24;
-    const float _t26 = cospi(_t6);
-    const float _t27 = ((2.48015876e-05f - _t23 * 2.75573029e-07f + (2.08744777e-09f - _t23 * 1.13046204e-11f) * _t24) * _t25 + ((0.0416666679f - 0.00138888892f * _t23) * _t24 + (1.0f - _t23 * 0.5f))) * _t7 + _t20 * _t7 * (1.0f - 0.166666672f * _t23 + (0.00833333377f - _t23 * 0.000198412701f) * _t24 + (2.75573188e-06f - 2.50520991e-08f * _t23 + (1.60577024e-10f - 7.54937183e-13f * _t23) * _t24) * _t25) * _t26;
+    const float _t26 = cospi(_t8);
+    const float _t27 = (1.0f - _t23 * 0.5f + _t24 * (0.0416666679f - 0.00138888892f * _t23) + (_t24 * (2.08744777e-09f - 1.13046204e-11f * _t23) + (2.48015876e-05f - _t23 * 2.75573029e-07f)) * _t25) * _t9 + _t26 * (_t20 * _t9 * (1.0f - 0.166666672f * _t23 + _t24 * (0.00833333377f - 0.000198412701f * _t23) + (_t24 * (1.60577024e-10f - 7.54937183e-13f * _t23) + (2.75573188e-06f - 2.50520991e-08f * _t23)) * _t25));
     const float _t28 = _t27 * _t27;
-    const float _t29 = _t13 * (_t14 * _t11);
+    const float _t29 = _t15 * (_t5 * _t13);
     const float _t30 = _t29 * _t29;
     const float _t31 = _t30 * _t30;
-    const float _t32 = ((2.48015876e-05f - _t29 * 2.75573029e-07f + (2.08744777e-09f - _t29 * 1.13046204e-11f) * _t30) * _t31 + (1.0f - _t29 * 0.5f + (0.0416666679f - 0.00138888892f * _t29) * _t30)) * _t10 + _t1 * (((_t30 * (1.60577024e-10f - 7.54937183e-13f * _t29) + (2.75573188e-06f - 2.50520991e-08f * _t29)) * _t31 + (_t30 * (0.00833333377f - _t29 * 0.000198412701f) + (1.0f - 0.166666672f * _t29))) * (_t20 * _t10));
-    const float _t33 = _t32 * _t32;
-    const float _t34 = _t22 + _t28 + _t33;
-    const float _t35 = (_t34 > 1.17549435e-38f) ? 1.0f / _t34 : 0.0f;
-    const float _t36 = _t3 * (sqrt(_t34) * _t35);
-    const float _t37 = _t14 * _t22 * _t35;
+    const float _t32 = cospi(_t11);
+    const float _t33 = _t12 * (_t30 * (0.0416666679f - 0.00138888892f * _t29) + (1.0f - _t29 * 0.5f) + _t31 * ((2.08744777e-09f - _t29 * 1.13046204e-11f) * _t30 + (2.48015876e-05f - _t29 * 2.75573029e-07f))) + _t32 * (((0.00833333377f - _t29 * 0.000198412701f) * _t30 + (1.0f - 0.166666672f * _t29) + _t31 * ((1.60577024e-10f - 7.54937183e-13f * _t29) * _t30 + (2.75573188e-06f - 2.50520991e-08f * _t29))) * (_t20 * _t12));
+    const float _t34 = _t33 * _t33;
+    const float _t35 = _t28 + _t34 + _t22;
+    const float _t36 = (_t35 > 1.17549435e-38f) ? 1.0f / _t35 : 0.0f;
+    const float _t37 = _t5 * _t22 * _t36;
     const float _t38 = _t37 * _t37;
     const float _t39 = _t38 * _t38;
-    const float _t40 = _t36 * _t21 * (((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) * _t39 + (1.0f - 0.166666672f * _t37 + (0.00833333377f - 0.000198412701f * _t37) * _t38)) * _t18 + _t5 * (((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f)) * _t39 + (1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38));
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t14 * _t28 * _t35;
-    const float _t43 = _t42 * _t42;
-    const float _t44 = _t43 * _t43;
-    const float _t45 = _t26 * (_t36 * _t27 * (1.0f - 0.166666672f * _t42 + (0.00833333377f - _t42 * 0.000198412701f) * _t43 + _t44 * ((1.60577024e-10f - 7.54937183e-13f * _t42) * _t43 + (2.75573188e-06f - 2.50520991e-08f * _t42)))) + (_t44 * ((2.08744777e-09f - _t42 * 1.13046204e-11f) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f)) + ((0.0416666679f - 0.00138888892f * _t42) * _t43 + (1.0f - _t42 * 0.5f))) * _t7;
-    const float _t46 = _t45 * _t45;
-    const float _t47 = _t14 * _t33 * _t35;
+    const float _t40 = _t4 * (_t36 * sqrt(_t35));
+    const float _t41 = _t40 * _t21;
+    const float _t42 = (1.0f - _t37 * 0.166666672f + (0.00833333377f - _t37 * 0.000198412701f) * _t38 + _t39 * (2.75573188e-06f - _t37 * 2.50520991e-08f + _t38 * (1.60577024e-10f - _t37 * 7.54937183e-13f))) * _t41;
+    const float _t43 = _t38 * (0.0416666679f - _t37 * 0.00138888892f) + (1.0f - _t37 * 0.5f) + _t39 * (_t38 * (2.08744777e-09f - _t37 * 1.13046204e-11f) + (2.48015876e-05f - _t37 * 2.75573029e-07f));
+    const float _t44 = _t1 * _t42 + _t43 * _t6;
+    const float _t45 = _t40 * _t27;
+    const float _t46 = _t36 * (_t5 * _t28);
+    const float _t47 = _t46 * _t46;
     const float _t48 = _t47 * _t47;
-    const float _t49 = _t48 * _t48;
-    const float _t50 = ((2.48015876e-05f - _t47 * 2.75573029e-07f + _t48 * (2.08744777e-09f - _t47 * 1.13046204e-11f)) * _t49 + ((0.0416666679f - _t47 * 0.00138888892f) * _t48 + (1.0f - _t47 * 0.5f))) * _t10 + _t1 * (_t36 * _t32 * (1.0f - _t47 * 0.166666672f + _t48 * (0.00833333377f - _t47 * 0.000198412701f) + _t49 * (2.75573188e-06f - _t47 * 2.50520991e-08f + _t48 * (1.60577024e-10f - _t47 * 7.54937183e-13f))));
-    const float _t51 = _t50 * _t50;
-    const float _t52 = _t41 + (_t46 + _t51);
-    const float _t53 = (_t52 > 1.17549435e-38f) ? 1.0f / _t52 : 0.0f;
-    const float _t54 = _t53 * (_t14 * _t51);
-    const float _t55 = _t54 * _t54;
-    const float _t56 = _t55 * _t55;
-    const float _t57 = _t3 * (_t53 * sqrt(_t52));
-    const float _t58 = _t53 * (_t14 * _t46);
-    const float _t59 = _t58 * _t58;
-    const float _t60 = _t59 * _t59;
-    const float _t61 = _t53 * (_t14 * _t41);
-    const float _t62 = _t61 * _t61;
-    const float _t63 = _t62 * _t62;
-    const float _t64 = -_t2;
-    const float _t65 = (_t64 <= 1.0f) ? (((-1.0f) <= _t64) ? _t64 : (-1.0f)) : 1.0f;
-    const float _t66 = _t65 * _t65;
-    const float _t67 = _t66 * _t8 * _t13;
-    const float _t68 = _t67 * _t67;
-    const float _t69 = _t68 * _t68;
-    const float _t70 = _t19 * _t65;
-    const float _t71 = (1.0f - _t67 * 0.5f + _t68 * (0.0416666679f - 0.00138888892f * _t67) + (_t68 * (2.08744777e-09f - 1.13046204e-11f * _t67) + (2.48015876e-05f - _t67 * 2.75573029e-07f)) * _t69) * _t7 + _t26 * (_t70 * _t7 * (1.0f - 0.166666672f * _t67 + _t68 * (0.00833333377f - 0.000198412701f * _t67) + (_t68 * (1.60577024e-10f - 7.54937183e-13f * _t67) + (2.75573188e-06f - 2.50520991e-08f * _t67)) * _t69));
-    const float _t72 = _t71 * _t71;
-    const float _t73 = _t13 * (_t66 * _t9);
-    const float _t74 = _t73 * _t73;
+    const float _t49 = _t45 * ((2.75573188e-06f - 2.50520991e-08f * _t46 + (1.60577024e-10f - 7.54937183e-13f * _t46) * _t47) * _t48 + (_t47 * (0.00833333377f - 0.000198412701f * _t46) + (1.0f - 0.166666672f * _t46)));
+    const float _t50 = (2.48015876e-05f - _t46 * 2.75573029e-07f + _t47 * (2.08744777e-09f - _t46 * 1.13046204e-11f)) * _t48 + (_t47 * (0.0416666679f - 0.00138888892f * _t46) + (1.0f - _t46 * 0.5f));
+    const float _t51 = _t26 * _t49 + _t50 * _t9;
+    const float _t52 = _t5 * _t34 * _t36;
+    const float _t53 = _t52 * _t52;
+    const float _t54 = _t53 * _t53;
+    const float _t55 = 1.0f - _t52 * 0.5f + (0.0416666679f - _t52 * 0.00138888892f) * _t53 + (2.48015876e-05f - _t52 * 2.75573029e-07f + (2.08744777e-09f - _t52 * 1.13046204e-11f) * _t53) * _t54;
+    const float _t56 = _t40 * _t33;
+    const float _t57 = (1.0f - _t52 * 0.166666672f + (0.00833333377f - _t52 * 0.000198412701f) * _t53 + (2.75573188e-06f - _t52 * 2.50520991e-08f + (1.60577024e-10f - _t52 * 7.54937183e-13f) * _t53) * _t54) * _t56;
+    const float _t58 = _t12 * _t55 + _t57 * _t32;
+    const float _t59 = _t51 * _t51 + _t44 * _t44 + _t58 * _t58;
+    const float _t60 = ((_t59 > 1.17549435e-38f) ? 1.0f / _t59 : 0.0f) * sqrt(_t59) * _t4;
+    const float _t61 = _t44 * _t60 - _t41;
+    const float _t62 = _t1 * _t43 - _t42 * _t6;
+    const float _t63 = _t58 * _t60 - _t56;
+    const float _t64 = _t55 * _t32 - _t12 * _t57;
+    const float _t65 = _t51 * _t60 - _t45;
+    const float _t66 = _t50 * _t26 - _t49 * _t9;
+    const float _t67 = -(_t61 * (_t61 * _t62 * 0.5f + _t44) + _t63 * (_t58 + _t63 * _t64 * 0.5f) + _t65 * (_t65 * _t66 * 0.5f + _t51) - (_t62 + _t64 + _t66));
+    const float _t68 = 1.73205256f * fabs(_t4);
+    const float _t69 = _t1 + (_t26 + _t32);
+    const float _t70 = _t68 + _t69;
+    const float _t71 = _t69 - _t68;
+    const float _t72 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+    const float _t73 = _t72 * _t72;
+    const float _t74 = _t15 * (_t73 * _t7);
     const float _t75 = _t74 * _t74;
-    const float _t76 = _t5 * (_t74 * (0.0416666679f - 0.00138888892f * _t73) + (1.0f - _t73 * 0.5f) + _t75 * ((2.08744777e-09f - _t73 * 1.13046204e-11f) * _t74 + (2.48015876e-05f - _t73 * 2.75573029e-07f))) + _t18 * (((0.00833333377f - _t73 * 0.000198412701f) * _t74 + (1.0f - 0.166666672f * _t73) + _t75 * ((1.60577024e-10f - 7.54937183e-13f * _t73) * _t74 + (2.75573188e-06f - 2.50520991e-08f * _t73))) * (_t70 * _t5));
-    const float _t77 = _t76 * _t76;
-    const float _t78 = _t66 * _t11 * _t13;
+    const float _t76 = _t75 * _t75;
+    const float _t77 = _t72 * _t19;
+    const float _t78 = ((2.48015876e-05f - _t74 * 2.75573029e-07f + (2.08744777e-09f - _t74 * 1.13046204e-11f) * _t75) * _t76 + (1.0f - _t74 * 0.5f + (0.0416666679f - 0.00138888892f * _t74) * _t75)) * _t6 + _t1 * (((_t75 * (1.60577024e-10f - 7.54937183e-13f * _t74) + (2.75573188e-06f - 2.50520991e-08f * _t74)) * _t76 + (_t75 * (0.00833333377f - _t74 * 0.000198412701f) + (1.0f - 0.166666672f * _t74))) * (_t77 * _t6));
     const float _t79 = _t78 * _t78;
-    const float _t80 = _t79 * _t79;
-    const float _t81 = _t10 * ((_t79 * (2.08744777e-09f - 1.13046204e-11f * _t78) + (2.48015876e-05f - 2.75573029e-07f * _t78)) * _t80 + (1.0f - _t78 * 0.5f + (0.0416666679f - 0.00138888892f * _t78) * _t79)) + _t1 * (_t70 * _t10 * ((0.00833333377f - 0.000198412701f * _t78) * _t79 + (1.0f - 0.166666672f * _t78) + (2.75573188e-06f - 2.50520991e-08f * _t78 + (1.60577024e-10f - 7.54937183e-13f * _t78) * _t79) * _t80));
+    const float _t80 = _t15 * (_t73 * _t13);
+    const float _t81 = _t80 * _t80;
     const float _t82 = _t81 * _t81;
-    const float _t83 = _t72 + _t77 + _t82;
-    const float _t84 = (_t83 > 1.17549435e-38f) ? 1.0f / _t83 : 0.0f;
-    const float _t85 = _t65 * (_t84 * sqrt(_t83));
-    const float _t86 = _t84 * (_t66 * _t72);
+    const float _t83 = _t12 * (_t82 * (_t81 * (2.08744777e-09f - 1.13046204e-11f * _t80) + (2.48015876e-05f - _t80 * 2.75573029e-07f)) + (_t81 * (0.0416666679f - 0.00138888892f * _t80) + (1.0f - _t80 * 0.5f))) + _t32 * ((1.0f - 0.166666672f * _t80 + _t81 * (0.00833333377f - 0.000198412701f * _t80) + _t82 * (2.75573188e-06f - 2.50520991e-08f * _t80 + (1.60577024e-10f - 7.54937183e-13f * _t80) * _t81)) * (_t77 * _t12));
+    const float _t84 = _t83 * _t83;
+    const float _t85 = _t73 * _t10 * _t15;
+    const float _t86 = _t85 * _t85;
     const float _t87 = _t86 * _t86;
-    const float _t88 = _t87 * _t87;
-    const float _t89 = _t26 * (_t85 * _t71 * ((2.75573188e-06f - 2.50520991e-08f * _t86 + (1.60577024e-10f - 7.54937183e-13f * _t86) * _t87) * _t88 + (_t87 * (0.00833333377f - 0.000198412701f * _t86) + (1.0f - 0.166666672f * _t86)))) + ((2.48015876e-05f - _t86 * 2.75573029e-07f + _t87 * (2.08744777e-09f - _t86 * 1.13046204e-11f)) * _t88 + (_t87 * (0.0416666679f - 0.00138888892f * _t86) + (1.0f - _t86 * 0.5f))) * _t7;
-    const float _t90 = _t89 * _t89;
-    const float _t91 = _t66 * _t82 * _t84;
-    const float _t92 = _t91 * _t91;
+    const float _t88 = ((2.48015876e-05f - _t85 * 2.75573029e-07f + (2.08744777e-09f - _t85 * 1.13046204e-11f) * _t86) * _t87 + ((0.0416666679f - 0.00138888892f * _t85) * _t86 + (1.0f - _t85 * 0.5f))) * _t9 + _t77 * _t9 * (1.0f - 0.166666672f * _t85 + (0.00833333377f - _t85 * 0.000198412701f) * _t86 + (2.75573188e-06f - 2.50520991e-08f * _t85 + (1.60577024e-10f - 7.54937183e-13f * _t85) * _t86) * _t87) * _t26;
+    const float _t89 = _t88 * _t88;
+    const float _t90 = _t84 + _t89 + _t79;
+    const float _t91 = (_t90 > 1.17549435e-38f) ? 1.0f / _t90 : 0.0f;
+    const float _t92 = _t73 * _t79 * _t91;
     const float _t93 = _t92 * _t92;
-    const float _t94 = _t1 * ((1.0f - _t91 * 0.166666672f + (0.00833333377f - _t91 * 0.000198412701f) * _t92 + _t93 * (2.75573188e-06f - _t91 * 2.50520991e-08f + _t92 * (1.60577024e-10f - _t91 * 7.54937183e-13f))) * (_t85 * _t81)) + (_t92 * (0.0416666679f - _t91 * 0.00138888892f) + (1.0f - _t91 * 0.5f) + _t93 * (_t92 * (2.08744777e-09f - _t91 * 1.13046204e-11f) + (2.48015876e-05f - _t91 * 2.75573029e-07f))) * _t10;
-    const float _t95 = _t94 * _t94;
-    const float _t96 = _t66 * _t77 * _t84;
-    const float _t97 = _t96 * _t96;
-    const float _t98 = _t97 * _t97;
-    const float _t99 = _t5 * (1.0f - _t96 * 0.5f + (0.0416666679f - _t96 * 0.00138888892f) * _t97 + (2.48015876e-05f - _t96 * 2.75573029e-07f + (2.08744777e-09f - _t96 * 1.13046204e-11f) * _t97) * _t98) + (1.0f - _t96 * 0.166666672f + (0.00833333377f - _t96 * 0.000198412701f) * _t97 + (2.75573188e-06f - _t96 * 2.50520991e-08f + (1.60577024e-10f - _t96 * 7.54937183e-13f) * _t97) * _t98) * (_t85 * _t76) * _t18;
-    const float _t100 = _t99 * _t99;
-    const float _t101 = _t90 + _t95 + _t100;
-    const float _t102 = (_t101 > 1.17549435e-38f) ? 1.0f / _t101 : 0.0f;
-    const float _t103 = _t102 * (_t66 * _t100);
+    const float _t94 = _t93 * _t93;
+    const float _t95 = (2.48015876e-05f - _t92 * 2.75573029e-07f + _t93 * (2.08744777e-09f - _t92 * 1.13046204e-11f)) * _t94 + ((0.0416666679f - _t92 * 0.00138888892f) * _t93 + (1.0f - _t92 * 0.5f));
+    const float _t96 = _t72 * (sqrt(_t90) * _t91);
+    const float _t97 = _t96 * _t78;
+    const float _t98 = _t97 * (1.0f - _t92 * 0.166666672f + _t93 * (0.00833333377f - _t92 * 0.000198412701f) + _t94 * (2.75573188e-06f - _t92 * 2.50520991e-08f + _t93 * (1.60577024e-10f - _t92 * 7.54937183e-13f)));
+    const float _t99 = _t95 * _t6 + _t1 * _t98;
+    const float _t100 = _t1 * _t95 - _t98 * _t6;
+    const float _t101 = _t96 * _t83;
+    const float _t102 = _t73 * _t84 * _t91;
+    const float _t103 = _t102 * _t102;
     const float _t104 = _t103 * _t103;
-    const float _t105 = _t104 * _t104;
-    const float _t106 = _t102 * sqrt(_t101) * _t65;
-    const float _t107 = _t102 * (_t66 * _t95);
-    const float _t108 = _t107 * _t107;
-    const float _t109 = _t108 * _t108;
-    const float _t110 = _t102 * (_t66 * _t90);
+    const float _t105 = _t101 * (((1.60577024e-10f - 7.54937183e-13f * _t102) * _t103 + (2.75573188e-06f - 2.50520991e-08f * _t102)) * _t104 + (1.0f - 0.166666672f * _t102 + (0.00833333377f - 0.000198412701f * _t102) * _t103));
+    const float _t106 = ((2.08744777e-09f - _t102 * 1.13046204e-11f) * _t103 + (2.48015876e-05f - _t102 * 2.75573029e-07f)) * _t104 + (1.0f - _t102 * 0.5f + (0.0416666679f - 0.00138888892f * _t102) * _t103);
+    const float _t107 = _t105 * _t32 + _t12 * _t106;
+    const float _t108 = _t96 * _t88;
+    const float _t109 = _t73 * _t89 * _t91;
+    const float _t110 = _t109 * _t109;
     const float _t111 = _t110 * _t110;
-    const float _t112 = _t111 * _t111;
-    return (_t1 * (_t56 * (_t55 * (2.08744777e-09f - 1.13046204e-11f * _t54) + (2.48015876e-05f - _t54 * 2.75573029e-07f)) + (1.0f - _t54 * 0.5f + _t55 * (0.0416666679f - 0.00138888892f * _t54))) - _t50 * _t57 * ((2.75573188e-06f - 2.50520991e-08f * _t54 + _t55 * (1.60577024e-10f - 7.54937183e-13f * _t54)) * _t56 + ((0.00833333377f - 0.000198412701f * _t54) * _t55 + (1.0f - 0.166666672f * _t54))) * _t10 + ((1.0f - _t58 * 0.5f + _t59 * (0.0416666679f - 0.00138888892f * _t58) + (_t59 * (2.08744777e-09f - _t58 * 1.13046204e-11f) + (2.48015876e-05f - _t58 * 2.75573029e-07f)) * _t60) * _t26 - (1.0f - 0.166666672f * _t58 + _t59 * (0.00833333377f - _t58 * 0.000198412701f) + (2.75573188e-06f - 2.50520991e-08f * _t58 + (1.60577024e-10f - 7.54937183e-13f * _t58) * _t59) * _t60) * (_t45 * _t57) * _t7 + (((0.0416666679f - 0.00138888892f * _t61) * _t62 + (1.0f - _t61 * 0.5f) + _t63 * (2.48015876e-05f - _t61 * 2.75573029e-07f + _t62 * (2.08744777e-09f - _t61 * 1.13046204e-11f))) * _t18 - _t5 * (((0.00833333377f - 0.000198412701f * _t61) * _t62 + (1.0f - 0.166666672f * _t61) + _t63 * ((1.60577024e-10f - 7.54937183e-13f * _t61) * _t62 + (2.75573188e-06f - 2.50520991e-08f * _t61))) * (_t40 * _t57))))) * (((2.48015876e-05f - _t103 * 2.75573029e-07f + _t104 * (2.08744777e-09f - _t103 * 1.13046204e-11f)) * _t105 + (1.0f - _t103 * 0.5f + _t104 * (0.0416666679f - 0.00138888892f * _t103))) * _t18 - _t5 * (_t99 * _t106 * ((2.75573188e-06f - _t103 * 2.50520991e-08f + _t104 * (1.60577024e-10f - 7.54937183e-13f * _t103)) * _t105 + (_t104 * (0.00833333377f - _t103 * 0.000198412701f) + (1.0f - _t103 * 0.166666672f)))) + (_t1 * ((0.0416666679f - 0.00138888892f * _t107) * _t108 + (1.0f - _t107 * 0.5f) + (2.48015876e-05f - _t107 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t107) * _t108) * _t109) - _t94 * _t106 * (_t108 * (0.00833333377f - 0.000198412701f * _t107) + (1.0f - 0.166666672f * _t107) + (2.75573188e-06f - 2.50520991e-08f * _t107 + _t108 * (1.60577024e-10f - 7.54937183e-13f * _t107)) * _t109) * _t10) + (_t26 * ((0.0416666679f - 0.00138888892f * _t110) * _t111 + (1.0f - _t110 * 0.5f) + (_t111 * (2.08744777e-09f - _t110 * 1.13046204e-11f) + (2.48015876e-05f - _t110 * 2.75573029e-07f)) * _t112) - _t89 * _t106 * ((2.75573188e-06f - 2.50520991e-08f * _t110 + _t111 * (1.60577024e-10f - 7.54937183e-13f * _t110)) * _t112 + (1.0f - 0.166666672f * _t110 + (0.00833333377f - 0.000198412701f * _t110) * _t111)) * _t7));
+    const float _t112 = _t108 * (1.0f - 0.166666672f * _t109 + (0.00833333377f - _t109 * 0.000198412701f) * _t110 + _t111 * ((1.60577024e-10f - 7.54937183e-13f * _t109) * _t110 + (2.75573188e-06f - 2.50520991e-08f * _t109)));
+    const float _t113 = _t111 * ((2.08744777e-09f - _t109 * 1.13046204e-11f) * _t110 + (2.48015876e-05f - _t109 * 2.75573029e-07f)) + ((0.0416666679f - 0.00138888892f * _t109) * _t110 + (1.0f - _t109 * 0.5f));
+    const float _t114 = _t26 * _t112 + _t113 * _t9;
+    const float _t115 = _t107 * _t107 + (_t114 * _t114 + _t99 * _t99);
+    const float _t116 = _t72 * (((_t115 > 1.17549435e-38f) ? 1.0f / _t115 : 0.0f) * sqrt(_t115));
+    const float _t117 = _t99 * _t116 - _t97;
+    const float _t118 = _t32 * _t106 - _t12 * _t105;
+    const float _t119 = _t107 * _t116 - _t101;
+    const float _t120 = _t114 * _t116 - _t108;
+    const float _t121 = _t26 * _t113 - _t112 * _t9;
+    const float _t122 = -((_t99 + _t100 * _t117 * 0.5f) * _t117 + ((_t107 + _t118 * _t119 * 0.5f) * _t119 + _t120 * (_t114 + _t120 * _t121 * 0.5f)) - (_t100 + _t118 + _t121));
+    const float _t123 = 1.73205256f * fabs(_t72);
+    const float _t124 = _t69 + _t123;
+    const float _t125 = _t69 - _t123;
+    return ((_t67 <= _t70) ? ((_t71 <= _t67) ? _t67 : _t71) : _t70) * ((_t122 <= _t124) ? ((_t125 <= _t122) ? _t122 : _t125) : _t124);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
@@ -354,7 +377,7 @@ double schwarzp_proj_o6_field(double3 p)
 }
 
 /* phi(p, h) of order 6: zero on the surface moved by h along +grad F.
- * Total ops: 383
+ * Total ops: 313
  */
 double schwarzp_proj_o6_offset(double3 p, double h)
 {
@@ -397,152 +420,172 @@ double schwarzp_proj_o6_offset(double3 p, double h)
     const double _t36 = _t35 * _t35;
     const double _t37 = _t36 * _t36;
     const double _t38 = _t6 * (_t34 * sqrt(_t33));
-    const double _t39 = _t1 * ((_t37 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + _t36 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35)) + (1.0 - 0.16666666666666666 * _t35 + _t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35))) * (_t31 * _t38)) + ((_t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07)) * _t37 + ((0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (1.0 - _t35 * 0.5))) * _t8;
-    const double _t40 = _t39 * _t39;
-    const double _t41 = _t34 * (_t21 * _t7);
-    const double _t42 = _t41 * _t41;
-    const double _t43 = _t42 * _t42;
-    const double _t44 = _t3 * (((2.0874477943664777e-09 - _t41 * 1.1304620460700782e-11) * _t42 + (2.4801587247292686e-05 - _t41 * 2.7557303701922228e-07)) * _t43 + (1.0 - _t41 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t41) * _t42)) + _t19 * ((1.0 - 0.16666666666666666 * _t41 + (0.0083333333333333003 - 0.00019841269841216566 * _t41) * _t42 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t41 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t41) * _t42) * _t43) * (_t20 * _t38));
+    const double _t39 = _t31 * _t38;
+    const double _t40 = (_t37 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + _t36 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35)) + (1.0 - 0.16666666666666666 * _t35 + _t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35))) * _t39;
+    const double _t41 = (_t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07)) * _t37 + ((0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (1.0 - _t35 * 0.5));
+    const double _t42 = _t1 * _t40 + _t41 * _t8;
+    const double _t43 = _t34 * (_t21 * _t7);
+    const double _t44 = _t43 * _t43;
     const double _t45 = _t44 * _t44;
-    const double _t46 = _t34 * (_t27 * _t7);
-    const double _t47 = _t46 * _t46;
-    const double _t48 = _t47 * _t47;
-    const double _t49 = ((0.041666666666666102 - 0.0013888888888798428 * _t46) * _t47 + (1.0 - _t46 * 0.5) + _t48 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t46) * _t47 + (2.4801587247292686e-05 - _t46 * 2.7557303701922228e-07))) * _t11 + ((0.0083333333333333003 - 0.00019841269841216566 * _t46) * _t47 + (1.0 - 0.16666666666666666 * _t46) + _t48 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t46 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t46) * _t47)) * (_t26 * _t38) * _t25;
-    const double _t50 = _t49 * _t49;
-    const double _t51 = _t40 + (_t45 + _t50);
-    const double _t52 = (_t51 > 1.1754943508222875e-38) ? 1.0 / _t51 : 0.0;
-    const double _t53 = _t52 * (_t40 * _t7);
-    const double _t54 = _t53 * _t53;
-    const double _t55 = _t54 * _t54;
-    const double _t56 = sqrt(_t51) * _t52 * _t6;
-    const double _t57 = _t50 * _t7 * _t52;
-    const double _t58 = _t57 * _t57;
-    const double _t59 = _t58 * _t58;
-    const double _t60 = _t45 * _t7 * _t52;
-    const double _t61 = _t60 * _t60;
-    const double _t62 = _t61 * _t61;
-    return _t1 * (_t55 * (2.4801587247292686e-05 - _t53 * 2.7557303701922228e-07 + _t54 * (2.0874477943664777e-09 - _t53 * 1.1304620460700782e-11)) + (1.0 - _t53 * 0.5 + _t54 * (0.041666666666666102 - 0.0013888888888798428 * _t53))) - _t39 * _t56 * (_t55 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t53) * _t54 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t53)) + (1.0 - 0.16666666666666666 * _t53 + _t54 * (0.0083333333333333003 - 0.00019841269841216566 * _t53))) * _t8 + (_t25 * (_t59 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t57 + _t58 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t57)) + (_t58 * (0.041666666666666102 - 0.0013888888888798428 * _t57) + (1.0 - 0.5 * _t57))) - (1.0 - 0.16666666666666666 * _t57 + _t58 * (0.0083333333333333003 - 0.00019841269841216566 * _t57) + _t59 * (_t58 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t57) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t57))) * (_t49 * _t56) * _t11) + (_t19 * (1.0 - _t60 * 0.5 + _t61 * (0.041666666666666102 - 0.0013888888888798428 * _t60) + (_t61 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t60) + (2.4801587247292686e-05 - _t60 * 2.7557303701922228e-07)) * _t62) - ((0.0083333333333333003 - 0.00019841269841216566 * _t60) * _t61 + (1.0 - 0.16666666666666666 * _t60) + _t62 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t60 + _t61 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t60))) * (_t56 * _t44) * _t3);
+    const double _t46 = ((2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) * _t44 + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07)) * _t45 + (1.0 - _t43 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t43) * _t44);
+    const double _t47 = _t20 * _t38;
+    const double _t48 = (1.0 - 0.16666666666666666 * _t43 + (0.0083333333333333003 - 0.00019841269841216566 * _t43) * _t44 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t43 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t43) * _t44) * _t45) * _t47;
+    const double _t49 = _t3 * _t46 + _t19 * _t48;
+    const double _t50 = _t34 * (_t27 * _t7);
+    const double _t51 = _t50 * _t50;
+    const double _t52 = _t51 * _t51;
+    const double _t53 = (0.041666666666666102 - 0.0013888888888798428 * _t50) * _t51 + (1.0 - _t50 * 0.5) + _t52 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t50) * _t51 + (2.4801587247292686e-05 - _t50 * 2.7557303701922228e-07));
+    const double _t54 = _t26 * _t38;
+    const double _t55 = ((0.0083333333333333003 - 0.00019841269841216566 * _t50) * _t51 + (1.0 - 0.16666666666666666 * _t50) + _t52 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t50 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t50) * _t51)) * _t54;
+    const double _t56 = _t53 * _t11 + _t55 * _t25;
+    const double _t57 = _t42 * _t42 + (_t49 * _t49 + _t56 * _t56);
+    const double _t58 = sqrt(_t57) * ((_t57 > 1.1754943508222875e-38) ? 1.0 / _t57 : 0.0) * _t6;
+    const double _t59 = _t42 * _t58 - _t39;
+    const double _t60 = _t1 * _t41 - _t40 * _t8;
+    const double _t61 = _t58 * _t49 - _t47;
+    const double _t62 = _t19 * _t46 - _t3 * _t48;
+    const double _t63 = _t56 * _t58 - _t54;
+    const double _t64 = _t25 * _t53 - _t55 * _t11;
+    const double _t65 = -((_t59 * _t60 * 0.5 + _t42) * _t59 + _t61 * (_t61 * _t62 * 0.5 + _t49) + _t63 * (_t56 + _t63 * _t64 * 0.5) - (_t60 + (_t64 + _t62)));
+    const double _t66 = 1.7320525396196846 * fabs(_t6);
+    const double _t67 = _t25 + (_t1 + _t19);
+    const double _t68 = _t66 + _t67;
+    const double _t69 = _t67 - _t66;
+    return (_t65 <= _t68) ? ((_t69 <= _t65) ? _t65 : _t69) : _t68;
 }
 
 /* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 749
+ * Total ops: 607
  */
 double schwarzp_proj_o6_shell(double3 p, double t)
 {
     const double _t0 = p.x * 2.0;
     const double _t1 = cospi(_t0);
     const double _t2 = 6.2831853071795862 * (t * 0.5);
-    const double _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    const double _t4 = p.z * 2.0;
-    const double _t5 = sinpi(_t4);
-    const double _t6 = p.y * 2.0;
-    const double _t7 = sinpi(_t6);
-    const double _t8 = _t7 * _t7;
-    const double _t9 = _t5 * _t5;
-    const double _t10 = sinpi(_t0);
-    const double _t11 = _t10 * _t10;
-    const double _t12 = _t8 + (_t9 + _t11);
-    const double _t13 = (_t12 > 1.1754943508222875e-38) ? 1.0 / _t12 : 0.0;
-    const double _t14 = _t3 * _t3;
-    const double _t15 = _t13 * (_t14 * _t9);
-    const double _t16 = _t15 * _t15;
+    const double _t3 = -_t2;
+    const double _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
+    const double _t5 = _t4 * _t4;
+    const double _t6 = sinpi(_t0);
+    const double _t7 = _t6 * _t6;
+    const double _t8 = p.y * 2.0;
+    const double _t9 = sinpi(_t8);
+    const double _t10 = _t9 * _t9;
+    const double _t11 = p.z * 2.0;
+    const double _t12 = sinpi(_t11);
+    const double _t13 = _t12 * _t12;
+    const double _t14 = _t10 + (_t13 + _t7);
+    const double _t15 = (_t14 > 1.1754943508222875e-38) ? 1.0 / _t14 : 0.0;
+    const double _t16 = _t5 * _t7 * _t15;
     const double _t17 = _t16 * _t16;
-    const double _t18 = cospi(_t4);
-    const double _t19 = _t13 * sqrt(_t12);
-    const double _t20 = _t3 * _t19;
-    const double _t21 = _t5 * (_t17 * (_t16 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) + (2.4801587247292686e-05 - _t15 * 2.7557303701922228e-07)) + (_t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + (1.0 - _t15 * 0.5))) + _t18 * ((1.0 - 0.16666666666666666 * _t15 + _t16 * (0.0083333333333333003 - 0.00019841269841216566 * _t15) + _t17 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15) * _t16)) * (_t20 * _t5));
+    const double _t18 = _t17 * _t17;
+    const double _t19 = _t15 * sqrt(_t14);
+    const double _t20 = _t19 * _t4;
+    const double _t21 = _t6 * ((_t17 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t16) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t16)) * _t18 + (1.0 - _t16 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t16) * _t17)) + _t1 * (_t20 * _t6 * ((0.0083333333333333003 - 0.00019841269841216566 * _t16) * _t17 + (1.0 - 0.16666666666666666 * _t16) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t16 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t16) * _t17) * _t18));
     const double _t22 = _t21 * _t21;
-    const double _t23 = _t14 * _t8 * _t13;
+    const double _t23 = _t5 * _t10 * _t15;
     const double _t24 = _t23 * _t23;
     const double _t25 = _t24 * _t24;
-    const double _t26 = cospi(_t6);
-    const double _t27 = ((2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t23 * 1.1304620460700782e-11) * _t24) * _t25 + ((0.041666666666666102 - 0.0013888888888798428 * _t23) * _t24 + (1.0 - _t23 * 0.5))) * _t7 + _t20 * _t7 * (1.0 - 0.16666666666666666 * _t23 + (0.0083333333333333003 - _t23 * 0.00019841269841216566) * _t24 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) * _t24) * _t25) * _t26;
+    const double _t26 = cospi(_t8);
+    const double _t27 = (1.0 - _t23 * 0.5 + _t24 * (0.041666666666666102 - 0.0013888888888798428 * _t23) + (_t24 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t23) + (2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07)) * _t25) * _t9 + _t26 * (_t20 * _t9 * (1.0 - 0.16666666666666666 * _t23 + _t24 * (0.0083333333333333003 - 0.00019841269841216566 * _t23) + (_t24 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23)) * _t25));
     const double _t28 = _t27 * _t27;
-    const double _t29 = _t13 * (_t14 * _t11);
+    const double _t29 = _t15 * (_t5 * _t13);
     const double _t30 = _t29 * _t29;
     const double _t31 = _t30 * _t30;
-    const double _t32 = ((2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) * _t30) * _t31 + (1.0 - _t29 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t29) * _t30)) * _t10 + _t1 * (((_t30 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t29) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t29)) * _t31 + (_t30 * (0.0083333333333333003 - _t29 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t29))) * (_t20 * _t10));
-    const double _t33 = _t32 * _t32;
-    const double _t34 = _t22 + _t28 + _t33;
-    const double _t35 = (_t34 > 1.1754943508222875e-38) ? 1.0 / _t34 : 0.0;
-    const double _t36 = _t3 * (sqrt(_t34) * _t35);
-    const double _t37 = _t14 * _t22 * _t35;
+    const double _t32 = cospi(_t11);
+    const double _t33 = _t12 * (_t30 * (0.041666666666666102 - 0.0013888888888798428 * _t29) + (1.0 - _t29 * 0.5) + _t31 * ((2.0874477943664777e-09 - _t29 * 1.1304620460700782e-11) * _t30 + (2.4801587247292686e-05 - _t29 * 2.7557303701922228e-07))) + _t32 * (((0.0083333333333333003 - _t29 * 0.00019841269841216566) * _t30 + (1.0 - 0.16666666666666666 * _t29) + _t31 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t29) * _t30 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t29))) * (_t20 * _t12));
+    const double _t34 = _t33 * _t33;
+    const double _t35 = _t28 + _t34 + _t22;
+    const double _t36 = (_t35 > 1.1754943508222875e-38) ? 1.0 / _t35 : 0.0;
+    const double _t37 = _t5 * _t22 * _t36;
     const double _t38 = _t37 * _t37;
     const double _t39 = _t38 * _t38;
-    const double _t40 = _t36 * _t21 * (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) * _t39 + (1.0 - 0.16666666666666666 * _t37 + (0.0083333333333333003 - 0.00019841269841216566 * _t37) * _t38)) * _t18 + _t5 * (((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07)) * _t39 + (1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38));
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t14 * _t28 * _t35;
-    const double _t43 = _t42 * _t42;
-    const double _t44 = _t43 * _t43;
-    const double _t45 = _t26 * (_t36 * _t27 * (1.0 - 0.16666666666666666 * _t42 + (0.0083333333333333003 - _t42 * 0.00019841269841216566) * _t43 + _t44 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42)))) + (_t44 * ((2.0874477943664777e-09 - _t42 * 1.1304620460700782e-11) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07)) + ((0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43 + (1.0 - _t42 * 0.5))) * _t7;
-    const double _t46 = _t45 * _t45;
-    const double _t47 = _t14 * _t33 * _t35;
+    const double _t40 = _t4 * (_t36 * sqrt(_t35));
+    const double _t41 = _t40 * _t21;
+    const double _t42 = (1.0 - _t37 * 0.16666666666666666 + (0.0083333333333333003 - _t37 * 0.00019841269841216566) * _t38 + _t39 * (2.755731919201122e-06 - _t37 * 2.5052099244914114e-08 + _t38 * (1.6057701922579786e-10 - _t37 * 7.549371704181243e-13))) * _t41;
+    const double _t43 = _t38 * (0.041666666666666102 - _t37 * 0.0013888888888798428) + (1.0 - _t37 * 0.5) + _t39 * (_t38 * (2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07));
+    const double _t44 = _t1 * _t42 + _t43 * _t6;
+    const double _t45 = _t40 * _t27;
+    const double _t46 = _t36 * (_t5 * _t28);
+    const double _t47 = _t46 * _t46;
     const double _t48 = _t47 * _t47;
-    const double _t49 = _t48 * _t48;
-    const double _t50 = ((2.4801587247292686e-05 - _t47 * 2.7557303701922228e-07 + _t48 * (2.0874477943664777e-09 - _t47 * 1.1304620460700782e-11)) * _t49 + ((0.041666666666666102 - _t47 * 0.0013888888888798428) * _t48 + (1.0 - _t47 * 0.5))) * _t10 + _t1 * (_t36 * _t32 * (1.0 - _t47 * 0.16666666666666666 + _t48 * (0.0083333333333333003 - _t47 * 0.00019841269841216566) + _t49 * (2.755731919201122e-06 - _t47 * 2.5052099244914114e-08 + _t48 * (1.6057701922579786e-10 - _t47 * 7.549371704181243e-13))));
-    const double _t51 = _t50 * _t50;
-    const double _t52 = _t41 + (_t46 + _t51);
-    const double _t53 = (_t52 > 1.1754943508222875e-38) ? 1.0 / _t52 : 0.0;
-    const double _t54 = _t53 * (_t14 * _t51);
-    const double _t55 = _t54 * _t54;
-    const double _t56 = _t55 * _t55;
-    const double _t57 = _t3 * (_t53 * sqrt(_t52));
-    const double _t58 = _t53 * (_t14 * _t46);
-    const double _t59 = _t58 * _t58;
-    const double _t60 = _t59 * _t59;
-    const double _t61 = _t53 * (_t14 * _t41);
-    const double _t62 = _t61 * _t61;
-    const double _t63 = _t62 * _t62;
-    const double _t64 = -_t2;
-    const double _t65 = (_t64 <= 1.0) ? (((-1.0) <= _t64) ? _t64 : (-1.0)) : 1.0;
-    const double _t66 = _t65 * _t65;
-    const double _t67 = _t66 * _t8 * _t13;
-    const double _t68 = _t67 * _t67;
-    const double _t69 = _t68 * _t68;
-    const double _t70 = _t19 * _t65;
-    const double _t71 = (1.0 - _t67 * 0.5 + _t68 * (0.041666666666666102 - 0.0013888888888798428 * _t67) + (_t68 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t67) + (2.4801587247292686e-05 - _t67 * 2.7557303701922228e-07)) * _t69) * _t7 + _t26 * (_t70 * _t7 * (1.0 - 0.16666666666666666 * _t67 + _t68 * (0.0083333333333333003 - 0.00019841269841216566 * _t67) + (_t68 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t67) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t67)) * _t69));
-    const double _t72 = _t71 * _t71;
-    const double _t73 = _t13 * (_t66 * _t9);
-    const double _t74 = _t73 * _t73;
+    const double _t49 = _t45 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t46 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t46) * _t47) * _t48 + (_t47 * (0.0083333333333333003 - 0.00019841269841216566 * _t46) + (1.0 - 0.16666666666666666 * _t46)));
+    const double _t50 = (2.4801587247292686e-05 - _t46 * 2.7557303701922228e-07 + _t47 * (2.0874477943664777e-09 - _t46 * 1.1304620460700782e-11)) * _t48 + (_t47 * (0.041666666666666102 - 0.0013888888888798428 * _t46) + (1.0 - _t46 * 0.5));
+    const double _t51 = _t26 * _t49 + _t50 * _t9;
+    const double _t52 = _t5 * _t34 * _t36;
+    const double _t53 = _t52 * _t52;
+    const double _t54 = _t53 * _t53;
+    const double _t55 = 1.0 - _t52 * 0.5 + (0.041666666666666102 - _t52 * 0.0013888888888798428) * _t53 + (2.4801587247292686e-05 - _t52 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t52 * 1.1304620460700782e-11) * _t53) * _t54;
+    const double _t56 = _t40 * _t33;
+    const double _t57 = (1.0 - _t52 * 0.16666666666666666 + (0.0083333333333333003 - _t52 * 0.00019841269841216566) * _t53 + (2.755731919201122e-06 - _t52 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t52 * 7.549371704181243e-13) * _t53) * _t54) * _t56;
+    const double _t58 = _t12 * _t55 + _t57 * _t32;
+    const double _t59 = _t51 * _t51 + _t44 * _t44 + _t58 * _t58;
+    const double _t60 = ((_t59 > 1.1754943508222875e-38) ? 1.0 / _t59 : 0.0) * sqrt(_t59) * _t4;
+    const double _t61 = _t44 * _t60 - _t41;
+    const double _t62 = _t1 * _t43 - _t42 * _t6;
+    const double _t63 = _t58 * _t60 - _t56;
+    const double _t64 = _t55 * _t32 - _t12 * _t57;
+    const double _t65 = _t51 * _t60 - _t45;
+    const double _t66 = _t50 * _t26 - _t49 * _t9;
+    const double _t67 = -(_t61 * (_t61 * _t62 * 0.5 + _t44) + _t63 * (_t58 + _t63 * _t64 * 0.5) + _t65 * (_t65 * _t66 * 0.5 + _t51) - (_t62 + _t64 + _t66));
+    const double _t68 = 1.7320525396196846 * fabs(_t4);
+    const double _t69 = _t1 + (_t26 + _t32);
+    const double _t70 = _t68 + _t69;
+    const double _t71 = _t69 - _t68;
+    const double _t72 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    const double _t73 = _t72 * _t72;
+    const double _t74 = _t15 * (_t73 * _t7);
     const double _t75 = _t74 * _t74;
-    const double _t76 = _t5 * (_t74 * (0.041666666666666102 - 0.0013888888888798428 * _t73) + (1.0 - _t73 * 0.5) + _t75 * ((2.0874477943664777e-09 - _t73 * 1.1304620460700782e-11) * _t74 + (2.4801587247292686e-05 - _t73 * 2.7557303701922228e-07))) + _t18 * (((0.0083333333333333003 - _t73 * 0.00019841269841216566) * _t74 + (1.0 - 0.16666666666666666 * _t73) + _t75 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t73) * _t74 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t73))) * (_t70 * _t5));
-    const double _t77 = _t76 * _t76;
-    const double _t78 = _t66 * _t11 * _t13;
+    const double _t76 = _t75 * _t75;
+    const double _t77 = _t72 * _t19;
+    const double _t78 = ((2.4801587247292686e-05 - _t74 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t74 * 1.1304620460700782e-11) * _t75) * _t76 + (1.0 - _t74 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t74) * _t75)) * _t6 + _t1 * (((_t75 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t74) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t74)) * _t76 + (_t75 * (0.0083333333333333003 - _t74 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t74))) * (_t77 * _t6));
     const double _t79 = _t78 * _t78;
-    const double _t80 = _t79 * _t79;
-    const double _t81 = _t10 * ((_t79 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t78) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t78)) * _t80 + (1.0 - _t78 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t78) * _t79)) + _t1 * (_t70 * _t10 * ((0.0083333333333333003 - 0.00019841269841216566 * _t78) * _t79 + (1.0 - 0.16666666666666666 * _t78) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t78 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t78) * _t79) * _t80));
+    const double _t80 = _t15 * (_t73 * _t13);
+    const double _t81 = _t80 * _t80;
     const double _t82 = _t81 * _t81;
-    const double _t83 = _t72 + _t77 + _t82;
-    const double _t84 = (_t83 > 1.1754943508222875e-38) ? 1.0 / _t83 : 0.0;
-    const double _t85 = _t65 * (_t84 * sqrt(_t83));
-    const double _t86 = _t84 * (_t66 * _t72);
+    const double _t83 = _t12 * (_t82 * (_t81 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t80) + (2.4801587247292686e-05 - _t80 * 2.7557303701922228e-07)) + (_t81 * (0.041666666666666102 - 0.0013888888888798428 * _t80) + (1.0 - _t80 * 0.5))) + _t32 * ((1.0 - 0.16666666666666666 * _t80 + _t81 * (0.0083333333333333003 - 0.00019841269841216566 * _t80) + _t82 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t80 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t80) * _t81)) * (_t77 * _t12));
+    const double _t84 = _t83 * _t83;
+    const double _t85 = _t73 * _t10 * _t15;
+    const double _t86 = _t85 * _t85;
     const double _t87 = _t86 * _t86;
-    const double _t88 = _t87 * _t87;
-    const double _t89 = _t26 * (_t85 * _t71 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t86 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t86) * _t87) * _t88 + (_t87 * (0.0083333333333333003 - 0.00019841269841216566 * _t86) + (1.0 - 0.16666666666666666 * _t86)))) + ((2.4801587247292686e-05 - _t86 * 2.7557303701922228e-07 + _t87 * (2.0874477943664777e-09 - _t86 * 1.1304620460700782e-11)) * _t88 + (_t87 * (0.041666666666666102 - 0.0013888888888798428 * _t86) + (1.0 - _t86 * 0.5))) * _t7;
-    const double _t90 = _t89 * _t89;
-    const double _t91 = _t66 * _t82 * _t84;
-    const double _t92 = _t91 * _t91;
+    const double _t88 = ((2.4801587247292686e-05 - _t85 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t85 * 1.1304620460700782e-11) * _t86) * _t87 + ((0.041666666666666102 - 0.0013888888888798428 * _t85) * _t86 + (1.0 - _t85 * 0.5))) * _t9 + _t77 * _t9 * (1.0 - 0.16666666666666666 * _t85 + (0.0083333333333333003 - _t85 * 0.00019841269841216566) * _t86 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t85 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t85) * _t86) * _t87) * _t26;
+    const double _t89 = _t88 * _t88;
+    const double _t90 = _t84 + _t89 + _t79;
+    const double _t91 = (_t90 > 1.1754943508222875e-38) ? 1.0 / _t90 : 0.0;
+    const double _t92 = _t73 * _t79 * _t91;
     const double _t93 = _t92 * _t92;
-    const double _t94 = _t1 * ((1.0 - _t91 * 0.16666666666666666 + (0.0083333333333333003 - _t91 * 0.00019841269841216566) * _t92 + _t93 * (2.755731919201122e-06 - _t91 * 2.5052099244914114e-08 + _t92 * (1.6057701922579786e-10 - _t91 * 7.549371704181243e-13))) * (_t85 * _t81)) + (_t92 * (0.041666666666666102 - _t91 * 0.0013888888888798428) + (1.0 - _t91 * 0.5) + _t93 * (_t92 * (2.0874477943664777e-09 - _t91 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t91 * 2.7557303701922228e-07))) * _t10;
-    const double _t95 = _t94 * _t94;
-    const double _t96 = _t66 * _t77 * _t84;
-    const double _t97 = _t96 * _t96;
-    const double _t98 = _t97 * _t97;
-    const double _t99 = _t5 * (1.0 - _t96 * 0.5 + (0.041666666666666102 - _t96 * 0.0013888888888798428) * _t97 + (2.4801587247292686e-05 - _t96 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t96 * 1.1304620460700782e-11) * _t97) * _t98) + (1.0 - _t96 * 0.16666666666666666 + (0.0083333333333333003 - _t96 * 0.00019841269841216566) * _t97 + (2.755731919201122e-06 - _t96 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t96 * 7.549371704181243e-13) * _t97) * _t98) * (_t85 * _t76) * _t18;
-    const double _t100 = _t99 * _t99;
-    const double _t101 = _t90 + _t95 + _t100;
-    const double _t102 = (_t101 > 1.1754943508222875e-38) ? 1.0 / _t101 : 0.0;
-    const double _t103 = _t102 * (_t66 * _t100);
+    const double _t94 = _t93 * _t93;
+    const double _t95 = (2.4801587247292686e-05 - _t92 * 2.7557303701922228e-07 + _t93 * (2.0874477943664777e-09 - _t92 * 1.1304620460700782e-11)) * _t94 + ((0.041666666666666102 - _t92 * 0.0013888888888798428) * _t93 + (1.0 - _t92 * 0.5));
+    const double _t96 = _t72 * (sqrt(_t90) * _t91);
+    const double _t97 = _t96 * _t78;
+    const double _t98 = _t97 * (1.0 - _t92 * 0.16666666666666666 + _t93 * (0.0083333333333333003 - _t92 * 0.00019841269841216566) + _t94 * (2.755731919201122e-06 - _t92 * 2.5052099244914114e-08 + _t93 * (1.6057701922579786e-10 - _t92 * 7.549371704181243e-13)));
+    const double _t99 = _t95 * _t6 + _t1 * _t98;
+    const double _t100 = _t1 * _t95 - _t98 * _t6;
+    const double _t101 = _t96 * _t83;
+    const double _t102 = _t73 * _t84 * _t91;
+    const double _t103 = _t102 * _t102;
     const double _t104 = _t103 * _t103;
-    const double _t105 = _t104 * _t104;
-    const double _t106 = _t102 * sqrt(_t101) * _t65;
-    const double _t107 = _t102 * (_t66 * _t95);
-    const double _t108 = _t107 * _t107;
-    const double _t109 = _t108 * _t108;
-    const double _t110 = _t102 * (_t66 * _t90);
+    const double _t105 = _t101 * (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t102) * _t103 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t102)) * _t104 + (1.0 - 0.16666666666666666 * _t102 + (0.0083333333333333003 - 0.00019841269841216566 * _t102) * _t103));
+    const double _t106 = ((2.0874477943664777e-09 - _t102 * 1.1304620460700782e-11) * _t103 + (2.4801587247292686e-05 - _t102 * 2.7557303701922228e-07)) * _t104 + (1.0 - _t102 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t102) * _t103);
+    const double _t107 = _t105 * _t32 + _t12 * _t106;
+    const double _t108 = _t96 * _t88;
+    const double _t109 = _t73 * _t89 * _t91;
+    const double _t110 = _t109 * _t109;
     const double _t111 = _t110 * _t110;
-    const double _t112 = _t111 * _t111;
-    return (_t1 * (_t56 * (_t55 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t54) + (2.4801587247292686e-05 - _t54 * 2.7557303701922228e-07)) + (1.0 - _t54 * 0.5 + _t55 * (0.041666666666666102 - 0.0013888888888798428 * _t54))) - _t50 * _t57 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t54 + _t55 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t54)) * _t56 + ((0.0083333333333333003 - 0.00019841269841216566 * _t54) * _t55 + (1.0 - 0.16666666666666666 * _t54))) * _t10 + ((1.0 - _t58 * 0.5 + _t59 * (0.041666666666666102 - 0.0013888888888798428 * _t58) + (_t59 * (2.0874477943664777e-09 - _t58 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t58 * 2.7557303701922228e-07)) * _t60) * _t26 - (1.0 - 0.16666666666666666 * _t58 + _t59 * (0.0083333333333333003 - _t58 * 0.00019841269841216566) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t58 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t58) * _t59) * _t60) * (_t45 * _t57) * _t7 + (((0.041666666666666102 - 0.0013888888888798428 * _t61) * _t62 + (1.0 - _t61 * 0.5) + _t63 * (2.4801587247292686e-05 - _t61 * 2.7557303701922228e-07 + _t62 * (2.0874477943664777e-09 - _t61 * 1.1304620460700782e-11))) * _t18 - _t5 * (((0.0083333333333333003 - 0.00019841269841216566 * _t61) * _t62 + (1.0 - 0.16666666666666666 * _t61) + _t63 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t61) * _t62 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t61))) * (_t40 * _t57))))) * (((2.4801587247292686e-05 - _t103 * 2.7557303701922228e-07 + _t104 * (2.0874477943664777e-09 - _t103 * 1.1304620460700782e-11)) * _t105 + (1.0 - _t103 * 0.5 + _t104 * (0.041666666666666102 - 0.0013888888888798428 * _t103))) * _t18 - _t5 * (_t99 * _t106 * ((2.755731919201122e-06 - _t103 * 2.5052099244914114e-08 + _t104 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t103)) * _t105 + (_t104 * (0.0083333333333333003 - _t103 * 0.00019841269841216566) + (1.0 - _t103 * 0.16666666666666666)))) + (_t1 * ((0.041666666666666102 - 0.0013888888888798428 * _t107) * _t108 + (1.0 - _t107 * 0.5) + (2.4801587247292686e-05 - _t107 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t107) * _t108) * _t109) - _t94 * _t106 * (_t108 * (0.0083333333333333003 - 0.00019841269841216566 * _t107) + (1.0 - 0.16666666666666666 * _t107) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t107 + _t108 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t107)) * _t109) * _t10) + (_t26 * ((0.041666666666666102 - 0.0013888888888798428 * _t110) * _t111 + (1.0 - _t110 * 0.5) + (_t111 * (2.0874477943664777e-09 - _t110 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t110 * 2.7557303701922228e-07)) * _t112) - _t89 * _t106 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t110 + _t111 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t110)) * _t112 + (1.0 - 0.16666666666666666 * _t110 + (0.0083333333333333003 - 0.00019841269841216566 * _t110) * _t111)) * _t7));
+    const double _t112 = _t108 * (1.0 - 0.16666666666666666 * _t109 + (0.0083333333333333003 - _t109 * 0.00019841269841216566) * _t110 + _t111 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t109) * _t110 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t109)));
+    const double _t113 = _t111 * ((2.0874477943664777e-09 - _t109 * 1.1304620460700782e-11) * _t110 + (2.4801587247292686e-05 - _t109 * 2.7557303701922228e-07)) + ((0.041666666666666102 - 0.0013888888888798428 * _t109) * _t110 + (1.0 - _t109 * 0.5));
+    const double _t114 = _t26 * _t112 + _t113 * _t9;
+    const double _t115 = _t107 * _t107 + (_t114 * _t114 + _t99 * _t99);
+    const double _t116 = _t72 * (((_t115 > 1.1754943508222875e-38) ? 1.0 / _t115 : 0.0) * sqrt(_t115));
+    const double _t117 = _t99 * _t116 - _t97;
+    const double _t118 = _t32 * _t106 - _t12 * _t105;
+    const double _t119 = _t107 * _t116 - _t101;
+    const double _t120 = _t114 * _t116 - _t108;
+    const double _t121 = _t26 * _t113 - _t112 * _t9;
+    const double _t122 = -((_t99 + _t100 * _t117 * 0.5) * _t117 + ((_t107 + _t118 * _t119 * 0.5) * _t119 + _t120 * (_t114 + _t120 * _t121 * 0.5)) - (_t100 + _t118 + _t121));
+    const double _t123 = 1.7320525396196846 * fabs(_t72);
+    const double _t124 = _t69 + _t123;
+    const double _t125 = _t69 - _t123;
+    return ((_t67 <= _t70) ? ((_t71 <= _t67) ? _t67 : _t71) : _t70) * ((_t122 <= _t124) ? ((_t125 <= _t122) ? _t122 : _t125) : _t124);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.

@@ -8,7 +8,9 @@ description: |
     Source: Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 2 projection steps: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 6. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 6. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> schwarzp_proj_o6_field(<vec3 p>)
     - <float> schwarzp_proj_o6_offset(<vec3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 3 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 4. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 8
-    - offset: 383
-    - shell: 749
+    - offset: 313
+    - shell: 607
     - normal: 396
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o6","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":383,"shell":749,"normal":396}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o6","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":6,"graded_order":4,"graded_wall_order":3,"projections":2,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":313,"shell":607,"normal":396}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O6_GLSL
 #define OFFSETGEN_SCHWARZP_PROJ_O6_GLSL
 
@@ -89,192 +92,212 @@ highp float schwarzp_proj_o6_field(highp vec3 p)
     return schwarzp_proj_o6_cos(p.z * 6.28318548) + schwarzp_proj_o6_cos(6.28318548 * p.y) + schwarzp_proj_o6_cos(6.28318548 * p.x);
 }
 
-// phi(p, h) of order 6: zero on the surface moved by h along +grad F. Total ops: 383.
+// phi(p, h) of order 6: zero on the surface moved by h along +grad F. Total ops: 313.
 highp float schwarzp_proj_o6_offset(highp vec3 p, highp float h)
 {
-    highp float _t0 = p.z * 6.28318548;
-    highp float _t1 = schwarzp_proj_o6_cos(_t0);
-    highp float _t2 = 6.28318548 * h;
-    highp float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    highp float _t4 = 6.28318548 * p.y;
-    highp float _t5 = schwarzp_proj_o6_cos(_t4);
+    highp float _t0 = 6.28318548 * h;
+    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t2 = 6.28318548 * p.y;
+    highp float _t3 = schwarzp_proj_o6_sin(_t2);
+    highp float _t4 = schwarzp_proj_o6_cos(_t2);
+    highp float _t5 = _t1 * _t1;
     highp float _t6 = _t3 * _t3;
-    highp float _t7 = schwarzp_proj_o6_sin(_t4);
-    highp float _t8 = _t7 * _t7;
-    highp float _t9 = 6.28318548 * p.x;
-    highp float _t10 = schwarzp_proj_o6_sin(_t9);
-    highp float _t11 = _t10 * _t10;
-    highp float _t12 = schwarzp_proj_o6_sin(_t0);
-    highp float _t13 = _t12 * _t12;
-    highp float _t14 = _t11 + _t13 + _t8;
-    highp float _t15 = (_t14 > 1.17549435e-38) ? 1.0 / _t14 : 0.0;
-    highp float _t16 = _t6 * _t8 * _t15;
+    highp float _t7 = 6.28318548 * p.x;
+    highp float _t8 = schwarzp_proj_o6_sin(_t7);
+    highp float _t9 = _t8 * _t8;
+    highp float _t10 = p.z * 6.28318548;
+    highp float _t11 = schwarzp_proj_o6_sin(_t10);
+    highp float _t12 = _t11 * _t11;
+    highp float _t13 = _t9 + _t12 + _t6;
+    highp float _t14 = (_t13 > 1.17549435e-38) ? 1.0 / _t13 : 0.0;
+    highp float _t15 = _t5 * _t6 * _t14;
+    highp float _t16 = _t15 * _t15;
     highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t17 * _t17;
-    highp float _t19 = _t3 * (_t15 * sqrt(_t14));
-    highp float _t20 = _t5 * (((2.75573188e-06 - 2.50520991e-08 * _t16 + _t17 * (1.60577024e-10 - 7.54937183e-13 * _t16)) * _t18 + (1.0 - 0.166666672 * _t16 + _t17 * (0.00833333377 - 0.000198412701 * _t16))) * (_t7 * _t19)) + _t7 * (1.0 - _t16 * 0.5 + _t17 * (0.0416666679 - 0.00138888892 * _t16) + _t18 * (2.48015876e-05 - _t16 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t16) * _t17));
-    highp float _t21 = _t20 * _t20;
-    highp float _t22 = _t11 * _t6 * _t15;
-    highp float _t23 = _t22 * _t22;
-    highp float _t24 = _t23 * _t23;
-    highp float _t25 = schwarzp_proj_o6_cos(_t9);
-    highp float _t26 = (1.0 - _t22 * 0.166666672 + (0.00833333377 - _t22 * 0.000198412701) * _t23 + _t24 * (2.75573188e-06 - _t22 * 2.50520991e-08 + (1.60577024e-10 - _t22 * 7.54937183e-13) * _t23)) * (_t10 * _t19) * _t25 + ((0.0416666679 - _t22 * 0.00138888892) * _t23 + (1.0 - _t22 * 0.5) + _t24 * (2.48015876e-05 - _t22 * 2.75573029e-07 + _t23 * (2.08744777e-09 - _t22 * 1.13046204e-11))) * _t10;
-    highp float _t27 = _t26 * _t26;
-    highp float _t28 = _t6 * _t13 * _t15;
-    highp float _t29 = _t28 * _t28;
-    highp float _t30 = _t29 * _t29;
-    highp float _t31 = ((0.00833333377 - 0.000198412701 * _t28) * _t29 + (1.0 - 0.166666672 * _t28) + (2.75573188e-06 - 2.50520991e-08 * _t28 + (1.60577024e-10 - 7.54937183e-13 * _t28) * _t29) * _t30) * (_t12 * _t19) * _t1 + _t12 * ((_t29 * (2.08744777e-09 - 1.13046204e-11 * _t28) + (2.48015876e-05 - _t28 * 2.75573029e-07)) * _t30 + (1.0 - _t28 * 0.5 + _t29 * (0.0416666679 - 0.00138888892 * _t28)));
-    highp float _t32 = _t31 * _t31;
-    highp float _t33 = _t21 + _t27 + _t32;
-    highp float _t34 = (_t33 > 1.17549435e-38) ? 1.0 / _t33 : 0.0;
-    highp float _t35 = _t3 * (_t34 * sqrt(_t33));
-    highp float _t36 = _t34 * (_t6 * _t32);
-    highp float _t37 = _t36 * _t36;
-    highp float _t38 = _t37 * _t37;
-    highp float _t39 = _t1 * (_t35 * _t31 * (_t38 * (_t37 * (1.60577024e-10 - 7.54937183e-13 * _t36) + (2.75573188e-06 - 2.50520991e-08 * _t36)) + (_t37 * (0.00833333377 - _t36 * 0.000198412701) + (1.0 - 0.166666672 * _t36)))) + _t12 * (((2.08744777e-09 - _t36 * 1.13046204e-11) * _t37 + (2.48015876e-05 - _t36 * 2.75573029e-07)) * _t38 + (_t37 * (0.0416666679 - 0.00138888892 * _t36) + (1.0 - _t36 * 0.5)));
-    highp float _t40 = _t39 * _t39;
-    highp float _t41 = _t34 * (_t21 * _t6);
-    highp float _t42 = _t41 * _t41;
-    highp float _t43 = _t42 * _t42;
-    highp float _t44 = _t7 * (_t43 * (2.48015876e-05 - _t41 * 2.75573029e-07 + (2.08744777e-09 - _t41 * 1.13046204e-11) * _t42) + (1.0 - _t41 * 0.5 + (0.0416666679 - _t41 * 0.00138888892) * _t42)) + _t5 * ((_t43 * ((1.60577024e-10 - _t41 * 7.54937183e-13) * _t42 + (2.75573188e-06 - _t41 * 2.50520991e-08)) + (_t42 * (0.00833333377 - _t41 * 0.000198412701) + (1.0 - _t41 * 0.166666672))) * (_t20 * _t35));
-    highp float _t45 = _t44 * _t44;
-    highp float _t46 = _t34 * (_t6 * _t27);
-    highp float _t47 = _t46 * _t46;
-    highp float _t48 = _t47 * _t47;
-    highp float _t49 = (1.0 - _t46 * 0.5 + (0.0416666679 - 0.00138888892 * _t46) * _t47 + (2.48015876e-05 - 2.75573029e-07 * _t46 + _t47 * (2.08744777e-09 - 1.13046204e-11 * _t46)) * _t48) * _t10 + _t26 * _t35 * (1.0 - 0.166666672 * _t46 + (0.00833333377 - 0.000198412701 * _t46) * _t47 + (2.75573188e-06 - 2.50520991e-08 * _t46 + (1.60577024e-10 - 7.54937183e-13 * _t46) * _t47) * _t48) * _t25;
-    highp float _t50 = _t49 * _t49;
-    highp float _t51 = _t45 + (_t50 + _t40);
-    highp float _t52 = (_t51 > 1.17549435e-38) ? 1.0 / _t51 : 0.0;
-    highp float _t53 = _t40 * _t6 * _t52;
-    highp float _t54 = _t53 * _t53;
-    highp float _t55 = _t54 * _t54;
-    highp float _t56 = _t3 * (_t52 * sqrt(_t51));
-    highp float _t57 = _t50 * _t6 * _t52;
-    highp float _t58 = _t57 * _t57;
-    highp float _t59 = _t58 * _t58;
-    highp float _t60 = _t52 * (_t45 * _t6);
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = _t61 * _t61;
-    return _t1 * (1.0 - _t53 * 0.5 + (0.0416666679 - 0.00138888892 * _t53) * _t54 + (2.48015876e-05 - _t53 * 2.75573029e-07 + _t54 * (2.08744777e-09 - 1.13046204e-11 * _t53)) * _t55) - ((2.75573188e-06 - 2.50520991e-08 * _t53 + _t54 * (1.60577024e-10 - 7.54937183e-13 * _t53)) * _t55 + ((0.00833333377 - 0.000198412701 * _t53) * _t54 + (1.0 - 0.166666672 * _t53))) * (_t39 * _t56) * _t12 + ((_t59 * (2.48015876e-05 - _t57 * 2.75573029e-07 + _t58 * (2.08744777e-09 - _t57 * 1.13046204e-11)) + (1.0 - _t57 * 0.5 + _t58 * (0.0416666679 - 0.00138888892 * _t57))) * _t25 - (1.0 - 0.166666672 * _t57 + _t58 * (0.00833333377 - _t57 * 0.000198412701) + _t59 * (_t58 * (1.60577024e-10 - 7.54937183e-13 * _t57) + (2.75573188e-06 - 2.50520991e-08 * _t57))) * (_t49 * _t56) * _t10 + (_t5 * (1.0 - _t60 * 0.5 + _t61 * (0.0416666679 - 0.00138888892 * _t60) + ((2.08744777e-09 - _t60 * 1.13046204e-11) * _t61 + (2.48015876e-05 - _t60 * 2.75573029e-07)) * _t62) - _t7 * (_t56 * _t44 * ((2.75573188e-06 - 2.50520991e-08 * _t60 + (1.60577024e-10 - 7.54937183e-13 * _t60) * _t61) * _t62 + (1.0 - 0.166666672 * _t60 + (0.00833333377 - 0.000198412701 * _t60) * _t61)))));
-}
-
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 749.
-highp float schwarzp_proj_o6_shell(highp vec3 p, highp float t)
-{
-    highp float _t0 = 6.28318548 * p.y;
-    highp float _t1 = schwarzp_proj_o6_cos(_t0);
-    highp float _t2 = 6.28318548 * (t * 0.5);
-    highp float _t3 = -_t2;
-    highp float _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
-    highp float _t5 = _t4 * _t4;
-    highp float _t6 = schwarzp_proj_o6_sin(_t0);
-    highp float _t7 = _t6 * _t6;
-    highp float _t8 = 6.28318548 * p.x;
-    highp float _t9 = schwarzp_proj_o6_sin(_t8);
-    highp float _t10 = _t9 * _t9;
-    highp float _t11 = p.z * 6.28318548;
-    highp float _t12 = schwarzp_proj_o6_sin(_t11);
-    highp float _t13 = _t12 * _t12;
-    highp float _t14 = _t10 + _t13 + _t7;
-    highp float _t15 = (_t14 > 1.17549435e-38) ? 1.0 / _t14 : 0.0;
-    highp float _t16 = _t5 * _t7 * _t15;
-    highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t17 * _t17;
-    highp float _t19 = _t15 * sqrt(_t14);
-    highp float _t20 = _t19 * _t4;
-    highp float _t21 = _t6 * (_t17 * (0.0416666679 - 0.00138888892 * _t16) + (1.0 - _t16 * 0.5) + _t18 * (_t17 * (2.08744777e-09 - _t16 * 1.13046204e-11) + (2.48015876e-05 - _t16 * 2.75573029e-07))) + _t1 * (_t20 * _t6 * (1.0 - 0.166666672 * _t16 + _t17 * (0.00833333377 - _t16 * 0.000198412701) + _t18 * (2.75573188e-06 - 2.50520991e-08 * _t16 + _t17 * (1.60577024e-10 - 7.54937183e-13 * _t16))));
+    highp float _t18 = _t1 * (_t14 * sqrt(_t13));
+    highp float _t19 = _t4 * (((2.75573188e-06 - 2.50520991e-08 * _t15 + _t16 * (1.60577024e-10 - 7.54937183e-13 * _t15)) * _t17 + (1.0 - 0.166666672 * _t15 + _t16 * (0.00833333377 - 0.000198412701 * _t15))) * (_t3 * _t18)) + _t3 * (1.0 - _t15 * 0.5 + _t16 * (0.0416666679 - 0.00138888892 * _t15) + _t17 * (2.48015876e-05 - _t15 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t15) * _t16));
+    highp float _t20 = _t19 * _t19;
+    highp float _t21 = _t9 * _t5 * _t14;
     highp float _t22 = _t21 * _t21;
-    highp float _t23 = schwarzp_proj_o6_cos(_t11);
-    highp float _t24 = _t15 * (_t5 * _t13);
-    highp float _t25 = _t24 * _t24;
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = schwarzp_proj_o6_cos(_t7);
+    highp float _t25 = (1.0 - _t21 * 0.166666672 + (0.00833333377 - _t21 * 0.000198412701) * _t22 + _t23 * (2.75573188e-06 - _t21 * 2.50520991e-08 + (1.60577024e-10 - _t21 * 7.54937183e-13) * _t22)) * (_t8 * _t18) * _t24 + ((0.0416666679 - _t21 * 0.00138888892) * _t22 + (1.0 - _t21 * 0.5) + _t23 * (2.48015876e-05 - _t21 * 2.75573029e-07 + _t22 * (2.08744777e-09 - _t21 * 1.13046204e-11))) * _t8;
     highp float _t26 = _t25 * _t25;
-    highp float _t27 = _t23 * (_t12 * _t20 * (_t26 * (2.75573188e-06 - 2.50520991e-08 * _t24 + (1.60577024e-10 - 7.54937183e-13 * _t24) * _t25) + ((0.00833333377 - 0.000198412701 * _t24) * _t25 + (1.0 - 0.166666672 * _t24)))) + (1.0 - 0.5 * _t24 + _t25 * (0.0416666679 - 0.00138888892 * _t24) + (2.48015876e-05 - 2.75573029e-07 * _t24 + (2.08744777e-09 - 1.13046204e-11 * _t24) * _t25) * _t26) * _t12;
+    highp float _t27 = _t5 * _t12 * _t14;
     highp float _t28 = _t27 * _t27;
-    highp float _t29 = _t5 * _t10 * _t15;
-    highp float _t30 = _t29 * _t29;
-    highp float _t31 = _t30 * _t30;
-    highp float _t32 = schwarzp_proj_o6_cos(_t8);
-    highp float _t33 = ((2.75573188e-06 - 2.50520991e-08 * _t29 + (1.60577024e-10 - 7.54937183e-13 * _t29) * _t30) * _t31 + (_t30 * (0.00833333377 - 0.000198412701 * _t29) + (1.0 - 0.166666672 * _t29))) * (_t20 * _t9) * _t32 + ((2.48015876e-05 - _t29 * 2.75573029e-07 + _t30 * (2.08744777e-09 - _t29 * 1.13046204e-11)) * _t31 + (1.0 - _t29 * 0.5 + _t30 * (0.0416666679 - 0.00138888892 * _t29))) * _t9;
-    highp float _t34 = _t33 * _t33;
-    highp float _t35 = _t22 + _t28 + _t34;
-    highp float _t36 = (_t35 > 1.17549435e-38) ? 1.0 / _t35 : 0.0;
-    highp float _t37 = _t36 * (_t5 * _t22);
-    highp float _t38 = _t37 * _t37;
-    highp float _t39 = _t38 * _t38;
-    highp float _t40 = _t4 * (_t36 * sqrt(_t35));
-    highp float _t41 = _t6 * (_t39 * (2.48015876e-05 - _t37 * 2.75573029e-07 + _t38 * (2.08744777e-09 - _t37 * 1.13046204e-11)) + (1.0 - _t37 * 0.5 + _t38 * (0.0416666679 - _t37 * 0.00138888892))) + _t1 * ((_t39 * ((1.60577024e-10 - _t37 * 7.54937183e-13) * _t38 + (2.75573188e-06 - _t37 * 2.50520991e-08)) + ((0.00833333377 - _t37 * 0.000198412701) * _t38 + (1.0 - _t37 * 0.166666672))) * (_t40 * _t21));
-    highp float _t42 = _t41 * _t41;
-    highp float _t43 = _t36 * (_t5 * _t34);
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = schwarzp_proj_o6_cos(_t10);
+    highp float _t31 = ((0.00833333377 - 0.000198412701 * _t27) * _t28 + (1.0 - 0.166666672 * _t27) + (2.75573188e-06 - 2.50520991e-08 * _t27 + (1.60577024e-10 - 7.54937183e-13 * _t27) * _t28) * _t29) * (_t11 * _t18) * _t30 + _t11 * ((_t28 * (2.08744777e-09 - 1.13046204e-11 * _t27) + (2.48015876e-05 - _t27 * 2.75573029e-07)) * _t29 + (1.0 - _t27 * 0.5 + _t28 * (0.0416666679 - 0.00138888892 * _t27)));
+    highp float _t32 = _t31 * _t31;
+    highp float _t33 = _t20 + _t26 + _t32;
+    highp float _t34 = (_t33 > 1.17549435e-38) ? 1.0 / _t33 : 0.0;
+    highp float _t35 = _t34 * (_t20 * _t5);
+    highp float _t36 = _t35 * _t35;
+    highp float _t37 = _t36 * _t36;
+    highp float _t38 = _t37 * (2.48015876e-05 - _t35 * 2.75573029e-07 + (2.08744777e-09 - _t35 * 1.13046204e-11) * _t36) + (1.0 - _t35 * 0.5 + (0.0416666679 - _t35 * 0.00138888892) * _t36);
+    highp float _t39 = _t1 * (_t34 * sqrt(_t33));
+    highp float _t40 = _t19 * _t39;
+    highp float _t41 = (_t37 * ((1.60577024e-10 - _t35 * 7.54937183e-13) * _t36 + (2.75573188e-06 - _t35 * 2.50520991e-08)) + (_t36 * (0.00833333377 - _t35 * 0.000198412701) + (1.0 - _t35 * 0.166666672))) * _t40;
+    highp float _t42 = _t3 * _t38 + _t4 * _t41;
+    highp float _t43 = _t34 * (_t5 * _t26);
     highp float _t44 = _t43 * _t43;
     highp float _t45 = _t44 * _t44;
-    highp float _t46 = _t40 * _t33 * (1.0 - 0.166666672 * _t43 + (0.00833333377 - _t43 * 0.000198412701) * _t44 + (2.75573188e-06 - 2.50520991e-08 * _t43 + (1.60577024e-10 - 7.54937183e-13 * _t43) * _t44) * _t45) * _t32 + (((2.08744777e-09 - _t43 * 1.13046204e-11) * _t44 + (2.48015876e-05 - _t43 * 2.75573029e-07)) * _t45 + (1.0 - _t43 * 0.5 + (0.0416666679 - 0.00138888892 * _t43) * _t44)) * _t9;
-    highp float _t47 = _t46 * _t46;
-    highp float _t48 = _t36 * (_t5 * _t28);
-    highp float _t49 = _t48 * _t48;
-    highp float _t50 = _t49 * _t49;
-    highp float _t51 = _t27 * _t40 * ((2.75573188e-06 - 2.50520991e-08 * _t48 + _t49 * (1.60577024e-10 - 7.54937183e-13 * _t48)) * _t50 + (_t49 * (0.00833333377 - 0.000198412701 * _t48) + (1.0 - 0.166666672 * _t48))) * _t23 + _t12 * ((2.48015876e-05 - 2.75573029e-07 * _t48 + _t49 * (2.08744777e-09 - 1.13046204e-11 * _t48)) * _t50 + ((0.0416666679 - 0.00138888892 * _t48) * _t49 + (1.0 - _t48 * 0.5)));
+    highp float _t46 = 1.0 - _t43 * 0.5 + (0.0416666679 - 0.00138888892 * _t43) * _t44 + (2.48015876e-05 - 2.75573029e-07 * _t43 + _t44 * (2.08744777e-09 - 1.13046204e-11 * _t43)) * _t45;
+    highp float _t47 = _t25 * _t39;
+    highp float _t48 = _t47 * (1.0 - 0.166666672 * _t43 + (0.00833333377 - 0.000198412701 * _t43) * _t44 + (2.75573188e-06 - 2.50520991e-08 * _t43 + (1.60577024e-10 - 7.54937183e-13 * _t43) * _t44) * _t45);
+    highp float _t49 = _t46 * _t8 + _t48 * _t24;
+    highp float _t50 = _t39 * _t31;
+    highp float _t51 = _t34 * (_t5 * _t32);
     highp float _t52 = _t51 * _t51;
-    highp float _t53 = _t47 + _t42 + _t52;
-    highp float _t54 = (_t53 > 1.17549435e-38) ? 1.0 / _t53 : 0.0;
-    highp float _t55 = _t5 * _t42 * _t54;
-    highp float _t56 = _t55 * _t55;
-    highp float _t57 = _t56 * _t56;
-    highp float _t58 = _t54 * sqrt(_t53) * _t4;
-    highp float _t59 = _t54 * (_t5 * _t52);
-    highp float _t60 = _t59 * _t59;
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = _t54 * (_t5 * _t47);
-    highp float _t63 = _t62 * _t62;
-    highp float _t64 = _t63 * _t63;
-    highp float _t65 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    highp float _t66 = _t65 * _t65;
-    highp float _t67 = _t15 * (_t66 * _t13);
-    highp float _t68 = _t67 * _t67;
-    highp float _t69 = _t68 * _t68;
-    highp float _t70 = _t19 * _t65;
-    highp float _t71 = _t12 * (1.0 - _t67 * 0.5 + _t68 * (0.0416666679 - _t67 * 0.00138888892) + _t69 * (2.48015876e-05 - _t67 * 2.75573029e-07 + (2.08744777e-09 - _t67 * 1.13046204e-11) * _t68)) + _t23 * (((0.00833333377 - _t67 * 0.000198412701) * _t68 + (1.0 - _t67 * 0.166666672) + _t69 * (2.75573188e-06 - _t67 * 2.50520991e-08 + (1.60577024e-10 - _t67 * 7.54937183e-13) * _t68)) * (_t12 * _t70));
-    highp float _t72 = _t71 * _t71;
-    highp float _t73 = _t15 * (_t66 * _t7);
-    highp float _t74 = _t73 * _t73;
-    highp float _t75 = _t74 * _t74;
-    highp float _t76 = (_t75 * ((2.08744777e-09 - _t73 * 1.13046204e-11) * _t74 + (2.48015876e-05 - _t73 * 2.75573029e-07)) + (1.0 - _t73 * 0.5 + _t74 * (0.0416666679 - 0.00138888892 * _t73))) * _t6 + _t1 * (_t6 * _t70 * (_t74 * (0.00833333377 - _t73 * 0.000198412701) + (1.0 - _t73 * 0.166666672) + ((1.60577024e-10 - _t73 * 7.54937183e-13) * _t74 + (2.75573188e-06 - _t73 * 2.50520991e-08)) * _t75));
+    highp float _t53 = _t52 * _t52;
+    highp float _t54 = _t50 * (_t53 * (_t52 * (1.60577024e-10 - 7.54937183e-13 * _t51) + (2.75573188e-06 - 2.50520991e-08 * _t51)) + (_t52 * (0.00833333377 - _t51 * 0.000198412701) + (1.0 - 0.166666672 * _t51)));
+    highp float _t55 = ((2.08744777e-09 - _t51 * 1.13046204e-11) * _t52 + (2.48015876e-05 - _t51 * 2.75573029e-07)) * _t53 + (_t52 * (0.0416666679 - 0.00138888892 * _t51) + (1.0 - _t51 * 0.5));
+    highp float _t56 = _t30 * _t54 + _t11 * _t55;
+    highp float _t57 = _t42 * _t42 + (_t49 * _t49 + _t56 * _t56);
+    highp float _t58 = _t1 * (((_t57 > 1.17549435e-38) ? 1.0 / _t57 : 0.0) * sqrt(_t57));
+    highp float _t59 = _t58 * _t42 - _t40;
+    highp float _t60 = _t4 * _t38 - _t3 * _t41;
+    highp float _t61 = _t30 * _t55 - _t11 * _t54;
+    highp float _t62 = _t56 * _t58 - _t50;
+    highp float _t63 = _t49 * _t58 - _t47;
+    highp float _t64 = _t46 * _t24 - _t48 * _t8;
+    highp float _t65 = -(_t59 * (_t59 * _t60 * 0.5 + _t42) + (_t56 + _t61 * _t62 * 0.5) * _t62 + _t63 * (_t49 + 0.5 * (_t64 * _t63)) - (_t64 + _t61 + _t60));
+    highp float _t66 = 1.73205256 * abs(_t1);
+    highp float _t67 = _t30 + _t4 + _t24;
+    highp float _t68 = _t66 + _t67;
+    highp float _t69 = _t67 - _t66;
+    return (_t65 <= _t68) ? ((_t69 <= _t65) ? _t65 : _t69) : _t68;
+}
+
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 607.
+highp float schwarzp_proj_o6_shell(highp vec3 p, highp float t)
+{
+    highp float _t0 = 6.28318548 * (t * 0.5);
+    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t2 = p.z * 6.28318548;
+    highp float _t3 = schwarzp_proj_o6_sin(_t2);
+    highp float _t4 = 6.28318548 * p.x;
+    highp float _t5 = schwarzp_proj_o6_sin(_t4);
+    highp float _t6 = _t5 * _t5;
+    highp float _t7 = _t3 * _t3;
+    highp float _t8 = 6.28318548 * p.y;
+    highp float _t9 = schwarzp_proj_o6_sin(_t8);
+    highp float _t10 = _t9 * _t9;
+    highp float _t11 = _t6 + _t7 + _t10;
+    highp float _t12 = (_t11 > 1.17549435e-38) ? 1.0 / _t11 : 0.0;
+    highp float _t13 = _t1 * _t1;
+    highp float _t14 = _t12 * (_t13 * _t7);
+    highp float _t15 = _t14 * _t14;
+    highp float _t16 = _t15 * _t15;
+    highp float _t17 = schwarzp_proj_o6_cos(_t2);
+    highp float _t18 = _t12 * sqrt(_t11);
+    highp float _t19 = _t18 * _t1;
+    highp float _t20 = _t3 * (1.0 - _t14 * 0.5 + _t15 * (0.0416666679 - _t14 * 0.00138888892) + _t16 * (2.48015876e-05 - _t14 * 2.75573029e-07 + (2.08744777e-09 - _t14 * 1.13046204e-11) * _t15)) + _t17 * (((0.00833333377 - _t14 * 0.000198412701) * _t15 + (1.0 - _t14 * 0.166666672) + _t16 * (2.75573188e-06 - _t14 * 2.50520991e-08 + (1.60577024e-10 - _t14 * 7.54937183e-13) * _t15)) * (_t3 * _t19));
+    highp float _t21 = _t20 * _t20;
+    highp float _t22 = _t12 * (_t13 * _t10);
+    highp float _t23 = _t22 * _t22;
+    highp float _t24 = _t23 * _t23;
+    highp float _t25 = schwarzp_proj_o6_cos(_t8);
+    highp float _t26 = (_t24 * ((2.08744777e-09 - _t22 * 1.13046204e-11) * _t23 + (2.48015876e-05 - _t22 * 2.75573029e-07)) + (1.0 - _t22 * 0.5 + _t23 * (0.0416666679 - 0.00138888892 * _t22))) * _t9 + _t25 * (_t9 * _t19 * (_t23 * (0.00833333377 - _t22 * 0.000198412701) + (1.0 - _t22 * 0.166666672) + ((1.60577024e-10 - _t22 * 7.54937183e-13) * _t23 + (2.75573188e-06 - _t22 * 2.50520991e-08)) * _t24));
+    highp float _t27 = _t26 * _t26;
+    highp float _t28 = _t12 * (_t13 * _t6);
+    highp float _t29 = _t28 * _t28;
+    highp float _t30 = _t29 * _t29;
+    highp float _t31 = schwarzp_proj_o6_cos(_t4);
+    highp float _t32 = ((0.0416666679 - _t28 * 0.00138888892) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (2.48015876e-05 - _t28 * 2.75573029e-07 + (2.08744777e-09 - _t28 * 1.13046204e-11) * _t29)) * _t5 + _t19 * _t5 * (1.0 - _t28 * 0.166666672 + (0.00833333377 - _t28 * 0.000198412701) * _t29 + (_t29 * (1.60577024e-10 - _t28 * 7.54937183e-13) + (2.75573188e-06 - _t28 * 2.50520991e-08)) * _t30) * _t31;
+    highp float _t33 = _t32 * _t32;
+    highp float _t34 = _t21 + _t27 + _t33;
+    highp float _t35 = (_t34 > 1.17549435e-38) ? 1.0 / _t34 : 0.0;
+    highp float _t36 = _t35 * sqrt(_t34) * _t1;
+    highp float _t37 = _t36 * _t20;
+    highp float _t38 = _t35 * (_t13 * _t21);
+    highp float _t39 = _t38 * _t38;
+    highp float _t40 = _t39 * _t39;
+    highp float _t41 = _t37 * ((0.00833333377 - _t38 * 0.000198412701) * _t39 + (1.0 - 0.166666672 * _t38) + (2.75573188e-06 - 2.50520991e-08 * _t38 + (1.60577024e-10 - 7.54937183e-13 * _t38) * _t39) * _t40);
+    highp float _t42 = (2.48015876e-05 - _t38 * 2.75573029e-07 + (2.08744777e-09 - _t38 * 1.13046204e-11) * _t39) * _t40 + (1.0 - _t38 * 0.5 + _t39 * (0.0416666679 - 0.00138888892 * _t38));
+    highp float _t43 = _t41 * _t17 + _t3 * _t42;
+    highp float _t44 = _t36 * _t32;
+    highp float _t45 = _t35 * (_t13 * _t33);
+    highp float _t46 = _t45 * _t45;
+    highp float _t47 = _t46 * _t46;
+    highp float _t48 = _t44 * (1.0 - _t45 * 0.166666672 + _t46 * (0.00833333377 - _t45 * 0.000198412701) + _t47 * (2.75573188e-06 - _t45 * 2.50520991e-08 + (1.60577024e-10 - _t45 * 7.54937183e-13) * _t46));
+    highp float _t49 = _t47 * ((2.08744777e-09 - _t45 * 1.13046204e-11) * _t46 + (2.48015876e-05 - _t45 * 2.75573029e-07)) + (_t46 * (0.0416666679 - _t45 * 0.00138888892) + (1.0 - _t45 * 0.5));
+    highp float _t50 = _t48 * _t31 + _t49 * _t5;
+    highp float _t51 = _t35 * (_t13 * _t27);
+    highp float _t52 = _t51 * _t51;
+    highp float _t53 = _t52 * _t52;
+    highp float _t54 = _t26 * _t36;
+    highp float _t55 = (_t53 * (2.75573188e-06 - 2.50520991e-08 * _t51 + _t52 * (1.60577024e-10 - 7.54937183e-13 * _t51)) + (1.0 - 0.166666672 * _t51 + _t52 * (0.00833333377 - _t51 * 0.000198412701))) * _t54;
+    highp float _t56 = 1.0 - _t51 * 0.5 + (0.0416666679 - 0.00138888892 * _t51) * _t52 + (_t52 * (2.08744777e-09 - _t51 * 1.13046204e-11) + (2.48015876e-05 - _t51 * 2.75573029e-07)) * _t53;
+    highp float _t57 = _t25 * _t55 + _t56 * _t9;
+    highp float _t58 = _t43 * _t43 + (_t50 * _t50 + _t57 * _t57);
+    highp float _t59 = _t1 * (((_t58 > 1.17549435e-38) ? 1.0 / _t58 : 0.0) * sqrt(_t58));
+    highp float _t60 = _t59 * _t57 - _t54;
+    highp float _t61 = _t25 * _t56 - _t55 * _t9;
+    highp float _t62 = _t59 * _t43 - _t37;
+    highp float _t63 = _t17 * _t42 - _t41 * _t3;
+    highp float _t64 = _t59 * _t50 - _t44;
+    highp float _t65 = _t49 * _t31 - _t48 * _t5;
+    highp float _t66 = -((_t60 * _t61 * 0.5 + _t57) * _t60 + _t62 * (_t43 + _t63 * _t62 * 0.5) + _t64 * (_t64 * _t65 * 0.5 + _t50) - (_t63 + _t65 + _t61));
+    highp float _t67 = _t17 + _t25 + _t31;
+    highp float _t68 = 1.73205256 * abs(_t1);
+    highp float _t69 = _t67 + _t68;
+    highp float _t70 = _t67 - _t68;
+    highp float _t71 = -_t0;
+    highp float _t72 = (_t71 <= 1.0) ? (((-1.0) <= _t71) ? _t71 : (-1.0)) : 1.0;
+    highp float _t73 = _t18 * _t72;
+    highp float _t74 = _t72 * _t72;
+    highp float _t75 = _t12 * (_t74 * _t7);
+    highp float _t76 = _t75 * _t75;
     highp float _t77 = _t76 * _t76;
-    highp float _t78 = _t15 * (_t66 * _t10);
-    highp float _t79 = _t78 * _t78;
+    highp float _t78 = _t17 * (_t3 * _t73 * (_t77 * (2.75573188e-06 - 2.50520991e-08 * _t75 + (1.60577024e-10 - 7.54937183e-13 * _t75) * _t76) + ((0.00833333377 - 0.000198412701 * _t75) * _t76 + (1.0 - 0.166666672 * _t75)))) + (1.0 - 0.5 * _t75 + _t76 * (0.0416666679 - 0.00138888892 * _t75) + (2.48015876e-05 - 2.75573029e-07 * _t75 + (2.08744777e-09 - 1.13046204e-11 * _t75) * _t76) * _t77) * _t3;
+    highp float _t79 = _t74 * _t10 * _t12;
     highp float _t80 = _t79 * _t79;
-    highp float _t81 = ((0.0416666679 - _t78 * 0.00138888892) * _t79 + (1.0 - _t78 * 0.5) + _t80 * (2.48015876e-05 - _t78 * 2.75573029e-07 + (2.08744777e-09 - _t78 * 1.13046204e-11) * _t79)) * _t9 + _t70 * _t9 * (1.0 - _t78 * 0.166666672 + (0.00833333377 - _t78 * 0.000198412701) * _t79 + (_t79 * (1.60577024e-10 - _t78 * 7.54937183e-13) + (2.75573188e-06 - _t78 * 2.50520991e-08)) * _t80) * _t32;
-    highp float _t82 = _t81 * _t81;
-    highp float _t83 = _t72 + _t77 + _t82;
-    highp float _t84 = (_t83 > 1.17549435e-38) ? 1.0 / _t83 : 0.0;
-    highp float _t85 = _t84 * sqrt(_t83) * _t65;
-    highp float _t86 = _t84 * (_t66 * _t82);
+    highp float _t81 = _t80 * _t80;
+    highp float _t82 = _t9 * (_t80 * (0.0416666679 - 0.00138888892 * _t79) + (1.0 - _t79 * 0.5) + _t81 * (_t80 * (2.08744777e-09 - _t79 * 1.13046204e-11) + (2.48015876e-05 - _t79 * 2.75573029e-07))) + _t25 * (_t73 * _t9 * (1.0 - 0.166666672 * _t79 + _t80 * (0.00833333377 - _t79 * 0.000198412701) + _t81 * (2.75573188e-06 - 2.50520991e-08 * _t79 + _t80 * (1.60577024e-10 - 7.54937183e-13 * _t79))));
+    highp float _t83 = _t82 * _t82;
+    highp float _t84 = _t78 * _t78;
+    highp float _t85 = _t74 * _t6 * _t12;
+    highp float _t86 = _t85 * _t85;
     highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t87 * _t87;
-    highp float _t89 = _t85 * _t81 * (1.0 - _t86 * 0.166666672 + _t87 * (0.00833333377 - _t86 * 0.000198412701) + _t88 * (2.75573188e-06 - _t86 * 2.50520991e-08 + (1.60577024e-10 - _t86 * 7.54937183e-13) * _t87)) * _t32 + (_t88 * ((2.08744777e-09 - _t86 * 1.13046204e-11) * _t87 + (2.48015876e-05 - _t86 * 2.75573029e-07)) + (_t87 * (0.0416666679 - _t86 * 0.00138888892) + (1.0 - _t86 * 0.5))) * _t9;
-    highp float _t90 = _t89 * _t89;
-    highp float _t91 = _t84 * (_t66 * _t72);
-    highp float _t92 = _t91 * _t91;
-    highp float _t93 = _t92 * _t92;
-    highp float _t94 = _t85 * _t71 * ((0.00833333377 - _t91 * 0.000198412701) * _t92 + (1.0 - 0.166666672 * _t91) + (2.75573188e-06 - 2.50520991e-08 * _t91 + (1.60577024e-10 - 7.54937183e-13 * _t91) * _t92) * _t93) * _t23 + _t12 * ((2.48015876e-05 - _t91 * 2.75573029e-07 + (2.08744777e-09 - _t91 * 1.13046204e-11) * _t92) * _t93 + (1.0 - _t91 * 0.5 + _t92 * (0.0416666679 - 0.00138888892 * _t91)));
+    highp float _t88 = ((2.75573188e-06 - 2.50520991e-08 * _t85 + (1.60577024e-10 - 7.54937183e-13 * _t85) * _t86) * _t87 + (_t86 * (0.00833333377 - 0.000198412701 * _t85) + (1.0 - 0.166666672 * _t85))) * (_t73 * _t5) * _t31 + ((2.48015876e-05 - _t85 * 2.75573029e-07 + _t86 * (2.08744777e-09 - _t85 * 1.13046204e-11)) * _t87 + (1.0 - _t85 * 0.5 + _t86 * (0.0416666679 - 0.00138888892 * _t85))) * _t5;
+    highp float _t89 = _t88 * _t88;
+    highp float _t90 = _t83 + _t84 + _t89;
+    highp float _t91 = (_t90 > 1.17549435e-38) ? 1.0 / _t90 : 0.0;
+    highp float _t92 = _t72 * (_t91 * sqrt(_t90));
+    highp float _t93 = _t78 * _t92;
+    highp float _t94 = _t91 * (_t74 * _t84);
     highp float _t95 = _t94 * _t94;
-    highp float _t96 = _t84 * (_t66 * _t77);
-    highp float _t97 = _t96 * _t96;
-    highp float _t98 = _t97 * _t97;
-    highp float _t99 = _t1 * ((_t98 * (2.75573188e-06 - 2.50520991e-08 * _t96 + _t97 * (1.60577024e-10 - 7.54937183e-13 * _t96)) + (1.0 - 0.166666672 * _t96 + _t97 * (0.00833333377 - _t96 * 0.000198412701))) * (_t76 * _t85)) + (1.0 - _t96 * 0.5 + (0.0416666679 - 0.00138888892 * _t96) * _t97 + (_t97 * (2.08744777e-09 - _t96 * 1.13046204e-11) + (2.48015876e-05 - _t96 * 2.75573029e-07)) * _t98) * _t6;
-    highp float _t100 = _t99 * _t99;
-    highp float _t101 = _t95 + (_t90 + _t100);
-    highp float _t102 = (_t101 > 1.17549435e-38) ? 1.0 / _t101 : 0.0;
-    highp float _t103 = _t66 * _t90 * _t102;
-    highp float _t104 = _t103 * _t103;
-    highp float _t105 = _t104 * _t104;
-    highp float _t106 = _t65 * (_t102 * sqrt(_t101));
-    highp float _t107 = _t66 * _t95 * _t102;
+    highp float _t96 = _t95 * _t95;
+    highp float _t97 = _t93 * ((2.75573188e-06 - 2.50520991e-08 * _t94 + _t95 * (1.60577024e-10 - 7.54937183e-13 * _t94)) * _t96 + (_t95 * (0.00833333377 - 0.000198412701 * _t94) + (1.0 - 0.166666672 * _t94)));
+    highp float _t98 = (2.48015876e-05 - 2.75573029e-07 * _t94 + _t95 * (2.08744777e-09 - 1.13046204e-11 * _t94)) * _t96 + ((0.0416666679 - 0.00138888892 * _t94) * _t95 + (1.0 - _t94 * 0.5));
+    highp float _t99 = _t97 * _t17 + _t3 * _t98;
+    highp float _t100 = _t92 * _t88;
+    highp float _t101 = _t91 * (_t74 * _t89);
+    highp float _t102 = _t101 * _t101;
+    highp float _t103 = _t102 * _t102;
+    highp float _t104 = _t100 * (1.0 - 0.166666672 * _t101 + (0.00833333377 - _t101 * 0.000198412701) * _t102 + (2.75573188e-06 - 2.50520991e-08 * _t101 + (1.60577024e-10 - 7.54937183e-13 * _t101) * _t102) * _t103);
+    highp float _t105 = ((2.08744777e-09 - _t101 * 1.13046204e-11) * _t102 + (2.48015876e-05 - _t101 * 2.75573029e-07)) * _t103 + (1.0 - _t101 * 0.5 + (0.0416666679 - 0.00138888892 * _t101) * _t102);
+    highp float _t106 = _t104 * _t31 + _t105 * _t5;
+    highp float _t107 = _t91 * (_t74 * _t83);
     highp float _t108 = _t107 * _t107;
     highp float _t109 = _t108 * _t108;
-    highp float _t110 = _t66 * _t100 * _t102;
-    highp float _t111 = _t110 * _t110;
-    highp float _t112 = _t111 * _t111;
-    return (_t1 * (_t57 * (2.48015876e-05 - _t55 * 2.75573029e-07 + (2.08744777e-09 - _t55 * 1.13046204e-11) * _t56) + ((0.0416666679 - 0.00138888892 * _t55) * _t56 + (1.0 - _t55 * 0.5))) - ((0.00833333377 - 0.000198412701 * _t55) * _t56 + (1.0 - 0.166666672 * _t55) + _t57 * (2.75573188e-06 - 2.50520991e-08 * _t55 + (1.60577024e-10 - 7.54937183e-13 * _t55) * _t56)) * (_t41 * _t58) * _t6 + (_t23 * ((2.48015876e-05 - _t59 * 2.75573029e-07 + _t60 * (2.08744777e-09 - 1.13046204e-11 * _t59)) * _t61 + ((0.0416666679 - 0.00138888892 * _t59) * _t60 + (1.0 - _t59 * 0.5))) - _t51 * _t58 * (1.0 - 0.166666672 * _t59 + _t60 * (0.00833333377 - 0.000198412701 * _t59) + ((1.60577024e-10 - 7.54937183e-13 * _t59) * _t60 + (2.75573188e-06 - 2.50520991e-08 * _t59)) * _t61) * _t12 + ((_t64 * (2.48015876e-05 - _t62 * 2.75573029e-07 + (2.08744777e-09 - _t62 * 1.13046204e-11) * _t63) + (1.0 - _t62 * 0.5 + _t63 * (0.0416666679 - 0.00138888892 * _t62))) * _t32 - _t9 * (((0.00833333377 - _t62 * 0.000198412701) * _t63 + (1.0 - 0.166666672 * _t62) + (2.75573188e-06 - 2.50520991e-08 * _t62 + (1.60577024e-10 - 7.54937183e-13 * _t62) * _t63) * _t64) * (_t46 * _t58))))) * (_t32 * (_t105 * (_t104 * (2.08744777e-09 - _t103 * 1.13046204e-11) + (2.48015876e-05 - _t103 * 2.75573029e-07)) + (_t104 * (0.0416666679 - _t103 * 0.00138888892) + (1.0 - _t103 * 0.5))) - _t106 * _t89 * (1.0 - _t103 * 0.166666672 + (0.00833333377 - _t103 * 0.000198412701) * _t104 + _t105 * (2.75573188e-06 - _t103 * 2.50520991e-08 + _t104 * (1.60577024e-10 - _t103 * 7.54937183e-13))) * _t9 + (_t23 * (_t108 * (0.0416666679 - 0.00138888892 * _t107) + (1.0 - _t107 * 0.5) + (2.48015876e-05 - _t107 * 2.75573029e-07 + _t108 * (2.08744777e-09 - 1.13046204e-11 * _t107)) * _t109) - _t12 * ((_t109 * (_t108 * (1.60577024e-10 - 7.54937183e-13 * _t107) + (2.75573188e-06 - 2.50520991e-08 * _t107)) + (1.0 - 0.166666672 * _t107 + _t108 * (0.00833333377 - 0.000198412701 * _t107))) * (_t106 * _t94)) + ((_t112 * (_t111 * (2.08744777e-09 - _t110 * 1.13046204e-11) + (2.48015876e-05 - _t110 * 2.75573029e-07)) + ((0.0416666679 - 0.00138888892 * _t110) * _t111 + (1.0 - _t110 * 0.5))) * _t1 - _t6 * ((_t112 * ((1.60577024e-10 - 7.54937183e-13 * _t110) * _t111 + (2.75573188e-06 - 2.50520991e-08 * _t110)) + (_t111 * (0.00833333377 - _t110 * 0.000198412701) + (1.0 - 0.166666672 * _t110))) * (_t106 * _t99)))));
+    highp float _t110 = _t109 * (2.48015876e-05 - _t107 * 2.75573029e-07 + _t108 * (2.08744777e-09 - _t107 * 1.13046204e-11)) + (1.0 - _t107 * 0.5 + _t108 * (0.0416666679 - _t107 * 0.00138888892));
+    highp float _t111 = _t92 * _t82;
+    highp float _t112 = (_t109 * ((1.60577024e-10 - _t107 * 7.54937183e-13) * _t108 + (2.75573188e-06 - _t107 * 2.50520991e-08)) + ((0.00833333377 - _t107 * 0.000198412701) * _t108 + (1.0 - _t107 * 0.166666672))) * _t111;
+    highp float _t113 = _t9 * _t110 + _t25 * _t112;
+    highp float _t114 = _t106 * _t106 + _t113 * _t113 + _t99 * _t99;
+    highp float _t115 = ((_t114 > 1.17549435e-38) ? 1.0 / _t114 : 0.0) * sqrt(_t114) * _t72;
+    highp float _t116 = _t99 * _t115 - _t93;
+    highp float _t117 = _t17 * _t98 - _t97 * _t3;
+    highp float _t118 = _t105 * _t31 - _t104 * _t5;
+    highp float _t119 = _t106 * _t115 - _t100;
+    highp float _t120 = _t25 * _t110 - _t9 * _t112;
+    highp float _t121 = _t113 * _t115 - _t111;
+    highp float _t122 = -(_t116 * (_t99 + _t116 * _t117 * 0.5) + (_t118 * _t119 * 0.5 + _t106) * _t119 + (_t113 + _t120 * _t121 * 0.5) * _t121 - (_t120 + (_t118 + _t117)));
+    highp float _t123 = 1.73205256 * abs(_t72);
+    highp float _t124 = _t123 + _t67;
+    highp float _t125 = _t67 - _t123;
+    return ((_t66 <= _t69) ? ((_t70 <= _t66) ? _t66 : _t70) : _t69) * ((_t122 <= _t124) ? ((_t125 <= _t122) ? _t122 : _t125) : _t124);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 396.

@@ -11,7 +11,9 @@
  * Source:  Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407
  * Method:  foot-point projection with K = 3 projection steps: q_0 = p - h n(p), q_(j+1) = p - h
  *          n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections
- *          give order 2(K+1) = 8.
+ *          give order 2(K+1) = 8. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1),
+ *          evaluated at q_K (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own
+ *          order, and q_K needs no trig of its own).
  *          offsetgen, docs/projection.md (foot-point projection).
  *
  * Functions (cell length L = 1: coordinates, h and t are in cell units):
@@ -40,15 +42,16 @@
  *   foot-point estimate and updates it at every projection: each wall converges at order 4 = K + 1
  *   to the distance t(p0)/2 from its foot point p0, and the total wall thickness at order 4.
  *   Passing a local t(p) to _shell reads it at p instead: second order at best.
- * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
- *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too):
- *   phi has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F =
- *   0, so every function returns a finite value for finite input (do not compile with
- *   -ffinite-math-only). sin and cos at the foot-point estimates come from their values at p by
- *   angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a
- *   2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so thicker
- *   walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where |grad
- *   F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
+ * Safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+ *   1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too),
+ *   and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so
+ *   this never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no
+ *   phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for
+ *   finite input (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates
+ *   come from their values at p by angle addition, which is exact while |h| <= 1 (natural units:
+ *   |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is
+ *   clamped to 1, so thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above.
+ *   n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
  * Lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set
  *   is at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of
  *   X = k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F|
@@ -57,11 +60,11 @@
  *   `offsetgen check` measures it.
  * Total ops after CSE (each +, -, *, /, negation, call, comparison and select counts 1):
  *   field    8
- *   offset   505
- *   shell    993
+ *   offset   435
+ *   shell    851
  *   normal   518
  */
-/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":505,"shell":993,"normal":518}} */
+/* offsetgen-metadata {"format":1,"language":"opencl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float","double"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":435,"shell":851,"normal":518}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O8_CL
 #define OFFSETGEN_SCHWARZP_PROJ_O8_CL
 
@@ -74,249 +77,269 @@ float schwarzp_proj_o8_fieldf(float3 p)
 }
 
 /* phi(p, h) of order 8: zero on the surface moved by h along +grad F.
- * Total ops: 505
+ * Total ops: 435
  */
 float schwarzp_proj_o8_offsetf(float3 p, float h)
 {
-    const float _t0 = p.z * 2.0f;
+    const float _t0 = p.y * 2.0f;
     const float _t1 = cospi(_t0);
-    const float _t2 = p.y * 2.0f;
-    const float _t3 = cospi(_t2);
-    const float _t4 = sinpi(_t0);
+    const float _t2 = p.z * 2.0f;
+    const float _t3 = sinpi(_t2);
+    const float _t4 = _t3 * _t3;
+    const float _t5 = 6.28318548f * h;
+    const float _t6 = (_t5 <= 1.0f) ? (((-1.0f) <= _t5) ? _t5 : (-1.0f)) : 1.0f;
+    const float _t7 = _t6 * _t6;
+    const float _t8 = sinpi(_t0);
+    const float _t9 = _t8 * _t8;
+    const float _t10 = p.x * 2.0f;
+    const float _t11 = sinpi(_t10);
+    const float _t12 = _t11 * _t11;
+    const float _t13 = _t9 + (_t4 + _t12);
+    const float _t14 = (_t13 > 1.17549435e-38f) ? 1.0f / _t13 : 0.0f;
+    const float _t15 = _t4 * _t7 * _t14;
+    const float _t16 = _t15 * _t15;
+    const float _t17 = _t16 * _t16;
+    const float _t18 = _t6 * (_t14 * sqrt(_t13));
+    const float _t19 = cospi(_t2);
+    const float _t20 = (1.0f - 0.166666672f * _t15 + (0.00833333377f - 0.000198412701f * _t15) * _t16 + _t17 * (2.75573188e-06f - 2.50520991e-08f * _t15 + _t16 * (1.60577024e-10f - 7.54937183e-13f * _t15))) * (_t3 * _t18) * _t19 + _t3 * (_t17 * ((2.08744777e-09f - 1.13046204e-11f * _t15) * _t16 + (2.48015876e-05f - 2.75573029e-07f * _t15)) + (_t16 * (0.0416666679f - 0.00138888892f * _t15) + (1.0f - _t15 * 0.5f)));
+    const float _t21 = _t20 * _t20;
+    const float _t22 = _t14 * (_t12 * _t7);
+    const float _t23 = _t22 * _t22;
+    const float _t24 = _t23 * _t23;
+    const float _t25 = cospi(_t10);
+    const float _t26 = ((2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - 1.13046204e-11f * _t22)) * _t24 + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23)) * _t11 + _t25 * (_t11 * _t18 * ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (2.75573188e-06f - 2.50520991e-08f * _t22 + _t23 * (1.60577024e-10f - 7.54937183e-13f * _t22))));
+    const float _t27 = _t26 * _t26;
+    const float _t28 = _t14 * (_t9 * _t7);
+    const float _t29 = _t28 * _t28;
+    const float _t30 = _t29 * _t29;
+    const float _t31 = _t1 * (_t18 * _t8 * ((2.75573188e-06f - 2.50520991e-08f * _t28 + (1.60577024e-10f - 7.54937183e-13f * _t28) * _t29) * _t30 + ((0.00833333377f - 0.000198412701f * _t28) * _t29 + (1.0f - 0.166666672f * _t28)))) + (((2.08744777e-09f - 1.13046204e-11f * _t28) * _t29 + (2.48015876e-05f - _t28 * 2.75573029e-07f)) * _t30 + (1.0f - _t28 * 0.5f + (0.0416666679f - 0.00138888892f * _t28) * _t29)) * _t8;
+    const float _t32 = _t31 * _t31;
+    const float _t33 = _t21 + (_t27 + _t32);
+    const float _t34 = (_t33 > 1.17549435e-38f) ? 1.0f / _t33 : 0.0f;
+    const float _t35 = _t34 * (_t32 * _t7);
+    const float _t36 = _t35 * _t35;
+    const float _t37 = _t36 * _t36;
+    const float _t38 = _t6 * (_t34 * sqrt(_t33));
+    const float _t39 = _t1 * ((_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + _t36 * (1.60577024e-10f - 7.54937183e-13f * _t35)) + (1.0f - 0.166666672f * _t35 + _t36 * (0.00833333377f - 0.000198412701f * _t35))) * (_t31 * _t38)) + ((_t36 * (2.08744777e-09f - 1.13046204e-11f * _t35) + (2.48015876e-05f - _t35 * 2.75573029e-07f)) * _t37 + ((0.0416666679f - 0.00138888892f * _t35) * _t36 + (1.0f - _t35 * 0.5f))) * _t8;
+    const float _t40 = _t39 * _t39;
+    const float _t41 = _t34 * (_t21 * _t7);
+    const float _t42 = _t41 * _t41;
+    const float _t43 = _t42 * _t42;
+    const float _t44 = _t3 * (((2.08744777e-09f - _t41 * 1.13046204e-11f) * _t42 + (2.48015876e-05f - _t41 * 2.75573029e-07f)) * _t43 + (1.0f - _t41 * 0.5f + (0.0416666679f - 0.00138888892f * _t41) * _t42)) + _t19 * ((1.0f - 0.166666672f * _t41 + (0.00833333377f - 0.000198412701f * _t41) * _t42 + (2.75573188e-06f - 2.50520991e-08f * _t41 + (1.60577024e-10f - 7.54937183e-13f * _t41) * _t42) * _t43) * (_t20 * _t38));
+    const float _t45 = _t44 * _t44;
+    const float _t46 = _t34 * (_t27 * _t7);
+    const float _t47 = _t46 * _t46;
+    const float _t48 = _t47 * _t47;
+    const float _t49 = ((0.0416666679f - 0.00138888892f * _t46) * _t47 + (1.0f - _t46 * 0.5f) + _t48 * ((2.08744777e-09f - 1.13046204e-11f * _t46) * _t47 + (2.48015876e-05f - _t46 * 2.75573029e-07f))) * _t11 + ((0.00833333377f - 0.000198412701f * _t46) * _t47 + (1.0f - 0.166666672f * _t46) + _t48 * (2.75573188e-06f - 2.50520991e-08f * _t46 + (1.60577024e-10f - 7.54937183e-13f * _t46) * _t47)) * (_t26 * _t38) * _t25;
+    const float _t50 = _t49 * _t49;
+    const float _t51 = _t40 + (_t45 + _t50);
+    const float _t52 = (_t51 > 1.17549435e-38f) ? 1.0f / _t51 : 0.0f;
+    const float _t53 = _t52 * (_t40 * _t7);
+    const float _t54 = _t53 * _t53;
+    const float _t55 = _t54 * _t54;
+    const float _t56 = _t55 * (2.48015876e-05f - _t53 * 2.75573029e-07f + _t54 * (2.08744777e-09f - _t53 * 1.13046204e-11f)) + (1.0f - _t53 * 0.5f + _t54 * (0.0416666679f - 0.00138888892f * _t53));
+    const float _t57 = sqrt(_t51) * _t52 * _t6;
+    const float _t58 = _t39 * _t57;
+    const float _t59 = _t58 * (_t55 * ((1.60577024e-10f - 7.54937183e-13f * _t53) * _t54 + (2.75573188e-06f - 2.50520991e-08f * _t53)) + (1.0f - 0.166666672f * _t53 + _t54 * (0.00833333377f - 0.000198412701f * _t53)));
+    const float _t60 = _t56 * _t8 + _t1 * _t59;
+    const float _t61 = _t45 * _t7 * _t52;
+    const float _t62 = _t61 * _t61;
+    const float _t63 = _t62 * _t62;
+    const float _t64 = 1.0f - _t61 * 0.5f + _t62 * (0.0416666679f - 0.00138888892f * _t61) + (_t62 * (2.08744777e-09f - 1.13046204e-11f * _t61) + (2.48015876e-05f - _t61 * 2.75573029e-07f)) * _t63;
+    const float _t65 = _t57 * _t44;
+    const float _t66 = ((0.00833333377f - 0.000198412701f * _t61) * _t62 + (1.0f - 0.166666672f * _t61) + _t63 * (2.75573188e-06f - 2.50520991e-08f * _t61 + _t62 * (1.60577024e-10f - 7.54937183e-13f * _t61))) * _t65;
+    const float _t67 = _t3 * _t64 + _t66 * _t19;
+    const float _t68 = _t50 * _t7 * _t52;
+    const float _t69 = _t68 * _t68;
+    const float _t70 = _t69 * _t69;
+    const float _t71 = _t70 * (2.48015876e-05f - 2.75573029e-07f * _t68 + _t69 * (2.08744777e-09f - 1.13046204e-11f * _t68)) + (_t69 * (0.0416666679f - 0.00138888892f * _t68) + (1.0f - 0.5f * _t68));
+    const float _t72 = _t49 * _t57;
+    const float _t73 = (1.0f - 0.166666672f * _t68 + _t69 * (0.00833333377f - 0.000198412701f * _t68) + _t70 * (_t69 * (1.60577024e-10f - 7.54937183e-13f * _t68) + (2.75573188e-06f - 2.50520991e-08f * _t68))) * _t72;
+    const float _t74 = _t11 * _t71 + _t25 * _t73;
+    const float _t75 = _t60 * _t60 + _t67 * _t67 + _t74 * _t74;
+    const float _t76 = _t6 * (sqrt(_t75) * ((_t75 > 1.17549435e-38f) ? 1.0f / _t75 : 0.0f));
+    const float _t77 = _t60 * _t76 - _t58;
+    const float _t78 = _t1 * _t56 - _t59 * _t8;
+    const float _t79 = _t76 * _t74 - _t72;
+    const float _t80 = _t25 * _t71 - _t73 * _t11;
+    const float _t81 = _t67 * _t76 - _t65;
+    const float _t82 = _t19 * _t64 - _t66 * _t3;
+    const float _t83 = -((_t60 + _t77 * _t78 * 0.5f) * _t77 + ((_t74 + _t79 * _t80 * 0.5f) * _t79 + (_t67 + _t81 * _t82 * 0.5f) * _t81) - (_t78 + _t80 + _t82));
+    const float _t84 = 1.73205256f * fabs(_t6);
+    const float _t85 = _t25 + (_t1 + _t19);
+    const float _t86 = _t84 + _t85;
+    const float _t87 = _t85 - _t84;
+    return (_t83 <= _t86) ? ((_t87 <= _t83) ? _t83 : _t87) : _t86;
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Total ops: 851
+ */
+float schwarzp_proj_o8_shellf(float3 p, float t)
+{
+    const float _t0 = p.y * 2.0f;
+    const float _t1 = cospi(_t0);
+    const float _t2 = 6.28318548f * (t * 0.5f);
+    const float _t3 = -_t2;
+    const float _t4 = (_t3 <= 1.0f) ? (((-1.0f) <= _t3) ? _t3 : (-1.0f)) : 1.0f;
     const float _t5 = _t4 * _t4;
-    const float _t6 = 6.28318548f * h;
-    const float _t7 = (_t6 <= 1.0f) ? (((-1.0f) <= _t6) ? _t6 : (-1.0f)) : 1.0f;
-    const float _t8 = _t7 * _t7;
-    const float _t9 = sinpi(_t2);
+    const float _t6 = sinpi(_t0);
+    const float _t7 = _t6 * _t6;
+    const float _t8 = p.z * 2.0f;
+    const float _t9 = sinpi(_t8);
     const float _t10 = _t9 * _t9;
     const float _t11 = p.x * 2.0f;
     const float _t12 = sinpi(_t11);
     const float _t13 = _t12 * _t12;
-    const float _t14 = _t10 + (_t5 + _t13);
+    const float _t14 = _t7 + (_t10 + _t13);
     const float _t15 = (_t14 > 1.17549435e-38f) ? 1.0f / _t14 : 0.0f;
-    const float _t16 = _t5 * _t8 * _t15;
+    const float _t16 = _t5 * _t7 * _t15;
     const float _t17 = _t16 * _t16;
     const float _t18 = _t17 * _t17;
-    const float _t19 = _t7 * (_t15 * sqrt(_t14));
-    const float _t20 = (1.0f - 0.166666672f * _t16 + (0.00833333377f - 0.000198412701f * _t16) * _t17 + _t18 * (2.75573188e-06f - 2.50520991e-08f * _t16 + _t17 * (1.60577024e-10f - 7.54937183e-13f * _t16))) * (_t4 * _t19) * _t1 + _t4 * (_t18 * ((2.08744777e-09f - 1.13046204e-11f * _t16) * _t17 + (2.48015876e-05f - 2.75573029e-07f * _t16)) + (_t17 * (0.0416666679f - 0.00138888892f * _t16) + (1.0f - _t16 * 0.5f)));
-    const float _t21 = _t20 * _t20;
-    const float _t22 = _t15 * (_t13 * _t8);
-    const float _t23 = _t22 * _t22;
+    const float _t19 = _t15 * sqrt(_t14);
+    const float _t20 = _t19 * _t4;
+    const float _t21 = (1.0f - _t16 * 0.5f + _t17 * (0.0416666679f - 0.00138888892f * _t16) + (_t17 * (2.08744777e-09f - 1.13046204e-11f * _t16) + (2.48015876e-05f - _t16 * 2.75573029e-07f)) * _t18) * _t6 + _t1 * (_t20 * _t6 * (1.0f - 0.166666672f * _t16 + _t17 * (0.00833333377f - 0.000198412701f * _t16) + (_t17 * (1.60577024e-10f - 7.54937183e-13f * _t16) + (2.75573188e-06f - 2.50520991e-08f * _t16)) * _t18));
+    const float _t22 = _t21 * _t21;
+    const float _t23 = _t15 * (_t5 * _t10);
     const float _t24 = _t23 * _t23;
-    const float _t25 = cospi(_t11);
-    const float _t26 = ((2.48015876e-05f - _t22 * 2.75573029e-07f + _t23 * (2.08744777e-09f - 1.13046204e-11f * _t22)) * _t24 + (1.0f - _t22 * 0.5f + (0.0416666679f - 0.00138888892f * _t22) * _t23)) * _t12 + _t25 * (_t12 * _t19 * ((0.00833333377f - 0.000198412701f * _t22) * _t23 + (1.0f - 0.166666672f * _t22) + _t24 * (2.75573188e-06f - 2.50520991e-08f * _t22 + _t23 * (1.60577024e-10f - 7.54937183e-13f * _t22))));
-    const float _t27 = _t26 * _t26;
-    const float _t28 = _t15 * (_t10 * _t8);
-    const float _t29 = _t28 * _t28;
+    const float _t25 = _t24 * _t24;
+    const float _t26 = cospi(_t8);
+    const float _t27 = _t9 * (_t24 * (0.0416666679f - 0.00138888892f * _t23) + (1.0f - _t23 * 0.5f) + _t25 * ((2.08744777e-09f - _t23 * 1.13046204e-11f) * _t24 + (2.48015876e-05f - _t23 * 2.75573029e-07f))) + _t26 * (((0.00833333377f - _t23 * 0.000198412701f) * _t24 + (1.0f - 0.166666672f * _t23) + _t25 * ((1.60577024e-10f - 7.54937183e-13f * _t23) * _t24 + (2.75573188e-06f - 2.50520991e-08f * _t23))) * (_t20 * _t9));
+    const float _t28 = _t27 * _t27;
+    const float _t29 = _t5 * _t13 * _t15;
     const float _t30 = _t29 * _t29;
-    const float _t31 = _t3 * (_t19 * _t9 * ((2.75573188e-06f - 2.50520991e-08f * _t28 + (1.60577024e-10f - 7.54937183e-13f * _t28) * _t29) * _t30 + ((0.00833333377f - 0.000198412701f * _t28) * _t29 + (1.0f - 0.166666672f * _t28)))) + (((2.08744777e-09f - 1.13046204e-11f * _t28) * _t29 + (2.48015876e-05f - _t28 * 2.75573029e-07f)) * _t30 + (1.0f - _t28 * 0.5f + (0.0416666679f - 0.00138888892f * _t28) * _t29)) * _t9;
-    const float _t32 = _t31 * _t31;
-    const float _t33 = _t21 + (_t27 + _t32);
-    const float _t34 = (_t33 > 1.17549435e-38f) ? 1.0f / _t33 : 0.0f;
-    const float _t35 = _t34 * (_t32 * _t8);
-    const float _t36 = _t35 * _t35;
-    const float _t37 = _t36 * _t36;
-    const float _t38 = _t7 * (_t34 * sqrt(_t33));
-    const float _t39 = _t3 * ((_t37 * (2.75573188e-06f - 2.50520991e-08f * _t35 + _t36 * (1.60577024e-10f - 7.54937183e-13f * _t35)) + (1.0f - 0.166666672f * _t35 + _t36 * (0.00833333377f - 0.000198412701f * _t35))) * (_t31 * _t38)) + ((_t36 * (2.08744777e-09f - 1.13046204e-11f * _t35) + (2.48015876e-05f - _t35 * 2.75573029e-07f)) * _t37 + ((0.0416666679f - 0.00138888892f * _t35) * _t36 + (1.0f - _t35 * 0.5f))) * _t9;
-    const float _t40 = _t39 * _t39;
-    const float _t41 = _t34 * (_t21 * _t8);
-    const float _t42 = _t41 * _t41;
-    const float _t43 = _t42 * _t42;
-    const float _t44 = _t4 * (((2.08744777e-09f - _t41 * 1.13046204e-11f) * _t42 + (2.48015876e-05f - _t41 * 2.75573029e-07f)) * _t43 + (1.0f - _t41 * 0.5f + (0.0416666679f - 0.00138888892f * _t41) * _t42)) + _t1 * ((1.0f - 0.166666672f * _t41 + (0.00833333377f - 0.000198412701f * _t41) * _t42 + (2.75573188e-06f - 2.50520991e-08f * _t41 + (1.60577024e-10f - 7.54937183e-13f * _t41) * _t42) * _t43) * (_t20 * _t38));
-    const float _t45 = _t44 * _t44;
-    const float _t46 = _t34 * (_t27 * _t8);
-    const float _t47 = _t46 * _t46;
-    const float _t48 = _t47 * _t47;
-    const float _t49 = ((0.0416666679f - 0.00138888892f * _t46) * _t47 + (1.0f - _t46 * 0.5f) + _t48 * ((2.08744777e-09f - 1.13046204e-11f * _t46) * _t47 + (2.48015876e-05f - _t46 * 2.75573029e-07f))) * _t12 + ((0.00833333377f - 0.000198412701f * _t46) * _t47 + (1.0f - 0.166666672f * _t46) + _t48 * (2.75573188e-06f - 2.50520991e-08f * _t46 + (1.60577024e-10f - 7.54937183e-13f * _t46) * _t47)) * (_t26 * _t38) * _t25;
-    const float _t50 = _t49 * _t49;
-    const float _t51 = _t40 + (_t45 + _t50);
-    const float _t52 = (_t51 > 1.17549435e-38f) ? 1.0f / _t51 : 0.0f;
-    const float _t53 = _t52 * (_t40 * _t8);
-    const float _t54 = _t53 * _t53;
-    const float _t55 = _t54 * _t54;
-    const float _t56 = sqrt(_t51) * _t52 * _t7;
-    const float _t57 = (_t55 * (2.48015876e-05f - _t53 * 2.75573029e-07f + _t54 * (2.08744777e-09f - _t53 * 1.13046204e-11f)) + (1.0f - _t53 * 0.5f + _t54 * (0.0416666679f - 0.00138888892f * _t53))) * _t9 + _t3 * (_t39 * _t56 * (_t55 * ((1.60577024e-10f - 7.54937183e-13f * _t53) * _t54 + (2.75573188e-06f - 2.50520991e-08f * _t53)) + (1.0f - 0.166666672f * _t53 + _t54 * (0.00833333377f - 0.000198412701f * _t53))));
-    const float _t58 = _t57 * _t57;
-    const float _t59 = _t45 * _t8 * _t52;
-    const float _t60 = _t59 * _t59;
-    const float _t61 = _t60 * _t60;
-    const float _t62 = _t4 * (1.0f - _t59 * 0.5f + _t60 * (0.0416666679f - 0.00138888892f * _t59) + (_t60 * (2.08744777e-09f - 1.13046204e-11f * _t59) + (2.48015876e-05f - _t59 * 2.75573029e-07f)) * _t61) + ((0.00833333377f - 0.000198412701f * _t59) * _t60 + (1.0f - 0.166666672f * _t59) + _t61 * (2.75573188e-06f - 2.50520991e-08f * _t59 + _t60 * (1.60577024e-10f - 7.54937183e-13f * _t59))) * (_t56 * _t44) * _t1;
-    const float _t63 = _t62 * _t62;
-    const float _t64 = _t50 * _t8 * _t52;
-    const float _t65 = _t64 * _t64;
-    const float _t66 = _t65 * _t65;
-    const float _t67 = _t12 * (_t66 * (2.48015876e-05f - 2.75573029e-07f * _t64 + _t65 * (2.08744777e-09f - 1.13046204e-11f * _t64)) + (_t65 * (0.0416666679f - 0.00138888892f * _t64) + (1.0f - 0.5f * _t64))) + _t25 * ((1.0f - 0.166666672f * _t64 + _t65 * (0.00833333377f - 0.000198412701f * _t64) + _t66 * (_t65 * (1.60577024e-10f - 7.54937183e-13f * _t64) + (2.75573188e-06f - 2.50520991e-08f * _t64))) * (_t49 * _t56));
-    const float _t68 = _t67 * _t67;
-    const float _t69 = _t58 + _t63 + _t68;
-    const float _t70 = (_t69 > 1.17549435e-38f) ? 1.0f / _t69 : 0.0f;
-    const float _t71 = _t70 * (_t8 * _t63);
-    const float _t72 = _t71 * _t71;
-    const float _t73 = _t72 * _t72;
-    const float _t74 = _t7 * (sqrt(_t69) * _t70);
-    const float _t75 = _t58 * _t8 * _t70;
-    const float _t76 = _t75 * _t75;
-    const float _t77 = _t76 * _t76;
-    const float _t78 = _t70 * (_t8 * _t68);
-    const float _t79 = _t78 * _t78;
-    const float _t80 = _t79 * _t79;
-    return _t1 * ((0.0416666679f - 0.00138888892f * _t71) * _t72 + (1.0f - _t71 * 0.5f) + (2.48015876e-05f - _t71 * 2.75573029e-07f + _t72 * (2.08744777e-09f - _t71 * 1.13046204e-11f)) * _t73) - _t4 * (_t62 * _t74 * (_t73 * (2.75573188e-06f - 2.50520991e-08f * _t71 + (1.60577024e-10f - 7.54937183e-13f * _t71) * _t72) + (_t72 * (0.00833333377f - _t71 * 0.000198412701f) + (1.0f - 0.166666672f * _t71)))) + (_t3 * (_t76 * (0.0416666679f - 0.00138888892f * _t75) + (1.0f - _t75 * 0.5f) + _t77 * (_t76 * (2.08744777e-09f - 1.13046204e-11f * _t75) + (2.48015876e-05f - _t75 * 2.75573029e-07f))) - (1.0f - 0.166666672f * _t75 + (0.00833333377f - 0.000198412701f * _t75) * _t76 + _t77 * (2.75573188e-06f - 2.50520991e-08f * _t75 + (1.60577024e-10f - 7.54937183e-13f * _t75) * _t76)) * (_t57 * _t74) * _t9 + (_t25 * ((2.48015876e-05f - 2.75573029e-07f * _t78 + _t79 * (2.08744777e-09f - 1.13046204e-11f * _t78)) * _t80 + ((0.0416666679f - 0.00138888892f * _t78) * _t79 + (1.0f - _t78 * 0.5f))) - (_t79 * (0.00833333377f - 0.000198412701f * _t78) + (1.0f - 0.166666672f * _t78) + ((1.60577024e-10f - 7.54937183e-13f * _t78) * _t79 + (2.75573188e-06f - 2.50520991e-08f * _t78)) * _t80) * (_t74 * _t67) * _t12));
-}
-
-/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 993
- */
-float schwarzp_proj_o8_shellf(float3 p, float t)
-{
-    const float _t0 = 6.28318548f * (t * 0.5f);
-    const float _t1 = (_t0 <= 1.0f) ? (((-1.0f) <= _t0) ? _t0 : (-1.0f)) : 1.0f;
-    const float _t2 = _t1 * _t1;
-    const float _t3 = p.z * 2.0f;
-    const float _t4 = sinpi(_t3);
-    const float _t5 = p.y * 2.0f;
-    const float _t6 = sinpi(_t5);
-    const float _t7 = _t6 * _t6;
-    const float _t8 = _t4 * _t4;
-    const float _t9 = p.x * 2.0f;
-    const float _t10 = sinpi(_t9);
-    const float _t11 = _t10 * _t10;
-    const float _t12 = _t7 + (_t8 + _t11);
-    const float _t13 = (_t12 > 1.17549435e-38f) ? 1.0f / _t12 : 0.0f;
-    const float _t14 = _t13 * (_t2 * _t8);
-    const float _t15 = _t14 * _t14;
-    const float _t16 = _t15 * _t15;
-    const float _t17 = cospi(_t3);
-    const float _t18 = _t13 * sqrt(_t12);
-    const float _t19 = _t1 * _t18;
-    const float _t20 = _t4 * (_t16 * (_t15 * (2.08744777e-09f - 1.13046204e-11f * _t14) + (2.48015876e-05f - _t14 * 2.75573029e-07f)) + (_t15 * (0.0416666679f - 0.00138888892f * _t14) + (1.0f - _t14 * 0.5f))) + _t17 * ((1.0f - 0.166666672f * _t14 + _t15 * (0.00833333377f - 0.000198412701f * _t14) + _t16 * (2.75573188e-06f - 2.50520991e-08f * _t14 + (1.60577024e-10f - 7.54937183e-13f * _t14) * _t15)) * (_t19 * _t4));
-    const float _t21 = _t20 * _t20;
-    const float _t22 = _t2 * _t7 * _t13;
-    const float _t23 = _t22 * _t22;
-    const float _t24 = _t23 * _t23;
-    const float _t25 = cospi(_t5);
-    const float _t26 = ((2.48015876e-05f - _t22 * 2.75573029e-07f + (2.08744777e-09f - _t22 * 1.13046204e-11f) * _t23) * _t24 + ((0.0416666679f - 0.00138888892f * _t22) * _t23 + (1.0f - _t22 * 0.5f))) * _t6 + _t19 * _t6 * (1.0f - 0.166666672f * _t22 + (0.00833333377f - _t22 * 0.000198412701f) * _t23 + (2.75573188e-06f - 2.50520991e-08f * _t22 + (1.60577024e-10f - 7.54937183e-13f * _t22) * _t23) * _t24) * _t25;
-    const float _t27 = _t26 * _t26;
-    const float _t28 = _t13 * (_t2 * _t11);
-    const float _t29 = _t28 * _t28;
-    const float _t30 = _t29 * _t29;
-    const float _t31 = cospi(_t9);
-    const float _t32 = ((2.48015876e-05f - _t28 * 2.75573029e-07f + (2.08744777e-09f - _t28 * 1.13046204e-11f) * _t29) * _t30 + (1.0f - _t28 * 0.5f + (0.0416666679f - 0.00138888892f * _t28) * _t29)) * _t10 + _t31 * (((_t29 * (1.60577024e-10f - 7.54937183e-13f * _t28) + (2.75573188e-06f - 2.50520991e-08f * _t28)) * _t30 + (_t29 * (0.00833333377f - _t28 * 0.000198412701f) + (1.0f - 0.166666672f * _t28))) * (_t19 * _t10));
-    const float _t33 = _t32 * _t32;
-    const float _t34 = _t21 + _t27 + _t33;
-    const float _t35 = (_t34 > 1.17549435e-38f) ? 1.0f / _t34 : 0.0f;
-    const float _t36 = _t1 * (sqrt(_t34) * _t35);
-    const float _t37 = _t2 * _t21 * _t35;
-    const float _t38 = _t37 * _t37;
+    const float _t31 = _t30 * _t30;
+    const float _t32 = cospi(_t11);
+    const float _t33 = _t12 * ((_t30 * (2.08744777e-09f - 1.13046204e-11f * _t29) + (2.48015876e-05f - 2.75573029e-07f * _t29)) * _t31 + (1.0f - _t29 * 0.5f + (0.0416666679f - 0.00138888892f * _t29) * _t30)) + _t32 * (_t20 * _t12 * ((0.00833333377f - 0.000198412701f * _t29) * _t30 + (1.0f - 0.166666672f * _t29) + (2.75573188e-06f - 2.50520991e-08f * _t29 + (1.60577024e-10f - 7.54937183e-13f * _t29) * _t30) * _t31));
+    const float _t34 = _t33 * _t33;
+    const float _t35 = _t22 + _t28 + _t34;
+    const float _t36 = (_t35 > 1.17549435e-38f) ? 1.0f / _t35 : 0.0f;
+    const float _t37 = _t4 * (_t36 * sqrt(_t35));
+    const float _t38 = _t36 * (_t5 * _t22);
     const float _t39 = _t38 * _t38;
-    const float _t40 = _t36 * _t20 * (((1.60577024e-10f - 7.54937183e-13f * _t37) * _t38 + (2.75573188e-06f - 2.50520991e-08f * _t37)) * _t39 + (1.0f - 0.166666672f * _t37 + (0.00833333377f - 0.000198412701f * _t37) * _t38)) * _t17 + _t4 * (((2.08744777e-09f - _t37 * 1.13046204e-11f) * _t38 + (2.48015876e-05f - _t37 * 2.75573029e-07f)) * _t39 + (1.0f - _t37 * 0.5f + (0.0416666679f - 0.00138888892f * _t37) * _t38));
-    const float _t41 = _t40 * _t40;
-    const float _t42 = _t2 * _t27 * _t35;
-    const float _t43 = _t42 * _t42;
+    const float _t40 = _t39 * _t39;
+    const float _t41 = _t1 * (_t37 * _t21 * ((2.75573188e-06f - 2.50520991e-08f * _t38 + (1.60577024e-10f - 7.54937183e-13f * _t38) * _t39) * _t40 + (_t39 * (0.00833333377f - 0.000198412701f * _t38) + (1.0f - 0.166666672f * _t38)))) + ((2.48015876e-05f - _t38 * 2.75573029e-07f + _t39 * (2.08744777e-09f - _t38 * 1.13046204e-11f)) * _t40 + (_t39 * (0.0416666679f - 0.00138888892f * _t38) + (1.0f - _t38 * 0.5f))) * _t6;
+    const float _t42 = _t41 * _t41;
+    const float _t43 = _t5 * _t34 * _t36;
     const float _t44 = _t43 * _t43;
-    const float _t45 = _t25 * (_t36 * _t26 * (1.0f - 0.166666672f * _t42 + (0.00833333377f - _t42 * 0.000198412701f) * _t43 + _t44 * ((1.60577024e-10f - 7.54937183e-13f * _t42) * _t43 + (2.75573188e-06f - 2.50520991e-08f * _t42)))) + (_t44 * ((2.08744777e-09f - _t42 * 1.13046204e-11f) * _t43 + (2.48015876e-05f - _t42 * 2.75573029e-07f)) + ((0.0416666679f - 0.00138888892f * _t42) * _t43 + (1.0f - _t42 * 0.5f))) * _t6;
-    const float _t46 = _t45 * _t45;
-    const float _t47 = _t2 * _t33 * _t35;
-    const float _t48 = _t47 * _t47;
+    const float _t45 = _t44 * _t44;
+    const float _t46 = _t32 * ((1.0f - _t43 * 0.166666672f + (0.00833333377f - _t43 * 0.000198412701f) * _t44 + _t45 * (2.75573188e-06f - _t43 * 2.50520991e-08f + _t44 * (1.60577024e-10f - _t43 * 7.54937183e-13f))) * (_t37 * _t33)) + (_t44 * (0.0416666679f - _t43 * 0.00138888892f) + (1.0f - _t43 * 0.5f) + _t45 * (_t44 * (2.08744777e-09f - _t43 * 1.13046204e-11f) + (2.48015876e-05f - _t43 * 2.75573029e-07f))) * _t12;
+    const float _t47 = _t46 * _t46;
+    const float _t48 = _t5 * _t28 * _t36;
     const float _t49 = _t48 * _t48;
-    const float _t50 = ((2.48015876e-05f - _t47 * 2.75573029e-07f + _t48 * (2.08744777e-09f - _t47 * 1.13046204e-11f)) * _t49 + ((0.0416666679f - _t47 * 0.00138888892f) * _t48 + (1.0f - _t47 * 0.5f))) * _t10 + _t31 * (_t36 * _t32 * (1.0f - _t47 * 0.166666672f + _t48 * (0.00833333377f - _t47 * 0.000198412701f) + _t49 * (2.75573188e-06f - _t47 * 2.50520991e-08f + _t48 * (1.60577024e-10f - _t47 * 7.54937183e-13f))));
-    const float _t51 = _t50 * _t50;
-    const float _t52 = _t41 + (_t46 + _t51);
-    const float _t53 = (_t52 > 1.17549435e-38f) ? 1.0f / _t52 : 0.0f;
-    const float _t54 = _t53 * (_t2 * _t41);
-    const float _t55 = _t54 * _t54;
+    const float _t50 = _t49 * _t49;
+    const float _t51 = _t9 * (1.0f - _t48 * 0.5f + (0.0416666679f - _t48 * 0.00138888892f) * _t49 + (2.48015876e-05f - _t48 * 2.75573029e-07f + (2.08744777e-09f - _t48 * 1.13046204e-11f) * _t49) * _t50) + (1.0f - _t48 * 0.166666672f + (0.00833333377f - _t48 * 0.000198412701f) * _t49 + (2.75573188e-06f - _t48 * 2.50520991e-08f + (1.60577024e-10f - _t48 * 7.54937183e-13f) * _t49) * _t50) * (_t37 * _t27) * _t26;
+    const float _t52 = _t51 * _t51;
+    const float _t53 = _t42 + _t47 + _t52;
+    const float _t54 = (_t53 > 1.17549435e-38f) ? 1.0f / _t53 : 0.0f;
+    const float _t55 = _t54 * (_t5 * _t42);
     const float _t56 = _t55 * _t55;
-    const float _t57 = _t1 * (_t53 * sqrt(_t52));
-    const float _t58 = ((0.0416666679f - 0.00138888892f * _t54) * _t55 + (1.0f - _t54 * 0.5f) + _t56 * (2.48015876e-05f - _t54 * 2.75573029e-07f + _t55 * (2.08744777e-09f - _t54 * 1.13046204e-11f))) * _t4 + ((0.00833333377f - 0.000198412701f * _t54) * _t55 + (1.0f - 0.166666672f * _t54) + _t56 * ((1.60577024e-10f - 7.54937183e-13f * _t54) * _t55 + (2.75573188e-06f - 2.50520991e-08f * _t54))) * (_t40 * _t57) * _t17;
-    const float _t59 = _t58 * _t58;
-    const float _t60 = _t53 * (_t2 * _t51);
-    const float _t61 = _t60 * _t60;
-    const float _t62 = _t61 * _t61;
-    const float _t63 = _t50 * _t57 * ((2.75573188e-06f - 2.50520991e-08f * _t60 + _t61 * (1.60577024e-10f - 7.54937183e-13f * _t60)) * _t62 + ((0.00833333377f - 0.000198412701f * _t60) * _t61 + (1.0f - 0.166666672f * _t60))) * _t31 + _t10 * (_t62 * (_t61 * (2.08744777e-09f - 1.13046204e-11f * _t60) + (2.48015876e-05f - _t60 * 2.75573029e-07f)) + (1.0f - _t60 * 0.5f + _t61 * (0.0416666679f - 0.00138888892f * _t60)));
+    const float _t57 = _t56 * _t56;
+    const float _t58 = (0.0416666679f - 0.00138888892f * _t55) * _t56 + (1.0f - _t55 * 0.5f) + (_t56 * (2.08744777e-09f - _t55 * 1.13046204e-11f) + (2.48015876e-05f - _t55 * 2.75573029e-07f)) * _t57;
+    const float _t59 = _t54 * sqrt(_t53) * _t4;
+    const float _t60 = _t41 * _t59;
+    const float _t61 = _t60 * ((2.75573188e-06f - 2.50520991e-08f * _t55 + _t56 * (1.60577024e-10f - 7.54937183e-13f * _t55)) * _t57 + (1.0f - 0.166666672f * _t55 + (0.00833333377f - 0.000198412701f * _t55) * _t56));
+    const float _t62 = _t58 * _t6 + _t1 * _t61;
+    const float _t63 = _t54 * (_t5 * _t47);
     const float _t64 = _t63 * _t63;
-    const float _t65 = _t53 * (_t2 * _t46);
-    const float _t66 = _t65 * _t65;
-    const float _t67 = _t66 * _t66;
-    const float _t68 = _t25 * ((1.0f - 0.166666672f * _t65 + _t66 * (0.00833333377f - _t65 * 0.000198412701f) + (2.75573188e-06f - 2.50520991e-08f * _t65 + (1.60577024e-10f - 7.54937183e-13f * _t65) * _t66) * _t67) * (_t45 * _t57)) + (1.0f - _t65 * 0.5f + _t66 * (0.0416666679f - 0.00138888892f * _t65) + (_t66 * (2.08744777e-09f - _t65 * 1.13046204e-11f) + (2.48015876e-05f - _t65 * 2.75573029e-07f)) * _t67) * _t6;
-    const float _t69 = _t68 * _t68;
-    const float _t70 = _t64 + (_t59 + _t69);
-    const float _t71 = (_t70 > 1.17549435e-38f) ? 1.0f / _t70 : 0.0f;
-    const float _t72 = _t2 * _t59 * _t71;
-    const float _t73 = _t72 * _t72;
-    const float _t74 = _t73 * _t73;
-    const float _t75 = _t1 * (sqrt(_t70) * _t71);
-    const float _t76 = _t2 * _t69 * _t71;
-    const float _t77 = _t76 * _t76;
-    const float _t78 = _t77 * _t77;
-    const float _t79 = _t2 * _t64 * _t71;
-    const float _t80 = _t79 * _t79;
-    const float _t81 = _t80 * _t80;
-    const float _t82 = -_t0;
-    const float _t83 = (_t82 <= 1.0f) ? (((-1.0f) <= _t82) ? _t82 : (-1.0f)) : 1.0f;
-    const float _t84 = _t83 * _t83;
-    const float _t85 = _t84 * _t7 * _t13;
-    const float _t86 = _t85 * _t85;
-    const float _t87 = _t86 * _t86;
-    const float _t88 = _t18 * _t83;
-    const float _t89 = (1.0f - _t85 * 0.5f + _t86 * (0.0416666679f - 0.00138888892f * _t85) + (_t86 * (2.08744777e-09f - 1.13046204e-11f * _t85) + (2.48015876e-05f - _t85 * 2.75573029e-07f)) * _t87) * _t6 + _t25 * (_t88 * _t6 * (1.0f - 0.166666672f * _t85 + _t86 * (0.00833333377f - 0.000198412701f * _t85) + (_t86 * (1.60577024e-10f - 7.54937183e-13f * _t85) + (2.75573188e-06f - 2.50520991e-08f * _t85)) * _t87));
-    const float _t90 = _t89 * _t89;
-    const float _t91 = _t13 * (_t84 * _t8);
-    const float _t92 = _t91 * _t91;
+    const float _t65 = _t64 * _t64;
+    const float _t66 = (0.0416666679f - 0.00138888892f * _t63) * _t64 + (1.0f - _t63 * 0.5f) + (2.48015876e-05f - _t63 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t63) * _t64) * _t65;
+    const float _t67 = _t46 * _t59;
+    const float _t68 = _t67 * (_t64 * (0.00833333377f - 0.000198412701f * _t63) + (1.0f - 0.166666672f * _t63) + (2.75573188e-06f - 2.50520991e-08f * _t63 + _t64 * (1.60577024e-10f - 7.54937183e-13f * _t63)) * _t65);
+    const float _t69 = _t66 * _t12 + _t32 * _t68;
+    const float _t70 = _t54 * (_t5 * _t52);
+    const float _t71 = _t70 * _t70;
+    const float _t72 = _t71 * _t71;
+    const float _t73 = (2.48015876e-05f - _t70 * 2.75573029e-07f + _t71 * (2.08744777e-09f - _t70 * 1.13046204e-11f)) * _t72 + (1.0f - _t70 * 0.5f + _t71 * (0.0416666679f - 0.00138888892f * _t70));
+    const float _t74 = _t51 * _t59;
+    const float _t75 = _t74 * ((2.75573188e-06f - _t70 * 2.50520991e-08f + _t71 * (1.60577024e-10f - 7.54937183e-13f * _t70)) * _t72 + (_t71 * (0.00833333377f - _t70 * 0.000198412701f) + (1.0f - _t70 * 0.166666672f)));
+    const float _t76 = _t9 * _t73 + _t75 * _t26;
+    const float _t77 = _t69 * _t69 + _t62 * _t62 + _t76 * _t76;
+    const float _t78 = ((_t77 > 1.17549435e-38f) ? 1.0f / _t77 : 0.0f) * sqrt(_t77) * _t4;
+    const float _t79 = _t62 * _t78 - _t60;
+    const float _t80 = _t1 * _t58 - _t61 * _t6;
+    const float _t81 = _t76 * _t78 - _t74;
+    const float _t82 = _t73 * _t26 - _t9 * _t75;
+    const float _t83 = _t69 * _t78 - _t67;
+    const float _t84 = _t32 * _t66 - _t68 * _t12;
+    const float _t85 = -((_t79 * _t80 * 0.5f + _t62) * _t79 + _t81 * (_t76 + _t81 * _t82 * 0.5f) + _t83 * (_t69 + _t84 * _t83 * 0.5f) - (_t82 + _t84 + _t80));
+    const float _t86 = 1.73205256f * fabs(_t4);
+    const float _t87 = _t32 + (_t1 + _t26);
+    const float _t88 = _t86 + _t87;
+    const float _t89 = _t87 - _t86;
+    const float _t90 = (_t2 <= 1.0f) ? (((-1.0f) <= _t2) ? _t2 : (-1.0f)) : 1.0f;
+    const float _t91 = _t90 * _t90;
+    const float _t92 = _t15 * (_t91 * _t13);
     const float _t93 = _t92 * _t92;
-    const float _t94 = _t4 * (_t92 * (0.0416666679f - 0.00138888892f * _t91) + (1.0f - _t91 * 0.5f) + _t93 * ((2.08744777e-09f - _t91 * 1.13046204e-11f) * _t92 + (2.48015876e-05f - _t91 * 2.75573029e-07f))) + _t17 * (((0.00833333377f - _t91 * 0.000198412701f) * _t92 + (1.0f - 0.166666672f * _t91) + _t93 * ((1.60577024e-10f - 7.54937183e-13f * _t91) * _t92 + (2.75573188e-06f - 2.50520991e-08f * _t91))) * (_t88 * _t4));
-    const float _t95 = _t94 * _t94;
-    const float _t96 = _t84 * _t11 * _t13;
+    const float _t94 = _t93 * _t93;
+    const float _t95 = _t90 * _t19;
+    const float _t96 = ((2.48015876e-05f - _t92 * 2.75573029e-07f + (2.08744777e-09f - _t92 * 1.13046204e-11f) * _t93) * _t94 + (1.0f - _t92 * 0.5f + (0.0416666679f - 0.00138888892f * _t92) * _t93)) * _t12 + _t32 * (((_t93 * (1.60577024e-10f - 7.54937183e-13f * _t92) + (2.75573188e-06f - 2.50520991e-08f * _t92)) * _t94 + (_t93 * (0.00833333377f - _t92 * 0.000198412701f) + (1.0f - 0.166666672f * _t92))) * (_t95 * _t12));
     const float _t97 = _t96 * _t96;
-    const float _t98 = _t97 * _t97;
-    const float _t99 = _t10 * ((_t97 * (2.08744777e-09f - 1.13046204e-11f * _t96) + (2.48015876e-05f - 2.75573029e-07f * _t96)) * _t98 + (1.0f - _t96 * 0.5f + (0.0416666679f - 0.00138888892f * _t96) * _t97)) + _t31 * (_t88 * _t10 * ((0.00833333377f - 0.000198412701f * _t96) * _t97 + (1.0f - 0.166666672f * _t96) + (2.75573188e-06f - 2.50520991e-08f * _t96 + (1.60577024e-10f - 7.54937183e-13f * _t96) * _t97) * _t98));
+    const float _t98 = _t15 * (_t91 * _t10);
+    const float _t99 = _t98 * _t98;
     const float _t100 = _t99 * _t99;
-    const float _t101 = _t90 + _t95 + _t100;
-    const float _t102 = (_t101 > 1.17549435e-38f) ? 1.0f / _t101 : 0.0f;
-    const float _t103 = _t83 * (_t102 * sqrt(_t101));
-    const float _t104 = _t102 * (_t84 * _t90);
+    const float _t101 = _t9 * (_t100 * (_t99 * (2.08744777e-09f - 1.13046204e-11f * _t98) + (2.48015876e-05f - _t98 * 2.75573029e-07f)) + (_t99 * (0.0416666679f - 0.00138888892f * _t98) + (1.0f - _t98 * 0.5f))) + _t26 * ((1.0f - 0.166666672f * _t98 + _t99 * (0.00833333377f - 0.000198412701f * _t98) + _t100 * (2.75573188e-06f - 2.50520991e-08f * _t98 + (1.60577024e-10f - 7.54937183e-13f * _t98) * _t99)) * (_t95 * _t9));
+    const float _t102 = _t101 * _t101;
+    const float _t103 = _t91 * _t7 * _t15;
+    const float _t104 = _t103 * _t103;
     const float _t105 = _t104 * _t104;
-    const float _t106 = _t105 * _t105;
-    const float _t107 = _t25 * (_t103 * _t89 * ((2.75573188e-06f - 2.50520991e-08f * _t104 + (1.60577024e-10f - 7.54937183e-13f * _t104) * _t105) * _t106 + (_t105 * (0.00833333377f - 0.000198412701f * _t104) + (1.0f - 0.166666672f * _t104)))) + ((2.48015876e-05f - _t104 * 2.75573029e-07f + _t105 * (2.08744777e-09f - _t104 * 1.13046204e-11f)) * _t106 + (_t105 * (0.0416666679f - 0.00138888892f * _t104) + (1.0f - _t104 * 0.5f))) * _t6;
-    const float _t108 = _t107 * _t107;
-    const float _t109 = _t84 * _t100 * _t102;
-    const float _t110 = _t109 * _t109;
+    const float _t106 = ((2.48015876e-05f - _t103 * 2.75573029e-07f + (2.08744777e-09f - _t103 * 1.13046204e-11f) * _t104) * _t105 + ((0.0416666679f - 0.00138888892f * _t103) * _t104 + (1.0f - _t103 * 0.5f))) * _t6 + _t95 * _t6 * (1.0f - 0.166666672f * _t103 + (0.00833333377f - _t103 * 0.000198412701f) * _t104 + (2.75573188e-06f - 2.50520991e-08f * _t103 + (1.60577024e-10f - 7.54937183e-13f * _t103) * _t104) * _t105) * _t1;
+    const float _t107 = _t106 * _t106;
+    const float _t108 = _t102 + _t107 + _t97;
+    const float _t109 = (_t108 > 1.17549435e-38f) ? 1.0f / _t108 : 0.0f;
+    const float _t110 = _t91 * _t97 * _t109;
     const float _t111 = _t110 * _t110;
-    const float _t112 = _t31 * ((1.0f - _t109 * 0.166666672f + (0.00833333377f - _t109 * 0.000198412701f) * _t110 + _t111 * (2.75573188e-06f - _t109 * 2.50520991e-08f + _t110 * (1.60577024e-10f - _t109 * 7.54937183e-13f))) * (_t103 * _t99)) + (_t110 * (0.0416666679f - _t109 * 0.00138888892f) + (1.0f - _t109 * 0.5f) + _t111 * (_t110 * (2.08744777e-09f - _t109 * 1.13046204e-11f) + (2.48015876e-05f - _t109 * 2.75573029e-07f))) * _t10;
-    const float _t113 = _t112 * _t112;
-    const float _t114 = _t84 * _t95 * _t102;
-    const float _t115 = _t114 * _t114;
+    const float _t112 = _t111 * _t111;
+    const float _t113 = _t90 * (sqrt(_t108) * _t109);
+    const float _t114 = ((2.48015876e-05f - _t110 * 2.75573029e-07f + _t111 * (2.08744777e-09f - _t110 * 1.13046204e-11f)) * _t112 + ((0.0416666679f - _t110 * 0.00138888892f) * _t111 + (1.0f - _t110 * 0.5f))) * _t12 + _t32 * (_t113 * _t96 * (1.0f - _t110 * 0.166666672f + _t111 * (0.00833333377f - _t110 * 0.000198412701f) + _t112 * (2.75573188e-06f - _t110 * 2.50520991e-08f + _t111 * (1.60577024e-10f - _t110 * 7.54937183e-13f))));
+    const float _t115 = _t91 * _t102 * _t109;
     const float _t116 = _t115 * _t115;
-    const float _t117 = _t4 * (1.0f - _t114 * 0.5f + (0.0416666679f - _t114 * 0.00138888892f) * _t115 + (2.48015876e-05f - _t114 * 2.75573029e-07f + (2.08744777e-09f - _t114 * 1.13046204e-11f) * _t115) * _t116) + (1.0f - _t114 * 0.166666672f + (0.00833333377f - _t114 * 0.000198412701f) * _t115 + (2.75573188e-06f - _t114 * 2.50520991e-08f + (1.60577024e-10f - _t114 * 7.54937183e-13f) * _t115) * _t116) * (_t103 * _t94) * _t17;
-    const float _t118 = _t117 * _t117;
-    const float _t119 = _t108 + _t113 + _t118;
-    const float _t120 = (_t119 > 1.17549435e-38f) ? 1.0f / _t119 : 0.0f;
-    const float _t121 = _t120 * (_t84 * _t118);
+    const float _t117 = _t116 * _t116;
+    const float _t118 = _t113 * _t101 * (((1.60577024e-10f - 7.54937183e-13f * _t115) * _t116 + (2.75573188e-06f - 2.50520991e-08f * _t115)) * _t117 + (1.0f - 0.166666672f * _t115 + (0.00833333377f - 0.000198412701f * _t115) * _t116)) * _t26 + _t9 * (((2.08744777e-09f - _t115 * 1.13046204e-11f) * _t116 + (2.48015876e-05f - _t115 * 2.75573029e-07f)) * _t117 + (1.0f - _t115 * 0.5f + (0.0416666679f - 0.00138888892f * _t115) * _t116));
+    const float _t119 = _t118 * _t118;
+    const float _t120 = _t91 * _t107 * _t109;
+    const float _t121 = _t120 * _t120;
     const float _t122 = _t121 * _t121;
-    const float _t123 = _t122 * _t122;
-    const float _t124 = _t120 * sqrt(_t119) * _t83;
-    const float _t125 = _t4 * ((2.48015876e-05f - _t121 * 2.75573029e-07f + _t122 * (2.08744777e-09f - _t121 * 1.13046204e-11f)) * _t123 + (1.0f - _t121 * 0.5f + _t122 * (0.0416666679f - 0.00138888892f * _t121))) + _t117 * _t124 * ((2.75573188e-06f - _t121 * 2.50520991e-08f + _t122 * (1.60577024e-10f - 7.54937183e-13f * _t121)) * _t123 + (_t122 * (0.00833333377f - _t121 * 0.000198412701f) + (1.0f - _t121 * 0.166666672f))) * _t17;
-    const float _t126 = _t125 * _t125;
-    const float _t127 = _t120 * (_t84 * _t113);
-    const float _t128 = _t127 * _t127;
-    const float _t129 = _t128 * _t128;
-    const float _t130 = ((0.0416666679f - 0.00138888892f * _t127) * _t128 + (1.0f - _t127 * 0.5f) + (2.48015876e-05f - _t127 * 2.75573029e-07f + (2.08744777e-09f - 1.13046204e-11f * _t127) * _t128) * _t129) * _t10 + _t31 * (_t112 * _t124 * (_t128 * (0.00833333377f - 0.000198412701f * _t127) + (1.0f - 0.166666672f * _t127) + (2.75573188e-06f - 2.50520991e-08f * _t127 + _t128 * (1.60577024e-10f - 7.54937183e-13f * _t127)) * _t129));
+    const float _t123 = _t1 * (_t113 * _t106 * (1.0f - 0.166666672f * _t120 + (0.00833333377f - _t120 * 0.000198412701f) * _t121 + _t122 * ((1.60577024e-10f - 7.54937183e-13f * _t120) * _t121 + (2.75573188e-06f - 2.50520991e-08f * _t120)))) + (_t122 * ((2.08744777e-09f - _t120 * 1.13046204e-11f) * _t121 + (2.48015876e-05f - _t120 * 2.75573029e-07f)) + ((0.0416666679f - 0.00138888892f * _t120) * _t121 + (1.0f - _t120 * 0.5f))) * _t6;
+    const float _t124 = _t123 * _t123;
+    const float _t125 = _t114 * _t114;
+    const float _t126 = _t119 + (_t124 + _t125);
+    const float _t127 = (_t126 > 1.17549435e-38f) ? 1.0f / _t126 : 0.0f;
+    const float _t128 = _t90 * (_t127 * sqrt(_t126));
+    const float _t129 = _t114 * _t128;
+    const float _t130 = _t127 * (_t91 * _t125);
     const float _t131 = _t130 * _t130;
-    const float _t132 = _t120 * (_t84 * _t108);
-    const float _t133 = _t132 * _t132;
-    const float _t134 = _t133 * _t133;
-    const float _t135 = ((0.0416666679f - 0.00138888892f * _t132) * _t133 + (1.0f - _t132 * 0.5f) + (_t133 * (2.08744777e-09f - _t132 * 1.13046204e-11f) + (2.48015876e-05f - _t132 * 2.75573029e-07f)) * _t134) * _t6 + _t25 * (_t107 * _t124 * ((2.75573188e-06f - 2.50520991e-08f * _t132 + _t133 * (1.60577024e-10f - 7.54937183e-13f * _t132)) * _t134 + (1.0f - 0.166666672f * _t132 + (0.00833333377f - 0.000198412701f * _t132) * _t133)));
-    const float _t136 = _t135 * _t135;
-    const float _t137 = _t131 + _t136 + _t126;
-    const float _t138 = (_t137 > 1.17549435e-38f) ? 1.0f / _t137 : 0.0f;
-    const float _t139 = _t84 * _t126 * _t138;
-    const float _t140 = _t139 * _t139;
-    const float _t141 = _t140 * _t140;
-    const float _t142 = _t138 * sqrt(_t137) * _t83;
-    const float _t143 = _t84 * _t131 * _t138;
+    const float _t132 = _t131 * _t131;
+    const float _t133 = _t129 * ((2.75573188e-06f - 2.50520991e-08f * _t130 + _t131 * (1.60577024e-10f - 7.54937183e-13f * _t130)) * _t132 + ((0.00833333377f - 0.000198412701f * _t130) * _t131 + (1.0f - 0.166666672f * _t130)));
+    const float _t134 = _t132 * (_t131 * (2.08744777e-09f - 1.13046204e-11f * _t130) + (2.48015876e-05f - _t130 * 2.75573029e-07f)) + (1.0f - _t130 * 0.5f + _t131 * (0.0416666679f - 0.00138888892f * _t130));
+    const float _t135 = _t133 * _t32 + _t12 * _t134;
+    const float _t136 = _t127 * (_t91 * _t119);
+    const float _t137 = _t136 * _t136;
+    const float _t138 = _t137 * _t137;
+    const float _t139 = (0.0416666679f - 0.00138888892f * _t136) * _t137 + (1.0f - _t136 * 0.5f) + _t138 * (2.48015876e-05f - _t136 * 2.75573029e-07f + _t137 * (2.08744777e-09f - _t136 * 1.13046204e-11f));
+    const float _t140 = _t118 * _t128;
+    const float _t141 = ((0.00833333377f - 0.000198412701f * _t136) * _t137 + (1.0f - 0.166666672f * _t136) + _t138 * ((1.60577024e-10f - 7.54937183e-13f * _t136) * _t137 + (2.75573188e-06f - 2.50520991e-08f * _t136))) * _t140;
+    const float _t142 = _t139 * _t9 + _t141 * _t26;
+    const float _t143 = _t127 * (_t91 * _t124);
     const float _t144 = _t143 * _t143;
     const float _t145 = _t144 * _t144;
-    const float _t146 = _t84 * _t136 * _t138;
-    const float _t147 = _t146 * _t146;
-    const float _t148 = _t147 * _t147;
-    return (((2.48015876e-05f - _t72 * 2.75573029e-07f + _t73 * (2.08744777e-09f - _t72 * 1.13046204e-11f)) * _t74 + (_t73 * (0.0416666679f - 0.00138888892f * _t72) + (1.0f - _t72 * 0.5f))) * _t17 - _t4 * ((_t73 * (0.00833333377f - 0.000198412701f * _t72) + (1.0f - 0.166666672f * _t72) + (2.75573188e-06f - 2.50520991e-08f * _t72 + _t73 * (1.60577024e-10f - 7.54937183e-13f * _t72)) * _t74) * (_t75 * _t58)) + (_t25 * (_t78 * (2.48015876e-05f - _t76 * 2.75573029e-07f + _t77 * (2.08744777e-09f - _t76 * 1.13046204e-11f)) + (1.0f - _t76 * 0.5f + _t77 * (0.0416666679f - _t76 * 0.00138888892f))) - (_t77 * (0.00833333377f - _t76 * 0.000198412701f) + (1.0f - _t76 * 0.166666672f) + ((1.60577024e-10f - _t76 * 7.54937183e-13f) * _t77 + (2.75573188e-06f - _t76 * 2.50520991e-08f)) * _t78) * (_t75 * _t68) * _t6 + (_t31 * (1.0f - _t79 * 0.5f + _t80 * (0.0416666679f - 0.00138888892f * _t79) + _t81 * (2.48015876e-05f - _t79 * 2.75573029e-07f + _t80 * (2.08744777e-09f - _t79 * 1.13046204e-11f))) - (1.0f - 0.166666672f * _t79 + _t80 * (0.00833333377f - 0.000198412701f * _t79) + _t81 * (2.75573188e-06f - 2.50520991e-08f * _t79 + _t80 * (1.60577024e-10f - 7.54937183e-13f * _t79))) * (_t63 * _t75) * _t10))) * (_t17 * ((2.48015876e-05f - _t139 * 2.75573029e-07f + _t140 * (2.08744777e-09f - 1.13046204e-11f * _t139)) * _t141 + (_t140 * (0.0416666679f - 0.00138888892f * _t139) + (1.0f - _t139 * 0.5f))) - _t125 * _t142 * (1.0f - 0.166666672f * _t139 + (0.00833333377f - 0.000198412701f * _t139) * _t140 + (_t140 * (1.60577024e-10f - 7.54937183e-13f * _t139) + (2.75573188e-06f - 2.50520991e-08f * _t139)) * _t141) * _t4 + (_t31 * ((2.48015876e-05f - _t143 * 2.75573029e-07f + _t144 * (2.08744777e-09f - _t143 * 1.13046204e-11f)) * _t145 + (1.0f - _t143 * 0.5f + _t144 * (0.0416666679f - _t143 * 0.00138888892f))) - _t130 * _t142 * (_t144 * (0.00833333377f - _t143 * 0.000198412701f) + (1.0f - _t143 * 0.166666672f) + _t145 * (_t144 * (1.60577024e-10f - _t143 * 7.54937183e-13f) + (2.75573188e-06f - _t143 * 2.50520991e-08f))) * _t10) + (_t25 * ((2.48015876e-05f - _t146 * 2.75573029e-07f + (2.08744777e-09f - _t146 * 1.13046204e-11f) * _t147) * _t148 + (1.0f - _t146 * 0.5f + _t147 * (0.0416666679f - _t146 * 0.00138888892f))) - _t135 * _t142 * (1.0f - _t146 * 0.166666672f + _t147 * (0.00833333377f - _t146 * 0.000198412701f) + ((1.60577024e-10f - _t146 * 7.54937183e-13f) * _t147 + (2.75573188e-06f - _t146 * 2.50520991e-08f)) * _t148) * _t6));
+    const float _t146 = _t123 * _t128;
+    const float _t147 = (1.0f - 0.166666672f * _t143 + _t144 * (0.00833333377f - _t143 * 0.000198412701f) + (2.75573188e-06f - 2.50520991e-08f * _t143 + (1.60577024e-10f - 7.54937183e-13f * _t143) * _t144) * _t145) * _t146;
+    const float _t148 = 1.0f - _t143 * 0.5f + _t144 * (0.0416666679f - 0.00138888892f * _t143) + (_t144 * (2.08744777e-09f - _t143 * 1.13046204e-11f) + (2.48015876e-05f - _t143 * 2.75573029e-07f)) * _t145;
+    const float _t149 = _t1 * _t147 + _t148 * _t6;
+    const float _t150 = _t135 * _t135 + (_t142 * _t142 + _t149 * _t149);
+    const float _t151 = _t90 * (sqrt(_t150) * ((_t150 > 1.17549435e-38f) ? 1.0f / _t150 : 0.0f));
+    const float _t152 = _t151 * _t142 - _t140;
+    const float _t153 = _t139 * _t26 - _t9 * _t141;
+    const float _t154 = _t32 * _t134 - _t133 * _t12;
+    const float _t155 = _t135 * _t151 - _t129;
+    const float _t156 = _t148 * _t1 - _t147 * _t6;
+    const float _t157 = _t151 * _t149 - _t146;
+    const float _t158 = -(_t152 * (_t152 * _t153 * 0.5f + _t142) + (_t135 + _t154 * _t155 * 0.5f) * _t155 + (_t156 * _t157 * 0.5f + _t149) * _t157 - (_t154 + (_t156 + _t153)));
+    const float _t159 = 1.73205256f * fabs(_t90);
+    const float _t160 = _t87 + _t159;
+    const float _t161 = _t87 - _t159;
+    return ((_t85 <= _t88) ? ((_t89 <= _t85) ? _t85 : _t89) : _t88) * ((_t158 <= _t160) ? ((_t161 <= _t158) ? _t158 : _t161) : _t160);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.
@@ -426,249 +449,269 @@ double schwarzp_proj_o8_field(double3 p)
 }
 
 /* phi(p, h) of order 8: zero on the surface moved by h along +grad F.
- * Total ops: 505
+ * Total ops: 435
  */
 double schwarzp_proj_o8_offset(double3 p, double h)
 {
-    const double _t0 = p.z * 2.0;
+    const double _t0 = p.y * 2.0;
     const double _t1 = cospi(_t0);
-    const double _t2 = p.y * 2.0;
-    const double _t3 = cospi(_t2);
-    const double _t4 = sinpi(_t0);
+    const double _t2 = p.z * 2.0;
+    const double _t3 = sinpi(_t2);
+    const double _t4 = _t3 * _t3;
+    const double _t5 = 6.2831853071795862 * h;
+    const double _t6 = (_t5 <= 1.0) ? (((-1.0) <= _t5) ? _t5 : (-1.0)) : 1.0;
+    const double _t7 = _t6 * _t6;
+    const double _t8 = sinpi(_t0);
+    const double _t9 = _t8 * _t8;
+    const double _t10 = p.x * 2.0;
+    const double _t11 = sinpi(_t10);
+    const double _t12 = _t11 * _t11;
+    const double _t13 = _t9 + (_t4 + _t12);
+    const double _t14 = (_t13 > 1.1754943508222875e-38) ? 1.0 / _t13 : 0.0;
+    const double _t15 = _t4 * _t7 * _t14;
+    const double _t16 = _t15 * _t15;
+    const double _t17 = _t16 * _t16;
+    const double _t18 = _t6 * (_t14 * sqrt(_t13));
+    const double _t19 = cospi(_t2);
+    const double _t20 = (1.0 - 0.16666666666666666 * _t15 + (0.0083333333333333003 - 0.00019841269841216566 * _t15) * _t16 + _t17 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t15 + _t16 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t15))) * (_t3 * _t18) * _t19 + _t3 * (_t17 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t15) * _t16 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t15)) + (_t16 * (0.041666666666666102 - 0.0013888888888798428 * _t15) + (1.0 - _t15 * 0.5)));
+    const double _t21 = _t20 * _t20;
+    const double _t22 = _t14 * (_t12 * _t7);
+    const double _t23 = _t22 * _t22;
+    const double _t24 = _t23 * _t23;
+    const double _t25 = cospi(_t10);
+    const double _t26 = ((2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + _t23 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22)) * _t24 + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23)) * _t11 + _t25 * (_t11 * _t18 * ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22 + _t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22))));
+    const double _t27 = _t26 * _t26;
+    const double _t28 = _t14 * (_t9 * _t7);
+    const double _t29 = _t28 * _t28;
+    const double _t30 = _t29 * _t29;
+    const double _t31 = _t1 * (_t18 * _t8 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) * _t29) * _t30 + ((0.0083333333333333003 - 0.00019841269841216566 * _t28) * _t29 + (1.0 - 0.16666666666666666 * _t28)))) + (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t28) * _t29 + (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07)) * _t30 + (1.0 - _t28 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t28) * _t29)) * _t8;
+    const double _t32 = _t31 * _t31;
+    const double _t33 = _t21 + (_t27 + _t32);
+    const double _t34 = (_t33 > 1.1754943508222875e-38) ? 1.0 / _t33 : 0.0;
+    const double _t35 = _t34 * (_t32 * _t7);
+    const double _t36 = _t35 * _t35;
+    const double _t37 = _t36 * _t36;
+    const double _t38 = _t6 * (_t34 * sqrt(_t33));
+    const double _t39 = _t1 * ((_t37 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + _t36 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35)) + (1.0 - 0.16666666666666666 * _t35 + _t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35))) * (_t31 * _t38)) + ((_t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07)) * _t37 + ((0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (1.0 - _t35 * 0.5))) * _t8;
+    const double _t40 = _t39 * _t39;
+    const double _t41 = _t34 * (_t21 * _t7);
+    const double _t42 = _t41 * _t41;
+    const double _t43 = _t42 * _t42;
+    const double _t44 = _t3 * (((2.0874477943664777e-09 - _t41 * 1.1304620460700782e-11) * _t42 + (2.4801587247292686e-05 - _t41 * 2.7557303701922228e-07)) * _t43 + (1.0 - _t41 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t41) * _t42)) + _t19 * ((1.0 - 0.16666666666666666 * _t41 + (0.0083333333333333003 - 0.00019841269841216566 * _t41) * _t42 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t41 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t41) * _t42) * _t43) * (_t20 * _t38));
+    const double _t45 = _t44 * _t44;
+    const double _t46 = _t34 * (_t27 * _t7);
+    const double _t47 = _t46 * _t46;
+    const double _t48 = _t47 * _t47;
+    const double _t49 = ((0.041666666666666102 - 0.0013888888888798428 * _t46) * _t47 + (1.0 - _t46 * 0.5) + _t48 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t46) * _t47 + (2.4801587247292686e-05 - _t46 * 2.7557303701922228e-07))) * _t11 + ((0.0083333333333333003 - 0.00019841269841216566 * _t46) * _t47 + (1.0 - 0.16666666666666666 * _t46) + _t48 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t46 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t46) * _t47)) * (_t26 * _t38) * _t25;
+    const double _t50 = _t49 * _t49;
+    const double _t51 = _t40 + (_t45 + _t50);
+    const double _t52 = (_t51 > 1.1754943508222875e-38) ? 1.0 / _t51 : 0.0;
+    const double _t53 = _t52 * (_t40 * _t7);
+    const double _t54 = _t53 * _t53;
+    const double _t55 = _t54 * _t54;
+    const double _t56 = _t55 * (2.4801587247292686e-05 - _t53 * 2.7557303701922228e-07 + _t54 * (2.0874477943664777e-09 - _t53 * 1.1304620460700782e-11)) + (1.0 - _t53 * 0.5 + _t54 * (0.041666666666666102 - 0.0013888888888798428 * _t53));
+    const double _t57 = sqrt(_t51) * _t52 * _t6;
+    const double _t58 = _t39 * _t57;
+    const double _t59 = _t58 * (_t55 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t53) * _t54 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t53)) + (1.0 - 0.16666666666666666 * _t53 + _t54 * (0.0083333333333333003 - 0.00019841269841216566 * _t53)));
+    const double _t60 = _t56 * _t8 + _t1 * _t59;
+    const double _t61 = _t45 * _t7 * _t52;
+    const double _t62 = _t61 * _t61;
+    const double _t63 = _t62 * _t62;
+    const double _t64 = 1.0 - _t61 * 0.5 + _t62 * (0.041666666666666102 - 0.0013888888888798428 * _t61) + (_t62 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t61) + (2.4801587247292686e-05 - _t61 * 2.7557303701922228e-07)) * _t63;
+    const double _t65 = _t57 * _t44;
+    const double _t66 = ((0.0083333333333333003 - 0.00019841269841216566 * _t61) * _t62 + (1.0 - 0.16666666666666666 * _t61) + _t63 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t61 + _t62 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t61))) * _t65;
+    const double _t67 = _t3 * _t64 + _t66 * _t19;
+    const double _t68 = _t50 * _t7 * _t52;
+    const double _t69 = _t68 * _t68;
+    const double _t70 = _t69 * _t69;
+    const double _t71 = _t70 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t68 + _t69 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t68)) + (_t69 * (0.041666666666666102 - 0.0013888888888798428 * _t68) + (1.0 - 0.5 * _t68));
+    const double _t72 = _t49 * _t57;
+    const double _t73 = (1.0 - 0.16666666666666666 * _t68 + _t69 * (0.0083333333333333003 - 0.00019841269841216566 * _t68) + _t70 * (_t69 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t68) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t68))) * _t72;
+    const double _t74 = _t11 * _t71 + _t25 * _t73;
+    const double _t75 = _t60 * _t60 + _t67 * _t67 + _t74 * _t74;
+    const double _t76 = _t6 * (sqrt(_t75) * ((_t75 > 1.1754943508222875e-38) ? 1.0 / _t75 : 0.0));
+    const double _t77 = _t60 * _t76 - _t58;
+    const double _t78 = _t1 * _t56 - _t59 * _t8;
+    const double _t79 = _t76 * _t74 - _t72;
+    const double _t80 = _t25 * _t71 - _t73 * _t11;
+    const double _t81 = _t67 * _t76 - _t65;
+    const double _t82 = _t19 * _t64 - _t66 * _t3;
+    const double _t83 = -((_t60 + _t77 * _t78 * 0.5) * _t77 + ((_t74 + _t79 * _t80 * 0.5) * _t79 + (_t67 + _t81 * _t82 * 0.5) * _t81) - (_t78 + _t80 + _t82));
+    const double _t84 = 1.7320525396196846 * fabs(_t6);
+    const double _t85 = _t25 + (_t1 + _t19);
+    const double _t86 = _t84 + _t85;
+    const double _t87 = _t85 - _t84;
+    return (_t83 <= _t86) ? ((_t87 <= _t83) ? _t83 : _t87) : _t86;
+}
+
+/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
+ * Total ops: 851
+ */
+double schwarzp_proj_o8_shell(double3 p, double t)
+{
+    const double _t0 = p.y * 2.0;
+    const double _t1 = cospi(_t0);
+    const double _t2 = 6.2831853071795862 * (t * 0.5);
+    const double _t3 = -_t2;
+    const double _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
     const double _t5 = _t4 * _t4;
-    const double _t6 = 6.2831853071795862 * h;
-    const double _t7 = (_t6 <= 1.0) ? (((-1.0) <= _t6) ? _t6 : (-1.0)) : 1.0;
-    const double _t8 = _t7 * _t7;
-    const double _t9 = sinpi(_t2);
+    const double _t6 = sinpi(_t0);
+    const double _t7 = _t6 * _t6;
+    const double _t8 = p.z * 2.0;
+    const double _t9 = sinpi(_t8);
     const double _t10 = _t9 * _t9;
     const double _t11 = p.x * 2.0;
     const double _t12 = sinpi(_t11);
     const double _t13 = _t12 * _t12;
-    const double _t14 = _t10 + (_t5 + _t13);
+    const double _t14 = _t7 + (_t10 + _t13);
     const double _t15 = (_t14 > 1.1754943508222875e-38) ? 1.0 / _t14 : 0.0;
-    const double _t16 = _t5 * _t8 * _t15;
+    const double _t16 = _t5 * _t7 * _t15;
     const double _t17 = _t16 * _t16;
     const double _t18 = _t17 * _t17;
-    const double _t19 = _t7 * (_t15 * sqrt(_t14));
-    const double _t20 = (1.0 - 0.16666666666666666 * _t16 + (0.0083333333333333003 - 0.00019841269841216566 * _t16) * _t17 + _t18 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t16 + _t17 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t16))) * (_t4 * _t19) * _t1 + _t4 * (_t18 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t16) * _t17 + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t16)) + (_t17 * (0.041666666666666102 - 0.0013888888888798428 * _t16) + (1.0 - _t16 * 0.5)));
-    const double _t21 = _t20 * _t20;
-    const double _t22 = _t15 * (_t13 * _t8);
-    const double _t23 = _t22 * _t22;
+    const double _t19 = _t15 * sqrt(_t14);
+    const double _t20 = _t19 * _t4;
+    const double _t21 = (1.0 - _t16 * 0.5 + _t17 * (0.041666666666666102 - 0.0013888888888798428 * _t16) + (_t17 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t16) + (2.4801587247292686e-05 - _t16 * 2.7557303701922228e-07)) * _t18) * _t6 + _t1 * (_t20 * _t6 * (1.0 - 0.16666666666666666 * _t16 + _t17 * (0.0083333333333333003 - 0.00019841269841216566 * _t16) + (_t17 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t16) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t16)) * _t18));
+    const double _t22 = _t21 * _t21;
+    const double _t23 = _t15 * (_t5 * _t10);
     const double _t24 = _t23 * _t23;
-    const double _t25 = cospi(_t11);
-    const double _t26 = ((2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + _t23 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t22)) * _t24 + (1.0 - _t22 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23)) * _t12 + _t25 * (_t12 * _t19 * ((0.0083333333333333003 - 0.00019841269841216566 * _t22) * _t23 + (1.0 - 0.16666666666666666 * _t22) + _t24 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22 + _t23 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22))));
-    const double _t27 = _t26 * _t26;
-    const double _t28 = _t15 * (_t10 * _t8);
-    const double _t29 = _t28 * _t28;
+    const double _t25 = _t24 * _t24;
+    const double _t26 = cospi(_t8);
+    const double _t27 = _t9 * (_t24 * (0.041666666666666102 - 0.0013888888888798428 * _t23) + (1.0 - _t23 * 0.5) + _t25 * ((2.0874477943664777e-09 - _t23 * 1.1304620460700782e-11) * _t24 + (2.4801587247292686e-05 - _t23 * 2.7557303701922228e-07))) + _t26 * (((0.0083333333333333003 - _t23 * 0.00019841269841216566) * _t24 + (1.0 - 0.16666666666666666 * _t23) + _t25 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t23) * _t24 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t23))) * (_t20 * _t9));
+    const double _t28 = _t27 * _t27;
+    const double _t29 = _t5 * _t13 * _t15;
     const double _t30 = _t29 * _t29;
-    const double _t31 = _t3 * (_t19 * _t9 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t28 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) * _t29) * _t30 + ((0.0083333333333333003 - 0.00019841269841216566 * _t28) * _t29 + (1.0 - 0.16666666666666666 * _t28)))) + (((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t28) * _t29 + (2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07)) * _t30 + (1.0 - _t28 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t28) * _t29)) * _t9;
-    const double _t32 = _t31 * _t31;
-    const double _t33 = _t21 + (_t27 + _t32);
-    const double _t34 = (_t33 > 1.1754943508222875e-38) ? 1.0 / _t33 : 0.0;
-    const double _t35 = _t34 * (_t32 * _t8);
-    const double _t36 = _t35 * _t35;
-    const double _t37 = _t36 * _t36;
-    const double _t38 = _t7 * (_t34 * sqrt(_t33));
-    const double _t39 = _t3 * ((_t37 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t35 + _t36 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t35)) + (1.0 - 0.16666666666666666 * _t35 + _t36 * (0.0083333333333333003 - 0.00019841269841216566 * _t35))) * (_t31 * _t38)) + ((_t36 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t35) + (2.4801587247292686e-05 - _t35 * 2.7557303701922228e-07)) * _t37 + ((0.041666666666666102 - 0.0013888888888798428 * _t35) * _t36 + (1.0 - _t35 * 0.5))) * _t9;
-    const double _t40 = _t39 * _t39;
-    const double _t41 = _t34 * (_t21 * _t8);
-    const double _t42 = _t41 * _t41;
-    const double _t43 = _t42 * _t42;
-    const double _t44 = _t4 * (((2.0874477943664777e-09 - _t41 * 1.1304620460700782e-11) * _t42 + (2.4801587247292686e-05 - _t41 * 2.7557303701922228e-07)) * _t43 + (1.0 - _t41 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t41) * _t42)) + _t1 * ((1.0 - 0.16666666666666666 * _t41 + (0.0083333333333333003 - 0.00019841269841216566 * _t41) * _t42 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t41 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t41) * _t42) * _t43) * (_t20 * _t38));
-    const double _t45 = _t44 * _t44;
-    const double _t46 = _t34 * (_t27 * _t8);
-    const double _t47 = _t46 * _t46;
-    const double _t48 = _t47 * _t47;
-    const double _t49 = ((0.041666666666666102 - 0.0013888888888798428 * _t46) * _t47 + (1.0 - _t46 * 0.5) + _t48 * ((2.0874477943664777e-09 - 1.1304620460700782e-11 * _t46) * _t47 + (2.4801587247292686e-05 - _t46 * 2.7557303701922228e-07))) * _t12 + ((0.0083333333333333003 - 0.00019841269841216566 * _t46) * _t47 + (1.0 - 0.16666666666666666 * _t46) + _t48 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t46 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t46) * _t47)) * (_t26 * _t38) * _t25;
-    const double _t50 = _t49 * _t49;
-    const double _t51 = _t40 + (_t45 + _t50);
-    const double _t52 = (_t51 > 1.1754943508222875e-38) ? 1.0 / _t51 : 0.0;
-    const double _t53 = _t52 * (_t40 * _t8);
-    const double _t54 = _t53 * _t53;
-    const double _t55 = _t54 * _t54;
-    const double _t56 = sqrt(_t51) * _t52 * _t7;
-    const double _t57 = (_t55 * (2.4801587247292686e-05 - _t53 * 2.7557303701922228e-07 + _t54 * (2.0874477943664777e-09 - _t53 * 1.1304620460700782e-11)) + (1.0 - _t53 * 0.5 + _t54 * (0.041666666666666102 - 0.0013888888888798428 * _t53))) * _t9 + _t3 * (_t39 * _t56 * (_t55 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t53) * _t54 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t53)) + (1.0 - 0.16666666666666666 * _t53 + _t54 * (0.0083333333333333003 - 0.00019841269841216566 * _t53))));
-    const double _t58 = _t57 * _t57;
-    const double _t59 = _t45 * _t8 * _t52;
-    const double _t60 = _t59 * _t59;
-    const double _t61 = _t60 * _t60;
-    const double _t62 = _t4 * (1.0 - _t59 * 0.5 + _t60 * (0.041666666666666102 - 0.0013888888888798428 * _t59) + (_t60 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t59) + (2.4801587247292686e-05 - _t59 * 2.7557303701922228e-07)) * _t61) + ((0.0083333333333333003 - 0.00019841269841216566 * _t59) * _t60 + (1.0 - 0.16666666666666666 * _t59) + _t61 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t59 + _t60 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t59))) * (_t56 * _t44) * _t1;
-    const double _t63 = _t62 * _t62;
-    const double _t64 = _t50 * _t8 * _t52;
-    const double _t65 = _t64 * _t64;
-    const double _t66 = _t65 * _t65;
-    const double _t67 = _t12 * (_t66 * (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t64 + _t65 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t64)) + (_t65 * (0.041666666666666102 - 0.0013888888888798428 * _t64) + (1.0 - 0.5 * _t64))) + _t25 * ((1.0 - 0.16666666666666666 * _t64 + _t65 * (0.0083333333333333003 - 0.00019841269841216566 * _t64) + _t66 * (_t65 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t64) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t64))) * (_t49 * _t56));
-    const double _t68 = _t67 * _t67;
-    const double _t69 = _t58 + _t63 + _t68;
-    const double _t70 = (_t69 > 1.1754943508222875e-38) ? 1.0 / _t69 : 0.0;
-    const double _t71 = _t70 * (_t8 * _t63);
-    const double _t72 = _t71 * _t71;
-    const double _t73 = _t72 * _t72;
-    const double _t74 = _t7 * (sqrt(_t69) * _t70);
-    const double _t75 = _t58 * _t8 * _t70;
-    const double _t76 = _t75 * _t75;
-    const double _t77 = _t76 * _t76;
-    const double _t78 = _t70 * (_t8 * _t68);
-    const double _t79 = _t78 * _t78;
-    const double _t80 = _t79 * _t79;
-    return _t1 * ((0.041666666666666102 - 0.0013888888888798428 * _t71) * _t72 + (1.0 - _t71 * 0.5) + (2.4801587247292686e-05 - _t71 * 2.7557303701922228e-07 + _t72 * (2.0874477943664777e-09 - _t71 * 1.1304620460700782e-11)) * _t73) - _t4 * (_t62 * _t74 * (_t73 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t71 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t71) * _t72) + (_t72 * (0.0083333333333333003 - _t71 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t71)))) + (_t3 * (_t76 * (0.041666666666666102 - 0.0013888888888798428 * _t75) + (1.0 - _t75 * 0.5) + _t77 * (_t76 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t75) + (2.4801587247292686e-05 - _t75 * 2.7557303701922228e-07))) - (1.0 - 0.16666666666666666 * _t75 + (0.0083333333333333003 - 0.00019841269841216566 * _t75) * _t76 + _t77 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t75 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t75) * _t76)) * (_t57 * _t74) * _t9 + (_t25 * ((2.4801587247292686e-05 - 2.7557303701922228e-07 * _t78 + _t79 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t78)) * _t80 + ((0.041666666666666102 - 0.0013888888888798428 * _t78) * _t79 + (1.0 - _t78 * 0.5))) - (_t79 * (0.0083333333333333003 - 0.00019841269841216566 * _t78) + (1.0 - 0.16666666666666666 * _t78) + ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t78) * _t79 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t78)) * _t80) * (_t74 * _t67) * _t12));
-}
-
-/* phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t.
- * Total ops: 993
- */
-double schwarzp_proj_o8_shell(double3 p, double t)
-{
-    const double _t0 = 6.2831853071795862 * (t * 0.5);
-    const double _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
-    const double _t2 = _t1 * _t1;
-    const double _t3 = p.z * 2.0;
-    const double _t4 = sinpi(_t3);
-    const double _t5 = p.y * 2.0;
-    const double _t6 = sinpi(_t5);
-    const double _t7 = _t6 * _t6;
-    const double _t8 = _t4 * _t4;
-    const double _t9 = p.x * 2.0;
-    const double _t10 = sinpi(_t9);
-    const double _t11 = _t10 * _t10;
-    const double _t12 = _t7 + (_t8 + _t11);
-    const double _t13 = (_t12 > 1.1754943508222875e-38) ? 1.0 / _t12 : 0.0;
-    const double _t14 = _t13 * (_t2 * _t8);
-    const double _t15 = _t14 * _t14;
-    const double _t16 = _t15 * _t15;
-    const double _t17 = cospi(_t3);
-    const double _t18 = _t13 * sqrt(_t12);
-    const double _t19 = _t1 * _t18;
-    const double _t20 = _t4 * (_t16 * (_t15 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t14) + (2.4801587247292686e-05 - _t14 * 2.7557303701922228e-07)) + (_t15 * (0.041666666666666102 - 0.0013888888888798428 * _t14) + (1.0 - _t14 * 0.5))) + _t17 * ((1.0 - 0.16666666666666666 * _t14 + _t15 * (0.0083333333333333003 - 0.00019841269841216566 * _t14) + _t16 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t14 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t14) * _t15)) * (_t19 * _t4));
-    const double _t21 = _t20 * _t20;
-    const double _t22 = _t2 * _t7 * _t13;
-    const double _t23 = _t22 * _t22;
-    const double _t24 = _t23 * _t23;
-    const double _t25 = cospi(_t5);
-    const double _t26 = ((2.4801587247292686e-05 - _t22 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t22 * 1.1304620460700782e-11) * _t23) * _t24 + ((0.041666666666666102 - 0.0013888888888798428 * _t22) * _t23 + (1.0 - _t22 * 0.5))) * _t6 + _t19 * _t6 * (1.0 - 0.16666666666666666 * _t22 + (0.0083333333333333003 - _t22 * 0.00019841269841216566) * _t23 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t22 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t22) * _t23) * _t24) * _t25;
-    const double _t27 = _t26 * _t26;
-    const double _t28 = _t13 * (_t2 * _t11);
-    const double _t29 = _t28 * _t28;
-    const double _t30 = _t29 * _t29;
-    const double _t31 = cospi(_t9);
-    const double _t32 = ((2.4801587247292686e-05 - _t28 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t28 * 1.1304620460700782e-11) * _t29) * _t30 + (1.0 - _t28 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t28) * _t29)) * _t10 + _t31 * (((_t29 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t28) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t28)) * _t30 + (_t29 * (0.0083333333333333003 - _t28 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t28))) * (_t19 * _t10));
-    const double _t33 = _t32 * _t32;
-    const double _t34 = _t21 + _t27 + _t33;
-    const double _t35 = (_t34 > 1.1754943508222875e-38) ? 1.0 / _t34 : 0.0;
-    const double _t36 = _t1 * (sqrt(_t34) * _t35);
-    const double _t37 = _t2 * _t21 * _t35;
-    const double _t38 = _t37 * _t37;
+    const double _t31 = _t30 * _t30;
+    const double _t32 = cospi(_t11);
+    const double _t33 = _t12 * ((_t30 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t29) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t29)) * _t31 + (1.0 - _t29 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t29) * _t30)) + _t32 * (_t20 * _t12 * ((0.0083333333333333003 - 0.00019841269841216566 * _t29) * _t30 + (1.0 - 0.16666666666666666 * _t29) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t29 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t29) * _t30) * _t31));
+    const double _t34 = _t33 * _t33;
+    const double _t35 = _t22 + _t28 + _t34;
+    const double _t36 = (_t35 > 1.1754943508222875e-38) ? 1.0 / _t35 : 0.0;
+    const double _t37 = _t4 * (_t36 * sqrt(_t35));
+    const double _t38 = _t36 * (_t5 * _t22);
     const double _t39 = _t38 * _t38;
-    const double _t40 = _t36 * _t20 * (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t37) * _t38 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t37)) * _t39 + (1.0 - 0.16666666666666666 * _t37 + (0.0083333333333333003 - 0.00019841269841216566 * _t37) * _t38)) * _t17 + _t4 * (((2.0874477943664777e-09 - _t37 * 1.1304620460700782e-11) * _t38 + (2.4801587247292686e-05 - _t37 * 2.7557303701922228e-07)) * _t39 + (1.0 - _t37 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t37) * _t38));
-    const double _t41 = _t40 * _t40;
-    const double _t42 = _t2 * _t27 * _t35;
-    const double _t43 = _t42 * _t42;
+    const double _t40 = _t39 * _t39;
+    const double _t41 = _t1 * (_t37 * _t21 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t38 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t38) * _t39) * _t40 + (_t39 * (0.0083333333333333003 - 0.00019841269841216566 * _t38) + (1.0 - 0.16666666666666666 * _t38)))) + ((2.4801587247292686e-05 - _t38 * 2.7557303701922228e-07 + _t39 * (2.0874477943664777e-09 - _t38 * 1.1304620460700782e-11)) * _t40 + (_t39 * (0.041666666666666102 - 0.0013888888888798428 * _t38) + (1.0 - _t38 * 0.5))) * _t6;
+    const double _t42 = _t41 * _t41;
+    const double _t43 = _t5 * _t34 * _t36;
     const double _t44 = _t43 * _t43;
-    const double _t45 = _t25 * (_t36 * _t26 * (1.0 - 0.16666666666666666 * _t42 + (0.0083333333333333003 - _t42 * 0.00019841269841216566) * _t43 + _t44 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t42) * _t43 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t42)))) + (_t44 * ((2.0874477943664777e-09 - _t42 * 1.1304620460700782e-11) * _t43 + (2.4801587247292686e-05 - _t42 * 2.7557303701922228e-07)) + ((0.041666666666666102 - 0.0013888888888798428 * _t42) * _t43 + (1.0 - _t42 * 0.5))) * _t6;
-    const double _t46 = _t45 * _t45;
-    const double _t47 = _t2 * _t33 * _t35;
-    const double _t48 = _t47 * _t47;
+    const double _t45 = _t44 * _t44;
+    const double _t46 = _t32 * ((1.0 - _t43 * 0.16666666666666666 + (0.0083333333333333003 - _t43 * 0.00019841269841216566) * _t44 + _t45 * (2.755731919201122e-06 - _t43 * 2.5052099244914114e-08 + _t44 * (1.6057701922579786e-10 - _t43 * 7.549371704181243e-13))) * (_t37 * _t33)) + (_t44 * (0.041666666666666102 - _t43 * 0.0013888888888798428) + (1.0 - _t43 * 0.5) + _t45 * (_t44 * (2.0874477943664777e-09 - _t43 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t43 * 2.7557303701922228e-07))) * _t12;
+    const double _t47 = _t46 * _t46;
+    const double _t48 = _t5 * _t28 * _t36;
     const double _t49 = _t48 * _t48;
-    const double _t50 = ((2.4801587247292686e-05 - _t47 * 2.7557303701922228e-07 + _t48 * (2.0874477943664777e-09 - _t47 * 1.1304620460700782e-11)) * _t49 + ((0.041666666666666102 - _t47 * 0.0013888888888798428) * _t48 + (1.0 - _t47 * 0.5))) * _t10 + _t31 * (_t36 * _t32 * (1.0 - _t47 * 0.16666666666666666 + _t48 * (0.0083333333333333003 - _t47 * 0.00019841269841216566) + _t49 * (2.755731919201122e-06 - _t47 * 2.5052099244914114e-08 + _t48 * (1.6057701922579786e-10 - _t47 * 7.549371704181243e-13))));
-    const double _t51 = _t50 * _t50;
-    const double _t52 = _t41 + (_t46 + _t51);
-    const double _t53 = (_t52 > 1.1754943508222875e-38) ? 1.0 / _t52 : 0.0;
-    const double _t54 = _t53 * (_t2 * _t41);
-    const double _t55 = _t54 * _t54;
+    const double _t50 = _t49 * _t49;
+    const double _t51 = _t9 * (1.0 - _t48 * 0.5 + (0.041666666666666102 - _t48 * 0.0013888888888798428) * _t49 + (2.4801587247292686e-05 - _t48 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t48 * 1.1304620460700782e-11) * _t49) * _t50) + (1.0 - _t48 * 0.16666666666666666 + (0.0083333333333333003 - _t48 * 0.00019841269841216566) * _t49 + (2.755731919201122e-06 - _t48 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t48 * 7.549371704181243e-13) * _t49) * _t50) * (_t37 * _t27) * _t26;
+    const double _t52 = _t51 * _t51;
+    const double _t53 = _t42 + _t47 + _t52;
+    const double _t54 = (_t53 > 1.1754943508222875e-38) ? 1.0 / _t53 : 0.0;
+    const double _t55 = _t54 * (_t5 * _t42);
     const double _t56 = _t55 * _t55;
-    const double _t57 = _t1 * (_t53 * sqrt(_t52));
-    const double _t58 = ((0.041666666666666102 - 0.0013888888888798428 * _t54) * _t55 + (1.0 - _t54 * 0.5) + _t56 * (2.4801587247292686e-05 - _t54 * 2.7557303701922228e-07 + _t55 * (2.0874477943664777e-09 - _t54 * 1.1304620460700782e-11))) * _t4 + ((0.0083333333333333003 - 0.00019841269841216566 * _t54) * _t55 + (1.0 - 0.16666666666666666 * _t54) + _t56 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t54) * _t55 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t54))) * (_t40 * _t57) * _t17;
-    const double _t59 = _t58 * _t58;
-    const double _t60 = _t53 * (_t2 * _t51);
-    const double _t61 = _t60 * _t60;
-    const double _t62 = _t61 * _t61;
-    const double _t63 = _t50 * _t57 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t60 + _t61 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t60)) * _t62 + ((0.0083333333333333003 - 0.00019841269841216566 * _t60) * _t61 + (1.0 - 0.16666666666666666 * _t60))) * _t31 + _t10 * (_t62 * (_t61 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t60) + (2.4801587247292686e-05 - _t60 * 2.7557303701922228e-07)) + (1.0 - _t60 * 0.5 + _t61 * (0.041666666666666102 - 0.0013888888888798428 * _t60)));
+    const double _t57 = _t56 * _t56;
+    const double _t58 = (0.041666666666666102 - 0.0013888888888798428 * _t55) * _t56 + (1.0 - _t55 * 0.5) + (_t56 * (2.0874477943664777e-09 - _t55 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t55 * 2.7557303701922228e-07)) * _t57;
+    const double _t59 = _t54 * sqrt(_t53) * _t4;
+    const double _t60 = _t41 * _t59;
+    const double _t61 = _t60 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t55 + _t56 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t55)) * _t57 + (1.0 - 0.16666666666666666 * _t55 + (0.0083333333333333003 - 0.00019841269841216566 * _t55) * _t56));
+    const double _t62 = _t58 * _t6 + _t1 * _t61;
+    const double _t63 = _t54 * (_t5 * _t47);
     const double _t64 = _t63 * _t63;
-    const double _t65 = _t53 * (_t2 * _t46);
-    const double _t66 = _t65 * _t65;
-    const double _t67 = _t66 * _t66;
-    const double _t68 = _t25 * ((1.0 - 0.16666666666666666 * _t65 + _t66 * (0.0083333333333333003 - _t65 * 0.00019841269841216566) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t65 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t65) * _t66) * _t67) * (_t45 * _t57)) + (1.0 - _t65 * 0.5 + _t66 * (0.041666666666666102 - 0.0013888888888798428 * _t65) + (_t66 * (2.0874477943664777e-09 - _t65 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t65 * 2.7557303701922228e-07)) * _t67) * _t6;
-    const double _t69 = _t68 * _t68;
-    const double _t70 = _t64 + (_t59 + _t69);
-    const double _t71 = (_t70 > 1.1754943508222875e-38) ? 1.0 / _t70 : 0.0;
-    const double _t72 = _t2 * _t59 * _t71;
-    const double _t73 = _t72 * _t72;
-    const double _t74 = _t73 * _t73;
-    const double _t75 = _t1 * (sqrt(_t70) * _t71);
-    const double _t76 = _t2 * _t69 * _t71;
-    const double _t77 = _t76 * _t76;
-    const double _t78 = _t77 * _t77;
-    const double _t79 = _t2 * _t64 * _t71;
-    const double _t80 = _t79 * _t79;
-    const double _t81 = _t80 * _t80;
-    const double _t82 = -_t0;
-    const double _t83 = (_t82 <= 1.0) ? (((-1.0) <= _t82) ? _t82 : (-1.0)) : 1.0;
-    const double _t84 = _t83 * _t83;
-    const double _t85 = _t84 * _t7 * _t13;
-    const double _t86 = _t85 * _t85;
-    const double _t87 = _t86 * _t86;
-    const double _t88 = _t18 * _t83;
-    const double _t89 = (1.0 - _t85 * 0.5 + _t86 * (0.041666666666666102 - 0.0013888888888798428 * _t85) + (_t86 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t85) + (2.4801587247292686e-05 - _t85 * 2.7557303701922228e-07)) * _t87) * _t6 + _t25 * (_t88 * _t6 * (1.0 - 0.16666666666666666 * _t85 + _t86 * (0.0083333333333333003 - 0.00019841269841216566 * _t85) + (_t86 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t85) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t85)) * _t87));
-    const double _t90 = _t89 * _t89;
-    const double _t91 = _t13 * (_t84 * _t8);
-    const double _t92 = _t91 * _t91;
+    const double _t65 = _t64 * _t64;
+    const double _t66 = (0.041666666666666102 - 0.0013888888888798428 * _t63) * _t64 + (1.0 - _t63 * 0.5) + (2.4801587247292686e-05 - _t63 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t63) * _t64) * _t65;
+    const double _t67 = _t46 * _t59;
+    const double _t68 = _t67 * (_t64 * (0.0083333333333333003 - 0.00019841269841216566 * _t63) + (1.0 - 0.16666666666666666 * _t63) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t63 + _t64 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t63)) * _t65);
+    const double _t69 = _t66 * _t12 + _t32 * _t68;
+    const double _t70 = _t54 * (_t5 * _t52);
+    const double _t71 = _t70 * _t70;
+    const double _t72 = _t71 * _t71;
+    const double _t73 = (2.4801587247292686e-05 - _t70 * 2.7557303701922228e-07 + _t71 * (2.0874477943664777e-09 - _t70 * 1.1304620460700782e-11)) * _t72 + (1.0 - _t70 * 0.5 + _t71 * (0.041666666666666102 - 0.0013888888888798428 * _t70));
+    const double _t74 = _t51 * _t59;
+    const double _t75 = _t74 * ((2.755731919201122e-06 - _t70 * 2.5052099244914114e-08 + _t71 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t70)) * _t72 + (_t71 * (0.0083333333333333003 - _t70 * 0.00019841269841216566) + (1.0 - _t70 * 0.16666666666666666)));
+    const double _t76 = _t9 * _t73 + _t75 * _t26;
+    const double _t77 = _t69 * _t69 + _t62 * _t62 + _t76 * _t76;
+    const double _t78 = ((_t77 > 1.1754943508222875e-38) ? 1.0 / _t77 : 0.0) * sqrt(_t77) * _t4;
+    const double _t79 = _t62 * _t78 - _t60;
+    const double _t80 = _t1 * _t58 - _t61 * _t6;
+    const double _t81 = _t76 * _t78 - _t74;
+    const double _t82 = _t73 * _t26 - _t9 * _t75;
+    const double _t83 = _t69 * _t78 - _t67;
+    const double _t84 = _t32 * _t66 - _t68 * _t12;
+    const double _t85 = -((_t79 * _t80 * 0.5 + _t62) * _t79 + _t81 * (_t76 + _t81 * _t82 * 0.5) + _t83 * (_t69 + _t84 * _t83 * 0.5) - (_t82 + _t84 + _t80));
+    const double _t86 = 1.7320525396196846 * fabs(_t4);
+    const double _t87 = _t32 + (_t1 + _t26);
+    const double _t88 = _t86 + _t87;
+    const double _t89 = _t87 - _t86;
+    const double _t90 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    const double _t91 = _t90 * _t90;
+    const double _t92 = _t15 * (_t91 * _t13);
     const double _t93 = _t92 * _t92;
-    const double _t94 = _t4 * (_t92 * (0.041666666666666102 - 0.0013888888888798428 * _t91) + (1.0 - _t91 * 0.5) + _t93 * ((2.0874477943664777e-09 - _t91 * 1.1304620460700782e-11) * _t92 + (2.4801587247292686e-05 - _t91 * 2.7557303701922228e-07))) + _t17 * (((0.0083333333333333003 - _t91 * 0.00019841269841216566) * _t92 + (1.0 - 0.16666666666666666 * _t91) + _t93 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t91) * _t92 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t91))) * (_t88 * _t4));
-    const double _t95 = _t94 * _t94;
-    const double _t96 = _t84 * _t11 * _t13;
+    const double _t94 = _t93 * _t93;
+    const double _t95 = _t90 * _t19;
+    const double _t96 = ((2.4801587247292686e-05 - _t92 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t92 * 1.1304620460700782e-11) * _t93) * _t94 + (1.0 - _t92 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t92) * _t93)) * _t12 + _t32 * (((_t93 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t92) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t92)) * _t94 + (_t93 * (0.0083333333333333003 - _t92 * 0.00019841269841216566) + (1.0 - 0.16666666666666666 * _t92))) * (_t95 * _t12));
     const double _t97 = _t96 * _t96;
-    const double _t98 = _t97 * _t97;
-    const double _t99 = _t10 * ((_t97 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t96) + (2.4801587247292686e-05 - 2.7557303701922228e-07 * _t96)) * _t98 + (1.0 - _t96 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t96) * _t97)) + _t31 * (_t88 * _t10 * ((0.0083333333333333003 - 0.00019841269841216566 * _t96) * _t97 + (1.0 - 0.16666666666666666 * _t96) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t96 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t96) * _t97) * _t98));
+    const double _t98 = _t15 * (_t91 * _t10);
+    const double _t99 = _t98 * _t98;
     const double _t100 = _t99 * _t99;
-    const double _t101 = _t90 + _t95 + _t100;
-    const double _t102 = (_t101 > 1.1754943508222875e-38) ? 1.0 / _t101 : 0.0;
-    const double _t103 = _t83 * (_t102 * sqrt(_t101));
-    const double _t104 = _t102 * (_t84 * _t90);
+    const double _t101 = _t9 * (_t100 * (_t99 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t98) + (2.4801587247292686e-05 - _t98 * 2.7557303701922228e-07)) + (_t99 * (0.041666666666666102 - 0.0013888888888798428 * _t98) + (1.0 - _t98 * 0.5))) + _t26 * ((1.0 - 0.16666666666666666 * _t98 + _t99 * (0.0083333333333333003 - 0.00019841269841216566 * _t98) + _t100 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t98 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t98) * _t99)) * (_t95 * _t9));
+    const double _t102 = _t101 * _t101;
+    const double _t103 = _t91 * _t7 * _t15;
+    const double _t104 = _t103 * _t103;
     const double _t105 = _t104 * _t104;
-    const double _t106 = _t105 * _t105;
-    const double _t107 = _t25 * (_t103 * _t89 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t104 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t104) * _t105) * _t106 + (_t105 * (0.0083333333333333003 - 0.00019841269841216566 * _t104) + (1.0 - 0.16666666666666666 * _t104)))) + ((2.4801587247292686e-05 - _t104 * 2.7557303701922228e-07 + _t105 * (2.0874477943664777e-09 - _t104 * 1.1304620460700782e-11)) * _t106 + (_t105 * (0.041666666666666102 - 0.0013888888888798428 * _t104) + (1.0 - _t104 * 0.5))) * _t6;
-    const double _t108 = _t107 * _t107;
-    const double _t109 = _t84 * _t100 * _t102;
-    const double _t110 = _t109 * _t109;
+    const double _t106 = ((2.4801587247292686e-05 - _t103 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t103 * 1.1304620460700782e-11) * _t104) * _t105 + ((0.041666666666666102 - 0.0013888888888798428 * _t103) * _t104 + (1.0 - _t103 * 0.5))) * _t6 + _t95 * _t6 * (1.0 - 0.16666666666666666 * _t103 + (0.0083333333333333003 - _t103 * 0.00019841269841216566) * _t104 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t103 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t103) * _t104) * _t105) * _t1;
+    const double _t107 = _t106 * _t106;
+    const double _t108 = _t102 + _t107 + _t97;
+    const double _t109 = (_t108 > 1.1754943508222875e-38) ? 1.0 / _t108 : 0.0;
+    const double _t110 = _t91 * _t97 * _t109;
     const double _t111 = _t110 * _t110;
-    const double _t112 = _t31 * ((1.0 - _t109 * 0.16666666666666666 + (0.0083333333333333003 - _t109 * 0.00019841269841216566) * _t110 + _t111 * (2.755731919201122e-06 - _t109 * 2.5052099244914114e-08 + _t110 * (1.6057701922579786e-10 - _t109 * 7.549371704181243e-13))) * (_t103 * _t99)) + (_t110 * (0.041666666666666102 - _t109 * 0.0013888888888798428) + (1.0 - _t109 * 0.5) + _t111 * (_t110 * (2.0874477943664777e-09 - _t109 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t109 * 2.7557303701922228e-07))) * _t10;
-    const double _t113 = _t112 * _t112;
-    const double _t114 = _t84 * _t95 * _t102;
-    const double _t115 = _t114 * _t114;
+    const double _t112 = _t111 * _t111;
+    const double _t113 = _t90 * (sqrt(_t108) * _t109);
+    const double _t114 = ((2.4801587247292686e-05 - _t110 * 2.7557303701922228e-07 + _t111 * (2.0874477943664777e-09 - _t110 * 1.1304620460700782e-11)) * _t112 + ((0.041666666666666102 - _t110 * 0.0013888888888798428) * _t111 + (1.0 - _t110 * 0.5))) * _t12 + _t32 * (_t113 * _t96 * (1.0 - _t110 * 0.16666666666666666 + _t111 * (0.0083333333333333003 - _t110 * 0.00019841269841216566) + _t112 * (2.755731919201122e-06 - _t110 * 2.5052099244914114e-08 + _t111 * (1.6057701922579786e-10 - _t110 * 7.549371704181243e-13))));
+    const double _t115 = _t91 * _t102 * _t109;
     const double _t116 = _t115 * _t115;
-    const double _t117 = _t4 * (1.0 - _t114 * 0.5 + (0.041666666666666102 - _t114 * 0.0013888888888798428) * _t115 + (2.4801587247292686e-05 - _t114 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t114 * 1.1304620460700782e-11) * _t115) * _t116) + (1.0 - _t114 * 0.16666666666666666 + (0.0083333333333333003 - _t114 * 0.00019841269841216566) * _t115 + (2.755731919201122e-06 - _t114 * 2.5052099244914114e-08 + (1.6057701922579786e-10 - _t114 * 7.549371704181243e-13) * _t115) * _t116) * (_t103 * _t94) * _t17;
-    const double _t118 = _t117 * _t117;
-    const double _t119 = _t108 + _t113 + _t118;
-    const double _t120 = (_t119 > 1.1754943508222875e-38) ? 1.0 / _t119 : 0.0;
-    const double _t121 = _t120 * (_t84 * _t118);
+    const double _t117 = _t116 * _t116;
+    const double _t118 = _t113 * _t101 * (((1.6057701922579786e-10 - 7.549371704181243e-13 * _t115) * _t116 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t115)) * _t117 + (1.0 - 0.16666666666666666 * _t115 + (0.0083333333333333003 - 0.00019841269841216566 * _t115) * _t116)) * _t26 + _t9 * (((2.0874477943664777e-09 - _t115 * 1.1304620460700782e-11) * _t116 + (2.4801587247292686e-05 - _t115 * 2.7557303701922228e-07)) * _t117 + (1.0 - _t115 * 0.5 + (0.041666666666666102 - 0.0013888888888798428 * _t115) * _t116));
+    const double _t119 = _t118 * _t118;
+    const double _t120 = _t91 * _t107 * _t109;
+    const double _t121 = _t120 * _t120;
     const double _t122 = _t121 * _t121;
-    const double _t123 = _t122 * _t122;
-    const double _t124 = _t120 * sqrt(_t119) * _t83;
-    const double _t125 = _t4 * ((2.4801587247292686e-05 - _t121 * 2.7557303701922228e-07 + _t122 * (2.0874477943664777e-09 - _t121 * 1.1304620460700782e-11)) * _t123 + (1.0 - _t121 * 0.5 + _t122 * (0.041666666666666102 - 0.0013888888888798428 * _t121))) + _t117 * _t124 * ((2.755731919201122e-06 - _t121 * 2.5052099244914114e-08 + _t122 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t121)) * _t123 + (_t122 * (0.0083333333333333003 - _t121 * 0.00019841269841216566) + (1.0 - _t121 * 0.16666666666666666))) * _t17;
-    const double _t126 = _t125 * _t125;
-    const double _t127 = _t120 * (_t84 * _t113);
-    const double _t128 = _t127 * _t127;
-    const double _t129 = _t128 * _t128;
-    const double _t130 = ((0.041666666666666102 - 0.0013888888888798428 * _t127) * _t128 + (1.0 - _t127 * 0.5) + (2.4801587247292686e-05 - _t127 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t127) * _t128) * _t129) * _t10 + _t31 * (_t112 * _t124 * (_t128 * (0.0083333333333333003 - 0.00019841269841216566 * _t127) + (1.0 - 0.16666666666666666 * _t127) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t127 + _t128 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t127)) * _t129));
+    const double _t123 = _t1 * (_t113 * _t106 * (1.0 - 0.16666666666666666 * _t120 + (0.0083333333333333003 - _t120 * 0.00019841269841216566) * _t121 + _t122 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t120) * _t121 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t120)))) + (_t122 * ((2.0874477943664777e-09 - _t120 * 1.1304620460700782e-11) * _t121 + (2.4801587247292686e-05 - _t120 * 2.7557303701922228e-07)) + ((0.041666666666666102 - 0.0013888888888798428 * _t120) * _t121 + (1.0 - _t120 * 0.5))) * _t6;
+    const double _t124 = _t123 * _t123;
+    const double _t125 = _t114 * _t114;
+    const double _t126 = _t119 + (_t124 + _t125);
+    const double _t127 = (_t126 > 1.1754943508222875e-38) ? 1.0 / _t126 : 0.0;
+    const double _t128 = _t90 * (_t127 * sqrt(_t126));
+    const double _t129 = _t114 * _t128;
+    const double _t130 = _t127 * (_t91 * _t125);
     const double _t131 = _t130 * _t130;
-    const double _t132 = _t120 * (_t84 * _t108);
-    const double _t133 = _t132 * _t132;
-    const double _t134 = _t133 * _t133;
-    const double _t135 = ((0.041666666666666102 - 0.0013888888888798428 * _t132) * _t133 + (1.0 - _t132 * 0.5) + (_t133 * (2.0874477943664777e-09 - _t132 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t132 * 2.7557303701922228e-07)) * _t134) * _t6 + _t25 * (_t107 * _t124 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t132 + _t133 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t132)) * _t134 + (1.0 - 0.16666666666666666 * _t132 + (0.0083333333333333003 - 0.00019841269841216566 * _t132) * _t133)));
-    const double _t136 = _t135 * _t135;
-    const double _t137 = _t131 + _t136 + _t126;
-    const double _t138 = (_t137 > 1.1754943508222875e-38) ? 1.0 / _t137 : 0.0;
-    const double _t139 = _t84 * _t126 * _t138;
-    const double _t140 = _t139 * _t139;
-    const double _t141 = _t140 * _t140;
-    const double _t142 = _t138 * sqrt(_t137) * _t83;
-    const double _t143 = _t84 * _t131 * _t138;
+    const double _t132 = _t131 * _t131;
+    const double _t133 = _t129 * ((2.755731919201122e-06 - 2.5052099244914114e-08 * _t130 + _t131 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t130)) * _t132 + ((0.0083333333333333003 - 0.00019841269841216566 * _t130) * _t131 + (1.0 - 0.16666666666666666 * _t130)));
+    const double _t134 = _t132 * (_t131 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t130) + (2.4801587247292686e-05 - _t130 * 2.7557303701922228e-07)) + (1.0 - _t130 * 0.5 + _t131 * (0.041666666666666102 - 0.0013888888888798428 * _t130));
+    const double _t135 = _t133 * _t32 + _t12 * _t134;
+    const double _t136 = _t127 * (_t91 * _t119);
+    const double _t137 = _t136 * _t136;
+    const double _t138 = _t137 * _t137;
+    const double _t139 = (0.041666666666666102 - 0.0013888888888798428 * _t136) * _t137 + (1.0 - _t136 * 0.5) + _t138 * (2.4801587247292686e-05 - _t136 * 2.7557303701922228e-07 + _t137 * (2.0874477943664777e-09 - _t136 * 1.1304620460700782e-11));
+    const double _t140 = _t118 * _t128;
+    const double _t141 = ((0.0083333333333333003 - 0.00019841269841216566 * _t136) * _t137 + (1.0 - 0.16666666666666666 * _t136) + _t138 * ((1.6057701922579786e-10 - 7.549371704181243e-13 * _t136) * _t137 + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t136))) * _t140;
+    const double _t142 = _t139 * _t9 + _t141 * _t26;
+    const double _t143 = _t127 * (_t91 * _t124);
     const double _t144 = _t143 * _t143;
     const double _t145 = _t144 * _t144;
-    const double _t146 = _t84 * _t136 * _t138;
-    const double _t147 = _t146 * _t146;
-    const double _t148 = _t147 * _t147;
-    return (((2.4801587247292686e-05 - _t72 * 2.7557303701922228e-07 + _t73 * (2.0874477943664777e-09 - _t72 * 1.1304620460700782e-11)) * _t74 + (_t73 * (0.041666666666666102 - 0.0013888888888798428 * _t72) + (1.0 - _t72 * 0.5))) * _t17 - _t4 * ((_t73 * (0.0083333333333333003 - 0.00019841269841216566 * _t72) + (1.0 - 0.16666666666666666 * _t72) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t72 + _t73 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t72)) * _t74) * (_t75 * _t58)) + (_t25 * (_t78 * (2.4801587247292686e-05 - _t76 * 2.7557303701922228e-07 + _t77 * (2.0874477943664777e-09 - _t76 * 1.1304620460700782e-11)) + (1.0 - _t76 * 0.5 + _t77 * (0.041666666666666102 - _t76 * 0.0013888888888798428))) - (_t77 * (0.0083333333333333003 - _t76 * 0.00019841269841216566) + (1.0 - _t76 * 0.16666666666666666) + ((1.6057701922579786e-10 - _t76 * 7.549371704181243e-13) * _t77 + (2.755731919201122e-06 - _t76 * 2.5052099244914114e-08)) * _t78) * (_t75 * _t68) * _t6 + (_t31 * (1.0 - _t79 * 0.5 + _t80 * (0.041666666666666102 - 0.0013888888888798428 * _t79) + _t81 * (2.4801587247292686e-05 - _t79 * 2.7557303701922228e-07 + _t80 * (2.0874477943664777e-09 - _t79 * 1.1304620460700782e-11))) - (1.0 - 0.16666666666666666 * _t79 + _t80 * (0.0083333333333333003 - 0.00019841269841216566 * _t79) + _t81 * (2.755731919201122e-06 - 2.5052099244914114e-08 * _t79 + _t80 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t79))) * (_t63 * _t75) * _t10))) * (_t17 * ((2.4801587247292686e-05 - _t139 * 2.7557303701922228e-07 + _t140 * (2.0874477943664777e-09 - 1.1304620460700782e-11 * _t139)) * _t141 + (_t140 * (0.041666666666666102 - 0.0013888888888798428 * _t139) + (1.0 - _t139 * 0.5))) - _t125 * _t142 * (1.0 - 0.16666666666666666 * _t139 + (0.0083333333333333003 - 0.00019841269841216566 * _t139) * _t140 + (_t140 * (1.6057701922579786e-10 - 7.549371704181243e-13 * _t139) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t139)) * _t141) * _t4 + (_t31 * ((2.4801587247292686e-05 - _t143 * 2.7557303701922228e-07 + _t144 * (2.0874477943664777e-09 - _t143 * 1.1304620460700782e-11)) * _t145 + (1.0 - _t143 * 0.5 + _t144 * (0.041666666666666102 - _t143 * 0.0013888888888798428))) - _t130 * _t142 * (_t144 * (0.0083333333333333003 - _t143 * 0.00019841269841216566) + (1.0 - _t143 * 0.16666666666666666) + _t145 * (_t144 * (1.6057701922579786e-10 - _t143 * 7.549371704181243e-13) + (2.755731919201122e-06 - _t143 * 2.5052099244914114e-08))) * _t10) + (_t25 * ((2.4801587247292686e-05 - _t146 * 2.7557303701922228e-07 + (2.0874477943664777e-09 - _t146 * 1.1304620460700782e-11) * _t147) * _t148 + (1.0 - _t146 * 0.5 + _t147 * (0.041666666666666102 - _t146 * 0.0013888888888798428))) - _t135 * _t142 * (1.0 - _t146 * 0.16666666666666666 + _t147 * (0.0083333333333333003 - _t146 * 0.00019841269841216566) + ((1.6057701922579786e-10 - _t146 * 7.549371704181243e-13) * _t147 + (2.755731919201122e-06 - _t146 * 2.5052099244914114e-08)) * _t148) * _t6));
+    const double _t146 = _t123 * _t128;
+    const double _t147 = (1.0 - 0.16666666666666666 * _t143 + _t144 * (0.0083333333333333003 - _t143 * 0.00019841269841216566) + (2.755731919201122e-06 - 2.5052099244914114e-08 * _t143 + (1.6057701922579786e-10 - 7.549371704181243e-13 * _t143) * _t144) * _t145) * _t146;
+    const double _t148 = 1.0 - _t143 * 0.5 + _t144 * (0.041666666666666102 - 0.0013888888888798428 * _t143) + (_t144 * (2.0874477943664777e-09 - _t143 * 1.1304620460700782e-11) + (2.4801587247292686e-05 - _t143 * 2.7557303701922228e-07)) * _t145;
+    const double _t149 = _t1 * _t147 + _t148 * _t6;
+    const double _t150 = _t135 * _t135 + (_t142 * _t142 + _t149 * _t149);
+    const double _t151 = _t90 * (sqrt(_t150) * ((_t150 > 1.1754943508222875e-38) ? 1.0 / _t150 : 0.0));
+    const double _t152 = _t151 * _t142 - _t140;
+    const double _t153 = _t139 * _t26 - _t9 * _t141;
+    const double _t154 = _t32 * _t134 - _t133 * _t12;
+    const double _t155 = _t135 * _t151 - _t129;
+    const double _t156 = _t148 * _t1 - _t147 * _t6;
+    const double _t157 = _t151 * _t149 - _t146;
+    const double _t158 = -(_t152 * (_t152 * _t153 * 0.5 + _t142) + (_t135 + _t154 * _t155 * 0.5) * _t155 + (_t156 * _t157 * 0.5 + _t149) * _t157 - (_t154 + (_t156 + _t153)));
+    const double _t159 = 1.7320525396196846 * fabs(_t90);
+    const double _t160 = _t87 + _t159;
+    const double _t161 = _t87 - _t159;
+    return ((_t85 <= _t88) ? ((_t89 <= _t85) ? _t85 : _t89) : _t88) * ((_t158 <= _t160) ? ((_t161 <= _t158) ? _t158 : _t161) : _t160);
 }
 
 /* unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0.

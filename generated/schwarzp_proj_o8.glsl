@@ -8,7 +8,9 @@ description: |
     Source: Schwarz 1890; nodal form: von Schnering & Nesper, Z. Phys. B 83 (1991) 407.
     Method: foot-point projection with K = 3 projection steps: q_0 = p - h n(p), q_(j+1) = p - h
     n(q_j), phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order
-    2(K+1) = 8. offsetgen, docs/projection.md (foot-point projection).
+    2(K+1) = 8. F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K
+    (q_K - q_(K-1) = O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig
+    of its own). offsetgen, docs/projection.md (foot-point projection).
 use:
     - <float> schwarzp_proj_o8_field(<vec3 p>)
     - <float> schwarzp_proj_o8_offset(<vec3 p, float h>)
@@ -31,15 +33,16 @@ variable thickness: the _graded function (--thickness) reads the half thickness 
     estimate and updates it at every projection: each wall converges at order 4 = K + 1 to the
     distance t(p0)/2 from its foot point p0, and the total wall thickness at order 4. Passing a
     local t(p) to _shell reads it at p instead: second order at best.
-safety: no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M =
-    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too): phi
-    has the sign of F wherever |F| > M |h|, so no phantom walls appear. n := 0 where grad F = 0, so
-    every function returns a finite value for finite input (do not compile with -ffinite-math-only).
-    sin and cos at the foot-point estimates come from their values at p by angle addition, which is
-    exact while |h| <= 1 (natural units: |h| <= 0.159 cell on a 2*pi-periodic surface, walls up to
-    0.318 cell thick); a larger |h| is clamped to 1, so thicker walls stop growing there, and |q_K -
-    p| <= |h| keeps the bound above. n := 0 also where |grad F|^2 <= 2^-126 (FLT_MIN), which keeps
-    1/|grad F|^2 finite in float.
+safety: no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M =
+    1.7320525396196846 >= max |grad F| over the cell (2*pi/L scaled coordinates, h in them too), and
+    phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) (so this
+    never moves it away from F(q_K)): phi has the sign of F wherever |F| > M |h|, so no phantom
+    walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite input
+    (do not compile with -ffinite-math-only). sin and cos at the foot-point estimates come from
+    their values at p by angle addition, which is exact while |h| <= 1 (natural units: |h| <= 0.159
+    cell on a 2*pi-periodic surface, walls up to 0.318 cell thick); a larger |h| is clamped to 1, so
+    thicker walls stop growing there, and |q_K - p| <= |h| keeps the bound above. n := 0 also where
+    |grad F|^2 <= 2^-126 (FLT_MIN), which keeps 1/|grad F|^2 finite in float.
 lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F and the zero set is
     at least (|F(p)| - M |h|) / (k M) cell away (M as below, k = 6.2831853071795862 the scale of X =
     k x). Inside that band |grad phi| <= k M / (1 - |h| H / g), g the least |grad F| where |F| <= 2
@@ -49,12 +52,12 @@ lipschitz: away from the walls, wherever |F(p)| > M |h|, phi has the sign of F a
 targets: GLSL ES 3.00 (WebGL2), GLSL 3.30 core, GLSL 4.50, Vulkan GLSL.
 total ops after CSE:
     - field: 8
-    - offset: 505
-    - shell: 993
+    - offset: 435
+    - shell: 851
     - normal: 518
 license: generated code, use freely
 */
-/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":505,"shell":993,"normal":518}} */
+/* offsetgen-metadata {"format":1,"language":"glsl","generator":"offsetgen 0.1.0","prefix":"schwarzp_proj_o8","surface":"schwarzp","expression":null,"params":{},"scale":6.283185307179586,"dims":3,"method":"projection","order":8,"graded_order":4,"graded_wall_order":4,"projections":3,"foot_point_trig":"angle addition","last_estimate":"taylor","lipschitz":[{"h":0.005,"bound":11.282182047140475},{"h":0.01,"bound":11.730844912747617},{"h":0.025,"bound":13.739125041469638},{"h":0.05,"bound":null}],"thickness":null,"precisions":["float"],"gradient_bound":1.7320525396196846,"hessian_bound":1.0000010126065046,"ops":{"field":8,"offset":435,"shell":851,"normal":518}} */
 #ifndef OFFSETGEN_SCHWARZP_PROJ_O8_GLSL
 #define OFFSETGEN_SCHWARZP_PROJ_O8_GLSL
 
@@ -89,246 +92,266 @@ highp float schwarzp_proj_o8_field(highp vec3 p)
     return schwarzp_proj_o8_cos(p.z * 6.28318548) + schwarzp_proj_o8_cos(6.28318548 * p.y) + schwarzp_proj_o8_cos(6.28318548 * p.x);
 }
 
-// phi(p, h) of order 8: zero on the surface moved by h along +grad F. Total ops: 505.
+// phi(p, h) of order 8: zero on the surface moved by h along +grad F. Total ops: 435.
 highp float schwarzp_proj_o8_offset(highp vec3 p, highp float h)
 {
     highp float _t0 = p.z * 6.28318548;
     highp float _t1 = schwarzp_proj_o8_cos(_t0);
-    highp float _t2 = schwarzp_proj_o8_sin(_t0);
-    highp float _t3 = 6.28318548 * h;
-    highp float _t4 = (_t3 <= 1.0) ? (((-1.0) <= _t3) ? _t3 : (-1.0)) : 1.0;
-    highp float _t5 = 6.28318548 * p.y;
-    highp float _t6 = schwarzp_proj_o8_cos(_t5);
-    highp float _t7 = _t4 * _t4;
-    highp float _t8 = schwarzp_proj_o8_sin(_t5);
-    highp float _t9 = _t8 * _t8;
-    highp float _t10 = 6.28318548 * p.x;
-    highp float _t11 = schwarzp_proj_o8_sin(_t10);
-    highp float _t12 = _t11 * _t11;
-    highp float _t13 = _t2 * _t2;
-    highp float _t14 = _t12 + _t13 + _t9;
+    highp float _t2 = 6.28318548 * h;
+    highp float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
+    highp float _t4 = 6.28318548 * p.y;
+    highp float _t5 = schwarzp_proj_o8_cos(_t4);
+    highp float _t6 = _t3 * _t3;
+    highp float _t7 = schwarzp_proj_o8_sin(_t4);
+    highp float _t8 = _t7 * _t7;
+    highp float _t9 = 6.28318548 * p.x;
+    highp float _t10 = schwarzp_proj_o8_sin(_t9);
+    highp float _t11 = _t10 * _t10;
+    highp float _t12 = schwarzp_proj_o8_sin(_t0);
+    highp float _t13 = _t12 * _t12;
+    highp float _t14 = _t11 + _t13 + _t8;
     highp float _t15 = (_t14 > 1.17549435e-38) ? 1.0 / _t14 : 0.0;
-    highp float _t16 = _t7 * _t9 * _t15;
+    highp float _t16 = _t6 * _t8 * _t15;
     highp float _t17 = _t16 * _t16;
     highp float _t18 = _t17 * _t17;
-    highp float _t19 = _t4 * (_t15 * sqrt(_t14));
-    highp float _t20 = _t6 * (((2.75573188e-06 - 2.50520991e-08 * _t16 + _t17 * (1.60577024e-10 - 7.54937183e-13 * _t16)) * _t18 + (1.0 - 0.166666672 * _t16 + _t17 * (0.00833333377 - 0.000198412701 * _t16))) * (_t8 * _t19)) + _t8 * (1.0 - _t16 * 0.5 + _t17 * (0.0416666679 - 0.00138888892 * _t16) + _t18 * (2.48015876e-05 - _t16 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t16) * _t17));
+    highp float _t19 = _t3 * (_t15 * sqrt(_t14));
+    highp float _t20 = _t5 * (((2.75573188e-06 - 2.50520991e-08 * _t16 + _t17 * (1.60577024e-10 - 7.54937183e-13 * _t16)) * _t18 + (1.0 - 0.166666672 * _t16 + _t17 * (0.00833333377 - 0.000198412701 * _t16))) * (_t7 * _t19)) + _t7 * (1.0 - _t16 * 0.5 + _t17 * (0.0416666679 - 0.00138888892 * _t16) + _t18 * (2.48015876e-05 - _t16 * 2.75573029e-07 + (2.08744777e-09 - 1.13046204e-11 * _t16) * _t17));
     highp float _t21 = _t20 * _t20;
-    highp float _t22 = _t12 * _t7 * _t15;
+    highp float _t22 = _t11 * _t6 * _t15;
     highp float _t23 = _t22 * _t22;
     highp float _t24 = _t23 * _t23;
-    highp float _t25 = schwarzp_proj_o8_cos(_t10);
-    highp float _t26 = (1.0 - _t22 * 0.166666672 + (0.00833333377 - _t22 * 0.000198412701) * _t23 + _t24 * (2.75573188e-06 - _t22 * 2.50520991e-08 + (1.60577024e-10 - _t22 * 7.54937183e-13) * _t23)) * (_t11 * _t19) * _t25 + ((0.0416666679 - _t22 * 0.00138888892) * _t23 + (1.0 - _t22 * 0.5) + _t24 * (2.48015876e-05 - _t22 * 2.75573029e-07 + _t23 * (2.08744777e-09 - _t22 * 1.13046204e-11))) * _t11;
+    highp float _t25 = schwarzp_proj_o8_cos(_t9);
+    highp float _t26 = (1.0 - _t22 * 0.166666672 + (0.00833333377 - _t22 * 0.000198412701) * _t23 + _t24 * (2.75573188e-06 - _t22 * 2.50520991e-08 + (1.60577024e-10 - _t22 * 7.54937183e-13) * _t23)) * (_t10 * _t19) * _t25 + ((0.0416666679 - _t22 * 0.00138888892) * _t23 + (1.0 - _t22 * 0.5) + _t24 * (2.48015876e-05 - _t22 * 2.75573029e-07 + _t23 * (2.08744777e-09 - _t22 * 1.13046204e-11))) * _t10;
     highp float _t27 = _t26 * _t26;
-    highp float _t28 = _t7 * _t13 * _t15;
+    highp float _t28 = _t6 * _t13 * _t15;
     highp float _t29 = _t28 * _t28;
     highp float _t30 = _t29 * _t29;
-    highp float _t31 = ((0.00833333377 - 0.000198412701 * _t28) * _t29 + (1.0 - 0.166666672 * _t28) + (2.75573188e-06 - 2.50520991e-08 * _t28 + (1.60577024e-10 - 7.54937183e-13 * _t28) * _t29) * _t30) * (_t2 * _t19) * _t1 + _t2 * ((_t29 * (2.08744777e-09 - 1.13046204e-11 * _t28) + (2.48015876e-05 - _t28 * 2.75573029e-07)) * _t30 + (1.0 - _t28 * 0.5 + _t29 * (0.0416666679 - 0.00138888892 * _t28)));
+    highp float _t31 = ((0.00833333377 - 0.000198412701 * _t28) * _t29 + (1.0 - 0.166666672 * _t28) + (2.75573188e-06 - 2.50520991e-08 * _t28 + (1.60577024e-10 - 7.54937183e-13 * _t28) * _t29) * _t30) * (_t12 * _t19) * _t1 + _t12 * ((_t29 * (2.08744777e-09 - 1.13046204e-11 * _t28) + (2.48015876e-05 - _t28 * 2.75573029e-07)) * _t30 + (1.0 - _t28 * 0.5 + _t29 * (0.0416666679 - 0.00138888892 * _t28)));
     highp float _t32 = _t31 * _t31;
     highp float _t33 = _t21 + _t27 + _t32;
     highp float _t34 = (_t33 > 1.17549435e-38) ? 1.0 / _t33 : 0.0;
-    highp float _t35 = _t4 * (_t34 * sqrt(_t33));
-    highp float _t36 = _t34 * (_t7 * _t32);
+    highp float _t35 = _t3 * (_t34 * sqrt(_t33));
+    highp float _t36 = _t34 * (_t6 * _t32);
     highp float _t37 = _t36 * _t36;
     highp float _t38 = _t37 * _t37;
-    highp float _t39 = _t1 * (_t35 * _t31 * (_t38 * (_t37 * (1.60577024e-10 - 7.54937183e-13 * _t36) + (2.75573188e-06 - 2.50520991e-08 * _t36)) + (_t37 * (0.00833333377 - _t36 * 0.000198412701) + (1.0 - 0.166666672 * _t36)))) + _t2 * (((2.08744777e-09 - _t36 * 1.13046204e-11) * _t37 + (2.48015876e-05 - _t36 * 2.75573029e-07)) * _t38 + (_t37 * (0.0416666679 - 0.00138888892 * _t36) + (1.0 - _t36 * 0.5)));
+    highp float _t39 = _t1 * (_t35 * _t31 * (_t38 * (_t37 * (1.60577024e-10 - 7.54937183e-13 * _t36) + (2.75573188e-06 - 2.50520991e-08 * _t36)) + (_t37 * (0.00833333377 - _t36 * 0.000198412701) + (1.0 - 0.166666672 * _t36)))) + _t12 * (((2.08744777e-09 - _t36 * 1.13046204e-11) * _t37 + (2.48015876e-05 - _t36 * 2.75573029e-07)) * _t38 + (_t37 * (0.0416666679 - 0.00138888892 * _t36) + (1.0 - _t36 * 0.5)));
     highp float _t40 = _t39 * _t39;
-    highp float _t41 = _t34 * (_t21 * _t7);
+    highp float _t41 = _t34 * (_t21 * _t6);
     highp float _t42 = _t41 * _t41;
     highp float _t43 = _t42 * _t42;
-    highp float _t44 = _t8 * (_t43 * (2.48015876e-05 - _t41 * 2.75573029e-07 + (2.08744777e-09 - _t41 * 1.13046204e-11) * _t42) + (1.0 - _t41 * 0.5 + (0.0416666679 - _t41 * 0.00138888892) * _t42)) + _t6 * ((_t43 * ((1.60577024e-10 - _t41 * 7.54937183e-13) * _t42 + (2.75573188e-06 - _t41 * 2.50520991e-08)) + (_t42 * (0.00833333377 - _t41 * 0.000198412701) + (1.0 - _t41 * 0.166666672))) * (_t20 * _t35));
+    highp float _t44 = _t7 * (_t43 * (2.48015876e-05 - _t41 * 2.75573029e-07 + (2.08744777e-09 - _t41 * 1.13046204e-11) * _t42) + (1.0 - _t41 * 0.5 + (0.0416666679 - _t41 * 0.00138888892) * _t42)) + _t5 * ((_t43 * ((1.60577024e-10 - _t41 * 7.54937183e-13) * _t42 + (2.75573188e-06 - _t41 * 2.50520991e-08)) + (_t42 * (0.00833333377 - _t41 * 0.000198412701) + (1.0 - _t41 * 0.166666672))) * (_t20 * _t35));
     highp float _t45 = _t44 * _t44;
-    highp float _t46 = _t34 * (_t7 * _t27);
+    highp float _t46 = _t34 * (_t6 * _t27);
     highp float _t47 = _t46 * _t46;
     highp float _t48 = _t47 * _t47;
-    highp float _t49 = (1.0 - _t46 * 0.5 + (0.0416666679 - 0.00138888892 * _t46) * _t47 + (2.48015876e-05 - 2.75573029e-07 * _t46 + _t47 * (2.08744777e-09 - 1.13046204e-11 * _t46)) * _t48) * _t11 + _t26 * _t35 * (1.0 - 0.166666672 * _t46 + (0.00833333377 - 0.000198412701 * _t46) * _t47 + (2.75573188e-06 - 2.50520991e-08 * _t46 + (1.60577024e-10 - 7.54937183e-13 * _t46) * _t47) * _t48) * _t25;
+    highp float _t49 = (1.0 - _t46 * 0.5 + (0.0416666679 - 0.00138888892 * _t46) * _t47 + (2.48015876e-05 - 2.75573029e-07 * _t46 + _t47 * (2.08744777e-09 - 1.13046204e-11 * _t46)) * _t48) * _t10 + _t26 * _t35 * (1.0 - 0.166666672 * _t46 + (0.00833333377 - 0.000198412701 * _t46) * _t47 + (2.75573188e-06 - 2.50520991e-08 * _t46 + (1.60577024e-10 - 7.54937183e-13 * _t46) * _t47) * _t48) * _t25;
     highp float _t50 = _t49 * _t49;
     highp float _t51 = _t45 + (_t50 + _t40);
     highp float _t52 = (_t51 > 1.17549435e-38) ? 1.0 / _t51 : 0.0;
-    highp float _t53 = _t40 * _t7 * _t52;
+    highp float _t53 = _t40 * _t6 * _t52;
     highp float _t54 = _t53 * _t53;
     highp float _t55 = _t54 * _t54;
-    highp float _t56 = _t4 * (_t52 * sqrt(_t51));
-    highp float _t57 = _t2 * (1.0 - _t53 * 0.5 + (0.0416666679 - 0.00138888892 * _t53) * _t54 + (2.48015876e-05 - _t53 * 2.75573029e-07 + _t54 * (2.08744777e-09 - 1.13046204e-11 * _t53)) * _t55) + ((2.75573188e-06 - 2.50520991e-08 * _t53 + _t54 * (1.60577024e-10 - 7.54937183e-13 * _t53)) * _t55 + ((0.00833333377 - 0.000198412701 * _t53) * _t54 + (1.0 - 0.166666672 * _t53))) * (_t39 * _t56) * _t1;
-    highp float _t58 = _t57 * _t57;
-    highp float _t59 = _t52 * (_t45 * _t7);
-    highp float _t60 = _t59 * _t59;
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = _t8 * (1.0 - _t59 * 0.5 + _t60 * (0.0416666679 - 0.00138888892 * _t59) + ((2.08744777e-09 - _t59 * 1.13046204e-11) * _t60 + (2.48015876e-05 - _t59 * 2.75573029e-07)) * _t61) + _t6 * (_t56 * _t44 * ((2.75573188e-06 - 2.50520991e-08 * _t59 + (1.60577024e-10 - 7.54937183e-13 * _t59) * _t60) * _t61 + (1.0 - 0.166666672 * _t59 + (0.00833333377 - 0.000198412701 * _t59) * _t60)));
+    highp float _t56 = 1.0 - _t53 * 0.5 + (0.0416666679 - 0.00138888892 * _t53) * _t54 + (2.48015876e-05 - _t53 * 2.75573029e-07 + _t54 * (2.08744777e-09 - 1.13046204e-11 * _t53)) * _t55;
+    highp float _t57 = _t3 * (_t52 * sqrt(_t51));
+    highp float _t58 = _t39 * _t57;
+    highp float _t59 = ((2.75573188e-06 - 2.50520991e-08 * _t53 + _t54 * (1.60577024e-10 - 7.54937183e-13 * _t53)) * _t55 + ((0.00833333377 - 0.000198412701 * _t53) * _t54 + (1.0 - 0.166666672 * _t53))) * _t58;
+    highp float _t60 = _t1 * _t56 - _t59 * _t12;
+    highp float _t61 = _t12 * _t56 + _t59 * _t1;
+    highp float _t62 = _t52 * (_t45 * _t6);
     highp float _t63 = _t62 * _t62;
-    highp float _t64 = _t50 * _t7 * _t52;
-    highp float _t65 = _t64 * _t64;
-    highp float _t66 = _t65 * _t65;
-    highp float _t67 = (_t66 * (2.48015876e-05 - _t64 * 2.75573029e-07 + _t65 * (2.08744777e-09 - _t64 * 1.13046204e-11)) + (1.0 - _t64 * 0.5 + _t65 * (0.0416666679 - 0.00138888892 * _t64))) * _t11 + (1.0 - 0.166666672 * _t64 + _t65 * (0.00833333377 - _t64 * 0.000198412701) + _t66 * (_t65 * (1.60577024e-10 - 7.54937183e-13 * _t64) + (2.75573188e-06 - 2.50520991e-08 * _t64))) * (_t49 * _t56) * _t25;
-    highp float _t68 = _t67 * _t67;
-    highp float _t69 = _t58 + _t63 + _t68;
-    highp float _t70 = (_t69 > 1.17549435e-38) ? 1.0 / _t69 : 0.0;
-    highp float _t71 = _t58 * _t7 * _t70;
-    highp float _t72 = _t71 * _t71;
-    highp float _t73 = _t72 * _t72;
-    highp float _t74 = _t4 * (_t70 * sqrt(_t69));
-    highp float _t75 = _t70 * (_t68 * _t7);
-    highp float _t76 = _t75 * _t75;
-    highp float _t77 = _t76 * _t76;
-    highp float _t78 = _t70 * (_t63 * _t7);
-    highp float _t79 = _t78 * _t78;
-    highp float _t80 = _t79 * _t79;
-    return _t1 * (1.0 - _t71 * 0.5 + (0.0416666679 - _t71 * 0.00138888892) * _t72 + _t73 * (_t72 * (2.08744777e-09 - _t71 * 1.13046204e-11) + (2.48015876e-05 - _t71 * 2.75573029e-07))) - _t2 * (_t74 * _t57 * (((1.60577024e-10 - _t71 * 7.54937183e-13) * _t72 + (2.75573188e-06 - _t71 * 2.50520991e-08)) * _t73 + (1.0 - _t71 * 0.166666672 + _t72 * (0.00833333377 - _t71 * 0.000198412701)))) + ((((2.08744777e-09 - _t75 * 1.13046204e-11) * _t76 + (2.48015876e-05 - _t75 * 2.75573029e-07)) * _t77 + (_t76 * (0.0416666679 - _t75 * 0.00138888892) + (1.0 - _t75 * 0.5))) * _t25 - _t74 * _t67 * (_t77 * ((1.60577024e-10 - _t75 * 7.54937183e-13) * _t76 + (2.75573188e-06 - _t75 * 2.50520991e-08)) + (1.0 - _t75 * 0.166666672 + _t76 * (0.00833333377 - _t75 * 0.000198412701))) * _t11 + ((((2.08744777e-09 - 1.13046204e-11 * _t78) * _t79 + (2.48015876e-05 - _t78 * 2.75573029e-07)) * _t80 + (_t79 * (0.0416666679 - 0.00138888892 * _t78) + (1.0 - _t78 * 0.5))) * _t6 - _t62 * _t74 * ((0.00833333377 - 0.000198412701 * _t78) * _t79 + (1.0 - 0.166666672 * _t78) + (2.75573188e-06 - 2.50520991e-08 * _t78 + (1.60577024e-10 - 7.54937183e-13 * _t78) * _t79) * _t80) * _t8));
+    highp float _t64 = _t63 * _t63;
+    highp float _t65 = 1.0 - _t62 * 0.5 + _t63 * (0.0416666679 - 0.00138888892 * _t62) + ((2.08744777e-09 - _t62 * 1.13046204e-11) * _t63 + (2.48015876e-05 - _t62 * 2.75573029e-07)) * _t64;
+    highp float _t66 = _t57 * _t44;
+    highp float _t67 = _t66 * ((2.75573188e-06 - 2.50520991e-08 * _t62 + (1.60577024e-10 - 7.54937183e-13 * _t62) * _t63) * _t64 + (1.0 - 0.166666672 * _t62 + (0.00833333377 - 0.000198412701 * _t62) * _t63));
+    highp float _t68 = _t7 * _t65 + _t5 * _t67;
+    highp float _t69 = _t50 * _t6 * _t52;
+    highp float _t70 = _t69 * _t69;
+    highp float _t71 = _t70 * _t70;
+    highp float _t72 = _t71 * (2.48015876e-05 - _t69 * 2.75573029e-07 + _t70 * (2.08744777e-09 - _t69 * 1.13046204e-11)) + (1.0 - _t69 * 0.5 + _t70 * (0.0416666679 - 0.00138888892 * _t69));
+    highp float _t73 = _t49 * _t57;
+    highp float _t74 = (1.0 - 0.166666672 * _t69 + _t70 * (0.00833333377 - _t69 * 0.000198412701) + _t71 * (_t70 * (1.60577024e-10 - 7.54937183e-13 * _t69) + (2.75573188e-06 - 2.50520991e-08 * _t69))) * _t73;
+    highp float _t75 = _t72 * _t10 + _t74 * _t25;
+    highp float _t76 = _t61 * _t61 + _t68 * _t68 + _t75 * _t75;
+    highp float _t77 = _t3 * (((_t76 > 1.17549435e-38) ? 1.0 / _t76 : 0.0) * sqrt(_t76));
+    highp float _t78 = _t77 * _t61 - _t58;
+    highp float _t79 = _t72 * _t25 - _t74 * _t10;
+    highp float _t80 = _t77 * _t75 - _t73;
+    highp float _t81 = _t5 * _t65 - _t7 * _t67;
+    highp float _t82 = _t68 * _t77 - _t66;
+    highp float _t83 = -((_t60 * _t78 * 0.5 + _t61) * _t78 + (_t79 * _t80 * 0.5 + _t75) * _t80 + (_t68 + _t81 * _t82 * 0.5) * _t82 - (_t60 + (_t79 + _t81)));
+    highp float _t84 = 1.73205256 * abs(_t3);
+    highp float _t85 = _t1 + _t5 + _t25;
+    highp float _t86 = _t84 + _t85;
+    highp float _t87 = _t85 - _t84;
+    return (_t83 <= _t86) ? ((_t87 <= _t83) ? _t83 : _t87) : _t86;
 }
 
-// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 993.
+// phi(p, t/2) * phi(p, -t/2): negative inside the wall of total thickness t. Total ops: 851.
 highp float schwarzp_proj_o8_shell(highp vec3 p, highp float t)
 {
-    highp float _t0 = 6.28318548 * p.x;
-    highp float _t1 = schwarzp_proj_o8_cos(_t0);
-    highp float _t2 = 6.28318548 * (t * 0.5);
-    highp float _t3 = (_t2 <= 1.0) ? (((-1.0) <= _t2) ? _t2 : (-1.0)) : 1.0;
-    highp float _t4 = _t3 * _t3;
-    highp float _t5 = 6.28318548 * p.y;
-    highp float _t6 = schwarzp_proj_o8_cos(_t5);
-    highp float _t7 = p.z * 6.28318548;
+    highp float _t0 = 6.28318548 * (t * 0.5);
+    highp float _t1 = (_t0 <= 1.0) ? (((-1.0) <= _t0) ? _t0 : (-1.0)) : 1.0;
+    highp float _t2 = _t1 * _t1;
+    highp float _t3 = 6.28318548 * p.y;
+    highp float _t4 = schwarzp_proj_o8_cos(_t3);
+    highp float _t5 = p.z * 6.28318548;
+    highp float _t6 = schwarzp_proj_o8_sin(_t5);
+    highp float _t7 = 6.28318548 * p.x;
     highp float _t8 = schwarzp_proj_o8_sin(_t7);
-    highp float _t9 = schwarzp_proj_o8_sin(_t0);
-    highp float _t10 = _t9 * _t9;
-    highp float _t11 = _t8 * _t8;
-    highp float _t12 = schwarzp_proj_o8_sin(_t5);
-    highp float _t13 = _t12 * _t12;
-    highp float _t14 = _t10 + _t11 + _t13;
-    highp float _t15 = (_t14 > 1.17549435e-38) ? 1.0 / _t14 : 0.0;
-    highp float _t16 = _t15 * (_t4 * _t11);
+    highp float _t9 = _t8 * _t8;
+    highp float _t10 = _t6 * _t6;
+    highp float _t11 = schwarzp_proj_o8_sin(_t3);
+    highp float _t12 = _t11 * _t11;
+    highp float _t13 = _t9 + _t10 + _t12;
+    highp float _t14 = (_t13 > 1.17549435e-38) ? 1.0 / _t13 : 0.0;
+    highp float _t15 = _t14 * (_t2 * _t10);
+    highp float _t16 = _t15 * _t15;
     highp float _t17 = _t16 * _t16;
-    highp float _t18 = _t17 * _t17;
-    highp float _t19 = schwarzp_proj_o8_cos(_t7);
-    highp float _t20 = _t15 * sqrt(_t14);
-    highp float _t21 = _t20 * _t3;
-    highp float _t22 = _t8 * (1.0 - _t16 * 0.5 + _t17 * (0.0416666679 - _t16 * 0.00138888892) + _t18 * (2.48015876e-05 - _t16 * 2.75573029e-07 + (2.08744777e-09 - _t16 * 1.13046204e-11) * _t17)) + _t19 * (((0.00833333377 - _t16 * 0.000198412701) * _t17 + (1.0 - _t16 * 0.166666672) + _t18 * (2.75573188e-06 - _t16 * 2.50520991e-08 + (1.60577024e-10 - _t16 * 7.54937183e-13) * _t17)) * (_t8 * _t21));
-    highp float _t23 = _t22 * _t22;
-    highp float _t24 = _t15 * (_t4 * _t13);
+    highp float _t18 = schwarzp_proj_o8_cos(_t5);
+    highp float _t19 = _t14 * sqrt(_t13);
+    highp float _t20 = _t19 * _t1;
+    highp float _t21 = _t6 * (1.0 - _t15 * 0.5 + _t16 * (0.0416666679 - _t15 * 0.00138888892) + _t17 * (2.48015876e-05 - _t15 * 2.75573029e-07 + (2.08744777e-09 - _t15 * 1.13046204e-11) * _t16)) + _t18 * (((0.00833333377 - _t15 * 0.000198412701) * _t16 + (1.0 - _t15 * 0.166666672) + _t17 * (2.75573188e-06 - _t15 * 2.50520991e-08 + (1.60577024e-10 - _t15 * 7.54937183e-13) * _t16)) * (_t6 * _t20));
+    highp float _t22 = _t21 * _t21;
+    highp float _t23 = _t14 * (_t2 * _t12);
+    highp float _t24 = _t23 * _t23;
     highp float _t25 = _t24 * _t24;
-    highp float _t26 = _t25 * _t25;
-    highp float _t27 = (_t26 * ((2.08744777e-09 - _t24 * 1.13046204e-11) * _t25 + (2.48015876e-05 - _t24 * 2.75573029e-07)) + (1.0 - _t24 * 0.5 + _t25 * (0.0416666679 - 0.00138888892 * _t24))) * _t12 + _t6 * (_t12 * _t21 * (_t25 * (0.00833333377 - _t24 * 0.000198412701) + (1.0 - _t24 * 0.166666672) + ((1.60577024e-10 - _t24 * 7.54937183e-13) * _t25 + (2.75573188e-06 - _t24 * 2.50520991e-08)) * _t26));
-    highp float _t28 = _t27 * _t27;
-    highp float _t29 = _t15 * (_t4 * _t10);
+    highp float _t26 = (_t25 * ((2.08744777e-09 - _t23 * 1.13046204e-11) * _t24 + (2.48015876e-05 - _t23 * 2.75573029e-07)) + (1.0 - _t23 * 0.5 + _t24 * (0.0416666679 - 0.00138888892 * _t23))) * _t11 + _t4 * (_t11 * _t20 * (_t24 * (0.00833333377 - _t23 * 0.000198412701) + (1.0 - _t23 * 0.166666672) + ((1.60577024e-10 - _t23 * 7.54937183e-13) * _t24 + (2.75573188e-06 - _t23 * 2.50520991e-08)) * _t25));
+    highp float _t27 = _t26 * _t26;
+    highp float _t28 = _t14 * (_t2 * _t9);
+    highp float _t29 = _t28 * _t28;
     highp float _t30 = _t29 * _t29;
-    highp float _t31 = _t30 * _t30;
-    highp float _t32 = ((0.0416666679 - _t29 * 0.00138888892) * _t30 + (1.0 - _t29 * 0.5) + _t31 * (2.48015876e-05 - _t29 * 2.75573029e-07 + (2.08744777e-09 - _t29 * 1.13046204e-11) * _t30)) * _t9 + _t21 * _t9 * (1.0 - _t29 * 0.166666672 + (0.00833333377 - _t29 * 0.000198412701) * _t30 + (_t30 * (1.60577024e-10 - _t29 * 7.54937183e-13) + (2.75573188e-06 - _t29 * 2.50520991e-08)) * _t31) * _t1;
+    highp float _t31 = schwarzp_proj_o8_cos(_t7);
+    highp float _t32 = ((0.0416666679 - _t28 * 0.00138888892) * _t29 + (1.0 - _t28 * 0.5) + _t30 * (2.48015876e-05 - _t28 * 2.75573029e-07 + (2.08744777e-09 - _t28 * 1.13046204e-11) * _t29)) * _t8 + _t20 * _t8 * (1.0 - _t28 * 0.166666672 + (0.00833333377 - _t28 * 0.000198412701) * _t29 + (_t29 * (1.60577024e-10 - _t28 * 7.54937183e-13) + (2.75573188e-06 - _t28 * 2.50520991e-08)) * _t30) * _t31;
     highp float _t33 = _t32 * _t32;
-    highp float _t34 = _t23 + _t28 + _t33;
+    highp float _t34 = _t22 + _t27 + _t33;
     highp float _t35 = (_t34 > 1.17549435e-38) ? 1.0 / _t34 : 0.0;
-    highp float _t36 = _t35 * (_t4 * _t28);
+    highp float _t36 = _t35 * (_t2 * _t27);
     highp float _t37 = _t36 * _t36;
     highp float _t38 = _t37 * _t37;
-    highp float _t39 = _t35 * sqrt(_t34) * _t3;
-    highp float _t40 = _t6 * ((_t38 * (2.75573188e-06 - 2.50520991e-08 * _t36 + _t37 * (1.60577024e-10 - 7.54937183e-13 * _t36)) + (1.0 - 0.166666672 * _t36 + _t37 * (0.00833333377 - _t36 * 0.000198412701))) * (_t27 * _t39)) + (1.0 - _t36 * 0.5 + (0.0416666679 - 0.00138888892 * _t36) * _t37 + (_t37 * (2.08744777e-09 - _t36 * 1.13046204e-11) + (2.48015876e-05 - _t36 * 2.75573029e-07)) * _t38) * _t12;
+    highp float _t39 = _t35 * sqrt(_t34) * _t1;
+    highp float _t40 = _t4 * ((_t38 * (2.75573188e-06 - 2.50520991e-08 * _t36 + _t37 * (1.60577024e-10 - 7.54937183e-13 * _t36)) + (1.0 - 0.166666672 * _t36 + _t37 * (0.00833333377 - _t36 * 0.000198412701))) * (_t26 * _t39)) + (1.0 - _t36 * 0.5 + (0.0416666679 - 0.00138888892 * _t36) * _t37 + (_t37 * (2.08744777e-09 - _t36 * 1.13046204e-11) + (2.48015876e-05 - _t36 * 2.75573029e-07)) * _t38) * _t11;
     highp float _t41 = _t40 * _t40;
-    highp float _t42 = _t35 * (_t4 * _t23);
+    highp float _t42 = _t35 * (_t2 * _t22);
     highp float _t43 = _t42 * _t42;
     highp float _t44 = _t43 * _t43;
-    highp float _t45 = _t39 * _t22 * ((0.00833333377 - _t42 * 0.000198412701) * _t43 + (1.0 - 0.166666672 * _t42) + (2.75573188e-06 - 2.50520991e-08 * _t42 + (1.60577024e-10 - 7.54937183e-13 * _t42) * _t43) * _t44) * _t19 + _t8 * ((2.48015876e-05 - _t42 * 2.75573029e-07 + (2.08744777e-09 - _t42 * 1.13046204e-11) * _t43) * _t44 + (1.0 - _t42 * 0.5 + _t43 * (0.0416666679 - 0.00138888892 * _t42)));
+    highp float _t45 = _t39 * _t21 * ((0.00833333377 - _t42 * 0.000198412701) * _t43 + (1.0 - 0.166666672 * _t42) + (2.75573188e-06 - 2.50520991e-08 * _t42 + (1.60577024e-10 - 7.54937183e-13 * _t42) * _t43) * _t44) * _t18 + _t6 * ((2.48015876e-05 - _t42 * 2.75573029e-07 + (2.08744777e-09 - _t42 * 1.13046204e-11) * _t43) * _t44 + (1.0 - _t42 * 0.5 + _t43 * (0.0416666679 - 0.00138888892 * _t42)));
     highp float _t46 = _t45 * _t45;
-    highp float _t47 = _t35 * (_t4 * _t33);
+    highp float _t47 = _t35 * (_t2 * _t33);
     highp float _t48 = _t47 * _t47;
     highp float _t49 = _t48 * _t48;
-    highp float _t50 = _t39 * _t32 * (1.0 - _t47 * 0.166666672 + _t48 * (0.00833333377 - _t47 * 0.000198412701) + _t49 * (2.75573188e-06 - _t47 * 2.50520991e-08 + (1.60577024e-10 - _t47 * 7.54937183e-13) * _t48)) * _t1 + (_t49 * ((2.08744777e-09 - _t47 * 1.13046204e-11) * _t48 + (2.48015876e-05 - _t47 * 2.75573029e-07)) + (_t48 * (0.0416666679 - _t47 * 0.00138888892) + (1.0 - _t47 * 0.5))) * _t9;
+    highp float _t50 = _t39 * _t32 * (1.0 - _t47 * 0.166666672 + _t48 * (0.00833333377 - _t47 * 0.000198412701) + _t49 * (2.75573188e-06 - _t47 * 2.50520991e-08 + (1.60577024e-10 - _t47 * 7.54937183e-13) * _t48)) * _t31 + (_t49 * ((2.08744777e-09 - _t47 * 1.13046204e-11) * _t48 + (2.48015876e-05 - _t47 * 2.75573029e-07)) + (_t48 * (0.0416666679 - _t47 * 0.00138888892) + (1.0 - _t47 * 0.5))) * _t8;
     highp float _t51 = _t50 * _t50;
     highp float _t52 = _t46 + (_t51 + _t41);
     highp float _t53 = (_t52 > 1.17549435e-38) ? 1.0 / _t52 : 0.0;
-    highp float _t54 = _t4 * _t41 * _t53;
+    highp float _t54 = _t2 * _t41 * _t53;
     highp float _t55 = _t54 * _t54;
     highp float _t56 = _t55 * _t55;
-    highp float _t57 = _t3 * (_t53 * sqrt(_t52));
-    highp float _t58 = (_t56 * (_t55 * (2.08744777e-09 - _t54 * 1.13046204e-11) + (2.48015876e-05 - _t54 * 2.75573029e-07)) + ((0.0416666679 - 0.00138888892 * _t54) * _t55 + (1.0 - _t54 * 0.5))) * _t12 + _t6 * ((_t56 * ((1.60577024e-10 - 7.54937183e-13 * _t54) * _t55 + (2.75573188e-06 - 2.50520991e-08 * _t54)) + (_t55 * (0.00833333377 - _t54 * 0.000198412701) + (1.0 - 0.166666672 * _t54))) * (_t57 * _t40));
-    highp float _t59 = _t58 * _t58;
-    highp float _t60 = _t4 * _t46 * _t53;
-    highp float _t61 = _t60 * _t60;
-    highp float _t62 = _t61 * _t61;
-    highp float _t63 = _t19 * ((_t62 * (_t61 * (1.60577024e-10 - 7.54937183e-13 * _t60) + (2.75573188e-06 - 2.50520991e-08 * _t60)) + (1.0 - 0.166666672 * _t60 + _t61 * (0.00833333377 - 0.000198412701 * _t60))) * (_t57 * _t45)) + _t8 * (_t61 * (0.0416666679 - 0.00138888892 * _t60) + (1.0 - _t60 * 0.5) + (2.48015876e-05 - _t60 * 2.75573029e-07 + _t61 * (2.08744777e-09 - 1.13046204e-11 * _t60)) * _t62);
+    highp float _t57 = _t56 * (_t55 * (2.08744777e-09 - _t54 * 1.13046204e-11) + (2.48015876e-05 - _t54 * 2.75573029e-07)) + ((0.0416666679 - 0.00138888892 * _t54) * _t55 + (1.0 - _t54 * 0.5));
+    highp float _t58 = _t1 * (_t53 * sqrt(_t52));
+    highp float _t59 = _t58 * _t40;
+    highp float _t60 = (_t56 * ((1.60577024e-10 - 7.54937183e-13 * _t54) * _t55 + (2.75573188e-06 - 2.50520991e-08 * _t54)) + (_t55 * (0.00833333377 - _t54 * 0.000198412701) + (1.0 - 0.166666672 * _t54))) * _t59;
+    highp float _t61 = _t57 * _t4 - _t11 * _t60;
+    highp float _t62 = _t57 * _t11 + _t4 * _t60;
+    highp float _t63 = _t2 * _t46 * _t53;
     highp float _t64 = _t63 * _t63;
-    highp float _t65 = _t4 * _t51 * _t53;
-    highp float _t66 = _t65 * _t65;
-    highp float _t67 = _t66 * _t66;
-    highp float _t68 = _t57 * _t50 * (1.0 - _t65 * 0.166666672 + (0.00833333377 - _t65 * 0.000198412701) * _t66 + _t67 * (2.75573188e-06 - _t65 * 2.50520991e-08 + _t66 * (1.60577024e-10 - _t65 * 7.54937183e-13))) * _t1 + _t9 * (_t67 * (_t66 * (2.08744777e-09 - _t65 * 1.13046204e-11) + (2.48015876e-05 - _t65 * 2.75573029e-07)) + (_t66 * (0.0416666679 - _t65 * 0.00138888892) + (1.0 - _t65 * 0.5)));
-    highp float _t69 = _t68 * _t68;
-    highp float _t70 = _t59 + _t64 + _t69;
-    highp float _t71 = (_t70 > 1.17549435e-38) ? 1.0 / _t70 : 0.0;
-    highp float _t72 = _t71 * (_t4 * _t69);
+    highp float _t65 = _t64 * _t64;
+    highp float _t66 = _t58 * _t45;
+    highp float _t67 = (_t65 * (_t64 * (1.60577024e-10 - 7.54937183e-13 * _t63) + (2.75573188e-06 - 2.50520991e-08 * _t63)) + (1.0 - 0.166666672 * _t63 + _t64 * (0.00833333377 - 0.000198412701 * _t63))) * _t66;
+    highp float _t68 = _t64 * (0.0416666679 - 0.00138888892 * _t63) + (1.0 - _t63 * 0.5) + (2.48015876e-05 - _t63 * 2.75573029e-07 + _t64 * (2.08744777e-09 - 1.13046204e-11 * _t63)) * _t65;
+    highp float _t69 = _t18 * _t67 + _t6 * _t68;
+    highp float _t70 = _t58 * _t50;
+    highp float _t71 = _t2 * _t51 * _t53;
+    highp float _t72 = _t71 * _t71;
     highp float _t73 = _t72 * _t72;
-    highp float _t74 = _t73 * _t73;
-    highp float _t75 = _t3 * (_t71 * sqrt(_t70));
-    highp float _t76 = _t71 * (_t4 * _t59);
-    highp float _t77 = _t76 * _t76;
-    highp float _t78 = _t77 * _t77;
-    highp float _t79 = _t71 * (_t4 * _t64);
-    highp float _t80 = _t79 * _t79;
-    highp float _t81 = _t80 * _t80;
-    highp float _t82 = -_t2;
-    highp float _t83 = (_t82 <= 1.0) ? (((-1.0) <= _t82) ? _t82 : (-1.0)) : 1.0;
-    highp float _t84 = _t83 * _t83;
-    highp float _t85 = _t84 * _t13 * _t15;
-    highp float _t86 = _t85 * _t85;
-    highp float _t87 = _t86 * _t86;
-    highp float _t88 = _t20 * _t83;
-    highp float _t89 = _t12 * (_t86 * (0.0416666679 - 0.00138888892 * _t85) + (1.0 - _t85 * 0.5) + _t87 * (_t86 * (2.08744777e-09 - _t85 * 1.13046204e-11) + (2.48015876e-05 - _t85 * 2.75573029e-07))) + _t6 * (_t88 * _t12 * (1.0 - 0.166666672 * _t85 + _t86 * (0.00833333377 - _t85 * 0.000198412701) + _t87 * (2.75573188e-06 - 2.50520991e-08 * _t85 + _t86 * (1.60577024e-10 - 7.54937183e-13 * _t85))));
-    highp float _t90 = _t89 * _t89;
-    highp float _t91 = _t15 * (_t84 * _t11);
-    highp float _t92 = _t91 * _t91;
+    highp float _t74 = _t70 * (1.0 - _t71 * 0.166666672 + (0.00833333377 - _t71 * 0.000198412701) * _t72 + _t73 * (2.75573188e-06 - _t71 * 2.50520991e-08 + _t72 * (1.60577024e-10 - _t71 * 7.54937183e-13)));
+    highp float _t75 = _t73 * (_t72 * (2.08744777e-09 - _t71 * 1.13046204e-11) + (2.48015876e-05 - _t71 * 2.75573029e-07)) + (_t72 * (0.0416666679 - _t71 * 0.00138888892) + (1.0 - _t71 * 0.5));
+    highp float _t76 = _t74 * _t31 + _t8 * _t75;
+    highp float _t77 = _t62 * _t62 + _t69 * _t69 + _t76 * _t76;
+    highp float _t78 = _t1 * (((_t77 > 1.17549435e-38) ? 1.0 / _t77 : 0.0) * sqrt(_t77));
+    highp float _t79 = _t62 * _t78 - _t59;
+    highp float _t80 = _t31 * _t75 - _t74 * _t8;
+    highp float _t81 = _t76 * _t78 - _t70;
+    highp float _t82 = _t18 * _t68 - _t6 * _t67;
+    highp float _t83 = _t69 * _t78 - _t66;
+    highp float _t84 = -((0.5 * (_t61 * _t79) + _t62) * _t79 + ((_t76 + _t80 * _t81 * 0.5) * _t81 + (_t69 + _t82 * _t83 * 0.5) * _t83) - (_t80 + (_t82 + _t61)));
+    highp float _t85 = _t18 + _t4 + _t31;
+    highp float _t86 = 1.73205256 * abs(_t1);
+    highp float _t87 = _t85 + _t86;
+    highp float _t88 = _t85 - _t86;
+    highp float _t89 = -_t0;
+    highp float _t90 = (_t89 <= 1.0) ? (((-1.0) <= _t89) ? _t89 : (-1.0)) : 1.0;
+    highp float _t91 = _t90 * _t90;
+    highp float _t92 = _t91 * _t12 * _t14;
     highp float _t93 = _t92 * _t92;
-    highp float _t94 = _t19 * (_t8 * _t88 * (_t93 * (2.75573188e-06 - 2.50520991e-08 * _t91 + (1.60577024e-10 - 7.54937183e-13 * _t91) * _t92) + ((0.00833333377 - 0.000198412701 * _t91) * _t92 + (1.0 - 0.166666672 * _t91)))) + (1.0 - 0.5 * _t91 + _t92 * (0.0416666679 - 0.00138888892 * _t91) + (2.48015876e-05 - 2.75573029e-07 * _t91 + (2.08744777e-09 - 1.13046204e-11 * _t91) * _t92) * _t93) * _t8;
-    highp float _t95 = _t94 * _t94;
-    highp float _t96 = _t84 * _t10 * _t15;
+    highp float _t94 = _t93 * _t93;
+    highp float _t95 = _t19 * _t90;
+    highp float _t96 = _t11 * (_t93 * (0.0416666679 - 0.00138888892 * _t92) + (1.0 - _t92 * 0.5) + _t94 * (_t93 * (2.08744777e-09 - _t92 * 1.13046204e-11) + (2.48015876e-05 - _t92 * 2.75573029e-07))) + _t4 * (_t95 * _t11 * (1.0 - 0.166666672 * _t92 + _t93 * (0.00833333377 - _t92 * 0.000198412701) + _t94 * (2.75573188e-06 - 2.50520991e-08 * _t92 + _t93 * (1.60577024e-10 - 7.54937183e-13 * _t92))));
     highp float _t97 = _t96 * _t96;
-    highp float _t98 = _t97 * _t97;
-    highp float _t99 = ((2.75573188e-06 - 2.50520991e-08 * _t96 + (1.60577024e-10 - 7.54937183e-13 * _t96) * _t97) * _t98 + (_t97 * (0.00833333377 - 0.000198412701 * _t96) + (1.0 - 0.166666672 * _t96))) * (_t88 * _t9) * _t1 + ((2.48015876e-05 - _t96 * 2.75573029e-07 + _t97 * (2.08744777e-09 - _t96 * 1.13046204e-11)) * _t98 + (1.0 - _t96 * 0.5 + _t97 * (0.0416666679 - 0.00138888892 * _t96))) * _t9;
+    highp float _t98 = _t14 * (_t91 * _t10);
+    highp float _t99 = _t98 * _t98;
     highp float _t100 = _t99 * _t99;
-    highp float _t101 = _t90 + _t95 + _t100;
-    highp float _t102 = (_t101 > 1.17549435e-38) ? 1.0 / _t101 : 0.0;
-    highp float _t103 = _t83 * (_t102 * sqrt(_t101));
-    highp float _t104 = _t102 * (_t84 * _t100);
+    highp float _t101 = _t18 * (_t6 * _t95 * (_t100 * (2.75573188e-06 - 2.50520991e-08 * _t98 + (1.60577024e-10 - 7.54937183e-13 * _t98) * _t99) + ((0.00833333377 - 0.000198412701 * _t98) * _t99 + (1.0 - 0.166666672 * _t98)))) + (1.0 - 0.5 * _t98 + _t99 * (0.0416666679 - 0.00138888892 * _t98) + (2.48015876e-05 - 2.75573029e-07 * _t98 + (2.08744777e-09 - 1.13046204e-11 * _t98) * _t99) * _t100) * _t6;
+    highp float _t102 = _t101 * _t101;
+    highp float _t103 = _t91 * _t9 * _t14;
+    highp float _t104 = _t103 * _t103;
     highp float _t105 = _t104 * _t104;
-    highp float _t106 = _t105 * _t105;
-    highp float _t107 = _t103 * _t99 * (1.0 - 0.166666672 * _t104 + (0.00833333377 - _t104 * 0.000198412701) * _t105 + (2.75573188e-06 - 2.50520991e-08 * _t104 + (1.60577024e-10 - 7.54937183e-13 * _t104) * _t105) * _t106) * _t1 + (((2.08744777e-09 - _t104 * 1.13046204e-11) * _t105 + (2.48015876e-05 - _t104 * 2.75573029e-07)) * _t106 + (1.0 - _t104 * 0.5 + (0.0416666679 - 0.00138888892 * _t104) * _t105)) * _t9;
-    highp float _t108 = _t107 * _t107;
-    highp float _t109 = _t102 * (_t84 * _t90);
-    highp float _t110 = _t109 * _t109;
-    highp float _t111 = _t110 * _t110;
-    highp float _t112 = _t12 * (_t111 * (2.48015876e-05 - _t109 * 2.75573029e-07 + _t110 * (2.08744777e-09 - _t109 * 1.13046204e-11)) + (1.0 - _t109 * 0.5 + _t110 * (0.0416666679 - _t109 * 0.00138888892))) + _t6 * ((_t111 * ((1.60577024e-10 - _t109 * 7.54937183e-13) * _t110 + (2.75573188e-06 - _t109 * 2.50520991e-08)) + ((0.00833333377 - _t109 * 0.000198412701) * _t110 + (1.0 - _t109 * 0.166666672))) * (_t103 * _t89));
+    highp float _t106 = ((2.75573188e-06 - 2.50520991e-08 * _t103 + (1.60577024e-10 - 7.54937183e-13 * _t103) * _t104) * _t105 + (_t104 * (0.00833333377 - 0.000198412701 * _t103) + (1.0 - 0.166666672 * _t103))) * (_t95 * _t8) * _t31 + ((2.48015876e-05 - _t103 * 2.75573029e-07 + _t104 * (2.08744777e-09 - _t103 * 1.13046204e-11)) * _t105 + (1.0 - _t103 * 0.5 + _t104 * (0.0416666679 - 0.00138888892 * _t103))) * _t8;
+    highp float _t107 = _t106 * _t106;
+    highp float _t108 = _t97 + _t102 + _t107;
+    highp float _t109 = (_t108 > 1.17549435e-38) ? 1.0 / _t108 : 0.0;
+    highp float _t110 = _t90 * (_t109 * sqrt(_t108));
+    highp float _t111 = _t109 * (_t91 * _t107);
+    highp float _t112 = _t111 * _t111;
     highp float _t113 = _t112 * _t112;
-    highp float _t114 = _t102 * (_t84 * _t95);
+    highp float _t114 = _t110 * _t106 * (1.0 - 0.166666672 * _t111 + (0.00833333377 - _t111 * 0.000198412701) * _t112 + (2.75573188e-06 - 2.50520991e-08 * _t111 + (1.60577024e-10 - 7.54937183e-13 * _t111) * _t112) * _t113) * _t31 + (((2.08744777e-09 - _t111 * 1.13046204e-11) * _t112 + (2.48015876e-05 - _t111 * 2.75573029e-07)) * _t113 + (1.0 - _t111 * 0.5 + (0.0416666679 - 0.00138888892 * _t111) * _t112)) * _t8;
     highp float _t115 = _t114 * _t114;
-    highp float _t116 = _t115 * _t115;
-    highp float _t117 = _t94 * _t103 * ((2.75573188e-06 - 2.50520991e-08 * _t114 + _t115 * (1.60577024e-10 - 7.54937183e-13 * _t114)) * _t116 + (_t115 * (0.00833333377 - 0.000198412701 * _t114) + (1.0 - 0.166666672 * _t114))) * _t19 + _t8 * ((2.48015876e-05 - 2.75573029e-07 * _t114 + _t115 * (2.08744777e-09 - 1.13046204e-11 * _t114)) * _t116 + ((0.0416666679 - 0.00138888892 * _t114) * _t115 + (1.0 - _t114 * 0.5)));
+    highp float _t116 = _t109 * (_t91 * _t97);
+    highp float _t117 = _t116 * _t116;
     highp float _t118 = _t117 * _t117;
-    highp float _t119 = _t108 + _t113 + _t118;
-    highp float _t120 = (_t119 > 1.17549435e-38) ? 1.0 / _t119 : 0.0;
-    highp float _t121 = _t120 * (_t84 * _t108);
+    highp float _t119 = _t11 * (_t118 * (2.48015876e-05 - _t116 * 2.75573029e-07 + _t117 * (2.08744777e-09 - _t116 * 1.13046204e-11)) + (1.0 - _t116 * 0.5 + _t117 * (0.0416666679 - _t116 * 0.00138888892))) + _t4 * ((_t118 * ((1.60577024e-10 - _t116 * 7.54937183e-13) * _t117 + (2.75573188e-06 - _t116 * 2.50520991e-08)) + ((0.00833333377 - _t116 * 0.000198412701) * _t117 + (1.0 - _t116 * 0.166666672))) * (_t110 * _t96));
+    highp float _t120 = _t119 * _t119;
+    highp float _t121 = _t109 * (_t91 * _t102);
     highp float _t122 = _t121 * _t121;
     highp float _t123 = _t122 * _t122;
-    highp float _t124 = _t120 * sqrt(_t119) * _t83;
-    highp float _t125 = _t1 * (((0.00833333377 - _t121 * 0.000198412701) * _t122 + (1.0 - 0.166666672 * _t121) + (2.75573188e-06 - 2.50520991e-08 * _t121 + (1.60577024e-10 - 7.54937183e-13 * _t121) * _t122) * _t123) * (_t107 * _t124)) + (_t123 * (2.48015876e-05 - _t121 * 2.75573029e-07 + (2.08744777e-09 - _t121 * 1.13046204e-11) * _t122) + (1.0 - _t121 * 0.5 + _t122 * (0.0416666679 - 0.00138888892 * _t121))) * _t9;
-    highp float _t126 = _t125 * _t125;
-    highp float _t127 = _t84 * _t113 * _t120;
-    highp float _t128 = _t127 * _t127;
+    highp float _t124 = _t101 * _t110 * ((2.75573188e-06 - 2.50520991e-08 * _t121 + _t122 * (1.60577024e-10 - 7.54937183e-13 * _t121)) * _t123 + (_t122 * (0.00833333377 - 0.000198412701 * _t121) + (1.0 - 0.166666672 * _t121))) * _t18 + _t6 * ((2.48015876e-05 - 2.75573029e-07 * _t121 + _t122 * (2.08744777e-09 - 1.13046204e-11 * _t121)) * _t123 + ((0.0416666679 - 0.00138888892 * _t121) * _t122 + (1.0 - _t121 * 0.5)));
+    highp float _t125 = _t124 * _t124;
+    highp float _t126 = _t115 + _t120 + _t125;
+    highp float _t127 = (_t126 > 1.17549435e-38) ? 1.0 / _t126 : 0.0;
+    highp float _t128 = _t127 * (_t91 * _t125);
     highp float _t129 = _t128 * _t128;
-    highp float _t130 = ((0.00833333377 - 0.000198412701 * _t127) * _t128 + (1.0 - 0.166666672 * _t127) + _t129 * (2.75573188e-06 - 2.50520991e-08 * _t127 + (1.60577024e-10 - 7.54937183e-13 * _t127) * _t128)) * (_t112 * _t124) * _t6 + _t12 * (_t129 * (2.48015876e-05 - _t127 * 2.75573029e-07 + (2.08744777e-09 - _t127 * 1.13046204e-11) * _t128) + ((0.0416666679 - 0.00138888892 * _t127) * _t128 + (1.0 - _t127 * 0.5)));
-    highp float _t131 = _t130 * _t130;
-    highp float _t132 = _t120 * (_t84 * _t118);
-    highp float _t133 = _t132 * _t132;
-    highp float _t134 = _t133 * _t133;
-    highp float _t135 = _t8 * ((2.48015876e-05 - _t132 * 2.75573029e-07 + _t133 * (2.08744777e-09 - 1.13046204e-11 * _t132)) * _t134 + ((0.0416666679 - 0.00138888892 * _t132) * _t133 + (1.0 - _t132 * 0.5))) + _t117 * _t124 * (1.0 - 0.166666672 * _t132 + _t133 * (0.00833333377 - 0.000198412701 * _t132) + ((1.60577024e-10 - 7.54937183e-13 * _t132) * _t133 + (2.75573188e-06 - 2.50520991e-08 * _t132)) * _t134) * _t19;
-    highp float _t136 = _t135 * _t135;
-    highp float _t137 = _t131 + _t126 + _t136;
-    highp float _t138 = (_t137 > 1.17549435e-38) ? 1.0 / _t137 : 0.0;
-    highp float _t139 = _t84 * _t126 * _t138;
-    highp float _t140 = _t139 * _t139;
-    highp float _t141 = _t140 * _t140;
-    highp float _t142 = sqrt(_t137) * _t138 * _t83;
-    highp float _t143 = _t138 * (_t84 * _t136);
+    highp float _t130 = _t129 * _t129;
+    highp float _t131 = (2.48015876e-05 - _t128 * 2.75573029e-07 + _t129 * (2.08744777e-09 - 1.13046204e-11 * _t128)) * _t130 + ((0.0416666679 - 0.00138888892 * _t128) * _t129 + (1.0 - _t128 * 0.5));
+    highp float _t132 = _t127 * sqrt(_t126) * _t90;
+    highp float _t133 = _t124 * _t132;
+    highp float _t134 = _t133 * (1.0 - 0.166666672 * _t128 + _t129 * (0.00833333377 - 0.000198412701 * _t128) + ((1.60577024e-10 - 7.54937183e-13 * _t128) * _t129 + (2.75573188e-06 - 2.50520991e-08 * _t128)) * _t130);
+    highp float _t135 = _t6 * _t131 + _t134 * _t18;
+    highp float _t136 = _t91 * _t120 * _t127;
+    highp float _t137 = _t136 * _t136;
+    highp float _t138 = _t137 * _t137;
+    highp float _t139 = _t119 * _t132;
+    highp float _t140 = ((0.00833333377 - 0.000198412701 * _t136) * _t137 + (1.0 - 0.166666672 * _t136) + _t138 * (2.75573188e-06 - 2.50520991e-08 * _t136 + (1.60577024e-10 - 7.54937183e-13 * _t136) * _t137)) * _t139;
+    highp float _t141 = _t138 * (2.48015876e-05 - _t136 * 2.75573029e-07 + (2.08744777e-09 - _t136 * 1.13046204e-11) * _t137) + ((0.0416666679 - 0.00138888892 * _t136) * _t137 + (1.0 - _t136 * 0.5));
+    highp float _t142 = _t140 * _t4 + _t11 * _t141;
+    highp float _t143 = _t127 * (_t91 * _t115);
     highp float _t144 = _t143 * _t143;
     highp float _t145 = _t144 * _t144;
-    highp float _t146 = _t84 * _t131 * _t138;
-    highp float _t147 = _t146 * _t146;
-    highp float _t148 = _t147 * _t147;
-    return (_t1 * ((_t73 * (2.08744777e-09 - 1.13046204e-11 * _t72) + (2.48015876e-05 - 2.75573029e-07 * _t72)) * _t74 + (1.0 - 0.5 * _t72 + _t73 * (0.0416666679 - 0.00138888892 * _t72))) - ((_t73 * (1.60577024e-10 - 7.54937183e-13 * _t72) + (2.75573188e-06 - 2.50520991e-08 * _t72)) * _t74 + (_t73 * (0.00833333377 - 0.000198412701 * _t72) + (1.0 - 0.166666672 * _t72))) * (_t68 * _t75) * _t9 + (_t6 * (_t78 * (2.48015876e-05 - _t76 * 2.75573029e-07 + _t77 * (2.08744777e-09 - _t76 * 1.13046204e-11)) + (_t77 * (0.0416666679 - 0.00138888892 * _t76) + (1.0 - _t76 * 0.5))) - _t58 * _t75 * (((1.60577024e-10 - 7.54937183e-13 * _t76) * _t77 + (2.75573188e-06 - 2.50520991e-08 * _t76)) * _t78 + (_t77 * (0.00833333377 - 0.000198412701 * _t76) + (1.0 - 0.166666672 * _t76))) * _t12) + (_t19 * (_t81 * ((2.08744777e-09 - _t79 * 1.13046204e-11) * _t80 + (2.48015876e-05 - _t79 * 2.75573029e-07)) + (_t80 * (0.0416666679 - 0.00138888892 * _t79) + (1.0 - _t79 * 0.5))) - ((2.75573188e-06 - 2.50520991e-08 * _t79 + (1.60577024e-10 - 7.54937183e-13 * _t79) * _t80) * _t81 + (1.0 - 0.166666672 * _t79 + _t80 * (0.00833333377 - _t79 * 0.000198412701))) * (_t63 * _t75) * _t8)) * (_t1 * ((0.0416666679 - 0.00138888892 * _t139) * _t140 + (1.0 - 0.5 * _t139) + _t141 * ((2.08744777e-09 - 1.13046204e-11 * _t139) * _t140 + (2.48015876e-05 - 2.75573029e-07 * _t139))) - (_t141 * ((1.60577024e-10 - 7.54937183e-13 * _t139) * _t140 + (2.75573188e-06 - 2.50520991e-08 * _t139)) + (1.0 - 0.166666672 * _t139 + (0.00833333377 - 0.000198412701 * _t139) * _t140)) * (_t125 * _t142) * _t9 + (_t19 * ((0.0416666679 - _t143 * 0.00138888892) * _t144 + (1.0 - _t143 * 0.5) + _t145 * (_t144 * (2.08744777e-09 - _t143 * 1.13046204e-11) + (2.48015876e-05 - _t143 * 2.75573029e-07))) - (_t145 * (_t144 * (1.60577024e-10 - _t143 * 7.54937183e-13) + (2.75573188e-06 - _t143 * 2.50520991e-08)) + ((0.00833333377 - _t143 * 0.000198412701) * _t144 + (1.0 - _t143 * 0.166666672))) * (_t135 * _t142) * _t8) + (_t6 * ((0.0416666679 - 0.00138888892 * _t146) * _t147 + (1.0 - _t146 * 0.5) + (2.48015876e-05 - _t146 * 2.75573029e-07 + (2.08744777e-09 - _t146 * 1.13046204e-11) * _t147) * _t148) - (_t148 * (_t147 * (1.60577024e-10 - 7.54937183e-13 * _t146) + (2.75573188e-06 - 2.50520991e-08 * _t146)) + (1.0 - 0.166666672 * _t146 + _t147 * (0.00833333377 - 0.000198412701 * _t146))) * (_t130 * _t142) * _t12));
+    highp float _t146 = _t114 * _t132;
+    highp float _t147 = ((0.00833333377 - _t143 * 0.000198412701) * _t144 + (1.0 - 0.166666672 * _t143) + (2.75573188e-06 - 2.50520991e-08 * _t143 + (1.60577024e-10 - 7.54937183e-13 * _t143) * _t144) * _t145) * _t146;
+    highp float _t148 = _t145 * (2.48015876e-05 - _t143 * 2.75573029e-07 + (2.08744777e-09 - _t143 * 1.13046204e-11) * _t144) + (1.0 - _t143 * 0.5 + _t144 * (0.0416666679 - 0.00138888892 * _t143));
+    highp float _t149 = _t31 * _t147 + _t148 * _t8;
+    highp float _t150 = _t142 * _t142 + _t149 * _t149 + _t135 * _t135;
+    highp float _t151 = sqrt(_t150) * ((_t150 > 1.17549435e-38) ? 1.0 / _t150 : 0.0) * _t90;
+    highp float _t152 = _t135 * _t151 - _t133;
+    highp float _t153 = _t18 * _t131 - _t134 * _t6;
+    highp float _t154 = _t142 * _t151 - _t139;
+    highp float _t155 = _t4 * _t141 - _t140 * _t11;
+    highp float _t156 = _t149 * _t151 - _t146;
+    highp float _t157 = _t148 * _t31 - _t8 * _t147;
+    highp float _t158 = -(_t152 * (_t152 * _t153 * 0.5 + _t135) + (_t142 + _t154 * _t155 * 0.5) * _t154 + _t156 * (_t149 + _t156 * _t157 * 0.5) - (_t155 + (_t153 + _t157)));
+    highp float _t159 = 1.73205256 * abs(_t90);
+    highp float _t160 = _t159 + _t85;
+    highp float _t161 = _t85 - _t159;
+    return ((_t84 <= _t87) ? ((_t88 <= _t84) ? _t84 : _t88) : _t87) * ((_t158 <= _t160) ? ((_t161 <= _t158) ? _t158 : _t161) : _t160);
 }
 
 // unit normal grad F/|grad F| at the last foot-point estimate q_K (on the zero set: the offset surface's normal); zero where grad F = 0. Total ops: 518.

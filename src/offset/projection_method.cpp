@@ -1,7 +1,11 @@
 // Method "projection": offsets by foot-point projection (docs/projection.md). With
 // n = grad F / |grad F| (0 where grad F = 0):
 //   q_0 = p - h n(p),  q_{j+1} = p - h n(q_j)  (j < K),  phi(p, h) = F(q_K).
-// K projections give order 2(K+1). |q_K - p| = |h|, so |phi - F(p)| <= M |h| without any clamp.
+// K projections give order 2(K+1). |q_K - p| = |h|, so |F(q_K) - F(p)| <= M |h| without any clamp.
+// For K >= 1 on periodic trig polynomials (the catalog), phi is F's second-order Taylor polynomial
+// at q_(K-1) evaluated at q_K: the step q_K - q_(K-1) is O(h^(K+1)), so the remainder is of the
+// method's own order, and q_K needs no trig of its own. phi is kept within F(p) -+ M |h|, which
+// holds F(q_K), so |phi - F(p)| <= M |h| still.
 // Graded walls read the half thickness at the foot-point estimate: h_0 = h(p), h_{j+1} = h(q_j),
 // q_{j+1} = p - h_{j+1} n(q_j), which gains one order per projection.
 #include "lowering/cell_bounds.h"
@@ -26,7 +30,7 @@ constexpr double kTinyLength2 = 1.1754943508222875e-38;
 constexpr int projections_for(int order) { return (order + 1) / 2 - 1; }  // K = ceil(m/2) - 1
 static_assert(kMethodEvenOrdersOnly && 2 * (projections_for(3) + 1) == 4, "odd orders round up");
 
-MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addition) {
+MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addition, bool taylor_last_step) {
   MethodFacts f;
   f.method = kMethodName;
   f.requested_order = requested;
@@ -41,10 +45,14 @@ MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addit
   f.graded_paper_order = k == 0 ? 2 : 1;
   f.summary = fmt::format(
       "foot-point projection with K = {} projection step{}: q_0 = p - h n(p), q_(j+1) = p - h n(q_j), "
-      "phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order 2(K+1) = {}{}.",
+      "phi = F(q_K), where n = grad F / |grad F| (0 where grad F = 0). K projections give order 2(K+1) = {}{}.{}",
       k, k == 1 ? "" : "s", f.order,
       requested != f.order
           ? fmt::format(" (order {} was asked for; odd orders round up to the next even one)", requested)
+          : "",
+      taylor_last_step
+          ? " F(q_K) is taken as F's second-order Taylor polynomial at q_(K-1), evaluated at q_K (q_K - q_(K-1) = "
+            "O(h^(K+1)): the remainder is of the method's own order, and q_K needs no trig of its own)."
           : "");
   f.citation = "offsetgen, docs/projection.md (foot-point projection).";
   f.accuracy = fmt::format(
@@ -58,11 +66,14 @@ MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addit
       "second order at best.",
       f.graded_wall_order, f.graded_order);
   f.safety = fmt::format(
-      "no clamp is needed. |q_K - p| = |h| exactly, so |phi - F(p)| <= M |h| with M = {:.17g} >= max |grad F| "
-      "over the cell (2*pi/L scaled coordinates, h in them too): phi has the sign of F wherever |F| > M |h|, so "
-      "no phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite "
+      "no clamp is needed. |q_K - p| = |h| exactly, so |F(q_K) - F(p)| <= M |h| with M = {:.17g} >= max |grad "
+      "F| over the cell (2*pi/L scaled coordinates, h in them too){}: phi has the sign of F wherever |F| > M |h|, "
+      "so no phantom walls appear. n := 0 where grad F = 0, so every function returns a finite value for finite "
       "input (do not compile with -ffinite-math-only).{}",
       b.gradient,
+      taylor_last_step ? ", and phi, the Taylor value, is kept within F(p) -+ M |h|, the interval that holds F(q_K) "
+                         "(so this never moves it away from F(q_K))"
+                       : ", and phi = F(q_K)",
       angle_addition
           ? fmt::format(" sin and cos at the foot-point estimates come from their values at p by angle addition, "
                         "which is exact while |h| <= {:g} (natural units: |h| <= {:.3g} cell on a 2*pi-periodic "
@@ -77,16 +88,19 @@ MethodFacts describe(int requested, int k, const CellBounds& b, bool angle_addit
       "surface's normal); zero where grad F = 0.";
   f.metadata["projections"] = k;
   f.metadata["foot_point_trig"] = angle_addition ? "angle addition" : "direct";
+  f.metadata["last_estimate"] = taylor_last_step ? "taylor" : "field";
   return f;
 }
 
 class Projection final : public OffsetConstruction {
  public:
   Projection(const Surface& surface, int requested_order)
-      : projections_(projections_for(requested_order)), angle_addition_(is_trigonometric_polynomial(surface.field)) {
+      : projections_(projections_for(requested_order)),
+        angle_addition_(is_trigonometric_polynomial(surface.field)),
+        taylor_last_step_(projections_ >= 1 && angle_addition_ && surface.scale.is_equal(2 * GiNaC::Pi)) {
     field_ = define_field_atoms(surface, 2, atoms_);  // second derivatives for the cell bounds
     bounds_ = cell_bounds(surface, atoms_, field_);
-    facts_ = describe(requested_order, projections_, bounds_, angle_addition_);
+    facts_ = describe(requested_order, projections_, bounds_, angle_addition_, taylor_last_step_);
     add_lipschitz_bounds(surface);
   }
 
@@ -96,7 +110,7 @@ class Projection final : public OffsetConstruction {
   const CellBounds& bounds() const override { return bounds_; }
 
   NodeId lower_offset(FieldLowering& at, NodeId h) const override {
-    return at.field(foot_point(at, [h](const std::vector<NodeId>&) { return h; }));
+    return value_at_foot_point(at, [h](const std::vector<NodeId>&) { return h; });
   }
 
   std::vector<NodeId> lower_normal(FieldLowering& at, NodeId h) const override {
@@ -104,12 +118,11 @@ class Projection final : public OffsetConstruction {
   }
 
   NodeId lower_graded_offset(FieldLowering& at, const LoweredHalfThickness& h) const override {
-    return at.field(foot_point(at, h));
+    return value_at_foot_point(at, h);
   }
 
   GiNaC::numeric offset(FieldReference& at, const GiNaC::numeric& h) const override {
-    auto scope = at.at(foot_point(at, [&h](const FieldReference::Point&) { return h; }));
-    return at.field(scope);
+    return value_at_foot_point(at, [&h](const FieldReference::Point&) { return h; });
   }
 
   std::vector<GiNaC::numeric> normal(FieldReference& at, const GiNaC::numeric& h) const override {
@@ -118,8 +131,7 @@ class Projection final : public OffsetConstruction {
   }
 
   GiNaC::numeric graded_offset(FieldReference& at, const ReferenceHalfThickness& h) const override {
-    auto scope = at.at(foot_point(at, h));
-    return at.field(scope);
+    return value_at_foot_point(at, h);
   }
 
  private:
@@ -145,9 +157,86 @@ class Projection final : public OffsetConstruction {
     return g;
   }
 
+  // One foot-point estimate q_j = p - d, reached with the (clamped) half thickness `step`.
+  struct Estimate {
+    const Environment* env;
+    std::vector<NodeId> d;
+    NodeId step;
+  };
+  struct ReferenceEstimate {
+    FieldReference::Point q;
+    GiNaC::numeric step;
+  };
+
+  // phi = F(q_K). For K >= 1 on periodic trig polynomials (taylor_last_step_), through F, grad F and
+  // Hess F at q_(K-1), with delta = q_K - q_(K-1):
+  //   T = F + grad F . delta + delta^T (Hess F) delta / 2,
+  // all from the trig at q_(K-1), which grad F there needs anyway. T is kept within F(p) -+ M |h_K|,
+  // the interval that holds F(q_K) exactly, so keeping it there never moves it away from F(q_K).
+  // Near the walls delta is small and the interval is never reached; far from them, where n turns
+  // fast, delta is not small, and the interval is what keeps phi's sign that of F.
+  NodeId value_at_foot_point(FieldLowering& at, const LoweredHalfThickness& h) const {
+    std::vector<Estimate> walk;
+    const Environment& last_env = foot_point(at, h, &walk);
+    if (!taylor_last_step_) return at.field(last_env);
+    Program& program = at.program();
+    const Estimate& last = walk[walk.size() - 1];
+    const Estimate& before = walk[walk.size() - 2];
+    const std::vector<NodeId> g = at.gradient(*before.env);
+    std::vector<NodeId> delta;  // q_K - q_(K-1) = d_(K-1) - d_K
+    for (size_t i = 0; i < g.size(); ++i) delta.push_back(program.sub(before.d[i], last.d[i]));
+    std::vector<NodeId> terms = {at.field(*before.env)};
+    for (size_t i = 0; i < delta.size(); ++i) {
+      // delta_i (g_i + H_ii delta_i / 2 + sum_(j > i) H_ij delta_j)
+      std::vector<NodeId> row = {g[i], program.mul(program.constant(0.5),
+                                                   program.mul(hessian(at, *before.env, i, i), delta[i]))};
+      for (size_t j = i + 1; j < delta.size(); ++j)
+        row.push_back(program.mul(hessian(at, *before.env, i, j), delta[j]));
+      terms.push_back(program.mul(delta[i], program.sum(row)));
+    }
+    const NodeId taylor = program.sum(terms);
+    const NodeId f_p = at.field(at.base());
+    const NodeId reach = program.mul(program.constant(bounds_.gradient), program.abs(last.step));
+    const NodeId low = program.sub(f_p, reach), high = program.add(f_p, reach);
+    return program.select(program.less_eq(taylor, high), program.select(program.less_eq(low, taylor), taylor, low),
+                          high);
+  }
+
+  GiNaC::numeric value_at_foot_point(FieldReference& at, const ReferenceHalfThickness& h) const {
+    const std::vector<ReferenceEstimate> walk = foot_point_walk(at, h);
+    if (!taylor_last_step_) {
+      auto scope = at.at(walk.back().q);
+      return at.field(scope);
+    }
+    const ReferenceEstimate& last = walk[walk.size() - 1];
+    const ReferenceEstimate& before = walk[walk.size() - 2];
+    auto scope = at.at(before.q);
+    const auto g = at.gradient(scope);
+    GiNaC::numeric taylor = at.field(scope);
+    for (size_t i = 0; i < g.size(); ++i) {
+      GiNaC::numeric row = g[i] + GiNaC::numeric(1, 2) * hessian(at, scope, i, i) * (last.q[i] - before.q[i]);
+      for (size_t j = i + 1; j < g.size(); ++j) row += hessian(at, scope, i, j) * (last.q[j] - before.q[j]);
+      taylor += (last.q[i] - before.q[i]) * row;
+    }
+    const GiNaC::numeric f_p = at.field(at.base());
+    const GiNaC::numeric reach = GiNaC::numeric(bounds_.gradient) * GiNaC::abs(last.step);
+    if (taylor > f_p + reach) return f_p + reach;
+    if (taylor < f_p - reach) return f_p - reach;
+    return taylor;
+  }
+
+  NodeId hessian(FieldLowering& at, const Environment& env, size_t i, size_t j) const {
+    return at.lower(field_.hessian(static_cast<int>(i), static_cast<int>(j)), env);
+  }
+  GiNaC::numeric hessian(FieldReference& at, FieldReference::Scope& scope, size_t i, size_t j) const {
+    return at.eval(field_.hessian(static_cast<int>(i), static_cast<int>(j)), scope);
+  }
+
   // The environment of q_K, with the half thickness read at p first and at each foot-point estimate
-  // after. With angle addition the displacement d = h n is clamped to |d_i| <= kSmallAngleMax.
-  const Environment& foot_point(FieldLowering& at, const LoweredHalfThickness& h) const {
+  // after; `walk` (optional) receives q_0 .. q_K. With angle addition the displacement d = h n is
+  // clamped to |d_i| <= kSmallAngleMax.
+  const Environment& foot_point(FieldLowering& at, const LoweredHalfThickness& h,
+                                std::vector<Estimate>* walk = nullptr) const {
     Program& program = at.program();
     at.use_angle_addition(angle_addition_);
     const Environment* estimate = &at.base();
@@ -162,6 +251,7 @@ class Projection final : public OffsetConstruction {
         const auto q = at.displaced(d);
         estimate = q.env;
         point = q.point;
+        if (walk) walk->push_back({estimate, d, step});
         continue;
       }
       // |d_i| <= |h| with d = h n, so clamping h to [-1, 1] once keeps every d_i within the
@@ -188,13 +278,20 @@ class Projection final : public OffsetConstruction {
       const auto q = at.displaced(d, d2);
       estimate = q.env;
       point = q.point;
+      if (walk) walk->push_back({estimate, d, step});
     }
     return *estimate;
   }
 
   std::vector<GiNaC::numeric> foot_point(FieldReference& at, const ReferenceHalfThickness& h) const {
+    return foot_point_walk(at, h).back().q;
+  }
+
+  // q_0 .. q_K, each with the (clamped) half thickness that reached it.
+  std::vector<ReferenceEstimate> foot_point_walk(FieldReference& at, const ReferenceHalfThickness& h) const {
     const auto& p = at.point();
     const GiNaC::numeric limit(kSmallAngleMax);
+    std::vector<ReferenceEstimate> walk;
     std::vector<GiNaC::numeric> estimate = p;
     for (int j = 0; j <= projections_; ++j) {
       auto scope = at.at(estimate);
@@ -206,8 +303,9 @@ class Projection final : public OffsetConstruction {
       std::vector<GiNaC::numeric> next;
       for (size_t i = 0; i < p.size(); ++i) next.push_back(p[i] - step * n[i]);
       estimate = std::move(next);
+      walk.push_back({estimate, step});
     }
-    return estimate;
+    return walk;
   }
 
   // In the band |F(p)| <= M|h| that holds the zero set, the estimates q_j lie within |h| of p, so
@@ -240,6 +338,9 @@ class Projection final : public OffsetConstruction {
 
   int projections_;
   bool angle_addition_;  // trig at the foot-point estimates from trig at p (catalog-like fields)
+  // phi from F's Taylor polynomial at q_(K-1) (value_at_foot_point). Only where M bounds |grad F|
+  // everywhere, not just in the cell: trig polynomials of period 1 cell.
+  bool taylor_last_step_;
   AtomTable atoms_;
   FieldAtoms field_;
   CellBounds bounds_;
