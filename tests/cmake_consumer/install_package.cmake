@@ -41,6 +41,9 @@ endif()
 get_filename_component(CMAKEDIR "${configs}" DIRECTORY)
 file(GLOB_RECURSE templates RELATIVE "${OFFSETGEN_SOURCE_DIR}/templates" "${OFFSETGEN_SOURCE_DIR}/templates/*.in")
 set(expected bin/offsetgen share/offsetgen/tools/plot_convergence.py)
+if(EXISTS "${OFFSETGEN_BINARY_DIR}/offsetgen-mesh")  # built with OpenVDB: `offsetgen mesh` execs it
+  list(APPEND expected bin/offsetgen-mesh)
+endif()
 foreach(template IN LISTS templates)
   list(APPEND expected "share/offsetgen/templates/${template}")
 endforeach()
@@ -72,6 +75,14 @@ message(STATUS "installed: ${expected}")
 # Move the prefix: everything must still work from the new place.
 file(RENAME "${staging}" "${prefix}")
 run("${prefix}/bin/offsetgen" generate --surface gyroid --order 2 -o "${WORK_DIR}/from_prefix.h")
+if(EXISTS "${prefix}/bin/offsetgen-mesh")  # a small part, meshed through the installed pair
+  file(REMOVE "${WORK_DIR}/from_prefix.stl")
+  run("${prefix}/bin/offsetgen" mesh --surface gyroid --thickness 0.25 --cells 1 --resolution 8 -q
+      -o "${WORK_DIR}/from_prefix.stl")
+  if(NOT EXISTS "${WORK_DIR}/from_prefix.stl")
+    message(FATAL_ERROR "the installed `offsetgen mesh` exited 0 but wrote no from_prefix.stl")
+  endif()
+endif()
 
 # A copy of the prefix whose template carries a marker: its executable must put the marker in the
 # header, so it reads share/offsetgen/templates first, not the compiled-in source tree (which is
