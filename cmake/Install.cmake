@@ -4,6 +4,7 @@
 # Installed layout (the executable finds its templates at <exe>/../share/offsetgen/templates, and
 # `offsetgen check` its plot script at <exe>/../share/offsetgen/tools, so bin/ and share/ are fixed):
 #   bin/offsetgen
+#   bin/offsetgen-mesh (where built with OpenVDB: `offsetgen mesh` execs it from offsetgen's directory)
 #   share/offsetgen/templates/<lang>/*.in
 #   share/offsetgen/tools/plot_convergence.py
 #   <OFFSETGEN_INSTALL_CMAKEDIR>/offsetgenConfig.cmake, offsetgenConfigVersion.cmake,
@@ -101,6 +102,9 @@ write_basic_package_version_file("${PROJECT_BINARY_DIR}/offsetgenConfigVersion.c
 # --- Installation --------------------------------------------------------------------------------
 if(OFFSETGEN_INSTALL)
   install(TARGETS offsetgen EXPORT offsetgenTargets RUNTIME DESTINATION bin)
+  if(TARGET offsetgen-mesh)
+    install(TARGETS offsetgen-mesh RUNTIME DESTINATION bin)
+  endif()
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/templates/" DESTINATION share/offsetgen/templates)
   install(PROGRAMS "${PROJECT_SOURCE_DIR}/tools/plot_convergence.py" DESTINATION share/offsetgen/tools)
 

@@ -100,6 +100,25 @@ Verdict values_verdict(const std::string& name, const ValueReport& values) {
   return v;
 }
 
+// What every value check starts from: the 40-digit reference rebuilt from the file's metadata (its
+// warnings and the surface's title go into the report), and the value options, which show each
+// point on the progress line.
+struct ValueCheckSetup {
+  std::unique_ptr<Reference> reference;
+  ValueCheckOptions options;
+};
+
+ValueCheckSetup prepare_value_check(const CheckSettings& s, Progress& progress, CheckReport& report) {
+  progress.update("model", "rebuilding the symbolic offset model from the metadata");
+  ValueCheckSetup setup{rebuild_reference(report.meta), s.values};
+  report.warnings.insert(report.warnings.end(), setup.reference->warnings.begin(), setup.reference->warnings.end());
+  report.surface_title = setup.reference->generation.surface.title;
+  setup.options.progress = [&progress, &s](int done, int total) {
+    progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
+  };
+  return setup;
+}
+
 #ifdef OFFSETGEN_CHECK_HAVE_GL
 // The snippet's functions on llvmpipe: inputs (x, y, z, h|t) or (x, y, h|t, 0).
 Float32Runner llvmpipe_runner(const std::string& snippet, const FileMetadata& meta) {
@@ -126,21 +145,14 @@ void check_glsl(const CheckSettings& s, const std::string& text, const std::opti
   }
   if (s.run_values && compiled) {
     Progress progress;
-    progress.update("model", "rebuilding the symbolic offset model from the metadata");
-    std::unique_ptr<Reference> reference = rebuild_reference(meta);
-    report.warnings.insert(report.warnings.end(), reference->warnings.begin(), reference->warnings.end());
-    report.surface_title = reference->generation.surface.title;
-    ValueCheckOptions value_options = s.values;
-    value_options.progress = [&progress, &s](int done, int total) {
-      progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
-    };
+    ValueCheckSetup setup = prepare_value_check(s, progress, report);
 #ifdef OFFSETGEN_CHECK_HAVE_GL
     Implementations impl;
     impl.float32 = llvmpipe_runner(text, meta);
     impl.float32_label = "glsl";
     impl.float32_graded = meta.thickness.has_value();
     try {
-      report.values = check_values(impl, *reference, meta, file_thickness, value_options);
+      report.values = check_values(impl, *setup.reference, meta, file_thickness, setup.options);
       report.verdicts.push_back(values_verdict("values on llvmpipe", *report.values));
     } catch (const std::runtime_error& e) {
       report.verdicts.push_back({"values on llvmpipe", false, true, fmt::format("cannot run the snippet: {}", e.what())});
@@ -189,20 +201,13 @@ void check_numpy(const CheckSettings& s, const std::optional<GiNaC::ex>& file_th
         "the density relations of a NumPy module are not checked (check the C header of the same generation)");
   if (s.run_values && imported) {
     Progress progress;
-    progress.update("model", "rebuilding the symbolic offset model from the metadata");
-    std::unique_ptr<Reference> reference = rebuild_reference(meta);
-    report.warnings.insert(report.warnings.end(), reference->warnings.begin(), reference->warnings.end());
-    report.surface_title = reference->generation.surface.title;
-    ValueCheckOptions value_options = s.values;
-    value_options.progress = [&progress, &s](int done, int total) {
-      progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
-    };
+    ValueCheckSetup setup = prepare_value_check(s, progress, report);
     Implementations impl;
     impl.float64 = python_runner(python, s.file, meta);
     impl.float64_label = "numpy";
     impl.float64_graded = meta.thickness.has_value();
     try {
-      report.values = check_values(impl, *reference, meta, file_thickness, value_options);
+      report.values = check_values(impl, *setup.reference, meta, file_thickness, setup.options);
       report.verdicts.push_back(values_verdict("values under NumPy", *report.values));
     } catch (const std::runtime_error& e) {
       report.verdicts.push_back(
@@ -235,17 +240,10 @@ void check_program_values(const CheckSettings& s, const std::optional<GiNaC::ex>
                     "the same generation)",
                     kind_name(meta.kind)));
   Progress progress;
-  progress.update("model", "rebuilding the symbolic offset model from the metadata");
-  std::unique_ptr<Reference> reference = rebuild_reference(meta);
-  report.warnings.insert(report.warnings.end(), reference->warnings.begin(), reference->warnings.end());
-  report.surface_title = reference->generation.surface.title;
-  ValueCheckOptions value_options = s.values;
-  value_options.progress = [&progress, &s](int done, int total) {
-    progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
-  };
+  ValueCheckSetup setup = prepare_value_check(s, progress, report);
   impl.float32_graded = impl.float64_graded = meta.has_graded();
   try {
-    report.values = check_values(impl, *reference, meta, file_thickness, value_options);
+    report.values = check_values(impl, *setup.reference, meta, file_thickness, setup.options);
     report.verdicts.push_back(values_verdict(verdict, *report.values));
   } catch (const std::runtime_error& e) {
     report.verdicts.push_back({verdict, false, true, fmt::format("cannot run the functions: {}", e.what())});
@@ -425,10 +423,7 @@ CheckReport run_checks(const CheckSettings& s) {
   if (!tools.cxx.empty()) report.toolchain += fmt::format(", {} (from {})", tools.cxx.front(), tools.cxx_origin);
 
   Progress progress;
-  progress.update("model", "rebuilding the symbolic offset model from the metadata");
-  std::unique_ptr<Reference> reference = rebuild_reference(meta);
-  report.warnings.insert(report.warnings.end(), reference->warnings.begin(), reference->warnings.end());
-  report.surface_title = reference->generation.surface.title;
+  auto [reference, value_options] = prepare_value_check(s, progress, report);
   // A density field's _graded reads t = thickness_for_density(rho(x)): the rebuilt model holds it.
   if (meta.density_field && !s.thickness && reference->generation.graded_thickness) {
     thickness_ex = file_thickness = reference->generation.graded_thickness;
@@ -452,10 +447,6 @@ CheckReport run_checks(const CheckSettings& s) {
   const LoadedFunctions& functions = report.compile.library->functions();
 
   if (s.run_values) {
-    ValueCheckOptions value_options = s.values;
-    value_options.progress = [&progress, &s](int done, int total) {
-      progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
-    };
     report.values = check_values(functions, *reference, meta, file_thickness, value_options);
     report.verdicts.push_back(values_verdict("values", *report.values));
   }

@@ -1,5 +1,11 @@
 #include "cli/command_line.h"
 
+#include "surfaces/surface.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
 #include <filesystem>
 
 namespace offsetgen {
@@ -30,6 +36,18 @@ std::string banner_command(const std::vector<std::string>& args) {
     }
   }
   return command;
+}
+
+int run_reporting_errors(const std::function<int()>& command) {
+  try {
+    return command();
+  } catch (const InputError& e) {
+    fmt::print(stderr, "offsetgen: error: {}\n", e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "offsetgen: internal error: {}\n", e.what());
+    return kExitInternal;
+  }
 }
 
 }  // namespace offsetgen

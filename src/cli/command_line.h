@@ -1,6 +1,7 @@
 // Helpers shared by the subcommands: exit codes and the banner's command text.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -11,5 +12,10 @@ enum ExitCode { kExitOk = 0, kExitCheckFailed = 1, kExitUsage = 2, kExitInternal
 // "offsetgen generate --surface gyroid ..." with shell quoting where needed. Output locations
 // (-o, --out-dir) are reduced to file names so the same inputs give the same bytes in any directory.
 std::string banner_command(const std::vector<std::string>& args);
+
+// Runs a parsed command: bad input says "offsetgen: error: ..." and exits 2, anything else that throws
+// says "offsetgen: internal error: ..." and exits 3. Shared by offsetgen and offsetgen-mesh, so a user
+// sees the same either way.
+int run_reporting_errors(const std::function<int()>& command);
 
 }  // namespace offsetgen

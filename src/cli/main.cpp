@@ -7,7 +7,8 @@
 #include "cli/check_command.h"
 #endif
 #ifdef OFFSETGEN_HAVE_MESH
-#include "cli/mesh_command.h"
+#include "cli/mesh_launcher.h"
+#include "cli/mesh_options.h"
 #endif
 #include "surfaces/surface.h"
 
@@ -15,7 +16,6 @@
 #include <ginac/ginac.h>
 #include <CLI/CLI.hpp>
 
-#include <exception>
 #include <string>
 #include <vector>
 
@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   add_check_command(app, check);
 #endif
 #ifdef OFFSETGEN_HAVE_MESH
+  // Parsed here (--help, usage errors), run by offsetgen-mesh, which parses the same arguments again.
   MeshOptions mesh;
   add_mesh_command(app, mesh);
 #else
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUsage;
   }
 
-  try {
+  return run_reporting_errors([&] {
     if (app.got_subcommand("generate")) return run_generate(generate, args);
     if (app.got_subcommand("list")) return run_list(list_json);
     if (app.got_subcommand("density")) return run_density(density);
@@ -71,19 +72,13 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("check")) return run_check(check);
 #endif
 #ifdef OFFSETGEN_HAVE_MESH
-    if (app.got_subcommand("mesh")) return run_mesh_command(mesh);
+    if (app.got_subcommand("mesh")) return exec_mesh_executable(argv);
 #else
     if (app.got_subcommand("mesh"))
       throw InputError(
           "this offsetgen was built without `mesh`: it needs OpenVDB (apt-get install libopenvdb-dev "
           "libboost-iostreams-dev, then reconfigure; -DOFFSETGEN_BUILD_MESH=ON insists)");
 #endif
-  } catch (const InputError& e) {
-    fmt::print(stderr, "offsetgen: error: {}\n", e.what());
-    return kExitUsage;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "offsetgen: internal error: {}\n", e.what());
-    return kExitInternal;
-  }
-  return kExitUsage;
+    return static_cast<int>(kExitUsage);
+  });
 }

@@ -1,32 +1,13 @@
-// `offsetgen mesh`: options and the run.
+// `offsetgen mesh`: the run, in offsetgen-mesh (the executable that links OpenVDB).
 #pragma once
 
-#include "offset/method.h"
+#include "cli/mesh_options.h"
 
-#include <CLI/CLI.hpp>
-
-#include <optional>
+#include <array>
 #include <string>
-#include <vector>
 
 namespace offsetgen {
 
-struct MeshOptions {
-  std::string surface, expression, name, thickness, cells = "1", output;
-  std::optional<double> density;       // --density R: the sheet of relative density R
-  std::optional<std::string> density_field;  // --density-field E: graded, rho(x, y, z)
-  std::vector<std::string> params;
-  std::string method = kDefaultMethod;
-  int order = 4;
-  double cell_size = 10;
-  int resolution = 0;
-  double adaptivity = 0;
-  double min_piece = 0.01;
-  int threads = 0;
-  bool quiet = false;
-};
-
-void add_mesh_command(CLI::App& app, MeshOptions& options);
 int run_mesh_command(const MeshOptions& options);
 
 // "3" -> {3, 3, 3}; "4x2" -> {4, 2, 2}; "2x3x4" -> {2, 3, 4}. Throws InputError.

@@ -2,7 +2,7 @@
 # (the package and the executable must not care where they live) and checks that the installed
 # executable reads the templates of its own prefix (share/offsetgen/templates), not the source tree.
 #   cmake -DOFFSETGEN_BINARY_DIR=<build> -DOFFSETGEN_SOURCE_DIR=<src> -DCONFIG=<build type>
-#         -DWORK_DIR=<scratch> -P install_package.cmake
+#         -DWORK_DIR=<scratch> [-DWITH_MESH=1] -P install_package.cmake
 # Leaves the relocated prefix in WORK_DIR/prefix for the consumer tests.
 cmake_minimum_required(VERSION 3.25)
 foreach(variable OFFSETGEN_BINARY_DIR OFFSETGEN_SOURCE_DIR CONFIG WORK_DIR)
@@ -41,6 +41,9 @@ endif()
 get_filename_component(CMAKEDIR "${configs}" DIRECTORY)
 file(GLOB_RECURSE templates RELATIVE "${OFFSETGEN_SOURCE_DIR}/templates" "${OFFSETGEN_SOURCE_DIR}/templates/*.in")
 set(expected bin/offsetgen share/offsetgen/tools/plot_convergence.py)
+if(WITH_MESH)  # built with OpenVDB: `offsetgen mesh` execs offsetgen-mesh from offsetgen's directory
+  list(APPEND expected bin/offsetgen-mesh)
+endif()
 foreach(template IN LISTS templates)
   list(APPEND expected "share/offsetgen/templates/${template}")
 endforeach()
@@ -72,6 +75,14 @@ message(STATUS "installed: ${expected}")
 # Move the prefix: everything must still work from the new place.
 file(RENAME "${staging}" "${prefix}")
 run("${prefix}/bin/offsetgen" generate --surface gyroid --order 2 -o "${WORK_DIR}/from_prefix.h")
+if(WITH_MESH)  # a small part, meshed through the installed pair
+  file(REMOVE "${WORK_DIR}/from_prefix.stl")
+  run("${prefix}/bin/offsetgen" mesh --surface gyroid --thickness 0.25 --cells 1 --resolution 8 -q
+      -o "${WORK_DIR}/from_prefix.stl")
+  if(NOT EXISTS "${WORK_DIR}/from_prefix.stl")
+    message(FATAL_ERROR "the installed `offsetgen mesh` exited 0 but wrote no from_prefix.stl")
+  endif()
+endif()
 
 # A copy of the prefix whose template carries a marker: its executable must put the marker in the
 # header, so it reads share/offsetgen/templates first, not the compiled-in source tree (which is

@@ -325,5 +325,35 @@ TEST(MeshOutput, ThreeMfHoldsTheStlsTrianglesInMillimetresWithTheSameBytesEachRu
   EXPECT_EQ(counted.output, fmt::format("{} True\n", triangles));
 }
 
+// Only meshing loads OpenVDB and TBB: offsetgen execs offsetgen-mesh for `mesh`, so generate, list
+// and --version do not pay their start-up.
+TEST(MeshExecutable, OnlyOffsetgenMeshLinksOpenVdbAndTbb) {
+  const check::ProcessResult plain = check::run_process({"ldd", OFFSETGEN_EXE});
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_EQ(plain.output.find("libopenvdb"), std::string::npos) << plain.output;
+  EXPECT_EQ(plain.output.find("libtbb"), std::string::npos) << plain.output;
+  const check::ProcessResult mesher = check::run_process({"ldd", OFFSETGEN_MESH_EXE});
+  ASSERT_EQ(mesher.exit_code, 0) << mesher.output;
+  EXPECT_NE(mesher.output.find("libopenvdb"), std::string::npos) << mesher.output;
+}
+
+TEST(MeshExecutable, WithoutOffsetgenMeshBesideItMeshSaysItIsMissingAndExits3) {
+  const std::string dir = scratch_dir("lone-offsetgen");
+  const std::string lone = dir + "/offsetgen";
+  fs::copy_file(OFFSETGEN_EXE, lone);
+  const check::ProcessResult r =
+      check::run_process({lone, "mesh", "--surface", "gyroid", "--thickness", "0.1", "-o", dir + "/part.stl"});
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find(dir + "/" + fs::path(OFFSETGEN_MESH_EXE).filename().string() + ", which is missing"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/part.stl"));
+  // Its help and usage errors still come from offsetgen itself.
+  const check::ProcessResult help = check::run_process({lone, "mesh", "--help"});
+  EXPECT_EQ(help.exit_code, 0) << help.output;
+  EXPECT_NE(help.output.find("Usage: offsetgen mesh [OPTIONS]"), std::string::npos) << help.output;
+  EXPECT_EQ(check::run_process({lone, "mesh", "--bogus"}).exit_code, 2);
+}
+
 }  // namespace
 }  // namespace offsetgen::mesh::testing

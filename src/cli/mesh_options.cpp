@@ -1,0 +1,47 @@
+#include "cli/mesh_options.h"
+
+#include <fmt/format.h>
+
+namespace offsetgen {
+
+void add_mesh_command(CLI::App& app, MeshOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "mesh",
+      "Mesh a block of cells of a wall solid (walls of thickness t around F = 0, capped by the block) as a\n"
+      "closed, outward-oriented triangle mesh in millimetres, ready for a slicer (OpenVDB volumeToMesh)");
+  cmd->add_option("-s,--surface", o.surface, "Catalog surface (see `offsetgen list`)");
+  cmd->add_option("-e,--expr", o.expression, "Your own F(x, y, z) in cell units, as in `generate`");
+  cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
+  cmd->add_option("-n,--name", o.name, "Function prefix of the generated functions (default <surface>_o<order>)");
+  std::string methods;
+  for (const OffsetMethod* m : offset_methods()) methods += fmt::format("{}{}", methods.empty() ? "" : ", ", m->name());
+  cmd->add_option("-M,--method", o.method, "Offset construction: " + methods)->capture_default_str();
+  cmd->add_option("-m,--order", o.order, "Approximation order")->capture_default_str();
+  cmd->add_option("-t,--thickness", o.thickness,
+                  "Total wall thickness in cell units: a number, or an expression of x, y, z (x runs over [0, NX])");
+  cmd->add_option("--density", o.density,
+                  "Instead of --thickness: the relative density R of the wall (its volume fraction; periodic "
+                  "surfaces; docs/density.md)");
+  cmd->add_option("--density-field", o.density_field,
+                  "Instead of --thickness: a graded relative density rho(x, y, z), t(p) = "
+                  "thickness_for_density(rho(p))");
+  cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
+  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
+  cmd->add_option("-r,--resolution", o.resolution,
+                  "Voxels per cell (default: the thinnest wall spans 4 voxels; at least 2 are required)");
+  cmd->add_option("-a,--adaptivity", o.adaptivity,
+                  "Merge flat regions into larger triangles, 0 (off) to 1: smaller files")
+      ->capture_default_str();
+  cmd->add_option("--min-piece", o.min_piece,
+                  "Drop disconnected pieces with less than this fraction of the largest piece's volume")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", o.output, "Output mesh: .stl (binary STL), .ply (binary PLY) or .3mf (3MF)");
+  cmd->add_option("-j,--threads", o.threads, "Sampling threads (default: one per hardware thread)");
+  cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
+  cmd->footer(
+      "Exit status: 0 success, 2 usage or input error (no file is written then), 3 internal error.\n"
+      "Examples: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl\n"
+      "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl");
+}
+
+}  // namespace offsetgen

@@ -1,0 +1,33 @@
+// `offsetgen mesh`: its options and their CLI11 definition. Both executables hold it: offsetgen parses
+// the command (so --help and usage errors come from offsetgen itself), then offsetgen-mesh, which links
+// OpenVDB, parses the same arguments again and runs it (mesh_launcher.h).
+#pragma once
+
+#include "offset/method.h"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace offsetgen {
+
+struct MeshOptions {
+  std::string surface, expression, name, thickness, cells = "1", output;
+  std::optional<double> density;             // --density R: the sheet of relative density R
+  std::optional<std::string> density_field;  // --density-field E: graded, rho(x, y, z)
+  std::vector<std::string> params;
+  std::string method = kDefaultMethod;
+  int order = 4;
+  double cell_size = 10;
+  int resolution = 0;
+  double adaptivity = 0;
+  double min_piece = 0.01;
+  int threads = 0;
+  bool quiet = false;
+};
+
+void add_mesh_command(CLI::App& app, MeshOptions& options);
+
+}  // namespace offsetgen
