@@ -327,25 +327,41 @@ def main(argv=None):
                 cells.append(cell)
             w("| %g | %s |" % (h, " | ".join(cells)))
         w("")
-        missed_rows = []
-        for h in SWEEP:
-            cells, any_missed = [], False
-            for m in ORDERS:
-                row = row_at(constant_result(results, surface, m)["thickness"]["rows"], h)
-                counts = [row[d]["missed"] for d in ["f_to_phi", "phi_to_f", "shell"]]
-                any_missed = any_missed or any(counts)
-                cells.append(" / ".join(str(c) for c in counts) if any(counts) else "")
-            if any_missed:
-                missed_rows.append("| %g | %s |" % (h, " | ".join(cells)))
+        def count_table(key):
+            rows = []
+            for h in SWEEP:
+                cells, any_count = [], False
+                for m in ORDERS:
+                    row = row_at(constant_result(results, surface, m)["thickness"]["rows"], h)
+                    counts = [row[d][key] for d in ["f_to_phi", "phi_to_f", "shell"]]
+                    any_count = any_count or any(counts)
+                    cells.append(" / ".join(str(c) for c in counts) if any(counts) else "")
+                if any_count:
+                    rows.append("| %g | %s |" % (h, " | ".join(cells)))
+            return rows
+
+        def write_count_table(rows):
+            w("| h/L | " + " | ".join("order %d" % m for m in ORDERS) + " |")
+            w("|---|" + "---|" * len(ORDERS))
+            md.extend(rows)
+
+        missed_rows = count_table("missed")
+        singular_rows = count_table("singular")
         if missed_rows:
             w("Rays without a crossing within [0, 2h] (F → φ / φ → F / shell; all other rays crossed). They")
             w("appear only at large h, where the offset surface starts to self-intersect (paper section 4.2):")
             w("")
-            w("| h/L | " + " | ".join("order %d" % m for m in ORDERS) + " |")
-            w("|---|" + "---|" * len(ORDERS))
-            md.extend(missed_rows)
+            write_count_table(missed_rows)
         else:
-            w("Every ray found its crossing, at every h.")
+            w("Every ray that was measured found its crossing, at every h.")
+        if singular_rows:
+            w("")
+            w("Samples skipped as singular, not counted as rays (F → φ / φ → F / shell): `offsetgen check` skips")
+            w("a ray that starts or ends where |grad F| is below 0.01 of its median on F = 0, or that finds no")
+            w("crossing where |h| ||Hess F|| >= |grad F|, next to a crossing or critical point of the zero set,")
+            w("where the offset is not defined to any order. They appear only at large h:")
+            w("")
+            write_count_table(singular_rows)
         w("")
         samples = constant_result(results, surface, 4)["thickness"]["samples_on_f"]
         w("Points on F = 0: %d." % samples)
