@@ -203,7 +203,7 @@ def methods_section(results, gen, own_run=None):
             targets.append(["projection o%d / Richardson o%d, %s offset" % (m, m, mode), "<= %gx" % limit,
                             "gyroid %s; all surfaces %s..%s (worst: %s)" % (
                                 fmt(gy[0]) if gy else "-", fmt(min(ratios)[0]), fmt(worst[0]), worst[1]),
-                            verdict(bool(gy) and gy[0] <= limit)])
+                            ratio_verdict(ratios, gy, limit)])
     if gen_proj:
         o16 = [(v["wall"], s) for (s, m), v in gen_proj.items() if m == 16]
         if o16:
@@ -402,6 +402,17 @@ def splice_mesh(output, section):
 
 def verdict(ok):
     return "**met**" if ok else "**missed**"
+
+
+def ratio_verdict(ratios, gyroid, limit):
+    """The issue-10 cost targets name no surface: met on the gyroid is the headline, and every other
+    surface over the limit is named beside it, so a reader sees both."""
+    over = sorted(s for x, s in ratios if x > limit)
+    head = verdict(bool(gyroid) and gyroid[0] <= limit)
+    if not over or over == ["gyroid"]:
+        return head
+    others = [s for s in over if s != "gyroid"]
+    return "%s on the gyroid; missed on %s" % (head, ", ".join(others))
 
 
 def main(argv=None):
