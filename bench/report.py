@@ -407,12 +407,9 @@ def verdict(ok):
 def ratio_verdict(ratios, gyroid, limit):
     """The issue-10 cost targets name no surface: met on the gyroid is the headline, and every other
     surface over the limit is named beside it, so a reader sees both."""
-    over = sorted(s for x, s in ratios if x > limit)
     head = verdict(bool(gyroid) and gyroid[0] <= limit)
-    if not over or over == ["gyroid"]:
-        return head
-    others = [s for s in over if s != "gyroid"]
-    return "%s on the gyroid; missed on %s" % (head, ", ".join(others))
+    others = sorted(s for x, s in ratios if x > limit and s != "gyroid")
+    return "%s on the gyroid; missed on %s" % (head, ", ".join(others)) if others else head
 
 
 def main(argv=None):
