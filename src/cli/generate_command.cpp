@@ -20,7 +20,8 @@ namespace offsetgen {
 namespace fs = std::filesystem;
 
 void add_generate_command(CLI::App& app, GenerateOptions& o) {
-  auto* cmd = app.add_subcommand("generate", "Generate offset functions as a C header and/or GLSL snippet");
+  auto* cmd =
+      app.add_subcommand("generate", "Generate offset functions for the targets of --lang (C header by default)");
   cmd->add_option("-s,--surface", o.surface, "Catalog surface (see `offsetgen list`)");
   cmd->add_option("-e,--expr", o.expression,
                   "Your own F(x, y[, z]) in cell units, e.g. \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\". Accepted: " +

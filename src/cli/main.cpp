@@ -10,6 +10,8 @@
 #include "cli/mesh_launcher.h"
 #include "cli/mesh_options.h"
 #endif
+#include "emit/backend.h"
+#include "offset/method.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -23,10 +25,17 @@ int main(int argc, char** argv) {
   using namespace offsetgen;
   std::vector<std::string> args(argv, argv + argc);
 
+  // Targets and methods come from their registries, so the help text names every one that is built in.
+  std::string targets, methods;
+  for (const Backend* b : backends()) targets += (targets.empty() ? "" : ", ") + b->title();
+  for (const OffsetMethod* m : offset_methods()) methods += fmt::format("\n  {}: {}", m->name(), m->description());
   CLI::App app{
       "offsetgen: turns an implicit surface F = 0 (e.g. a TPMS such as the gyroid) into closed-form\n"
-      "offset functions phi^(m)(x, h) of any order, emitted as C headers and GLSL snippets.\n"
-      "Method: Geier & Alihussein, Algorithms 14(4):125 (2021).",
+      "offset functions phi(x, h) of any order, emitted as " +
+          targets +
+          " (--lang).\n"
+          "Offset constructions (--method):" +
+          methods,
       "offsetgen"};
   app.set_version_flag("-V,--version",
                        fmt::format("offsetgen {} (GiNaC {}.{}.{}, CLN)", OFFSETGEN_VERSION, GINACLIB_MAJOR_VERSION,

@@ -247,7 +247,8 @@ class RichardsonMethod final : public OffsetMethod {
  public:
   std::string name() const override { return kMethodName; }
   std::string description() const override {
-    return "the paper's extended Richardson extrapolation of recursive first-order offsets (orders 1-12)";
+    return "extended Richardson extrapolation of recursive first-order offsets (Geier & Alihussein, Algorithms "
+           "14(4):125, 2021; orders 1-12)";
   }
   int max_order() const override { return kMethodMaxOrder; }
   bool cost_grows_geometrically() const override { return true; }  // ~5x per order

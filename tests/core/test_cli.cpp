@@ -1,4 +1,6 @@
 // The CLI as a user meets it: help, version, list, exit codes, and bad input that loses nothing.
+#include "emit/backend.h"
+#include "offset/method.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -237,6 +239,14 @@ TEST(Cli, HelpListsTheAcceptedFunctions) {
   EXPECT_NE(help.output.find("acos asin atan cos cosh exp log sin sinh sqrt tan tanh; the constant Pi"),
             std::string::npos)
       << help.output;
+}
+
+TEST(Cli, TopLevelHelpNamesEveryTargetAndMethodOfTheRegistries) {
+  const auto help = run_offsetgen("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  for (const Backend* b : backends()) EXPECT_NE(help.output.find(b->title()), std::string::npos) << b->name();
+  for (const OffsetMethod* m : offset_methods())
+    EXPECT_NE(help.output.find(m->name() + ": " + m->description()), std::string::npos) << m->name();
 }
 
 TEST(Cli, WritesOnlyWhenTheContentChanges) {
