@@ -34,8 +34,9 @@ TEST(Cli, HelpVersionAndList) {
 
 // A calendar date (2026-11-21, 21.11.2026, 11/21/26 style with a 4-digit year), a time of day
 // (07:36, 07:36:12) or a month name followed by a day, as `date`, __DATE__ and ISO stamps print them.
-const std::regex kDateOrTime(R"((\b(19|20)\d\d[-/.]\d\d?[-/.]\d\d?\b)|(\b\d\d?[-/.]\d\d?[-/.](19|20)\d\d\b)|)"
-                             R"((\b\d\d?:\d\d(:\d\d)?\b)|(\b(Jan|Feb|Mar|Apr|May|Jun|Jul|Aug|Sep|Oct|Nov|Dec) +\d\d?\b))");
+const std::regex kDateOrTime(
+    R"((\b(19|20)\d\d[-/.]\d\d?[-/.]\d\d?\b)|(\b\d\d?[-/.]\d\d?[-/.](19|20)\d\d\b)|)"
+    R"((\b\d\d?:\d\d(:\d\d)?\b)|(\b(Jan|Feb|Mar|Apr|May|Jun|Jul|Aug|Sep|Oct|Nov|Dec) +\d\d?\b))");
 
 TEST(Cli, DatePatternRecognisesTimestamps) {
   for (const char* stamp : {"2026-11-21", "2031/01/05", "21.11.2026", "07:36", "generated at 23:59:59",
@@ -64,8 +65,10 @@ TEST(Cli, GeneratesAHeaderWithTheDocumentedApiAndNoTimestamp) {
 
 TEST(Cli, UserExpressionTwoDimensionsAndGradedThickness) {
   std::string dir = testing::scratch_dir("cli_expr");
-  auto r = run_offsetgen("generate --expr \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\" --param a=0.3 --name mysurf "
-                         "--order 3 --thickness \"0.01 + 0.02*x\" -o " + dir + "/mysurf.h");
+  auto r = run_offsetgen(
+      "generate --expr \"cos(2*Pi*x)*cos(2*Pi*y) + a*sin(2*Pi*z)\" --param a=0.3 --name mysurf "
+      "--order 3 --thickness \"0.01 + 0.02*x\" -o " +
+      dir + "/mysurf.h");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::string h = testing::read_file(dir + "/mysurf.h");
   EXPECT_NE(h.find("static inline double mysurf_graded(double x, double y, double z)"), std::string::npos);
@@ -116,14 +119,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"generate --expr \"a*x + y\" --name s", "unknown parameter 'a'"},
         BadInput{"generate --expr \"a*x + y\" --param a= --name s", "malformed parameter"},
         BadInput{"generate --surface gyroid --order 0", "order 0 is out of range"},
-        BadInput{"generate --surface gyroid --order 13", "order 13 is out of range: the richardson method supports orders 1 to 12"},
+        BadInput{"generate --surface gyroid --order 13",
+                 "order 13 is out of range: the richardson method supports orders 1 to 12"},
         BadInput{"generate --surface gyroid --order 2 -o /nonexistent-dir/x.h", "does not exist"},
         BadInput{"generate --surface gyroid --order 2 --thickness \"0.1 + * x\"", "thickness"},
         BadInput{"generate --expr \"x + y\" --order 2", "--expr needs --name"},
         BadInput{"generate --surface gyroid --lang fortran", "fortran"},
         // Domain errors and expressions GiNaC cannot handle: exit 2, what is wrong, nothing of GiNaC.
-        BadInput{"generate --expr \"log(-1-x) + y\" --name s", "at (x, y) = (0.005208, 0.005208) it takes log(-1.00521), "
-                                                                "the logarithm of a negative number"},
+        BadInput{"generate --expr \"log(-1-x) + y\" --name s",
+                 "at (x, y) = (0.005208, 0.005208) it takes log(-1.00521), "
+                 "the logarithm of a negative number"},
         BadInput{"generate --expr \"sqrt(-1)*x + y\" --name s", "is not real: it contains the complex number I"},
         BadInput{"generate --expr \"0^x + y\" --name s", "0^x: zero to a varying power"},
         BadInput{"generate --expr \"(-1)^x + y\" --name s", "(-1)^x: a negative number to a varying power is not real"},
@@ -137,20 +142,24 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"generate --expr \"x/(1-1) + y\" --name s", "division by zero"},
         BadInput{"generate --expr \"tan(Pi/2) + x + y\" --name s", "meets a pole at a constant argument"},
         BadInput{"generate --expr \"atan(1e300*x) + y\" --name s", "d2F/dxdx of F is not defined everywhere"},
-        BadInput{"generate --expr \"x + 1e211*y\" --name s", "the gradient of F is infinite at every sample of the cell "
-                                                            "[0, 1]^2, or so large that its square overflows"},
+        BadInput{"generate --expr \"x + 1e211*y\" --name s",
+                 "the gradient of F is infinite at every sample of the cell "
+                 "[0, 1]^2, or so large that its square overflows"},
         BadInput{"generate --expr \"1e110*z^2 + x + y\" --name s", "an entry exceeds 1e100"},
         BadInput{"generate --expr \"1/x + y - 3\" --name s --precision float", "beyond the float range"},
         BadInput{"generate --expr \"1/x + y - 3\" --name s --lang glsl", "beyond the float range"},
         // Names: accepted functions only, by name; Pi, not pi.
-        BadInput{"generate --expr \"atan2(y, x) + z\" --name s", "unknown function 'atan2' at column 1; accepted: acos"},
+        BadInput{"generate --expr \"atan2(y, x) + z\" --name s",
+                 "unknown function 'atan2' at column 1; accepted: acos"},
         BadInput{"generate --expr \"pi*x + y\" --name s", "unknown name 'pi' at column 1: write Pi"},
         BadInput{"generate --expr \"x + y\" --param sin=2 --name s", "parameter name 'sin' is reserved"},
-        BadInput{"generate --expr \"x·y + z\" --name s", "unexpected '·' (U+00B7) after a complete expression at column 2"},
+        BadInput{"generate --expr \"x·y + z\" --name s",
+                 "unexpected '·' (U+00B7) after a complete expression at column 2"},
         BadInput{"generate --expr \"$(printf 'x + y\\377')\" --name s", "byte 0xFF (not UTF-8)"},
         BadInput{"generate --surface gyroid --name _foo", "names beginning with _ are reserved at file scope in C"},
         BadInput{"generate --surface gyroid --name a__b", "names containing __ are reserved"},
-        BadInput{"generate --surface gyroid --name gl_foo --lang glsl", "names beginning with gl_ are reserved in GLSL"},
+        BadInput{"generate --surface gyroid --name gl_foo --lang glsl",
+                 "names beginning with gl_ are reserved in GLSL"},
         BadInput{"generate --surface gyroid --name webgl_x --lang glsl", "reserved in WebGL"},
         BadInput{"generate --surface gyroid --name SV_x --lang hlsl", "names beginning with SV_ are HLSL system-value"},
         BadInput{"generate --surface gyroid --name cudaX --lang cuda", "in a namespace the CUDA toolkit reserves"},
@@ -162,7 +171,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"generate --surface gyroid --lang c,wgsl2", "unknown language 'wgsl2'"},
         BadInput{"generate --surface gyroid --name offsetgen_check", "belong to the header's own helpers"},
         // A graded wall needs t > 0 everywhere, refused before any work.
-        BadInput{"generate --surface gyroid --thickness ''", "cannot parse thickness expression: the expression is empty"},
+        BadInput{"generate --surface gyroid --thickness ''",
+                 "cannot parse thickness expression: the expression is empty"},
         BadInput{"generate --surface gyroid --thickness 0", "must be a finite wall thickness > 0"},
         BadInput{"generate --surface gyroid --thickness -0.1", "at (x, y, z) = (0.02083, 0.02083, 0.02083) it is -0.1"},
         BadInput{"generate --surface gyroid --thickness \"0.1 - 0.2*x\"", "must be a finite wall thickness > 0"}),
@@ -202,7 +212,8 @@ TEST(Cli, FooAndFOOGetDifferentIncludeGuards) {
     out << "#include \"foo.h\"\n#include \"FOO.h\"\n"
         << "double both(void) { return foo_offset(0.1, 0.2, 0.3, 0.01) + FOO_offset(0.1, 0.2, 0.3, 0.01); }\n";
   }
-  EXPECT_EQ(std::system(("cc -std=c99 -pedantic -Wall -Wextra -Werror -c " + unit + " -o " + dir + "/both.o").c_str()), 0);
+  EXPECT_EQ(std::system(("cc -std=c99 -pedantic -Wall -Wextra -Werror -c " + unit + " -o " + dir + "/both.o").c_str()),
+            0);
 }
 
 // A clear limit against blow-ups: nesting depth is bounded, and the size of order m is estimated from
