@@ -29,14 +29,12 @@ int main(int argc, char** argv) {
   std::string targets, methods;
   for (const Backend* b : backends()) targets += (targets.empty() ? "" : ", ") + b->title();
   for (const OffsetMethod* m : offset_methods()) methods += fmt::format("\n  {}: {}", m->name(), m->description());
-  CLI::App app{
+  const std::string about = fmt::format(
       "offsetgen: turns an implicit surface F = 0 (e.g. a TPMS such as the gyroid) into closed-form\n"
-      "offset functions phi(x, h) of any order, emitted as " +
-          targets +
-          " (--lang).\n"
-          "Offset constructions (--method):" +
-          methods,
-      "offsetgen"};
+      "offset functions phi(x, h) of any order, emitted as {} (--lang).\n"
+      "Offset constructions (--method):{}",
+      targets, methods);
+  CLI::App app{about, "offsetgen"};
   app.set_version_flag("-V,--version",
                        fmt::format("offsetgen {} (GiNaC {}.{}.{}, CLN)", OFFSETGEN_VERSION, GINACLIB_MAJOR_VERSION,
                                    GINACLIB_MINOR_VERSION, GINACLIB_MICRO_VERSION));
