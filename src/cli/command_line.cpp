@@ -1,5 +1,6 @@
 #include "cli/command_line.h"
 
+#include "offset/method.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -48,6 +49,12 @@ int run_reporting_errors(const std::function<int()>& command) {
     fmt::print(stderr, "offsetgen: internal error: {}\n", e.what());
     return kExitInternal;
   }
+}
+
+std::string method_help_lines() {
+  std::string lines;
+  for (const OffsetMethod* m : offset_methods()) lines += fmt::format("\n  {}: {}", m->name(), m->description());
+  return lines;
 }
 
 }  // namespace offsetgen

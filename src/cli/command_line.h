@@ -1,4 +1,4 @@
-// Helpers shared by the subcommands: exit codes and the banner's command text.
+// Helpers shared by the subcommands: exit codes, the banner's command text and help text.
 #pragma once
 
 #include <functional>
@@ -17,5 +17,8 @@ std::string banner_command(const std::vector<std::string>& args);
 // says "offsetgen: internal error: ..." and exits 3. Shared by offsetgen and offsetgen-mesh, so a user
 // sees the same either way.
 int run_reporting_errors(const std::function<int()>& command);
+
+// One "\n  name: description" line per registered offset method, for --help texts.
+std::string method_help_lines();
 
 }  // namespace offsetgen

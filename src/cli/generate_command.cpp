@@ -28,13 +28,11 @@ void add_generate_command(CLI::App& app, GenerateOptions& o) {
                       accepted_syntax_summary() + "; decimals are exact");
   cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
   cmd->add_option("-n,--name", o.name, "Function prefix (default <surface>_o<order>; required with --expr)");
-  std::string methods, orders;
-  for (const OffsetMethod* m : offset_methods()) {
-    methods += fmt::format("\n  {}: {}", m->name(), m->description());
+  std::string orders;
+  for (const OffsetMethod* m : offset_methods())
     orders += fmt::format("{}{} 1-{}", orders.empty() ? "" : ", ", m->name(), m->max_order());
-  }
   cmd->add_option("-M,--method", o.method,
-                  "Offset construction (default " + std::string(kDefaultMethod) + "):" + methods)
+                  "Offset construction (default " + std::string(kDefaultMethod) + "):" + method_help_lines())
       ->capture_default_str();
   cmd->add_option("-m,--order", o.order, "Approximation order m (" + orders + ")")->capture_default_str();
   cmd->add_option("-l,--lang", o.lang, "Output languages, a comma list of " + backend_names() + ", or all")

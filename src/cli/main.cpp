@@ -11,7 +11,6 @@
 #include "cli/mesh_options.h"
 #endif
 #include "emit/backend.h"
-#include "offset/method.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -26,14 +25,13 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv, argv + argc);
 
   // Targets and methods come from their registries, so the help text names every one that is built in.
-  std::string targets, methods;
+  std::string targets;
   for (const Backend* b : backends()) targets += (targets.empty() ? "" : ", ") + b->title();
-  for (const OffsetMethod* m : offset_methods()) methods += fmt::format("\n  {}: {}", m->name(), m->description());
   const std::string about = fmt::format(
       "offsetgen: turns an implicit surface F = 0 (e.g. a TPMS such as the gyroid) into closed-form\n"
       "offset functions phi(x, h) of any order, emitted as {} (--lang).\n"
       "Offset constructions (--method):{}",
-      targets, methods);
+      targets, method_help_lines());
   CLI::App app{about, "offsetgen"};
   app.set_version_flag("-V,--version",
                        fmt::format("offsetgen {} (GiNaC {}.{}.{}, CLN)", OFFSETGEN_VERSION, GINACLIB_MAJOR_VERSION,
