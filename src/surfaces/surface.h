@@ -1,6 +1,8 @@
 // A smooth implicit surface F = 0, ready for the offset construction.
 #pragma once
 
+#include "surfaces/input_error.h"
+
 #include <ginac/ginac.h>
 
 #include <map>
@@ -9,12 +11,6 @@
 #include <vector>
 
 namespace offsetgen {
-
-// Bad user input (unknown surface, unparsable expression, ...). The CLI maps it to exit 2.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // The coordinate symbols. GiNaC tells symbols apart by serial, not by name, so every stage
 // must share these objects rather than create its own "x".
