@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -75,6 +76,27 @@ std::array<int, 3> parse_cells(const std::string& text) {
   return {n[0], n[1], n[2]};
 }
 
+std::array<double, 3> parse_point(const std::string& text, const std::string& option) {
+  std::vector<double> v;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ',')) {
+    size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (part.empty() || used != part.size() || !std::isfinite(value))
+      throw InputError(fmt::format("{} '{}': expected X,Y,Z (three numbers, mm)", option, text));
+    v.push_back(value);
+  }
+  if (v.size() != 3 || text.back() == ',')
+    throw InputError(fmt::format("{} '{}': expected X,Y,Z (three numbers, mm)", option, text));
+  return {v[0], v[1], v[2]};
+}
+
 int run_mesh_command(const MeshOptions& o) {
   mesh::MeshSettings s;
   s.wall.generation.surface = o.surface;
@@ -91,8 +113,19 @@ int run_mesh_command(const MeshOptions& o) {
   s.wall.generation.density = o.density;
   s.wall.generation.density_field = o.density_field;
   s.cells = parse_cells(o.cells);
+  if (!o.body.empty()) {
+    mesh::BodySettings b;
+    b.path = o.body;
+    b.skin = o.skin;
+    b.fillet = o.fillet;
+    b.scale = o.scale;
+    b.repair = o.repair;
+    if (!o.origin.empty()) b.origin = parse_point(o.origin, "--origin");
+    s.body = b;
+  }
   s.cell_size = o.cell_size;
   s.resolution = o.resolution;
+  s.voxel = o.voxel;
   s.adaptivity = o.adaptivity;
   s.min_piece = o.min_piece;
   s.output = o.output;
@@ -106,7 +139,12 @@ int run_mesh_command(const MeshOptions& o) {
   if (walls > 1)
     throw InputError("give one of --thickness, --density and --density-field: each one sets the wall's thickness");
   ProgressBar bar;
-  mesh::MeshSummary summary = mesh::run_mesh(s, [&](const std::string& stage, double f) { bar.update(stage, f); });
+  mesh::MeshSummary summary = mesh::run_mesh(
+      s, [&](const std::string& stage, double f) { bar.update(stage, f); },
+      [&](const std::string& warning) {
+        bar.clear();
+        std::fprintf(stderr, "offsetgen mesh: warning: %s\n", warning.c_str());
+      });
   bar.clear();
   if (!o.quiet) std::fputs(mesh::format_summary(summary).c_str(), stdout);
   return kExitOk;

@@ -12,5 +12,7 @@ int run_mesh_command(const MeshOptions& options);
 
 // "3" -> {3, 3, 3}; "4x2" -> {4, 2, 2}; "2x3x4" -> {2, 3, 4}. Throws InputError.
 std::array<int, 3> parse_cells(const std::string& text);
+// "1,2.5,-3" -> {1, 2.5, -3} (--origin). Throws InputError naming `option`.
+std::array<double, 3> parse_point(const std::string& text, const std::string& option);
 
 }  // namespace offsetgen

@@ -7,8 +7,9 @@ namespace offsetgen {
 void add_mesh_command(CLI::App& app, MeshOptions& o) {
   auto* cmd = app.add_subcommand(
       "mesh",
-      "Mesh a block of cells of a wall solid (walls of thickness t around F = 0, capped by the block) as a\n"
-      "closed, outward-oriented triangle mesh in millimetres, ready for a slicer (OpenVDB volumeToMesh)");
+      "Mesh a block of cells of a wall solid (walls of thickness t around F = 0, capped by the block), or fill a\n"
+      "part (--body) with it inside a solid skin, as a closed, outward-oriented triangle mesh in millimetres,\n"
+      "ready for a slicer (OpenVDB volumeToMesh)");
   cmd->add_option("-s,--surface", o.surface, "Catalog surface (see `offsetgen list`)");
   cmd->add_option("-e,--expr", o.expression, "Your own F(x, y, z) in cell units, as in `generate`");
   cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
@@ -25,10 +26,34 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->add_option("--density-field", o.density_field,
                   "Instead of --thickness: a graded relative density rho(x, y, z), t(p) = "
                   "thickness_for_density(rho(p))");
-  cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
+  auto* cells = cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
+  auto* body = cmd->add_option("-b,--body", o.body,
+                               "Fill this part instead of a block: a closed surface as STL (binary or ASCII), PLY, "
+                               "OBJ or 3MF, in millimetres");
+  body->excludes(cells);
+  cmd->add_option("--skin", o.skin,
+                  "With --body: a solid skin this thick (mm) inward from the body's surface; the lattice fills the "
+                  "core inside it and joins it (0: the lattice cut flush by the body)")
+      ->capture_default_str()
+      ->needs(body);
+  cmd->add_option("--fillet", o.fillet, "With --skin: blend the walls into the skin with this radius (mm)")
+      ->needs(body);
+  cmd->add_option("--origin", o.origin,
+                  "With --body: X,Y,Z (mm) where a lattice cell's corner sits (default the body's bounding-box "
+                  "minimum); x, y, z of --thickness and --density-field count cells from it")
+      ->needs(body);
+  cmd->add_option("--scale", o.scale, "With --body: multiply its coordinates (25.4 for inches, 1000 for metres)")
+      ->capture_default_str()
+      ->needs(body);
+  cmd->add_flag("--repair", o.repair,
+                "With --body: weld, drop degenerate and duplicate facets, orient them consistently and fill simple "
+                "holes instead of refusing an open body (the summary says what was repaired)")
+      ->needs(body);
   cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
-  cmd->add_option("-r,--resolution", o.resolution,
-                  "Voxels per cell (default: the thinnest wall spans 4 voxels; at least 2 are required)");
+  auto* resolution =
+      cmd->add_option("-r,--resolution", o.resolution,
+                      "Voxels per cell (default: the thinnest wall spans 4 voxels, a skin 3; at least 2 are required)");
+  cmd->add_option("--voxel", o.voxel, "Voxel edge in millimetres, instead of --resolution")->excludes(resolution);
   cmd->add_option("-a,--adaptivity", o.adaptivity,
                   "Merge flat regions into larger triangles, 0 (off) to 1: smaller files")
       ->capture_default_str();
@@ -41,7 +66,10 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->footer(
       "Exit status: 0 success, 2 usage or input error (no file is written then), 3 internal error.\n"
       "Examples: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl\n"
-      "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl");
+      "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl\n"
+      "          offsetgen mesh --surface gyroid --density 0.2 --body part.stl --skin 1.2 --cell-size 4 -o filled.stl\n"
+      "With --body, insideness comes from OpenVDB's mesh-to-level-set sign flood fill (facet orientation and\n"
+      "self-intersections do not change it); the body must be closed (see --repair). docs/parts.md explains.");
 }
 
 }  // namespace offsetgen

@@ -20,8 +20,12 @@ struct MeshOptions {
   std::vector<std::string> params;
   std::string method = kDefaultMethod;
   int order = 4;
+  std::string body, origin;  // --body FILE, --origin X,Y,Z
+  double skin = 0, fillet = 0, scale = 1;
+  bool repair = false;
   double cell_size = 10;
   int resolution = 0;
+  double voxel = 0;
   double adaptivity = 0;
   double min_piece = 0.01;
   int threads = 0;

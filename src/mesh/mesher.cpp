@@ -1,6 +1,10 @@
 #include "mesh/mesher.h"
 
+#include "body/body_files.h"
+#include "body/body_topology.h"
 #include "emit/file_writer.h"
+#include "mesh/body_domain.h"
+#include "mesh/box_domain.h"
 #include "mesh/narrow_band.h"
 #include "mesh/vdb_surface.h"
 
@@ -9,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <thread>
 
 namespace offsetgen::mesh {
@@ -28,17 +33,37 @@ class StageClock {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+bool positive_length(double x) { return x > 0 && std::isfinite(x); }
+
 void validate(const MeshSettings& s) {
   for (int n : s.cells)
     if (n < 1) throw InputError(fmt::format("--cells: {} is not a positive number of cells", n));
-  if (!(s.cell_size > 0) || !std::isfinite(s.cell_size))
+  if (!positive_length(s.cell_size))
     throw InputError(fmt::format("--cell-size {} is not a positive length (mm)", s.cell_size));
   if (s.resolution < 0) throw InputError(fmt::format("--resolution {} is not a positive voxel count", s.resolution));
+  if (s.voxel != 0 && !positive_length(s.voxel))
+    throw InputError(fmt::format("--voxel {} is not a positive length (mm)", s.voxel));
+  if (s.voxel != 0 && s.resolution != 0) throw InputError("give --resolution or --voxel, not both");
   if (!(s.adaptivity >= 0 && s.adaptivity <= 1))
     throw InputError(fmt::format("--adaptivity {} is outside [0, 1]", s.adaptivity));
   if (!(s.min_piece >= 0 && s.min_piece < 1))
     throw InputError(fmt::format("--min-piece {} is outside [0, 1)", s.min_piece));
-  if (s.output.empty()) throw InputError("no output file: use -o part.stl (or .ply)");
+  if (s.output.empty()) throw InputError("no output file: use -o part.stl (or .ply, .3mf)");
+  if (!s.body) return;
+  const BodySettings& b = *s.body;
+  if (!positive_length(b.scale)) throw InputError(fmt::format("--scale {} is not a positive factor", b.scale));
+  if (!(b.skin >= 0 && std::isfinite(b.skin)))
+    throw InputError(fmt::format("--skin {} is not a thickness >= 0 (mm)", b.skin));
+  if (!(b.fillet >= 0 && std::isfinite(b.fillet)))
+    throw InputError(fmt::format("--fillet {} is not a radius >= 0 (mm)", b.fillet));
+  if (b.fillet > 0 && b.skin == 0) throw InputError("--fillet blends the walls into the skin: it needs --skin > 0");
+  if (b.origin)
+    for (double x : *b.origin)
+      if (!std::isfinite(x)) throw InputError("--origin: the coordinates must be finite numbers (mm)");
+  // Never overwrite the part being read.
+  std::error_code ec;
+  if (std::filesystem::equivalent(b.path, s.output, ec))
+    throw InputError(fmt::format("-o {} is the body itself: choose another output file", s.output));
 }
 
 // What sets the wall: "t=0.1", "rho=0.2" or "rho=<expression>".
@@ -50,47 +75,154 @@ std::string wall_text(const MeshSettings& s) {
 }
 
 std::string description(const MeshSettings& s, const MeshSummary& m, const std::string& surface) {
-  return fmt::format("offsetgen mesh {} {} {}x{}x{} cells of {} mm, {} voxels/cell", surface, wall_text(s),
-                     m.cells[0], m.cells[1], m.cells[2], m.cell_size, m.resolution);
+  if (m.body)
+    return fmt::format("offsetgen mesh {} {} in {}, skin {} mm, {} mm cells, voxel {:.4g} mm", surface, wall_text(s),
+                       std::filesystem::path(m.body->path).filename().string(), m.body->skin, m.cell_size,
+                       m.body->voxel);
+  return fmt::format("offsetgen mesh {} {} {}x{}x{} cells of {} mm, {} voxels/cell", surface, wall_text(s), m.cells[0],
+                     m.cells[1], m.cells[2], m.cell_size, m.resolution);
 }
 
-}  // namespace
-
-int automatic_resolution(const std::array<int, 3>& cells, double min_thickness) {
-  const int per_wall = static_cast<int>(std::ceil(kDefaultVoxelsPerWall / min_thickness - 1e-9));
-  const int largest = *std::max_element(cells.begin(), cells.end());
-  const int per_block = (kDefaultBlockVoxels + largest - 1) / largest;
-  return std::max(per_wall, per_block);
+void check_wall_voxels(double min_thickness, double voxels_per_cell, const std::string& option) {
+  if (min_thickness * voxels_per_cell >= kMinVoxelsPerWall) return;
+  throw InputError(
+      fmt::format("the thinnest wall ({:.4g} cell) spans {:.3g} voxels at {}: walls need at least {} voxels; "
+                  "use --resolution {} or more (the default gives {})",
+                  min_thickness, min_thickness * voxels_per_cell, option, kMinVoxelsPerWall,
+                  static_cast<int>(std::ceil(kMinVoxelsPerWall / min_thickness)), kDefaultVoxelsPerWall));
 }
 
-MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress) {
-  validate(s);
-  MeshSummary m;
-  m.output = s.output;
-  m.format = format_for_path(s.output);
-  m.cells = s.cells;
-  m.cell_size = s.cell_size;
-  try {
-    require_writable(s.output);
-  } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
+// Reads the body, scales it and makes sure it is closed (or repairs it); says what it did.
+body::BodyMesh load_body(const BodySettings& b, BodySummary& out, const WarningCallback& warn) {
+  body::BodyMesh mesh = body::read_body_file(b.path);
+  if (b.scale != 1)
+    for (auto& p : mesh.points)
+      for (double& x : p) x *= b.scale;
+  body::TopologyReport topology = body::analyse_topology(mesh);
+  if (!topology.closed() && !b.repair)
+    throw InputError(fmt::format(
+        "{}: the body is not a closed surface, so it has no inside: {}. Close it in your CAD tool, or try --repair",
+        b.path, topology.describe()));
+  if (b.repair) {
+    const body::RepairReport repair = body::repair_body(mesh);
+    topology = body::analyse_topology(mesh);
+    if (!topology.closed())
+      throw InputError(fmt::format("{}: --repair {} but the body is still not closed: {}", b.path, repair.describe(),
+                                   topology.describe()));
+    out.repaired = repair.describe();
   }
+  out.path = b.path;
+  out.triangles = mesh.triangles.size();
+  out.box = body::bounding_box(mesh);
+  out.volume = std::abs(body::signed_volume(mesh));
+  double longest = 0;
+  for (size_t a = 0; a < 3; ++a) longest = std::max(longest, out.box[1][a] - out.box[0][a]);
+  if (warn && longest < 1)
+    warn(
+        fmt::format("the body is {:.3g} mm across: if it was exported in metres, use --scale 1000 (inches: "
+                    "--scale 25.4)",
+                    longest));
+  if (warn && longest > 2000)
+    warn(
+        fmt::format("the body is {:.4g} mm across (over 2 m): if it was exported in micrometres, use --scale "
+                    "0.001; in tenths of a millimetre, --scale 0.1",
+                    longest));
+  return mesh;
+}
 
-  progress("generating the functions", -1);
-  WallField field(s.wall);
-  m.stages.push_back({"generate", field.generate_seconds()});
+// Refuses bodies that cannot hold a lattice: smaller than a cell, or all skin.
+void check_body_size(const BodySummary& body, double cell_size, double skin) {
+  double longest = 0, shortest = HUGE_VAL;
+  for (size_t a = 0; a < 3; ++a) {
+    longest = std::max(longest, body.box[1][a] - body.box[0][a]);
+    shortest = std::min(shortest, body.box[1][a] - body.box[0][a]);
+  }
+  if (longest < cell_size)
+    throw InputError(fmt::format(
+        "the body ({:.4g} mm across) is smaller than one cell ({:g} mm): use a smaller --cell-size, or --scale if "
+        "its units are not millimetres",
+        longest, cell_size));
+  if (2 * skin >= shortest)
+    throw InputError(fmt::format(
+        "--skin {:g} mm is at least half the body's smallest extent ({:.4g} mm): it leaves no core for the lattice",
+        skin, shortest));
+}
 
+std::array<std::array<double, 3>, 2> mesh_box(const TriangleMesh& mesh) {
+  std::array<std::array<double, 3>, 2> box{};
+  box[0].fill(HUGE_VAL);
+  box[1].fill(-HUGE_VAL);
+  for (const auto& p : mesh.points)
+    for (size_t a = 0; a < 3; ++a) {
+      box[0][a] = std::min(box[0][a], double(p[a]));
+      box[1][a] = std::max(box[1][a], double(p[a]));
+    }
+  return box;
+}
+
+int threads_for(const MeshSettings& s) {
+  return s.threads > 0 ? s.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+// Samples, extracts and sorts the part; points in millimetres through `to_mm` (voxel index -> mm).
+template <typename ToMm>
+TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Domain& domain, const VoxelGrid& grid,
+                       MeshSummary& m, StageClock& clock, const ProgressCallback& progress, const ToMm& to_mm) {
+  const auto sample_start = std::chrono::steady_clock::now();
+  SampledBand band = sample_band(field, domain, grid, m.max_thickness, m.field_bound_used, threads_for(s),
+                                 [&](double fraction) { progress("sampling the narrow band", fraction); });
+  const double sample_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sample_start).count();
+  m.wall_samples = band.wall_samples;
+  m.skipped_voxels = band.skipped_voxels;
+  if (m.body) m.body->deep_blocks = band.deep_blocks;
+  m.samples_per_second = sample_seconds > 0 ? double(band.wall_samples) / sample_seconds : 0;
+  clock.done("sample");
+
+  progress("extracting the surface (OpenVDB)", -1);
+  TriangleMesh mesh = extract_surface(band, s.adaptivity);
+  band = SampledBand{};
+  for (auto& p : mesh.points) p = to_mm(p);
+  clock.done("extract");
+
+  progress("orienting and sorting pieces", -1);
+  m.pieces = keep_large_pieces(mesh, s.min_piece);
+  if (mesh.triangles.empty())
+    throw InputError(m.body ? "the body holds no wall: the surface does not cross it, or the walls fall between the "
+                              "voxels"
+                            : "the block holds no wall: the surface does not cross it, or the walls fall between "
+                              "the voxels");
+  m.points = mesh.points.size();
+  m.triangles = mesh.triangles.size();
+  m.volume = m.pieces.volume;
+  return mesh;
+}
+
+void write_part(const MeshSettings& s, const TriangleMesh& mesh, MeshSummary& m, const WallField& field,
+                StageClock& clock, const ProgressCallback& progress) {
+  progress("writing " + s.output, -1);
+  const std::string bytes = encode_mesh(mesh, m.format, description(s, m, field.generation().surface.name));
+  m.file_bytes = bytes.size();
+  write_file(s.output, bytes);
+  clock.done("write");
+}
+
+MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, const ProgressCallback& progress) {
   const auto range = field.thickness_range(s.cells);
   m.min_thickness = range[0];
   m.max_thickness = range[1];
-  m.automatic_resolution = s.resolution == 0;
-  m.resolution = m.automatic_resolution ? automatic_resolution(s.cells, m.min_thickness) : s.resolution;
-  if (m.min_thickness * m.resolution < kMinVoxelsPerWall)
-    throw InputError(fmt::format(
-        "the thinnest wall ({:.4g} cell) spans {:.3g} voxels at --resolution {}: walls need at least {} voxels; "
-        "use --resolution {} or more (the default gives {})",
-        m.min_thickness, m.min_thickness * m.resolution, m.resolution, kMinVoxelsPerWall,
-        static_cast<int>(std::ceil(kMinVoxelsPerWall / m.min_thickness)), kDefaultVoxelsPerWall));
+  m.automatic_resolution = s.resolution == 0 && s.voxel == 0;
+  if (s.voxel > 0) {
+    const double per_cell = s.cell_size / s.voxel;
+    if (std::abs(per_cell - std::round(per_cell)) > 1e-6 * per_cell)
+      throw InputError(fmt::format(
+          "--voxel {:g} mm does not divide the cell ({:g} mm) in a block: the block's faces must lie between "
+          "voxels; use --resolution, or a voxel of {:g} mm / N",
+          s.voxel, s.cell_size, s.cell_size));
+    m.resolution = static_cast<int>(std::lround(per_cell));
+  } else {
+    m.resolution = m.automatic_resolution ? automatic_resolution(s.cells, m.min_thickness) : s.resolution;
+  }
+  check_wall_voxels(m.min_thickness, m.resolution, fmt::format("--resolution {}", m.resolution));
   double voxels = 1;
   for (int n : s.cells) voxels *= double(n) * m.resolution + 4;
   if (voxels > kMaxVoxels)
@@ -106,47 +238,195 @@ MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress) {
   StageClock clock(m.stages);
 
   VoxelGrid grid;
-  grid.cells = s.cells;
   grid.resolution = m.resolution;
-  const int threads = s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency());
-  const auto sample_start = std::chrono::steady_clock::now();
   // M bounds |grad F| over the unit cell; catalog surfaces repeat it, user expressions need not.
   const bool single_cell = s.cells == std::array<int, 3>{1, 1, 1};
   m.field_bound_used = field.generation().surface.from_catalog || single_cell;
-  SampledBand band = sample_band(field, grid, m.max_thickness, m.field_bound_used, threads,
-                                 [&](double fraction) { progress("sampling the narrow band", fraction); });
-  const double sample_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sample_start).count();
-  m.wall_samples = band.wall_samples;
-  m.skipped_voxels = band.skipped_voxels;
-  m.samples_per_second = sample_seconds > 0 ? double(band.wall_samples) / sample_seconds : 0;
-  clock.done("sample");
-
-  progress("extracting the surface (OpenVDB)", -1);
-  TriangleMesh mesh = extract_surface(band, s.adaptivity);
-  band = SampledBand{};
+  const BoxDomain domain(s.cells, grid.voxel());
   // Voxel i sits at (i + 0.5) voxels, in millimetres.
   const double mm = s.cell_size * grid.voxel();
-  for (auto& p : mesh.points)
+  TriangleMesh mesh = mesh_part(s, field, domain, grid, m, clock, progress, [mm](std::array<float, 3> p) {
     for (float& x : p) x = static_cast<float>((double(x) + 0.5) * mm);
-  clock.done("extract");
-
-  progress("orienting and sorting pieces", -1);
-  m.pieces = keep_large_pieces(mesh, s.min_piece);
-  if (mesh.triangles.empty())
-    throw InputError("the block holds no wall: the surface does not cross it, or the walls fall between the voxels");
-  m.points = mesh.points.size();
-  m.triangles = mesh.triangles.size();
-  m.volume = m.pieces.volume;
+    return p;
+  });
   m.box_volume = double(s.cells[0]) * s.cells[1] * s.cells[2] * std::pow(s.cell_size, 3);
   m.requested_density = s.wall.generation.density;
   clock.done("pieces");
-
-  progress("writing " + s.output, -1);
-  const std::string bytes = encode_mesh(mesh, m.format, description(s, m, field.generation().surface.name));
-  m.file_bytes = bytes.size();
-  write_file(s.output, bytes);
-  clock.done("write");
+  write_part(s, mesh, m, field, clock, progress);
   return m;
+}
+
+MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh& body_mesh, WallField& field,
+                     const ProgressCallback& progress) {
+  BodySummary& b = *m.body;
+  const BodySettings& settings = *s.body;
+  b.skin = settings.skin;
+  b.fillet = settings.fillet;
+  b.origin = settings.origin ? *settings.origin : b.box[0];
+  // The thickness over the body's box, in cells from the origin.
+  std::array<double, 3> lo{}, hi{};
+  double longest = 0;
+  for (size_t a = 0; a < 3; ++a) {
+    lo[a] = (b.box[0][a] - b.origin[a]) / s.cell_size;
+    hi[a] = (b.box[1][a] - b.origin[a]) / s.cell_size;
+    longest = std::max(longest, hi[a] - lo[a]);
+  }
+  const auto range = field.thickness_range(lo, hi);
+  m.min_thickness = range[0];
+  m.max_thickness = range[1];
+  m.automatic_resolution = s.resolution == 0 && s.voxel == 0;
+  if (s.voxel > 0) {
+    b.voxel = s.voxel;
+  } else {
+    int resolution = m.automatic_resolution ? automatic_resolution(longest, m.min_thickness) : s.resolution;
+    // The skin spans at least 3 voxels by default.
+    if (m.automatic_resolution && settings.skin > 0)
+      resolution = std::max(resolution, static_cast<int>(std::ceil(3 * s.cell_size / settings.skin - 1e-9)));
+    b.voxel = s.cell_size / resolution;
+  }
+  const double per_cell = s.cell_size / b.voxel;
+  m.resolution = static_cast<int>(std::lround(per_cell));
+  check_wall_voxels(
+      m.min_thickness, per_cell,
+      s.voxel > 0 ? fmt::format("--voxel {:g} mm", s.voxel) : fmt::format("{} voxels per cell", m.resolution));
+  if (settings.skin > 0 && settings.skin < 2 * b.voxel)
+    throw InputError(
+        fmt::format("--skin {:g} mm spans {:.3g} voxels of {:.4g} mm: a skin needs at least 2; use "
+                    "--voxel {:g} or less",
+                    settings.skin, settings.skin / b.voxel, b.voxel, settings.skin / 2));
+  double voxels = 1;
+  for (size_t a = 0; a < 3; ++a) voxels *= (b.box[1][a] - b.box[0][a]) / b.voxel + 16;
+  if (voxels > kMaxVoxels)
+    throw InputError(
+        fmt::format("the body's box at {:.4g} mm voxels is {:.3g} voxels, above the limit of {:.3g}; "
+                    "use a larger --voxel (or --resolution)",
+                    b.voxel, voxels, kMaxVoxels));
+
+  progress("compiling the functions", -1);
+  field.compile();
+  m.stages.push_back({"compile", field.compile_seconds()});
+  m.compile_flags = field.compile_flags();
+  StageClock clock(m.stages);
+
+  progress("the body's level set (OpenVDB meshToVolume)", -1);
+  const VoxelFrame frame{b.origin, b.voxel};
+  const BodyDomain domain(body_mesh, frame, settings.skin / b.voxel, settings.fillet / b.voxel);
+  b.band_voxels = domain.band_voxels();
+  b.band_bytes = domain.memory_bytes();
+  b.level_set_volume = domain.volume_below(0);
+  b.core_volume = settings.skin > 0 ? domain.volume_below(-settings.skin / b.voxel) : b.level_set_volume;
+  b.skin_volume = b.level_set_volume - b.core_volume;
+  if (!(b.core_volume > 0))
+    throw InputError(
+        fmt::format("--skin {:g} mm leaves no core inside the body: the body is nowhere thicker than "
+                    "twice the skin",
+                    settings.skin));
+  clock.done("body");
+
+  VoxelGrid grid;
+  grid.resolution = m.resolution;
+  grid.voxel_size = b.voxel / s.cell_size;
+  m.field_bound_used = field.generation().surface.from_catalog;
+  TriangleMesh mesh = mesh_part(s, field, domain, grid, m, clock, progress, [&frame](const std::array<float, 3>& p) {
+    const auto q = frame.centre_mm({double(p[0]), double(p[1]), double(p[2])});
+    return std::array<float, 3>{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
+  });
+  clock.done("pieces");
+
+  progress("measuring the skin", -1);
+  b.part_box = mesh_box(mesh);
+  if (settings.skin > 0) b.measured_skin = measure_skin(mesh, domain.distances(mesh.points), b.voxel);
+  b.expected_density = s.wall.generation.density ? s.wall.generation.density : field.uniform_density();
+  m.box_volume = b.level_set_volume;
+  m.requested_density = s.wall.generation.density;
+  clock.done("measure");
+  write_part(s, mesh, m, field, clock, progress);
+  return m;
+}
+
+std::string format_box(const std::array<std::array<double, 3>, 2>& box) {
+  return fmt::format("({:.4g}, {:.4g}, {:.4g}) to ({:.4g}, {:.4g}, {:.4g}) mm", box[0][0], box[0][1], box[0][2],
+                     box[1][0], box[1][1], box[1][2]);
+}
+
+std::string format_body(const MeshSummary& m) {
+  const BodySummary& b = *m.body;
+  std::string s;
+  s += fmt::format("  body:       {}, {} triangles{}, box {}\n", b.path, b.triangles,
+                   b.repaired.empty() ? std::string(", closed") : "; --repair: " + b.repaired, format_box(b.box));
+  s += fmt::format("              volume {:.6g} mm^3 (its level set: {:.6g}, {:+.3f}%)\n", b.volume, b.level_set_volume,
+                   100 * (b.level_set_volume / b.volume - 1));
+  s += fmt::format(
+      "  lattice:    cells of {:g} mm from the origin ({:.4g}, {:.4g}, {:.4g}) mm (x, y, z of --thickness "
+      "and --density-field count cells from there); wall {:.4g}{} cell; voxel {:.4g} mm ({:.4g} per "
+      "cell{})\n",
+      m.cell_size, b.origin[0], b.origin[1], b.origin[2], m.min_thickness,
+      m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string(), b.voxel,
+      m.cell_size / b.voxel, m.automatic_resolution ? ", automatic" : "");
+  if (b.skin > 0) {
+    s += fmt::format("  skin:       {:g} mm{}: core {:.6g} mm^3, skin {:.6g} mm^3 (from the level set)\n", b.skin,
+                     b.fillet > 0 ? fmt::format(", walls joined with a {:g} mm fillet", b.fillet) : std::string(),
+                     b.core_volume, b.skin_volume);
+    s += fmt::format(
+        "              measured: thinnest {:.4g} mm over {} cavities (request {:g}, one voxel {:.4g}); "
+        "outer surface at most {:.3g} mm deep\n",
+        b.measured_skin.thinnest, b.measured_skin.cavities, b.skin, b.voxel, b.measured_skin.outer_deepest);
+  } else {
+    s += "  skin:       none (--skin 0): the lattice is cut flush by the body\n";
+  }
+  const double lattice = (m.volume - b.skin_volume) / b.core_volume;
+  s += fmt::format("  density:    lattice {:.4f} of the core measured", lattice);
+  if (b.expected_density) {
+    const double expected = b.skin_volume + *b.expected_density * b.core_volume;
+    s += fmt::format(" ({} {:.4f}); part {:.6g} mm^3 against V_skin + rho V_core = {:.6g} mm^3 ({:+.2f}%)",
+                     m.requested_density ? "--density" : "the wall's sheet density", *b.expected_density, m.volume,
+                     expected, 100 * (m.volume / expected - 1));
+  }
+  s += "\n";
+  s += fmt::format("  part box:   {}\n", format_box(b.part_box));
+  return s;
+}
+
+}  // namespace
+
+int automatic_resolution(double longest, double min_thickness) {
+  const int per_wall = static_cast<int>(std::ceil(kDefaultVoxelsPerWall / min_thickness - 1e-9));
+  const int per_block = static_cast<int>(std::ceil(kDefaultBlockVoxels / longest - 1e-9));
+  return std::max(per_wall, per_block);
+}
+
+int automatic_resolution(const std::array<int, 3>& cells, double min_thickness) {
+  const int per_wall = static_cast<int>(std::ceil(kDefaultVoxelsPerWall / min_thickness - 1e-9));
+  const int largest = *std::max_element(cells.begin(), cells.end());
+  const int per_block = (kDefaultBlockVoxels + largest - 1) / largest;
+  return std::max(per_wall, per_block);
+}
+
+MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress, const WarningCallback& warn) {
+  validate(s);
+  MeshSummary m;
+  m.output = s.output;
+  m.format = format_for_path(s.output);
+  m.cells = s.cells;
+  m.cell_size = s.cell_size;
+  try {
+    require_writable(s.output);
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+  // The body first: a bad file fails before anything is generated.
+  body::BodyMesh body_mesh;
+  if (s.body) {
+    progress("reading the body", -1);
+    m.body.emplace();
+    body_mesh = load_body(*s.body, *m.body, warn);
+    check_body_size(*m.body, s.cell_size, s.body->skin);
+  }
+
+  progress("generating the functions", -1);
+  WallField field(s.wall);
+  m.stages.push_back({"generate", field.generate_seconds()});
+  return s.body ? run_body(s, std::move(m), body_mesh, field, progress) : run_block(s, std::move(m), field, progress);
 }
 
 std::string format_summary(const MeshSummary& m) {
@@ -159,14 +439,19 @@ std::string format_summary(const MeshSummary& m) {
   }
   s += fmt::format("offsetgen mesh: {} written ({}, {:.1f} MB)\n", m.output, format_name(m.format),
                    static_cast<double>(m.file_bytes) / 1e6);
-  s += fmt::format("  block:      {}x{}x{} cells of {:g} mm, {} voxels per cell{}, wall {:.4g}{} cell\n", m.cells[0],
-                   m.cells[1], m.cells[2], m.cell_size, m.resolution, m.automatic_resolution ? " (automatic)" : "",
-                   m.min_thickness,
-                   m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string());
+  if (m.body) {
+    s += format_body(m);
+  } else {
+    s += fmt::format("  block:      {}x{}x{} cells of {:g} mm, {} voxels per cell{}, wall {:.4g}{} cell\n", m.cells[0],
+                     m.cells[1], m.cells[2], m.cell_size, m.resolution, m.automatic_resolution ? " (automatic)" : "",
+                     m.min_thickness,
+                     m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string());
+  }
   s += fmt::format("  mesh:       {} triangles, {} vertices\n", m.triangles, m.points);
-  s += fmt::format("  volume:     {:.6g} mm^3, relative density {:.4f} (box {:.6g} mm^3{})\n", m.volume,
-                   m.volume / m.box_volume, m.box_volume,
-                   m.requested_density ? fmt::format("; --density {}", *m.requested_density) : std::string());
+  if (!m.body)
+    s += fmt::format("  volume:     {:.6g} mm^3, relative density {:.4f} (box {:.6g} mm^3{})\n", m.volume,
+                     m.volume / m.box_volume, m.box_volume,
+                     m.requested_density ? fmt::format("; --density {}", *m.requested_density) : std::string());
   s += fmt::format("  pieces:     {} kept, {} dropped below the volume threshold ({:.3g} mm^3){}\n", m.pieces.kept,
                    m.pieces.dropped, m.pieces.dropped_volume,
                    m.pieces.cavities ? fmt::format(", {} closed cavities", m.pieces.cavities) : std::string());
@@ -176,6 +461,9 @@ std::string format_summary(const MeshSummary& m) {
       m.wall_samples, m.samples_per_second, m.compile_flags,
       m.field_bound_used ? std::to_string(m.skipped_voxels)
                          : std::string("none (M bounds |grad F| over one cell, and this expression spans several)"));
+  if (m.body)
+    s += fmt::format("  memory:     body level set {} voxels ({:.1f} MB)\n", m.body->band_voxels,
+                     double(m.body->band_bytes) / 1e6);
   s += fmt::format("  time:       {:.2f} s ({})\n", total, stages);
   return s;
 }

@@ -1,10 +1,12 @@
-// `offsetgen mesh`: a block of cells of a wall solid as a closed, outward-oriented triangle mesh in
-// millimetres. Stages: generate + compile the header (wall_field), sample a narrow band
-// (narrow_band), extract with OpenVDB (vdb_surface), keep the large pieces (triangle_mesh), write
-// the file atomically (mesh_files).
+// `offsetgen mesh`: a block of cells of a wall solid, or a body filled with it inside a skin, as a
+// closed, outward-oriented triangle mesh in millimetres. Stages: generate + compile the header
+// (wall_field), read the body and build its level set (body/, body_domain), sample a narrow band
+// (narrow_band), extract with OpenVDB (vdb_surface), keep the large pieces (triangle_mesh), measure
+// the skin (skin_measure), write the file atomically (mesh_files).
 #pragma once
 
 #include "mesh/mesh_files.h"
+#include "mesh/skin_measure.h"
 #include "mesh/triangle_mesh.h"
 #include "mesh/wall_field.h"
 
@@ -16,13 +18,25 @@
 
 namespace offsetgen::mesh {
 
+// A part to fill instead of a block (docs/parts.md).
+struct BodySettings {
+  std::string path;                             // STL, PLY, OBJ or 3MF, in millimetres
+  double scale = 1;                             // multiplies the body's coordinates
+  double skin = 0;                              // mm; 0: the lattice cut flush by the body
+  double fillet = 0;                            // mm: radius of the blend where walls meet the skin
+  std::optional<std::array<double, 3>> origin;  // a lattice cell's corner, mm; default the body's box minimum
+  bool repair = false;                          // repair an open or inconsistent body instead of refusing it
+};
+
 struct MeshSettings {
   WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};
-  double cell_size = 10;    // mm
-  int resolution = 0;       // voxels per cell; 0 picks automatic_resolution()
-  double adaptivity = 0;    // OpenVDB volumeToMesh adaptivity, [0, 1]
-  double min_piece = 0.01;  // pieces below this fraction of the largest piece's volume are dropped
+  std::optional<BodySettings> body;  // instead of cells
+  double cell_size = 10;             // mm
+  int resolution = 0;                // voxels per cell; 0 picks automatic_resolution()
+  double voxel = 0;                  // mm, instead of resolution (with a body it need not divide the cell)
+  double adaptivity = 0;             // OpenVDB volumeToMesh adaptivity, [0, 1]
+  double min_piece = 0.01;           // pieces below this fraction of the largest piece's volume are dropped
   std::string output;
   int threads = 0;  // 0: one per hardware thread
 };
@@ -39,8 +53,26 @@ struct StageTime {
   double seconds = 0;
 };
 
+struct BodySummary {
+  std::string path;
+  size_t triangles = 0;
+  std::string repaired;                             // what --repair did; empty without it
+  std::array<std::array<double, 3>, 2> box{};       // mm, after --scale
+  std::array<std::array<double, 3>, 2> part_box{};  // of the written mesh
+  std::array<double, 3> origin{};                   // the lattice's origin, mm
+  double voxel = 0;                                 // mm
+  double skin = 0, fillet = 0;                      // mm, as requested
+  double volume = 0;                                // of the body's mesh, mm^3
+  double level_set_volume = 0;                      // of its level set: the error of the two below
+  double core_volume = 0, skin_volume = 0;
+  size_t band_voxels = 0, band_bytes = 0, deep_blocks = 0;
+  std::optional<double> expected_density;  // --density, or the sheet density of a uniform --thickness
+  SkinReport measured_skin;
+};
+
 struct MeshSummary {
   std::string output;
+  std::optional<BodySummary> body;
   MeshFormat format = MeshFormat::Stl;
   std::array<int, 3> cells{};
   double cell_size = 0;
@@ -51,7 +83,7 @@ struct MeshSummary {
   bool field_bound_used = true;   // blocks ruled out by F (narrow_band.h)
   double samples_per_second = 0;  // wall samples (each two _offset values) per second of the sample stage
   size_t points = 0, triangles = 0, file_bytes = 0;
-  double volume = 0, box_volume = 0;  // mm^3
+  double volume = 0, box_volume = 0;        // mm^3
   std::optional<double> requested_density;  // --density R
   PieceReport pieces;
   std::string compile_flags;
@@ -60,11 +92,16 @@ struct MeshSummary {
 
 // Called with a stage name and a fraction in [0, 1] (negative: no fraction known).
 using ProgressCallback = std::function<void(const std::string& stage, double fraction)>;
+// Called with a warning that does not stop the run (a body whose size suggests other units).
+using WarningCallback = std::function<void(const std::string& message)>;
 
+// Voxels per cell: the thinnest wall spans 4 voxels and the longest side of the block (or body,
+// `longest` in cells) at least 128.
+int automatic_resolution(double longest, double min_thickness);
 int automatic_resolution(const std::array<int, 3>& cells, double min_thickness);
 
 // Throws InputError for bad settings before any file is touched.
-MeshSummary run_mesh(const MeshSettings& settings, const ProgressCallback& progress);
+MeshSummary run_mesh(const MeshSettings& settings, const ProgressCallback& progress, const WarningCallback& warn = {});
 
 std::string format_summary(const MeshSummary& summary);
 

@@ -3,6 +3,7 @@
 // a face of the box [0, N] (cells).
 #pragma once
 
+#include "mesh/domain.h"
 #include "mesh/wall_field.h"
 
 #include <array>
@@ -18,14 +19,16 @@ inline constexpr int kBlockVoxels = kBlock * kBlock * kBlock;
 // Voxels of a block are stored x-major: (x * 8 + y) * 8 + z, as in an OpenVDB leaf.
 inline constexpr int block_offset(int x, int y, int z) { return (x * kBlock + y) * kBlock + z; }
 
+// Voxel i of an axis is centred at (i + 0.5) * voxel (cell units) from the lattice's origin.
 struct VoxelGrid {
-  std::array<int, 3> cells{1, 1, 1};
-  int resolution = 32;  // voxels per cell
-  double voxel() const { return 1.0 / resolution; }
+  int resolution = 32;    // voxels per cell
+  double voxel_size = 0;  // cell units; 0: 1 / resolution (a --voxel that need not divide the cell)
+  double voxel() const { return voxel_size > 0 ? voxel_size : 1.0 / resolution; }
 };
 
 // The sampled band. Values are in voxel units (roughly the distance to the solid's surface), negative
-// inside the solid: max(w, box), so the box caps the walls with flat faces; clamped to +-background.
+// inside the solid: the part of domain.h (max(w, box) for a block, so the box caps the walls with flat
+// faces); clamped to +-background.
 // Active voxels are those within 2 voxels of the surface; the others hold their value (or
 // `background` where the walls were not evaluated: outside, at least 2 voxels from the surface).
 struct BandBlock {
@@ -40,12 +43,14 @@ struct SampledBand {
   size_t blocks_tested = 0;   // blocks of the padded box
   size_t wall_samples = 0;    // voxels where the walls were evaluated
   size_t skipped_voxels = 0;  // voxels ruled out by F at the centre of their block or sub-block
+  size_t deep_blocks = 0;     // blocks inside the core, beyond the skin: the lattice alone
 };
 
-// Samples the band with `threads` threads; `progress(fraction)` is called from the calling thread.
-// With use_field_bound, blocks whose F value rules out any wall nearby are skipped; that needs the
-// header's bound M on |grad F| to hold in the whole block (periodic surfaces, or a single cell).
-SampledBand sample_band(const WallField& field, const VoxelGrid& grid, double max_thickness, bool use_field_bound,
-                        int threads, const std::function<void(double)>& progress);
+// Samples the band of the part that `domain` bounds with `threads` threads; `progress(fraction)` is
+// called from the calling thread. With use_field_bound, blocks whose F value rules out any wall nearby
+// are not evaluated; that needs the header's bound M on |grad F| to hold in the whole block (periodic
+// surfaces, or a single cell).
+SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double max_thickness,
+                        bool use_field_bound, int threads, const std::function<void(double)>& progress);
 
 }  // namespace offsetgen::mesh

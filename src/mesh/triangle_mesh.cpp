@@ -40,23 +40,33 @@ double signed_volume(const TriangleMesh& mesh) {
   return v;
 }
 
+std::vector<uint32_t> point_pieces(const TriangleMesh& mesh) {
+  DisjointSets sets(mesh.points.size());
+  for (const auto& t : mesh.triangles) {
+    sets.unite(t[0], t[1]);
+    sets.unite(t[0], t[2]);
+  }
+  std::vector<uint32_t> pieces(mesh.points.size());
+  for (size_t i = 0; i < pieces.size(); ++i) pieces[i] = sets.find(static_cast<uint32_t>(i));
+  return pieces;
+}
+
+std::vector<double> piece_volumes(const TriangleMesh& mesh, const std::vector<uint32_t>& pieces) {
+  std::vector<double> volume(mesh.points.size(), 0.0);
+  for (const auto& t : mesh.triangles) volume[pieces[t[0]]] += triangle_volume(mesh, t);
+  return volume;
+}
+
 PieceReport keep_large_pieces(TriangleMesh& mesh, double min_fraction) {
   PieceReport report;
   if (signed_volume(mesh) < 0)
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
 
   // Connected surfaces: triangles sharing a point.
-  DisjointSets sets(mesh.points.size());
-  for (const auto& t : mesh.triangles) {
-    sets.unite(t[0], t[1]);
-    sets.unite(t[0], t[2]);
-  }
-  std::vector<double> volume(mesh.points.size(), 0.0);
+  const std::vector<uint32_t> piece = point_pieces(mesh);
+  const std::vector<double> volume = piece_volumes(mesh, piece);
   std::vector<uint8_t> has_triangles(mesh.points.size(), 0);
-  for (const auto& t : mesh.triangles) {
-    volume[sets.find(t[0])] += triangle_volume(mesh, t);
-    has_triangles[sets.find(t[0])] = 1;
-  }
+  for (const auto& t : mesh.triangles) has_triangles[piece[t[0]]] = 1;
   double largest = 0;
   for (double v : volume) largest = std::max(largest, v);
   std::vector<uint8_t> keep(mesh.points.size(), 1);
@@ -79,7 +89,7 @@ PieceReport keep_large_pieces(TriangleMesh& mesh, double min_fraction) {
   TriangleMesh out;
   out.triangles.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
-    if (!keep[sets.find(t[0])]) continue;
+    if (!keep[piece[t[0]]]) continue;
     std::array<uint32_t, 3> u{};
     for (int k = 0; k < 3; ++k) {
       uint32_t& r = renumber[t[static_cast<size_t>(k)]];

@@ -25,6 +25,12 @@ struct PieceReport {
   double volume = 0;  // of what is kept
 };
 
+// The connected surface (piece) of each point, by triangles sharing a point: the piece's smallest
+// point index. Points no triangle uses are pieces of their own.
+std::vector<uint32_t> point_pieces(const TriangleMesh& mesh);
+// The signed volume of each piece, indexed like the points (zero for indices that are no piece's).
+std::vector<double> piece_volumes(const TriangleMesh& mesh, const std::vector<uint32_t>& pieces);
+
 // Orients the whole mesh outward, then removes every connected piece whose volume is below
 // `min_fraction` of the largest piece's, and points no triangle uses. Deterministic.
 PieceReport keep_large_pieces(TriangleMesh& mesh, double min_fraction);

@@ -2,6 +2,8 @@
 
 #include "check/compile.h"
 #include "check/process.h"
+#include "density/density_model.h"
+#include "density/surface_constants.h"
 #include "lowering/surface_programs.h"
 #include "surfaces/expression_input.h"
 
@@ -167,14 +169,23 @@ double WallField::thickness_at(double x, double y, double z, Worker& worker) con
 }
 
 std::array<double, 2> WallField::thickness_range(const std::array<int, 3>& cells) const {
+  return thickness_range({0, 0, 0}, {double(cells[0]), double(cells[1]), double(cells[2])});
+}
+
+std::array<double, 2> WallField::thickness_range(const std::array<double, 3>& box_lo,
+                                                 const std::array<double, 3>& box_hi) const {
   if (!graded_) return {uniform_thickness_, uniform_thickness_};
   constexpr int kPerCell = 8;
   Worker worker(*this);
+  std::array<int, 3> steps{};
+  for (size_t a = 0; a < 3; ++a)
+    steps[a] = std::max(1, static_cast<int>(std::ceil((box_hi[a] - box_lo[a]) * kPerCell - 1e-9)));
+  auto at = [&](size_t a, int i) { return box_lo[a] + (box_hi[a] - box_lo[a]) * i / steps[a]; };
   double lo = HUGE_VAL, hi = -HUGE_VAL;
-  for (int i = 0; i <= cells[0] * kPerCell; ++i)
-    for (int j = 0; j <= cells[1] * kPerCell; ++j)
-      for (int l = 0; l <= cells[2] * kPerCell; ++l) {
-        const double x = double(i) / kPerCell, y = double(j) / kPerCell, z = double(l) / kPerCell;
+  for (int i = 0; i <= steps[0]; ++i)
+    for (int j = 0; j <= steps[1]; ++j)
+      for (int l = 0; l <= steps[2]; ++l) {
+        const double x = at(0, i), y = at(1, j), z = at(2, l);
         const double t = thickness_at(x, y, z, worker);
         if (!(t > 0) || !std::isfinite(t))
           throw InputError(
@@ -185,6 +196,15 @@ std::array<double, 2> WallField::thickness_range(const std::array<int, 3>& cells
         hi = std::max(hi, t);
       }
   return {lo, hi};
+}
+
+std::optional<double> WallField::uniform_density() const {
+  if (graded_) return std::nullopt;
+  if (generation_.density) return generation_.density->sheet_density(uniform_thickness_);
+  const Surface& surface = generation_.surface;
+  if (!surface.from_catalog || density::density_unavailable(surface)) return std::nullopt;
+  const double rho = density::DensityModel(density::surface_constants(surface)).sheet_density(uniform_thickness_);
+  return std::isfinite(rho) ? std::optional<double>(rho) : std::nullopt;
 }
 
 void WallField::walls(size_t n, const double* x, const double* y, const double* z, double* w, Worker& worker) const {

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,9 @@ class WallField {
   // (8 samples per cell and axis). Throws InputError where it is not positive and finite.
   double thickness_at(double x, double y, double z, Worker& worker) const;
   std::array<double, 2> thickness_range(const std::array<int, 3>& cells) const;
+  std::array<double, 2> thickness_range(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
+  // The relative density of a uniform wall (docs/density.md), where the surface has a density model.
+  std::optional<double> uniform_density() const;
   bool graded() const { return graded_; }
 
   const Generation& generation() const { return generation_; }

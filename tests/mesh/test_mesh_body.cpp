@@ -1,0 +1,289 @@
+// `offsetgen mesh --body`: a lattice inside a part, checked on bodies whose insides are known in
+// closed form (a finely tessellated sphere and torus, written here as STL), with admesh, the closed-form
+// volumes of docs/parts.md and the skin read off the written mesh. Real parts nobody here drew are
+// meshed by tools/check_parts.sh (ctest label slow).
+#include "mesh/mesh_files.h"
+#include "mesh/triangle_mesh.h"
+#include "mesh_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+namespace offsetgen::mesh::testing {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = 3.14159265358979323846;
+
+// An icosphere of radius r about c: the icosahedron, each triangle split in 4 `levels` times.
+TriangleMesh sphere(double r, const std::array<double, 3>& c, int levels) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<std::array<double, 3>> p = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<std::array<uint32_t, 3>> t = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                            {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                            {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                            {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> middle;
+    auto mid = [&](uint32_t a, uint32_t b) {
+      auto key = std::minmax(a, b);
+      auto it = middle.find(key);
+      if (it != middle.end()) return it->second;
+      p.push_back({(p[a][0] + p[b][0]) / 2, (p[a][1] + p[b][1]) / 2, (p[a][2] + p[b][2]) / 2});
+      return middle[key] = static_cast<uint32_t>(p.size() - 1);
+    };
+    std::vector<std::array<uint32_t, 3>> next;
+    for (const auto& f : t) {
+      const uint32_t a = mid(f[0], f[1]), b = mid(f[1], f[2]), d = mid(f[2], f[0]);
+      next.insert(next.end(), {{f[0], a, d}, {f[1], b, a}, {f[2], d, b}, {a, b, d}});
+    }
+    t = next;
+  }
+  TriangleMesh m;
+  for (const auto& q : p) {
+    const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    m.points.push_back({static_cast<float>(c[0] + r * q[0] / n), static_cast<float>(c[1] + r * q[1] / n),
+                        static_cast<float>(c[2] + r * q[2] / n)});
+  }
+  m.triangles = t;
+  return m;
+}
+
+// A torus about the z axis through c: major radius big, minor radius small, n x m quads.
+TriangleMesh torus(double big, double small, const std::array<double, 3>& c, int n, int m) {
+  TriangleMesh out;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * kPi * i / n, v = 2 * kPi * j / m;
+      out.points.push_back({static_cast<float>(c[0] + (big + small * std::cos(v)) * std::cos(u)),
+                            static_cast<float>(c[1] + (big + small * std::cos(v)) * std::sin(u)),
+                            static_cast<float>(c[2] + small * std::sin(v))});
+    }
+  auto at = [&](int i, int j) { return static_cast<uint32_t>(((i + n) % n) * m + (j + m) % m); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      out.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      out.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return out;
+}
+
+void write_stl(const TriangleMesh& m, const std::string& path) {
+  std::ofstream(path, std::ios::binary) << encode_mesh(m, MeshFormat::Stl, "test body");
+}
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {(std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()};
+}
+
+// "key: ... <number> ..." -> the first number after `label` in the summary.
+double summary_number(const std::string& summary, const std::string& label) {
+  const size_t at = summary.find(label);
+  if (at == std::string::npos) throw std::runtime_error("no '" + label + "' in:\n" + summary);
+  return std::stod(summary.substr(at + label.size()));
+}
+
+// admesh counts every closed surface as a part: the outer one and each cavity the skin closes
+// (cavities < 0: not checked).
+void expect_admesh_clean(const std::string& stl, double cavities) {
+  std::string raw;
+  auto report = admesh_report(stl, &raw);
+  EXPECT_EQ(report["facets added"], 0) << raw;
+  EXPECT_EQ(report["backwards edges"], 0) << raw;
+  EXPECT_EQ(report["disconnected facets"], 0) << raw;
+  if (cavities >= 0) {
+    EXPECT_EQ(report["parts"], 1 + cavities) << raw;
+  }
+}
+
+// The facets of a binary STL, without its 80-byte header (which names the body).
+std::string stl_facets(const std::string& path) { return read_bytes(path).substr(80); }
+
+struct Radii {
+  double min = HUGE_VAL, max = 0;
+  size_t in_band = 0;  // vertices strictly between the given radii
+};
+Radii radii(const std::string& stl, const std::array<double, 3>& c, double band_lo, double band_hi) {
+  Radii r;
+  for (const auto& f : read_stl(stl))
+    for (const auto& v : f) {
+      const double d = std::hypot(v[0] - c[0], v[1] - c[1], v[2] - c[2]);
+      r.min = std::min(r.min, d);
+      r.max = std::max(r.max, d);
+      if (d > band_lo && d < band_hi) ++r.in_band;
+    }
+  return r;
+}
+
+constexpr double kRadius = 12, kSkin = 1.5;
+const std::array<double, 3> kCentre{20, 20, 20};
+
+// A gyroid of relative density 0.3 in 6 mm cells inside a 12 mm sphere with a 1.5 mm skin, at 0.25 mm
+// voxels: one closed solid whose outer surface is the sphere, whose skin has no surface inside it, and
+// whose volume is V_skin + rho V_core in closed form.
+TEST(MeshBody, SphereWithSkinIsOneCleanSolidWithTheClosedFormVolume) {
+  const std::string dir = scratch_dir("body-sphere");
+  write_stl(sphere(kRadius, kCentre, 5), dir + "/sphere.stl");
+  CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--density", "0.3", "--body", dir + "/sphere.stl", "--skin",
+                            "1.5", "--cell-size", "6", "--voxel", "0.25", "-o", dir + "/part.stl"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::cout << r.output;
+  expect_admesh_clean(dir + "/part.stl", summary_number(r.output, " mm over "));
+  const double voxel = 0.25;
+  // The outer surface is the sphere; nothing lies inside the skin; cavities begin at R - s.
+  const Radii rad = radii(dir + "/part.stl", kCentre, kRadius - kSkin + voxel, kRadius - voxel);
+  EXPECT_NEAR(rad.max, kRadius, voxel);
+  EXPECT_EQ(rad.in_band, 0u) << "vertices inside the skin";
+  const double measured_skin = summary_number(r.output, "measured: thinnest ");
+  EXPECT_GE(measured_skin, kSkin - voxel);
+  EXPECT_LE(measured_skin, kSkin + voxel);
+  // 4/3 pi R^3 - 4/3 pi (R - s)^3 + rho 4/3 pi (R - s)^3 (the tessellation loses 0.05% of R^3).
+  const double core = 4.0 / 3 * kPi * std::pow(kRadius - kSkin, 3);
+  const double expected = 4.0 / 3 * kPi * std::pow(kRadius, 3) - core + 0.3 * core;
+  const double volume = stl_volume(read_stl(dir + "/part.stl"));
+  std::cout << "sphere part volume " << volume << " mm^3, closed form " << expected << " ("
+            << 100 * (volume / expected - 1) << "%)\n";
+  // About 27 cells in the core: the lattice's share of it is within a few percent of rho.
+  EXPECT_NEAR(volume / expected, 1, 0.02);
+}
+
+// Without a skin the lattice is cut flush by the body: nothing outside it, and its volume is the
+// lattice's share of the sphere.
+TEST(MeshBody, SkinZeroCutsTheLatticeFlushByTheBody) {
+  const std::string dir = scratch_dir("body-flush");
+  write_stl(sphere(kRadius, kCentre, 4), dir + "/sphere.stl");
+  CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--density", "0.3", "--body", dir + "/sphere.stl",
+                            "--cell-size", "6", "--voxel", "0.25", "-o", dir + "/part.stl"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("cut flush"), std::string::npos) << r.output;
+  const Radii rad = radii(dir + "/part.stl", kCentre, 0, 0);
+  EXPECT_LE(rad.max, kRadius + 0.25);
+  const double volume = stl_volume(read_stl(dir + "/part.stl"));
+  EXPECT_NEAR(volume / (0.3 * 4.0 / 3 * kPi * std::pow(kRadius, 3)), 1, 0.05);
+}
+
+// Insideness comes from OpenVDB's sign flood fill, not from the facets' orientation: the same sphere
+// with every facet turned inward gives the same bytes.
+TEST(MeshBody, InvertedFacetsGiveTheSameBytes) {
+  const std::string dir = scratch_dir("body-inverted");
+  TriangleMesh s = sphere(kRadius, kCentre, 3);
+  write_stl(s, dir + "/out.stl");
+  for (auto& t : s.triangles) std::swap(t[1], t[2]);
+  write_stl(s, dir + "/in.stl");
+  for (const std::string name : {"out", "in"}) {
+    CliRun r =
+        run_offsetgen({"mesh", "--surface", "schwarzp", "--thickness", "0.15", "--body", dir + "/" + name + ".stl",
+                       "--skin", "1", "--cell-size", "8", "--voxel", "0.4", "-o", dir + "/part_" + name + ".stl"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  EXPECT_TRUE(stl_facets(dir + "/part_out.stl") == stl_facets(dir + "/part_in.stl"));
+}
+
+// A torus has a hole through it: the part keeps it, and its core is 2 pi^2 R (r - s)^2.
+TEST(MeshBody, TorusKeepsItsHoleAndHasTheClosedFormVolume) {
+  const std::string dir = scratch_dir("body-torus");
+  const double big = 14, small = 6, skin = 1;
+  write_stl(torus(big, small, {30, 30, 10}, 256, 96), dir + "/torus.stl");
+  CliRun r = run_offsetgen({"mesh", "--surface", "diamond", "--density", "0.35", "--body", dir + "/torus.stl", "--skin",
+                            "1", "--cell-size", "5", "--voxel", "0.2", "-o", dir + "/part.stl"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::cout << r.output;
+  expect_admesh_clean(dir + "/part.stl", summary_number(r.output, " mm over "));
+  double nearest_axis = HUGE_VAL;
+  for (const auto& f : read_stl(dir + "/part.stl"))
+    for (const auto& v : f) nearest_axis = std::min(nearest_axis, std::hypot(v[0] - 30.0, v[1] - 30.0));
+  EXPECT_NEAR(nearest_axis, big - small, 0.2);
+  const double body = 2 * kPi * kPi * big * small * small, core = 2 * kPi * kPi * big * std::pow(small - skin, 2);
+  const double expected = body - core + 0.35 * core;
+  const double volume = stl_volume(read_stl(dir + "/part.stl"));
+  std::cout << "torus part volume " << volume << " mm^3, closed form " << expected << " ("
+            << 100 * (volume / expected - 1) << "%)\n";
+  EXPECT_NEAR(volume / expected, 1, 0.02);
+}
+
+TEST(MeshBodyInput, AnOpenBodyIsRefusedWithWhereItIsOpenAndRepairClosesIt) {
+  const std::string dir = scratch_dir("body-open");
+  TriangleMesh s = sphere(kRadius, kCentre, 3);
+  s.triangles.pop_back();
+  write_stl(s, dir + "/open.stl");
+  const std::vector<std::string> base = {"mesh",   "--surface",       "gyroid",      "--thickness", "0.15",
+                                         "--body", dir + "/open.stl", "--cell-size", "8",           "--voxel",
+                                         "0.5"};
+  std::vector<std::string> args = base;
+  args.insert(args.end(), {"-o", dir + "/part.stl"});
+  CliRun r = run_offsetgen(args);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("3 open edges"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--repair"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/part.stl"));
+  args.push_back("--repair");
+  r = run_offsetgen(args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("filled 1 hole"), std::string::npos) << r.output;
+  expect_admesh_clean(dir + "/part.stl", -1);
+}
+
+TEST(MeshBodyInput, BadBodiesExitWith2NamingTheProblemAndWriteNothing) {
+  const std::string dir = scratch_dir("body-bad");
+  write_stl(sphere(kRadius, kCentre, 2), dir + "/sphere.stl");
+  write_stl(sphere(0.3, kCentre, 2), dir + "/tiny.stl");
+  std::ofstream(dir + "/empty.stl").close();
+  std::ofstream(dir + "/sphere.xyz") << "1 2 3\n";
+  const std::string out = dir + "/part.stl";
+  auto run = [&](const std::string& body, std::vector<std::string> extra = {}) {
+    std::vector<std::string> a = {"mesh", "--surface", "gyroid", "--thickness", "0.15", "--body", body, "-o", out};
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run_offsetgen(a);
+  };
+  const std::vector<std::pair<CliRun, std::string>> cases = {
+      {run(dir + "/empty.stl"), "empty.stl"},
+      {run(dir + "/missing.stl"), "missing.stl"},
+      {run(dir + "/sphere.xyz"), ".xyz"},
+      {run(dir + "/tiny.stl"), "smaller than one cell"},
+      {run(dir + "/sphere.stl", {"--skin", "12"}), "leaves no core"},
+      {run(dir + "/sphere.stl", {"--skin", "-1"}), "--skin"},
+      {run(dir + "/sphere.stl", {"--fillet", "1"}), "needs --skin"},
+      {run(dir + "/sphere.stl", {"--scale", "0"}), "--scale"},
+      {run(dir + "/sphere.stl", {"--origin", "1,2"}), "X,Y,Z"},
+      {run(dir + "/sphere.stl", {"--cells", "2"}), "excludes"},
+  };
+  for (const auto& [r, expected] : cases) {
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(expected), std::string::npos) << "expected '" << expected << "' in: " << r.output;
+  }
+  EXPECT_FALSE(fs::exists(out));
+  // The tiny body's error says how to scale it.
+  EXPECT_NE(cases[3].first.output.find("--scale 1000"), std::string::npos) << cases[3].first.output;
+  // Never overwrite the body.
+  const std::string before = read_bytes(dir + "/sphere.stl");
+  CliRun r = run_offsetgen(
+      {"mesh", "--surface", "gyroid", "--thickness", "0.15", "--body", dir + "/sphere.stl", "-o", dir + "/sphere.stl"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("is the body itself"), std::string::npos) << r.output;
+  EXPECT_EQ(read_bytes(dir + "/sphere.stl"), before);
+  // --skin without --body is a usage error.
+  r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.15", "--skin", "1", "-o", out});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--body"), std::string::npos) << r.output;
+}
+
+// A body over 2 m across gets a warning that names --scale (here the skin then refuses it).
+TEST(MeshBodyInput, ABodyOfImplausibleSizeGetsAWarningNamingScale) {
+  const std::string dir = scratch_dir("body-huge");
+  write_stl(sphere(1500, {0, 0, 0}, 1), dir + "/huge.stl");
+  CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.15", "--body", dir + "/huge.stl", "--skin",
+                            "2000", "-o", dir + "/part.stl"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("warning: the body is 3000 mm across"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--scale 0.001"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace offsetgen::mesh::testing
