@@ -743,8 +743,6 @@ struct Handle {
 // x' = m[.][0..2] . x + m[.][3], as lib3mf's MODELTRANSFORM.
 using Affine = std::array<std::array<double, 4>, 3>;
 
-constexpr Affine kIdentity{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
-
 Affine to_affine(const NMR::MODELTRANSFORM& t) {
   Affine m{};
   for (size_t i = 0; i < 3; ++i)

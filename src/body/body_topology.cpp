@@ -108,7 +108,7 @@ class EdgeTable {
       HalfEdge* end = entries_.data() + start_[lo + 1];
       if (end - begin > 16) {
         std::sort(begin, end, less);
-      } else {
+      } else if (end - begin > 1) {
         for (HalfEdge* i = begin + 1; i < end; ++i)  // insertion sort: buckets are small
           for (HalfEdge* j = i; j > begin && less(*j, *(j - 1)); --j) std::swap(*j, *(j - 1));
       }
@@ -150,39 +150,44 @@ class EdgeTable {
   std::vector<HalfEdge> entries_;
 };
 
-// Triangles with the same three points: the sorted corners, and whether the triangle is an even
-// permutation of them (the same facing).
+// A triangle's points in increasing order, and whether the triangle is an even permutation of them
+// (faces the same way).
 struct CornerKey {
   Triangle sorted;
   uint32_t index;
   bool even;
 };
 
-std::vector<CornerKey> sorted_corner_keys(const BodyMesh& mesh) {
-  std::vector<CornerKey> keys;
-  keys.reserve(mesh.triangles.size());
-  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-    const Triangle& t = mesh.triangles[i];
-    if (!distinct(t)) continue;
-    const size_t m = static_cast<size_t>(std::min_element(t.begin(), t.end()) - t.begin());
-    const uint32_t p = t[(m + 1) % 3], q = t[(m + 2) % 3];
-    keys.push_back({{t[m], std::min(p, q), std::max(p, q)}, static_cast<uint32_t>(i), p < q});
-  }
-  std::sort(keys.begin(), keys.end(), [](const CornerKey& a, const CornerKey& b) {
-    return a.sorted != b.sorted ? a.sorted < b.sorted : a.index < b.index;
-  });
-  return keys;
+CornerKey corner_key(const Triangle& t, uint32_t index) {
+  const size_t m = static_cast<size_t>(std::min_element(t.begin(), t.end()) - t.begin());
+  const uint32_t p = t[(m + 1) % 3], q = t[(m + 2) % 3];
+  return {{t[m], std::min(p, q), std::max(p, q)}, index, p < q};
 }
 
-// Calls f(begin, end) for each group of two or more triangles with the same points.
+// Calls f(begin, end) for each group of two or more triangles with the same three points, in index
+// order. Copies share every edge, so each group is among the triangles on the edge of its two smallest
+// points: no sort of all the triangles.
 template <typename F>
-void for_each_duplicate_group(const std::vector<CornerKey>& keys, F&& f) {
-  for (size_t i = 0; i < keys.size();) {
-    size_t j = i + 1;
-    while (j < keys.size() && keys[j].sorted == keys[i].sorted) ++j;
-    if (j - i > 1) f(keys.data() + i, keys.data() + j);
-    i = j;
-  }
+void for_each_duplicate_group(const BodyMesh& mesh, const EdgeTable& table, F&& f) {
+  std::vector<CornerKey> keys;
+  table.for_each_edge([&](uint32_t lo, uint32_t hi, const HalfEdge* begin, const HalfEdge* end) {
+    if (end - begin < 2) return;
+    keys.clear();
+    for (const HalfEdge* h = begin; h != end; ++h) {
+      const CornerKey key = corner_key(mesh.triangles[triangle_of(*h)], triangle_of(*h));
+      if (key.sorted[0] == lo && key.sorted[1] == hi) keys.push_back(key);
+    }
+    if (keys.size() < 2) return;
+    std::sort(keys.begin(), keys.end(), [](const CornerKey& a, const CornerKey& b) {
+      return a.sorted[2] != b.sorted[2] ? a.sorted[2] < b.sorted[2] : a.index < b.index;
+    });
+    for (size_t i = 0; i < keys.size();) {
+      size_t j = i + 1;
+      while (j < keys.size() && keys[j].sorted[2] == keys[i].sorted[2]) ++j;
+      if (j - i > 1) f(keys.data() + i, keys.data() + j);
+      i = j;
+    }
+  });
 }
 
 template <typename Keep>
@@ -249,11 +254,10 @@ size_t remove_slivers(BodyMesh& mesh) {
   }
 }
 
-size_t remove_duplicates(BodyMesh& mesh) {
-  const std::vector<CornerKey> keys = sorted_corner_keys(mesh);
+size_t remove_duplicates(BodyMesh& mesh, const EdgeTable& table) {
   std::vector<uint8_t> remove(mesh.triangles.size(), 0);
   bool any = false;
-  for_each_duplicate_group(keys, [&](const CornerKey* begin, const CornerKey* end) {
+  for_each_duplicate_group(mesh, table, [&](const CornerKey* begin, const CornerKey* end) {
     any = true;
     const auto even = std::count_if(begin, end, [](const CornerKey& k) { return k.even; });
     const auto odd = (end - begin) - even;
@@ -632,7 +636,7 @@ TopologyReport analyse_topology(const BodyMesh& mesh) {
   for (size_t t = 0; t < tris.size(); ++t)
     if (distinct(tris[t]) && sets.find(static_cast<uint32_t>(t)) == t) ++report.shells;
 
-  for_each_duplicate_group(sorted_corner_keys(mesh), [&](const CornerKey* begin, const CornerKey* end) {
+  for_each_duplicate_group(mesh, table, [&](const CornerKey* begin, const CornerKey* end) {
     report.duplicate_triangles += static_cast<size_t>(end - begin) - 1;
   });
   return report;
@@ -665,8 +669,9 @@ RepairReport repair_body(BodyMesh& mesh) {
   RepairReport report;
   report.removed_degenerate = erase_triangles(mesh, [&](size_t i) { return distinct(mesh.triangles[i]); });
   report.removed_degenerate += remove_slivers(mesh);
-  report.removed_duplicate = remove_duplicates(mesh);
   EdgeTable table(mesh);
+  report.removed_duplicate = remove_duplicates(mesh, table);
+  if (report.removed_duplicate) table = EdgeTable(mesh);
   report.flipped = make_consistent(mesh, table);
   if (report.flipped) table = EdgeTable(mesh);  // the table holds each triangle's direction
   const std::vector<Patch> patches = fill_holes(mesh, table, report);

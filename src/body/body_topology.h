@@ -33,8 +33,8 @@ struct TopologyReport {
   std::string describe() const;
 };
 
-// O(n) in the triangles but for one sort of their sorted corner triples (a million triangles: well
-// under a second).
+// O(n) in the triangles (edges are grouped by a counting sort on their smaller point; no hash map, no
+// global sort): a million triangles take a few tenths of a second.
 TopologyReport analyse_topology(const BodyMesh& mesh);
 
 struct RepairReport {
