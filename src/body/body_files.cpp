@@ -465,7 +465,9 @@ class PlyAsciiReader {
     return value;
   }
   void skip(Scalar type) { real(type); }
-  std::string where() const { return tokens_.where(); }
+  // Where a value is, for a message: taken before it is read (cheaply), named after (its line).
+  size_t mark() const { return 0; }
+  std::string at(size_t) const { return tokens_.where(); }
   // Each value is a token and a separator: at least two bytes.
   uint64_t capacity() const { return tokens_.remaining() / 2 + 1; }
 
@@ -501,7 +503,7 @@ class PlyBinaryReader {
       case Scalar::F64:
         break;
     }
-    fail(name_, where(), "an integer of a floating-point type");  // the header check rules this out
+    fail(name_, at(pos_), "an integer of a floating-point type");  // the header check rules this out
   }
   double real(Scalar type) {
     if (type == Scalar::F32) return load<float>();
@@ -512,12 +514,13 @@ class PlyBinaryReader {
     require(scalar_size(type));
     pos_ += scalar_size(type);
   }
-  std::string where() const { return fmt::format("byte {}", pos_); }
+  size_t mark() const { return pos_; }
+  std::string at(size_t mark) const { return fmt::format("byte {}", mark); }
   uint64_t capacity() const { return bytes_.size() - pos_; }
 
  private:
   void require(size_t n) {
-    if (bytes_.size() - pos_ < n) fail(name_, where(), "unexpected end of file in the PLY data");
+    if (bytes_.size() - pos_ < n) fail(name_, at(pos_), "unexpected end of file in the PLY data");
   }
   template <typename T>
   T load() {
@@ -581,6 +584,9 @@ PlyLayout ply_layout(const PlyHeader& header, const std::string& name) {
 template <typename Reader>
 BodyMesh read_ply_data(Reader& reader, const PlyHeader& header, const PlyLayout& layout, const std::string& name) {
   const uint64_t vertex_count = header.elements[layout.vertex_element].count;
+  if (vertex_count > std::numeric_limits<uint32_t>::max())
+    fail(name, fmt::format("line {}", header.elements[layout.vertex_element].line),
+         fmt::format("{} vertices, more than 32-bit indices reach", vertex_count));
   std::vector<Point> points;
   std::vector<uint32_t> corners;  // of every face, one after the other
   std::vector<size_t> face_ends;  // where each face's corners end in `corners`
@@ -600,20 +606,20 @@ BodyMesh read_ply_data(Reader& reader, const PlyHeader& header, const PlyLayout&
       for (size_t q = 0; q < element.properties.size(); ++q) {
         const PlyProperty& property = element.properties[q];
         if (property.list) {
-          const std::string where = reader.where();
+          const size_t mark = reader.mark();
           const int64_t n = reader.integer(property.count_type);
-          if (n < 0) fail(name, where, fmt::format("a list of {} items", n));
+          if (n < 0) fail(name, reader.at(mark), fmt::format("a list of {} items", n));
           const bool indices = is_face && q == layout.indices;
-          if (indices && n < 3) fail(name, where, fmt::format("face {}: {} vertices (a face needs 3)", i, n));
+          if (indices && n < 3) fail(name, reader.at(mark), fmt::format("face {}: {} vertices (a face needs 3)", i, n));
           for (int64_t j = 0; j < n; ++j) {
             if (!indices) {
               reader.skip(property.type);
               continue;
             }
-            const std::string item_where = reader.where();
+            const size_t item_mark = reader.mark();
             const int64_t index = reader.integer(property.type);
             if (index < 0 || uint64_t(index) >= vertex_count)
-              fail(name, item_where,
+              fail(name, reader.at(item_mark),
                    fmt::format("face {}: vertex index {} out of range (the file has {} vertices)", i, index,
                                vertex_count));
             corners.push_back(static_cast<uint32_t>(index));
@@ -621,10 +627,10 @@ BodyMesh read_ply_data(Reader& reader, const PlyHeader& header, const PlyLayout&
           if (indices) face_ends.push_back(corners.size());
         } else if (is_vertex && (q == layout.xyz[0] || q == layout.xyz[1] || q == layout.xyz[2])) {
           const size_t k = q == layout.xyz[0] ? 0 : q == layout.xyz[1] ? 1 : 2;
-          const std::string where = reader.where();
+          const size_t mark = reader.mark();
           p[k] = reader.real(property.type);
           if (!std::isfinite(p[k]))
-            fail(name, where, fmt::format("vertex {}: coordinate {} is not finite", i, char('x' + k)));
+            fail(name, reader.at(mark), fmt::format("vertex {}: coordinate {} is not finite", i, char('x' + k)));
         } else {
           reader.skip(property.type);
         }
@@ -632,8 +638,6 @@ BodyMesh read_ply_data(Reader& reader, const PlyHeader& header, const PlyLayout&
       if (is_vertex) points.push_back(p);
     }
   }
-  if (vertex_count > std::numeric_limits<uint32_t>::max())
-    fail(name, "header", fmt::format("{} vertices, more than 32-bit indices reach", vertex_count));
   MeshBuilder builder(name);
   builder.reserve_triangles(corners.size() - 2 * face_ends.size());
   IndexedPoints welded(builder, points);
@@ -684,7 +688,8 @@ BodyMesh parse_obj(std::string_view text, const std::string& name) {
       points.push_back(p);
     } else if (keyword == "f") {
       size_t n = 0;
-      for (std::string_view token = tokens.next(); !token.empty(); token = tokens.next(), ++n) {
+      // A '#' starts a comment at the end of the line.
+      for (std::string_view token = tokens.next(); !token.empty() && token[0] != '#'; token = tokens.next(), ++n) {
         // v, v/vt, v//vn or v/vt/vn: only the position index matters.
         const size_t slash = token.find('/');
         const std::string_view index_text = token.substr(0, slash);
@@ -694,7 +699,7 @@ BodyMesh parse_obj(std::string_view text, const std::string& name) {
           fail(name, where(),
                fmt::format("expected a face vertex 'v', 'v/vt', 'v//vn' or 'v/vt/vn', found {}", quoted(token)));
         // Negative indices count back from the last vertex so far (-1 is the last).
-        if (index < 0 && -index > int64_t(points.size()))
+        if (index < -int64_t(points.size()))
           fail(name, where(),
                fmt::format("face vertex {} out of range ({} vertices before this line)", index, points.size()));
         corners.push_back(index < 0 ? int64_t(points.size()) + index : index - 1);

@@ -104,12 +104,12 @@ std::string obj_cube() {
   std::string s = "# cube\nmtllib cube.mtl\no cube\n";
   for (const auto& c : kCorners) s += fmt::format("v {} {} {}\n", c[0], c[1], c[2]);
   s += "vt 0 0\nvn 0 0 1\ng sides\nusemtl red\ns off\n";
-  s += "f 1 3 4 2\n";                  // v
-  s += "f 5/1 6/1 8/1 7/1\n";          // v/vt
-  s += "f 1//1 2//1 6//1 5//1\n";      // v//vn
-  s += "f 3/1/1 7/1/1 8/1/1 4/1/1\n";  // v/vt/vn
-  s += "f -8 -4 -2 -6\n";              // negative: 1 5 7 3
-  s += "f 2 4 8\nf 2 8 6\n";           // triangles
+  s += "f 1 3 4 2\n";                     // v
+  s += "f 5/1 6/1 8/1 7/1\n";             // v/vt
+  s += "f 1//1 2//1 6//1 5//1\n";         // v//vn
+  s += "f 3/1/1 7/1/1 8/1/1 4/1/1\n";     // v/vt/vn
+  s += "f -8 -4 -2 -6\n";                 // negative: 1 5 7 3
+  s += "f 2 4 8 # a comment\nf 2 8 6\n";  // triangles
   return s;
 }
 
@@ -359,10 +359,12 @@ TEST(BodyFiles, PlyErrorsNameTheLineByteOrFace) {
 
 TEST(BodyFiles, PlyWithAnAbsurdElementCountIsAnInputErrorNotAnAllocation) {
   std::string ply = binary_ply_cube(false);
-  ply.replace(ply.find("element vertex 8"), 16, "element vertex 4000000000000");
-  EXPECT_NE(
-      error_of(ply, BodyFormat::Ply, "c.ply").find("4000000000000 vertex elements, more than the rest of the file"),
-      std::string::npos);
+  ply.replace(ply.find("element vertex 8"), 16, "element vertex 4000000000");
+  EXPECT_EQ(error_of(ply, BodyFormat::Ply, "c.ply"),
+            "c.ply: line 3: 4000000000 vertex elements, more than the rest of the file can hold");
+  ply.replace(ply.find("element vertex 4000000000"), 25, "element vertex 4000000000000");
+  EXPECT_EQ(error_of(ply, BodyFormat::Ply, "c.ply"),
+            "c.ply: line 3: 4000000000000 vertices, more than 32-bit indices reach");
   std::string ascii = ascii_ply_cube();
   ascii.replace(ascii.find("element face 6"), 14, "element face 999999999999");
   EXPECT_NE(error_of(ascii, BodyFormat::Ply, "c.ply").find("999999999999 face elements"), std::string::npos);
@@ -397,6 +399,8 @@ TEST(BodyFiles, ObjErrorsNameTheLine) {
             "c.obj: line 4: face vertex 4 out of range (the file has 3 vertices)");
   EXPECT_EQ(error_of(vertices + "f 1 2 -4\n", BodyFormat::Obj, "c.obj"),
             "c.obj: line 4: face vertex -4 out of range (3 vertices before this line)");
+  EXPECT_EQ(error_of(vertices + "f 1 2 -9223372036854775808\n", BodyFormat::Obj, "c.obj"),
+            "c.obj: line 4: face vertex -9223372036854775808 out of range (3 vertices before this line)");
   EXPECT_EQ(error_of(vertices + "f 0 1 2\n", BodyFormat::Obj, "c.obj"),
             "c.obj: line 4: expected a face vertex 'v', 'v/vt', 'v//vn' or 'v/vt/vn', found '0'");
   EXPECT_EQ(error_of(vertices + "f 1 2\n", BodyFormat::Obj, "c.obj"),
