@@ -17,22 +17,26 @@ import os
 import re
 import subprocess
 import sys
+import time
 
 SHAPES = "/usr/share/PrusaSlicer/shapes"
 EXAMPLES = "/usr/share/openscad/examples"
 # name, source, skin (mm), cell (mm), voxel (mm), what it is
 BODIES = [
-    ("sphere", f"{SHAPES}/sphere.stl", 1.2, 4, 0.1, "PrusaSlicer's sphere, 31 mm"),
-    ("torus", f"{SHAPES}/torus.stl", 0.8, 3, 0.08, "PrusaSlicer's torus, 28.5 x 5.7 mm: a hole through it"),
-    ("example001", f"{EXAMPLES}/Old/example001.scad", 1.2, 4, 0.1,
+    ("sphere", f"{SHAPES}/sphere.stl", 1.2, 6, 0.2, "PrusaSlicer's sphere, 31 mm"),
+    ("torus", f"{SHAPES}/torus.stl", 0.6, 3, 0.1, "PrusaSlicer's torus, 28.5 x 5.7 mm: a hole through it"),
+    ("example001", f"{EXAMPLES}/Old/example001.scad", 1.2, 6, 0.2,
      "OpenSCAD example001: a sphere with three holes through it, 43 mm"),
-    ("CSG", f"{EXAMPLES}/Basics/CSG.scad", 1.0, 4, 0.1, "OpenSCAD CSG: cube, sphere, cylinders, 65 x 20 x 20 mm"),
+    ("CSG", f"{EXAMPLES}/Basics/CSG.scad", 1.0, 6, 0.2, "OpenSCAD CSG: cube, sphere, cylinders, 65 x 20 x 20 mm"),
 ]
 DENSITY = 0.3
 
 
 def run(cmd, **kw):
-    return subprocess.run(cmd, capture_output=True, text=True, **kw)
+    start = time.monotonic()
+    result = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    print(f"[{time.monotonic() - start:6.1f} s] {' '.join(cmd[:3])} ...", file=sys.stderr)
+    return result
 
 
 def prusa_info(stl):
@@ -123,8 +127,8 @@ def main():
     print("\n".join(rows))
     for f in failures:
         print("FAIL:", f, file=sys.stderr)
-    print(f"{len(rows) - len({f.split(':')[0] for f in failures if f.split(':')[0] in {b[0] for b in BODIES}})} passed, "
-          f"{len(failures)} failed")
+    failed = {f.split(":")[0] for f in failures}
+    print(f"{len(BODIES) - len(failed & {b[0] for b in BODIES})} passed, {len(failed)} failed")
     return 1 if failures else 0
 
 

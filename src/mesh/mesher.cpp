@@ -83,13 +83,17 @@ std::string description(const MeshSettings& s, const MeshSummary& m, const std::
                      m.cells[1], m.cells[2], m.cell_size, m.resolution);
 }
 
-void check_wall_voxels(double min_thickness, double voxels_per_cell, const std::string& option) {
+// `setting` is what set the voxels ("--resolution 24", "--voxel 0.2 mm"); `cell_size` in mm.
+void check_wall_voxels(double min_thickness, double voxels_per_cell, const std::string& setting, double cell_size,
+                       bool by_voxel) {
   if (min_thickness * voxels_per_cell >= kMinVoxelsPerWall) return;
-  throw InputError(
-      fmt::format("the thinnest wall ({:.4g} cell) spans {:.3g} voxels at {}: walls need at least {} voxels; "
-                  "use --resolution {} or more (the default gives {})",
-                  min_thickness, min_thickness * voxels_per_cell, option, kMinVoxelsPerWall,
-                  static_cast<int>(std::ceil(kMinVoxelsPerWall / min_thickness)), kDefaultVoxelsPerWall));
+  const std::string fix =
+      by_voxel ? fmt::format("--voxel {:.3g} or less", min_thickness * cell_size / kMinVoxelsPerWall)
+               : fmt::format("--resolution {} or more", static_cast<int>(std::ceil(kMinVoxelsPerWall / min_thickness)));
+  throw InputError(fmt::format(
+      "the thinnest wall ({:.4g} cell) spans {:.3g} voxels at {}: walls need at least {} voxels; use {} (the "
+      "default gives the thinnest wall {})",
+      min_thickness, min_thickness * voxels_per_cell, setting, kMinVoxelsPerWall, fix, kDefaultVoxelsPerWall));
 }
 
 // Reads the body, scales it and makes sure it is closed (or repairs it); says what it did.
@@ -222,7 +226,8 @@ MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, co
   } else {
     m.resolution = m.automatic_resolution ? automatic_resolution(s.cells, m.min_thickness) : s.resolution;
   }
-  check_wall_voxels(m.min_thickness, m.resolution, fmt::format("--resolution {}", m.resolution));
+  check_wall_voxels(m.min_thickness, m.resolution, fmt::format("--resolution {}", m.resolution), s.cell_size,
+                    s.voxel > 0);
   double voxels = 1;
   for (int n : s.cells) voxels *= double(n) * m.resolution + 4;
   if (voxels > kMaxVoxels)
@@ -288,7 +293,8 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
   m.resolution = static_cast<int>(std::lround(per_cell));
   check_wall_voxels(
       m.min_thickness, per_cell,
-      s.voxel > 0 ? fmt::format("--voxel {:g} mm", s.voxel) : fmt::format("{} voxels per cell", m.resolution));
+      s.voxel > 0 ? fmt::format("--voxel {:g} mm", s.voxel) : fmt::format("{} voxels per cell", m.resolution),
+      s.cell_size, s.voxel > 0);
   if (settings.skin > 0 && settings.skin < 2 * b.voxel)
     throw InputError(
         fmt::format("--skin {:g} mm spans {:.3g} voxels of {:.4g} mm: a skin needs at least 2; use "

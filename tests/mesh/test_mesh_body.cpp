@@ -208,6 +208,30 @@ TEST(MeshBody, TorusKeepsItsHoleAndHasTheClosedFormVolume) {
   EXPECT_NEAR(volume / expected, 1, 0.02);
 }
 
+// --fillet blends the walls into the skin with a smooth minimum: more material where they meet, and
+// still one clean solid.
+TEST(MeshBody, AFilletAddsMaterialWhereWallsMeetTheSkinAndStaysClean) {
+  const std::string dir = scratch_dir("body-fillet");
+  write_stl(sphere(kRadius, kCentre, 4), dir + "/sphere.stl");
+  double volume[2] = {0, 0};
+  for (int fillet = 0; fillet < 2; ++fillet) {
+    const std::string out = dir + "/part" + std::to_string(fillet) + ".stl";
+    std::vector<std::string> args = {"mesh",   "--surface",         "gyroid", "--density", "0.3",
+                                     "--body", dir + "/sphere.stl", "--skin", "1.5",       "--cell-size",
+                                     "6",      "--voxel",           "0.25",   "-o",        out};
+    if (fillet) args.insert(args.end(), {"--fillet", "1"});
+    CliRun r = run_offsetgen(args);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    if (fillet) {
+      EXPECT_NE(r.output.find("1 mm fillet"), std::string::npos) << r.output;
+      expect_admesh_clean(out, summary_number(r.output, " mm over "));
+    }
+    volume[fillet] = stl_volume(read_stl(out));
+  }
+  EXPECT_GT(volume[1], volume[0] * 1.002);
+  EXPECT_LT(volume[1], volume[0] * 1.1);
+}
+
 TEST(MeshBodyInput, AnOpenBodyIsRefusedWithWhereItIsOpenAndRepairClosesIt) {
   const std::string dir = scratch_dir("body-open");
   TriangleMesh s = sphere(kRadius, kCentre, 3);
