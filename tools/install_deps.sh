@@ -14,6 +14,7 @@ packages=(
   clang-format clang-tidy
   clang libclang-rt-14-dev
   libopenvdb-dev libboost-iostreams-dev admesh lib3mf-dev
+  prusa-slicer openscad  # real parts and a slicer for the mesh --body checks (tools/check_parts.py)
   chromium libvulkan-dev mesa-vulkan-drivers
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )

@@ -5,6 +5,10 @@ Orthographic view along (--azimuth, --elevation), Lambert shading of the facet n
 key and fill light, painter's order (far facets first). Deterministic for the same inputs.
 
 usage: tools/render_stl.py part.stl part.png [--size 900] [--azimuth 35] [--elevation 28] [--title TEXT]
+                          [--cut-above Z]
+
+--cut-above Z drops the facets whose centre lies above the plane z = Z (the file's coordinates), so a
+part is seen cut open; the inner sides of the surfaces then show through the cut, drawn in grey.
 """
 import argparse
 import sys
@@ -39,6 +43,7 @@ def main():
     parser.add_argument("--azimuth", type=float, default=35.0, help="degrees about z")
     parser.add_argument("--elevation", type=float, default=28.0, help="degrees above the xy plane")
     parser.add_argument("--title", default="")
+    parser.add_argument("--cut-above", type=float, default=None, help="drop facets above the plane z = Z")
     args = parser.parse_args()
 
     import matplotlib
@@ -50,6 +55,10 @@ def main():
     tri = read_binary_stl(args.stl)
     if len(tri) == 0:
         fail(f"{args.stl}: no facets")
+    if args.cut_above is not None:
+        tri = tri[tri[:, :, 2].mean(axis=1) <= args.cut_above]
+        if len(tri) == 0:
+            fail(f"no facet lies below z = {args.cut_above}")
     tri -= tri.reshape(-1, 3).mean(axis=0)
     az, el = np.radians(args.azimuth), np.radians(args.elevation)
     # Camera frame: `forward` points from the viewer into the scene.
@@ -63,7 +72,12 @@ def main():
     keep = length > 0
     tri, normal = tri[keep], normal[keep] / length[keep, None]
     facing = normal @ -forward
-    tri, normal = tri[facing > 0], normal[facing > 0]  # back faces of a closed solid are hidden
+    inner = np.zeros(len(tri), dtype=bool)
+    if args.cut_above is None:
+        tri, normal = tri[facing > 0], normal[facing > 0]  # back faces of a closed solid are hidden
+    else:
+        inner = facing <= 0  # seen through the cut: the inside of the material
+        normal[inner] = -normal[inner]
 
     key = np.array([0.4, -0.3, 0.85]) - 0.8 * forward
     key /= np.linalg.norm(key)
@@ -71,6 +85,7 @@ def main():
     shade = 0.18 + 0.62 * np.clip(normal @ key, 0, 1) + 0.25 * np.clip(normal @ fill, 0, 1)
     base = np.array([0.80, 0.55, 0.25])  # a warm resin colour
     colours = np.clip(base[None, :] * shade[:, None], 0, 1)
+    colours[inner] = np.clip(np.array([0.45, 0.45, 0.47])[None, :] * shade[inner, None], 0, 1)
 
     depth = (tri @ forward).mean(axis=1)
     order = np.argsort(-depth, kind="stable")
