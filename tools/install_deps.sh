@@ -1,36 +1,72 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package that building, testing and benchmarking offsetgen needs.
-# Idempotent: installs only what is missing. Must run as root (or with sudo available).
+# Installs the Debian 12 packages offsetgen needs. Idempotent: installs only what is missing. Must run
+# as root (or with sudo available).
+#
+#   tools/install_deps.sh --build   what building offsetgen and offsetgen-mesh needs (tools/demo.sh)
+#   tools/install_deps.sh [--all]   that, and everything the tests and benchmarks use (tools/test.sh)
 set -euo pipefail
 
-packages=(
-  build-essential cmake pkg-config git ninja-build
+usage() {
+  echo "usage: tools/install_deps.sh [--build | --all]" >&2
+  exit 2
+}
+[ $# -le 1 ] || usage
+case "${1:---all}" in
+  --all) want=all ;;
+  --build) want=build ;;
+  -h | --help)
+    sed -n '2,6s/^# \{0,1\}//p' "$0"
+    exit 0
+    ;;
+  *) usage ;;
+esac
+
+# The build set: the compiler and CMake, GiNaC/CLN, fmt, CLI11, nlohmann-json, OpenVDB (with
+# Boost.Iostreams, which Debian's FindOpenVDB.cmake needs) and lib3mf for offsetgen-mesh. GoogleTest
+# too, although only the tests use it: a plain `cmake -S . -B build` configures them
+# (OFFSETGEN_BUILD_TESTS is ON at the top level) and tests/ has find_package(GTest REQUIRED).
+build_packages=(
+  build-essential cmake pkg-config
   libginac-dev libcln-dev
   libfmt-dev libcli11-dev nlohmann-json3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libopenvdb-dev libboost-iostreams-dev lib3mf-dev
+  libgtest-dev
+)
+# The test set: the runners of every target (GL, Vulkan, Chromium, pocl, Python, clang), the
+# benchmarks, the mesh checks and the tools the tests call.
+test_packages=(
+  git ninja-build
+  libgmock-dev libbenchmark-dev
   glslang-tools spirv-tools libegl-dev libopengl-dev libgles-dev libgl1-mesa-dri libpng-dev
   python3 python3-sympy python3-matplotlib python3-numpy time
   python3-numba
   clang-format clang-tidy
   clang libclang-rt-14-dev
-  libopenvdb-dev libboost-iostreams-dev admesh lib3mf-dev
+  admesh
   prusa-slicer openscad  # real parts and a slicer for the mesh --body checks (tools/check_parts.py)
   chromium libvulkan-dev mesa-vulkan-drivers
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )
 
+packages=("${build_packages[@]}")
+if [ "$want" = all ]; then packages+=("${test_packages[@]}"); fi
+
+# One dpkg-query for all of them (one per package costs seconds on a busy machine).
+# It fails when a package is unknown to dpkg (never installed): that one is missing, not an error.
+installed_now=" $({ dpkg-query -W -f='${Package}=${Status}\n' "${packages[@]}" 2>/dev/null || true; } |
+  sed -n 's/=install ok installed$//p' | tr '\n' ' ') "
 missing=()
 for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
+  if [[ "$installed_now" != *" $p "* ]]; then missing+=("$p"); fi
 done
 
 # Node and npm run the WGSL tests (tests/wgsl); a Node that brings its own npm (NodeSource) will do.
-if ! command -v node >/dev/null || ! command -v npm >/dev/null; then missing+=(nodejs npm); fi
+if [ "$want" = all ] && { ! command -v node >/dev/null || ! command -v npm >/dev/null; }; then
+  missing+=(nodejs npm)
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install_deps: all ${#packages[@]} packages present"
+  echo "install_deps: all ${#packages[@]} packages of the $want set present"
 else
   SUDO=""
   if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -38,6 +74,8 @@ else
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+
+[ "$want" = all ] || exit 0
 
 # Dawn's Node bindings for the WGSL tests, at the version pinned in tests/wgsl/package-lock.json.
 wgsl_dir="$(cd "$(dirname "$0")/.." && pwd)/tests/wgsl"
