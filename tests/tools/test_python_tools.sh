@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Self-test of the Python helper tools (tools/sympy_baseline.py, tools/count_ops_c.py,
-# tools/plot_convergence.py, tools/render_stl.py). Needs Debian's /usr/bin/python3 (sympy, matplotlib) and gcc.
+# tools/plot_convergence.py, tools/render_stl.py, tools/weierstrass_areas.py). Needs Debian's
+# /usr/bin/python3 (sympy, mpmath, matplotlib) and gcc.
 # Prints "N passed, M failed" last; exits non-zero if anything failed. Runs in ~10 s.
 #
 #   bash tests/tools/test_python_tools.sh
@@ -173,9 +174,29 @@ PYEOF
   check "render_stl: a truncated STL leaves no file" [ ! -e "$TMP/cut.png" ]
 }
 
+# ------------------------------------------------------------ weierstrass_areas.py
+# The exact areas it computes are the ones docs/density.md quotes, and match issue 26's own
+# Weierstrass computation (G 3.091444, P 2.3451, D 3.8378).
+test_weierstrass_areas() {
+  local out="$TMP/weierstrass.md"
+  if ! "$PY" "$ROOT/tools/weierstrass_areas.py" >"$out" 2>&1; then
+    bad "weierstrass_areas runs"; cat "$out"; return
+  fi
+  ok "weierstrass_areas runs"
+  check "Bonnet angle of G 38.0148" grep -q "^| Schoen G | 38.0148 |" "$out"
+  local name value
+  for name in "Schwarz P:2.345103" "Schwarz D:3.837785" "Schoen G:3.091444"; do
+    value="${name#*:}"
+    check "${name%%:*} A = $value" grep -q "^| ${name%%:*} |.*| $value |$" "$out"
+    check "docs/density.md quotes ${name%%:*} $value" grep -q "| $value | our Weierstrass computation |" \
+      "$ROOT/docs/density.md"
+  done
+}
+
 test_sympy_baseline
 test_count_ops_c
 test_plot_convergence
 test_render_stl
+test_weierstrass_areas
 echo "$PASS passed, $FAIL failed"
 [ "$FAIL" -eq 0 ]
