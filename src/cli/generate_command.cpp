@@ -11,10 +11,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 namespace offsetgen {
 namespace fs = std::filesystem;
@@ -58,7 +61,8 @@ void add_generate_command(CLI::App& app, GenerateOptions& o) {
                   "Output file of the first language (in the order " + backend_names() +
                       "); the others go beside it with their own extension; - for stdout")
       ->each([&o](const std::string&) { o.output_given = true; });
-  cmd->add_option("--out-dir", o.out_dir, "Directory for the <prefix>.<extension> files when -o is not given")
+  cmd->add_option("--out-dir", o.out_dir,
+                  "Directory for the <prefix>.<extension> files when -o is not given (created if missing)")
       ->each([&o](const std::string&) { o.out_dir_given = true; });
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
 }
@@ -67,6 +71,33 @@ namespace {
 
 std::string replace_extension(const std::string& path, const std::string& extension) {
   return fs::path(path).replace_extension(extension).string();
+}
+
+// Checks --out-dir without creating anything: it is a directory, or it is missing and its nearest
+// existing ancestor is a writable directory. Returns true when it must be created. A file on the way
+// is named ("'gen' exists and is not a directory"), so a missing directory never reads like a file.
+bool out_dir_must_be_created(const std::string& given) {
+  for (fs::path at = given;; at = at.parent_path()) {
+    if (at.empty()) at = ".";
+    std::error_code ec;
+    const fs::file_status st = fs::status(at, ec);  // follows symlinks; ENOENT and ENOTDIR read not_found
+    if (fs::exists(st)) {
+      if (!fs::is_directory(st))
+        throw InputError(fmt::format("--out-dir: '{}' exists and is not a directory", at.string()));
+      if (at == fs::path(given)) return false;
+      if (::access(at.c_str(), W_OK | X_OK) != 0)
+        throw InputError(
+            fmt::format("--out-dir: cannot create '{}': directory '{}' is not writable", given, at.string()));
+      return true;
+    }
+    if (st.type() != fs::file_type::not_found)
+      throw InputError(fmt::format("--out-dir: cannot use '{}': {}", at.string(), ec.message()));
+    // create_directories() would fail on a dangling symlink: say what it is instead.
+    if (fs::is_symlink(fs::symlink_status(at, ec)))
+      throw InputError(fmt::format("--out-dir: '{}' is a symbolic link to a missing path", at.string()));
+    if (at == at.parent_path() || at == ".")
+      throw InputError(fmt::format("--out-dir: cannot use '{}': no existing directory above it", given));
+  }
 }
 
 }  // namespace
@@ -102,8 +133,9 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   if (o.output_given && o.out_dir_given) throw InputError("give either -o or --out-dir, not both");
   if (o.output == "-" && languages.size() > 1)
     throw InputError(fmt::format("-o - (stdout) takes one language, not --lang {}", o.lang));
-  if (o.out_dir_given && !fs::is_directory(o.out_dir))
-    throw InputError(fmt::format("--out-dir: '{}' is not a directory", o.out_dir));
+  // A missing --out-dir is created, but only after the request has been generated, right before the
+  // files are written: a bad request leaves nothing behind.
+  const bool create_out_dir = o.out_dir_given && out_dir_must_be_created(o.out_dir);
 
   // Resolve the prefix first: default file names depend on it.
   std::string prefix = o.name;
@@ -124,7 +156,9 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   for (const auto& path : paths)
     if (path != "-") destinations.push_back(path);
   try {
-    for (const auto& path : destinations) require_writable(path);
+    // Files in a directory still to be created are new files there; the directory was checked above.
+    if (!create_out_dir)
+      for (const auto& path : destinations) require_writable(path);
     require_distinct(destinations);
   } catch (const std::runtime_error& e) {
     for (size_t i = 1; i < paths.size(); ++i)
@@ -138,6 +172,11 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   }
 
   Generation g = generate(request);
+  if (create_out_dir) {
+    std::error_code ec;
+    fs::create_directories(o.out_dir, ec);
+    if (ec) throw std::runtime_error(fmt::format("--out-dir: cannot create '{}': {}", o.out_dir, ec.message()));
+  }
   std::vector<std::pair<std::string, std::string>> files;
   for (size_t i = 0; i < languages.size(); ++i) files.emplace_back(paths[i], g.file(languages[i]->name()));
   std::vector<std::string> report;

@@ -1,6 +1,6 @@
 // Writing outputs loses nothing: two outputs never share a file; devices, FIFOs and directories are
 // refused by name; symlinks are written through; mode, owner and hard links survive; stdout is `-o -`
-// only (the rules of emit/file_writer.h).
+// only (the rules of emit/file_writer.h); a missing --out-dir is created, a file in its place refused.
 #include "emit/file_writer.h"
 #include "test_support.h"
 
@@ -97,9 +97,56 @@ TEST(FileWriting, ADirectoryIsRefusedByName) {
   const auto r = run_offsetgen("generate --surface gyroid --order 1 -o " + dir + "/sub.h");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("is a directory"), std::string::npos) << r.output;
-  const auto not_dir = run_offsetgen("generate --surface gyroid --order 1 --out-dir " + dir + "/missing");
-  EXPECT_EQ(not_dir.exit_code, 2);
-  EXPECT_NE(not_dir.output.find("is not a directory"), std::string::npos) << not_dir.output;
+}
+
+// As code generators do: a missing --out-dir is made, parents included.
+TEST(FileWriting, OutDirThatDoesNotExistIsCreatedWithItsParents) {
+  const std::string dir = scratch();
+  const auto r = run_offsetgen("generate --surface gyroid --order 1 --lang c,glsl --out-dir " + dir + "/a/b/gen");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(testing::read_file(dir + "/a/b/gen/gyroid_o1.h").find("gyroid_o1_offset"), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(dir + "/a/b/gen/gyroid_o1.glsl"));
+  // Spelled with a trailing slash, and again once it exists.
+  for (int run = 0; run < 2; ++run) {
+    const auto slash = run_offsetgen("generate --surface gyroid --order 1 --out-dir " + dir + "/gen/");
+    EXPECT_EQ(slash.exit_code, 0) << slash.output;
+    EXPECT_TRUE(fs::is_regular_file(dir + "/gen/gyroid_o1.h"));
+  }
+}
+
+TEST(FileWriting, OutDirThatIsAFileIsRefusedSayingSo) {
+  const std::string dir = scratch();
+  write(dir + "/gen", "precious");
+  // The file itself, and a directory to be made below it: both name the file.
+  for (const std::string& out_dir : {dir + "/gen", dir + "/gen/", dir + "/gen/sub"}) {
+    const auto r = run_offsetgen("generate --surface gyroid --order 1 --out-dir " + out_dir);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("'" + dir + "/gen' exists and is not a directory"), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(testing::read_file(dir + "/gen"), "precious");
+  EXPECT_EQ(entries(dir), 1u);
+}
+
+TEST(FileWriting, OutDirThroughADanglingSymlinkIsRefusedSayingSo) {
+  const std::string dir = scratch();
+  fs::create_symlink("nowhere", dir + "/gen");
+  const auto r = run_offsetgen("generate --surface gyroid --order 1 --out-dir " + dir + "/gen");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("symbolic link to a missing path"), std::string::npos) << r.output;
+  EXPECT_EQ(entries(dir), 1u);
+}
+
+// The directory is made only right before the files are written: a request that fails makes nothing.
+TEST(FileWriting, OutDirIsNotCreatedWhenTheRequestIsBad) {
+  const std::string dir = scratch();
+  const std::string out = " --out-dir " + dir + "/new/gen";
+  for (const std::string& args :
+       {"--surface gyroide" + out, "--surface gyroid --order 0" + out, "--expr 'cos(2*x' --name s" + out,
+        "--surface gyroid --name class --lang c,numpy" + out, "--surface gyroid -o " + dir + "/x.h" + out}) {
+    const auto r = run_offsetgen("generate " + args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.output;
+    EXPECT_EQ(entries(dir), 0u) << args;
+  }
 }
 
 TEST(FileWriting, EmptyOutputNamesAreRefused) {
