@@ -94,7 +94,7 @@ TEST(DensityConstants, GyroidAndSchwarzPHaveTheirGenus) {
   const SurfaceConstants g = surface_constants(catalog_surface("gyroid"));
   EXPECT_EQ(g.euler_characteristic, -8);  // genus 5 in the conventional cell
   EXPECT_LE(g.chi_residual, kChiTolerance);
-  EXPECT_NEAR(g.area, 3.0916, 1e-3);        // the Schoen gyroid's 3.0915; the nodal one is close
+  EXPECT_NEAR(g.area, 3.0916, 1e-3);        // the exact gyroid has 3.091444; the nodal one is close
   EXPECT_NEAR(g.volume_inside, 0.5, 1e-7);  // F -> -F is a translation of the gyroid
   EXPECT_NEAR(g.mean_integral, 0.0, 1e-7);
   const SurfaceConstants p = surface_constants(catalog_surface("schwarzp"));
