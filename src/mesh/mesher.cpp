@@ -114,6 +114,9 @@ body::BodyMesh load_body(const BodySettings& b, BodySummary& out, const WarningC
       throw InputError(fmt::format("{}: --repair {} but the body is still not closed: {}", b.path, repair.describe(),
                                    topology.describe()));
     out.repaired = repair.describe();
+    if (mesh.triangles.empty())
+      throw InputError(
+          fmt::format("{}: --repair {} and nothing closed is left of the body", b.path, repair.describe()));
   }
   out.path = b.path;
   out.triangles = mesh.triangles.size();
