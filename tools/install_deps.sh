@@ -15,6 +15,7 @@ packages=(
   clang libclang-rt-14-dev
   libopenvdb-dev libboost-iostreams-dev admesh lib3mf-dev
   prusa-slicer openscad  # real parts and a slicer for the mesh --body checks (tools/check_parts.py)
+  parallel  # GNU parallel: the split-and-merge test of offsetgen mesh --tile-range
   chromium libvulkan-dev mesa-vulkan-drivers
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )

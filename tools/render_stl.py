@@ -72,9 +72,9 @@ def main():
     keep = length > 0
     tri, normal = tri[keep], normal[keep] / length[keep, None]
     facing = normal @ -forward
-    inner = np.zeros(len(tri), dtype=bool)
     if args.cut_above is None:
         tri, normal = tri[facing > 0], normal[facing > 0]  # back faces of a closed solid are hidden
+        inner = np.zeros(len(tri), dtype=bool)
     else:
         inner = facing <= 0  # seen through the cut: the inside of the material
         normal[inner] = -normal[inner]
