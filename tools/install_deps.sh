@@ -44,6 +44,7 @@ test_packages=(
   clang libclang-rt-14-dev
   admesh
   prusa-slicer openscad  # real parts and a slicer for the mesh --body checks (tools/check_parts.py)
+  parallel  # GNU parallel: the split-and-merge test of offsetgen mesh --tile-range
   chromium libvulkan-dev mesa-vulkan-drivers
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )

@@ -2,6 +2,9 @@
 
 #include "cli/command_line.h"
 #include "mesh/mesher.h"
+#include "mesh/narrow_band.h"
+#include "mesh/stl_stream.h"
+#include "mesh/tiles.h"
 #include "surfaces/expression_input.h"
 #include "surfaces/surface.h"
 
@@ -97,7 +100,25 @@ std::array<double, 3> parse_point(const std::string& text, const std::string& op
   return {v[0], v[1], v[2]};
 }
 
+namespace {
+
+int run_merge(const MeshOptions& o) {
+  if (!o.surface.empty() || !o.expression.empty() || !o.body.empty())
+    throw InputError("--merge joins the parts of a run: give only the parts and -o");
+  if (o.output.empty()) throw InputError("--merge: no output file: use -o part.stl");
+  if (mesh::format_for_path(o.output) != mesh::MeshFormat::Stl)
+    throw InputError(fmt::format("--merge writes binary STL: -o '{}' is not .stl", o.output));
+  const mesh::MergeReport r = mesh::merge_stl_parts(o.merge, o.output);
+  if (!o.quiet)
+    std::printf("offsetgen mesh: %s written (binary STL, %.1f MB): %llu facets from %zu parts\n", o.output.c_str(),
+                double(r.bytes) / 1e6, static_cast<unsigned long long>(r.facets), o.merge.size());
+  return kExitOk;
+}
+
+}  // namespace
+
 int run_mesh_command(const MeshOptions& o) {
+  if (!o.merge.empty()) return run_merge(o);
   mesh::MeshSettings s;
   s.wall.generation.surface = o.surface;
   s.wall.generation.expression = o.expression;
@@ -126,6 +147,10 @@ int run_mesh_command(const MeshOptions& o) {
   s.cell_size = o.cell_size;
   s.resolution = o.resolution;
   s.voxel = o.voxel;
+  if (o.tile < 0 || o.tile % mesh::kBlock != 0)
+    throw InputError(fmt::format("--tile {}: a tile is a multiple of 8 voxels a side (0: one tile)", o.tile));
+  s.tile = o.tile;
+  if (!o.tile_range.empty()) s.tile_range = mesh::parse_tile_range(o.tile_range);
   s.adaptivity = o.adaptivity;
   s.min_piece = o.min_piece;
   s.output = o.output;

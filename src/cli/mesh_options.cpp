@@ -60,6 +60,18 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->add_option("--min-piece", o.min_piece,
                   "Drop disconnected pieces with less than this fraction of the largest piece's volume")
       ->capture_default_str();
+  cmd->add_option("--tile", o.tile,
+                  "Voxels per tile side, a multiple of 8: STL is sampled, meshed and written one tile at a time, so "
+                  "memory stays bounded (about 1 GB at 256); 0: the whole domain at once. PLY and 3MF hold the "
+                  "whole mesh")
+      ->capture_default_str();
+  cmd->add_option("--tile-range", o.tile_range,
+                  "I/N: mesh only share I (0 to N-1) of the tiles into a partial STL, for a cluster; join the parts "
+                  "with --merge");
+  cmd->add_option("--merge", o.merge,
+                  "Join partial STL files of one run (--tile-range 0/N ... N-1/N, in that order) into -o; nothing "
+                  "else is meshed")
+      ->expected(1, -1);
   cmd->add_option("-o,--output", o.output, "Output mesh: .stl (binary STL), .ply (binary PLY) or .3mf (3MF)");
   cmd->add_option("-j,--threads", o.threads, "Sampling threads (default: one per hardware thread)");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
@@ -68,6 +80,8 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
       "Examples: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --body part.stl --skin 1.2 --cell-size 4 -o filled.stl\n"
+      "          offsetgen mesh ... --tile-range 0/4 -o part0.stl   (... 3/4 -o part3.stl, on four machines)\n"
+      "          offsetgen mesh --merge part0.stl part1.stl part2.stl part3.stl -o part.stl\n"
       "With --body, insideness comes from OpenVDB's mesh-to-level-set sign flood fill (facet orientation and\n"
       "self-intersections do not change it); the body must be closed (see --repair). docs/parts.md explains.");
 }

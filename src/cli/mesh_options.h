@@ -26,6 +26,9 @@ struct MeshOptions {
   double cell_size = 10;
   int resolution = 0;
   double voxel = 0;
+  int tile = 256;
+  std::string tile_range;          // --tile-range I/N
+  std::vector<std::string> merge;  // --merge PART...
   double adaptivity = 0;
   double min_piece = 0.01;
   int threads = 0;

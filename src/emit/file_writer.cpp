@@ -178,6 +178,49 @@ bool write_file_if_changed(const std::string& path, const std::string& content) 
   return true;
 }
 
+StreamedFile::StreamedFile(const std::string& path) : path_(path) {
+  const Destination d = resolve(path);
+  require_writable(path);
+  target_ = d.path.string();
+  temporary_ = (directory_of(d.path) / ("." + d.path.filename().string() + ".tmpXXXXXX")).string();
+  fd_ = ::mkstemp(temporary_.data());
+  if (fd_ < 0) fail(path, std::strerror(errno));
+  const mode_t mode = d.exists ? (d.st.st_mode & 07777) : (0666 & ~current_umask());
+  if (::fchmod(fd_, mode) != 0) fail(path, std::strerror(errno));
+}
+
+StreamedFile::~StreamedFile() {
+  if (fd_ >= 0) {
+    ::close(fd_);
+    ::unlink(temporary_.c_str());
+  }
+}
+
+void StreamedFile::append(const std::string& bytes) {
+  if (!write_all(fd_, bytes)) fail(path_, std::strerror(errno));
+  size_ += bytes.size();
+}
+
+void StreamedFile::overwrite(size_t offset, const std::string& bytes) {
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::pwrite(fd_, bytes.data() + done, bytes.size() - done, static_cast<off_t>(offset + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail(path_, std::strerror(errno));
+    done += static_cast<size_t>(n);
+  }
+}
+
+void StreamedFile::commit() {
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0 || std::rename(temporary_.c_str(), target_.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(temporary_.c_str());
+    fail(path_, std::strerror(err));
+  }
+}
+
 void write_file(const std::string& path, const std::string& content) {
   const Destination d = resolve(path);
   require_writable(path);

@@ -26,6 +26,28 @@ bool write_file_if_changed(const std::string& path, const std::string& content);
 // back would cost as much as writing it: always writes.
 void write_file(const std::string& path, const std::string& content);
 
+// A large file written in pieces (a mesh streamed tile by tile): to a temporary file beside `path`,
+// renamed over it by commit(), so a reader never sees half a file and a failed run leaves nothing
+// (the destructor removes the temporary). Only regular files, as above; an existing file's mode is
+// kept. Errors (a full disk among them) throw std::runtime_error naming the path and the reason.
+class StreamedFile {
+ public:
+  explicit StreamedFile(const std::string& path);
+  ~StreamedFile();
+  StreamedFile(const StreamedFile&) = delete;
+  StreamedFile& operator=(const StreamedFile&) = delete;
+
+  void append(const std::string& bytes);
+  void overwrite(size_t offset, const std::string& bytes);  // within what was appended
+  size_t size() const { return size_; }
+  void commit();
+
+ private:
+  std::string path_, target_, temporary_;
+  int fd_ = -1;
+  size_t size_ = 0;
+};
+
 // Throws std::runtime_error if `path` could not be written by write_file_if_changed (missing or
 // read-only directory, not a regular file, a device path), without creating anything. Lets a run fail
 // before its long work and before it writes its first file.

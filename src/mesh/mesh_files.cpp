@@ -24,32 +24,10 @@ void put(std::string& out, T value) {
 }
 
 std::string binary_stl(const TriangleMesh& mesh, const std::string& description) {
-  // The header must not start with "solid": readers would take the file for ASCII STL.
-  std::string header = "binary STL: " + description;
-  header.resize(80, ' ');
-  std::string out(84 + 50 * mesh.triangles.size(), '\0');
-  std::memcpy(out.data(), header.data(), 80);
+  std::string out = stl_header(description);
   const uint32_t count = static_cast<uint32_t>(mesh.triangles.size());
   std::memcpy(out.data() + 80, &count, 4);
-  char* facet = out.data() + 84;
-  for (const auto& t : mesh.triangles) {
-    const auto& a = mesh.points[t[0]];
-    const auto& b = mesh.points[t[1]];
-    const auto& c = mesh.points[t[2]];
-    const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
-    const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
-    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    float record[12];
-    for (int k = 0; k < 3; ++k) record[k] = length > 0 ? static_cast<float>(n[k] / length) : 0.0f;
-    for (int k = 0; k < 3; ++k) {
-      record[3 + k] = a[static_cast<size_t>(k)];
-      record[6 + k] = b[static_cast<size_t>(k)];
-      record[9 + k] = c[static_cast<size_t>(k)];
-    }
-    std::memcpy(facet, record, sizeof(record));  // then 2 bytes of attributes, zero
-    facet += 50;
-  }
+  out += stl_facets(mesh);
   return out;
 }
 
@@ -97,6 +75,41 @@ const char* format_name(MeshFormat format) {
       return "3MF";
   }
   return "";
+}
+
+std::string stl_header(const std::string& description) {
+  // The header must not start with "solid": readers would take the file for ASCII STL.
+  std::string header = "binary STL: " + description;
+  header.resize(80, ' ');
+  header.append(4, '\0');  // the facet count, filled in by the writer
+  return header;
+}
+
+std::string stl_facets(const TriangleMesh& mesh, size_t first, size_t last) {
+  last = std::min(last, mesh.triangles.size());
+  first = std::min(first, last);
+  std::string out(50 * (last - first), '\0');
+  char* facet = out.data();
+  for (size_t i = first; i < last; ++i) {
+    const auto& t = mesh.triangles[i];
+    const auto& a = mesh.points[t[0]];
+    const auto& b = mesh.points[t[1]];
+    const auto& c = mesh.points[t[2]];
+    const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+    const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    float record[12];
+    for (int k = 0; k < 3; ++k) record[k] = length > 0 ? static_cast<float>(n[k] / length) : 0.0f;
+    for (int k = 0; k < 3; ++k) {
+      record[3 + k] = a[static_cast<size_t>(k)];
+      record[6 + k] = b[static_cast<size_t>(k)];
+      record[9 + k] = c[static_cast<size_t>(k)];
+    }
+    std::memcpy(facet, record, sizeof(record));  // then 2 bytes of attributes, zero
+    facet += 50;
+  }
+  return out;
 }
 
 std::string encode_mesh(const TriangleMesh& mesh, MeshFormat format, const std::string& description) {

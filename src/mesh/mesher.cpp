@@ -6,6 +6,8 @@
 #include "mesh/body_domain.h"
 #include "mesh/box_domain.h"
 #include "mesh/narrow_band.h"
+#include "mesh/stl_stream.h"
+#include "mesh/tiles.h"
 #include "mesh/vdb_surface.h"
 
 #include <fmt/format.h>
@@ -14,6 +16,8 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <thread>
 
 namespace offsetgen::mesh {
@@ -49,6 +53,10 @@ void validate(const MeshSettings& s) {
   if (!(s.min_piece >= 0 && s.min_piece < 1))
     throw InputError(fmt::format("--min-piece {} is outside [0, 1)", s.min_piece));
   if (s.output.empty()) throw InputError("no output file: use -o part.stl (or .ply, .3mf)");
+  if (s.tile < 0 || s.tile % kBlock != 0)
+    throw InputError(fmt::format("--tile {}: a tile is a multiple of {} voxels a side (0: one tile)", s.tile, kBlock));
+  if (s.tile_range && format_for_path(s.output) != MeshFormat::Stl)
+    throw InputError(fmt::format("--tile-range writes a partial binary STL: -o '{}' is not .stl", s.output));
   if (!s.body) return;
   const BodySettings& b = *s.body;
   if (!positive_length(b.scale)) throw InputError(fmt::format("--scale {} is not a positive factor", b.scale));
@@ -171,46 +179,148 @@ int threads_for(const MeshSettings& s) {
   return s.threads > 0 ? s.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
-// Samples, extracts and sorts the part; points in millimetres through `to_mm` (voxel index -> mm).
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Each tile's triangles, in millimetres and facing outward, as they are produced.
+using TileHook = std::function<void(const TriangleMesh&)>;
+
+std::string tile_progress(size_t done, size_t total, double elapsed) {
+  std::string s = fmt::format("tile {} of {}", done + 1, total);
+  if (done > 0) {
+    const double left = elapsed / double(done) * double(total - done);
+    s += left >= 120 ? fmt::format(", about {:.0f} min left", left / 60) : fmt::format(", about {:.0f} s left", left);
+  }
+  return s;
+}
+
+// Samples, extracts and sorts the part, tile by tile (tiles.h); points in millimetres through `to_mm`
+// (voxel index -> mm). STL in tiles is streamed to s.output as tiles finish (memory: one tile); one
+// tile, PLY and 3MF are held whole and returned, seams welded, small pieces dropped over the whole.
 template <typename ToMm>
 TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Domain& domain, const VoxelGrid& grid,
-                       MeshSummary& m, StageClock& clock, const ProgressCallback& progress, const ToMm& to_mm) {
-  const auto sample_start = std::chrono::steady_clock::now();
-  SampledBand band = sample_band(field, domain, grid, m.max_thickness, m.field_bound_used, threads_for(s),
-                                 [&](double fraction) { progress("sampling the narrow band", fraction); });
-  const double sample_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sample_start).count();
-  m.wall_samples = band.wall_samples;
-  m.skipped_voxels = band.skipped_voxels;
-  if (m.body) m.body->deep_blocks = band.deep_blocks;
-  m.samples_per_second = sample_seconds > 0 ? double(band.wall_samples) / sample_seconds : 0;
-  clock.done("sample");
+                       MeshSummary& m, const ProgressCallback& progress, const ToMm& to_mm, const TileHook& hook,
+                       const std::string& description) {
+  const std::vector<Tile> tiles = make_tiles(domain.block_range(), s.tile);
+  m.tiles = tiles.size();
+  m.tile_size = s.tile;
+  m.tile_range = s.tile_range;
+  auto [first, last] = s.tile_range ? tile_share(tiles.size(), s.tile_range->first, s.tile_range->second)
+                                    : std::pair<size_t, size_t>{0, tiles.size()};
+  m.tiles_meshed = last - first;
+  m.streamed = m.format == MeshFormat::Stl && (tiles.size() > 1 || s.tile_range);
+  if (!m.streamed) {
+    double voxels = 1;
+    for (size_t a = 0; a < 3; ++a) voxels *= domain.block_range()[1][a] - domain.block_range()[0][a];
+    if (voxels > kMaxHeldVoxels)
+      throw InputError(
+          fmt::format("{} voxels held at once ({} holds the whole mesh): write STL, which is meshed in "
+                      "tiles, or use a larger --voxel",
+                      voxels, format_name(m.format)));
+  }
+  std::optional<StlStream> stl;
+  if (m.streamed) stl.emplace(s.output, description);
+  const double cell_voxels = std::pow(1.0 / grid.voxel(), 3);
+  double sample_seconds = 0, extract_seconds = 0, write_seconds = 0;
+  TriangleMesh held;
+  const auto start = std::chrono::steady_clock::now();
+  for (size_t t = first; t < last; ++t) {
+    const Tile& tile = tiles[t];
+    const std::string stage =
+        tiles.size() > 1 ? tile_progress(t - first, last - first, seconds_since(start)) + ": " : std::string();
+    auto step = std::chrono::steady_clock::now();
+    SampledBand band = tiles.size() == 1
+                           ? sample_band(field, domain, grid, m.max_thickness, m.field_bound_used, threads_for(s),
+                                         [&](double f) { progress(stage + "sampling the narrow band", f); })
+                           : sample_band(
+                                 field, domain, grid, m.max_thickness, m.field_bound_used, threads_for(s),
+                                 [&](double f) { progress(stage + "sampling the narrow band", f); }, tile.blocks);
+    sample_seconds += seconds_since(step);
+    m.wall_samples += band.wall_samples;
+    m.skipped_voxels += band.skipped_voxels;
+    if (m.body) m.body->deep_blocks += band.deep_blocks;
 
-  progress("extracting the surface (OpenVDB)", -1);
-  TriangleMesh mesh = extract_surface(band, s.adaptivity);
-  band = SampledBand{};
-  for (auto& p : mesh.points) p = to_mm(p);
-  clock.done("extract");
+    progress(stage + "extracting the surface (OpenVDB)", -1);
+    step = std::chrono::steady_clock::now();
+    TriangleMesh mesh =
+        tiles.size() == 1 ? extract_surface(band, s.adaptivity) : extract_surface(band, s.adaptivity, tile.owned);
+    band = SampledBand{};
+    if (m.streamed) {
+      flip(mesh);  // OpenVDB faces its polygons into the negative (inside) region
+      // Debris inside this tile can be judged here; pieces that reach a seam are kept whole.
+      std::array<std::array<float, 3>, 2> inner{};
+      for (size_t a = 0; a < 3; ++a) {
+        inner[0][a] = static_cast<float>(tile.owned[0][a] + 1);
+        inner[1][a] = static_cast<float>(tile.owned[1][a] - 2);
+      }
+      const auto [dropped, volume] = drop_small_inner_pieces(mesh, inner, s.min_piece * cell_voxels);
+      m.inner_dropped += dropped;
+      m.inner_dropped_volume += volume * std::pow(s.cell_size * grid.voxel(), 3);
+    }
+    for (auto& p : mesh.points) p = to_mm(p);
+    extract_seconds += seconds_since(step);
+    if (!m.streamed) {
+      const auto offset = static_cast<uint32_t>(held.points.size());
+      held.points.insert(held.points.end(), mesh.points.begin(), mesh.points.end());
+      for (auto tri : mesh.triangles) {
+        for (uint32_t& i : tri) i += offset;
+        held.triangles.push_back(tri);
+      }
+      continue;
+    }
+    hook(mesh);
+    m.volume += signed_volume(mesh);
+    m.triangles += mesh.triangles.size();
+    m.points += mesh.points.size();
+    step = std::chrono::steady_clock::now();
+    stl->append(mesh);
+    write_seconds += seconds_since(step);
+  }
+  m.samples_per_second = sample_seconds > 0 ? double(m.wall_samples) / sample_seconds : 0;
+  m.stages.push_back({"sample", sample_seconds});
+  m.stages.push_back({"extract", extract_seconds});
+  if (m.streamed) {
+    progress("writing " + s.output, -1);
+    const auto step = std::chrono::steady_clock::now();
+    if (m.triangles == 0 && !s.tile_range)
+      throw InputError(m.body ? "the body holds no wall: the surface does not cross it, or the walls fall between "
+                                "the voxels"
+                              : "the block holds no wall: the surface does not cross it, or the walls fall "
+                                "between the voxels");
+    stl->commit();
+    m.file_bytes = stl->bytes();
+    m.stages.push_back({"write", write_seconds + seconds_since(step)});
+    return {};
+  }
 
   progress("orienting and sorting pieces", -1);
-  m.pieces = keep_large_pieces(mesh, s.min_piece);
-  if (mesh.triangles.empty())
+  const auto step = std::chrono::steady_clock::now();
+  if (tiles.size() > 1) weld_points(held);
+  m.pieces = keep_large_pieces(held, s.min_piece);
+  if (held.triangles.empty())
     throw InputError(m.body ? "the body holds no wall: the surface does not cross it, or the walls fall between the "
                               "voxels"
                             : "the block holds no wall: the surface does not cross it, or the walls fall between "
                               "the voxels");
-  m.points = mesh.points.size();
-  m.triangles = mesh.triangles.size();
+  hook(held);
+  m.points = held.points.size();
+  m.triangles = held.triangles.size();
   m.volume = m.pieces.volume;
-  return mesh;
+  m.stages.push_back({"pieces", seconds_since(step)});
+  return held;
 }
 
-void write_part(const MeshSettings& s, const TriangleMesh& mesh, MeshSummary& m, const WallField& field,
-                StageClock& clock, const ProgressCallback& progress) {
+// Writes a held mesh (a streamed one is written already).
+void write_part(const MeshSettings& s, const TriangleMesh& mesh, MeshSummary& m, const std::string& description,
+                const ProgressCallback& progress) {
+  if (m.streamed) return;
   progress("writing " + s.output, -1);
-  const std::string bytes = encode_mesh(mesh, m.format, description(s, m, field.generation().surface.name));
+  const auto start = std::chrono::steady_clock::now();
+  const std::string bytes = encode_mesh(mesh, m.format, description);
   m.file_bytes = bytes.size();
   write_file(s.output, bytes);
-  clock.done("write");
+  m.stages.push_back({"write", seconds_since(start)});
 }
 
 MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, const ProgressCallback& progress) {
@@ -243,7 +353,6 @@ MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, co
   field.compile();
   m.stages.push_back({"compile", field.compile_seconds()});
   m.compile_flags = field.compile_flags();
-  StageClock clock(m.stages);
 
   VoxelGrid grid;
   grid.resolution = m.resolution;
@@ -253,14 +362,17 @@ MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, co
   const BoxDomain domain(s.cells, grid.voxel());
   // Voxel i sits at (i + 0.5) voxels, in millimetres.
   const double mm = s.cell_size * grid.voxel();
-  TriangleMesh mesh = mesh_part(s, field, domain, grid, m, clock, progress, [mm](std::array<float, 3> p) {
-    for (float& x : p) x = static_cast<float>((double(x) + 0.5) * mm);
-    return p;
-  });
   m.box_volume = double(s.cells[0]) * s.cells[1] * s.cells[2] * std::pow(s.cell_size, 3);
   m.requested_density = s.wall.generation.density;
-  clock.done("pieces");
-  write_part(s, mesh, m, field, clock, progress);
+  const std::string text = description(s, m, field.generation().surface.name);
+  TriangleMesh mesh = mesh_part(
+      s, field, domain, grid, m, progress,
+      [mm](std::array<float, 3> p) {
+        for (float& x : p) x = static_cast<float>((double(x) + 0.5) * mm);
+        return p;
+      },
+      [](const TriangleMesh&) {}, text);
+  write_part(s, mesh, m, text, progress);
   return m;
 }
 
@@ -336,20 +448,40 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
   grid.resolution = m.resolution;
   grid.voxel_size = b.voxel / s.cell_size;
   m.field_bound_used = field.generation().surface.from_catalog;
-  TriangleMesh mesh = mesh_part(s, field, domain, grid, m, clock, progress, [&frame](const std::array<float, 3>& p) {
-    const auto q = frame.centre_mm({double(p[0]), double(p[1]), double(p[2])});
-    return std::array<float, 3>{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
-  });
-  clock.done("pieces");
-
-  progress("measuring the skin", -1);
-  b.part_box = mesh_box(mesh);
-  if (settings.skin > 0) b.measured_skin = measure_skin(mesh, domain.distances(mesh.points), b.voxel);
   b.expected_density = s.wall.generation.density ? s.wall.generation.density : field.uniform_density();
   m.box_volume = b.level_set_volume;
   m.requested_density = s.wall.generation.density;
-  clock.done("measure");
-  write_part(s, mesh, m, field, clock, progress);
+  b.part_box[0].fill(HUGE_VAL);
+  b.part_box[1].fill(-HUGE_VAL);
+  double measure_seconds = 0;
+  // Each tile's (or the whole mesh's) box and skin: the skin by closed surfaces when the mesh is
+  // held, by depth tile by tile when it is streamed.
+  auto measure = [&](const TriangleMesh& mesh) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto box = mesh_box(mesh);
+    for (size_t a = 0; a < 3; ++a) {
+      b.part_box[0][a] = std::min(b.part_box[0][a], box[0][a]);
+      b.part_box[1][a] = std::max(b.part_box[1][a], box[1][a]);
+    }
+    if (settings.skin > 0) {
+      if (m.streamed) {
+        measure_skin_by_depth(domain.distances(mesh.points), b.voxel, b.measured_skin);
+      } else {
+        b.measured_skin = measure_skin(mesh, domain.distances(mesh.points), b.voxel);
+      }
+    }
+    measure_seconds += seconds_since(start);
+  };
+  const std::string text = description(s, m, field.generation().surface.name);
+  TriangleMesh mesh = mesh_part(
+      s, field, domain, grid, m, progress,
+      [&frame](const std::array<float, 3>& p) {
+        const auto q = frame.centre_mm({double(p[0]), double(p[1]), double(p[2])});
+        return std::array<float, 3>{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
+      },
+      measure, text);
+  m.stages.push_back({"measure", measure_seconds});
+  write_part(s, mesh, m, text, progress);
   return m;
 }
 
@@ -377,9 +509,12 @@ std::string format_body(const MeshSummary& m) {
                      b.fillet > 0 ? fmt::format(", walls joined with a {:g} mm fillet", b.fillet) : std::string(),
                      b.core_volume, b.skin_volume);
     s += fmt::format(
-        "              measured: thinnest {:.4g} mm over {} cavities (request {:g}, one voxel {:.4g}); "
-        "outer surface at most {:.3g} mm deep\n",
-        b.measured_skin.thinnest, b.measured_skin.cavities, b.skin, b.voxel, b.measured_skin.outer_deepest);
+        "              measured: thinnest {:.4g} mm {} (request {:g}, one voxel {:.4g}); outer surface at most "
+        "{:.3g} mm deep\n",
+        b.measured_skin.thinnest,
+        b.measured_skin.by_pieces ? fmt::format("over {} cavities", b.measured_skin.cavities)
+                                  : std::string("(vertices deeper than half a voxel, tile by tile)"),
+        b.skin, b.voxel, b.measured_skin.outer_deepest);
   } else {
     s += "  skin:       none (--skin 0): the lattice is cut flush by the body\n";
   }
@@ -396,22 +531,7 @@ std::string format_body(const MeshSummary& m) {
   return s;
 }
 
-}  // namespace
-
-int automatic_resolution(double longest, double min_thickness) {
-  const int per_wall = static_cast<int>(std::ceil(kDefaultVoxelsPerWall / min_thickness - 1e-9));
-  const int per_block = static_cast<int>(std::ceil(kDefaultBlockVoxels / longest - 1e-9));
-  return std::max(per_wall, per_block);
-}
-
-int automatic_resolution(const std::array<int, 3>& cells, double min_thickness) {
-  const int per_wall = static_cast<int>(std::ceil(kDefaultVoxelsPerWall / min_thickness - 1e-9));
-  const int largest = *std::max_element(cells.begin(), cells.end());
-  const int per_block = (kDefaultBlockVoxels + largest - 1) / largest;
-  return std::max(per_wall, per_block);
-}
-
-MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress, const WarningCallback& warn) {
+MeshSummary run_mesh_stages(const MeshSettings& s, const ProgressCallback& progress, const WarningCallback& warn) {
   validate(s);
   MeshSummary m;
   m.output = s.output;
@@ -438,6 +558,38 @@ MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress, co
   return s.body ? run_body(s, std::move(m), body_mesh, field, progress) : run_block(s, std::move(m), field, progress);
 }
 
+}  // namespace
+
+int automatic_resolution(double longest, double min_thickness) {
+  const int per_wall = static_cast<int>(std::ceil(kDefaultVoxelsPerWall / min_thickness - 1e-9));
+  const int per_block = static_cast<int>(std::ceil(kDefaultBlockVoxels / longest - 1e-9));
+  return std::max(per_wall, per_block);
+}
+
+int automatic_resolution(const std::array<int, 3>& cells, double min_thickness) {
+  const int per_wall = static_cast<int>(std::ceil(kDefaultVoxelsPerWall / min_thickness - 1e-9));
+  const int largest = *std::max_element(cells.begin(), cells.end());
+  const int per_block = (kDefaultBlockVoxels + largest - 1) / largest;
+  return std::max(per_wall, per_block);
+}
+
+MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress, const WarningCallback& warn) {
+  // The last stage reported, for an out-of-memory message that says where it happened.
+  std::string stage = "starting";
+  const ProgressCallback tracked = [&](const std::string& name, double fraction) {
+    stage = name;
+    progress(name, fraction);
+  };
+  try {
+    return run_mesh_stages(s, tracked, warn);
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error(fmt::format(
+        "out of memory while {}: lower --tile (now {} voxels a side; memory grows with its cube), or use a larger "
+        "--voxel; the output was not written",
+        stage, s.tile));
+  }
+}
+
 std::string format_summary(const MeshSummary& m) {
   std::string s;
   double total = 0;
@@ -457,13 +609,26 @@ std::string format_summary(const MeshSummary& m) {
                      m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string());
   }
   s += fmt::format("  mesh:       {} triangles, {} vertices\n", m.triangles, m.points);
+  if (m.tiles > 1 || m.tile_range)
+    s += fmt::format("  tiles:      {}{} of {} voxels a side; {}\n",
+                     m.tile_range ? fmt::format("{} of ", m.tiles_meshed) : std::string(), m.tiles, m.tile_size,
+                     m.tile_range ? fmt::format("share {}/{}, a partial STL: join the shares with --merge",
+                                                m.tile_range->first, m.tile_range->second)
+                     : m.streamed ? std::string("STL written tile by tile (memory: one tile)")
+                                  : fmt::format("{} held whole, seams welded", format_name(m.format)));
   if (!m.body)
     s += fmt::format("  volume:     {:.6g} mm^3, relative density {:.4f} (box {:.6g} mm^3{})\n", m.volume,
                      m.volume / m.box_volume, m.box_volume,
                      m.requested_density ? fmt::format("; --density {}", *m.requested_density) : std::string());
-  s += fmt::format("  pieces:     {} kept, {} dropped below the volume threshold ({:.3g} mm^3){}\n", m.pieces.kept,
-                   m.pieces.dropped, m.pieces.dropped_volume,
-                   m.pieces.cavities ? fmt::format(", {} closed cavities", m.pieces.cavities) : std::string());
+  if (m.streamed) {
+    s += fmt::format(
+        "  pieces:     not counted across tiles; {} small pieces inside single tiles dropped ({:.3g} mm^3)\n",
+        m.inner_dropped, m.inner_dropped_volume);
+  } else {
+    s += fmt::format("  pieces:     {} kept, {} dropped below the volume threshold ({:.3g} mm^3){}\n", m.pieces.kept,
+                     m.pieces.dropped, m.pieces.dropped_volume,
+                     m.pieces.cavities ? fmt::format(", {} closed cavities", m.pieces.cavities) : std::string());
+  }
   s += fmt::format(
       "  evaluation: {} wall samples, {:.3g} samples/s (two <prefix>_offset_n values each, {}); "
       "voxels ruled out by F: {}\n",

@@ -14,6 +14,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace offsetgen::mesh {
@@ -37,6 +38,8 @@ struct MeshSettings {
   double voxel = 0;                  // mm, instead of resolution (with a body it need not divide the cell)
   double adaptivity = 0;             // OpenVDB volumeToMesh adaptivity, [0, 1]
   double min_piece = 0.01;           // pieces below this fraction of the largest piece's volume are dropped
+  int tile = 256;                    // voxels per tile side (a multiple of 8); 0: one tile (tiles.h)
+  std::optional<std::pair<int, int>> tile_range;  // --tile-range I/N: share I of N, a partial STL
   std::string output;
   int threads = 0;  // 0: one per hardware thread
 };
@@ -47,6 +50,8 @@ inline constexpr int kMinVoxelsPerWall = 2;  // thinner walls are refused
 inline constexpr int kDefaultVoxelsPerWall = 4;
 inline constexpr int kDefaultBlockVoxels = 128;
 inline constexpr double kMaxVoxels = 4.0e9;  // the padded block, a guard against typos
+// Without tiles (PLY, 3MF, or --tile 0) every sample and triangle is held at once: a guard.
+inline constexpr double kMaxHeldVoxels = 4.0e9;
 
 struct StageTime {
   std::string name;
@@ -73,6 +78,12 @@ struct BodySummary {
 struct MeshSummary {
   std::string output;
   std::optional<BodySummary> body;
+  size_t tiles = 1, tiles_meshed = 1;  // tiles of the domain, and those this run meshed (--tile-range)
+  int tile_size = 0;                   // voxels a side
+  bool streamed = false;               // STL written tile by tile; else the mesh was held whole
+  std::optional<std::pair<int, int>> tile_range;
+  double inner_dropped_volume = 0;  // streamed: small pieces inside one tile, dropped (mm^3)
+  int inner_dropped = 0;
   MeshFormat format = MeshFormat::Stl;
   std::array<int, 3> cells{};
   double cell_size = 0;

@@ -131,9 +131,15 @@ class BlockSampler {
 
 SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double max_thickness,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress) {
+  return sample_band(field, domain, grid, max_thickness, use_field_bound, threads, progress, domain.block_range());
+}
+
+SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double max_thickness,
+                        bool use_field_bound, int threads, const std::function<void(double)>& progress,
+                        const VoxelBox& blocks) {
   SampledBand band;
   std::vector<std::array<int, 3>> origins;
-  const auto [first, last] = domain.block_range();
+  const auto& [first, last] = blocks;
   for (int i = first[0]; i < last[0]; i += kBlock)
     for (int j = first[1]; j < last[1]; j += kBlock)
       for (int l = first[2]; l < last[2]; l += kBlock) origins.push_back({i, j, l});

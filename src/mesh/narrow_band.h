@@ -19,6 +19,9 @@ inline constexpr int kBlockVoxels = kBlock * kBlock * kBlock;
 // Voxels of a block are stored x-major: (x * 8 + y) * 8 + z, as in an OpenVDB leaf.
 inline constexpr int block_offset(int x, int y, int z) { return (x * kBlock + y) * kBlock + z; }
 
+// Voxel indices [first, last) on each axis.
+using VoxelBox = std::array<std::array<int, 3>, 2>;
+
 // Voxel i of an axis is centred at (i + 0.5) * voxel (cell units) from the lattice's origin.
 struct VoxelGrid {
   int resolution = 32;    // voxels per cell
@@ -52,5 +55,9 @@ struct SampledBand {
 // surfaces, or a single cell).
 SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double max_thickness,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress);
+// The same over the blocks whose first voxel lies in `blocks` (multiples of kBlock): one tile.
+SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double max_thickness,
+                        bool use_field_bound, int threads, const std::function<void(double)>& progress,
+                        const VoxelBox& blocks);
 
 }  // namespace offsetgen::mesh

@@ -25,4 +25,20 @@ SkinReport measure_skin(const TriangleMesh& mesh, const std::vector<double>& dep
   return report;
 }
 
+void measure_skin_by_depth(const std::vector<double>& depth_voxels, double voxel_mm, SkinReport& report) {
+  if (report.by_pieces) {
+    report = SkinReport{};
+    report.by_pieces = false;
+    report.thinnest = HUGE_VAL;
+  }
+  for (double d : depth_voxels) {
+    const double depth = -d * voxel_mm;
+    if (-d > 0.5) {
+      report.thinnest = std::min(report.thinnest, depth);
+    } else {
+      report.outer_deepest = std::max(report.outer_deepest, depth);
+    }
+  }
+}
+
 }  // namespace offsetgen::mesh

@@ -12,6 +12,7 @@
 namespace offsetgen::mesh {
 
 struct SkinReport {
+  bool by_pieces = true;     // from the closed surfaces; false: vertices deeper than half a voxel (tiles)
   size_t cavities = 0;       // closed inner surfaces
   double thinnest = 0;       // mm: the smallest depth of a cavity's vertex below the body's surface
   double outer_deepest = 0;  // mm: the largest depth of a vertex of an outer surface
@@ -20,5 +21,10 @@ struct SkinReport {
 // `depth_voxels[i]`: the body's signed distance at mesh.points[i] (voxels, negative inside); the mesh
 // faces outward (keep_large_pieces).
 SkinReport measure_skin(const TriangleMesh& mesh, const std::vector<double>& depth_voxels, double voxel_mm);
+
+// Tile by tile, without the closed surfaces: every vertex deeper than half a voxel below the body's
+// surface belongs to an inner surface; the thinnest skin is the smallest such depth. Merges into
+// `report` (by_pieces false).
+void measure_skin_by_depth(const std::vector<double>& depth_voxels, double voxel_mm, SkinReport& report);
 
 }  // namespace offsetgen::mesh

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace offsetgen::mesh {
@@ -30,6 +31,18 @@ struct PieceReport {
 std::vector<uint32_t> point_pieces(const TriangleMesh& mesh);
 // The signed volume of each piece, indexed like the points (zero for indices that are no piece's).
 std::vector<double> piece_volumes(const TriangleMesh& mesh, const std::vector<uint32_t>& pieces);
+
+// Merges points at the same position (the seams of tiles), renumbering the triangles; the points
+// keep the order of their first occurrence. Returns how many were merged.
+size_t weld_points(TriangleMesh& mesh);
+
+// Turns every triangle over.
+void flip(TriangleMesh& mesh);
+
+// Removes the pieces that lie inside `inner` (index coordinates; no point outside it) and enclose
+// less than `min_volume`; cavities (negative volume) stay. Returns {pieces, volume} removed.
+std::pair<int, double> drop_small_inner_pieces(TriangleMesh& mesh, const std::array<std::array<float, 3>, 2>& inner,
+                                               double min_volume);
 
 // Orients the whole mesh outward, then removes every connected piece whose volume is below
 // `min_fraction` of the largest piece's, and points no triangle uses. Deterministic.

@@ -5,7 +5,9 @@
 
 namespace offsetgen::mesh {
 
-TriangleMesh extract_surface(const SampledBand& band, double adaptivity) {
+namespace {
+
+openvdb::FloatGrid::Ptr band_grid(const SampledBand& band) {
   openvdb::initialize();
   openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(band.background);
   grid->setGridClass(openvdb::GRID_LEVEL_SET);
@@ -23,29 +25,56 @@ TriangleMesh extract_surface(const SampledBand& band, double adaptivity) {
       }
     }
   }
+  return grid;
+}
 
-  std::vector<openvdb::Vec3s> points;
-  std::vector<openvdb::Vec3I> triangles;
-  std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*grid, points, triangles, quads, 0.0, adaptivity);
-
+// The mesher's polygons as triangles: quads first (split along the shorter diagonal, the
+// better-shaped pair), then triangles, pool by pool, as openvdb::tools::volumeToMesh orders them.
+TriangleMesh collect(openvdb::tools::VolumeToMesh& mesher) {
   TriangleMesh mesh;
-  mesh.points.reserve(points.size());
-  for (const auto& p : points) mesh.points.push_back({p[0], p[1], p[2]});
-  mesh.triangles.reserve(triangles.size() + 2 * quads.size());
-  // Quads split along the shorter diagonal: the better-shaped pair of triangles.
+  const openvdb::tools::PointList& points = mesher.pointList();
+  mesh.points.reserve(mesher.pointListSize());
+  for (size_t i = 0; i < mesher.pointListSize(); ++i) mesh.points.push_back({points[i][0], points[i][1], points[i][2]});
   auto distance2 = [&](openvdb::Index a, openvdb::Index b) { return (points[a] - points[b]).lengthSqr(); };
-  for (const auto& q : quads) {
-    if (distance2(q[0], q[2]) <= distance2(q[1], q[3])) {
-      mesh.triangles.push_back({q[0], q[1], q[2]});
-      mesh.triangles.push_back({q[0], q[2], q[3]});
-    } else {
-      mesh.triangles.push_back({q[0], q[1], q[3]});
-      mesh.triangles.push_back({q[1], q[2], q[3]});
+  openvdb::tools::PolygonPoolList& pools = mesher.polygonPoolList();
+  for (size_t n = 0; n < mesher.polygonPoolListSize(); ++n)
+    for (size_t i = 0; i < pools[n].numQuads(); ++i) {
+      const openvdb::Vec4I& q = pools[n].quad(i);
+      if (distance2(q[0], q[2]) <= distance2(q[1], q[3])) {
+        mesh.triangles.push_back({q[0], q[1], q[2]});
+        mesh.triangles.push_back({q[0], q[2], q[3]});
+      } else {
+        mesh.triangles.push_back({q[0], q[1], q[3]});
+        mesh.triangles.push_back({q[1], q[2], q[3]});
+      }
     }
-  }
-  for (const auto& t : triangles) mesh.triangles.push_back({t[0], t[1], t[2]});
+  for (size_t n = 0; n < mesher.polygonPoolListSize(); ++n)
+    for (size_t i = 0; i < pools[n].numTriangles(); ++i) {
+      const openvdb::Vec3I& t = pools[n].triangle(i);
+      mesh.triangles.push_back({t[0], t[1], t[2]});
+    }
   return mesh;
+}
+
+}  // namespace
+
+TriangleMesh extract_surface(const SampledBand& band, double adaptivity) {
+  openvdb::FloatGrid::Ptr grid = band_grid(band);
+  openvdb::tools::VolumeToMesh mesher(0.0, adaptivity);
+  mesher(*grid);
+  return collect(mesher);
+}
+
+TriangleMesh extract_surface(const SampledBand& band, double adaptivity, const VoxelBox& owned) {
+  openvdb::FloatGrid::Ptr grid = band_grid(band);
+  openvdb::BoolGrid::Ptr mask = openvdb::BoolGrid::create(false);
+  mask->fill(openvdb::CoordBBox(openvdb::Coord(owned[0][0], owned[0][1], owned[0][2]),
+                                openvdb::Coord(owned[1][0] - 1, owned[1][1] - 1, owned[1][2] - 1)),
+             true, true);
+  openvdb::tools::VolumeToMesh mesher(0.0, adaptivity);
+  mesher.setSurfaceMask(mask);
+  mesher(*grid);
+  return collect(mesher);
 }
 
 const char* openvdb_version() { return "OpenVDB " OPENVDB_LIBRARY_VERSION_STRING; }

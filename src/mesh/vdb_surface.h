@@ -12,6 +12,12 @@ namespace offsetgen::mesh {
 // polygons (OpenVDB keeps the result watertight). Deterministic.
 TriangleMesh extract_surface(const SampledBand& band, double adaptivity);
 
+// The same, restricted to the polygons of the voxels in `owned` (OpenVDB's surface mask: a polygon
+// belongs to the voxel at the lower end of the grid edge it crosses). The band must hold the samples
+// one voxel beyond `owned` on every side. Tiles that partition the grid give, together, exactly the
+// polygons of the whole grid at adaptivity 0, with the same points along their seams.
+TriangleMesh extract_surface(const SampledBand& band, double adaptivity, const VoxelBox& owned);
+
 // "OpenVDB 10.0.1", for the summary.
 const char* openvdb_version();
 

@@ -1,0 +1,61 @@
+#include "mesh/tiles.h"
+
+#include "surfaces/input_error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+namespace offsetgen::mesh {
+
+std::vector<Tile> make_tiles(const VoxelBox& range, int size) {
+  std::array<int, 3> step{};
+  for (size_t a = 0; a < 3; ++a) step[a] = size > 0 ? size : range[1][a] - range[0][a];
+  std::vector<Tile> tiles;
+  for (int i = range[0][0]; i < range[1][0]; i += step[0])
+    for (int j = range[0][1]; j < range[1][1]; j += step[1])
+      for (int l = range[0][2]; l < range[1][2]; l += step[2]) {
+        Tile t;
+        const std::array<int, 3> lo{i, j, l};
+        for (size_t a = 0; a < 3; ++a) {
+          t.owned[0][a] = lo[a];
+          t.owned[1][a] = std::min(lo[a] + step[a], range[1][a]);
+          t.blocks[0][a] = std::max(t.owned[0][a] - kBlock, range[0][a]);
+          t.blocks[1][a] = std::min(t.owned[1][a] + kBlock, range[1][a]);
+        }
+        tiles.push_back(t);
+      }
+  return tiles;
+}
+
+std::pair<int, int> parse_tile_range(const std::string& text) {
+  const auto bad = [&] {
+    return InputError(
+        fmt::format("--tile-range '{}': expected I/N with 0 <= I < N (share I of N, counted from 0)", text));
+  };
+  const size_t slash = text.find('/');
+  if (slash == std::string::npos) throw bad();
+  auto number = [&](const std::string& part) {
+    size_t used = 0;
+    int value = -1;
+    try {
+      value = std::stoi(part, &used);
+    } catch (const std::exception&) {
+      throw bad();
+    }
+    if (part.empty() || used != part.size() || !std::isdigit(static_cast<unsigned char>(part[0]))) throw bad();
+    return value;
+  };
+  const int index = number(text.substr(0, slash)), count = number(text.substr(slash + 1));
+  if (count < 1 || index >= count) throw bad();
+  return {index, count};
+}
+
+std::pair<size_t, size_t> tile_share(size_t tiles, int index, int count) {
+  const auto share = [&](int i) { return tiles * static_cast<size_t>(i) / static_cast<size_t>(count); };
+  return {share(index), share(index + 1)};
+}
+
+}  // namespace offsetgen::mesh
