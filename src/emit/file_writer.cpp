@@ -1,5 +1,7 @@
 #include "emit/file_writer.h"
 
+#include "surfaces/input_error.h"
+
 #include <fmt/format.h>
 
 #include <fcntl.h>
@@ -197,7 +199,15 @@ StreamedFile::~StreamedFile() {
 }
 
 void StreamedFile::append(const std::string& bytes) {
-  if (!write_all(fd_, bytes)) fail(path_, std::strerror(errno));
+  if (!write_all(fd_, bytes)) {
+    const int err = errno;
+    if (err == ENOSPC || err == EDQUOT)
+      throw ResourceError(
+          fmt::format("cannot write '{}': the disk is full after {:.1f} MB; free space there, or "
+                      "write elsewhere (the partial file is removed)",
+                      path_, double(size_) / 1e6));
+    fail(path_, std::strerror(err));
+  }
   size_ += bytes.size();
 }
 

@@ -583,10 +583,12 @@ MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress, co
   try {
     return run_mesh_stages(s, tracked, warn);
   } catch (const std::bad_alloc&) {
-    throw std::runtime_error(fmt::format(
-        "out of memory while {}: lower --tile (now {} voxels a side; memory grows with its cube), or use a larger "
-        "--voxel; the output was not written",
-        stage, s.tile));
+    throw ResourceError(fmt::format(
+        "out of memory while {}: {}; the output was not written", stage,
+        s.tile > 0 ? fmt::format("lower --tile (now {} voxels a side; a tile's memory grows with its cube), or use a "
+                                 "larger --voxel",
+                                 s.tile)
+                   : std::string("mesh in tiles (--tile 256, STL), or use a larger --voxel")));
   }
 }
 

@@ -4,6 +4,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <thread>
 
 namespace offsetgen::mesh {
@@ -147,22 +149,34 @@ SampledBand sample_band(const WallField& field, const Domain& domain, const Voxe
 
   std::vector<BlockResult> results(origins.size());
   std::atomic<size_t> next{0}, done{0};
+  // A worker that fails (out of memory) stops every worker and hands its exception to this thread:
+  // an exception escaping a std::thread would abort the process.
+  std::atomic<bool> failed{false};
+  std::exception_ptr failure;
+  std::mutex failure_lock;
   auto work = [&] {
-    BlockSampler sampler(field, domain, grid, max_thickness, use_field_bound, band.background);
-    for (size_t b = next++; b < origins.size(); b = next++) {
-      sampler.sample(origins[b], results[b]);
-      ++done;
+    try {
+      BlockSampler sampler(field, domain, grid, max_thickness, use_field_bound, band.background);
+      for (size_t b = next++; b < origins.size() && !failed; b = next++) {
+        sampler.sample(origins[b], results[b]);
+        ++done;
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> guard(failure_lock);
+      if (!failure) failure = std::current_exception();
+      failed = true;
     }
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < std::max(threads, 1); ++t) pool.emplace_back(work);
   std::thread main_worker(work);
-  while (done.load() < origins.size()) {
+  while (done.load() < origins.size() && !failed) {
     progress(static_cast<double>(done.load()) / static_cast<double>(origins.size()));
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   main_worker.join();
   for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
   progress(1.0);
 
   // In block order, so the grid (and the mesh) do not depend on the threads' schedule.

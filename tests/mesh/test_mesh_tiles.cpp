@@ -1,6 +1,7 @@
 // `offsetgen mesh` in tiles (src/mesh/tiles.h): the tiles together give the untiled triangles, the
 // streamed STL is one clean solid, a run split with --tile-range and joined with --merge gives the
 // single run's bytes, and bad tile options exit 2 writing nothing.
+#include "check/process.h"
 #include "mesh_test_support.h"
 
 #include <gtest/gtest.h>
@@ -133,6 +134,21 @@ TEST(MeshTiles, BadTileOptionsExitWith2AndWriteNothing) {
   r = run_offsetgen({"mesh", "--merge", dir + "/a0.stl", "-o", dir + "/a0.stl"});
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// Out of memory is an error that names the stage and what to lower, exit 3, with nothing left behind,
+// never an abort: an untiled 6^3 block under a 1 GB address-space limit.
+TEST(MeshTiles, OutOfMemoryExitsWith3NamingTheStageAndLeavesNoFile) {
+  const std::string dir = scratch_dir("tiles-oom");
+  const std::string command = "ulimit -v 1000000; exec " + std::string(OFFSETGEN_EXE) +
+                              " mesh --surface gyroid --thickness 0.1 --cells 6 --cell-size 8 --resolution 40 "
+                              "--tile 0 -o " +
+                              dir + "/part.stl";
+  const check::ProcessResult r = check::run_process({"bash", "-c", command});
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("out of memory while"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--tile 256"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir)) << "a file was left in " << dir;
 }
 
 }  // namespace
