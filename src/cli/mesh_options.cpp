@@ -61,9 +61,9 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
                   "Drop disconnected pieces with less than this fraction of the largest piece's volume")
       ->capture_default_str();
   cmd->add_option("--tile", o.tile,
-                  "Voxels per tile side, a multiple of 8: STL is sampled, meshed and written one tile at a time, so "
-                  "memory stays bounded (about 1 GB at 256); 0: the whole domain at once. PLY and 3MF hold the "
-                  "whole mesh")
+                  "Voxels per tile side, a multiple of 8: STL and PLY are sampled, meshed and written one tile at a "
+                  "time, so memory stays bounded (under 1 GB at 256); 0: the whole domain at once. 3MF holds the "
+                  "whole mesh (lib3mf)")
       ->capture_default_str();
   cmd->add_option("--tile-range", o.tile_range,
                   "I/N: mesh only share I (0 to N-1) of the tiles into a partial STL, for a cluster; join the parts "

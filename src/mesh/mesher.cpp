@@ -6,6 +6,7 @@
 #include "mesh/body_domain.h"
 #include "mesh/box_domain.h"
 #include "mesh/narrow_band.h"
+#include "mesh/ply_stream.h"
 #include "mesh/stl_stream.h"
 #include "mesh/tiles.h"
 #include "mesh/vdb_surface.h"
@@ -209,7 +210,7 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
   auto [first, last] = s.tile_range ? tile_share(tiles.size(), s.tile_range->first, s.tile_range->second)
                                     : std::pair<size_t, size_t>{0, tiles.size()};
   m.tiles_meshed = last - first;
-  m.streamed = m.format == MeshFormat::Stl && (tiles.size() > 1 || s.tile_range);
+  m.streamed = m.format != MeshFormat::ThreeMf && (tiles.size() > 1 || s.tile_range);
   if (!m.streamed) {
     double voxels = 1;
     for (size_t a = 0; a < 3; ++a) voxels *= domain.block_range()[1][a] - domain.block_range()[0][a];
@@ -220,7 +221,10 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
                       voxels, format_name(m.format)));
   }
   std::optional<StlStream> stl;
-  if (m.streamed) stl.emplace(s.output, description);
+  std::optional<PlyStream> ply;
+  if (m.streamed && m.format == MeshFormat::Stl) stl.emplace(s.output, description);
+  if (m.streamed && m.format == MeshFormat::Ply) ply.emplace(s.output, description);
+  std::vector<uint8_t> on_seam;
   const double cell_voxels = std::pow(1.0 / grid.voxel(), 3);
   double sample_seconds = 0, extract_seconds = 0, write_seconds = 0;
   TriangleMesh held;
@@ -258,6 +262,15 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
       m.inner_dropped += dropped;
       m.inner_dropped_volume += volume * std::pow(s.cell_size * grid.voxel(), 3);
     }
+    if (ply) {
+      // Points within reach of a tile face may be shared with the neighbour across it.
+      on_seam.assign(mesh.points.size(), 0);
+      for (size_t i = 0; i < mesh.points.size(); ++i)
+        for (size_t a = 0; a < 3; ++a)
+          if (std::abs(mesh.points[i][a] - float(tile.owned[0][a])) < 1.5f ||
+              std::abs(mesh.points[i][a] - float(tile.owned[1][a])) < 1.5f)
+            on_seam[i] = 1;
+    }
     for (auto& p : mesh.points) p = to_mm(p);
     extract_seconds += seconds_since(step);
     if (!m.streamed) {
@@ -274,7 +287,8 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
     m.triangles += mesh.triangles.size();
     m.points += mesh.points.size();
     step = std::chrono::steady_clock::now();
-    stl->append(mesh);
+    if (stl) stl->append(mesh);
+    if (ply) ply->append(mesh, on_seam);
     write_seconds += seconds_since(step);
   }
   m.samples_per_second = sample_seconds > 0 ? double(m.wall_samples) / sample_seconds : 0;
@@ -288,8 +302,14 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
                                 "the voxels"
                               : "the block holds no wall: the surface does not cross it, or the walls fall "
                                 "between the voxels");
-    stl->commit();
-    m.file_bytes = stl->bytes();
+    if (stl) {
+      stl->commit();
+      m.file_bytes = stl->bytes();
+    } else {
+      m.points = ply->vertices();  // seams welded
+      ply->commit();
+      m.file_bytes = ply->bytes();
+    }
     m.stages.push_back({"write", write_seconds + seconds_since(step)});
     return {};
   }
@@ -616,7 +636,8 @@ std::string format_summary(const MeshSummary& m) {
                      m.tile_range ? fmt::format("{} of ", m.tiles_meshed) : std::string(), m.tiles, m.tile_size,
                      m.tile_range ? fmt::format("share {}/{}, a partial STL: join the shares with --merge",
                                                 m.tile_range->first, m.tile_range->second)
-                     : m.streamed ? std::string("STL written tile by tile (memory: one tile)")
+                     : m.streamed ? fmt::format("{} written tile by tile (memory: one tile{})", format_name(m.format),
+                                                m.format == MeshFormat::Ply ? ", and the seams' points" : "")
                                   : fmt::format("{} held whole, seams welded", format_name(m.format)));
   if (!m.body)
     s += fmt::format("  volume:     {:.6g} mm^3, relative density {:.4f} (box {:.6g} mm^3{})\n", m.volume,
