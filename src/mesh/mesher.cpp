@@ -529,11 +529,11 @@ std::string format_body(const MeshSummary& m) {
                      b.fillet > 0 ? fmt::format(", walls joined with a {:g} mm fillet", b.fillet) : std::string(),
                      b.core_volume, b.skin_volume);
     s += fmt::format(
-        "              measured: thinnest {:.4g} mm {} (request {:g}, one voxel {:.4g}); outer surface at most "
-        "{:.3g} mm deep\n",
+        "              measured: thinnest {:.4g} mm {}; requested {:g} mm, one voxel {:.4g} mm; outer surface at "
+        "most {:.3g} mm deep\n",
         b.measured_skin.thinnest,
         b.measured_skin.by_pieces ? fmt::format("over {} cavities", b.measured_skin.cavities)
-                                  : std::string("(vertices deeper than half a voxel, tile by tile)"),
+                                  : std::string("(tile by tile: the vertices deeper than half a voxel)"),
         b.skin, b.voxel, b.measured_skin.outer_deepest);
   } else {
     s += "  skin:       none (--skin 0): the lattice is cut flush by the body\n";
