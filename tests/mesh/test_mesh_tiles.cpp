@@ -139,11 +139,11 @@ TEST(MeshTiles, BadTileOptionsExitWith2AndWriteNothing) {
 }
 
 // Out of memory is an error that names the stage and what to lower, exit 3, with nothing left behind,
-// never an abort: an untiled 6^3 block under a 1 GB address-space limit.
+// never an abort: an untiled 8^3 block (2.4 GB as one grid) under a 1 GB address-space limit.
 TEST(MeshTiles, OutOfMemoryExitsWith3NamingTheStageAndLeavesNoFile) {
   const std::string dir = scratch_dir("tiles-oom");
   const std::string command = "ulimit -v 1000000; exec " + std::string(OFFSETGEN_EXE) +
-                              " mesh --surface gyroid --thickness 0.1 --cells 6 --cell-size 8 --resolution 40 "
+                              " mesh --surface gyroid --thickness 0.1 --cells 8 --cell-size 8 --resolution 40 "
                               "--tile 0 -o " +
                               dir + "/part.stl";
   const check::ProcessResult r = check::run_process({"bash", "-c", command});
