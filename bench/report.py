@@ -241,6 +241,9 @@ def methods_section(results, gen, own_run=None):
 
 NUMPY_BEGIN = "<!-- numpy section: bench/numpy_grid.py --update BENCHMARKS.md replaces it -->"
 NUMPY_END = "<!-- end of numpy section -->"
+# Parts and tiles (issues 23, 24) are measured by hand and by bench/tiles_bench.py: kept as they are.
+PARTS_BEGIN = "<!-- parts and tiles sections: measured by hand and bench/tiles_bench.py; kept by report.py -->"
+PARTS_END = "<!-- end of parts and tiles sections -->"
 
 
 def kept_section(output, begin, end):
@@ -392,7 +395,7 @@ def splice_mesh(output, section):
         text = f.read().split("\n")
     start = next((i for i, l in enumerate(text) if l.startswith("## Meshing")), None)
     if start is not None:
-        end = next((i for i in range(start + 1, len(text)) if text[i].startswith("## ")), len(text))
+        end = next((i for i in range(start + 1, len(text)) if text[i].startswith(("## ", "<!-- "))), len(text))
     else:
         start = end = next((i for i, l in enumerate(text) if l.startswith("## How to reproduce")), len(text))
     text[start:end] = section
@@ -789,6 +792,7 @@ def main(argv=None):
     w("")
     md.extend(methods_section(R, gen))
     md.extend(mesh_section(R))
+    md.extend(kept_section(args.output, PARTS_BEGIN, PARTS_END))
     md.extend(kept_section(args.output, NUMPY_BEGIN, NUMPY_END))
     w("## How to reproduce")
     w("")
