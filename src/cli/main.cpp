@@ -43,8 +43,8 @@ int main(int argc, char** argv) {
 
   GenerateOptions generate;
   add_generate_command(app, generate);
-  bool list_json = false;
-  add_list_command(app, list_json);
+  ListOptions list;
+  add_list_command(app, list);
   DensityOptions density;
   add_density_command(app, density);
 #ifdef OFFSETGEN_HAVE_CHECK
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
 
   return run_reporting_errors([&] {
     if (app.got_subcommand("generate")) return run_generate(generate, args);
-    if (app.got_subcommand("list")) return run_list(list_json);
+    if (app.got_subcommand("list")) return run_list(list);
     if (app.got_subcommand("density")) return run_density(density);
 #ifdef OFFSETGEN_HAVE_CHECK
     if (app.got_subcommand("check")) return run_check(check);

@@ -1,9 +1,11 @@
 // The CLI as a user meets it: help, version, list, exit codes, and bad input that loses nothing.
 #include "emit/backend.h"
 #include "offset/method.h"
+#include "surfaces/catalog.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cstdlib>
@@ -258,6 +260,33 @@ TEST(Cli, TopLevelHelpNamesEveryTargetAndMethodOfTheRegistries) {
   for (const Backend* b : backends()) EXPECT_NE(help.output.find(b->title()), std::string::npos) << b->name();
   for (const OffsetMethod* m : offset_methods())
     EXPECT_NE(help.output.find(m->name() + ": " + m->description()), std::string::npos) << m->name();
+}
+
+TEST(Cli, ListRegistriesGivesEverySurfaceMethodAndTargetAsData) {
+  const auto r = run_offsetgen("list --registries");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto data = nlohmann::json::parse(r.output);
+  ASSERT_EQ(data["surfaces"].size(), catalog().size());
+  for (size_t i = 0; i < catalog().size(); ++i) EXPECT_EQ(data["surfaces"][i]["name"], catalog()[i].name);
+  ASSERT_EQ(data["methods"].size(), offset_methods().size());
+  for (size_t i = 0; i < offset_methods().size(); ++i) {
+    const OffsetMethod* m = offset_methods()[i];
+    EXPECT_EQ(data["methods"][i]["name"], m->name());
+    EXPECT_EQ(data["methods"][i]["max_order"], m->max_order());
+    EXPECT_EQ(data["methods"][i]["default"], m->name() == kDefaultMethod);
+    EXPECT_EQ(data["methods"][i]["orders"].back(), m->effective_order(m->max_order()));
+  }
+  for (const auto& m : data["methods"]) {
+    if (m["name"] == "projection") {
+      EXPECT_EQ(m["orders"].front(), 2) << "projection rounds order 1 up to 2";
+    }
+  }
+  ASSERT_EQ(data["targets"].size(), backends().size());
+  for (size_t i = 0; i < backends().size(); ++i) {
+    EXPECT_EQ(data["targets"][i]["name"], backends()[i]->name());
+    EXPECT_EQ(data["targets"][i]["extension"], backends()[i]->extension());
+  }
+  EXPECT_EQ(run_offsetgen("list --registries --json").exit_code, 2);
 }
 
 TEST(Cli, WritesOnlyWhenTheContentChanges) {
