@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints the table of surface constants (docs/density.md, README) for every catalog surface.
+"""Prints the table of surface constants (docs/density.md) for every catalog surface.
 
 usage: tools/density_table.py [path/to/offsetgen]     (default: build/offsetgen)
 

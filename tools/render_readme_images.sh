@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the pictures in docs/images/ (README and docs/glsl.md) from freshly generated GLSL
+# Regenerates the pictures in docs/images/ (docs/glsl.md, docs/mesh.md; the README links them) from freshly generated GLSL
 # snippets, rendered headless on Mesa llvmpipe by render_shell (tools/render). No GPU or display.
 #
 # usage: tools/render_readme_images.sh [build-dir]     (default: build)
