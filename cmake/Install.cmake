@@ -17,63 +17,63 @@ set(OFFSETGEN_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/offsetgen" CACHE S
     "Where to install offsetgen's CMake package, relative to the prefix")
 mark_as_advanced(OFFSETGEN_INSTALL_CMAKEDIR)
 
-# The offset methods (the registry in src/offset/method_registry.cpp: one *_method.cpp each) with
-# their highest order and whether they build even orders only, as "name:max_order:even" entries, so
-# offsetgen_generate() can check METHOD and ORDERS and name the files at configure time.
+# The registries as data: cmake/registries.json is what `offsetgen list --registries` prints (the
+# surfaces, the offset methods with their orders, the targets with their extensions), committed so
+# that offsetgen_generate() can check SURFACE, METHOD, ORDERS and LANG and name its files at configure
+# time, before offsetgen is built. Test Cli.RegistriesJsonIsWhatTheToolPrints keeps it current;
+# tools/update_golden.sh rewrites it.
+file(READ "${PROJECT_SOURCE_DIR}/cmake/registries.json" _offsetgen_registries)
+
+# The offset methods as "name:max_order:even" entries (even: every order it builds is even), sorted.
 set(OFFSETGEN_METHODS "")
-file(GLOB _offsetgen_method_files "${PROJECT_SOURCE_DIR}/src/offset/*_method.cpp")
-foreach(_file IN LISTS _offsetgen_method_files)
-  file(STRINGS "${_file}" _lines REGEX "kMethod(Name|MaxOrder|EvenOrdersOnly) = ")
-  if(_lines MATCHES "kMethodName = \"([a-z]+)\"" )
-    set(_name ${CMAKE_MATCH_1})
-    string(REGEX MATCH "kMethodMaxOrder = ([0-9]+)" _ "${_lines}")
-    set(_max ${CMAKE_MATCH_1})
-    string(REGEX MATCH "kMethodEvenOrdersOnly = (true|false)" _ "${_lines}")
-    list(APPEND OFFSETGEN_METHODS "${_name}:${_max}:${CMAKE_MATCH_1}")
+string(JSON _count LENGTH "${_offsetgen_registries}" methods)
+math(EXPR _last "${_count} - 1")
+foreach(_i RANGE ${_last})
+  string(JSON _name GET "${_offsetgen_registries}" methods ${_i} name)
+  string(JSON _max GET "${_offsetgen_registries}" methods ${_i} max_order)
+  string(JSON _default GET "${_offsetgen_registries}" methods ${_i} default)
+  string(JSON _orders LENGTH "${_offsetgen_registries}" methods ${_i} orders)
+  set(_even true)
+  math(EXPR _orders_last "${_orders} - 1")
+  foreach(_k RANGE ${_orders_last})
+    string(JSON _order GET "${_offsetgen_registries}" methods ${_i} orders ${_k})
+    math(EXPR _odd "${_order} % 2")
+    if(_odd)
+      set(_even false)
+    endif()
+  endforeach()
+  list(APPEND OFFSETGEN_METHODS "${_name}:${_max}:${_even}")
+  if(_default)
+    set(OFFSETGEN_DEFAULT_METHOD ${_name})
   endif()
 endforeach()
 list(SORT OFFSETGEN_METHODS)
-if(NOT OFFSETGEN_METHODS)
-  message(FATAL_ERROR "offsetgen: no offset method found under src/offset/*_method.cpp")
+if(NOT OFFSETGEN_METHODS OR NOT OFFSETGEN_DEFAULT_METHOD)
+  message(FATAL_ERROR "offsetgen: cmake/registries.json lists no offset method or no default one")
 endif()
-file(STRINGS "${PROJECT_SOURCE_DIR}/src/offset/method.h" _lines REGEX "kDefaultMethod = ")
-string(REGEX MATCH "kDefaultMethod = \"([a-z]+)\"" _ "${_lines}")
-set(OFFSETGEN_DEFAULT_METHOD ${CMAKE_MATCH_1})
-unset(_offsetgen_method_files)
-unset(_lines)
 
-# The output languages (the backends of src/emit/backends/, registered in
-# src/emit/backend_registry.cpp) as "name:extension" entries in registry order, so
-# offsetgen_generate() can check LANG and name the files at configure time.
+# The output languages as "name:extension" entries, in registry order.
 set(OFFSETGEN_LANGUAGES "")
-# The list may span lines (clang-format wraps it): read up to its closing brace.
-file(READ "${PROJECT_SOURCE_DIR}/src/emit/backend_registry.cpp" _lines)
-string(REGEX MATCH "static const std::vector<const Backend\\*> all = {[^}]*}" _lines "${_lines}")
-string(REGEX MATCHALL "&([a-z]+)_backend\\(\\)" _names "${_lines}")
-foreach(_name IN LISTS _names)
-  string(REGEX REPLACE "&([a-z]+)_backend.*" "\\1" _name "${_name}")
-  file(STRINGS "${PROJECT_SOURCE_DIR}/src/emit/backends/${_name}.cpp" _ext REGEX "extension\\(\\) const override")
-  string(REGEX MATCH "return \"([a-z]+)\"" _ "${_ext}")
-  list(APPEND OFFSETGEN_LANGUAGES "${_name}:${CMAKE_MATCH_1}")
+string(JSON _count LENGTH "${_offsetgen_registries}" targets)
+math(EXPR _last "${_count} - 1")
+foreach(_i RANGE ${_last})
+  string(JSON _name GET "${_offsetgen_registries}" targets ${_i} name)
+  string(JSON _ext GET "${_offsetgen_registries}" targets ${_i} extension)
+  list(APPEND OFFSETGEN_LANGUAGES "${_name}:${_ext}")
 endforeach()
-if(NOT OFFSETGEN_LANGUAGES)
-  message(FATAL_ERROR "offsetgen: no backend found in src/emit/backend_registry.cpp")
-endif()
-unset(_names)
-unset(_ext)
 
 # The catalog's surface names, so offsetgen_generate() can reject an unknown SURFACE at configure time
-# before offsetgen is built (tests/cmake_consumer checks that this list is `offsetgen list`'s).
-file(STRINGS "${PROJECT_SOURCE_DIR}/src/surfaces/catalog.cpp" _offsetgen_catalog_lines
-     REGEX "^[ \t]*\{\"[A-Za-z0-9_]+\", \"")
+# (tests/cmake_consumer checks that this list is `offsetgen list`'s).
 set(OFFSETGEN_SURFACES "")
-foreach(_line IN LISTS _offsetgen_catalog_lines)
-  if(_line MATCHES "^[ \t]*\{\"([A-Za-z0-9_]+)\"")
-    list(APPEND OFFSETGEN_SURFACES "${CMAKE_MATCH_1}")
-  endif()
+string(JSON _count LENGTH "${_offsetgen_registries}" surfaces)
+math(EXPR _last "${_count} - 1")
+foreach(_i RANGE ${_last})
+  string(JSON _name GET "${_offsetgen_registries}" surfaces ${_i} name)
+  list(APPEND OFFSETGEN_SURFACES "${_name}")
 endforeach()
-unset(_offsetgen_catalog_lines)
-unset(_line)
+foreach(_var _offsetgen_registries _count _last _i _name _max _default _orders _orders_last _k _order _odd _even _ext)
+  unset(${_var})
+endforeach()
 
 # --- The same names inside this build (add_subdirectory / FetchContent users, and our tests) -------
 add_executable(offsetgen::offsetgen ALIAS offsetgen)

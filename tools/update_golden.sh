@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Regenerates the committed golden files in generated/ from generated/MANIFEST: writes what the
-# manifest produces and removes every other file (a golden file whose manifest line is gone is
+# Regenerates the committed golden files in generated/ from generated/MANIFEST (and
+# cmake/registries.json, `offsetgen list --registries`): writes what the manifest produces and
+# removes every other file (a golden file whose manifest line is gone is
 # stale). Run it when a change to the generator is meant to change its output, review
 # `git status generated/` and `git diff generated/`, and commit both.
 # usage: tools/update_golden.sh [path/to/offsetgen] [golden-dir]   (defaults: build/offsetgen, generated)
@@ -28,4 +29,10 @@ done
 for file in "$fresh"/*; do
   cmp -s "$file" "$golden/$(basename "$file")" || cp -- "$file" "$golden/"
 done
+# The registries as data for CMake (cmake/Install.cmake reads them at configure time).
+"$tool" list --registries > cmake/registries.json.new
+if cmp -s cmake/registries.json.new cmake/registries.json; then rm cmake/registries.json.new; else
+  mv cmake/registries.json.new cmake/registries.json
+  echo "update_golden: cmake/registries.json rewritten"
+fi
 echo "update_golden: $golden/ is up to date with $tool; review with: git status $golden/ && git diff --stat $golden/"

@@ -289,6 +289,17 @@ TEST(Cli, ListRegistriesGivesEverySurfaceMethodAndTargetAsData) {
   EXPECT_EQ(run_offsetgen("list --registries --json").exit_code, 2);
 }
 
+// CMake reads the registries from cmake/registries.json at configure time (cmake/Install.cmake): it
+// must be exactly what the tool prints. To update it on purpose: tools/update_golden.sh.
+TEST(Cli, RegistriesJsonIsWhatTheToolPrints) {
+  const auto r = run_offsetgen("list --registries");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(fs::path(test_support::source_dir()) / "cmake" / "registries.json", std::ios::binary);
+  const std::string committed((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_TRUE(committed == r.output)
+      << "cmake/registries.json differs from `offsetgen list --registries`: run tools/update_golden.sh";
+}
+
 TEST(Cli, WritesOnlyWhenTheContentChanges) {
   std::string dir = testing::scratch_dir("cli_unchanged");
   std::string file = dir + "/g.h";
