@@ -1,5 +1,7 @@
 #include "body/body_topology.h"
 
+#include "body/disjoint_sets.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -52,23 +54,6 @@ Point midpoint(const BodyMesh& mesh, uint32_t a, uint32_t b) {
 double triangle_volume(const BodyMesh& mesh, const Triangle& t) {
   return dot(mesh.points[t[0]], cross(mesh.points[t[1]], mesh.points[t[2]])) / 6.0;
 }
-
-class DisjointSets {
- public:
-  explicit DisjointSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  uint32_t find(uint32_t a) {
-    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
-    return a;
-  }
-  void unite(uint32_t a, uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<uint32_t> parent_;
-};
 
 // One triangle's use of an undirected edge (lo, hi), filed under lo.
 struct HalfEdge {

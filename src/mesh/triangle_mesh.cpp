@@ -1,5 +1,7 @@
 #include "mesh/triangle_mesh.h"
 
+#include "body/disjoint_sets.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -14,23 +16,6 @@ double triangle_volume(const TriangleMesh& mesh, const std::array<uint32_t, 3>& 
   const double bx = b[0], by = b[1], bz = b[2], cx = c[0], cy = c[1], cz = c[2];
   return (a[0] * (by * cz - bz * cy) + a[1] * (bz * cx - bx * cz) + a[2] * (bx * cy - by * cx)) / 6.0;
 }
-
-class DisjointSets {
- public:
-  explicit DisjointSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-  uint32_t find(uint32_t a) {
-    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
-    return a;
-  }
-  void unite(uint32_t a, uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<uint32_t> parent_;
-};
 
 // Keeps the triangles whose piece is kept, in their order, and the points they use in order of
 // first use.
