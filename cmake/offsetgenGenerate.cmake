@@ -11,6 +11,8 @@
 #                      [DENSITY <rho>]                           # adds <prefix>_wall and the density functions
 #                      [DENSITY_FIELD "<rho(x, y, z)>"]          # adds <prefix>_graded and the density functions
 #                      [DENSITY_FUNCTIONS]                       # adds the density functions alone
+#                      [MAP "<U; V; W>" | MAP cylindrical:N,A,C  # a conforming lattice (docs/maps.md), with
+#                       DOMAIN X0,Y0,Z0:X1,Y1,Z1]                #   the box where it is bounded
 #                      [NAME <stem>]                             # with SURFACE: replaces it in the prefix
 #                      [OUTPUT_DIR <dir>])                       # default: ${CMAKE_CURRENT_BINARY_DIR}/<name>
 #
@@ -102,10 +104,10 @@ function(_offsetgen_write_if_changed path content)
 endfunction()
 
 function(offsetgen_generate)
-  set(keywords TARGET SURFACE EXPR NAME METHOD THICKNESS DENSITY DENSITY_FIELD DENSITY_FUNCTIONS OUTPUT_DIR ORDERS
-               LANG PRECISION PARAMS)
+  set(keywords TARGET SURFACE EXPR NAME METHOD THICKNESS DENSITY DENSITY_FIELD DENSITY_FUNCTIONS MAP DOMAIN
+               OUTPUT_DIR ORDERS LANG PRECISION PARAMS)
   cmake_parse_arguments(PARSE_ARGV 0 OG "DENSITY_FUNCTIONS"
-                        "TARGET;SURFACE;EXPR;NAME;METHOD;THICKNESS;DENSITY;DENSITY_FIELD;OUTPUT_DIR"
+                        "TARGET;SURFACE;EXPR;NAME;METHOD;THICKNESS;DENSITY;DENSITY_FIELD;MAP;DOMAIN;OUTPUT_DIR"
                         "ORDERS;LANG;PRECISION;PARAMS")
   set(target "")
   if(DEFINED OG_TARGET)
@@ -306,8 +308,16 @@ function(offsetgen_generate)
     string(REPLACE ";" " and " wall_keywords "${wall_keywords}")
     _offsetgen_fail("${target}" "give one of THICKNESS, DENSITY and DENSITY_FIELD, not ${wall_keywords}: each sets the wall's thickness")
   endif()
+  if(DEFINED OG_MAP)  # offsetgen checks the map and requires its domain
+    # "U; V; W" is one argument: its semicolons must not split it into a CMake list.
+    string(REPLACE ";" "$<SEMICOLON>" map_arg "${OG_MAP}")
+    list(APPEND thickness_args --map "${map_arg}")
+  endif()
+  if(DEFINED OG_DOMAIN)
+    list(APPEND thickness_args --domain "${OG_DOMAIN}")
+  endif()
   if(DEFINED OG_THICKNESS)
-    set(thickness_args --thickness "${OG_THICKNESS}")
+    list(APPEND thickness_args --thickness "${OG_THICKNESS}")
   endif()
   if(DEFINED OG_DENSITY)
     # The range (0, rho_max] depends on the surface: offsetgen checks it when it runs.
@@ -375,7 +385,7 @@ function(offsetgen_generate)
     endif()
     list(APPEND done_prefixes ${prefix})
     set(name_args "")
-    if(DEFINED OG_NAME)
+    if(DEFINED OG_NAME OR DEFINED OG_MAP)  # a map's default prefix names the map: keep the stem's
       set(name_args --name "${prefix}")
     endif()
     set(args generate ${source_args} ${param_args} ${name_args} ${method_args} --order ${order} --lang ${lang_arg}

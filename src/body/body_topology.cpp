@@ -673,4 +673,10 @@ RepairReport repair_body(BodyMesh& mesh) {
   return report;
 }
 
+double winding_number(const BodyMesh& mesh, const std::array<double, 3>& p) {
+  std::vector<uint32_t> all(mesh.triangles.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<uint32_t>(i);
+  return winding_number(mesh, all.data(), all.data() + all.size(), p);
+}
+
 }  // namespace offsetgen::body

@@ -64,4 +64,8 @@ struct RepairReport {
 // Afterwards analyse_topology(mesh).closed() says whether the repair succeeded.
 RepairReport repair_body(BodyMesh& mesh);
 
+// The generalised winding number of the whole mesh around p: about 1 inside a closed outward body,
+// 0 outside. O(triangles).
+double winding_number(const BodyMesh& mesh, const std::array<double, 3>& p);
+
 }  // namespace offsetgen::body

@@ -7,6 +7,7 @@
 #include "emit/file_writer.h"
 #include "pipeline/generate.h"
 #include "surfaces/expression_input.h"
+#include "surfaces/lattice_map.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -46,6 +47,13 @@ void add_generate_command(CLI::App& app, GenerateOptions& o) {
   cmd->add_option("-t,--thickness", o.thickness,
                   "Graded wall: total thickness t(x, y, z) > 0 in cell units; adds <prefix>_graded")
       ->each([&o](const std::string&) { o.thickness_given = true; });
+  cmd->add_option("--map", o.map,
+                  "Conforming lattice: the lattice coordinates of a physical point, \"U; V; W\" (expressions of x, y, "
+                  "z), or a preset: " +
+                      map_presets_summary() +
+                      ". Walls are then exactly --thickness thick in physical units; needs --domain (docs/maps.md)");
+  cmd->add_option("--domain", o.domain,
+                  "X0,Y0,Z0:X1,Y1,Z1: the box (physical units) where a mapped lattice is bounded and checked");
   cmd->add_flag("--density-functions", o.density_functions,
                 "Add <prefix>_density(t), _thickness_for_density(rho), _network_density(h) and "
                 "_offset_for_density(rho) (periodic 3D surfaces; docs/density.md)");
@@ -122,6 +130,8 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
     request.params[key] = value;
   }
   if (o.thickness_given) request.thickness = o.thickness;
+  request.map = o.map;
+  if (!o.domain.empty()) request.domain = parse_domain(o.domain);
   request.density_functions = o.density_functions;
   if (o.density_given) request.density = parse_density_value("--density", o.density);
   if (o.density_field_given) request.density_field = o.density_field;

@@ -15,6 +15,7 @@ struct GenerateOptions {
                                          output, out_dir;
   std::vector<std::string> params;
   std::string thickness;
+  std::string map, domain;             // --map, --domain (surfaces/lattice_map.h)
   std::string density, density_field;  // --density R, --density-field EXPR (text: parsed in run_generate)
   bool density_functions = false;
   int order = 4;

@@ -6,6 +6,7 @@
 #include "mesh/stl_stream.h"
 #include "mesh/tiles.h"
 #include "surfaces/expression_input.h"
+#include "surfaces/lattice_map.h"
 #include "surfaces/surface.h"
 
 #include <unistd.h>
@@ -115,6 +116,34 @@ int run_merge(const MeshOptions& o) {
   return kExitOk;
 }
 
+// A mapped lattice takes x, y, z in millimetres: its cells come from the map, so the lattice's unit
+// is 1 mm and its origin the body's; a block is the --domain box, meshed as a body without a skin.
+void apply_map_options(const MeshOptions& o, mesh::MeshSettings& s) {
+  if (o.cell_size_given || o.cells_given)
+    throw InputError(
+        "--map sets the cells (their size and number come from the map): drop --cell-size and --cells; "
+        "fill a --body, or give the box with --domain X0,Y0,Z0:X1,Y1,Z1 (mm)");
+  if (!o.origin.empty())
+    throw InputError("--origin does not apply with --map: the map's x, y, z are the body's own coordinates (mm)");
+  s.wall.generation.map = o.map;
+  s.cell_size = 1;
+  if (s.body) {
+    if (!o.domain.empty())
+      throw InputError("--domain is the box of a mapped block; with --body the body's box is the domain");
+    s.body->origin = std::array<double, 3>{0, 0, 0};
+    return;
+  }
+  if (o.domain.empty())
+    throw InputError("--map needs a region to fill: --body part.stl, or --domain X0,Y0,Z0:X1,Y1,Z1 (mm)");
+  const Surface::Box box = parse_domain(o.domain);
+  if (box.dims != 3) throw InputError("--domain: mesh needs a 3D box, X0,Y0,Z0:X1,Y1,Z1");
+  mesh::BodySettings b;
+  b.path = "--domain " + o.domain;
+  b.box = std::array<std::array<double, 3>, 2>{box.lo, box.hi};
+  b.origin = std::array<double, 3>{0, 0, 0};
+  s.body = b;
+}
+
 }  // namespace
 
 int run_mesh_command(const MeshOptions& o) {
@@ -145,6 +174,10 @@ int run_mesh_command(const MeshOptions& o) {
     s.body = b;
   }
   s.cell_size = o.cell_size;
+  if (!o.map.empty())
+    apply_map_options(o, s);
+  else if (!o.domain.empty())
+    throw InputError("--domain sets the box of a mapped lattice (--map); a block is --cells NXxNYxNZ --cell-size MM");
   s.resolution = o.resolution;
   s.voxel = o.voxel;
   if (o.tile < 0 || o.tile % mesh::kBlock != 0)

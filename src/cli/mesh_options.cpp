@@ -1,5 +1,7 @@
 #include "cli/mesh_options.h"
 
+#include "surfaces/lattice_map.h"
+
 #include <fmt/format.h>
 
 namespace offsetgen {
@@ -26,7 +28,16 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->add_option("--density-field", o.density_field,
                   "Instead of --thickness: a graded relative density rho(x, y, z), t(p) = "
                   "thickness_for_density(rho(p))");
-  auto* cells = cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
+  auto* cells = cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")
+                    ->capture_default_str()
+                    ->each([&o](const std::string&) { o.cells_given = true; });
+  cmd->add_option("--map", o.map,
+                  "Conforming lattice: \"U; V; W\", the lattice coordinates (in cells) of a point x, y, z in mm, or "
+                  "a preset: " +
+                      map_presets_summary() +
+                      ". Walls are --thickness mm thick along the physical normal; fill a --body, or a --domain box "
+                      "(docs/maps.md)");
+  cmd->add_option("--domain", o.domain, "With --map and no --body: the box X0,Y0,Z0:X1,Y1,Z1 (mm) to fill");
   auto* body = cmd->add_option("-b,--body", o.body,
                                "Fill this part instead of a block: a closed surface as STL (binary or ASCII), PLY, "
                                "OBJ or 3MF, in millimetres");
@@ -49,7 +60,9 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
                 "With --body: weld, drop degenerate and duplicate facets, orient them consistently and fill simple "
                 "holes instead of refusing an open body (the summary says what was repaired)")
       ->needs(body);
-  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
+  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")
+      ->capture_default_str()
+      ->each([&o](const std::string&) { o.cell_size_given = true; });
   auto* resolution =
       cmd->add_option("-r,--resolution", o.resolution,
                       "Voxels per cell (default: the thinnest wall spans 4 voxels, a skin 3; at least 2 are required)");

@@ -24,6 +24,8 @@ struct MeshOptions {
   double skin = 0, fillet = 0, scale = 1;
   bool repair = false;
   double cell_size = 10;
+  bool cell_size_given = false, cells_given = false;
+  std::string map, domain;  // --map, --domain: a conforming lattice (surfaces/lattice_map.h)
   int resolution = 0;
   double voxel = 0;
   int tile = 256;

@@ -60,6 +60,9 @@ void ColumnEvaluator::run(const std::vector<Instruction>& code) {
       case Op::Pow:
         r = std::pow(v[n.a], v[n.b]);
         break;
+      case Op::Atan2:
+        r = std::atan2(v[n.a], v[n.b]);
+        break;
       case Op::LessEq:
         r = v[n.a] <= v[n.b] ? 1.0 : 0.0;
         break;

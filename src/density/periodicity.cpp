@@ -68,6 +68,11 @@ class Prover {
  private:
   Shift function(const GiNaC::ex& e) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (e.nops() != 1) {  // atan2(y, x): periodic when both arguments are
+      for (size_t i = 0; i < e.nops(); ++i)
+        if (classify(e.op(i)) != Shift::Same) return fail(e, "an argument of it is not periodic");
+      return Shift::Same;
+    }
     const GiNaC::ex argument = e.op(0);
     if (name == "sin" || name == "cos" || name == "tan") {
       // The argument moves by a constant d: sin, cos keep (d = 2 pi n) or flip (d = pi (2n + 1)); tan

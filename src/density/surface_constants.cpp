@@ -238,6 +238,10 @@ std::string surface_key(const Surface& s) {
 }  // namespace
 
 std::optional<std::string> density_unavailable(const Surface& surface) {
+  if (surface.mapped())
+    return std::string(
+        "a mapped lattice (--map) is not periodic: its cells are stretched differently from place to "
+        "place, so no closed-form density relation holds; give the wall with --thickness");
   if (surface.dims != 3) return "density functions need a 3D surface (a volume fraction of the cell); this one is 2D";
   const Symbols& sym = Symbols::get();
   const GiNaC::ex cell = surface.field.subs(

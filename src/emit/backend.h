@@ -45,6 +45,8 @@ class Backend {
   virtual std::string sqrt_name(Precision p) const { return "sqrt" + suffix(p); }
   virtual std::string abs_name(Precision p) const { return "abs" + suffix(p); }
   virtual std::string pow_name(Precision p) const { return "pow" + suffix(p); }
+  // atan2(y, x): the angle of (x, y); GLSL spells it atan(y, x).
+  virtual std::string atan2_name(Precision p) const { return "atan2" + suffix(p); }
   virtual std::string select(const std::string& condition, const std::string& if_true,
                              const std::string& if_false) const {
     return "(" + condition + ") ? " + if_true + " : " + if_false;

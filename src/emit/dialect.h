@@ -24,6 +24,7 @@ struct Dialect {
   std::string sqrt_name() const { return backend->sqrt_name(precision); }
   std::string abs_name() const { return backend->abs_name(precision); }
   std::string pow_name() const { return backend->pow_name(precision); }
+  std::string atan2_name() const { return backend->atan2_name(precision); }
   std::string suffix() const { return backend->suffix(precision); }
 };
 

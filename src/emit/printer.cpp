@@ -59,7 +59,8 @@ class BodyPrinter {
       if (n.op == Op::Input || n.op == Op::Const) continue;
       int d = 0;
       for (int operand : {n.a, n.b, n.c})
-        if (operand >= 0 && names_[static_cast<size_t>(operand)].empty()) d = std::max(d, depth[static_cast<size_t>(operand)]);
+        if (operand >= 0 && names_[static_cast<size_t>(operand)].empty())
+          d = std::max(d, depth[static_cast<size_t>(operand)]);
       depth[static_cast<size_t>(id)] = d + 1;
       if (uses[static_cast<size_t>(id)] < 2 && depth[static_cast<size_t>(id)] < kMaxInlineDepth) continue;
       std::string expression = expression_of(id, kSelect);
@@ -108,6 +109,8 @@ class BodyPrinter {
         return dialect_.function(n.fn) + "(" + text(n.a, kSelect) + ")";
       case Op::Pow:
         return dialect_.pow_name() + "(" + text(n.a, kSelect) + ", " + text(n.b, kSelect) + ")";
+      case Op::Atan2:
+        return dialect_.atan2_name() + "(" + text(n.a, kSelect) + ", " + text(n.b, kSelect) + ")";
       case Op::LessEq:
         return text(n.a, kSum) + " <= " + text(n.b, kSum);
       case Op::Greater:

@@ -1,6 +1,7 @@
 #include "lowering/cell_bounds.h"
 
 #include "lowering/lower.h"
+#include "lowering/sample_region.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,68 +14,6 @@
 
 namespace offsetgen {
 namespace {
-
-double numeric_value(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double(); }
-
-}  // namespace
-
-namespace {
-
-// Per start of the compass search; a smooth maximum needs a few hundred.
-constexpr int kMaxSearchEvaluations = 20000;
-
-// The maximum of f over one cell [0, extent]^dims: a grid, then compass refinement from the 8 best
-// samples. Non-finite values (poles of log, 1/x, ...) are skipped and the refinement is capped, so
-// a pole cannot stall it.
-double maximum_over_cell(int dims, double extent, const std::function<double(const std::vector<double>&)>& f,
-                         const char* what) {
-  const int n = dims == 3 ? 24 : 96;
-  std::vector<std::pair<double, std::vector<double>>> best;
-  std::vector<double> p(static_cast<size_t>(dims));
-  const int total = dims == 3 ? n * n * n : n * n;
-  for (int index = 0; index < total; ++index) {
-    int rest = index;
-    for (int i = 0; i < dims; ++i) {
-      p[static_cast<size_t>(i)] = extent * (rest % n + 0.5) / n;
-      rest /= n;
-    }
-    const double value = f(p);
-    if (std::isfinite(value)) best.push_back({value, p});
-  }
-  if (best.empty())
-    throw std::runtime_error(std::string(what) +
-                             " is not finite anywhere on the sampled cell, so the safeguard has "
-                             "no bound");
-  const size_t starts = std::min<size_t>(8, best.size());
-  std::partial_sort(best.begin(), best.begin() + static_cast<long>(starts), best.end(),
-                    [](const auto& a, const auto& b) { return a.first > b.first; });
-
-  double maximum = best.front().first;
-  for (size_t s = 0; s < starts; ++s) {
-    auto [value, point] = best[s];
-    int evaluations = 0;
-    for (double step = extent / n; step > extent * 1e-13 && evaluations < kMaxSearchEvaluations;) {
-      bool improved = false;
-      for (int i = 0; i < dims && !improved; ++i) {
-        for (double direction : {1.0, -1.0}) {
-          auto trial = point;
-          trial[static_cast<size_t>(i)] = std::clamp(trial[static_cast<size_t>(i)] + direction * step, 0.0, extent);
-          const double v = f(trial);
-          ++evaluations;
-          if (std::isfinite(v) && v > value) {
-            value = v;
-            point = trial;
-            improved = true;
-            break;
-          }
-        }
-      }
-      if (!improved) step *= 0.5;
-    }
-    maximum = std::max(maximum, value);
-  }
-  return maximum;
-}
 
 // Largest |eigenvalue| of a symmetric 2x2 or 3x3 matrix (row-major), in closed form.
 double symmetric_spectral_norm(const std::vector<double>& a, int dims) {
@@ -120,7 +59,8 @@ double max_gradient_norm(const Surface& surface, const AtomTable& atoms, const F
     for (double g : gradient(p)) sum += g * g;
     return sum;
   };
-  const double maximum = maximum_over_cell(surface.dims, numeric_value(surface.scale), norm2, "the gradient of F");
+  SampleRegion region(surface);
+  const double maximum = maximum_over_region(region, norm2, "the gradient of F");
   // A relative margin well above the refinement's resolution keeps M an upper bound, also after
   // rounding to float.
   return std::sqrt(maximum) * (1 + 1e-6);
@@ -134,7 +74,8 @@ double max_hessian_norm(const Surface& surface, const AtomTable& atoms, const Fi
   const Program program = natural_program(atoms, surface.dims, entries);
   Evaluator hessian(program);
   auto norm = [&](const std::vector<double>& p) { return symmetric_spectral_norm(hessian(p), surface.dims); };
-  return maximum_over_cell(surface.dims, numeric_value(surface.scale), norm, "the Hessian of F") * (1 + 1e-6);
+  SampleRegion region(surface);
+  return maximum_over_region(region, norm, "the Hessian of F") * (1 + 1e-6);
 }
 
 std::vector<double> min_gradient_in_bands(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field,
@@ -144,7 +85,7 @@ std::vector<double> min_gradient_in_bands(const Surface& surface, const AtomTabl
   const Program program = natural_program(atoms, surface.dims, outputs);
   Evaluator evaluate(program);
   const int dims = surface.dims;
-  const double extent = numeric_value(surface.scale);
+  SampleRegion region(surface);
   std::vector<double> lowest(levels.size(), INFINITY);
   // Best-first branch and bound over boxes (centre c, half side a, half-diagonal r): every point of a
   // box has |F| >= |F(c)| - M r and |grad F| >= |grad F(c)| - H r. Per band, the box with the lowest
@@ -154,12 +95,13 @@ std::vector<double> min_gradient_in_bands(const Surface& surface, const AtomTabl
   constexpr size_t kBudget = 60000;  // per band
   struct Box {
     double lower;  // lower bound of |grad F| in the box
-    double half;
+    double half;   // the largest half side
     std::vector<double> c;
     bool operator<(const Box& o) const { return lower > o.lower; }  // a min-heap in std::priority_queue
   };
   auto probe = [&](std::vector<double> c, double half, double level, double& seen) -> std::optional<Box> {
     const double r = half * std::sqrt(static_cast<double>(dims));
+    if (!region.contains(c)) return std::nullopt;  // near a mapped surface's singular set
     const auto& v = evaluate(c);
     const double f = std::fabs(v[0]);
     if (f - bounds.gradient * r > level) return std::nullopt;  // not in the band
@@ -172,13 +114,19 @@ std::vector<double> min_gradient_in_bands(const Surface& surface, const AtomTabl
   for (size_t k = 0; k < levels.size(); ++k) {
     std::priority_queue<Box> queue;
     double seen = INFINITY;
-    const double half0 = extent / kCoarse / 2;
+    // Boxes' half sides per axis (equal for a cell), scaled alike when split.
+    std::vector<double> halves0(static_cast<size_t>(dims));
+    double half0 = 0;
+    for (int i = 0; i < dims; ++i) {
+      halves0[static_cast<size_t>(i)] = (region.hi(i) - region.lo(i)) / kCoarse / 2;
+      half0 = std::max(half0, halves0[static_cast<size_t>(i)]);
+    }
     const int total = dims == 3 ? kCoarse * kCoarse * kCoarse : kCoarse * kCoarse;
     for (int index = 0; index < total; ++index) {
       std::vector<double> c(static_cast<size_t>(dims));
       int rest = index;
       for (int i = 0; i < dims; ++i) {
-        c[static_cast<size_t>(i)] = (2 * (rest % kCoarse) + 1) * half0;
+        c[static_cast<size_t>(i)] = region.lo(i) + (2 * (rest % kCoarse) + 1) * halves0[static_cast<size_t>(i)];
         rest /= kCoarse;
       }
       if (auto b = probe(std::move(c), half0, levels[k], seen)) queue.push(std::move(*b));
@@ -189,7 +137,10 @@ std::vector<double> min_gradient_in_bands(const Surface& surface, const AtomTabl
       queue.pop();
       for (int corner = 0; corner < (1 << dims); ++corner) {
         std::vector<double> c = b.c;
-        for (int i = 0; i < dims; ++i) c[static_cast<size_t>(i)] += ((corner >> i) & 1 ? b.half : -b.half) / 2;
+        for (int i = 0; i < dims; ++i) {
+          const double half = b.half * halves0[static_cast<size_t>(i)] / half0;
+          c[static_cast<size_t>(i)] += ((corner >> i) & 1 ? half : -half) / 2;
+        }
         if (auto child = probe(std::move(c), b.half / 2, levels[k], seen)) queue.push(std::move(*child));
         ++evaluations;
       }

@@ -122,6 +122,7 @@ NodeId Lowerer::half_power(NodeId base, int numerator) {
 
 NodeId Lowerer::lower_function(const GiNaC::ex& e, const Environment& env) {
   const auto& f = GiNaC::ex_to<GiNaC::function>(e);
+  if (f.get_name() == "atan2" && e.nops() == 2) return program_.atan2(lower(e.op(0), env), lower(e.op(1), env));
   if (e.nops() != 1) throw std::invalid_argument("cannot lower function '" + f.get_name() + "' of several arguments");
   if (env.displaced_from && (f.get_name() == "sin" || f.get_name() == "cos")) {
     if (auto sc = displaced_sincos(e.op(0), env)) return f.get_name() == "sin" ? sc->first : sc->second;

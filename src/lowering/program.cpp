@@ -256,6 +256,16 @@ NodeId Program::call(Fn fn, NodeId a) {
   return intern(n);
 }
 
+NodeId Program::atan2(NodeId y, NodeId x) {
+  if (is_const(y) && is_const(x)) return constant(std::atan2(node(y).value, node(x).value));
+  if (node(y).op == Op::Neg) return neg(atan2(node(y).a, x));  // odd in y (away from the cut)
+  Node n;
+  n.op = Op::Atan2;
+  n.a = y;
+  n.b = x;
+  return intern(n);
+}
+
 NodeId Program::pow(NodeId a, NodeId b) {
   if (is_const(a) && is_const(b)) return constant(std::pow(node(a).value, node(b).value));
   Node n;
@@ -421,6 +431,9 @@ Program in_half_turns(const Program& program) {
       case Op::Pow:
         r = out.pow(at(n.a), at(n.b));
         break;
+      case Op::Atan2:
+        r = out.atan2(at(n.a), at(n.b));
+        break;
       case Op::LessEq:
         r = out.less_eq(at(n.a), at(n.b));
         break;
@@ -508,6 +521,9 @@ const std::vector<double>& Evaluator::operator()(const std::vector<double>& inpu
         break;
       case Op::Pow:
         r = std::pow(A(), B());
+        break;
+      case Op::Atan2:
+        r = std::atan2(A(), B());
         break;
       case Op::LessEq:
         r = A() <= B() ? 1.0 : 0.0;

@@ -22,6 +22,7 @@ enum class Op : uint8_t {
   Abs,
   Call,
   Pow,
+  Atan2,  // Atan2(a, b) = atan2(a, b): the angle of the point (b, a), in (-pi, pi]
   LessEq,
   Greater,
   Select,  // comparisons yield booleans; Select(c, a, b) = c ? a : b
@@ -62,6 +63,7 @@ class Program {
   NodeId abs(NodeId a);
   NodeId call(Fn fn, NodeId a);
   NodeId pow(NodeId a, NodeId b);
+  NodeId atan2(NodeId y, NodeId x);
   NodeId less_eq(NodeId a, NodeId b);
   NodeId greater(NodeId a, NodeId b);
   NodeId select(NodeId condition, NodeId if_true, NodeId if_false);

@@ -5,6 +5,7 @@
 #include "emit/file_writer.h"
 #include "mesh/body_domain.h"
 #include "mesh/box_domain.h"
+#include "mesh/mapped_region.h"
 #include "mesh/narrow_band.h"
 #include "mesh/ply_stream.h"
 #include "mesh/stl_stream.h"
@@ -107,7 +108,7 @@ void check_wall_voxels(double min_thickness, double voxels_per_cell, const std::
 
 // Reads the body, scales it and makes sure it is closed (or repairs it); says what it did.
 body::BodyMesh load_body(const BodySettings& b, BodySummary& out, const WarningCallback& warn) {
-  body::BodyMesh mesh = body::read_body_file(b.path);
+  body::BodyMesh mesh = b.box ? box_body(*b.box) : body::read_body_file(b.path);
   if (b.scale != 1)
     for (auto& p : mesh.points)
       for (double& x : p) x *= b.scale;
@@ -467,7 +468,8 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
   VoxelGrid grid;
   grid.resolution = m.resolution;
   grid.voxel_size = b.voxel / s.cell_size;
-  m.field_bound_used = field.generation().surface.from_catalog;
+  // M bounds |grad F| over the unit cell (catalog surfaces repeat it) or a mapped lattice's whole box.
+  m.field_bound_used = field.generation().surface.from_catalog || field.generation().surface.mapped();
   b.expected_density = s.wall.generation.density ? s.wall.generation.density : field.uniform_density();
   m.box_volume = b.level_set_volume;
   m.requested_density = s.wall.generation.density;
@@ -524,6 +526,9 @@ std::string format_body(const MeshSummary& m) {
       m.cell_size, b.origin[0], b.origin[1], b.origin[2], m.min_thickness,
       m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string(), b.voxel,
       m.cell_size / b.voxel, m.automatic_resolution ? ", automatic" : "");
+  if (!m.map.empty())
+    s += fmt::format("  map:        {} (x, y, z in mm){}\n", m.map,
+                     m.map_region.empty() ? std::string() : "\n              " + m.map_region);
   if (b.skin > 0) {
     s += fmt::format("  skin:       {:g} mm{}: core {:.6g} mm^3, skin {:.6g} mm^3 (from the level set)\n", b.skin,
                      b.fillet > 0 ? fmt::format(", walls joined with a {:g} mm fillet", b.fillet) : std::string(),
@@ -572,8 +577,15 @@ MeshSummary run_mesh_stages(const MeshSettings& s, const ProgressCallback& progr
     check_body_size(*m.body, s.cell_size, s.body->skin);
   }
 
+  // A mapped lattice is bounded over the body's box, clear of the map's singular set.
+  WallRequest wall = s.wall;
+  if (!wall.generation.map.empty()) {
+    m.map_region = bound_map_to_body(wall.generation, body_mesh, 0);
+    m.map = resolve_surface(wall.generation).map_formula;
+  }
+
   progress("generating the functions", -1);
-  WallField field(s.wall);
+  WallField field(wall);
   m.stages.push_back({"generate", field.generate_seconds()});
   return s.body ? run_body(s, std::move(m), body_mesh, field, progress) : run_block(s, std::move(m), field, progress);
 }

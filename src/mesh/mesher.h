@@ -27,6 +27,8 @@ struct BodySettings {
   double fillet = 0;                            // mm: radius of the blend where walls meet the skin
   std::optional<std::array<double, 3>> origin;  // a lattice cell's corner, mm; default the body's box minimum
   bool repair = false;                          // repair an open or inconsistent body instead of refusing it
+  // A box instead of a file: a mapped block (--map with --domain), meshed as a body without a skin.
+  std::optional<std::array<std::array<double, 3>, 2>> box;
 };
 
 struct MeshSettings {
@@ -78,6 +80,8 @@ struct BodySummary {
 struct MeshSummary {
   std::string output;
   std::optional<BodySummary> body;
+  std::string map;  // a mapped lattice's formula, and what was decided about its singular set
+  std::string map_region;
   size_t tiles = 1, tiles_meshed = 1;  // tiles of the domain, and those this run meshed (--tile-range)
   int tile_size = 0;                   // voxels a side
   bool streamed = false;               // STL written tile by tile; else the mesh was held whole

@@ -73,7 +73,12 @@ GiNaC::ex MemoDiff::diff_uncached(const GiNaC::ex& e, int variable) {
 GiNaC::ex MemoDiff::function_derivative(const GiNaC::ex& f, size_t argument) {
   GiNaC::symbol t("t_arg");
   GiNaC::ex arg = f.op(argument);
-  GiNaC::ex with_symbol = f.subs(arg == t);
+  if (f.nops() == 1) return f.subs(arg == t).diff(t).subs(t == arg);
+  // Several arguments (atan2): put t in this argument's place only; subs would also replace any
+  // occurrence of `arg` inside the other arguments.
+  GiNaC::exvector args(f.begin(), f.end());
+  args[argument] = t;
+  const GiNaC::ex with_symbol = GiNaC::function(GiNaC::ex_to<GiNaC::function>(f).get_serial(), args);
   return with_symbol.diff(t).subs(t == arg);
 }
 

@@ -7,6 +7,7 @@
 #include "lowering/program.h"
 #include "surfaces/catalog.h"
 #include "surfaces/expression_input.h"
+#include "surfaces/lattice_map.h"
 #include "validate/request_checks.h"
 
 #include <fmt/format.h>
@@ -45,6 +46,14 @@ nlohmann::ordered_json metadata(const GenerationRequest& request, const Generati
   j["graded_wall_order"] = method.graded_wall_order;
   for (const auto& [key, value] : method.metadata.items()) j[key] = value;
   j["thickness"] = request.thickness ? nlohmann::ordered_json(*request.thickness) : nlohmann::ordered_json();
+  if (g.surface.mapped()) {  // only in mapped files, so other files keep their bytes
+    j["map"] = g.surface.map;
+    j["map_formula"] = g.surface.map_formula;
+    const Surface::Box& box = *g.surface.domain;
+    std::vector<double> lo(box.lo.begin(), box.lo.begin() + g.surface.dims);
+    std::vector<double> hi(box.hi.begin(), box.hi.begin() + g.surface.dims);
+    j["domain"] = {lo, hi};
+  }
   if (g.density) {  // only in files with density functions, so other files keep their bytes
     const density::SurfaceConstants& k = g.density->constants();
     nlohmann::ordered_json d;
@@ -156,12 +165,40 @@ std::vector<EmittedFunction> emitted_functions(const Generation& g) {
   return emitted_functions(g.programs, g.surface.dims, g.method(), g.density_programs ? &*g.density_programs : nullptr);
 }
 
-Surface resolve_surface(const GenerationRequest& request) {
+namespace {
+
+Surface unmapped_surface(const GenerationRequest& request);
+
+// The request's surface composed with its --map, over its --domain.
+Surface mapped_surface(const GenerationRequest& request, const Surface& surface) {
+  if (request.map.empty()) {
+    if (request.domain)
+      throw InputError(
+          "--domain applies to a mapped lattice (--map); an unmapped lattice is periodic and is bounded "
+          "over one cell");
+    return surface;
+  }
+  Surface mapped = map_surface(surface, parse_lattice_map(request.map, request.params, surface.dims));
+  mapped.domain = request.domain;
+  mapped.singular_clearance = request.singular_clearance;
+  if (request.domain && request.domain->dims != surface.dims)
+    throw InputError(fmt::format("--domain has {} coordinates per corner, but the surface is {}D", request.domain->dims,
+                                 surface.dims));
+  return mapped;
+}
+
+}  // namespace
+
+Surface resolve_surface(const GenerationRequest& request) { return mapped_surface(request, unmapped_surface(request)); }
+
+namespace {
+
+Surface unmapped_surface(const GenerationRequest& request) {
   if (!request.surface.empty() && !request.expression.empty())
     throw InputError("give either --surface or --expr, not both");
   if (request.surface.empty() && request.expression.empty())
     throw InputError("no surface given: use --surface NAME (see `offsetgen list`) or --expr EXPRESSION");
-  const bool side_expression = request.thickness || request.density_field;  // may use --param too
+  const bool side_expression = request.thickness || request.density_field || !request.map.empty();  // --param too
   if (!request.surface.empty()) {
     if (!request.params.empty() && !side_expression)
       throw InputError("--param only applies to --expr, --thickness and --density-field expressions");
@@ -174,6 +211,8 @@ Surface resolve_surface(const GenerationRequest& request) {
     if (request.expression.find(k) != std::string::npos || !side_expression) surface_params[k] = v;
   return parse_user_expression(request.expression, surface_params, request.name);
 }
+
+}  // namespace
 
 const OffsetMethod& resolve_method(const GenerationRequest& request) {
   const OffsetMethod& method = offset_method(request.method);

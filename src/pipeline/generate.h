@@ -27,7 +27,13 @@ struct GenerationRequest {
   std::string name;                           // prefix override (required stem for expressions)
   std::string method = kDefaultMethod;        // an offset method of the registry (offset/method.h)
   int order = 4;                              // as asked; the method may round it (projection: even)
-  std::optional<std::string> thickness;       // graded wall t(x, y, z), cell units
+  std::optional<std::string> thickness;       // graded wall t(x, y, z), cell units (physical with a map)
+  // A conforming lattice (surfaces/lattice_map.h): the lattice coordinates of a physical point, and
+  // the box where its walls are built and its bounds taken (required with a map). A body's mesh sets
+  // the clearance: sample points this close to the map's singular set lie where no wall is kept.
+  std::string map;
+  std::optional<Surface::Box> domain;
+  double singular_clearance = 0;
   // Density (density/): the four density relations; --density adds _wall, the sheet of that
   // relative density; --density-field adds _graded with t(p) = thickness_for_density(rho(p)).
   // Either of the last two implies the first.
@@ -53,7 +59,7 @@ struct Generation {
   std::optional<density::DensityPrograms> density_programs;
   std::optional<double> wall_thickness;
   std::optional<GiNaC::ex> graded_thickness;  // t(x, y, z) of _graded (--thickness or --density-field)
-  std::map<std::string, std::string> files;  // language -> text, for the requested languages (generate())
+  std::map<std::string, std::string> files;   // language -> text, for the requested languages (generate())
 
   // The text of a requested language's file; throws std::out_of_range if it was not requested.
   const std::string& file(const std::string& language) const { return files.at(language); }

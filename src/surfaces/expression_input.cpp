@@ -43,9 +43,9 @@ std::optional<std::string> constant_hint(const std::string& name) {
 }
 
 const std::set<std::string>& non_smooth_functions() {
-  static const std::set<std::string> names = {"abs",   "fabs", "floor", "ceil", "round", "trunc", "step",
-                                              "sign",  "csgn", "heaviside", "min", "max", "fmin",
-                                              "fmax",  "mod",  "fmod",  "frac"};
+  static const std::set<std::string> names = {"abs",  "fabs", "floor", "ceil",      "round", "trunc",
+                                              "step", "sign", "csgn",  "heaviside", "min",   "max",
+                                              "fmin", "fmax", "mod",   "fmod",      "frac"};
   return names;
 }
 
@@ -62,8 +62,8 @@ std::string exact_decimal(const std::string& literal, const std::string& what, i
     const size_t first = digits.find_first_not_of("+-0");
     const std::string magnitude = first == std::string::npos ? "0" : digits.substr(first);
     if (magnitude.size() > 6 || std::stol(magnitude) > kMaxDecimalExponent)
-      throw InputError(fmt::format("{}: the number '{}' at column {} is out of range (exponents from -{} to {})",
-                                   what, literal, column, kMaxDecimalExponent, kMaxDecimalExponent));
+      throw InputError(fmt::format("{}: the number '{}' at column {} is out of range (exponents from -{} to {})", what,
+                                   literal, column, kMaxDecimalExponent, kMaxDecimalExponent));
     exponent = negative ? -std::stol(magnitude) : std::stol(magnitude);
     mantissa = mantissa.substr(0, e);
   }
@@ -90,8 +90,8 @@ std::string exact_decimal(const std::string& literal, const std::string& what, i
 }
 
 struct Scan {
-  std::string rewritten;               // decimals replaced by exact rationals
-  std::set<std::string> identifiers;   // names not followed by '('
+  std::string rewritten;                    // decimals replaced by exact rationals
+  std::set<std::string> identifiers;        // names not followed by '('
   std::map<std::string, int> first_column;  // where each identifier first appears
 };
 
@@ -116,10 +116,10 @@ Scan scan_expression(const std::string& text, const std::string& what) {
       bool is_call = next < text.size() && text[next] == '(';
       if (is_call) {
         if (non_smooth_functions().count(ident)) {
-          throw InputError(fmt::format(
-              "{} uses the non-smooth function '{}' at column {}: offsets of order m need continuous "
-              "derivatives of order m+1",
-              what, ident, column_of(text, start)));
+          throw InputError(
+              fmt::format("{} uses the non-smooth function '{}' at column {}: offsets of order m need continuous "
+                          "derivatives of order m+1",
+                          what, ident, column_of(text, start)));
         }
         if (!smooth_functions().count(ident)) {
           throw InputError(fmt::format("{} calls unknown function '{}' at column {}; accepted: {}", what, ident,
@@ -198,7 +198,8 @@ GiNaC::ex checked_power(const GiNaC::ex& base, const GiNaC::ex& exponent, const 
       const auto& b = GiNaC::ex_to<GiNaC::numeric>(base);
       const long bits = std::max(b.numer().int_length(), b.denom().int_length());
       if (static_cast<double>(bits) * GiNaC::abs(e.numer()).to_double() > static_cast<double>(kMaxConstantBits))
-        throw InputError(fmt::format("{}: the number {}^{} is too large to compute exactly", what, to_text(b), to_text(e)));
+        throw InputError(
+            fmt::format("{}: the number {}^{} is too large to compute exactly", what, to_text(b), to_text(e)));
     }
   }
   return GiNaC::pow(base, exponent);
@@ -276,6 +277,12 @@ class ExpressionBuilder {
     }
     peek();
     ++i_;  // ')'
+    if (name == "atan2") {
+      if (args.size() != 2)
+        throw InputError(
+            fmt::format("{}: atan2() takes two arguments, atan2(y, x): the angle of the point (x, y)", what_));
+      return GiNaC::atan2(args[0], args[1]);
+    }
     if (args.size() != 1) throw InputError(fmt::format("{}: {}() takes one argument", what_, name));
     return call(name, args[0]);
   }
@@ -309,11 +316,13 @@ GiNaC::ex parse_with(const std::string& original, const std::string& rewritten, 
   } catch (const InputError&) {
     throw;
   } catch (const GiNaC::pole_error& e) {  // log(0), tan(Pi/2)
-    throw InputError(fmt::format("cannot evaluate {} '{}': a function meets a pole at a constant argument, where its "
-                                 "value is infinite ({})",
-                                 what, printable(original), without_source_location(e.what())));
+    throw InputError(
+        fmt::format("cannot evaluate {} '{}': a function meets a pole at a constant argument, where its "
+                    "value is infinite ({})",
+                    what, printable(original), without_source_location(e.what())));
   } catch (const std::exception& e) {  // GiNaC's own, e.g. power::eval(): division by zero
-    throw InputError(fmt::format("cannot parse {} '{}': {}", what, printable(original), without_source_location(e.what())));
+    throw InputError(
+        fmt::format("cannot parse {} '{}': {}", what, printable(original), without_source_location(e.what())));
   }
 }
 
@@ -332,8 +341,8 @@ GiNaC::ex parse_constant(const std::string& name, const std::string& text) {
   require_real(value, fmt::format("parameter {}={}", name, printable(text)));
   const GiNaC::ex number = GiNaC::evalf(value);
   if (!GiNaC::is_a<GiNaC::numeric>(number) || !std::isfinite(GiNaC::ex_to<GiNaC::numeric>(number).to_double()))
-    throw InputError(fmt::format("parameter {}={} is beyond the range of double precision (about 1.8e308)", name,
-                                 printable(text)));
+    throw InputError(
+        fmt::format("parameter {}={} is beyond the range of double precision (about 1.8e308)", name, printable(text)));
   return value;
 }
 
@@ -353,9 +362,10 @@ void require_smooth(const GiNaC::ex& e, const std::string& what) {
 void require_real(const GiNaC::ex& e, const std::string& what) {
   for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
     if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_real())
-      throw InputError(fmt::format("{} is not real: it contains the complex number {} (a square root, logarithm or "
-                                   "power of a negative constant, such as sqrt(-1) = I)",
-                                   what, to_text(*it)));
+      throw InputError(
+          fmt::format("{} is not real: it contains the complex number {} (a square root, logarithm or "
+                      "power of a negative constant, such as sqrt(-1) = I)",
+                      what, to_text(*it)));
   }
 }
 
@@ -369,15 +379,16 @@ void require_sound_powers(const GiNaC::ex& e, const std::string& what) {
       const auto& n = GiNaC::ex_to<GiNaC::numeric>(exponent);
       const GiNaC::numeric limit(kMaxIntegerExponent);
       if (n.is_rational() && (GiNaC::abs(n.numer()) > limit || n.denom() > limit))
-        throw InputError(fmt::format("{}: the exponent {} in {} is too large (at most {} in magnitude)", what, to_text(n), to_text(*it),
-                                     kMaxIntegerExponent));
+        throw InputError(fmt::format("{}: the exponent {} in {} is too large (at most {} in magnitude)", what,
+                                     to_text(n), to_text(*it), kMaxIntegerExponent));
       continue;
     }
     const GiNaC::ex b = GiNaC::evalf(base);
     if (!GiNaC::is_a<GiNaC::numeric>(b)) continue;
     const auto& value = GiNaC::ex_to<GiNaC::numeric>(b);
     if (value.is_zero())
-      throw InputError(fmt::format("{} has {}: zero to a varying power is 0 or undefined, and not smooth", what, to_text(*it)));
+      throw InputError(
+          fmt::format("{} has {}: zero to a varying power is 0 or undefined, and not smooth", what, to_text(*it)));
     if (value.is_real() && value.is_negative())
       throw InputError(fmt::format("{} has {}: a negative number to a varying power is not real", what, to_text(*it)));
   }
@@ -395,9 +406,10 @@ GiNaC::ex parse_in_cell_coordinates(const std::string& text, const std::map<std:
   std::set<std::string> unused;
   for (const auto& [name, value] : params) {
     if (table.count(name) || smooth_functions().count(name) || constant_hint(name))
-      throw InputError(fmt::format("parameter name '{}' is reserved (coordinates x, y, z, the constant Pi and the "
-                                   "function names cannot be parameters)",
-                                   name));
+      throw InputError(
+          fmt::format("parameter name '{}' is reserved (coordinates x, y, z, the constant Pi and the "
+                      "function names cannot be parameters)",
+                      name));
     table[name] = parse_constant(name, value);
     unused.insert(name);
   }
@@ -419,8 +431,8 @@ GiNaC::ex parse_in_cell_coordinates(const std::string& text, const std::map<std:
 }  // namespace
 
 const std::vector<std::string>& accepted_functions() {
-  static const std::vector<std::string> names = {"acos", "asin", "atan", "cos",  "cosh", "exp",
-                                                 "log",  "sin",  "sinh", "sqrt", "tan",  "tanh"};
+  static const std::vector<std::string> names = {"acos", "asin", "atan", "atan2", "cos", "cosh", "exp",
+                                                 "log",  "sin",  "sinh", "sqrt",  "tan", "tanh"};
   return names;
 }
 
@@ -486,8 +498,7 @@ Surface parse_user_expression(const std::string& text, const std::map<std::strin
   // Absorb 2*pi into the coordinates when that removes every pi (METHOD.md, scaling identity):
   // derivatives then carry no 2*pi factors and the emitted code multiplies x by 2*pi once.
   GiNaC::ex two_pi = 2 * GiNaC::Pi;
-  GiNaC::ex natural =
-      cell.subs(GiNaC::lst{sym.x == sym.X / two_pi, sym.y == sym.Y / two_pi, sym.z == sym.Z / two_pi});
+  GiNaC::ex natural = cell.subs(GiNaC::lst{sym.x == sym.X / two_pi, sym.y == sym.Y / two_pi, sym.z == sym.Z / two_pi});
   if (cell.has(GiNaC::Pi) && !natural.has(GiNaC::Pi)) {
     surface.scale = two_pi;
   } else {
@@ -496,6 +507,11 @@ Surface parse_user_expression(const std::string& text, const std::map<std::strin
   }
   surface.field = natural;
   return surface;
+}
+
+GiNaC::ex parse_coordinate_expression(const std::string& text, const std::map<std::string, std::string>& params,
+                                      const std::string& what) {
+  return parse_in_cell_coordinates(text, params, what, nullptr);
 }
 
 GiNaC::ex parse_thickness_expression(const std::string& text, const std::map<std::string, std::string>& params,

@@ -22,6 +22,11 @@ Surface parse_user_expression(const std::string& text, const std::map<std::strin
 GiNaC::ex parse_thickness_expression(const std::string& text, const std::map<std::string, std::string>& params,
                                      int dims);
 
+// An expression of x, y, z with named constant parameters (a --map component); `what` names it in
+// messages. Unused parameters are allowed.
+GiNaC::ex parse_coordinate_expression(const std::string& text, const std::map<std::string, std::string>& params,
+                                      const std::string& what);
+
 // "a=0.3" -> {"a", "0.3"}; throws InputError on a malformed entry.
 std::pair<std::string, std::string> split_param(const std::string& assignment);
 

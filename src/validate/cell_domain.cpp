@@ -1,6 +1,7 @@
 #include "validate/cell_domain.h"
 
 #include "lowering/lower.h"
+#include "lowering/sample_region.h"
 #include "offset/atom_table.h"
 
 #include <fmt/format.h>
@@ -15,30 +16,28 @@ namespace {
 // Entries of the Hessian above this everywhere leave the safeguard without a bound.
 constexpr double kMaxHessianEntry = 1e100;
 
-// Cell-centred samples, as dense as the safeguard's bound search: 24^3 in 3D, 96^2 in 2D. They avoid
-// the cell's faces, where log(x) or 1/x have their poles.
-std::vector<std::vector<double>> cell_samples(int dims) {
+// Centred samples of the region (cell coordinates), as dense as the safeguard's bound search: 24^3
+// in 3D, 96^2 in 2D. They avoid the box's faces, where log(x) or 1/x have their poles. A mapped
+// surface's region (lowering/sample_region.h) skips points near the map's singular set.
+std::vector<std::vector<double>> region_samples(SampleRegion& region, double scale) {
+  const int dims = region.dims();
   const int n = dims == 3 ? 24 : 96;
   const int total = dims == 3 ? n * n * n : n * n;
   std::vector<std::vector<double>> points;
   points.reserve(static_cast<size_t>(total));
+  std::vector<double> natural(static_cast<size_t>(dims));
   for (int index = 0; index < total; ++index) {
     std::vector<double> p(static_cast<size_t>(dims));
     int rest = index;
-    for (auto& c : p) {
-      c = (rest % n + 0.5) / n;
+    for (int i = 0; i < dims; ++i) {
+      const double lo = region.lo(i) / scale, hi = region.hi(i) / scale;
+      p[static_cast<size_t>(i)] = lo + (hi - lo) * (rest % n + 0.5) / n;
+      natural[static_cast<size_t>(i)] = scale * p[static_cast<size_t>(i)];
       rest /= n;
     }
-    points.push_back(p);
+    if (region.contains(natural)) points.push_back(p);
   }
   return points;
-}
-
-std::string point_text(const std::vector<double>& p) {
-  std::string names = p.size() == 3 ? "x, y, z" : "x, y";
-  std::string values;
-  for (double c : p) values += fmt::format("{}{:.4g}", values.empty() ? "" : ", ", c);
-  return fmt::format("({}) = ({})", names, values);
 }
 
 // The first operation (in evaluation order) that turned finite or infinite operands into NaN.
@@ -58,6 +57,8 @@ std::string nan_cause(const Program& program, const std::vector<NodeId>& order, 
         if (n.fn == Fn::Asin || n.fn == Fn::Acos)
           return fmt::format("{}({:.6g}), outside [-1, 1]", function_name(n.fn), a);
         return fmt::format("{}({:.6g}), which overflows", function_name(n.fn), a);
+      case Op::Atan2:
+        return "atan2 of an infinite or undefined argument";
       case Op::Add:
       case Op::Sub:
         return "inf - inf: the value overflows double precision there";
@@ -76,7 +77,9 @@ std::string nan_cause(const Program& program, const std::vector<NodeId>& order, 
 // `judge(point, values)`; on NaN, throws InputError built from `what` and the NaN's cause.
 template <typename Judge>
 void sample(const std::vector<GiNaC::ex>& outputs, const std::vector<std::string>& output_names,
-            const std::vector<GiNaC::ex>& symbols, double scale, int dims, Judge judge) {
+            const std::vector<GiNaC::ex>& symbols, double scale, SampleRegion& region, double region_scale,
+            Judge judge) {
+  const int dims = region.dims();
   std::vector<std::string> names = {"x", "y"};
   if (dims == 3) names.push_back("z");
   Program program(names);
@@ -90,12 +93,12 @@ void sample(const std::vector<GiNaC::ex>& outputs, const std::vector<std::string
     program.add_output("o" + std::to_string(k), lowerer.lower(outputs[k], env));
   Evaluator evaluate(program);
   const std::vector<NodeId> order = schedule(program);
-  for (const auto& p : cell_samples(dims)) {
+  for (const auto& p : region_samples(region, region_scale)) {
     const std::vector<double>& values = evaluate(p);
     for (size_t k = 0; k < values.size(); ++k) {
       if (std::isnan(values[k]))
-        throw InputError(fmt::format("{} is not defined everywhere in the cell [0, 1]^{}: at {} it takes {}",
-                                     output_names[k], dims, point_text(p),
+        throw InputError(fmt::format("{} is not defined everywhere in {}: at {} it takes {}", output_names[k],
+                                     region.describe(), point_text(p),
                                      nan_cause(program, order, evaluate.node_values())));
     }
     judge(p, values);
@@ -138,31 +141,43 @@ void require_defined_on_cell(const Surface& surface) {
       if (!(std::fabs(v[k]) <= kMaxHessianEntry)) return false;
     return true;
   };
-  sample(outputs, names, symbols, scale, d, [&](const std::vector<double>&, const std::vector<double>& v) {
+  SampleRegion region(surface);
+  sample(outputs, names, symbols, scale, region, scale, [&](const std::vector<double>&, const std::vector<double>& v) {
     value = value || std::isfinite(v[0]);
     gradient = gradient || all_finite(v, 1, n_gradient);
     hessian = hessian || tame(v, n_gradient, v.size());
   });
   const char* what = !value ? "F" : (!gradient ? "the gradient of F" : (!hessian ? "the Hessian of F" : nullptr));
   if (what)
-    throw InputError(fmt::format("{} is infinite at every sample of the cell [0, 1]^{}, or so large that {}: it "
-                                 "overflows double precision",
-                                 what, d,
-                                 what == std::string("the Hessian of F") ? "an entry exceeds 1e100 (its cube overflows)"
-                                                                        : "its square overflows"));
+    throw InputError(
+        fmt::format("{} is infinite at every sample of {}, or so large that {}: it "
+                    "overflows double precision",
+                    what, region.describe(),
+                    what == std::string("the Hessian of F") ? "an entry exceeds 1e100 (its cube overflows)"
+                                                            : "its square overflows"));
 }
 
-void require_positive_thickness(const GiNaC::ex& thickness, int dims, const std::string& text) {
+void require_positive_thickness(const Surface& surface, const GiNaC::ex& thickness, const std::string& text) {
   const Symbols& sym = Symbols::get();
   const std::vector<GiNaC::ex> symbols = {sym.x, sym.y, sym.z};
   const std::string what = fmt::format("the thickness '{}'", text);
-  sample({thickness}, {what}, symbols, 1.0, dims, [&](const std::vector<double>& p, const std::vector<double>& v) {
-    if (!(v[0] > 0) || !std::isfinite(v[0]))
-      throw InputError(
-          fmt::format("{} must be a finite wall thickness > 0 (cell units) everywhere in the cell, but at "
-                      "{} it is {:.6g}",
-                      what, point_text(p), v[0]));
-  });
+  SampleRegion region(surface);
+  const double scale = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(surface.scale)).to_double();
+  sample({thickness}, {what}, symbols, 1.0, region, scale,
+         [&](const std::vector<double>& p, const std::vector<double>& v) {
+           if (!(v[0] > 0) || !std::isfinite(v[0]))
+             throw InputError(
+                 fmt::format("{} must be a finite wall thickness > 0 ({}) everywhere in {}, but at {} it is {:.6g}",
+                             what, surface.mapped() ? "physical units" : "cell units",
+                             surface.mapped() ? region.describe() : "the cell", point_text(p), v[0]));
+         });
+}
+
+void require_positive_thickness(const GiNaC::ex& thickness, int dims, const std::string& text) {
+  Surface cell;
+  cell.dims = dims;
+  cell.scale = 1;
+  require_positive_thickness(cell, thickness, text);
 }
 
 }  // namespace offsetgen

@@ -4,6 +4,7 @@
 #include "validate/cell_domain.h"
 #include "validate/constants.h"
 #include "validate/cost_guard.h"
+#include "validate/map_checks.h"
 #include "validate/names.h"
 
 namespace offsetgen {
@@ -12,6 +13,7 @@ void check_before_build(const RequestFacts& facts) {
   const Surface& surface = *facts.surface;
   require_usable_prefix(facts.prefix, facts.languages);
   require_within_size_limits(surface.field, surface.from_catalog ? "the catalog formula" : "the expression");
+  require_regular_map(surface);  // before sampling: a singular point would read as undefined
   require_defined_on_cell(surface);
   if (facts.thickness && *facts.thickness) {
     require_within_size_limits(**facts.thickness, "the thickness expression");

@@ -208,6 +208,48 @@ TEST(MeshBody, TorusKeepsItsHoleAndHasTheClosedFormVolume) {
   EXPECT_NEAR(volume / expected, 1, 0.02);
 }
 
+// A torus about the z axis, filled with a cylindrical gyroid (--map): the map's axis runs through the
+// torus's hole, outside the body, so it is accepted; one clean solid that keeps the hole.
+TEST(MeshMap, TorusAroundTheAxisIsFilledWithACylindricalLattice) {
+  const std::string dir = scratch_dir("map-torus");
+  const double big = 12, small = 5;
+  write_stl(torus(big, small, {0, 0, 0}, 192, 64), dir + "/torus.stl");
+  CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--map", "cylindrical:12,4,4", "--thickness", "0.6",
+                            "--body", dir + "/torus.stl", "--skin", "1", "--voxel", "0.15", "-o", dir + "/part.stl"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::cout << r.output;
+  EXPECT_NE(r.output.find("map:        u = sqrt(x^2+y^2)/(4)"), std::string::npos);
+  EXPECT_NE(r.output.find("lies outside the body"), std::string::npos);
+  expect_admesh_clean(dir + "/part.stl", summary_number(r.output, " mm over "));
+  double nearest_axis = HUGE_VAL;
+  for (const auto& f : read_stl(dir + "/part.stl"))
+    for (const auto& v : f) nearest_axis = std::min(nearest_axis, std::hypot(double(v[0]), double(v[1])));
+  EXPECT_NEAR(nearest_axis, big - small, 0.2);
+}
+
+// The map's axis inside the body: refused (exit 2) naming the point, and nothing is written. A
+// mapped block holding the axis is refused the same way; one clear of it is meshed.
+TEST(MeshMap, ASingularPointWhereWallsAreKeptIsRefused) {
+  const std::string dir = scratch_dir("map-refused");
+  write_stl(sphere(8, {0, 0, 0}, 3), dir + "/ball.stl");
+  CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--map", "cylindrical:8,4,4", "--thickness", "0.6", "--body",
+                            dir + "/ball.stl", "-o", dir + "/part.stl"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("inside the body"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/part.stl"));
+  r = run_offsetgen({"mesh", "--surface", "gyroid", "--map", "cylindrical:8,4,4", "--thickness", "0.6", "--domain",
+                     "-5,-5,0:5,5,4", "-o", dir + "/block.stl"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("is singular at (x, y, z) = (0, 0,"), std::string::npos) << r.output;
+  r = run_offsetgen({"mesh", "--surface", "gyroid", "--map", "cylindrical:8,4,4", "--thickness", "0.6", "--cells", "2",
+                     "--body", dir + "/ball.stl", "-o", dir + "/part.stl"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = run_offsetgen({"mesh", "--surface", "gyroid", "--map", "cylindrical:8,4,4", "--thickness", "0.6", "--domain",
+                     "6,-3,0:12,3,4", "--voxel", "0.15", "-o", dir + "/block.stl"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  expect_admesh_clean(dir + "/block.stl", -1);  // a block without skin may hold several pieces
+}
+
 // --fillet blends the walls into the skin with a smooth minimum: more material where they meet, and
 // still one clean solid.
 TEST(MeshBody, AFilletAddsMaterialWhereWallsMeetTheSkinAndStaysClean) {

@@ -3,8 +3,8 @@
 // float highp). Skeletons: templates/glsl/.
 #include "emit/backend.h"
 #include "emit/emitted_api.h"
-#include "emit/shader_trig.h"
 #include "emit/glsl_names.h"
+#include "emit/shader_trig.h"
 #include "offset/method.h"
 
 #include <fmt/format.h>
@@ -32,6 +32,7 @@ class GlslBackend final : public Backend {
     return std::isnan(value) ? "intBitsToFloat(0x7fc00000)" : float_literal(value);  // NaN: the density relations
   }
   std::string vector_type(int dims) const override { return dims == 3 ? "vec3" : "vec2"; }
+  std::string atan2_name(Precision) const override { return "atan"; }  // GLSL's two-argument atan
   std::optional<std::string> reserved(const std::string& identifier) const override {
     return glsl_names::reserved(identifier);
   }

@@ -220,6 +220,7 @@ class NumpyBackend final : public Backend {
   std::string sqrt_name(Precision) const override { return "np.sqrt"; }
   std::string abs_name(Precision) const override { return "np.abs"; }
   std::string pow_name(Precision) const override { return "np.power"; }
+  std::string atan2_name(Precision) const override { return "np.arctan2"; }
   // Both branches are evaluated (a NumPy warning from the discarded one is harmless). [()] turns
   // np.where's 0-d result for scalars back into a scalar (an array is returned as it is): numba's
   // njit cannot mix 0-d arrays and scalars in a later np.where, NumPy then returns scalars for

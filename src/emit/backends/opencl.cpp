@@ -70,6 +70,7 @@ class OpenclBackend final : public Backend {
   std::string sqrt_name(Precision) const override { return "sqrt"; }
   std::string abs_name(Precision) const override { return "fabs"; }
   std::string pow_name(Precision) const override { return "pow"; }
+  std::string atan2_name(Precision) const override { return "atan2"; }
   std::string vector_type(int dims) const override { return dims == 3 ? "float3" : "float2"; }
   std::optional<std::string> reserved(const std::string& identifier) const override {
     if (opencl_words().count(identifier)) return "'" + identifier + "' is an OpenCL C keyword, qualifier or type";
