@@ -8,12 +8,14 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <utility>
 
 namespace offsetgen::step {
 namespace {
@@ -62,9 +64,13 @@ std::vector<Point> exact_surface_points(const LevelFunction& g, const std::array
 
 Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>& points, double cell_size,
                             double reach) {
+  // A face: its box, and a grid of its points whose nearest gives the projection its start (Newton
+  // from there, ShapeAnalysis_Surface::NextValueOfUV, which falls back to a global search).
+  constexpr int kGrid = 9;
   struct Candidate {
     Bnd_Box box;
     std::unique_ptr<ShapeAnalysis_Surface> surface;
+    std::vector<std::pair<gp_Pnt2d, gp_Pnt>> grid;
   };
   std::vector<Candidate> faces;
   for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
@@ -75,6 +81,13 @@ Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>&
     BRepBndLib::Add(face, c.box);
     c.box.Enlarge(reach);
     c.surface = std::make_unique<ShapeAnalysis_Surface>(surface);
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    surface->Bounds(u0, u1, v0, v1);
+    for (int i = 0; i < kGrid; ++i)
+      for (int j = 0; j < kGrid; ++j) {
+        const gp_Pnt2d uv(u0 + (u1 - u0) * i / (kGrid - 1), v0 + (v1 - v0) * j / (kGrid - 1));
+        c.grid.emplace_back(uv, surface->Value(uv.X(), uv.Y()));
+      }
     faces.push_back(std::move(c));
   }
   Deviation d;
@@ -84,7 +97,10 @@ Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>&
     double best = reach;
     for (Candidate& c : faces) {
       if (c.box.IsOut(p)) continue;
-      c.surface->ValueOfUV(p, 1e-3 * Precision::Confusion());
+      const auto start = std::min_element(c.grid.begin(), c.grid.end(), [&p](const auto& a, const auto& b) {
+        return a.second.SquareDistance(p) < b.second.SquareDistance(p);
+      });
+      c.surface->NextValueOfUV(start->first, p, 1e-3 * Precision::Confusion());
       best = std::min(best, c.surface->Gap());
     }
     sum += best;

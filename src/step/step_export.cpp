@@ -193,7 +193,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   std::vector<Point> points = exact_surface_points(plus, r.cells, 12, steps, kSeed);
   const std::vector<Point> more = exact_surface_points(minus, r.cells, 12, steps, kSeed + 1);
   points.insert(points.end(), more.begin(), more.end());
-  const Deviation d = measure_deviation(shape, points, r.cell_size, std::max(10 * r.tolerance, 0.02 * r.cell_size));
+  // Only faces within twice the tolerance of a point are tried: a point with none is beyond the tolerance.
+  const Deviation d = measure_deviation(shape, points, r.cell_size, 2 * r.tolerance);
   s.max_deviation = d.max;
   s.mean_deviation = d.mean;
   s.deviation_points = d.points;
