@@ -37,7 +37,7 @@ class Cholesky {
   }
 
  private:
-  size_t idx(int i, int j) const { return static_cast<size_t>(i * n_ + j); }
+  size_t idx(int i, int j) const { return flat(i, n_, j); }
   std::vector<double> l_;
   int n_;
 };
@@ -45,23 +45,23 @@ class Cholesky {
 // The basis matrix (m samples x n functions) at t = k/(m-1), and the Cholesky factor of the normal
 // equations of its interior columns 1..n-2.
 struct Basis1D {
-  Basis1D(int samples, int functions) : m(samples), n(functions), values(static_cast<size_t>(samples * functions)) {
+  Basis1D(int samples, int functions) : m(samples), n(functions), values(flat(samples, functions, 0)) {
     CubicKnots knots(n);
     for (int k = 0; k < m; ++k) {
       std::vector<double> b = knots.basis(double(k) / (m - 1));
-      for (int j = 0; j < n; ++j) values[static_cast<size_t>(k * n + j)] = b[static_cast<size_t>(j)];
+      for (int j = 0; j < n; ++j) values[flat(k, n, j)] = b[static_cast<size_t>(j)];
     }
     const int ni = n - 2;
-    std::vector<double> normal(static_cast<size_t>(ni * ni), 0.0);
+    std::vector<double> normal(flat(ni, ni, 0), 0.0);
     for (int a = 0; a < ni; ++a)
       for (int b = 0; b < ni; ++b) {
         double s = 0;
         for (int k = 0; k < m; ++k) s += at(k, a + 1) * at(k, b + 1);
-        normal[static_cast<size_t>(a * ni + b)] = s;
+        normal[flat(a, ni, b)] = s;
       }
     factor = std::make_unique<Cholesky>(std::move(normal), ni);
   }
-  double at(int k, int j) const { return values[static_cast<size_t>(k * n + j)]; }
+  double at(int k, int j) const { return values[flat(k, n, j)]; }
   // The interior coefficients (n-2) minimising sum_k (sum_j N_j(t_k) c_j - r_k)^2 over interior j.
   std::vector<double> interior_fit(const std::vector<double>& r) const {
     std::vector<double> rhs(static_cast<size_t>(n - 2), 0.0);
@@ -114,23 +114,22 @@ std::vector<double> CubicKnots::basis(double t) const {
   for (size_t k = 0; k < distinct.size(); ++k)
     for (int r = 0; r < multiplicities[k]; ++r) u.push_back(distinct[k]);
   int span = std::min(spans - 1, std::max(0, static_cast<int>(std::floor(t * spans))));
-  const int i = span + 3;  // u_i <= t < u_{i+1}
+  const size_t i = static_cast<size_t>(span) + 3;  // u_i <= t < u_{i+1}
   // Cox-de Boor, the non-zero functions N_{i-3..i}.
   std::array<double, 4> nb{1, 0, 0, 0}, left{}, right{};
-  for (int j = 1; j <= 3; ++j) {
-    left[static_cast<size_t>(j)] = t - u[static_cast<size_t>(i + 1 - j)];
-    right[static_cast<size_t>(j)] = u[static_cast<size_t>(i + j)] - t;
+  for (size_t j = 1; j <= 3; ++j) {
+    left[j] = t - u[i + 1 - j];
+    right[j] = u[i + j] - t;
     double saved = 0;
-    for (int r = 0; r < j; ++r) {
-      const double denom = right[static_cast<size_t>(r + 1)] + left[static_cast<size_t>(j - r)];
-      const double temp = nb[static_cast<size_t>(r)] / denom;
-      nb[static_cast<size_t>(r)] = saved + right[static_cast<size_t>(r + 1)] * temp;
-      saved = left[static_cast<size_t>(j - r)] * temp;
+    for (size_t r = 0; r < j; ++r) {
+      const double temp = nb[r] / (right[r + 1] + left[j - r]);
+      nb[r] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
     }
-    nb[static_cast<size_t>(j)] = saved;
+    nb[j] = saved;
   }
   std::vector<double> out(static_cast<size_t>(n), 0.0);
-  for (int r = 0; r < 4; ++r) out[static_cast<size_t>(i - 3 + r)] = nb[static_cast<size_t>(r)];
+  for (size_t r = 0; r < 4; ++r) out[i - 3 + r] = nb[r];
   return out;
 }
 
@@ -151,10 +150,10 @@ Point CubicPatch::evaluate(double u, double v) const {
 CubicPatch fit_patch(const std::vector<Point>& samples, int m, int n) {
   if (m < n) throw std::invalid_argument("fit_patch: fewer samples than control points");
   const Basis1D basis(m, n);
-  auto sample = [&](int i, int j) -> const Point& { return samples[static_cast<size_t>(i * m + j)]; };
+  auto sample = [&](int i, int j) -> const Point& { return samples[flat(i, m, j)]; };
   CubicPatch patch;
   patch.n = n;
-  patch.control.assign(static_cast<size_t>(n * n), Point{0, 0, 0});
+  patch.control.assign(flat(n, n, 0), Point{0, 0, 0});
 
   // The four boundary curves, each from its own samples.
   std::vector<Point> row(static_cast<size_t>(m));
@@ -179,7 +178,7 @@ CubicPatch fit_patch(const std::vector<Point>& samples, int m, int n) {
   // least-squares problem of a tensor grid is a Kronecker product: fit along v, then along u).
   auto boundary = [&](int i, int j) { return i == 0 || j == 0 || i == n - 1 || j == n - 1; };
   for (size_t a = 0; a < 3; ++a) {
-    std::vector<double> residual(static_cast<size_t>(m * m));
+    std::vector<double> residual(flat(m, m, 0));
     for (int i = 0; i < m; ++i)
       for (int j = 0; j < m; ++j) {
         double s = sample(i, j)[a];
@@ -189,19 +188,19 @@ CubicPatch fit_patch(const std::vector<Point>& samples, int m, int n) {
           for (int l = 0; l < n; ++l)
             if (boundary(k, l)) s -= bk * basis.at(j, l) * patch.at(k, l)[a];
         }
-        residual[static_cast<size_t>(i * m + j)] = s;
+        residual[flat(i, m, j)] = s;
       }
     // Along v for every sample row i: m x (n-2).
-    std::vector<double> along_v(static_cast<size_t>(m * (n - 2)));
+    std::vector<double> along_v(flat(m, n - 2, 0));
     std::vector<double> r(static_cast<size_t>(m));
     for (int i = 0; i < m; ++i) {
-      for (int j = 0; j < m; ++j) r[static_cast<size_t>(j)] = residual[static_cast<size_t>(i * m + j)];
+      for (int j = 0; j < m; ++j) r[static_cast<size_t>(j)] = residual[flat(i, m, j)];
       const std::vector<double> x = basis.interior_fit(r);
-      for (int l = 0; l < n - 2; ++l) along_v[static_cast<size_t>(i * (n - 2) + l)] = x[static_cast<size_t>(l)];
+      for (int l = 0; l < n - 2; ++l) along_v[flat(i, n - 2, l)] = x[static_cast<size_t>(l)];
     }
     // Then along u for every interior column l.
     for (int l = 0; l < n - 2; ++l) {
-      for (int i = 0; i < m; ++i) r[static_cast<size_t>(i)] = along_v[static_cast<size_t>(i * (n - 2) + l)];
+      for (int i = 0; i < m; ++i) r[static_cast<size_t>(i)] = along_v[flat(i, n - 2, l)];
       const std::vector<double> x = basis.interior_fit(r);
       for (int k = 0; k < n - 2; ++k) patch.at(k + 1, l + 1)[a] = x[static_cast<size_t>(k)];
     }

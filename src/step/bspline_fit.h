@@ -13,6 +13,11 @@ namespace offsetgen::step {
 
 using Point = std::array<double, 3>;
 
+// The index a * stride + b of a row-major array, in size_t.
+inline size_t flat(int a, int stride, int b) {
+  return static_cast<size_t>(a) * static_cast<size_t>(stride) + static_cast<size_t>(b);
+}
+
 // Clamped uniform knots of a cubic B-spline with n >= 4 control points on [0, 1]: the distinct knots
 // 0, 1/(n-3), ..., 1 with multiplicities 4, 1, ..., 1, 4.
 struct CubicKnots {
@@ -28,8 +33,8 @@ struct CubicKnots {
 struct CubicPatch {
   int n = 0;
   std::vector<Point> control;
-  const Point& at(int i, int j) const { return control[static_cast<size_t>(i * n + j)]; }
-  Point& at(int i, int j) { return control[static_cast<size_t>(i * n + j)]; }
+  const Point& at(int i, int j) const { return control[flat(i, n, j)]; }
+  Point& at(int i, int j) { return control[flat(i, n, j)]; }
   Point evaluate(double u, double v) const;
 };
 

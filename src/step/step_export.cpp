@@ -114,7 +114,11 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
         "STEP export covers the catalog surface schwarzp so far (its 48 mirror-symmetry patches per sheet and "
         "cell); '{}' is refused: diamond, gyroid and the other surfaces need their own patch layouts (docs/step.md)",
         r.wall.generation.surface));
-  require_writable(r.output);
+  try {
+    require_writable(r.output);  // an unwritable -o is the user's input, before the long work
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
 
   StepSummary s;
   s.surface = r.wall.generation.surface;

@@ -14,6 +14,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -140,6 +141,33 @@ TEST(StepCli, SameInputsWriteTheSameBytes) {
   EXPECT_EQ(read_bytes(again), read_bytes(w.path));
 }
 
+TEST(StepExecutable, OnlyOffsetgenStepLinksOpenCascade) {
+  const check::ProcessResult plain = check::run_process({"ldd", OFFSETGEN_EXE});
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_EQ(plain.output.find("libTKernel"), std::string::npos) << plain.output;
+  const check::ProcessResult step = check::run_process({"ldd", OFFSETGEN_STEP_EXE});
+  ASSERT_EQ(step.exit_code, 0) << step.output;
+  EXPECT_NE(step.output.find("libTKernel"), std::string::npos) << step.output;
+}
+
+TEST(StepExecutable, WithoutOffsetgenStepBesideItStepSaysItIsMissingAndExits3) {
+  const std::string dir = scratch_dir("lone-offsetgen");
+  const std::string lone = dir + "/offsetgen";
+  fs::copy_file(OFFSETGEN_EXE, lone);
+  const check::ProcessResult r =
+      check::run_process({lone, "step", "--surface", "schwarzp", "--thickness", "0.1", "-o", dir + "/p.step"});
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find(dir + "/" + fs::path(OFFSETGEN_STEP_EXE).filename().string() + ", which is missing"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/p.step"));
+  // Its help and usage errors still come from offsetgen itself.
+  const check::ProcessResult help = check::run_process({lone, "step", "--help"});
+  EXPECT_EQ(help.exit_code, 0) << help.output;
+  EXPECT_NE(help.output.find("Usage: offsetgen step [OPTIONS]"), std::string::npos) << help.output;
+  EXPECT_EQ(check::run_process({lone, "step", "--bogus"}).exit_code, 2);
+}
+
 struct Refusal {
   std::string name;
   std::vector<std::string> args;
@@ -153,7 +181,12 @@ class StepRefuses : public ::testing::TestWithParam<Refusal> {};
 TEST_P(StepRefuses, WithItsExitCodeAReasonAndNoFile) {
   const Refusal& r = GetParam();
   const std::string out = scratch_dir("refused_" + r.name) + "/p.step";
-  std::vector<std::string> args = {"step", "--cells", "1", "--cell-size", "10", "-o", out};
+  auto given = [&r](const std::string& option) {
+    return std::find(r.args.begin(), r.args.end(), option) != r.args.end();
+  };
+  std::vector<std::string> args = {"step", "--cell-size", "10"};
+  if (!given("--cells")) args.insert(args.end(), {"--cells", "1"});
+  if (!given("-o")) args.insert(args.end(), {"-o", out});
   args.insert(args.end(), r.args.begin(), r.args.end());
   const check::ProcessResult run = run_offsetgen(args);
   EXPECT_EQ(run.exit_code, r.exit_code) << run.output;
@@ -182,6 +215,15 @@ INSTANTIATE_TEST_SUITE_P(
                 {"--surface", "schwarzp", "--thickness", "0.6", "--tolerance", "0.01"},
                 2,
                 "curvature limit"},
+        Refusal{"zero_cells",
+                {"--surface", "schwarzp", "--thickness", "0.1", "--cells", "2x0"},
+                2,
+                "not a positive number of cells"},
+        Refusal{"not_a_step_name", {"--surface", "schwarzp", "--thickness", "0.1", "-o", "p.stl"}, 2, "end in .step"},
+        Refusal{"missing_directory",
+                {"--surface", "schwarzp", "--thickness", "0.1", "--tolerance", "0.01", "-o", "/nonexistent/dir/p.step"},
+                2,
+                "/nonexistent/dir"},
         Refusal{"graded",
                 {"--surface", "schwarzp", "--thickness", "0.05 + 0.05*x", "--tolerance", "0.01"},
                 2,
