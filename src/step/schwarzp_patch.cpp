@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace offsetgen::step {
@@ -62,6 +64,37 @@ void snap_schwarzp_boundary(CubicPatch& patch) {
         patch.at(k, n - 1)[1] != patch.at(k, n - 1)[2])
       throw std::logic_error("Schwarz P patch: a boundary control point is off its mirror plane");
   }
+}
+
+double schwarzp_normal_jump(const CubicPatch& patch, int samples) {
+  constexpr double kStep = 1e-6;
+  auto normal_at = [&patch](double u, double v) {
+    auto d = [&patch](double u0, double v0, double u1, double v1) {
+      const Point a = patch.evaluate(u0, v0), b = patch.evaluate(u1, v1);
+      return Point{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    };
+    const double u0 = std::max(0.0, u - kStep), u1 = std::min(1.0, u + kStep);
+    const double v0 = std::max(0.0, v - kStep), v1 = std::min(1.0, v + kStep);
+    const Point du = d(u0, v, u1, v), dv = d(u, v0, u, v1);
+    Point n{du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]};
+    const double length = std::hypot(n[0], n[1], n[2]);
+    for (double& c : n) c /= length;
+    return n;
+  };
+  const double r = 1 / std::sqrt(2.0);
+  // The planes' normals: u = 0 on x = y, u = 1 on x = 1/2, v = 0 on z = 0, v = 1 on y = z.
+  const std::array<Point, 4> plane{Point{r, -r, 0}, Point{1, 0, 0}, Point{0, 0, 1}, Point{0, r, -r}};
+  double worst = 0;
+  for (int k = 0; k <= samples; ++k) {
+    const double t = double(k) / samples;
+    const std::array<std::array<double, 2>, 4> at{{{0, t}, {1, t}, {t, 0}, {t, 1}}};
+    for (size_t e = 0; e < 4; ++e) {
+      const Point n = normal_at(at[e][0], at[e][1]);
+      const double sine = std::fabs(n[0] * plane[e][0] + n[1] * plane[e][1] + n[2] * plane[e][2]);
+      worst = std::max(worst, 2 * std::asin(std::min(1.0, sine)));
+    }
+  }
+  return worst;
 }
 
 }  // namespace offsetgen::step

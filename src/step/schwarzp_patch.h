@@ -29,4 +29,10 @@ std::vector<Point> schwarzp_patch_points(const LevelFunction& g, const std::vect
 // u = 1; x = y, z = 0 and y = z already hold bitwise, this asserts them).
 void snap_schwarzp_boundary(CubicPatch& patch);
 
+// The largest angle (radians) between the patch's normals on either side of its edges: the patch's
+// mirror image across each boundary plane meets it there, and their normals differ by twice the
+// angle between the normal and the plane (the exact surface meets its mirror planes at a right
+// angle: 0). Sampled at `samples` points per edge, derivatives by central differences.
+double schwarzp_normal_jump(const CubicPatch& patch, int samples);
+
 }  // namespace offsetgen::step

@@ -156,6 +156,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   const Fit fit_minus = fit_sheet(minus, target, r.max_control_points);
   s.patch_control_points = std::max(fit_plus.patch.n, fit_minus.patch.n);
   s.fit_error = std::max(fit_plus.error, fit_minus.error) * r.cell_size;
+  s.normal_jump =
+      std::max(schwarzp_normal_jump(fit_plus.patch, 200), schwarzp_normal_jump(fit_minus.patch, 200)) * 180 / M_PI;
   s.seconds_fit = seconds_since(t0);
 
   say("building the solid");
@@ -245,9 +247,9 @@ std::string format_summary(const StepSummary& s, const StepRequest& r) {
       s.thickness_limit, r.cells[0], r.cells[1], r.cells[2], r.cell_size);
   out += fmt::format(
       "  faces: {} B-spline (bicubic, {}x{} control points per symmetry patch), {} planar; {} control points "
-      "({:.0f} per cell); {} bytes\n",
+      "({:.0f} per cell); {} bytes; largest normal jump across a patch edge {:.3f} degrees (C0 edges)\n",
       s.bspline_faces, s.patch_control_points, s.patch_control_points, s.planar_faces, s.control_points,
-      s.control_points_per_cell, s.bytes);
+      s.control_points_per_cell, s.bytes, s.normal_jump);
   out += fmt::format("  solid read back: {}, {} solid{}, {}\n", s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid",
                      s.solids, s.solids == 1 ? "" : "s", s.closed ? "one closed shell" : "NOT closed");
   out += fmt::format(

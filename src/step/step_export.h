@@ -25,6 +25,7 @@ struct StepSummary {
   double thickness_limit = 0;    // cell units: 2 / the largest principal curvature
   int patch_control_points = 0;  // per side of each symmetry patch (the larger of the two sheets)
   double fit_error = 0;          // mm: the largest |exact(u, v) - patch(u, v)| over the check grid
+  double normal_jump = 0;        // degrees: the largest angle between the faces' normals across a patch edge
   long control_points = 0;       // over the whole file
   double control_points_per_cell = 0;
   int bspline_faces = 0, planar_faces = 0;
