@@ -106,5 +106,30 @@ TEST(StepPatch, SchwarzPPatchBoundariesLieExactlyOnTheirMirrorPlanes) {
   }
 }
 
+TEST(StepPatch, NormalJumpAcrossMirrorPlanesShrinksTowardZeroAsTheFitConverges) {
+  // The exact surface meets its mirror planes at right angles, so the measured jump of a fit must
+  // fall toward 0 with more control points (wrong plane normals would leave it large).
+  mesh::WallRequest request;
+  request.generation.surface = "schwarzp";
+  request.thickness = "0.1";
+  mesh::WallField field(request);
+  field.compile();
+  const LevelFunction g = [&field](size_t n, const double* x, const double* y, const double* z, double* out) {
+    const std::vector<double> hs(n, 0.05);
+    field.offsets(n, x, y, z, hs.data(), out);
+  };
+  std::vector<double> jumps;
+  for (int n : {5, 8, 16}) {
+    const int m = 3 * n + 1;
+    CubicPatch patch = fit_patch(schwarzp_patch_points(g, m), m, n);
+    snap_schwarzp_boundary(patch);
+    jumps.push_back(schwarzp_normal_jump(patch, 100) * 180 / M_PI);
+  }
+  EXPECT_GT(jumps[0], jumps[1]);
+  EXPECT_GT(jumps[1], jumps[2]);
+  EXPECT_LT(jumps[2], 0.2) << "degrees at 16 x 16";
+  EXPECT_GT(jumps[2], 0.0);
+}
+
 }  // namespace
 }  // namespace offsetgen::step
