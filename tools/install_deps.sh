@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages offsetgen needs. Idempotent: installs only what is missing. Must run
 # as root (or with sudo available).
 #
-#   tools/install_deps.sh --build   what building offsetgen and offsetgen-mesh needs (tools/demo.sh)
+#   tools/install_deps.sh --build   what building offsetgen, offsetgen-mesh and offsetgen-step needs (tools/demo.sh)
 #   tools/install_deps.sh [--all]   that, and everything the tests and benchmarks use (tools/test.sh)
 set -euo pipefail
 
@@ -22,7 +22,8 @@ case "${1:---all}" in
 esac
 
 # The build set: the compiler and CMake, GiNaC/CLN, fmt, CLI11, nlohmann-json, OpenVDB (with
-# Boost.Iostreams, which Debian's FindOpenVDB.cmake needs) and lib3mf for offsetgen-mesh. GoogleTest
+# Boost.Iostreams, which Debian's FindOpenVDB.cmake needs) and lib3mf for offsetgen-mesh, OpenCASCADE
+# (foundation, modeling data and algorithms, data exchange) for offsetgen-step. GoogleTest
 # too, although only the tests use it: a plain `cmake -S . -B build` configures them
 # (OFFSETGEN_BUILD_TESTS is ON at the top level) and tests/ has find_package(GTest REQUIRED).
 build_packages=(
@@ -30,6 +31,7 @@ build_packages=(
   libginac-dev libcln-dev
   libfmt-dev libcli11-dev nlohmann-json3-dev
   libopenvdb-dev libboost-iostreams-dev lib3mf-dev
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libgtest-dev
 )
 # The test set: the runners of every target (GL, Vulkan, Chromium, pocl, Python, clang), the
@@ -45,6 +47,7 @@ test_packages=(
   admesh
   prusa-slicer openscad  # real parts and a slicer for the mesh --body checks (tools/check_parts.py)
   parallel  # GNU parallel: the split-and-merge test of offsetgen mesh --tile-range
+  occt-draw libocct-draw-dev  # OpenCASCADE's own harness reads offsetgen step's files back (tests/step)
   chromium libvulkan-dev mesa-vulkan-drivers
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )

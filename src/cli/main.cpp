@@ -10,6 +10,10 @@
 #include "cli/mesh_launcher.h"
 #include "cli/mesh_options.h"
 #endif
+#ifdef OFFSETGEN_HAVE_STEP
+#include "cli/step_launcher.h"
+#include "cli/step_options.h"
+#endif
 #include "emit/backend.h"
 #include "surfaces/surface.h"
 
@@ -61,6 +65,15 @@ int main(int argc, char** argv) {
       ->allow_extras()
       ->group("");
 #endif
+#ifdef OFFSETGEN_HAVE_STEP
+  // Parsed here, run by offsetgen-step (OpenCASCADE), which parses the same arguments again.
+  StepOptions step;
+  add_step_command(app, step);
+#else
+  app.add_subcommand("step", "(not in this build: offsetgen was configured without OpenCASCADE)")
+      ->allow_extras()
+      ->group("");
+#endif
 
   try {
     app.parse(argc, argv);
@@ -83,6 +96,17 @@ int main(int argc, char** argv) {
       throw InputError(
           "this offsetgen was built without `mesh`: it needs OpenVDB (apt-get install libopenvdb-dev "
           "libboost-iostreams-dev, then reconfigure; -DOFFSETGEN_BUILD_MESH=ON insists)");
+#endif
+#ifdef OFFSETGEN_HAVE_STEP
+    if (app.got_subcommand("step")) return exec_step_executable(argv);
+#else
+    if (app.got_subcommand("step")) {
+      fmt::print(stderr,
+                 "offsetgen: error: this offsetgen was built without `step`: it needs OpenCASCADE (apt-get install "
+                 "libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev "
+                 "libocct-data-exchange-dev, then reconfigure; -DOFFSETGEN_BUILD_STEP=ON insists)\n");
+      return static_cast<int>(kExitInternal);
+    }
 #endif
     return static_cast<int>(kExitUsage);
   });

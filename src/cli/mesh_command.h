@@ -1,6 +1,7 @@
 // `offsetgen mesh`: the run, in offsetgen-mesh (the executable that links OpenVDB).
 #pragma once
 
+#include "cli/cells_option.h"
 #include "cli/mesh_options.h"
 
 #include <array>
@@ -10,8 +11,6 @@ namespace offsetgen {
 
 int run_mesh_command(const MeshOptions& options);
 
-// "3" -> {3, 3, 3}; "4x2" -> {4, 2, 2}; "2x3x4" -> {2, 3, 4}. Throws InputError.
-std::array<int, 3> parse_cells(const std::string& text);
 // "1,2.5,-3" -> {1, 2.5, -3} (--origin). Throws InputError naming `option`.
 std::array<double, 3> parse_point(const std::string& text, const std::string& option);
 

@@ -51,6 +51,11 @@ class WallField {
   void walls(size_t n, const double* x, const double* y, const double* z, double* w, Worker& worker) const;
   // F(p) (the emitted _field), and a bound of |grad F| in cell units: k M.
   double field(double x, double y, double z) const { return field_(x, y, z); }
+  // phi(p, h) at n points, h per point (cell units): the emitted _offset_n; its zero set at h is the
+  // offset surface (the wall's faces are those at h = +t/2 and -t/2).
+  void offsets(size_t n, const double* x, const double* y, const double* z, const double* h, double* out) const {
+    offset_n_(n, x, y, z, h, out);
+  }
   double field_lipschitz() const { return lipschitz_; }
 
   // The thickness at one point, and its smallest and largest value sampled over a box of cells

@@ -1,0 +1,44 @@
+#include "cli/step_command.h"
+
+#include "cli/cells_option.h"
+#include "cli/command_line.h"
+#include "step/step_export.h"
+#include "surfaces/expression_input.h"
+#include "surfaces/input_error.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+
+namespace offsetgen {
+
+int run_step_command(const StepOptions& o) {
+  step::StepRequest r;
+  r.wall.generation.surface = o.surface;
+  r.wall.generation.expression = o.expression;
+  r.wall.generation.name = o.name;
+  r.wall.generation.method = o.method;
+  r.wall.generation.order = o.order;
+  for (const auto& p : o.params) {
+    auto [key, value] = split_param(p);
+    if (r.wall.generation.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
+    r.wall.generation.params[key] = value;
+  }
+  if (o.thickness.empty() == !o.density.has_value())
+    throw InputError("give one of --thickness T (cell units) and --density R: each one sets the wall's thickness");
+  r.wall.thickness = o.thickness;
+  r.wall.generation.density = o.density;
+  r.cells = parse_cells(o.cells);
+  r.cell_size = o.cell_size;
+  r.tolerance = o.tolerance;
+  r.output = o.output;
+  if (o.max_control_points < 4) throw InputError("--max-control-points: a cubic patch needs at least 4 a side");
+  r.max_control_points = o.max_control_points;
+  const step::StepSummary s = step::export_step(r, [&](const std::string& stage) {
+    if (!o.quiet) std::fprintf(stderr, "[offsetgen step] %s\n", stage.c_str());
+  });
+  if (!o.quiet || !s.written) std::fputs(step::format_summary(s, r).c_str(), s.written ? stdout : stderr);
+  return s.written ? kExitOk : kExitCheckFailed;
+}
+
+}  // namespace offsetgen

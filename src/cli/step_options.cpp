@@ -1,0 +1,41 @@
+#include "cli/step_options.h"
+
+#include <fmt/format.h>
+
+namespace offsetgen {
+
+void add_step_command(CLI::App& app, StepOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "step",
+      "Write a block of cells of a wall solid as a STEP file (AP214, mm): one closed solid of bicubic B-spline\n"
+      "faces and planar caps, for CAD. Its deviation from the exact walls is measured on the file before it is\n"
+      "written (docs/step.md). Covers the Schwarz P surface (schwarzp) with a uniform wall so far");
+  cmd->add_option("-s,--surface", o.surface, "Catalog surface (schwarzp)");
+  cmd->add_option("-e,--expr", o.expression, "Your own F(x, y, z) (refused so far: no patch layout for it)");
+  cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
+  cmd->add_option("-n,--name", o.name, "Function prefix of the generated functions (default <surface>_o<order>)");
+  std::string methods;
+  for (const OffsetMethod* m : offset_methods()) methods += fmt::format("{}{}", methods.empty() ? "" : ", ", m->name());
+  cmd->add_option("-M,--method", o.method, "Offset construction: " + methods)->capture_default_str();
+  cmd->add_option("-m,--order", o.order, "Approximation order")->capture_default_str();
+  cmd->add_option("-t,--thickness", o.thickness, "Total wall thickness in cell units (a number)");
+  cmd->add_option("--density", o.density, "Instead of --thickness: the relative density R of the wall");
+  cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
+  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
+  cmd->add_option("--tolerance", o.tolerance,
+                  "Largest distance (mm) of the exact walls from the faces; measured, and no file is written "
+                  "beyond it")
+      ->capture_default_str();
+  cmd->add_option("--max-control-points", o.max_control_points,
+                  "Largest number of control points per side of a symmetry patch")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", o.output, "Output file: .step or .stp");
+  cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
+  cmd->footer(
+      "Exit status: 0 success, 1 a check failed (deviation beyond --tolerance, or the solid read back is not\n"
+      "valid; no file is written), 2 usage or input error, 3 internal error (or offsetgen built without\n"
+      "OpenCASCADE).\n"
+      "Example: offsetgen step --surface schwarzp --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o p.step");
+}
+
+}  // namespace offsetgen

@@ -1,0 +1,30 @@
+// `offsetgen step`: its options and their CLI11 definition. offsetgen parses the command (so --help
+// and usage errors come from offsetgen itself), then offsetgen-step, which links OpenCASCADE, parses
+// the same arguments again and runs it (sibling_exec.h).
+#pragma once
+
+#include "offset/method.h"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace offsetgen {
+
+struct StepOptions {
+  std::string surface, expression, name, thickness, cells = "1", output;
+  std::optional<double> density;
+  std::vector<std::string> params;
+  std::string method = kDefaultMethod;
+  int order = 4;
+  double cell_size = 10;
+  double tolerance = 0.01;
+  int max_control_points = 40;
+  bool quiet = false;
+};
+
+void add_step_command(CLI::App& app, StepOptions& options);
+
+}  // namespace offsetgen

@@ -1,0 +1,273 @@
+#include "step/step_export.h"
+
+#include "check/volume_fraction.h"
+#include "density/surface_constants.h"
+#include "emit/file_writer.h"
+#include "step/deviation.h"
+#include "step/schwarzp_patch.h"
+#include "step/step_file.h"
+#include "step/wall_brep.h"
+#include "surfaces/input_error.h"
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace offsetgen::step {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Control points per patch side tried in turn, up to the request's limit.
+// The jitter of the deviation's lines: fixed, so a run is repeatable.
+constexpr uint64_t kSeed = 20261126;
+
+constexpr int kSides[] = {4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 64};
+
+struct Fit {
+  CubicPatch patch;
+  double error = 0;  // cell units
+};
+
+// The smallest patch whose largest |exact(u, v) - patch(u, v)| over a check grid (the midpoints of a
+// grid twice as fine as the samples, and the samples' own lines) is within `target` (cell units).
+// That distance bounds the distance of the exact point to the face from above.
+Fit fit_sheet(const LevelFunction& g, double target, int max_side) {
+  Fit best;
+  for (int n : kSides) {
+    if (n > max_side) break;
+    const int m = 3 * n + 1;
+    Fit fit;
+    fit.patch = fit_patch(schwarzp_patch_points(g, m), m, n);
+    snap_schwarzp_boundary(fit.patch);
+    const int c = 2 * m;
+    std::vector<std::array<double, 2>> uv;
+    for (int i = 0; i <= c; ++i)
+      for (int j = 0; j <= c; ++j) uv.push_back({(i + 0.5 * (i < c)) / c, (j + 0.5 * (j < c)) / c});
+    const std::vector<Point> exact = schwarzp_patch_points(g, uv);
+    for (size_t k = 0; k < uv.size(); ++k) {
+      const Point p = fit.patch.evaluate(uv[k][0], uv[k][1]);
+      fit.error = std::max(fit.error, std::hypot(p[0] - exact[k][0], p[1] - exact[k][1], p[2] - exact[k][2]));
+    }
+    best = std::move(fit);
+    if (best.error <= target) break;
+  }
+  return best;
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Scratch {
+  fs::path path;
+  Scratch() {
+    std::string pattern = (fs::temp_directory_path() / "offsetgen-step-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr)
+      throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
+    path = pattern;
+  }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
+};
+
+}  // namespace
+
+StepSummary export_step(const StepRequest& r, const std::function<void(const std::string&)>& progress) {
+  const auto start = Clock::now();
+  const std::clock_t cpu_start = std::clock();
+  auto say = [&](const std::string& what) {
+    if (progress) progress(what);
+  };
+  // Cheap checks first.
+  if (!(r.tolerance > 0) || !std::isfinite(r.tolerance))
+    throw InputError(
+        fmt::format("--tolerance {}: give the largest deviation allowed, a positive length in mm", r.tolerance));
+  if (!(r.cell_size > 0) || !std::isfinite(r.cell_size))
+    throw InputError(fmt::format("--cell-size {}: a cell is a positive length in mm", r.cell_size));
+  if (r.output.empty()) throw InputError("no output file: use -o part.step");
+  const std::string ext = fs::path(r.output).extension().string();
+  if (ext != ".step" && ext != ".stp" && ext != ".STEP" && ext != ".STP")
+    throw InputError(fmt::format("-o '{}': STEP files end in .step or .stp", r.output));
+  if (!r.wall.generation.expression.empty())
+    throw InputError("STEP export covers the catalog surface schwarzp so far; --expr surfaces are refused");
+  if (r.wall.generation.surface != "schwarzp")
+    throw InputError(fmt::format(
+        "STEP export covers the catalog surface schwarzp so far (its 48 mirror-symmetry patches per sheet and "
+        "cell); '{}' is refused: diamond, gyroid and the other surfaces need their own patch layouts (docs/step.md)",
+        r.wall.generation.surface));
+  try {
+    require_writable(r.output);  // an unwritable -o is the user's input, before the long work
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+
+  StepSummary s;
+  s.surface = r.wall.generation.surface;
+  say("generating the wall's functions");
+  mesh::WallField field(r.wall);
+  if (field.graded())
+    throw InputError(
+        "STEP export covers uniform walls so far; a graded thickness (an expression of x, y, z or "
+        "--density-field) is refused");
+  mesh::WallField::Worker worker(field);
+  s.thickness = field.thickness_at(0, 0, 0, worker);
+  s.thickness_limit = density::surface_constants(field.generation().surface).thickness_limit();
+  if (!(s.thickness < s.thickness_limit))
+    throw InputError(fmt::format(
+        "--thickness {} is beyond the curvature limit of {}: t/2 must stay below the smallest radius of curvature, "
+        "t < {:.6f} (cell units)",
+        s.thickness, s.surface, s.thickness_limit));
+  say("compiling them");
+  field.compile();
+
+  auto sheet = [&field](double h) -> LevelFunction {
+    return [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
+      const std::vector<double> hs(n, h);
+      field.offsets(n, x, y, z, hs.data(), out);
+    };
+  };
+  const LevelFunction plus = sheet(0.5 * s.thickness), minus = sheet(-0.5 * s.thickness);
+
+  // Half of the tolerance for the fit, the rest is margin for what the check grid does not see.
+  s.seconds_generate = seconds_since(start);
+  say("fitting the symmetry patches");
+  auto t0 = Clock::now();
+  const double target = 0.5 * r.tolerance / r.cell_size;
+  const Fit fit_plus = fit_sheet(plus, target, r.max_control_points);
+  const Fit fit_minus = fit_sheet(minus, target, r.max_control_points);
+  s.patch_control_points = std::max(fit_plus.patch.n, fit_minus.patch.n);
+  s.fit_error = std::max(fit_plus.error, fit_minus.error) * r.cell_size;
+  s.normal_jump =
+      std::max(schwarzp_normal_jump(fit_plus.patch, 200), schwarzp_normal_jump(fit_minus.patch, 200)) * 180 / M_PI;
+  s.seconds_fit = seconds_since(t0);
+
+  say("building the solid");
+  t0 = Clock::now();
+  const WallBrep brep = build_schwarzp_wall(fit_plus.patch, fit_minus.patch, r.cells, r.cell_size);
+  s.control_points = brep.control_points;
+  s.control_points_per_cell = double(brep.control_points) / (double(r.cells[0]) * r.cells[1] * r.cells[2]);
+  s.seconds_build = seconds_since(t0);
+
+  say("writing STEP");
+  t0 = Clock::now();
+  Scratch scratch;
+  const fs::path file = scratch.path / "wall.step";
+  write_step(brep.solid, file.string(),
+             fmt::format("offsetgen: {} wall, t = {} (cell units), {}x{}x{} cells of {} mm, tolerance {} mm", s.surface,
+                         s.thickness, r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance));
+  const std::string bytes = read_bytes(file);
+  s.bytes = long(bytes.size());
+  s.seconds_write = seconds_since(t0);
+
+  // Everything below is measured on the file read back, not on the shape in memory.
+  say("reading it back and measuring");
+  t0 = Clock::now();
+  const TopoDS_Shape shape = read_step(file.string());
+  s.seconds_read = seconds_since(t0);
+  t0 = Clock::now();
+  const ShapeCheck c = check_shape(shape);
+  s.seconds_check = seconds_since(t0);
+  t0 = Clock::now();
+  s.valid = c.valid;
+  s.closed = c.closed && c.shells == 1;
+  s.solids = c.solids;
+  s.volume = c.volume;
+  s.bspline_faces = brep.bspline_faces;
+  s.planar_faces = c.faces - brep.bspline_faces;
+
+  // The exact wall points: lines along each axis, 12 per cell side, scanned at t/4.
+  const int steps = std::max(16, static_cast<int>(std::ceil(4 / s.thickness)));
+  std::vector<Point> points = exact_surface_points(plus, r.cells, 12, steps, kSeed);
+  const std::vector<Point> more = exact_surface_points(minus, r.cells, 12, steps, kSeed + 1);
+  points.insert(points.end(), more.begin(), more.end());
+  // Only faces within twice the tolerance of a point are tried: a point with none is beyond the tolerance.
+  const Deviation d = measure_deviation(shape, points, r.cell_size, 2 * r.tolerance);
+  s.max_deviation = d.max;
+  s.mean_deviation = d.mean;
+  s.deviation_points = d.points;
+  s.worst_point = d.worst;
+  s.seconds_deviation = seconds_since(t0);
+  t0 = Clock::now();
+
+  // The exact volume: the wall's volume fraction in one cell (the block is whole cells of a periodic
+  // wall) by column quadrature (check/volume_fraction.h).
+  check::VolumeFractionSetup v;
+  v.g = [&field, &worker](const double* p) {
+    double w = 0;
+    field.walls(1, p, p + 1, p + 2, &w, worker);
+    return w;
+  };
+  v.field = [&field](const double* p) { return field.field(p[0], p[1], p[2]); };
+  v.field_slope_bound = field.field_lipschitz();
+  v.band = field.field_lipschitz() * 0.5 * s.thickness * (1 + 1e-9);
+  v.scan_step = s.thickness / 4;
+  const check::VolumeFraction fraction = check::measure_volume_fraction(v, check::VolumeFractionOptions{});
+  const double block = double(r.cells[0]) * r.cells[1] * r.cells[2] * std::pow(r.cell_size, 3);
+  s.exact_volume = fraction.value * block;
+  s.exact_volume_error = fraction.standard_error * block;
+  s.seconds_volume = seconds_since(t0);
+
+  if (!s.valid || !s.closed || s.solids != 1)
+    s.failure = fmt::format("the solid read back is not one valid closed solid (valid {}, solids {}, closed {})",
+                            s.valid, s.solids, s.closed);
+  else if (!(s.max_deviation <= r.tolerance))
+    s.failure = fmt::format("the measured deviation {:.3g} mm exceeds --tolerance {} mm", s.max_deviation, r.tolerance);
+  if (s.failure.empty()) {
+    write_file(r.output, bytes);
+    s.written = true;
+  }
+  s.seconds_total = seconds_since(start);
+  s.cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  return s;
+}
+
+std::string format_summary(const StepSummary& s, const StepRequest& r) {
+  std::string out = fmt::format(
+      "offsetgen step: {}: {} wall, t = {} cell ({} mm; curvature limit {:.4f} cell), {}x{}x{} cells of {} mm\n",
+      s.written ? r.output + " written" : "no file written", s.surface, s.thickness, s.thickness * r.cell_size,
+      s.thickness_limit, r.cells[0], r.cells[1], r.cells[2], r.cell_size);
+  out += fmt::format(
+      "  faces: {} B-spline (bicubic, {}x{} control points per symmetry patch), {} planar; {} control points "
+      "({:.0f} per cell); {} bytes; largest normal jump across a patch edge {:.3f} degrees (C0 edges)\n",
+      s.bspline_faces, s.patch_control_points, s.patch_control_points, s.planar_faces, s.control_points,
+      s.control_points_per_cell, s.bytes, s.normal_jump);
+  out += fmt::format("  solid read back: {}, {} solid{}, {}\n", s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid",
+                     s.solids, s.solids == 1 ? "" : "s", s.closed ? "one closed shell" : "NOT closed");
+  out += fmt::format(
+      "  deviation of the exact walls from the faces, {} points measured: max {:.3g} mm, mean {:.3g} mm "
+      "(tolerance {} mm; fit check {:.3g} mm)\n",
+      s.deviation_points, s.max_deviation, s.mean_deviation, r.tolerance, s.fit_error);
+  const double rel = s.exact_volume > 0 ? (s.volume - s.exact_volume) / s.exact_volume : 0;
+  out += fmt::format(
+      "  volume: {:.6f} mm^3; exact wall {:.6f} mm^3 (column quadrature, standard error {:.2g}); difference "
+      "{:+.3g}%\n",
+      s.volume, s.exact_volume, s.exact_volume_error, 100 * rel);
+  out += fmt::format(
+      "  time: {:.2f} s, {:.2f} s of CPU (generate and compile {:.2f}, fit {:.2f}, build {:.2f}, write {:.2f}, read "
+      "back {:.2f}, check {:.2f}, deviation {:.2f}, exact volume {:.2f})\n",
+      s.seconds_total, s.cpu_seconds, s.seconds_generate, s.seconds_fit, s.seconds_build, s.seconds_write,
+      s.seconds_read, s.seconds_check, s.seconds_deviation, s.seconds_volume);
+  if (!s.written) out += "  check failed: " + s.failure + "\n";
+  return out;
+}
+
+}  // namespace offsetgen::step

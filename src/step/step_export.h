@@ -1,0 +1,53 @@
+// `offsetgen step`: the wall of a block of cells as a STEP solid, its deviation from the exact wall
+// measured before the file is written (docs/step.md).
+#pragma once
+
+#include "mesh/wall_field.h"
+
+#include <array>
+#include <functional>
+#include <string>
+
+namespace offsetgen::step {
+
+struct StepRequest {
+  mesh::WallRequest wall;
+  std::array<int, 3> cells{1, 1, 1};
+  double cell_size = 10;        // mm
+  double tolerance = 0;         // mm: the largest distance allowed from the exact walls to the faces
+  std::string output;           // .step / .stp
+  int max_control_points = 40;  // per patch side; beyond it the tolerance is reported as out of reach
+};
+
+struct StepSummary {
+  std::string surface;
+  double thickness = 0;          // cell units
+  double thickness_limit = 0;    // cell units: 2 / the largest principal curvature
+  int patch_control_points = 0;  // per side of each symmetry patch (the larger of the two sheets)
+  double fit_error = 0;          // mm: the largest |exact(u, v) - patch(u, v)| over the check grid
+  double normal_jump = 0;        // degrees: the largest angle between the faces' normals across a patch edge
+  long control_points = 0;       // over the whole file
+  double control_points_per_cell = 0;
+  int bspline_faces = 0, planar_faces = 0;
+  bool valid = false, closed = false;
+  int solids = 0;
+  double volume = 0;                                // mm^3, of the solid read back from the file
+  double exact_volume = 0, exact_volume_error = 0;  // mm^3, column quadrature of the exact wall (standard error)
+  double max_deviation = 0, mean_deviation = 0;     // mm, of the exact walls from the file's faces
+  long deviation_points = 0;
+  std::array<double, 3> worst_point{};
+  long bytes = 0;
+  bool written = false;  // false: a check failed, no file
+  std::string failure;   // why, when not written
+  // Wall-clock seconds of each stage, and the process's CPU seconds in all (on a shared machine the
+  // wall clock also counts waiting for a core).
+  double seconds_generate = 0, seconds_fit = 0, seconds_build = 0, seconds_write = 0, seconds_read = 0,
+         seconds_check = 0, seconds_deviation = 0, seconds_volume = 0, seconds_total = 0, cpu_seconds = 0;
+};
+
+// Throws InputError for what the exporter does not cover or bad input (nothing is written then).
+StepSummary export_step(const StepRequest& request, const std::function<void(const std::string&)>& progress);
+
+std::string format_summary(const StepSummary& summary, const StepRequest& request);
+
+}  // namespace offsetgen::step

@@ -1,0 +1,18 @@
+// Writing a solid to STEP (AP214, millimetres, one MANIFOLD_SOLID_BREP) with a fixed header, so the
+// same solid gives the same bytes, and reading a STEP file back.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+
+namespace offsetgen::step {
+
+// Writes `solid` to `path` (a scratch file: the caller moves it into place). `description` goes into
+// the header's FILE_DESCRIPTION. Throws std::runtime_error on failure.
+void write_step(const TopoDS_Shape& solid, const std::string& path, const std::string& description);
+
+// The file's shape (all its roots in one compound if there are several). Throws std::runtime_error.
+TopoDS_Shape read_step(const std::string& path);
+
+}  // namespace offsetgen::step
