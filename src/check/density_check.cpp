@@ -25,7 +25,7 @@ constexpr std::array<double, 6> kGaussWeights = {0.085662246189585178, 0.1803807
 // range. `r_error`/`r_worst`: where the largest relative difference goes.
 template <typename T>
 void check_relations(T (*density)(T), T (*thickness_for_density)(T), T (*network_density)(T),
-                     T (*offset_for_density)(T), const FileMetadata& meta, const density::DensityModel& m,
+                     T (*offset_for_density)(T), const run::FileMetadata& meta, const density::DensityModel& m,
                      double& r_error, std::string& r_worst, DensityReport& r) {
   const char* suffix = sizeof(T) == sizeof(float) ? "f" : "";
   auto compare = [&](const char* name, double argument, T emitted, double expected) {
@@ -79,8 +79,9 @@ void check_relations(T (*density)(T), T (*thickness_for_density)(T), T (*network
 
 }  // namespace
 
-DensityReport measure_density(const LoadedFunctions& f, const FileMetadata& meta, const density::DensityModel& model,
-                              const std::optional<GiNaC::ex>& density_field, const DensityCheckOptions& o) {
+DensityReport measure_density(const run::LoadedFunctions& f, const run::FileMetadata& meta,
+                              const density::DensityModel& model, const std::optional<GiNaC::ex>& density_field,
+                              const DensityCheckOptions& o) {
   DensityReport r;
   r.tolerance = o.tolerance;
   r.cell_tolerance = o.cell_tolerance;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace offsetgen::check {
@@ -59,10 +60,67 @@ std::string fit_text(const OrderFit& f) {
 
 std::string missed_text(const ErrorStats& s) { return s.missed == 0 ? "0" : fmt::format("{}/{}", s.missed, s.rays); }
 
+// Section 1, in the layout the runner chose (run/runner.h, Listing).
+std::string preparation_text(const run::Prepared& p) {
+  std::string out = "\n";
+  auto line = [&out](const std::string& s) { out += s + "\n"; };
+  if (p.listing == run::Listing::Import) {
+    line(fmt::format("1. Import ({})", p.toolchain.empty() ? "no python3 with NumPy" : p.toolchain));
+    return out;
+  }
+  if (p.listing == run::Listing::Shader) {
+    line(p.heading + ":");
+    for (const auto& step : p.steps) {
+      line(fmt::format("  {:<28} {}", step.name, step.ok ? "ok" : "FAILED"));
+      if (!step.ok) out += step.output;
+    }
+    return out;
+  }
+  line(fmt::format("1. Compile ({})", p.toolchain));
+  if (!p.note.empty()) line("   " + p.note);
+  for (const auto& step : p.steps) {
+    std::string cmd;
+    for (const auto& a : step.command) cmd += (cmd.empty() ? "" : " ") + a;
+    line(fmt::format("  {:<28} {}{}", step.name, step.skipped ? "skipped" : (step.ok ? "ok" : "FAILED"),
+                     step.command.empty() ? "" : fmt::format("  ({:.2f} s)", step.seconds)));
+    if (!step.ok || step.skipped) {
+      if (!cmd.empty()) line("    $ " + cmd);
+      out += step.output;
+      if (!step.output.empty() && step.output.back() != '\n') out += "\n";
+    }
+  }
+  return out;
+}
+
+ojson preparation_json(const run::Prepared& p) {
+  if (p.listing == run::Listing::Import) return p.toolchain;
+  if (p.listing == run::Listing::Shader) {
+    ojson steps = ojson::array();
+    for (const auto& c : p.steps)
+      steps.push_back({{"target", c.name}, {"ok", c.ok}, {"command", c.command}, {"output", c.output}});
+    return steps;
+  }
+  ojson compile;
+  compile["toolchain"] = p.toolchain;
+  compile["ok"] = std::all_of(p.outcomes.begin(), p.outcomes.end(), [](const run::Outcome& o) { return o.pass; });
+  compile["optimization"] = p.optimization;
+  compile["note"] = p.note;
+  ojson steps = ojson::array();
+  for (const auto& s : p.steps)
+    steps.push_back({{"name", s.name},
+                     {"ok", s.ok},
+                     {"skipped", s.skipped},
+                     {"seconds", s.seconds},
+                     {"command", s.command},
+                     {"output", s.output}});
+  compile["steps"] = steps;
+  return compile;
+}
+
 }  // namespace
 
 std::string format_report(const CheckReport& r) {
-  const FileMetadata& m = r.meta;
+  const run::FileMetadata& m = r.meta;
   std::string out;
   auto line = [&out](const std::string& s) { out += s + "\n"; };
   line(fmt::format("offsetgen check {}", r.file));
@@ -72,44 +130,13 @@ std::string format_report(const CheckReport& r) {
     line(fmt::format("             {}; safeguard bound M = {:.6g}", r.surface_title, m.gradient_bound));
   for (const auto& w : r.warnings) line("  warning    " + w);
 
-  if (m.kind == FileKind::Numpy) {
-    line("");
-    line(fmt::format("1. Import ({})", r.toolchain.empty() ? "no python3 with NumPy" : r.toolchain));
-  } else if (m.kind == FileKind::Glsl) {
-    line("");
-    line("GLSL compile (glslangValidator -l, host fragment shader calling every function):");
-    for (const auto& g : r.glsl) {
-      line(fmt::format("  {:<28} {}", g.name, g.ok ? "ok" : "FAILED"));
-      if (!g.ok) out += g.output;
-    }
-  } else {
-    line("");
-    line(fmt::format("1. Compile ({})", r.toolchain));
-    if (!r.compile.note.empty()) line("   " + r.compile.note);
-    for (const auto& step : r.compile.steps) {
-      std::string cmd;
-      for (const auto& a : step.command) cmd += (cmd.empty() ? "" : " ") + a;
-      line(fmt::format("  {:<28} {}{}", step.name, step.skipped ? "skipped" : (step.ok ? "ok" : "FAILED"),
-                       step.command.empty() ? "" : fmt::format("  ({:.2f} s)", step.seconds)));
-      if (!step.ok || step.skipped) {
-        if (!cmd.empty()) line("    $ " + cmd);
-        out += step.output;
-        if (!step.output.empty() && step.output.back() != '\n') out += "\n";
-      }
-    }
-  }
+  out += preparation_text(r.prepared);
 
   if (r.values) {
     const ValueReport& v = *r.values;
     line("");
     line(fmt::format("2. Values: {} vs a {}-digit CLN evaluation of the symbolic model at random points",
-                     m.kind == FileKind::Glsl    ? "the snippet on Mesa llvmpipe (float32)"
-                     : m.kind == FileKind::Numpy ? "the module under python3 (NumPy, float64)"
-                     : m.kind == FileKind::Cuda  ? "the host path compiled by nvcc (double and float)"
-                     : m.kind == FileKind::Opencl
-                         ? "the kernels on the OpenCL device (float, and double with cl_khr_fp64)"
-                                                 : "compiled code",
-                     v.digits));
+                     r.words.source, v.digits));
     line("   in the cell, h and t/2 uniform in [-0.1, 0.1]; shift = how far the deviation moves the zero set (cell");
     line("   units); for the normal, |dn|. Every function is judged against the limit of its precision.");
     line(fmt::format("  {:<14} {:>6} {:>11} {:>11} {:>8}  {:<4}  {}", "function", "points", "max shift", "mean shift",
@@ -146,11 +173,12 @@ std::string format_report(const CheckReport& r) {
     for (const auto& row : t.rows)
       singular = std::max({singular, row.f_to_phi.singular, row.phi_to_f.singular, row.shell.singular});
     if (singular > 0)
-      line(fmt::format("  singular samples skipped, not counted as rays (up to {} per row; {} of the {} points on F = 0):\n"
-                       "  |grad F| below {:g} of its median on F = 0 where the ray starts or ends, or a ray without a\n"
-                       "  crossing where |h| ||Hess F|| >= |grad F|: next to a crossing or critical point of the zero set,\n"
-                       "  where the offset is not defined to any order",
-                       singular, t.singular_on_f, t.samples_on_f, kSingularGradient));
+      line(fmt::format(
+          "  singular samples skipped, not counted as rays (up to {} per row; {} of the {} points on F = 0):\n"
+          "  |grad F| below {:g} of its median on F = 0 where the ray starts or ends, or a ray without a\n"
+          "  crossing where |h| ||Hess F|| >= |grad F|: next to a crossing or critical point of the zero set,\n"
+          "  where the offset is not defined to any order",
+          singular, t.singular_on_f, t.samples_on_f, kSingularGradient));
     line(fmt::format("  fitted order  F->phi: {}", fit_text(t.fit_f_to_phi)));
     line(fmt::format("                phi->F: {}", fit_text(t.fit_phi_to_f)));
     line(fmt::format("                shell:  {}", fit_text(t.fit_shell)));
@@ -201,10 +229,10 @@ std::string format_report(const CheckReport& r) {
 
 ojson report_json(const CheckReport& r) {
   ojson j;
-  const FileMetadata& m = r.meta;
+  const run::FileMetadata& m = r.meta;
   const int dims = m.dims;
   j["file"] = r.file;
-  j["kind"] = kind_name(m.kind);
+  j["kind"] = m.language;
   j["metadata"] = ojson::parse(m.json);
   j["warnings"] = r.warnings;
   j["pass"] = r.pass;
@@ -214,26 +242,7 @@ ojson report_json(const CheckReport& r) {
     verdicts.push_back({{"name", v.name}, {"pass", v.pass}, {"judged", v.judged}, {"detail", v.detail}});
   j["verdicts"] = verdicts;
 
-  if (m.kind == FileKind::Numpy) {
-    j["python"] = r.toolchain;
-  } else if (m.kind == FileKind::Glsl) {
-    ojson g = ojson::array();
-    for (const auto& c : r.glsl)
-      g.push_back({{"target", c.name}, {"ok", c.ok}, {"command", c.command}, {"output", c.output}});
-    j["glsl_compile"] = g;
-  } else {
-    ojson compile;
-    compile["toolchain"] = r.toolchain;
-    compile["ok"] = r.compile.ok;
-    compile["optimization"] = r.compile.optimization;
-    compile["note"] = r.compile.note;
-    ojson steps = ojson::array();
-    for (const auto& s : r.compile.steps)
-      steps.push_back({{"name", s.name}, {"ok", s.ok}, {"skipped", s.skipped}, {"seconds", s.seconds},
-                       {"command", s.command}, {"output", s.output}});
-    compile["steps"] = steps;
-    j["compile"] = compile;
-  }
+  j[r.prepared.json_key] = preparation_json(r.prepared);
 
   if (r.values) {
     const ValueReport& v = *r.values;
@@ -246,9 +255,15 @@ ojson report_json(const CheckReport& r) {
     vj["max_shift_float"] = v.max_shift_float;
     ojson fs = ojson::array();
     for (const auto& f : v.functions)
-      fs.push_back({{"function", f.function}, {"float", f.is_float}, {"points", f.points}, {"max_shift", number(f.max_shift)},
-                    {"mean_shift", number(f.mean_shift)}, {"worst_point", f.worst_point}, {"measure", f.measure},
-                    {"tolerance", f.tolerance}, {"pass", f.pass}});
+      fs.push_back({{"function", f.function},
+                    {"float", f.is_float},
+                    {"points", f.points},
+                    {"max_shift", number(f.max_shift)},
+                    {"mean_shift", number(f.mean_shift)},
+                    {"worst_point", f.worst_point},
+                    {"measure", f.measure},
+                    {"tolerance", f.tolerance},
+                    {"pass", f.pass}});
     vj["functions"] = fs;
     j["values"] = vj;
   }
@@ -259,9 +274,11 @@ ojson report_json(const CheckReport& r) {
     tj["scan_intervals"] = t.scan;
     tj["samples_on_f"] = t.samples_on_f;
     tj["singular_on_f"] = t.singular_on_f;
-    tj["singular_definition"] = fmt::format("|grad F| < {:g} x its median over the samples on F = 0 where a ray starts or "
-                                            "ends, or a ray without a crossing where |h| ||Hess F|| >= |grad F|: skipped, "
-                                            "not counted as rays", kSingularGradient);
+    tj["singular_definition"] = fmt::format(
+        "|grad F| < {:g} x its median over the samples on F = 0 where a ray starts or "
+        "ends, or a ray without a crossing where |h| ||Hess F|| >= |grad F|: skipped, "
+        "not counted as rays",
+        kSingularGradient);
     tj["error_definition"] = "relative: |h_m - h| / h per ray; shell: |(s+ - s-) - t| / t with t = 2h";
     ojson rows = ojson::array();
     for (const auto& row : t.rows)

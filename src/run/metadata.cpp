@@ -1,4 +1,4 @@
-#include "check/metadata.h"
+#include "run/metadata.h"
 
 #include "emit/backend.h"
 
@@ -13,7 +13,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace offsetgen::check {
+namespace offsetgen::run {
 namespace {
 
 constexpr const char* kMarker = "offsetgen-metadata";
@@ -73,46 +73,18 @@ bool is_identifier(const std::string& s) {
 }
 
 // "language": a backend's name (emit/backend.h). Older files lack it: a C header is the one with
-// `static inline` functions. check dispatches to the backend's checker; a target without one is refused.
-FileKind file_kind(const json& j, const std::string& text) {
+// `static inline` functions, anything else is a GLSL snippet.
+std::string file_language(const json& j, const std::string& text) {
   auto it = j.find("language");
-  if (it == j.end() || it->is_null()) {
-    return text.find("static inline ") != std::string::npos ? FileKind::C : FileKind::Glsl;
-  }
+  if (it == j.end() || it->is_null()) return text.find("static inline ") != std::string::npos ? "c" : "glsl";
   if (!it->is_string()) damaged("field \"language\" must be a string");
   const std::string language = *it;
-  const Backend* target = nullptr;
   for (const Backend* b : backends())
-    if (b->name() == language) target = b;
-  if (!target) damaged(fmt::format("field \"language\" must be one of {}", backend_names()));
-  if (!target->checkable())
-    throw InputError(
-        fmt::format("offsetgen check has no checker for {} files yet (language \"{}\"); the test suite "
-                    "compiles them (see README)",
-                    target->title(), language));
-  if (language == "numpy") return FileKind::Numpy;
-  if (language == "cuda") return FileKind::Cuda;
-  if (language == "opencl") return FileKind::Opencl;
-  return language == "c" ? FileKind::C : FileKind::Glsl;
+    if (b->name() == language) return language;
+  damaged(fmt::format("field \"language\" must be one of {}", backend_names()));
 }
 
 }  // namespace
-
-const char* kind_name(FileKind kind) {
-  switch (kind) {
-    case FileKind::C:
-      return "c";
-    case FileKind::Glsl:
-      return "glsl";
-    case FileKind::Numpy:
-      return "numpy";
-    case FileKind::Cuda:
-      return "cuda";
-    case FileKind::Opencl:
-      return "opencl";
-  }
-  return "c";
-}
 
 FileMetadata parse_metadata(const std::string& text) {
   // A C-style comment, or a Python comment line (NumPy modules): `# offsetgen-metadata {...}`.
@@ -143,7 +115,7 @@ FileMetadata parse_metadata(const std::string& text) {
   if (!j.is_object()) damaged("its JSON is not an object");
 
   FileMetadata m;
-  m.kind = file_kind(j, text);
+  m.language = file_language(j, text);
   m.json = body;
   // trim the surrounding spaces of the JSON text
   while (!m.json.empty() && std::isspace(static_cast<unsigned char>(m.json.front()))) m.json.erase(0, 1);
@@ -247,4 +219,4 @@ FileMetadata read_metadata(const std::string& path, std::string* text_out) {
   return m;
 }
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::run
