@@ -240,5 +240,70 @@ TEST_F(CheckCli, AGlslSnippetWithAWrongConstantFailsOnLlvmpipe) {
   EXPECT_NE(wrong.output.find("out of tolerance: glsl offset"), std::string::npos) << wrong.output;
 }
 
+// A shader of `lang` for the gyroid at order 2, written by the CLI as users get it; and the same
+// file with 2 pi misprinted (6.28318548 -> 6.38318548) in the first line of _offset only, so it still
+// compiles.
+struct ShaderPair {
+  std::string good, wrong;
+};
+
+ShaderPair shader_pair(const std::string& dir, const std::string& lang) {
+  const std::string good = dir + "/gyroid_o2." + lang;
+  auto generated = testing::run_offsetgen({"generate", "-s", "gyroid", "--order", "2", "--lang", lang, "-o", good});
+  EXPECT_EQ(generated.exit_code, 0) << generated.output;
+  std::string text = testing::read_text(good);
+  const auto function = text.find(lang == "hlsl" ? "float gyroid_o2_offset(" : "fn gyroid_o2_offset(");
+  const auto at = text.find("6.28318548", function);
+  EXPECT_NE(function, std::string::npos);
+  EXPECT_NE(at, std::string::npos);
+  text.replace(at, 10, "6.38318548");
+  const std::string wrong = dir + "/wrong_gyroid_o2." + lang;
+  testing::write_text(wrong, text);
+  return {good, wrong};
+}
+
+// The snippet becomes SPIR-V (glslang's HLSL front end) and runs on lavapipe: its values are judged
+// against the 40-digit reference, so a wrong constant that still compiles fails.
+TEST_F(CheckCli, AnHlslSnippetRunsOnLavapipeAndAWrongConstantFails) {
+  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  const ShaderPair hlsl = shader_pair(*dir_, "hlsl");
+  auto good = testing::run_offsetgen({"check", hlsl.good, "--points", "40"});
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  for (const char* row : {"hlsl field", "hlsl offset", "hlsl shell", "hlsl normal", "PASS   values on lavapipe"})
+    EXPECT_NE(good.output.find(row), std::string::npos) << row << "\n" << good.output;
+  auto wrong = testing::run_offsetgen({"check", hlsl.wrong, "--points", "40"});
+  EXPECT_EQ(wrong.exit_code, 1) << wrong.output;
+  EXPECT_NE(wrong.output.find("FAIL   values on lavapipe         out of tolerance: hlsl offset"), std::string::npos)
+      << wrong.output;
+}
+
+// The snippet runs on Dawn (OFFSETGEN_WEBGPU: the webgpu package the wgsl tests install); a wrong
+// constant fails its value check.
+TEST_F(CheckCli, AWgslSnippetRunsOnDawnAndAWrongConstantFails) {
+  if (find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
+  ::setenv("OFFSETGEN_WEBGPU", OFFSETGEN_WEBGPU_DIR, 1);
+  const ShaderPair wgsl = shader_pair(*dir_, "wgsl");
+  auto good = testing::run_offsetgen({"check", wgsl.good, "--points", "40"});
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  for (const char* row : {"wgsl field", "wgsl offset", "wgsl shell", "wgsl normal", "PASS   values on Dawn"})
+    EXPECT_NE(good.output.find(row), std::string::npos) << row << "\n" << good.output;
+  auto wrong = testing::run_offsetgen({"check", wgsl.wrong, "--points", "40"});
+  EXPECT_EQ(wrong.exit_code, 1) << wrong.output;
+  EXPECT_NE(wrong.output.find("FAIL   values on Dawn             out of tolerance: wgsl offset"), std::string::npos)
+      << wrong.output;
+}
+
+// Without Dawn's bindings the WGSL runner refuses, naming what to install; check fails (exit 1).
+TEST_F(CheckCli, AWgslSnippetWithoutDawnFailsNamingIt) {
+  if (find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
+  const ShaderPair wgsl = shader_pair(*dir_, "wgsl");
+  ::setenv("OFFSETGEN_WEBGPU", (*dir_ + "/no-webgpu-here").c_str(), 1);
+  auto r = testing::run_offsetgen({"check", wgsl.good, "--points", "10"});
+  ::setenv("OFFSETGEN_WEBGPU", OFFSETGEN_WEBGPU_DIR, 1);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAIL   compile"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no-webgpu-here"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace offsetgen::check

@@ -1,4 +1,4 @@
-// tools/render/glsl_source: scanning a snippet's functions, the highp lint, and host-shader
+// src/run/glsl_source: scanning a snippet's functions, the highp lint, and host-shader
 // assembly with its line mapping (what the executor and render_shell build on).
 #include <gtest/gtest.h>
 
