@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <vector>
@@ -38,7 +38,7 @@ struct Points {
 };
 
 template <class T>
-Points<T> random_points(const run::BatchFunction<T>& f, std::size_t n, std::uint32_t seed) {
+Points<T> random_points(const BatchFunction<T>& f, std::size_t n, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> coordinate(-2.0, 3.0);
   // offset: h in [-0.1, 0.1]; shell: total thickness t in [0, 0.2] (cell units).
@@ -54,15 +54,13 @@ Points<T> random_points(const run::BatchFunction<T>& f, std::size_t n, std::uint
 }
 
 template <class T>
-std::vector<T> run_batch(const run::BatchFunction<T>& f, const Points<T>& p) {
+std::vector<T> run_batch(const BatchFunction<T>& f, const Points<T>& p) {
   std::vector<T> out(p.size(), T(-12345));
   f.batch(p.size(), p.x.data(), p.y.data(), p.z.data(), p.w.data(), out.data());
   return out;
 }
 
-double scaled(double difference, double reference) {
-  return std::fabs(difference) / std::max(std::fabs(reference), 1.0);
-}
+double scaled(double difference, double reference) { return std::fabs(difference) / std::max(std::fabs(reference), 1.0); }
 
 double quantile(std::vector<double> values, double q) {
   std::sort(values.begin(), values.end());
@@ -98,12 +96,11 @@ void check_random_agreement() {
       EXPECT_LE(quantile(batch_error, q), 1.5 * quantile(scalar_error, q) + eps) << "quantile " << q;
     }
     EXPECT_LE(quantile(batch_error, 1.0), 2.0 * quantile(scalar_error, 1.0) + 10 * eps);
-    std::printf(
-        "  %-28s within %.0e: %7.3f%%   error vs reference: scalar p50 %.1e p99 %.1e max %.1e | "
-        "batch p50 %.1e p99 %.1e max %.1e\n",
-        f.label().c_str(), kAgree<T>, 100 * within, quantile(scalar_error, 0.5), quantile(scalar_error, 0.99),
-        quantile(scalar_error, 1.0), quantile(batch_error, 0.5), quantile(batch_error, 0.99),
-        quantile(batch_error, 1.0));
+    std::printf("  %-28s within %.0e: %7.3f%%   error vs reference: scalar p50 %.1e p99 %.1e max %.1e | "
+                "batch p50 %.1e p99 %.1e max %.1e\n",
+                f.label().c_str(), kAgree<T>, 100 * within, quantile(scalar_error, 0.5), quantile(scalar_error, 0.99),
+                quantile(scalar_error, 1.0), quantile(batch_error, 0.5), quantile(batch_error, 0.99),
+                quantile(batch_error, 1.0));
   }
 }
 
