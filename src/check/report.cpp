@@ -117,6 +117,100 @@ ojson preparation_json(const run::Prepared& p) {
   return compile;
 }
 
+// Section 2: each function's largest and mean zero-set shift against its limit.
+std::string values_text(const ValueReport& v, const run::ValueWords& words) {
+  std::string out;
+  auto line = [&out](const std::string& s) { out += s + "\n"; };
+  line("");
+  line(fmt::format("2. Values: {} vs a {}-digit CLN evaluation of the symbolic model at random points", words.source,
+                   v.digits));
+  line("   in the cell, h and t/2 uniform in [-0.1, 0.1]; shift = how far the deviation moves the zero set (cell");
+  line("   units); for the normal, |dn|. Every function is judged against the limit of its precision.");
+  line(fmt::format("  {:<14} {:>6} {:>11} {:>11} {:>8}  {:<4}  {}", "function", "points", "max shift", "mean shift",
+                   "limit", "", "measure"));
+  for (const auto& f : v.functions)
+    line(fmt::format("  {:<14} {:>6} {:>11} {:>11} {:>8.0e}  {:<4}  {}", f.function, f.points, sci(f.max_shift),
+                     sci(f.mean_shift), f.tolerance, f.pass ? "ok" : "FAIL", f.measure));
+  return out;
+}
+
+// Section 3: the constant wall's relative thickness errors per h, the skipped singular samples and
+// the fitted orders.
+std::string thickness_text(const ThicknessReport& t, int dims, bool float_only) {
+  std::string out;
+  auto line = [&out](const std::string& s) { out += s + "\n"; };
+  line("");
+  if (dims == 3)
+    line(
+        fmt::format("3. Wall thickness (paper section 5.2.1): {} points on F = 0 (x, y on a {}x{} grid, z by "
+                    "bracketing + Brent),",
+                    t.samples_on_f, t.grid, t.grid));
+  else
+    line(
+        fmt::format("3. Wall thickness (paper section 5.2.1): {} points on F = 0 (x on a grid of {}, y by "
+                    "bracketing + Brent),",
+                    t.samples_on_f, t.grid));
+  if (float_only) line("   (float-only file: measured on the float32 functions, slopes not judged)");
+  line("   rays along the unit normal; relative error |h_m - h| / h; 'missed' = rays without a crossing");
+  line(fmt::format("  {:>8} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6}", "h/L", "F->phi", "max",
+                   "missed", "phi->F", "max", "missed", "shell t=2h", "max", "missed"));
+  for (const auto& row : t.rows)
+    line(fmt::format("  {:>8g} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6}", row.h,
+                     sci(row.f_to_phi.mean), sci(row.f_to_phi.max), missed_text(row.f_to_phi), sci(row.phi_to_f.mean),
+                     sci(row.phi_to_f.max), missed_text(row.phi_to_f), sci(row.shell.mean), sci(row.shell.max),
+                     missed_text(row.shell)));
+  line("  (mean and max of the relative error; shell: total thickness between both walls of Phi(., t) against t)");
+  int singular = 0;
+  for (const auto& row : t.rows)
+    singular = std::max({singular, row.f_to_phi.singular, row.phi_to_f.singular, row.shell.singular});
+  if (singular > 0)
+    line(fmt::format(
+        "  singular samples skipped, not counted as rays (up to {} per row; {} of the {} points on F = 0):\n"
+        "  |grad F| below {:g} of its median on F = 0 where the ray starts or ends, or a ray without a\n"
+        "  crossing where |h| ||Hess F|| >= |grad F|: next to a crossing or critical point of the zero set,\n"
+        "  where the offset is not defined to any order",
+        singular, t.singular_on_f, t.samples_on_f, kSingularGradient));
+  line(fmt::format("  fitted order  F->phi: {}", fit_text(t.fit_f_to_phi)));
+  line(fmt::format("                phi->F: {}", fit_text(t.fit_phi_to_f)));
+  line(fmt::format("                shell:  {}", fit_text(t.fit_shell)));
+  return out;
+}
+
+// Section 4: the graded wall's three measures per h_max and the orders the method promises.
+std::string graded_text(const GradedReport& g) {
+  std::string out;
+  auto line = [&out](const std::string& s) { out += s + "\n"; };
+  line("");
+  line(fmt::format("4. Graded wall, total thickness t(x) = {} (peak {:g} in the cell), h(x) = t(x)/2;", g.expression,
+                   g.t_peak));
+  line("   the sweep scales t so that max h = h_max; the last row is t exactly as given.");
+  line(fmt::format("   The walls are the {} method's, read as the compiled _graded reads t; orders it promises:",
+                   g.method_reads));
+  line(fmt::format("   total:     rays from p on F = 0, distance between the +h(x) and -h(x) walls vs t(p). Order {}.",
+                   g.expected_total));
+  line(fmt::format("   one-sided: each wall from p on F = 0 vs h(p), the thickness at its foot point. Order {}.",
+                   g.expected_one_sided));
+  line("   paper:     the paper's Figure 8: rays from points q on each wall along the wall's own normal back");
+  line(fmt::format("              to F = 0, vs h(q), the thickness at the wall point. Order {}.", g.expected_paper));
+  line(fmt::format("  {:>10} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9}", "h_max/L", "total", "max",
+                   "missed", "paper", "max", "missed", "one-sided", "max"));
+  for (const auto& row : g.rows) {
+    std::string label = row.as_given ? fmt::format("{:g}*", row.h_max) : fmt::format("{:g}", row.h_max);
+    line(fmt::format("  {:>10} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9}", label, sci(row.total.mean),
+                     sci(row.total.max), missed_text(row.total), sci(row.paper.mean), sci(row.paper.max),
+                     missed_text(row.paper), sci(row.one_sided.mean), sci(row.one_sided.max)));
+  }
+  for (const auto& row : g.rows) {
+    if (row.as_given)
+      line(fmt::format("  * as given{}; {} point(s) with t <= 0 skipped",
+                       row.compiled_graded ? ", measured on the compiled _graded function" : "", row.total.skipped));
+  }
+  line(fmt::format("  fitted order  total:     {}", fit_text(g.fit_total)));
+  line(fmt::format("                paper:     {}", fit_text(g.fit_paper)));
+  line(fmt::format("                one-sided: {}", fit_text(g.fit_one_sided)));
+  return out;
+}
+
 }  // namespace
 
 std::string format_report(const CheckReport& r) {
@@ -132,91 +226,9 @@ std::string format_report(const CheckReport& r) {
 
   out += preparation_text(r.prepared);
 
-  if (r.values) {
-    const ValueReport& v = *r.values;
-    line("");
-    line(fmt::format("2. Values: {} vs a {}-digit CLN evaluation of the symbolic model at random points",
-                     r.words.source, v.digits));
-    line("   in the cell, h and t/2 uniform in [-0.1, 0.1]; shift = how far the deviation moves the zero set (cell");
-    line("   units); for the normal, |dn|. Every function is judged against the limit of its precision.");
-    line(fmt::format("  {:<14} {:>6} {:>11} {:>11} {:>8}  {:<4}  {}", "function", "points", "max shift", "mean shift",
-                     "limit", "", "measure"));
-    for (const auto& f : v.functions)
-      line(fmt::format("  {:<14} {:>6} {:>11} {:>11} {:>8.0e}  {:<4}  {}", f.function, f.points, sci(f.max_shift),
-                       sci(f.mean_shift), f.tolerance, f.pass ? "ok" : "FAIL", f.measure));
-  }
-
-  if (r.thickness) {
-    const ThicknessReport& t = *r.thickness;
-    line("");
-    if (m.dims == 3)
-      line(
-          fmt::format("3. Wall thickness (paper section 5.2.1): {} points on F = 0 (x, y on a {}x{} grid, z by "
-                      "bracketing + Brent),",
-                      t.samples_on_f, t.grid, t.grid));
-    else
-      line(
-          fmt::format("3. Wall thickness (paper section 5.2.1): {} points on F = 0 (x on a grid of {}, y by "
-                      "bracketing + Brent),",
-                      t.samples_on_f, t.grid));
-    if (r.thickness_float_only) line("   (float-only file: measured on the float32 functions, slopes not judged)");
-    line("   rays along the unit normal; relative error |h_m - h| / h; 'missed' = rays without a crossing");
-    line(fmt::format("  {:>8} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6}", "h/L", "F->phi", "max",
-                     "missed", "phi->F", "max", "missed", "shell t=2h", "max", "missed"));
-    for (const auto& row : t.rows)
-      line(fmt::format("  {:>8g} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6}", row.h,
-                       sci(row.f_to_phi.mean), sci(row.f_to_phi.max), missed_text(row.f_to_phi), sci(row.phi_to_f.mean),
-                       sci(row.phi_to_f.max), missed_text(row.phi_to_f), sci(row.shell.mean), sci(row.shell.max),
-                       missed_text(row.shell)));
-    line("  (mean and max of the relative error; shell: total thickness between both walls of Phi(., t) against t)");
-    int singular = 0;
-    for (const auto& row : t.rows)
-      singular = std::max({singular, row.f_to_phi.singular, row.phi_to_f.singular, row.shell.singular});
-    if (singular > 0)
-      line(fmt::format(
-          "  singular samples skipped, not counted as rays (up to {} per row; {} of the {} points on F = 0):\n"
-          "  |grad F| below {:g} of its median on F = 0 where the ray starts or ends, or a ray without a\n"
-          "  crossing where |h| ||Hess F|| >= |grad F|: next to a crossing or critical point of the zero set,\n"
-          "  where the offset is not defined to any order",
-          singular, t.singular_on_f, t.samples_on_f, kSingularGradient));
-    line(fmt::format("  fitted order  F->phi: {}", fit_text(t.fit_f_to_phi)));
-    line(fmt::format("                phi->F: {}", fit_text(t.fit_phi_to_f)));
-    line(fmt::format("                shell:  {}", fit_text(t.fit_shell)));
-  }
-
-  if (r.graded) {
-    const GradedReport& g = *r.graded;
-    line("");
-    line(fmt::format("4. Graded wall, total thickness t(x) = {} (peak {:g} in the cell), h(x) = t(x)/2;", g.expression,
-                     g.t_peak));
-    line("   the sweep scales t so that max h = h_max; the last row is t exactly as given.");
-    line(fmt::format("   The walls are the {} method's, read as the compiled _graded reads t; orders it promises:",
-                     g.method_reads));
-    line(
-        fmt::format("   total:     rays from p on F = 0, distance between the +h(x) and -h(x) walls vs t(p). Order {}.",
-                    g.expected_total));
-    line(fmt::format("   one-sided: each wall from p on F = 0 vs h(p), the thickness at its foot point. Order {}.",
-                     g.expected_one_sided));
-    line("   paper:     the paper's Figure 8: rays from points q on each wall along the wall's own normal back");
-    line(fmt::format("              to F = 0, vs h(q), the thickness at the wall point. Order {}.", g.expected_paper));
-    line(fmt::format("  {:>10} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9}", "h_max/L", "total", "max",
-                     "missed", "paper", "max", "missed", "one-sided", "max"));
-    for (const auto& row : g.rows) {
-      std::string label = row.as_given ? fmt::format("{:g}*", row.h_max) : fmt::format("{:g}", row.h_max);
-      line(fmt::format("  {:>10} | {:>9} {:>9} {:>6} | {:>9} {:>9} {:>6} | {:>9} {:>9}", label, sci(row.total.mean),
-                       sci(row.total.max), missed_text(row.total), sci(row.paper.mean), sci(row.paper.max),
-                       missed_text(row.paper), sci(row.one_sided.mean), sci(row.one_sided.max)));
-    }
-    for (const auto& row : g.rows) {
-      if (row.as_given)
-        line(fmt::format("  * as given{}; {} point(s) with t <= 0 skipped",
-                         row.compiled_graded ? ", measured on the compiled _graded function" : "", row.total.skipped));
-    }
-    line(fmt::format("  fitted order  total:     {}", fit_text(g.fit_total)));
-    line(fmt::format("                paper:     {}", fit_text(g.fit_paper)));
-    line(fmt::format("                one-sided: {}", fit_text(g.fit_one_sided)));
-  }
-
+  if (r.values) out += values_text(*r.values, r.words);
+  if (r.thickness) out += thickness_text(*r.thickness, m.dims, r.thickness_float_only);
+  if (r.graded) out += graded_text(*r.graded);
   if (r.density) out += format_density(*r.density);
 
   line("");
