@@ -252,7 +252,8 @@ ShaderPair shader_pair(const std::string& dir, const std::string& lang) {
   auto generated = testing::run_offsetgen({"generate", "-s", "gyroid", "--order", "2", "--lang", lang, "-o", good});
   EXPECT_EQ(generated.exit_code, 0) << generated.output;
   std::string text = testing::read_text(good);
-  const auto function = text.find(lang == "hlsl" ? "float gyroid_o2_offset(" : "fn gyroid_o2_offset(");
+  const auto function =
+      text.find(lang == "hlsl" ? "\nfloat gyroid_o2_offset(" : "\nfn gyroid_o2_offset(");  // the definition
   const auto at = text.find("6.28318548", function);
   EXPECT_NE(function, std::string::npos);
   EXPECT_NE(at, std::string::npos);
@@ -265,7 +266,7 @@ ShaderPair shader_pair(const std::string& dir, const std::string& lang) {
 // The snippet becomes SPIR-V (glslang's HLSL front end) and runs on lavapipe: its values are judged
 // against the 40-digit reference, so a wrong constant that still compiles fails.
 TEST_F(CheckCli, AnHlslSnippetRunsOnLavapipeAndAWrongConstantFails) {
-  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  if (run::find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
   const ShaderPair hlsl = shader_pair(*dir_, "hlsl");
   auto good = testing::run_offsetgen({"check", hlsl.good, "--points", "40"});
   EXPECT_EQ(good.exit_code, 0) << good.output;
@@ -280,7 +281,7 @@ TEST_F(CheckCli, AnHlslSnippetRunsOnLavapipeAndAWrongConstantFails) {
 // The snippet runs on Dawn (OFFSETGEN_WEBGPU: the webgpu package the wgsl tests install); a wrong
 // constant fails its value check.
 TEST_F(CheckCli, AWgslSnippetRunsOnDawnAndAWrongConstantFails) {
-  if (find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
+  if (run::find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
   ::setenv("OFFSETGEN_WEBGPU", OFFSETGEN_WEBGPU_DIR, 1);
   const ShaderPair wgsl = shader_pair(*dir_, "wgsl");
   auto good = testing::run_offsetgen({"check", wgsl.good, "--points", "40"});
@@ -295,7 +296,7 @@ TEST_F(CheckCli, AWgslSnippetRunsOnDawnAndAWrongConstantFails) {
 
 // Without Dawn's bindings the WGSL runner refuses, naming what to install; check fails (exit 1).
 TEST_F(CheckCli, AWgslSnippetWithoutDawnFailsNamingIt) {
-  if (find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
+  if (run::find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
   const ShaderPair wgsl = shader_pair(*dir_, "wgsl");
   ::setenv("OFFSETGEN_WEBGPU", (*dir_ + "/no-webgpu-here").c_str(), 1);
   auto r = testing::run_offsetgen({"check", wgsl.good, "--points", "10"});
