@@ -211,6 +211,82 @@ std::string graded_text(const GradedReport& g) {
   return out;
 }
 
+// Section 2 as data: every function's deviations.
+ojson values_json(const ValueReport& v) {
+  ojson vj;
+  vj["digits"] = v.digits;
+  vj["tolerance"] = v.tolerance;
+  vj["pass"] = v.pass;
+  vj["max_shift_double"] = v.has_double ? ojson(v.max_shift_double) : ojson();
+  vj["max_normal_deviation_double"] = v.max_normal_double;
+  vj["max_shift_float"] = v.max_shift_float;
+  ojson fs = ojson::array();
+  for (const auto& f : v.functions)
+    fs.push_back({{"function", f.function},
+                  {"float", f.is_float},
+                  {"points", f.points},
+                  {"max_shift", number(f.max_shift)},
+                  {"mean_shift", number(f.mean_shift)},
+                  {"worst_point", f.worst_point},
+                  {"measure", f.measure},
+                  {"tolerance", f.tolerance},
+                  {"pass", f.pass}});
+  vj["functions"] = fs;
+  return vj;
+}
+
+// Section 3 as data: the rays per h, their definitions and the fits.
+ojson thickness_json(const ThicknessReport& t, int dims) {
+  ojson tj;
+  tj["grid"] = t.grid;
+  tj["scan_intervals"] = t.scan;
+  tj["samples_on_f"] = t.samples_on_f;
+  tj["singular_on_f"] = t.singular_on_f;
+  tj["singular_definition"] = fmt::format(
+      "|grad F| < {:g} x its median over the samples on F = 0 where a ray starts or "
+      "ends, or a ray without a crossing where |h| ||Hess F|| >= |grad F|: skipped, "
+      "not counted as rays",
+      kSingularGradient);
+  tj["error_definition"] = "relative: |h_m - h| / h per ray; shell: |(s+ - s-) - t| / t with t = 2h";
+  ojson rows = ojson::array();
+  for (const auto& row : t.rows)
+    rows.push_back({{"h", row.h},
+                    {"f_to_phi", stats_json(row.f_to_phi, dims)},
+                    {"phi_to_f", stats_json(row.phi_to_f, dims)},
+                    {"shell", stats_json(row.shell, dims)}});
+  tj["rows"] = rows;
+  tj["fits"] = {
+      {"f_to_phi", fit_json(t.fit_f_to_phi)}, {"phi_to_f", fit_json(t.fit_phi_to_f)}, {"shell", fit_json(t.fit_shell)}};
+  return tj;
+}
+
+// Section 4 as data: the graded wall's three measures per h_max and their fits.
+ojson graded_json(const GradedReport& g, int dims) {
+  ojson gj;
+  gj["expression"] = g.expression;
+  gj["t_peak"] = g.t_peak;
+  gj["definitions"] = {
+      {"total",
+       "rays from p on F = 0 along grad F to the +h(x) and -h(x) walls; |(s+ - s-) - t(p)| / t(p); order <= 2"},
+      {"paper",
+       "paper Figure 8: rays from q on each wall along the wall's own normal to F = 0; |h_m - h(q)| / h(q); order <= "
+       "2"},
+      {"one_sided", "rays from p on F = 0 to each wall; |s - h(p)| / h(p); first order"}};
+  ojson rows = ojson::array();
+  for (const auto& row : g.rows)
+    rows.push_back({{"h_max", row.h_max},
+                    {"lambda", row.lambda},
+                    {"as_given", row.as_given},
+                    {"compiled_graded", row.compiled_graded},
+                    {"total", stats_json(row.total, dims)},
+                    {"paper", stats_json(row.paper, dims)},
+                    {"one_sided", stats_json(row.one_sided, dims)}});
+  gj["rows"] = rows;
+  gj["fits"] = {
+      {"total", fit_json(g.fit_total)}, {"paper", fit_json(g.fit_paper)}, {"one_sided", fit_json(g.fit_one_sided)}};
+  return gj;
+}
+
 }  // namespace
 
 std::string format_report(const CheckReport& r) {
@@ -256,80 +332,9 @@ ojson report_json(const CheckReport& r) {
 
   j[r.prepared.json_key] = preparation_json(r.prepared);
 
-  if (r.values) {
-    const ValueReport& v = *r.values;
-    ojson vj;
-    vj["digits"] = v.digits;
-    vj["tolerance"] = v.tolerance;
-    vj["pass"] = v.pass;
-    vj["max_shift_double"] = v.has_double ? ojson(v.max_shift_double) : ojson();
-    vj["max_normal_deviation_double"] = v.max_normal_double;
-    vj["max_shift_float"] = v.max_shift_float;
-    ojson fs = ojson::array();
-    for (const auto& f : v.functions)
-      fs.push_back({{"function", f.function},
-                    {"float", f.is_float},
-                    {"points", f.points},
-                    {"max_shift", number(f.max_shift)},
-                    {"mean_shift", number(f.mean_shift)},
-                    {"worst_point", f.worst_point},
-                    {"measure", f.measure},
-                    {"tolerance", f.tolerance},
-                    {"pass", f.pass}});
-    vj["functions"] = fs;
-    j["values"] = vj;
-  }
-  if (r.thickness) {
-    const ThicknessReport& t = *r.thickness;
-    ojson tj;
-    tj["grid"] = t.grid;
-    tj["scan_intervals"] = t.scan;
-    tj["samples_on_f"] = t.samples_on_f;
-    tj["singular_on_f"] = t.singular_on_f;
-    tj["singular_definition"] = fmt::format(
-        "|grad F| < {:g} x its median over the samples on F = 0 where a ray starts or "
-        "ends, or a ray without a crossing where |h| ||Hess F|| >= |grad F|: skipped, "
-        "not counted as rays",
-        kSingularGradient);
-    tj["error_definition"] = "relative: |h_m - h| / h per ray; shell: |(s+ - s-) - t| / t with t = 2h";
-    ojson rows = ojson::array();
-    for (const auto& row : t.rows)
-      rows.push_back({{"h", row.h},
-                      {"f_to_phi", stats_json(row.f_to_phi, dims)},
-                      {"phi_to_f", stats_json(row.phi_to_f, dims)},
-                      {"shell", stats_json(row.shell, dims)}});
-    tj["rows"] = rows;
-    tj["fits"] = {{"f_to_phi", fit_json(t.fit_f_to_phi)},
-                  {"phi_to_f", fit_json(t.fit_phi_to_f)},
-                  {"shell", fit_json(t.fit_shell)}};
-    j["thickness"] = tj;
-  }
-  if (r.graded) {
-    const GradedReport& g = *r.graded;
-    ojson gj;
-    gj["expression"] = g.expression;
-    gj["t_peak"] = g.t_peak;
-    gj["definitions"] = {
-        {"total",
-         "rays from p on F = 0 along grad F to the +h(x) and -h(x) walls; |(s+ - s-) - t(p)| / t(p); order <= 2"},
-        {"paper",
-         "paper Figure 8: rays from q on each wall along the wall's own normal to F = 0; |h_m - h(q)| / h(q); order <= "
-         "2"},
-        {"one_sided", "rays from p on F = 0 to each wall; |s - h(p)| / h(p); first order"}};
-    ojson rows = ojson::array();
-    for (const auto& row : g.rows)
-      rows.push_back({{"h_max", row.h_max},
-                      {"lambda", row.lambda},
-                      {"as_given", row.as_given},
-                      {"compiled_graded", row.compiled_graded},
-                      {"total", stats_json(row.total, dims)},
-                      {"paper", stats_json(row.paper, dims)},
-                      {"one_sided", stats_json(row.one_sided, dims)}});
-    gj["rows"] = rows;
-    gj["fits"] = {
-        {"total", fit_json(g.fit_total)}, {"paper", fit_json(g.fit_paper)}, {"one_sided", fit_json(g.fit_one_sided)}};
-    j["graded"] = gj;
-  }
+  if (r.values) j["values"] = values_json(*r.values);
+  if (r.thickness) j["thickness"] = thickness_json(*r.thickness, dims);
+  if (r.graded) j["graded"] = graded_json(*r.graded, dims);
   if (r.density) j["density"] = density_json(*r.density);
   return j;
 }

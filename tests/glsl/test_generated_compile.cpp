@@ -22,7 +22,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-namespace check = offsetgen::check;
+namespace run = offsetgen::run;
 namespace glsl = offsetgen::glsl;
 namespace gt = offsetgen::glsl_test;
 namespace ts = offsetgen::test_support;
