@@ -1,5 +1,6 @@
 #include "check/check.h"
 
+#include "check/domain_cube.h"
 #include "check/progress.h"
 #include "check/reference.h"
 #include "emit/backend.h"
@@ -210,8 +211,10 @@ void check_constant_wall(const CheckSettings& s, const Probe& probe, const Thick
 // The method's documented Lipschitz bounds, measured in the band |F| <= M|h|.
 void check_lipschitz(const Probe& probe, const Reference& reference, CheckReport& report) {
   const MethodFacts& facts = reference.generation.method();
-  report.lipschitz = measure_lipschitz(probe, facts.lipschitz_bounds,
-                                       reference.generation.construction->bounds().gradient, report.meta.scale);
+  // Through a mapped file's domain cube, lengths are in sides of the cube: gradients scale by it.
+  const double scale = report.meta.scale * domain_cube(report.meta).side;
+  report.lipschitz =
+      measure_lipschitz(probe, facts.lipschitz_bounds, reference.generation.construction->bounds().gradient, scale);
   for (const LipschitzRow& row : report.lipschitz)
     report.verdicts.push_back({fmt::format("lipschitz |h| <= {:g}", row.h), row.pass, !probe.float_only,
                                fmt::format("max |grad phi| {:.4g} over {} points of the band |F| <= M|h|, "
@@ -265,7 +268,9 @@ void check_graded_wall(const CheckSettings& s, Probe probe, const Reference& ref
 // Items 3 and 4 through the loaded functions: the constant wall, the Lipschitz bounds, the graded wall.
 void check_walls(const CheckSettings& s, const run::LoadedFunctions& functions, const Reference& reference,
                  const WallThickness& walls, Progress& progress, CheckReport& report) {
-  Probe probe = make_probe(functions);
+  // A mapped file is measured in the largest cube centred in its domain (check/domain_cube.h).
+  const DomainCube cube = domain_cube(report.meta);
+  Probe probe = in_cube(make_probe(functions), cube, report.meta.dims);
   report.thickness_float_only = probe.float_only;
   ThicknessOptions options;
   options.h = report.sweep;
@@ -274,7 +279,7 @@ void check_walls(const CheckSettings& s, const run::LoadedFunctions& functions, 
   options.progress = [&progress](const std::string& what) { progress.update("thickness", what); };
   check_constant_wall(s, probe, options, report);
   check_lipschitz(probe, reference, report);
-  if (walls.measured) {
+  if (walls.measured && cube.identity) {  // a mapped file's graded wall is not measured (docs/maps.md)
     const bool compiled = !s.thickness.has_value() && functions.graded != nullptr;
     check_graded_wall(s, probe, reference, walls, compiled, options, report);
   }

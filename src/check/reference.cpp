@@ -26,6 +26,14 @@ std::unique_ptr<Reference> rebuild_reference(const run::FileMetadata& meta) {
   request.order = meta.order;
   request.method = meta.method;
   request.thickness = meta.thickness;
+  if (meta.map) {
+    request.map = *meta.map;
+    Surface::Box box;
+    box.lo = (*meta.domain)[0];
+    box.hi = (*meta.domain)[1];
+    box.dims = meta.dims;
+    request.domain = box;
+  }
   request.density_functions = meta.has_density;
   request.density = meta.wall_density;
   request.density_field = meta.density_field;

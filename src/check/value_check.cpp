@@ -1,5 +1,6 @@
 #include "check/value_check.h"
 
+#include "check/domain_cube.h"
 #include "offset/offset_reference.h"
 
 #include <algorithm>
@@ -80,7 +81,9 @@ std::vector<Sample> reference_samples(const Reference& reference, const run::Fil
   const int dims = meta.dims;
   std::mt19937_64 rng(options.seed);
   std::uniform_real_distribution<double> coordinate(0.0, 1.0);
-  std::uniform_real_distribution<double> distance(-options.h_max, options.h_max);
+  // A mapped file: points in the cube centred in its domain, h in its sides (check/domain_cube.h).
+  const DomainCube cube = domain_cube(meta);
+  std::uniform_real_distribution<double> distance(-options.h_max * cube.side, options.h_max * cube.side);
   const int points = options.points > 0 ? options.points : default_value_points(meta.order);
   const int stride = std::max(1, options.normal_stride);
 
@@ -91,7 +94,7 @@ std::vector<Sample> reference_samples(const Reference& reference, const run::Fil
     std::vector<GiNaC::numeric> x(static_cast<size_t>(dims));
     for (int k = 0; k < dims; ++k) {
       // float and double functions see the same point: draw it representable in float
-      s.p.push_back(static_cast<double>(static_cast<float>(coordinate(rng))));
+      s.p.push_back(static_cast<double>(static_cast<float>(cube.at(k, coordinate(rng)))));
       x[static_cast<size_t>(k)] = exact(s.p.back());
     }
     s.h = static_cast<double>(static_cast<float>(distance(rng)));

@@ -82,7 +82,11 @@ constexpr int kMaxSearchEvaluations = 20000;
 double maximum_over_region(SampleRegion& region, const std::function<double(const std::vector<double>&)>& f,
                            const std::string& what, std::vector<double>* argmax) {
   const int dims = region.dims();
-  const int n = dims == 3 ? 24 : 96;
+  // One cell: 24 samples per axis and 8 compass starts find its maximum. A mapped domain holds many
+  // cells, each with its own local maxima: twice the samples and 16 times the starts (a missed
+  // maximum would leave the safeguard's M too small, and walls off by a fraction of h).
+  const int n = (dims == 3 ? 24 : 96) * (region.mapped() ? 2 : 1);
+  const size_t max_starts = region.mapped() ? 128 : 8;
   double extent = 0;  // the longest side sets the compass steps
   for (int i = 0; i < dims; ++i) extent = std::max(extent, region.hi(i) - region.lo(i));
   auto value_at = [&](const std::vector<double>& p) { return region.contains(p) ? f(p) : NAN; };
@@ -101,7 +105,7 @@ double maximum_over_region(SampleRegion& region, const std::function<double(cons
   if (best.empty())
     throw std::runtime_error(what + " is not finite anywhere on " + region.describe() +
                              ", so the safeguard has no bound");
-  const size_t starts = std::min<size_t>(8, best.size());
+  const size_t starts = std::min<size_t>(max_starts, best.size());
   std::partial_sort(best.begin(), best.begin() + static_cast<long>(starts), best.end(),
                     [](const auto& a, const auto& b) { return a.first > b.first; });
 

@@ -31,6 +31,8 @@ class SampleRegion {
   // The smallest singular measure at p (infinity when the surface has none).
   double singular_measure(const std::vector<double>& p);
   bool has_singular_measures() const { return measures_ != nullptr; }
+  // A mapped domain spans many cells of varying size: its searches sample more densely.
+  bool mapped() const { return mapped_; }
   // "the cell [0, 1]^3" or "the domain [0, 10] x [-5, 5] x [0, 20]", for messages.
   std::string describe() const;
 

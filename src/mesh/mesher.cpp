@@ -586,7 +586,12 @@ MeshSummary run_mesh_stages(const MeshSettings& s, const ProgressCallback& progr
   // A mapped lattice is bounded over the body's box, clear of the map's singular set.
   WallRequest wall = s.wall;
   if (!wall.generation.map.empty()) {
-    m.map_region = bound_map_to_body(wall.generation, body_mesh, 0);
+    // Bounds over the body's box grown by 1/20 of its longest side: walls reach half their
+    // thickness beyond the points that carry them, and the safeguard's M holds only where it was taken.
+    const auto box = body::bounding_box(body_mesh);
+    double longest = 0;
+    for (size_t a = 0; a < 3; ++a) longest = std::max(longest, box[1][a] - box[0][a]);
+    m.map_region = bound_map_to_body(wall.generation, body_mesh, longest / 20);
     m.map = resolve_surface(wall.generation).map_formula;
   }
 

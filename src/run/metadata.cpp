@@ -143,6 +143,28 @@ void read_origin(const json& j, FileMetadata& m) {
   }
 }
 
+// A mapped file's map and domain: {"map": text, "domain": [[lo...], [hi...]]} with lo < hi.
+void read_map(const json& j, FileMetadata& m) {
+  m.map = optional_string_field(j, "map");
+  const auto d = j.find("domain");
+  if (!m.map && d == j.end()) return;
+  if (!m.map || d == j.end()) damaged("fields \"map\" and \"domain\" come together");
+  const json& box = *d;
+  if (!box.is_array() || box.size() != 2 || !box[0].is_array() || box[0].size() != box[1].size() || box[0].size() < 2 ||
+      box[0].size() > 3)
+    damaged("field \"domain\" must be [[lo...], [hi...]] with 2 or 3 coordinates each");
+  std::array<std::array<double, 3>, 2> out{};
+  for (size_t c = 0; c < 2; ++c)
+    for (size_t i = 0; i < box[c].size(); ++i) {
+      if (!box[c][i].is_number()) damaged("field \"domain\" must hold numbers");
+      out[c][i] = box[c][i].get<double>();
+    }
+  for (size_t i = 0; i < box[0].size(); ++i)
+    if (!(out[0][i] < out[1][i]) || !std::isfinite(out[0][i]) || !std::isfinite(out[1][i]))
+      damaged("field \"domain\" is an empty box");
+  m.domain = out;
+}
+
 // What was built: scale, dimensions, method and order, thickness, precisions, the safeguard bound, ops.
 void read_construction(const json& j, FileMetadata& m) {
   m.scale = positive_number_field(j, "scale");
@@ -152,6 +174,7 @@ void read_construction(const json& j, FileMetadata& m) {
   m.order = int_field(j, "order", 1, kMaxSupportedOrder);
   if (auto graded = j.find("graded_order"); graded != j.end()) m.graded_order = int_field(j, "graded_order", 1, 64);
   m.thickness = optional_string_field(j, "thickness");
+  read_map(j, m);
   const json& precisions = field(j, "precisions");
   if (!precisions.is_array() || precisions.empty()) damaged("field \"precisions\" must be a non-empty list");
   m.has_double = m.has_float = false;

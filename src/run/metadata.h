@@ -3,6 +3,7 @@
 // Reading it is how `offsetgen check` knows what a file was made from; nothing else is needed.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -24,7 +25,10 @@ struct FileMetadata {
   int order = 1;                         // the order the file was built with
   int graded_order = 0;                  // order of its graded walls; 0 when not recorded
   std::optional<std::string> thickness;  // --thickness (total wall thickness), if any
-  bool has_double = true;                // C precisions present
+  // A mapped lattice (--map): its map and domain box; the functions take physical x, y, z there.
+  std::optional<std::string> map;
+  std::optional<std::array<std::array<double, 3>, 2>> domain;
+  bool has_double = true;  // C precisions present
   bool has_float = false;
   double gradient_bound = 0;       // the safeguard's M (natural units)
   std::map<std::string, int> ops;  // per function, when present

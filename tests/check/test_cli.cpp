@@ -4,6 +4,8 @@
 #include "run/process.h"
 
 #include <gtest/gtest.h>
+
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
@@ -304,6 +306,37 @@ TEST_F(CheckCli, AWgslSnippetWithoutDawnFailsNamingIt) {
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("FAIL   compile"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("no-webgpu-here"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace offsetgen::check
+
+namespace offsetgen::check {
+namespace {
+
+// A mapped file (--map) is checked in a cube inside its domain, in physical units: its walls converge
+// at the method's order there, and a misprinted 2 pi / 5 (the radial cells' wave number) fails.
+TEST(CheckMapped, AMappedHeaderIsMeasuredInItsDomainAndAMisprintFails) {
+  const std::string dir = testing::scratch_dir("check-mapped");
+  const std::string header = dir + "/tube.h";
+  auto g = testing::run_offsetgen({"generate", "--surface", "gyroid", "--map", "cylindrical:12,5,5", "--domain",
+                                   "10,-5,0:20,5,10", "--order", "4", "-o", header});
+  ASSERT_EQ(g.exit_code, 0) << g.output;
+  auto r = testing::run_offsetgen({"check", header});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("order shell"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("all checks passed"), std::string::npos) << r.output;
+  // 2 pi / 5 -> 2.0025 pi / 5, the first occurrence in _offset's body only.
+  std::string text = testing::read_text(header);
+  const size_t body = text.find("gyroid_cylindrical_o4_offset(double");
+  ASSERT_NE(body, std::string::npos);
+  const size_t at = text.find("1.2566370614359172", body);
+  ASSERT_NE(at, std::string::npos) << "no 2 pi / 5 in _offset";
+  text.replace(at, 18, "1.2582078577627121");
+  const std::string bad = dir + "/bad.h";
+  std::ofstream(bad) << text;
+  r = testing::run_offsetgen({"check", bad});
+  EXPECT_EQ(r.exit_code, 1) << r.output;
 }
 
 }  // namespace
