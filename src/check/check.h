@@ -1,15 +1,14 @@
-// `offsetgen check FILE`: the second stage. Reads the file's metadata, rebuilds the symbolic model,
-// compiles and loads the code, compares values with a 40-digit evaluation, measures the wall
-// thickness (paper section 5.2.1) and judges the numbers.
+// `offsetgen check FILE`: the second stage. Reads the file's metadata, has the runner of its target
+// (run/runner.h) compile, load or launch it, rebuilds the symbolic model, compares values with a
+// 40-digit evaluation, measures the wall thickness (paper section 5.2.1) and judges the numbers.
 #pragma once
 
-#include "check/compile.h"
 #include "check/density_check.h"
-#include "check/glsl_compile.h"
 #include "check/lipschitz.h"
-#include "check/metadata.h"
 #include "check/thickness.h"
 #include "check/value_check.h"
+#include "run/metadata.h"
+#include "run/runner.h"
 
 #include <map>
 #include <optional>
@@ -51,12 +50,11 @@ struct Verdict {
 
 struct CheckReport {
   std::string file;
-  FileMetadata meta;
+  run::FileMetadata meta;
   std::vector<std::string> warnings;
   std::string surface_title;
-  std::string toolchain;
-  CompileResult compile;                // C files
-  std::vector<GlslCompileResult> glsl;  // GLSL files
+  run::Prepared prepared;  // what the file's runner compiled, loaded or launched (run/runner.h)
+  run::ValueWords words;   // how the report names its value check
   std::optional<ValueReport> values;
   std::optional<ThicknessReport> thickness;
   bool thickness_float_only = false;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace offsetgen::check {
 namespace {
@@ -25,7 +26,7 @@ constexpr std::array<double, 6> kGaussWeights = {0.085662246189585178, 0.1803807
 // range. `r_error`/`r_worst`: where the largest relative difference goes.
 template <typename T>
 void check_relations(T (*density)(T), T (*thickness_for_density)(T), T (*network_density)(T),
-                     T (*offset_for_density)(T), const FileMetadata& meta, const density::DensityModel& m,
+                     T (*offset_for_density)(T), const run::FileMetadata& meta, const density::DensityModel& m,
                      double& r_error, std::string& r_worst, DensityReport& r) {
   const char* suffix = sizeof(T) == sizeof(float) ? "f" : "";
   auto compare = [&](const char* name, double argument, T emitted, double expected) {
@@ -77,10 +78,147 @@ void check_relations(T (*density)(T), T (*thickness_for_density)(T), T (*network
   must_be_nan("offset_for_density", kNaN, offset_for_density(nan));
 }
 
+// What every volume-fraction measurement of one file shares: its functions, the field's slope bound
+// and the band that holds every sign change.
+struct FractionContext {
+  const run::LoadedFunctions& f;
+  const run::FileMetadata& meta;
+  const DensityCheckOptions& o;
+
+  // |phi(p, h) - F(p)| <= M |h| (natural units) for both methods: the band holds every sign change.
+  double band_for(double h_cell) const { return meta.gradient_bound * meta.scale * std::fabs(h_cell) * (1 + 1e-9); }
+  VolumeFractionSetup setup() const {
+    VolumeFractionSetup s;
+    s.field = [f = f.field](const double* p) { return f(p); };
+    s.field_slope_bound = meta.scale * meta.gradient_bound;  // >= |grad F| in cell units
+    return s;
+  }
+  void progress(const std::string& what) const {
+    if (o.progress) o.progress(what);
+  }
+};
+
+// The sheet of each requested rho: _shell at t = thickness_for_density(rho).
+void measure_sheets(const FractionContext& c, const density::DensityModel& model, DensityReport& r) {
+  for (double rho : c.o.sheet) {
+    if (!(rho <= model.sheet_density_limit())) {
+      r.skipped.push_back(fmt::format("sheet rho = {:g}: above rho_max = {:.6f} (t/2 beyond the curvature limit)", rho,
+                                      model.sheet_density_limit()));
+      continue;
+    }
+    c.progress(fmt::format("sheet at rho = {:g}", rho));
+    const double t = c.f.thickness_for_density(rho);
+    VolumeFractionSetup s = c.setup();
+    s.g = [shell = c.f.shell, t](const double* p) { return shell(p, t); };
+    s.band = c.band_for(t / 2);
+    s.scan_step = t / 4;  // a wall is at least t long along any column through it
+    DensityRow row{"sheet", rho, t, measure_volume_fraction(s, c.o.sampling), 0};
+    row.deviation = row.measured.value - rho;
+    r.rows.push_back(row);
+  }
+}
+
+// The network of each requested rho: _offset at h = offset_for_density(rho).
+void measure_networks(const FractionContext& c, const density::DensityModel& model, DensityReport& r) {
+  for (double rho : c.o.network) {
+    if (!(rho >= model.network_density_min() && rho <= model.network_density_max())) {
+      r.skipped.push_back(fmt::format("network rho = {:g}: outside [{:.6f}, {:.6f}] (|h| beyond the curvature limit)",
+                                      rho, model.network_density_min(), model.network_density_max()));
+      continue;
+    }
+    c.progress(fmt::format("network at rho = {:g}", rho));
+    const double h = c.f.offset_for_density(rho);
+    VolumeFractionSetup s = c.setup();
+    s.g = [offset = c.f.offset, h](const double* p) { return offset(p, h); };
+    s.band = c.band_for(h);
+    s.outside_follows_field = true;
+    // The network's features along a column are no shorter than about the smallest radius of
+    // curvature h_max (a smaller one would put a focal point inside |h| <= h_max): a fraction of it.
+    s.scan_step = std::min(1.0 / 128, model.offset_limit() / 8);
+    DensityRow row{"network", rho, h, measure_volume_fraction(s, c.o.sampling), 0};
+    row.deviation = row.measured.value - rho;
+    r.rows.push_back(row);
+  }
+}
+
+// _wall, the sheet of the file's own --density.
+void measure_wall(const FractionContext& c, DensityReport& r) {
+  const run::FileMetadata& meta = c.meta;
+  c.progress(fmt::format("_wall at rho = {:g}", *meta.wall_density));
+  const double t = *meta.wall_thickness;
+  VolumeFractionSetup s = c.setup();
+  s.g = [wall = c.f.wall](const double* p) { return wall(p); };
+  s.band = c.band_for(t / 2);
+  s.scan_step = t / 4;
+  DensityRow row{"wall", *meta.wall_density, t, measure_volume_fraction(s, c.o.sampling), 0};
+  row.deviation = row.measured.value - *meta.wall_density;
+  r.rows.push_back(row);
+}
+
+// The least and greatest rho(p) of the block on a grid of 1/8 cell.
+std::pair<double, double> block_density_range(ThicknessFunction& rho, const std::array<int, 3>& block) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i <= 8 * block[0]; ++i)
+    for (int j = 0; j <= 8 * block[1]; ++j)
+      for (int k = 0; k <= 8 * block[2]; ++k) {
+        const double p[3] = {i / 8.0, j / 8.0, k / 8.0};
+        const double v = rho(p);
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+  return {lo, hi};
+}
+
+// The mean of rho over cell (i, j, k): 6-point Gauss-Legendre per axis.
+double cell_mean_density(ThicknessFunction& rho, int i, int j, int k) {
+  double mean = 0;
+  for (size_t a = 0; a < 6; ++a)
+    for (size_t b = 0; b < 6; ++b)
+      for (size_t c = 0; c < 6; ++c) {
+        const double p[3] = {i + kGaussNodes[a], j + kGaussNodes[b], k + kGaussNodes[c]};
+        mean += kGaussWeights[a] * kGaussWeights[b] * kGaussWeights[c] * rho(p);
+      }
+  return mean;
+}
+
+// A density field's _graded, cell by cell of the block, against the mean rho each cell requests.
+void measure_field_cells(const FractionContext& c, const density::DensityModel& model, const GiNaC::ex& density_field,
+                         DensityReport& r) {
+  r.field = c.meta.density_field;
+  r.block = c.o.block;
+  ThicknessFunction rho(density_field, 3);
+  // The thinnest and thickest wall in the block, for the scan step and the band.
+  const auto [lo, hi] = block_density_range(rho, c.o.block);
+  const double t_lo = model.sheet_thickness(std::clamp(lo, 1e-6, model.sheet_density_limit()));
+  const double t_hi = model.sheet_thickness(std::clamp(hi, 1e-6, model.sheet_density_limit()));
+  for (int i = 0; i < c.o.block[0]; ++i)
+    for (int j = 0; j < c.o.block[1]; ++j)
+      for (int k = 0; k < c.o.block[2]; ++k) {
+        c.progress(fmt::format("density field, cell ({}, {}, {})", i, j, k));
+        DensityCellRow row;
+        row.cell = {i, j, k};
+        row.requested = cell_mean_density(rho, i, j, k);
+        VolumeFractionSetup s = c.setup();
+        s.g = [graded = c.f.graded](const double* p) { return graded(p); };
+        s.band = c.band_for(t_hi / 2);
+        s.scan_step = t_lo / 4;
+        s.origin = {double(i), double(j), double(k)};
+        s.periodic = false;  // the wall's thickness changes across the cell
+        VolumeFractionOptions sampling = c.o.sampling;
+        sampling.seed += unsigned(1 + i + 16 * (j + 16 * k));  // independent shifts per cell
+        // The tent transform folds the grid in two: keep at least 16 columns per half side.
+        sampling.grid = std::max(sampling.grid, kMinimumCellGrid);
+        row.measured = measure_volume_fraction(s, sampling);
+        row.deviation = row.measured.value - row.requested;
+        r.cells.push_back(row);
+      }
+}
+
 }  // namespace
 
-DensityReport measure_density(const LoadedFunctions& f, const FileMetadata& meta, const density::DensityModel& model,
-                              const std::optional<GiNaC::ex>& density_field, const DensityCheckOptions& o) {
+DensityReport measure_density(const run::LoadedFunctions& f, const run::FileMetadata& meta,
+                              const density::DensityModel& model, const std::optional<GiNaC::ex>& density_field,
+                              const DensityCheckOptions& o) {
   DensityReport r;
   r.tolerance = o.tolerance;
   r.cell_tolerance = o.cell_tolerance;
@@ -98,112 +236,11 @@ DensityReport measure_density(const LoadedFunctions& f, const FileMetadata& meta
         "volume fractions: the file has no double functions (--precision float); measured in double only");
     return r;
   }
-
-  const double slope = meta.scale * meta.gradient_bound;  // >= |grad F| in cell units
-  // |phi(p, h) - F(p)| <= M |h| (natural units) for both methods: the band holds every sign change.
-  auto band_for = [&](double h_cell) { return meta.gradient_bound * meta.scale * std::fabs(h_cell) * (1 + 1e-9); };
-  auto base = [&](VolumeFractionSetup& s) {
-    s.field = [&f](const double* p) { return f.field(p); };
-    s.field_slope_bound = slope;
-  };
-  auto progress = [&o](const std::string& what) {
-    if (o.progress) o.progress(what);
-  };
-
-  for (double rho : o.sheet) {
-    if (!(rho <= model.sheet_density_limit())) {
-      r.skipped.push_back(fmt::format("sheet rho = {:g}: above rho_max = {:.6f} (t/2 beyond the curvature limit)", rho,
-                                      model.sheet_density_limit()));
-      continue;
-    }
-    progress(fmt::format("sheet at rho = {:g}", rho));
-    const double t = f.thickness_for_density(rho);
-    VolumeFractionSetup s;
-    base(s);
-    s.g = [&f, t](const double* p) { return f.shell(p, t); };
-    s.band = band_for(t / 2);
-    s.scan_step = t / 4;  // a wall is at least t long along any column through it
-    DensityRow row{"sheet", rho, t, measure_volume_fraction(s, o.sampling), 0};
-    row.deviation = row.measured.value - rho;
-    r.rows.push_back(row);
-  }
-  for (double rho : o.network) {
-    if (!(rho >= model.network_density_min() && rho <= model.network_density_max())) {
-      r.skipped.push_back(fmt::format("network rho = {:g}: outside [{:.6f}, {:.6f}] (|h| beyond the curvature limit)",
-                                      rho, model.network_density_min(), model.network_density_max()));
-      continue;
-    }
-    progress(fmt::format("network at rho = {:g}", rho));
-    const double h = f.offset_for_density(rho);
-    VolumeFractionSetup s;
-    base(s);
-    s.g = [&f, h](const double* p) { return f.offset(p, h); };
-    s.band = band_for(h);
-    s.outside_follows_field = true;
-    // The network's features along a column are no shorter than about the smallest radius of
-    // curvature h_max (a smaller one would put a focal point inside |h| <= h_max): a fraction of it.
-    s.scan_step = std::min(1.0 / 128, model.offset_limit() / 8);
-    DensityRow row{"network", rho, h, measure_volume_fraction(s, o.sampling), 0};
-    row.deviation = row.measured.value - rho;
-    r.rows.push_back(row);
-  }
-  if (meta.wall_density && f.wall) {
-    progress(fmt::format("_wall at rho = {:g}", *meta.wall_density));
-    const double t = *meta.wall_thickness;
-    VolumeFractionSetup s;
-    base(s);
-    s.g = [&f](const double* p) { return f.wall(p); };
-    s.band = band_for(t / 2);
-    s.scan_step = t / 4;
-    DensityRow row{"wall", *meta.wall_density, t, measure_volume_fraction(s, o.sampling), 0};
-    row.deviation = row.measured.value - *meta.wall_density;
-    r.rows.push_back(row);
-  }
-
-  if (density_field && f.graded) {
-    r.field = meta.density_field;
-    r.block = o.block;
-    ThicknessFunction rho(*density_field, 3);
-    // The thinnest and thickest wall in the block, for the scan step and the band.
-    double lo = INFINITY, hi = -INFINITY;
-    for (int i = 0; i <= 8 * o.block[0]; ++i)
-      for (int j = 0; j <= 8 * o.block[1]; ++j)
-        for (int k = 0; k <= 8 * o.block[2]; ++k) {
-          const double p[3] = {i / 8.0, j / 8.0, k / 8.0};
-          const double v = rho(p);
-          lo = std::min(lo, v);
-          hi = std::max(hi, v);
-        }
-    const double t_lo = model.sheet_thickness(std::clamp(lo, 1e-6, model.sheet_density_limit()));
-    const double t_hi = model.sheet_thickness(std::clamp(hi, 1e-6, model.sheet_density_limit()));
-    for (int i = 0; i < o.block[0]; ++i)
-      for (int j = 0; j < o.block[1]; ++j)
-        for (int k = 0; k < o.block[2]; ++k) {
-          progress(fmt::format("density field, cell ({}, {}, {})", i, j, k));
-          DensityCellRow row;
-          row.cell = {i, j, k};
-          for (size_t a = 0; a < 6; ++a)
-            for (size_t b = 0; b < 6; ++b)
-              for (size_t c = 0; c < 6; ++c) {
-                const double p[3] = {i + kGaussNodes[a], j + kGaussNodes[b], k + kGaussNodes[c]};
-                row.requested += kGaussWeights[a] * kGaussWeights[b] * kGaussWeights[c] * rho(p);
-              }
-          VolumeFractionSetup s;
-          base(s);
-          s.g = [&f](const double* p) { return f.graded(p); };
-          s.band = band_for(t_hi / 2);
-          s.scan_step = t_lo / 4;
-          s.origin = {double(i), double(j), double(k)};
-          s.periodic = false;  // the wall's thickness changes across the cell
-          VolumeFractionOptions sampling = o.sampling;
-          sampling.seed += unsigned(1 + i + 16 * (j + 16 * k));  // independent shifts per cell
-          // The tent transform folds the grid in two: keep at least 16 columns per half side.
-          sampling.grid = std::max(sampling.grid, kMinimumCellGrid);
-          row.measured = measure_volume_fraction(s, sampling);
-          row.deviation = row.measured.value - row.requested;
-          r.cells.push_back(row);
-        }
-  }
+  const FractionContext context{f, meta, o};
+  measure_sheets(context, model, r);
+  measure_networks(context, model, r);
+  if (meta.wall_density && f.wall) measure_wall(context, r);
+  if (density_field && f.graded) measure_field_cells(context, model, *density_field, r);
   return r;
 }
 

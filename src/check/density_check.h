@@ -6,10 +6,10 @@
 // block against the field's mean over that cell.
 #pragma once
 
-#include "check/compile.h"
-#include "check/metadata.h"
 #include "check/volume_fraction.h"
 #include "density/density_model.h"
+#include "run/c_library.h"
+#include "run/metadata.h"
 
 #include <ginac/ginac.h>
 #include <nlohmann/json.hpp>
@@ -68,7 +68,7 @@ struct DensityReport {
 
 // `model`: the density model of the file's surface (the rebuilt reference's); `density_field`: rho(x)
 // of the file's _graded, when it has one.
-DensityReport measure_density(const LoadedFunctions& functions, const FileMetadata& meta,
+DensityReport measure_density(const run::LoadedFunctions& functions, const run::FileMetadata& meta,
                               const density::DensityModel& model, const std::optional<GiNaC::ex>& density_field,
                               const DensityCheckOptions& options);
 

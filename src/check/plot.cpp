@@ -1,7 +1,7 @@
 #include "check/plot.h"
 
-#include "check/process.h"
 #include "emit/file_writer.h"
+#include "run/process.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -37,7 +37,8 @@ std::string find_plot_script(const std::string& explicit_path) {
   if (!explicit_path.empty()) return is_file(explicit_path) ? explicit_path : "";
   if (const char* env = std::getenv("OFFSETGEN_PLOT_SCRIPT"); env != nullptr && *env != '\0')
     return is_file(env) ? std::string(env) : "";
-  for (const fs::path& share : {executable_dir() / ".." / "share", executable_dir() / "share"}) {  // installed, build tree
+  for (const fs::path& share :
+       {executable_dir() / ".." / "share", executable_dir() / "share"}) {  // installed, build tree
     const fs::path script = share / "offsetgen" / "tools" / "plot_convergence.py";
     if (is_file(script)) return fs::weakly_canonical(script).string();
   }
@@ -48,18 +49,12 @@ std::string find_plot_script(const std::string& explicit_path) {
   return "";
 }
 
-std::string find_python() {
-  if (const char* env = std::getenv("OFFSETGEN_PYTHON"); env != nullptr && *env != '\0') return env;
-  if (::access("/usr/bin/python3", X_OK) == 0) return "/usr/bin/python3";
-  return find_on_path("python3");
-}
-
 void render_plot(const nlohmann::json& spec, const std::string& png, const std::string& script) {
   if (script.empty())
     throw InputError(
         "--plot: tools/plot_convergence.py not found (looked at --plot-script, $OFFSETGEN_PLOT_SCRIPT, "
         "<prefix>/share/offsetgen/tools and the source tree); pass its path with --plot-script");
-  const std::string python = find_python();
+  const std::string python = run::find_python();
   if (python.empty()) throw InputError("--plot: no python3 found (Debian: apt-get install python3-matplotlib)");
   std::string pattern = (fs::temp_directory_path() / "offsetgen-plot-XXXXXX.json").string();
   int fd = ::mkstemps(pattern.data(), 5);
@@ -72,7 +67,7 @@ void render_plot(const nlohmann::json& spec, const std::string& png, const std::
   // The script draws into a scratch file; the PNG is then written by offsetgen's own rules (normal
   // mode, symlinks written through, no device or FIFO clobbered).
   const std::string scratch_png = pattern.substr(0, pattern.size() - 5) + ".png";
-  ProcessResult r = run_process({python, script, pattern, scratch_png});
+  run::ProcessResult r = run::run_process({python, script, pattern, scratch_png});
   std::error_code ec;
   fs::remove(pattern, ec);
   std::string bytes;

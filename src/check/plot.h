@@ -12,10 +12,6 @@ namespace offsetgen::check {
 // the source tree's tools/plot_convergence.py. "" when none exists.
 std::string find_plot_script(const std::string& explicit_path);
 
-// The Python interpreter: $OFFSETGEN_PYTHON, else /usr/bin/python3 (Debian's, with
-// python3-matplotlib), else python3 on PATH.
-std::string find_python();
-
 // Writes `spec` (plot_convergence.py's input schema) to a scratch file and renders `png`.
 // Throws InputError with the script's output when it cannot.
 void render_plot(const nlohmann::json& spec, const std::string& png, const std::string& script);

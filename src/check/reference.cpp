@@ -18,7 +18,7 @@ bool close(double a, double b, double rel) { return std::fabs(a - b) <= rel * st
 
 }  // namespace
 
-std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
+std::unique_ptr<Reference> rebuild_reference(const run::FileMetadata& meta) {
   GenerationRequest request;
   if (meta.surface) request.surface = *meta.surface;
   if (meta.expression) request.expression = *meta.expression;
@@ -30,7 +30,7 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
   request.density = meta.wall_density;
   request.density_field = meta.density_field;
   // The file's own language: its names need only be valid there.
-  request.languages = {kind_name(meta.kind)};
+  request.languages = {meta.language};
   const std::string default_prefix = meta.surface ? fmt::format("{}_o{}", *meta.surface, meta.order) : "";
   if (meta.expression || meta.prefix != default_prefix) request.name = meta.prefix;
   if (meta.expression && meta.prefix.empty()) request.name = "surface";
@@ -80,7 +80,7 @@ std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta) {
   return ref;
 }
 
-GiNaC::ex parse_thickness(const std::string& text, const FileMetadata& meta,
+GiNaC::ex parse_thickness(const std::string& text, const run::FileMetadata& meta,
                           const std::map<std::string, std::string>& extra) {
   std::map<std::string, std::string> params = meta.params;
   for (const auto& [k, v] : extra) params[k] = v;

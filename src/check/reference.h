@@ -2,9 +2,9 @@
 // (GenerationRequest -> Generation), plus consistency checks between the two.
 #pragma once
 
-#include "check/metadata.h"
 #include "lowering/program.h"
 #include "pipeline/generate.h"
+#include "run/metadata.h"
 
 #include <ginac/ginac.h>
 
@@ -22,7 +22,7 @@ struct Reference {
 
 // Throws InputError when the metadata names something the current offsetgen cannot rebuild (unknown
 // surface, expression that does not parse, ...), saying that the metadata is the problem.
-std::unique_ptr<Reference> rebuild_reference(const FileMetadata& meta);
+std::unique_ptr<Reference> rebuild_reference(const run::FileMetadata& meta);
 
 // A wall thickness t(x) in cell units as a double-precision program (inputs x, y[, z]; output "t").
 class ThicknessFunction {
@@ -43,7 +43,7 @@ class ThicknessFunction {
 
 // Parses a --thickness expression for the surface of `meta` (parameters: the file's, then `extra`).
 // Throws InputError with the column when it does not parse.
-GiNaC::ex parse_thickness(const std::string& text, const FileMetadata& meta,
+GiNaC::ex parse_thickness(const std::string& text, const run::FileMetadata& meta,
                           const std::map<std::string, std::string>& extra);
 
 }  // namespace offsetgen::check

@@ -115,7 +115,7 @@ std::vector<double> means(const std::vector<SweepRow>& rows, ErrorStats SweepRow
 
 }  // namespace
 
-Probe make_probe(const LoadedFunctions& f) {
+Probe make_probe(const run::LoadedFunctions& f) {
   Probe probe;
   probe.dims = f.dims;
   const int dims = f.dims;

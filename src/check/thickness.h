@@ -7,9 +7,9 @@
 // three measures, see GradedRow.
 #pragma once
 
-#include "check/compile.h"
 #include "check/convergence.h"
 #include "check/reference.h"
+#include "run/c_library.h"
 
 #include <array>
 #include <cmath>
@@ -35,7 +35,7 @@ struct Probe {
   // Empty: the wall is phi(q, s t(q)/2), the thickness read at q.
   std::function<double(const double*, double)> graded_wall;
 };
-Probe make_probe(const LoadedFunctions& functions);
+Probe make_probe(const run::LoadedFunctions& functions);
 
 using Point = std::array<double, 3>;
 
@@ -55,8 +55,8 @@ struct ErrorStats {
   int missed = 0;   // rays without a crossing within reach (or with a zero normal)
   int skipped = 0;  // points not used at all, with the reason in `skipped_reason` (e.g. target <= 0)
   std::string skipped_reason;
-  int singular = 0;   // points skipped because grad F vanishes where the ray starts or ends (a crossing
-                      // or critical point of the zero set: no offset of order m exists there)
+  int singular = 0;  // points skipped because grad F vanishes where the ray starts or ends (a crossing
+                     // or critical point of the zero set: no offset of order m exists there)
   double mean = NAN;
   double max = NAN;
   Point worst{};  // the sample point with the largest error

@@ -73,7 +73,7 @@ struct Sample {
   std::optional<double> graded, graded_scale, t_of_x;
 };
 
-std::vector<Sample> reference_samples(const Reference& reference, const FileMetadata& meta,
+std::vector<Sample> reference_samples(const Reference& reference, const run::FileMetadata& meta,
                                       const std::optional<GiNaC::ex>& thickness, const ValueCheckOptions& options) {
   const Generation& g = reference.generation;
   OffsetReference hp(g.surface, *g.construction, options.digits);
@@ -190,7 +190,7 @@ void compare_scalar(const Scalar<T>& f, const char* suffix, const std::vector<Sa
 
 // The batch functions: one call over all points, coordinates as separate arrays.
 template <typename T>
-void compare_batch(BatchFunction<T> offset_n, BatchFunction<T> shell_n, const char* suffix,
+void compare_batch(run::BatchFunction<T> offset_n, run::BatchFunction<T> shell_n, const char* suffix,
                    const std::vector<Sample>& samples, int dims, double tol, std::vector<FunctionDeviation>& out) {
   const bool is_float = std::is_same<T, float>::value;
   const size_t n = samples.size();
@@ -218,19 +218,22 @@ void compare_batch(BatchFunction<T> offset_n, BatchFunction<T> shell_n, const ch
   }
 }
 
-// A runner (GLSL in float32, NumPy in float64): one run per function over all points.
-template <typename T, typename Runner>
-void compare_runner(const Runner& run, const std::string& runner_label, const std::string& suffix, bool has_graded,
-                    const std::vector<Sample>& samples, int dims, double tol, double normal_tol,
-                    std::vector<FunctionDeviation>& out) {
+// A runner's lane (GLSL in float32, NumPy in float64, ...): one run per function over all points,
+// whose coordinates are rounded to the lane's precision T.
+template <typename T>
+void compare_lane(const run::Lane& lane, const std::vector<Sample>& samples, int dims, double tol, double normal_tol,
+                  std::vector<FunctionDeviation>& out) {
   const bool is_float = std::is_same<T, float>::value;
-  const std::string label = runner_label + " ";
+  const std::string label = lane.label + " ";
+  const std::string& suffix = lane.suffix;
+  const bool has_graded = lane.graded;
   auto inputs = [&](bool with_t) {
-    std::vector<std::array<T, 4>> in;
+    std::vector<run::Point> in;
     for (const Sample& s : samples) {
-      std::array<T, 4> q{};
-      for (int k = 0; k < dims; ++k) q[static_cast<size_t>(k)] = static_cast<T>(s.p[static_cast<size_t>(k)]);
-      q[static_cast<size_t>(dims)] = static_cast<T>(with_t ? s.t : s.h);
+      run::Point q{};
+      for (int k = 0; k < dims; ++k)
+        q[static_cast<size_t>(k)] = static_cast<double>(static_cast<T>(s.p[static_cast<size_t>(k)]));
+      q[static_cast<size_t>(dims)] = static_cast<double>(static_cast<T>(with_t ? s.t : s.h));
       in.push_back(q);
     }
     return in;
@@ -238,28 +241,28 @@ void compare_runner(const Runner& run, const std::string& runner_label, const st
   const auto at_h = inputs(false), at_t = inputs(true);
   {
     Accumulator a(label + "field" + suffix, is_float, kFieldMeasure, tol);
-    const auto v = run("field", at_h, 1);
+    const auto v = lane.evaluate("field", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].field) / samples[i].grad_norm, samples[i].p);
     out.push_back(a.done());
   }
   {
     Accumulator a(label + "offset" + suffix, is_float, kOffsetMeasure, tol);
-    const auto v = run("offset", at_h, 1);
+    const auto v = lane.evaluate("offset", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].phi) / samples[i].grad_norm, with(samples[i].p, samples[i].h));
     out.push_back(a.done());
   }
   {
     Accumulator a(label + "shell" + suffix, is_float, kShellMeasure, tol);
-    const auto v = run("shell", at_t, 1);
+    const auto v = lane.evaluate("shell", at_t, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       a.add(std::fabs(double(v[i]) - samples[i].shell) / samples[i].shell_scale, with(samples[i].p, samples[i].t));
     out.push_back(a.done());
   }
   {
     Accumulator a(label + "normal" + suffix, is_float, kNormalMeasure, normal_tol);
-    const auto v = run("normal", at_h, dims);
+    const auto v = lane.evaluate("normal", at_h, dims);
     for (size_t i = 0; i < samples.size(); ++i) {
       if (!samples[i].normal) continue;
       double e2 = 0;
@@ -273,7 +276,7 @@ void compare_runner(const Runner& run, const std::string& runner_label, const st
   }
   if (has_graded) {
     Accumulator a(label + "graded" + suffix, is_float, kGradedMeasure, tol);
-    const auto v = run("graded", at_h, 1);
+    const auto v = lane.evaluate("graded", at_h, 1);
     for (size_t i = 0; i < samples.size(); ++i)
       if (samples[i].graded)
         a.add(std::fabs(double(v[i]) - *samples[i].graded) / *samples[i].graded_scale,
@@ -284,7 +287,7 @@ void compare_runner(const Runner& run, const std::string& runner_label, const st
 
 }  // namespace
 
-ValueReport check_values(const Implementations& impl, const Reference& reference, const FileMetadata& meta,
+ValueReport check_values(const Implementations& impl, const Reference& reference, const run::FileMetadata& meta,
                          const std::optional<GiNaC::ex>& thickness, const ValueCheckOptions& options) {
   const int dims = meta.dims;
   const std::vector<Sample> samples = reference_samples(reference, meta, thickness, options);
@@ -292,7 +295,7 @@ ValueReport check_values(const Implementations& impl, const Reference& reference
   report.tolerance = options.tolerance;
   report.digits = options.digits;
   if (impl.c) {
-    const LoadedFunctions& f = *impl.c;
+    const run::LoadedFunctions& f = *impl.c;
     compare_scalar<double>({f.field, f.offset, f.shell, f.normal, thickness ? f.graded : nullptr}, "", samples, dims,
                            options.tolerance, options.normal_tolerance, report.functions);
     compare_batch<double>(f.offset_n, f.shell_n, "", samples, dims, options.tolerance, report.functions);
@@ -300,14 +303,15 @@ ValueReport check_values(const Implementations& impl, const Reference& reference
                           dims, options.float_tolerance, options.float_normal_tolerance, report.functions);
     compare_batch<float>(f.offsetf_n, f.shellf_n, "f", samples, dims, options.float_tolerance, report.functions);
   }
-  if (impl.float64)
-    compare_runner<double>(impl.float64, impl.float64_label, "", impl.float64_graded, samples, dims, options.tolerance,
-                           options.normal_tolerance, report.functions);
-  if (impl.float32)
-    compare_runner<float>(impl.float32, impl.float32_label, impl.float32_suffix, impl.float32_graded, samples, dims,
-                          options.float_tolerance, options.float_normal_tolerance, report.functions);
-
-  report.has_double = (impl.c && impl.c->offset != nullptr) || bool(impl.float64);
+  for (const run::Lane& lane : impl.lanes) {
+    if (lane.is_float)
+      compare_lane<float>(lane, samples, dims, options.float_tolerance, options.float_normal_tolerance,
+                          report.functions);
+    else
+      compare_lane<double>(lane, samples, dims, options.tolerance, options.normal_tolerance, report.functions);
+  }
+  report.has_double = (impl.c && impl.c->offset != nullptr) ||
+                      std::any_of(impl.lanes.begin(), impl.lanes.end(), [](const run::Lane& l) { return !l.is_float; });
   report.pass = !report.functions.empty();
   for (const auto& d : report.functions) {
     report.pass = report.pass && d.pass;
@@ -323,8 +327,9 @@ ValueReport check_values(const Implementations& impl, const Reference& reference
   return report;
 }
 
-ValueReport check_values(const LoadedFunctions& functions, const Reference& reference, const FileMetadata& meta,
-                         const std::optional<GiNaC::ex>& thickness, const ValueCheckOptions& options) {
+ValueReport check_values(const run::LoadedFunctions& functions, const Reference& reference,
+                         const run::FileMetadata& meta, const std::optional<GiNaC::ex>& thickness,
+                         const ValueCheckOptions& options) {
   Implementations impl;
   impl.c = &functions;
   return check_values(impl, reference, meta, thickness, options);

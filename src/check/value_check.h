@@ -5,9 +5,10 @@
 // the deviation moves the zero set, |delta phi| / |grad F| in cell units; for the normal, |delta n|.
 #pragma once
 
-#include "check/compile.h"
-#include "check/metadata.h"
 #include "check/reference.h"
+#include "run/c_library.h"
+#include "run/metadata.h"
+#include "run/runner.h"
 
 #include <array>
 #include <functional>
@@ -25,23 +26,23 @@ struct ValueCheckOptions {
   // The limits, from the largest deviations over the 9 catalog surfaces at orders 1-4, five of them at
   // orders 5-6 and five user expressions (README, "Checking accuracy"), with a margin of 8x or more:
   // double values 1.7e-14, double normal 7.9e-9, float32 values 2.5e-5, float32 normal 8.3e-5.
-  double tolerance = 1e-12;               // double functions: max zero-set shift (cell units)
-  double normal_tolerance = 1e-6;         // double normal: max |delta n|
-  double float_tolerance = 2e-4;          // float32 (C float twins, GLSL): max zero-set shift
-  double float_normal_tolerance = 1e-3;   // float32 normal: max |delta n|
+  double tolerance = 1e-12;              // double functions: max zero-set shift (cell units)
+  double normal_tolerance = 1e-6;        // double normal: max |delta n|
+  double float_tolerance = 2e-4;         // float32 (C float twins, GLSL): max zero-set shift
+  double float_normal_tolerance = 1e-3;  // float32 normal: max |delta n|
   int digits = 40;
   std::function<void(int done, int total)> progress;  // may be empty
 };
 
 struct FunctionDeviation {
-  std::string function;         // "offset", "shellf", "offset_n", "glsl offset", ...
+  std::string function;  // "offset", "shellf", "offset_n", "glsl offset", ...
   bool is_float = false;
   int points = 0;
-  double max_shift = 0;         // max |delta| / |grad F| (cell units); for the normal: max |delta n|
+  double max_shift = 0;  // max |delta| / |grad F| (cell units); for the normal: max |delta n|
   double mean_shift = 0;
   std::vector<double> worst_point;  // where max_shift occurs (cell units), then h or t when used
-  std::string measure;          // how the shift is defined, for the report
-  double tolerance = 0;         // the limit it is judged against
+  std::string measure;              // how the shift is defined, for the report
+  double tolerance = 0;             // the limit it is judged against
   bool pass = false;
 };
 
@@ -49,47 +50,30 @@ struct ValueReport {
   std::vector<FunctionDeviation> functions;
   double max_shift_double = 0;  // over field, offset, shell, graded and the batch functions (double)
   double max_normal_double = 0;
-  double max_shift_float = 0;   // over the float32 functions (C float, GLSL), normal aside
+  double max_shift_float = 0;  // over the float32 functions (C float, GLSL), normal aside
   double tolerance = 0;
   int digits = 40;
   bool has_double = true;
-  bool pass = false;            // every function within its tolerance
+  bool pass = false;  // every function within its tolerance
 };
 
-// A float32 implementation evaluated at many points at once (the GLSL snippet on llvmpipe):
-// `function` is "field", "offset", "shell", "normal" or "graded"; each input is (x, y, z, h|t) in 3D,
-// (x, y, h|t, 0) in 2D; returns inputs.size() * components floats. Throws std::runtime_error when it
-// cannot run.
-using Float32Runner = std::function<std::vector<float>(const std::string& function,
-                                                       const std::vector<std::array<float, 4>>& inputs,
-                                                       int components)>;
-
-// The same for a float64 implementation (a NumPy module under python3), judged at double tolerances.
-using Float64Runner = std::function<std::vector<double>(
-    const std::string& function, const std::vector<std::array<double, 4>>& inputs, int components)>;
-
-// What to compare: the loaded C functions (may be null), a float32 runner and a float64 runner (each
-// may be empty). A runner's rows are named "<label> <function><suffix>": "glsl offset", "numpy offset",
-// "cuda offsetf" (the suffix of the file's own float names).
+// What to compare: the C functions loaded into this process (may be null), and the lanes of a
+// runner (run/runner.h): one per precision of a shader, module or kernel, rows named
+// "<label> <function><suffix>" ("glsl offset", "numpy offset", "cuda offsetf").
 struct Implementations {
-  const LoadedFunctions* c = nullptr;
-  Float32Runner float32;  // GLSL on llvmpipe; the float functions of CUDA and OpenCL files
-  std::string float32_label = "glsl";
-  std::string float32_suffix;
-  bool float32_graded = false;  // the file has _graded
-  Float64Runner float64;        // NumPy; the double functions of CUDA and OpenCL files
-  std::string float64_label = "numpy";
-  bool float64_graded = false;
+  const run::LoadedFunctions* c = nullptr;
+  std::vector<run::Lane> lanes;
 };
 
 // `thickness` is the graded wall's t(x) when the file has a _graded function.
 ValueReport check_values(const Implementations& implementations, const Reference& reference,
-                         const FileMetadata& meta, const std::optional<GiNaC::ex>& thickness,
+                         const run::FileMetadata& meta, const std::optional<GiNaC::ex>& thickness,
                          const ValueCheckOptions& options);
 
 // The C functions only (the common case).
-ValueReport check_values(const LoadedFunctions& functions, const Reference& reference, const FileMetadata& meta,
-                         const std::optional<GiNaC::ex>& thickness, const ValueCheckOptions& options);
+ValueReport check_values(const run::LoadedFunctions& functions, const Reference& reference,
+                         const run::FileMetadata& meta, const std::optional<GiNaC::ex>& thickness,
+                         const ValueCheckOptions& options);
 
 // 200 points up to order 4, 60 for orders 5-6, 16 above: one 40-digit evaluation of phi costs about
 // 1 ms at order 4, 20 ms at order 6 and 150 ms at order 8 (GiNaC tree walk).

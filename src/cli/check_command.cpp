@@ -22,9 +22,9 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
       "Check an emitted file: compile it (C99 strict, C++17, dlopen), compare its values with a 40-digit\n"
       "evaluation, and measure the wall thickness it produces (paper section 5.2.1). GLSL: glslang compile,\n"
       "then its values on Mesa llvmpipe. NumPy (.py): python3 runs it. CUDA (.cuh): nvcc compiles its host\n"
-      "path. OpenCL C (.cl): pocl (the OpenCL ICD) runs it. The file's kind comes from its metadata, not its name.");
-  cmd->add_option("file", o.file,
-                  "A .h, .glsl, .py, .cuh or .cl file written by `offsetgen generate` (not .hlsl, .wgsl)")
+      "path. OpenCL C (.cl): pocl (the OpenCL ICD) runs it. HLSL: glslang makes SPIR-V, Mesa lavapipe runs it.\n"
+      "WGSL: Dawn runs it. The file's target comes from its metadata, not its name (run/runner.h).");
+  cmd->add_option("file", o.file, "A .h, .glsl, .hlsl, .wgsl, .py, .cuh or .cl file written by `offsetgen generate`")
       ->required();
   cmd->add_option("--h", o.h_list,
                   "Offsets to measure, comma-separated, cell units (default 0.001..0.1, 9 log-spaced)");
@@ -50,7 +50,8 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
   cmd->add_option("--float-tolerance", o.float_tolerance,
                   "Max zero-set shift of the float32 functions (C float twins, GLSL on llvmpipe)")
       ->capture_default_str();
-  cmd->add_option("--normal-tolerance", o.normal_tolerance, "Max |delta n| of the double normal")->capture_default_str();
+  cmd->add_option("--normal-tolerance", o.normal_tolerance, "Max |delta n| of the double normal")
+      ->capture_default_str();
   cmd->add_option("--float-normal-tolerance", o.float_normal_tolerance, "Max |delta n| of the float32 normal")
       ->capture_default_str();
   cmd->add_option("--order-slack", o.order_slack, "Fitted order must reach the expected order minus this");

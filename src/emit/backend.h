@@ -1,6 +1,7 @@
 // A target language is one Backend: its name, file extension, printer hooks and file layout. Its
 // file skeletons live in templates/<name>/. The registry (backend_registry.cpp)
-// lists every backend; nothing else in the pipeline names a language. Modelled on SymForce's
+// lists every backend; nothing else in the pipeline names a language. What runs a target's files
+// (`offsetgen check`) is its Runner, found by the backend's name (run/runner.h). Modelled on SymForce's
 // backends/<lang>/: one config object per output language, holding its printer and its templates.
 #pragma once
 
@@ -92,10 +93,6 @@ class Backend {
                                         const std::vector<Precision>&) const {
     return "";
   }
-
-  // --- Checking ---------------------------------------------------------------------------------
-  // Whether `offsetgen check` can check files of this target.
-  virtual bool checkable() const { return false; }
 };
 
 // Every backend, in --lang all order.

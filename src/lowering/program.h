@@ -22,10 +22,12 @@ enum class Op : uint8_t {
   Abs,
   Call,
   Pow,
-  Atan2,  // Atan2(a, b) = atan2(a, b): the angle of the point (b, a), in (-pi, pi]
   LessEq,
   Greater,
   Select,  // comparisons yield booleans; Select(c, a, b) = c ? a : b
+  // Last: an op's number enters the structural hash, which orders sums and products (and so the
+  // emitted bytes), so new ops go at the end.
+  Atan2,  // Atan2(a, b) = atan2(a, b): the angle of the point (b, a), in (-pi, pi]
 };
 
 // SinPi(a) = sin(pi a) and CosPi(a) = cos(pi a): the half-turn forms (see in_half_turns below).

@@ -519,13 +519,19 @@ std::string format_body(const MeshSummary& m) {
                    b.repaired.empty() ? std::string(", closed") : "; --repair: " + b.repaired, format_box(b.box));
   s += fmt::format("              volume {:.6g} mm^3 (its level set: {:.6g}, {:+.3f}%)\n", b.volume, b.level_set_volume,
                    100 * (b.level_set_volume / b.volume - 1));
-  s += fmt::format(
-      "  lattice:    cells of {:g} mm from the origin ({:.4g}, {:.4g}, {:.4g}) mm (x, y, z of --thickness "
-      "and --density-field count cells from there); wall {:.4g}{} cell; voxel {:.4g} mm ({:.4g} per "
-      "cell{})\n",
-      m.cell_size, b.origin[0], b.origin[1], b.origin[2], m.min_thickness,
-      m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string(), b.voxel,
-      m.cell_size / b.voxel, m.automatic_resolution ? ", automatic" : "");
+  if (!m.map.empty())
+    s += fmt::format("  lattice:    mapped (its cells come from the map); wall {:.4g}{} mm; voxel {:.4g} mm{}\n",
+                     m.min_thickness,
+                     m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string(),
+                     b.voxel, m.automatic_resolution ? " (automatic)" : "");
+  else
+    s += fmt::format(
+        "  lattice:    cells of {:g} mm from the origin ({:.4g}, {:.4g}, {:.4g}) mm (x, y, z of --thickness "
+        "and --density-field count cells from there); wall {:.4g}{} cell; voxel {:.4g} mm ({:.4g} per "
+        "cell{})\n",
+        m.cell_size, b.origin[0], b.origin[1], b.origin[2], m.min_thickness,
+        m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string(), b.voxel,
+        m.cell_size / b.voxel, m.automatic_resolution ? ", automatic" : "");
   if (!m.map.empty())
     s += fmt::format("  map:        {} (x, y, z in mm){}\n", m.map,
                      m.map_region.empty() ? std::string() : "\n              " + m.map_region);

@@ -1,13 +1,12 @@
 #include "mesh/wall_field.h"
 
-#include "check/compile.h"
-#include "check/process.h"
 #include "density/density_model.h"
 #include "density/surface_constants.h"
 #include "lowering/surface_programs.h"
+#include "run/c_library.h"
+#include "run/process.h"
 #include "surfaces/expression_input.h"
 
-#include <dlfcn.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -126,33 +125,24 @@ void WallField::compile() {
   // vectorise; ~8x faster than -O2 for the gyroid at order 4), without contraction into FMA so the
   // values, and the mesh, do not depend on the CPU. -O0 for very large functions, as `check` does.
   const auto start = std::chrono::steady_clock::now();
-  check::Toolchain tools = check::find_toolchain();
-  const bool large = count_ops(generation_.programs.offset) > check::kLargeFunctionOps;
+  run::Toolchain tools = run::find_toolchain();
+  const bool large = count_ops(generation_.programs.offset) > run::kLargeFunctionOps;
   compile_flags_ = large ? "-O0" : "-O3 -march=native -fno-math-errno";
   Scratch scratch;
   const std::string header = generation_.prefix + ".h";
   std::ofstream(scratch.path / header) << generation_.c_header();
   std::ofstream(scratch.path / "wrapper.c") << wrapper_source(header, generation_.prefix);
-  const fs::path library = scratch.path / "wrapper.so";
-  std::vector<std::string> command = tools.c;
-  for (const std::string& flag : check::split_words(compile_flags_)) command.push_back(flag);
-  command.insert(command.end(), {"-std=c99", "-ffp-contract=off", "-fPIC", "-shared", "-I" + scratch.path.string(),
-                                 (scratch.path / "wrapper.c").string(), "-o", library.string(), "-lm"});
-  check::ProcessResult compiled = check::run_process(command);
-  if (!compiled.started || compiled.exit_code != 0)
-    throw std::runtime_error(
-        fmt::format("compiling the generated header failed ({}):\n{}", command.front(), compiled.output));
-  library_ = ::dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (library_ == nullptr) throw std::runtime_error(fmt::format("dlopen: {}", ::dlerror()));
-  offset_n_ = reinterpret_cast<OffsetN>(::dlsym(library_, "offsetgen_mesh_offset_n"));
-  field_ = reinterpret_cast<Field>(::dlsym(library_, "offsetgen_mesh_field"));
+  std::vector<std::string> flags = run::split_words(compile_flags_);
+  flags.push_back("-I" + scratch.path.string());
+  library_ = run::build_shared_object(tools, flags, (scratch.path / "wrapper.c").string(),
+                                      (scratch.path / "wrapper.so").string());
+  offset_n_ = library_->symbol<OffsetN>("offsetgen_mesh_offset_n");
+  field_ = library_->symbol<Field>("offsetgen_mesh_field");
   if (offset_n_ == nullptr || field_ == nullptr) throw std::runtime_error("dlsym: the wrapper lacks its functions");
   compile_seconds_ = seconds_since(start);
 }
 
-WallField::~WallField() {
-  if (library_ != nullptr) ::dlclose(library_);
-}
+WallField::~WallField() = default;
 
 WallField::Worker::Worker(const WallField& field) : input(3) {
   if (field.graded_) thickness = std::make_unique<Evaluator>(field.thickness_program_);

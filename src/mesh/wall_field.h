@@ -1,11 +1,12 @@
 // The solid to mesh as a level set: w(p) < 0 inside the wall between the offset surfaces at -t/2
 // and +t/2. w is evaluated through the functions a user gets: the C header of `generate` (batch
-// API, <prefix>_offset_n), compiled with the system C compiler and loaded with dlopen as `check`
+// API, <prefix>_offset_n), compiled with the system C compiler and loaded with dlopen (run/c_library.h) as `check`
 // does.
 #pragma once
 
 #include "lowering/program.h"
 #include "pipeline/generate.h"
+#include "run/c_library.h"
 
 #include <array>
 #include <cstddef>
@@ -80,7 +81,7 @@ class WallField {
   double lipschitz_ = 0, distance_scale_ = 0;
   double generate_seconds_ = 0, compile_seconds_ = 0;
   std::string compile_flags_;
-  void* library_ = nullptr;
+  std::unique_ptr<run::SharedObject> library_;  // run/c_library.h
   using OffsetN = void (*)(size_t, const double*, const double*, const double*, const double*, double*);
   using Field = double (*)(double, double, double);
   OffsetN offset_n_ = nullptr;

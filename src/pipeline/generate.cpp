@@ -244,7 +244,7 @@ Generation build_generation(const GenerationRequest& request) {
   RequestFacts facts_to_check{&g.surface,
                               g.prefix,
                               method.effective_order(request.order),
-                              method.cost_grows_geometrically(),
+                              &method,
                               requested_backends(request),
                               emits_float(request),
                               &options.thickness,

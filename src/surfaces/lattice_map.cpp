@@ -103,8 +103,11 @@ std::vector<std::string> expand_preset(const Preset& preset, const std::string& 
 // root or fractional power at a zero base, a logarithm at zero, a division by zero, asin or acos at
 // +-1 (their derivatives are infinite).
 void collect_singular_measures(const GiNaC::ex& e, std::vector<GiNaC::ex>& out) {
+  const Symbols& sym = Symbols::get();
+  auto varies = [&](const GiNaC::ex& a) { return a.has(sym.X) || a.has(sym.Y) || a.has(sym.Z); };
   for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
     const GiNaC::ex& node = *it;
+    if (!varies(node)) continue;  // 1/Pi, sqrt(2): constants are never singular
     if (GiNaC::is_a<GiNaC::function>(node)) {
       const std::string name = GiNaC::ex_to<GiNaC::function>(node).get_name();
       if (name == "atan2") out.push_back(GiNaC::sqrt(GiNaC::pow(node.op(0), 2) + GiNaC::pow(node.op(1), 2)));
@@ -114,7 +117,7 @@ void collect_singular_measures(const GiNaC::ex& e, std::vector<GiNaC::ex>& out) 
       const auto& exponent = GiNaC::ex_to<GiNaC::numeric>(node.op(1));
       if (!exponent.is_integer())
         out.push_back(GiNaC::sqrt(GiNaC::abs(node.op(0))));
-      else if (exponent.is_negative() && !GiNaC::is_a<GiNaC::numeric>(node.op(0)))
+      else if (exponent.is_negative())
         out.push_back(GiNaC::abs(node.op(0)));
     }
   }

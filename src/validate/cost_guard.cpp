@@ -2,7 +2,6 @@
 
 #include "emit/emitted_api.h"
 #include "lowering/surface_programs.h"
-#include "offset/richardson_method.h"
 
 #include <fmt/format.h>
 
@@ -20,9 +19,8 @@ struct Counts {
   long long largest = 0, total = 0;
 };
 
-Counts count(const Surface& surface, int order) {
-  // The extrapolation is of Richardson's model, whose size grows ~5x per order.
-  const std::unique_ptr<OffsetConstruction> construction = build_richardson(surface, order);
+Counts count(const OffsetMethod& method, const Surface& surface, int order) {
+  const std::unique_ptr<OffsetConstruction> construction = method.build(surface, order);
   const SurfacePrograms programs = lower_surface(surface, *construction, {});
   Counts c;
   for (const auto& f : emitted_functions(programs, surface.dims, construction->facts())) {
@@ -68,7 +66,8 @@ namespace {
 // Orders 1 and 2 counted once; any order extrapolated from them.
 class Extrapolation {
  public:
-  explicit Extrapolation(const Surface& surface) : one_(count(surface, 1)), two_(count(surface, 2)) {}
+  Extrapolation(const OffsetMethod& method, const Surface& surface)
+      : one_(count(method, surface, 1)), two_(count(method, surface, 2)) {}
   CostEstimate at(int order) const {
     CostEstimate e;
     if (order <= 2) {
@@ -94,11 +93,14 @@ class Extrapolation {
 
 }  // namespace
 
-CostEstimate estimate_cost(const Surface& surface, int order) { return Extrapolation(surface).at(order); }
+CostEstimate estimate_cost(const OffsetMethod& method, const Surface& surface, int order) {
+  return Extrapolation(method, surface).at(order);
+}
 
-void require_affordable(const Surface& surface, int order, const std::function<void(const std::string&)>& notice) {
+void require_affordable(const OffsetMethod& method, const Surface& surface, int order,
+                        const std::function<void(const std::string&)>& notice) {
   if (surface.from_catalog || order <= 2) return;
-  const Extrapolation extrapolation(surface);
+  const Extrapolation extrapolation(method, surface);
   const CostEstimate estimate = extrapolation.at(order);
   if (estimate.largest_ops > kMaxFunctionOps) {
     int highest = 0;

@@ -21,7 +21,8 @@ void check_before_build(const RequestFacts& facts) {
     require_within_size_limits(**facts.thickness, "the thickness expression");
     require_positive_thickness(**facts.thickness, surface.dims, facts.thickness_text);
   }
-  if (facts.extrapolate_cost) require_affordable(surface, facts.order, facts.notice);
+  if (facts.method && facts.method->cost_grows_geometrically())
+    require_affordable(*facts.method, surface, facts.order, facts.notice);
 }
 
 void check_after_build(const RequestFacts& facts, const OffsetConstruction& construction,

@@ -21,11 +21,12 @@ struct RequestFacts {
   const Surface* surface = nullptr;
   std::string prefix;
   int order = 1;
-  // The method's cost grows geometrically with the order (Richardson: ~5x per order), so the cost of
-  // a high order is extrapolated from orders 1-2 before the build.
-  bool extrapolate_cost = true;
-  std::vector<const Backend*> languages;  // the requested targets
-  bool float_precision = false;           // some requested file holds float functions
+  // The offset method: where its cost grows geometrically with the order (Richardson: ~5x per
+  // order; OffsetMethod::cost_grows_geometrically), a high order's cost is extrapolated from its own
+  // orders 1-2 before the build.
+  const OffsetMethod* method = nullptr;
+  std::vector<const Backend*> languages;                // the requested targets
+  bool float_precision = false;                         // some requested file holds float functions
   const std::optional<GiNaC::ex>* thickness = nullptr;  // parsed --thickness, if any
   std::string thickness_text;
   std::function<void(const std::string&)> notice;  // announces long runs; may be empty

@@ -1,6 +1,6 @@
 #include "batch_cases.h"
 
-#include "check/metadata.h"
+#include "run/metadata.h"
 
 namespace offsetgen::batch_test {
 
@@ -21,7 +21,7 @@ const Cases& all_cases() {
 }
 
 HeaderFacts header_facts(const std::string& header) {
-  const check::FileMetadata meta = check::read_metadata(std::string(OFFSETGEN_BATCH_HEADER_DIR) + "/" + header + ".h");
+  const run::FileMetadata meta = run::read_metadata(std::string(OFFSETGEN_BATCH_HEADER_DIR) + "/" + header + ".h");
   return {meta.gradient_bound, meta.scale};
 }
 

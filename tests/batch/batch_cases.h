@@ -37,11 +37,15 @@ const Cases& all_cases();
 template <class T>
 const std::vector<BatchFunction<T>>& cases_of();
 template <>
-inline const std::vector<BatchFunction<double>>& cases_of<double>() { return all_cases().doubles; }
+inline const std::vector<BatchFunction<double>>& cases_of<double>() {
+  return all_cases().doubles;
+}
 template <>
-inline const std::vector<BatchFunction<float>>& cases_of<float>() { return all_cases().floats; }
+inline const std::vector<BatchFunction<float>>& cases_of<float>() {
+  return all_cases().floats;
+}
 
-// Facts from a generated header's metadata block (read by src/check/metadata.h).
+// Facts from a generated header's metadata block (read by src/run/metadata.h).
 struct HeaderFacts {
   double gradient_bound = 0;  // max |grad F| in natural units (X = scale * x)
   double scale = 1;
@@ -62,21 +66,21 @@ void add_expo_o2(Cases&);
 
 // Entries for a generated prefix. SFX is empty (double) or f (float); REF is the prefix of the
 // reference functions (ld_<prefix> for double, <prefix> for float).
-#define OFFSETGEN_BATCH_CASE3(T, PREFIX, FN, SFX, BUILD, ORDER, PERIODIC, REF)                             \
-  ::offsetgen::batch_test::BatchFunction<T> {                                                              \
-    #PREFIX, #FN, BUILD, 3, ORDER, PERIODIC, [](T x, T y, T z, T w) { return PREFIX##_##FN##SFX(x, y, z, w); }, \
+#define OFFSETGEN_BATCH_CASE3(T, PREFIX, FN, SFX, BUILD, ORDER, PERIODIC, REF)                                \
+  ::offsetgen::batch_test::BatchFunction<T> {                                                                 \
+#PREFIX, #FN, BUILD, 3, ORDER, PERIODIC, [](T x, T y, T z, T w) { return PREFIX##_##FN##SFX(x, y, z, w); }, \
         [](std::size_t n, const T* x, const T* y, const T* z, const T* w, T* out) {                        \
           PREFIX##_##FN##SFX##_n(n, x, y, z, w, out);                                                      \
         },                                                                                                 \
         [](T x, T y, T z) { return PREFIX##_field##SFX(x, y, z); },                                        \
-        [](T x, T y, T z, T w) -> long double { return REF##_##FN(x, y, z, w); }                           \
+        [](T x, T y, T z, T w) -> long double { return REF##_##FN(x, y, z, w); } \
   }
-#define OFFSETGEN_BATCH_CASE2(T, PREFIX, FN, SFX, BUILD, ORDER, PERIODIC, REF)                             \
-  ::offsetgen::batch_test::BatchFunction<T> {                                                              \
-    #PREFIX, #FN, BUILD, 2, ORDER, PERIODIC, [](T x, T y, T, T w) { return PREFIX##_##FN##SFX(x, y, w); },    \
+#define OFFSETGEN_BATCH_CASE2(T, PREFIX, FN, SFX, BUILD, ORDER, PERIODIC, REF)                              \
+  ::offsetgen::batch_test::BatchFunction<T> {                                                               \
+#PREFIX, #FN, BUILD, 2, ORDER, PERIODIC, [](T x, T y, T, T w) { return PREFIX##_##FN##SFX(x, y, w); },    \
         [](std::size_t n, const T* x, const T* y, const T*, const T* w, T* out) {                          \
           PREFIX##_##FN##SFX##_n(n, x, y, w, out);                                                         \
         },                                                                                                 \
         [](T x, T y, T) { return PREFIX##_field##SFX(x, y); },                                             \
-        [](T x, T y, T, T w) -> long double { return REF##_##FN(x, y, w); }                                \
+        [](T x, T y, T, T w) -> long double { return REF##_##FN(x, y, w); } \
   }

@@ -22,13 +22,12 @@ std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order,
   auto c = std::make_unique<Compiled>();
   const std::string dir = scratch_dir(method + "-" + surface + std::to_string(order) + (thickness.empty() ? "" : "g"));
   c->path = write_header(dir, surface, order, thickness, false, method);
-  c->meta = read_metadata(c->path);
-  CompileOptions options;
+  c->meta = run::read_metadata(c->path);
+  run::CompileOptions options;
   options.optimization = "-O0";
   options.cxx = false;
-  c->result = compile_and_load(c->path, c->meta, find_toolchain(), options);
+  c->result = run::compile_and_load(c->path, c->meta, run::find_toolchain(), options);
   return c;
 }
-
 
 }  // namespace offsetgen::check::testing

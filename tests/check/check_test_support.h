@@ -2,10 +2,10 @@
 // the CLI, scratch directories and files come from tests/support.
 #pragma once
 
-#include "check/compile.h"
-#include "check/metadata.h"
 #include "offsetgen_test_support.h"
 #include "pipeline/generate.h"
+#include "run/c_library.h"
+#include "run/metadata.h"
 
 #include <memory>
 #include <string>
@@ -27,9 +27,9 @@ std::string write_header(const std::string& dir, const std::string& surface, int
 // A generated header compiled (strict C99, -O0 for speed) and loaded, with its metadata.
 struct Compiled {
   std::string path;
-  FileMetadata meta;
-  CompileResult result;
-  const LoadedFunctions& functions() const { return result.library->functions(); }
+  run::FileMetadata meta;
+  run::CompileResult result;
+  const run::LoadedFunctions& functions() const { return result.library->functions(); }
 };
 std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order, const std::string& thickness = "",
                                           const std::string& method = kDefaultMethod);

@@ -1,7 +1,7 @@
 // `offsetgen check` as a user runs it: exit codes 0 (all pass), 1 (a check failed), 2 (usage or
 // input error), the table, --json and --plot.
-#include "check/process.h"
 #include "check_test_support.h"
+#include "run/process.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -41,8 +41,8 @@ TEST_F(CheckCli, AGoodHeaderPassesWithExit0AndEveryNumberInJson) {
   const std::string json = *dir_ + "/out.json";
   auto r = testing::run_offsetgen(args({"check", *header_, "--json", json}));
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  for (const char* text : {"1. Compile", "C99 strict", "2. Values", "3. Wall thickness", "4. Graded wall", "fitted order",
-                           "one-sided", "all checks passed"})
+  for (const char* text : {"1. Compile", "C99 strict", "2. Values", "3. Wall thickness", "4. Graded wall",
+                           "fitted order", "one-sided", "all checks passed"})
     EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
   nlohmann::json j = nlohmann::json::parse(testing::read_text(json));
   EXPECT_EQ(j["pass"], true);
@@ -63,8 +63,8 @@ TEST_F(CheckCli, ProgressIsNotWrittenWhenStderrIsNotATerminal) {
 }
 
 TEST_F(CheckCli, APlotIsWrittenWithThePlotScript) {
-  if (find_on_path("/usr/bin/python3").empty()) GTEST_SKIP() << "no /usr/bin/python3";
-  if (run_process({"/usr/bin/python3", "-c", "import matplotlib"}).exit_code != 0) GTEST_SKIP() << "no matplotlib";
+  if (run::find_on_path("/usr/bin/python3").empty()) GTEST_SKIP() << "no /usr/bin/python3";
+  if (run::run_process({"/usr/bin/python3", "-c", "import matplotlib"}).exit_code != 0) GTEST_SKIP() << "no matplotlib";
   const std::string png = *dir_ + "/plot.png";
   auto r = testing::run_offsetgen(args({"check", *header_, "--no-values", "--plot", png}));
   EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -156,7 +156,7 @@ TEST_F(CheckCli, TheKindComesFromTheMetadataNotTheExtension) {
   auto c = testing::run_offsetgen({"check", header_named_glsl, "--no-values", "--no-thickness"});
   EXPECT_EQ(c.exit_code, 0) << c.output;
   EXPECT_NE(c.output.find("1. Compile"), std::string::npos) << c.output;
-  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  if (run::find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
   const std::string snippet_named_h = *dir_ + "/snippet.h";
   testing::write_text(snippet_named_h, testing::read_text(testing::write_header(*dir_, "gyroid", 1, "", true)));
   auto g = testing::run_offsetgen({"check", snippet_named_h, "--no-values"});
@@ -195,11 +195,12 @@ TEST_F(CheckCli, NoCompilerOnPathExits2) {
 }
 
 TEST_F(CheckCli, GlslFilesAreCompiledForFourTargets) {
-  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  if (run::find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
   const std::string glsl = testing::write_header(*dir_, "schwarzp", 3, "", true);
   auto r = testing::run_offsetgen({"check", glsl});
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  for (const char* t : {"GLSL ES 3.00", "GLSL 3.30", "GLSL 4.50", "Vulkan"}) EXPECT_NE(r.output.find(t), std::string::npos);
+  for (const char* t : {"GLSL ES 3.00", "GLSL 3.30", "GLSL 4.50", "Vulkan"})
+    EXPECT_NE(r.output.find(t), std::string::npos);
   std::string text = testing::read_text(glsl);
   text.insert(text.find("{\n", text.find("schwarzp_o3_field(")) + 2, "    oops;\n");
   testing::write_text(*dir_ + "/bad.glsl", text);
@@ -207,13 +208,14 @@ TEST_F(CheckCli, GlslFilesAreCompiledForFourTargets) {
   EXPECT_EQ(bad.exit_code, 1) << bad.output;
 }
 
-// A snippet's names are checked against GLSL's rules only: offsetgen_* is reserved in C (the header's helpers), not in GLSL.
+// A snippet's names are checked against GLSL's rules only: offsetgen_* is reserved in C (the header's helpers), not in
+// GLSL.
 TEST_F(CheckCli, ASnippetWithANameOnlyCReservesIsChecked) {
-  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  if (run::find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
   const std::string dir = *dir_ + "/underscore";
   std::filesystem::create_directories(dir);
-  auto gen = testing::run_offsetgen(
-      {"generate", "--surface", "gyroid", "--order", "1", "--lang", "glsl", "--name", "offsetgen_g1", "--out-dir", dir, "-q"});
+  auto gen = testing::run_offsetgen({"generate", "--surface", "gyroid", "--order", "1", "--lang", "glsl", "--name",
+                                     "offsetgen_g1", "--out-dir", dir, "-q"});
   ASSERT_EQ(gen.exit_code, 0) << gen.output;
   auto r = testing::run_offsetgen({"check", dir + "/offsetgen_g1.glsl", "--points", "20"});
   EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -222,7 +224,7 @@ TEST_F(CheckCli, ASnippetWithANameOnlyCReservesIsChecked) {
 // The snippet runs on Mesa llvmpipe and each function is judged against the 40-digit reference:
 // a wrong constant that still compiles fails (before, GLSL was compiled only).
 TEST_F(CheckCli, AGlslSnippetWithAWrongConstantFailsOnLlvmpipe) {
-  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  if (run::find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
   const std::string glsl = testing::write_header(*dir_, "gyroid", 2, "", true);
   auto good = testing::run_offsetgen({"check", glsl, "--points", "40"});
   EXPECT_EQ(good.exit_code, 0) << good.output;
@@ -236,6 +238,72 @@ TEST_F(CheckCli, AGlslSnippetWithAWrongConstantFailsOnLlvmpipe) {
   auto wrong = testing::run_offsetgen({"check", *dir_ + "/wrong.glsl", "--points", "40"});
   EXPECT_EQ(wrong.exit_code, 1) << wrong.output;
   EXPECT_NE(wrong.output.find("out of tolerance: glsl offset"), std::string::npos) << wrong.output;
+}
+
+// A shader of `lang` for the gyroid at order 2, written by the CLI as users get it; and the same
+// file with 2 pi misprinted (6.28318548 -> 6.38318548) in the first line of _offset only, so it still
+// compiles.
+struct ShaderPair {
+  std::string good, wrong;
+};
+
+ShaderPair shader_pair(const std::string& dir, const std::string& lang) {
+  const std::string good = dir + "/gyroid_o2." + lang;
+  auto generated = testing::run_offsetgen({"generate", "-s", "gyroid", "--order", "2", "--lang", lang, "-o", good});
+  EXPECT_EQ(generated.exit_code, 0) << generated.output;
+  std::string text = testing::read_text(good);
+  const auto function =
+      text.find(lang == "hlsl" ? "\nfloat gyroid_o2_offset(" : "\nfn gyroid_o2_offset(");  // the definition
+  const auto at = text.find("6.28318548", function);
+  EXPECT_NE(function, std::string::npos);
+  EXPECT_NE(at, std::string::npos);
+  text.replace(at, 10, "6.38318548");
+  const std::string wrong = dir + "/wrong_gyroid_o2." + lang;
+  testing::write_text(wrong, text);
+  return {good, wrong};
+}
+
+// The snippet becomes SPIR-V (glslang's HLSL front end) and runs on lavapipe: its values are judged
+// against the 40-digit reference, so a wrong constant that still compiles fails.
+TEST_F(CheckCli, AnHlslSnippetRunsOnLavapipeAndAWrongConstantFails) {
+  if (run::find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed";
+  const ShaderPair hlsl = shader_pair(*dir_, "hlsl");
+  auto good = testing::run_offsetgen({"check", hlsl.good, "--points", "40"});
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  for (const char* row : {"hlsl field", "hlsl offset", "hlsl shell", "hlsl normal", "PASS   values on lavapipe"})
+    EXPECT_NE(good.output.find(row), std::string::npos) << row << "\n" << good.output;
+  auto wrong = testing::run_offsetgen({"check", hlsl.wrong, "--points", "40"});
+  EXPECT_EQ(wrong.exit_code, 1) << wrong.output;
+  EXPECT_NE(wrong.output.find("FAIL   values on lavapipe         out of tolerance: hlsl offset"), std::string::npos)
+      << wrong.output;
+}
+
+// The snippet runs on Dawn (OFFSETGEN_WEBGPU: the webgpu package the wgsl tests install); a wrong
+// constant fails its value check.
+TEST_F(CheckCli, AWgslSnippetRunsOnDawnAndAWrongConstantFails) {
+  if (run::find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
+  ::setenv("OFFSETGEN_WEBGPU", OFFSETGEN_WEBGPU_DIR, 1);
+  const ShaderPair wgsl = shader_pair(*dir_, "wgsl");
+  auto good = testing::run_offsetgen({"check", wgsl.good, "--points", "40"});
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  for (const char* row : {"wgsl field", "wgsl offset", "wgsl shell", "wgsl normal", "PASS   values on Dawn"})
+    EXPECT_NE(good.output.find(row), std::string::npos) << row << "\n" << good.output;
+  auto wrong = testing::run_offsetgen({"check", wgsl.wrong, "--points", "40"});
+  EXPECT_EQ(wrong.exit_code, 1) << wrong.output;
+  EXPECT_NE(wrong.output.find("FAIL   values on Dawn             out of tolerance: wgsl offset"), std::string::npos)
+      << wrong.output;
+}
+
+// Without Dawn's bindings the WGSL runner refuses, naming what to install; check fails (exit 1).
+TEST_F(CheckCli, AWgslSnippetWithoutDawnFailsNamingIt) {
+  if (run::find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
+  const ShaderPair wgsl = shader_pair(*dir_, "wgsl");
+  ::setenv("OFFSETGEN_WEBGPU", (*dir_ + "/no-webgpu-here").c_str(), 1);
+  auto r = testing::run_offsetgen({"check", wgsl.good, "--points", "10"});
+  ::setenv("OFFSETGEN_WEBGPU", OFFSETGEN_WEBGPU_DIR, 1);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAIL   compile"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no-webgpu-here"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // Compiling with the system compiler and loading with dlopen; compiler errors come back verbatim.
-#include "check/compile.h"
-#include "check/process.h"
 #include "check_test_support.h"
 #include "lowering/program.h"
 #include "pipeline/generate.h"
+#include "run/c_library.h"
+#include "run/process.h"
 #include "surfaces/surface.h"
 
 #include <gtest/gtest.h>
@@ -41,8 +41,8 @@ class EnvGuard {
 TEST(Compile, StrictC99AndCxx17ThenDlopenGiveTheProgramsValues) {
   const std::string dir = testing::scratch_dir("compile-ok");
   const std::string path = testing::write_header(dir, "schwarzp", 2, "0.05");
-  FileMetadata meta = read_metadata(path);
-  CompileResult r = compile_and_load(path, meta, find_toolchain());
+  run::FileMetadata meta = run::read_metadata(path);
+  run::CompileResult r = run::compile_and_load(path, meta, run::find_toolchain());
   ASSERT_TRUE(r.ok) << r.steps.front().output << r.steps.back().output;
   ASSERT_GE(r.steps.size(), 3u);
   EXPECT_EQ(r.steps[0].name, "C99 strict + shared object");
@@ -73,8 +73,8 @@ TEST(Compile, ABrokenHeaderIsReportedWithTheCompilersOwnWords) {
   const auto body = text.find("{", text.find("static inline double gyroid_o1_offset"));
   text.insert(body + 1, "\n    const double oops = ;");
   testing::write_text(path, text);
-  FileMetadata meta = read_metadata(path);
-  CompileResult r = compile_and_load(path, meta, find_toolchain());
+  run::FileMetadata meta = run::read_metadata(path);
+  run::CompileResult r = run::compile_and_load(path, meta, run::find_toolchain());
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(r.library, nullptr);
   ASSERT_FALSE(r.steps.empty());
@@ -91,7 +91,7 @@ TEST(Compile, AWarningIsAnErrorUnderTheStrictFlags) {
   const auto body = text.find("{", text.find("static inline double gyroid_o1_field"));
   text.insert(body + 1, "\n    int unused_variable;");
   testing::write_text(path, text);
-  CompileResult r = compile_and_load(path, read_metadata(path), find_toolchain());
+  run::CompileResult r = run::compile_and_load(path, run::read_metadata(path), run::find_toolchain());
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.steps[0].output.find("unused_variable"), std::string::npos) << r.steps[0].output;
 }
@@ -101,7 +101,7 @@ TEST(Compile, NoCompilerOnPathIsAnInputErrorSayingSo) {
   ::setenv("PATH", "/nonexistent-offsetgen-test", 1);
   ::unsetenv("CC");
   try {
-    find_toolchain();
+    run::find_toolchain();
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no C compiler on PATH"), std::string::npos) << e.what();
@@ -112,26 +112,26 @@ TEST(Compile, CcIsRespected) {
   EnvGuard cc("CC");
   ::setenv("CC", "no-such-compiler-offsetgen", 1);
   try {
-    find_toolchain();
+    run::find_toolchain();
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("$CC"), std::string::npos) << e.what();
   }
-  const std::string gcc = find_on_path("gcc");
+  const std::string gcc = run::find_on_path("gcc");
   if (gcc.empty()) GTEST_SKIP() << "no gcc";
   ::setenv("CC", "gcc -m64", 1);
-  Toolchain t = find_toolchain();
+  run::Toolchain t = run::find_toolchain();
   ASSERT_EQ(t.c.size(), 2u);
   EXPECT_EQ(t.c[0], "gcc");
   EXPECT_EQ(t.c_origin, "$CC");
 }
 
 TEST(Compile, TheWrapperIncludesTheHeaderTwice) {
-  FileMetadata meta;
+  run::FileMetadata meta;
   meta.prefix = "p";
   meta.dims = 2;
   meta.has_float = true;
-  const std::string s = wrapper_source("p.h", meta);
+  const std::string s = run::wrapper_source("p.h", meta);
   EXPECT_NE(s.find("#include \"p.h\"\n#include \"p.h\""), std::string::npos);
   EXPECT_NE(s.find("p_offsetf(p[0], p[1], h)"), std::string::npos);
   EXPECT_EQ(s.find("graded"), std::string::npos);

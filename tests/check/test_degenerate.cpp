@@ -2,8 +2,8 @@
 // ignore some inputs or fold to constants; every emitted function must still compile under the flags
 // the README promises (C99 and C++17 with -pedantic -Wall -Wextra -Werror, double and float; the
 // GLSL snippet under glslang for the four targets) and match the 40-digit reference.
-#include "check/process.h"
 #include "check_test_support.h"
+#include "run/process.h"
 
 #include <gtest/gtest.h>
 
@@ -36,7 +36,7 @@ TEST_P(DegenerateExpression, CompilesStrictlyInEveryLanguageAndMatchesTheReferen
   auto c = testing::run_offsetgen({"check", header, "--no-thickness", "--points", "40"});
   EXPECT_EQ(c.exit_code, 0) << c.output;
   EXPECT_NE(c.output.find("C++17 strict                 ok"), std::string::npos) << c.output;
-  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed (glslang-tools)";
+  if (run::find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed (glslang-tools)";
   auto g = testing::run_offsetgen({"check", dir + "/" + expression.name + ".glsl", "--points", "40"});
   EXPECT_EQ(g.exit_code, 0) << g.output;
 }

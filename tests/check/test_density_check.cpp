@@ -4,10 +4,10 @@
 #include "check/density_check.h"
 #include "check_test_support.h"
 
-#include "check/glsl_compile.h"
-#include "check/metadata.h"
-#include "check/process.h"
 #include "pipeline/generate.h"
+#include "run/glsl_compile.h"
+#include "run/metadata.h"
+#include "run/process.h"
 #include "surfaces/expression_input.h"
 
 #include <gtest/gtest.h>
@@ -60,8 +60,8 @@ TEST(VolumeFraction, ThinTiltedWallsAreMeasuredWithinItsStatedError) {
 
 struct DensityFile {
   std::string path;
-  FileMetadata meta;
-  CompileResult compiled;
+  run::FileMetadata meta;
+  run::CompileResult compiled;
   Generation generation;
 };
 
@@ -79,10 +79,10 @@ std::unique_ptr<DensityFile> compile_density_file(const std::string& surface, in
   f->path = testing::scratch_dir("density-" + method + "-" + surface + std::to_string(order)) + "/" +
             f->generation.prefix + ".h";
   testing::write_text(f->path, f->generation.c_header());
-  f->meta = read_metadata(f->path);
-  CompileOptions options;
+  f->meta = run::read_metadata(f->path);
+  run::CompileOptions options;
   options.cxx = false;  // -O2 as check uses it: the measurement evaluates the walls millions of times
-  f->compiled = compile_and_load(f->path, f->meta, find_toolchain(), options);
+  f->compiled = run::compile_and_load(f->path, f->meta, run::find_toolchain(), options);
   return f;
 }
 
@@ -122,11 +122,11 @@ TEST(DensityCheck, DensityFieldCellsMatchTheMeanDensityOfEachCell) {
   const Generation g = generate(request);
   const std::string path = testing::scratch_dir("density-field") + "/" + g.prefix + ".h";
   testing::write_text(path, g.c_header());
-  const FileMetadata meta = read_metadata(path);
+  const run::FileMetadata meta = run::read_metadata(path);
   ASSERT_TRUE(meta.density_field.has_value());
-  CompileOptions options;
+  run::CompileOptions options;
   options.cxx = false;
-  const CompileResult compiled = compile_and_load(path, meta, find_toolchain(), options);
+  const run::CompileResult compiled = run::compile_and_load(path, meta, run::find_toolchain(), options);
   ASSERT_TRUE(compiled.ok);
   DensityCheckOptions o;
   o.sheet = {};
@@ -146,7 +146,7 @@ TEST(DensityCheck, DensityFieldCellsMatchTheMeanDensityOfEachCell) {
 // The density functions and _wall in GLSL: the host shader calls every one of them, and all four
 // targets compile and link (NaN as intBitsToFloat, highp arguments).
 TEST(DensityCheck, GlslSnippetWithDensityFunctionsCompilesForAllFourTargets) {
-  if (find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed (glslang-tools)";
+  if (run::find_on_path("glslangValidator").empty()) GTEST_SKIP() << "glslangValidator not installed (glslang-tools)";
   GenerationRequest request;
   request.surface = "schwarzp";
   request.order = 2;
@@ -154,14 +154,14 @@ TEST(DensityCheck, GlslSnippetWithDensityFunctionsCompilesForAllFourTargets) {
   request.languages = {"glsl"};
   request.command = "check_tests";
   const Generation g = generate(request);
-  const FileMetadata meta = parse_metadata(g.glsl_snippet());
+  const run::FileMetadata meta = run::parse_metadata(g.glsl_snippet());
   ASSERT_TRUE(meta.has_density);
   ASSERT_TRUE(meta.wall_density.has_value());
-  const std::string host = glsl_host_shader(g.glsl_snippet(), meta, GlslTarget::Gl330, nullptr);
+  const std::string host = run::glsl_host_shader(g.glsl_snippet(), meta, run::GlslTarget::Gl330, nullptr);
   for (const char* call :
        {"_wall(", "_density(q.w)", "_thickness_for_density(q.w)", "_network_density(q.w)", "_offset_for_density(q.w)"})
     EXPECT_NE(host.find(call), std::string::npos) << call;
-  for (const auto& r : compile_glsl(g.glsl_snippet(), meta, "schwarzp_o2.glsl"))
+  for (const auto& r : run::compile_glsl(g.glsl_snippet(), meta, "schwarzp_o2.glsl"))
     EXPECT_TRUE(r.ok) << r.name << "\n" << r.output;
 }
 

@@ -1,8 +1,8 @@
 // The metadata block: read back from real generated files, refused (with a message saying why)
 // when absent or damaged.
-#include "check/metadata.h"
 #include "check/reference.h"
 #include "check_test_support.h"
+#include "run/metadata.h"
 #include "surfaces/surface.h"
 
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@ std::string generated_header() {
 
 std::string refusal(const std::string& text) {
   try {
-    parse_metadata(text);
+    run::parse_metadata(text);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -37,7 +37,7 @@ std::string replace(std::string text, const std::string& from, const std::string
 }
 
 TEST(Metadata, ReadsEverythingFromAGeneratedHeader) {
-  FileMetadata m = parse_metadata(generated_header());
+  run::FileMetadata m = run::parse_metadata(generated_header());
   EXPECT_EQ(m.format, 1);
   EXPECT_EQ(m.prefix, "gyroid_o3");
   ASSERT_TRUE(m.surface);
@@ -55,7 +55,7 @@ TEST(Metadata, ReadsEverythingFromAGeneratedHeader) {
 }
 
 TEST(Metadata, TheModelRebuildsFromTheMetadataAlone) {
-  FileMetadata m = parse_metadata(generated_header());
+  run::FileMetadata m = run::parse_metadata(generated_header());
   auto ref = rebuild_reference(m);
   EXPECT_EQ(ref->generation.prefix, "gyroid_o3");
   EXPECT_EQ(ref->generation.order(), 3);
@@ -103,7 +103,8 @@ TEST(Metadata, AnUnknownFormatIsRefused) {
 }
 
 TEST(Metadata, AMetadataSurfaceThisOffsetgenDoesNotKnowIsAnInputError) {
-  FileMetadata m = parse_metadata(replace(generated_header(), "\"surface\":\"gyroid\"", "\"surface\":\"nosuch\""));
+  run::FileMetadata m =
+      run::parse_metadata(replace(generated_header(), "\"surface\":\"gyroid\"", "\"surface\":\"nosuch\""));
   try {
     rebuild_reference(m);
     FAIL() << "expected an InputError";
@@ -119,26 +120,27 @@ TEST(Metadata, KindFollowsTheMetadataNotTheFileName) {
   // Swapped names: a header called .glsl and a snippet called .h.
   testing::write_text(dir + "/header.glsl", testing::read_text(header));
   testing::write_text(dir + "/snippet.h", testing::read_text(snippet));
-  EXPECT_EQ(read_metadata(dir + "/header.glsl").kind, FileKind::C);
-  EXPECT_EQ(read_metadata(dir + "/snippet.h").kind, FileKind::Glsl);
+  EXPECT_EQ(run::read_metadata(dir + "/header.glsl").language, "c");
+  EXPECT_EQ(run::read_metadata(dir + "/snippet.h").language, "glsl");
   EXPECT_NE(testing::read_text(snippet).find("\"language\":\"glsl\""), std::string::npos);
   // Files written before the field existed are told apart by their code.
-  EXPECT_EQ(parse_metadata(replace(testing::read_text(header), "\"language\":\"c\",", "")).kind, FileKind::C);
-  EXPECT_EQ(parse_metadata(replace(testing::read_text(snippet), "\"language\":\"glsl\",", "")).kind, FileKind::Glsl);
-  EXPECT_NE(refusal(replace(testing::read_text(header), "\"language\":\"c\"", "\"language\":\"fortran\"")).find("language"),
-            std::string::npos);
+  EXPECT_EQ(run::parse_metadata(replace(testing::read_text(header), "\"language\":\"c\",", "")).language, "c");
+  EXPECT_EQ(run::parse_metadata(replace(testing::read_text(snippet), "\"language\":\"glsl\",", "")).language, "glsl");
+  EXPECT_NE(
+      refusal(replace(testing::read_text(header), "\"language\":\"c\"", "\"language\":\"fortran\"")).find("language"),
+      std::string::npos);
 }
 
 TEST(Metadata, ADirectoryOrDeviceIsRefusedWithAClearMessage) {
   const std::string dir = testing::scratch_dir("metadata-dir");
   try {
-    read_metadata(dir);
+    run::read_metadata(dir);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
   }
   try {
-    read_metadata("/dev/null");
+    run::read_metadata("/dev/null");
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
@@ -150,12 +152,12 @@ TEST(Metadata, BinaryAndMissingFilesAreInputErrors) {
   testing::write_text(dir + "/bin.h", std::string("\x7f"
                                                   "ELF\0\0\0",
                                                   7));
-  EXPECT_THROW(read_metadata(dir + "/bin.h"), InputError);
-  EXPECT_THROW(read_metadata(dir + "/missing.h"), InputError);
+  EXPECT_THROW(run::read_metadata(dir + "/bin.h"), InputError);
+  EXPECT_THROW(run::read_metadata(dir + "/missing.h"), InputError);
 }
 
 TEST(Metadata, ThicknessSyntaxErrorsSayWhere) {
-  FileMetadata m = parse_metadata(generated_header());
+  run::FileMetadata m = run::parse_metadata(generated_header());
   try {
     parse_thickness("0.1*x+*2", m, {});
     FAIL() << "expected an InputError";

@@ -25,18 +25,18 @@
 #include <vector>
 
 #include "generated_cases.h"
-#include "glsl_executor.h"
+#include "run/glsl_executor.h"
 
 namespace offsetgen::glsl_test {
 
 // Double-precision values of one case at the sample points (inputs are float, as the GPU sees them).
 struct DoubleReference {
-  std::vector<glsl::Point> points;  // x, y, z, h
+  std::vector<glsl::Point> points;                                // x, y, z, h
   std::vector<double> field, offset, shell, phi_plus, phi_minus;  // shell at t = 2|h|
-  std::vector<double> normal;                                      // 3 per point
-  std::vector<double> grad_len;    // |grad phi_d(p, h)|
-  std::vector<double> field_grad;  // |grad F(p)|
-  double gradient_floor = 0.0;     // 10% of the largest |grad F| of the sample
+  std::vector<double> normal;                                     // 3 per point
+  std::vector<double> grad_len;                                   // |grad phi_d(p, h)|
+  std::vector<double> field_grad;                                 // |grad F(p)|
+  double gradient_floor = 0.0;                                    // 10% of the largest |grad F| of the sample
 };
 
 DoubleReference make_reference(const GeneratedCase& c, std::size_t n, std::uint32_t seed);

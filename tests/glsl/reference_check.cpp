@@ -5,14 +5,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "glsl_source.h"
+#include "run/glsl_source.h"
 
 namespace offsetgen::glsl_test {
 namespace {
 
-Vec3d position(const glsl::Point& p, int dim) {
-  return {p[0], p[1], dim == 3 ? static_cast<double>(p[2]) : 0.0};
-}
+Vec3d position(const glsl::Point& p, int dim) { return {p[0], p[1], dim == 3 ? static_cast<double>(p[2]) : 0.0}; }
 
 // Reference value(s) of `q` at one input: 1 value, or 3 for the normal (empty when skipped).
 std::vector<double> reference_values(const SurfaceReference& ref, Quantity q, const glsl::Point& p,
@@ -41,8 +39,7 @@ std::vector<double> reference_values(const SurfaceReference& ref, Quantity q, co
 std::vector<glsl::Point> random_points(std::size_t n, int dim, double h_max, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::uniform_real_distribution<float> offset(static_cast<float>(-h_max),
-                                               static_cast<float>(h_max));
+  std::uniform_real_distribution<float> offset(static_cast<float>(-h_max), static_cast<float>(h_max));
   std::vector<glsl::Point> pts(n);
   for (auto& p : pts) {
     p[0] = unit(rng);
@@ -80,16 +77,15 @@ double ErrorReport::points_per_second() const {
 std::string ErrorReport::describe() const {
   std::ostringstream os;
   os.precision(3);
-  os << what << ": max |error| " << std::scientific << max_abs_error << " over " << compared
-     << " points (worst at x=(" << worst_input[0] << ", " << worst_input[1] << ", "
-     << worst_input[2] << "), w=" << worst_input[3] << ": got " << got << ", want " << reference
-     << "); " << std::defaultfloat << points_per_second() / 1e6 << " Mpoints/s, compile "
-     << stats.compile_s << " s";
+  os << what << ": max |error| " << std::scientific << max_abs_error << " over " << compared << " points (worst at x=("
+     << worst_input[0] << ", " << worst_input[1] << ", " << worst_input[2] << "), w=" << worst_input[3] << ": got "
+     << got << ", want " << reference << "); " << std::defaultfloat << points_per_second() / 1e6
+     << " Mpoints/s, compile " << stats.compile_s << " s";
   return os.str();
 }
 
-ErrorReport check(const SurfaceReference& ref, Quantity q, glsl::Path path,
-                  const std::vector<glsl::Point>& points, double min_gradient) {
+ErrorReport check(const SurfaceReference& ref, Quantity q, glsl::Path path, const std::vector<glsl::Point>& points,
+                  double min_gradient) {
   if (q == Quantity::Normal && !ref.offset_gradient) {
     throw std::invalid_argument(ref.name + " has no reference gradient");
   }

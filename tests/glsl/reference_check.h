@@ -9,20 +9,19 @@
 #include <string>
 #include <vector>
 
-#include "glsl_executor.h"
+#include "run/glsl_executor.h"
 
 namespace offsetgen::glsl_test {
 
 using Vec3d = std::array<double, 3>;  // 2D surfaces use x[0], x[1] and ignore x[2]
 
 struct SurfaceReference {
-  std::string name;                             // for messages, e.g. "gyroid order 1 (fixture)"
-  std::string snippet_path;                     // the .glsl file
-  std::string prefix;                           // its function prefix, e.g. "gyroid_o4"
-  int dim = 3;                                  // 3: functions take vec3 p; 2: vec2 p
-  std::function<double(const Vec3d& x)> field;  // F(x)
-  std::function<double(const Vec3d& x, double h)>
-      offset;  // phi(x, h), what <prefix>_offset returns
+  std::string name;                                        // for messages, e.g. "gyroid order 1 (fixture)"
+  std::string snippet_path;                                // the .glsl file
+  std::string prefix;                                      // its function prefix, e.g. "gyroid_o4"
+  int dim = 3;                                             // 3: functions take vec3 p; 2: vec2 p
+  std::function<double(const Vec3d& x)> field;             // F(x)
+  std::function<double(const Vec3d& x, double h)> offset;  // phi(x, h), what <prefix>_offset returns
   // grad_x phi(x, h), unnormalised; empty when the reference has none (normal check skipped).
   std::function<Vec3d(const Vec3d& x, double h)> offset_gradient;
 };
@@ -54,7 +53,7 @@ struct ErrorReport {
 // Runs `q` of `ref`'s snippet on `path` over `points` and compares it with the reference evaluated
 // in double at the same (float-rounded) inputs. For Normal, points where |grad phi| < min_gradient
 // are skipped: the direction is ill-conditioned there.
-ErrorReport check(const SurfaceReference& ref, Quantity q, glsl::Path path,
-                  const std::vector<glsl::Point>& points, double min_gradient = 0.5);
+ErrorReport check(const SurfaceReference& ref, Quantity q, glsl::Path path, const std::vector<glsl::Point>& points,
+                  double min_gradient = 0.5);
 
 }  // namespace offsetgen::glsl_test

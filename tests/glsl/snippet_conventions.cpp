@@ -5,7 +5,7 @@
 #include <regex>
 #include <sstream>
 
-#include "glsl_source.h"
+#include "run/glsl_source.h"
 
 namespace offsetgen::glsl_test {
 namespace {
@@ -25,8 +25,7 @@ std::string trim(const std::string& s) {
 }
 
 std::string upper(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return s;
 }
 
@@ -43,9 +42,7 @@ struct Directive {
 class Checker {
  public:
   Checker(const std::string& snippet, std::string prefix)
-      : original_(split_lines(snippet)),
-        code_(split_lines(glsl::strip_comments(snippet))),
-        prefix_(std::move(prefix)) {
+      : original_(split_lines(snippet)), code_(split_lines(glsl::strip_comments(snippet))), prefix_(std::move(prefix)) {
     for (std::size_t i = 0; i < code_.size(); ++i) {
       const std::string t = trim(code_[i]);
       if (t.empty() || t[0] != '#') continue;
@@ -78,9 +75,9 @@ class Checker {
   void check_directives() {
     const std::string wanted_guard_part = upper(prefix_);
     std::string guard;
-    if (directives_.size() < 3 || directives_[0].name != "ifndef" ||
-        directives_[0].args.size() != 1 || directives_[1].name != "define" ||
-        directives_[1].args != directives_[0].args || directives_.back().name != "endif") {
+    if (directives_.size() < 3 || directives_[0].name != "ifndef" || directives_[0].args.size() != 1 ||
+        directives_[1].name != "define" || directives_[1].args != directives_[0].args ||
+        directives_.back().name != "endif") {
       add("guard", directives_.empty() ? 1 : directives_[0].line,
           "not wrapped in '#ifndef G' / '#define G' ... '#endif'");
     } else {
@@ -93,8 +90,7 @@ class Checker {
       // Nothing but comments and blank lines outside the guard.
       for (std::size_t i = 0; i < code_.size(); ++i) {
         const int line = static_cast<int>(i) + 1;
-        if ((line < directives_[0].line || line > directives_.back().line) &&
-            !trim(code_[i]).empty()) {
+        if ((line < directives_[0].line || line > directives_.back().line) && !trim(code_[i]).empty()) {
           add("guard", line, "code outside the include guard");
         }
       }
@@ -138,8 +134,7 @@ class Checker {
         }
         while (i < text.size() && is_ident_char(text[i])) ++i;  // suffixes: f, u, ...
         if (!point) {
-          add("literal", line,
-              "number '" + text.substr(b, i - b) + "' without a decimal point (write N.0)");
+          add("literal", line, "number '" + text.substr(b, i - b) + "' without a decimal point (write N.0)");
         }
       } else {
         ++i;
@@ -221,13 +216,11 @@ class Checker {
 
 }  // namespace
 
-std::vector<Violation> convention_violations(const std::string& snippet,
-                                             const std::string& prefix) {
+std::vector<Violation> convention_violations(const std::string& snippet, const std::string& prefix) {
   return Checker(snippet, prefix).run();
 }
 
-std::vector<Violation> header_comment_violations(const std::string& snippet,
-                                                 const std::string& prefix) {
+std::vector<Violation> header_comment_violations(const std::string& snippet, const std::string& prefix) {
   std::vector<Violation> found;
   // The comments before the guard, as the user sees them at the top of the file.
   const auto guard = snippet.find("#ifndef");

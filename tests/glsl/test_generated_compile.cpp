@@ -1,6 +1,6 @@
 // Every snippet the real generator writes (all catalog surfaces, orders 1-4, the graded one and two
 // --expr ones): compiled and linked in the four host dialects with `offsetgen check`'s glslang
-// stage (check::compile_glsl), and linted for the paste-safety conventions. The committed golden
+// stage (run::compile_glsl), and linted for the paste-safety conventions. The committed golden
 // snippets are the build-time ones, byte for byte.
 #include <gtest/gtest.h>
 
@@ -12,29 +12,28 @@
 #include <string>
 #include <tuple>
 
-#include "check/glsl_compile.h"
-#include "check/metadata.h"
 #include "generated_cases.h"
-#include "glsl_source.h"
 #include "offsetgen_test_support.h"
+#include "run/glsl_compile.h"
+#include "run/glsl_source.h"
+#include "run/metadata.h"
 #include "snippet_conventions.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-namespace check = offsetgen::check;
+namespace run = offsetgen::run;
 namespace glsl = offsetgen::glsl;
 namespace gt = offsetgen::glsl_test;
 namespace ts = offsetgen::test_support;
 
-check::FileMetadata metadata_of(const std::string& snippet) { return check::parse_metadata(snippet); }
+run::FileMetadata metadata_of(const std::string& snippet) { return run::parse_metadata(snippet); }
 
 class SnippetCompiles : public ::testing::TestWithParam<gt::SnippetFile> {};
 
 TEST_P(SnippetCompiles, AndLinksInTheFourHostDialects) {
   const std::string snippet = glsl::read_text_file(GetParam().path);
-  const auto results =
-      check::compile_glsl(snippet, metadata_of(snippet), fs::path(GetParam().path).filename().string());
+  const auto results = run::compile_glsl(snippet, metadata_of(snippet), fs::path(GetParam().path).filename().string());
   ASSERT_EQ(results.size(), 4u);
   for (const auto& r : results) EXPECT_TRUE(r.ok) << GetParam().path << " fails on " << r.name << ":\n" << r.output;
 }
@@ -52,7 +51,7 @@ TEST(SnippetsOfDifferentSurfaces, CompileTogetherInOneShader) {
     together += glsl::read_text_file(by_prefix.at(prefix)) + "\n";
   // The host calls the first snippet's functions (one metadata block: check refuses pasted files).
   const auto results =
-      check::compile_glsl(together, metadata_of(glsl::read_text_file(by_prefix.at("gyroid_o4"))), "together.glsl");
+      run::compile_glsl(together, metadata_of(glsl::read_text_file(by_prefix.at("gyroid_o4"))), "together.glsl");
   ASSERT_EQ(results.size(), 4u);
   for (const auto& r : results) EXPECT_TRUE(r.ok) << "fails on " << r.name << ":\n" << r.output;
 }
@@ -60,7 +59,7 @@ TEST(SnippetsOfDifferentSurfaces, CompileTogetherInOneShader) {
 class SnippetConventions : public ::testing::TestWithParam<gt::SnippetFile> {
  protected:
   std::string snippet_ = glsl::read_text_file(GetParam().path);
-  check::FileMetadata meta_ = metadata_of(snippet_);
+  run::FileMetadata meta_ = metadata_of(snippet_);
 };
 
 TEST_P(SnippetConventions, PasteSafe) {
@@ -114,7 +113,7 @@ TEST(GeneratedSnippet, CompileErrorShowsTheSnippetLine) {
   int line = 1;
   for (std::size_t i = 0; i < body; ++i) line += snippet[i] == '\n' ? 1 : 0;
   const std::string name = std::string(c.prefix) + ".glsl";
-  for (const auto& r : check::compile_glsl(snippet, metadata_of(snippet), name)) {
+  for (const auto& r : run::compile_glsl(snippet, metadata_of(snippet), name)) {
     ASSERT_FALSE(r.ok) << r.name;
     EXPECT_NE(r.output.find("undefined_symbol"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("[" + name + " line " + std::to_string(line) + "]"), std::string::npos) << r.output;

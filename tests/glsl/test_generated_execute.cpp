@@ -16,11 +16,11 @@
 
 #include "generated_accuracy.h"
 #include "generated_cases.h"
-#include "glsl_executor.h"
-#include "glsl_source.h"
 #include "offsetgen_test_support.h"
 #include "reference_check.h"
 #include "reference_surfaces.h"
+#include "run/glsl_executor.h"
+#include "run/glsl_source.h"
 
 namespace {
 
@@ -271,10 +271,10 @@ TEST(HandDerivedGyroidO1Reference, GradientMatchesFiniteDifferences) {
 // Runs this test binary again with the driver search path pointed nowhere.
 TEST(MissingDriver, GlTestsFailAndNameThePackages) {
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-  const offsetgen::test_support::CommandResult r = offsetgen::test_support::run_command(
-      {"env", "LIBGL_DRIVERS_PATH=/nonexistent", self,
-       "--gtest_filter=All/GlslVsDouble.FieldOffsetShellNormal/" + std::string(gt::generated_cases().front().prefix) +
-           "_Compute"});
+  const offsetgen::test_support::CommandResult r =
+      offsetgen::test_support::run_command({"env", "LIBGL_DRIVERS_PATH=/nonexistent", self,
+                                            "--gtest_filter=All/GlslVsDouble.FieldOffsetShellNormal/" +
+                                                std::string(gt::generated_cases().front().prefix) + "_Compute"});
   EXPECT_NE(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("[  FAILED  ]"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("SKIPPED"), std::string::npos) << r.output;

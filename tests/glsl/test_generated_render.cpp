@@ -7,10 +7,10 @@
 #include <string>
 
 #include "generated_cases.h"
-#include "glsl_source.h"
-#include "headless_gl.h"
 #include "offsetgen_test_support.h"
 #include "png_io.h"
+#include "run/glsl_source.h"
+#include "run/headless_gl.h"
 #include "shell_renderer.h"
 
 namespace {
@@ -62,8 +62,7 @@ PixelCounts classify(const offsetgen::png::Image& img) {
 
 void expect_picture(const std::string& name, const std::string& args) {
   const fs::path png =
-      fs::temp_directory_path() / ("offsetgen_gen_render_" + std::to_string(::getpid()) + "_" +
-                                   name + ".png");
+      fs::temp_directory_path() / ("offsetgen_gen_render_" + std::to_string(::getpid()) + "_" + name + ".png");
   const Outcome o = run_render_shell(args + " --size 160x120 -o '" + png.string() + "'");
   ASSERT_EQ(o.exit_code, 0) << o.output;
   std::cout << "[ measured ] " << o.output;
@@ -80,20 +79,19 @@ void expect_picture(const std::string& name, const std::string& args) {
 
 TEST(GeneratedRender, GyroidOrder4Shell) {
   const auto& c = gyroid_o4();
-  expect_picture("gyroid", std::string("--snippet '") + c.snippet + "' --prefix " + c.prefix +
-                               " --thickness 0.1");
+  expect_picture("gyroid", std::string("--snippet '") + c.snippet + "' --prefix " + c.prefix + " --thickness 0.1");
 }
 
 TEST(GeneratedRender, GyroidOrder4GlHost) {
   const auto& c = gyroid_o4();
-  expect_picture("gyroid_gl", std::string("--snippet '") + c.snippet + "' --prefix " + c.prefix +
-                                  " --thickness 0.08 --api gl");
+  expect_picture("gyroid_gl",
+                 std::string("--snippet '") + c.snippet + "' --prefix " + c.prefix + " --thickness 0.08 --api gl");
 }
 
 TEST(GeneratedRender, GradedThickness) {
   const auto& c = gt::graded_case();
-  expect_picture("graded", std::string("--snippet '") + c.snippet + "' --prefix " + c.prefix +
-                               " --graded --thickness 0.02");
+  expect_picture("graded",
+                 std::string("--snippet '") + c.snippet + "' --prefix " + c.prefix + " --graded --thickness 0.02");
 }
 
 // The renderer pastes the file as it is: its bytes appear unchanged in the fragment shader.
@@ -124,8 +122,7 @@ offsetgen::glsl::HostedSource docs_example() {
   const auto at = shader.find(marker);
   if (at == std::string::npos) throw std::runtime_error("docs example lost its paste marker");
   const std::string snippet = offsetgen::glsl::read_text_file(gyroid_o4().snippet);
-  return offsetgen::glsl::assemble(shader.substr(0, at + marker.size()), snippet,
-                                   shader.substr(at + marker.size()));
+  return offsetgen::glsl::assemble(shader.substr(0, at + marker.size()), snippet, shader.substr(at + marker.size()));
 }
 
 TEST(DocsExample, HostShaderCompilesLinksAndDraws) {
@@ -143,8 +140,7 @@ TEST(DocsExample, HostShaderCompilesLinksAndDraws) {
       "  vec2 v = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);\n"
       "  gl_Position = vec4(v, 0.0, 1.0);\n}\n";
   const GLuint program =
-      gl::build_program(f, {{GL_VERTEX_SHADER, offsetgen::glsl::assemble(vs, "", "")},
-                            {GL_FRAGMENT_SHADER, source}});
+      gl::build_program(f, {{GL_VERTEX_SHADER, offsetgen::glsl::assemble(vs, "", "")}, {GL_FRAGMENT_SHADER, source}});
   constexpr int kSize = 96;
   GLuint rbo = 0, fbo = 0, vao = 0;
   f.GenRenderbuffers(1, &rbo);
@@ -158,8 +154,7 @@ TEST(DocsExample, HostShaderCompilesLinksAndDraws) {
   f.Viewport(0, 0, kSize, kSize);
   f.UseProgram(program);
   f.Uniform2f(f.GetUniformLocation(program, "u_resolution"), kSize, kSize);
-  f.Uniform3f(f.GetUniformLocation(program, "u_eye"), 0.5f + 2.6f * 0.70f, 0.5f + 2.6f * 0.46f,
-              0.5f + 2.6f * 0.55f);
+  f.Uniform3f(f.GetUniformLocation(program, "u_eye"), 0.5f + 2.6f * 0.70f, 0.5f + 2.6f * 0.46f, 0.5f + 2.6f * 0.55f);
   f.Uniform1f(f.GetUniformLocation(program, "u_thickness"), 0.1f);
   f.DrawArrays(GL_TRIANGLES, 0, 3);
   std::vector<std::uint8_t> px(static_cast<std::size_t>(kSize) * kSize * 4);
@@ -174,9 +169,12 @@ TEST(DocsExample, HostShaderCompilesLinksAndDraws) {
   std::size_t background = 0, orange = 0, blue = 0;
   for (std::size_t i = 0; i < px.size(); i += 4) {
     const int r8 = px[i], g8 = px[i + 1], b8 = px[i + 2];
-    if (r8 == 255 && g8 == 255 && b8 == 255) ++background;
-    else if (r8 > b8 + 20) ++orange;  // F > 0 face
-    else if (b8 > r8 + 20) ++blue;    // F < 0 face
+    if (r8 == 255 && g8 == 255 && b8 == 255)
+      ++background;
+    else if (r8 > b8 + 20)
+      ++orange;  // F > 0 face
+    else if (b8 > r8 + 20)
+      ++blue;  // F < 0 face
   }
   const double total = kSize * kSize;
   EXPECT_GT(static_cast<double>(background) / total, 0.1);

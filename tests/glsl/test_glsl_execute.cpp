@@ -8,9 +8,9 @@
 #include <string>
 #include <tuple>
 
-#include "glsl_executor.h"
-#include "glsl_source.h"
-#include "headless_gl.h"
+#include "run/glsl_executor.h"
+#include "run/glsl_source.h"
+#include "run/headless_gl.h"
 
 namespace {
 
@@ -60,20 +60,16 @@ TEST_P(ExecutorPath, WrongResultTypeIsAHostLineError) {
   }
 }
 
-TEST_P(ExecutorPath, EmptyInputGivesEmptyOutput) {
-  EXPECT_TRUE(glsl::run(GetParam(), "", "p.x", {}, 1).empty());
-}
+TEST_P(ExecutorPath, EmptyInputGivesEmptyOutput) { EXPECT_TRUE(glsl::run(GetParam(), "", "p.x", {}, 1).empty()); }
 
 INSTANTIATE_TEST_SUITE_P(BothPaths, ExecutorPath, ::testing::ValuesIn(glsl::all_paths()),
                          [](const ::testing::TestParamInfo<glsl::Path>& param_info) {
-                           return std::string(param_info.param == glsl::Path::Compute ? "Compute"
-                                                                                      : "Fragment");
+                           return std::string(param_info.param == glsl::Path::Compute ? "Compute" : "Fragment");
                          });
 
 TEST(Executor, ReportsRendererAndDesktopVersion) {
   offsetgen::gl::make_current(offsetgen::gl::Api::Desktop43);
-  std::cout << "[ renderer ] " << offsetgen::gl::renderer() << " / " << offsetgen::gl::version()
-            << "\n";
+  std::cout << "[ renderer ] " << offsetgen::gl::renderer() << " / " << offsetgen::gl::version() << "\n";
   EXPECT_NE(offsetgen::gl::version().find("4."), std::string::npos);
 }
 

@@ -1,20 +1,18 @@
-// tools/render/glsl_source: scanning a snippet's functions, the highp lint, and host-shader
+// src/run/glsl_source: scanning a snippet's functions, the highp lint, and host-shader
 // assembly with its line mapping (what the executor and render_shell build on).
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "glsl_source.h"
 #include "reference_surfaces.h"
+#include "run/glsl_source.h"
 
 namespace {
 
 namespace glsl = offsetgen::glsl;
 
-std::string fixture() {
-  return glsl::read_text_file(offsetgen::glsl_test::fixture_dir() + "/gyroid_o1.glsl");
-}
+std::string fixture() { return glsl::read_text_file(offsetgen::glsl_test::fixture_dir() + "/gyroid_o1.glsl"); }
 
 TEST(GlslSource, ScanSkipsPrototypesCommentsAndBodies) {
   const std::string src =
@@ -51,9 +49,8 @@ TEST(GlslSource, MissingHighpIsReportedWithItsLine) {
       "}\n"
       "float g(in highp float x, mediump float y) { return x + y; }\n";
   EXPECT_EQ(glsl::declarations_without_highp(src),
-            (std::vector<std::string>{
-                "snippet line 2:   vec3 u = 2.0 * p;            // local without highp",
-                "snippet line 6: float g(in highp float x, mediump float y) { return x + y; }"}));
+            (std::vector<std::string>{"snippet line 2:   vec3 u = 2.0 * p;            // local without highp",
+                                      "snippet line 6: float g(in highp float x, mediump float y) { return x + y; }"}));
 }
 
 TEST(GlslSource, AssembleKeepsSnippetBytesAndMapsLines) {
@@ -63,8 +60,7 @@ TEST(GlslSource, AssembleKeepsSnippetBytesAndMapsLines) {
   EXPECT_EQ(s.snippet_first_line, 2);
   EXPECT_EQ(s.describe_line(3), "snippet line 2: line2");
   EXPECT_EQ(s.describe_line(4), "host line 4: tail");
-  EXPECT_EQ(glsl::referenced_lines("ERROR: /tmp/a b.frag:7: 'x' : y\n0:9(3): error: z\n"),
-            (std::vector<int>{7, 9}));
+  EXPECT_EQ(glsl::referenced_lines("ERROR: /tmp/a b.frag:7: 'x' : y\n0:9(3): error: z\n"), (std::vector<int>{7, 9}));
 }
 
 }  // namespace

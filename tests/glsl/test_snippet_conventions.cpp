@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "glsl_source.h"
 #include "reference_surfaces.h"
+#include "run/glsl_source.h"
 #include "snippet_conventions.h"
 
 namespace {
@@ -13,18 +13,18 @@ namespace {
 namespace gt = offsetgen::glsl_test;
 
 const std::string kClean =
-    "/* demo.glsl: generated, do not edit */\n"                     // 1
-    "#ifndef OFFSETGEN_DEMO_O1_GLSL\n"                              // 2
-    "#define OFFSETGEN_DEMO_O1_GLSL\n"                              // 3
+    "/* demo.glsl: generated, do not edit */\n"                               // 1
+    "#ifndef OFFSETGEN_DEMO_O1_GLSL\n"                                        // 2
+    "#define OFFSETGEN_DEMO_O1_GLSL\n"                                        // 3
     "// 2 * pi, written 6.28 below; comments may say 'pow(' and '#define'\n"  // 4
-    "highp float demo_o1_field(highp vec3 p)\n"                     // 5
-    "{\n"                                                           // 6
-    "    highp float _t0 = 6.28318548 * p.x;\n"                     // 7
-    "    highp vec3 _t1 = vec3(1.0e-3, .5, 2.0);\n"                 // 8
-    "    return sin(_t0) + dot(_t1, p);\n"                          // 9
-    "}\n"                                                           // 10
-    "const highp float demo_o1_scale = 1.0;\n"                      // 11
-    "#endif\n";                                                     // 12
+    "highp float demo_o1_field(highp vec3 p)\n"                               // 5
+    "{\n"                                                                     // 6
+    "    highp float _t0 = 6.28318548 * p.x;\n"                               // 7
+    "    highp vec3 _t1 = vec3(1.0e-3, .5, 2.0);\n"                           // 8
+    "    return sin(_t0) + dot(_t1, p);\n"                                    // 9
+    "}\n"                                                                     // 10
+    "const highp float demo_o1_scale = 1.0;\n"                                // 11
+    "#endif\n";                                                               // 12
 
 // The violations of `rule` only.
 std::vector<gt::Violation> of_rule(const std::string& snippet, const std::string& rule) {
@@ -46,8 +46,7 @@ std::string with(std::string s, const std::string& from, const std::string& to) 
 void expect_one(const std::string& snippet, const std::string& rule, int line) {
   const auto v = of_rule(snippet, rule);
   ASSERT_EQ(v.size(), 1u) << gt::describe(gt::convention_violations(snippet, "demo_o1"));
-  EXPECT_EQ(v[0].message.rfind("snippet line " + std::to_string(line) + ":", 0), 0u)
-      << v[0].message;
+  EXPECT_EQ(v[0].message.rfind("snippet line " + std::to_string(line) + ":", 0), 0u) << v[0].message;
 }
 
 TEST(SnippetConventions, CleanSnippetPasses) {
@@ -55,8 +54,7 @@ TEST(SnippetConventions, CleanSnippetPasses) {
 }
 
 TEST(SnippetConventions, VersionLine) {
-  expect_one(with(kClean, "highp float demo_o1_field", "#version 300 es\nhighp float demo_o1_field"),
-             "version", 5);
+  expect_one(with(kClean, "highp float demo_o1_field", "#version 300 es\nhighp float demo_o1_field"), "version", 5);
 }
 
 TEST(SnippetConventions, PrecisionStatement) {
@@ -64,8 +62,8 @@ TEST(SnippetConventions, PrecisionStatement) {
 }
 
 TEST(SnippetConventions, MissingGuard) {
-  const std::string s = with(with(kClean, "#ifndef OFFSETGEN_DEMO_O1_GLSL\n", ""),
-                             "#define OFFSETGEN_DEMO_O1_GLSL\n", "");
+  const std::string s =
+      with(with(kClean, "#ifndef OFFSETGEN_DEMO_O1_GLSL\n", ""), "#define OFFSETGEN_DEMO_O1_GLSL\n", "");
   EXPECT_FALSE(of_rule(s, "guard").empty());
 }
 
@@ -84,8 +82,7 @@ TEST(SnippetConventions, GlobalDefine) {
 }
 
 TEST(SnippetConventions, OtherDirective) {
-  expect_one(with(kClean, "const highp", "#extension GL_EXT_foo : enable\nconst highp"),
-             "directive", 11);
+  expect_one(with(kClean, "const highp", "#extension GL_EXT_foo : enable\nconst highp"), "directive", 11);
 }
 
 TEST(SnippetConventions, MissingHighp) {
@@ -93,9 +90,7 @@ TEST(SnippetConventions, MissingHighp) {
   EXPECT_EQ(of_rule(with(kClean, "(highp vec3 p)", "(vec3 p)"), "highp").size(), 1u);
 }
 
-TEST(SnippetConventions, Pow) {
-  expect_one(with(kClean, "sin(_t0)", "pow(_t0, 2.0)"), "pow", 9);
-}
+TEST(SnippetConventions, Pow) { expect_one(with(kClean, "sin(_t0)", "pow(_t0, 2.0)"), "pow", 9); }
 
 TEST(SnippetConventions, IntegerLiteral) {
   expect_one(with(kClean, "6.28318548 * p.x", "2 * p.x"), "literal", 7);
@@ -106,8 +101,7 @@ TEST(SnippetConventions, IntegerLiteral) {
 TEST(SnippetConventions, UnprefixedTopLevelNames) {
   expect_one(with(kClean, "highp float demo_o1_field(", "highp float field("), "prefix", 5);
   expect_one(with(kClean, "demo_o1_scale", "scale"), "prefix", 11);
-  expect_one(with(kClean, "const highp", "struct Helper { highp float a; };\nconst highp"), "prefix",
-             11);
+  expect_one(with(kClean, "const highp", "struct Helper { highp float a; };\nconst highp"), "prefix", 11);
   // Locals inside a body are not top-level.
   EXPECT_TRUE(of_rule(kClean, "prefix").empty());
 }
@@ -115,14 +109,12 @@ TEST(SnippetConventions, UnprefixedTopLevelNames) {
 TEST(SnippetConventions, HeaderComment) {
   const auto v = gt::header_comment_violations(kClean, "demo_o1");
   EXPECT_FALSE(v.empty());
-  EXPECT_NE(gt::describe(v).find("use: does not list demo_o1_field"), std::string::npos)
-      << gt::describe(v);
+  EXPECT_NE(gt::describe(v).find("use: does not list demo_o1_field"), std::string::npos) << gt::describe(v);
 }
 
 // The hand-made fixture was written to the same contract (its header comment is not lygia style).
 TEST(SnippetConventions, FixtureFollowsTheConventions) {
-  const std::string fixture =
-      offsetgen::glsl::read_text_file(gt::fixture_dir() + "/gyroid_o1.glsl");
+  const std::string fixture = offsetgen::glsl::read_text_file(gt::fixture_dir() + "/gyroid_o1.glsl");
   EXPECT_EQ(gt::describe(gt::convention_violations(fixture, "gyroid_o1")), "");
 }
 

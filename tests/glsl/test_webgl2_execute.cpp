@@ -12,9 +12,9 @@
 
 #include "generated_accuracy.h"
 #include "generated_cases.h"
-#include "glsl_source.h"
 #include "gyroid_o4.h"
 #include "offsetgen_test_support.h"
+#include "run/glsl_source.h"
 #include "webgl2_runner.h"
 
 namespace {

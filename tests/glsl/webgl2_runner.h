@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "glsl_executor.h"
+#include "run/glsl_executor.h"
 
 namespace offsetgen::glsl_test {
 

@@ -14,12 +14,13 @@
 #include "generated_cases.h"
 #include "lavapipe_cases.h"
 #include "offsetgen_test_support.h"
-#include "vulkan_compute.h"
+#include "run/vulkan_compute.h"
 
 namespace {
 
 namespace gt = offsetgen::glsl_test;
 namespace ht = offsetgen::hlsl_test;
+namespace vk = offsetgen::vulkan;
 namespace ts = offsetgen::test_support;
 
 constexpr std::size_t kPoints = 32768;
@@ -61,8 +62,8 @@ TEST_P(HlslOnLavapipe, WithinTheLimitOfTheDoubleHeader) {
       ts::run_command({OFFSETGEN_GLSLANG, "-D", "-V", "-S", "comp", "-e", "main", "-o", module, shader});
   ASSERT_EQ(compiled.exit_code, 0) << "glslangValidator rejects " << shader << ":\n" << compiled.output;
 
-  std::vector<ht::Float4> inputs(ref.points.begin(), ref.points.end());
-  const ht::ComputeRun run = ht::run_on_lavapipe(ht::read_spirv(module), inputs, 2);
+  std::vector<vk::Float4> inputs(ref.points.begin(), ref.points.end());
+  const vk::ComputeRun run = vk::run_on_lavapipe(vk::read_spirv(module), inputs, 2);
   gt::FloatResults got;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const float* out = &run.outputs[8 * i];
@@ -110,8 +111,8 @@ TEST(HlslSnippetsOfTwoSurfaces, RunTogetherInOneShader) {
   const gt::GeneratedCase as_glsl_case = {"",       0,         "",      "",      "",      "",      g->field, g->offset,
                                           g->shell, g->normal, nullptr, nullptr, nullptr, nullptr, nullptr,  nullptr};
   const auto points = gt::make_reference(as_glsl_case, 4096, kSeed).points;
-  const std::vector<ht::Float4> inputs(points.begin(), points.end());
-  const ht::ComputeRun run = ht::run_on_lavapipe(ht::read_spirv(module), inputs, 1);
+  const std::vector<vk::Float4> inputs(points.begin(), points.end());
+  const vk::ComputeRun run = vk::run_on_lavapipe(vk::read_spirv(module), inputs, 1);
   double worst = 0.0;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const auto& p = inputs[i];

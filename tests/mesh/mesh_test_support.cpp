@@ -1,8 +1,8 @@
 #include "mesh_test_support.h"
 
-#include "check/metadata.h"
-#include "check/process.h"
 #include "pipeline/generate.h"
+#include "run/metadata.h"
+#include "run/process.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -29,7 +29,7 @@ std::string scratch_dir(const std::string& name) {
 CliRun run_offsetgen(const std::vector<std::string>& args) {
   std::vector<std::string> argv = {OFFSETGEN_EXE};
   argv.insert(argv.end(), args.begin(), args.end());
-  check::ProcessResult r = check::run_process(argv);
+  run::ProcessResult r = run::run_process(argv);
   return {r.exit_code, r.output};
 }
 
@@ -57,7 +57,7 @@ double stl_volume(const std::vector<std::array<std::array<float, 3>, 3>>& facets
 }
 
 std::map<std::string, double> admesh_report(const std::string& stl, std::string* raw) {
-  check::ProcessResult r = check::run_process({"admesh", stl});
+  run::ProcessResult r = run::run_process({"admesh", stl});
   if (!r.started || r.exit_code != 0) throw std::runtime_error("admesh failed: " + r.output);
   if (raw) *raw = r.output;
   std::map<std::string, double> out;
@@ -85,12 +85,11 @@ ExactWalls::ExactWalls(const std::string& surface, int order, double thickness) 
   const std::string dir = scratch_dir("exact-" + surface);
   const std::string path = dir + "/" + g.prefix + ".h";
   std::ofstream(path) << g.c_header();
-  check::FileMetadata meta = check::read_metadata(path);
-  check::CompileOptions options;
+  run::FileMetadata meta = run::read_metadata(path);
+  run::CompileOptions options;
   options.optimization = "-O2";
   options.cxx = false;
-  compiled_ =
-      std::make_unique<check::CompileResult>(check::compile_and_load(path, meta, check::find_toolchain(), options));
+  compiled_ = std::make_unique<run::CompileResult>(run::compile_and_load(path, meta, run::find_toolchain(), options));
   if (!compiled_->ok) throw std::runtime_error("cannot compile " + path);
 }
 

@@ -2,7 +2,7 @@
 // of a catalog surface through its generated header (compiled at -O2 and loaded).
 #pragma once
 
-#include "check/compile.h"
+#include "run/c_library.h"
 
 #include <array>
 #include <map>
@@ -51,7 +51,7 @@ class ExactWalls {
   double thickness() const { return t_; }
 
  private:
-  std::unique_ptr<check::CompileResult> compiled_;
+  std::unique_ptr<run::CompileResult> compiled_;
   double t_;
 };
 

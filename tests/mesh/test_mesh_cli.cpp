@@ -3,8 +3,8 @@
 // writes nothing.
 #include "mesh_test_support.h"
 
-#include "check/process.h"
 #include "mesh/mesh_3mf.h"
+#include "run/process.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -315,11 +315,11 @@ TEST(MeshOutput, ThreeMfHoldsTheStlsTrianglesInMillimetresWithTheSameBytesEachRu
   EXPECT_EQ(sa, sb);
   ASSERT_GT(sa.size(), 4u);
   EXPECT_EQ(sa.substr(0, 4), std::string("PK\x03\x04", 4));
-  const check::ProcessResult counted =
-      check::run_process({"python3", "-c",
-                          "import sys, zipfile; m = zipfile.ZipFile(sys.argv[1]).read('3D/3dmodel.model').decode(); "
-                          "print(m.count('<triangle '), 'unit=\"millimeter\"' in m)",
-                          dir + "/a.3mf"});
+  const run::ProcessResult counted =
+      run::run_process({"python3", "-c",
+                        "import sys, zipfile; m = zipfile.ZipFile(sys.argv[1]).read('3D/3dmodel.model').decode(); "
+                        "print(m.count('<triangle '), 'unit=\"millimeter\"' in m)",
+                        dir + "/a.3mf"});
   ASSERT_EQ(counted.exit_code, 0) << counted.output;
   const size_t triangles = read_stl(dir + "/c.stl").size();
   EXPECT_EQ(counted.output, fmt::format("{} True\n", triangles));
@@ -328,11 +328,11 @@ TEST(MeshOutput, ThreeMfHoldsTheStlsTrianglesInMillimetresWithTheSameBytesEachRu
 // Only meshing loads OpenVDB and TBB: offsetgen execs offsetgen-mesh for `mesh`, so generate, list
 // and --version do not pay their start-up.
 TEST(MeshExecutable, OnlyOffsetgenMeshLinksOpenVdbAndTbb) {
-  const check::ProcessResult plain = check::run_process({"ldd", OFFSETGEN_EXE});
+  const run::ProcessResult plain = run::run_process({"ldd", OFFSETGEN_EXE});
   ASSERT_EQ(plain.exit_code, 0) << plain.output;
   EXPECT_EQ(plain.output.find("libopenvdb"), std::string::npos) << plain.output;
   EXPECT_EQ(plain.output.find("libtbb"), std::string::npos) << plain.output;
-  const check::ProcessResult mesher = check::run_process({"ldd", OFFSETGEN_MESH_EXE});
+  const run::ProcessResult mesher = run::run_process({"ldd", OFFSETGEN_MESH_EXE});
   ASSERT_EQ(mesher.exit_code, 0) << mesher.output;
   EXPECT_NE(mesher.output.find("libopenvdb"), std::string::npos) << mesher.output;
 }
@@ -341,18 +341,18 @@ TEST(MeshExecutable, WithoutOffsetgenMeshBesideItMeshSaysItIsMissingAndExits3) {
   const std::string dir = scratch_dir("lone-offsetgen");
   const std::string lone = dir + "/offsetgen";
   fs::copy_file(OFFSETGEN_EXE, lone);
-  const check::ProcessResult r =
-      check::run_process({lone, "mesh", "--surface", "gyroid", "--thickness", "0.1", "-o", dir + "/part.stl"});
+  const run::ProcessResult r =
+      run::run_process({lone, "mesh", "--surface", "gyroid", "--thickness", "0.1", "-o", dir + "/part.stl"});
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find(dir + "/" + fs::path(OFFSETGEN_MESH_EXE).filename().string() + ", which is missing"),
             std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(dir + "/part.stl"));
   // Its help and usage errors still come from offsetgen itself.
-  const check::ProcessResult help = check::run_process({lone, "mesh", "--help"});
+  const run::ProcessResult help = run::run_process({lone, "mesh", "--help"});
   EXPECT_EQ(help.exit_code, 0) << help.output;
   EXPECT_NE(help.output.find("Usage: offsetgen mesh [OPTIONS]"), std::string::npos) << help.output;
-  EXPECT_EQ(check::run_process({lone, "mesh", "--bogus"}).exit_code, 2);
+  EXPECT_EQ(run::run_process({lone, "mesh", "--bogus"}).exit_code, 2);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // `offsetgen mesh` in tiles (src/mesh/tiles.h): the tiles together give the untiled triangles, the
 // streamed STL is one clean solid, a run split with --tile-range and joined with --merge gives the
 // single run's bytes, and bad tile options exit 2 writing nothing.
-#include "check/process.h"
 #include "mesh_test_support.h"
+#include "run/process.h"
 
 #include <gtest/gtest.h>
 
@@ -146,7 +146,7 @@ TEST(MeshTiles, OutOfMemoryExitsWith3NamingTheStageAndLeavesNoFile) {
                               " mesh --surface gyroid --thickness 0.1 --cells 8 --cell-size 8 --resolution 40 "
                               "--tile 0 -o " +
                               dir + "/part.stl";
-  const check::ProcessResult r = check::run_process({"bash", "-c", command});
+  const run::ProcessResult r = run::run_process({"bash", "-c", command});
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("out of memory while"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("--tile 256"), std::string::npos) << r.output;

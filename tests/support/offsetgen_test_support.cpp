@@ -1,6 +1,6 @@
 #include "offsetgen_test_support.h"
 
-#include "check/process.h"
+#include "run/process.h"
 
 #include <unistd.h>
 
@@ -11,7 +11,7 @@
 namespace offsetgen::test_support {
 
 CommandResult run_command(const std::vector<std::string>& argv) {
-  const check::ProcessResult r = check::run_process(argv);
+  const run::ProcessResult r = run::run_process(argv);
   return {r.started ? r.exit_code : -1, r.output};
 }
 

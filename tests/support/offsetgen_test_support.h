@@ -1,6 +1,6 @@
-// Helpers every test folder shares: running programs (one runner, src/check/process.h), scratch
+// Helpers every test folder shares: running programs (one runner, src/run/process.h), scratch
 // directories, reading and writing files, and where the built offsetgen and the source tree are.
-// Metadata of generated files: use check::parse_metadata / check::read_metadata directly.
+// Metadata of generated files: use run::parse_metadata / run::read_metadata directly.
 #pragma once
 
 #include <string>

@@ -4,24 +4,24 @@
 
 #include <string>
 
-#include "glsl_source.h"
-#include "headless_gl.h"
 #include "png_io.h"
+#include "run/glsl_source.h"
+#include "run/headless_gl.h"
 
 namespace offsetgen::render {
 
 struct Options {
-  std::string snippet;     // the .glsl file's contents, pasted verbatim
-  std::string prefix;      // e.g. "gyroid_o4": functions are <prefix>_shell, _field, ...
-  double thickness = 0.1;  // total wall thickness t (cell length 1)
-  bool graded = false;     // use <prefix>_graded(p) instead of <prefix>_shell(p, t)
-  int cells = 1;           // renders the box [0, cells]^3 ...
-  int box[3] = {0, 0, 0};  // ... or [0, box[0]] x [0, box[1]] x [0, box[2]] when all are > 0
+  std::string snippet;                  // the .glsl file's contents, pasted verbatim
+  std::string prefix;                   // e.g. "gyroid_o4": functions are <prefix>_shell, _field, ...
+  double thickness = 0.1;               // total wall thickness t (cell length 1)
+  bool graded = false;                  // use <prefix>_graded(p) instead of <prefix>_shell(p, t)
+  int cells = 1;                        // renders the box [0, cells]^3 ...
+  int box[3] = {0, 0, 0};               // ... or [0, box[0]] x [0, box[1]] x [0, box[2]] when all are > 0
   double view[3] = {0.70, 0.46, 0.55};  // direction from the box centre towards the eye
   int width = 512;
   int height = 512;
-  int samples = 1;    // samples x samples supersampling per pixel
-  double step = 0.0;  // march step; 0 = 0.4 * thickness (walls thinner than a step can be missed)
+  int samples = 1;              // samples x samples supersampling per pixel
+  double step = 0.0;            // march step; 0 = 0.4 * thickness (walls thinner than a step can be missed)
   gl::Api api = gl::Api::Es30;  // GLSL ES 3.00 or GL 4.3 core fragment shader
 };
 

@@ -93,8 +93,6 @@ class CBackend final : public Backend {
                                 const std::vector<Precision>& precisions) const override {
     return emit_c_batch(facts, functions, precisions);  // the _n batch API (c_batch.h)
   }
-
-  bool checkable() const override { return true; }
 };
 
 }  // namespace

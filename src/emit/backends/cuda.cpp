@@ -155,8 +155,6 @@ class CudaBackend final : public Backend {
     return fmt::format(fmt::runtime(sections.at("kernels")), fmt::arg("list", list), fmt::arg("prefix", facts.prefix),
                        fmt::arg("kernels", kernels));
   }
-
-  bool checkable() const override { return true; }  // check/cuda_runner.h
 };
 
 }  // namespace

@@ -82,8 +82,6 @@ class GlslBackend final : public Backend {
            "Vulkan, llvmpipe); GLSL ES 3.00 leaves that value unspecified, so check the range on the host for "
            "WebGL.";
   }
-
-  bool checkable() const override { return true; }
 };
 
 }  // namespace

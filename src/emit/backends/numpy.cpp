@@ -301,8 +301,6 @@ class NumpyBackend final : public Backend {
     for (const auto& f : functions) names += fmt::format("    \"{}_{}\",\n", facts.prefix, f.suffix);
     return "\n\n__all__ = [\n" + names + "]\n";
   }
-
-  bool checkable() const override { return true; }  // check/numpy_runner.h
 };
 
 }  // namespace

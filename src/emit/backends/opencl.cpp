@@ -178,8 +178,6 @@ class OpenclBackend final : public Backend {
     return fmt::format(fmt::runtime(sections.at("kernels")), fmt::arg("list", list), fmt::arg("kernels", kernels));
   }
 
-  bool checkable() const override { return true; }  // check/opencl_runner.h
-
  private:
   static constexpr const char* kRealPlaceholder = "@OFFSETGEN_REAL@";
 };

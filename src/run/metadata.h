@@ -8,15 +8,10 @@
 #include <string>
 #include <vector>
 
-namespace offsetgen::check {
-
-enum class FileKind { C, Glsl, Numpy, Cuda, Opencl };
-
-// "c", "glsl", "numpy", "cuda", "opencl": the backend's name (emit/backend.h).
-const char* kind_name(FileKind kind);
+namespace offsetgen::run {
 
 struct FileMetadata {
-  FileKind kind = FileKind::C;
+  std::string language = "c";  // the backend's name (emit/backend.h): what runs the file (run/runner.h)
   int format = 1;
   std::string generator;                      // "offsetgen 0.1.0"
   std::string prefix;                         // function prefix, e.g. gyroid_o4
@@ -44,8 +39,8 @@ struct FileMetadata {
   std::string json;  // the block's JSON text as found
 };
 
-// Parses the metadata out of a file's text. The kind (C or GLSL) is the block's "language"; files
-// written before that field existed are told apart by their code, never by their name. Throws
+// Parses the metadata out of a file's text. The language is the block's "language", a backend's name;
+// files written before that field existed (C or GLSL) are told apart by their code, never by their name. Throws
 // offsetgen::InputError saying that the file was not produced by offsetgen (no block) or that its
 // block is damaged (bad JSON, missing or ill-typed fields), naming the problem.
 FileMetadata parse_metadata(const std::string& text);
@@ -54,4 +49,4 @@ FileMetadata parse_metadata(const std::string& text);
 // another non-regular file.
 FileMetadata read_metadata(const std::string& path, std::string* text_out = nullptr);
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::run

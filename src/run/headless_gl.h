@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "glsl_source.h"
+#include "run/glsl_source.h"
 
 namespace offsetgen::gl {
 

@@ -22,8 +22,7 @@ struct HostedSource {
 
 // Assembles prologue + snippet + epilogue. A newline is added after the snippet only when it does
 // not already end with one, so the snippet's own bytes are never altered.
-HostedSource assemble(const std::string& prologue, const std::string& snippet,
-                      const std::string& epilogue);
+HostedSource assemble(const std::string& prologue, const std::string& snippet, const std::string& epilogue);
 
 // Line numbers referenced by a compiler log's errors (its warnings' when it has no error), in
 // order of first appearance, deduplicated.

@@ -1,4 +1,4 @@
-#include "glsl_source.h"
+#include "run/glsl_source.h"
 
 #include <algorithm>
 #include <fstream>
@@ -73,8 +73,7 @@ GlslParam parse_param(const std::string& decl) {
   for (const auto& w : words) {
     if (w == "in" || w == "out" || w == "inout") {
       p.qualifier = w;
-    } else if (w == "const" ||
-               std::find(kPrecision.begin(), kPrecision.end(), w) != kPrecision.end()) {
+    } else if (w == "const" || std::find(kPrecision.begin(), kPrecision.end(), w) != kPrecision.end()) {
       continue;
     } else {
       rest.push_back(w);
@@ -98,8 +97,7 @@ std::string HostedSource::describe_line(int host_line) const {
   return os.str();
 }
 
-HostedSource assemble(const std::string& prologue, const std::string& snippet,
-                      const std::string& epilogue) {
+HostedSource assemble(const std::string& prologue, const std::string& snippet, const std::string& epilogue) {
   HostedSource s;
   s.snippet = snippet;
   s.text = prologue;
@@ -123,9 +121,7 @@ std::vector<int> referenced_lines(const std::string& log) {
     std::smatch m;
     if (!std::regex_search(l, m, kLoc)) continue;
     const int n = std::stoi(m[1].str());
-    auto& bucket = (l.find("ERROR") != std::string::npos || l.find("error") != std::string::npos)
-                       ? errors
-                       : others;
+    auto& bucket = (l.find("ERROR") != std::string::npos || l.find("error") != std::string::npos) ? errors : others;
     if (std::find(bucket.begin(), bucket.end(), n) == bucket.end()) bucket.push_back(n);
   }
   return errors.empty() ? others : errors;
@@ -164,8 +160,7 @@ std::vector<GlslFunction> scan_functions(const std::string& snippet) {
   static const std::regex kDef(
       R"((?:\b(?:highp|mediump|lowp)\s+)?\b([A-Za-z_]\w*)\s+([A-Za-z_]\w*)\s*\(([^()]*)\)\s*\{)");
   std::vector<GlslFunction> found;
-  for (auto it = std::sregex_iterator(top.begin(), top.end(), kDef); it != std::sregex_iterator();
-       ++it) {
+  for (auto it = std::sregex_iterator(top.begin(), top.end(), kDef); it != std::sregex_iterator(); ++it) {
     GlslFunction f;
     f.return_type = (*it)[1].str();
     f.name = (*it)[2].str();
@@ -174,8 +169,7 @@ std::vector<GlslFunction> scan_functions(const std::string& snippet) {
       std::istringstream in(params);
       for (std::string decl; std::getline(in, decl, ',');) f.params.push_back(parse_param(decl));
     }
-    const bool seen = std::any_of(found.begin(), found.end(),
-                                  [&](const GlslFunction& g) { return g.name == f.name; });
+    const bool seen = std::any_of(found.begin(), found.end(), [&](const GlslFunction& g) { return g.name == f.name; });
     if (!seen) found.push_back(std::move(f));
   }
   return found;
@@ -191,8 +185,7 @@ std::vector<std::string> declarations_without_highp(const std::string& snippet) 
   for (std::string line; std::getline(in, line);) {
     ++n;
     if (trim(line).rfind('#', 0) == 0) continue;
-    for (auto it = std::sregex_iterator(line.begin(), line.end(), kDecl);
-         it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(line.begin(), line.end(), kDecl); it != std::sregex_iterator(); ++it) {
       const std::string qualifier = trim((*it)[1].str());
       if (qualifier == "highp") continue;
       found.push_back("snippet line " + std::to_string(n) + ": " + nth_line(snippet, n));

@@ -5,15 +5,15 @@
 // back as float64, so no digit is lost on the way.
 #pragma once
 
-#include "check/compile.h"
-#include "check/metadata.h"
-#include "check/process.h"
+#include "run/c_library.h"
+#include "run/metadata.h"
+#include "run/process.h"
 
 #include <array>
 #include <string>
 #include <vector>
 
-namespace offsetgen::check::opencl_run {
+namespace offsetgen::run::opencl {
 
 // The file's text followed by offsetgen_check_<function> kernels, one per function and precision (the
 // double ones under #ifdef cl_khr_fp64, like the file's own).
@@ -48,4 +48,4 @@ class HostProgram {
   CompileStep step_;
 };
 
-}  // namespace offsetgen::check::opencl_run
+}  // namespace offsetgen::run::opencl

@@ -1,6 +1,6 @@
-#include "check/numpy_runner.h"
+#include "run/numpy_module.h"
 
-#include "check/process.h"
+#include "run/process.h"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace offsetgen::check::numpy_run {
+namespace offsetgen::run::numpy {
 namespace {
 
 namespace fs = std::filesystem;
@@ -80,4 +80,4 @@ std::vector<double> run(const std::string& python, const std::string& module_pat
   return values;
 }
 
-}  // namespace offsetgen::check::numpy_run
+}  // namespace offsetgen::run::numpy

@@ -36,12 +36,10 @@ struct RunStats {
 // Throws gl::Unavailable (no EGL/driver; the message names the packages), gl::ShaderError
 // (compile error, annotated with snippet lines) or std::runtime_error.
 std::vector<float> run(Path path, const std::string& snippet, const std::string& call_expr,
-                       const std::vector<Point>& inputs, int components = 1,
-                       RunStats* stats = nullptr);
+                       const std::vector<Point>& inputs, int components = 1, RunStats* stats = nullptr);
 
 inline std::vector<float> run_compute(const std::string& snippet, const std::string& call_expr,
-                                      const std::vector<Point>& inputs, int components = 1,
-                                      RunStats* stats = nullptr) {
+                                      const std::vector<Point>& inputs, int components = 1, RunStats* stats = nullptr) {
   return run(Path::Compute, snippet, call_expr, inputs, components, stats);
 }
 

@@ -4,15 +4,15 @@
 // files, so no digit is lost on the way (a float result is exact in double).
 #pragma once
 
-#include "check/compile.h"
-#include "check/metadata.h"
-#include "check/process.h"
+#include "run/c_library.h"
+#include "run/metadata.h"
+#include "run/process.h"
 
 #include <array>
 #include <string>
 #include <vector>
 
-namespace offsetgen::check::cuda_run {
+namespace offsetgen::run::cuda {
 
 // $NVCC, else nvcc on PATH, $CUDA_PATH/bin/nvcc, /usr/local/cuda/bin/nvcc; "" when there is none.
 std::string find_nvcc();
@@ -42,4 +42,4 @@ class HostProgram {
   CompileStep step_;
 };
 
-}  // namespace offsetgen::check::cuda_run
+}  // namespace offsetgen::run::cuda

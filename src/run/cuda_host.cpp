@@ -1,4 +1,4 @@
-#include "check/cuda_runner.h"
+#include "run/cuda_host.h"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace offsetgen::check::cuda_run {
+namespace offsetgen::run::cuda {
 namespace {
 
 namespace fs = std::filesystem;
@@ -129,4 +129,4 @@ std::vector<double> HostProgram::run(const std::string& function, const std::vec
                        inputs.size() * static_cast<size_t>(components));
 }
 
-}  // namespace offsetgen::check::cuda_run
+}  // namespace offsetgen::run::cuda

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace offsetgen::hlsl_test {
+namespace offsetgen::vulkan {
 
 using Float4 = std::array<float, 4>;
 
@@ -26,4 +26,4 @@ ComputeRun run_on_lavapipe(const std::vector<std::uint32_t>& spirv, const std::v
 // The words of a .spv file; throws std::runtime_error when it cannot be read.
 std::vector<std::uint32_t> read_spirv(const std::string& path);
 
-}  // namespace offsetgen::hlsl_test
+}  // namespace offsetgen::vulkan

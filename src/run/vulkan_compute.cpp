@@ -1,4 +1,4 @@
-#include "vulkan_compute.h"
+#include "run/vulkan_compute.h"
 
 #include <vulkan/vulkan.h>
 
@@ -7,7 +7,7 @@
 #include <iterator>
 #include <stdexcept>
 
-namespace offsetgen::hlsl_test {
+namespace offsetgen::vulkan {
 namespace {
 
 constexpr std::uint32_t kGroupSize = 64;  // the shader's [numthreads(64, 1, 1)]
@@ -262,4 +262,4 @@ ComputeRun run_on_lavapipe(const std::vector<std::uint32_t>& spirv, const std::v
   return run;
 }
 
-}  // namespace offsetgen::hlsl_test
+}  // namespace offsetgen::vulkan

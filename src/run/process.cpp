@@ -1,4 +1,4 @@
-#include "check/process.h"
+#include "run/process.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -16,7 +16,7 @@
 
 extern char** environ;
 
-namespace offsetgen::check {
+namespace offsetgen::run {
 
 namespace {
 
@@ -26,6 +26,12 @@ bool is_executable(const std::string& path) {
 }
 
 }  // namespace
+
+std::string find_python() {
+  if (const char* env = std::getenv("OFFSETGEN_PYTHON"); env != nullptr && *env != '\0') return env;
+  if (::access("/usr/bin/python3", X_OK) == 0) return "/usr/bin/python3";
+  return find_on_path("python3");
+}
 
 std::string find_on_path(const std::string& name) {
   if (name.empty()) return "";
@@ -144,4 +150,4 @@ ProcessResult run_process(const std::vector<std::string>& argv) {
   return result;
 }
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::run

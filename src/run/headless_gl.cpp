@@ -1,4 +1,4 @@
-#include "headless_gl.h"
+#include "run/headless_gl.h"
 
 // Keep X11 headers (and their macros such as None/Bool) out: surfaceless needs no window system.
 #define EGL_NO_X11
@@ -52,17 +52,15 @@ struct Display {
     setenv("EGL_PLATFORM", "surfaceless", 0);
     setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
     const char* client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (client_ext == nullptr ||
-        std::string(client_ext).find("EGL_MESA_platform_surfaceless") == std::string::npos) {
+    if (client_ext == nullptr || std::string(client_ext).find("EGL_MESA_platform_surfaceless") == std::string::npos) {
       throw Unavailable("EGL has no EGL_MESA_platform_surfaceless: " + std::string(kInstallHint));
     }
-    auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    auto get_platform_display =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (get_platform_display == nullptr) {
       throw Unavailable("eglGetPlatformDisplayEXT missing: " + std::string(kInstallHint));
     }
-    EGLDisplay d =
-        get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLDisplay d = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (d == EGL_NO_DISPLAY) throw Unavailable(egl_error_text("no surfaceless EGL display"));
     EGLint major = 0, minor = 0;
     if (eglInitialize(d, &major, &minor) != EGL_TRUE) {
@@ -78,26 +76,18 @@ struct Display {
     if (s.context != EGL_NO_CONTEXT) return;
     const bool is_es = api == Api::Es30;
     if (eglBindAPI(is_es ? EGL_OPENGL_ES_API : EGL_OPENGL_API) != EGL_TRUE) {
-      throw Unavailable(
-          egl_error_text(is_es ? "eglBindAPI(GLES) failed" : "eglBindAPI(GL) failed"));
+      throw Unavailable(egl_error_text(is_es ? "eglBindAPI(GLES) failed" : "eglBindAPI(GL) failed"));
     }
-    const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE,
-                                     is_es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_NONE};
+    const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, is_es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint n_configs = 0;
     eglChooseConfig(display, config_attribs, &config, 1, &n_configs);
     if (n_configs == 0) config = nullptr;  // == EGL_NO_CONFIG_KHR: fine for surfaceless use
-    const EGLint es_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0,
-                                 EGL_NONE};
-    const EGLint gl_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
-                                 4,
-                                 EGL_CONTEXT_MINOR_VERSION,
-                                 3,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                 EGL_NONE};
-    EGLContext c =
-        eglCreateContext(display, config, EGL_NO_CONTEXT, is_es ? es_attribs : gl_attribs);
+    const EGLint es_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
+    const EGLint gl_attribs[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    EGLContext c = eglCreateContext(display, config, EGL_NO_CONTEXT, is_es ? es_attribs : gl_attribs);
     if (c == EGL_NO_CONTEXT) {
       throw Unavailable(egl_error_text(is_es ? "cannot create an OpenGL ES 3.0 context"
                                              : "cannot create an OpenGL 4.3 core context"));
@@ -223,8 +213,6 @@ GLuint build_program(const Functions& gl, const std::vector<Stage>& stages) {
   return program;
 }
 
-std::string version_line(Api api) {
-  return api == Api::Desktop43 ? "#version 430 core\n" : "#version 300 es\n";
-}
+std::string version_line(Api api) { return api == Api::Desktop43 ? "#version 430 core\n" : "#version 300 es\n"; }
 
 }  // namespace offsetgen::gl

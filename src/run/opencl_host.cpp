@@ -1,4 +1,4 @@
-#include "check/opencl_runner.h"
+#include "run/opencl_host.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace offsetgen::check::opencl_run {
+namespace offsetgen::run::opencl {
 namespace {
 
 namespace fs = std::filesystem;
@@ -181,4 +181,4 @@ std::vector<double> HostProgram::run(const std::string& function, int real_bytes
       dir_.path(), inputs, inputs.size() * static_cast<size_t>(components));
 }
 
-}  // namespace offsetgen::check::opencl_run
+}  // namespace offsetgen::run::opencl

@@ -3,12 +3,12 @@
 // they are type-checked as used code.
 #pragma once
 
-#include "check/metadata.h"
+#include "run/metadata.h"
 
 #include <string>
 #include <vector>
 
-namespace offsetgen::check {
+namespace offsetgen::run {
 
 enum class GlslTarget { Es300, Gl330, Gl450, Vulkan };
 
@@ -32,4 +32,4 @@ std::string glsl_host_shader(const std::string& snippet, const FileMetadata& met
 std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const FileMetadata& meta,
                                             const std::string& display_name);
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::run

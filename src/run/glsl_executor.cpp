@@ -1,4 +1,4 @@
-#include "glsl_executor.h"
+#include "run/glsl_executor.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,17 +6,15 @@
 #include <map>
 #include <stdexcept>
 
-#include "glsl_source.h"
-#include "headless_gl.h"
+#include "run/glsl_source.h"
+#include "run/headless_gl.h"
 
 namespace offsetgen::glsl {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 constexpr GLuint kLocalSize = 64;          // compute work-group size
 constexpr GLuint kMaxGroups = 65535;       // GL's guaranteed minimum per dispatch dimension
@@ -31,14 +29,11 @@ const char* swizzle(int components) {
 
 // Result assignment shared by both hosts; the parentheses keep the expression one unit.
 std::string store_result(const std::string& call_expr, int components) {
-  return "  highp vec4 r = vec4(0.0);\n  r." + std::string(swizzle(components)) + " = (" +
-         call_expr + ");\n";
+  return "  highp vec4 r = vec4(0.0);\n  r." + std::string(swizzle(components)) + " = (" + call_expr + ");\n";
 }
 
-HostedSource compute_source(const std::string& snippet, const std::string& call_expr,
-                            int components) {
-  const std::string prologue =
-      gl::version_line(gl::Api::Desktop43) + "layout(local_size_x = 64) in;\n";
+HostedSource compute_source(const std::string& snippet, const std::string& call_expr, int components) {
+  const std::string prologue = gl::version_line(gl::Api::Desktop43) + "layout(local_size_x = 64) in;\n";
   const std::string epilogue =
       "\nlayout(std430, binding = 0) readonly buffer OgIn { vec4 og_in[]; };\n"
       "layout(std430, binding = 1) writeonly buffer OgOut { vec4 og_out[]; };\n"
@@ -55,8 +50,7 @@ HostedSource compute_source(const std::string& snippet, const std::string& call_
 }
 
 // mediump on purpose: a snippet that forgot a highp would be computed in fp16 by some drivers.
-HostedSource fragment_source(const std::string& snippet, const std::string& call_expr,
-                             int components) {
+HostedSource fragment_source(const std::string& snippet, const std::string& call_expr, int components) {
   const std::string prologue = gl::version_line(gl::Api::Es30) + "precision mediump float;\n";
   const std::string epilogue =
       "\nuniform highp sampler2D og_in;\n"
@@ -81,8 +75,7 @@ HostedSource fullscreen_vertex_source() {
 
 // Compiling costs more than running 1e5 points on llvmpipe; tests evaluate the same expression
 // on several point sets, so programs live until the process ends.
-GLuint cached_program(const gl::Functions& gl, gl::Api api, const std::vector<gl::Stage>& stages,
-                      double& compile_s) {
+GLuint cached_program(const gl::Functions& gl, gl::Api api, const std::vector<gl::Stage>& stages, double& compile_s) {
   static std::map<std::pair<int, std::string>, GLuint> cache;
   const auto key = std::make_pair(static_cast<int>(api), stages.back().source.text);
   if (auto it = cache.find(key); it != cache.end()) return it->second;
@@ -94,12 +87,10 @@ GLuint cached_program(const gl::Functions& gl, gl::Api api, const std::vector<gl
 }
 
 std::vector<float> run_compute_path(const std::string& snippet, const std::string& call_expr,
-                                    const std::vector<Point>& inputs, int components,
-                                    RunStats& st) {
+                                    const std::vector<Point>& inputs, int components, RunStats& st) {
   const gl::Functions& gl = gl::make_current(gl::Api::Desktop43);
   const GLuint program = cached_program(
-      gl, gl::Api::Desktop43, {{GL_COMPUTE_SHADER, compute_source(snippet, call_expr, components)}},
-      st.compile_s);
+      gl, gl::Api::Desktop43, {{GL_COMPUTE_SHADER, compute_source(snippet, call_expr, components)}}, st.compile_s);
   const auto t0 = Clock::now();
   const auto n = static_cast<GLuint>(inputs.size());
   const auto bytes = static_cast<GLsizeiptr>(inputs.size() * sizeof(Point));
@@ -121,8 +112,8 @@ std::vector<float> run_compute_path(const std::string& snippet, const std::strin
   }
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> out(inputs.size() * static_cast<std::size_t>(components));
-  const auto* mapped = static_cast<const float*>(
-      gl.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, bytes, GL_MAP_READ_BIT));
+  const auto* mapped =
+      static_cast<const float*>(gl.MapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, bytes, GL_MAP_READ_BIT));
   if (mapped == nullptr) throw std::runtime_error("glMapBufferRange of the result buffer failed");
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     std::memcpy(&out[i * static_cast<std::size_t>(components)], mapped + 4 * i,
@@ -136,10 +127,9 @@ std::vector<float> run_compute_path(const std::string& snippet, const std::strin
 }
 
 // One draw of up to kTexWidth x kMaxRowsPerDraw points starting at `first`.
-void fragment_chunk(const gl::Functions& gl, GLuint program, const std::vector<Point>& inputs,
-                    std::size_t first, int components, std::vector<float>& out) {
-  const std::size_t count =
-      std::min(inputs.size() - first, static_cast<std::size_t>(kTexWidth) * kMaxRowsPerDraw);
+void fragment_chunk(const gl::Functions& gl, GLuint program, const std::vector<Point>& inputs, std::size_t first,
+                    int components, std::vector<float>& out) {
+  const std::size_t count = std::min(inputs.size() - first, static_cast<std::size_t>(kTexWidth) * kMaxRowsPerDraw);
   const auto rows = static_cast<GLsizei>((count + kTexWidth - 1) / kTexWidth);
   const std::size_t texels = static_cast<std::size_t>(kTexWidth) * static_cast<std::size_t>(rows);
   std::vector<Point> padded(texels, Point{0.0f, 0.0f, 0.0f, 0.0f});
@@ -184,18 +174,15 @@ void fragment_chunk(const gl::Functions& gl, GLuint program, const std::vector<P
 }
 
 std::vector<float> run_fragment_path(const std::string& snippet, const std::string& call_expr,
-                                     const std::vector<Point>& inputs, int components,
-                                     RunStats& st) {
+                                     const std::vector<Point>& inputs, int components, RunStats& st) {
   const gl::Functions& gl = gl::make_current(gl::Api::Es30);
-  const GLuint program =
-      cached_program(gl, gl::Api::Es30,
-                     {{GL_VERTEX_SHADER, fullscreen_vertex_source()},
-                      {GL_FRAGMENT_SHADER, fragment_source(snippet, call_expr, components)}},
-                     st.compile_s);
+  const GLuint program = cached_program(gl, gl::Api::Es30,
+                                        {{GL_VERTEX_SHADER, fullscreen_vertex_source()},
+                                         {GL_FRAGMENT_SHADER, fragment_source(snippet, call_expr, components)}},
+                                        st.compile_s);
   const auto t0 = Clock::now();
   std::vector<float> out(inputs.size() * static_cast<std::size_t>(components));
-  for (std::size_t first = 0; first < inputs.size();
-       first += static_cast<std::size_t>(kTexWidth) * kMaxRowsPerDraw) {
+  for (std::size_t first = 0; first < inputs.size(); first += static_cast<std::size_t>(kTexWidth) * kMaxRowsPerDraw) {
     fragment_chunk(gl, program, inputs, first, components, out);
   }
   st.run_s = seconds_since(t0);
@@ -204,9 +191,7 @@ std::vector<float> run_fragment_path(const std::string& snippet, const std::stri
 
 }  // namespace
 
-const char* path_name(Path p) {
-  return p == Path::Compute ? "GL 4.3 compute" : "GLSL ES 3.00 fragment (mediump host)";
-}
+const char* path_name(Path p) { return p == Path::Compute ? "GL 4.3 compute" : "GLSL ES 3.00 fragment (mediump host)"; }
 
 std::vector<Path> all_paths() { return {Path::Compute, Path::Fragment}; }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace offsetgen::check {
+namespace offsetgen::run {
 
 struct ProcessResult {
   bool started = false;  // false when the program could not be executed at all
@@ -20,6 +20,10 @@ ProcessResult run_process(const std::vector<std::string>& argv);
 // Absolute path of an executable named `name` on PATH, or "" when there is none. A name with a
 // '/' is returned as is when it is executable.
 std::string find_on_path(const std::string& name);
+
+// The Python interpreter: $OFFSETGEN_PYTHON, else /usr/bin/python3 (Debian's, with NumPy and
+// matplotlib), else python3 on PATH.
+std::string find_python();
 
 // A fresh directory under the system's temporary directory, removed with everything in it when this
 // goes out of scope (kept when $OFFSETGEN_CHECK_KEEP is set, for debugging). Throws std::runtime_error
@@ -45,4 +49,4 @@ std::vector<double> run_on_points(std::vector<std::string> command, const std::f
 // Splits a command such as $CC="ccache gcc -m64" into words (whitespace separated, no quoting).
 std::vector<std::string> split_words(const std::string& text);
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::run

@@ -1,4 +1,4 @@
-#include "check/metadata.h"
+#include "run/metadata.h"
 
 #include "emit/backend.h"
 
@@ -13,7 +13,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace offsetgen::check {
+namespace offsetgen::run {
 namespace {
 
 constexpr const char* kMarker = "offsetgen-metadata";
@@ -73,48 +73,20 @@ bool is_identifier(const std::string& s) {
 }
 
 // "language": a backend's name (emit/backend.h). Older files lack it: a C header is the one with
-// `static inline` functions. check dispatches to the backend's checker; a target without one is refused.
-FileKind file_kind(const json& j, const std::string& text) {
+// `static inline` functions, anything else is a GLSL snippet.
+std::string file_language(const json& j, const std::string& text) {
   auto it = j.find("language");
-  if (it == j.end() || it->is_null()) {
-    return text.find("static inline ") != std::string::npos ? FileKind::C : FileKind::Glsl;
-  }
+  if (it == j.end() || it->is_null()) return text.find("static inline ") != std::string::npos ? "c" : "glsl";
   if (!it->is_string()) damaged("field \"language\" must be a string");
   const std::string language = *it;
-  const Backend* target = nullptr;
   for (const Backend* b : backends())
-    if (b->name() == language) target = b;
-  if (!target) damaged(fmt::format("field \"language\" must be one of {}", backend_names()));
-  if (!target->checkable())
-    throw InputError(
-        fmt::format("offsetgen check has no checker for {} files yet (language \"{}\"); the test suite "
-                    "compiles them (see README)",
-                    target->title(), language));
-  if (language == "numpy") return FileKind::Numpy;
-  if (language == "cuda") return FileKind::Cuda;
-  if (language == "opencl") return FileKind::Opencl;
-  return language == "c" ? FileKind::C : FileKind::Glsl;
+    if (b->name() == language) return language;
+  damaged(fmt::format("field \"language\" must be one of {}", backend_names()));
 }
 
-}  // namespace
-
-const char* kind_name(FileKind kind) {
-  switch (kind) {
-    case FileKind::C:
-      return "c";
-    case FileKind::Glsl:
-      return "glsl";
-    case FileKind::Numpy:
-      return "numpy";
-    case FileKind::Cuda:
-      return "cuda";
-    case FileKind::Opencl:
-      return "opencl";
-  }
-  return "c";
-}
-
-FileMetadata parse_metadata(const std::string& text) {
+// The block's JSON text: after `/* offsetgen-metadata` up to `*/` on the same line, or the rest of a
+// Python comment line `# offsetgen-metadata {...}` (NumPy modules).
+std::string block_text(const std::string& text) {
   // A C-style comment, or a Python comment line (NumPy modules): `# offsetgen-metadata {...}`.
   const bool python = text.find(std::string("\n# ") + kMarker + " ") != std::string::npos;
   const std::string opener = std::string(python ? "\n# " : "/* ") + kMarker;
@@ -132,8 +104,10 @@ FileMetadata parse_metadata(const std::string& text) {
   auto close = python ? (line_end == std::string::npos ? text.size() : line_end) : text.find("*/", json_begin);
   if (close == std::string::npos || (line_end != std::string::npos && close > line_end))
     damaged("the block does not end with `*/` on its line");
-  std::string body = text.substr(json_begin, close - json_begin);
+  return text.substr(json_begin, close - json_begin);
+}
 
+json parse_block(const std::string& body) {
   json j;
   try {
     j = json::parse(body);
@@ -141,14 +115,11 @@ FileMetadata parse_metadata(const std::string& text) {
     damaged(fmt::format("its JSON does not parse ({})", e.what()));
   }
   if (!j.is_object()) damaged("its JSON is not an object");
+  return j;
+}
 
-  FileMetadata m;
-  m.kind = file_kind(j, text);
-  m.json = body;
-  // trim the surrounding spaces of the JSON text
-  while (!m.json.empty() && std::isspace(static_cast<unsigned char>(m.json.front()))) m.json.erase(0, 1);
-  while (!m.json.empty() && std::isspace(static_cast<unsigned char>(m.json.back()))) m.json.pop_back();
-
+// Where the file comes from: format, generator, prefix, the surface or expression and its parameters.
+void read_origin(const json& j, FileMetadata& m) {
   m.format = int_field(j, "format", 0, 1000);
   if (m.format != 1)
     throw InputError(
@@ -170,6 +141,10 @@ FileMetadata parse_metadata(const std::string& text) {
       m.params[p.key()] = p.value().get<std::string>();
     }
   }
+}
+
+// What was built: scale, dimensions, method and order, thickness, precisions, the safeguard bound, ops.
+void read_construction(const json& j, FileMetadata& m) {
   m.scale = positive_number_field(j, "scale");
   m.dims = int_field(j, "dims", 2, 3);
   // Files from before the method choice were all made by the paper's construction.
@@ -198,23 +173,43 @@ FileMetadata parse_metadata(const std::string& text) {
       m.ops[p.key()] = static_cast<int>(p.value().get<unsigned long long>());
     }
   }
-  if (auto it = j.find("density"); it != j.end() && !it->is_null()) {
-    if (!it->is_object()) damaged("field \"density\" must be an object");
-    m.has_density = true;
-    m.density_limit = positive_number_field(*it, "density_limit");
-    m.thickness_limit = positive_number_field(*it, "thickness_limit");
-    m.offset_limit = positive_number_field(*it, "offset_limit");
-    const json& range = field(*it, "network_density_range");
-    if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number())
-      damaged("field \"network_density_range\" must be a list of two numbers");
-    m.network_density_min = range[0].get<double>();
-    m.network_density_max = range[1].get<double>();
-    if (auto w = j.find("wall_density"); w != j.end() && !w->is_null()) {
-      m.wall_density = positive_number_field(j, "wall_density");
-      m.wall_thickness = positive_number_field(j, "wall_thickness");
-    }
-    m.density_field = optional_string_field(j, "density_field");
+}
+
+// The density relations' limits and the --density / --density-field of files with density functions.
+void read_density(const json& j, FileMetadata& m) {
+  auto it = j.find("density");
+  if (it == j.end() || it->is_null()) return;
+  if (!it->is_object()) damaged("field \"density\" must be an object");
+  m.has_density = true;
+  m.density_limit = positive_number_field(*it, "density_limit");
+  m.thickness_limit = positive_number_field(*it, "thickness_limit");
+  m.offset_limit = positive_number_field(*it, "offset_limit");
+  const json& range = field(*it, "network_density_range");
+  if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number())
+    damaged("field \"network_density_range\" must be a list of two numbers");
+  m.network_density_min = range[0].get<double>();
+  m.network_density_max = range[1].get<double>();
+  if (auto w = j.find("wall_density"); w != j.end() && !w->is_null()) {
+    m.wall_density = positive_number_field(j, "wall_density");
+    m.wall_thickness = positive_number_field(j, "wall_thickness");
   }
+  m.density_field = optional_string_field(j, "density_field");
+}
+
+}  // namespace
+
+FileMetadata parse_metadata(const std::string& text) {
+  const std::string body = block_text(text);
+  const json j = parse_block(body);
+  FileMetadata m;
+  m.language = file_language(j, text);
+  m.json = body;
+  // trim the surrounding spaces of the JSON text
+  while (!m.json.empty() && std::isspace(static_cast<unsigned char>(m.json.front()))) m.json.erase(0, 1);
+  while (!m.json.empty() && std::isspace(static_cast<unsigned char>(m.json.back()))) m.json.pop_back();
+  read_origin(j, m);
+  read_construction(j, m);
+  read_density(j, m);
   // The header must actually define what the block describes.
   const std::string probe = m.prefix + "_offset";
   if (text.find(probe) == std::string::npos)
@@ -247,4 +242,4 @@ FileMetadata read_metadata(const std::string& path, std::string* text_out) {
   return m;
 }
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::run

@@ -1,6 +1,6 @@
-#include "check/glsl_compile.h"
+#include "run/glsl_compile.h"
 
-#include "check/process.h"
+#include "run/process.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -12,7 +12,7 @@
 #include <regex>
 #include <sstream>
 
-namespace offsetgen::check {
+namespace offsetgen::run {
 namespace {
 
 namespace fs = std::filesystem;
@@ -134,4 +134,4 @@ std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const Fi
   return results;
 }
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::run

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace offsetgen::check::numpy_run {
+namespace offsetgen::run::numpy {
 
 // `python` is check::find_python()'s (plot.h). Returns "/usr/bin/python3 with NumPy 1.24.2"; throws
 // std::runtime_error naming what to install when python3 or NumPy is missing.
@@ -21,4 +21,4 @@ void import_module(const std::string& python, const std::string& module_path);
 std::vector<double> run(const std::string& python, const std::string& module_path, const std::string& function,
                         const std::vector<std::vector<double>>& columns, int components);
 
-}  // namespace offsetgen::check::numpy_run
+}  // namespace offsetgen::run::numpy

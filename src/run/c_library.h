@@ -3,14 +3,14 @@
 // opened with dlopen. Compiler output is kept verbatim for the report.
 #pragma once
 
-#include "check/metadata.h"
+#include "run/metadata.h"
 
 #include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
 
-namespace offsetgen::check {
+namespace offsetgen::run {
 
 struct Toolchain {
   std::vector<std::string> c;    // e.g. {"/usr/bin/cc"}, or $CC split into words
@@ -67,16 +67,39 @@ struct LoadedFunctions {
   float (*offset_for_densityf)(float rho) = nullptr;
 };
 
+// A shared object opened with dlopen (RTLD_NOW | RTLD_LOCAL), closed when this goes.
+class SharedObject {
+ public:
+  // Throws std::runtime_error with dlerror()'s message when it cannot be opened.
+  explicit SharedObject(const std::string& path);
+  ~SharedObject();
+  SharedObject(const SharedObject&) = delete;
+  SharedObject& operator=(const SharedObject&) = delete;
+  // The exported function `name`, or nullptr when there is none.
+  template <typename T>
+  T symbol(const std::string& name) const {
+    return reinterpret_cast<T>(address(name));
+  }
+
+ private:
+  void* address(const std::string& name) const;
+  void* handle_;
+};
+
+// Compiles the C99 translation unit `source` into the shared object `library` with the C compiler of
+// `tools` and `flags` (-fPIC -shared -ffp-contract=off -lm added), then opens it. Throws
+// std::runtime_error with the compiler's output when either fails.
+std::unique_ptr<SharedObject> build_shared_object(const Toolchain& tools, const std::vector<std::string>& flags,
+                                                  const std::string& source, const std::string& library);
+
 class LoadedLibrary {
  public:
-  LoadedLibrary(void* handle, LoadedFunctions functions) : handle_(handle), functions_(functions) {}
-  ~LoadedLibrary();
-  LoadedLibrary(const LoadedLibrary&) = delete;
-  LoadedLibrary& operator=(const LoadedLibrary&) = delete;
+  LoadedLibrary(std::unique_ptr<SharedObject> object, LoadedFunctions functions)
+      : object_(std::move(object)), functions_(functions) {}
   const LoadedFunctions& functions() const { return functions_; }
 
  private:
-  void* handle_;
+  std::unique_ptr<SharedObject> object_;
   LoadedFunctions functions_;
 };
 
@@ -105,4 +128,4 @@ struct CompileOptions {
 CompileResult compile_and_load(const std::string& header_path, const FileMetadata& meta, const Toolchain& tools,
                                const CompileOptions& options = {});
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::run
