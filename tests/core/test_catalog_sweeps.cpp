@@ -27,7 +27,8 @@ std::uint64_t bits(double v) {
 TEST(CatalogSweeps, TheTableIsAFreshSweepBitForBit) {
   const std::vector<CatalogSweeps> fresh = sweep_catalog();
   const std::vector<CatalogSweeps>& table = catalog_sweeps_table();
-  ASSERT_EQ(table.size(), fresh.size()) << "a catalog surface is missing from the table";
+  ASSERT_EQ(table.size(), fresh.size())
+      << "the table and the catalog differ: run tools/update_golden.sh (it rewrites src/lowering/catalog_sweeps.inc)";
   for (size_t i = 0; i < fresh.size(); ++i) {
     SCOPED_TRACE(fresh[i].name);
     EXPECT_STREQ(table[i].name, fresh[i].name);
