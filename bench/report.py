@@ -244,6 +244,9 @@ NUMPY_END = "<!-- end of numpy section -->"
 # Parts and tiles (issues 23, 24) are measured by hand and by bench/tiles_bench.py: kept as they are.
 PARTS_BEGIN = "<!-- parts and tiles sections: measured by hand and bench/tiles_bench.py; kept by report.py -->"
 PARTS_END = "<!-- end of parts and tiles sections -->"
+# Generation CPU time with and without the catalog sweep table (issue 26): bench/generation_cpu.py, kept.
+SWEEPS_BEGIN = "<!-- catalog sweeps section: bench/generation_cpu.py, measured by hand; kept by report.py -->"
+SWEEPS_END = "<!-- end of catalog sweeps section -->"
 
 
 def kept_section(output, begin, end):
@@ -794,6 +797,7 @@ def main(argv=None):
     md.extend(mesh_section(R))
     md.extend(kept_section(args.output, PARTS_BEGIN, PARTS_END))
     md.extend(kept_section(args.output, NUMPY_BEGIN, NUMPY_END))
+    md.extend(kept_section(args.output, SWEEPS_BEGIN, SWEEPS_END))
     w("## How to reproduce")
     w("")
     w("```sh\ntools/run_benchmarks.sh              # builds build-bench/, runs everything, rewrites BENCHMARKS.md\n"

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Regenerates the committed golden files in generated/ from generated/MANIFEST (and
+# Rewrites the catalog's sweep table (src/lowering/catalog_sweeps.inc, by offsetgen_catalog_sweeps
+# beside offsetgen; when it changes, rebuild and run this again: offsetgen holds the table it was
+# built with). Then regenerates the committed golden files in generated/ from generated/MANIFEST (and
 # cmake/registries.json, `offsetgen list --registries`): writes what the manifest produces and
 # removes every other file (a golden file whose manifest line is gone is
 # stale). Run it when a change to the generator is meant to change its output, review
@@ -11,6 +13,15 @@ tool=${1:-build/offsetgen}
 golden=${2:-generated}
 [ -x "$tool" ] || { echo "update_golden: $tool not found; build first (cmake --build build)" >&2; exit 2; }
 [ -f "$golden/MANIFEST" ] || { echo "update_golden: $golden/MANIFEST not found" >&2; exit 2; }
+sweeps=$(dirname "$tool")/offsetgen_catalog_sweeps
+[ -x "$sweeps" ] || { echo "update_golden: $sweeps not found; build it (target offsetgen_catalog_sweeps)" >&2; exit 2; }
+table=src/lowering/catalog_sweeps.inc
+"$sweeps" "$table.new"
+if cmp -s "$table.new" "$table"; then rm "$table.new"; else
+  mv "$table.new" "$table"
+  echo "update_golden: $table rewritten; rebuild offsetgen and run this again to regenerate $golden/" >&2
+  exit 3
+fi
 fresh=$(mktemp -d)
 trap 'rm -rf "$fresh"' EXIT
 while read -r line; do

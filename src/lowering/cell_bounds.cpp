@@ -1,5 +1,6 @@
 #include "lowering/cell_bounds.h"
 
+#include "lowering/catalog_sweeps.h"
 #include "lowering/lower.h"
 #include "lowering/sample_region.h"
 
@@ -151,8 +152,31 @@ std::vector<double> min_gradient_in_bands(const Surface& surface, const AtomTabl
   return lowest;
 }
 
-CellBounds cell_bounds(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field) {
+std::vector<double> lipschitz_band_levels(const CellBounds& bounds, double scale) {
+  std::vector<double> levels;
+  for (double h : kLipschitzHalfThicknesses) levels.push_back(2 * bounds.gradient * scale * h);
+  return levels;
+}
+
+std::vector<double> lipschitz_band_minima(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field,
+                                          const CellBounds& bounds) {
+  // The table's minima hold for the bands of its own bounds only.
+  const CatalogSweeps* known = catalog_sweeps(surface);
+  if (known && field.has_hessian() && bounds.gradient == known->bounds.gradient &&
+      bounds.hessian == known->bounds.hessian)
+    return {known->band_minima.begin(), known->band_minima.end()};
+  const double scale = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(surface.scale)).to_double();
+  return min_gradient_in_bands(surface, atoms, field, bounds, lipschitz_band_levels(bounds, scale));
+}
+
+CellBounds swept_cell_bounds(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field) {
   return {max_gradient_norm(surface, atoms, field), max_hessian_norm(surface, atoms, field)};
+}
+
+CellBounds cell_bounds(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field) {
+  if (const CatalogSweeps* known = catalog_sweeps(surface))
+    return {known->bounds.gradient, field.has_hessian() ? known->bounds.hessian : 0.0};
+  return swept_cell_bounds(surface, atoms, field);
 }
 
 }  // namespace offsetgen

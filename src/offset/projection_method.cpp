@@ -313,10 +313,8 @@ class Projection final : public OffsetConstruction {
   // |grad phi| <= M/(1 - |h| H/g). Outside the band phi has F's sign and |phi| >= |F| - M|h|.
   void add_lipschitz_bounds(const Surface& surface) {
     const double k = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(surface.scale)).to_double();
-    const std::vector<double> hs = {0.005, 0.01, 0.025, 0.05};  // cell units: walls of 0.01 to 0.1 cell
-    std::vector<double> levels;
-    for (double h : hs) levels.push_back(2 * bounds_.gradient * k * h);
-    const std::vector<double> g = min_gradient_in_bands(surface, atoms_, field_, bounds_, levels);
+    const auto& hs = kLipschitzHalfThicknesses;
+    const std::vector<double> g = lipschitz_band_minima(surface, atoms_, field_, bounds_);
     std::string table;
     nlohmann::ordered_json json = nlohmann::ordered_json::array();
     for (size_t i = 0; i < hs.size(); ++i) {

@@ -1,6 +1,7 @@
 #include "validate/request_checks.h"
 
 #include "emit/emitted_api.h"
+#include "lowering/catalog_sweeps.h"
 #include "validate/cell_domain.h"
 #include "validate/constants.h"
 #include "validate/cost_guard.h"
@@ -14,7 +15,8 @@ void check_before_build(const RequestFacts& facts) {
   require_usable_prefix(facts.prefix, facts.languages);
   require_within_size_limits(surface.field, surface.from_catalog ? "the catalog formula" : "the expression");
   require_regular_map(surface);  // before sampling: a singular point would read as undefined
-  require_defined_on_cell(surface);
+  // A catalog formula's sweep passed when its table entry was written (lowering/catalog_sweeps.h).
+  if (!catalog_sweeps(surface)) require_defined_on_cell(surface);
   if (facts.thickness && *facts.thickness) {
     require_within_size_limits(**facts.thickness, "the thickness expression");
     require_positive_thickness(**facts.thickness, surface.dims, facts.thickness_text);
