@@ -151,8 +151,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"generate --expr \"1/x + y - 3\" --name s --precision float", "beyond the float range"},
         BadInput{"generate --expr \"1/x + y - 3\" --name s --lang glsl", "beyond the float range"},
         // Names: accepted functions only, by name; Pi, not pi.
-        BadInput{"generate --expr \"atan2(y, x) + z\" --name s",
-                 "unknown function 'atan2' at column 1; accepted: acos"},
+        BadInput{"generate --expr \"hypot(y, x) + z\" --name s",
+                 "unknown function 'hypot' at column 1; accepted: acos"},
+        BadInput{"generate --expr \"atan2(y) + z\" --name s", "atan2() takes two arguments, atan2(y, x)"},
         BadInput{"generate --expr \"pi*x + y\" --name s", "unknown name 'pi' at column 1: write Pi"},
         BadInput{"generate --expr \"x + y\" --param sin=2 --name s", "parameter name 'sin' is reserved"},
         BadInput{"generate --expr \"x·y + z\" --name s",
@@ -249,7 +250,7 @@ TEST(Cli, ProjectionIsNotRefusedByRichardsonsCostEstimate) {
 
 TEST(Cli, HelpListsTheAcceptedFunctions) {
   const auto help = run_offsetgen("generate --help");
-  EXPECT_NE(help.output.find("acos asin atan cos cosh exp log sin sinh sqrt tan tanh; the constant Pi"),
+  EXPECT_NE(help.output.find("acos asin atan atan2 cos cosh exp log sin sinh sqrt tan tanh; the constant Pi"),
             std::string::npos)
       << help.output;
 }

@@ -3,7 +3,7 @@
 // exact wall volume (column quadrature of this process's own wall functions), the distance of exact
 // wall points (other lines than the tool's) to its faces. Bad input exits 2 and writes nothing; a
 // tolerance out of reach exits 1 and writes nothing.
-#include "check/process.h"
+#include "run/process.h"
 #include "check/volume_fraction.h"
 #include "mesh/wall_field.h"
 #include "step/deviation.h"
@@ -31,10 +31,10 @@ std::string scratch_dir(const std::string& name) {
   return dir.string();
 }
 
-check::ProcessResult run_offsetgen(const std::vector<std::string>& args) {
+run::ProcessResult run_offsetgen(const std::vector<std::string>& args) {
   std::vector<std::string> argv = {OFFSETGEN_EXE};
   argv.insert(argv.end(), args.begin(), args.end());
-  return check::run_process(argv);
+  return run::run_process(argv);
 }
 
 std::string read_bytes(const std::string& path) {
@@ -49,7 +49,7 @@ constexpr double kThickness = 0.1, kCellSize = 10, kTolerance = 0.01;
 // One Schwarz P cell, written once for the tests below.
 struct Written {
   std::string path;
-  check::ProcessResult run;
+  run::ProcessResult run;
 };
 const Written& one_cell() {
   static const Written w = [] {
@@ -135,17 +135,17 @@ TEST(StepCli, SameInputsWriteTheSameBytes) {
   const Written& w = one_cell();
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const std::string again = scratch_dir("again") + "/p.step";
-  const check::ProcessResult r = run_offsetgen({"step", "--surface", "schwarzp", "--thickness", "0.1", "--cells", "1",
+  const run::ProcessResult r = run_offsetgen({"step", "--surface", "schwarzp", "--thickness", "0.1", "--cells", "1",
                                                 "--cell-size", "10", "--tolerance", "0.01", "-o", again, "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_bytes(again), read_bytes(w.path));
 }
 
 TEST(StepExecutable, OnlyOffsetgenStepLinksOpenCascade) {
-  const check::ProcessResult plain = check::run_process({"ldd", OFFSETGEN_EXE});
+  const run::ProcessResult plain = run::run_process({"ldd", OFFSETGEN_EXE});
   ASSERT_EQ(plain.exit_code, 0) << plain.output;
   EXPECT_EQ(plain.output.find("libTKernel"), std::string::npos) << plain.output;
-  const check::ProcessResult step = check::run_process({"ldd", OFFSETGEN_STEP_EXE});
+  const run::ProcessResult step = run::run_process({"ldd", OFFSETGEN_STEP_EXE});
   ASSERT_EQ(step.exit_code, 0) << step.output;
   EXPECT_NE(step.output.find("libTKernel"), std::string::npos) << step.output;
 }
@@ -154,18 +154,18 @@ TEST(StepExecutable, WithoutOffsetgenStepBesideItStepSaysItIsMissingAndExits3) {
   const std::string dir = scratch_dir("lone-offsetgen");
   const std::string lone = dir + "/offsetgen";
   fs::copy_file(OFFSETGEN_EXE, lone);
-  const check::ProcessResult r =
-      check::run_process({lone, "step", "--surface", "schwarzp", "--thickness", "0.1", "-o", dir + "/p.step"});
+  const run::ProcessResult r =
+      run::run_process({lone, "step", "--surface", "schwarzp", "--thickness", "0.1", "-o", dir + "/p.step"});
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find(dir + "/" + fs::path(OFFSETGEN_STEP_EXE).filename().string() + ", which is missing"),
             std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(dir + "/p.step"));
   // Its help and usage errors still come from offsetgen itself.
-  const check::ProcessResult help = check::run_process({lone, "step", "--help"});
+  const run::ProcessResult help = run::run_process({lone, "step", "--help"});
   EXPECT_EQ(help.exit_code, 0) << help.output;
   EXPECT_NE(help.output.find("Usage: offsetgen step [OPTIONS]"), std::string::npos) << help.output;
-  EXPECT_EQ(check::run_process({lone, "step", "--bogus"}).exit_code, 2);
+  EXPECT_EQ(run::run_process({lone, "step", "--bogus"}).exit_code, 2);
 }
 
 struct Refusal {
@@ -188,7 +188,7 @@ TEST_P(StepRefuses, WithItsExitCodeAReasonAndNoFile) {
   if (!given("--cells")) args.insert(args.end(), {"--cells", "1"});
   if (!given("-o")) args.insert(args.end(), {"-o", out});
   args.insert(args.end(), r.args.begin(), r.args.end());
-  const check::ProcessResult run = run_offsetgen(args);
+  const run::ProcessResult run = run_offsetgen(args);
   EXPECT_EQ(run.exit_code, r.exit_code) << run.output;
   EXPECT_NE(run.output.find(r.says), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(out));
