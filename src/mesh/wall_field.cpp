@@ -7,8 +7,6 @@
 #include "run/process.h"
 #include "surfaces/expression_input.h"
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -52,21 +50,6 @@ std::string wrapper_source(const std::string& header, const std::string& prefix)
       "double offsetgen_mesh_field(double x, double y, double z) {{ return {1}_field(x, y, z); }}\n",
       header, prefix);
 }
-
-// A scratch directory, removed (with the loaded library's file: the mapping stays) on exit.
-struct Scratch {
-  fs::path path;
-  Scratch() {
-    std::string pattern = (fs::temp_directory_path() / "offsetgen-mesh-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
-    path = pattern;
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
 
 }  // namespace
 
@@ -128,14 +111,14 @@ void WallField::compile() {
   run::Toolchain tools = run::find_toolchain();
   const bool large = count_ops(generation_.programs.offset) > run::kLargeFunctionOps;
   compile_flags_ = large ? "-O0" : "-O3 -march=native -fno-math-errno";
-  Scratch scratch;
+  const run::ScratchDir scratch("offsetgen-mesh");  // removed on exit (a loaded library's mapping stays)
   const std::string header = generation_.prefix + ".h";
-  std::ofstream(scratch.path / header) << generation_.c_header();
-  std::ofstream(scratch.path / "wrapper.c") << wrapper_source(header, generation_.prefix);
+  std::ofstream(scratch.path() / header) << generation_.c_header();
+  std::ofstream(scratch.path() / "wrapper.c") << wrapper_source(header, generation_.prefix);
   std::vector<std::string> flags = run::split_words(compile_flags_);
-  flags.push_back("-I" + scratch.path.string());
-  library_ = run::build_shared_object(tools, flags, (scratch.path / "wrapper.c").string(),
-                                      (scratch.path / "wrapper.so").string());
+  flags.push_back("-I" + scratch.path().string());
+  library_ = run::build_shared_object(tools, flags, (scratch.path() / "wrapper.c").string(),
+                                      (scratch.path() / "wrapper.so").string());
   offset_n_ = library_->symbol<OffsetN>("offsetgen_mesh_offset_n");
   field_ = library_->symbol<Field>("offsetgen_mesh_field");
   if (offset_n_ == nullptr || field_ == nullptr) throw std::runtime_error("dlsym: the wrapper lacks its functions");

@@ -3,13 +3,12 @@
 #include "check/volume_fraction.h"
 #include "density/surface_constants.h"
 #include "emit/file_writer.h"
+#include "run/process.h"
 #include "step/deviation.h"
 #include "step/schwarzp_patch.h"
 #include "step/step_file.h"
 #include "step/wall_brep.h"
 #include "surfaces/input_error.h"
-
-#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -72,22 +71,6 @@ std::string read_bytes(const fs::path& path) {
   s << in.rdbuf();
   return s.str();
 }
-
-struct Scratch {
-  fs::path path;
-  Scratch() {
-    std::string pattern = (fs::temp_directory_path() / "offsetgen-step-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
-    path = pattern;
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  Scratch(const Scratch&) = delete;
-  Scratch& operator=(const Scratch&) = delete;
-};
 
 }  // namespace
 
@@ -169,8 +152,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
 
   say("writing STEP");
   t0 = Clock::now();
-  Scratch scratch;
-  const fs::path file = scratch.path / "wall.step";
+  const run::ScratchDir scratch("offsetgen-step");  // removed on exit (a loaded library's mapping stays)
+  const fs::path file = scratch.path() / "wall.step";
   write_step(brep.solid, file.string(),
              fmt::format("offsetgen: {} wall, t = {} (cell units), {}x{}x{} cells of {} mm, tolerance {} mm", s.surface,
                          s.thickness, r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance));
