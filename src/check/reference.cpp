@@ -1,7 +1,7 @@
 #include "check/reference.h"
 
+#include "field/atom_table.h"
 #include "lowering/lower.h"
-#include "offset/atom_table.h"
 #include "surfaces/expression_input.h"
 #include "surfaces/expression_syntax.h"
 

@@ -5,9 +5,9 @@
 #pragma once
 
 #include "density/column_evaluator.h"
+#include "field/atom_table.h"
+#include "field/field_atoms.h"
 #include "lowering/program.h"
-#include "offset/atom_table.h"
-#include "offset/field_atoms.h"
 #include "surfaces/surface.h"
 
 #include <array>

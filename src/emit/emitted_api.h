@@ -3,8 +3,8 @@
 #pragma once
 
 #include "density/density_model.h"
-#include "lowering/surface_programs.h"
 #include "offset/method.h"
+#include "offset/surface_programs.h"
 #include "surfaces/surface.h"
 
 #include <optional>

@@ -1,4 +1,4 @@
-#include "offset/atom_table.h"
+#include "field/atom_table.h"
 
 namespace offsetgen {
 

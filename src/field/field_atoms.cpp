@@ -1,6 +1,6 @@
-#include "offset/field_atoms.h"
+#include "field/field_atoms.h"
 
-#include "offset/symbolic_diff.h"
+#include "field/symbolic_diff.h"
 
 namespace offsetgen {
 

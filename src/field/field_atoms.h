@@ -2,8 +2,8 @@
 // offset construction evaluates, at the point p or at any other point.
 #pragma once
 
-#include "offset/atom_table.h"
-#include "offset/multi_index.h"
+#include "field/atom_table.h"
+#include "field/multi_index.h"
 #include "surfaces/surface.h"
 
 #include <ginac/ginac.h>

@@ -1,4 +1,4 @@
-#include "offset/multi_index.h"
+#include "field/multi_index.h"
 
 namespace offsetgen {
 

@@ -1,4 +1,4 @@
-#include "offset/symbolic_diff.h"
+#include "field/symbolic_diff.h"
 
 #include <stdexcept>
 

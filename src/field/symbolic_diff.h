@@ -1,7 +1,7 @@
 // Memoised symbolic differentiation over GiNaC's expression DAG.
 #pragma once
 
-#include "offset/multi_index.h"
+#include "field/multi_index.h"
 
 #include <ginac/ginac.h>
 

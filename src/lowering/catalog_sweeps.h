@@ -7,7 +7,6 @@
 #pragma once
 
 #include "lowering/cell_bounds.h"
-#include "offset/method.h"
 #include "surfaces/surface.h"
 
 #include <array>

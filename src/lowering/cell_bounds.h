@@ -2,15 +2,20 @@
 // generation time: grid search, then compass refinement, with a relative margin.
 #pragma once
 
-#include "offset/atom_table.h"
-#include "offset/field_atoms.h"
-#include "offset/method.h"
+#include "field/atom_table.h"
+#include "field/field_atoms.h"
 #include "surfaces/surface.h"
 
 #include <array>
 #include <vector>
 
 namespace offsetgen {
+
+// Bounds over one cell [0,1]^d in natural units: M >= max |grad F|, H >= max ||Hess F||_2.
+struct CellBounds {
+  double gradient = 0;
+  double hessian = 0;
+};
 
 // M >= max |grad F| and, when `field` has second derivatives, H >= max ||Hess F||_2 (else 0). An
 // unmapped catalog surface's come from its table (catalog_sweeps.h), every other surface is swept.

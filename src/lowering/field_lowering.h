@@ -2,8 +2,8 @@
 // first dims inputs are the cell coordinates x; the base point p = k x is in natural coordinates.
 #pragma once
 
+#include "field/field_atoms.h"
 #include "lowering/lower.h"
-#include "offset/field_atoms.h"
 #include "surfaces/surface.h"
 
 #include <deque>

@@ -1,8 +1,8 @@
 // Lowering GiNaC expressions (with atoms) into a straight-line Program.
 #pragma once
 
+#include "field/atom_table.h"
 #include "lowering/program.h"
-#include "offset/atom_table.h"
 
 #include <ginac/ginac.h>
 

@@ -1,7 +1,7 @@
 #include "lowering/sample_region.h"
 
+#include "field/atom_table.h"
 #include "lowering/lower.h"
-#include "offset/atom_table.h"
 
 #include <fmt/format.h>
 

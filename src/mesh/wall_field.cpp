@@ -2,7 +2,7 @@
 
 #include "density/density_model.h"
 #include "density/surface_constants.h"
-#include "lowering/surface_programs.h"
+#include "offset/surface_programs.h"
 #include "run/c_library.h"
 #include "run/process.h"
 #include "surfaces/expression_input.h"

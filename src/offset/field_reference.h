@@ -3,8 +3,8 @@
 // of a perfect square included); everything else carries `digits` significant digits.
 #pragma once
 
-#include "offset/atom_table.h"
-#include "offset/field_atoms.h"
+#include "field/atom_table.h"
+#include "field/field_atoms.h"
 #include "surfaces/surface.h"
 
 #include <ginac/ginac.h>

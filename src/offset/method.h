@@ -3,9 +3,10 @@
 // instead of switching on its name. Adding a method is one file plus one line in method_registry.cpp.
 #pragma once
 
+#include "field/atom_table.h"
+#include "field/field_atoms.h"
+#include "lowering/cell_bounds.h"
 #include "lowering/program.h"
-#include "offset/atom_table.h"
-#include "offset/field_atoms.h"
 #include "surfaces/surface.h"
 
 #include <ginac/ginac.h>
@@ -20,12 +21,6 @@ namespace offsetgen {
 
 class FieldLowering;   // lowering/field_lowering.h
 class FieldReference;  // offset/field_reference.h
-
-// Bounds over one cell [0,1]^d in natural units: M >= max |grad F|, H >= max ||Hess F||_2.
-struct CellBounds {
-  double gradient = 0;
-  double hessian = 0;
-};
 
 // What files and metadata say about one construction. Text fields are plain paragraphs (lines of
 // at most ~92 characters, no comment markers); the emitters indent them.

@@ -1,6 +1,6 @@
 #include "offset/offset_model.h"
 
-#include "offset/multi_index.h"
+#include "field/multi_index.h"
 #include "offset/richardson.h"
 
 #include <fmt/format.h>

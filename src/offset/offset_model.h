@@ -1,8 +1,8 @@
 // The offset function phi^(m) of a surface, as symbolic definitions (paper sections 2-3).
 #pragma once
 
-#include "offset/atom_table.h"
-#include "offset/field_atoms.h"
+#include "field/atom_table.h"
+#include "field/field_atoms.h"
 #include "surfaces/surface.h"
 
 #include <ginac/ginac.h>

@@ -1,4 +1,4 @@
-#include "lowering/surface_programs.h"
+#include "offset/surface_programs.h"
 
 #include "lowering/field_lowering.h"
 

@@ -1,8 +1,8 @@
 #include "pipeline/catalog_sweep_table.h"
 
+#include "field/atom_table.h"
+#include "field/field_atoms.h"
 #include "lowering/cell_bounds.h"
-#include "offset/atom_table.h"
-#include "offset/field_atoms.h"
 #include "surfaces/catalog.h"
 #include "validate/cell_domain.h"
 

@@ -6,8 +6,8 @@
 #include "density/density_model.h"
 #include "emit/backend.h"
 #include "emit/emitted_api.h"
-#include "lowering/surface_programs.h"
 #include "offset/method.h"
+#include "offset/surface_programs.h"
 #include "surfaces/surface.h"
 
 #include <functional>

@@ -3,8 +3,8 @@
 // functions cannot be evaluated in that type anyway.
 #pragma once
 
-#include "lowering/surface_programs.h"
 #include "offset/method.h"
+#include "offset/surface_programs.h"
 
 namespace offsetgen {
 

@@ -1,7 +1,7 @@
 #include "validate/cost_guard.h"
 
 #include "emit/emitted_api.h"
-#include "lowering/surface_programs.h"
+#include "offset/surface_programs.h"
 
 #include <fmt/format.h>
 

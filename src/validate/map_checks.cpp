@@ -1,8 +1,8 @@
 #include "validate/map_checks.h"
 
+#include "field/atom_table.h"
 #include "lowering/lower.h"
 #include "lowering/sample_region.h"
-#include "offset/atom_table.h"
 
 #include <fmt/format.h>
 

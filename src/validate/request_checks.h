@@ -5,8 +5,8 @@
 #pragma once
 
 #include "emit/backend.h"
-#include "lowering/surface_programs.h"
 #include "offset/method.h"
+#include "offset/surface_programs.h"
 #include "surfaces/surface.h"
 
 #include <ginac/ginac.h>

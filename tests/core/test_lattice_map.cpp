@@ -1,8 +1,8 @@
 // Conforming lattices (--map, surfaces/lattice_map.h): the map's parsing, atan2 through lowering and
 // differentiation, the checks on the domain, and the property that matters: walls exactly thick in
 // physical units wherever the map stretches the cells.
+#include "field/symbolic_diff.h"
 #include "lowering/program.h"
-#include "offset/symbolic_diff.h"
 #include "pipeline/generate.h"
 #include "surfaces/lattice_map.h"
 #include "test_support.h"

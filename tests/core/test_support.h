@@ -2,9 +2,9 @@
 // directories and files come from tests/support.
 #pragma once
 
-#include "lowering/surface_programs.h"
 #include "offset/method.h"
 #include "offset/offset_model.h"
+#include "offset/surface_programs.h"
 #include "offsetgen_test_support.h"
 #include "surfaces/catalog.h"
 
