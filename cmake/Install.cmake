@@ -1,11 +1,10 @@
 # Installation, the CMake package (find_package(offsetgen), offsetgen_generate()) and the build-tree
 # export. Included by the top-level CMakeLists.txt after src/.
 #
-# Installed layout (the executable finds its templates at <exe>/../share/offsetgen/templates, and
-# `offsetgen check` its plot script at <exe>/../share/offsetgen/tools, so bin/ and share/ are fixed):
+# Installed layout (the templates are compiled into the executable; `offsetgen check --plot` finds
+# its plot script at <exe>/../share/offsetgen/tools, so bin/ and share/ are fixed):
 #   bin/offsetgen
 #   bin/offsetgen-mesh (where built with OpenVDB: `offsetgen mesh` execs it from offsetgen's directory)
-#   share/offsetgen/templates/<lang>/*.in
 #   share/offsetgen/tools/plot_convergence.py
 #   <OFFSETGEN_INSTALL_CMAKEDIR>/offsetgenConfig.cmake, offsetgenConfigVersion.cmake,
 #       offsetgenTargets*.cmake, offsetgenGenerate.cmake, offsetgenGlslString.cmake
@@ -84,25 +83,21 @@ endforeach()
 
 # --- The same names inside this build (add_subdirectory / FetchContent users, and our tests) -------
 add_executable(offsetgen::offsetgen ALIAS offsetgen)
-file(GLOB_RECURSE _offsetgen_templates "${PROJECT_SOURCE_DIR}/templates/*.in")
 set_property(GLOBAL PROPERTY OFFSETGEN_METHODS "${OFFSETGEN_METHODS}")
 set_property(GLOBAL PROPERTY OFFSETGEN_METHOD_ORDERS "${OFFSETGEN_METHOD_ORDERS}")
 set_property(GLOBAL PROPERTY OFFSETGEN_LANGUAGES "${OFFSETGEN_LANGUAGES}")
 set_property(GLOBAL PROPERTY OFFSETGEN_DEFAULT_METHOD "${OFFSETGEN_DEFAULT_METHOD}")
 set_property(GLOBAL PROPERTY OFFSETGEN_SURFACES "${OFFSETGEN_SURFACES}")
-set_property(GLOBAL PROPERTY OFFSETGEN_TEMPLATE_FILES ${_offsetgen_templates})
-unset(_offsetgen_templates)
 include("${CMAKE_CURRENT_LIST_DIR}/offsetgenGenerate.cmake")
 
 # --- Build-tree package: find_package(offsetgen) with offsetgen_DIR=<this build dir> ------------
 export(TARGETS offsetgen NAMESPACE offsetgen:: FILE "${PROJECT_BINARY_DIR}/offsetgenTargets.cmake")
-set(OFFSETGEN_CONFIG_TEMPLATE_DIR "${PROJECT_SOURCE_DIR}/templates")
 set(OFFSETGEN_CONFIG_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}")
 configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/offsetgenConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/offsetgenConfig.cmake"
   INSTALL_DESTINATION "${PROJECT_BINARY_DIR}"
   INSTALL_PREFIX "${PROJECT_BINARY_DIR}"
-  PATH_VARS OFFSETGEN_CONFIG_TEMPLATE_DIR OFFSETGEN_CONFIG_MODULE_DIR)
+  PATH_VARS OFFSETGEN_CONFIG_MODULE_DIR)
 # offsetgen is a build tool: a 32-bit consumer can run a 64-bit offsetgen, hence ARCH_INDEPENDENT.
 write_basic_package_version_file("${PROJECT_BINARY_DIR}/offsetgenConfigVersion.cmake"
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion ARCH_INDEPENDENT)
@@ -113,17 +108,15 @@ if(OFFSETGEN_INSTALL)
   if(TARGET offsetgen-mesh)
     install(TARGETS offsetgen-mesh RUNTIME DESTINATION bin)
   endif()
-  install(DIRECTORY "${PROJECT_SOURCE_DIR}/templates/" DESTINATION share/offsetgen/templates)
   install(PROGRAMS "${PROJECT_SOURCE_DIR}/tools/plot_convergence.py" DESTINATION share/offsetgen/tools)
 
   install(EXPORT offsetgenTargets NAMESPACE offsetgen:: FILE offsetgenTargets.cmake
           DESTINATION "${OFFSETGEN_INSTALL_CMAKEDIR}")
-  set(OFFSETGEN_CONFIG_TEMPLATE_DIR share/offsetgen/templates)
   set(OFFSETGEN_CONFIG_MODULE_DIR "${OFFSETGEN_INSTALL_CMAKEDIR}")
   configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/offsetgenConfig.cmake.in"
     "${PROJECT_BINARY_DIR}/CMakeFiles/offsetgen-install/offsetgenConfig.cmake"
     INSTALL_DESTINATION "${OFFSETGEN_INSTALL_CMAKEDIR}"
-    PATH_VARS OFFSETGEN_CONFIG_TEMPLATE_DIR OFFSETGEN_CONFIG_MODULE_DIR)
+    PATH_VARS OFFSETGEN_CONFIG_MODULE_DIR)
   install(FILES
     "${PROJECT_BINARY_DIR}/CMakeFiles/offsetgen-install/offsetgenConfig.cmake"
     "${PROJECT_BINARY_DIR}/offsetgenConfigVersion.cmake"

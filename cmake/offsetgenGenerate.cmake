@@ -40,7 +40,7 @@
 #
 # The generator is offsetgen::offsetgen (find_package(offsetgen) or add_subdirectory), or the host
 # executable in the cache variable OFFSETGEN_EXECUTABLE when that is set (cross-compiling).
-# Files are regenerated when the generator, its templates or the arguments change, and only then;
+# Files are regenerated when the generator (its templates are inside it) or the arguments change, and only then;
 # offsetgen rewrites a file only when its content changes, so consumers recompile only then.
 
 include_guard(GLOBAL)
@@ -348,8 +348,6 @@ function(offsetgen_generate)
   elseif(TARGET offsetgen::offsetgen)
     set(tool offsetgen::offsetgen)
     set(tool_inputs offsetgen::offsetgen)
-    get_property(templates GLOBAL PROPERTY OFFSETGEN_TEMPLATE_FILES)
-    list(APPEND tool_inputs ${templates})
   else()
     _offsetgen_fail("${target}" "no offsetgen: call find_package(offsetgen) or add_subdirectory(<offsetgen>) first, or set OFFSETGEN_EXECUTABLE to a host offsetgen")
   endif()

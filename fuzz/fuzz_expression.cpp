@@ -15,10 +15,6 @@
 #include <sstream>
 #include <string>
 
-#ifndef OFFSETGEN_FUZZ_TEMPLATE_DIR
-#error "OFFSETGEN_FUZZ_TEMPLATE_DIR must name the templates/ folder"
-#endif
-
 namespace {
 
 // Longer inputs add no new paths; they only slow the fuzzer down.
@@ -53,11 +49,6 @@ bool prints_a_non_finite_literal(const std::string& code) {
 }
 
 }  // namespace
-
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  setenv("OFFSETGEN_TEMPLATE_DIR", OFFSETGEN_FUZZ_TEMPLATE_DIR, 1);
-  return 0;
-}
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size > kMaxInput) return 0;

@@ -8,7 +8,7 @@ foreach(variable PACKAGE_DIR WORK_DIR)
     message(FATAL_ERROR "check_valid.cmake: -D${variable}=... is required")
   endif()
 endforeach()
-foreach(variable MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES OFFSETGEN_TEMPLATE_DIR)
+foreach(variable MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES)
   unset(ENV{${variable}})
 endforeach()
 

@@ -22,7 +22,7 @@ if(NOT DEFINED JOBS)
 endif()
 # Keep the nested builds to themselves when ctest itself runs under make or with these set.
 foreach(variable MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES CMAKE_BUILD_PARALLEL_LEVEL CMAKE_GENERATOR
-                 CMAKE_PREFIX_PATH OFFSETGEN_TEMPLATE_DIR DESTDIR)
+                 CMAKE_PREFIX_PATH DESTDIR)
   unset(ENV{${variable}})
 endforeach()
 
