@@ -4,7 +4,9 @@
 #include "check/plot.h"
 #include "check/report.h"
 #include "cli/command_line.h"
+#include "emit/backend.h"
 #include "emit/file_writer.h"
+#include "run/runner.h"
 #include "surfaces/expression_input.h"
 #include "surfaces/surface.h"
 
@@ -16,15 +18,31 @@
 
 namespace offsetgen {
 
+namespace {
+
+// The help names every target that check can run, as the runner registry has them.
+std::string check_description() {
+  std::string text =
+      "Check an emitted file: run it, compare its values with a 40-digit evaluation and, for C, measure the\n"
+      "wall thickness it produces (paper section 5.2.1). The file's target comes from its metadata, not\n"
+      "its name. By target:";
+  for (const run::Runner* runner : run::runners())
+    text += fmt::format("\n  {} (.{}): {}.", runner->backend(), backend(runner->backend()).extension(), runner->how());
+  return text;
+}
+
+std::string checkable_extensions() {
+  std::string list;
+  for (const run::Runner* runner : run::runners())
+    list += (list.empty() ? "." : ", .") + backend(runner->backend()).extension();
+  return list;
+}
+
+}  // namespace
+
 void add_check_command(CLI::App& app, CheckOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "check",
-      "Check an emitted file: compile it (C99 strict, C++17, dlopen), compare its values with a 40-digit\n"
-      "evaluation, and measure the wall thickness it produces (paper section 5.2.1). GLSL: glslang compile,\n"
-      "then its values on Mesa llvmpipe. NumPy (.py): python3 runs it. CUDA (.cuh): nvcc compiles its host\n"
-      "path. OpenCL C (.cl): pocl (the OpenCL ICD) runs it. HLSL: glslang makes SPIR-V, Mesa lavapipe runs it.\n"
-      "WGSL: Dawn runs it. The file's target comes from its metadata, not its name (run/runner.h).");
-  cmd->add_option("file", o.file, "A .h, .glsl, .hlsl, .wgsl, .py, .cuh or .cl file written by `offsetgen generate`")
+  CLI::App* cmd = app.add_subcommand("check", check_description());
+  cmd->add_option("file", o.file, "A file written by `offsetgen generate` (" + checkable_extensions() + ")")
       ->required();
   cmd->add_option("--h", o.h_list,
                   "Offsets to measure, comma-separated, cell units (default 0.001..0.1, 9 log-spaced)");

@@ -78,6 +78,7 @@ class Runner {
  public:
   virtual ~Runner() = default;
   virtual std::string backend() const = 0;  // the Backend::name() whose files it runs
+  virtual std::string how() const = 0;      // how it runs here, for `check --help`: "nvcc compiles it ..."
   virtual ValueWords words() const = 0;
   // Whether the code is loaded into this process (C headers): check then also measures the wall
   // thickness, the Lipschitz bounds and the densities through Prepared::library.

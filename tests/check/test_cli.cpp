@@ -1,7 +1,9 @@
 // `offsetgen check` as a user runs it: exit codes 0 (all pass), 1 (a check failed), 2 (usage or
 // input error), the table, --json and --plot.
 #include "check_test_support.h"
+#include "emit/backend.h"
 #include "run/process.h"
+#include "run/runner.h"
 
 #include <gtest/gtest.h>
 
@@ -92,6 +94,16 @@ TEST_F(CheckCli, ACompileErrorExits1WithTheCompilerOutput) {
   EXPECT_NE(r.output.find("undeclared_identifier"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("broken.h:"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("FAILED"), std::string::npos) << r.output;
+}
+
+TEST(CheckHelp, NamesEveryTargetOfTheRunnerRegistryWithItsExtension) {
+  auto r = testing::run_offsetgen(args({"check", "--help"}));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_FALSE(run::runners().empty());
+  for (const run::Runner* runner : run::runners()) {
+    const std::string line = runner->backend() + " (." + backend(runner->backend()).extension() + "): " + runner->how();
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
+  }
 }
 
 TEST_F(CheckCli, NumbersOutOfBoundExit1) {

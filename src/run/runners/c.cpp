@@ -25,6 +25,9 @@ Outcome steps_outcome(const CompileResult& compiled) {
 class CRunner final : public Runner {
  public:
   std::string backend() const override { return "c"; }
+  std::string how() const override {
+    return "a C compiler builds it as C99 and C++17, dlopen loads it; walls and densities too";
+  }
   ValueWords words() const override { return {"values", "compiled code", "cannot run the functions"}; }
   bool loads_in_process() const override { return true; }
 

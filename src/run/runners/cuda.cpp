@@ -27,6 +27,7 @@ std::vector<Lane> host_lanes(const std::shared_ptr<cuda::HostProgram>& program, 
 class CudaRunner final : public Runner {
  public:
   std::string backend() const override { return "cuda"; }
+  std::string how() const override { return "nvcc compiles it and runs its host path"; }
   ValueWords words() const override {
     return {"values of the host path", "the host path compiled by nvcc (double and float)", "cannot run the functions"};
   }

@@ -42,6 +42,7 @@ Lane llvmpipe_lane(const std::string& snippet, const FileMetadata& meta) {
 class GlslRunner final : public Runner {
  public:
   std::string backend() const override { return "glsl"; }
+  std::string how() const override { return "glslang compiles it, then Mesa llvmpipe runs it"; }
   ValueWords words() const override {
     return {"values on llvmpipe", "the snippet on Mesa llvmpipe (float32)", "cannot run the snippet"};
   }

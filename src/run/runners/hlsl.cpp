@@ -78,6 +78,7 @@ Lane lavapipe_lane(std::shared_ptr<Modules> modules, const FileMetadata& meta) {
 class HlslRunner final : public Runner {
  public:
   std::string backend() const override { return "hlsl"; }
+  std::string how() const override { return "glslang makes SPIR-V of it, then Mesa lavapipe runs it"; }
   ValueWords words() const override {
     return {"values on lavapipe", "the shader on Mesa lavapipe (Vulkan compute, float32)", "cannot run the shader"};
   }

@@ -29,6 +29,7 @@ Lane python_lane(const std::string& python, const std::string& path, const FileM
 class NumpyRunner final : public Runner {
  public:
   std::string backend() const override { return "numpy"; }
+  std::string how() const override { return "python3 with NumPy imports and runs it"; }
   ValueWords words() const override {
     return {"values under NumPy", "the module under python3 (NumPy, float64)", "cannot run the module"};
   }

@@ -60,6 +60,7 @@ std::vector<Lane> device_lanes(const std::shared_ptr<opencl::HostProgram>& progr
 class OpenclRunner final : public Runner {
  public:
   std::string backend() const override { return "opencl"; }
+  std::string how() const override { return "the OpenCL ICD (pocl here) builds and runs it"; }
   ValueWords words() const override {
     return {"values on the device", "the kernels on the OpenCL device (float, and double with cl_khr_fp64)",
             "cannot run the functions"};

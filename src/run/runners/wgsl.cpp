@@ -143,6 +143,7 @@ std::string find_node() {
 class WgslRunner final : public Runner {
  public:
   std::string backend() const override { return "wgsl"; }
+  std::string how() const override { return "Dawn (the npm webgpu module, through Node) runs it"; }
   ValueWords words() const override {
     return {"values on Dawn", "the shader on Dawn (OpenGL ES backend on Mesa llvmpipe, float32)",
             "cannot run the shader"};
