@@ -2,34 +2,38 @@
 # Installs the Debian 12 packages offsetgen needs. Idempotent: installs only what is missing. Must run
 # as root (or with sudo available).
 #
-#   tools/install_deps.sh --build   what building offsetgen, offsetgen-mesh and offsetgen-step needs (tools/demo.sh)
+#   tools/install_deps.sh --core    what building offsetgen alone needs: generate, list, density, check of C (tools/demo.sh)
+#   tools/install_deps.sh --build   that, and what offsetgen-mesh (OpenVDB) and offsetgen-step (OpenCASCADE) need
 #   tools/install_deps.sh [--all]   that, and everything the tests and benchmarks use (tools/test.sh)
 set -euo pipefail
 
 usage() {
-  echo "usage: tools/install_deps.sh [--build | --all]" >&2
+  echo "usage: tools/install_deps.sh [--core | --build | --all]" >&2
   exit 2
 }
 [ $# -le 1 ] || usage
 case "${1:---all}" in
   --all) want=all ;;
   --build) want=build ;;
+  --core) want=core ;;
   -h | --help)
-    sed -n '2,6s/^# \{0,1\}//p' "$0"
+    sed -n '2,7s/^# \{0,1\}//p' "$0"
     exit 0
     ;;
   *) usage ;;
 esac
 
-# The build set: the compiler and CMake, GiNaC/CLN, fmt, CLI11, nlohmann-json, OpenVDB (with
-# Boost.Iostreams, which Debian's FindOpenVDB.cmake needs) and lib3mf for offsetgen-mesh, OpenCASCADE
-# (foundation, modeling data and algorithms, data exchange) for offsetgen-step. GoogleTest
-# too, although only the tests use it: a plain `cmake -S . -B build` configures them
-# (OFFSETGEN_BUILD_TESTS is ON at the top level) and tests/ has find_package(GTest REQUIRED).
-build_packages=(
+# The core set: the compiler and CMake, GiNaC/CLN, fmt, CLI11 and nlohmann-json: offsetgen itself.
+core_packages=(
   build-essential cmake pkg-config
   libginac-dev libcln-dev
   libfmt-dev libcli11-dev nlohmann-json3-dev
+)
+# The build set adds OpenVDB (with Boost.Iostreams, which Debian's FindOpenVDB.cmake needs) and lib3mf
+# for offsetgen-mesh, OpenCASCADE (foundation, modeling data and algorithms, data exchange) for
+# offsetgen-step. GoogleTest too, although only the tests use it: a plain `cmake -S . -B build`
+# configures them (OFFSETGEN_BUILD_TESTS is ON at the top level) and tests/ has find_package(GTest REQUIRED).
+build_packages=(
   libopenvdb-dev libboost-iostreams-dev lib3mf-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libgtest-dev
@@ -52,7 +56,8 @@ test_packages=(
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )
 
-packages=("${build_packages[@]}")
+packages=("${core_packages[@]}")
+if [ "$want" != core ]; then packages+=("${build_packages[@]}"); fi
 if [ "$want" = all ]; then packages+=("${test_packages[@]}"); fi
 
 # One dpkg-query for all of them (one per package costs seconds on a busy machine).
