@@ -12,8 +12,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 namespace offsetgen {
@@ -40,9 +43,18 @@ std::string checkable_extensions() {
 
 }  // namespace
 
+bool names_a_step_file(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".step" || ext == ".stp";
+}
+
 void add_check_command(CLI::App& app, CheckOptions& o) {
   CLI::App* cmd = app.add_subcommand("check", check_description());
-  cmd->add_option("file", o.file, "A file written by `offsetgen generate` (" + checkable_extensions() + ")")
+  cmd->add_option("file", o.file,
+                  "A file written by `offsetgen generate` (" + checkable_extensions() +
+                      "), or a .step file written by `offsetgen step` (offsetgen-step measures it: one valid "
+                      "closed solid, the exact walls within its tolerance, its volume)")
       ->required();
   cmd->add_option("--h", o.h_list,
                   "Offsets to measure, comma-separated, cell units (default 0.001..0.1, 9 log-spaced)");

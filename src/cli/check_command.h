@@ -39,4 +39,8 @@ void add_check_command(CLI::App& app, CheckOptions& options);
 // Exit codes: kExitOk all checks pass, kExitCheckFailed a check failed, kExitUsage usage or input error.
 int run_check(const CheckOptions& options);
 
+// Whether `offsetgen check` was given a STEP file (.step or .stp, any case): offsetgen-step checks
+// those, since only it loads OpenCASCADE.
+bool names_a_step_file(const std::string& path);
+
 }  // namespace offsetgen

@@ -87,6 +87,15 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("list")) return run_list(list);
     if (app.got_subcommand("density")) return run_density(density);
 #ifdef OFFSETGEN_HAVE_CHECK
+    if (app.got_subcommand("check") && names_a_step_file(check.file)) {
+#ifdef OFFSETGEN_HAVE_STEP
+      return exec_step_executable(argv);  // offsetgen-step reads the file with OpenCASCADE
+#else
+      throw InputError(
+          "checking a STEP file needs offsetgen-step, and this offsetgen was built without it: it needs "
+          "OpenCASCADE (tools/install_deps.sh --build, then reconfigure)");
+#endif
+    }
     if (app.got_subcommand("check")) return run_check(check);
 #endif
 #ifdef OFFSETGEN_HAVE_MESH

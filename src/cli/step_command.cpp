@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 
 namespace offsetgen {
@@ -39,6 +41,15 @@ int run_step_command(const StepOptions& o) {
   });
   if (!o.quiet || !s.written) std::fputs(step::format_summary(s, r).c_str(), s.written ? stdout : stderr);
   return s.written ? kExitOk : kExitCheckFailed;
+}
+
+int run_step_check(const std::string& path) {
+  const bool progress = ::isatty(::fileno(stderr)) != 0;  // as check of generated code: on a terminal only
+  const step::StepCheck c = step::check_step_file(path, [progress](const std::string& stage) {
+    if (progress) std::fprintf(stderr, "[offsetgen check] %s\n", stage.c_str());
+  });
+  std::fputs(step::format_check_summary(c, path).c_str(), stdout);
+  return c.summary.written ? kExitOk : kExitCheckFailed;
 }
 
 }  // namespace offsetgen

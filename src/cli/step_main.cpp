@@ -4,6 +4,7 @@
 #include "cli/command_line.h"
 #include "cli/step_command.h"
 #include "cli/step_options.h"
+#include "surfaces/input_error.h"
 
 #include <CLI/CLI.hpp>
 
@@ -13,11 +14,26 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   StepOptions step;
   add_step_command(app, step);
+  // `offsetgen check part.step` lands here (offsetgen execs this executable with its arguments).
+  std::string check_file;
+  CLI::App* check =
+      app.add_subcommand("check", "Check a STEP file of `offsetgen step` against the walls its header names");
+  check->add_option("file", check_file, "A .step or .stp file written by `offsetgen step`")->required();
+  check->allow_extras();  // offsetgen's own check options, refused below with a reason
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsage;
   }
-  return run_reporting_errors([&] { return run_step_command(step); });
+  return run_reporting_errors([&] {
+    if (app.got_subcommand("check")) {
+      if (!check->remaining().empty())
+        throw InputError(
+            "a STEP file is checked against its own header: `offsetgen check FILE.step` takes no options (" +
+            check->remaining().front() + " given)");
+      return run_step_check(check_file);
+    }
+    return run_step_command(step);
+  });
 }

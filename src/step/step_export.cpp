@@ -11,6 +11,11 @@
 #include "surfaces/input_error.h"
 
 #include <fmt/format.h>
+#include <BRep_Tool.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -65,6 +70,141 @@ Fit fit_sheet(const LevelFunction& g, double target, int max_side) {
   return best;
 }
 
+LevelFunction offset_sheet(mesh::WallField& field, double h) {
+  return [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
+    const std::vector<double> hs(n, h);
+    field.offsets(n, x, y, z, hs.data(), out);
+  };
+}
+
+// Generates and compiles the wall's functions, and checks what the exporter covers of them.
+double prepare_walls(mesh::WallField& field, mesh::WallField::Worker& worker, StepSummary& s) {
+  if (field.graded())
+    throw InputError(
+        "STEP export covers uniform walls so far; a graded thickness (an expression of x, y, z or "
+        "--density-field) is refused");
+  s.thickness = field.thickness_at(0, 0, 0, worker);
+  s.thickness_limit = density::surface_constants(field.generation().surface).thickness_limit();
+  if (!(s.thickness < s.thickness_limit))
+    throw InputError(fmt::format(
+        "--thickness {} is beyond the curvature limit of {}: t/2 must stay below the smallest radius of curvature, "
+        "t < {:.6f} (cell units)",
+        s.thickness, s.surface, s.thickness_limit));
+  return s.thickness;
+}
+
+// The request, as the file's header carries it for `offsetgen check` (kMetadataTag, then JSON).
+constexpr const char* kMetadataTag = "offsetgen-metadata ";
+
+std::string request_metadata(const StepRequest& r, const StepSummary& s) {
+  nlohmann::ordered_json j;
+  j["surface"] = s.surface;
+  j["method"] = r.wall.generation.method;
+  j["order"] = r.wall.generation.order;
+  j["thickness"] = fmt::format("{}", s.thickness);  // shortest text that reads back as the same double
+  j["cells"] = r.cells;
+  j["cell_size"] = r.cell_size;
+  j["tolerance"] = r.tolerance;
+  return kMetadataTag + j.dump();
+}
+
+// The request a file's header describes; InputError naming what is missing.
+StepRequest request_from_description(const std::string& description, const std::string& path) {
+  const size_t at = description.find(kMetadataTag);
+  if (at == std::string::npos)
+    throw InputError(fmt::format(
+        "{}: no offsetgen-metadata in its header (FILE_DESCRIPTION): check measures a STEP file of `offsetgen step` "
+        "against the walls it was made from, and this one does not say which",
+        path));
+  StepRequest r;
+  try {
+    const auto j = nlohmann::json::parse(description.substr(at + std::string(kMetadataTag).size()));
+    r.wall.generation.surface = j.at("surface").get<std::string>();
+    r.wall.generation.method = j.at("method").get<std::string>();
+    r.wall.generation.order = j.at("order").get<int>();
+    r.wall.thickness = j.at("thickness").get<std::string>();
+    r.cells = j.at("cells").get<std::array<int, 3>>();
+    r.cell_size = j.at("cell_size").get<double>();
+    r.tolerance = j.at("tolerance").get<double>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: its offsetgen-metadata cannot be read: {}", path, e.what()));
+  }
+  if (!(r.tolerance > 0) || !(r.cell_size > 0) || r.cells[0] < 1 || r.cells[1] < 1 || r.cells[2] < 1)
+    throw InputError(fmt::format("{}: its offsetgen-metadata holds a block or tolerance out of range", path));
+  return r;
+}
+
+// B-spline faces and their control points, counted on a shape.
+void count_bspline_faces(const TopoDS_Shape& shape, StepSummary& s) {
+  s.bspline_faces = 0;
+  s.control_points = 0;
+  for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
+    const Handle(Geom_BSplineSurface) b =
+        Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(TopoDS::Face(e.Current())));
+    if (b.IsNull()) continue;
+    ++s.bspline_faces;
+    s.control_points += long(b->NbUPoles()) * b->NbVPoles();
+  }
+}
+
+// Everything measured on a file read back, by export and check alike: one valid closed solid, the
+// exact walls' deviation from its faces, its volume against the exact wall volume.
+void measure_read_back(const TopoDS_Shape& shape, const StepRequest& r, mesh::WallField& field,
+                       mesh::WallField::Worker& worker, StepSummary& s) {
+  auto t0 = Clock::now();
+  const ShapeCheck c = check_shape(shape);
+  s.seconds_check = seconds_since(t0);
+  t0 = Clock::now();
+  s.valid = c.valid;
+  s.closed = c.closed && c.shells == 1;
+  s.solids = c.solids;
+  s.volume = c.volume;
+  const long control_points = s.control_points;
+  count_bspline_faces(shape, s);
+  if (control_points > 0) s.control_points = control_points;  // export: the solid's own count
+  s.control_points_per_cell = double(s.control_points) / (double(r.cells[0]) * r.cells[1] * r.cells[2]);
+  s.planar_faces = c.faces - s.bspline_faces;
+
+  // The exact wall points: lines along each axis, 12 per cell side, scanned at t/4.
+  const LevelFunction plus = offset_sheet(field, 0.5 * s.thickness), minus = offset_sheet(field, -0.5 * s.thickness);
+  const int steps = std::max(16, static_cast<int>(std::ceil(4 / s.thickness)));
+  std::vector<Point> points = exact_surface_points(plus, r.cells, 12, steps, kSeed);
+  const std::vector<Point> more = exact_surface_points(minus, r.cells, 12, steps, kSeed + 1);
+  points.insert(points.end(), more.begin(), more.end());
+  // Only faces within twice the tolerance of a point are tried: a point with none is beyond the tolerance.
+  const Deviation d = measure_deviation(shape, points, r.cell_size, 2 * r.tolerance);
+  s.max_deviation = d.max;
+  s.mean_deviation = d.mean;
+  s.deviation_points = d.points;
+  s.worst_point = d.worst;
+  s.seconds_deviation = seconds_since(t0);
+  t0 = Clock::now();
+
+  // The exact volume: the wall's volume fraction in one cell (the block is whole cells of a periodic
+  // wall) by column quadrature (check/volume_fraction.h).
+  check::VolumeFractionSetup v;
+  v.g = [&field, &worker](const double* p) {
+    double w = 0;
+    field.walls(1, p, p + 1, p + 2, &w, worker);
+    return w;
+  };
+  v.field = [&field](const double* p) { return field.field(p[0], p[1], p[2]); };
+  v.field_slope_bound = field.field_lipschitz();
+  v.band = field.field_lipschitz() * 0.5 * s.thickness * (1 + 1e-9);
+  v.scan_step = s.thickness / 4;
+  const check::VolumeFraction fraction = check::measure_volume_fraction(v, check::VolumeFractionOptions{});
+  const double block = double(r.cells[0]) * r.cells[1] * r.cells[2] * std::pow(r.cell_size, 3);
+  s.exact_volume = fraction.value * block;
+  s.exact_volume_error = fraction.standard_error * block;
+  s.seconds_volume = seconds_since(t0);
+
+  if (!s.valid || !s.closed || s.solids != 1)
+    s.failure = fmt::format("the solid read back is not one valid closed solid (valid {}, solids {}, closed {})",
+                            s.valid, s.solids, s.closed);
+  else if (!(s.max_deviation <= r.tolerance))
+    s.failure = fmt::format("the measured deviation {:.3g} mm exceeds --tolerance {} mm", s.max_deviation, r.tolerance);
+}
+
 std::string read_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
@@ -107,28 +247,12 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   s.surface = r.wall.generation.surface;
   say("generating the wall's functions");
   mesh::WallField field(r.wall);
-  if (field.graded())
-    throw InputError(
-        "STEP export covers uniform walls so far; a graded thickness (an expression of x, y, z or "
-        "--density-field) is refused");
   mesh::WallField::Worker worker(field);
-  s.thickness = field.thickness_at(0, 0, 0, worker);
-  s.thickness_limit = density::surface_constants(field.generation().surface).thickness_limit();
-  if (!(s.thickness < s.thickness_limit))
-    throw InputError(fmt::format(
-        "--thickness {} is beyond the curvature limit of {}: t/2 must stay below the smallest radius of curvature, "
-        "t < {:.6f} (cell units)",
-        s.thickness, s.surface, s.thickness_limit));
+  prepare_walls(field, worker, s);
   say("compiling them");
   field.compile();
 
-  auto sheet = [&field](double h) -> LevelFunction {
-    return [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
-      const std::vector<double> hs(n, h);
-      field.offsets(n, x, y, z, hs.data(), out);
-    };
-  };
-  const LevelFunction plus = sheet(0.5 * s.thickness), minus = sheet(-0.5 * s.thickness);
+  const LevelFunction plus = offset_sheet(field, 0.5 * s.thickness), minus = offset_sheet(field, -0.5 * s.thickness);
 
   // Half of the tolerance for the fit, the rest is margin for what the check grid does not see.
   s.seconds_generate = seconds_since(start);
@@ -147,16 +271,16 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   t0 = Clock::now();
   const WallBrep brep = build_schwarzp_wall(fit_plus.patch, fit_minus.patch, r.cells, r.cell_size);
   s.control_points = brep.control_points;
-  s.control_points_per_cell = double(brep.control_points) / (double(r.cells[0]) * r.cells[1] * r.cells[2]);
   s.seconds_build = seconds_since(t0);
 
   say("writing STEP");
   t0 = Clock::now();
   const run::ScratchDir scratch("offsetgen-step");  // removed on exit (a loaded library's mapping stays)
   const fs::path file = scratch.path() / "wall.step";
-  write_step(brep.solid, file.string(),
-             fmt::format("offsetgen: {} wall, t = {} (cell units), {}x{}x{} cells of {} mm, tolerance {} mm", s.surface,
-                         s.thickness, r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance));
+  write_step(
+      brep.solid, file.string(),
+      fmt::format("offsetgen: {} wall, t = {} (cell units), {}x{}x{} cells of {} mm, tolerance {} mm; {}", s.surface,
+                  s.thickness, r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance, request_metadata(r, s)));
   const std::string bytes = read_bytes(file);
   s.bytes = long(bytes.size());
   s.seconds_write = seconds_since(t0);
@@ -166,54 +290,7 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   t0 = Clock::now();
   const TopoDS_Shape shape = read_step(file.string());
   s.seconds_read = seconds_since(t0);
-  t0 = Clock::now();
-  const ShapeCheck c = check_shape(shape);
-  s.seconds_check = seconds_since(t0);
-  t0 = Clock::now();
-  s.valid = c.valid;
-  s.closed = c.closed && c.shells == 1;
-  s.solids = c.solids;
-  s.volume = c.volume;
-  s.bspline_faces = brep.bspline_faces;
-  s.planar_faces = c.faces - brep.bspline_faces;
-
-  // The exact wall points: lines along each axis, 12 per cell side, scanned at t/4.
-  const int steps = std::max(16, static_cast<int>(std::ceil(4 / s.thickness)));
-  std::vector<Point> points = exact_surface_points(plus, r.cells, 12, steps, kSeed);
-  const std::vector<Point> more = exact_surface_points(minus, r.cells, 12, steps, kSeed + 1);
-  points.insert(points.end(), more.begin(), more.end());
-  // Only faces within twice the tolerance of a point are tried: a point with none is beyond the tolerance.
-  const Deviation d = measure_deviation(shape, points, r.cell_size, 2 * r.tolerance);
-  s.max_deviation = d.max;
-  s.mean_deviation = d.mean;
-  s.deviation_points = d.points;
-  s.worst_point = d.worst;
-  s.seconds_deviation = seconds_since(t0);
-  t0 = Clock::now();
-
-  // The exact volume: the wall's volume fraction in one cell (the block is whole cells of a periodic
-  // wall) by column quadrature (check/volume_fraction.h).
-  check::VolumeFractionSetup v;
-  v.g = [&field, &worker](const double* p) {
-    double w = 0;
-    field.walls(1, p, p + 1, p + 2, &w, worker);
-    return w;
-  };
-  v.field = [&field](const double* p) { return field.field(p[0], p[1], p[2]); };
-  v.field_slope_bound = field.field_lipschitz();
-  v.band = field.field_lipschitz() * 0.5 * s.thickness * (1 + 1e-9);
-  v.scan_step = s.thickness / 4;
-  const check::VolumeFraction fraction = check::measure_volume_fraction(v, check::VolumeFractionOptions{});
-  const double block = double(r.cells[0]) * r.cells[1] * r.cells[2] * std::pow(r.cell_size, 3);
-  s.exact_volume = fraction.value * block;
-  s.exact_volume_error = fraction.standard_error * block;
-  s.seconds_volume = seconds_since(t0);
-
-  if (!s.valid || !s.closed || s.solids != 1)
-    s.failure = fmt::format("the solid read back is not one valid closed solid (valid {}, solids {}, closed {})",
-                            s.valid, s.solids, s.closed);
-  else if (!(s.max_deviation <= r.tolerance))
-    s.failure = fmt::format("the measured deviation {:.3g} mm exceeds --tolerance {} mm", s.max_deviation, r.tolerance);
+  measure_read_back(shape, r, field, worker, s);
   if (s.failure.empty()) {
     write_file(r.output, bytes);
     s.written = true;
@@ -221,6 +298,83 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   s.seconds_total = seconds_since(start);
   s.cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   return s;
+}
+
+// The volume of a file that passes check: within 0.1% of the exact wall volume (issue 28), beyond
+// three standard errors of the quadrature.
+constexpr double kVolumeTolerance = 1e-3;
+bool volume_agrees(const StepSummary& s) {
+  return std::abs(s.volume - s.exact_volume) <= kVolumeTolerance * s.exact_volume + 3 * s.exact_volume_error;
+}
+
+StepCheck check_step_file(const std::string& path, const std::function<void(const std::string&)>& progress) {
+  const auto start = Clock::now();
+  const std::clock_t cpu_start = std::clock();
+  auto say = [&](const std::string& what) {
+    if (progress) progress(what);
+  };
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(fmt::format("{}: no such file", path));
+  const std::string bytes = read_bytes(path);
+  if (bytes.rfind("ISO-10303-21;", 0) != 0)
+    throw InputError(fmt::format("{}: not a STEP file (it does not begin with ISO-10303-21;)", path));
+  say("reading the file");
+  StepContents contents;
+  try {
+    contents = read_step_contents(path);
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+  StepCheck check;
+  check.request = request_from_description(contents.description, path);
+  StepSummary& s = check.summary;
+  s.surface = check.request.wall.generation.surface;
+  s.bytes = long(bytes.size());
+  s.seconds_read = seconds_since(start);
+
+  say("generating the walls it was made from");
+  auto t0 = Clock::now();
+  mesh::WallField field(check.request.wall);
+  mesh::WallField::Worker worker(field);
+  prepare_walls(field, worker, s);
+  field.compile();
+  s.seconds_generate = seconds_since(t0);
+  say("measuring");
+  measure_read_back(contents.shape, check.request, field, worker, s);
+  if (s.failure.empty() && !volume_agrees(s))
+    s.failure = fmt::format("the solid's volume {:.6f} mm^3 differs from the exact wall's {:.6f} mm^3 by more than {}%",
+                            s.volume, s.exact_volume, 100 * kVolumeTolerance);
+  s.written = s.failure.empty();
+  s.seconds_total = seconds_since(start);
+  s.cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  return check;
+}
+
+std::string format_check_summary(const StepCheck& c, const std::string& path) {
+  const StepSummary& s = c.summary;
+  const StepRequest& r = c.request;
+  std::string out = fmt::format(
+      "offsetgen check: {}: {} wall, t = {} cell ({} mm), {}x{}x{} cells of {} mm, tolerance {} mm (its header)\n",
+      path, s.surface, s.thickness, s.thickness * r.cell_size, r.cells[0], r.cells[1], r.cells[2], r.cell_size,
+      r.tolerance);
+  out += fmt::format("  faces: {} B-spline, {} planar; {} control points ({:.0f} per cell); {} bytes\n",
+                     s.bspline_faces, s.planar_faces, s.control_points, s.control_points_per_cell, s.bytes);
+  out += fmt::format("  {}  solid: {}, {} solid{}, {}\n", s.valid && s.closed && s.solids == 1 ? "PASS" : "FAIL",
+                     s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid", s.solids, s.solids == 1 ? "" : "s",
+                     s.closed ? "one closed shell" : "NOT closed");
+  out += fmt::format(
+      "  {}  deviation of the exact walls from the faces, {} points: max {:.3g} mm, mean {:.3g} mm (tolerance {} mm)\n",
+      s.max_deviation <= r.tolerance ? "PASS" : "FAIL", s.deviation_points, s.max_deviation, s.mean_deviation,
+      r.tolerance);
+  const double rel = s.exact_volume > 0 ? (s.volume - s.exact_volume) / s.exact_volume : 0;
+  out += fmt::format(
+      "  {}  volume: {:.6f} mm^3; exact wall {:.6f} mm^3 (column quadrature, standard error {:.2g}); difference "
+      "{:+.3g}% (at most {}%)\n",
+      volume_agrees(s) ? "PASS" : "FAIL", s.volume, s.exact_volume, s.exact_volume_error, 100 * rel,
+      100 * kVolumeTolerance);
+  out += fmt::format("  time: {:.2f} s, {:.2f} s of CPU\n", s.seconds_total, s.cpu_seconds);
+  out += s.written ? "offsetgen check: all checks passed\n" : "offsetgen check: FAILED: " + s.failure + "\n";
+  return out;
 }
 
 std::string format_summary(const StepSummary& s, const StepRequest& r) {

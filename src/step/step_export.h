@@ -50,4 +50,15 @@ StepSummary export_step(const StepRequest& request, const std::function<void(con
 
 std::string format_summary(const StepSummary& summary, const StepRequest& request);
 
+// `offsetgen check part.step`: a file of `offsetgen step`, measured again against the walls its header
+// names (offsetgen-metadata in FILE_DESCRIPTION): one valid closed solid, the exact walls within its
+// tolerance of the faces, its volume against the exact wall volume. summary.written means it passed.
+// Throws InputError for a file that is not a STEP file of offsetgen's.
+struct StepCheck {
+  StepRequest request;  // as the header gives it
+  StepSummary summary;
+};
+StepCheck check_step_file(const std::string& path, const std::function<void(const std::string&)>& progress);
+std::string format_check_summary(const StepCheck& check, const std::string& path);
+
 }  // namespace offsetgen::step

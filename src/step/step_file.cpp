@@ -52,12 +52,19 @@ void write_step(const TopoDS_Shape& solid, const std::string& path, const std::s
   if (writer.Write(path.c_str()) != IFSelect_RetDone) throw std::runtime_error("STEP: cannot write " + path);
 }
 
-TopoDS_Shape read_step(const std::string& path) {
+StepContents read_step_contents(const std::string& path) {
   silence_translators();
   STEPControl_Reader reader;
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw std::runtime_error("STEP: cannot read " + path);
+  StepContents contents;
+  APIHeaderSection_MakeHeader header(reader.StepModel());
+  if (header.IsDone() && header.NbDescription() > 0 && !header.DescriptionValue(1).IsNull())
+    contents.description = header.DescriptionValue(1)->ToCString();
   if (reader.TransferRoots() == 0) throw std::runtime_error("STEP: " + path + " holds no shape");
-  return reader.OneShape();
+  contents.shape = reader.OneShape();
+  return contents;
 }
+
+TopoDS_Shape read_step(const std::string& path) { return read_step_contents(path).shape; }
 
 }  // namespace offsetgen::step

@@ -15,4 +15,11 @@ void write_step(const TopoDS_Shape& solid, const std::string& path, const std::s
 // The file's shape (all its roots in one compound if there are several). Throws std::runtime_error.
 TopoDS_Shape read_step(const std::string& path);
 
+// A file read back with its header's first FILE_DESCRIPTION entry ("" when there is none).
+struct StepContents {
+  TopoDS_Shape shape;
+  std::string description;
+};
+StepContents read_step_contents(const std::string& path);
+
 }  // namespace offsetgen::step

@@ -3,9 +3,9 @@
 // exact wall volume (column quadrature of this process's own wall functions), the distance of exact
 // wall points (other lines than the tool's) to its faces. Bad input exits 2 and writes nothing; a
 // tolerance out of reach exits 1 and writes nothing.
-#include "run/process.h"
 #include "check/volume_fraction.h"
 #include "mesh/wall_field.h"
+#include "run/process.h"
 #include "step/deviation.h"
 #include "step/step_file.h"
 #include "step/wall_brep.h"
@@ -131,12 +131,52 @@ TEST(StepCli, SchwarzPCellExactWallsLieWithinTheToleranceOfItsFaces) {
   }
 }
 
+TEST(StepCheck, AFileOfOffsetgenStepPassesWithItsMeasuresAndExit0) {
+  ASSERT_EQ(one_cell().run.exit_code, 0) << one_cell().run.output;
+  const run::ProcessResult r = run_offsetgen({"check", one_cell().path});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const char* line :
+       {"PASS  solid: valid (BRepCheck_Analyzer), 1 solid, one closed shell", "PASS  deviation of the exact walls",
+        "PASS  volume", "96 B-spline, 6 planar", "offsetgen check: all checks passed"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
+}
+
+// A control point moved by 2 mm: the file still reads, but no longer matches the walls its header names.
+TEST(StepCheck, AMovedControlPointFailsWithExit1) {
+  ASSERT_EQ(one_cell().run.exit_code, 0) << one_cell().run.output;
+  std::string text = read_bytes(one_cell().path);
+  size_t at = 0;
+  for (int k = 0; k < 1200; ++k) at = text.find("CARTESIAN_POINT('',(", at + 1);
+  ASSERT_NE(at, std::string::npos);
+  const size_t x = at + std::string("CARTESIAN_POINT('',(").size();
+  const size_t comma = text.find(',', x);
+  text.replace(x, comma - x, std::to_string(std::stod(text.substr(x, comma - x)) + 2.0));
+  const std::string moved = scratch_dir("moved") + "/moved.step";
+  std::ofstream(moved, std::ios::binary) << text;
+  const run::ProcessResult r = run_offsetgen({"check", moved});
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("FAILED"), std::string::npos) << r.output;
+}
+
+TEST(StepCheck, AStepFileWithoutOffsetgenMetadataIsRefusedWithExit2) {
+  ASSERT_EQ(one_cell().run.exit_code, 0) << one_cell().run.output;
+  std::string text = read_bytes(one_cell().path);
+  const size_t at = text.find("offsetgen-metadata");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, std::string("offsetgen-metadata").size(), "some-other-program");
+  const std::string foreign = scratch_dir("foreign") + "/foreign.stp";
+  std::ofstream(foreign, std::ios::binary) << text;
+  const run::ProcessResult r = run_offsetgen({"check", foreign});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("no offsetgen-metadata in its header"), std::string::npos) << r.output;
+}
+
 TEST(StepCli, SameInputsWriteTheSameBytes) {
   const Written& w = one_cell();
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const std::string again = scratch_dir("again") + "/p.step";
   const run::ProcessResult r = run_offsetgen({"step", "--surface", "schwarzp", "--thickness", "0.1", "--cells", "1",
-                                                "--cell-size", "10", "--tolerance", "0.01", "-o", again, "-q"});
+                                              "--cell-size", "10", "--tolerance", "0.01", "-o", again, "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_bytes(again), read_bytes(w.path));
 }
