@@ -247,6 +247,9 @@ PARTS_END = "<!-- end of parts and tiles sections -->"
 # Generation CPU time with and without the catalog sweep table (issue 26): bench/generation_cpu.py, kept.
 SWEEPS_BEGIN = "<!-- catalog sweeps section: bench/generation_cpu.py, measured by hand; kept by report.py -->"
 SWEEPS_END = "<!-- end of catalog sweeps section -->"
+# STEP export (issue 28): measured by hand with offsetgen step, kept.
+STEP_BEGIN = "<!-- step section: measured by hand; kept by report.py -->"
+STEP_END = "<!-- end of step section -->"
 
 
 def kept_section(output, begin, end):
@@ -798,6 +801,7 @@ def main(argv=None):
     md.extend(kept_section(args.output, PARTS_BEGIN, PARTS_END))
     md.extend(kept_section(args.output, NUMPY_BEGIN, NUMPY_END))
     md.extend(kept_section(args.output, SWEEPS_BEGIN, SWEEPS_END))
+    md.extend(kept_section(args.output, STEP_BEGIN, STEP_END))
     w("## How to reproduce")
     w("")
     w("```sh\ntools/run_benchmarks.sh              # builds build-bench/, runs everything, rewrites BENCHMARKS.md\n"

@@ -52,6 +52,7 @@ test_packages=(
   prusa-slicer openscad  # real parts and a slicer for the mesh --body checks (tools/check_parts.py)
   parallel  # GNU parallel: the split-and-merge test of offsetgen mesh --tile-range
   occt-draw libocct-draw-dev  # OpenCASCADE's own harness reads offsetgen step's files back (tests/step)
+  freecad  # FreeCAD opens offsetgen step's files and cuts them with a box (tests/step)
   chromium libvulkan-dev mesa-vulkan-drivers
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers clinfo
 )
