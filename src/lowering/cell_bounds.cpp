@@ -1,7 +1,7 @@
 #include "lowering/cell_bounds.h"
 
 #include "lowering/catalog_sweeps.h"
-#include "lowering/lower.h"
+#include "lowering/point_program.h"
 #include "lowering/sample_region.h"
 
 #include <algorithm>
@@ -36,24 +36,10 @@ double symmetric_spectral_norm(const std::vector<double>& a, int dims) {
   return std::max(std::fabs(largest), std::fabs(smallest));
 }
 
-// Lowers expressions of the natural coordinates into one program with one output each.
-Program natural_program(const AtomTable& atoms, int dims, const std::vector<GiNaC::ex>& outputs) {
-  std::vector<std::string> names = {"x", "y"};
-  if (dims == 3) names.push_back("z");
-  Program program(names);
-  Lowerer lowerer(program, atoms);
-  Environment env;
-  const Symbols& sym = Symbols::get();
-  for (int i = 0; i < dims; ++i) env.bindings.emplace_back(sym.natural(i), program.input(i));
-  for (size_t k = 0; k < outputs.size(); ++k)
-    program.add_output("o" + std::to_string(k), lowerer.lower(outputs[k], env));
-  return program;
-}
-
 }  // namespace
 
 double max_gradient_norm(const Surface& surface, const AtomTable& atoms, const FieldAtoms& field) {
-  const Program program = natural_program(atoms, surface.dims, field.gradient());
+  const Program program = point_program(surface.dims, field.gradient(), atoms);
   Evaluator gradient(program);  // keeps a reference to the program
   auto norm2 = [&](const std::vector<double>& p) {
     double sum = 0;
@@ -72,7 +58,7 @@ double max_hessian_norm(const Surface& surface, const AtomTable& atoms, const Fi
   std::vector<GiNaC::ex> entries;
   for (int i = 0; i < field.dims; ++i)
     for (int j = 0; j < field.dims; ++j) entries.push_back(field.hessian(i, j));
-  const Program program = natural_program(atoms, surface.dims, entries);
+  const Program program = point_program(surface.dims, entries, atoms);
   Evaluator hessian(program);
   auto norm = [&](const std::vector<double>& p) { return symmetric_spectral_norm(hessian(p), surface.dims); };
   SampleRegion region(surface);
@@ -83,7 +69,7 @@ std::vector<double> min_gradient_in_bands(const Surface& surface, const AtomTabl
                                           const CellBounds& bounds, const std::vector<double>& levels) {
   std::vector<GiNaC::ex> outputs = {field.field()};
   for (int i = 0; i < surface.dims; ++i) outputs.push_back(field.gradient(i));
-  const Program program = natural_program(atoms, surface.dims, outputs);
+  const Program program = point_program(surface.dims, outputs, atoms);
   Evaluator evaluate(program);
   const int dims = surface.dims;
   SampleRegion region(surface);

@@ -1,7 +1,7 @@
 #include "lowering/sample_region.h"
 
 #include "field/atom_table.h"
-#include "lowering/lower.h"
+#include "lowering/point_program.h"
 
 #include <fmt/format.h>
 
@@ -20,17 +20,7 @@ SampleRegion::SampleRegion(const Surface& surface) : dims_(surface.dims), mapped
   }
   clearance_ = surface.singular_clearance;
   if (surface.singular_measures.empty()) return;
-  std::vector<std::string> names = {"x", "y"};
-  if (dims_ == 3) names.push_back("z");
-  measures_ = std::make_unique<Program>(names);
-  AtomTable no_atoms;
-  Lowerer lowerer(*measures_, no_atoms);
-  Environment env;
-  env.id = env.shared_id = 1;
-  const Symbols& sym = Symbols::get();
-  for (int i = 0; i < dims_; ++i) env.bindings.emplace_back(sym.natural(i), measures_->input(i));
-  for (size_t j = 0; j < surface.singular_measures.size(); ++j)
-    measures_->add_output("s" + std::to_string(j), lowerer.lower(surface.singular_measures[j], env));
+  measures_ = std::make_unique<Program>(point_program(dims_, surface.singular_measures, AtomTable()));
   evaluate_ = std::make_unique<Evaluator>(*measures_);
 }
 

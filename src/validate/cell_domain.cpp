@@ -2,6 +2,7 @@
 
 #include "field/atom_table.h"
 #include "lowering/lower.h"
+#include "lowering/point_program.h"
 #include "lowering/sample_region.h"
 
 #include <fmt/format.h>
@@ -80,17 +81,7 @@ void sample(const std::vector<GiNaC::ex>& outputs, const std::vector<std::string
             const std::vector<GiNaC::ex>& symbols, double scale, SampleRegion& region, double region_scale,
             Judge judge) {
   const int dims = region.dims();
-  std::vector<std::string> names = {"x", "y"};
-  if (dims == 3) names.push_back("z");
-  Program program(names);
-  AtomTable no_atoms;
-  Lowerer lowerer(program, no_atoms);
-  Environment env;
-  env.id = env.shared_id = 1;
-  for (int i = 0; i < dims; ++i)
-    env.bindings.emplace_back(symbols[static_cast<size_t>(i)], program.mul(program.constant(scale), program.input(i)));
-  for (size_t k = 0; k < outputs.size(); ++k)
-    program.add_output("o" + std::to_string(k), lowerer.lower(outputs[k], env));
+  const Program program = point_program(dims, outputs, AtomTable(), symbols, scale);
   Evaluator evaluate(program);
   const std::vector<NodeId> order = schedule(program);
   for (const auto& p : region_samples(region, region_scale)) {

@@ -1,7 +1,7 @@
 #include "validate/map_checks.h"
 
 #include "field/atom_table.h"
-#include "lowering/lower.h"
+#include "lowering/point_program.h"
 #include "lowering/sample_region.h"
 
 #include <fmt/format.h>
@@ -15,23 +15,11 @@ namespace {
 // One program of natural coordinates with the given outputs.
 class NaturalFunction {
  public:
-  NaturalFunction(int dims, const std::vector<GiNaC::ex>& outputs) : program_(names(dims)) {
-    AtomTable no_atoms;
-    Lowerer lowerer(program_, no_atoms);
-    Environment env;
-    env.id = env.shared_id = 1;
-    const Symbols& sym = Symbols::get();
-    for (int i = 0; i < dims; ++i) env.bindings.emplace_back(sym.natural(i), program_.input(i));
-    for (size_t k = 0; k < outputs.size(); ++k)
-      program_.add_output("o" + std::to_string(k), lowerer.lower(outputs[k], env));
-    evaluate_ = std::make_unique<Evaluator>(program_);
-  }
+  NaturalFunction(int dims, const std::vector<GiNaC::ex>& outputs)
+      : program_(point_program(dims, outputs, AtomTable())), evaluate_(std::make_unique<Evaluator>(program_)) {}
   const std::vector<double>& operator()(const std::vector<double>& p) { return (*evaluate_)(p); }
 
  private:
-  static std::vector<std::string> names(int dims) {
-    return dims == 3 ? std::vector<std::string>{"x", "y", "z"} : std::vector<std::string>{"x", "y"};
-  }
   Program program_;
   std::unique_ptr<Evaluator> evaluate_;
 };
