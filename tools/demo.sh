@@ -36,7 +36,7 @@ cat <<'EOF'
 A printable part next: a 40 mm gyroid cube (4 cells of 10 mm, 1 mm walls), an STL for your slicer.
 The mesher, offsetgen-mesh, needs OpenVDB (a larger install and a few more minutes of compiling):
   tools/install_deps.sh --build
-  cmake -S . -B build-demo -DOFFSETGEN_BUILD_MESH=ON && cmake --build build-demo --target offsetgen
+  cmake -S . -B build-demo -DOFFSETGEN_BUILD_MESH=ON && cmake --build build-demo -j"$(nproc)" --target offsetgen
   build-demo/offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 --adaptivity 0.1 -o out/gyroid.stl
 Your own part filled with a lattice inside a 1 mm skin: add --body part.stl --skin 1 (docs/parts.md).
 EOF
