@@ -126,16 +126,7 @@ void apply_map_options(const MeshOptions& o, mesh::MeshSettings& s) {
 int run_mesh_command(const MeshOptions& o) {
   if (!o.merge.empty()) return run_merge(o);
   mesh::MeshSettings s;
-  s.wall.generation.surface = o.surface;
-  s.wall.generation.expression = o.expression;
-  s.wall.generation.name = o.name;
-  s.wall.generation.method = o.method;
-  s.wall.generation.order = o.order;
-  for (const auto& p : o.params) {
-    auto [key, value] = split_param(p);
-    if (s.wall.generation.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
-    s.wall.generation.params[key] = value;
-  }
+  s.wall.generation = generation_request(o);
   s.wall.thickness = o.thickness;
   s.wall.generation.density = o.density;
   s.wall.generation.density_field = o.density_field;

@@ -12,14 +12,8 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
       "Mesh a block of cells of a wall solid (walls of thickness t around F = 0, capped by the block), or fill a\n"
       "part (--body) with it inside a solid skin, as a closed, outward-oriented triangle mesh in millimetres,\n"
       "ready for a slicer (OpenVDB volumeToMesh)");
-  cmd->add_option("-s,--surface", o.surface, "Catalog surface (see `offsetgen list`)");
-  cmd->add_option("-e,--expr", o.expression, "Your own F(x, y, z) in cell units, as in `generate`");
-  cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
-  cmd->add_option("-n,--name", o.name, "Function prefix of the generated functions (default <surface>_o<order>)");
-  std::string methods;
-  for (const OffsetMethod* m : offset_methods()) methods += fmt::format("{}{}", methods.empty() ? "" : ", ", m->name());
-  cmd->add_option("-M,--method", o.method, "Offset construction: " + methods)->capture_default_str();
-  cmd->add_option("-m,--order", o.order, "Approximation order")->capture_default_str();
+  add_generation_options(cmd, o, "Catalog surface (see `offsetgen list`)",
+                         "Your own F(x, y, z) in cell units, as in `generate`");
   cmd->add_option("-t,--thickness", o.thickness,
                   "Total wall thickness in cell units: a number, or an expression of x, y, z (x runs over [0, NX])");
   cmd->add_option("--density", o.density,

@@ -3,7 +3,7 @@
 // OpenVDB, parses the same arguments again and runs it (mesh_launcher.h).
 #pragma once
 
-#include "offset/method.h"
+#include "cli/generation_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -13,14 +13,11 @@
 
 namespace offsetgen {
 
-struct MeshOptions {
-  std::string surface, expression, name, thickness, cells = "1", output;
+struct MeshOptions : GenerationOptions {
+  std::string thickness, cells = "1", output;
   std::optional<double> density;             // --density R: the sheet of relative density R
   std::optional<std::string> density_field;  // --density-field E: graded, rho(x, y, z)
-  std::vector<std::string> params;
-  std::string method = kDefaultMethod;
-  int order = 4;
-  std::string body, origin;  // --body FILE, --origin X,Y,Z
+  std::string body, origin;                  // --body FILE, --origin X,Y,Z
   double skin = 0, fillet = 0, scale = 1;
   bool repair = false;
   double cell_size = 10;

@@ -16,16 +16,7 @@ namespace offsetgen {
 
 int run_step_command(const StepOptions& o) {
   step::StepRequest r;
-  r.wall.generation.surface = o.surface;
-  r.wall.generation.expression = o.expression;
-  r.wall.generation.name = o.name;
-  r.wall.generation.method = o.method;
-  r.wall.generation.order = o.order;
-  for (const auto& p : o.params) {
-    auto [key, value] = split_param(p);
-    if (r.wall.generation.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
-    r.wall.generation.params[key] = value;
-  }
+  r.wall.generation = generation_request(o);
   if (o.thickness.empty() == !o.density.has_value())
     throw InputError("give one of --thickness T (cell units) and --density R: each one sets the wall's thickness");
   r.wall.thickness = o.thickness;

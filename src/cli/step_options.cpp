@@ -10,14 +10,8 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "Write a block of cells of a wall solid as a STEP file (AP214, mm): one closed solid of bicubic B-spline\n"
       "faces and planar caps, for CAD. Its deviation from the exact walls is measured on the file before it is\n"
       "written (docs/step.md). Covers the Schwarz P surface (schwarzp) with a uniform wall so far");
-  cmd->add_option("-s,--surface", o.surface, "Catalog surface (schwarzp)");
-  cmd->add_option("-e,--expr", o.expression, "Your own F(x, y, z) (refused so far: no patch layout for it)");
-  cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr/--thickness (repeatable)");
-  cmd->add_option("-n,--name", o.name, "Function prefix of the generated functions (default <surface>_o<order>)");
-  std::string methods;
-  for (const OffsetMethod* m : offset_methods()) methods += fmt::format("{}{}", methods.empty() ? "" : ", ", m->name());
-  cmd->add_option("-M,--method", o.method, "Offset construction: " + methods)->capture_default_str();
-  cmd->add_option("-m,--order", o.order, "Approximation order")->capture_default_str();
+  add_generation_options(cmd, o, "Catalog surface (schwarzp)",
+                         "Your own F(x, y, z) (refused so far: no patch layout for it)");
   cmd->add_option("-t,--thickness", o.thickness, "Total wall thickness in cell units (a number)");
   cmd->add_option("--density", o.density, "Instead of --thickness: the relative density R of the wall");
   cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();

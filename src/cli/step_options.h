@@ -3,7 +3,7 @@
 // the same arguments again and runs it (sibling_exec.h).
 #pragma once
 
-#include "offset/method.h"
+#include "cli/generation_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -13,12 +13,9 @@
 
 namespace offsetgen {
 
-struct StepOptions {
-  std::string surface, expression, name, thickness, cells = "1", output;
+struct StepOptions : GenerationOptions {
+  std::string thickness, cells = "1", output;
   std::optional<double> density;
-  std::vector<std::string> params;
-  std::string method = kDefaultMethod;
-  int order = 4;
   double cell_size = 10;
   double tolerance = 0.01;
   int max_control_points = 40;
