@@ -7,6 +7,10 @@
 #include "surfaces/input_error.h"
 
 #include <CLI/CLI.hpp>
+#include <Standard_Failure.hxx>
+
+#include <stdexcept>
+#include <string>
 
 int main(int argc, char** argv) {
   using namespace offsetgen;
@@ -27,13 +31,18 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUsage;
   }
   return run_reporting_errors([&] {
-    if (app.got_subcommand("check")) {
-      if (!check->remaining().empty())
-        throw InputError(
-            "a STEP file is checked against its own header: `offsetgen check FILE.step` takes no options (" +
-            check->remaining().front() + " given)");
-      return run_step_check(check_file);
+    try {
+      if (app.got_subcommand("check")) {
+        if (!check->remaining().empty())
+          throw InputError(
+              "a STEP file is checked against its own header: `offsetgen check FILE.step` takes no options (" +
+              check->remaining().front() + " given)");
+        return run_step_check(check_file);
+      }
+      return run_step_command(step);
+    } catch (const Standard_Failure& e) {
+      // OpenCASCADE's exceptions are not std::exception: reported as an internal error, exit 3.
+      throw std::runtime_error(std::string("OpenCASCADE: ") + e.DynamicType()->Name() + ": " + e.GetMessageString());
     }
-    return run_step_command(step);
   });
 }

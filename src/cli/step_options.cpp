@@ -7,10 +7,10 @@ namespace offsetgen {
 void add_step_command(CLI::App& app, StepOptions& o) {
   auto* cmd = app.add_subcommand(
       "step",
-      "Write a block of cells of a wall solid as a STEP file (AP214, mm): one closed solid of bicubic B-spline\n"
+      "Write a block of cells of a wall solid as a STEP file (AP214, mm): closed solids of bicubic B-spline\n"
       "faces and planar caps, for CAD. Its deviation from the exact walls is measured on the file before it is\n"
-      "written (docs/step.md). Covers the Schwarz P surface (schwarzp) with a uniform wall so far");
-  add_generation_options(cmd, o, "Catalog surface (schwarzp)",
+      "written (docs/step.md). Covers Schwarz P (schwarzp) and diamond with a uniform wall so far");
+  add_generation_options(cmd, o, "Catalog surface (schwarzp, diamond)",
                          "Your own F(x, y, z) (refused so far: no patch layout for it)");
   cmd->add_option("-t,--thickness", o.thickness, "Total wall thickness in cell units (a number)");
   cmd->add_option("--density", o.density, "Instead of --thickness: the relative density R of the wall");

@@ -5,8 +5,8 @@
 #include "emit/file_writer.h"
 #include "run/process.h"
 #include "step/deviation.h"
-#include "step/schwarzp_patch.h"
 #include "step/step_file.h"
+#include "step/symmetry_patch.h"
 #include "step/wall_brep.h"
 #include "surfaces/input_error.h"
 
@@ -21,9 +21,11 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace offsetgen::step {
 namespace {
@@ -44,53 +46,147 @@ struct Fit {
   double error = 0;  // cell units
 };
 
-// The smallest patch whose largest |exact(u, v) - patch(u, v)| over a check grid (the midpoints of a
-// grid twice as fine as the samples, and the samples' own lines) is within `target` (cell units).
+// The n x n patch fitted to g's (3n + 1)^2 samples, and its largest |exact(u, v) - patch(u, v)| over
+// a check grid (the midpoints of a grid twice as fine as the samples, and the samples' own lines).
 // That distance bounds the distance of the exact point to the face from above.
-Fit fit_sheet(const LevelFunction& g, double target, int max_side) {
+Fit fit_at(const PatchLayout& layout, const LevelFunction& g, int n) {
+  const int m = 3 * n + 1;
+  Fit fit;
+  fit.patch = fit_patch(patch_points(layout, g, m), m, n);
+  snap_boundary(layout, fit.patch);
+  const int c = 2 * m;
+  std::vector<std::array<double, 2>> uv;
+  for (int i = 0; i <= c; ++i)
+    for (int j = 0; j <= c; ++j) uv.push_back({(i + 0.5 * (i < c)) / c, (j + 0.5 * (j < c)) / c});
+  const std::vector<Point> exact = patch_points(layout, g, uv);
+  for (size_t k = 0; k < uv.size(); ++k) {
+    const Point p = fit.patch.evaluate(uv[k][0], uv[k][1]);
+    fit.error = std::max(fit.error, std::hypot(p[0] - exact[k][0], p[1] - exact[k][1], p[2] - exact[k][2]));
+  }
+  return fit;
+}
+
+// The smallest patch within `target` (cell units), or the largest allowed.
+Fit fit_sheet(const PatchLayout& layout, const LevelFunction& g, double target, int max_side) {
   Fit best;
   for (int n : kSides) {
     if (n > max_side) break;
-    const int m = 3 * n + 1;
-    Fit fit;
-    fit.patch = fit_patch(schwarzp_patch_points(g, m), m, n);
-    snap_schwarzp_boundary(fit.patch);
-    const int c = 2 * m;
-    std::vector<std::array<double, 2>> uv;
-    for (int i = 0; i <= c; ++i)
-      for (int j = 0; j <= c; ++j) uv.push_back({(i + 0.5 * (i < c)) / c, (j + 0.5 * (j < c)) / c});
-    const std::vector<Point> exact = schwarzp_patch_points(g, uv);
-    for (size_t k = 0; k < uv.size(); ++k) {
-      const Point p = fit.patch.evaluate(uv[k][0], uv[k][1]);
-      fit.error = std::max(fit.error, std::hypot(p[0] - exact[k][0], p[1] - exact[k][1], p[2] - exact[k][2]));
-    }
-    best = std::move(fit);
+    best = fit_at(layout, g, n);
     if (best.error <= target) break;
   }
   return best;
 }
 
-LevelFunction offset_sheet(mesh::WallField& field, double h) {
-  return [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
-    const std::vector<double> hs(n, h);
-    field.offsets(n, x, y, z, hs.data(), out);
+// One offset sheet, phi(p, side t(p) / 2) = 0 with side +1 or -1; t uniform or graded. With `block`,
+// a graded t is taken at the nearest point of the block [0, cells]: diamond's patches reach beyond
+// it (the box cuts them afterwards), where the expression may not be positive or may be nothing the
+// user asked for; inside the block the sheet is unchanged.
+LevelFunction offset_sheet(const mesh::WallField& field, mesh::WallField::Worker& worker, double side,
+                           const std::array<int, 3>* block = nullptr) {
+  return [&field, &worker, side, block](size_t n, const double* x, const double* y, const double* z, double* out) {
+    std::vector<double> h(n);
+    for (size_t i = 0; i < n; ++i) {
+      Point p{x[i], y[i], z[i]};
+      if (block != nullptr)
+        for (size_t a = 0; a < 3; ++a) p[a] = std::clamp(p[a], 0.0, double((*block)[a]));
+      h[i] = side * 0.5 * field.thickness_at(p[0], p[1], p[2], worker);
+    }
+    field.offsets(n, x, y, z, h.data(), out);
   };
 }
 
-// Generates and compiles the wall's functions, and checks what the exporter covers of them.
-double prepare_walls(mesh::WallField& field, mesh::WallField::Worker& worker, StepSummary& s) {
-  if (field.graded())
+// g seen from a patch's image: q -> g(map(q)).
+LevelFunction through(const LevelFunction& g, const Isometry& map) {
+  return [&g, map](size_t n, const double* x, const double* y, const double* z, double* out) {
+    std::vector<double> mx(n), my(n), mz(n);
+    for (size_t i = 0; i < n; ++i) {
+      const Point q = map.apply({x[i], y[i], z[i]});
+      mx[i] = q[0];
+      my[i] = q[1];
+      mz[i] = q[2];
+    }
+    g(n, mx.data(), my.data(), mz.data(), out);
+  };
+}
+
+// The patches of both sheets: one each for a uniform wall (its images are copies), one per image of
+// the region for a graded wall (the thickness breaks the symmetry; each image is fitted where it lies,
+// on every core). All share one control-point count, so neighbours fitted from the same boundary
+// samples share their boundary curve: the count that fits the patch's own image within the target,
+// raised for all until every image is within it (or the request's limit is reached).
+struct SheetPatches {
+  std::vector<CubicPatch> plus, minus;
+  int n = 0;
+  double error = 0;  // cell units
+};
+
+SheetPatches fit_sheets(const PatchLayout& layout, const mesh::WallField& field, bool graded,
+                        const std::array<int, 3>& cells, double target, int max_side) {
+  std::vector<Isometry> maps{Isometry{}};
+  if (graded) {
+    maps.clear();
+    for (const PatchImage& image : region_images(layout, cells)) maps.push_back(image.map);
+  }
+  int n = 0;
+  {
+    mesh::WallField::Worker worker(field);
+    for (double side : {1.0, -1.0})
+      n = std::max(n, fit_sheet(layout, offset_sheet(field, worker, side, &cells), target, max_side).patch.n);
+  }
+  SheetPatches out;
+  std::vector<Fit> plus(maps.size()), minus(maps.size());
+  for (;;) {
+    const unsigned threads = graded ? std::max(1u, std::thread::hardware_concurrency()) : 1u;
+    std::vector<std::exception_ptr> failed(threads);
+    auto work = [&](unsigned t) {
+      try {
+        mesh::WallField::Worker worker(field);
+        const LevelFunction p = offset_sheet(field, worker, 1, &cells), m = offset_sheet(field, worker, -1, &cells);
+        for (size_t i = t; i < maps.size(); i += threads) {
+          plus[i] = fit_at(layout, through(p, maps[i]), n);
+          minus[i] = fit_at(layout, through(m, maps[i]), n);
+        }
+      } catch (...) {
+        failed[t] = std::current_exception();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (std::thread& thread : pool) thread.join();
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
+    out.error = 0;
+    for (size_t i = 0; i < maps.size(); ++i) out.error = std::max({out.error, plus[i].error, minus[i].error});
+    const int* next = std::upper_bound(std::begin(kSides), std::end(kSides), n);
+    if (out.error <= target || next == std::end(kSides) || *next > max_side) break;
+    n = *next;
+  }
+  out.n = n;
+  for (size_t i = 0; i < maps.size(); ++i) {
+    out.plus.push_back(std::move(plus[i].patch));
+    out.minus.push_back(std::move(minus[i].patch));
+  }
+  return out;
+}
+
+// Checks what the exporter covers of the wall, and records its thickness.
+void prepare_walls(const mesh::WallField& field, mesh::WallField::Worker& worker, const StepRequest& r,
+                   StepSummary& s) {
+  if (field.graded() && r.wall.thickness.empty())
     throw InputError(
-        "STEP export covers uniform walls so far; a graded thickness (an expression of x, y, z or "
-        "--density-field) is refused");
+        "STEP export takes a graded wall as --thickness EXPR (an expression of x, y, z); --density-field is refused");
+  s.graded = field.graded();
   s.thickness = field.thickness_at(0, 0, 0, worker);
+  s.thickness_range = field.thickness_range(r.cells);
+  s.thickness_text = s.graded ? r.wall.thickness : fmt::format("{}", s.thickness);
   s.thickness_limit = density::surface_constants(field.generation().surface).thickness_limit();
-  if (!(s.thickness < s.thickness_limit))
+  if (!(s.thickness_range[1] < s.thickness_limit))
     throw InputError(fmt::format(
-        "--thickness {} is beyond the curvature limit of {}: t/2 must stay below the smallest radius of curvature, "
-        "t < {:.6f} (cell units)",
-        s.thickness, s.surface, s.thickness_limit));
-  return s.thickness;
+        "--thickness {} is beyond the curvature limit of {}{}: t/2 must stay below the smallest radius of "
+        "curvature, t < {:.6f} (cell units)",
+        s.thickness_text, s.surface, s.graded ? fmt::format(" (it reaches {} in the block)", s.thickness_range[1]) : "",
+        s.thickness_limit));
 }
 
 // The request, as the file's header carries it for `offsetgen check` (kMetadataTag, then JSON).
@@ -101,15 +197,16 @@ std::string request_metadata(const StepRequest& r, const StepSummary& s) {
   j["surface"] = s.surface;
   j["method"] = r.wall.generation.method;
   j["order"] = r.wall.generation.order;
-  j["thickness"] = fmt::format("{}", s.thickness);  // shortest text that reads back as the same double
+  j["thickness"] = s.thickness_text;  // a uniform one as the shortest text that reads back as the same double
   j["cells"] = r.cells;
   j["cell_size"] = r.cell_size;
   j["tolerance"] = r.tolerance;
+  j["solids"] = s.expected_solids;
   return kMetadataTag + j.dump();
 }
 
 // The request a file's header describes; InputError naming what is missing.
-StepRequest request_from_description(const std::string& description, const std::string& path) {
+StepRequest request_from_description(const std::string& description, const std::string& path, int& solids) {
   const size_t at = description.find(kMetadataTag);
   if (at == std::string::npos)
     throw InputError(fmt::format(
@@ -126,10 +223,11 @@ StepRequest request_from_description(const std::string& description, const std::
     r.cells = j.at("cells").get<std::array<int, 3>>();
     r.cell_size = j.at("cell_size").get<double>();
     r.tolerance = j.at("tolerance").get<double>();
+    solids = j.value("solids", 1);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: its offsetgen-metadata cannot be read: {}", path, e.what()));
   }
-  if (!(r.tolerance > 0) || !(r.cell_size > 0) || r.cells[0] < 1 || r.cells[1] < 1 || r.cells[2] < 1)
+  if (!(r.tolerance > 0) || !(r.cell_size > 0) || r.cells[0] < 1 || r.cells[1] < 1 || r.cells[2] < 1 || solids < 1)
     throw InputError(fmt::format("{}: its offsetgen-metadata holds a block or tolerance out of range", path));
   return r;
 }
@@ -147,7 +245,8 @@ void count_bspline_faces(const TopoDS_Shape& shape, StepSummary& s) {
   }
 }
 
-// Everything measured on a file read back, by export and check alike: one valid closed solid, the
+// Everything measured on a file read back, by export and check alike: valid closed solids, as many as
+// the wall has pieces in the block, the
 // exact walls' deviation from its faces, its volume against the exact wall volume.
 void measure_read_back(const TopoDS_Shape& shape, const StepRequest& r, mesh::WallField& field,
                        mesh::WallField::Worker& worker, StepSummary& s) {
@@ -156,7 +255,7 @@ void measure_read_back(const TopoDS_Shape& shape, const StepRequest& r, mesh::Wa
   s.seconds_check = seconds_since(t0);
   t0 = Clock::now();
   s.valid = c.valid;
-  s.closed = c.closed && c.shells == 1;
+  s.closed = c.closed && c.shells == c.solids;
   s.solids = c.solids;
   s.volume = c.volume;
   const long control_points = s.control_points;
@@ -165,9 +264,9 @@ void measure_read_back(const TopoDS_Shape& shape, const StepRequest& r, mesh::Wa
   s.control_points_per_cell = double(s.control_points) / (double(r.cells[0]) * r.cells[1] * r.cells[2]);
   s.planar_faces = c.faces - s.bspline_faces;
 
-  // The exact wall points: lines along each axis, 12 per cell side, scanned at t/4.
-  const LevelFunction plus = offset_sheet(field, 0.5 * s.thickness), minus = offset_sheet(field, -0.5 * s.thickness);
-  const int steps = std::max(16, static_cast<int>(std::ceil(4 / s.thickness)));
+  // The exact wall points: lines along each axis, 12 per cell side, scanned at t/4 (the thinnest t).
+  const LevelFunction plus = offset_sheet(field, worker, 1), minus = offset_sheet(field, worker, -1);
+  const int steps = std::max(16, static_cast<int>(std::ceil(4 / s.thickness_range[0])));
   std::vector<Point> points = exact_surface_points(plus, r.cells, 12, steps, kSeed);
   const std::vector<Point> more = exact_surface_points(minus, r.cells, 12, steps, kSeed + 1);
   points.insert(points.end(), more.begin(), more.end());
@@ -180,8 +279,9 @@ void measure_read_back(const TopoDS_Shape& shape, const StepRequest& r, mesh::Wa
   s.seconds_deviation = seconds_since(t0);
   t0 = Clock::now();
 
-  // The exact volume: the wall's volume fraction in one cell (the block is whole cells of a periodic
-  // wall) by column quadrature (check/volume_fraction.h).
+  // The exact volume by column quadrature (check/volume_fraction.h): a uniform wall's volume fraction
+  // in one cell times the cells (the block is whole cells of a periodic wall); a graded wall's,
+  // cell by cell.
   check::VolumeFractionSetup v;
   v.g = [&field, &worker](const double* p) {
     double w = 0;
@@ -190,17 +290,32 @@ void measure_read_back(const TopoDS_Shape& shape, const StepRequest& r, mesh::Wa
   };
   v.field = [&field](const double* p) { return field.field(p[0], p[1], p[2]); };
   v.field_slope_bound = field.field_lipschitz();
-  v.band = field.field_lipschitz() * 0.5 * s.thickness * (1 + 1e-9);
-  v.scan_step = s.thickness / 4;
-  const check::VolumeFraction fraction = check::measure_volume_fraction(v, check::VolumeFractionOptions{});
-  const double block = double(r.cells[0]) * r.cells[1] * r.cells[2] * std::pow(r.cell_size, 3);
-  s.exact_volume = fraction.value * block;
-  s.exact_volume_error = fraction.standard_error * block;
+  v.band = field.field_lipschitz() * 0.5 * s.thickness_range[1] * (1 + 1e-9);
+  v.scan_step = s.thickness_range[0] / 4;
+  const double cell = std::pow(r.cell_size, 3);
+  std::vector<std::array<int, 3>> cells{{0, 0, 0}};
+  if (s.graded) {
+    v.periodic = false;
+    cells.clear();
+    for (int i = 0; i < r.cells[0]; ++i)
+      for (int j = 0; j < r.cells[1]; ++j)
+        for (int k = 0; k < r.cells[2]; ++k) cells.push_back({i, j, k});
+  }
+  const double copies = s.graded ? 1.0 : double(r.cells[0]) * r.cells[1] * r.cells[2];
+  double variance = 0;
+  s.exact_volume = 0;
+  for (const auto& at : cells) {
+    v.origin = {double(at[0]), double(at[1]), double(at[2])};
+    const check::VolumeFraction fraction = check::measure_volume_fraction(v, check::VolumeFractionOptions{});
+    s.exact_volume += fraction.value * cell * copies;
+    variance += std::pow(fraction.standard_error * cell * copies, 2);
+  }
+  s.exact_volume_error = std::sqrt(variance);
   s.seconds_volume = seconds_since(t0);
 
-  if (!s.valid || !s.closed || s.solids != 1)
-    s.failure = fmt::format("the solid read back is not one valid closed solid (valid {}, solids {}, closed {})",
-                            s.valid, s.solids, s.closed);
+  if (!s.valid || !s.closed || s.solids != s.expected_solids)
+    s.failure = fmt::format("the shape read back is not {} valid closed solid{} (valid {}, solids {}, closed {})",
+                            s.expected_solids, s.expected_solids == 1 ? "" : "s", s.valid, s.solids, s.closed);
   else if (!(s.max_deviation <= r.tolerance))
     s.failure = fmt::format("the measured deviation {:.3g} mm exceeds --tolerance {} mm", s.max_deviation, r.tolerance);
 }
@@ -231,12 +346,14 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   if (ext != ".step" && ext != ".stp" && ext != ".STEP" && ext != ".STP")
     throw InputError(fmt::format("-o '{}': STEP files end in .step or .stp", r.output));
   if (!r.wall.generation.expression.empty())
-    throw InputError("STEP export covers the catalog surface schwarzp so far; --expr surfaces are refused");
-  if (r.wall.generation.surface != "schwarzp")
+    throw InputError(fmt::format("STEP export covers the catalog surfaces {} so far; --expr surfaces are refused",
+                                 patch_layout_surfaces()));
+  const PatchLayout* layout = find_patch_layout(r.wall.generation.surface);
+  if (layout == nullptr)
     throw InputError(fmt::format(
-        "STEP export covers the catalog surface schwarzp so far (its 48 mirror-symmetry patches per sheet and "
-        "cell); '{}' is refused: diamond, gyroid and the other surfaces need their own patch layouts (docs/step.md)",
-        r.wall.generation.surface));
+        "STEP export covers the catalog surfaces {} so far (their mirror-symmetry patches); '{}' is refused: "
+        "the gyroid has no mirror planes, and the other surfaces need their own patch layouts (docs/step.md)",
+        patch_layout_surfaces(), r.wall.generation.surface));
   try {
     require_writable(r.output);  // an unwritable -o is the user's input, before the long work
   } catch (const std::runtime_error& e) {
@@ -248,39 +365,40 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   say("generating the wall's functions");
   mesh::WallField field(r.wall);
   mesh::WallField::Worker worker(field);
-  prepare_walls(field, worker, s);
+  prepare_walls(field, worker, r, s);
   say("compiling them");
   field.compile();
-
-  const LevelFunction plus = offset_sheet(field, 0.5 * s.thickness), minus = offset_sheet(field, -0.5 * s.thickness);
 
   // Half of the tolerance for the fit, the rest is margin for what the check grid does not see.
   s.seconds_generate = seconds_since(start);
   say("fitting the symmetry patches");
   auto t0 = Clock::now();
   const double target = 0.5 * r.tolerance / r.cell_size;
-  const Fit fit_plus = fit_sheet(plus, target, r.max_control_points);
-  const Fit fit_minus = fit_sheet(minus, target, r.max_control_points);
-  s.patch_control_points = std::max(fit_plus.patch.n, fit_minus.patch.n);
-  s.fit_error = std::max(fit_plus.error, fit_minus.error) * r.cell_size;
-  s.normal_jump =
-      std::max(schwarzp_normal_jump(fit_plus.patch, 200), schwarzp_normal_jump(fit_minus.patch, 200)) * 180 / M_PI;
+  const SheetPatches patches = fit_sheets(*layout, field, s.graded, r.cells, target, r.max_control_points);
+  s.patch_control_points = patches.n;
+  s.fit_error = patches.error * r.cell_size;
+  // A graded sheet is not perpendicular to the mirror planes: the jump is measured for uniform walls.
+  if (!s.graded)
+    for (const auto* sheet : {&patches.plus, &patches.minus})
+      for (const CubicPatch& patch : *sheet)
+        s.normal_jump = std::max(s.normal_jump, normal_jump(*layout, patch, 200) * 180 / M_PI);
   s.seconds_fit = seconds_since(t0);
 
   say("building the solid");
   t0 = Clock::now();
-  const WallBrep brep = build_schwarzp_wall(fit_plus.patch, fit_minus.patch, r.cells, r.cell_size);
+  const WallBrep brep = build_wall(*layout, patches.plus, patches.minus, r.cells, r.cell_size);
   s.control_points = brep.control_points;
+  s.expected_solids = brep.solids;
   s.seconds_build = seconds_since(t0);
 
   say("writing STEP");
   t0 = Clock::now();
   const run::ScratchDir scratch("offsetgen-step");  // removed on exit (a loaded library's mapping stays)
   const fs::path file = scratch.path() / "wall.step";
-  write_step(
-      brep.solid, file.string(),
-      fmt::format("offsetgen: {} wall, t = {} (cell units), {}x{}x{} cells of {} mm, tolerance {} mm; {}", s.surface,
-                  s.thickness, r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance, request_metadata(r, s)));
+  write_step(brep.solid, file.string(),
+             fmt::format("offsetgen: {} wall, t = {} (cell units), {}x{}x{} cells of {} mm, tolerance {} mm; {}",
+                         s.surface, s.thickness_text, r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance,
+                         request_metadata(r, s)));
   const std::string bytes = read_bytes(file);
   s.bytes = long(bytes.size());
   s.seconds_write = seconds_since(t0);
@@ -326,8 +444,8 @@ StepCheck check_step_file(const std::string& path, const std::function<void(cons
     throw InputError(e.what());
   }
   StepCheck check;
-  check.request = request_from_description(contents.description, path);
   StepSummary& s = check.summary;
+  check.request = request_from_description(contents.description, path, s.expected_solids);
   s.surface = check.request.wall.generation.surface;
   s.bytes = long(bytes.size());
   s.seconds_read = seconds_since(start);
@@ -336,7 +454,7 @@ StepCheck check_step_file(const std::string& path, const std::function<void(cons
   auto t0 = Clock::now();
   mesh::WallField field(check.request.wall);
   mesh::WallField::Worker worker(field);
-  prepare_walls(field, worker, s);
+  prepare_walls(field, worker, check.request, s);
   field.compile();
   s.seconds_generate = seconds_since(t0);
   say("measuring");
@@ -350,18 +468,29 @@ StepCheck check_step_file(const std::string& path, const std::function<void(cons
   return check;
 }
 
+namespace {
+
+// "0.1 cell (1 mm)", or for a graded wall "0.05 + 0.05*x cell (0.5 to 1.5 mm in the block)".
+std::string thickness_words(const StepSummary& s, double cell_size) {
+  if (!s.graded) return fmt::format("{} cell ({} mm", s.thickness_text, s.thickness * cell_size);
+  return fmt::format("{} cell ({:.4g} to {:.4g} mm in the block", s.thickness_text, s.thickness_range[0] * cell_size,
+                     s.thickness_range[1] * cell_size);
+}
+
+}  // namespace
+
 std::string format_check_summary(const StepCheck& c, const std::string& path) {
   const StepSummary& s = c.summary;
   const StepRequest& r = c.request;
   std::string out = fmt::format(
-      "offsetgen check: {}: {} wall, t = {} cell ({} mm), {}x{}x{} cells of {} mm, tolerance {} mm (its header)\n",
-      path, s.surface, s.thickness, s.thickness * r.cell_size, r.cells[0], r.cells[1], r.cells[2], r.cell_size,
-      r.tolerance);
+      "offsetgen check: {}: {} wall, t = {}), {}x{}x{} cells of {} mm, tolerance {} mm (its header)\n", path, s.surface,
+      thickness_words(s, r.cell_size), r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance);
   out += fmt::format("  faces: {} B-spline, {} planar; {} control points ({:.0f} per cell); {} bytes\n",
                      s.bspline_faces, s.planar_faces, s.control_points, s.control_points_per_cell, s.bytes);
-  out += fmt::format("  {}  solid: {}, {} solid{}, {}\n", s.valid && s.closed && s.solids == 1 ? "PASS" : "FAIL",
+  out += fmt::format("  {}  solid: {}, {} solid{} ({} expected), {}\n",
+                     s.valid && s.closed && s.solids == s.expected_solids ? "PASS" : "FAIL",
                      s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid", s.solids, s.solids == 1 ? "" : "s",
-                     s.closed ? "one closed shell" : "NOT closed");
+                     s.expected_solids, s.closed ? "each one closed shell" : "NOT closed");
   out += fmt::format(
       "  {}  deviation of the exact walls from the faces, {} points: max {:.3g} mm, mean {:.3g} mm (tolerance {} mm)\n",
       s.max_deviation <= r.tolerance ? "PASS" : "FAIL", s.deviation_points, s.max_deviation, s.mean_deviation,
@@ -378,17 +507,23 @@ std::string format_check_summary(const StepCheck& c, const std::string& path) {
 }
 
 std::string format_summary(const StepSummary& s, const StepRequest& r) {
-  std::string out = fmt::format(
-      "offsetgen step: {}: {} wall, t = {} cell ({} mm; curvature limit {:.4f} cell), {}x{}x{} cells of {} mm\n",
-      s.written ? r.output + " written" : "no file written", s.surface, s.thickness, s.thickness * r.cell_size,
-      s.thickness_limit, r.cells[0], r.cells[1], r.cells[2], r.cell_size);
+  std::string out =
+      fmt::format("offsetgen step: {}: {} wall, t = {}; curvature limit {:.4f} cell), {}x{}x{} cells of {} mm\n",
+                  s.written ? r.output + " written" : "no file written", s.surface, thickness_words(s, r.cell_size),
+                  s.thickness_limit, r.cells[0], r.cells[1], r.cells[2], r.cell_size);
   out += fmt::format(
       "  faces: {} B-spline (bicubic, {}x{} control points per symmetry patch), {} planar; {} control points "
-      "({:.0f} per cell); {} bytes; largest normal jump across a patch edge {:.3f} degrees (C0 edges)\n",
+      "({:.0f} per cell){}; {} bytes; {}\n",
       s.bspline_faces, s.patch_control_points, s.patch_control_points, s.planar_faces, s.control_points,
-      s.control_points_per_cell, s.bytes, s.normal_jump);
-  out += fmt::format("  solid read back: {}, {} solid{}, {}\n", s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid",
-                     s.solids, s.solids == 1 ? "" : "s", s.closed ? "one closed shell" : "NOT closed");
+      s.control_points_per_cell, s.graded ? ", each image fitted on its own (graded)" : "", s.bytes,
+      s.graded ? "C0 edges"
+               : fmt::format("largest normal jump across a patch edge {:.3f} degrees (C0 edges)", s.normal_jump));
+  out += fmt::format("  solid read back: {}, {} solid{}, {}{}\n", s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid",
+                     s.solids, s.solids == 1 ? "" : "s", s.closed ? "each one closed shell" : "NOT closed",
+                     s.expected_solids == 1 ? ""
+                                            : fmt::format(" (the block cuts the wall into {} pieces: the surface "
+                                                          "crosses two of its corners)",
+                                                          s.expected_solids));
   out += fmt::format(
       "  deviation of the exact walls from the faces, {} points measured: max {:.3g} mm, mean {:.3g} mm "
       "(tolerance {} mm; fit check {:.3g} mm)\n",

@@ -21,16 +21,22 @@ struct StepRequest {
 
 struct StepSummary {
   std::string surface;
-  double thickness = 0;          // cell units
-  double thickness_limit = 0;    // cell units: 2 / the largest principal curvature
-  int patch_control_points = 0;  // per side of each symmetry patch (the larger of the two sheets)
-  double fit_error = 0;          // mm: the largest |exact(u, v) - patch(u, v)| over the check grid
-  double normal_jump = 0;        // degrees: the largest angle between the faces' normals across a patch edge
-  long control_points = 0;       // over the whole file
+  double thickness = 0;                     // cell units (a graded wall's at the origin)
+  bool graded = false;                      // the thickness an expression of x, y, z
+  std::string thickness_text;               // as given, for the summary and the file's header
+  std::array<double, 2> thickness_range{};  // smallest and largest in the block (sampled)
+  double thickness_limit = 0;               // cell units: 2 / the largest principal curvature
+  int patch_control_points = 0;             // per side of each symmetry patch (the larger of the two sheets)
+  double fit_error = 0;                     // mm: the largest |exact(u, v) - patch(u, v)| over the check grid
+  double normal_jump = 0;                   // degrees: the largest angle between the faces' normals across a patch edge
+  long control_points = 0;                  // over the whole file
   double control_points_per_cell = 0;
   int bspline_faces = 0, planar_faces = 0;
   bool valid = false, closed = false;
   int solids = 0;
+  // The pieces the block cuts the wall into (1 for Schwarz P; diamond's block corners each cut off a
+  // small tetrahedron of the wall): export's count, written into the header for check.
+  int expected_solids = 1;
   double volume = 0;                                // mm^3, of the solid read back from the file
   double exact_volume = 0, exact_volume_error = 0;  // mm^3, column quadrature of the exact wall (standard error)
   double max_deviation = 0, mean_deviation = 0;     // mm, of the exact walls from the file's faces

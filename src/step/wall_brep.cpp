@@ -1,7 +1,6 @@
 #include "step/wall_brep.h"
 
-#include "step/cell_symmetry.h"
-
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
@@ -10,6 +9,8 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepLib.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -20,7 +21,9 @@
 #include <TColgp_Array1OfPnt.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
@@ -35,12 +38,11 @@ namespace offsetgen::step {
 namespace {
 
 struct Placement {
-  const CellImage* image;
-  std::array<int, 3> cell;
+  const Isometry* map;
   double cell_size;
   gp_Pnt operator()(const Point& p) const {
-    const Point q = image->apply(p);
-    return gp_Pnt((q[0] + cell[0]) * cell_size, (q[1] + cell[1]) * cell_size, (q[2] + cell[2]) * cell_size);
+    const Point q = map->apply(p);
+    return gp_Pnt(q[0] * cell_size, q[1] * cell_size, q[2] * cell_size);
   }
 };
 
@@ -68,11 +70,23 @@ TopoDS_Face patch_face(const CubicPatch& patch, const Placement& place) {
   return face.Face();
 }
 
-// The v = 0 boundary of a patch (on the plane z = 0), placed.
-TopoDS_Edge boundary_edge(const CubicPatch& patch, const Placement& place) {
+// The control points of side k of a patch (u = 0, u = 1, v = 0, v = 1), in order.
+std::vector<Point> side_curve(const CubicPatch& patch, size_t k) {
   const int n = patch.n;
+  std::vector<Point> out;
+  for (int t = 0; t < n; ++t) {
+    if (k == 0) out.push_back(patch.at(0, t));
+    if (k == 1) out.push_back(patch.at(n - 1, t));
+    if (k == 2) out.push_back(patch.at(t, 0));
+    if (k == 3) out.push_back(patch.at(t, n - 1));
+  }
+  return out;
+}
+
+TopoDS_Edge curve_edge(const std::vector<Point>& control, const Placement& place) {
+  const int n = static_cast<int>(control.size());
   TColgp_Array1OfPnt poles(1, n);
-  for (int i = 0; i < n; ++i) poles.SetValue(i + 1, place(patch.at(i, 0)));
+  for (int i = 0; i < n; ++i) poles.SetValue(i + 1, place(control[static_cast<size_t>(i)]));
   TColStd_Array1OfReal knots(1, 2);
   TColStd_Array1OfInteger mults(1, 2);
   knots_of(n, knots, mults);
@@ -80,16 +94,15 @@ TopoDS_Edge boundary_edge(const CubicPatch& patch, const Placement& place) {
   return BRepBuilderAPI_MakeEdge(curve).Edge();
 }
 
-// The cap between the two sheets' v = 0 boundaries on a face of the block: a planar quadrilateral
-// (the two curves and two segments on the mirror lines x = y and x = 1/2 of that plane).
-TopoDS_Face cap_face(const CubicPatch& plus, const CubicPatch& minus, const Placement& place) {
-  const int n = plus.n;
-  const gp_Pnt p0 = place(plus.at(0, 0)), p1 = place(plus.at(n - 1, 0));
-  const gp_Pnt m0 = place(minus.at(0, 0)), m1 = place(minus.at(n - 1, 0));
+// The cap between the two sheets' side k on a face of the region: a planar quadrilateral (the two
+// boundary curves and two segments on the tetrahedron's edges at their ends).
+TopoDS_Face cap_face(const CubicPatch& plus, const CubicPatch& minus, size_t k, const Placement& place) {
+  const std::vector<Point> p = side_curve(plus, k), m = side_curve(minus, k);
+  const gp_Pnt p0 = place(p.front()), p1 = place(p.back()), m0 = place(m.front()), m1 = place(m.back());
   BRepBuilderAPI_MakeWire wire;
-  wire.Add(boundary_edge(plus, place));
+  wire.Add(curve_edge(p, place));
   wire.Add(BRepBuilderAPI_MakeEdge(p1, m1).Edge());
-  wire.Add(TopoDS::Edge(boundary_edge(minus, place).Reversed()));
+  wire.Add(TopoDS::Edge(curve_edge(m, place).Reversed()));
   wire.Add(BRepBuilderAPI_MakeEdge(m0, p0).Edge());
   if (!wire.IsDone()) throw std::runtime_error("STEP: the wire of a cap face is not closed");
   BRepBuilderAPI_MakeFace face(wire.Wire(), true);
@@ -97,32 +110,44 @@ TopoDS_Face cap_face(const CubicPatch& plus, const CubicPatch& minus, const Plac
   return face.Face();
 }
 
+// The solids of a boolean's result: one, or a compound of them where the block cuts the wall into
+// several pieces (diamond's block corners cut off a small tetrahedron of the wall each).
+TopoDS_Shape solids_of(const TopoDS_Shape& shape, int& count) {
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  TopoDS_Shape last;
+  count = 0;
+  for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++count) {
+    builder.Add(compound, e.Current());
+    last = e.Current();
+  }
+  if (count == 0) throw std::runtime_error("STEP: cutting the wall to the block left no solid");
+  return count == 1 ? last : TopoDS_Shape(compound);
+}
+
 }  // namespace
 
-WallBrep build_schwarzp_wall(const CubicPatch& plus, const CubicPatch& minus, const std::array<int, 3>& cells,
-                             double cell_size) {
+WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& plus,
+                    const std::vector<CubicPatch>& minus, const std::array<int, 3>& cells, double cell_size) {
   WallBrep out;
-  // The patches' shared curves are bitwise equal (cell_symmetry.h): sewing needs no slack beyond
-  // rounding in the placement, far below any tolerance asked for.
+  // The patches' shared curves are equal to the last bit or within a few units of it
+  // (symmetry_patch.h): sewing needs no slack beyond rounding, far below any tolerance asked for.
   out.sewing_tolerance = 1e-9 * cell_size * std::max({cells[0], cells[1], cells[2]});
   BRepBuilderAPI_Sewing sewing(out.sewing_tolerance);
-  for (int i = 0; i < cells[0]; ++i)
-    for (int j = 0; j < cells[1]; ++j)
-      for (int k = 0; k < cells[2]; ++k)
-        for (const CellImage& image : cell_images()) {
-          const Placement place{&image, {i, j, k}, cell_size};
-          sewing.Add(patch_face(plus, place));
-          sewing.Add(patch_face(minus, place));
-          out.bspline_faces += 2;
-          out.control_points += long(plus.n) * plus.n + long(minus.n) * minus.n;
-          // A cap where the image of z = 0 is a face of the block.
-          const int axis = image.face_axis();
-          const int index = std::array<int, 3>{i, j, k}[static_cast<size_t>(axis)] + image.face_side();
-          if (index == 0 || index == cells[static_cast<size_t>(axis)]) {
-            sewing.Add(cap_face(plus, minus, place));
-            ++out.planar_faces;
-          }
-        }
+  const std::vector<PatchImage> images = region_images(layout, cells);
+  const bool each = plus.size() > 1;
+  if (plus.size() != minus.size() || (each && plus.size() != images.size()))
+    throw std::logic_error("build_wall: one patch per sheet, or one per image");
+  for (size_t i = 0; i < images.size(); ++i) {
+    const PatchImage& image = images[i];
+    const CubicPatch &p = plus[each ? i : 0], &m = minus[each ? i : 0];
+    const Placement place{&image.map, cell_size};
+    sewing.Add(patch_face(p, place));
+    sewing.Add(patch_face(m, place));
+    for (size_t k = 0; k < 4; ++k)
+      if (image.cap[k]) sewing.Add(cap_face(p, m, k, place));
+  }
   sewing.Perform();
   out.free_edges = sewing.NbFreeEdges();
   if (out.free_edges != 0)
@@ -139,14 +164,37 @@ WallBrep build_schwarzp_wall(const CubicPatch& plus, const CubicPatch& minus, co
   if (shell_count != 1) throw std::runtime_error(fmt::format("STEP: sewing made {} shells, not one", shell_count));
   TopoDS_Solid solid = make_solid.Solid();
   BRepLib::OrientClosedSolid(solid);
-  // The caps of one neck are 8 coplanar quadrilaterals: one planar face each neck.
-  ShapeUpgrade_UnifySameDomain unify(solid, true, true, false);
+  TopoDS_Shape shape = solid;
+  if (!layout.region_is_block) {
+    // The region's faces lie outside the block: the block's box cuts the wall to it.
+    const TopoDS_Shape box =
+        BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), cells[0] * cell_size, cells[1] * cell_size, cells[2] * cell_size).Shape();
+    BRepAlgoAPI_Common common;
+    TopTools_ListOfShape objects, tools;
+    objects.Append(solid);
+    tools.Append(box);
+    common.SetArguments(objects);
+    common.SetTools(tools);
+    common.SetRunParallel(true);  // the faces' intersections with the box, on every core
+    common.SetUseOBB(true);       // oriented boxes: fewer face pairs handed to the intersector
+    common.Build();
+    if (!common.IsDone() || common.HasErrors())
+      throw std::runtime_error("STEP: cutting the wall to the block (boolean common with its box) failed");
+    shape = solids_of(common.Shape(), out.solids);
+  }
+  // The caps of one neck are coplanar quadrilaterals: one planar face each.
+  ShapeUpgrade_UnifySameDomain unify(shape, true, true, false);
   unify.Build();
   out.solid = unify.Shape();
-  out.planar_faces = 0;
   for (TopExp_Explorer f(out.solid, TopAbs_FACE); f.More(); f.Next()) {
-    Handle(Geom_Surface) s = BRep_Tool::Surface(TopoDS::Face(f.Current()));
-    if (s->DynamicType() != STANDARD_TYPE(Geom_BSplineSurface)) ++out.planar_faces;
+    Handle(Geom_BSplineSurface) b =
+        Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(TopoDS::Face(f.Current())));
+    if (b.IsNull()) {
+      ++out.planar_faces;
+      continue;
+    }
+    ++out.bspline_faces;
+    out.control_points += long(b->NbUPoles()) * b->NbVPoles();
   }
   return out;
 }

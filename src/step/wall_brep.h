@@ -1,9 +1,12 @@
-// The wall of a block of Schwarz P cells as an OpenCASCADE solid: the two fitted symmetry patches
-// (one per offset surface) copied by the 48 cell symmetries into every cell as untrimmed bicubic
-// B-spline faces, planar caps where the block's faces cut the wall, sewn into one closed shell.
+// The wall of a block of cells as an OpenCASCADE solid: the two fitted symmetry patches (one per
+// offset surface) copied by the layout's symmetries into every tetrahedron of its region as untrimmed
+// bicubic B-spline faces, planar caps where the region's faces cut the wall, sewn into one closed
+// shell; where the region is larger than the block, the block's box then cuts it (a boolean common,
+// whose faces on the box are trimmed).
 #pragma once
 
 #include "step/bspline_fit.h"
+#include "step/symmetry_patch.h"
 
 #include <TopoDS_Shape.hxx>
 
@@ -13,7 +16,8 @@
 namespace offsetgen::step {
 
 struct WallBrep {
-  TopoDS_Shape solid;  // one TopoDS_Solid
+  TopoDS_Shape solid;  // a TopoDS_Solid, or a compound of them where the block cuts the wall into pieces
+  int solids = 1;
   int bspline_faces = 0, planar_faces = 0;
   long control_points = 0;  // over all B-spline faces
   double sewing_tolerance = 0;
@@ -23,8 +27,9 @@ struct WallBrep {
 // `plus` and `minus` are the patches of the offset surfaces at +t/2 and -t/2 (cell units); the block
 // spans [0, cells[a] * cell_size] in millimetres. Throws std::runtime_error if sewing leaves the shell
 // open or the solid is not valid.
-WallBrep build_schwarzp_wall(const CubicPatch& plus, const CubicPatch& minus, const std::array<int, 3>& cells,
-                             double cell_size);
+// One patch per sheet for all images (a uniform wall), or one per image of region_images (a graded one).
+WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& plus,
+                    const std::vector<CubicPatch>& minus, const std::array<int, 3>& cells, double cell_size);
 
 // Whether BRepCheck_Analyzer finds the shape valid, and the count of its solids and shells.
 struct ShapeCheck {

@@ -4,11 +4,12 @@
 # printed, and a boolean with a box through the middle of a cell (x = 3.7 mm, where no face edge lies)
 # gives a valid cut and a valid common whose volumes add up to the whole (to 2e-5, as volume integration
 # of B-spline faces goes: 6e-6 measured).
-#   freecad_readback.sh <offsetgen> <freecadcmd> <scratch dir>
+# A surface whose block holds several pieces of wall (diamond: 3) gives that many solids and shells.
+#   freecad_readback.sh <offsetgen> <freecadcmd> <scratch dir> [surface cells solids]
 set -euo pipefail
-offsetgen=$1 freecad=$2 dir=$3
+offsetgen=$1 freecad=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:-1}
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
-"$offsetgen" step --surface schwarzp --thickness 0.1 --cells 2x1x1 --cell-size 10 --tolerance 0.01 \
+"$offsetgen" step --surface "$surface" --thickness 0.1 --cells "$cells" --cell-size 10 --tolerance 0.01 \
   -o p.step >summary.txt
 cat summary.txt
 exact=$(sed -n 's/.*exact wall \([0-9.]*\) mm^3.*/\1/p' summary.txt)
@@ -28,9 +29,10 @@ fail() {
   echo "FAIL: $*" >&2
   exit 1
 }
-read -r _ valid solids shells volume < <(grep -m1 "^SHAPE " freecad.txt) || fail "FreeCAD printed no shape"
+read -r _ valid got_solids shells volume < <(grep -m1 "^SHAPE " freecad.txt) || fail "FreeCAD printed no shape"
 [ "$valid" = True ] || fail "FreeCAD does not find the shape valid"
-[ "$solids" = 1 ] && [ "$shells" = 1 ] || fail "not one solid with one shell ($solids solids, $shells shells)"
+[ "$got_solids" = "$solids" ] && [ "$shells" = "$solids" ] ||
+  fail "not $solids solid(s) with a shell each ($got_solids solids, $shells shells)"
 read -r _ cut_valid cut < <(grep -m1 "^CUT " freecad.txt) || fail "no cut"
 read -r _ common_valid common < <(grep -m1 "^COMMON " freecad.txt) || fail "no common"
 [ "$cut_valid" = True ] && [ "$common_valid" = True ] || fail "the boolean with a box is not valid"
@@ -39,4 +41,4 @@ awk -v m="$volume" -v e="$exact" 'BEGIN { d = (m - e) / e; if (d < 0) d = -d; pr
 awk -v a="$common" -v b="$cut" -v m="$volume" 'BEGIN { d = (a + b - m) / m; if (d < 0) d = -d;
   printf "common %s + cut %s = %s, whole %s\n", a, b, a + b, m; exit !(a > 0 && b > 0 && d < 2e-5) }' ||
   fail "the pieces of the boolean do not add up to the whole"
-echo "FreeCAD: one valid solid, volume within 0.1%, a boolean with a box gives a valid cut and common"
+echo "FreeCAD: $surface, $solids valid solid(s), volume within 0.1%, a boolean with a box gives a valid cut and common"

@@ -3,11 +3,12 @@
 # shape is valid (checkshape), holds one solid and one shell (nbshapes), and its volume (vprops) lies
 # within 0.1% of the exact wall volume that offsetgen step printed; a boolean cut by a box through the
 # middle of a cell (x = 3.7 mm, where no face edge lies) gives two valid pieces whose volumes add up (to 2e-5: vprops prints 6 digits).
-#   occt_draw_readback.sh <offsetgen> <occt-draw> <scratch dir>
+# A surface whose block holds several pieces of wall (diamond: 3) gives that many solids and shells.
+#   occt_draw_readback.sh <offsetgen> <occt-draw> <scratch dir> [surface cells solids]
 set -euo pipefail
-offsetgen=$1 draw=$2 dir=$3
+offsetgen=$1 draw=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:-1}
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
-"$offsetgen" step --surface schwarzp --thickness 0.1 --cells 2x1x1 --cell-size 10 --tolerance 0.01 \
+"$offsetgen" step --surface "$surface" --thickness 0.1 --cells "$cells" --cell-size 10 --tolerance 0.01 \
   -o p.step >summary.txt
 cat summary.txt
 exact=$(sed -n 's/.*exact wall \([0-9.]*\) mm^3.*/\1/p' summary.txt)
@@ -33,8 +34,8 @@ fail() {
   exit 1
 }
 grep -q "CHECKSHAPE: This shape seems to be valid" draw.txt || fail "checkshape does not find the shape valid"
-grep -Eq "^ *SOLID +: 1$" draw.txt || fail "not one solid"
-grep -Eq "^ *SHELL +: 1$" draw.txt || fail "not one shell"
+grep -Eq "^ *SOLID +: $solids$" draw.txt || fail "not $solids solid(s)"
+grep -Eq "^ *SHELL +: $solids$" draw.txt || fail "not $solids shell(s)"
 mass=$(sed -n 's/^Mass : *\([0-9.e+-]*\).*/\1/p' draw.txt | head -1)
 grep -q "COMMON: This shape seems to be valid" draw.txt || fail "the common with a box is not valid"
 grep -q "CUT: This shape seems to be valid" draw.txt || fail "the cut by a box is not valid"
@@ -45,4 +46,4 @@ awk -v m="$mass" -v e="$exact" 'BEGIN { d = (m - e) / e; if (d < 0) d = -d; prin
 awk -v a="$inside" -v b="$outside" -v m="$mass" 'BEGIN { d = (a + b - m) / m; if (d < 0) d = -d;
   printf "common %s + cut %s = %s, whole %s\n", a, b, a + b, m; exit !(a > 0 && b > 0 && d < 2e-5) }' ||
   fail "the pieces of the boolean do not add up to the whole"
-echo "occt-draw: one valid solid, volume within 0.1%, a boolean cut by a box gives two valid pieces"
+echo "occt-draw: $surface, $solids valid solid(s), volume within 0.1%, a boolean cut by a box gives two valid pieces"

@@ -1,5 +1,5 @@
 // `offsetgen step` as a user runs it. The file it writes is read back here with OpenCASCADE and
-// checked independently of the tool's own summary: one valid closed solid, its volume against the
+// checked independently of the tool's own summary: valid closed solids, its volume against the
 // exact wall volume (column quadrature of this process's own wall functions), the distance of exact
 // wall points (other lines than the tool's) to its faces. Bad input exits 2 and writes nothing; a
 // tolerance out of reach exits 1 and writes nothing.
@@ -12,12 +12,18 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <TopExp_Explorer.hxx>
+#include <gp_Pnt.hxx>
+
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace offsetgen::step {
@@ -46,40 +52,53 @@ std::string read_bytes(const std::string& path) {
 
 constexpr double kThickness = 0.1, kCellSize = 10, kTolerance = 0.01;
 
-// One Schwarz P cell, written once for the tests below.
+// One cell of a surface, written once for the tests below.
 struct Written {
   std::string path;
   run::ProcessResult run;
 };
-const Written& one_cell() {
-  static const Written w = [] {
+const Written& one_cell(const std::string& surface = "schwarzp") {
+  static std::map<std::string, Written> written;
+  auto it = written.find(surface);
+  if (it == written.end()) {
     Written out;
-    out.path = scratch_dir("one_cell") + "/p.step";
-    out.run = run_offsetgen({"step", "--surface", "schwarzp", "--thickness", "0.1", "--cells", "1", "--cell-size", "10",
+    out.path = scratch_dir("one_cell_" + surface) + "/p.step";
+    out.run = run_offsetgen({"step", "--surface", surface, "--thickness", "0.1", "--cells", "1", "--cell-size", "10",
                              "--tolerance", "0.01", "-o", out.path});
-    return out;
-  }();
-  return w;
+    it = written.emplace(surface, out).first;
+  }
+  return it->second;
 }
 
+// The walls a file should hold, from this process's own generated functions.
 struct Walls {
-  Walls()
-      : field([] {
+  explicit Walls(const std::string& surface, const std::string& thickness = "0.1")
+      : field([&] {
           mesh::WallRequest r;
-          r.generation.surface = "schwarzp";
-          r.thickness = "0.1";
+          r.generation.surface = surface;
+          r.thickness = thickness;
           return r;
-        }()) {
+        }()),
+        worker(field) {
     field.compile();
   }
-  LevelFunction sheet(double h) const {
-    return [this, h](size_t n, const double* x, const double* y, const double* z, double* out) {
-      const std::vector<double> hs(n, h);
+  // The sheet phi(p, side t(p) / 2) = 0, side +1 or -1.
+  LevelFunction sheet(double side) {
+    return [this, side](size_t n, const double* x, const double* y, const double* z, double* out) {
+      std::vector<double> hs(n);
+      for (size_t i = 0; i < n; ++i) hs[i] = side * 0.5 * field.thickness_at(x[i], y[i], z[i], worker);
       field.offsets(n, x, y, z, hs.data(), out);
     };
   }
   mesh::WallField field;
+  mesh::WallField::Worker worker;
 };
+
+size_t count_of(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
 
 TEST(StepCli, SchwarzPCellIsOneValidClosedSolid) {
   const Written& w = one_cell();
@@ -89,15 +108,40 @@ TEST(StepCli, SchwarzPCellIsOneValidClosedSolid) {
   EXPECT_EQ(c.solids, 1);
   EXPECT_EQ(c.shells, 1);
   EXPECT_TRUE(c.closed);
-  EXPECT_NE(read_bytes(w.path).find("MANIFOLD_SOLID_BREP"), std::string::npos);
+  EXPECT_EQ(count_of(read_bytes(w.path), "MANIFOLD_SOLID_BREP"), 1u);
 }
 
-TEST(StepCli, SchwarzPCellVolumeIsWithinAThousandthOfTheExactWallVolume) {
-  const Written& w = one_cell();
+TEST(StepCli, DiamondCellIsThreeValidClosedSolidsTwoOfThemItsCornerTetrahedra) {
+  // The diamond surface passes through the cube's corners with normal (1, 1, 1): at (0, 0, 0) and at
+  // (1, 1, 1) the block keeps only a tetrahedron of the wall, x + y + z < sqrt(3) t / 2 (legs
+  // 0.866 mm, 0.108 mm^3 for t = 1 mm), cut off from the rest.
+  const Written& w = one_cell("diamond");
+  ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
+  const TopoDS_Shape shape = read_step(w.path);
+  const ShapeCheck c = check_shape(shape);
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.solids, 3);
+  EXPECT_EQ(c.shells, 3);
+  EXPECT_TRUE(c.closed);
+  EXPECT_EQ(count_of(read_bytes(w.path), "MANIFOLD_SOLID_BREP"), 3u);
+  std::vector<double> volumes;
+  for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) volumes.push_back(check_shape(e.Current()).volume);
+  std::sort(volumes.begin(), volumes.end());
+  ASSERT_EQ(volumes.size(), 3u);
+  const double corner = std::pow(std::sqrt(3.0) * 0.5, 3) / 6;
+  EXPECT_NEAR(volumes[0], corner, 0.05 * corner);
+  EXPECT_NEAR(volumes[1], corner, 0.05 * corner);
+  EXPECT_GT(volumes[2], 300.0);
+}
+
+class StepCell : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(StepCell, VolumeIsWithinAThousandthOfTheExactWallVolume) {
+  const Written& w = one_cell(GetParam());
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const ShapeCheck c = check_shape(read_step(w.path));
-  Walls walls;
-  mesh::WallField::Worker worker(walls.field);
+  Walls walls(GetParam());
+  mesh::WallField::Worker& worker = walls.worker;
   check::VolumeFractionSetup v;
   v.g = [&](const double* p) {
     double value = 0;
@@ -116,29 +160,72 @@ TEST(StepCli, SchwarzPCellVolumeIsWithinAThousandthOfTheExactWallVolume) {
   EXPECT_NEAR(c.volume, exact_volume, 1e-3 * exact_volume);
 }
 
-TEST(StepCli, SchwarzPCellExactWallsLieWithinTheToleranceOfItsFaces) {
-  const Written& w = one_cell();
+TEST_P(StepCell, ExactWallsLieWithinTheToleranceOfItsFaces) {
+  const Written& w = one_cell(GetParam());
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const TopoDS_Shape shape = read_step(w.path);
-  Walls walls;
-  for (double h : {0.5 * kThickness, -0.5 * kThickness}) {
+  Walls walls(GetParam());
+  for (double side : {1.0, -1.0}) {
     // Other lines than the tool's (another seed, another density).
-    const std::vector<Point> points = exact_surface_points(walls.sheet(h), {1, 1, 1}, 17, 64, 99);
+    const std::vector<Point> points = exact_surface_points(walls.sheet(side), {1, 1, 1}, 17, 64, 99);
     ASSERT_GT(points.size(), 500u);
     const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
-    EXPECT_LE(d.max, kTolerance) << "h = " << h;
+    EXPECT_LE(d.max, kTolerance) << "side " << side;
     EXPECT_GT(d.max, 0.0);  // a fitted surface is not the exact one
   }
 }
 
-TEST(StepCheck, AFileOfOffsetgenStepPassesWithItsMeasuresAndExit0) {
-  ASSERT_EQ(one_cell().run.exit_code, 0) << one_cell().run.output;
-  const run::ProcessResult r = run_offsetgen({"check", one_cell().path});
+TEST_P(StepCell, OffsetgenCheckPassesItsFileWithExit0) {
+  const Written& w = one_cell(GetParam());
+  ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
+  const run::ProcessResult r = run_offsetgen({"check", w.path});
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  for (const char* line :
-       {"PASS  solid: valid (BRepCheck_Analyzer), 1 solid, one closed shell", "PASS  deviation of the exact walls",
-        "PASS  volume", "96 B-spline, 6 planar", "offsetgen check: all checks passed"})
+  const bool diamond = GetParam() == "diamond";
+  const std::string solids = diamond ? "3 solids (3 expected)" : "1 solid (1 expected)";
+  const std::string faces = diamond ? "336 B-spline, 30 planar" : "96 B-spline, 6 planar";
+  for (const std::string& line :
+       {"PASS  solid: valid (BRepCheck_Analyzer), " + solids, std::string("PASS  deviation of the exact walls"),
+        std::string("PASS  volume"), faces, std::string("offsetgen check: all checks passed")})
     EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, StepCell, ::testing::Values("schwarzp", "diamond"),
+                         [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
+
+// A wall from 0.5 mm to 1.5 mm along x over two cells: the symmetry is gone, every one of the 96
+// tetrahedra per sheet is fitted where it lies, and the file passes the same checks.
+TEST(StepCli, GradedSchwarzPWallIsOneValidSolidWithinTheToleranceAndPassesCheck) {
+  const std::string thickness = "0.05 + 0.05*x";
+  const std::string path = scratch_dir("graded") + "/graded.step";
+  const run::ProcessResult r = run_offsetgen({"step", "--surface", "schwarzp", "--thickness", thickness, "--cells",
+                                              "2x1x1", "--cell-size", "10", "--tolerance", "0.01", "-o", path});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("each image fitted on its own (graded)"), std::string::npos) << r.output;
+  const TopoDS_Shape shape = read_step(path);
+  const ShapeCheck c = check_shape(shape);
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.solids, 1);
+  EXPECT_TRUE(c.closed);
+  Walls walls("schwarzp", thickness);
+  for (double side : {1.0, -1.0}) {
+    const std::vector<Point> points = exact_surface_points(walls.sheet(side), {2, 1, 1}, 17, 64, 99);
+    ASSERT_GT(points.size(), 1000u);
+    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
+    EXPECT_LE(d.max, kTolerance) << "side " << side;
+  }
+  // The cell at x in [0, 1] (t from 0.5 to 1 mm) holds less wall than the one at [1, 2] (1 to 1.5 mm):
+  // the solid is graded, not a uniform wall.
+  auto volume_in_cell = [&shape](double x0) {
+    const TopoDS_Shape cell = BRepPrimAPI_MakeBox(gp_Pnt(x0, 0, 0), 10, 10, 10).Shape();
+    return check_shape(BRepAlgoAPI_Common(shape, cell).Shape()).volume;
+  };
+  const double thin = volume_in_cell(0), thick = volume_in_cell(10);
+  EXPECT_GT(thick, 1.5 * thin) << thin << " mm^3 and " << thick << " mm^3";
+  const run::ProcessResult checked = run_offsetgen({"check", path});
+  EXPECT_EQ(checked.exit_code, 0) << checked.output;
+  EXPECT_NE(checked.output.find("t = 0.05 + 0.05*x cell (0.5 to 1.5 mm in the block)"), std::string::npos)
+      << checked.output;
+  EXPECT_NE(checked.output.find("PASS  volume"), std::string::npos) << checked.output;
 }
 
 // A control point moved by 2 mm: the file still reads, but no longer matches the walls its header names.
@@ -240,6 +327,10 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         Refusal{
             "gyroid", {"--surface", "gyroid", "--thickness", "0.1", "--tolerance", "0.01"}, 2, "gyroid' is refused"},
+        Refusal{"diamond_beyond_its_patch_layout",
+                {"--surface", "diamond", "--thickness", "0.3", "--tolerance", "0.01"},
+                2,
+                "not the graph the patch layout needs"},
         Refusal{"user_expression",
                 {"--expr", "cos(2*Pi*x)+cos(2*Pi*y)+cos(2*Pi*z)", "--name", "p", "--thickness", "0.1", "--tolerance",
                  "0.01"},
@@ -264,10 +355,10 @@ INSTANTIATE_TEST_SUITE_P(
                 {"--surface", "schwarzp", "--thickness", "0.1", "--tolerance", "0.01", "-o", "/nonexistent/dir/p.step"},
                 2,
                 "/nonexistent/dir"},
-        Refusal{"graded",
-                {"--surface", "schwarzp", "--thickness", "0.05 + 0.05*x", "--tolerance", "0.01"},
+        Refusal{"graded_beyond_curvature_limit",
+                {"--surface", "schwarzp", "--thickness", "0.1 + 0.3*x", "--cells", "2x1x1", "--tolerance", "0.01"},
                 2,
-                "graded thickness"},
+                "curvature limit"},
         // A tolerance that 4 x 4 control points cannot reach: measured, exit 1, nothing written.
         Refusal{"tolerance_out_of_reach",
                 {"--surface", "schwarzp", "--thickness", "0.1", "--tolerance", "1e-5", "--max-control-points", "4"},

@@ -1,9 +1,8 @@
-// The parts of `offsetgen step` below the B-rep: the B-spline fit, the Schwarz P symmetry patch and
-// the cell's symmetries.
+// The parts of `offsetgen step` below the B-rep: the B-spline fit, the symmetry patches of Schwarz P
+// and diamond and the images that copy them through the block.
 #include "mesh/wall_field.h"
 #include "step/bspline_fit.h"
-#include "step/cell_symmetry.h"
-#include "step/schwarzp_patch.h"
+#include "step/symmetry_patch.h"
 
 #include <gtest/gtest.h>
 
@@ -58,51 +57,87 @@ TEST(StepFit, BoundaryCurvesComeFromTheirOwnSamplesOnly) {
   EXPECT_NE(pa.at(2, 2), pb.at(2, 2));
 }
 
-TEST(StepSymmetry, TheFortyEightCellImagesAreDistinctAndKeepSchwarzP) {
-  auto schwarzp = [](const Point& p) {
-    return std::cos(2 * M_PI * p[0]) + std::cos(2 * M_PI * p[1]) + std::cos(2 * M_PI * p[2]);
-  };
-  const Point p{0.31, 0.17, 0.08};
-  std::set<Point> images;
-  int reversing = 0;
-  for (const CellImage& image : cell_images()) {
-    const Point q = image.apply(p);
-    images.insert(q);
-    EXPECT_NEAR(schwarzp(q), schwarzp(p), 1e-12);
-    reversing += image.reverses() ? 1 : 0;
-  }
-  EXPECT_EQ(images.size(), 48u);
-  EXPECT_EQ(reversing, 24);
+double catalog_value(const std::string& surface, const Point& p) {
+  const double x = 2 * M_PI * p[0], y = 2 * M_PI * p[1], z = 2 * M_PI * p[2];
+  if (surface == "schwarzp") return std::cos(x) + std::cos(y) + std::cos(z);
+  return std::sin(x) * std::sin(y) * std::sin(z) + std::sin(x) * std::cos(y) * std::cos(z) +
+         std::cos(x) * std::sin(y) * std::cos(z) + std::cos(x) * std::cos(y) * std::sin(z);
 }
 
-TEST(StepPatch, SchwarzPPatchBoundariesLieExactlyOnTheirMirrorPlanes) {
-  mesh::WallRequest request;
-  request.generation.surface = "schwarzp";
-  request.thickness = "0.1";
-  mesh::WallField field(request);
-  field.compile();
-  for (double h : {0.05, -0.05}) {
-    const LevelFunction g = [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
-      const std::vector<double> hs(n, h);
-      field.offsets(n, x, y, z, hs.data(), out);
-    };
-    const int m = 19, n = 6;
-    const std::vector<Point> points = schwarzp_patch_points(g, m);
-    // The samples are on the offset surface.
-    for (const Point& p : points) {
-      double value = 0;
-      g(1, &p[0], &p[1], &p[2], &value);
-      EXPECT_LT(std::fabs(value), 1e-12);
+TEST(StepSymmetry, EachSideIsAMirrorPlaneOfItsSurfaceThatItsReflectionFixes) {
+  for (const char* name : {"schwarzp", "diamond"}) {
+    const PatchLayout& layout = *find_patch_layout(name);
+    for (const MirrorPlane& plane : layout.sides) {
+      const Isometry r = reflection(plane);
+      EXPECT_TRUE(r.reverses()) << name;
+      for (const Point& p : {Point{0.31, 0.17, 0.08}, Point{-0.2, 0.45, 0.71}}) {
+        EXPECT_NEAR(catalog_value(name, r.apply(p)), catalog_value(name, p), 1e-12) << name;
+        const Point q = r.apply(r.apply(p));
+        for (size_t a = 0; a < 3; ++a) EXPECT_NEAR(q[a], p[a], 1e-15) << name << ": a reflection is its own inverse";
+      }
     }
-    CubicPatch patch = fit_patch(points, m, n);
-    for (int k = 0; k < n; ++k) {
-      EXPECT_EQ(patch.at(0, k)[0], patch.at(0, k)[1]) << "u = 0 lies on x = y";
-      EXPECT_EQ(patch.at(k, 0)[2], 0.0) << "v = 0 lies on z = 0";
-      EXPECT_EQ(patch.at(k, n - 1)[1], patch.at(k, n - 1)[2]) << "v = 1 lies on y = z";
-      EXPECT_NEAR(patch.at(n - 1, k)[0], 0.5, 1e-14) << "u = 1 lies on x = 1/2 (snapped exactly)";
+  }
+}
+
+TEST(StepSymmetry, TheImagesInOneCellAreTheSurfacesPiecesDistinctAndKeepTheSurface) {
+  // Schwarz P: the 48 symmetries of the cube, half of them reversing. Diamond: 96 tetrahedra per cell
+  // (the Fd-3m mirror group), its region reaching beyond the cell.
+  for (const auto& [name, per_cell] : {std::pair{"schwarzp", 48}, std::pair{"diamond", 96}}) {
+    const PatchLayout& layout = *find_patch_layout(name);
+    const std::vector<PatchImage> images = region_images(layout, {1, 1, 1});
+    std::set<Point> centroids;
+    int in_cell = 0, reversing = 0;
+    const Point p{0.11, 0.07, -0.03};
+    for (const PatchImage& image : images) {
+      const Point c = image.map.apply(layout.centroid());
+      centroids.insert(c);
+      if (c[0] >= 0 && c[0] < 1 && c[1] >= 0 && c[1] < 1 && c[2] >= 0 && c[2] < 1) ++in_cell;  // a periodic count
+      reversing += image.map.reverses() ? 1 : 0;
+      EXPECT_NEAR(catalog_value(name, image.map.apply(p)), catalog_value(name, p), 1e-12) << name;
     }
-    snap_schwarzp_boundary(patch);
-    for (int k = 0; k < n; ++k) EXPECT_EQ(patch.at(n - 1, k)[0], 0.5);
+    EXPECT_EQ(centroids.size(), images.size()) << name;
+    EXPECT_EQ(in_cell, per_cell) << name;
+    if (layout.region_is_block) {
+      EXPECT_EQ(int(images.size()), per_cell) << name;
+    }
+    EXPECT_EQ(2 * reversing, int(images.size())) << name;
+  }
+}
+
+TEST(StepPatch, PatchBoundariesLieOnTheirMirrorPlanes) {
+  for (const char* name : {"schwarzp", "diamond"}) {
+    const PatchLayout& layout = *find_patch_layout(name);
+    mesh::WallRequest request;
+    request.generation.surface = name;
+    request.thickness = "0.1";
+    mesh::WallField field(request);
+    field.compile();
+    for (double h : {0.05, -0.05}) {
+      const LevelFunction g = [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
+        const std::vector<double> hs(n, h);
+        field.offsets(n, x, y, z, hs.data(), out);
+      };
+      const int m = 19, n = 6;
+      const std::vector<Point> points = patch_points(layout, g, m);
+      // The samples are on the offset surface.
+      for (const Point& p : points) {
+        double value = 0;
+        g(1, &p[0], &p[1], &p[2], &value);
+        EXPECT_LT(std::fabs(value), 1e-12) << name;
+      }
+      CubicPatch patch = fit_patch(points, m, n);
+      snap_boundary(layout, patch);
+      auto on = [&layout](size_t side, const Point& p) {
+        const MirrorPlane& plane = layout.sides[side];
+        return plane.normal[0] * p[0] + plane.normal[1] * p[1] + plane.normal[2] * p[2] - plane.offset;
+      };
+      for (int k = 0; k < n; ++k) {
+        EXPECT_EQ(on(0, patch.at(0, k)), 0.0) << name << ": u = 0";
+        EXPECT_EQ(on(1, patch.at(n - 1, k)), 0.0) << name << ": u = 1";
+        EXPECT_EQ(on(2, patch.at(k, 0)), 0.0) << name << ": v = 0";
+        EXPECT_EQ(on(3, patch.at(k, n - 1)), 0.0) << name << ": v = 1";
+      }
+    }
   }
 }
 
@@ -121,9 +156,10 @@ TEST(StepPatch, NormalJumpAcrossMirrorPlanesShrinksTowardZeroAsTheFitConverges) 
   std::vector<double> jumps;
   for (int n : {5, 8, 16}) {
     const int m = 3 * n + 1;
-    CubicPatch patch = fit_patch(schwarzp_patch_points(g, m), m, n);
-    snap_schwarzp_boundary(patch);
-    jumps.push_back(schwarzp_normal_jump(patch, 100) * 180 / M_PI);
+    const PatchLayout& layout = *find_patch_layout("schwarzp");
+    CubicPatch patch = fit_patch(patch_points(layout, g, m), m, n);
+    snap_boundary(layout, patch);
+    jumps.push_back(normal_jump(layout, patch, 100) * 180 / M_PI);
   }
   EXPECT_GT(jumps[0], jumps[1]);
   EXPECT_GT(jumps[1], jumps[2]);
