@@ -9,10 +9,11 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "step",
       "Write a block of cells of a wall solid as a STEP file (AP214, mm): closed solids of bicubic B-spline\n"
       "faces and planar caps, for CAD. Its deviation from the exact walls is measured on the file before it is\n"
-      "written (docs/step.md). Covers Schwarz P (schwarzp) and diamond with a uniform wall so far");
+      "written (docs/step.md). Covers Schwarz P (schwarzp) and diamond, uniform or graded walls, so far");
   add_generation_options(cmd, o, "Catalog surface (schwarzp, diamond)",
                          "Your own F(x, y, z) (refused so far: no patch layout for it)");
-  cmd->add_option("-t,--thickness", o.thickness, "Total wall thickness in cell units (a number)");
+  cmd->add_option("-t,--thickness", o.thickness,
+                  "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall)");
   cmd->add_option("--density", o.density, "Instead of --thickness: the relative density R of the wall");
   cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
   cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
@@ -29,7 +30,9 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "Exit status: 0 success, 1 a check failed (deviation beyond --tolerance, or the solid read back is not\n"
       "valid; no file is written), 2 usage or input error, 3 internal error (or offsetgen built without\n"
       "OpenCASCADE).\n"
-      "Example: offsetgen step --surface schwarzp --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o p.step");
+      "Examples:\n"
+      "  offsetgen step --surface schwarzp --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o p.step\n"
+      "  offsetgen step --surface diamond --thickness \"0.05 + 0.05*x\" --cells 2x1x1 -o graded_d.step");
 }
 
 }  // namespace offsetgen

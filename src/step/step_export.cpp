@@ -170,6 +170,24 @@ SheetPatches fit_sheets(const PatchLayout& layout, const mesh::WallField& field,
   return out;
 }
 
+// The gradient of phi(p, +t/2) at the middle of a plus patch (central differences): out of the wall.
+Point outward(const mesh::WallField& field, mesh::WallField::Worker& worker, const CubicPatch& patch) {
+  const LevelFunction g = offset_sheet(field, worker, 1);
+  const Point p = patch.evaluate(0.5, 0.5);
+  constexpr double kStep = 1e-6;
+  Point gradient{};
+  for (size_t a = 0; a < 3; ++a) {
+    Point lo = p, hi = p;
+    lo[a] -= kStep;
+    hi[a] += kStep;
+    double values[2];
+    const double x[2] = {lo[0], hi[0]}, y[2] = {lo[1], hi[1]}, z[2] = {lo[2], hi[2]};
+    g(2, x, y, z, values);
+    gradient[a] = values[1] - values[0];
+  }
+  return gradient;
+}
+
 // Checks what the exporter covers of the wall, and records its thickness.
 void prepare_walls(const mesh::WallField& field, mesh::WallField::Worker& worker, const StepRequest& r,
                    StepSummary& s) {
@@ -386,7 +404,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
 
   say("building the solid");
   t0 = Clock::now();
-  const WallBrep brep = build_wall(*layout, patches.plus, patches.minus, r.cells, r.cell_size);
+  const WallBrep brep = build_wall(*layout, patches.plus, patches.minus, outward(field, worker, patches.plus.front()),
+                                   r.cells, r.cell_size);
   s.control_points = brep.control_points;
   s.expected_solids = brep.solids;
   s.seconds_build = seconds_since(t0);

@@ -1,5 +1,6 @@
 #include "step/wall_brep.h"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -28,6 +29,7 @@
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Vec.hxx>
 
 #include <fmt/format.h>
 
@@ -129,7 +131,8 @@ TopoDS_Shape solids_of(const TopoDS_Shape& shape, int& count) {
 }  // namespace
 
 WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& plus,
-                    const std::vector<CubicPatch>& minus, const std::array<int, 3>& cells, double cell_size) {
+                    const std::vector<CubicPatch>& minus, const Point& plus_outward, const std::array<int, 3>& cells,
+                    double cell_size) {
   WallBrep out;
   // The patches' shared curves are equal to the last bit or within a few units of it
   // (symmetry_patch.h): sewing needs no slack beyond rounding, far below any tolerance asked for.
@@ -139,11 +142,14 @@ WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& pl
   const bool each = plus.size() > 1;
   if (plus.size() != minus.size() || (each && plus.size() != images.size()))
     throw std::logic_error("build_wall: one patch per sheet, or one per image");
+  TopoDS_Face first;  // the plus sheet's face in the patch's own tetrahedron (images[0] is the identity)
   for (size_t i = 0; i < images.size(); ++i) {
     const PatchImage& image = images[i];
     const CubicPatch &p = plus[each ? i : 0], &m = minus[each ? i : 0];
     const Placement place{&image.map, cell_size};
-    sewing.Add(patch_face(p, place));
+    const TopoDS_Face face = patch_face(p, place);
+    if (i == 0) first = face;
+    sewing.Add(face);
     sewing.Add(patch_face(m, place));
     for (size_t k = 0; k < 4; ++k)
       if (image.cap[k]) sewing.Add(cap_face(p, m, k, place));
@@ -163,7 +169,25 @@ WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& pl
   }
   if (shell_count != 1) throw std::runtime_error(fmt::format("STEP: sewing made {} shells, not one", shell_count));
   TopoDS_Solid solid = make_solid.Solid();
-  BRepLib::OrientClosedSolid(solid);
+  // Sewing orients the faces consistently; the solid is the wall if the first face's normal points
+  // away from it, along `plus_outward` (classifying a point against thousands of faces, as
+  // BRepLib::OrientClosedSolid does, takes seconds).
+  const TopoDS_Shape sewn_first = sewing.Modified(first);
+  bool found = false;
+  for (TopExp_Explorer e(solid, TopAbs_FACE); e.More() && !found; e.Next()) {
+    if (!e.Current().IsSame(sewn_first)) continue;
+    found = true;
+    const TopoDS_Face& face = TopoDS::Face(e.Current());
+    BRepAdaptor_Surface surface(face);
+    gp_Pnt point;
+    gp_Vec du, dv;
+    surface.D1(0.5 * (surface.FirstUParameter() + surface.LastUParameter()),
+               0.5 * (surface.FirstVParameter() + surface.LastVParameter()), point, du, dv);
+    gp_Vec normal = du.Crossed(dv);
+    if (face.Orientation() == TopAbs_REVERSED) normal.Reverse();
+    if (normal.Dot(gp_Vec(plus_outward[0], plus_outward[1], plus_outward[2])) < 0) solid.Reverse();
+  }
+  if (!found) throw std::runtime_error("STEP: the first face is missing from the sewn shell");
   TopoDS_Shape shape = solid;
   if (!layout.region_is_block) {
     // The region's faces lie outside the block: the block's box cuts the wall to it.
@@ -210,7 +234,7 @@ ShapeCheck check_shape(const TopoDS_Shape& shape) {
   }
   for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) ++c.faces;
   GProp_GProps props;
-  BRepGProp::VolumeProperties(shape, props, 1e-7, true);
+  BRepGProp::VolumeProperties(shape, props, true);  // Gauss points per knot span: exact to rounding for bicubic faces
   c.volume = props.Mass();
   return c;
 }

@@ -28,8 +28,11 @@ struct WallBrep {
 // spans [0, cells[a] * cell_size] in millimetres. Throws std::runtime_error if sewing leaves the shell
 // open or the solid is not valid.
 // One patch per sheet for all images (a uniform wall), or one per image of region_images (a graded one).
+// `plus_outward`: a direction out of the wall at the middle, (u, v) = (1/2, 1/2), of the first plus
+// patch (the gradient of phi(p, +t/2) there), which orients the solid.
 WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& plus,
-                    const std::vector<CubicPatch>& minus, const std::array<int, 3>& cells, double cell_size);
+                    const std::vector<CubicPatch>& minus, const Point& plus_outward, const std::array<int, 3>& cells,
+                    double cell_size);
 
 // Whether BRepCheck_Analyzer finds the shape valid, and the count of its solids and shells.
 struct ShapeCheck {
