@@ -199,8 +199,9 @@ WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& pl
     tools.Append(box);
     common.SetArguments(objects);
     common.SetTools(tools);
-    common.SetRunParallel(true);  // the faces' intersections with the box, on every core
-    common.SetUseOBB(true);       // oriented boxes: fewer face pairs handed to the intersector
+    common.SetRunParallel(true);     // the faces' intersections with the box, on every core
+    common.SetUseOBB(true);          // oriented boxes: fewer face pairs handed to the intersector
+    common.SetCheckInverted(false);  // the solid is oriented (above): no classification to check it
     common.Build();
     if (!common.IsDone() || common.HasErrors())
       throw std::runtime_error("STEP: cutting the wall to the block (boolean common with its box) failed");
