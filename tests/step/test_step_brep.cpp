@@ -1,8 +1,8 @@
 // The B-rep assembly of `offsetgen step` in memory, below the file: the solid's orientation comes from
 // the outward direction it is given, not from classifying a point against its faces.
-#include "mesh/wall_field.h"
 #include "step/symmetry_patch.h"
 #include "step/wall_brep.h"
+#include "step_test_walls.h"
 
 #include <gtest/gtest.h>
 
@@ -10,18 +10,9 @@ namespace offsetgen::step {
 namespace {
 
 TEST(StepBrep, TheSolidPointsOutAlongTheGivenOutwardDirection) {
-  mesh::WallRequest request;
-  request.generation.surface = "schwarzp";
-  request.thickness = "0.1";
-  mesh::WallField field(request);
-  field.compile();
+  const auto field = compiled_walls("schwarzp", "0.1");
   const PatchLayout& layout = *find_patch_layout("schwarzp");
-  auto sheet = [&field](double h) -> LevelFunction {
-    return [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
-      const std::vector<double> hs(n, h);
-      field.offsets(n, x, y, z, hs.data(), out);
-    };
-  };
+  auto sheet = [&field](double h) { return uniform_sheet(*field, h); };
   const int n = 5, m = 3 * n + 1;
   std::vector<CubicPatch> plus{fit_patch(patch_points(layout, sheet(0.05), m), m, n)};
   std::vector<CubicPatch> minus{fit_patch(patch_points(layout, sheet(-0.05), m), m, n)};

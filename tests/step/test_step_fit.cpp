@@ -1,8 +1,8 @@
 // The parts of `offsetgen step` below the B-rep: the B-spline fit, the symmetry patches of Schwarz P
 // and diamond and the images that copy them through the block.
-#include "mesh/wall_field.h"
 #include "step/bspline_fit.h"
 #include "step/symmetry_patch.h"
+#include "step_test_walls.h"
 
 #include <gtest/gtest.h>
 
@@ -107,16 +107,9 @@ TEST(StepSymmetry, TheImagesInOneCellAreTheSurfacesPiecesDistinctAndKeepTheSurfa
 TEST(StepPatch, PatchBoundariesLieOnTheirMirrorPlanes) {
   for (const char* name : {"schwarzp", "diamond"}) {
     const PatchLayout& layout = *find_patch_layout(name);
-    mesh::WallRequest request;
-    request.generation.surface = name;
-    request.thickness = "0.1";
-    mesh::WallField field(request);
-    field.compile();
+    const auto field = compiled_walls(name, "0.1");
     for (double h : {0.05, -0.05}) {
-      const LevelFunction g = [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
-        const std::vector<double> hs(n, h);
-        field.offsets(n, x, y, z, hs.data(), out);
-      };
+      const LevelFunction g = uniform_sheet(*field, h);
       const int m = 19, n = 6;
       const std::vector<Point> points = patch_points(layout, g, m);
       // The samples are on the offset surface.
@@ -144,15 +137,8 @@ TEST(StepPatch, PatchBoundariesLieOnTheirMirrorPlanes) {
 TEST(StepPatch, NormalJumpAcrossMirrorPlanesShrinksTowardZeroAsTheFitConverges) {
   // The exact surface meets its mirror planes at right angles, so the measured jump of a fit must
   // fall toward 0 with more control points (wrong plane normals would leave it large).
-  mesh::WallRequest request;
-  request.generation.surface = "schwarzp";
-  request.thickness = "0.1";
-  mesh::WallField field(request);
-  field.compile();
-  const LevelFunction g = [&field](size_t n, const double* x, const double* y, const double* z, double* out) {
-    const std::vector<double> hs(n, 0.05);
-    field.offsets(n, x, y, z, hs.data(), out);
-  };
+  const auto field = compiled_walls("schwarzp", "0.1");
+  const LevelFunction g = uniform_sheet(*field, 0.05);
   std::vector<double> jumps;
   for (int n : {5, 8, 16}) {
     const int m = 3 * n + 1;
