@@ -21,6 +21,9 @@
 #include <ginac/ginac.h>
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -82,7 +85,7 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUsage;
   }
 
-  return run_reporting_errors([&] {
+  const int status = run_reporting_errors([&] {
     if (app.got_subcommand("generate")) return run_generate(generate, args);
     if (app.got_subcommand("list")) return run_list(list);
     if (app.got_subcommand("density")) return run_density(density);
@@ -119,4 +122,10 @@ int main(int argc, char** argv) {
 #endif
     return static_cast<int>(kExitUsage);
   });
+  // Every file is written and closed by now. Skipping the static destructors (GiNaC's and CLN's tables
+  // are thousands) saves about 1 ms of every run; only the standard streams need flushing.
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  std::_Exit(status);
 }
