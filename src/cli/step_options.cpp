@@ -9,8 +9,9 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "step",
       "Write a block of cells of a wall solid as a STEP file (AP214, mm): closed solids of bicubic B-spline\n"
       "faces and planar caps, for CAD. Its deviation from the exact walls is measured on the file before it is\n"
-      "written (docs/step.md). Covers Schwarz P (schwarzp) and diamond, uniform or graded walls, so far");
-  add_generation_options(cmd, o, "Catalog surface (schwarzp, diamond)",
+      "written (docs/step.md). Covers the catalog surfaces with mirror planes, uniform or graded walls, so far");
+  // The list of step/symmetry_patch.cpp's layouts (this executable does not link them; a test compares).
+  add_generation_options(cmd, o, "Catalog surface (schwarzp, diamond, neovius, iwp, frd)",
                          "Your own F(x, y, z) (refused so far: no patch layout for it)");
   cmd->add_option("-t,--thickness", o.thickness,
                   "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall)");

@@ -391,7 +391,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   if (layout == nullptr)
     throw InputError(fmt::format(
         "STEP export covers the catalog surfaces {} so far (their mirror-symmetry patches); '{}' is refused: "
-        "the gyroid has no mirror planes, and the other surfaces need their own patch layouts (docs/step.md)",
+        "the gyroid, Fischer-Koch S, lidinoid and split P have no mirror planes to cut them into patches "
+        "(docs/step.md)",
         patch_layout_surfaces(), r.wall.generation.surface));
   try {
     require_writable(r.output);  // an unwritable -o is the user's input, before the long work

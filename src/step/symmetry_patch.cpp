@@ -69,7 +69,33 @@ const std::vector<PatchLayout>& layouts() {
     d.sides = {MirrorPlane{{0, 1, -1}, 0}, MirrorPlane{{1, 1, 0}, 0.25}, MirrorPlane{{1, -1, 0}, 0},
                MirrorPlane{{0, 1, 1}, -0.25}};
     d.region = diamond_region;
-    return std::vector<PatchLayout>{p, d};
+    // Neovius and I-WP have the cube's mirror planes too (Pm-3m, Im-3m), so Schwarz P's tetrahedron
+    // O(0,0,0) X(1/2,0,0) M(1/2,1/2,0) R(1/2,1/2,1/2), but their signs at its vertices pair other
+    // edges. Neovius: F = 13, -1, 1, -13 at O, X, M, R, and F < 0 along XR, F > 0 along OM; I-WP:
+    // F = 3, -5, -5, 3, and F < 0 along XM, F > 0 along OR. The lines run between those edges.
+    PatchLayout n = p;
+    n.surface = "neovius";
+    n.start = {Point{0.5, 0, 0}, Point{0.5, 0.5, 0.5}};  // X .. R
+    n.end = {Point{0, 0, 0}, Point{0.5, 0.5, 0}};        // O .. M
+    n.sides = {MirrorPlane{{0, 1, -1}, 0}, MirrorPlane{{1, 0, 0}, 0.5}, MirrorPlane{{0, 0, 1}, 0},
+               MirrorPlane{{1, -1, 0}, 0}};
+    PatchLayout w = p;
+    w.surface = "iwp";
+    w.start = {Point{0.5, 0, 0}, Point{0.5, 0.5, 0}};  // X .. M
+    w.end = {Point{0, 0, 0}, Point{0.5, 0.5, 0.5}};    // O .. R
+    w.sides = {MirrorPlane{{0, 0, 1}, 0}, MirrorPlane{{1, 0, 0}, 0.5}, MirrorPlane{{0, 1, -1}, 0},
+               MirrorPlane{{1, -1, 0}, 0}};
+    // F-RD (Fm-3m): the face-centred group's mirrors are the cube's and x + y = 1/2 (and the like),
+    // which bound the tetrahedron O(0,0,0) X(1/2,0,0) Q(1/4,1/4,0) Q'(1/4,1/4,1/4), 1/192 of the cell.
+    // F = 1, -7, 1, -3 at O, X, Q, Q', with F < 0 along XQ' and F > 0 along OQ.
+    PatchLayout f = p;
+    f.surface = "frd";
+    f.pieces = "192 per sheet and cell";
+    f.start = {Point{0.5, 0, 0}, Point{0.25, 0.25, 0.25}};  // X .. Q'
+    f.end = {Point{0, 0, 0}, Point{0.25, 0.25, 0}};         // O .. Q
+    f.sides = {MirrorPlane{{0, 1, -1}, 0}, MirrorPlane{{1, 1, 0}, 0.5}, MirrorPlane{{0, 0, 1}, 0},
+               MirrorPlane{{1, -1, 0}, 0}};
+    return std::vector<PatchLayout>{p, d, n, w, f};
   }();
   return all;
 }

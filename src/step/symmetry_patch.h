@@ -60,7 +60,7 @@ struct PatchLayout {
 
 // The layout of a catalog surface, or nullptr where there is none (yet).
 const PatchLayout* find_patch_layout(const std::string& surface);
-std::string patch_layout_surfaces();  // "schwarzp, diamond"
+std::string patch_layout_surfaces();  // "schwarzp, diamond, ..."
 
 // The points of the patch where the lines at (u, v) cross g = 0 (cell units). Throws InputError where
 // a line does not cross exactly once: the offset surface is not the graph the layout needs there.

@@ -8,6 +8,7 @@
 #include "run/process.h"
 #include "step/deviation.h"
 #include "step/step_file.h"
+#include "step/symmetry_patch.h"
 #include "step/wall_brep.h"
 
 #include <gtest/gtest.h>
@@ -50,7 +51,26 @@ std::string read_bytes(const std::string& path) {
   return s.str();
 }
 
-constexpr double kThickness = 0.1, kCellSize = 10, kTolerance = 0.01;
+constexpr double kCellSize = 10, kTolerance = 0.01;
+
+// The cell each surface's tests write: a thickness its patch layout covers (Neovius' and F-RD's
+// curvature limits are 0.106 and 0.107 cell: at 0.1 their offset sheets fold across the patch lines),
+// and what offsetgen check says of its solids and faces (diamond: the wall and two corner tetrahedra).
+struct CellCase {
+  std::string thickness;
+  std::string solids, faces;
+  int quadrature_grid = 40;  // the exact volume's columns per side: more where the wall is thin and curved
+};
+const CellCase& cell_case(const std::string& surface) {
+  static const std::map<std::string, CellCase> cases = {
+      {"schwarzp", {"0.1", "1 solid (1 expected)", "96 B-spline, 6 planar"}},
+      {"diamond", {"0.1", "3 solids (3 expected)", "336 B-spline, 30 planar"}},
+      {"neovius", {"0.05", "1 solid (1 expected)", "96 B-spline, 24 planar", 80}},
+      {"iwp", {"0.1", "1 solid (1 expected)", "96 B-spline, 24 planar"}},
+      {"frd", {"0.05", "1 solid (1 expected)", "384 B-spline, 24 planar", 80}},
+  };
+  return cases.at(surface);
+}
 
 // One cell of a surface, written once for the tests below.
 struct Written {
@@ -63,8 +83,8 @@ const Written& one_cell(const std::string& surface = "schwarzp") {
   if (it == written.end()) {
     Written out;
     out.path = scratch_dir("one_cell_" + surface) + "/p.step";
-    out.run = run_offsetgen({"step", "--surface", surface, "--thickness", "0.1", "--cells", "1", "--cell-size", "10",
-                             "--tolerance", "0.01", "-o", out.path});
+    out.run = run_offsetgen({"step", "--surface", surface, "--thickness", cell_case(surface).thickness, "--cells", "1",
+                             "--cell-size", "10", "--tolerance", "0.01", "-o", out.path});
     it = written.emplace(surface, out).first;
   }
   return it->second;
@@ -140,7 +160,9 @@ TEST_P(StepCell, VolumeIsWithinAThousandthOfTheExactWallVolume) {
   const Written& w = one_cell(GetParam());
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const ShapeCheck c = check_shape(read_step(w.path));
-  Walls walls(GetParam());
+  const std::string& thickness = cell_case(GetParam()).thickness;
+  Walls walls(GetParam(), thickness);
+  const double t = std::stod(thickness);
   mesh::WallField::Worker& worker = walls.worker;
   check::VolumeFractionSetup v;
   v.g = [&](const double* p) {
@@ -150,10 +172,11 @@ TEST_P(StepCell, VolumeIsWithinAThousandthOfTheExactWallVolume) {
   };
   v.field = [&](const double* p) { return walls.field.field(p[0], p[1], p[2]); };
   v.field_slope_bound = walls.field.field_lipschitz();
-  v.band = walls.field.field_lipschitz() * 0.5 * kThickness * (1 + 1e-9);
-  v.scan_step = kThickness / 4;
+  v.band = walls.field.field_lipschitz() * 0.5 * t * (1 + 1e-9);
+  v.scan_step = t / 4;
   check::VolumeFractionOptions options;
   options.seed = 7;  // not the tool's
+  options.grid = cell_case(GetParam()).quadrature_grid;
   const check::VolumeFraction exact = check::measure_volume_fraction(v, options);
   const double exact_volume = exact.value * std::pow(kCellSize, 3);
   EXPECT_LT(exact.standard_error / exact.value, 1e-4);
@@ -164,7 +187,7 @@ TEST_P(StepCell, ExactWallsLieWithinTheToleranceOfItsFaces) {
   const Written& w = one_cell(GetParam());
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const TopoDS_Shape shape = read_step(w.path);
-  Walls walls(GetParam());
+  Walls walls(GetParam(), cell_case(GetParam()).thickness);
   for (double side : {1.0, -1.0}) {
     // Other lines than the tool's (another seed, another density).
     const std::vector<Point> points = exact_surface_points(walls.sheet(side), {1, 1, 1}, 17, 64, 99);
@@ -180,16 +203,15 @@ TEST_P(StepCell, OffsetgenCheckPassesItsFileWithExit0) {
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const run::ProcessResult r = run_offsetgen({"check", w.path});
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  const bool diamond = GetParam() == "diamond";
-  const std::string solids = diamond ? "3 solids (3 expected)" : "1 solid (1 expected)";
-  const std::string faces = diamond ? "336 B-spline, 30 planar" : "96 B-spline, 6 planar";
+  const std::string& solids = cell_case(GetParam()).solids;
+  const std::string& faces = cell_case(GetParam()).faces;
   for (const std::string& line :
        {"PASS  solid: valid (BRepCheck_Analyzer), " + solids, std::string("PASS  deviation of the exact walls"),
         std::string("PASS  volume"), faces, std::string("offsetgen check: all checks passed")})
     EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
 }
 
-INSTANTIATE_TEST_SUITE_P(Surfaces, StepCell, ::testing::Values("schwarzp", "diamond"),
+INSTANTIATE_TEST_SUITE_P(Surfaces, StepCell, ::testing::Values("schwarzp", "diamond", "neovius", "iwp", "frd"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 // A wall from 0.5 mm to 1.5 mm along x over two cells: the symmetry is gone, every one of the 96
@@ -256,6 +278,12 @@ TEST(StepCheck, AStepFileWithoutOffsetgenMetadataIsRefusedWithExit2) {
   const run::ProcessResult r = run_offsetgen({"check", foreign});
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("no offsetgen-metadata in its header"), std::string::npos) << r.output;
+}
+
+TEST(StepCli, HelpNamesEverySurfaceThatHasAPatchLayout) {
+  const run::ProcessResult r = run_offsetgen({"step", "--help"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("Catalog surface (" + patch_layout_surfaces() + ")"), std::string::npos) << r.output;
 }
 
 TEST(StepCli, SameInputsWriteTheSameBytes) {
@@ -327,6 +355,14 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         Refusal{
             "gyroid", {"--surface", "gyroid", "--thickness", "0.1", "--tolerance", "0.01"}, 2, "gyroid' is refused"},
+        Refusal{"fischerkoch",
+                {"--surface", "fischerkoch", "--thickness", "0.1", "--tolerance", "0.01"},
+                2,
+                "Fischer-Koch S, lidinoid and split P have no mirror planes"},
+        Refusal{"neovius_beyond_its_patch_layout",
+                {"--surface", "neovius", "--thickness", "0.1", "--tolerance", "0.01"},
+                2,
+                "not the graph the patch layout needs"},
         Refusal{"diamond_beyond_its_patch_layout",
                 {"--surface", "diamond", "--thickness", "0.3", "--tolerance", "0.01"},
                 2,
