@@ -13,10 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <exception>
 #include <limits>
 #include <memory>
-#include <thread>
 #include <utility>
 
 namespace offsetgen::step {
@@ -64,19 +62,16 @@ std::vector<Point> exact_surface_points(const LevelFunction& g, const std::array
   return points;
 }
 
-namespace {
-
-// A face: its box, and a grid of its points whose nearest gives the projection its start (Newton
-// from there, ShapeAnalysis_Surface::NextValueOfUV, which falls back to a global search). Each thread
-// has its own: a projector keeps state between calls.
-struct Candidate {
-  Bnd_Box box;
-  std::unique_ptr<ShapeAnalysis_Surface> surface;
-  std::vector<std::pair<gp_Pnt2d, gp_Pnt>> grid;
-};
-
-std::vector<Candidate> candidate_faces(const TopoDS_Shape& shape, double reach) {
+Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>& points, double cell_size,
+                            double reach) {
+  // A face: its box, and a grid of its points whose nearest gives the projection its start (Newton
+  // from there, ShapeAnalysis_Surface::NextValueOfUV, which falls back to a global search).
   constexpr int kGrid = 9;
+  struct Candidate {
+    Bnd_Box box;
+    std::unique_ptr<ShapeAnalysis_Surface> surface;
+    std::vector<std::pair<gp_Pnt2d, gp_Pnt>> grid;
+  };
   std::vector<Candidate> faces;
   for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
     const TopoDS_Face& face = TopoDS::Face(e.Current());
@@ -95,56 +90,22 @@ std::vector<Candidate> candidate_faces(const TopoDS_Shape& shape, double reach) 
       }
     faces.push_back(std::move(c));
   }
-  return faces;
-}
-
-double distance_to_faces(std::vector<Candidate>& faces, const gp_Pnt& p, double reach) {
-  double best = reach;
-  for (Candidate& c : faces) {
-    if (c.box.IsOut(p)) continue;
-    const auto start = std::min_element(c.grid.begin(), c.grid.end(), [&p](const auto& a, const auto& b) {
-      return a.second.SquareDistance(p) < b.second.SquareDistance(p);
-    });
-    c.surface->NextValueOfUV(start->first, p, 1e-3 * Precision::Confusion());
-    best = std::min(best, c.surface->Gap());
-  }
-  return best;
-}
-
-gp_Pnt in_mm(const Point& q, double cell_size) { return {q[0] * cell_size, q[1] * cell_size, q[2] * cell_size}; }
-
-}  // namespace
-
-Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>& points, double cell_size,
-                            double reach) {
-  // The points are shared out in stripes over the cores; the distances are then reduced in order, so
-  // the result does not depend on the number of threads.
-  std::vector<double> distance(points.size());
-  const size_t threads = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::exception_ptr> failed(threads);
-  auto work = [&](size_t t) {
-    try {
-      std::vector<Candidate> faces = candidate_faces(shape, reach);
-      for (size_t k = t; k < points.size(); k += threads)
-        distance[k] = distance_to_faces(faces, in_mm(points[k], cell_size), reach);
-    } catch (...) {
-      failed[t] = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (std::thread& thread : pool) thread.join();
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
-
   Deviation d;
   double sum = 0;
-  for (size_t k = 0; k < points.size(); ++k) {
-    sum += distance[k];
-    if (distance[k] > d.max || d.points == 0) {
-      d.max = distance[k];
-      const gp_Pnt p = in_mm(points[k], cell_size);
+  for (const Point& q : points) {
+    const gp_Pnt p(q[0] * cell_size, q[1] * cell_size, q[2] * cell_size);
+    double best = reach;
+    for (Candidate& c : faces) {
+      if (c.box.IsOut(p)) continue;
+      const auto start = std::min_element(c.grid.begin(), c.grid.end(), [&p](const auto& a, const auto& b) {
+        return a.second.SquareDistance(p) < b.second.SquareDistance(p);
+      });
+      c.surface->NextValueOfUV(start->first, p, 1e-3 * Precision::Confusion());
+      best = std::min(best, c.surface->Gap());
+    }
+    sum += best;
+    if (best > d.max || d.points == 0) {
+      d.max = best;
       d.worst = {p.X(), p.Y(), p.Z()};
     }
     ++d.points;

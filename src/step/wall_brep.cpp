@@ -224,7 +224,7 @@ WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& pl
 
 ShapeCheck check_shape(const TopoDS_Shape& shape) {
   ShapeCheck c;
-  c.valid = BRepCheck_Analyzer(shape, /*GeomControls=*/true, /*theIsParallel=*/true).IsValid();
+  c.valid = BRepCheck_Analyzer(shape).IsValid();
   c.closed = true;
   for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) ++c.solids;
   for (TopExp_Explorer e(shape, TopAbs_SHELL); e.More(); e.Next()) {
