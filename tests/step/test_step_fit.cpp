@@ -1,13 +1,16 @@
-// The parts of `offsetgen step` below the B-rep: the B-spline fit, the symmetry patches of Schwarz P
-// and diamond and the images that copy them through the block.
+// The parts of `offsetgen step` below the B-rep: the B-spline fit, the symmetry patches of the
+// surfaces with mirror planes and the images that copy them through the block.
 #include "step/bspline_fit.h"
 #include "step/symmetry_patch.h"
 #include "step_test_walls.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
+#include <string>
+#include <utility>
 
 namespace offsetgen::step {
 namespace {
@@ -60,12 +63,31 @@ TEST(StepFit, BoundaryCurvesComeFromTheirOwnSamplesOnly) {
 double catalog_value(const std::string& surface, const Point& p) {
   const double x = 2 * M_PI * p[0], y = 2 * M_PI * p[1], z = 2 * M_PI * p[2];
   if (surface == "schwarzp") return std::cos(x) + std::cos(y) + std::cos(z);
+  if (surface == "neovius")
+    return 3 * (std::cos(x) + std::cos(y) + std::cos(z)) + 4 * std::cos(x) * std::cos(y) * std::cos(z);
+  if (surface == "iwp")
+    return 2 * (std::cos(x) * std::cos(y) + std::cos(y) * std::cos(z) + std::cos(z) * std::cos(x)) -
+           (std::cos(2 * x) + std::cos(2 * y) + std::cos(2 * z));
+  if (surface == "frd")
+    return 4 * std::cos(x) * std::cos(y) * std::cos(z) -
+           (std::cos(2 * x) * std::cos(2 * y) + std::cos(2 * y) * std::cos(2 * z) + std::cos(2 * z) * std::cos(2 * x));
   return std::sin(x) * std::sin(y) * std::sin(z) + std::sin(x) * std::cos(y) * std::cos(z) +
          std::cos(x) * std::sin(y) * std::cos(z) + std::cos(x) * std::cos(y) * std::sin(z);
 }
 
+// Every surface with a layout, and the half-thickness its offset sheets are sampled at below (Neovius'
+// and F-RD's curvature limits are 0.106 and 0.107 cell).
+const std::pair<const char*, double> kLayouts[] = {
+    {"schwarzp", 0.05}, {"diamond", 0.05}, {"neovius", 0.025}, {"iwp", 0.05}, {"frd", 0.025}};
+
+TEST(StepSymmetry, EverySurfaceWithALayoutIsTested) {
+  std::string names;
+  for (const auto& [name, h] : kLayouts) names += (names.empty() ? "" : ", ") + std::string(name);
+  EXPECT_EQ(names, patch_layout_surfaces());
+}
+
 TEST(StepSymmetry, EachSideIsAMirrorPlaneOfItsSurfaceThatItsReflectionFixes) {
-  for (const char* name : {"schwarzp", "diamond"}) {
+  for (const auto& [name, h] : kLayouts) {
     const PatchLayout& layout = *find_patch_layout(name);
     for (const MirrorPlane& plane : layout.sides) {
       const Isometry r = reflection(plane);
@@ -80,9 +102,10 @@ TEST(StepSymmetry, EachSideIsAMirrorPlaneOfItsSurfaceThatItsReflectionFixes) {
 }
 
 TEST(StepSymmetry, TheImagesInOneCellAreTheSurfacesPiecesDistinctAndKeepTheSurface) {
-  // Schwarz P: the 48 symmetries of the cube, half of them reversing. Diamond: 96 tetrahedra per cell
-  // (the Fd-3m mirror group), its region reaching beyond the cell.
-  for (const auto& [name, per_cell] : {std::pair{"schwarzp", 48}, std::pair{"diamond", 96}}) {
+  // Schwarz P, Neovius, I-WP: the 48 symmetries of the cube, half of them reversing. Diamond: 96
+  // tetrahedra per cell (the Fd-3m mirror group), its region reaching beyond the cell. F-RD: 192 (Fm-3m).
+  for (const auto& [name, per_cell] : {std::pair{"schwarzp", 48}, std::pair{"diamond", 96}, std::pair{"neovius", 48},
+                                       std::pair{"iwp", 48}, std::pair{"frd", 192}}) {
     const PatchLayout& layout = *find_patch_layout(name);
     const std::vector<PatchImage> images = region_images(layout, {1, 1, 1});
     std::set<Point> centroids;
@@ -105,10 +128,10 @@ TEST(StepSymmetry, TheImagesInOneCellAreTheSurfacesPiecesDistinctAndKeepTheSurfa
 }
 
 TEST(StepPatch, PatchBoundariesLieOnTheirMirrorPlanes) {
-  for (const char* name : {"schwarzp", "diamond"}) {
+  for (const auto& [name, half] : kLayouts) {
     const PatchLayout& layout = *find_patch_layout(name);
-    const auto field = compiled_walls(name, "0.1");
-    for (double h : {0.05, -0.05}) {
+    const auto field = compiled_walls(name, fmt::format("{}", 2 * half));
+    for (double h : {half, -half}) {
       const LevelFunction g = uniform_sheet(*field, h);
       const int m = 19, n = 6;
       const std::vector<Point> points = patch_points(layout, g, m);
