@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace offsetgen {
 namespace {
@@ -122,14 +123,32 @@ NodeId Program::intern(Node n) {
   h = mix(h, static_cast<uint64_t>(n.input + 2));
   h = mix(h, double_bits(n.value));
   n.shape = h;
-  auto& bucket = by_shape_[h];
-  for (NodeId id : bucket) {
-    if (same_node(nodes_[static_cast<size_t>(id)], n)) return id;
+  if (2 * (nodes_.size() + 1) > slots_.size()) grow_slots();
+  const size_t mask = slots_.size() - 1;
+  size_t slot = static_cast<size_t>(h) & mask;
+  for (; slots_[slot] >= 0; slot = (slot + 1) & mask) {
+    const Node& existing = nodes_[static_cast<size_t>(slots_[slot])];
+    if (existing.shape == h && same_node(existing, n)) return slots_[slot];
   }
+  // Reserved address space is not memory: pages fault in only as nodes fill them, and a program of
+  // up to this many nodes (gyroid order 4 has about 7,000) is never copied to a larger block.
+  constexpr size_t kInitialNodes = size_t{1} << 14;
+  if (nodes_.capacity() == 0) nodes_.reserve(kInitialNodes);
   nodes_.push_back(n);
-  NodeId id = static_cast<NodeId>(nodes_.size() - 1);
-  bucket.push_back(id);
+  const auto id = static_cast<NodeId>(nodes_.size() - 1);
+  slots_[slot] = id;
   return id;
+}
+
+void Program::grow_slots() {
+  const size_t size = std::max<size_t>(64, 2 * slots_.size());
+  slots_.assign(size, -1);
+  const size_t mask = size - 1;
+  for (size_t id = 0; id < nodes_.size(); ++id) {
+    size_t slot = static_cast<size_t>(nodes_[id].shape) & mask;
+    while (slots_[slot] >= 0) slot = (slot + 1) & mask;
+    slots_[slot] = static_cast<NodeId>(id);
+  }
 }
 
 bool Program::is_const(NodeId id, double value) const {

@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace offsetgen {
@@ -104,7 +103,11 @@ class Program {
 
   std::vector<std::string> inputs_;
   std::vector<Node> nodes_;
-  std::unordered_map<uint64_t, std::vector<NodeId>> by_shape_;
+  // Hash-consing index: open addressing on Node::shape, one NodeId per slot (-1 empty), at most
+  // half full. A flat table, not a map of buckets: a generation interns tens of thousands of nodes,
+  // and a heap block per node made their page faults a visible share of a CLI run.
+  std::vector<NodeId> slots_;
+  void grow_slots();
   std::vector<std::pair<std::string, NodeId>> outputs_;
   std::vector<std::pair<NodeId, HalfTurns>> half_turns_;  // in the order noted, one entry per node
 };
