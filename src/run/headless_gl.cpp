@@ -2,8 +2,13 @@
 
 // Keep X11 headers (and their macros such as None/Bool) out: surfaceless needs no window system.
 #define EGL_NO_X11
+// libEGL is opened when the first context is made, not linked: the commands that never run a
+// shader (generate, density, mesh, ...) then do not load the GL stack, about a millisecond of
+// every process start.
+#define EGL_EGL_PROTOTYPES 0
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <dlfcn.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +16,23 @@
 
 namespace offsetgen::gl {
 namespace {
+
+// The EGL functions used here, fetched from libEGL.so.1 by load_egl().
+#define OFFSETGEN_EGL_FUNCTIONS(X)               \
+  X(PFNEGLGETERRORPROC, eglGetError)             \
+  X(PFNEGLQUERYSTRINGPROC, eglQueryString)       \
+  X(PFNEGLGETPROCADDRESSPROC, eglGetProcAddress) \
+  X(PFNEGLINITIALIZEPROC, eglInitialize)         \
+  X(PFNEGLTERMINATEPROC, eglTerminate)           \
+  X(PFNEGLBINDAPIPROC, eglBindAPI)               \
+  X(PFNEGLCHOOSECONFIGPROC, eglChooseConfig)     \
+  X(PFNEGLCREATECONTEXTPROC, eglCreateContext)   \
+  X(PFNEGLDESTROYCONTEXTPROC, eglDestroyContext) \
+  X(PFNEGLMAKECURRENTPROC, eglMakeCurrent)
+
+#define OFFSETGEN_EGL_DECLARE(type, name) type name = nullptr;
+OFFSETGEN_EGL_FUNCTIONS(OFFSETGEN_EGL_DECLARE)
+#undef OFFSETGEN_EGL_DECLARE
 
 constexpr const char* kInstallHint =
     "install the Debian packages libegl1 libegl-mesa0 libgl1-mesa-dri (build: libegl-dev "
@@ -20,6 +42,23 @@ std::string egl_error_text(const char* what) {
   char buf[64];
   std::snprintf(buf, sizeof buf, " (EGL error 0x%04x)", static_cast<unsigned>(eglGetError()));
   return std::string(what) + buf + ": " + kInstallHint;
+}
+
+// Opens libEGL and fills the pointers above, once per process. Throws Unavailable when libEGL or
+// one of the functions is missing.
+void load_egl() {
+  static const std::string failure = [] {
+    void* library = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (library == nullptr) return std::string("cannot open libEGL.so.1 (") + dlerror() + ")";
+    std::string missing;
+#define OFFSETGEN_EGL_LOAD(type, name)                  \
+  name = reinterpret_cast<type>(dlsym(library, #name)); \
+  if (name == nullptr) missing += " " #name;
+    OFFSETGEN_EGL_FUNCTIONS(OFFSETGEN_EGL_LOAD)
+#undef OFFSETGEN_EGL_LOAD
+    return missing.empty() ? std::string() : "libEGL.so.1 lacks" + missing;
+  }();
+  if (!failure.empty()) throw Unavailable(failure + ": " + kInstallHint);
 }
 
 struct ContextSlot {
@@ -51,6 +90,7 @@ struct Display {
     // results identical on machines with and without a GPU. Callers may override both.
     setenv("EGL_PLATFORM", "surfaceless", 0);
     setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+    load_egl();
     const char* client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (client_ext == nullptr || std::string(client_ext).find("EGL_MESA_platform_surfaceless") == std::string::npos) {
       throw Unavailable("EGL has no EGL_MESA_platform_surfaceless: " + std::string(kInstallHint));

@@ -1,14 +1,86 @@
 #include "run/vulkan_compute.h"
 
+#define VK_NO_PROTOTYPES
 #include <vulkan/vulkan.h>
+
+#include <dlfcn.h>
 
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <string>
 
 namespace offsetgen::vulkan {
 namespace {
+
+// The Vulkan loader is opened when a run first needs it (dlopen), not linked: the commands that
+// never run HLSL do not load it at start. It exports every core function, so each is one dlsym.
+#define OFFSETGEN_VULKAN_FUNCTIONS(X)         \
+  X(vkAllocateCommandBuffers)                 \
+  X(vkAllocateDescriptorSets)                 \
+  X(vkAllocateMemory)                         \
+  X(vkBeginCommandBuffer)                     \
+  X(vkBindBufferMemory)                       \
+  X(vkCmdBindDescriptorSets)                  \
+  X(vkCmdBindPipeline)                        \
+  X(vkCmdDispatch)                            \
+  X(vkCmdPipelineBarrier)                     \
+  X(vkCreateBuffer)                           \
+  X(vkCreateCommandPool)                      \
+  X(vkCreateComputePipelines)                 \
+  X(vkCreateDescriptorPool)                   \
+  X(vkCreateDescriptorSetLayout)              \
+  X(vkCreateDevice)                           \
+  X(vkCreateFence)                            \
+  X(vkCreateInstance)                         \
+  X(vkCreatePipelineLayout)                   \
+  X(vkCreateShaderModule)                     \
+  X(vkDestroyBuffer)                          \
+  X(vkDestroyCommandPool)                     \
+  X(vkDestroyDescriptorPool)                  \
+  X(vkDestroyDescriptorSetLayout)             \
+  X(vkDestroyDevice)                          \
+  X(vkDestroyFence)                           \
+  X(vkDestroyInstance)                        \
+  X(vkDestroyPipeline)                        \
+  X(vkDestroyPipelineLayout)                  \
+  X(vkDestroyShaderModule)                    \
+  X(vkEndCommandBuffer)                       \
+  X(vkEnumeratePhysicalDevices)               \
+  X(vkFreeMemory)                             \
+  X(vkGetBufferMemoryRequirements)            \
+  X(vkGetDeviceQueue)                         \
+  X(vkGetPhysicalDeviceMemoryProperties)      \
+  X(vkGetPhysicalDeviceProperties)            \
+  X(vkGetPhysicalDeviceQueueFamilyProperties) \
+  X(vkMapMemory)                              \
+  X(vkQueueSubmit)                            \
+  X(vkUnmapMemory)                            \
+  X(vkUpdateDescriptorSets)                   \
+  X(vkWaitForFences)
+
+#define OFFSETGEN_VULKAN_DECLARE(name) PFN_##name name = nullptr;
+OFFSETGEN_VULKAN_FUNCTIONS(OFFSETGEN_VULKAN_DECLARE)
+#undef OFFSETGEN_VULKAN_DECLARE
+
+// Fills the pointers above, once per process; throws std::runtime_error when the loader or one of
+// the functions is missing.
+void load_vulkan() {
+  static const std::string failure = [] {
+    void* library = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (library == nullptr) return std::string("cannot open libvulkan.so.1 (") + dlerror() + ")";
+    std::string missing;
+#define OFFSETGEN_VULKAN_LOAD(name)                           \
+  name = reinterpret_cast<PFN_##name>(dlsym(library, #name)); \
+  if (name == nullptr) missing += " " #name;
+    OFFSETGEN_VULKAN_FUNCTIONS(OFFSETGEN_VULKAN_LOAD)
+#undef OFFSETGEN_VULKAN_LOAD
+    return missing.empty() ? std::string() : "libvulkan.so.1 lacks" + missing;
+  }();
+  if (!failure.empty())
+    throw std::runtime_error(failure + ": install Debian's libvulkan1 and mesa-vulkan-drivers (tools/install_deps.sh)");
+}
 
 constexpr std::uint32_t kGroupSize = 64;  // the shader's [numthreads(64, 1, 1)]
 
@@ -115,6 +187,7 @@ std::vector<std::uint32_t> read_spirv(const std::string& path) {
 
 ComputeRun run_on_lavapipe(const std::vector<std::uint32_t>& spirv, const std::vector<Float4>& inputs,
                            int outputs_per_point) {
+  load_vulkan();
   Context c;
   ComputeRun run;
   const std::uint32_t groups = static_cast<std::uint32_t>((inputs.size() + kGroupSize - 1) / kGroupSize);
