@@ -130,10 +130,6 @@ NodeId Program::intern(Node n) {
     const Node& existing = nodes_[static_cast<size_t>(slots_[slot])];
     if (existing.shape == h && same_node(existing, n)) return slots_[slot];
   }
-  // Reserved address space is not memory: pages fault in only as nodes fill them, and a program of
-  // up to this many nodes (gyroid order 4 has about 7,000) is never copied to a larger block.
-  constexpr size_t kInitialNodes = size_t{1} << 14;
-  if (nodes_.capacity() == 0) nodes_.reserve(kInitialNodes);
   nodes_.push_back(n);
   const auto id = static_cast<NodeId>(nodes_.size() - 1);
   slots_[slot] = id;
