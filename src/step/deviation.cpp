@@ -4,17 +4,15 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Geom_BSplineSurface.hxx>
-#include <ShapeAnalysis_Surface.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Pnt2d.hxx>
+#include <gp_Vec.hxx>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
-#include <memory>
 #include <utility>
 
 namespace offsetgen::step {
@@ -31,6 +29,53 @@ struct Jitter {
     return double(z >> 11) * 0x1.0p-53;
   }
 };
+
+// The distance from p to the surface over its whole parameter rectangle, by Newton's method on the
+// squared distance from `start`, each step clipped to the rectangle (a variable at its bound and
+// pushed outward stays there). A general point-surface search (ShapeAnalysis_Surface's fallback when
+// its Newton leaves the rectangle) builds a grid per call: it was most of the deviation's time, and
+// the start, the nearest of a grid of the face, is close enough for Newton. The result is a point of
+// the face, so never below the true distance.
+double distance_in_rectangle(const Geom_BSplineSurface& s, const gp_Pnt2d& start, const gp_Pnt& p) {
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  s.Bounds(u0, u1, v0, v1);
+  double u = start.X(), v = start.Y();
+  const double eps_u = 1e-14 * (u1 - u0), eps_v = 1e-14 * (v1 - v0);
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    gp_Pnt q;
+    gp_Vec su, sv, suu, svv, suv;
+    s.D2(u, v, q, su, sv, suu, svv, suv);
+    const gp_Vec r(p, q);  // q - p
+    const double gu = r.Dot(su), gv = r.Dot(sv);
+    double huu = su.Dot(su) + r.Dot(suu), hvv = sv.Dot(sv) + r.Dot(svv), huv = su.Dot(sv) + r.Dot(suv);
+    if (huu <= 0 || hvv <= 0 || huu * hvv - huv * huv <= 0) {  // not convex here: Gauss-Newton
+      huu = su.Dot(su);
+      hvv = sv.Dot(sv);
+      huv = su.Dot(sv);
+    }
+    // Variables at a bound with the gradient pushing outward are held; Newton in the others.
+    const bool hold_u = (u <= u0 && gu > 0) || (u >= u1 && gu < 0);
+    const bool hold_v = (v <= v0 && gv > 0) || (v >= v1 && gv < 0);
+    double du = 0, dv = 0;
+    if (hold_u && hold_v) break;
+    if (hold_u) {
+      dv = hvv > 0 ? -gv / hvv : 0;
+    } else if (hold_v) {
+      du = huu > 0 ? -gu / huu : 0;
+    } else {
+      const double det = huu * hvv - huv * huv;
+      if (!(det > 0)) break;
+      du = (-gu * hvv + gv * huv) / det;
+      dv = (-gv * huu + gu * huv) / det;
+    }
+    const double nu = std::clamp(u + du, u0, u1), nv = std::clamp(v + dv, v0, v1);
+    const bool converged = std::abs(nu - u) <= eps_u && std::abs(nv - v) <= eps_v;
+    u = nu;
+    v = nv;
+    if (converged) break;
+  }
+  return s.Value(u, v).Distance(p);
+}
 
 }  // namespace
 
@@ -69,18 +114,18 @@ Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>&
   constexpr int kGrid = 9;
   struct Candidate {
     Bnd_Box box;
-    std::unique_ptr<ShapeAnalysis_Surface> surface;
+    Handle(Geom_BSplineSurface) surface;
     std::vector<std::pair<gp_Pnt2d, gp_Pnt>> grid;
   };
   std::vector<Candidate> faces;
   for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
     const TopoDS_Face& face = TopoDS::Face(e.Current());
-    Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
-    if (surface->DynamicType() != STANDARD_TYPE(Geom_BSplineSurface)) continue;
+    Handle(Geom_BSplineSurface) surface = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+    if (surface.IsNull()) continue;
     Candidate c;
     BRepBndLib::Add(face, c.box);
     c.box.Enlarge(reach);
-    c.surface = std::make_unique<ShapeAnalysis_Surface>(surface);
+    c.surface = surface;
     double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
     surface->Bounds(u0, u1, v0, v1);
     for (int i = 0; i < kGrid; ++i)
@@ -100,8 +145,7 @@ Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>&
       const auto start = std::min_element(c.grid.begin(), c.grid.end(), [&p](const auto& a, const auto& b) {
         return a.second.SquareDistance(p) < b.second.SquareDistance(p);
       });
-      c.surface->NextValueOfUV(start->first, p, 1e-3 * Precision::Confusion());
-      best = std::min(best, c.surface->Gap());
+      best = std::min({best, start->second.Distance(p), distance_in_rectangle(*c.surface, start->first, p)});
     }
     sum += best;
     if (best > d.max || d.points == 0) {
