@@ -405,8 +405,14 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
 
   say("building the solid");
   t0 = Clock::now();
+  // The exact wall: w < 0 inside (mesh::WallField::walls).
+  const auto inside_wall = [&field, &worker](const Point& p) {
+    double w = 0;
+    field.walls(1, &p[0], &p[1], &p[2], &w, worker);
+    return w < 0;
+  };
   const WallBrep brep = build_wall(*layout, patches.plus, patches.minus, outward(field, worker, patches.plus.front()),
-                                   r.cells, r.cell_size);
+                                   r.cells, r.cell_size, inside_wall);
   s.control_points = brep.control_points;
   s.expected_solids = brep.solids;
   s.seconds_build = seconds_since(t0);

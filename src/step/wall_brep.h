@@ -1,8 +1,8 @@
 // The wall of a block of cells as an OpenCASCADE solid: the two fitted symmetry patches (one per
 // offset surface) copied by the layout's symmetries into every tetrahedron of its region as untrimmed
 // bicubic B-spline faces, planar caps where the region's faces cut the wall, sewn into one closed
-// shell; where the region is larger than the block, the block's box then cuts it (a boolean common,
-// whose faces on the box are trimmed).
+// shell; where the region is larger than the block, the block's box then cuts it (its faces across the
+// box are split by it; the pieces of the box's faces inside the wall become caps).
 #pragma once
 
 #include "step/bspline_fit.h"
@@ -11,6 +11,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include <array>
+#include <functional>
 #include <string>
 
 namespace offsetgen::step {
@@ -30,9 +31,11 @@ struct WallBrep {
 // One patch per sheet for all images (a uniform wall), or one per image of region_images (a graded one).
 // `plus_outward`: a direction out of the wall at the middle, (u, v) = (1/2, 1/2), of the first plus
 // patch (the gradient of phi(p, +t/2) there), which orients the solid.
+// `inside_wall` (a point in cell units): whether it lies inside the exact wall; needed only where the
+// region is larger than the block, to tell which pieces of the box's faces close the solid.
 WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& plus,
                     const std::vector<CubicPatch>& minus, const Point& plus_outward, const std::array<int, 3>& cells,
-                    double cell_size);
+                    double cell_size, const std::function<bool(const Point&)>& inside_wall = {});
 
 // Whether BRepCheck_Analyzer finds the shape valid, and the count of its solids and shells.
 struct ShapeCheck {
