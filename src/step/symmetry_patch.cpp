@@ -294,20 +294,51 @@ double normal_jump(const PatchLayout& layout, const CubicPatch& patch, int sampl
   return worst;
 }
 
+namespace {
+
+// Whether the tetrahedron's image comes nearer the block [0, cells]^3 than `margin` along every axis
+// (its bounding box against the block's, so a few tetrahedra just beyond a corner pass too).
+bool near_block(const PatchLayout& layout, const Isometry& map, const std::array<int, 3>& cells, double margin) {
+  Point lo{}, hi{};
+  bool first = true;
+  for (const Point& vertex : {layout.start[0], layout.start[1], layout.end[0], layout.end[1]}) {
+    const Point p = map.apply(vertex);
+    for (size_t a = 0; a < 3; ++a) {
+      lo[a] = first ? p[a] : std::min(lo[a], p[a]);
+      hi[a] = first ? p[a] : std::max(hi[a], p[a]);
+    }
+    first = false;
+  }
+  for (size_t a = 0; a < 3; ++a)
+    if (hi[a] <= -margin || lo[a] >= cells[a] + margin) return false;
+  return true;
+}
+
+}  // namespace
+
 std::vector<PatchImage> region_images(const PatchLayout& layout, const std::array<int, 3>& cells) {
   const std::vector<Slab> region = layout.region(cells);
   std::array<Isometry, 4> mirror;
   for (size_t k = 0; k < 4; ++k) mirror[k] = reflection(layout.sides[k]);
   const Point c = layout.centroid();
-  if (!inside(region, c)) throw std::logic_error(layout.surface + ": the patch's own tetrahedron is not in the region");
-  // Breadth first from the identity through the faces: the tetrahedra tile space and the region is
-  // convex, so those inside it are connected through faces and the search finds all of them.
+  // Where the region is larger than the block, only the tetrahedra that reach into the block are
+  // kept: the box cuts the rest off anyway. The caps on their outer faces then lie at least `margin`
+  // outside the block, never in a plane of its box.
+  constexpr double kMargin = 1e-4;
+  auto wanted = [&](const Isometry& map) {
+    return inside(region, map.apply(c)) && (layout.region_is_block || near_block(layout, map, cells, kMargin));
+  };
+  if (!wanted(Isometry{}))
+    throw std::logic_error(layout.surface + ": the patch's own tetrahedron is not in the region");
+  // Breadth first from the identity through the faces: the tetrahedra tile space, and those inside the
+  // convex region (and reaching into the convex block) are connected through faces, so the search
+  // finds all of them.
   std::vector<PatchImage> images{PatchImage{Isometry{}, {}}};
   std::set<Isometry> seen{Isometry{}};
   for (size_t i = 0; i < images.size(); ++i)
     for (size_t k = 0; k < 4; ++k) {
       const Isometry next = compose(images[i].map, mirror[k]);
-      if (!inside(region, next.apply(c))) {
+      if (!wanted(next)) {
         images[i].cap[k] = true;
         continue;
       }
