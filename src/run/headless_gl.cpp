@@ -48,7 +48,7 @@ std::string egl_error_text(const char* what) {
 // one of the functions is missing.
 void load_egl() {
   static const std::string failure = [] {
-    void* library = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    void* library = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);  // kept open until exit
     if (library == nullptr) return std::string("cannot open libEGL.so.1 (") + dlerror() + ")";
     std::string missing;
 #define OFFSETGEN_EGL_LOAD(type, name)                  \

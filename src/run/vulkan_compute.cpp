@@ -68,7 +68,7 @@ OFFSETGEN_VULKAN_FUNCTIONS(OFFSETGEN_VULKAN_DECLARE)
 // the functions is missing.
 void load_vulkan() {
   static const std::string failure = [] {
-    void* library = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
+    void* library = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);  // kept open until exit
     if (library == nullptr) return std::string("cannot open libvulkan.so.1 (") + dlerror() + ")";
     std::string missing;
 #define OFFSETGEN_VULKAN_LOAD(name)                           \

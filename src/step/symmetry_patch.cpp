@@ -322,11 +322,11 @@ std::vector<PatchImage> region_images(const PatchLayout& layout, const std::arra
   for (size_t k = 0; k < 4; ++k) mirror[k] = reflection(layout.sides[k]);
   const Point c = layout.centroid();
   // Where the region is larger than the block, only the tetrahedra that reach into the block are
-  // kept: the box cuts the rest off anyway. The caps on their outer faces then lie at least `margin`
-  // outside the block, never in a plane of its box.
-  constexpr double kMargin = 1e-4;
+  // kept: the box cuts the rest off anyway. The caps on their outer faces then lie at least
+  // kBlockClearance outside the block, never in a plane of its box.
+  constexpr double kBlockClearance = 1e-4;
   auto wanted = [&](const Isometry& map) {
-    return inside(region, map.apply(c)) && (layout.region_is_block || near_block(layout, map, cells, kMargin));
+    return inside(region, map.apply(c)) && (layout.region_is_block || near_block(layout, map, cells, kBlockClearance));
   };
   if (!wanted(Isometry{}))
     throw std::logic_error(layout.surface + ": the patch's own tetrahedron is not in the region");
