@@ -265,6 +265,13 @@ void count_bspline_faces(const TopoDS_Shape& shape, StepSummary& s) {
   }
 }
 
+// The exact wall's level at one point p[0..2] (cell units): negative inside (mesh::WallField::walls).
+double wall_at(const mesh::WallField& field, mesh::WallField::Worker& worker, const double* p) {
+  double w = 0;
+  field.walls(1, p, p + 1, p + 2, &w, worker);
+  return w;
+}
+
 // The exact wall volume by column quadrature (check/volume_fraction.h): a uniform wall's volume
 // fraction in one cell times the cells (the block is whole cells of a periodic wall); a graded wall's,
 // cell by cell. It needs only the wall's functions, with a Worker of its own, so it runs on a thread of
@@ -277,11 +284,7 @@ ExactVolume exact_wall_volume(const mesh::WallField& field, const StepRequest& r
   const auto t0 = Clock::now();
   mesh::WallField::Worker worker(field);
   check::VolumeFractionSetup v;
-  v.g = [&field, &worker](const double* p) {
-    double w = 0;
-    field.walls(1, p, p + 1, p + 2, &w, worker);
-    return w;
-  };
+  v.g = [&field, &worker](const double* p) { return wall_at(field, worker, p); };
   v.field = [&field](const double* p) { return field.field(p[0], p[1], p[2]); };
   v.field_slope_bound = field.field_lipschitz();
   v.band = field.field_lipschitz() * 0.5 * thickness[1] * (1 + 1e-9);
@@ -426,12 +429,7 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
 
   say("building the solid");
   t0 = Clock::now();
-  // The exact wall: w < 0 inside (mesh::WallField::walls).
-  const auto inside_wall = [&field, &worker](const Point& p) {
-    double w = 0;
-    field.walls(1, &p[0], &p[1], &p[2], &w, worker);
-    return w < 0;
-  };
+  const auto inside_wall = [&field, &worker](const Point& p) { return wall_at(field, worker, p.data()) < 0; };
   const WallBrep brep = build_wall(*layout, patches.plus, patches.minus, outward(field, worker, patches.plus.front()),
                                    r.cells, r.cell_size, inside_wall);
   s.control_points = brep.control_points;
