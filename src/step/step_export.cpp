@@ -4,6 +4,8 @@
 #include "density/surface_constants.h"
 #include "emit/file_writer.h"
 #include "run/process.h"
+#include "step/box_brep.h"
+#include "step/box_patch.h"
 #include "step/deviation.h"
 #include "step/step_file.h"
 #include "step/symmetry_patch.h"
@@ -362,6 +364,62 @@ void measure_read_back(const TopoDS_Shape& shape, const StepRequest& r, mesh::Wa
     s.failure = fmt::format("the measured deviation {:.3g} mm exceeds --tolerance {} mm", s.max_deviation, r.tolerance);
 }
 
+using InsideWall = std::function<bool(const Point&)>;
+
+// The symmetry route: one patch per sheet (or per image, graded), copied over the region.
+WallBrep symmetry_wall(const PatchLayout& layout, const mesh::WallField& field, mesh::WallField::Worker& worker,
+                       const StepRequest& r, double target, const InsideWall& inside_wall, StepSummary& s) {
+  s.patches = "symmetry patch";
+  auto t0 = Clock::now();
+  const SheetPatches patches = fit_sheets(layout, field, s.graded, r.cells, target, r.max_control_points);
+  s.patch_control_points = patches.n;
+  s.fit_error = patches.error * r.cell_size;
+  // A graded sheet is not perpendicular to the mirror planes: the jump is measured for uniform walls.
+  if (!s.graded)
+    for (const auto* sheet : {&patches.plus, &patches.minus})
+      for (const CubicPatch& patch : *sheet)
+        s.normal_jump = std::max(s.normal_jump, normal_jump(layout, patch, 200) * 180 / M_PI);
+  s.seconds_fit = seconds_since(t0);
+  t0 = Clock::now();
+  WallBrep brep = build_wall(layout, patches.plus, patches.minus, outward(field, worker, patches.plus.front()), r.cells,
+                             r.cell_size, inside_wall);
+  s.seconds_build = seconds_since(t0);
+  return brep;
+}
+
+// The box route (box_patch.h): quarter-cell boxes, each sheet's pieces in them fitted on their own;
+// where a piece is no graph (it turns too far within a box) or a sheet touches a box's face, boxes
+// half as large, down to 1/kFinestBoxes cell.
+constexpr int kBoxesPerCell = 4, kFinestBoxes = 16;
+BoxPartition partition_boxes(const std::array<LevelFunction, 2>& sheets, const InsideWall& inside_wall,
+                             const StepRequest& r, double target) {
+  for (int k = kBoxesPerCell;; k *= 2) {
+    try {
+      return partition_wall(sheets, inside_wall, r.cells, k, target, r.max_control_points);
+    } catch (const InputError& e) {
+      if (k >= kFinestBoxes)
+        throw InputError(fmt::format("STEP export cannot cut this wall into boxes down to 1/{} cell: {}", k, e.what()));
+    }
+  }
+}
+
+WallBrep box_wall(const mesh::WallField& field, mesh::WallField::Worker& worker, const StepRequest& r, double target,
+                  const InsideWall& inside_wall, StepSummary& s) {
+  auto t0 = Clock::now();
+  const std::array<LevelFunction, 2> sheets{offset_sheet(field, worker, 1, &r.cells),
+                                            offset_sheet(field, worker, -1, &r.cells)};
+  const BoxPartition partition = partition_boxes(sheets, inside_wall, r, target);
+  s.boxes_per_cell = partition.boxes_per_cell;
+  s.patches = fmt::format("box patch (the largest; boxes of 1/{} cell)", partition.boxes_per_cell);
+  s.patch_control_points = partition.largest_side;
+  s.fit_error = partition.fit_error * r.cell_size;
+  s.seconds_fit = seconds_since(t0);
+  t0 = Clock::now();
+  WallBrep brep = build_box_wall(partition, r.cell_size);
+  s.seconds_build = seconds_since(t0);
+  return brep;
+}
+
 std::string read_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
@@ -390,13 +448,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   if (!r.wall.generation.expression.empty())
     throw InputError(fmt::format("STEP export covers the catalog surfaces {} so far; --expr surfaces are refused",
                                  patch_layout_surfaces()));
+  // A surface with mirror planes gets its symmetry patches; the others (the gyroid) box patches.
   const PatchLayout* layout = find_patch_layout(r.wall.generation.surface);
-  if (layout == nullptr)
-    throw InputError(fmt::format(
-        "STEP export covers the catalog surfaces {} so far (their mirror-symmetry patches); '{}' is refused: "
-        "the gyroid, Fischer-Koch S, lidinoid and split P have no mirror planes to cut them into patches "
-        "(docs/step.md)",
-        patch_layout_surfaces(), r.wall.generation.surface));
   try {
     require_writable(r.output);  // an unwritable -o is the user's input, before the long work
   } catch (const std::runtime_error& e) {
@@ -414,30 +467,17 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
 
   // Half of the tolerance for the fit, the rest is margin for what the check grid does not see.
   s.seconds_generate = seconds_since(start);
-  say("fitting the symmetry patches");
-  auto t0 = Clock::now();
   const double target = 0.5 * r.tolerance / r.cell_size;
-  const SheetPatches patches = fit_sheets(*layout, field, s.graded, r.cells, target, r.max_control_points);
-  s.patch_control_points = patches.n;
-  s.fit_error = patches.error * r.cell_size;
-  // A graded sheet is not perpendicular to the mirror planes: the jump is measured for uniform walls.
-  if (!s.graded)
-    for (const auto* sheet : {&patches.plus, &patches.minus})
-      for (const CubicPatch& patch : *sheet)
-        s.normal_jump = std::max(s.normal_jump, normal_jump(*layout, patch, 200) * 180 / M_PI);
-  s.seconds_fit = seconds_since(t0);
-
-  say("building the solid");
-  t0 = Clock::now();
   const auto inside_wall = [&field, &worker](const Point& p) { return wall_at(field, worker, p.data()) < 0; };
-  const WallBrep brep = build_wall(*layout, patches.plus, patches.minus, outward(field, worker, patches.plus.front()),
-                                   r.cells, r.cell_size, inside_wall);
+  say(layout != nullptr ? "fitting the symmetry patches, building the solid"
+                        : "cutting the wall into boxes, fitting their patches, building the solid");
+  const WallBrep brep = layout != nullptr ? symmetry_wall(*layout, field, worker, r, target, inside_wall, s)
+                                          : box_wall(field, worker, r, target, inside_wall, s);
   s.control_points = brep.control_points;
   s.expected_solids = brep.solids;
-  s.seconds_build = seconds_since(t0);
 
   say("writing STEP");
-  t0 = Clock::now();
+  auto t0 = Clock::now();
   const run::ScratchDir scratch("offsetgen-step");  // removed on exit (a loaded library's mapping stays)
   const fs::path file = scratch.path() / "wall.step";
   write_step(brep.solid, file.string(),
@@ -517,6 +557,9 @@ StepCheck check_step_file(const std::string& path, const std::function<void(cons
 
 namespace {
 
+// Box patches meet at edges traced on the boxes' faces: no mirror plane makes their normals agree.
+bool layout_less(const StepSummary& s) { return s.patches != "symmetry patch"; }
+
 // "0.1 cell (1 mm)", or for a graded wall "0.05 + 0.05*x cell (0.5 to 1.5 mm in the block)".
 std::string thickness_words(const StepSummary& s, double cell_size) {
   if (!s.graded) return fmt::format("{} cell ({} mm", s.thickness_text, s.thickness * cell_size);
@@ -559,12 +602,13 @@ std::string format_summary(const StepSummary& s, const StepRequest& r) {
                   s.written ? r.output + " written" : "no file written", s.surface, thickness_words(s, r.cell_size),
                   s.thickness_limit, r.cells[0], r.cells[1], r.cells[2], r.cell_size);
   out += fmt::format(
-      "  faces: {} B-spline (bicubic, {}x{} control points per symmetry patch), {} planar; {} control points "
+      "  faces: {} B-spline (bicubic, {}x{} control points per {}), {} planar; {} control points "
       "({:.0f} per cell){}; {} bytes; {}\n",
-      s.bspline_faces, s.patch_control_points, s.patch_control_points, s.planar_faces, s.control_points,
+      s.bspline_faces, s.patch_control_points, s.patch_control_points, s.patches, s.planar_faces, s.control_points,
       s.control_points_per_cell, s.graded ? ", each image fitted on its own (graded)" : "", s.bytes,
-      s.graded ? "C0 edges"
-               : fmt::format("largest normal jump across a patch edge {:.3f} degrees (C0 edges)", s.normal_jump));
+      s.graded || layout_less(s)
+          ? "C0 edges"
+          : fmt::format("largest normal jump across a patch edge {:.3f} degrees (C0 edges)", s.normal_jump));
   out += fmt::format("  solid read back: {}, {} solid{}, {}{}\n", s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid",
                      s.solids, s.solids == 1 ? "" : "s", s.closed ? "each one closed shell" : "NOT closed",
                      s.expected_solids == 1 ? ""

@@ -26,10 +26,13 @@ struct StepSummary {
   std::string thickness_text;               // as given, for the summary and the file's header
   std::array<double, 2> thickness_range{};  // smallest and largest in the block (sampled)
   double thickness_limit = 0;               // cell units: 2 / the largest principal curvature
-  int patch_control_points = 0;             // per side of each symmetry patch (the larger of the two sheets)
-  double fit_error = 0;                     // mm: the largest |exact(u, v) - patch(u, v)| over the check grid
-  double normal_jump = 0;                   // degrees: the largest angle between the faces' normals across a patch edge
-  long control_points = 0;                  // over the whole file
+  int boxes_per_cell = 0;                   // the box route's boxes per cell side (0 on the symmetry route)
+  std::string patches;                      // "symmetry patch", or "box patch (the largest; ...)"
+  int patch_control_points =
+      0;                 // per side of each symmetry patch (the larger of the two sheets), or of the largest box patch
+  double fit_error = 0;  // mm: the largest |exact(u, v) - patch(u, v)| over the check grid
+  double normal_jump = 0;   // degrees: the largest angle between the faces' normals across a patch edge
+  long control_points = 0;  // over the whole file
   double control_points_per_cell = 0;
   int bspline_faces = 0, planar_faces = 0;
   bool valid = false, closed = false;

@@ -54,16 +54,6 @@ struct Placement {
   }
 };
 
-void knots_of(int n, TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& mults) {
-  const CubicKnots k(n);
-  knots.Resize(1, static_cast<int>(k.distinct.size()), false);
-  mults.Resize(1, static_cast<int>(k.distinct.size()), false);
-  for (size_t i = 0; i < k.distinct.size(); ++i) {
-    knots.SetValue(static_cast<int>(i) + 1, k.distinct[i]);
-    mults.SetValue(static_cast<int>(i) + 1, k.multiplicities[i]);
-  }
-}
-
 TopoDS_Face patch_face(const CubicPatch& patch, const Placement& place) {
   const int n = patch.n;
   TColgp_Array2OfPnt poles(1, n, 1, n);
@@ -219,6 +209,16 @@ TopoDS_Shape cut_to_block(const TopoDS_Shape& solid, const std::array<double, 3>
 }
 
 }  // namespace
+
+void knots_of(int n, TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& mults) {
+  const CubicKnots k(n);
+  knots.Resize(1, static_cast<int>(k.distinct.size()), false);
+  mults.Resize(1, static_cast<int>(k.distinct.size()), false);
+  for (size_t i = 0; i < k.distinct.size(); ++i) {
+    knots.SetValue(static_cast<int>(i) + 1, k.distinct[i]);
+    mults.SetValue(static_cast<int>(i) + 1, k.multiplicities[i]);
+  }
+}
 
 WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& plus,
                     const std::vector<CubicPatch>& minus, const Point& plus_outward, const std::array<int, 3>& cells,

@@ -8,6 +8,8 @@
 #include "step/bspline_fit.h"
 #include "step/symmetry_patch.h"
 
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <TopoDS_Shape.hxx>
 
 #include <array>
@@ -36,6 +38,9 @@ struct WallBrep {
 WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& plus,
                     const std::vector<CubicPatch>& minus, const Point& plus_outward, const std::array<int, 3>& cells,
                     double cell_size, const std::function<bool(const Point&)>& inside_wall = {});
+
+// The distinct knots and multiplicities of a clamped uniform cubic B-spline with n control points.
+void knots_of(int n, TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& mults);
 
 // Whether BRepCheck_Analyzer finds the shape valid, and the count of its solids and shells.
 struct ShapeCheck {
