@@ -9,10 +9,12 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "step",
       "Write a block of cells of a wall solid as a STEP file (AP214, mm): closed solids of bicubic B-spline\n"
       "faces and planar caps, for CAD. Its deviation from the exact walls is measured on the file before it is\n"
-      "written (docs/step.md). Covers the catalog surfaces with mirror planes, uniform or graded walls, so far");
+      "written (docs/step.md). Covers the catalog surfaces but the lidinoid, uniform or graded walls, so far");
   // The list of step/symmetry_patch.cpp's layouts (this executable does not link them; a test compares).
-  add_generation_options(cmd, o, "Catalog surface (schwarzp, diamond, neovius, iwp, frd)",
-                         "Your own F(x, y, z) (refused so far: no patch layout for it)");
+  add_generation_options(cmd, o,
+                         "Catalog surface: by symmetry patches (schwarzp, diamond, neovius, iwp, frd), by box patches "
+                         "(gyroid, fischerkoch, splitp)",
+                         "Your own F(x, y, z) (refused so far)");
   cmd->add_option("-t,--thickness", o.thickness,
                   "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall)");
   cmd->add_option("--density", o.density, "Instead of --thickness: the relative density R of the wall");
@@ -22,8 +24,7 @@ void add_step_command(CLI::App& app, StepOptions& o) {
                   "Largest distance (mm) of the exact walls from the faces; measured, and no file is written "
                   "beyond it")
       ->capture_default_str();
-  cmd->add_option("--max-control-points", o.max_control_points,
-                  "Largest number of control points per side of a symmetry patch")
+  cmd->add_option("--max-control-points", o.max_control_points, "Largest number of control points per side of a patch")
       ->capture_default_str();
   cmd->add_option("-o,--output", o.output, "Output file: .step or .stp");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
@@ -33,6 +34,7 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "OpenCASCADE).\n"
       "Examples:\n"
       "  offsetgen step --surface schwarzp --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o p.step\n"
+      "  offsetgen step --surface gyroid --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o g.step\n"
       "  offsetgen step --surface diamond --thickness \"0.05 + 0.05*x\" --cells 2x1x1 -o graded_d.step");
 }
 

@@ -446,8 +446,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   if (ext != ".step" && ext != ".stp" && ext != ".STEP" && ext != ".STP")
     throw InputError(fmt::format("-o '{}': STEP files end in .step or .stp", r.output));
   if (!r.wall.generation.expression.empty())
-    throw InputError(fmt::format("STEP export covers the catalog surfaces {} so far; --expr surfaces are refused",
-                                 patch_layout_surfaces()));
+    throw InputError(
+        "STEP export covers the catalog surfaces (--surface) so far; --expr surfaces are refused (docs/step.md)");
   // A surface with mirror planes gets its symmetry patches; the others (the gyroid) box patches.
   const PatchLayout* layout = find_patch_layout(r.wall.generation.surface);
   try {

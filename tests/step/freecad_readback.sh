@@ -5,9 +5,11 @@
 # gives a valid cut and a valid common whose volumes add up to the whole (to 2e-5, as volume integration
 # of B-spline faces goes: 6e-6 measured).
 # A surface whose block holds several pieces of wall (diamond: 3) gives that many solids and shells.
-#   freecad_readback.sh <offsetgen> <freecadcmd> <scratch dir> [surface cells solids]
+# Box patches (the gyroid) meet along their edges within the fit's tolerance rather than exactly, and
+# the volumes of the boolean's pieces then add up to 1e-4 or so: the last argument is that bound.
+#   freecad_readback.sh <offsetgen> <freecadcmd> <scratch dir> [surface cells solids additivity]
 set -euo pipefail
-offsetgen=$1 freecad=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:-1}
+offsetgen=$1 freecad=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:-1} additivity=${7:-2e-5}
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
 "$offsetgen" step --surface "$surface" --thickness 0.1 --cells "$cells" --cell-size 10 --tolerance 0.01 \
   -o p.step >summary.txt
@@ -38,7 +40,7 @@ read -r _ common_valid common < <(grep -m1 "^COMMON " freecad.txt) || fail "no c
 [ "$cut_valid" = True ] && [ "$common_valid" = True ] || fail "the boolean with a box is not valid"
 awk -v m="$volume" -v e="$exact" 'BEGIN { d = (m - e) / e; if (d < 0) d = -d; printf "FreeCAD volume %s, exact %s: %.3g%%\n", m, e, 100 * d; exit !(d < 1e-3) }' ||
   fail "FreeCAD's volume is not within 0.1% of the exact wall volume"
-awk -v a="$common" -v b="$cut" -v m="$volume" 'BEGIN { d = (a + b - m) / m; if (d < 0) d = -d;
-  printf "common %s + cut %s = %s, whole %s\n", a, b, a + b, m; exit !(a > 0 && b > 0 && d < 2e-5) }' ||
+awk -v bound="$additivity" -v a="$common" -v b="$cut" -v m="$volume" 'BEGIN { d = (a + b - m) / m; if (d < 0) d = -d;
+  printf "common %s + cut %s = %s, whole %s\n", a, b, a + b, m; exit !(a > 0 && b > 0 && d < bound) }' ||
   fail "the pieces of the boolean do not add up to the whole"
 echo "FreeCAD: $surface, $solids valid solid(s), volume within 0.1%, a boolean with a box gives a valid cut and common"

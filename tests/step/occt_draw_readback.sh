@@ -4,9 +4,11 @@
 # within 0.1% of the exact wall volume that offsetgen step printed; a boolean cut by a box through the
 # middle of a cell (x = 3.7 mm, where no face edge lies) gives two valid pieces whose volumes add up (to 2e-5: vprops prints 6 digits).
 # A surface whose block holds several pieces of wall (diamond: 3) gives that many solids and shells.
-#   occt_draw_readback.sh <offsetgen> <occt-draw> <scratch dir> [surface cells solids]
+# Box patches (the gyroid) meet along their edges within the fit's tolerance rather than exactly, and
+# the volumes of the boolean's pieces then add up to 1e-4 or so: the last argument is that bound.
+#   occt_draw_readback.sh <offsetgen> <occt-draw> <scratch dir> [surface cells solids additivity]
 set -euo pipefail
-offsetgen=$1 draw=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:-1}
+offsetgen=$1 draw=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:-1} additivity=${7:-2e-5}
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
 "$offsetgen" step --surface "$surface" --thickness 0.1 --cells "$cells" --cell-size 10 --tolerance 0.01 \
   -o p.step >summary.txt
@@ -43,7 +45,7 @@ read -r inside outside < <(sed -n 's/^VOLUMES: //p' draw.txt)
 [ -n "$mass" ] && [ -n "$exact" ] || fail "no volume read (vprops: '$mass', offsetgen: '$exact')"
 awk -v m="$mass" -v e="$exact" 'BEGIN { d = (m - e) / e; if (d < 0) d = -d; printf "vprops %s, exact %s: %.3g%%\n", m, e, 100 * d; exit !(d < 1e-3) }' ||
   fail "vprops' volume is not within 0.1% of the exact wall volume"
-awk -v a="$inside" -v b="$outside" -v m="$mass" 'BEGIN { d = (a + b - m) / m; if (d < 0) d = -d;
-  printf "common %s + cut %s = %s, whole %s\n", a, b, a + b, m; exit !(a > 0 && b > 0 && d < 2e-5) }' ||
+awk -v bound="$additivity" -v a="$inside" -v b="$outside" -v m="$mass" 'BEGIN { d = (a + b - m) / m; if (d < 0) d = -d;
+  printf "common %s + cut %s = %s, whole %s\n", a, b, a + b, m; exit !(a > 0 && b > 0 && d < bound) }' ||
   fail "the pieces of the boolean do not add up to the whole"
 echo "occt-draw: $surface, $solids valid solid(s), volume within 0.1%, a boolean cut by a box gives two valid pieces"

@@ -68,6 +68,8 @@ const CellCase& cell_case(const std::string& surface) {
       {"neovius", {"0.05", "1 solid (1 expected)", "96 B-spline, 24 planar", 80}},
       {"iwp", {"0.1", "1 solid (1 expected)", "96 B-spline, 24 planar"}},
       {"frd", {"0.05", "1 solid (1 expected)", "384 B-spline, 24 planar", 80}},
+      // Box patches: 64 pieces per sheet in the quarter-cell boxes; the surface crosses two corners.
+      {"gyroid", {"0.1", "3 solids (3 expected)", "128 B-spline, 96 planar"}},
   };
   return cases.at(surface);
 }
@@ -211,7 +213,8 @@ TEST_P(StepCell, OffsetgenCheckPassesItsFileWithExit0) {
     EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
 }
 
-INSTANTIATE_TEST_SUITE_P(Surfaces, StepCell, ::testing::Values("schwarzp", "diamond", "neovius", "iwp", "frd"),
+INSTANTIATE_TEST_SUITE_P(Surfaces, StepCell,
+                         ::testing::Values("schwarzp", "diamond", "neovius", "iwp", "frd", "gyroid"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 // A wall from 0.5 mm to 1.5 mm along x over two cells: the symmetry is gone, every one of the 96
@@ -283,7 +286,33 @@ TEST(StepCheck, AStepFileWithoutOffsetgenMetadataIsRefusedWithExit2) {
 TEST(StepCli, HelpNamesEverySurfaceThatHasAPatchLayout) {
   const run::ProcessResult r = run_offsetgen({"step", "--help"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("Catalog surface (" + patch_layout_surfaces() + ")"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("by symmetry patches (" + patch_layout_surfaces() + ")"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("by box patches (gyroid, fischerkoch, splitp)"), std::string::npos) << r.output;
+}
+
+// A gyroid wall from 0.5 mm to 1.5 mm along x over two cells, by box patches: each piece is fitted
+// where it lies anyway, and the file passes the same checks.
+TEST(StepCli, GradedGyroidWallOfBoxPatchesIsValidWithinTheToleranceAndPassesCheck) {
+  const std::string thickness = "0.05 + 0.05*x";
+  const std::string path = scratch_dir("graded_gyroid") + "/graded.step";
+  const run::ProcessResult r = run_offsetgen({"step", "--surface", "gyroid", "--thickness", thickness, "--cells",
+                                              "2x1x1", "--cell-size", "10", "--tolerance", "0.01", "-o", path});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const TopoDS_Shape shape = read_step(path);
+  const ShapeCheck c = check_shape(shape);
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.solids, 3);
+  EXPECT_TRUE(c.closed);
+  Walls walls("gyroid", thickness);
+  for (double side : {1.0, -1.0}) {
+    const std::vector<Point> points = exact_surface_points(walls.sheet(side), {2, 1, 1}, 17, 64, 99);
+    ASSERT_GT(points.size(), 1000u);
+    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
+    EXPECT_LE(d.max, kTolerance) << "side " << side;
+  }
+  const run::ProcessResult checked = run_offsetgen({"check", path});
+  EXPECT_EQ(checked.exit_code, 0) << checked.output;
+  EXPECT_NE(checked.output.find("PASS  volume"), std::string::npos) << checked.output;
 }
 
 TEST(StepCli, SameInputsWriteTheSameBytes) {
@@ -353,12 +382,10 @@ TEST_P(StepRefuses, WithItsExitCodeAReasonAndNoFile) {
 INSTANTIATE_TEST_SUITE_P(
     BadInput, StepRefuses,
     ::testing::Values(
-        Refusal{
-            "gyroid", {"--surface", "gyroid", "--thickness", "0.1", "--tolerance", "0.01"}, 2, "gyroid' is refused"},
-        Refusal{"fischerkoch",
-                {"--surface", "fischerkoch", "--thickness", "0.1", "--tolerance", "0.01"},
+        Refusal{"lidinoid_whose_pieces_turn_too_far_for_the_boxes",
+                {"--surface", "lidinoid", "--thickness", "0.05", "--tolerance", "0.01"},
                 2,
-                "Fischer-Koch S, lidinoid and split P have no mirror planes"},
+                "cannot cut this wall into boxes down to 1/16 cell"},
         Refusal{"neovius_beyond_its_patch_layout",
                 {"--surface", "neovius", "--thickness", "0.1", "--tolerance", "0.01"},
                 2,
