@@ -592,23 +592,32 @@ class Builder {
       std::vector<std::array<double, 2>> ab;
       for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j) ab.push_back({double(i) / (m - 1), double(j) / (m - 1)});
-      const std::vector<double> heights = heights_at(patch, g, ab, uvs, guess, false);
+      Heights heights = heights_at(patch, g, ab, uvs, guess);
+      extend_outside(heights, m, std::max(patch.u1 - patch.u0, patch.v1 - patch.v0) / (m - 1));
       std::vector<Point> samples;
-      for (size_t k = 0; k < ab.size(); ++k) samples.push_back(plane_point(patch, ab[k][0], ab[k][1], heights[k]));
+      for (size_t k = 0; k < ab.size(); ++k) {
+        const double h = heights.h[k];
+        samples.push_back(plane_point(patch, ab[k][0], ab[k][1], std::isfinite(h) ? h : guess_at(guess, patch, ab[k])));
+      }
       patch.patch = fit_patch(samples, m, n);
       // The check: the midpoints of the sample grid inside the loop.
       std::vector<std::array<double, 2>> mid;
       for (int i = 0; i + 1 < m; ++i)
         for (int j = 0; j + 1 < m; ++j) mid.push_back({(i + 0.5) / (m - 1), (j + 0.5) / (m - 1)});
-      const std::vector<double> exact = heights_at(patch, g, mid, uvs, guess, true);
+      const Heights exact = heights_at(patch, g, mid, uvs, guess);
       patch.error = 0;
       for (size_t k = 0; k < mid.size(); ++k) {
-        if (std::isnan(exact[k])) continue;  // outside the loop
+        if (!exact.inside[k]) continue;  // trimmed away
         const Point p = patch.patch.evaluate(mid[k][0], mid[k][1]);
-        patch.error = std::max(patch.error, std::abs(dot(sub(p, patch.origin), normal) - exact[k]));
+        patch.error = std::max(patch.error, std::abs(dot(sub(p, patch.origin), normal) - exact.h[k]));
       }
       if (patch.error <= target) break;
     }
+  }
+
+  static double guess_at(const std::array<double, 6>& c, const BoxPatch& patch, const std::array<double, 2>& ab) {
+    const double u = patch.u0 + ab[0] * (patch.u1 - patch.u0), v = patch.v0 + ab[1] * (patch.v1 - patch.v0);
+    return c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
   }
 
   static Point plane_point(const BoxPatch& patch, double a, double b, double height) {
@@ -655,22 +664,23 @@ class Builder {
   }
 
   // The exact heights of the sheet at patch parameters (a, b): the root along the line across the
-  // plane nearest the quadratic guess, within half a box of it. Outside the loop, where there is none,
-  // the guess (the patch is trimmed there); inside it, where there is none, the piece is no graph.
-  // With `outside_nan`, points outside the loop get NaN (the check measures only inside it).
-  std::vector<double> heights_at(const BoxPatch& patch, const LevelFunction& g,
-                                 const std::vector<std::array<double, 2>>& ab,
-                                 const std::vector<std::array<double, 3>>& uvs, const std::array<double, 6>& c,
-                                 bool outside_nan) const {
+  // plane nearest the quadratic guess, within half a box of it (NaN where there is none), and whether
+  // (a, b) lies inside the loop. Inside it, a line with no root means the piece is no graph.
+  struct Heights {
+    std::vector<double> h;
+    std::vector<bool> inside;
+  };
+  Heights heights_at(const BoxPatch& patch, const LevelFunction& g, const std::vector<std::array<double, 2>>& ab,
+                     const std::vector<std::array<double, 3>>& uvs, const std::array<double, 6>& c) const {
     constexpr int kScan = 8;
     const double reach = 0.5 * grid_.h;
     std::vector<Point> probes;
     std::vector<double> guess(ab.size());
-    std::vector<bool> inside(ab.size());
+    Heights out{std::vector<double>(ab.size(), std::nan("")), std::vector<bool>(ab.size())};
     for (size_t k = 0; k < ab.size(); ++k) {
       const double u = patch.u0 + ab[k][0] * (patch.u1 - patch.u0), v = patch.v0 + ab[k][1] * (patch.v1 - patch.v0);
-      guess[k] = c[0] + c[1] * u + c[2] * v + c[3] * u * u + c[4] * u * v + c[5] * v * v;
-      inside[k] = inside_loop(uvs, u, v);
+      guess[k] = guess_at(c, patch, ab[k]);
+      out.inside[k] = inside_loop(uvs, u, v);
       for (int s = 0; s <= kScan; ++s)
         probes.push_back(plane_point(patch, ab[k][0], ab[k][1], guess[k] - reach + 2 * reach * s / kScan));
     }
@@ -689,26 +699,73 @@ class Builder {
           best = s;
         }
       }
-      if (best < 0) continue;
+      if (best < 0) {
+        if (out.inside[k])
+          throw InputError(
+              fmt::format("a piece of a sheet of the wall in one box (near {}) is not a graph over its plane",
+                          where(plane_point(patch, ab[k][0], ab[k][1], guess[k]))));
+        continue;
+      }
       const size_t at = k * (kScan + 1) + static_cast<size_t>(best);
       brackets.push_back({probes[at], probes[at + 1], f[at], f[at + 1]});
       owner.push_back(k);
     }
     const std::vector<Point> roots = refine(g, brackets);
-    std::vector<double> out(ab.size(), std::nan(""));
-    std::vector<bool> found(ab.size(), false);
-    for (size_t b = 0; b < roots.size(); ++b) {
-      out[owner[b]] = dot(sub(roots[b], patch.origin), patch.normal);
-      found[owner[b]] = true;
-    }
-    for (size_t k = 0; k < ab.size(); ++k) {
-      if (inside[k] && !found[k])
-        throw InputError(
-            fmt::format("a piece of a sheet of the wall in one box (near {}) is not a graph over its plane",
-                        where(plane_point(patch, ab[k][0], ab[k][1], guess[k]))));
-      if (!inside[k]) out[k] = outside_nan ? std::nan("") : (found[k] ? out[k] : guess[k]);
-    }
+    for (size_t b = 0; b < roots.size(); ++b) out.h[owner[b]] = dot(sub(roots[b], patch.origin), patch.normal);
     return out;
+  }
+
+  // The heights of an m x m sample grid outside the loop, where the patch is trimmed away: grown
+  // outwards from the samples inside it, ring by ring, each sample predicted linearly from its
+  // neighbours; the sheet's own height where it continues that smoothly (within one grid step), the
+  // prediction where it does not (no root, or another fold of the sheet beyond the box). A jump there
+  // would cost the fit inside the loop many control points.
+  static void extend_outside(Heights& heights, int m, double spacing) {
+    std::vector<double>& h = heights.h;
+    const size_t total = h.size();
+    std::vector<bool> fixed = heights.inside;
+    std::vector<size_t> layer;
+    for (size_t k = 0; k < total; ++k)
+      if (fixed[k]) layer.push_back(k);
+    if (layer.empty()) return;  // a loop between the samples: nothing to grow from
+    auto at = [m](int i, int j) { return static_cast<size_t>(i * m + j); };
+    for (;;) {
+      std::vector<size_t> next;
+      std::vector<bool> queued(total, false);
+      for (size_t k : layer) {
+        const int i = static_cast<int>(k) / m, j = static_cast<int>(k) % m;
+        for (const auto& d : {std::array<int, 2>{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          const int a = i + d[0], b = j + d[1];
+          if (a < 0 || b < 0 || a >= m || b >= m || fixed[at(a, b)] || queued[at(a, b)]) continue;
+          queued[at(a, b)] = true;
+          next.push_back(at(a, b));
+        }
+      }
+      if (next.empty()) break;
+      std::sort(next.begin(), next.end());
+      std::vector<double> value(next.size());
+      for (size_t q = 0; q < next.size(); ++q) {
+        const int i = static_cast<int>(next[q]) / m, j = static_cast<int>(next[q]) % m;
+        double sum = 0;
+        int count = 0;
+        for (const auto& d : {std::array<int, 2>{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          const int a = i + d[0], b = j + d[1];
+          if (a < 0 || b < 0 || a >= m || b >= m || !fixed[at(a, b)]) continue;
+          const int a2 = a + d[0], b2 = b + d[1];
+          const bool second = a2 >= 0 && b2 >= 0 && a2 < m && b2 < m && fixed[at(a2, b2)];
+          sum += second ? 2 * h[at(a, b)] - h[at(a2, b2)] : h[at(a, b)];
+          ++count;
+        }
+        const double predicted = sum / count;
+        const double own = h[next[q]];
+        value[q] = std::isfinite(own) && std::abs(own - predicted) <= spacing ? own : predicted;
+      }
+      for (size_t q = 0; q < next.size(); ++q) {
+        h[next[q]] = value[q];
+        fixed[next[q]] = true;
+      }
+      layer.swap(next);
+    }
   }
 
   // The caps: on each box face in the block's faces, the parts inside the wall, bounded by the
