@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <stdexcept>
+#include <thread>
 #include <unordered_map>
 
 namespace offsetgen::step {
@@ -151,9 +153,9 @@ std::string where(const Point& p) { return fmt::format("({:.4f}, {:.4f}, {:.4f})
 
 class Builder {
  public:
-  Builder(const std::array<LevelFunction, 2>& g, const std::function<bool(const Point&)>& inside_wall,
-          const std::array<int, 3>& cells, int k)
-      : g_(g), inside_(inside_wall) {
+  Builder(const std::array<LevelFunction, 2>& g, const std::vector<std::array<LevelFunction, 2>>& more,
+          const std::function<bool(const Point&)>& inside_wall, const std::array<int, 3>& cells, int k)
+      : g_(g), more_(more), inside_(inside_wall) {
     grid_.n = {cells[0] * k, cells[1] * k, cells[2] * k};
     grid_.h = 1.0 / k;
     out_.boxes_per_cell = k;
@@ -525,9 +527,30 @@ class Builder {
     }
   }
 
+  // Each patch on its own: on one thread per evaluator, patches i, i + threads, ... each. Where several
+  // fail, the first patch's reason is the one reported, as on one thread.
   void fit_patches(double target, int max_side) {
-    for (BoxPatch& patch : out_.patches) {
-      fit_patch_in_box(patch, target, max_side);
+    const size_t threads = 1 + more_.size(), count = out_.patches.size();
+    std::vector<std::pair<size_t, std::exception_ptr>> failed(threads, {count, nullptr});
+    auto work = [&](size_t t) {
+      const std::array<LevelFunction, 2>& g = t == 0 ? g_ : more_[t - 1];
+      for (size_t i = t; i < count; i += threads) {
+        try {
+          fit_patch_in_box(out_.patches[i], g[static_cast<size_t>(out_.patches[i].sheet)], target, max_side);
+        } catch (...) {
+          failed[t] = {i, std::current_exception()};
+          return;
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (std::thread& thread : pool) thread.join();
+    const auto first =
+        std::min_element(failed.begin(), failed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (first->second) std::rethrow_exception(first->second);
+    for (const BoxPatch& patch : out_.patches) {
       out_.largest_side = std::max(out_.largest_side, patch.patch.n);
       out_.fit_error = std::max(out_.fit_error, patch.error);
     }
@@ -535,8 +558,7 @@ class Builder {
 
   // The frame across the piece's mean outward normal, the loop counterclockwise in it, the height
   // samples, and the fit.
-  void fit_patch_in_box(BoxPatch& patch, double target, int max_side) {
-    const LevelFunction& g = g_[patch.sheet];
+  void fit_patch_in_box(BoxPatch& patch, const LevelFunction& g, double target, int max_side) const {
     std::vector<Point> ring = loop_points(patch.loop);
     const std::vector<Point> grad = gradients(g, ring, {true, true, true});
     Point mean{};
@@ -882,6 +904,7 @@ class Builder {
   }
 
   const std::array<LevelFunction, 2>& g_;
+  const std::vector<std::array<LevelFunction, 2>>& more_;
   const std::function<bool(const Point&)>& inside_;
   Grid grid_;
   BoxPartition out_;
@@ -902,10 +925,11 @@ std::array<double, 2> BoxPatch::parameters(const Point& p) const {
 }
 
 BoxPartition partition_wall(const std::array<LevelFunction, 2>& g, const std::function<bool(const Point&)>& inside_wall,
-                            const std::array<int, 3>& cells, int boxes_per_cell, double target, int max_side) {
+                            const std::array<int, 3>& cells, int boxes_per_cell, double target, int max_side,
+                            const std::vector<std::array<LevelFunction, 2>>& more) {
   if (boxes_per_cell < 1 || (boxes_per_cell & (boxes_per_cell - 1)) != 0)
     throw std::logic_error("partition_wall: boxes per cell must be a power of two");
-  Builder builder(g, inside_wall, cells, boxes_per_cell);
+  Builder builder(g, more, inside_wall, cells, boxes_per_cell);
   return builder.run(target, max_side);
 }
 

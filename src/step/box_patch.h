@@ -72,7 +72,10 @@ struct BoxPartition {
 // [0, cells], cut into boxes of 1/boxes_per_cell cell. Each patch gets the fewest control points per
 // side (4, 5, 6, ..., at most max_side) that fit it within `target` (cell units). Throws InputError
 // where a sheet is not what the boxes need (it touches a box's face, or a piece is not a graph).
+// `more`: the same two sheets once more for each further thread the patches are fitted on (a
+// LevelFunction is used by one thread at a time); the result does not depend on how many.
 BoxPartition partition_wall(const std::array<LevelFunction, 2>& g, const std::function<bool(const Point&)>& inside_wall,
-                            const std::array<int, 3>& cells, int boxes_per_cell, double target, int max_side);
+                            const std::array<int, 3>& cells, int boxes_per_cell, double target, int max_side,
+                            const std::vector<std::array<LevelFunction, 2>>& more = {});
 
 }  // namespace offsetgen::step

@@ -28,6 +28,7 @@
 #include <fstream>
 #include <functional>
 #include <future>
+#include <memory>
 #include <sstream>
 #include <thread>
 
@@ -391,11 +392,12 @@ WallBrep symmetry_wall(const PatchLayout& layout, const mesh::WallField& field, 
 // where a piece is no graph (it turns too far within a box) or a sheet touches a box's face, boxes
 // half as large, down to 1/kFinestBoxes cell.
 constexpr int kBoxesPerCell = 4, kFinestBoxes = 16;
-BoxPartition partition_boxes(const std::array<LevelFunction, 2>& sheets, const InsideWall& inside_wall,
+BoxPartition partition_boxes(const std::array<LevelFunction, 2>& sheets,
+                             const std::vector<std::array<LevelFunction, 2>>& more, const InsideWall& inside_wall,
                              const StepRequest& r, double target) {
   for (int k = kBoxesPerCell;; k *= 2) {
     try {
-      return partition_wall(sheets, inside_wall, r.cells, k, target, r.max_control_points);
+      return partition_wall(sheets, inside_wall, r.cells, k, target, r.max_control_points, more);
     } catch (const InputError& e) {
       if (k >= kFinestBoxes)
         throw InputError(fmt::format("STEP export cannot cut this wall into boxes down to 1/{} cell: {}", k, e.what()));
@@ -408,7 +410,16 @@ WallBrep box_wall(const mesh::WallField& field, mesh::WallField::Worker& worker,
   auto t0 = Clock::now();
   const std::array<LevelFunction, 2> sheets{offset_sheet(field, worker, 1, &r.cells),
                                             offset_sheet(field, worker, -1, &r.cells)};
-  const BoxPartition partition = partition_boxes(sheets, inside_wall, r, target);
+  // The patches are fitted on every core, each thread with its own Worker.
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::unique_ptr<mesh::WallField::Worker>> workers;
+  std::vector<std::array<LevelFunction, 2>> more;
+  for (unsigned t = 1; t < threads; ++t) {
+    workers.push_back(std::make_unique<mesh::WallField::Worker>(field));
+    more.push_back(
+        {offset_sheet(field, *workers.back(), 1, &r.cells), offset_sheet(field, *workers.back(), -1, &r.cells)});
+  }
+  const BoxPartition partition = partition_boxes(sheets, more, inside_wall, r, target);
   s.boxes_per_cell = partition.boxes_per_cell;
   s.patches = fmt::format("box patch (the largest; boxes of 1/{} cell)", partition.boxes_per_cell);
   s.patch_control_points = partition.largest_side;
@@ -483,7 +494,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   write_step(brep.solid, file.string(),
              fmt::format("offsetgen: {} wall, t = {} (cell units), {}x{}x{} cells of {} mm, tolerance {} mm; {}",
                          s.surface, s.thickness_text, r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance,
-                         request_metadata(r, s)));
+                         request_metadata(r, s)),
+             /*pcurves=*/layout == nullptr);  // box patches' trimming curves are known exactly
   const std::string bytes = read_bytes(file);
   s.bytes = long(bytes.size());
   s.seconds_write = seconds_since(t0);

@@ -31,13 +31,13 @@ Handle(TCollection_HAsciiString) text(const std::string& s) { return new TCollec
 
 }  // namespace
 
-void write_step(const TopoDS_Shape& solid, const std::string& path, const std::string& description) {
+void write_step(const TopoDS_Shape& solid, const std::string& path, const std::string& description, bool pcurves) {
   silence_translators();
   STEPControl_Writer writer;
   Interface_Static::SetCVal("write.step.schema", "AP214IS");
   Interface_Static::SetCVal("write.step.unit", "MM");
   Interface_Static::SetCVal("write.step.product.name", "offsetgen wall");
-  Interface_Static::SetIVal("write.surfacecurve.mode", 0);
+  Interface_Static::SetIVal("write.surfacecurve.mode", pcurves ? 1 : 0);
   if (writer.Transfer(solid, STEPControl_ManifoldSolidBrep) != IFSelect_RetDone)
     throw std::runtime_error("STEP: the solid could not be translated (STEPControl_Writer::Transfer)");
   // A fixed header: FILE_NAME's time stamp would otherwise be the time of writing.
