@@ -27,6 +27,7 @@ int run_step_command(const StepOptions& o) {
   r.output = o.output;
   if (o.max_control_points < 4) throw InputError("--max-control-points: a cubic patch needs at least 4 a side");
   r.max_control_points = o.max_control_points;
+  r.patches = o.patches;
   const step::StepSummary s = step::export_step(r, [&](const std::string& stage) {
     if (!o.quiet) std::fprintf(stderr, "[offsetgen step] %s\n", stage.c_str());
   });

@@ -26,6 +26,12 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       ->capture_default_str();
   cmd->add_option("--max-control-points", o.max_control_points, "Largest number of control points per side of a patch")
       ->capture_default_str();
+  cmd->add_option("--patches", o.patches,
+                  "How the sheets are cut into faces: symmetry (mirror-plane patches, faces that share their edges "
+                  "exactly), box (quarter-cell boxes, any catalog surface), or auto (symmetry where the surface has "
+                  "mirror planes, else box)")
+      ->check(CLI::IsMember({"auto", "symmetry", "box"}))
+      ->capture_default_str();
   cmd->add_option("-o,--output", o.output, "Output file: .step or .stp");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
   cmd->footer(

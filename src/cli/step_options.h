@@ -19,6 +19,7 @@ struct StepOptions : GenerationOptions {
   double cell_size = 10;
   double tolerance = 0.01;
   int max_control_points = 40;
+  std::string patches = "auto";
   bool quiet = false;
 };
 

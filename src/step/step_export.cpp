@@ -460,7 +460,14 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
     throw InputError(
         "STEP export covers the catalog surfaces (--surface) so far; --expr surfaces are refused (docs/step.md)");
   // A surface with mirror planes gets its symmetry patches; the others (the gyroid) box patches.
-  const PatchLayout* layout = find_patch_layout(r.wall.generation.surface);
+  const PatchLayout* layout = r.patches == "box" ? nullptr : find_patch_layout(r.wall.generation.surface);
+  if (r.patches == "symmetry" && layout == nullptr)
+    throw InputError(
+        fmt::format("--patches symmetry: '{}' has no mirror planes to cut it into symmetry patches "
+                    "(they cover {}); use --patches box or auto",
+                    r.wall.generation.surface, patch_layout_surfaces()));
+  if (r.patches != "auto" && r.patches != "symmetry" && r.patches != "box")
+    throw InputError(fmt::format("--patches {}: give auto, symmetry or box", r.patches));
   try {
     require_writable(r.output);  // an unwritable -o is the user's input, before the long work
   } catch (const std::runtime_error& e) {

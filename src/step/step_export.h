@@ -13,10 +13,11 @@ namespace offsetgen::step {
 struct StepRequest {
   mesh::WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};
-  double cell_size = 10;        // mm
-  double tolerance = 0;         // mm: the largest distance allowed from the exact walls to the faces
-  std::string output;           // .step / .stp
-  int max_control_points = 40;  // per patch side; beyond it the tolerance is reported as out of reach
+  double cell_size = 10;         // mm
+  double tolerance = 0;          // mm: the largest distance allowed from the exact walls to the faces
+  std::string output;            // .step / .stp
+  int max_control_points = 40;   // per patch side; beyond it the tolerance is reported as out of reach
+  std::string patches = "auto";  // "symmetry", "box", or "auto": symmetry where the surface has a layout
 };
 
 struct StepSummary {

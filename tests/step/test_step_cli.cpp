@@ -290,6 +290,29 @@ TEST(StepCli, HelpNamesEverySurfaceThatHasAPatchLayout) {
   EXPECT_NE(r.output.find("by box patches (gyroid, fischerkoch, splitp)"), std::string::npos) << r.output;
 }
 
+// Box patches on a surface that also has symmetry patches: another cut of the same wall, which passes
+// the same checks (diamond's cell: the wall and its two corner tetrahedra).
+TEST(StepCli, DiamondCellByBoxPatchesIsThreeValidSolidsWithinTheToleranceAndPassesCheck) {
+  const std::string path = scratch_dir("diamond_boxes") + "/d.step";
+  const run::ProcessResult r =
+      run_offsetgen({"step", "--surface", "diamond", "--thickness", "0.1", "--cells", "1", "--cell-size", "10",
+                     "--tolerance", "0.01", "--patches", "box", "-o", path});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("per box patch (the largest; boxes of 1/4 cell)"), std::string::npos) << r.output;
+  const TopoDS_Shape shape = read_step(path);
+  const ShapeCheck c = check_shape(shape);
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.solids, 3);
+  Walls walls("diamond");
+  for (double side : {1.0, -1.0}) {
+    const std::vector<Point> points = exact_surface_points(walls.sheet(side), {1, 1, 1}, 17, 64, 99);
+    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
+    EXPECT_LE(d.max, kTolerance) << "side " << side;
+  }
+  const run::ProcessResult checked = run_offsetgen({"check", path});
+  EXPECT_EQ(checked.exit_code, 0) << checked.output;
+}
+
 // A gyroid wall from 0.5 mm to 1.5 mm along x over two cells, by box patches: each piece is fitted
 // where it lies anyway, and the file passes the same checks.
 TEST(StepCli, GradedGyroidWallOfBoxPatchesIsValidWithinTheToleranceAndPassesCheck) {
@@ -382,6 +405,10 @@ TEST_P(StepRefuses, WithItsExitCodeAReasonAndNoFile) {
 INSTANTIATE_TEST_SUITE_P(
     BadInput, StepRefuses,
     ::testing::Values(
+        Refusal{"symmetry_patches_of_the_gyroid",
+                {"--surface", "gyroid", "--thickness", "0.1", "--tolerance", "0.01", "--patches", "symmetry"},
+                2,
+                "'gyroid' has no mirror planes to cut it into symmetry patches"},
         Refusal{"lidinoid_whose_pieces_turn_too_far_for_the_boxes",
                 {"--surface", "lidinoid", "--thickness", "0.05", "--tolerance", "0.01"},
                 2,
