@@ -9,11 +9,11 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "step",
       "Write a block of cells of a wall solid as a STEP file (AP214, mm): closed solids of bicubic B-spline\n"
       "faces and planar caps, for CAD. Its deviation from the exact walls is measured on the file before it is\n"
-      "written (docs/step.md). Covers the catalog surfaces but the lidinoid, uniform or graded walls, so far");
+      "written (docs/step.md). Covers the catalog surfaces, uniform or graded walls, so far");
   // The list of step/symmetry_patch.cpp's layouts (this executable does not link them; a test compares).
   add_generation_options(cmd, o,
                          "Catalog surface: by symmetry patches (schwarzp, diamond, neovius, iwp, frd), by box patches "
-                         "(gyroid, fischerkoch, splitp)",
+                         "(gyroid, fischerkoch, splitp, lidinoid)",
                          "Your own F(x, y, z) (refused so far)");
   cmd->add_option("-t,--thickness", o.thickness,
                   "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall)");
