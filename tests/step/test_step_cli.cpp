@@ -122,6 +122,24 @@ size_t count_of(const std::string& text, const std::string& what) {
   return n;
 }
 
+// A file read back: `solids` valid closed solids, and the exact walls (other lines than the tool's:
+// another seed, another density) within the tolerance of its faces.
+void expect_valid_solids_within_the_tolerance(const TopoDS_Shape& shape, const std::string& surface,
+                                              const std::string& thickness, const std::array<int, 3>& cells,
+                                              int solids) {
+  const ShapeCheck c = check_shape(shape);
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.solids, solids);
+  EXPECT_TRUE(c.closed);
+  Walls walls(surface, thickness);
+  for (double side : {1.0, -1.0}) {
+    const std::vector<Point> points = exact_surface_points(walls.sheet(side), cells, 17, 64, 99);
+    ASSERT_GT(points.size(), 500u * cells[0] * cells[1] * cells[2]);
+    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
+    EXPECT_LE(d.max, kTolerance) << "side " << side;
+  }
+}
+
 TEST(StepCli, SchwarzPCellIsOneValidClosedSolid) {
   const Written& w = one_cell();
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
@@ -217,27 +235,23 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, StepCell,
                          ::testing::Values("schwarzp", "diamond", "neovius", "iwp", "frd", "gyroid"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
+// `offsetgen step` of a wall from 0.5 mm to 1.5 mm along x over 2x1x1 cells of 10 mm.
+constexpr const char* kGraded = "0.05 + 0.05*x";
+run::ProcessResult step_graded(const std::string& surface, const std::string& path) {
+  return run_offsetgen({"step", "--surface", surface, "--thickness", kGraded, "--cells", "2x1x1", "--cell-size", "10",
+                        "--tolerance", "0.01", "-o", path});
+}
+
 // A wall from 0.5 mm to 1.5 mm along x over two cells: the symmetry is gone, every one of the 96
 // tetrahedra per sheet is fitted where it lies, and the file passes the same checks.
 TEST(StepCli, GradedSchwarzPWallIsOneValidSolidWithinTheToleranceAndPassesCheck) {
-  const std::string thickness = "0.05 + 0.05*x";
+  const std::string thickness = kGraded;
   const std::string path = scratch_dir("graded") + "/graded.step";
-  const run::ProcessResult r = run_offsetgen({"step", "--surface", "schwarzp", "--thickness", thickness, "--cells",
-                                              "2x1x1", "--cell-size", "10", "--tolerance", "0.01", "-o", path});
+  const run::ProcessResult r = step_graded("schwarzp", path);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("each image fitted on its own (graded)"), std::string::npos) << r.output;
   const TopoDS_Shape shape = read_step(path);
-  const ShapeCheck c = check_shape(shape);
-  EXPECT_TRUE(c.valid);
-  EXPECT_EQ(c.solids, 1);
-  EXPECT_TRUE(c.closed);
-  Walls walls("schwarzp", thickness);
-  for (double side : {1.0, -1.0}) {
-    const std::vector<Point> points = exact_surface_points(walls.sheet(side), {2, 1, 1}, 17, 64, 99);
-    ASSERT_GT(points.size(), 1000u);
-    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
-    EXPECT_LE(d.max, kTolerance) << "side " << side;
-  }
+  expect_valid_solids_within_the_tolerance(shape, "schwarzp", thickness, {2, 1, 1}, 1);
   // The cell at x in [0, 1] (t from 0.5 to 1 mm) holds less wall than the one at [1, 2] (1 to 1.5 mm):
   // the solid is graded, not a uniform wall.
   auto volume_in_cell = [&shape](double x0) {
@@ -299,16 +313,7 @@ TEST(StepCli, DiamondCellByBoxPatchesIsThreeValidSolidsWithinTheToleranceAndPass
                      "--tolerance", "0.01", "--patches", "box", "-o", path});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("per box patch (the largest; boxes of 1/4 cell)"), std::string::npos) << r.output;
-  const TopoDS_Shape shape = read_step(path);
-  const ShapeCheck c = check_shape(shape);
-  EXPECT_TRUE(c.valid);
-  EXPECT_EQ(c.solids, 3);
-  Walls walls("diamond");
-  for (double side : {1.0, -1.0}) {
-    const std::vector<Point> points = exact_surface_points(walls.sheet(side), {1, 1, 1}, 17, 64, 99);
-    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
-    EXPECT_LE(d.max, kTolerance) << "side " << side;
-  }
+  expect_valid_solids_within_the_tolerance(read_step(path), "diamond", "0.1", {1, 1, 1}, 3);
   const run::ProcessResult checked = run_offsetgen({"check", path});
   EXPECT_EQ(checked.exit_code, 0) << checked.output;
 }
@@ -316,23 +321,10 @@ TEST(StepCli, DiamondCellByBoxPatchesIsThreeValidSolidsWithinTheToleranceAndPass
 // A gyroid wall from 0.5 mm to 1.5 mm along x over two cells, by box patches: each piece is fitted
 // where it lies anyway, and the file passes the same checks.
 TEST(StepCli, GradedGyroidWallOfBoxPatchesIsValidWithinTheToleranceAndPassesCheck) {
-  const std::string thickness = "0.05 + 0.05*x";
   const std::string path = scratch_dir("graded_gyroid") + "/graded.step";
-  const run::ProcessResult r = run_offsetgen({"step", "--surface", "gyroid", "--thickness", thickness, "--cells",
-                                              "2x1x1", "--cell-size", "10", "--tolerance", "0.01", "-o", path});
+  const run::ProcessResult r = step_graded("gyroid", path);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const TopoDS_Shape shape = read_step(path);
-  const ShapeCheck c = check_shape(shape);
-  EXPECT_TRUE(c.valid);
-  EXPECT_EQ(c.solids, 3);
-  EXPECT_TRUE(c.closed);
-  Walls walls("gyroid", thickness);
-  for (double side : {1.0, -1.0}) {
-    const std::vector<Point> points = exact_surface_points(walls.sheet(side), {2, 1, 1}, 17, 64, 99);
-    ASSERT_GT(points.size(), 1000u);
-    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
-    EXPECT_LE(d.max, kTolerance) << "side " << side;
-  }
+  expect_valid_solids_within_the_tolerance(read_step(path), "gyroid", kGraded, {2, 1, 1}, 3);
   const run::ProcessResult checked = run_offsetgen({"check", path});
   EXPECT_EQ(checked.exit_code, 0) << checked.output;
   EXPECT_NE(checked.output.find("PASS  volume"), std::string::npos) << checked.output;
