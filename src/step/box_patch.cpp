@@ -291,7 +291,7 @@ class Builder {
     }
   }
 
-  static size_t index(int i, int j) { return static_cast<size_t>(i * (kSamples + 1) + j); }
+  static size_t index(int i, int j) { return flat(i, kSamples + 1, j); }
   static bool differ(const std::vector<double>& v, size_t a, size_t b) { return (v[a] < 0) != (v[b] < 0); }
 
   Point face_point(int axis, int v, double a, double d) const {
@@ -750,7 +750,7 @@ class Builder {
     for (size_t k = 0; k < total; ++k)
       if (fixed[k]) layer.push_back(k);
     if (layer.empty()) return;  // a loop between the samples: nothing to grow from
-    auto at = [m](int i, int j) { return static_cast<size_t>(i * m + j); };
+    auto at = [m](int i, int j) { return flat(i, m, j); };
     for (;;) {
       std::vector<size_t> next;
       std::vector<bool> queued(total, false);
