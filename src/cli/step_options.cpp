@@ -14,7 +14,7 @@ void add_step_command(CLI::App& app, StepOptions& o) {
   add_generation_options(cmd, o,
                          "Catalog surface: by symmetry patches (schwarzp, diamond, neovius, iwp, frd), by box patches "
                          "(gyroid, fischerkoch, splitp, lidinoid)",
-                         "Your own F(x, y, z) (refused so far)");
+                         "Your own F(x, y, z), periodic with period 1 (by box patches)");
   cmd->add_option("-t,--thickness", o.thickness,
                   "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall)");
   cmd->add_option("--density", o.density, "Instead of --thickness: the relative density R of the wall");

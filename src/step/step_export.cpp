@@ -28,6 +28,7 @@
 #include <fstream>
 #include <functional>
 #include <future>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -203,7 +204,12 @@ void prepare_walls(const mesh::WallField& field, mesh::WallField::Worker& worker
   s.thickness = field.thickness_at(0, 0, 0, worker);
   s.thickness_range = field.thickness_range(r.cells);
   s.thickness_text = s.graded ? r.wall.thickness : fmt::format("{}", s.thickness);
-  s.thickness_limit = density::surface_constants(field.generation().surface).thickness_limit();
+  try {
+    s.thickness_limit = density::surface_constants(field.generation().surface).thickness_limit();
+  } catch (const InputError& e) {
+    throw InputError(
+        fmt::format("offsetgen step needs the surface's curvature limit, from its constants: {}", e.what()));
+  }
   if (!(s.thickness_range[1] < s.thickness_limit))
     throw InputError(fmt::format(
         "--thickness {} is beyond the curvature limit of {}{}: t/2 must stay below the smallest radius of "
@@ -217,7 +223,14 @@ constexpr const char* kMetadataTag = "offsetgen-metadata ";
 
 std::string request_metadata(const StepRequest& r, const StepSummary& s) {
   nlohmann::ordered_json j;
-  j["surface"] = s.surface;
+  const GenerationRequest& g = r.wall.generation;
+  if (g.expression.empty()) {
+    j["surface"] = g.surface;
+  } else {  // the expression itself, so check can build the same walls again
+    j["expr"] = g.expression;
+    j["name"] = g.name;
+    if (!g.params.empty()) j["params"] = g.params;
+  }
   j["method"] = r.wall.generation.method;
   j["order"] = r.wall.generation.order;
   j["thickness"] = s.thickness_text;  // a uniform one as the shortest text that reads back as the same double
@@ -239,7 +252,13 @@ StepRequest request_from_description(const std::string& description, const std::
   StepRequest r;
   try {
     const auto j = nlohmann::json::parse(description.substr(at + std::string(kMetadataTag).size()));
-    r.wall.generation.surface = j.at("surface").get<std::string>();
+    if (j.contains("expr")) {
+      r.wall.generation.expression = j.at("expr").get<std::string>();
+      r.wall.generation.name = j.at("name").get<std::string>();
+      r.wall.generation.params = j.value("params", std::map<std::string, std::string>{});
+    } else {
+      r.wall.generation.surface = j.at("surface").get<std::string>();
+    }
     r.wall.generation.method = j.at("method").get<std::string>();
     r.wall.generation.order = j.at("order").get<int>();
     r.wall.thickness = j.at("thickness").get<std::string>();
@@ -445,6 +464,11 @@ WallBrep box_wall(const mesh::WallField& field, mesh::WallField::Worker& worker,
   return brep;
 }
 
+// The catalog name, or an expression's name (its --name) for the summary.
+std::string surface_words(const GenerationRequest& g) {
+  return g.expression.empty() ? g.surface : fmt::format("{} (F = {})", g.name, g.expression);
+}
+
 std::string read_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
@@ -470,9 +494,6 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   const std::string ext = fs::path(r.output).extension().string();
   if (ext != ".step" && ext != ".stp" && ext != ".STEP" && ext != ".STP")
     throw InputError(fmt::format("-o '{}': STEP files end in .step or .stp", r.output));
-  if (!r.wall.generation.expression.empty())
-    throw InputError(
-        "STEP export covers the catalog surfaces (--surface) so far; --expr surfaces are refused (docs/step.md)");
   // A surface with mirror planes gets its symmetry patches; the others (the gyroid) box patches.
   const PatchLayout* layout = r.patches == "box" ? nullptr : find_patch_layout(r.wall.generation.surface);
   if (r.patches == "symmetry" && layout == nullptr)
@@ -489,7 +510,7 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   }
 
   StepSummary s;
-  s.surface = r.wall.generation.surface;
+  s.surface = surface_words(r.wall.generation);
   say("generating the wall's functions");
   mesh::WallField field(r.wall);
   mesh::WallField::Worker worker(field);
@@ -558,7 +579,7 @@ StepCheck check_step_file(const std::string& path, const std::function<void(cons
   StepCheck check;
   StepSummary& s = check.summary;
   check.request = request_from_description(contents.description, path, s.expected_solids);
-  s.surface = check.request.wall.generation.surface;
+  s.surface = surface_words(check.request.wall.generation);
   s.bytes = long(bytes.size());
   s.seconds_read = seconds_since(start);
 
