@@ -346,15 +346,23 @@ TEST(StepCli, GradedGyroidWallOfBoxPatchesIsValidWithinTheToleranceAndPassesChec
   EXPECT_NE(checked.output.find("PASS  volume"), std::string::npos) << checked.output;
 }
 
-TEST(StepCli, SameInputsWriteTheSameBytes) {
-  const Written& w = one_cell();
+// Same inputs, same bytes: symmetry patches (Schwarz P) and box patches (the gyroid, fitted on every
+// core: which thread fits a patch does not change it).
+class StepSameBytes : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(StepSameBytes, SameInputsWriteTheSameBytes) {
+  const Written& w = one_cell(GetParam());
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
-  const std::string again = scratch_dir("again") + "/p.step";
-  const run::ProcessResult r = run_offsetgen({"step", "--surface", "schwarzp", "--thickness", "0.1", "--cells", "1",
-                                              "--cell-size", "10", "--tolerance", "0.01", "-o", again, "-q"});
+  const std::string again = scratch_dir("again_" + GetParam()) + "/p.step";
+  const run::ProcessResult r =
+      run_offsetgen({"step", "--surface", GetParam(), "--thickness", cell_case(GetParam()).thickness, "--cells", "1",
+                     "--cell-size", "10", "--tolerance", "0.01", "-o", again, "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_bytes(again), read_bytes(w.path));
 }
+
+INSTANTIATE_TEST_SUITE_P(Routes, StepSameBytes, ::testing::Values("schwarzp", "gyroid"),
+                         [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 TEST(StepExecutable, OnlyOffsetgenStepLinksOpenCascade) {
   const run::ProcessResult plain = run::run_process({"ldd", OFFSETGEN_EXE});
