@@ -208,7 +208,7 @@ std::vector<Point> patch_points(const PatchLayout& layout, const LevelFunction& 
       throw InputError(
           fmt::format("the offset surface crosses the line of the {} symmetry patch at (u, v) = ({:.3f}, {:.3f}) {} "
                       "times, not once: at this thickness the wall is not the graph the patch layout needs (reduce "
-                      "--thickness)",
+                      "--thickness, or try --patches box, which fits each piece where it lies)",
                       layout.surface, uv[i][0], uv[i][1], roots[i].size()));
     const Segment& s = segments[i];
     const double t = roots[i][0];
