@@ -6,9 +6,9 @@ import pathlib
 import re
 import sys
 
-# Lowest first. field/ and lowering/ are the machinery the offset constructions lower themselves
+# Lowest first. support/ builds what libraries Debian ships only shared (fmt). field/ and lowering/ are the machinery the offset constructions lower themselves
 # with, so offset/ sits above them; run/ turns generated files into code for check, mesh and step.
-LAYERS = ["surfaces", "body", "field", "lowering", "offset", "density", "emit", "validate",
+LAYERS = ["support", "surfaces", "body", "field", "lowering", "offset", "density", "emit", "validate",
           "pipeline", "run", "check", "mesh", "step", "cli", "dev"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([A-Za-z_]+)/', re.MULTILINE)
 
