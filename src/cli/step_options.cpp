@@ -35,9 +35,9 @@ void add_step_command(CLI::App& app, StepOptions& o) {
   cmd->add_option("-o,--output", o.output, "Output file: .step or .stp");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
   cmd->footer(
-      "Exit status: 0 success, 1 a check failed (deviation beyond --tolerance, or the solid read back is not\n"
+      "Exit status: 0 success, 1 a check failed (deviation beyond --tolerance, volume, or the solid is not\n"
       "valid; no file is written), 2 usage or input error, 3 internal error (or offsetgen built without\n"
-      "OpenCASCADE).\n"
+      "OpenCASCADE). `offsetgen check part.step` reads a written file back and measures it again.\n"
       "Examples:\n"
       "  offsetgen step --surface schwarzp --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o p.step\n"
       "  offsetgen step --surface gyroid --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o g.step\n"
