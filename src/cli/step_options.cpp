@@ -29,7 +29,7 @@ void add_step_command(CLI::App& app, StepOptions& o) {
   cmd->add_option("--patches", o.patches,
                   "How the sheets are cut into faces: symmetry (mirror-plane patches, faces that share their edges "
                   "exactly), box (quarter-cell boxes, any catalog surface), or auto (symmetry where the surface has "
-                  "mirror planes, else box)")
+                  "mirror planes, except diamond, which box patches write faster; else box)")
       ->check(CLI::IsMember({"auto", "symmetry", "box"}))
       ->capture_default_str();
   cmd->add_option("-o,--output", o.output, "Output file: .step or .stp");

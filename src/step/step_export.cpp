@@ -512,8 +512,10 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   const std::string ext = fs::path(r.output).extension().string();
   if (ext != ".step" && ext != ".stp" && ext != ".STEP" && ext != ".STP")
     throw InputError(fmt::format("-o '{}': STEP files end in .step or .stp", r.output));
-  // A surface with mirror planes gets its symmetry patches; the others (the gyroid) box patches.
+  // A surface with mirror planes gets its symmetry patches (diamond only when asked for them); the
+  // others (the gyroid) box patches.
   const PatchLayout* layout = r.patches == "box" ? nullptr : find_patch_layout(r.wall.generation.surface);
+  if (r.patches == "auto" && layout != nullptr && layout->auto_prefers_box_patches) layout = nullptr;
   if (r.patches == "symmetry" && layout == nullptr)
     throw InputError(
         fmt::format("--patches symmetry: '{}' has no mirror planes to cut it into symmetry patches "

@@ -69,6 +69,7 @@ const std::vector<PatchLayout>& layouts() {
     d.sides = {MirrorPlane{{0, 1, -1}, 0}, MirrorPlane{{1, 1, 0}, 0.25}, MirrorPlane{{1, -1, 0}, 0},
                MirrorPlane{{0, 1, 1}, -0.25}};
     d.region = diamond_region;
+    d.auto_prefers_box_patches = true;
     // Neovius and I-WP have the cube's mirror planes too (Pm-3m, Im-3m), so Schwarz P's tetrahedron
     // O(0,0,0) X(1/2,0,0) M(1/2,1/2,0) R(1/2,1/2,1/2), but their signs at its vertices pair other
     // edges. Neovius: F = 13, -1, 1, -13 at O, X, M, R, and F < 0 along XR, F > 0 along OM; I-WP:

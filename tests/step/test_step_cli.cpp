@@ -65,7 +65,8 @@ struct CellCase {
 const CellCase& cell_case(const std::string& surface) {
   static const std::map<std::string, CellCase> cases = {
       {"schwarzp", {"0.1", "1 solid (1 expected)", "96 B-spline, 6 planar"}},
-      {"diamond", {"0.1", "3 solids (3 expected)", "336 B-spline, 30 planar"}},
+      // Box patches (auto's choice for diamond, docs/step.md), the surface crossing two corners.
+      {"diamond", {"0.1", "3 solids (3 expected)", "160 B-spline, 30 planar"}},
       {"neovius", {"0.05", "1 solid (1 expected)", "96 B-spline, 24 planar", 80}},
       {"iwp", {"0.1", "1 solid (1 expected)", "96 B-spline, 24 planar"}},
       {"frd", {"0.05", "1 solid (1 expected)", "384 B-spline, 24 planar", 80}},
@@ -316,15 +317,17 @@ TEST(StepCli, HelpNamesEverySurfaceThatHasAPatchLayout) {
   EXPECT_NE(r.output.find("by box patches (gyroid, fischerkoch, splitp, lidinoid)"), std::string::npos) << r.output;
 }
 
-// Box patches on a surface that also has symmetry patches: another cut of the same wall, which passes
-// the same checks (diamond's cell: the wall and its two corner tetrahedra).
-TEST(StepCli, DiamondCellByBoxPatchesIsThreeValidSolidsWithinTheToleranceAndPassesCheck) {
-  const std::string path = scratch_dir("diamond_boxes") + "/d.step";
+// Diamond's symmetry patches, asked for (auto takes box patches for diamond): another cut of the same
+// wall, whose faces share their edges exactly, which passes the same checks (the wall and its two
+// corner tetrahedra).
+TEST(StepCli, DiamondCellBySymmetryPatchesIsThreeValidSolidsWithinTheToleranceAndPassesCheck) {
+  const std::string path = scratch_dir("diamond_symmetry") + "/d.step";
   const run::ProcessResult r =
       run_offsetgen({"step", "--surface", "diamond", "--thickness", "0.1", "--cells", "1", "--cell-size", "10",
-                     "--tolerance", "0.01", "--patches", "box", "-o", path});
+                     "--tolerance", "0.01", "--patches", "symmetry", "-o", path});
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("per box patch (the largest; boxes of 1/4 cell)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("336 B-spline (bicubic, 6x6 control points per symmetry patch)"), std::string::npos)
+      << r.output;
   expect_valid_solids_within_the_tolerance(read_step(path), "diamond", "0.1", {1, 1, 1}, 3);
   const run::ProcessResult checked = run_offsetgen({"check", path});
   EXPECT_EQ(checked.exit_code, 0) << checked.output;
@@ -446,7 +449,7 @@ INSTANTIATE_TEST_SUITE_P(
                 2,
                 "not the graph the patch layout needs"},
         Refusal{"diamond_beyond_its_patch_layout",
-                {"--surface", "diamond", "--thickness", "0.3", "--tolerance", "0.01"},
+                {"--surface", "diamond", "--thickness", "0.3", "--tolerance", "0.01", "--patches", "symmetry"},
                 2,
                 "not the graph the patch layout needs"},
         Refusal{"user_expression_not_periodic",
