@@ -12,11 +12,18 @@ namespace offsetgen::mesh {
 namespace {
 
 constexpr float kActiveBand = 2.0f;  // voxels
+// Values are kept at least this far from zero (voxels). A sample at zero puts the crossings of all its
+// edges on it, so the vertices of the cells around it coincide once written as floats: a degenerate
+// facet. The shift, 1/100 voxel at most, is far below the mesher's own error.
+constexpr float kLeastMagnitude = 0.01f;
 
 struct BlockResult {
   BandBlock block;
   size_t wall_samples = 0, skipped_voxels = 0;
+  size_t inside = 0;  // voxels stored with a negative value
   bool any = false, deep = false;
+  // Solid throughout and nowhere near the surface: every voxel was stored, all inside.
+  bool solid() const { return !any && inside == static_cast<size_t>(kBlockVoxels); }
 };
 
 class BlockSampler {
@@ -111,8 +118,10 @@ class BlockSampler {
   // neighbour on one side. (The plain 4x4x4 gyroid mesh came out byte-identical with all evaluated
   // voxels active.)
   void store(BlockResult& out, size_t slot, double value_in_voxels) const {
-    const auto value = static_cast<float>(value_in_voxels);
+    auto value = static_cast<float>(value_in_voxels);
+    if (std::abs(value) < kLeastMagnitude) value = value < 0 ? -kLeastMagnitude : kLeastMagnitude;
     out.block.values[slot] = std::clamp(value, -background_, background_);
+    if (value < 0) ++out.inside;
     if (std::abs(value) < kActiveBand) {
       out.block.active[slot] = 1;
       out.any = true;
@@ -184,7 +193,14 @@ SampledBand sample_band(const WallField& field, const Domain& domain, const Voxe
     band.wall_samples += results[b].wall_samples;
     band.skipped_voxels += results[b].skipped_voxels;
     band.deep_blocks += results[b].deep ? 1 : 0;
-    if (results[b].any) band.blocks.push_back(std::move(results[b].block));
+    if (results[b].any) {
+      band.blocks.push_back(std::move(results[b].block));
+    } else if (results[b].solid()) {
+      BandBlock solid;
+      solid.origin = results[b].block.origin;
+      solid.solid = true;
+      band.blocks.push_back(std::move(solid));
+    }
   }
   return band;
 }

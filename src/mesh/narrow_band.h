@@ -34,14 +34,17 @@ struct VoxelGrid {
 // faces); clamped to +-background.
 // Active voxels are those within 2 voxels of the surface; the others hold their value (or
 // `background` where the walls were not evaluated: outside, at least 2 voxels from the surface).
+// A block that is solid throughout, with no voxel near the surface (inside a thick skin or strut),
+// is kept as `solid` without values: left out, it would read as the background, which is outside.
 struct BandBlock {
   std::array<int, 3> origin{};  // index coordinates of the block's first voxel
-  std::vector<float> values;    // kBlockVoxels
-  std::vector<uint8_t> active;  // kBlockVoxels
+  std::vector<float> values;    // kBlockVoxels; empty when solid
+  std::vector<uint8_t> active;  // kBlockVoxels; empty when solid
+  bool solid = false;           // every voxel at least 2 voxels inside: -background throughout
 };
 
 struct SampledBand {
-  std::vector<BandBlock> blocks;  // those with an active voxel, in a fixed order
+  std::vector<BandBlock> blocks;  // those with an active voxel, and the solid ones, in a fixed order
   float background = 3.0f;
   size_t blocks_tested = 0;   // blocks of the padded box
   size_t wall_samples = 0;    // voxels where the walls were evaluated

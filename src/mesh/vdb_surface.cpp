@@ -14,6 +14,11 @@ openvdb::FloatGrid::Ptr band_grid(const SampledBand& band) {
   openvdb::FloatTree& tree = grid->tree();
   for (const BandBlock& block : band.blocks) {
     const auto& o = block.origin;
+    if (block.solid) {
+      // An inactive tile the size of a leaf (level 1): no voxels held, inside throughout.
+      tree.addTile(1, openvdb::Coord(o[0], o[1], o[2]), -band.background, false);
+      continue;
+    }
     openvdb::FloatTree::LeafNodeType* leaf = tree.touchLeaf(openvdb::Coord(o[0], o[1], o[2]));
     // Our block layout is the leaf's linear offset ((x * 8 + y) * 8 + z).
     static_assert(openvdb::FloatTree::LeafNodeType::DIM == kBlock, "blocks are OpenVDB leaves");
