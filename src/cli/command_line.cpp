@@ -48,6 +48,9 @@ int run_reporting_errors(const std::function<int()>& command) {
   } catch (const ResourceError& e) {
     fmt::print(stderr, "offsetgen: error: {}\n", e.what());
     return kExitInternal;
+  } catch (const UnsoundPartError& e) {
+    fmt::print(stderr, "offsetgen: error: {}\n", e.what());
+    return kExitInternal;
   } catch (const std::exception& e) {
     fmt::print(stderr, "offsetgen: internal error: {}\n", e.what());
     return kExitInternal;

@@ -6,6 +6,7 @@
 #include "mesh/body_domain.h"
 #include "mesh/box_domain.h"
 #include "mesh/mapped_region.h"
+#include "mesh/mesh_audit.h"
 #include "mesh/narrow_band.h"
 #include "mesh/ply_stream.h"
 #include "mesh/stl_stream.h"
@@ -197,6 +198,42 @@ std::string tile_progress(size_t done, size_t total, double elapsed) {
   return s;
 }
 
+// Points within reach of a face of tile `t` may be shared with the tile across it (`seam`);
+// `outside_run`: that tile is not among those this run meshes, [run.first, run.second).
+void mark_seams(const TriangleMesh& mesh, const std::vector<Tile>& tiles, size_t t, std::pair<size_t, size_t> run,
+                std::vector<uint8_t>& seam, std::vector<uint8_t>& outside_run) {
+  const Tile& tile = tiles[t];
+  const auto across = tile_neighbours(tiles, t);
+  seam.assign(mesh.points.size(), 0);
+  outside_run.assign(mesh.points.size(), 0);
+  for (size_t i = 0; i < mesh.points.size(); ++i)
+    for (size_t a = 0; a < 3; ++a)
+      for (size_t side = 0; side < 2; ++side) {
+        if (std::abs(mesh.points[i][a] - float(tile.owned[side][a])) >= 1.5f) continue;
+        seam[i] = 1;
+        const long other = across[a][side];
+        if (other >= 0 && (size_t(other) < run.first || size_t(other) >= run.second)) outside_run[i] = 1;
+      }
+}
+
+// Refuses a part whose mesh is not a closed, consistently oriented surface without degenerate facets,
+// or whose skin came out thinner than requested by more than a voxel: it is not kept.
+void require_sound(const MeshSettings& s, const MeshSummary& m) {
+  std::vector<std::string> faults;
+  if (!m.audit.closed()) faults.push_back(m.audit.describe());
+  if (m.body && m.body->skin > 0 && m.body->measured_skin.thinnest < m.body->skin - m.body->voxel)
+    faults.push_back(
+        fmt::format("the thinnest skin measured is {:.4g} mm, below --skin {:g} mm less one voxel ({:.4g} mm)",
+                    m.body->measured_skin.thinnest, m.body->skin, m.body->voxel));
+  if (faults.empty()) return;
+  std::string list;
+  for (const auto& f : faults) list += (list.empty() ? "" : "; ") + f;
+  throw UnsoundPartError(fmt::format(
+      "the part is not sound: {}. It was not written ({} is unchanged). A slicer would have to repair it; try "
+      "another --voxel or --cell-size, and please report the command (it is a bug in offsetgen mesh)",
+      list, s.output));
+}
+
 // Samples, extracts and sorts the part, tile by tile (tiles.h); points in millimetres through `to_mm`
 // (voxel index -> mm). STL in tiles is streamed to s.output as tiles finish (memory: one tile); one
 // tile, PLY and 3MF are held whole and returned, seams welded, small pieces dropped over the whole.
@@ -225,9 +262,10 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
   std::optional<PlyStream> ply;
   if (m.streamed && m.format == MeshFormat::Stl) stl.emplace(s.output, description);
   if (m.streamed && m.format == MeshFormat::Ply) ply.emplace(s.output, description);
-  std::vector<uint8_t> on_seam;
+  std::vector<uint8_t> on_seam, outside_run;
+  MeshAudit audit;
   const double cell_voxels = std::pow(1.0 / grid.voxel(), 3);
-  double sample_seconds = 0, extract_seconds = 0, write_seconds = 0;
+  double sample_seconds = 0, extract_seconds = 0, write_seconds = 0, audit_seconds = 0;
   TriangleMesh held;
   const auto start = std::chrono::steady_clock::now();
   for (size_t t = first; t < last; ++t) {
@@ -263,17 +301,14 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
       m.inner_dropped += dropped;
       m.inner_dropped_volume += volume * std::pow(s.cell_size * grid.voxel(), 3);
     }
-    if (ply) {
-      // Points within reach of a tile face may be shared with the neighbour across it.
-      on_seam.assign(mesh.points.size(), 0);
-      for (size_t i = 0; i < mesh.points.size(); ++i)
-        for (size_t a = 0; a < 3; ++a)
-          if (std::abs(mesh.points[i][a] - float(tile.owned[0][a])) < 1.5f ||
-              std::abs(mesh.points[i][a] - float(tile.owned[1][a])) < 1.5f)
-            on_seam[i] = 1;
-    }
+    if (m.streamed) mark_seams(mesh, tiles, t, {first, last}, on_seam, outside_run);
     for (auto& p : mesh.points) p = to_mm(p);
     extract_seconds += seconds_since(step);
+    if (m.streamed) {
+      step = std::chrono::steady_clock::now();
+      audit.add(mesh, on_seam, outside_run);
+      audit_seconds += seconds_since(step);
+    }
     if (!m.streamed) {
       const auto offset = static_cast<uint32_t>(held.points.size());
       held.points.insert(held.points.end(), mesh.points.begin(), mesh.points.end());
@@ -303,6 +338,9 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
                                 "the voxels"
                               : "the block holds no wall: the surface does not cross it, or the walls fall "
                                 "between the voxels");
+    m.audit = audit.finish();
+    m.stages.push_back({"check", audit_seconds});
+    require_sound(s, m);
     if (stl) {
       stl->commit();
       m.file_bytes = stl->bytes();
@@ -325,6 +363,11 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
                             : "the block holds no wall: the surface does not cross it, or the walls fall between "
                               "the voxels");
   hook(held);
+  const auto audit_start = std::chrono::steady_clock::now();
+  audit.add(held);
+  m.audit = audit.finish();
+  m.stages.push_back({"check", seconds_since(audit_start)});
+  require_sound(s, m);
   m.points = held.points.size();
   m.triangles = held.triangles.size();
   m.volume = m.pieces.volume;
@@ -654,6 +697,11 @@ std::string format_summary(const MeshSummary& m) {
                      m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string());
   }
   s += fmt::format("  mesh:       {} triangles, {} vertices\n", m.triangles, m.points);
+  s += fmt::format(
+      "  checked:    {} as written{}{}\n", m.audit.describe(), m.tiles > 1 ? ", across the tiles' seams" : "",
+      m.tile_range
+          ? fmt::format("; {} edges on seams to other shares left to the merged file", m.audit.unmatched_seam_edges)
+          : std::string());
   if (m.tiles > 1 || m.tile_range)
     s += fmt::format("  tiles:      {}{} of {} voxels a side; {}\n",
                      m.tile_range ? fmt::format("{} of ", m.tiles_meshed) : std::string(), m.tiles, m.tile_size,

@@ -5,6 +5,7 @@
 // the skin (skin_measure), write the file atomically (mesh_files).
 #pragma once
 
+#include "mesh/mesh_audit.h"
 #include "mesh/mesh_files.h"
 #include "mesh/skin_measure.h"
 #include "mesh/triangle_mesh.h"
@@ -101,6 +102,7 @@ struct MeshSummary {
   double volume = 0, box_volume = 0;        // mm^3
   std::optional<double> requested_density;  // --density R
   PieceReport pieces;
+  AuditReport audit;  // the mesh as written, judged before it is kept
   std::string compile_flags;
   std::vector<StageTime> stages;
 };

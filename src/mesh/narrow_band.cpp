@@ -4,8 +4,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <string>
 #include <thread>
 
 namespace offsetgen::mesh {
@@ -32,7 +34,7 @@ class BlockSampler {
                bool use_field_bound, float background)
       : field_(field), worker_(field), reader_(domain.reader()), background_(background) {
     v_ = grid.voxel();
-    skin_ = domain.skin;
+    skin_given_ = domain.skin;
     fillet_ = domain.fillet;
     margin_ = domain.lattice_margin();
     // A point q with |F(q)| > L h_max is outside the wall: both offsets have the sign of F there (the
@@ -42,11 +44,20 @@ class BlockSampler {
     // the unit cell, so everywhere for periodic (catalog) surfaces.
     lipschitz_ = use_field_bound ? field.field_lipschitz() : 0;
     far_ = lipschitz_ * (0.5 * max_thickness + (kActiveBand + fillet_) * v_);
+    // Planted faults for the tests of the part's check (docs/testing.md), as git's GIT_TEST_*.
+    if (const char* fault = std::getenv("OFFSETGEN_TEST_FAULT")) {
+      plant_shallow_skin_ = std::string(fault) == "shallow-skin";
+      plant_dropped_blocks_ = std::string(fault) == "drop-solid-blocks";
+    }
   }
+  bool drops_solid_blocks() const { return plant_dropped_blocks_; }
 
   void sample(const std::array<int, 3>& origin, BlockResult& out) {
     out = BlockResult{};
     out.block.origin = origin;
+    // The planted fault: the skin read 1.5 voxels too shallow in one block of every five.
+    const bool planted = plant_shallow_skin_ && (origin[0] + origin[1] + origin[2]) / kBlock % 5 == 0;
+    skin_ = planted ? skin_given_ - 1.5 : skin_given_;
     // Deep inside the core the domain plays no part (d far below every threshold).
     const BlockPlace place = reader_->read_block(origin, margin_ + fillet_, d_.data());
     if (place == BlockPlace::Outside) return;  // (these voxels are not counted as skipped: outside the domain)
@@ -132,7 +143,8 @@ class BlockSampler {
   WallField::Worker worker_;
   std::unique_ptr<DomainReader> reader_;
   float background_;
-  double v_ = 0, lipschitz_ = 0, far_ = 0, skin_ = 0, fillet_ = 0, margin_ = 0;
+  double v_ = 0, lipschitz_ = 0, far_ = 0, skin_given_ = 0, skin_ = 0, fillet_ = 0, margin_ = 0;
+  bool plant_shallow_skin_ = false, plant_dropped_blocks_ = false;
   std::array<double, kBlockVoxels> d_{};
   std::vector<double> x_, y_, z_, dq_, w_;
   std::vector<int> slot_;
@@ -161,11 +173,13 @@ SampledBand sample_band(const WallField& field, const Domain& domain, const Voxe
   // A worker that fails (out of memory) stops every worker and hands its exception to this thread:
   // an exception escaping a std::thread would abort the process.
   std::atomic<bool> failed{false};
+  std::atomic<bool> drop_solid{false};
   std::exception_ptr failure;
   std::mutex failure_lock;
   auto work = [&] {
     try {
       BlockSampler sampler(field, domain, grid, max_thickness, use_field_bound, band.background);
+      if (sampler.drops_solid_blocks()) drop_solid = true;
       for (size_t b = next++; b < origins.size() && !failed; b = next++) {
         sampler.sample(origins[b], results[b]);
         ++done;
@@ -195,7 +209,7 @@ SampledBand sample_band(const WallField& field, const Domain& domain, const Voxe
     band.deep_blocks += results[b].deep ? 1 : 0;
     if (results[b].any) {
       band.blocks.push_back(std::move(results[b].block));
-    } else if (results[b].solid()) {
+    } else if (results[b].solid() && !drop_solid) {
       BandBlock solid;
       solid.origin = results[b].block.origin;
       solid.solid = true;

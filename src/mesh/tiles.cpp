@@ -30,6 +30,23 @@ std::vector<Tile> make_tiles(const VoxelBox& range, int size) {
   return tiles;
 }
 
+std::array<std::array<long, 2>, 3> tile_neighbours(const std::vector<Tile>& tiles, size_t t) {
+  std::array<std::array<long, 2>, 3> across{};
+  for (size_t a = 0; a < 3; ++a)
+    for (int side = 0; side < 2; ++side) {
+      across[a][static_cast<size_t>(side)] = -1;
+      for (size_t u = 0; u < tiles.size(); ++u) {
+        bool meets = true;
+        for (size_t b = 0; b < 3 && meets; ++b)
+          meets = b == a ? (side == 0 ? tiles[u].owned[1][b] == tiles[t].owned[0][b]
+                                      : tiles[u].owned[0][b] == tiles[t].owned[1][b])
+                         : tiles[u].owned[0][b] == tiles[t].owned[0][b];
+        if (meets) across[a][static_cast<size_t>(side)] = static_cast<long>(u);
+      }
+    }
+  return across;
+}
+
 std::pair<int, int> parse_tile_range(const std::string& text) {
   const auto bad = [&] {
     return InputError(

@@ -21,6 +21,8 @@ struct Tile {
 
 // `range`: the domain's block range; size 0: one tile, the whole range.
 std::vector<Tile> make_tiles(const VoxelBox& range, int size);
+// The tiles across each face of tile `t`: [axis][0] below, [axis][1] above; -1 where the domain ends.
+std::array<std::array<long, 2>, 3> tile_neighbours(const std::vector<Tile>& tiles, size_t t);
 
 // "I/N" (--tile-range): share I (0-based) of N. Throws InputError.
 std::pair<int, int> parse_tile_range(const std::string& text);

@@ -19,4 +19,11 @@ class ResourceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A result that failed its own check before it was kept (a part whose mesh is not closed): not the
+// user's input; the CLI maps it to exit 3, and the output was not written.
+class UnsoundPartError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace offsetgen

@@ -1,5 +1,7 @@
 #include "mesh_test_support.h"
 
+#include "mesh/mesh_files.h"
+
 #include "pipeline/generate.h"
 #include "run/metadata.h"
 #include "run/process.h"
@@ -12,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -158,6 +161,91 @@ void expect_clean_part(const Case& c) {
   EXPECT_EQ(report["parts"], 1) << raw;
   EXPECT_GT(stl_volume(read_stl(stl)), 0) << "facets face inward";
   std::cout << r.output;
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+// An icosphere of radius r about c: the icosahedron, each triangle split in 4 `levels` times.
+TriangleMesh sphere(double r, const std::array<double, 3>& c, int levels) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<std::array<double, 3>> p = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<std::array<uint32_t, 3>> t = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                            {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                            {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                            {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> middle;
+    auto mid = [&](uint32_t a, uint32_t b) {
+      auto key = std::minmax(a, b);
+      auto it = middle.find(key);
+      if (it != middle.end()) return it->second;
+      p.push_back({(p[a][0] + p[b][0]) / 2, (p[a][1] + p[b][1]) / 2, (p[a][2] + p[b][2]) / 2});
+      return middle[key] = static_cast<uint32_t>(p.size() - 1);
+    };
+    std::vector<std::array<uint32_t, 3>> next;
+    for (const auto& f : t) {
+      const uint32_t a = mid(f[0], f[1]), b = mid(f[1], f[2]), d = mid(f[2], f[0]);
+      next.insert(next.end(), {{f[0], a, d}, {f[1], b, a}, {f[2], d, b}, {a, b, d}});
+    }
+    t = next;
+  }
+  TriangleMesh m;
+  for (const auto& q : p) {
+    const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    m.points.push_back({static_cast<float>(c[0] + r * q[0] / n), static_cast<float>(c[1] + r * q[1] / n),
+                        static_cast<float>(c[2] + r * q[2] / n)});
+  }
+  m.triangles = t;
+  return m;
+}
+
+// A torus about the z axis through c: major radius big, minor radius small, n x m quads.
+TriangleMesh torus(double big, double small, const std::array<double, 3>& c, int n, int m) {
+  TriangleMesh out;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * kPi * i / n, v = 2 * kPi * j / m;
+      out.points.push_back({static_cast<float>(c[0] + (big + small * std::cos(v)) * std::cos(u)),
+                            static_cast<float>(c[1] + (big + small * std::cos(v)) * std::sin(u)),
+                            static_cast<float>(c[2] + small * std::sin(v))});
+    }
+  auto at = [&](int i, int j) { return static_cast<uint32_t>(((i + n) % n) * m + (j + m) % m); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      out.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      out.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return out;
+}
+
+void write_stl(const TriangleMesh& m, const std::string& path) {
+  std::ofstream(path, std::ios::binary) << encode_mesh(m, MeshFormat::Stl, "test body");
+}
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {(std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()};
+}
+
+// "key: ... <number> ..." -> the first number after `label` in the summary.
+double summary_number(const std::string& summary, const std::string& label) {
+  const size_t at = summary.find(label);
+  if (at == std::string::npos) throw std::runtime_error("no '" + label + "' in:\n" + summary);
+  return std::stod(summary.substr(at + label.size()));
+}
+
+// admesh counts every closed surface as a part: the outer one and each cavity the skin closes
+// (cavities < 0: not checked).
+void expect_admesh_clean(const std::string& stl, double cavities) {
+  std::string raw;
+  auto report = admesh_report(stl, &raw);
+  EXPECT_EQ(report["facets added"], 0) << raw;
+  EXPECT_EQ(report["backwards edges"], 0) << raw;
+  EXPECT_EQ(report["disconnected facets"], 0) << raw;
+  if (cavities >= 0) {
+    EXPECT_EQ(report["parts"], 1 + cavities) << raw;
+  }
 }
 
 }  // namespace offsetgen::mesh::testing

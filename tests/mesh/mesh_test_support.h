@@ -2,6 +2,7 @@
 // of a catalog surface through its generated header (compiled at -O2 and loaded).
 #pragma once
 
+#include "mesh/triangle_mesh.h"
 #include "run/c_library.h"
 
 #include <array>
@@ -59,5 +60,18 @@ class ExactWalls {
 // each column z in [0, 1] the wall's intervals are bracketed by a scan of `scan` steps and their ends
 // refined by bisection to 1e-13.
 double wall_volume_per_cell(const ExactWalls& walls, int n, int scan);
+
+// Bodies whose insides are known in closed form, for --body.
+// An icosphere of radius r about c: the icosahedron, each triangle split in 4 `levels` times.
+TriangleMesh sphere(double r, const std::array<double, 3>& c, int levels);
+// A torus about the z axis through c: major radius big, minor radius small, n x m quads.
+TriangleMesh torus(double big, double small, const std::array<double, 3>& c, int n, int m);
+void write_stl(const TriangleMesh& m, const std::string& path);
+std::string read_bytes(const std::string& path);
+// "key: ... <number> ..." -> the first number after `label` in the summary.
+double summary_number(const std::string& summary, const std::string& label);
+// admesh counts every closed surface as a part: the outer one and each cavity the skin closes
+// (cavities < 0: not checked). Expects no hole, backwards edge or disconnected facet.
+void expect_admesh_clean(const std::string& stl, double cavities);
 
 }  // namespace offsetgen::mesh::testing

@@ -1,0 +1,107 @@
+#include "mesh/mesh_audit.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace offsetgen::mesh {
+namespace {
+
+// Each point's welded id: the first point (in position order) at its position, as a reader welds.
+std::vector<uint32_t> weld_ids(const std::vector<std::array<float, 3>>& points) {
+  std::vector<uint32_t> order(points.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](uint32_t a, uint32_t b) { return points[a] != points[b] ? points[a] < points[b] : a < b; });
+  std::vector<uint32_t> id(points.size());
+  for (size_t k = 0; k < order.size(); ++k)
+    id[order[k]] = k > 0 && points[order[k]] == points[order[k - 1]] ? id[order[k - 1]] : order[k];
+  return id;
+}
+
+struct DirectedEdge {
+  uint64_t key;  // (smaller id << 32) | larger id
+  bool forward;  // from the smaller id to the larger
+  bool operator<(const DirectedEdge& o) const { return key != o.key ? key < o.key : forward < o.forward; }
+};
+
+}  // namespace
+
+std::string AuditReport::describe() const {
+  return fmt::format("{} open edges, {} non-manifold edges, {} misoriented edges, {} degenerate facets", open_edges,
+                     nonmanifold_edges, misoriented_edges, degenerate_facets);
+}
+
+void MeshAudit::judge(int forward, int backward) {
+  if (forward + backward == 1) {
+    ++report_.open_edges;
+  } else if (forward + backward > 2) {
+    ++report_.nonmanifold_edges;
+  } else if (forward != 1) {
+    ++report_.misoriented_edges;
+  }
+}
+
+void MeshAudit::add(const TriangleMesh& mesh) {
+  add(mesh, std::vector<uint8_t>(mesh.points.size(), 0), std::vector<uint8_t>(mesh.points.size(), 0));
+}
+
+void MeshAudit::add(const TriangleMesh& mesh, const std::vector<uint8_t>& seam,
+                    const std::vector<uint8_t>& outside_run) {
+  const std::vector<uint32_t> id = weld_ids(mesh.points);
+  // A welded point is on a seam when any point at its position is.
+  std::vector<uint8_t> on_seam(mesh.points.size(), 0), outside(mesh.points.size(), 0);
+  for (size_t i = 0; i < mesh.points.size(); ++i) {
+    on_seam[id[i]] |= seam[i];
+    outside[id[i]] |= outside_run[i];
+  }
+  std::vector<DirectedEdge> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    const uint32_t a = id[t[0]], b = id[t[1]], c = id[t[2]];
+    if (a == b || b == c || a == c) {
+      ++report_.degenerate_facets;
+      continue;
+    }
+    for (const auto& [u, v] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+      const uint32_t lo = std::min(u, v), hi = std::max(u, v);
+      edges.push_back({(uint64_t(lo) << 32) | hi, u == lo});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t k = 0; k < edges.size();) {
+    size_t end = k;
+    int forward = 0, backward = 0;
+    for (; end < edges.size() && edges[end].key == edges[k].key; ++end) (edges[end].forward ? forward : backward)++;
+    const auto lo = static_cast<uint32_t>(edges[k].key >> 32), hi = static_cast<uint32_t>(edges[k].key);
+    if (on_seam[lo] && on_seam[hi]) {
+      // Held by position: the neighbour's facets name the same positions, not the same ids.
+      const bool swap = mesh.points[hi] < mesh.points[lo];
+      const EdgeKey key = swap ? EdgeKey{mesh.points[hi], mesh.points[lo]} : EdgeKey{mesh.points[lo], mesh.points[hi]};
+      SeamEdge& e = seam_edges_[key];
+      e.forward += swap ? backward : forward;
+      e.backward += swap ? forward : backward;
+      e.outside_run = e.outside_run || outside[lo] || outside[hi];
+      // Complete: no later tile can add to it without a third facet, which shows as an open edge.
+      if (e.forward == 1 && e.backward == 1) seam_edges_.erase(key);
+    } else {
+      judge(forward, backward);
+    }
+    k = end;
+  }
+}
+
+AuditReport MeshAudit::finish() {
+  for (const auto& [key, e] : seam_edges_) {
+    if (e.outside_run && e.forward + e.backward == 1) {
+      ++report_.unmatched_seam_edges;
+    } else {
+      judge(e.forward, e.backward);
+    }
+  }
+  seam_edges_.clear();
+  return report_;
+}
+
+}  // namespace offsetgen::mesh
