@@ -128,6 +128,7 @@ int run_mesh_command(const MeshOptions& o) {
   mesh::MeshSettings s;
   s.wall.generation = generation_request(o);
   s.wall.thickness = o.thickness;
+  s.wall.network = o.network;
   s.wall.generation.density = o.density;
   s.wall.generation.density_field = o.density_field;
   s.cells = parse_cells(o.cells);

@@ -22,6 +22,10 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->add_option("--density-field", o.density_field,
                   "Instead of --thickness: a graded relative density rho(x, y, z), t(p) = "
                   "thickness_for_density(rho(p))");
+  cmd->add_flag("--network", o.network,
+                "The network (skeletal, strut) solid offset(p, h) < 0 instead of the sheet: --thickness is then the "
+                "offset h in cell units (either sign; h > 0 grows the network), --density the network's relative "
+                "density (offsetgen density --network)");
   auto* cells = cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")
                     ->capture_default_str()
                     ->each([&o](const std::string&) { o.cells_given = true; });
@@ -89,6 +93,7 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
       "Examples: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --body part.stl --skin 1.2 --cell-size 4 -o filled.stl\n"
+      "          offsetgen mesh --surface diamond --network --density 0.3 --cells 3 --cell-size 8 -o struts.stl\n"
       "          offsetgen mesh ... --tile-range 0/4 -o part0.stl   (... 3/4 -o part3.stl, on four machines)\n"
       "          offsetgen mesh --merge part0.stl part1.stl part2.stl part3.stl -o part.stl\n"
       "With --body, insideness comes from OpenVDB's mesh-to-level-set sign flood fill (facet orientation and\n"

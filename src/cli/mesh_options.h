@@ -17,6 +17,7 @@ struct MeshOptions : GenerationOptions {
   std::string thickness, cells = "1", output;
   std::optional<double> density;             // --density R: the sheet of relative density R
   std::optional<std::string> density_field;  // --density-field E: graded, rho(x, y, z)
+  bool network = false;                      // --network: the network solid phi(p, h) < 0
   std::string body, origin;                  // --body FILE, --origin X,Y,Z
   double skin = 0, fillet = 0, scale = 1;
   bool repair = false;

@@ -80,6 +80,7 @@ void validate(const MeshSettings& s) {
 // What sets the wall: "t=0.1", "rho=0.2" or "rho=<expression>".
 std::string wall_text(const MeshSettings& s) {
   const GenerationRequest& g = s.wall.generation;
+  if (s.wall.network) return g.density ? fmt::format("network rho={}", *g.density) : "network h=" + s.wall.thickness;
   if (g.density) return fmt::format("rho={}", *g.density);
   if (g.density_field) return "rho=" + *g.density_field;
   return "t=" + s.wall.thickness;
@@ -96,15 +97,15 @@ std::string description(const MeshSettings& s, const MeshSummary& m, const std::
 
 // `setting` is what set the voxels ("--resolution 24", "--voxel 0.2 mm"); `cell_size` in mm.
 void check_wall_voxels(double min_thickness, double voxels_per_cell, const std::string& setting, double cell_size,
-                       bool by_voxel) {
+                       bool by_voxel, bool network) {
   if (min_thickness * voxels_per_cell >= kMinVoxelsPerWall) return;
   const std::string fix =
       by_voxel ? fmt::format("--voxel {:.3g} or less", min_thickness * cell_size / kMinVoxelsPerWall)
                : fmt::format("--resolution {} or more", static_cast<int>(std::ceil(kMinVoxelsPerWall / min_thickness)));
   throw InputError(fmt::format(
-      "the thinnest wall ({:.4g} cell) spans {:.3g} voxels at {}: walls need at least {} voxels; use {} (the "
-      "default gives the thinnest wall {})",
-      min_thickness, min_thickness * voxels_per_cell, setting, kMinVoxelsPerWall, fix, kDefaultVoxelsPerWall));
+      "{} ({:.4g} cell) spans {:.3g} voxels at {}: it needs at least {} voxels; use {} (the default gives it {})",
+      network ? "the network's narrowest neck, about 2 (h_max - |h|)," : "the thinnest wall", min_thickness,
+      min_thickness * voxels_per_cell, setting, kMinVoxelsPerWall, fix, kDefaultVoxelsPerWall));
 }
 
 // Reads the body, scales it and makes sure it is closed (or repairs it); says what it did.
@@ -274,10 +275,10 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
         tiles.size() > 1 ? tile_progress(t - first, last - first, seconds_since(start)) + ": " : std::string();
     auto step = std::chrono::steady_clock::now();
     SampledBand band = tiles.size() == 1
-                           ? sample_band(field, domain, grid, m.max_thickness, m.field_bound_used, threads_for(s),
+                           ? sample_band(field, domain, grid, m.extent.reach, m.field_bound_used, threads_for(s),
                                          [&](double f) { progress(stage + "sampling the narrow band", f); })
                            : sample_band(
-                                 field, domain, grid, m.max_thickness, m.field_bound_used, threads_for(s),
+                                 field, domain, grid, m.extent.reach, m.field_bound_used, threads_for(s),
                                  [&](double f) { progress(stage + "sampling the narrow band", f); }, tile.blocks);
     sample_seconds += seconds_since(step);
     m.wall_samples += band.wall_samples;
@@ -391,6 +392,8 @@ MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, co
   const auto range = field.thickness_range(s.cells);
   m.min_thickness = range[0];
   m.max_thickness = range[1];
+  m.extent = field.extent(range);
+  m.network = s.wall.network;
   m.automatic_resolution = s.resolution == 0 && s.voxel == 0;
   if (s.voxel > 0) {
     const double per_cell = s.cell_size / s.voxel;
@@ -401,10 +404,10 @@ MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, co
           s.voxel, s.cell_size, s.cell_size));
     m.resolution = static_cast<int>(std::lround(per_cell));
   } else {
-    m.resolution = m.automatic_resolution ? automatic_resolution(s.cells, m.min_thickness) : s.resolution;
+    m.resolution = m.automatic_resolution ? automatic_resolution(s.cells, m.extent.thinnest) : s.resolution;
   }
-  check_wall_voxels(m.min_thickness, m.resolution, fmt::format("--resolution {}", m.resolution), s.cell_size,
-                    s.voxel > 0);
+  check_wall_voxels(m.extent.thinnest, m.resolution, fmt::format("--resolution {}", m.resolution), s.cell_size,
+                    s.voxel > 0, m.network);
   double voxels = 1;
   for (int n : s.cells) voxels *= double(n) * m.resolution + 4;
   if (voxels > kMaxVoxels)
@@ -458,11 +461,13 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
   const auto range = field.thickness_range(lo, hi);
   m.min_thickness = range[0];
   m.max_thickness = range[1];
+  m.extent = field.extent(range);
+  m.network = s.wall.network;
   m.automatic_resolution = s.resolution == 0 && s.voxel == 0;
   if (s.voxel > 0) {
     b.voxel = s.voxel;
   } else {
-    int resolution = m.automatic_resolution ? automatic_resolution(longest, m.min_thickness) : s.resolution;
+    int resolution = m.automatic_resolution ? automatic_resolution(longest, m.extent.thinnest) : s.resolution;
     // The skin spans at least 3 voxels by default.
     if (m.automatic_resolution && settings.skin > 0)
       resolution = std::max(resolution, static_cast<int>(std::ceil(3 * s.cell_size / settings.skin - 1e-9)));
@@ -471,9 +476,9 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
   const double per_cell = s.cell_size / b.voxel;
   m.resolution = static_cast<int>(std::lround(per_cell));
   check_wall_voxels(
-      m.min_thickness, per_cell,
+      m.extent.thinnest, per_cell,
       s.voxel > 0 ? fmt::format("--voxel {:g} mm", s.voxel) : fmt::format("{} voxels per cell", m.resolution),
-      s.cell_size, s.voxel > 0);
+      s.cell_size, s.voxel > 0, m.network);
   if (settings.skin > 0 && settings.skin < 2 * b.voxel)
     throw InputError(
         fmt::format("--skin {:g} mm spans {:.3g} voxels of {:.4g} mm: a skin needs at least 2; use "
@@ -555,6 +560,15 @@ std::string format_box(const std::array<std::array<double, 3>, 2>& box) {
                      box[1][0], box[1][1], box[1][2]);
 }
 
+// "wall 0.1 cell"-style text without the unit: the sheet's thickness or the network's offset, and
+// their range where graded.
+std::string wall_range_text(const MeshSummary& m) {
+  const std::string range =
+      fmt::format("{:.4g}{}", m.min_thickness,
+                  m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string());
+  return m.network ? "network solid phi(p, h) < 0, h " + range : "wall " + range;
+}
+
 std::string format_body(const MeshSummary& m) {
   const BodySummary& b = *m.body;
   std::string s;
@@ -570,11 +584,9 @@ std::string format_body(const MeshSummary& m) {
   else
     s += fmt::format(
         "  lattice:    cells of {:g} mm from the origin ({:.4g}, {:.4g}, {:.4g}) mm (x, y, z of --thickness "
-        "and --density-field count cells from there); wall {:.4g}{} cell; voxel {:.4g} mm ({:.4g} per "
-        "cell{})\n",
-        m.cell_size, b.origin[0], b.origin[1], b.origin[2], m.min_thickness,
-        m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string(), b.voxel,
-        m.cell_size / b.voxel, m.automatic_resolution ? ", automatic" : "");
+        "and --density-field count cells from there); {} cell; voxel {:.4g} mm ({:.4g} per cell{})\n",
+        m.cell_size, b.origin[0], b.origin[1], b.origin[2], wall_range_text(m), b.voxel, m.cell_size / b.voxel,
+        m.automatic_resolution ? ", automatic" : "");
   if (!m.map.empty())
     s += fmt::format("  map:        {} (x, y, z in mm){}\n", m.map,
                      m.map_region.empty() ? std::string() : "\n              " + m.map_region);
@@ -597,8 +609,10 @@ std::string format_body(const MeshSummary& m) {
   if (b.expected_density) {
     const double expected = b.skin_volume + *b.expected_density * b.core_volume;
     s += fmt::format(" ({} {:.4f}); part {:.6g} mm^3 against V_skin + rho V_core = {:.6g} mm^3 ({:+.2f}%)",
-                     m.requested_density ? "--density" : "the wall's sheet density", *b.expected_density, m.volume,
-                     expected, 100 * (m.volume / expected - 1));
+                     m.requested_density ? "--density"
+                     : m.network         ? "the network's density"
+                                         : "the wall's sheet density",
+                     *b.expected_density, m.volume, expected, 100 * (m.volume / expected - 1));
   }
   s += "\n";
   s += fmt::format("  part box:   {}\n", format_box(b.part_box));
@@ -691,10 +705,9 @@ std::string format_summary(const MeshSummary& m) {
   if (m.body) {
     s += format_body(m);
   } else {
-    s += fmt::format("  block:      {}x{}x{} cells of {:g} mm, {} voxels per cell{}, wall {:.4g}{} cell\n", m.cells[0],
-                     m.cells[1], m.cells[2], m.cell_size, m.resolution, m.automatic_resolution ? " (automatic)" : "",
-                     m.min_thickness,
-                     m.max_thickness != m.min_thickness ? fmt::format(" to {:.4g}", m.max_thickness) : std::string());
+    s += fmt::format("  block:      {}x{}x{} cells of {:g} mm, {} voxels per cell{}, {} cell\n", m.cells[0], m.cells[1],
+                     m.cells[2], m.cell_size, m.resolution, m.automatic_resolution ? " (automatic)" : "",
+                     wall_range_text(m));
   }
   s += fmt::format("  mesh:       {} triangles, {} vertices\n", m.triangles, m.points);
   s += fmt::format(
@@ -724,9 +737,9 @@ std::string format_summary(const MeshSummary& m) {
                      m.pieces.cavities ? fmt::format(", {} closed cavities", m.pieces.cavities) : std::string());
   }
   s += fmt::format(
-      "  evaluation: {} wall samples, {:.3g} samples/s (two <prefix>_offset_n values each, {}); "
+      "  evaluation: {} wall samples, {:.3g} samples/s ({} <prefix>_offset_n value{} each, {}); "
       "voxels ruled out by F: {}\n",
-      m.wall_samples, m.samples_per_second, m.compile_flags,
+      m.wall_samples, m.samples_per_second, m.network ? "one" : "two", m.network ? "" : "s", m.compile_flags,
       m.field_bound_used ? std::to_string(m.skipped_voxels)
                          : std::string("none (M bounds |grad F| over one cell, and this expression spans several)"));
   if (m.body)

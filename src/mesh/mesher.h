@@ -94,7 +94,9 @@ struct MeshSummary {
   double cell_size = 0;
   int resolution = 0;
   bool automatic_resolution = false;
-  double min_thickness = 0, max_thickness = 0;  // cell units
+  double min_thickness = 0, max_thickness = 0;  // cell units: the wall's thickness, or the network's offset h
+  bool network = false;
+  WallExtent extent;  // what the voxels and the F bound were sized by
   size_t wall_samples = 0, skipped_voxels = 0;
   bool field_bound_used = true;   // blocks ruled out by F (narrow_band.h)
   double samples_per_second = 0;  // wall samples (each two _offset values) per second of the sample stage

@@ -18,6 +18,7 @@ constexpr float kActiveBand = 2.0f;  // voxels
 // edges on it, so the vertices of the cells around it coincide once written as floats: a degenerate
 // facet. The shift, 1/100 voxel at most, is far below the mesher's own error.
 constexpr float kLeastMagnitude = 0.01f;
+constexpr double kFarFromWalls = 1e30;  // voxels: w where F rules the walls out
 
 struct BlockResult {
   BandBlock block;
@@ -30,8 +31,8 @@ struct BlockResult {
 
 class BlockSampler {
  public:
-  BlockSampler(const WallField& field, const Domain& domain, const VoxelGrid& grid, double max_thickness,
-               bool use_field_bound, float background)
+  BlockSampler(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach, bool use_field_bound,
+               float background)
       : field_(field), worker_(field), reader_(domain.reader()), background_(background) {
     v_ = grid.voxel();
     skin_given_ = domain.skin;
@@ -40,10 +41,12 @@ class BlockSampler {
     // A point q with |F(q)| > L h_max is outside the wall: both offsets have the sign of F there (the
     // methods' safeguards guarantee it, see the headers' SAFETY notes). So a voxel with
     // |F| > L (h_max + (2 + fillet) voxels) is outside with all its neighbours within 2 voxels, and
-    // the wall there cannot reach the skin's fillet. L = k M bounds |grad F| only where M was computed:
-    // the unit cell, so everywhere for periodic (catalog) surfaces.
+    // the wall there cannot reach the skin's fillet. A network's offset has the sign of F there too:
+    // inside the network where F < 0. L = k M bounds |grad F| only where M was computed: the unit
+    // cell, so everywhere for periodic (catalog) surfaces.
     lipschitz_ = use_field_bound ? field.field_lipschitz() : 0;
-    far_ = lipschitz_ * (0.5 * max_thickness + (kActiveBand + fillet_) * v_);
+    far_ = lipschitz_ * (reach + (kActiveBand + fillet_) * v_);
+    network_ = field.network();
     // Planted faults for the tests of the part's check (docs/testing.md), as git's GIT_TEST_*.
     if (const char* fault = std::getenv("OFFSETGEN_TEST_FAULT")) {
       plant_shallow_skin_ = std::string(fault) == "shallow-skin";
@@ -71,10 +74,13 @@ class BlockSampler {
     double c[3];
     for (int a = 0; a < 3; ++a) c[a] = 0.5 * ((origin[a] + 0.5) * v_ + (origin[a] + kBlock - 0.5) * v_);
     const double radius = 0.5 * std::sqrt(3.0) * (kBlock - 1) * v_;
-    if (is_far(c, radius)) {
+    if (const Far far = far_from_walls(c, radius); far != Far::No) {
       out.skipped_voxels = kBlockVoxels;
-      if (skin_ > 0 && place == BlockPlace::Mixed)
+      if (far == Far::Inside) {
+        for (int i = 0; i < kBlockVoxels; ++i) store(out, static_cast<size_t>(i), inside_walls(d_[i]));
+      } else if (skin_ > 0 && place == BlockPlace::Mixed) {
         for (int i = 0; i < kBlockVoxels; ++i) store(out, static_cast<size_t>(i), without_wall(d_[i]));
+      }
       return;
     }
     x_.clear();
@@ -90,14 +96,18 @@ class BlockSampler {
         for (int sl = 0; sl < kBlock; sl += kSub) {
           const double sc[3] = {(origin[0] + si + 0.5 * kSub) * v_, (origin[1] + sj + 0.5 * kSub) * v_,
                                 (origin[2] + sl + 0.5 * kSub) * v_};
-          const bool far = is_far(sc, sub_radius);
-          if (far) out.skipped_voxels += kSub * kSub * kSub;
+          const Far far = far_from_walls(sc, sub_radius);
+          if (far != Far::No) out.skipped_voxels += kSub * kSub * kSub;
           for (int i = si; i < si + kSub; ++i)
             for (int j = sj; j < sj + kSub; ++j)
               for (int l = sl; l < sl + kSub; ++l) {
                 const int slot = block_offset(i, j, l);
                 const double d = d_[static_cast<size_t>(slot)];
-                if (far || !wall_matters(d, skin_, fillet_, margin_)) {
+                if (far == Far::Inside) {
+                  store(out, static_cast<size_t>(slot), inside_walls(d));
+                  continue;
+                }
+                if (far == Far::Outside || !wall_matters(d, skin_, fillet_, margin_)) {
                   if (skin_ > 0) store(out, static_cast<size_t>(slot), without_wall(d));
                   continue;
                 }
@@ -118,10 +128,17 @@ class BlockSampler {
   }
 
  private:
-  bool is_far(const double* centre, double radius) const {
-    return lipschitz_ > 0 && std::abs(field_.field(centre[0], centre[1], centre[2])) > far_ + lipschitz_ * radius;
+  // Whether F rules out the walls within `radius` of `centre`: outside them, or inside a network.
+  enum class Far { No, Outside, Inside };
+  Far far_from_walls(const double* centre, double radius) const {
+    if (lipschitz_ <= 0) return Far::No;
+    const double f = field_.field(centre[0], centre[1], centre[2]);
+    if (std::abs(f) <= far_ + lipschitz_ * radius) return Far::No;
+    return network_ && f < 0 ? Far::Inside : Far::Outside;
   }
   double without_wall(double d) const { return part_value_without_wall(d, skin_, kActiveBand, background_); }
+  // The part where the lattice is solid throughout (deep inside a network's struts).
+  double inside_walls(double d) const { return part_value(d, -kFarFromWalls, skin_, fillet_); }
 
   // Only voxels near the surface are active: OpenVDB looks for crossings around active voxels and
   // reads the stored values of inactive ones. |grad w| stays near 1 (w = phi / (k M), and |grad phi|
@@ -144,6 +161,7 @@ class BlockSampler {
   std::unique_ptr<DomainReader> reader_;
   float background_;
   double v_ = 0, lipschitz_ = 0, far_ = 0, skin_given_ = 0, skin_ = 0, fillet_ = 0, margin_ = 0;
+  bool network_ = false;
   bool plant_shallow_skin_ = false, plant_dropped_blocks_ = false;
   std::array<double, kBlockVoxels> d_{};
   std::vector<double> x_, y_, z_, dq_, w_;
@@ -152,12 +170,12 @@ class BlockSampler {
 
 }  // namespace
 
-SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double max_thickness,
+SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress) {
-  return sample_band(field, domain, grid, max_thickness, use_field_bound, threads, progress, domain.block_range());
+  return sample_band(field, domain, grid, reach, use_field_bound, threads, progress, domain.block_range());
 }
 
-SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double max_thickness,
+SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress,
                         const VoxelBox& blocks) {
   SampledBand band;
@@ -178,7 +196,7 @@ SampledBand sample_band(const WallField& field, const Domain& domain, const Voxe
   std::mutex failure_lock;
   auto work = [&] {
     try {
-      BlockSampler sampler(field, domain, grid, max_thickness, use_field_bound, band.background);
+      BlockSampler sampler(field, domain, grid, reach, use_field_bound, band.background);
       if (sampler.drops_solid_blocks()) drop_solid = true;
       for (size_t b = next++; b < origins.size() && !failed; b = next++) {
         sampler.sample(origins[b], results[b]);

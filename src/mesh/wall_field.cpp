@@ -69,12 +69,39 @@ WallField::WallField(const WallRequest& request) {
   const std::optional<double> number = plain_number(request.thickness);
   if (!request.thickness.empty() && !number)
     g.thickness = request.thickness;  // lets --param values reach the thickness expression
+  network_ = request.network;
+  // --density with --network: the network's density, not the sheet's (NaN: none given).
+  const double network_density = network_ && g.density ? *g.density : std::nan("");
+  if (network_) {
+    if (g.density_field)
+      throw InputError(
+          "--density-field grades a sheet: with --network give --density R (uniform) or --thickness H as an "
+          "expression of x, y, z (the offset h, graded)");
+    // The header's _wall would be the sheet of that density: ask only for the relations.
+    g.density.reset();
+    g.density_functions = g.density_functions || !std::isnan(network_density);
+  }
   generation_ = generate(g);
   const Surface& surface = generation_.surface;
   if (surface.dims != 3)
     throw InputError(fmt::format("'{}' is a 2D surface (x, y); mesh needs a surface of x, y and z", surface.name));
+  // A network's offset is bounded by the curvature limit (the sheet's thickness by the safeguards).
+  if (generation_.density) {
+    density_ = generation_.density;
+  } else if (network_ && surface.from_catalog && !density::density_unavailable(surface)) {
+    density_ = density::DensityModel(density::surface_constants(surface));
+  }
 
-  if (g.density) {
+  if (!std::isnan(network_density)) {
+    const density::DensityModel& m = *generation_.density;
+    const double rho = network_density;
+    if (!(rho >= m.network_density_min() && rho <= m.network_density_max()))
+      throw InputError(fmt::format(
+          "--density {} with --network is outside [{:.4f}, {:.4f}], the network densities of {} whose offset stays "
+          "within its curvature limit |h| <= {:.4f}",
+          rho, m.network_density_min(), m.network_density_max(), surface.name, m.offset_limit()));
+    uniform_thickness_ = m.network_offset(rho);  // the offset h of that density
+  } else if (g.density) {
     uniform_thickness_ = *generation_.wall_thickness;  // t of the sheet of relative density R
   } else if (g.density_field) {
     graded_ = true;  // t(p) = thickness_for_density(rho(p))
@@ -91,8 +118,9 @@ WallField::WallField(const WallRequest& request) {
       thickness_program_ = lower_thickness(surface, *generation_.construction, t);
     }
   }
-  if (!graded_ && !(uniform_thickness_ > 0 && std::isfinite(uniform_thickness_)))
+  if (!graded_ && !network_ && !(uniform_thickness_ > 0 && std::isfinite(uniform_thickness_)))
     throw InputError(fmt::format("--thickness {} is not a positive wall thickness (cell units)", request.thickness));
+  if (!graded_ && network_) check_offset(uniform_thickness_, nullptr);
 
   const double k = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(surface.scale)).to_double();
   const double m = generation_.construction->bounds().gradient;
@@ -141,6 +169,24 @@ double WallField::thickness_at(double x, double y, double z, Worker& worker) con
   return (*worker.thickness)(worker.input)[0];
 }
 
+void WallField::check_offset(double h, const double* at) const {
+  const std::string where = at ? fmt::format(" at (x, y, z) = ({}, {}, {})", at[0], at[1], at[2]) : std::string();
+  if (!std::isfinite(h)) throw InputError(fmt::format("the network's offset h is {}{}: it must be finite", h, where));
+  if (density_ && !(std::abs(h) <= density_->offset_limit()))
+    throw InputError(fmt::format(
+        "the network's offset h = {:.6g}{} is beyond {}'s curvature limit |h| <= {:.4f}: the offset surface folds "
+        "over itself there",
+        h, where, generation_.surface.name, density_->offset_limit()));
+}
+
+WallExtent WallField::extent(const std::array<double, 2>& range) const {
+  if (!network_) return {range[0], 0.5 * range[1]};
+  const double reach = std::max(std::abs(range[0]), std::abs(range[1]));
+  // Without a density model there is no curvature limit to measure the necks by: a quarter cell.
+  const double thinnest = density_ ? 2 * (density_->offset_limit() - reach) : 0.25;
+  return {std::max(thinnest, 0.05), reach};
+}
+
 std::array<double, 2> WallField::thickness_range(const std::array<int, 3>& cells) const {
   return thickness_range({0, 0, 0}, {double(cells[0]), double(cells[1]), double(cells[2])});
 }
@@ -160,7 +206,10 @@ std::array<double, 2> WallField::thickness_range(const std::array<double, 3>& bo
       for (int l = 0; l <= steps[2]; ++l) {
         const double x = at(0, i), y = at(1, j), z = at(2, l);
         const double t = thickness_at(x, y, z, worker);
-        if (!(t > 0) || !std::isfinite(t))
+        if (network_) {
+          const double point[3] = {x, y, z};
+          check_offset(t, point);
+        } else if (!(t > 0) || !std::isfinite(t))
           throw InputError(
               fmt::format("the wall thickness is {} at (x, y, z) = ({}, {}, {}): it must be positive "
                           "everywhere in the block",
@@ -173,6 +222,7 @@ std::array<double, 2> WallField::thickness_range(const std::array<double, 3>& bo
 
 std::optional<double> WallField::uniform_density() const {
   if (graded_) return std::nullopt;
+  if (network_) return density_ ? std::optional<double>(density_->network_density(uniform_thickness_)) : std::nullopt;
   if (generation_.density) return generation_.density->sheet_density(uniform_thickness_);
   const Surface& surface = generation_.surface;
   if (!surface.from_catalog || density::density_unavailable(surface)) return std::nullopt;
@@ -181,6 +231,13 @@ std::optional<double> WallField::uniform_density() const {
 }
 
 void WallField::walls(size_t n, const double* x, const double* y, const double* z, double* w, Worker& worker) const {
+  if (network_) {
+    worker.h_plus.resize(n);
+    for (size_t i = 0; i < n; ++i) worker.h_plus[i] = thickness_at(x[i], y[i], z[i], worker);
+    offset_n_(n, x, y, z, worker.h_plus.data(), w);
+    for (size_t i = 0; i < n; ++i) w[i] *= distance_scale_;
+    return;
+  }
   worker.h_plus.resize(n);
   worker.h_minus.resize(n);
   worker.plus.resize(n);
