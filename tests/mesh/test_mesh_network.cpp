@@ -44,7 +44,7 @@ TEST_P(MeshNetwork, APartWithASkinIsClosedAndItsSkinWhole) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, MeshNetwork, ::testing::Values(NetworkCase{"gyroid"}, NetworkCase{"diamond"}),
-                         [](const ::testing::TestParamInfo<NetworkCase>& info) { return info.param.surface; });
+                         [](const ::testing::TestParamInfo<NetworkCase>& p) { return p.param.surface; });
 
 // Offsets the closed form does not cover, and a graded density (which grades sheets), are refused.
 TEST(MeshNetworkInput, OutOfRangeNetworksExitWith2AndWriteNothing) {
