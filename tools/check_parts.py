@@ -15,12 +15,10 @@ The bodies: PrusaSlicer's sample shapes (Debian prusa-slicer) and OpenSCAD examp
 """
 import os
 import re
-import subprocess
 import sys
-import time
 
-SHAPES = "/usr/share/PrusaSlicer/shapes"
-EXAMPLES = "/usr/share/openscad/examples"
+from part_checks import EXAMPLES, SHAPES, admesh, body_stl, box, prusa_info, run, summary_figures
+
 # name, source, skin (mm), cell (mm), voxel (mm), what it is
 BODIES = [
     ("sphere", f"{SHAPES}/sphere.stl", 1.2, 6, 0.2, "PrusaSlicer's sphere, 31 mm"),
@@ -30,42 +28,6 @@ BODIES = [
     ("CSG", f"{EXAMPLES}/Basics/CSG.scad", 1.0, 6, 0.2, "OpenSCAD CSG: cube, sphere, cylinders, 65 x 20 x 20 mm"),
 ]
 DENSITY = 0.3
-
-
-def run(cmd, **kw):
-    start = time.monotonic()
-    result = subprocess.run(cmd, capture_output=True, text=True, **kw)
-    print(f"[{time.monotonic() - start:6.1f} s] {' '.join(cmd[:3])} ...", file=sys.stderr)
-    return result
-
-
-def prusa_info(stl):
-    out = run(["prusa-slicer", "--info", stl]).stdout
-    info = dict(re.findall(r"^(\w+) = (.*)$", out, re.M))
-    return info
-
-
-def admesh(stl):
-    out = run(["admesh", stl]).stdout
-    def first(label):
-        m = re.search(label + r"\s*:\s*(-?[0-9.]+)", out)
-        return float(m.group(1)) if m else float("nan")
-    return {"holes": first("Facets added"), "disconnected": first("Total disconnected facets"),
-            "backwards": first("Backwards edges"), "parts": first("Number of parts")}
-
-
-def body_stl(name, source, out_dir):
-    if source.endswith(".stl"):
-        return source
-    stl = os.path.join(out_dir, name + "_body.stl")
-    r = run(["openscad", "-o", stl, source])
-    if r.returncode != 0:
-        raise RuntimeError(f"openscad {source}: {r.stderr}")
-    return stl
-
-
-def box(info):
-    return [(float(info[f"min_{a}"]), float(info[f"max_{a}"])) for a in "xyz"]
 
 
 def main():
@@ -92,13 +54,11 @@ def main():
         a = admesh(part)
         info, body_info = prusa_info(part), prusa_info(body)
         side = max(max(abs(p[0] - b[0]), abs(p[1] - b[1])) for p, b in zip(box(info), box(body_info)))
-        volume_error = float(re.search(r"rho V_core = [0-9.e+]+ mm\^3 \(([-+0-9.]+)%\)", summary).group(1))
-        thinnest = float(re.search(r"measured: thinnest ([0-9.e+-]+) mm", summary).group(1))
-        lattice = float(re.search(r"lattice ([0-9.]+) of the core measured", summary).group(1))
-        triangles = int(re.search(r"mesh:\s+(\d+) triangles", summary).group(1))
-        seconds = float(re.search(r"time:\s+([0-9.]+) s", summary).group(1))
+        f = summary_figures(summary)
+        volume_error, thinnest, lattice = f["volume_error"], f["thinnest"], f["lattice"]
+        triangles, seconds = f["triangles"], f["seconds"]
         checks = {
-            "admesh clean": a["holes"] == 0 and a["disconnected"] == 0 and a["backwards"] == 0,
+            "admesh clean": a["added"] == 0 and a["disconnected"] == 0 and a["backwards"] == 0,
             "manifold": info.get("manifold") == "yes",
             "box within a voxel": side <= voxel,
             "volume within 1%": abs(volume_error) <= 1.0,
@@ -108,7 +68,7 @@ def main():
             if not ok:
                 failures.append(f"{name}: {check} failed (admesh {a}, manifold {info.get('manifold')}, box "
                                 f"{side:.3g} mm, volume {volume_error:+.2f}%, skin {thinnest:.3g} mm)")
-        rows.append(f"| {what} | {skin} | {cell} | {voxel} | {triangles} | {a['holes']:.0f} / {a['disconnected']:.0f}"
+        rows.append(f"| {what} | {skin} | {cell} | {voxel} | {triangles} | {a['added']:.0f} / {a['disconnected']:.0f}"
                     f" / {a['backwards']:.0f} / {a['parts']:.0f} | {info.get('manifold')} | {side:.3f} | "
                     f"{lattice:.4f} | {volume_error:+.2f}% | {thinnest:.3f} | {seconds:.1f} |")
     gcode = os.path.join(out_dir, "parts.gcode")

@@ -274,14 +274,16 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
     const std::string stage =
         tiles.size() > 1 ? tile_progress(t - first, last - first, seconds_since(start)) + ": " : std::string();
     auto step = std::chrono::steady_clock::now();
-    SampledBand band = tiles.size() == 1
-                           ? sample_band(field, domain, grid, m.extent.reach, m.field_bound_used, threads_for(s),
-                                         [&](double f) { progress(stage + "sampling the narrow band", f); })
-                           : sample_band(
-                                 field, domain, grid, m.extent.reach, m.field_bound_used, threads_for(s),
-                                 [&](double f) { progress(stage + "sampling the narrow band", f); }, tile.blocks);
+    SampledBand band =
+        tiles.size() == 1
+            ? sample_band(field, domain, grid, m.extent.reach, m.field_bound_used, threads_for(s),
+                          [&](double f) { progress(stage + "sampling the narrow band", f); })
+            : sample_band(
+                  field, domain, grid, m.extent.reach, m.field_bound_used, threads_for(s),
+                  [&](double f) { progress(stage + "sampling the narrow band", f); }, tile.blocks, tile.owned);
     sample_seconds += seconds_since(step);
     m.wall_samples += band.wall_samples;
+    m.tally += band.tally;
     m.skipped_voxels += band.skipped_voxels;
     if (m.body) m.body->deep_blocks += band.deep_blocks;
 
@@ -605,7 +607,8 @@ std::string format_body(const MeshSummary& m) {
     s += "  skin:       none (--skin 0): the lattice is cut flush by the body\n";
   }
   const double lattice = (m.volume - b.skin_volume) / b.core_volume;
-  s += fmt::format("  density:    lattice {:.4f} of the core measured", lattice);
+  s += fmt::format("  density:    lattice {:.4f} of the core measured, {:.4f} sampled on its voxels", lattice,
+                   m.tally.core_solid_voxels / m.tally.core_voxels);
   if (b.expected_density) {
     const double expected = b.skin_volume + *b.expected_density * b.core_volume;
     s += fmt::format(" ({} {:.4f}); part {:.6g} mm^3 against V_skin + rho V_core = {:.6g} mm^3 ({:+.2f}%)",
@@ -724,9 +727,10 @@ std::string format_summary(const MeshSummary& m) {
                                                 m.format == MeshFormat::Ply ? ", and the seams' points" : "")
                                   : fmt::format("{} held whole, seams welded", format_name(m.format)));
   if (!m.body)
-    s += fmt::format("  volume:     {:.6g} mm^3, relative density {:.4f} (box {:.6g} mm^3{})\n", m.volume,
-                     m.volume / m.box_volume, m.box_volume,
-                     m.requested_density ? fmt::format("; --density {}", *m.requested_density) : std::string());
+    s += fmt::format(
+        "  volume:     {:.6g} mm^3, relative density {:.4f}, {:.4f} sampled on the voxels (box {:.6g} mm^3{})\n",
+        m.volume, m.volume / m.box_volume, m.tally.core_solid_voxels / m.tally.core_voxels, m.box_volume,
+        m.requested_density ? fmt::format("; --density {}", *m.requested_density) : std::string());
   if (m.streamed) {
     s += fmt::format(
         "  pieces:     not counted across tiles; {} small pieces inside single tiles dropped ({:.3g} mm^3)\n",

@@ -7,6 +7,7 @@
 
 #include "mesh/mesh_audit.h"
 #include "mesh/mesh_files.h"
+#include "mesh/narrow_band.h"
 #include "mesh/skin_measure.h"
 #include "mesh/triangle_mesh.h"
 #include "mesh/wall_field.h"
@@ -105,6 +106,7 @@ struct MeshSummary {
   std::optional<double> requested_density;  // --density R
   PieceReport pieces;
   AuditReport audit;  // the mesh as written, judged before it is kept
+  VoxelTally tally;   // volumes counted on the voxels (narrow_band.h)
   std::string compile_flags;
   std::vector<StageTime> stages;
 };

@@ -24,6 +24,7 @@ struct BlockResult {
   BandBlock block;
   size_t wall_samples = 0, skipped_voxels = 0;
   size_t inside = 0;  // voxels stored with a negative value
+  VoxelTally tally;
   bool any = false, deep = false;
   // Solid throughout and nowhere near the surface: every voxel was stored, all inside.
   bool solid() const { return !any && inside == static_cast<size_t>(kBlockVoxels); }
@@ -68,6 +69,7 @@ class BlockSampler {
       d_.fill(-1e300);
       out.deep = true;
     }
+    solid_.fill(0);
     out.block.values.assign(kBlockVoxels, background_);
     out.block.active.assign(kBlockVoxels, 0);
     // The whole block far from F = 0?
@@ -76,6 +78,8 @@ class BlockSampler {
     const double radius = 0.5 * std::sqrt(3.0) * (kBlock - 1) * v_;
     if (const Far far = far_from_walls(c, radius); far != Far::No) {
       out.skipped_voxels = kBlockVoxels;
+      if (far == Far::Inside) solid_.fill(1);
+      tally(place, out);
       if (far == Far::Inside) {
         for (int i = 0; i < kBlockVoxels; ++i) store(out, static_cast<size_t>(i), inside_walls(d_[i]));
       } else if (skin_ > 0 && place == BlockPlace::Mixed) {
@@ -104,6 +108,7 @@ class BlockSampler {
                 const int slot = block_offset(i, j, l);
                 const double d = d_[static_cast<size_t>(slot)];
                 if (far == Far::Inside) {
+                  solid_[static_cast<size_t>(slot)] = 1;
                   store(out, static_cast<size_t>(slot), inside_walls(d));
                   continue;
                 }
@@ -120,11 +125,13 @@ class BlockSampler {
         }
     const size_t n = x_.size();
     out.wall_samples = n;
-    if (n == 0) return;
     w_.resize(n);
-    field_.walls(n, x_.data(), y_.data(), z_.data(), w_.data(), worker_);
-    for (size_t s = 0; s < n; ++s)
+    if (n > 0) field_.walls(n, x_.data(), y_.data(), z_.data(), w_.data(), worker_);
+    for (size_t s = 0; s < n; ++s) {
+      solid_[static_cast<size_t>(slot_[s])] = w_[s] < 0;
       store(out, static_cast<size_t>(slot_[s]), part_value(dq_[s], w_[s] / v_, skin_, fillet_));
+    }
+    tally(place, out);
   }
 
  private:
@@ -156,6 +163,22 @@ class BlockSampler {
     }
   }
 
+  // The block's share of the body's and the core's volumes, and of the lattice in the core: voxel by
+  // voxel, a voxel at signed distance d (voxels) being min(max(1/2 - d, 0), 1) inside.
+  void tally(BlockPlace place, BlockResult& out) const {
+    VoxelTally& t = out.tally;
+    const double core_shift = skin_ > 0 ? skin_ : 0;
+    for (size_t i = 0; i < static_cast<size_t>(kBlockVoxels); ++i) {
+      const double d = d_[i];
+      t.body += std::clamp(0.5 - d, 0.0, 1.0);
+      t.core += std::clamp(0.5 - (d + core_shift), 0.0, 1.0);
+      if (place == BlockPlace::Deep || d + core_shift < 0) {
+        ++t.core_voxels;
+        t.core_solid_voxels += solid_[i];
+      }
+    }
+  }
+
   const WallField& field_;
   WallField::Worker worker_;
   std::unique_ptr<DomainReader> reader_;
@@ -164,6 +187,7 @@ class BlockSampler {
   bool network_ = false;
   bool plant_shallow_skin_ = false, plant_dropped_blocks_ = false;
   std::array<double, kBlockVoxels> d_{};
+  std::array<uint8_t, kBlockVoxels> solid_{};  // the lattice alone is solid there (w < 0)
   std::vector<double> x_, y_, z_, dq_, w_;
   std::vector<int> slot_;
 };
@@ -172,12 +196,13 @@ class BlockSampler {
 
 SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress) {
-  return sample_band(field, domain, grid, reach, use_field_bound, threads, progress, domain.block_range());
+  return sample_band(field, domain, grid, reach, use_field_bound, threads, progress, domain.block_range(),
+                     domain.block_range());
 }
 
 SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress,
-                        const VoxelBox& blocks) {
+                        const VoxelBox& blocks, const VoxelBox& owned) {
   SampledBand band;
   std::vector<std::array<int, 3>> origins;
   const auto& [first, last] = blocks;
@@ -225,6 +250,9 @@ SampledBand sample_band(const WallField& field, const Domain& domain, const Voxe
     band.wall_samples += results[b].wall_samples;
     band.skipped_voxels += results[b].skipped_voxels;
     band.deep_blocks += results[b].deep ? 1 : 0;
+    bool in_owned = true;
+    for (size_t a = 0; a < 3; ++a) in_owned = in_owned && origins[b][a] >= owned[0][a] && origins[b][a] < owned[1][a];
+    if (in_owned) band.tally += results[b].tally;
     if (results[b].any) {
       band.blocks.push_back(std::move(results[b].block));
     } else if (results[b].solid() && !drop_solid) {

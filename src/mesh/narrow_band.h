@@ -43,6 +43,21 @@ struct BandBlock {
   bool solid = false;           // every voxel at least 2 voxels inside: -background throughout
 };
 
+// Volumes counted voxel by voxel (in voxels), over the blocks a tile owns: the domain (the body or
+// the box), the core (inside the skin; the domain without one), and the core's voxels where the
+// lattice alone is solid, a quadrature of the lattice's share of the core that needs no mesh.
+struct VoxelTally {
+  double body = 0, core = 0;
+  double core_voxels = 0, core_solid_voxels = 0;
+  VoxelTally& operator+=(const VoxelTally& o) {
+    body += o.body;
+    core += o.core;
+    core_voxels += o.core_voxels;
+    core_solid_voxels += o.core_solid_voxels;
+    return *this;
+  }
+};
+
 struct SampledBand {
   std::vector<BandBlock> blocks;  // those with an active voxel, and the solid ones, in a fixed order
   float background = 3.0f;
@@ -50,17 +65,19 @@ struct SampledBand {
   size_t wall_samples = 0;    // voxels where the walls were evaluated
   size_t skipped_voxels = 0;  // voxels ruled out by F at the centre of their block or sub-block
   size_t deep_blocks = 0;     // blocks inside the core, beyond the skin: the lattice alone
+  VoxelTally tally;
 };
 
-// Samples the band of the part that `domain` bounds with `threads` threads; `progress(fraction)` is
-// called from the calling thread. With use_field_bound, blocks whose F value rules out any wall nearby
-// are not evaluated; that needs the header's bound M on |grad F| to hold in the whole block (periodic
-// surfaces, or a single cell). `reach`: how far from F = 0 the solid's surface gets (WallExtent).
-SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
-                        bool use_field_bound, int threads, const std::function<void(double)>& progress);
-// The same over the blocks whose first voxel lies in `blocks` (multiples of kBlock): one tile.
-SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
-                        bool use_field_bound, int threads, const std::function<void(double)>& progress,
-                        const VoxelBox& blocks);
+  // Samples the band of the part that `domain` bounds with `threads` threads; `progress(fraction)` is
+  // called from the calling thread. With use_field_bound, blocks whose F value rules out any wall nearby
+  // are not evaluated; that needs the header's bound M on |grad F| to hold in the whole block (periodic
+  // surfaces, or a single cell). `reach`: how far from F = 0 the solid's surface gets (WallExtent).
+  SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
+                          bool use_field_bound, int threads, const std::function<void(double)>& progress);
+  // The same over the blocks whose first voxel lies in `blocks` (multiples of kBlock): one tile, which
+  // owns the blocks in `owned` (the tally counts those).
+  SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
+                          bool use_field_bound, int threads, const std::function<void(double)>& progress,
+                          const VoxelBox& blocks, const VoxelBox& owned);
 
 }  // namespace offsetgen::mesh
