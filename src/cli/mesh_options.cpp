@@ -83,7 +83,8 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->add_option("-j,--threads", o.threads, "Sampling threads (default: one per hardware thread)");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
   cmd->footer(
-      "Exit status: 0 success, 2 usage or input error (no file is written then), 3 internal error.\n"
+      "Exit status: 0 success, 2 usage or input error (no file is written then), 3 internal error, 130/143\n"
+      "interrupted by SIGINT/SIGTERM (the unfinished file removed, an existing -o unchanged).\n"
       "Examples: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --body part.stl --skin 1.2 --cell-size 4 -o filled.stl\n"
