@@ -5,11 +5,15 @@
 
 #include <fmt/format.h>
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 
 namespace offsetgen {
+
+// The handler of support/interrupt_cleanup.cpp exits with 128 + the signal.
+static_assert(kExitInterrupted == 128 + SIGINT && kExitTerminated == 128 + SIGTERM);
 namespace {
 
 std::string quote(const std::string& arg) {

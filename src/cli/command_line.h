@@ -7,7 +7,16 @@
 
 namespace offsetgen {
 
-enum ExitCode { kExitOk = 0, kExitCheckFailed = 1, kExitUsage = 2, kExitInternal = 3 };
+// 130 and 143 (128 + SIGINT, 128 + SIGTERM, the shell's convention) are the exits of a run ended by
+// Ctrl-C or a scheduler's SIGTERM, after its unfinished files are removed (support/interrupt_cleanup.h).
+enum ExitCode {
+  kExitOk = 0,
+  kExitCheckFailed = 1,
+  kExitUsage = 2,
+  kExitInternal = 3,
+  kExitInterrupted = 130,
+  kExitTerminated = 143
+};
 
 // "offsetgen generate --surface gyroid ..." with shell quoting where needed. Output locations
 // (-o, --out-dir) are reduced to file names so the same inputs give the same bytes in any directory.

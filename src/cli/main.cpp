@@ -15,6 +15,7 @@
 #include "cli/step_options.h"
 #endif
 #include "emit/backend.h"
+#include "support/interrupt_cleanup.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -45,7 +46,8 @@ int main(int argc, char** argv) {
                                    GINACLIB_MINOR_VERSION, GINACLIB_MICRO_VERSION));
   app.require_subcommand(1);
   app.footer(
-      "Exit status: 0 success, 1 a check failed, 2 usage or input error, 3 internal error.\n"
+      "Exit status: 0 success, 1 a check failed, 2 usage or input error, 3 internal error, 130/143 interrupted\n"
+      "by SIGINT/SIGTERM (the unfinished files removed).\n"
       "Example: offsetgen generate --surface gyroid --order 4 --lang c -o gyroid_o4.h");
 
   GenerateOptions generate;
@@ -85,6 +87,9 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitUsage;
   }
 
+  // Ctrl-C or SIGTERM removes the unfinished files and scratch directories ("offsetgen generate: ...").
+  // mesh and step exec their own executables, which install the same.
+  install_interrupt_cleanup(("offsetgen " + app.get_subcommands().front()->get_name()).c_str());
   const int status = run_reporting_errors([&] {
     if (app.got_subcommand("generate")) return run_generate(generate, args);
     if (app.got_subcommand("list")) return run_list(list);

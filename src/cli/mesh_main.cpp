@@ -4,6 +4,7 @@
 #include "cli/command_line.h"
 #include "cli/mesh_command.h"
 #include "cli/mesh_options.h"
+#include "support/interrupt_cleanup.h"
 
 #include <CLI/CLI.hpp>
 
@@ -19,5 +20,6 @@ int main(int argc, char** argv) {
     int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsage;
   }
+  install_interrupt_cleanup("offsetgen mesh");  // Ctrl-C or SIGTERM removes the unfinished output
   return run_reporting_errors([&] { return run_mesh_command(mesh); });
 }

@@ -89,7 +89,8 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
   cmd->footer(
       "Exit status: 0 success, 2 usage or input error (no file is written then), 3 the part failed its own check\n"
       "(open or non-manifold edges, degenerate facets, a skin thinner than --skin less a voxel; nothing is kept),\n"
-      "out of memory or disk, or an internal error.\n"
+      "out of memory or disk, or an internal error, 130/143 interrupted by SIGINT/SIGTERM (the unfinished file\n"
+      "removed, an existing -o unchanged).\n"
       "Examples: offsetgen mesh --surface gyroid --thickness 0.1 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --body part.stl --skin 1.2 --cell-size 4 -o filled.stl\n"

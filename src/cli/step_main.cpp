@@ -4,6 +4,7 @@
 #include "cli/command_line.h"
 #include "cli/step_command.h"
 #include "cli/step_options.h"
+#include "support/interrupt_cleanup.h"
 #include "surfaces/input_error.h"
 
 #include <malloc.h>
@@ -36,6 +37,8 @@ int main(int argc, char** argv) {
     int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsage;
   }
+  // Ctrl-C or SIGTERM removes the unfinished STEP file and the scratch directories.
+  install_interrupt_cleanup(app.got_subcommand("check") ? "offsetgen check" : "offsetgen step");
   return run_reporting_errors([&] {
     try {
       if (app.got_subcommand("check")) {

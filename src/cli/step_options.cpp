@@ -37,7 +37,8 @@ void add_step_command(CLI::App& app, StepOptions& o) {
   cmd->footer(
       "Exit status: 0 success, 1 a check failed (deviation beyond --tolerance, volume, or the solid is not\n"
       "valid; no file is written), 2 usage or input error, 3 internal error (or offsetgen built without\n"
-      "OpenCASCADE). `offsetgen check part.step` reads a written file back and measures it again.\n"
+      "OpenCASCADE), 130/143 interrupted by SIGINT/SIGTERM (nothing written, an existing -o unchanged).\n"
+      "`offsetgen check part.step` reads a written file back and measures it again.\n"
       "Examples:\n"
       "  offsetgen step --surface schwarzp --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o p.step\n"
       "  offsetgen step --surface gyroid --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o g.step\n"

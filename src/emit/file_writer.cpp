@@ -1,5 +1,6 @@
 #include "emit/file_writer.h"
 
+#include "support/interrupt_cleanup.h"
 #include "surfaces/input_error.h"
 
 #include <fmt/format.h>
@@ -121,6 +122,8 @@ bool write_by_rename(const std::string& given, const Destination& d, const std::
   std::string tmp = (directory_of(d.path) / ("." + d.path.filename().string() + ".tmpXXXXXX")).string();
   const int fd = ::mkstemp(tmp.data());
   if (fd < 0) fail(given, std::strerror(errno));
+  // Released on every way out, after the rename or the unlink.
+  const RemovedOnInterrupt tracked = RemovedOnInterrupt::file(tmp, given, d.exists);
   auto abandon = [&](int err) {
     ::close(fd);
     ::unlink(tmp.c_str());
@@ -187,10 +190,17 @@ StreamedFile::StreamedFile(const std::string& path) : path_(path) {
   temporary_ = (directory_of(d.path) / ("." + d.path.filename().string() + ".tmpXXXXXX")).string();
   fd_ = ::mkstemp(temporary_.data());
   if (fd_ < 0) fail(path, std::strerror(errno));
+  tracked_ = RemovedOnInterrupt::file(temporary_, path, d.exists);
   const mode_t mode = d.exists ? (d.st.st_mode & 07777) : (0666 & ~current_umask());
-  if (::fchmod(fd_, mode) != 0) fail(path, std::strerror(errno));
+  if (::fchmod(fd_, mode) != 0) {
+    const int err = errno;  // the destructor does not run for a constructor that throws
+    ::close(fd_);
+    ::unlink(temporary_.c_str());
+    fail(path, std::strerror(err));
+  }
 }
 
+// tracked_ is released after this body, so after the unlink.
 StreamedFile::~StreamedFile() {
   if (fd_ >= 0) {
     ::close(fd_);
@@ -227,8 +237,10 @@ void StreamedFile::commit() {
   if (::close(fd) != 0 || std::rename(temporary_.c_str(), target_.c_str()) != 0) {
     const int err = errno;
     ::unlink(temporary_.c_str());
+    tracked_.release();
     fail(path_, std::strerror(err));
   }
+  tracked_.release();
 }
 
 void write_file(const std::string& path, const std::string& content) {

@@ -13,6 +13,8 @@
 //     systems do not rebuild dependants for nothing.
 #pragma once
 
+#include "support/interrupt_cleanup.h"
+
 #include <string>
 #include <vector>
 
@@ -28,7 +30,8 @@ void write_file(const std::string& path, const std::string& content);
 
 // A large file written in pieces (a mesh streamed tile by tile): to a temporary file beside `path`,
 // renamed over it by commit(), so a reader never sees half a file and a failed run leaves nothing
-// (the destructor removes the temporary). Only regular files, as above; an existing file's mode is
+// (the destructor removes the temporary; so does a SIGINT or SIGTERM where the executable installed
+// install_interrupt_cleanup). Only regular files, as above; an existing file's mode is
 // kept. Errors (a full disk among them) throw std::runtime_error naming the path and the reason.
 class StreamedFile {
  public:
@@ -46,6 +49,7 @@ class StreamedFile {
   std::string path_, target_, temporary_;
   int fd_ = -1;
   size_t size_ = 0;
+  RemovedOnInterrupt tracked_;  // the temporary, for a SIGINT or SIGTERM before commit()
 };
 
 // Throws std::runtime_error if `path` could not be written by write_file_if_changed (missing or

@@ -54,6 +54,7 @@ ScratchDir::ScratchDir(const std::string& stem) {
   if (::mkdtemp(pattern.data()) == nullptr)
     throw std::runtime_error("cannot create a scratch directory in " + fs::temp_directory_path().string());
   path_ = pattern;
+  if (std::getenv("OFFSETGEN_CHECK_KEEP") == nullptr) tracked_ = RemovedOnInterrupt::directory(path_.string());
 }
 
 ScratchDir::~ScratchDir() {

@@ -1,6 +1,8 @@
 // Running external programs (compilers, glslangValidator, the plot script) without a shell.
 #pragma once
 
+#include "support/interrupt_cleanup.h"
+
 #include <array>
 #include <filesystem>
 #include <string>
@@ -27,7 +29,8 @@ std::string find_python();
 
 // A fresh directory under the system's temporary directory, removed with everything in it when this
 // goes out of scope (kept when $OFFSETGEN_CHECK_KEEP is set, for debugging). Throws std::runtime_error
-// when it cannot be created.
+// when it cannot be created. A SIGINT or SIGTERM removes it too, where the executable installed
+// install_interrupt_cleanup.
 class ScratchDir {
  public:
   explicit ScratchDir(const std::string& stem = "offsetgen-check");
@@ -38,6 +41,7 @@ class ScratchDir {
 
  private:
   std::filesystem::path path_;
+  RemovedOnInterrupt tracked_;  // released after the destructor's removal
 };
 
 // Runs `command` followed by two file names: one holding `inputs` as float64, 4 per point, and one the

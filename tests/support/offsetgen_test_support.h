@@ -3,6 +3,8 @@
 // Metadata of generated files: use run::parse_metadata / run::read_metadata directly.
 #pragma once
 
+#include <sys/types.h>
+
 #include <string>
 #include <vector>
 
@@ -22,6 +24,39 @@ CommandResult run_shell(const std::string& command_line);
 // The built offsetgen with `args`: as an argument vector, or as one shell-quoted string.
 CommandResult run_offsetgen(const std::vector<std::string>& args);
 CommandResult run_offsetgen(const std::string& args);
+
+// A program started in the background, for tests that signal it while it runs. It gets a process
+// group of its own, as a shell's job does, so that signal_group() reaches it and the compilers it
+// starts, as Ctrl-C and Slurm's SIGTERM do; SIGINT and SIGTERM start at their default actions (a test
+// run from a background job would otherwise pass SIGINT on ignored). Stdout and stderr go to `log`;
+// `environment` ("NAME=value") adds to or replaces this process's. Killed and reaped, if still
+// running, when this goes out of scope.
+class BackgroundCommand {
+ public:
+  BackgroundCommand(const std::vector<std::string>& argv, const std::string& log,
+                    const std::vector<std::string>& environment = {});
+  ~BackgroundCommand();
+  BackgroundCommand(const BackgroundCommand&) = delete;
+  BackgroundCommand& operator=(const BackgroundCommand&) = delete;
+
+  bool running();
+  void signal_group(int signo);
+  CommandResult wait();  // exit status or 128 + signal; output: the log
+
+ private:
+  pid_t pid_ = -1;
+  int status_ = 0;
+  bool reaped_ = false;
+  std::string log_;
+};
+
+// The name of the first entry of `dir` that starts with `prefix`, polled for while `command` runs;
+// "" when the command ends or `seconds` pass first.
+std::string wait_for_entry(const std::string& dir, const std::string& prefix, BackgroundCommand& command,
+                           double seconds);
+
+// The names in `dir` that start with `prefix`.
+std::vector<std::string> entries_starting_with(const std::string& dir, const std::string& prefix);
 
 std::string offsetgen_executable();
 std::string source_dir();

@@ -6,7 +6,7 @@ import pathlib
 import re
 import sys
 
-# Lowest first. support/ builds what libraries Debian ships only shared (fmt). field/ and lowering/ are the machinery the offset constructions lower themselves
+# Lowest first. support/ builds what libraries Debian ships only shared (fmt), and holds the interrupt handler. field/ and lowering/ are the machinery the offset constructions lower themselves
 # with, so offset/ sits above them; run/ turns generated files into code for check, mesh and step.
 LAYERS = ["support", "surfaces", "body", "field", "lowering", "offset", "density", "emit", "validate",
           "pipeline", "run", "check", "mesh", "step", "cli", "dev"]
