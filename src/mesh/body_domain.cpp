@@ -2,56 +2,52 @@
 
 #include "mesh/narrow_band.h"
 
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/Interpolation.h>
-#include <openvdb/tools/MeshToVolume.h>
-#include <openvdb/tools/VolumeToMesh.h>
-
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace offsetgen::mesh {
 namespace {
 
-constexpr float kOutsideWidth = 3.0f;  // voxels of band outside the body (>= the sampler's margin of 2)
+constexpr double kOutsideWidth = 3.0;  // voxels of band outside the body (>= the sampler's margin of 2)
 
 int align_down(int i) { return i >= 0 ? (i / kBlock) * kBlock : -((-i + kBlock - 1) / kBlock) * kBlock; }
 
+// The body's points in voxel index coordinates: voxel i's centre is index i.
+std::vector<Vec3> index_points(const body::BodyMesh& body, const VoxelFrame& frame) {
+  std::vector<Vec3> points;
+  points.reserve(body.points.size());
+  for (const auto& p : body.points) {
+    Vec3 q{};
+    for (size_t a = 0; a < 3; ++a) q[a] = (p[a] - frame.origin[a]) / frame.voxel - 0.5;
+    points.push_back(q);
+  }
+  return points;
+}
+
+// Depths inside the skin where the part is solid whatever the exact depth, one voxel clear of the
+// values that matter: the outer surface's band (3 voxels, the values clamped there) and the core's
+// surface at the skin's depth with its band and fillet (domain.h).
+BodyDistance::Interval free_depths(double skin, double fillet) { return {4, skin - fillet - 4}; }
+
 class BodyReader : public DomainReader {
  public:
-  explicit BodyReader(const openvdb::FloatGrid& grid) : accessor_(grid.getConstAccessor()) {}
+  explicit BodyReader(const BodyDistance& distance) : distance_(distance), query_(distance) {}
 
   BlockPlace read_block(const std::array<int, 3>& origin, double margin, double* d) override {
-    const openvdb::Coord corner(origin[0], origin[1], origin[2]);
-    const auto* leaf = accessor_.probeConstLeaf(corner);
-    if (leaf == nullptr) {
-      // A tile or the background: the sign flood fill gave it +outside or -inside width.
-      return accessor_.getValue(corner) > 0 ? BlockPlace::Outside : BlockPlace::Deep;
+    if (!distance_.block(origin, d, query_)) {
+      // No facet within the band: the whole block is on one side, beyond the skin if inside.
+      const Vec3 corner = {double(origin[0]), double(origin[1]), double(origin[2])};
+      return distance_.inside(corner, query_) ? BlockPlace::Deep : BlockPlace::Outside;
     }
-    static_assert(openvdb::FloatTree::LeafNodeType::DIM == kBlock, "blocks are OpenVDB leaves");
-    double nearest = HUGE_VAL;
-    for (openvdb::Index i = 0; i < static_cast<openvdb::Index>(kBlockVoxels); ++i) {
-      d[i] = leaf->getValue(i);  // the leaf's linear order is the block order
-      nearest = std::min(nearest, d[i]);
-    }
+    const double nearest = *std::min_element(d, d + kBlockVoxels);
     return nearest >= margin ? BlockPlace::Outside : BlockPlace::Mixed;
   }
 
  private:
-  openvdb::FloatGrid::ConstAccessor accessor_;
+  const BodyDistance& distance_;
+  BodyDistance::Query query_;
 };
-
-double mesh_volume(const std::vector<openvdb::Vec3s>& points, const std::vector<openvdb::Vec3I>& triangles,
-                   const std::vector<openvdb::Vec4I>& quads) {
-  auto tet = [&](openvdb::Index a, openvdb::Index b, openvdb::Index c) {
-    const openvdb::Vec3d p(points[a]), q(points[b]), r(points[c]);
-    return p.dot(q.cross(r)) / 6.0;
-  };
-  double v = 0;
-  for (const auto& t : triangles) v += tet(t[0], t[1], t[2]);
-  for (const auto& q : quads) v += tet(q[0], q[1], q[2]) + tet(q[0], q[2], q[3]);
-  return std::abs(v);
-}
 
 }  // namespace
 
@@ -60,71 +56,41 @@ std::array<double, 3> VoxelFrame::centre_mm(const std::array<double, 3>& index) 
           origin[2] + (index[2] + 0.5) * voxel};
 }
 
-struct BodyDomain::Grid {
-  openvdb::FloatGrid::Ptr grid;
-};
-
 BodyDomain::BodyDomain(const body::BodyMesh& body, const VoxelFrame& frame, double skin_voxels, double fillet_voxels)
-    : grid_(std::make_unique<Grid>()), frame_(frame) {
-  openvdb::initialize();
+    : frame_(frame),
+      // Deep enough inside for the core's surface (d = -skin), its fillet and the sampler's band.
+      distance_(index_points(body, frame), body.triangles, skin_voxels + fillet_voxels + kOutsideWidth + 1,
+                kOutsideWidth, free_depths(skin_voxels, fillet_voxels)) {
   skin = skin_voxels;
   fillet = fillet_voxels;
-  // Index space: voxel i's centre is index i.
-  std::vector<openvdb::Vec3s> points;
-  points.reserve(body.points.size());
-  std::array<double, 3> lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  for (const auto& p : body.points) {
-    openvdb::Vec3s q;
-    for (int a = 0; a < 3; ++a) {
-      const double index = (p[static_cast<size_t>(a)] - frame.origin[static_cast<size_t>(a)]) / frame.voxel - 0.5;
-      q[a] = static_cast<float>(index);
-      lo[static_cast<size_t>(a)] = std::min(lo[static_cast<size_t>(a)], index);
-      hi[static_cast<size_t>(a)] = std::max(hi[static_cast<size_t>(a)], index);
-    }
-    points.push_back(q);
-  }
-  std::vector<openvdb::Vec3I> triangles;
-  triangles.reserve(body.triangles.size());
-  for (const auto& t : body.triangles) triangles.emplace_back(t[0], t[1], t[2]);
-  const openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points, triangles);
-  // Deep enough inside for the core's surface (d = -skin), its fillet and the sampler's band.
-  inside_width_ = skin_voxels + fillet_voxels + kOutsideWidth + 1;
-  const auto transform = openvdb::math::Transform::createLinearTransform(1.0);
-  grid_->grid = openvdb::tools::meshToVolume<openvdb::FloatGrid>(adapter, *transform, kOutsideWidth,
-                                                                 static_cast<float>(inside_width_));
+  const auto box = body::bounding_box(body);
   for (size_t a = 0; a < 3; ++a) {
-    range_[0][a] = align_down(static_cast<int>(std::floor(lo[a])) - 4);
-    range_[1][a] = align_down(static_cast<int>(std::ceil(hi[a])) + 4) + kBlock;
+    const double lo = (box[0][a] - frame.origin[a]) / frame.voxel - 0.5;
+    const double hi = (box[1][a] - frame.origin[a]) / frame.voxel - 0.5;
+    range_[0][a] = align_down(static_cast<int>(std::floor(lo)) - 4);
+    range_[1][a] = align_down(static_cast<int>(std::ceil(hi)) + 4) + kBlock;
   }
 }
 
-BodyDomain::~BodyDomain() = default;
+std::unique_ptr<DomainReader> BodyDomain::reader() const { return std::make_unique<BodyReader>(distance_); }
 
-std::unique_ptr<DomainReader> BodyDomain::reader() const { return std::make_unique<BodyReader>(*grid_->grid); }
-
-double BodyDomain::volume_below(double level) const {
-  std::vector<openvdb::Vec3s> points;
-  std::vector<openvdb::Vec3I> triangles;
-  std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*grid_->grid, points, triangles, quads, level, 0.0);
-  return mesh_volume(points, triangles, quads) * std::pow(frame_.voxel, 3);
-}
-
-std::vector<double> BodyDomain::distances(const std::vector<std::array<float, 3>>& points_mm) const {
-  std::vector<double> d;
-  d.reserve(points_mm.size());
-  const auto accessor = grid_->grid->getConstAccessor();
-  for (const auto& p : points_mm) {
-    openvdb::Vec3d index;
-    for (int a = 0; a < 3; ++a)
-      index[a] = (double(p[static_cast<size_t>(a)]) - frame_.origin[static_cast<size_t>(a)]) / frame_.voxel - 0.5;
-    d.push_back(openvdb::tools::BoxSampler::sample(accessor, index));
-  }
+std::vector<double> BodyDomain::distances(const std::vector<std::array<float, 3>>& points_mm, int threads) const {
+  std::vector<double> d(points_mm.size());
+  const size_t count = std::max(1, threads), chunk = (points_mm.size() + count - 1) / count;
+  auto work = [&](size_t first, size_t last) {
+    BodyDistance::Query query(distance_);
+    std::vector<Vec3> index(last - first);
+    for (size_t i = first; i < last; ++i)
+      for (size_t a = 0; a < 3; ++a)
+        index[i - first][a] = (double(points_mm[i][a]) - frame_.origin[a]) / frame_.voxel - 0.5;
+    distance_.distances(index, d.data() + first, query);
+  };
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < count; ++t)
+    pool.emplace_back(work, std::min(points_mm.size(), t * chunk), std::min(points_mm.size(), (t + 1) * chunk));
+  work(0, std::min(points_mm.size(), chunk));
+  for (auto& t : pool) t.join();
   return d;
 }
-
-size_t BodyDomain::band_voxels() const { return grid_->grid->activeVoxelCount(); }
-
-size_t BodyDomain::memory_bytes() const { return grid_->grid->memUsage(); }
 
 }  // namespace offsetgen::mesh

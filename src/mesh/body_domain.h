@@ -1,9 +1,11 @@
-// A body (the user's part) as the domain of domain.h: its signed distance d, built by OpenVDB's
-// meshToVolume in a narrow band on the lattice's voxels. Insideness comes from OpenVDB's sign flood
-// fill from the exterior, which ignores the facets' orientation and survives self-intersections.
+// A body (the user's part) as the domain of domain.h: its signed distance d, computed block by block as
+// the sampler asks for it (body_distance.h): exact within a band that reaches skin + fillet + 4 voxels
+// inside and 3 outside, the inside by winding number. Nothing of the size of the body's volume or band
+// is held, so a body of any size is meshed in the memory of its facets and one tile.
 #pragma once
 
 #include "body/body_mesh.h"
+#include "mesh/body_distance.h"
 #include "mesh/domain.h"
 
 #include <array>
@@ -21,29 +23,22 @@ struct VoxelFrame {
 
 class BodyDomain : public Domain {
  public:
-  // skin and fillet in voxels. The band reaches skin + fillet + 3 voxels inside, 3 outside.
+  // skin and fillet in voxels.
   BodyDomain(const body::BodyMesh& body, const VoxelFrame& frame, double skin, double fillet);
-  ~BodyDomain() override;
-  BodyDomain(const BodyDomain&) = delete;
-  BodyDomain& operator=(const BodyDomain&) = delete;
 
   std::unique_ptr<DomainReader> reader() const override;
   std::array<std::array<int, 3>, 2> block_range() const override { return range_; }
   double lattice_margin() const override { return 2.0; }
 
-  // The volume where d < level (voxels), from the mesh of that level set (OpenVDB volumeToMesh), mm^3.
-  double volume_below(double level) const;
-  // d (voxels) at points given in millimetres, trilinear; +-the band's width beyond it.
-  std::vector<double> distances(const std::vector<std::array<float, 3>>& points_mm) const;
-  size_t band_voxels() const;
-  size_t memory_bytes() const;
+  // d (voxels) at points given in millimetres, exact within the band, +-its width beyond; on `threads`
+  // threads.
+  std::vector<double> distances(const std::vector<std::array<float, 3>>& points_mm, int threads) const;
+  size_t memory_bytes() const { return distance_.memory_bytes(); }
 
  private:
-  struct Grid;
-  std::unique_ptr<Grid> grid_;
   VoxelFrame frame_;
+  BodyDistance distance_;
   std::array<std::array<int, 3>, 2> range_{};
-  double inside_width_ = 0;
 };
 
 }  // namespace offsetgen::mesh

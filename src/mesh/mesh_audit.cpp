@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
+#include <stdexcept>
 
 namespace offsetgen::mesh {
 namespace {
@@ -20,13 +22,25 @@ std::vector<uint32_t> weld_ids(const std::vector<std::array<float, 3>>& points) 
   return id;
 }
 
-struct DirectedEdge {
-  uint64_t key;  // (smaller id << 32) | larger id
-  bool forward;  // from the smaller id to the larger
-  bool operator<(const DirectedEdge& o) const { return key != o.key ? key < o.key : forward < o.forward; }
-};
+// A facet's edge as one word: the smaller id, the larger id, and whether the facet crosses it from the
+// smaller to the larger (ids below 2^31), so that sorting words groups each edge's uses.
+uint64_t directed_edge(uint32_t from, uint32_t to) {
+  const uint32_t lo = std::min(from, to), hi = std::max(from, to);
+  return (uint64_t(lo) << 32) | (uint64_t(hi) << 1) | (from == lo ? 1u : 0u);
+}
 
 }  // namespace
+
+size_t MeshAudit::EdgeHash::operator()(const EdgeKey& k) const {
+  uint64_t h = 1469598103934665603ull;  // FNV-1a over the six floats' bits
+  for (const auto& p : k)
+    for (float x : p) {
+      uint32_t bits = 0;
+      std::memcpy(&bits, &x, 4);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+  return static_cast<size_t>(h ^ (h >> 29));
+}
 
 std::string AuditReport::describe() const {
   return fmt::format("{} open edges, {} non-manifold edges, {} misoriented edges, {} degenerate facets", open_edges,
@@ -56,7 +70,8 @@ void MeshAudit::add(const TriangleMesh& mesh, const std::vector<uint8_t>& seam,
     on_seam[id[i]] |= seam[i];
     outside[id[i]] |= outside_run[i];
   }
-  std::vector<DirectedEdge> edges;
+  if (mesh.points.size() >= (size_t(1) << 31)) throw std::length_error("mesh audit: too many points in one tile");
+  std::vector<uint64_t> edges;
   edges.reserve(3 * mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
     const uint32_t a = id[t[0]], b = id[t[1]], c = id[t[2]];
@@ -64,17 +79,14 @@ void MeshAudit::add(const TriangleMesh& mesh, const std::vector<uint8_t>& seam,
       ++report_.degenerate_facets;
       continue;
     }
-    for (const auto& [u, v] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
-      const uint32_t lo = std::min(u, v), hi = std::max(u, v);
-      edges.push_back({(uint64_t(lo) << 32) | hi, u == lo});
-    }
+    edges.insert(edges.end(), {directed_edge(a, b), directed_edge(b, c), directed_edge(c, a)});
   }
   std::sort(edges.begin(), edges.end());
   for (size_t k = 0; k < edges.size();) {
     size_t end = k;
     int forward = 0, backward = 0;
-    for (; end < edges.size() && edges[end].key == edges[k].key; ++end) (edges[end].forward ? forward : backward)++;
-    const auto lo = static_cast<uint32_t>(edges[k].key >> 32), hi = static_cast<uint32_t>(edges[k].key);
+    for (; end < edges.size() && (edges[end] >> 1) == (edges[k] >> 1); ++end) (edges[end] & 1 ? forward : backward)++;
+    const auto lo = static_cast<uint32_t>(edges[k] >> 32), hi = static_cast<uint32_t>((edges[k] >> 1) & 0x7fffffffu);
     if (on_seam[lo] && on_seam[hi]) {
       // Held by position: the neighbour's facets name the same positions, not the same ids.
       const bool swap = mesh.points[hi] < mesh.points[lo];

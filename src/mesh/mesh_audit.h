@@ -10,8 +10,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace offsetgen::mesh {
@@ -45,9 +45,12 @@ class MeshAudit {
     int forward = 0, backward = 0;  // facets crossing it from the first end to the second, and back
     bool outside_run = false;
   };
+  struct EdgeHash {
+    size_t operator()(const EdgeKey& k) const;
+  };
   void judge(int forward, int backward);
   AuditReport report_;
-  std::map<EdgeKey, SeamEdge> seam_edges_;
+  std::unordered_map<EdgeKey, SeamEdge, EdgeHash> seam_edges_;
 };
 
 }  // namespace offsetgen::mesh

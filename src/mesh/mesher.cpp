@@ -103,9 +103,10 @@ void check_wall_voxels(double min_thickness, double voxels_per_cell, const std::
       by_voxel ? fmt::format("--voxel {:.3g} or less", min_thickness * cell_size / kMinVoxelsPerWall)
                : fmt::format("--resolution {} or more", static_cast<int>(std::ceil(kMinVoxelsPerWall / min_thickness)));
   throw InputError(fmt::format(
-      "{} ({:.4g} cell) spans {:.3g} voxels at {}: it needs at least {} voxels; use {} (the default gives it {})",
+      "{} ({:.4g} cell) spans {:.3g} voxels at {}: {} need at least {} voxels; use {} (the default gives {})",
       network ? "the network's narrowest neck, about 2 (h_max - |h|)," : "the thinnest wall", min_thickness,
-      min_thickness * voxels_per_cell, setting, kMinVoxelsPerWall, fix, kDefaultVoxelsPerWall));
+      min_thickness * voxels_per_cell, setting, network ? "necks" : "walls", kMinVoxelsPerWall, fix,
+      kDefaultVoxelsPerWall));
 }
 
 // Reads the body, scales it and makes sure it is closed (or repairs it); says what it did.
@@ -215,6 +216,21 @@ void mark_seams(const TriangleMesh& mesh, const std::vector<Tile>& tiles, size_t
         const long other = across[a][side];
         if (other >= 0 && (size_t(other) < run.first || size_t(other) >= run.second)) outside_run[i] = 1;
       }
+}
+
+// The body's and the core's volumes from the voxels' tally (a block's box is known exactly); a skin
+// that leaves no core is bad input.
+void record_volumes(const MeshSettings& s, MeshSummary& m) {
+  if (!m.body) return;
+  BodySummary& b = *m.body;
+  const double voxel3 = std::pow(b.voxel, 3);
+  b.level_set_volume = m.tally.body * voxel3;
+  b.core_volume = m.tally.core * voxel3;
+  b.skin_volume = b.level_set_volume - b.core_volume;
+  m.box_volume = b.level_set_volume;
+  if (!(b.core_volume > 0) && !s.tile_range)
+    throw InputError(fmt::format(
+        "--skin {:g} mm leaves no core inside the body: the body is nowhere thicker than twice the skin", b.skin));
 }
 
 // Refuses a part whose mesh is not a closed, consistently oriented surface without degenerate facets,
@@ -343,6 +359,7 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
                                 "between the voxels");
     m.audit = audit.finish();
     m.stages.push_back({"check", audit_seconds});
+    record_volumes(s, m);
     require_sound(s, m);
     if (stl) {
       stl->commit();
@@ -370,6 +387,7 @@ TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Doma
   audit.add(held);
   m.audit = audit.finish();
   m.stages.push_back({"check", seconds_since(audit_start)});
+  record_volumes(s, m);
   require_sound(s, m);
   m.points = held.points.size();
   m.triangles = held.triangles.size();
@@ -488,11 +506,12 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
                     settings.skin, settings.skin / b.voxel, b.voxel, settings.skin / 2));
   double voxels = 1;
   for (size_t a = 0; a < 3; ++a) voxels *= (b.box[1][a] - b.box[0][a]) / b.voxel + 16;
-  if (voxels > kMaxVoxels)
+  if (voxels > kMaxBodyVoxels)
     throw InputError(
-        fmt::format("the body's box at {:.4g} mm voxels is {:.3g} voxels, above the limit of {:.3g}; "
-                    "use a larger --voxel (or --resolution)",
-                    b.voxel, voxels, kMaxVoxels));
+        fmt::format("the body's box at {:.4g} mm voxels is {:.3g} voxels, above the limit of {:.3g} (a guard "
+                    "against typos: the time grows with the voxels, the memory does not); use a larger --voxel "
+                    "(or --resolution)",
+                    b.voxel, voxels, kMaxBodyVoxels));
 
   progress("compiling the functions", -1);
   field.compile();
@@ -500,19 +519,10 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
   m.compile_flags = field.compile_flags();
   StageClock clock(m.stages);
 
-  progress("the body's level set (OpenVDB meshToVolume)", -1);
+  progress("indexing the body's facets", -1);
   const VoxelFrame frame{b.origin, b.voxel};
   const BodyDomain domain(body_mesh, frame, settings.skin / b.voxel, settings.fillet / b.voxel);
-  b.band_voxels = domain.band_voxels();
-  b.band_bytes = domain.memory_bytes();
-  b.level_set_volume = domain.volume_below(0);
-  b.core_volume = settings.skin > 0 ? domain.volume_below(-settings.skin / b.voxel) : b.level_set_volume;
-  b.skin_volume = b.level_set_volume - b.core_volume;
-  if (!(b.core_volume > 0))
-    throw InputError(
-        fmt::format("--skin {:g} mm leaves no core inside the body: the body is nowhere thicker than "
-                    "twice the skin",
-                    settings.skin));
+  b.index_bytes = domain.memory_bytes();
   clock.done("body");
 
   VoxelGrid grid;
@@ -521,7 +531,6 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
   // M bounds |grad F| over the unit cell (catalog surfaces repeat it) or a mapped lattice's whole box.
   m.field_bound_used = field.generation().surface.from_catalog || field.generation().surface.mapped();
   b.expected_density = s.wall.generation.density ? s.wall.generation.density : field.uniform_density();
-  m.box_volume = b.level_set_volume;
   m.requested_density = s.wall.generation.density;
   b.part_box[0].fill(HUGE_VAL);
   b.part_box[1].fill(-HUGE_VAL);
@@ -537,9 +546,9 @@ MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh&
     }
     if (settings.skin > 0) {
       if (m.streamed) {
-        measure_skin_by_depth(domain.distances(mesh.points), b.voxel, b.measured_skin);
+        measure_skin_by_depth(domain.distances(mesh.points, threads_for(s)), b.voxel, b.measured_skin);
       } else {
-        b.measured_skin = measure_skin(mesh, domain.distances(mesh.points), b.voxel);
+        b.measured_skin = measure_skin(mesh, domain.distances(mesh.points, threads_for(s)), b.voxel);
       }
     }
     measure_seconds += seconds_since(start);
@@ -576,7 +585,7 @@ std::string format_body(const MeshSummary& m) {
   std::string s;
   s += fmt::format("  body:       {}, {} triangles{}, box {}\n", b.path, b.triangles,
                    b.repaired.empty() ? std::string(", closed") : "; --repair: " + b.repaired, format_box(b.box));
-  s += fmt::format("              volume {:.6g} mm^3 (its level set: {:.6g}, {:+.3f}%)\n", b.volume, b.level_set_volume,
+  s += fmt::format("              volume {:.6g} mm^3 (on the voxels: {:.6g}, {:+.3f}%)\n", b.volume, b.level_set_volume,
                    100 * (b.level_set_volume / b.volume - 1));
   if (!m.map.empty())
     s += fmt::format("  lattice:    mapped (its cells come from the map); wall {:.4g}{} mm; voxel {:.4g} mm{}\n",
@@ -593,7 +602,7 @@ std::string format_body(const MeshSummary& m) {
     s += fmt::format("  map:        {} (x, y, z in mm){}\n", m.map,
                      m.map_region.empty() ? std::string() : "\n              " + m.map_region);
   if (b.skin > 0) {
-    s += fmt::format("  skin:       {:g} mm{}: core {:.6g} mm^3, skin {:.6g} mm^3 (from the level set)\n", b.skin,
+    s += fmt::format("  skin:       {:g} mm{}: core {:.6g} mm^3, skin {:.6g} mm^3 (on the voxels)\n", b.skin,
                      b.fillet > 0 ? fmt::format(", walls joined with a {:g} mm fillet", b.fillet) : std::string(),
                      b.core_volume, b.skin_volume);
     s += fmt::format(
@@ -747,8 +756,8 @@ std::string format_summary(const MeshSummary& m) {
       m.field_bound_used ? std::to_string(m.skipped_voxels)
                          : std::string("none (M bounds |grad F| over one cell, and this expression spans several)"));
   if (m.body)
-    s += fmt::format("  memory:     body level set {} voxels ({:.1f} MB)\n", m.body->band_voxels,
-                     double(m.body->band_bytes) / 1e6);
+    s += fmt::format("  memory:     the body's facets indexed in {:.1f} MB (its distance is computed block by block)\n",
+                     double(m.body->index_bytes) / 1e6);
   s += fmt::format("  time:       {:.2f} s ({})\n", total, stages);
   return s;
 }

@@ -1,6 +1,6 @@
 // `offsetgen mesh`: a block of cells of a wall solid, or a body filled with it inside a skin, as a
 // closed, outward-oriented triangle mesh in millimetres. Stages: generate + compile the header
-// (wall_field), read the body and build its level set (body/, body_domain), sample a narrow band
+// (wall_field), read the body and index its facets (body/, body_domain), sample a narrow band
 // (narrow_band), extract with OpenVDB (vdb_surface), keep the large pieces (triangle_mesh), measure
 // the skin (skin_measure), write the file atomically (mesh_files).
 #pragma once
@@ -54,6 +54,8 @@ inline constexpr int kMinVoxelsPerWall = 2;  // thinner walls are refused
 inline constexpr int kDefaultVoxelsPerWall = 4;
 inline constexpr int kDefaultBlockVoxels = 128;
 inline constexpr double kMaxVoxels = 4.0e9;  // the padded block, a guard against typos
+// A body's box: memory no longer grows with it (body_distance.h), only the time; a guard against typos.
+inline constexpr double kMaxBodyVoxels = 1.0e12;
 // Without tiles (PLY, 3MF, or --tile 0) every sample and triangle is held at once: a guard.
 inline constexpr double kMaxHeldVoxels = 4.0e9;
 
@@ -72,9 +74,9 @@ struct BodySummary {
   double voxel = 0;                                 // mm
   double skin = 0, fillet = 0;                      // mm, as requested
   double volume = 0;                                // of the body's mesh, mm^3
-  double level_set_volume = 0;                      // of its level set: the error of the two below
+  double level_set_volume = 0;                      // counted on the voxels: the error of the two below
   double core_volume = 0, skin_volume = 0;
-  size_t band_voxels = 0, band_bytes = 0, deep_blocks = 0;
+  size_t index_bytes = 0, deep_blocks = 0;
   std::optional<double> expected_density;  // --density, or the sheet density of a uniform --thickness
   SkinReport measured_skin;
 };
