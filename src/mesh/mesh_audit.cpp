@@ -6,19 +6,57 @@
 #include <cstring>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 namespace offsetgen::mesh {
 namespace {
 
-// Each point's welded id: the first point (in position order) at its position, as a reader welds.
+// LSD radix sort of 64-bit words, 16 bits a pass: a tile's millions of edges in four linear passes.
+void radix_sort(std::vector<uint64_t>& words) {
+  std::vector<uint64_t> buffer(words.size());
+  std::vector<size_t> start(size_t(1) << 16);
+  for (int shift = 0; shift < 64; shift += 16) {
+    std::fill(start.begin(), start.end(), 0);
+    for (uint64_t w : words) ++start[(w >> shift) & 0xffff];
+    if (std::count(start.begin(), start.end(), 0) == static_cast<long>(start.size()) - 1) continue;  // one digit
+    size_t sum = 0;
+    for (size_t& c : start) sum += std::exchange(c, sum);
+    for (uint64_t w : words) buffer[start[(w >> shift) & 0xffff]++] = w;
+    words.swap(buffer);
+  }
+}
+
+uint32_t position_hash(const std::array<float, 3>& p) {
+  uint32_t bits[3];
+  std::memcpy(bits, p.data(), sizeof(bits));
+  uint64_t h = 1469598103934665603ull;
+  for (uint32_t b : bits) h = (h ^ b) * 1099511628211ull;
+  return static_cast<uint32_t>(h ^ (h >> 32));
+}
+
+// Each point's welded id: the smallest index of the points at its position, as a reader welds them.
+// Sorted by (hash of the position, index); points whose hashes collide are told apart exactly.
 std::vector<uint32_t> weld_ids(const std::vector<std::array<float, 3>>& points) {
-  std::vector<uint32_t> order(points.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(),
-            [&](uint32_t a, uint32_t b) { return points[a] != points[b] ? points[a] < points[b] : a < b; });
+  std::vector<uint64_t> order(points.size());
+  for (uint32_t i = 0; i < points.size(); ++i) order[i] = (uint64_t(position_hash(points[i])) << 32) | i;
+  radix_sort(order);
   std::vector<uint32_t> id(points.size());
-  for (size_t k = 0; k < order.size(); ++k)
-    id[order[k]] = k > 0 && points[order[k]] == points[order[k - 1]] ? id[order[k - 1]] : order[k];
+  for (size_t k = 0; k < order.size();) {
+    size_t end = k;
+    while (end < order.size() && (order[end] >> 32) == (order[k] >> 32)) ++end;
+    for (size_t a = k; a < end; ++a) {  // in index order: the first at each position is its id
+      const auto i = static_cast<uint32_t>(order[a]);
+      id[i] = i;
+      for (size_t b = k; b < a; ++b) {
+        const auto j = static_cast<uint32_t>(order[b]);
+        if (points[j] == points[i]) {
+          id[i] = id[j];
+          break;
+        }
+      }
+    }
+    k = end;
+  }
   return id;
 }
 
@@ -81,7 +119,7 @@ void MeshAudit::add(const TriangleMesh& mesh, const std::vector<uint8_t>& seam,
     }
     edges.insert(edges.end(), {directed_edge(a, b), directed_edge(b, c), directed_edge(c, a)});
   }
-  std::sort(edges.begin(), edges.end());
+  radix_sort(edges);
   for (size_t k = 0; k < edges.size();) {
     size_t end = k;
     int forward = 0, backward = 0;

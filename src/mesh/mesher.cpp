@@ -239,9 +239,9 @@ void require_sound(const MeshSettings& s, const MeshSummary& m) {
   std::vector<std::string> faults;
   if (!m.audit.closed()) faults.push_back(m.audit.describe());
   if (m.body && m.body->skin > 0 && m.body->measured_skin.thinnest < m.body->skin - m.body->voxel)
-    faults.push_back(
-        fmt::format("the thinnest skin measured is {:.4g} mm, below --skin {:g} mm less one voxel ({:.4g} mm)",
-                    m.body->measured_skin.thinnest, m.body->skin, m.body->voxel));
+    faults.push_back(fmt::format(
+        "the thinnest skin measured is {:.4g} mm, below {:.4g} mm (--skin {:g} mm less one voxel of {:.4g} mm)",
+        m.body->measured_skin.thinnest, m.body->skin - m.body->voxel, m.body->skin, m.body->voxel));
   if (faults.empty()) return;
   std::string list;
   for (const auto& f : faults) list += (list.empty() ? "" : "; ") + f;
@@ -610,7 +610,7 @@ std::string format_body(const MeshSummary& m) {
         "most {:.3g} mm deep\n",
         b.measured_skin.thinnest,
         b.measured_skin.by_pieces ? fmt::format("over {} cavities", b.measured_skin.cavities)
-                                  : std::string("(tile by tile: the vertices deeper than half a voxel)"),
+                                  : std::string("(tile by tile: the vertices deeper than a voxel)"),
         b.skin, b.voxel, b.measured_skin.outer_deepest);
   } else {
     s += "  skin:       none (--skin 0): the lattice is cut flush by the body\n";

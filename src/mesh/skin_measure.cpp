@@ -33,7 +33,7 @@ void measure_skin_by_depth(const std::vector<double>& depth_voxels, double voxel
   }
   for (double d : depth_voxels) {
     const double depth = -d * voxel_mm;
-    if (-d > 0.5) {
+    if (-d > kOuterSurfaceDepth) {
       report.thinnest = std::min(report.thinnest, depth);
     } else {
       report.outer_deepest = std::max(report.outer_deepest, depth);
