@@ -61,6 +61,19 @@ TriangleMesh collect(openvdb::tools::VolumeToMesh& mesher) {
   return mesh;
 }
 
+// The blocks on either side of the tile's faces, where polygons are not merged (--adaptivity): the
+// points there are computed from the same samples in both tiles, so the seams close. (OpenVDB keeps
+// its own side of a surface mask unmerged, not the margin beyond it.) Leaves of voxels, not tiles:
+// the mesher reads the mask leaf by leaf.
+openvdb::TreeBase::ConstPtr seam_blocks(const VoxelBox& owned) {
+  auto mask = std::make_shared<openvdb::BoolTree>(false);
+  const openvdb::Coord lo(owned[0][0], owned[0][1], owned[0][2]), hi(owned[1][0] - 1, owned[1][1] - 1, owned[1][2] - 1);
+  mask->fill(openvdb::CoordBBox(lo.offsetBy(-kBlock), hi.offsetBy(kBlock)), true, true);
+  mask->fill(openvdb::CoordBBox(lo.offsetBy(kBlock), hi.offsetBy(-kBlock)), false, false);
+  mask->voxelizeActiveTiles();
+  return mask;
+}
+
 }  // namespace
 
 TriangleMesh extract_surface(const SampledBand& band, double adaptivity) {
@@ -78,6 +91,7 @@ TriangleMesh extract_surface(const SampledBand& band, double adaptivity, const V
              true, true);
   openvdb::tools::VolumeToMesh mesher(0.0, adaptivity);
   mesher.setSurfaceMask(mask);
+  if (adaptivity > 0) mesher.setAdaptivityMask(seam_blocks(owned));
   mesher(*grid);
   return collect(mesher);
 }

@@ -70,6 +70,21 @@ TEST(MeshTiles, AStreamedBlockIsOneCleanSolid) {
   EXPECT_GT(stl_volume(read_stl(dir + "/part.stl")), 0);
 }
 
+// Merged polygons (--adaptivity) meet the tile across each seam: the blocks on both sides of a seam
+// are left unmerged, so both tiles compute the seam's points alike.
+TEST(MeshTiles, AnAdaptiveStreamedBlockIsOneCleanSolid) {
+  const std::string dir = scratch_dir("tiles-adaptive");
+  CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--thickness", "0.1", "--cells", "3", "--cell-size", "8",
+                            "--resolution", "40", "--tile", "48", "--adaptivity", "0.3", "-o", dir + "/part.stl"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::string raw;
+  auto report = admesh_report(dir + "/part.stl", &raw);
+  EXPECT_EQ(report["facets added"], 0) << raw;
+  EXPECT_EQ(report["backwards edges"], 0) << raw;
+  EXPECT_EQ(report["disconnected facets"], 0) << raw;
+  EXPECT_EQ(report["parts"], 1) << raw;
+}
+
 TEST(MeshTiles, SharesJoinedWithMergeGiveTheSingleRunsBytes) {
   const std::string dir = scratch_dir("tiles-merge");
   ASSERT_EQ(mesh_with(kBlock, {"--tile", "48", "-o", dir + "/single.stl"}).exit_code, 0);
