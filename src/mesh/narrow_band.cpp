@@ -69,7 +69,7 @@ class BlockSampler {
       d_.fill(-1e300);
       out.deep = true;
     }
-    solid_.fill(0);
+    solid_.fill(0.0);
     out.block.values.assign(kBlockVoxels, background_);
     out.block.active.assign(kBlockVoxels, 0);
     // The whole block far from F = 0?
@@ -78,7 +78,7 @@ class BlockSampler {
     const double radius = 0.5 * std::sqrt(3.0) * (kBlock - 1) * v_;
     if (const Far far = far_from_walls(c, radius); far != Far::No) {
       out.skipped_voxels = kBlockVoxels;
-      if (far == Far::Inside) solid_.fill(1);
+      if (far == Far::Inside) solid_.fill(1.0);
       tally(place, out);
       if (far == Far::Inside) {
         for (int i = 0; i < kBlockVoxels; ++i) store(out, static_cast<size_t>(i), inside_walls(d_[i]));
@@ -108,7 +108,7 @@ class BlockSampler {
                 const int slot = block_offset(i, j, l);
                 const double d = d_[static_cast<size_t>(slot)];
                 if (far == Far::Inside) {
-                  solid_[static_cast<size_t>(slot)] = 1;
+                  solid_[static_cast<size_t>(slot)] = 1.0;
                   store(out, static_cast<size_t>(slot), inside_walls(d));
                   continue;
                 }
@@ -128,7 +128,7 @@ class BlockSampler {
     w_.resize(n);
     if (n > 0) field_.walls(n, x_.data(), y_.data(), z_.data(), w_.data(), worker_);
     for (size_t s = 0; s < n; ++s) {
-      solid_[static_cast<size_t>(slot_[s])] = w_[s] < 0;
+      solid_[static_cast<size_t>(slot_[s])] = std::clamp(0.5 - w_[s] / v_, 0.0, 1.0);
       store(out, static_cast<size_t>(slot_[s]), part_value(dq_[s], w_[s] / v_, skin_, fillet_));
     }
     tally(place, out);
@@ -187,7 +187,9 @@ class BlockSampler {
   bool network_ = false;
   bool plant_shallow_skin_ = false, plant_dropped_blocks_ = false;
   std::array<double, kBlockVoxels> d_{};
-  std::array<uint8_t, kBlockVoxels> solid_{};  // the lattice alone is solid there (w < 0)
+  // How much of each voxel the lattice alone fills, min(max(1/2 - w, 0), 1) with w in voxels (as the
+  // body's share): a voxel count of w < 0 would alias with the cells when voxels divide them evenly.
+  std::array<double, kBlockVoxels> solid_{};
   std::vector<double> x_, y_, z_, dq_, w_;
   std::vector<int> slot_;
 };
