@@ -79,11 +79,16 @@ std::vector<double> BodyDomain::distances(const std::vector<std::array<float, 3>
   const size_t count = std::max(1, threads), chunk = (points_mm.size() + count - 1) / count;
   auto work = [&](size_t first, size_t last) {
     BodyDistance::Query query(distance_);
-    std::vector<Vec3> index(last - first);
-    for (size_t i = first; i < last; ++i)
-      for (size_t a = 0; a < 3; ++a)
-        index[i - first][a] = (double(points_mm[i][a]) - frame_.origin[a]) / frame_.voxel - 0.5;
-    distance_.distances(index, d.data() + first, query);
+    constexpr size_t kBatch = size_t(1) << 16;  // points at a time: the scratch stays small
+    std::vector<Vec3> index;
+    for (size_t from = first; from < last; from += kBatch) {
+      const size_t to = std::min(last, from + kBatch);
+      index.resize(to - from);
+      for (size_t i = from; i < to; ++i)
+        for (size_t a = 0; a < 3; ++a)
+          index[i - from][a] = (double(points_mm[i][a]) - frame_.origin[a]) / frame_.voxel - 0.5;
+      distance_.distances(index, d.data() + from, query);
+    }
   };
   std::vector<std::thread> pool;
   for (size_t t = 1; t < count; ++t)

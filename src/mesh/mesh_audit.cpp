@@ -69,15 +69,17 @@ uint64_t directed_edge(uint32_t from, uint32_t to) {
 
 }  // namespace
 
-size_t MeshAudit::EdgeHash::operator()(const EdgeKey& k) const {
-  uint64_t h = 1469598103934665603ull;  // FNV-1a over the six floats' bits
-  for (const auto& p : k)
-    for (float x : p) {
-      uint32_t bits = 0;
-      std::memcpy(&bits, &x, 4);
-      h = (h ^ bits) * 1099511628211ull;
-    }
-  return static_cast<size_t>(h ^ (h >> 29));
+MeshAudit::EdgeKey MeshAudit::edge_key(const Position& first, const Position& second) {
+  uint32_t bits[6];
+  std::memcpy(bits, first.data(), 12);
+  std::memcpy(bits + 3, second.data(), 12);
+  uint64_t a = 1469598103934665603ull, b = 0x9e3779b97f4a7c15ull;  // FNV-1a, and a multiply-xorshift mix
+  for (uint32_t x : bits) {
+    a = (a ^ x) * 1099511628211ull;
+    b = (b ^ x) * 0xbf58476d1ce4e5b9ull;
+    b ^= b >> 31;
+  }
+  return {a ^ (a >> 29), b};
 }
 
 std::string AuditReport::describe() const {
@@ -128,10 +130,12 @@ void MeshAudit::add(const TriangleMesh& mesh, const std::vector<uint8_t>& seam,
     if (on_seam[lo] && on_seam[hi]) {
       // Held by position: the neighbour's facets name the same positions, not the same ids.
       const bool swap = mesh.points[hi] < mesh.points[lo];
-      const EdgeKey key = swap ? EdgeKey{mesh.points[hi], mesh.points[lo]} : EdgeKey{mesh.points[lo], mesh.points[hi]};
+      const EdgeKey key =
+          swap ? edge_key(mesh.points[hi], mesh.points[lo]) : edge_key(mesh.points[lo], mesh.points[hi]);
       SeamEdge& e = seam_edges_[key];
-      e.forward += swap ? backward : forward;
-      e.backward += swap ? forward : backward;
+      const int f = e.forward + (swap ? backward : forward), bk = e.backward + (swap ? forward : backward);
+      e.forward = static_cast<uint8_t>(std::min(f, 255));
+      e.backward = static_cast<uint8_t>(std::min(bk, 255));
       e.outside_run = e.outside_run || outside[lo] || outside[hi];
       // Complete: no later tile can add to it without a third facet, which shows as an open edge.
       if (e.forward == 1 && e.backward == 1) seam_edges_.erase(key);

@@ -40,14 +40,20 @@ class MeshAudit {
 
  private:
   using Position = std::array<float, 3>;
-  using EdgeKey = std::array<Position, 2>;  // its ends, the smaller position first
-  struct SeamEdge {
-    int forward = 0, backward = 0;  // facets crossing it from the first end to the second, and back
-    bool outside_run = false;
+  // A seam edge is held by two independent 64-bit hashes of its ends' positions (the smaller position
+  // first): 16 bytes, where a chance collision of both is beyond any mesh's count.
+  struct EdgeKey {
+    uint64_t a = 0, b = 0;
+    bool operator==(const EdgeKey& o) const { return a == o.a && b == o.b; }
   };
   struct EdgeHash {
-    size_t operator()(const EdgeKey& k) const;
+    size_t operator()(const EdgeKey& k) const { return static_cast<size_t>(k.a); }
   };
+  struct SeamEdge {
+    uint8_t forward = 0, backward = 0;  // facets crossing it from the first end to the second, and back
+    bool outside_run = false;
+  };
+  static EdgeKey edge_key(const Position& first, const Position& second);
   void judge(int forward, int backward);
   AuditReport report_;
   std::unordered_map<EdgeKey, SeamEdge, EdgeHash> seam_edges_;
