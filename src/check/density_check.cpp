@@ -87,8 +87,8 @@ struct FractionContext {
 
   // |phi(p, h) - F(p)| <= M |h| (natural units) for both methods: the band holds every sign change.
   double band_for(double h_cell) const { return meta.gradient_bound * meta.scale * std::fabs(h_cell) * (1 + 1e-9); }
-  VolumeFractionSetup setup() const {
-    VolumeFractionSetup s;
+  numeric::VolumeFractionSetup setup() const {
+    numeric::VolumeFractionSetup s;
     s.field = [f = f.field](const double* p) { return f(p); };
     s.field_slope_bound = meta.scale * meta.gradient_bound;  // >= |grad F| in cell units
     return s;
@@ -108,11 +108,11 @@ void measure_sheets(const FractionContext& c, const density::DensityModel& model
     }
     c.progress(fmt::format("sheet at rho = {:g}", rho));
     const double t = c.f.thickness_for_density(rho);
-    VolumeFractionSetup s = c.setup();
+    numeric::VolumeFractionSetup s = c.setup();
     s.g = [shell = c.f.shell, t](const double* p) { return shell(p, t); };
     s.band = c.band_for(t / 2);
     s.scan_step = t / 4;  // a wall is at least t long along any column through it
-    DensityRow row{"sheet", rho, t, measure_volume_fraction(s, c.o.sampling), 0};
+    DensityRow row{"sheet", rho, t, numeric::measure_volume_fraction(s, c.o.sampling), 0};
     row.deviation = row.measured.value - rho;
     r.rows.push_back(row);
   }
@@ -128,14 +128,14 @@ void measure_networks(const FractionContext& c, const density::DensityModel& mod
     }
     c.progress(fmt::format("network at rho = {:g}", rho));
     const double h = c.f.offset_for_density(rho);
-    VolumeFractionSetup s = c.setup();
+    numeric::VolumeFractionSetup s = c.setup();
     s.g = [offset = c.f.offset, h](const double* p) { return offset(p, h); };
     s.band = c.band_for(h);
     s.outside_follows_field = true;
     // The network's features along a column are no shorter than about the smallest radius of
     // curvature h_max (a smaller one would put a focal point inside |h| <= h_max): a fraction of it.
     s.scan_step = std::min(1.0 / 128, model.offset_limit() / 8);
-    DensityRow row{"network", rho, h, measure_volume_fraction(s, c.o.sampling), 0};
+    DensityRow row{"network", rho, h, numeric::measure_volume_fraction(s, c.o.sampling), 0};
     row.deviation = row.measured.value - rho;
     r.rows.push_back(row);
   }
@@ -146,11 +146,11 @@ void measure_wall(const FractionContext& c, DensityReport& r) {
   const run::FileMetadata& meta = c.meta;
   c.progress(fmt::format("_wall at rho = {:g}", *meta.wall_density));
   const double t = *meta.wall_thickness;
-  VolumeFractionSetup s = c.setup();
+  numeric::VolumeFractionSetup s = c.setup();
   s.g = [wall = c.f.wall](const double* p) { return wall(p); };
   s.band = c.band_for(t / 2);
   s.scan_step = t / 4;
-  DensityRow row{"wall", *meta.wall_density, t, measure_volume_fraction(s, c.o.sampling), 0};
+  DensityRow row{"wall", *meta.wall_density, t, numeric::measure_volume_fraction(s, c.o.sampling), 0};
   row.deviation = row.measured.value - *meta.wall_density;
   r.rows.push_back(row);
 }
@@ -198,17 +198,17 @@ void measure_field_cells(const FractionContext& c, const density::DensityModel& 
         DensityCellRow row;
         row.cell = {i, j, k};
         row.requested = cell_mean_density(rho, i, j, k);
-        VolumeFractionSetup s = c.setup();
+        numeric::VolumeFractionSetup s = c.setup();
         s.g = [graded = c.f.graded](const double* p) { return graded(p); };
         s.band = c.band_for(t_hi / 2);
         s.scan_step = t_lo / 4;
         s.origin = {double(i), double(j), double(k)};
         s.periodic = false;  // the wall's thickness changes across the cell
-        VolumeFractionOptions sampling = c.o.sampling;
+        numeric::VolumeFractionOptions sampling = c.o.sampling;
         sampling.seed += unsigned(1 + i + 16 * (j + 16 * k));  // independent shifts per cell
         // The tent transform folds the grid in two: keep at least 16 columns per half side.
         sampling.grid = std::max(sampling.grid, kMinimumCellGrid);
-        row.measured = measure_volume_fraction(s, sampling);
+        row.measured = numeric::measure_volume_fraction(s, sampling);
         row.deviation = row.measured.value - row.requested;
         r.cells.push_back(row);
       }

@@ -6,8 +6,8 @@
 // block against the field's mean over that cell.
 #pragma once
 
-#include "check/volume_fraction.h"
 #include "density/density_model.h"
+#include "numeric/volume_fraction.h"
 #include "run/c_library.h"
 #include "run/metadata.h"
 
@@ -28,7 +28,7 @@ struct DensityCheckOptions {
   double tolerance = 2e-4;                            // |measured - requested| per density
   double cell_tolerance = 2e-4;                       // per cell of a density field's block
   std::array<int, 3> block = {2, 2, 2};               // cells of the density field's block
-  VolumeFractionOptions sampling;
+  numeric::VolumeFractionOptions sampling;
   std::function<void(const std::string&)> progress;  // may be empty
 };
 
@@ -36,14 +36,14 @@ struct DensityRow {
   std::string solid;  // "sheet", "network", "wall"
   double requested = 0;
   double parameter = 0;  // t (sheet, wall) or h (network), from the emitted inverse
-  VolumeFraction measured;
+  numeric::VolumeFraction measured;
   double deviation = 0;  // measured - requested
 };
 
 struct DensityCellRow {
   std::array<int, 3> cell{};
   double requested = 0;  // mean of rho over the cell
-  VolumeFraction measured;
+  numeric::VolumeFraction measured;
   double deviation = 0;
 };
 
@@ -63,7 +63,7 @@ struct DensityReport {
   std::optional<std::string> field;  // the density field, when the file has one
   std::array<int, 3> block{};
   std::vector<DensityCellRow> cells;
-  VolumeFractionOptions sampling;
+  numeric::VolumeFractionOptions sampling;
 };
 
 // `model`: the density model of the file's surface (the rebuilt reference's); `density_field`: rho(x)

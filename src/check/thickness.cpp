@@ -1,6 +1,6 @@
 #include "check/thickness.h"
 
-#include "check/root_finding.h"
+#include "numeric/root_finding.h"
 
 #include <fmt/format.h>
 
@@ -182,7 +182,7 @@ std::vector<Point> sample_zero_set(const std::function<double(const double*)>& g
       q[static_cast<size_t>(solved)] = v;
       return g(q.data());
     };
-    for (double root : roots_in_interval(along, 0.0, 1.0, scan)) {
+    for (double root : numeric::roots_in_interval(along, 0.0, 1.0, scan)) {
       Point q = p;
       q[static_cast<size_t>(solved)] = root;
       points.push_back(q);
@@ -198,7 +198,7 @@ std::optional<double> ray_crossing(const std::function<double(const double*)>& g
     for (int i = 0; i < dims; ++i) q[static_cast<size_t>(i)] += s * n[static_cast<size_t>(i)];
     return g(q.data());
   };
-  return root_near(along, expected, reach);
+  return numeric::root_near(along, expected, reach);
 }
 
 ThicknessReport measure_constant(const Probe& probe, const ThicknessOptions& options) {
@@ -430,7 +430,8 @@ GradedReport measure_graded(const Probe& probe, ThicknessFunction& thickness, co
     if (!(h_max > 0)) continue;
     report(options, fmt::format("graded h_max = {:g} ({}/{})", h_max, index, options.h.size() + 1));
     const double lambda = 2 * h_max / peak;
-    GradedRow row = measure_graded_row(probe, thickness, on_f, normals, singular, singular_on_f, lambda, false, options);
+    GradedRow row =
+        measure_graded_row(probe, thickness, on_f, normals, singular, singular_on_f, lambda, false, options);
     row.h_max = h_max;
     out.rows.push_back(row);
   }

@@ -255,7 +255,7 @@ void require_sound(const MeshSettings& s, const MeshSummary& m) {
 // (voxel index -> mm). STL in tiles is streamed to s.output as tiles finish (memory: one tile); one
 // tile, PLY and 3MF are held whole and returned, seams welded, small pieces dropped over the whole.
 template <typename ToMm>
-TriangleMesh mesh_part(const MeshSettings& s, const WallField& field, const Domain& domain, const VoxelGrid& grid,
+TriangleMesh mesh_part(const MeshSettings& s, const wall::WallField& field, const Domain& domain, const VoxelGrid& grid,
                        MeshSummary& m, const ProgressCallback& progress, const ToMm& to_mm, const TileHook& hook,
                        const std::string& description) {
   const std::vector<Tile> tiles = make_tiles(domain.block_range(), s.tile);
@@ -408,7 +408,7 @@ void write_part(const MeshSettings& s, const TriangleMesh& mesh, MeshSummary& m,
   m.stages.push_back({"write", seconds_since(start)});
 }
 
-MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, const ProgressCallback& progress) {
+MeshSummary run_block(const MeshSettings& s, MeshSummary m, wall::WallField& field, const ProgressCallback& progress) {
   const auto range = field.thickness_range(s.cells);
   m.min_thickness = range[0];
   m.max_thickness = range[1];
@@ -463,7 +463,7 @@ MeshSummary run_block(const MeshSettings& s, MeshSummary m, WallField& field, co
   return m;
 }
 
-MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh& body_mesh, WallField& field,
+MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh& body_mesh, wall::WallField& field,
                      const ProgressCallback& progress) {
   BodySummary& b = *m.body;
   const BodySettings& settings = *s.body;
@@ -653,19 +653,19 @@ MeshSummary run_mesh_stages(const MeshSettings& s, const ProgressCallback& progr
   }
 
   // A mapped lattice is bounded over the body's box, clear of the map's singular set.
-  WallRequest wall = s.wall;
-  if (!wall.generation.map.empty()) {
+  wall::WallRequest request = s.wall;
+  if (!request.generation.map.empty()) {
     // Bounds over the body's box grown by 1/20 of its longest side: walls reach half their
     // thickness beyond the points that carry them, and the safeguard's M holds only where it was taken.
     const auto box = body::bounding_box(body_mesh);
     double longest = 0;
     for (size_t a = 0; a < 3; ++a) longest = std::max(longest, box[1][a] - box[0][a]);
-    m.map_region = bound_map_to_body(wall.generation, body_mesh, longest / 20);
-    m.map = resolve_surface(wall.generation).map_formula;
+    m.map_region = bound_map_to_body(request.generation, body_mesh, longest / 20);
+    m.map = resolve_surface(request.generation).map_formula;
   }
 
   progress("generating the functions", -1);
-  WallField field(wall);
+  wall::WallField field(request);
   m.stages.push_back({"generate", field.generate_seconds()});
   return s.body ? run_body(s, std::move(m), body_mesh, field, progress) : run_block(s, std::move(m), field, progress);
 }

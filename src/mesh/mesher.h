@@ -10,7 +10,7 @@
 #include "mesh/narrow_band.h"
 #include "mesh/skin_measure.h"
 #include "mesh/triangle_mesh.h"
-#include "mesh/wall_field.h"
+#include "wall/wall_field.h"
 
 #include <array>
 #include <functional>
@@ -34,7 +34,7 @@ struct BodySettings {
 };
 
 struct MeshSettings {
-  WallRequest wall;
+  wall::WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};
   std::optional<BodySettings> body;  // instead of cells
   double cell_size = 10;             // mm
@@ -99,7 +99,7 @@ struct MeshSummary {
   bool automatic_resolution = false;
   double min_thickness = 0, max_thickness = 0;  // cell units: the wall's thickness, or the network's offset h
   bool network = false;
-  WallExtent extent;  // what the voxels and the F bound were sized by
+  wall::WallExtent extent;  // what the voxels and the F bound were sized by
   size_t wall_samples = 0, skipped_voxels = 0;
   bool field_bound_used = true;   // blocks ruled out by F (narrow_band.h)
   double samples_per_second = 0;  // wall samples (each two _offset values) per second of the sample stage

@@ -32,8 +32,8 @@ struct BlockResult {
 
 class BlockSampler {
  public:
-  BlockSampler(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach, bool use_field_bound,
-               float background)
+  BlockSampler(const wall::WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
+               bool use_field_bound, float background)
       : field_(field), worker_(field), reader_(domain.reader()), background_(background) {
     v_ = grid.voxel();
     skin_given_ = domain.skin;
@@ -179,8 +179,8 @@ class BlockSampler {
     }
   }
 
-  const WallField& field_;
-  WallField::Worker worker_;
+  const wall::WallField& field_;
+  wall::WallField::Worker worker_;
   std::unique_ptr<DomainReader> reader_;
   float background_;
   double v_ = 0, lipschitz_ = 0, far_ = 0, skin_given_ = 0, skin_ = 0, fillet_ = 0, margin_ = 0;
@@ -196,13 +196,13 @@ class BlockSampler {
 
 }  // namespace
 
-SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
+SampledBand sample_band(const wall::WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress) {
   return sample_band(field, domain, grid, reach, use_field_bound, threads, progress, domain.block_range(),
                      domain.block_range());
 }
 
-SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
+SampledBand sample_band(const wall::WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress,
                         const VoxelBox& blocks, const VoxelBox& owned) {
   SampledBand band;

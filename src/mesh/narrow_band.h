@@ -4,7 +4,7 @@
 #pragma once
 
 #include "mesh/domain.h"
-#include "mesh/wall_field.h"
+#include "wall/wall_field.h"
 
 #include <array>
 #include <cstddef>
@@ -71,12 +71,12 @@ struct SampledBand {
 // Samples the band of the part that `domain` bounds with `threads` threads; `progress(fraction)` is
 // called from the calling thread. With use_field_bound, blocks whose F value rules out any wall nearby
 // are not evaluated; that needs the header's bound M on |grad F| to hold in the whole block (periodic
-// surfaces, or a single cell). `reach`: how far from F = 0 the solid's surface gets (WallExtent).
-SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
+// surfaces, or a single cell). `reach`: how far from F = 0 the solid's surface gets (wall::WallExtent).
+SampledBand sample_band(const wall::WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress);
 // The same over the blocks whose first voxel lies in `blocks` (multiples of kBlock): one tile, which
 // owns the blocks in `owned` (the tally counts those).
-SampledBand sample_band(const WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
+SampledBand sample_band(const wall::WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                         bool use_field_bound, int threads, const std::function<void(double)>& progress,
                         const VoxelBox& blocks, const VoxelBox& owned);
 

@@ -1,8 +1,8 @@
 #include "step/step_export.h"
 
-#include "check/volume_fraction.h"
 #include "density/surface_constants.h"
 #include "emit/file_writer.h"
+#include "numeric/volume_fraction.h"
 #include "run/process.h"
 #include "step/box_brep.h"
 #include "step/box_patch.h"
@@ -87,7 +87,7 @@ Fit fit_sheet(const PatchLayout& layout, const LevelFunction& g, double target, 
 // a graded t is taken at the nearest point of the block [0, cells]: diamond's patches reach beyond
 // it (the box cuts them afterwards), where the expression may not be positive or may be nothing the
 // user asked for; inside the block the sheet is unchanged.
-LevelFunction offset_sheet(const mesh::WallField& field, mesh::WallField::Worker& worker, double side,
+LevelFunction offset_sheet(const wall::WallField& field, wall::WallField::Worker& worker, double side,
                            const std::array<int, 3>* block = nullptr) {
   return [&field, &worker, side, block](size_t n, const double* x, const double* y, const double* z, double* out) {
     std::vector<double> h(n);
@@ -126,7 +126,7 @@ struct SheetPatches {
   double error = 0;  // cell units
 };
 
-SheetPatches fit_sheets(const PatchLayout& layout, const mesh::WallField& field, bool graded,
+SheetPatches fit_sheets(const PatchLayout& layout, const wall::WallField& field, bool graded,
                         const std::array<int, 3>& cells, double target, int max_side) {
   std::vector<Isometry> maps{Isometry{}};
   if (graded) {
@@ -135,7 +135,7 @@ SheetPatches fit_sheets(const PatchLayout& layout, const mesh::WallField& field,
   }
   int n = 0;
   {
-    mesh::WallField::Worker worker(field);
+    wall::WallField::Worker worker(field);
     for (double side : {1.0, -1.0})
       n = std::max(n, fit_sheet(layout, offset_sheet(field, worker, side, &cells), target, max_side).patch.n);
   }
@@ -146,7 +146,7 @@ SheetPatches fit_sheets(const PatchLayout& layout, const mesh::WallField& field,
     std::vector<std::exception_ptr> failed(threads);
     auto work = [&](unsigned t) {
       try {
-        mesh::WallField::Worker worker(field);
+        wall::WallField::Worker worker(field);
         const LevelFunction p = offset_sheet(field, worker, 1, &cells), m = offset_sheet(field, worker, -1, &cells);
         for (size_t i = t; i < maps.size(); i += threads) {
           plus[i] = fit_at(layout, through(p, maps[i]), n);
@@ -177,7 +177,7 @@ SheetPatches fit_sheets(const PatchLayout& layout, const mesh::WallField& field,
 }
 
 // The gradient of phi(p, +t/2) at the middle of a plus patch (central differences): out of the wall.
-Point outward(const mesh::WallField& field, mesh::WallField::Worker& worker, const CubicPatch& patch) {
+Point outward(const wall::WallField& field, wall::WallField::Worker& worker, const CubicPatch& patch) {
   const LevelFunction g = offset_sheet(field, worker, 1);
   const Point p = patch.evaluate(0.5, 0.5);
   constexpr double kStep = 1e-6;
@@ -195,7 +195,7 @@ Point outward(const mesh::WallField& field, mesh::WallField::Worker& worker, con
 }
 
 // Checks what the exporter covers of the wall, and records its thickness.
-void prepare_walls(const mesh::WallField& field, mesh::WallField::Worker& worker, const StepRequest& r,
+void prepare_walls(const wall::WallField& field, wall::WallField::Worker& worker, const StepRequest& r,
                    StepSummary& s) {
   if (field.graded() && r.wall.thickness.empty())
     throw InputError(
@@ -287,8 +287,8 @@ void count_bspline_faces(const TopoDS_Shape& shape, StepSummary& s) {
   }
 }
 
-// The exact wall's level at one point p[0..2] (cell units): negative inside (mesh::WallField::walls).
-double wall_at(const mesh::WallField& field, mesh::WallField::Worker& worker, const double* p) {
+// The exact wall's level at one point p[0..2] (cell units): negative inside (wall::WallField::walls).
+double wall_at(const wall::WallField& field, wall::WallField::Worker& worker, const double* p) {
   double w = 0;
   field.walls(1, p, p + 1, p + 2, &w, worker);
   return w;
@@ -301,11 +301,11 @@ double wall_at(const mesh::WallField& field, mesh::WallField::Worker& worker, co
 struct ExactVolume {
   double volume = 0, error = 0, seconds = 0;
 };
-ExactVolume exact_wall_volume(const mesh::WallField& field, const StepRequest& r, std::array<double, 2> thickness,
+ExactVolume exact_wall_volume(const wall::WallField& field, const StepRequest& r, std::array<double, 2> thickness,
                               bool graded) {
   const auto t0 = Clock::now();
-  mesh::WallField::Worker worker(field);
-  check::VolumeFractionSetup v;
+  wall::WallField::Worker worker(field);
+  numeric::VolumeFractionSetup v;
   v.g = [&field, &worker](const double* p) { return wall_at(field, worker, p); };
   v.field = [&field](const double* p) { return field.field(p[0], p[1], p[2]); };
   v.field_slope_bound = field.field_lipschitz();
@@ -325,7 +325,7 @@ ExactVolume exact_wall_volume(const mesh::WallField& field, const StepRequest& r
   ExactVolume out;
   for (const auto& at : cells) {
     v.origin = {double(at[0]), double(at[1]), double(at[2])};
-    const check::VolumeFraction fraction = check::measure_volume_fraction(v, check::VolumeFractionOptions{});
+    const numeric::VolumeFraction fraction = numeric::measure_volume_fraction(v, numeric::VolumeFractionOptions{});
     out.volume += fraction.value * cell * copies;
     variance += std::pow(fraction.standard_error * cell * copies, 2);
   }
@@ -334,7 +334,7 @@ ExactVolume exact_wall_volume(const mesh::WallField& field, const StepRequest& r
   return out;
 }
 
-std::future<ExactVolume> start_exact_wall_volume(const mesh::WallField& field, const StepRequest& r,
+std::future<ExactVolume> start_exact_wall_volume(const wall::WallField& field, const StepRequest& r,
                                                  const StepSummary& s) {
   return std::async(std::launch::async, exact_wall_volume, std::cref(field), std::cref(r), s.thickness_range, s.graded);
 }
@@ -349,8 +349,8 @@ bool volume_agrees(const StepSummary& s) {
 // Everything measured on a solid, by export (the solid it writes) and check (the file read back) alike:
 // valid closed solids, as many as the wall has pieces in the block, the exact walls' deviation from its
 // faces, its volume against the exact wall volume.
-void measure_solid(const TopoDS_Shape& shape, const StepRequest& r, mesh::WallField& field,
-                   mesh::WallField::Worker& worker, std::future<ExactVolume>& exact_volume, StepSummary& s) {
+void measure_solid(const TopoDS_Shape& shape, const StepRequest& r, wall::WallField& field,
+                   wall::WallField::Worker& worker, std::future<ExactVolume>& exact_volume, StepSummary& s) {
   auto t0 = Clock::now();
   const ShapeCheck c = check_shape(shape);
   s.seconds_check = seconds_since(t0);
@@ -419,7 +419,7 @@ std::string file_holds_the_solid(const std::string& bytes, const TopoDS_Shape& s
 using InsideWall = std::function<bool(const Point&)>;
 
 // The symmetry route: one patch per sheet (or per image, graded), copied over the region.
-WallBrep symmetry_wall(const PatchLayout& layout, const mesh::WallField& field, mesh::WallField::Worker& worker,
+WallBrep symmetry_wall(const PatchLayout& layout, const wall::WallField& field, wall::WallField::Worker& worker,
                        const StepRequest& r, double target, const InsideWall& inside_wall, StepSummary& s) {
   s.patches = "symmetry patch";
   auto t0 = Clock::now();
@@ -456,17 +456,17 @@ BoxPartition partition_boxes(const std::array<LevelFunction, 2>& sheets,
   }
 }
 
-WallBrep box_wall(const mesh::WallField& field, mesh::WallField::Worker& worker, const StepRequest& r, double target,
+WallBrep box_wall(const wall::WallField& field, wall::WallField::Worker& worker, const StepRequest& r, double target,
                   const InsideWall& inside_wall, StepSummary& s) {
   auto t0 = Clock::now();
   const std::array<LevelFunction, 2> sheets{offset_sheet(field, worker, 1, &r.cells),
                                             offset_sheet(field, worker, -1, &r.cells)};
   // The patches are fitted on every core, each thread with its own Worker.
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::unique_ptr<mesh::WallField::Worker>> workers;
+  std::vector<std::unique_ptr<wall::WallField::Worker>> workers;
   std::vector<std::array<LevelFunction, 2>> more;
   for (unsigned t = 1; t < threads; ++t) {
-    workers.push_back(std::make_unique<mesh::WallField::Worker>(field));
+    workers.push_back(std::make_unique<wall::WallField::Worker>(field));
     more.push_back(
         {offset_sheet(field, *workers.back(), 1, &r.cells), offset_sheet(field, *workers.back(), -1, &r.cells)});
   }
@@ -532,8 +532,8 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   StepSummary s;
   s.surface = surface_words(r.wall.generation);
   say("generating the wall's functions");
-  mesh::WallField field(r.wall);
-  mesh::WallField::Worker worker(field);
+  wall::WallField field(r.wall);
+  wall::WallField::Worker worker(field);
   prepare_walls(field, worker, r, s);
   say("compiling them");
   field.compile();
@@ -606,8 +606,8 @@ StepCheck check_step_file(const std::string& path, const std::function<void(cons
 
   say("generating the walls it was made from");
   auto t0 = Clock::now();
-  mesh::WallField field(check.request.wall);
-  mesh::WallField::Worker worker(field);
+  wall::WallField field(check.request.wall);
+  wall::WallField::Worker worker(field);
   prepare_walls(field, worker, check.request, s);
   field.compile();
   s.seconds_generate = seconds_since(t0);

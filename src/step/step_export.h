@@ -2,7 +2,7 @@
 // measured before the file is written (docs/step.md).
 #pragma once
 
-#include "mesh/wall_field.h"
+#include "wall/wall_field.h"
 
 #include <array>
 #include <functional>
@@ -11,7 +11,7 @@
 namespace offsetgen::step {
 
 struct StepRequest {
-  mesh::WallRequest wall;
+  wall::WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};
   double cell_size = 10;         // mm
   double tolerance = 0;          // mm: the largest distance allowed from the exact walls to the faces

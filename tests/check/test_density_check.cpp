@@ -22,7 +22,7 @@ constexpr double kPi = 3.141592653589793;
 
 // A ball of radius 0.3 in the unit box: 4/3 pi r^3, every column a chord found by root finding.
 TEST(VolumeFraction, BallIsMeasuredWithinItsStatedError) {
-  VolumeFractionSetup s;
+  numeric::VolumeFractionSetup s;
   auto ball = [](const double* p) {
     const double dx = p[0] - 0.5, dy = p[1] - 0.45, dz = p[2] - 0.52;
     return dx * dx + dy * dy + dz * dz - 0.09;
@@ -33,7 +33,7 @@ TEST(VolumeFraction, BallIsMeasuredWithinItsStatedError) {
   s.band = 1e-3;
   s.outside_follows_field = true;
   s.scan_step = 1.0 / 64;
-  const VolumeFraction v = measure_volume_fraction(s, {});
+  const numeric::VolumeFraction v = numeric::measure_volume_fraction(s, {});
   const double exact = 4.0 / 3 * kPi * 0.027;
   EXPECT_LE(std::fabs(v.value - exact), 4 * v.standard_error + 1e-12) << v.value << " +- " << v.standard_error;
   EXPECT_LE(v.standard_error, 1e-4);
@@ -46,13 +46,13 @@ TEST(VolumeFraction, BallIsMeasuredWithinItsStatedError) {
 // same aliasing; docs/density.md.)
 TEST(VolumeFraction, ThinTiltedWallsAreMeasuredWithinItsStatedError) {
   const double s_wall = 0.05;
-  VolumeFractionSetup s;
+  numeric::VolumeFractionSetup s;
   s.field = [](const double* p) { return std::sin(2 * kPi * (p[0] + p[1] + p[2])); };
   s.g = [s_wall](const double* p) { return std::fabs(std::sin(2 * kPi * (p[0] + p[1] + p[2]))) - s_wall; };
   s.field_slope_bound = 2 * kPi * std::sqrt(3.0);
   s.band = s_wall;
   s.scan_step = 1.0 / 512;
-  const VolumeFraction v = measure_volume_fraction(s, {});
+  const numeric::VolumeFraction v = numeric::measure_volume_fraction(s, {});
   const double exact = 2 / kPi * std::asin(s_wall);
   EXPECT_LE(std::fabs(v.value - exact), 4 * v.standard_error + 1e-9) << v.value << " +- " << v.standard_error;
   EXPECT_LE(v.standard_error, 1e-5);

@@ -2,8 +2,8 @@
 // process, and one offset sheet of them as a LevelFunction.
 #pragma once
 
-#include "mesh/wall_field.h"
 #include "step/level_function.h"
+#include "wall/wall_field.h"
 
 #include <memory>
 #include <string>
@@ -11,17 +11,17 @@
 
 namespace offsetgen::step {
 
-inline std::unique_ptr<mesh::WallField> compiled_walls(const std::string& surface, const std::string& thickness) {
-  mesh::WallRequest request;
+inline std::unique_ptr<wall::WallField> compiled_walls(const std::string& surface, const std::string& thickness) {
+  wall::WallRequest request;
   request.generation.surface = surface;
   request.thickness = thickness;
-  auto field = std::make_unique<mesh::WallField>(request);
+  auto field = std::make_unique<wall::WallField>(request);
   field->compile();
   return field;
 }
 
 // The offset sheet phi(p, h) = 0 at a fixed h (cell units).
-inline LevelFunction uniform_sheet(const mesh::WallField& field, double h) {
+inline LevelFunction uniform_sheet(const wall::WallField& field, double h) {
   return [&field, h](size_t n, const double* x, const double* y, const double* z, double* out) {
     const std::vector<double> hs(n, h);
     field.offsets(n, x, y, z, hs.data(), out);

@@ -3,13 +3,13 @@
 // exact wall volume (column quadrature of this process's own wall functions), the distance of exact
 // wall points (other lines than the tool's) to its faces. Bad input exits 2 and writes nothing; a
 // tolerance out of reach exits 1 and writes nothing.
-#include "check/volume_fraction.h"
-#include "mesh/wall_field.h"
+#include "numeric/volume_fraction.h"
 #include "run/process.h"
 #include "step/deviation.h"
 #include "step/step_file.h"
 #include "step/symmetry_patch.h"
 #include "step/wall_brep.h"
+#include "wall/wall_field.h"
 
 #include <gtest/gtest.h>
 
@@ -98,7 +98,7 @@ const Written& one_cell(const std::string& surface = "schwarzp") {
 struct Walls {
   explicit Walls(const std::string& surface, const std::string& thickness = "0.1")
       : field([&] {
-          mesh::WallRequest r;
+          wall::WallRequest r;
           r.generation.surface = surface;
           r.thickness = thickness;
           return r;
@@ -114,8 +114,8 @@ struct Walls {
       field.offsets(n, x, y, z, hs.data(), out);
     };
   }
-  mesh::WallField field;
-  mesh::WallField::Worker worker;
+  wall::WallField field;
+  wall::WallField::Worker worker;
 };
 
 size_t count_of(const std::string& text, const std::string& what) {
@@ -185,8 +185,8 @@ TEST_P(StepCell, VolumeIsWithinAThousandthOfTheExactWallVolume) {
   const std::string& thickness = cell_case(GetParam()).thickness;
   Walls walls(GetParam(), thickness);
   const double t = std::stod(thickness);
-  mesh::WallField::Worker& worker = walls.worker;
-  check::VolumeFractionSetup v;
+  wall::WallField::Worker& worker = walls.worker;
+  numeric::VolumeFractionSetup v;
   v.g = [&](const double* p) {
     double value = 0;
     walls.field.walls(1, p, p + 1, p + 2, &value, worker);
@@ -196,10 +196,10 @@ TEST_P(StepCell, VolumeIsWithinAThousandthOfTheExactWallVolume) {
   v.field_slope_bound = walls.field.field_lipschitz();
   v.band = walls.field.field_lipschitz() * 0.5 * t * (1 + 1e-9);
   v.scan_step = t / 4;
-  check::VolumeFractionOptions options;
+  numeric::VolumeFractionOptions options;
   options.seed = 7;  // not the tool's
   options.grid = cell_case(GetParam()).quadrature_grid;
-  const check::VolumeFraction exact = check::measure_volume_fraction(v, options);
+  const numeric::VolumeFraction exact = numeric::measure_volume_fraction(v, options);
   const double exact_volume = exact.value * std::pow(kCellSize, 3);
   EXPECT_LT(exact.standard_error / exact.value, 1e-4);
   EXPECT_NEAR(c.volume, exact_volume, 1e-3 * exact_volume);

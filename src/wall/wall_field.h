@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace offsetgen::mesh {
+namespace offsetgen::wall {
 
 struct WallRequest {
   GenerationRequest generation;  // surface or expression, params, method, order; or density, density_field
@@ -109,4 +109,4 @@ class WallField {
   Field field_ = nullptr;
 };
 
-}  // namespace offsetgen::mesh
+}  // namespace offsetgen::wall

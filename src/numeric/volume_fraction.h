@@ -24,7 +24,7 @@
 #include <array>
 #include <functional>
 
-namespace offsetgen::check {
+namespace offsetgen::numeric {
 
 struct VolumeFractionSetup {
   std::function<double(const double*)> g;      // the region is g < 0
@@ -60,4 +60,4 @@ struct VolumeFraction {
 
 VolumeFraction measure_volume_fraction(const VolumeFractionSetup& setup, const VolumeFractionOptions& options);
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::numeric

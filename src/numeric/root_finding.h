@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-namespace offsetgen::check {
+namespace offsetgen::numeric {
 
 using ScalarFunction = std::function<double(double)>;
 
@@ -25,4 +25,4 @@ std::vector<double> roots_in_interval(const ScalarFunction& f, double lo, double
 // nullopt when no sign change is found inside the reach: the caller counts that as "no crossing".
 std::optional<double> root_near(const ScalarFunction& f, double expected, double reach);
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::numeric

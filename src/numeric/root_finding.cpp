@@ -1,11 +1,11 @@
-#include "check/root_finding.h"
+#include "numeric/root_finding.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
-namespace offsetgen::check {
+namespace offsetgen::numeric {
 
 double brent_root(const ScalarFunction& f, double a, double b, double fa, double fb, int max_iterations) {
   if (fa == 0) return a;
@@ -104,4 +104,4 @@ std::optional<double> root_near(const ScalarFunction& f, double expected, double
   return std::nullopt;
 }
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::numeric

@@ -1,4 +1,4 @@
-#include "mesh/wall_field.h"
+#include "wall/wall_field.h"
 
 #include "density/density_model.h"
 #include "density/surface_constants.h"
@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace offsetgen::mesh {
+namespace offsetgen::wall {
 namespace {
 
 namespace fs = std::filesystem;
@@ -252,4 +252,4 @@ void WallField::walls(size_t n, const double* x, const double* y, const double* 
   for (size_t i = 0; i < n; ++i) w[i] = std::max(worker.plus[i], -worker.minus[i]) * distance_scale_;
 }
 
-}  // namespace offsetgen::mesh
+}  // namespace offsetgen::wall

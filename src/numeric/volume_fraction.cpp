@@ -1,13 +1,13 @@
-#include "check/volume_fraction.h"
+#include "numeric/volume_fraction.h"
 
-#include "check/root_finding.h"
+#include "numeric/root_finding.h"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
-namespace offsetgen::check {
+namespace offsetgen::numeric {
 namespace {
 
 // The partition weights: w_i = g_i^2 / |g|^2 (n_i^2 on the surface), blended to 1/3 farther than
@@ -186,4 +186,4 @@ VolumeFraction measure_volume_fraction(const VolumeFractionSetup& setup, const V
   return out;
 }
 
-}  // namespace offsetgen::check
+}  // namespace offsetgen::numeric
