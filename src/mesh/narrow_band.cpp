@@ -1,14 +1,14 @@
 #include "mesh/narrow_band.h"
 
+#include "wall/field_bound.h"
+#include "wall/parallel_blocks.h"
+
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <exception>
-#include <mutex>
+#include <memory>
 #include <string>
-#include <thread>
 
 namespace offsetgen::mesh {
 namespace {
@@ -34,20 +34,17 @@ class BlockSampler {
  public:
   BlockSampler(const wall::WallField& field, const Domain& domain, const VoxelGrid& grid, double reach,
                bool use_field_bound, float background)
-      : field_(field), worker_(field), reader_(domain.reader()), background_(background) {
-    v_ = grid.voxel();
+      : field_(field),
+        worker_(field),
+        reader_(domain.reader()),
+        background_(background),
+        v_(grid.voxel()),
+        fillet_(domain.fillet),
+        // Far from the walls: the voxel and its neighbours within 2 voxels outside them, and beyond the
+        // reach of the skin's fillet.
+        bound_(field, use_field_bound ? field.field_lipschitz() : 0, reach, (kActiveBand + domain.fillet) * v_) {
     skin_given_ = domain.skin;
-    fillet_ = domain.fillet;
     margin_ = domain.lattice_margin();
-    // A point q with |F(q)| > L h_max is outside the wall: both offsets have the sign of F there (the
-    // methods' safeguards guarantee it, see the headers' SAFETY notes). So a voxel with
-    // |F| > L (h_max + (2 + fillet) voxels) is outside with all its neighbours within 2 voxels, and
-    // the wall there cannot reach the skin's fillet. A network's offset has the sign of F there too:
-    // inside the network where F < 0. L = k M bounds |grad F| only where M was computed: the unit
-    // cell, so everywhere for periodic (catalog) surfaces.
-    lipschitz_ = use_field_bound ? field.field_lipschitz() : 0;
-    far_ = lipschitz_ * (reach + (kActiveBand + fillet_) * v_);
-    network_ = field.network();
     // Planted faults for the tests of the part's check (docs/testing.md), as git's GIT_TEST_*.
     if (const char* fault = std::getenv("OFFSETGEN_TEST_FAULT")) {
       plant_shallow_skin_ = std::string(fault) == "shallow-skin";
@@ -135,14 +132,8 @@ class BlockSampler {
   }
 
  private:
-  // Whether F rules out the walls within `radius` of `centre`: outside them, or inside a network.
-  enum class Far { No, Outside, Inside };
-  Far far_from_walls(const double* centre, double radius) const {
-    if (lipschitz_ <= 0) return Far::No;
-    const double f = field_.field(centre[0], centre[1], centre[2]);
-    if (std::abs(f) <= far_ + lipschitz_ * radius) return Far::No;
-    return network_ && f < 0 ? Far::Inside : Far::Outside;
-  }
+  using Far = wall::FieldBound::Far;
+  Far far_from_walls(const double* centre, double radius) const { return bound_.far_from_walls(centre, radius); }
   double without_wall(double d) const { return part_value_without_wall(d, skin_, kActiveBand, background_); }
   // The part where the lattice is solid throughout (deep inside a network's struts).
   double inside_walls(double d) const { return part_value(d, -kFarFromWalls, skin_, fillet_); }
@@ -183,8 +174,9 @@ class BlockSampler {
   wall::WallField::Worker worker_;
   std::unique_ptr<DomainReader> reader_;
   float background_;
-  double v_ = 0, lipschitz_ = 0, far_ = 0, skin_given_ = 0, skin_ = 0, fillet_ = 0, margin_ = 0;
-  bool network_ = false;
+  double v_ = 0, fillet_ = 0;
+  wall::FieldBound bound_;
+  double skin_given_ = 0, skin_ = 0, margin_ = 0;
   bool plant_shallow_skin_ = false, plant_dropped_blocks_ = false;
   std::array<double, kBlockVoxels> d_{};
   // How much of each voxel the lattice alone fills, min(max(1/2 - w, 0), 1) with w in voxels (as the
@@ -214,38 +206,15 @@ SampledBand sample_band(const wall::WallField& field, const Domain& domain, cons
   band.blocks_tested = origins.size();
 
   std::vector<BlockResult> results(origins.size());
-  std::atomic<size_t> next{0}, done{0};
-  // A worker that fails (out of memory) stops every worker and hands its exception to this thread:
-  // an exception escaping a std::thread would abort the process.
-  std::atomic<bool> failed{false};
   std::atomic<bool> drop_solid{false};
-  std::exception_ptr failure;
-  std::mutex failure_lock;
-  auto work = [&] {
-    try {
-      BlockSampler sampler(field, domain, grid, reach, use_field_bound, band.background);
-      if (sampler.drops_solid_blocks()) drop_solid = true;
-      for (size_t b = next++; b < origins.size() && !failed; b = next++) {
-        sampler.sample(origins[b], results[b]);
-        ++done;
-      }
-    } catch (...) {
-      const std::lock_guard<std::mutex> guard(failure_lock);
-      if (!failure) failure = std::current_exception();
-      failed = true;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::max(threads, 1); ++t) pool.emplace_back(work);
-  std::thread main_worker(work);
-  while (done.load() < origins.size() && !failed) {
-    progress(static_cast<double>(done.load()) / static_cast<double>(origins.size()));
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  main_worker.join();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-  progress(1.0);
+  wall::for_each_block(
+      origins.size(), threads, progress,
+      [&] {
+        auto sampler = std::make_unique<BlockSampler>(field, domain, grid, reach, use_field_bound, band.background);
+        if (sampler->drops_solid_blocks()) drop_solid = true;
+        return sampler;
+      },
+      [&](std::unique_ptr<BlockSampler>& sampler, size_t b) { sampler->sample(origins[b], results[b]); });
 
   // In block order, so the grid (and the mesh) do not depend on the threads' schedule.
   for (size_t b = 0; b < origins.size(); ++b) {
