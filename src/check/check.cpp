@@ -1,9 +1,9 @@
 #include "check/check.h"
 
 #include "check/domain_cube.h"
-#include "check/progress.h"
 #include "check/reference.h"
 #include "emit/backend.h"
+#include "support/progress_line.h"
 #include "validate/cell_domain.h"
 
 #include <fmt/format.h>
@@ -107,13 +107,13 @@ struct ValueCheckSetup {
   ValueCheckOptions options;
 };
 
-ValueCheckSetup prepare_value_check(const CheckSettings& s, Progress& progress, CheckReport& report) {
-  progress.update("model", "rebuilding the symbolic offset model from the metadata");
+ValueCheckSetup prepare_value_check(const CheckSettings& s, ProgressLine& progress, CheckReport& report) {
+  progress.show("model: rebuilding the symbolic offset model from the metadata");
   ValueCheckSetup setup{rebuild_reference(report.meta), s.values};
   report.warnings.insert(report.warnings.end(), setup.reference->warnings.begin(), setup.reference->warnings.end());
   report.surface_title = setup.reference->generation.surface.title;
   setup.options.progress = [&progress, &s](int done, int total) {
-    progress.update("values", fmt::format("point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
+    progress.show(fmt::format("values: point {}/{} against {}-digit CLN", done + 1, total, s.values.digits));
   };
   return setup;
 }
@@ -154,11 +154,11 @@ void record_preparation(CheckReport& report) {
 }
 
 // The runner compiles, loads or launches the file; its outcomes and warnings go into the report.
-void prepare(const CheckSettings& s, const std::string& text, const run::Runner& runner, Progress& progress,
+void prepare(const CheckSettings& s, const std::string& text, const run::Runner& runner, ProgressLine& progress,
              CheckReport& report) {
-  report.prepared =
-      runner.prepare(s.file, text, report.meta,
-                     [&progress](const std::string& stage, const std::string& what) { progress.update(stage, what); });
+  report.prepared = runner.prepare(
+      s.file, text, report.meta,
+      [&progress](const std::string& stage, const std::string& what) { progress.show(stage + ": " + what); });
   progress.clear();
   record_preparation(report);
 }
@@ -167,7 +167,7 @@ void prepare(const CheckSettings& s, const std::string& text, const run::Runner&
 // precision. The thickness sweep and the density relations are left to the C header of the same
 // generation.
 void check_lane_values(const CheckSettings& s, const WallThickness& walls, CheckReport& report) {
-  Progress progress;
+  ProgressLine progress("[offsetgen check]");
   ValueCheckSetup setup = prepare_value_check(s, progress, report);
   const std::string& verdict = report.words.verdict;
   if (report.prepared.cannot_run) {
@@ -267,7 +267,7 @@ void check_graded_wall(const CheckSettings& s, Probe probe, const Reference& ref
 
 // Items 3 and 4 through the loaded functions: the constant wall, the Lipschitz bounds, the graded wall.
 void check_walls(const CheckSettings& s, const run::LoadedFunctions& functions, const Reference& reference,
-                 const WallThickness& walls, Progress& progress, CheckReport& report) {
+                 const WallThickness& walls, ProgressLine& progress, CheckReport& report) {
   // A mapped file is measured in the largest cube centred in its domain (check/domain_cube.h).
   const DomainCube cube = domain_cube(report.meta);
   Probe probe = in_cube(make_probe(functions), cube, report.meta.dims);
@@ -276,7 +276,7 @@ void check_walls(const CheckSettings& s, const run::LoadedFunctions& functions, 
   options.h = report.sweep;
   options.grid = s.grid;
   options.scan = s.scan;
-  options.progress = [&progress](const std::string& what) { progress.update("thickness", what); };
+  options.progress = [&progress](const std::string& what) { progress.show("thickness: " + what); };
   check_constant_wall(s, probe, options, report);
   check_lipschitz(probe, reference, report);
   if (walls.measured && cube.identity) {  // a mapped file's graded wall is not measured (docs/maps.md)
@@ -287,10 +287,10 @@ void check_walls(const CheckSettings& s, const run::LoadedFunctions& functions, 
 
 // Item 5: the density relations and the volume fractions of files with density functions.
 void check_density(const CheckSettings& s, const run::LoadedFunctions& functions, const Reference& reference,
-                   Progress& progress, CheckReport& report) {
+                   ProgressLine& progress, CheckReport& report) {
   const run::FileMetadata& meta = report.meta;
   DensityCheckOptions options = s.density;
-  options.progress = [&progress](const std::string& what) { progress.update("density", what); };
+  options.progress = [&progress](const std::string& what) { progress.show("density: " + what); };
   std::optional<GiNaC::ex> field;
   if (meta.density_field) field = parse_thickness(*meta.density_field, meta, {});
   report.density = measure_density(functions, meta, *reference.generation.density, field, options);
@@ -300,7 +300,7 @@ void check_density(const CheckSettings& s, const run::LoadedFunctions& functions
 // Code loaded into this process (a C header): every check, through its functions.
 void check_loaded_code(const CheckSettings& s, const std::string& text, const run::Runner& runner, WallThickness walls,
                        CheckReport& report) {
-  Progress progress;
+  ProgressLine progress("[offsetgen check]");
   auto [reference, value_options] = prepare_value_check(s, progress, report);
   // A density field's _graded reads t = thickness_for_density(rho(x)): the rebuilt model holds it.
   const run::FileMetadata& meta = report.meta;
@@ -371,7 +371,7 @@ CheckReport run_checks(const CheckSettings& s) {
   if (runner.loads_in_process()) {
     check_loaded_code(s, text, runner, walls, report);
   } else {
-    Progress progress;
+    ProgressLine progress("[offsetgen check]");
     prepare(s, text, runner, progress, report);
     if (s.run_values && report.prepared.ready) check_lane_values(s, walls, report);
   }

@@ -5,6 +5,7 @@
 #include "mesh/narrow_band.h"
 #include "mesh/stl_stream.h"
 #include "mesh/tiles.h"
+#include "support/progress_line.h"
 #include "surfaces/expression_input.h"
 #include "surfaces/lattice_map.h"
 #include "surfaces/surface.h"
@@ -19,44 +20,6 @@
 #include <sstream>
 
 namespace offsetgen {
-namespace {
-
-// One line on stderr, redrawn in place; only on a terminal.
-class ProgressBar {
- public:
-  ProgressBar() : enabled_(::isatty(STDERR_FILENO) == 1) {}
-  ~ProgressBar() { clear(); }
-  ProgressBar(const ProgressBar&) = delete;
-  ProgressBar& operator=(const ProgressBar&) = delete;
-
-  void update(const std::string& stage, double fraction) {
-    if (!enabled_) return;
-    std::string line = "[offsetgen mesh] " + stage;
-    if (fraction >= 0) {
-      constexpr int kWidth = 30;
-      const int filled = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * kWidth);
-      line += fmt::format(" [{}{}] {:3.0f}%", std::string(static_cast<size_t>(filled), '#'),
-                          std::string(static_cast<size_t>(kWidth - filled), ' '), 100 * fraction);
-    }
-    if (line == last_) return;
-    last_ = line;
-    std::fprintf(stderr, "\r\033[K%s", line.c_str());
-    std::fflush(stderr);
-  }
-  void clear() {
-    if (!enabled_ || last_.empty()) return;
-    std::fprintf(stderr, "\r\033[K");
-    std::fflush(stderr);
-    last_.clear();
-  }
-
- private:
-  bool enabled_;
-  std::string last_;
-};
-
-}  // namespace
-
 std::array<double, 3> parse_point(const std::string& text, const std::string& option) {
   std::vector<double> v;
   std::stringstream in(text);
@@ -165,9 +128,9 @@ int run_mesh_command(const MeshOptions& o) {
         "--density-field E");
   if (walls > 1)
     throw InputError("give one of --thickness, --density and --density-field: each one sets the wall's thickness");
-  ProgressBar bar;
+  ProgressLine bar("[offsetgen mesh]");
   mesh::MeshSummary summary = mesh::run_mesh(
-      s, [&](const std::string& stage, double f) { bar.update(stage, f); },
+      s, [&](const std::string& stage, double f) { bar.show(stage, f); },
       [&](const std::string& warning) {
         bar.clear();
         std::fprintf(stderr, "offsetgen mesh: warning: %s\n", warning.c_str());

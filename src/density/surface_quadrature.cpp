@@ -131,10 +131,6 @@ class ColumnIntegrator {
 
 }  // namespace
 
-std::vector<double> column_roots(FieldSampler& field, int axis, const std::array<double, 3>& p) {
-  return ColumnRoots(field, axis, p).find();
-}
-
 QuadratureResult integrate_over_surface(FieldSampler& field, const SurfaceIntegrand& integrand,
                                         const QuadratureOptions& options) {
   const size_t n = options.tolerance.size();

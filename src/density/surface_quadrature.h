@@ -52,9 +52,4 @@ struct QuadratureResult {
 QuadratureResult integrate_over_surface(FieldSampler& field, const SurfaceIntegrand& integrand,
                                         const QuadratureOptions& options);
 
-// Every root of F along the column through `p` parallel to `axis`, in [0, 1) (cell units). Sign
-// changes are isolated with the Hessian bound (a root-free interval is proven root-free), so only
-// roots of even multiplicity (exact tangencies, where the partition weight vanishes) can be missed.
-std::vector<double> column_roots(FieldSampler& field, int axis, const std::array<double, 3>& p);
-
 }  // namespace offsetgen::density

@@ -12,6 +12,7 @@
 #include "mesh/stl_stream.h"
 #include "mesh/tiles.h"
 #include "mesh/vdb_surface.h"
+#include "support/stopwatch.h"
 
 #include <fmt/format.h>
 
@@ -182,10 +183,6 @@ std::array<std::array<double, 3>, 2> mesh_box(const TriangleMesh& mesh) {
 
 int threads_for(const MeshSettings& s) {
   return s.threads > 0 ? s.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 // Each tile's triangles, in millimetres and facing outward, as they are produced.

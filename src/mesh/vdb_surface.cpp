@@ -96,6 +96,4 @@ TriangleMesh extract_surface(const SampledBand& band, double adaptivity, const V
   return collect(mesher);
 }
 
-const char* openvdb_version() { return "OpenVDB " OPENVDB_LIBRARY_VERSION_STRING; }
-
 }  // namespace offsetgen::mesh

@@ -18,7 +18,4 @@ TriangleMesh extract_surface(const SampledBand& band, double adaptivity);
 // polygons of the whole grid at adaptivity 0, with the same points along their seams.
 TriangleMesh extract_surface(const SampledBand& band, double adaptivity, const VoxelBox& owned);
 
-// "OpenVDB 10.0.1", for the summary.
-const char* openvdb_version();
-
 }  // namespace offsetgen::mesh

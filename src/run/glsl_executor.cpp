@@ -8,13 +8,10 @@
 
 #include "run/glsl_source.h"
 #include "run/headless_gl.h"
+#include "support/stopwatch.h"
 
 namespace offsetgen::glsl {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 constexpr GLuint kLocalSize = 64;          // compute work-group size
 constexpr GLuint kMaxGroups = 65535;       // GL's guaranteed minimum per dispatch dimension

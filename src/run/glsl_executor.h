@@ -38,15 +38,4 @@ struct RunStats {
 std::vector<float> run(Path path, const std::string& snippet, const std::string& call_expr,
                        const std::vector<Point>& inputs, int components = 1, RunStats* stats = nullptr);
 
-inline std::vector<float> run_compute(const std::string& snippet, const std::string& call_expr,
-                                      const std::vector<Point>& inputs, int components = 1, RunStats* stats = nullptr) {
-  return run(Path::Compute, snippet, call_expr, inputs, components, stats);
-}
-
-inline std::vector<float> run_fragment(const std::string& snippet, const std::string& call_expr,
-                                       const std::vector<Point>& inputs, int components = 1,
-                                       RunStats* stats = nullptr) {
-  return run(Path::Fragment, snippet, call_expr, inputs, components, stats);
-}
-
 }  // namespace offsetgen::glsl

@@ -10,6 +10,7 @@
 #include "step/step_file.h"
 #include "step/symmetry_patch.h"
 #include "step/wall_brep.h"
+#include "support/stopwatch.h"
 #include "surfaces/input_error.h"
 
 #include <fmt/format.h>
@@ -37,9 +38,6 @@ namespace offsetgen::step {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Control points per patch side tried in turn, up to the request's limit.
 // The jitter of the deviation's lines: fixed, so a run is repeatable.

@@ -47,7 +47,6 @@ struct Preset {
   int dims;
   std::vector<std::pair<const char*, bool>> parameters;  // role, whether a count
   std::vector<const char*> components;                   // with {0}, {1}, {2} for the parameters
-  const char* help;
 };
 
 const std::vector<Preset>& presets() {
@@ -55,21 +54,15 @@ const std::vector<Preset>& presets() {
       {"cylindrical",
        3,
        {{"N (cells around)", true}, {"A (radial cell size)", false}, {"C (axial cell size)", false}},
-       {"sqrt(x^2+y^2)/({1})", "{0}*atan2(y,x)/(2*Pi)", "z/({2})"},
-       "cylindrical:N,A,C   N cells around the z axis, radial cells of A, axial cells of C: "
-       "u = sqrt(x^2+y^2)/A, v = N atan2(y,x)/(2 Pi), w = z/C"},
+       {"sqrt(x^2+y^2)/({1})", "{0}*atan2(y,x)/(2*Pi)", "z/({2})"}},
       {"spherical",
        3,
        {{"N (cells around)", true}, {"M (cells pole to pole)", true}, {"A (radial cell size)", false}},
-       {"sqrt(x^2+y^2+z^2)/({2})", "{0}*atan2(y,x)/(2*Pi)", "{1}*atan2(sqrt(x^2+y^2),z)/Pi"},
-       "spherical:N,M,A     N cells around the z axis, M from pole to pole, radial cells of A: "
-       "u = sqrt(x^2+y^2+z^2)/A, v = N atan2(y,x)/(2 Pi), w = M atan2(sqrt(x^2+y^2),z)/Pi"},
+       {"sqrt(x^2+y^2+z^2)/({2})", "{0}*atan2(y,x)/(2*Pi)", "{1}*atan2(sqrt(x^2+y^2),z)/Pi"}},
       {"polar",
        2,
        {{"N (cells around)", true}, {"A (radial cell size)", false}},
-       {"sqrt(x^2+y^2)/({1})", "{0}*atan2(y,x)/(2*Pi)"},
-       "polar:N,A           (2D) N cells around the origin, radial cells of A: "
-       "u = sqrt(x^2+y^2)/A, v = N atan2(y,x)/(2 Pi)"},
+       {"sqrt(x^2+y^2)/({1})", "{0}*atan2(y,x)/(2*Pi)"}},
   };
   return list;
 }
@@ -158,15 +151,6 @@ std::string map_presets_summary() {
     out += fmt::format("{}{}:{}", out.empty() ? "" : ", ", p.name, roles);
   }
   return out + " (N, M cells around, A, C cell sizes)";
-}
-
-const std::vector<std::string>& lattice_map_presets() {
-  static const std::vector<std::string> lines = [] {
-    std::vector<std::string> out;
-    for (const auto& p : presets()) out.emplace_back(p.help);
-    return out;
-  }();
-  return lines;
 }
 
 LatticeMap parse_lattice_map(const std::string& text, const std::map<std::string, std::string>& params, int dims) {

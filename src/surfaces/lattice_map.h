@@ -30,8 +30,7 @@ LatticeMap parse_lattice_map(const std::string& text, const std::map<std::string
 // "X0,Y0,Z0:X1,Y1,Z1" (or X0,Y0:X1,Y1 in 2D), lo below hi on every axis; throws InputError.
 Surface::Box parse_domain(const std::string& text);
 
-// The presets, one line each, for docs; and "cylindrical:N,A,C, spherical:N,M,A, polar:N,A" for --help.
-const std::vector<std::string>& lattice_map_presets();
+// "cylindrical:N,A,C, spherical:N,M,A, polar:N,A", for --help.
 std::string map_presets_summary();
 
 // `surface` composed with `map`: field G(X) = F(k u(X), k v(X), k w(X)) with X physical, scale 1,

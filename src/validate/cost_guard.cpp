@@ -93,10 +93,6 @@ class Extrapolation {
 
 }  // namespace
 
-CostEstimate estimate_cost(const OffsetMethod& method, const Surface& surface, int order) {
-  return Extrapolation(method, surface).at(order);
-}
-
 void require_affordable(const OffsetMethod& method, const Surface& surface, int order,
                         const std::function<void(const std::string&)>& notice) {
   if (surface.from_catalog || order <= 2) return;

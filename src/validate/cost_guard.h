@@ -30,10 +30,6 @@ struct CostEstimate {
 // Throws InputError when `e` is nested deeper or larger than the limits above.
 void require_within_size_limits(const GiNaC::ex& e, const std::string& what);
 
-// Orders 1 and 2 of `method` built and extrapolated geometrically to `order` (an over-estimate by up
-// to ~2x on the cases measured for Richardson). Orders 1 and 2 are exact counts.
-CostEstimate estimate_cost(const OffsetMethod& method, const Surface& surface, int order);
-
 // For user expressions (catalog surfaces are known to stay within the limit): throws InputError when
 // the estimate exceeds kMaxFunctionOps, naming the estimate and the highest order within the limit;
 // otherwise calls `notice` with a time estimate when the run will take more than a few seconds.

@@ -5,6 +5,7 @@
 #include "offset/surface_programs.h"
 #include "run/c_library.h"
 #include "run/process.h"
+#include "support/stopwatch.h"
 #include "surfaces/expression_input.h"
 
 #include <fmt/format.h>
@@ -20,10 +21,6 @@ namespace offsetgen::wall {
 namespace {
 
 namespace fs = std::filesystem;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // "0.1" -> 0.1; nullopt for anything that is not one plain number.
 std::optional<double> plain_number(const std::string& text) {

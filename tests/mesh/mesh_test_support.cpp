@@ -22,20 +22,6 @@
 namespace offsetgen::mesh::testing {
 namespace fs = std::filesystem;
 
-std::string scratch_dir(const std::string& name) {
-  fs::path dir = fs::path(OFFSETGEN_MESH_TEST_TMP) / (name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-CliRun run_offsetgen(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {OFFSETGEN_EXE};
-  argv.insert(argv.end(), args.begin(), args.end());
-  run::ProcessResult r = run::run_process(argv);
-  return {r.exit_code, r.output};
-}
-
 std::vector<std::array<std::array<float, 3>, 3>> read_stl(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -221,11 +207,6 @@ TriangleMesh torus(double big, double small, const std::array<double, 3>& c, int
 
 void write_stl(const TriangleMesh& m, const std::string& path) {
   std::ofstream(path, std::ios::binary) << encode_mesh(m, MeshFormat::Stl, "test body");
-}
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {(std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()};
 }
 
 // "key: ... <number> ..." -> the first number after `label` in the summary.

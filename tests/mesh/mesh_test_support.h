@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mesh/triangle_mesh.h"
+#include "offsetgen_test_support.h"
 #include "run/c_library.h"
 
 #include <array>
@@ -14,7 +15,10 @@
 
 namespace offsetgen::mesh::testing {
 
-std::string scratch_dir(const std::string& name);
+// The runners every test folder shares (tests/support).
+using CliRun = test_support::CommandResult;
+using test_support::run_offsetgen;
+using test_support::scratch_dir;
 
 // A part meshed with --cells 3 --cell-size 10 plus `args` (surface and wall).
 struct Case {
@@ -26,12 +30,6 @@ inline void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 // Meshes the case and expects admesh to find no hole, no disconnected facet, no backwards edge and
 // one part, and the facets to face outward.
 void expect_clean_part(const Case& c);
-
-struct CliRun {
-  int exit_code = -1;
-  std::string output;
-};
-CliRun run_offsetgen(const std::vector<std::string>& args);
 
 // Facets of a binary STL (3 vertices each); throws when the file is not one.
 std::vector<std::array<std::array<float, 3>, 3>> read_stl(const std::string& path);
@@ -67,7 +65,7 @@ TriangleMesh sphere(double r, const std::array<double, 3>& c, int levels);
 // A torus about the z axis through c: major radius big, minor radius small, n x m quads.
 TriangleMesh torus(double big, double small, const std::array<double, 3>& c, int n, int m);
 void write_stl(const TriangleMesh& m, const std::string& path);
-std::string read_bytes(const std::string& path);
+inline std::string read_bytes(const std::string& path) { return test_support::read_file(path); }
 // "key: ... <number> ..." -> the first number after `label` in the summary.
 double summary_number(const std::string& summary, const std::string& label);
 // admesh counts every closed surface as a part: the outer one and each cavity the skin closes

@@ -11,6 +11,8 @@
 #include "step/wall_brep.h"
 #include "wall/wall_field.h"
 
+#include "offsetgen_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Common.hxx>
@@ -32,25 +34,10 @@ namespace offsetgen::step {
 namespace {
 namespace fs = std::filesystem;
 
-std::string scratch_dir(const std::string& name) {
-  fs::path dir = fs::path(OFFSETGEN_STEP_TEST_TMP) / (name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-run::ProcessResult run_offsetgen(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {OFFSETGEN_EXE};
-  argv.insert(argv.end(), args.begin(), args.end());
-  return run::run_process(argv);
-}
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+// The runners every test folder shares (tests/support).
+using test_support::run_offsetgen;
+using test_support::scratch_dir;
+std::string read_bytes(const std::string& path) { return test_support::read_file(path); }
 
 constexpr double kCellSize = 10, kTolerance = 0.01;
 
@@ -79,7 +66,7 @@ const CellCase& cell_case(const std::string& surface) {
 // One cell of a surface, written once for the tests below.
 struct Written {
   std::string path;
-  run::ProcessResult run;
+  test_support::CommandResult run;
 };
 const Written& one_cell(const std::string& surface = "schwarzp") {
   static std::map<std::string, Written> written;
@@ -232,7 +219,7 @@ double printed_volume(const std::string& output) {
 TEST_P(StepCell, OffsetgenCheckPassesItsFileWithExit0AndMeasuresTheExportsVolume) {
   const Written& w = one_cell(GetParam());
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
-  const run::ProcessResult r = run_offsetgen({"check", w.path});
+  const test_support::CommandResult r = run_offsetgen({"check", w.path});
   EXPECT_EQ(r.exit_code, 0) << r.output;
   const std::string& solids = cell_case(GetParam()).solids;
   const std::string& faces = cell_case(GetParam()).faces;
@@ -250,7 +237,7 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, StepCell,
 
 // `offsetgen step` of a wall from 0.5 mm to 1.5 mm along x over 2x1x1 cells of 10 mm.
 constexpr const char* kGraded = "0.05 + 0.05*x";
-run::ProcessResult step_graded(const std::string& surface, const std::string& path) {
+test_support::CommandResult step_graded(const std::string& surface, const std::string& path) {
   return run_offsetgen({"step", "--surface", surface, "--thickness", kGraded, "--cells", "2x1x1", "--cell-size", "10",
                         "--tolerance", "0.01", "-o", path});
 }
@@ -260,7 +247,7 @@ run::ProcessResult step_graded(const std::string& surface, const std::string& pa
 TEST(StepCli, GradedSchwarzPWallIsOneValidSolidWithinTheToleranceAndPassesCheck) {
   const std::string thickness = kGraded;
   const std::string path = scratch_dir("graded") + "/graded.step";
-  const run::ProcessResult r = step_graded("schwarzp", path);
+  const test_support::CommandResult r = step_graded("schwarzp", path);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("each image fitted on its own (graded)"), std::string::npos) << r.output;
   const TopoDS_Shape shape = read_step(path);
@@ -273,7 +260,7 @@ TEST(StepCli, GradedSchwarzPWallIsOneValidSolidWithinTheToleranceAndPassesCheck)
   };
   const double thin = volume_in_cell(0), thick = volume_in_cell(10);
   EXPECT_GT(thick, 1.5 * thin) << thin << " mm^3 and " << thick << " mm^3";
-  const run::ProcessResult checked = run_offsetgen({"check", path});
+  const test_support::CommandResult checked = run_offsetgen({"check", path});
   EXPECT_EQ(checked.exit_code, 0) << checked.output;
   EXPECT_NE(checked.output.find("t = 0.05 + 0.05*x cell (0.5 to 1.5 mm in the block)"), std::string::npos)
       << checked.output;
@@ -292,7 +279,7 @@ TEST(StepCheck, AMovedControlPointFailsWithExit1) {
   text.replace(x, comma - x, std::to_string(std::stod(text.substr(x, comma - x)) + 2.0));
   const std::string moved = scratch_dir("moved") + "/moved.step";
   std::ofstream(moved, std::ios::binary) << text;
-  const run::ProcessResult r = run_offsetgen({"check", moved});
+  const test_support::CommandResult r = run_offsetgen({"check", moved});
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("FAILED"), std::string::npos) << r.output;
 }
@@ -305,13 +292,13 @@ TEST(StepCheck, AStepFileWithoutOffsetgenMetadataIsRefusedWithExit2) {
   text.replace(at, std::string("offsetgen-metadata").size(), "some-other-program");
   const std::string foreign = scratch_dir("foreign") + "/foreign.stp";
   std::ofstream(foreign, std::ios::binary) << text;
-  const run::ProcessResult r = run_offsetgen({"check", foreign});
+  const test_support::CommandResult r = run_offsetgen({"check", foreign});
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("no offsetgen-metadata in its header"), std::string::npos) << r.output;
 }
 
 TEST(StepCli, HelpNamesEverySurfaceThatHasAPatchLayout) {
-  const run::ProcessResult r = run_offsetgen({"step", "--help"});
+  const test_support::CommandResult r = run_offsetgen(std::vector<std::string>{"step", "--help"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("by symmetry patches (" + patch_layout_surfaces() + ")"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("by box patches (gyroid, fischerkoch, splitp, lidinoid)"), std::string::npos) << r.output;
@@ -322,14 +309,14 @@ TEST(StepCli, HelpNamesEverySurfaceThatHasAPatchLayout) {
 // corner tetrahedra).
 TEST(StepCli, DiamondCellBySymmetryPatchesIsThreeValidSolidsWithinTheToleranceAndPassesCheck) {
   const std::string path = scratch_dir("diamond_symmetry") + "/d.step";
-  const run::ProcessResult r =
+  const test_support::CommandResult r =
       run_offsetgen({"step", "--surface", "diamond", "--thickness", "0.1", "--cells", "1", "--cell-size", "10",
                      "--tolerance", "0.01", "--patches", "symmetry", "-o", path});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("336 B-spline (bicubic, 6x6 control points per symmetry patch)"), std::string::npos)
       << r.output;
   expect_valid_solids_within_the_tolerance(read_step(path), "diamond", "0.1", {1, 1, 1}, 3);
-  const run::ProcessResult checked = run_offsetgen({"check", path});
+  const test_support::CommandResult checked = run_offsetgen({"check", path});
   EXPECT_EQ(checked.exit_code, 0) << checked.output;
 }
 
@@ -337,12 +324,12 @@ TEST(StepCli, DiamondCellBySymmetryPatchesIsThreeValidSolidsWithinTheToleranceAn
 // carries the expression, its name and parameters, and check builds the same walls from them.
 TEST(StepCli, UserExpressionByBoxPatchesIsValidWithinTheToleranceAndPassesCheck) {
   const std::string path = scratch_dir("expression") + "/e.step";
-  const run::ProcessResult r =
+  const test_support::CommandResult r =
       run_offsetgen({"step", "--expr", "cos(2*Pi*x)+cos(2*Pi*y)+cos(2*Pi*z)-c", "--param", "c=0.3", "--name", "pc",
                      "--thickness", "0.1", "--cells", "1", "--cell-size", "10", "--tolerance", "0.01", "-o", path});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("per box patch"), std::string::npos) << r.output;
-  const run::ProcessResult checked = run_offsetgen({"check", path});
+  const test_support::CommandResult checked = run_offsetgen({"check", path});
   EXPECT_EQ(checked.exit_code, 0) << checked.output;
   EXPECT_NE(checked.output.find("pc (F = cos(2*Pi*x)+cos(2*Pi*y)+cos(2*Pi*z)-c) wall"), std::string::npos)
       << checked.output;
@@ -353,10 +340,10 @@ TEST(StepCli, UserExpressionByBoxPatchesIsValidWithinTheToleranceAndPassesCheck)
 // where it lies anyway, and the file passes the same checks.
 TEST(StepCli, GradedGyroidWallOfBoxPatchesIsValidWithinTheToleranceAndPassesCheck) {
   const std::string path = scratch_dir("graded_gyroid") + "/graded.step";
-  const run::ProcessResult r = step_graded("gyroid", path);
+  const test_support::CommandResult r = step_graded("gyroid", path);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   expect_valid_solids_within_the_tolerance(read_step(path), "gyroid", kGraded, {2, 1, 1}, 3);
-  const run::ProcessResult checked = run_offsetgen({"check", path});
+  const test_support::CommandResult checked = run_offsetgen({"check", path});
   EXPECT_EQ(checked.exit_code, 0) << checked.output;
   EXPECT_NE(checked.output.find("PASS  volume"), std::string::npos) << checked.output;
 }
@@ -369,7 +356,7 @@ TEST_P(StepSameBytes, SameInputsWriteTheSameBytes) {
   const Written& w = one_cell(GetParam());
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const std::string again = scratch_dir("again_" + GetParam()) + "/p.step";
-  const run::ProcessResult r =
+  const test_support::CommandResult r =
       run_offsetgen({"step", "--surface", GetParam(), "--thickness", cell_case(GetParam()).thickness, "--cells", "1",
                      "--cell-size", "10", "--tolerance", "0.01", "-o", again, "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -426,7 +413,7 @@ TEST_P(StepRefuses, WithItsExitCodeAReasonAndNoFile) {
   if (!given("--cells")) args.insert(args.end(), {"--cells", "1"});
   if (!given("-o")) args.insert(args.end(), {"-o", out});
   args.insert(args.end(), r.args.begin(), r.args.end());
-  const run::ProcessResult run = run_offsetgen(args);
+  const test_support::CommandResult run = run_offsetgen(args);
   EXPECT_EQ(run.exit_code, r.exit_code) << run.output;
   EXPECT_NE(run.output.find(r.says), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(out));
