@@ -103,8 +103,10 @@ void add_check_command(CLI::App& app, CheckOptions& o) {
                   "Largest |measured - requested| volume fraction (each density, each cell)")
       ->capture_default_str();
   cmd->footer(
-      "Exit status: 0 all checks pass, 1 a check failed (compile error, numbers out of bound), 2 usage or input\n"
-      "error (not an offsetgen file, damaged metadata, no C compiler, bad --thickness).\n"
+      "Exit status: 0 all checks pass, 1 a check failed (compile error, numbers out of bound: the file is wrong),\n"
+      "2 usage or input error (not an offsetgen file, damaged metadata, bad --thickness), 4 not checked: a tool\n"
+      "the check needs is missing (a C compiler, glslang, nvcc, node and Dawn's bindings, python3 with NumPy, an\n"
+      "OpenCL platform); the message names it and how to get it.\n"
       "Example: offsetgen check gyroid_o4.h --json gyroid_o4.json --plot gyroid_o4.png");
 }
 
@@ -168,7 +170,14 @@ int run_check(const CheckOptions& o) {
                       s.plot_script.empty() ? "" : " at " + s.plot_script));
   }
 
-  check::CheckReport report = check::run_checks(s);
+  check::CheckReport report;
+  try {
+    report = check::run_checks(s);
+  } catch (const ToolMissing& e) {
+    // The file may be fine: this machine cannot run it. Not a failure of the file, not bad input.
+    fmt::print(stderr, "offsetgen check: not checked: {}\n", e.what());
+    return kExitNotChecked;
+  }
   std::fputs(check::format_report(report).c_str(), stdout);
   std::fflush(stdout);
   if (!s.json_path.empty()) {

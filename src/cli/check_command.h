@@ -36,7 +36,8 @@ struct CheckOptions {
 
 void add_check_command(CLI::App& app, CheckOptions& options);
 
-// Exit codes: kExitOk all checks pass, kExitCheckFailed a check failed, kExitUsage usage or input error.
+// Exit codes: kExitOk all checks pass, kExitCheckFailed a check failed, kExitUsage usage or input error,
+// kExitNotChecked a tool the check needs is missing.
 int run_check(const CheckOptions& options);
 
 // Whether `offsetgen check` was given a STEP file (.step or .stp, any case): offsetgen-step checks

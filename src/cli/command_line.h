@@ -14,6 +14,7 @@ enum ExitCode {
   kExitCheckFailed = 1,
   kExitUsage = 2,
   kExitInternal = 3,
+  kExitNotChecked = 4,  // check: a tool it needs is missing (ToolMissing); the file was not judged
   kExitInterrupted = 130,
   kExitTerminated = 143
 };

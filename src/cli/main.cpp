@@ -46,8 +46,9 @@ int main(int argc, char** argv) {
                                    GINACLIB_MINOR_VERSION, GINACLIB_MICRO_VERSION));
   app.require_subcommand(1);
   app.footer(
-      "Exit status: 0 success, 1 a check failed, 2 usage or input error, 3 internal error, 130/143 interrupted\n"
-      "by SIGINT/SIGTERM (the unfinished files removed).\n"
+      "Exit status: 0 success, 1 a check failed, 2 usage or input error, 3 internal error,\n"
+      "4 not checked (a tool the check needs is missing), 130/143 interrupted by SIGINT/SIGTERM\n"
+      "(the unfinished files removed).\n"
       "Example: offsetgen generate --surface gyroid --order 4 --lang c -o gyroid_o4.h");
 
   GenerateOptions generate;

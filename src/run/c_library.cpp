@@ -1,6 +1,7 @@
 #include "run/c_library.h"
 
 #include "run/process.h"
+#include "surfaces/input_error.h"
 #include "surfaces/surface.h"
 
 #include <dlfcn.h>
@@ -50,7 +51,7 @@ std::vector<std::string> first_found(const char* env, std::initializer_list<cons
   if (required) {
     std::string tried;
     for (const char* name : names) tried += std::string(tried.empty() ? "" : ", ") + name;
-    throw InputError(
+    throw ToolMissing(
         fmt::format("no {} on PATH (looked for {}; set ${} to choose one). `offsetgen check` compiles "
                     "the header with the system compiler; install one with `apt-get install gcc`.",
                     what, tried, env));

@@ -1,4 +1,5 @@
 #include "run/cuda_host.h"
+#include "surfaces/input_error.h"
 
 #include <fmt/format.h>
 
@@ -55,7 +56,7 @@ std::string describe_nvcc(const std::string& nvcc, const FileMetadata& meta) {
       "command with --lang c, then `offsetgen check {}.h`)",
       meta.prefix);
   if (nvcc.empty())
-    throw std::runtime_error(
+    throw ToolMissing(
         "no nvcc found ($NVCC, PATH, $CUDA_PATH/bin, /usr/local/cuda/bin): a CUDA header is checked by "
         "compiling its host path with the CUDA toolkit's nvcc; install the toolkit or set $NVCC" +
         instead);

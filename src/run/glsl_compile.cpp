@@ -1,6 +1,7 @@
 #include "run/glsl_compile.h"
 
 #include "run/process.h"
+#include "surfaces/input_error.h"
 #include "surfaces/surface.h"
 
 #include <fmt/format.h>
@@ -99,7 +100,7 @@ std::vector<GlslCompileResult> compile_glsl(const std::string& snippet, const Fi
                                             const std::string& display_name) {
   const std::string validator = find_on_path("glslangValidator");
   if (validator.empty())
-    throw InputError(
+    throw ToolMissing(
         "glslangValidator is not on PATH: `offsetgen check` compiles GLSL snippets with it "
         "(Debian: apt-get install glslang-tools)");
   std::string dir_pattern = (fs::temp_directory_path() / "offsetgen-glsl-XXXXXX").string();

@@ -1,6 +1,7 @@
 #include "run/numpy_module.h"
 
 #include "run/process.h"
+#include "surfaces/input_error.h"
 
 #include <fmt/format.h>
 
@@ -40,11 +41,11 @@ ProcessResult run_python(const std::string& python, const std::vector<std::strin
 
 std::string describe_python(const std::string& python) {
   if (python.empty())
-    throw std::runtime_error("no python3 found: a NumPy module is checked by running it (Debian: python3-numpy)");
+    throw ToolMissing("no python3 found: a NumPy module is checked by running it (Debian: python3-numpy)");
   const ProcessResult r = run_process({python, "-c", "import numpy; print(numpy.__version__)"});
-  if (!r.started) throw std::runtime_error(fmt::format("cannot run {}", python));
+  if (!r.started) throw ToolMissing(fmt::format("cannot run {}", python));
   if (r.exit_code != 0)
-    throw std::runtime_error(
+    throw ToolMissing(
         fmt::format("{} cannot import NumPy (Debian: apt-get install python3-numpy): {}", python, r.output));
   std::string version = r.output;
   while (!version.empty() && (version.back() == '\n' || version.back() == '\r')) version.pop_back();

@@ -1,4 +1,5 @@
 #include "run/opencl_host.h"
+#include "surfaces/input_error.h"
 
 #include <fmt/format.h>
 
@@ -159,6 +160,7 @@ HostProgram::HostProgram(const Toolchain& tools, const std::string& file_text, c
 Device HostProgram::build() const {
   if (!step_.ok) throw std::runtime_error("the host program did not compile");
   const ProcessResult r = run_process({(dir_.path() / "host").string(), (dir_.path() / "program.cl").string(), "info"});
+  if (r.started && r.exit_code == 7) throw ToolMissing(r.output);  // no OpenCL platform or device
   if (!r.started || r.exit_code != 0) throw std::runtime_error(r.output);
   std::istringstream in(r.output);
   Device d;

@@ -19,6 +19,14 @@ class ResourceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A tool that running generated code needs is not installed (no C compiler, no nvcc, no Dawn
+// bindings): nothing is wrong with the input. `offsetgen check` then says "not checked" and exits 4;
+// elsewhere (mesh's C compiler) it is an input error, exit 2. The message names the tool and how to get it.
+class ToolMissing : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 // A result that failed its own check before it was kept (a part whose mesh is not closed): not the
 // user's input; the CLI maps it to exit 3, and the output was not written.
 class UnsoundPartError : public std::runtime_error {

@@ -194,7 +194,8 @@ TEST_F(CheckCli, ATwoDimensionalSurfaceWithCrossingsPasses) {
   EXPECT_EQ(j["thickness"]["singular_on_f"], 4);  // (0, 0.5), (0.5, 0), (0.5, 1), (1, 0.5)
 }
 
-TEST_F(CheckCli, NoCompilerOnPathExits2) {
+// Nothing to compile with: the header is not judged (exit 4, "not checked"), rather than failed.
+TEST_F(CheckCli, NoCompilerOnPathIsNotCheckedExit4) {
   const char* old = std::getenv("PATH");
   const std::string saved = old ? old : "";
   const char* old_cc = std::getenv("CC");
@@ -204,8 +205,9 @@ TEST_F(CheckCli, NoCompilerOnPathExits2) {
   auto r = testing::run_offsetgen(args({"check", *header_}));
   ::setenv("PATH", saved.c_str(), 1);
   if (old_cc) ::setenv("CC", saved_cc.c_str(), 1);
-  EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("no C compiler on PATH"), std::string::npos) << r.output;
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("offsetgen check: not checked: no C compiler on PATH"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("FAIL"), std::string::npos) << r.output;
 }
 
 TEST_F(CheckCli, GlslFilesAreCompiledForFourTargets) {
@@ -308,16 +310,30 @@ TEST_F(CheckCli, AWgslSnippetRunsOnDawnAndAWrongConstantFails) {
       << wrong.output;
 }
 
-// Without Dawn's bindings the WGSL runner refuses, naming what to install; check fails (exit 1).
-TEST_F(CheckCli, AWgslSnippetWithoutDawnFailsNamingIt) {
+// Without Dawn's bindings the snippet is not judged: "not checked" naming what to install (exit 4),
+// not FAILED.
+TEST_F(CheckCli, AWgslSnippetWithoutDawnIsNotCheckedNamingIt) {
   if (run::find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
   const ShaderPair wgsl = shader_pair(*dir_, "wgsl");
   ::setenv("OFFSETGEN_WEBGPU", (*dir_ + "/no-webgpu-here").c_str(), 1);
   auto r = testing::run_offsetgen({"check", wgsl.good, "--points", "10"});
   ::setenv("OFFSETGEN_WEBGPU", OFFSETGEN_WEBGPU_DIR, 1);
-  EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("FAIL   compile"), std::string::npos) << r.output;
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("offsetgen check: not checked: $OFFSETGEN_WEBGPU is"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("no-webgpu-here"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("FAIL"), std::string::npos) << r.output;
+}
+
+// Without $OFFSETGEN_WEBGPU, check finds the bindings tools/install_deps.sh installed (in the source
+// tree offsetgen was built from) and runs the snippet.
+TEST_F(CheckCli, AWgslSnippetFindsTheInstalledDawnWithoutAnEnvironmentVariable) {
+  if (run::find_on_path("node").empty()) GTEST_SKIP() << "node not installed";
+  const ShaderPair wgsl = shader_pair(*dir_, "wgsl");
+  ::unsetenv("OFFSETGEN_WEBGPU");
+  auto r = testing::run_offsetgen({"check", wgsl.good, "--points", "10"});
+  ::setenv("OFFSETGEN_WEBGPU", OFFSETGEN_WEBGPU_DIR, 1);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("PASS   values on Dawn"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // (cuda_host.h; no GPU needed), in double and float.
 #include "run/cuda_host.h"
 #include "run/runner.h"
+#include "surfaces/input_error.h"
 
 #include <fmt/format.h>
 
@@ -40,6 +41,8 @@ class CudaRunner final : public Runner {
     const std::string nvcc = cuda::find_nvcc();
     try {
       p.toolchain = cuda::describe_nvcc(nvcc, meta);
+    } catch (const ToolMissing&) {
+      throw;  // no nvcc: not checked, rather than failed
     } catch (const std::runtime_error& e) {
       p.outcomes.push_back({"compile", false, e.what()});
       return p;

@@ -87,7 +87,7 @@ class HlslRunner final : public Runner {
                    const ProgressFn& progress) const override {
     const std::string glslang = find_on_path("glslangValidator");
     if (glslang.empty())
-      throw InputError(
+      throw ToolMissing(
           "glslangValidator is not on PATH: an HLSL snippet is checked by compiling it to SPIR-V with glslang's "
           "HLSL front end (Debian: apt-get install glslang-tools)");
     Prepared p;

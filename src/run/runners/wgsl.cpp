@@ -2,6 +2,7 @@
 // runs one compute shader per function with its OpenGL ES backend on Mesa llvmpipe, in float32.
 #include "run/process.h"
 #include "run/runner.h"
+#include "surfaces/input_error.h"
 
 #include <fmt/format.h>
 
@@ -14,27 +15,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// node --input-type=module -e kDawn <mode> ...:
+// node --input-type=module -e kDawn <webgpu index.js> <mode> ...:
 //   validate <a.wgsl>: prints Dawn's messages as line:column: type: message; exit 1 on errors.
 //   run <shader.wgsl> <points.f32> <results.f32>: runs offsetgen_main over the points (4 float32
 //   each), writes one vec4<f32> per point.
 // Exit 2: Dawn could not start; the message says what to install.
 constexpr const char* kDawn = R"(import { readFileSync, writeFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
-import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 function fail(message) { process.stderr.write(`${message}\n`); process.exit(2); }
 
-async function device() {
-  let entry;
-  try {
-    entry = process.env.OFFSETGEN_WEBGPU ? join(process.env.OFFSETGEN_WEBGPU, 'index.js')
-                                         : createRequire(join(process.cwd(), 'offsetgen.js')).resolve('webgpu');
-  } catch (e) {
-    fail('Dawn\'s Node bindings are not installed: `npm install webgpu@0.6.2` and set OFFSETGEN_WEBGPU to ' +
-         'its node_modules/webgpu directory');
-  }
+async function device(entry) {
   let webgpu;
   try { webgpu = await import(pathToFileURL(entry).href); } catch (e) { fail(`cannot load ${entry}: ${e.message}`); }
   Object.assign(globalThis, webgpu.globals);
@@ -56,8 +47,8 @@ async function compile(dev, code) {
   return { module, errors };
 }
 
-const [mode, ...args] = process.argv.slice(1);
-const { adapter, dev } = await device();
+const [entry, mode, ...args] = process.argv.slice(1);
+const { adapter, dev } = await device(entry);
 const { module, errors } = await compile(dev, readFileSync(args[0], 'utf8'));
 if (errors.length) process.exit(1);
 if (mode === 'validate') {
@@ -90,8 +81,42 @@ readback.unmap();
 process.exit(0);
 )";
 
-ProcessResult run_dawn(const std::string& node, const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {node, "--input-type=module", "-e", kDawn};
+// Where Dawn's Node bindings are: $OFFSETGEN_WEBGPU; node_modules/webgpu in the working directory or
+// one above it (as node resolves `webgpu` from there); npm's global folders; the source tree this
+// offsetgen was built from, where tools/install_deps.sh installs them. Returns the package's index.js,
+// or throws ToolMissing saying where it looked.
+std::string find_webgpu() {
+  const auto entry = [](const fs::path& dir) { return dir / "index.js"; };
+  if (const char* env = std::getenv("OFFSETGEN_WEBGPU"); env != nullptr && *env != '\0') {
+    if (fs::is_regular_file(entry(env))) return entry(env).string();
+    throw ToolMissing(fmt::format(
+        "$OFFSETGEN_WEBGPU is {}, which holds no webgpu package (no index.js): set it to a node_modules/webgpu "
+        "directory (npm install webgpu@0.6.2), or unset it to let check look for one",
+        env));
+  }
+  std::vector<fs::path> looked;
+  std::error_code ec;
+  for (fs::path dir = fs::current_path(ec); !ec && !dir.empty(); dir = dir.parent_path()) {
+    looked.push_back(dir / "node_modules" / "webgpu");
+    if (dir == dir.root_path()) break;
+  }
+  for (const char* global : {"/usr/local/lib/node_modules/webgpu", "/usr/lib/node_modules/webgpu"})
+    looked.emplace_back(global);
+  looked.push_back(fs::path(OFFSETGEN_BUILT_FROM) / "tests" / "wgsl" / "node_modules" / "webgpu");
+  std::string where;
+  for (const fs::path& dir : looked) {
+    if (fs::is_regular_file(entry(dir))) return entry(dir).string();
+    where += (where.empty() ? "" : ", ") + dir.string();
+  }
+  throw ToolMissing(fmt::format(
+      "Dawn's Node bindings (the npm package webgpu) are not installed; looked in {}. Install them with `npm "
+      "install -g webgpu@0.6.2` (or tools/install_deps.sh), or set $OFFSETGEN_WEBGPU to a node_modules/webgpu "
+      "directory",
+      where));
+}
+
+ProcessResult run_dawn(const std::string& node, const std::string& webgpu, const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {node, "--input-type=module", "-e", kDawn, webgpu};
   argv.insert(argv.end(), args.begin(), args.end());
   return run_process(argv);
 }
@@ -113,15 +138,16 @@ std::string compute_shader(const std::string& snippet, const FileMetadata& meta,
 }
 
 // The function's shader over the points, through float32 files.
-std::vector<double> run_function(const std::string& node, const std::string& snippet, const FileMetadata& meta,
-                                 const std::string& function, const std::vector<Point>& points, int components) {
+std::vector<double> run_function(const std::string& node, const std::string& webgpu, const std::string& snippet,
+                                 const FileMetadata& meta, const std::string& function,
+                                 const std::vector<Point>& points, int components) {
   ScratchDir dir("offsetgen-wgsl");
   const fs::path shader = dir.path() / "shader.wgsl", in = dir.path() / "in.f32", out = dir.path() / "out.f32";
   std::ofstream(shader) << compute_shader(snippet, meta, function);
   const std::vector<std::array<float, 4>> inputs = narrowed(points);
   std::ofstream(in, std::ios::binary)
       .write(reinterpret_cast<const char*>(inputs.data()), static_cast<std::streamsize>(inputs.size() * 16));
-  const ProcessResult r = run_dawn(node, {"run", shader.string(), in.string(), out.string()});
+  const ProcessResult r = run_dawn(node, webgpu, {"run", shader.string(), in.string(), out.string()});
   if (!r.started || r.exit_code != 0)
     throw std::runtime_error(fmt::format("Dawn failed on {}:\n{}", function, r.output));
   std::vector<float> results(4 * points.size());
@@ -155,15 +181,15 @@ class WgslRunner final : public Runner {
     p.listing = Listing::Compile;
     p.json_key = "compile";
     const std::string node = find_node();
-    if (node.empty()) {
-      p.outcomes.push_back({"compile", false,
-                            "no node on PATH ($OFFSETGEN_NODE): a WGSL snippet runs on Dawn through its Node "
-                            "bindings (Debian: nodejs npm, then npm install webgpu@0.6.2)"});
-      return p;
-    }
+    if (node.empty())
+      throw ToolMissing(
+          "no node on PATH ($OFFSETGEN_NODE): a WGSL snippet runs on Dawn through its Node bindings (Debian: "
+          "nodejs npm, then npm install -g webgpu@0.6.2)");
+    const std::string webgpu = find_webgpu();
     progress("compile", "Dawn: the snippet as a shader module");
-    CompileStep step = run_step("Dawn shader module", {node, "--input-type=module", "-e", kDawn, "validate", path});
-    step.command = {node, "<offsetgen's Dawn runner>", "validate", path};
+    CompileStep step =
+        run_step("Dawn shader module", {node, "--input-type=module", "-e", kDawn, webgpu, "validate", path});
+    step.command = {node, "<offsetgen's Dawn runner>", webgpu, "validate", path};
     p.toolchain = step.ok ? step.output.substr(step.output.rfind('\n', step.output.size() - 2) + 1) : node;
     while (!p.toolchain.empty() && p.toolchain.back() == '\n') p.toolchain.pop_back();
     p.steps.push_back(step);
@@ -173,8 +199,9 @@ class WgslRunner final : public Runner {
     Lane lane;
     lane.label = "wgsl";
     lane.graded = meta.thickness.has_value();
-    lane.evaluate = [node, text, meta](const std::string& function, const std::vector<Point>& points, int components) {
-      return run_function(node, text, meta, function, points, components);
+    lane.evaluate = [node, webgpu, text, meta](const std::string& function, const std::vector<Point>& points,
+                                               int components) {
+      return run_function(node, webgpu, text, meta, function, points, components);
     };
     p.lanes.push_back(lane);
     return p;
