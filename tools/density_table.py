@@ -3,7 +3,7 @@
 
 usage: tools/density_table.py [path/to/offsetgen]     (default: build/offsetgen)
 
-Runs `offsetgen density --surface S --rho R --json` once per surface (R: a density every surface
+Runs `offsetgen density --surface S --density R --json` once per surface (R: a density every surface
 allows) and formats A, chi (with the Gauss-Bonnet residual), V_0, integral(H dA), the largest
 principal curvature, t_max, rho_max and the network's density range as a Markdown table.
 """
@@ -15,7 +15,7 @@ SURFACES = ["gyroid", "schwarzp", "diamond", "neovius", "iwp", "fischerkoch", "l
 
 
 def constants(offsetgen, surface):
-    out = subprocess.run([offsetgen, "density", "--surface", surface, "--rho", "0.05", "--json"],
+    out = subprocess.run([offsetgen, "density", "--surface", surface, "--density", "0.05", "--json"],
                          check=True, capture_output=True, text=True).stdout
     return json.loads(out)
 

@@ -107,7 +107,7 @@ struct ValueCheckSetup {
   ValueCheckOptions options;
 };
 
-ValueCheckSetup prepare_value_check(const CheckSettings& s, ProgressLine& progress, CheckReport& report) {
+ValueCheckSetup prepare_value_check(const CheckRequest& s, ProgressLine& progress, CheckReport& report) {
   progress.show("model: rebuilding the symbolic offset model from the metadata");
   ValueCheckSetup setup{rebuild_reference(report.meta), s.values};
   report.warnings.insert(report.warnings.end(), setup.reference->warnings.begin(), setup.reference->warnings.end());
@@ -127,7 +127,7 @@ struct WallThickness {
   std::optional<GiNaC::ex> file;
 };
 
-WallThickness read_thickness(const CheckSettings& s, const run::FileMetadata& meta) {
+WallThickness read_thickness(const CheckRequest& s, const run::FileMetadata& meta) {
   WallThickness w;
   w.measured_text = s.thickness ? s.thickness : meta.thickness;
   if (w.measured_text) w.measured = parse_thickness(*w.measured_text, meta, s.params);
@@ -154,7 +154,7 @@ void record_preparation(CheckReport& report) {
 }
 
 // The runner compiles, loads or launches the file; its outcomes and warnings go into the report.
-void prepare(const CheckSettings& s, const std::string& text, const run::Runner& runner, ProgressLine& progress,
+void prepare(const CheckRequest& s, const std::string& text, const run::Runner& runner, ProgressLine& progress,
              CheckReport& report) {
   report.prepared = runner.prepare(
       s.file, text, report.meta,
@@ -166,7 +166,7 @@ void prepare(const CheckSettings& s, const std::string& text, const run::Runner&
 // A shader, module or kernel: its lanes against the 40-digit reference, each within the limits of its
 // precision. The thickness sweep and the density relations are left to the C header of the same
 // generation.
-void check_lane_values(const CheckSettings& s, const WallThickness& walls, CheckReport& report) {
+void check_lane_values(const CheckRequest& s, const WallThickness& walls, CheckReport& report) {
   ProgressLine progress("[offsetgen check]");
   ValueCheckSetup setup = prepare_value_check(s, progress, report);
   const std::string& verdict = report.words.verdict;
@@ -187,7 +187,7 @@ void check_lane_values(const CheckSettings& s, const WallThickness& walls, Check
 
 // Item 3: the paper's ray measurement of the constant wall, its convergence orders, and the rays that
 // found no crossing.
-void check_constant_wall(const CheckSettings& s, const Probe& probe, const ThicknessOptions& options,
+void check_constant_wall(const CheckRequest& s, const Probe& probe, const ThicknessOptions& options,
                          CheckReport& report) {
   report.thickness = measure_constant(probe, options);
   const ThicknessReport& t = *report.thickness;
@@ -224,7 +224,7 @@ void check_lipschitz(const Probe& probe, const Reference& reference, CheckReport
 
 // The graded wall t(x): its total, one-sided and paper orders against those the file's method
 // promises (offset/method.h, MethodFacts), and its rays without a crossing.
-void check_graded_wall(const CheckSettings& s, Probe probe, const Reference& reference, const WallThickness& walls,
+void check_graded_wall(const CheckRequest& s, Probe probe, const Reference& reference, const WallThickness& walls,
                        bool compiled, const ThicknessOptions& options, CheckReport& report) {
   const run::FileMetadata& meta = report.meta;
   ThicknessFunction tfun(*walls.measured, meta.dims);
@@ -266,7 +266,7 @@ void check_graded_wall(const CheckSettings& s, Probe probe, const Reference& ref
 }
 
 // Items 3 and 4 through the loaded functions: the constant wall, the Lipschitz bounds, the graded wall.
-void check_walls(const CheckSettings& s, const run::LoadedFunctions& functions, const Reference& reference,
+void check_walls(const CheckRequest& s, const run::LoadedFunctions& functions, const Reference& reference,
                  const WallThickness& walls, ProgressLine& progress, CheckReport& report) {
   // A mapped file is measured in the largest cube centred in its domain (check/domain_cube.h).
   const DomainCube cube = domain_cube(report.meta);
@@ -286,7 +286,7 @@ void check_walls(const CheckSettings& s, const run::LoadedFunctions& functions, 
 }
 
 // Item 5: the density relations and the volume fractions of files with density functions.
-void check_density(const CheckSettings& s, const run::LoadedFunctions& functions, const Reference& reference,
+void check_density(const CheckRequest& s, const run::LoadedFunctions& functions, const Reference& reference,
                    ProgressLine& progress, CheckReport& report) {
   const run::FileMetadata& meta = report.meta;
   DensityCheckOptions options = s.density;
@@ -298,7 +298,7 @@ void check_density(const CheckSettings& s, const run::LoadedFunctions& functions
 }
 
 // Code loaded into this process (a C header): every check, through its functions.
-void check_loaded_code(const CheckSettings& s, const std::string& text, const run::Runner& runner, WallThickness walls,
+void check_loaded_code(const CheckRequest& s, const std::string& text, const run::Runner& runner, WallThickness walls,
                        CheckReport& report) {
   ProgressLine progress("[offsetgen check]");
   auto [reference, value_options] = prepare_value_check(s, progress, report);
@@ -359,7 +359,7 @@ std::vector<double> parse_h_list(const std::string& text) {
   return out;
 }
 
-CheckReport run_checks(const CheckSettings& s) {
+CheckReport run_checks(const CheckRequest& s) {
   CheckReport report;
   report.file = s.file;
   std::string text;

@@ -17,7 +17,7 @@
 
 namespace offsetgen::check {
 
-struct CheckSettings {
+struct CheckRequest {
   std::string file;
   std::vector<double> h;                      // sweep, cell units (default: default_sweep())
   std::optional<std::string> thickness;       // graded wall t(x) (overrides the file's)
@@ -68,6 +68,6 @@ struct CheckReport {
 
 // Runs everything. Throws InputError for usage and input problems (exit 2); a failed check comes
 // back as report.pass == false (exit 1).
-CheckReport run_checks(const CheckSettings& settings);
+CheckReport run_checks(const CheckRequest& settings);
 
 }  // namespace offsetgen::check

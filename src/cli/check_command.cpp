@@ -125,11 +125,11 @@ std::array<int, 3> parse_block(const std::string& text) {
 }  // namespace
 
 int run_check(const CheckOptions& o) {
-  check::CheckSettings s;
+  check::CheckRequest s;
   s.file = o.file;
   if (!o.h_list.empty()) s.h = check::parse_h_list(o.h_list);
   if (o.thickness_given) s.thickness = o.thickness;
-  for (const auto& p : o.params) s.params.insert(split_param(p));
+  s.params = parse_params(o.params);
   s.json_path = o.json_path;
   s.plot_path = o.plot_path;
   s.plot_script = o.plot_script;

@@ -21,14 +21,15 @@ void add_density_command(CLI::App& app, DensityOptions& o) {
   cmd->add_option("-e,--expr", o.expression, "Your own F(x, y, z), periodic with period 1 in x, y and z");
   cmd->add_option("-n,--name", o.name, "Name of the --expr surface");
   cmd->add_option("-p,--param", o.params, "Constant parameter NAME=VALUE of --expr (repeatable)");
-  cmd->add_option("--rho", o.rho, "Relative density (volume fraction of the cell), e.g. 0.2")->required();
+  // --density as in generate, mesh and step; --rho, its first name, still works.
+  cmd->add_option("--density,--rho", o.rho, "Relative density (volume fraction of the cell), e.g. 0.2")->required();
   cmd->add_flag("--network", o.network,
                 "The network solid offset(p, h) < 0 instead of the sheet: prints the offset h of that density");
   cmd->add_flag("--json", o.json, "Print as JSON");
   cmd->footer(
       "Lengths are in cell units (multiply by the cell length). Exit status: 0, or 2 for bad input (rho <= 0,\n"
       "rho beyond the validity limit, a surface without density: 2D or not periodic).\n"
-      "Example: offsetgen density --surface gyroid --rho 0.2");
+      "Example: offsetgen density --surface gyroid --density 0.2");
 }
 
 double parse_density_value(const std::string& option, const std::string& text) {
@@ -49,31 +50,27 @@ int run_density(const DensityOptions& o) {
   request.surface = o.surface;
   request.expression = o.expression;
   request.name = o.name.empty() && !o.expression.empty() ? "surface" : o.name;
-  for (const auto& p : o.params) {
-    auto [key, value] = split_param(p);
-    if (request.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
-    request.params[key] = value;
-  }
-  const double rho = parse_density_value("--rho", o.rho);
+  request.params = parse_params(o.params);
+  const double rho = parse_density_value("--density", o.rho);
   const Surface surface = resolve_surface(request);
   const density::DensityModel m = resolve_density(request, surface);
   const density::SurfaceConstants& k = m.constants();
 
   double value = NAN;
   if (!o.network) {
-    if (!(rho > 0)) throw InputError(fmt::format("--rho {}: a relative density must be > 0", rho));
+    if (!(rho > 0)) throw InputError(fmt::format("--density {}: a relative density must be > 0", rho));
     if (rho > m.sheet_density_limit())
       throw InputError(fmt::format(
-          "--rho {} is above rho_max = {:.6f} of the sheet: its thickness would pass t_max = {:.6f}, where t/2 "
+          "--density {} is above rho_max = {:.6f} of the sheet: its thickness would pass t_max = {:.6f}, where t/2 "
           "reaches the smallest radius of curvature and the thickness no longer determines the density",
           rho, m.sheet_density_limit(), m.thickness_limit()));
     value = m.sheet_thickness(rho);
   } else {
     if (!(rho > 0) || !(rho < 1))
-      throw InputError(fmt::format("--rho {}: a relative density of the network must lie in (0, 1)", rho));
+      throw InputError(fmt::format("--density {}: a relative density of the network must lie in (0, 1)", rho));
     if (rho < m.network_density_min() || rho > m.network_density_max())
       throw InputError(fmt::format(
-          "--rho {} is outside [{:.6f}, {:.6f}], the network densities with |h| <= h_max = {:.6f}, where the "
+          "--density {} is outside [{:.6f}, {:.6f}], the network densities with |h| <= h_max = {:.6f}, where the "
           "offset reaches the smallest radius of curvature",
           rho, m.network_density_min(), m.network_density_max(), m.offset_limit()));
     value = m.network_offset(rho);

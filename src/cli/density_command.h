@@ -19,7 +19,7 @@ struct DensityOptions {
 
 void add_density_command(CLI::App& app, DensityOptions& options);
 
-// A relative density given on the command line (--rho, --density): a finite number, or InputError
+// A relative density given on the command line (--density): a finite number, or InputError
 // naming `option`. The range is checked against the surface's limits later.
 double parse_density_value(const std::string& option, const std::string& text);
 int run_density(const DensityOptions& options);

@@ -124,11 +124,7 @@ int run_generate(const GenerateOptions& o, const std::vector<std::string>& args)
   if (o.precision == "double") request.precisions = {Precision::Double};
   if (o.precision == "float") request.precisions = {Precision::Float};
   if (o.precision == "both") request.precisions = {Precision::Double, Precision::Float};
-  for (const auto& p : o.params) {
-    auto [key, value] = split_param(p);
-    if (request.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
-    request.params[key] = value;
-  }
+  request.params = parse_params(o.params);
   if (o.thickness_given) request.thickness = o.thickness;
   request.map = o.map;
   if (!o.domain.empty()) request.domain = parse_domain(o.domain);

@@ -26,11 +26,7 @@ GenerationRequest generation_request(const GenerationOptions& o) {
   r.name = o.name;
   r.method = o.method;
   r.order = o.order;
-  for (const auto& p : o.params) {
-    auto [key, value] = split_param(p);
-    if (r.params.count(key)) throw InputError(fmt::format("parameter '{}' given twice", key));
-    r.params[key] = value;
-  }
+  r.params = parse_params(o.params);
   return r;
 }
 

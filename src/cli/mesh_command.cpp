@@ -58,7 +58,7 @@ int run_merge(const MeshOptions& o) {
 
 // A mapped lattice takes x, y, z in millimetres: its cells come from the map, so the lattice's unit
 // is 1 mm and its origin the body's; a block is the --domain box, meshed as a body without a skin.
-void apply_map_options(const MeshOptions& o, mesh::MeshSettings& s) {
+void apply_map_options(const MeshOptions& o, mesh::MeshRequest& s) {
   if (o.cell_size_given || o.cells_given)
     throw InputError(
         "--map sets the cells (their size and number come from the map): drop --cell-size and --cells; "
@@ -77,7 +77,7 @@ void apply_map_options(const MeshOptions& o, mesh::MeshSettings& s) {
     throw InputError("--map needs a region to fill: --body part.stl, or --domain X0,Y0,Z0:X1,Y1,Z1 (mm)");
   const Surface::Box box = parse_domain(o.domain);
   if (box.dims != 3) throw InputError("--domain: mesh needs a 3D box, X0,Y0,Z0:X1,Y1,Z1");
-  mesh::BodySettings b;
+  mesh::BodyRequest b;
   b.path = "--domain " + o.domain;
   b.box = std::array<std::array<double, 3>, 2>{box.lo, box.hi};
   b.origin = std::array<double, 3>{0, 0, 0};
@@ -88,7 +88,7 @@ void apply_map_options(const MeshOptions& o, mesh::MeshSettings& s) {
 
 int run_mesh_command(const MeshOptions& o) {
   if (!o.merge.empty()) return run_merge(o);
-  mesh::MeshSettings s;
+  mesh::MeshRequest s;
   s.wall.generation = generation_request(o);
   s.wall.thickness = o.thickness;
   s.wall.network = o.network;
@@ -96,7 +96,7 @@ int run_mesh_command(const MeshOptions& o) {
   s.wall.generation.density_field = o.density_field;
   s.cells = parse_cells(o.cells);
   if (!o.body.empty()) {
-    mesh::BodySettings b;
+    mesh::BodyRequest b;
     b.path = o.body;
     b.skin = o.skin;
     b.fillet = o.fillet;
@@ -112,22 +112,12 @@ int run_mesh_command(const MeshOptions& o) {
     throw InputError("--domain sets the box of a mapped lattice (--map); a block is --cells NXxNYxNZ --cell-size MM");
   s.resolution = o.resolution;
   s.voxel = o.voxel;
-  if (o.tile < 0 || o.tile % mesh::kBlock != 0)
-    throw InputError(fmt::format("--tile {}: a tile is a multiple of 8 voxels a side (0: one tile)", o.tile));
   s.tile = o.tile;
   if (!o.tile_range.empty()) s.tile_range = mesh::parse_tile_range(o.tile_range);
   s.adaptivity = o.adaptivity;
   s.min_piece = o.min_piece;
   s.output = o.output;
   s.threads = o.threads;
-  // Cheap checks first: a missing wall or surface fails before anything is generated.
-  const int walls = int(!o.thickness.empty()) + int(o.density.has_value()) + int(o.density_field.has_value());
-  if (walls == 0)
-    throw InputError(
-        "no wall given: use --thickness T (cell units; a number or an expression of x, y, z), --density R or "
-        "--density-field E");
-  if (walls > 1)
-    throw InputError("give one of --thickness, --density and --density-field: each one sets the wall's thickness");
   ProgressLine bar("[offsetgen mesh]");
   mesh::MeshSummary summary = mesh::run_mesh(
       s, [&](const std::string& stage, double f) { bar.show(stage, f); },

@@ -1,6 +1,5 @@
-// `offsetgen mesh`: its options and their CLI11 definition. Both executables hold it: offsetgen parses
-// the command (so --help and usage errors come from offsetgen itself), then offsetgen-mesh, which links
-// OpenVDB, parses the same arguments again and runs it (mesh_launcher.h).
+// `offsetgen mesh`: its options and their CLI11 definition, parsed once, by offsetgen-mesh (offsetgen
+// passes the command line on: cli/siblings.h).
 #pragma once
 
 #include "cli/generation_options.h"

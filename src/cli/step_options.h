@@ -1,6 +1,5 @@
-// `offsetgen step`: its options and their CLI11 definition. offsetgen parses the command (so --help
-// and usage errors come from offsetgen itself), then offsetgen-step, which links OpenCASCADE, parses
-// the same arguments again and runs it (sibling_exec.h).
+// `offsetgen step`: its options and their CLI11 definition, parsed once, by offsetgen-step (offsetgen
+// passes the command line on: cli/siblings.h).
 #pragma once
 
 #include "cli/generation_options.h"

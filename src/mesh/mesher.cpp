@@ -43,7 +43,7 @@ class StageClock {
 
 bool positive_length(double x) { return x > 0 && std::isfinite(x); }
 
-void validate(const MeshSettings& s) {
+void validate(const MeshRequest& s) {
   for (int n : s.cells)
     if (n < 1) throw InputError(fmt::format("--cells: {} is not a positive number of cells", n));
   if (!positive_length(s.cell_size))
@@ -62,7 +62,7 @@ void validate(const MeshSettings& s) {
   if (s.tile_range && format_for_path(s.output) != MeshFormat::Stl)
     throw InputError(fmt::format("--tile-range writes a partial binary STL: -o '{}' is not .stl", s.output));
   if (!s.body) return;
-  const BodySettings& b = *s.body;
+  const BodyRequest& b = *s.body;
   if (!positive_length(b.scale)) throw InputError(fmt::format("--scale {} is not a positive factor", b.scale));
   if (!(b.skin >= 0 && std::isfinite(b.skin)))
     throw InputError(fmt::format("--skin {} is not a thickness >= 0 (mm)", b.skin));
@@ -79,7 +79,7 @@ void validate(const MeshSettings& s) {
 }
 
 // What sets the wall: "t=0.1", "rho=0.2" or "rho=<expression>".
-std::string wall_text(const MeshSettings& s) {
+std::string wall_text(const MeshRequest& s) {
   const GenerationRequest& g = s.wall.generation;
   if (s.wall.network) return g.density ? fmt::format("network rho={}", *g.density) : "network h=" + s.wall.thickness;
   if (g.density) return fmt::format("rho={}", *g.density);
@@ -87,7 +87,7 @@ std::string wall_text(const MeshSettings& s) {
   return "t=" + s.wall.thickness;
 }
 
-std::string description(const MeshSettings& s, const MeshSummary& m, const std::string& surface) {
+std::string description(const MeshRequest& s, const MeshSummary& m, const std::string& surface) {
   if (m.body)
     return fmt::format("offsetgen mesh {} {} in {}, skin {} mm, {} mm cells, voxel {:.4g} mm", surface, wall_text(s),
                        std::filesystem::path(m.body->path).filename().string(), m.body->skin, m.cell_size,
@@ -111,7 +111,7 @@ void check_wall_voxels(double min_thickness, double voxels_per_cell, const std::
 }
 
 // Reads the body, scales it and makes sure it is closed (or repairs it); says what it did.
-body::BodyMesh load_body(const BodySettings& b, BodySummary& out, const WarningCallback& warn) {
+body::BodyMesh load_body(const BodyRequest& b, BodySummary& out, const WarningCallback& warn) {
   body::BodyMesh mesh = b.box ? box_body(*b.box) : body::read_body_file(b.path);
   if (b.scale != 1)
     for (auto& p : mesh.points)
@@ -181,7 +181,7 @@ std::array<std::array<double, 3>, 2> mesh_box(const TriangleMesh& mesh) {
   return box;
 }
 
-int threads_for(const MeshSettings& s) {
+int threads_for(const MeshRequest& s) {
   return s.threads > 0 ? s.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
@@ -217,7 +217,7 @@ void mark_seams(const TriangleMesh& mesh, const std::vector<Tile>& tiles, size_t
 
 // The body's and the core's volumes from the voxels' tally (a block's box is known exactly); a skin
 // that leaves no core is bad input.
-void record_volumes(const MeshSettings& s, MeshSummary& m) {
+void record_volumes(const MeshRequest& s, MeshSummary& m) {
   if (!m.body) return;
   BodySummary& b = *m.body;
   const double voxel3 = std::pow(b.voxel, 3);
@@ -232,7 +232,7 @@ void record_volumes(const MeshSettings& s, MeshSummary& m) {
 
 // Refuses a part whose mesh is not a closed, consistently oriented surface without degenerate facets,
 // or whose skin came out thinner than requested by more than a voxel: it is not kept.
-void require_sound(const MeshSettings& s, const MeshSummary& m) {
+void require_sound(const MeshRequest& s, const MeshSummary& m) {
   std::vector<std::string> faults;
   if (!m.audit.closed()) faults.push_back(m.audit.describe());
   if (m.body && m.body->skin > 0 && m.body->measured_skin.thinnest < m.body->skin - m.body->voxel)
@@ -252,7 +252,7 @@ void require_sound(const MeshSettings& s, const MeshSummary& m) {
 // (voxel index -> mm). STL in tiles is streamed to s.output as tiles finish (memory: one tile); one
 // tile, PLY and 3MF are held whole and returned, seams welded, small pieces dropped over the whole.
 template <typename ToMm>
-TriangleMesh mesh_part(const MeshSettings& s, const wall::WallField& field, const Domain& domain, const VoxelGrid& grid,
+TriangleMesh mesh_part(const MeshRequest& s, const wall::WallField& field, const Domain& domain, const VoxelGrid& grid,
                        MeshSummary& m, const ProgressCallback& progress, const ToMm& to_mm, const TileHook& hook,
                        const std::string& description) {
   const std::vector<Tile> tiles = make_tiles(domain.block_range(), s.tile);
@@ -394,7 +394,7 @@ TriangleMesh mesh_part(const MeshSettings& s, const wall::WallField& field, cons
 }
 
 // Writes a held mesh (a streamed one is written already).
-void write_part(const MeshSettings& s, const TriangleMesh& mesh, MeshSummary& m, const std::string& description,
+void write_part(const MeshRequest& s, const TriangleMesh& mesh, MeshSummary& m, const std::string& description,
                 const ProgressCallback& progress) {
   if (m.streamed) return;
   progress("writing " + s.output, -1);
@@ -405,7 +405,7 @@ void write_part(const MeshSettings& s, const TriangleMesh& mesh, MeshSummary& m,
   m.stages.push_back({"write", seconds_since(start)});
 }
 
-MeshSummary run_block(const MeshSettings& s, MeshSummary m, wall::WallField& field, const ProgressCallback& progress) {
+MeshSummary run_block(const MeshRequest& s, MeshSummary m, wall::WallField& field, const ProgressCallback& progress) {
   const auto range = field.thickness_range(s.cells);
   m.min_thickness = range[0];
   m.max_thickness = range[1];
@@ -460,10 +460,10 @@ MeshSummary run_block(const MeshSettings& s, MeshSummary m, wall::WallField& fie
   return m;
 }
 
-MeshSummary run_body(const MeshSettings& s, MeshSummary m, const body::BodyMesh& body_mesh, wall::WallField& field,
+MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& body_mesh, wall::WallField& field,
                      const ProgressCallback& progress) {
   BodySummary& b = *m.body;
-  const BodySettings& settings = *s.body;
+  const BodyRequest& settings = *s.body;
   b.skin = settings.skin;
   b.fillet = settings.fillet;
   b.origin = settings.origin ? *settings.origin : b.box[0];
@@ -628,7 +628,7 @@ std::string format_body(const MeshSummary& m) {
   return s;
 }
 
-MeshSummary run_mesh_stages(const MeshSettings& s, const ProgressCallback& progress, const WarningCallback& warn) {
+MeshSummary run_mesh_stages(const MeshRequest& s, const ProgressCallback& progress, const WarningCallback& warn) {
   validate(s);
   MeshSummary m;
   m.output = s.output;
@@ -682,7 +682,7 @@ int automatic_resolution(const std::array<int, 3>& cells, double min_thickness) 
   return std::max(per_wall, per_block);
 }
 
-MeshSummary run_mesh(const MeshSettings& s, const ProgressCallback& progress, const WarningCallback& warn) {
+MeshSummary run_mesh(const MeshRequest& s, const ProgressCallback& progress, const WarningCallback& warn) {
   // The last stage reported, for an out-of-memory message that says where it happened.
   std::string stage = "starting";
   const ProgressCallback tracked = [&](const std::string& name, double fraction) {

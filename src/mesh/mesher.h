@@ -22,7 +22,7 @@
 namespace offsetgen::mesh {
 
 // A part to fill instead of a block (docs/parts.md).
-struct BodySettings {
+struct BodyRequest {
   std::string path;                             // STL, PLY, OBJ or 3MF, in millimetres
   double scale = 1;                             // multiplies the body's coordinates
   double skin = 0;                              // mm; 0: the lattice cut flush by the body
@@ -33,16 +33,16 @@ struct BodySettings {
   std::optional<std::array<std::array<double, 3>, 2>> box;
 };
 
-struct MeshSettings {
+struct MeshRequest {
   wall::WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};
-  std::optional<BodySettings> body;  // instead of cells
-  double cell_size = 10;             // mm
-  int resolution = 0;                // voxels per cell; 0 picks automatic_resolution()
-  double voxel = 0;                  // mm, instead of resolution (with a body it need not divide the cell)
-  double adaptivity = 0;             // OpenVDB volumeToMesh adaptivity, [0, 1]
-  double min_piece = 0.01;           // pieces below this fraction of the largest piece's volume are dropped
-  int tile = 256;                    // voxels per tile side (a multiple of 8); 0: one tile (tiles.h)
+  std::optional<BodyRequest> body;  // instead of cells
+  double cell_size = 10;            // mm
+  int resolution = 0;               // voxels per cell; 0 picks automatic_resolution()
+  double voxel = 0;                 // mm, instead of resolution (with a body it need not divide the cell)
+  double adaptivity = 0;            // OpenVDB volumeToMesh adaptivity, [0, 1]
+  double min_piece = 0.01;          // pieces below this fraction of the largest piece's volume are dropped
+  int tile = 256;                   // voxels per tile side (a multiple of 8); 0: one tile (tiles.h)
   std::optional<std::pair<int, int>> tile_range;  // --tile-range I/N: share I of N, a partial STL
   std::string output;
   int threads = 0;  // 0: one per hardware thread
@@ -124,7 +124,7 @@ int automatic_resolution(double longest, double min_thickness);
 int automatic_resolution(const std::array<int, 3>& cells, double min_thickness);
 
 // Throws InputError for bad settings before any file is touched.
-MeshSummary run_mesh(const MeshSettings& settings, const ProgressCallback& progress, const WarningCallback& warn = {});
+MeshSummary run_mesh(const MeshRequest& settings, const ProgressCallback& progress, const WarningCallback& warn = {});
 
 std::string format_summary(const MeshSummary& summary);
 

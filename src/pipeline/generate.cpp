@@ -9,6 +9,7 @@
 #include "surfaces/expression_input.h"
 #include "surfaces/lattice_map.h"
 #include "validate/request_checks.h"
+#include "validate/wall_choice.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -235,9 +236,8 @@ Generation build_generation(const GenerationRequest& request) {
   g.prefix = request.name.empty() ? fmt::format("{}_o{}", g.surface.name, method.effective_order(request.order))
                                   : request.name;
 
-  if (int(request.thickness.has_value()) + int(request.density.has_value()) + int(request.density_field.has_value()) >
-      1)
-    throw InputError("give one of --thickness, --density and --density-field: each one sets the wall's thickness");
+  check_wall_choice(request.thickness.has_value(), request.density.has_value(), request.density_field.has_value(),
+                    WallNeed::Optional);
   LoweringOptions options;
   if (request.thickness)
     options.thickness = parse_thickness_expression(*request.thickness, request.params, g.surface.dims);

@@ -459,6 +459,15 @@ std::pair<std::string, std::string> split_param(const std::string& assignment) {
   return {name, assignment.substr(eq + 1)};
 }
 
+std::map<std::string, std::string> parse_params(const std::vector<std::string>& assignments) {
+  std::map<std::string, std::string> params;
+  for (const auto& a : assignments) {
+    auto [name, value] = split_param(a);
+    if (!params.emplace(name, value).second) throw InputError(fmt::format("parameter '{}' given twice", name));
+  }
+  return params;
+}
+
 Surface parse_natural_expression(const std::string& text) {
   const Symbols& sym = Symbols::get();
   GiNaC::symtab table;

@@ -30,6 +30,10 @@ GiNaC::ex parse_coordinate_expression(const std::string& text, const std::map<st
 // "a=0.3" -> {"a", "0.3"}; throws InputError on a malformed entry.
 std::pair<std::string, std::string> split_param(const std::string& assignment);
 
+// Repeated --param NAME=VALUE entries as a map; throws InputError for a malformed entry or a name given
+// twice.
+std::map<std::string, std::string> parse_params(const std::vector<std::string>& assignments);
+
 // The functions --expr, --param and --thickness accept, in alphabetical order. Every other name
 // followed by '(' is refused by name; the only constant is Pi.
 const std::vector<std::string>& accepted_functions();

@@ -7,6 +7,7 @@
 #include "run/process.h"
 #include "support/stopwatch.h"
 #include "surfaces/expression_input.h"
+#include "validate/wall_choice.h"
 
 #include <fmt/format.h>
 
@@ -56,13 +57,7 @@ WallField::WallField(const WallRequest& request) {
   g.languages = {"c"};
   g.precisions = {Precision::Double};
   if (g.name.empty() && !g.expression.empty()) g.name = "user_surface";
-  const bool by_density = g.density || g.density_field;  // the wall from a relative density (density/)
-  if (request.thickness.empty() && !by_density)
-    throw InputError(
-        "no wall given: use --thickness T (cell units; a number or an expression of x, y, z), --density R or "
-        "--density-field E");
-  if (!request.thickness.empty() && by_density)
-    throw InputError("give one of --thickness, --density and --density-field: each one sets the wall's thickness");
+  check_wall_choice(!request.thickness.empty(), g.density.has_value(), g.density_field.has_value(), WallNeed::Required);
   const std::optional<double> number = plain_number(request.thickness);
   if (!request.thickness.empty() && !number)
     g.thickness = request.thickness;  // lets --param values reach the thickness expression

@@ -13,11 +13,11 @@ namespace fs = std::filesystem;
 using testing::run_offsetgen;
 
 TEST(DensityCli, PrintsTheThicknessAndTheConstants) {
-  auto r = run_offsetgen("density --surface gyroid --rho 0.2");
+  auto r = run_offsetgen("density --surface gyroid --density 0.2");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* needle : {"thickness t = 0.0650", "A = 3.0916", "chi = -8", "t_max = 0.3675"})
     EXPECT_NE(r.output.find(needle), std::string::npos) << needle << "\n" << r.output;
-  auto network = run_offsetgen("density --surface gyroid --rho 0.5 --network --json");
+  auto network = run_offsetgen("density --surface gyroid --density 0.5 --network --json");
   ASSERT_EQ(network.exit_code, 0) << network.output;
   const auto j = nlohmann::json::parse(network.output);
   EXPECT_EQ(j["solid"], "network");
@@ -25,7 +25,7 @@ TEST(DensityCli, PrintsTheThicknessAndTheConstants) {
   EXPECT_EQ(j["chi"], -8);
   EXPECT_LE(j["chi_residual"].get<double>(), 1e-6);
   // The sheet's rho(t) = A t + (pi chi / 6) t^3 at the printed thickness gives back rho.
-  auto sheet = nlohmann::json::parse(run_offsetgen("density --surface schwarzp --rho 0.3 --json").output);
+  auto sheet = nlohmann::json::parse(run_offsetgen("density --surface schwarzp --density 0.3 --json").output);
   const double t = sheet["thickness"], a = sheet["area"];
   const int chi = sheet["chi"];
   EXPECT_NEAR(a * t + 3.141592653589793 * chi / 6 * t * t * t, 0.3, 1e-14);
@@ -37,11 +37,11 @@ TEST(DensityCli, BadDensitiesAreRefused) {
     const char* message;
   };
   for (const Case& c :
-       {Case{"--surface gyroid --rho 0", "must be > 0"}, Case{"--surface gyroid --rho -0.2", "must be > 0"},
-        Case{"--surface gyroid --rho 0.95", "above rho_max = 0.928"},
-        Case{"--surface neovius --rho 0.2 --network", "outside [0.318"},
-        Case{"--surface gyroid --rho much", "'much' is not a number"},
-        Case{"--expr \"cos(2*Pi*x) + cos(2*Pi*y) + z\" --rho 0.1", "not provably periodic in z"}}) {
+       {Case{"--surface gyroid --density 0", "must be > 0"}, Case{"--surface gyroid --density -0.2", "must be > 0"},
+        Case{"--surface gyroid --density 0.95", "above rho_max = 0.928"},
+        Case{"--surface neovius --density 0.2 --network", "outside [0.318"},
+        Case{"--surface gyroid --density much", "'much' is not a number"},
+        Case{"--expr \"cos(2*Pi*x) + cos(2*Pi*y) + z\" --density 0.1", "not provably periodic in z"}}) {
     auto r = run_offsetgen(std::string("density ") + c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << "\n" << r.output;
