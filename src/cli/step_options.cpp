@@ -30,7 +30,6 @@ void add_step_command(CLI::App& app, StepOptions& o) {
                   "How the sheets are cut into faces: symmetry (mirror-plane patches, faces that share their edges "
                   "exactly), box (quarter-cell boxes, any catalog surface), or auto (symmetry where the surface has "
                   "mirror planes, except diamond, which box patches write faster; else box)")
-      ->check(CLI::IsMember({"auto", "symmetry", "box"}))
       ->capture_default_str();
   cmd->add_option("-o,--output", o.output, "Output file: .step or .stp");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");

@@ -249,8 +249,9 @@ void require_sound(const MeshRequest& s, const MeshSummary& m) {
 }
 
 // Samples, extracts and sorts the part, tile by tile (tiles.h); points in millimetres through `to_mm`
-// (voxel index -> mm). STL in tiles is streamed to s.output as tiles finish (memory: one tile); one
-// tile, PLY and 3MF are held whole and returned, seams welded, small pieces dropped over the whole.
+// (voxel index -> mm). STL and PLY in tiles are streamed to s.output as tiles finish (memory: one
+// tile); one tile, and 3MF, are held whole and returned, seams welded, small pieces dropped over the
+// whole.
 template <typename ToMm>
 TriangleMesh mesh_part(const MeshRequest& s, const wall::WallField& field, const Domain& domain, const VoxelGrid& grid,
                        MeshSummary& m, const ProgressCallback& progress, const ToMm& to_mm, const TileHook& hook,

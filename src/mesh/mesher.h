@@ -88,7 +88,7 @@ struct MeshSummary {
   std::string map_region;
   size_t tiles = 1, tiles_meshed = 1;  // tiles of the domain, and those this run meshed (--tile-range)
   int tile_size = 0;                   // voxels a side
-  bool streamed = false;               // STL written tile by tile; else the mesh was held whole
+  bool streamed = false;               // STL or PLY written tile by tile; else the mesh was held whole
   std::optional<std::pair<int, int>> tile_range;
   double inner_dropped_volume = 0;  // streamed: small pieces inside one tile, dropped (mm^3)
   int inner_dropped = 0;

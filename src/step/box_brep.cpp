@@ -80,8 +80,7 @@ class Assembly {
     if (out.solids == 0) throw std::runtime_error("STEP: the box patches made no closed shell");
     out.solid = out.solids == 1 ? last : TopoDS_Shape(compound);
     // A cap is one face per box face; the caps of one region of a block face merge into one, as a
-    // CAD user selects it (the 2x2x2 gyroid: 384 planar faces become 54, in about 0.2 s; reading
-    // back is no slower).
+    // CAD user selects it (the 2x2x2 gyroid: 384 planar faces become 54; reading back is no slower).
     ShapeUpgrade_UnifySameDomain unify(out.solid, true, true, false);
     unify.Build();
     out.solid = unify.Shape();

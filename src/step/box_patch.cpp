@@ -17,8 +17,6 @@ namespace {
 
 // Samples per box edge: a box's face is scanned on a grid of kSamples x kSamples squares.
 constexpr int kSamples = 24;
-// Side counts tried for a patch, up to the request's limit.
-constexpr int kSides[] = {4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 64};
 // Central differences for gradients (cell units).
 constexpr double kStep = 1e-6;
 
@@ -608,7 +606,7 @@ class Builder {
     patch.v0 = v0 - margin;
     patch.v1 = v1 + margin;
     const std::array<double, 6> guess = quadratic_heights(uvs);
-    for (int n : kSides) {
+    for (int n : kPatchSides) {
       if (n > max_side) break;
       const int m = 3 * n + 1;
       std::vector<std::array<double, 2>> ab;

@@ -13,6 +13,9 @@ namespace offsetgen::step {
 
 using Point = std::array<double, 3>;
 
+// Control points per patch side tried in turn, fewest first, up to a request's limit (both routes).
+inline constexpr int kPatchSides[] = {4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 64};
+
 // The index a * stride + b of a row-major array, in size_t.
 inline size_t flat(int a, int stride, int b) {
   return static_cast<size_t>(a) * static_cast<size_t>(stride) + static_cast<size_t>(b);

@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace offsetgen::step {
@@ -66,5 +68,12 @@ StepContents read_step_contents(const std::string& path) {
 }
 
 TopoDS_Shape read_step(const std::string& path) { return read_step_contents(path).shape; }
+
+std::string read_file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 }  // namespace offsetgen::step

@@ -54,8 +54,8 @@ struct PatchLayout {
   // faces); otherwise the block's box cuts the solid afterwards.
   bool region_is_block = false;
   // Whether --patches auto takes box patches all the same: where cutting the region to the block costs
-  // more than box patches do in all (diamond 2x2x2, t = 0.1: 11.9 s against 6.45 s at 0.01 mm, 16.4
-  // against 8.4 s at 0.001 mm, with fewer control points and the same deviation; BENCHMARKS.md).
+  // more than box patches do in all (diamond, with fewer control points and the same deviation;
+  // docs/step.md).
   bool auto_prefers_box_patches = false;
 
   Segment line(double u, double v) const;

@@ -125,8 +125,8 @@ Side side_of(const TopoDS_Face& face, const std::array<double, 3>& size, double 
 
 // The wall solid cut to the block: the faces inside the block are kept as they are, those outside
 // dropped, and only the faces across the box's faces are split by them (OpenCASCADE's general fuse
-// of those faces with the box: about half of diamond's, whose tetrahedra are long; a boolean common
-// of the whole solid took 11.5 s for the 2x2x2 block, this 6-7 s). Of the pieces, those of the wall's
+// of those faces with the box: about half of diamond's, whose tetrahedra are long; faster than a
+// boolean common of the whole solid). Of the pieces, those of the wall's
 // faces inside the block and those of the box's faces inside the exact wall (`inside_wall`, at a
 // point inside each piece) close the solids again.
 TopoDS_Shape cut_to_block(const TopoDS_Shape& solid, const std::array<double, 3>& size, double cell_size,

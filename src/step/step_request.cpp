@@ -1,0 +1,42 @@
+#include "step/step_request.h"
+
+#include "emit/file_writer.h"
+#include "surfaces/input_error.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace offsetgen::step {
+
+Patches patches_from_name(const std::string& name) {
+  if (name == "auto") return Patches::Auto;
+  if (name == "symmetry") return Patches::Symmetry;
+  if (name == "box") return Patches::Box;
+  throw InputError(fmt::format("--patches {}: give auto, symmetry or box", name));
+}
+
+void validate_request(const StepRequest& r) {
+  // STEP export takes no --density-field (a graded wall is --thickness EXPR).
+  if (r.wall.thickness.empty() == !r.wall.generation.density.has_value())
+    throw InputError("give one of --thickness T (cell units) and --density R: each one sets the wall's thickness");
+  if (r.max_control_points < 4) throw InputError("--max-control-points: a cubic patch needs at least 4 a side");
+  if (!(r.tolerance > 0) || !std::isfinite(r.tolerance))
+    throw InputError(
+        fmt::format("--tolerance {}: give the largest deviation allowed, a positive length in mm", r.tolerance));
+  if (!(r.cell_size > 0) || !std::isfinite(r.cell_size))
+    throw InputError(fmt::format("--cell-size {}: a cell is a positive length in mm", r.cell_size));
+  if (r.output.empty()) throw InputError("no output file: use -o part.step");
+  const std::string ext = std::filesystem::path(r.output).extension().string();
+  if (ext != ".step" && ext != ".stp" && ext != ".STEP" && ext != ".STP")
+    throw InputError(fmt::format("-o '{}': STEP files end in .step or .stp", r.output));
+  try {
+    require_writable(r.output);  // an unwritable -o is the user's input, found before the long work
+  } catch (const std::runtime_error& e) {
+    throw InputError(e.what());
+  }
+}
+
+}  // namespace offsetgen::step
