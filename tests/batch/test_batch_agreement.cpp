@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <vector>
@@ -60,7 +60,9 @@ std::vector<T> run_batch(const BatchFunction<T>& f, const Points<T>& p) {
   return out;
 }
 
-double scaled(double difference, double reference) { return std::fabs(difference) / std::max(std::fabs(reference), 1.0); }
+double scaled(double difference, double reference) {
+  return std::fabs(difference) / std::max(std::fabs(reference), 1.0);
+}
 
 double quantile(std::vector<double> values, double q) {
   std::sort(values.begin(), values.end());
@@ -96,11 +98,12 @@ void check_random_agreement() {
       EXPECT_LE(quantile(batch_error, q), 1.5 * quantile(scalar_error, q) + eps) << "quantile " << q;
     }
     EXPECT_LE(quantile(batch_error, 1.0), 2.0 * quantile(scalar_error, 1.0) + 10 * eps);
-    std::printf("  %-28s within %.0e: %7.3f%%   error vs reference: scalar p50 %.1e p99 %.1e max %.1e | "
-                "batch p50 %.1e p99 %.1e max %.1e\n",
-                f.label().c_str(), kAgree<T>, 100 * within, quantile(scalar_error, 0.5), quantile(scalar_error, 0.99),
-                quantile(scalar_error, 1.0), quantile(batch_error, 0.5), quantile(batch_error, 0.99),
-                quantile(batch_error, 1.0));
+    std::printf(
+        "  %-28s within %.0e: %7.3f%%   error vs reference: scalar p50 %.1e p99 %.1e max %.1e | "
+        "batch p50 %.1e p99 %.1e max %.1e\n",
+        f.label().c_str(), kAgree<T>, 100 * within, quantile(scalar_error, 0.5), quantile(scalar_error, 0.99),
+        quantile(scalar_error, 1.0), quantile(batch_error, 0.5), quantile(batch_error, 0.99),
+        quantile(batch_error, 1.0));
   }
 }
 

@@ -35,16 +35,19 @@ TEST(BatchEmission, RewritesOnlySinAndCosCalls) {
 }
 
 TEST(BatchEmission, RewritesTheNamedCallsAndTheirFloatSpellings) {
-  EXPECT_EQ(rename_calls("1.0 / sqrt(a) + sqrtf(b) * sin(c) + cbrt(d) + _tsqrt(e)", {"sin", "sqrt"}, "offsetgen_batch_"),
-            "1.0 / offsetgen_batch_sqrt(a) + offsetgen_batch_sqrtf(b) * offsetgen_batch_sin(c) + cbrt(d) + _tsqrt(e)");
+  EXPECT_EQ(
+      rename_calls("1.0 / sqrt(a) + sqrtf(b) * sin(c) + cbrt(d) + _tsqrt(e)", {"sin", "sqrt"}, "offsetgen_batch_"),
+      "1.0 / offsetgen_batch_sqrt(a) + offsetgen_batch_sqrtf(b) * offsetgen_batch_sin(c) + cbrt(d) + _tsqrt(e)");
 }
 
 TEST(BatchEmission, DoubleOnlyHeaderHasDoubleBatchFunctions) {
   const std::string h = header("schwarzp", 2, {Precision::Double});
-  EXPECT_TRUE(has(h, "static inline void schwarzp_o2_offset_n(size_t n, const double *x, const double *y, "
-                     "const double *z, const double *h, double *OFFSETGEN_RESTRICT out)"));
-  EXPECT_TRUE(has(h, "static inline void schwarzp_o2_shell_n(size_t n, const double *x, const double *y, "
-                     "const double *z, const double *t, double *OFFSETGEN_RESTRICT out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void schwarzp_o2_offset_n(size_t n, const double *x, const double *y, "
+                  "const double *z, const double *h, double *OFFSETGEN_RESTRICT out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void schwarzp_o2_shell_n(size_t n, const double *x, const double *y, "
+                  "const double *z, const double *t, double *OFFSETGEN_RESTRICT out)"));
   EXPECT_TRUE(has(h, "OFFSETGEN_BATCH_MATH_DOUBLE_V2"));
   EXPECT_FALSE(has(h, "OFFSETGEN_BATCH_MATH_FLOAT_V2"));
   EXPECT_FALSE(has(h, "_offsetf_n"));
@@ -66,10 +69,12 @@ TEST(BatchEmission, DoubleOnlyHeaderHasDoubleBatchFunctions) {
 
 TEST(BatchEmission, BothPrecisionsGiveFloatTwins) {
   const std::string h = header("gyroid", 2, {Precision::Double, Precision::Float});
-  EXPECT_TRUE(has(h, "static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y, "
-                     "const float *z, const float *h, float *OFFSETGEN_RESTRICT out)"));
-  EXPECT_TRUE(has(h, "static inline void gyroid_o2_shellf_n(size_t n, const float *x, const float *y, "
-                     "const float *z, const float *t, float *OFFSETGEN_RESTRICT out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void gyroid_o2_offsetf_n(size_t n, const float *x, const float *y, "
+                  "const float *z, const float *h, float *OFFSETGEN_RESTRICT out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void gyroid_o2_shellf_n(size_t n, const float *x, const float *y, "
+                  "const float *z, const float *t, float *OFFSETGEN_RESTRICT out)"));
   EXPECT_TRUE(has(h, "OFFSETGEN_BATCH_MATH_FLOAT_V2"));
   EXPECT_TRUE(has(h, "const size_t blocked = n - n % 16;"));  // float: 16 points per block
   EXPECT_TRUE(has(h, "offsetgen_batch_sqrtf("));
@@ -88,11 +93,12 @@ TEST(BatchEmission, FloatOnlyHeaderHasOnlyFloatBatch) {
 
 TEST(BatchEmission, TwoDimensionalSignatureHasNoZ) {
   const std::string h = header("", 2, {Precision::Double}, "cos(2*Pi*x) + 0.5*sin(2*Pi*y)", "wave");
-  EXPECT_TRUE(has(h, "static inline void wave_offset_n(size_t n, const double *x, const double *y, "
-                     "const double *h, double *OFFSETGEN_RESTRICT out)"));
+  EXPECT_TRUE(has(h,
+                  "static inline void wave_offset_n(size_t n, const double *x, const double *y, "
+                  "const double *h, double *OFFSETGEN_RESTRICT out)"));
 }
 
-TEST(BatchEmission, Deterministic) {
+TEST(BatchEmission, TheSameRequestGivesTheSameBytes) {
   EXPECT_EQ(header("neovius", 3, {Precision::Double, Precision::Float}),
             header("neovius", 3, {Precision::Double, Precision::Float}));
 }

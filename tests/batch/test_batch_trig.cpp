@@ -126,7 +126,8 @@ TEST(BatchSqrt, SubnormalInputsWithinTheDocumentedAbsoluteError) {
     worst = std::max(worst, std::fabs(offsetgen_batch_sqrt(a) - std::sqrt(a)));
   for (float a = std::numeric_limits<float>::denorm_min(); a < std::numeric_limits<float>::min();
        a = a * 1.0137f + std::numeric_limits<float>::denorm_min())
-    worst_float = std::max(worst_float, std::fabs(static_cast<double>(offsetgen_batch_sqrtf(a)) - std::sqrt(static_cast<double>(a))));
+    worst_float = std::max(
+        worst_float, std::fabs(static_cast<double>(offsetgen_batch_sqrtf(a)) - std::sqrt(static_cast<double>(a))));
   EXPECT_LT(worst, 6e-156);
   EXPECT_LT(worst_float, 2e-20);
 }
@@ -158,8 +159,10 @@ TEST(ScalarTrig, DoubleWithinTwoUlpOfLibmAndEqualToTheBatchHelpers) {
       const double a = arg(rng);
       worst = std::max(worst, std::fabs(offsetgen_sin(a) - std::sin(a)) / std::fabs(std::sin(a)));
       worst = std::max(worst, std::fabs(offsetgen_cos(a) - std::cos(a)) / std::fabs(std::cos(a)));
-      worst_vs_batch = std::max(worst_vs_batch, std::fabs(offsetgen_sin(a) - offsetgen_batch_sin(a)) / std::fabs(std::sin(a)));
-      worst_vs_batch = std::max(worst_vs_batch, std::fabs(offsetgen_cos(a) - offsetgen_batch_cos(a)) / std::fabs(std::cos(a)));
+      worst_vs_batch =
+          std::max(worst_vs_batch, std::fabs(offsetgen_sin(a) - offsetgen_batch_sin(a)) / std::fabs(std::sin(a)));
+      worst_vs_batch =
+          std::max(worst_vs_batch, std::fabs(offsetgen_cos(a) - offsetgen_batch_cos(a)) / std::fabs(std::cos(a)));
     }
     EXPECT_LE(worst / kEps, 2.0) << "range " << range;
     EXPECT_LE(worst_vs_batch / kEps, 1.0) << "range " << range;

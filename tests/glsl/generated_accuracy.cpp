@@ -11,9 +11,7 @@ namespace {
 
 constexpr double kBand = 0.05;  // "near the zero set": estimated distance <= 0.05 cell lengths
 
-double err(double got, double want) {
-  return std::isfinite(got) ? std::abs(got - want) : HUGE_VAL;
-}
+double err(double got, double want) { return std::isfinite(got) ? std::abs(got - want) : HUGE_VAL; }
 
 }  // namespace
 
@@ -94,8 +92,7 @@ std::string describe(const Accuracy& a) {
   std::snprintf(buf, sizeof buf,
                 "field %.2e  offset %.2e (all %.2e)  zero set %.2e  shell %.2e  normal %.2e"
                 "  [%zu/%zu pts near]",
-                a.field, a.offset, a.offset_all, a.zero_set, a.shell, a.normal, a.near_points,
-                a.shell_points);
+                a.field, a.offset, a.offset_all, a.zero_set, a.shell, a.normal, a.near_points, a.shell_points);
   return buf;
 }
 

@@ -48,8 +48,7 @@ Vec3d gyroid_offset_o1_gradient(const Vec3d& x, double h) {
   const double hxz = -k2 * t.sx * t.cz;
   const double len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   const double s = len > 0.0 ? h / len : 0.0;
-  return {g[0] - s * (hxx * g[0] + hxy * g[1] + hxz * g[2]),
-          g[1] - s * (hxy * g[0] + hyy * g[1] + hyz * g[2]),
+  return {g[0] - s * (hxx * g[0] + hxy * g[1] + hxz * g[2]), g[1] - s * (hxy * g[0] + hyy * g[1] + hyz * g[2]),
           g[2] - s * (hxz * g[0] + hyz * g[1] + hzz * g[2])};
 }
 

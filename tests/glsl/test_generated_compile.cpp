@@ -62,7 +62,7 @@ class SnippetConventions : public ::testing::TestWithParam<gt::SnippetFile> {
   run::FileMetadata meta_ = metadata_of(snippet_);
 };
 
-TEST_P(SnippetConventions, PasteSafe) {
+TEST_P(SnippetConventions, EveryGeneratedSnippetIsPasteSafe) {
   EXPECT_EQ(gt::describe(gt::convention_violations(snippet_, meta_.prefix)), "") << GetParam().path;
 }
 

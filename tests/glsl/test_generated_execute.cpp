@@ -240,10 +240,12 @@ class HandDerivedGyroidO1 : public ::testing::TestWithParam<glsl::Path> {
 };
 
 // Absolute, in units of F: float32 sin/cos/sqrt at |F| + |h||grad F| ~ 1.9 err by a few 1e-7.
-TEST_P(HandDerivedGyroidO1, Field) { expect_within(gt::Quantity::Field, kTolerance); }
-TEST_P(HandDerivedGyroidO1, Offset) { expect_within(gt::Quantity::Offset, kTolerance); }
-TEST_P(HandDerivedGyroidO1, Shell) { expect_within(gt::Quantity::Shell, 1e-4); }  // a product of two offsets
-TEST_P(HandDerivedGyroidO1, Normal) { expect_within(gt::Quantity::Normal, 1e-4); }
+TEST_P(HandDerivedGyroidO1, FieldMatchesTheHandWrittenOne) { expect_within(gt::Quantity::Field, kTolerance); }
+TEST_P(HandDerivedGyroidO1, OffsetMatchesTheHandWrittenOne) { expect_within(gt::Quantity::Offset, kTolerance); }
+TEST_P(HandDerivedGyroidO1, ShellMatchesTheHandWrittenOne) {
+  expect_within(gt::Quantity::Shell, 1e-4);
+}  // a product of two offsets
+TEST_P(HandDerivedGyroidO1, NormalMatchesTheHandWrittenOne) { expect_within(gt::Quantity::Normal, 1e-4); }
 
 INSTANTIATE_TEST_SUITE_P(BothPaths, HandDerivedGyroidO1, ::testing::ValuesIn(glsl::all_paths()),
                          [](const ::testing::TestParamInfo<glsl::Path>& p) {

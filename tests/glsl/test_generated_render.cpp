@@ -88,7 +88,7 @@ TEST(GeneratedRender, GyroidOrder4GlHost) {
                  std::string("--snippet '") + c.snippet + "' --prefix " + c.prefix + " --thickness 0.08 --api gl");
 }
 
-TEST(GeneratedRender, GradedThickness) {
+TEST(GeneratedRender, AGradedWallRendersAsItsReferencePicture) {
   const auto& c = gt::graded_case();
   expect_picture("graded",
                  std::string("--snippet '") + c.snippet + "' --prefix " + c.prefix + " --graded --thickness 0.02");

@@ -23,13 +23,11 @@ Outcome run_render_shell(const std::string& args) {
 }
 
 std::string fixture_args() {
-  return "--snippet '" + offsetgen::glsl_test::fixture_dir() +
-         "/gyroid_o1.glsl' --prefix gyroid_o1";
+  return "--snippet '" + offsetgen::glsl_test::fixture_dir() + "/gyroid_o1.glsl' --prefix gyroid_o1";
 }
 
 fs::path scratch_png(const std::string& name) {
-  return fs::temp_directory_path() /
-         ("offsetgen_render_" + std::to_string(::getpid()) + "_" + name + ".png");
+  return fs::temp_directory_path() / ("offsetgen_render_" + std::to_string(::getpid()) + "_" + name + ".png");
 }
 
 struct PixelCounts {
@@ -51,8 +49,7 @@ PixelCounts classify(const offsetgen::png::Image& img) {
 // Renders at 128x128 with `extra` options and checks size, content and both pixel kinds.
 void expect_reasonable_picture(const std::string& name, const std::string& extra) {
   const fs::path png = scratch_png(name);
-  const Outcome o =
-      run_render_shell(fixture_args() + " --size 128x128 " + extra + " -o '" + png.string() + "'");
+  const Outcome o = run_render_shell(fixture_args() + " --size 128x128 " + extra + " -o '" + png.string() + "'");
   ASSERT_EQ(o.exit_code, 0) << o.output;
   std::cout << "[ measured ] " << o.output;
   const auto img = offsetgen::png::read_rgba(png.string());
@@ -67,10 +64,8 @@ void expect_reasonable_picture(const std::string& name, const std::string& extra
 }
 
 TEST(RenderShell, EsHostOneCell) { expect_reasonable_picture("es", "--thickness 0.1"); }
-TEST(RenderShell, GlHostTwoCells) {
-  expect_reasonable_picture("gl", "--thickness 0.08 --cells 2 --api gl");
-}
-TEST(RenderShell, GradedThickness) {
+TEST(RenderShell, GlHostTwoCells) { expect_reasonable_picture("gl", "--thickness 0.08 --cells 2 --api gl"); }
+TEST(RenderShell, AGradedWallRendersAReasonablePicture) {
   expect_reasonable_picture("graded", "--graded --thickness 0.04");
 }
 
@@ -101,8 +96,7 @@ TEST(RenderShell, WrongPrefixListsTheSnippetFunctions) {
 // Thicker walls cover more of the picture: a cheap check that the thickness reaches the shader.
 TEST(RenderShell, ThickerWallsCoverMorePixels) {
   offsetgen::render::Options o;
-  o.snippet =
-      offsetgen::glsl::read_text_file(offsetgen::glsl_test::fixture_dir() + "/gyroid_o1.glsl");
+  o.snippet = offsetgen::glsl::read_text_file(offsetgen::glsl_test::fixture_dir() + "/gyroid_o1.glsl");
   o.prefix = "gyroid_o1";
   o.width = o.height = 96;
   o.thickness = 0.03;

@@ -53,15 +53,15 @@ TEST(SnippetConventions, CleanSnippetPasses) {
   EXPECT_EQ(gt::describe(gt::convention_violations(kClean, "demo_o1")), "");
 }
 
-TEST(SnippetConventions, VersionLine) {
+TEST(SnippetConventions, AVersionLineIsRefused) {
   expect_one(with(kClean, "highp float demo_o1_field", "#version 300 es\nhighp float demo_o1_field"), "version", 5);
 }
 
-TEST(SnippetConventions, PrecisionStatement) {
+TEST(SnippetConventions, APrecisionStatementIsRefused) {
   expect_one(with(kClean, "const highp", "precision mediump float;\nconst highp"), "precision", 11);
 }
 
-TEST(SnippetConventions, MissingGuard) {
+TEST(SnippetConventions, AMissingIncludeGuardIsRefused) {
   const std::string s =
       with(with(kClean, "#ifndef OFFSETGEN_DEMO_O1_GLSL\n", ""), "#define OFFSETGEN_DEMO_O1_GLSL\n", "");
   EXPECT_FALSE(of_rule(s, "guard").empty());
@@ -77,22 +77,22 @@ TEST(SnippetConventions, CodeAfterTheGuard) {
   expect_one(kClean + "highp float demo_o1_late(highp float x) { return x; }\n", "guard", 13);
 }
 
-TEST(SnippetConventions, GlobalDefine) {
+TEST(SnippetConventions, AGlobalDefineIsRefused) {
   expect_one(with(kClean, "const highp", "#define PI 3.14159\nconst highp"), "define", 11);
 }
 
-TEST(SnippetConventions, OtherDirective) {
+TEST(SnippetConventions, AnyOtherDirectiveIsRefused) {
   expect_one(with(kClean, "const highp", "#extension GL_EXT_foo : enable\nconst highp"), "directive", 11);
 }
 
-TEST(SnippetConventions, MissingHighp) {
+TEST(SnippetConventions, AFloatDeclarationWithoutHighpIsRefused) {
   EXPECT_EQ(of_rule(with(kClean, "highp vec3 _t1", "vec3 _t1"), "highp").size(), 1u);
   EXPECT_EQ(of_rule(with(kClean, "(highp vec3 p)", "(vec3 p)"), "highp").size(), 1u);
 }
 
-TEST(SnippetConventions, Pow) { expect_one(with(kClean, "sin(_t0)", "pow(_t0, 2.0)"), "pow", 9); }
+TEST(SnippetConventions, PowIsRefused) { expect_one(with(kClean, "sin(_t0)", "pow(_t0, 2.0)"), "pow", 9); }
 
-TEST(SnippetConventions, IntegerLiteral) {
+TEST(SnippetConventions, AnIntegerOrUndottedLiteralIsRefused) {
   expect_one(with(kClean, "6.28318548 * p.x", "2 * p.x"), "literal", 7);
   expect_one(with(kClean, "1.0e-3", "1e-3"), "literal", 8);
   EXPECT_TRUE(of_rule(kClean, "literal").empty());  // vec3, _t0, .5, 1.0e-3 are fine
@@ -106,7 +106,7 @@ TEST(SnippetConventions, UnprefixedTopLevelNames) {
   EXPECT_TRUE(of_rule(kClean, "prefix").empty());
 }
 
-TEST(SnippetConventions, HeaderComment) {
+TEST(SnippetConventions, AHeaderCommentThatOmitsAFunctionIsRefused) {
   const auto v = gt::header_comment_violations(kClean, "demo_o1");
   EXPECT_FALSE(v.empty());
   EXPECT_NE(gt::describe(v).find("use: does not list demo_o1_field"), std::string::npos) << gt::describe(v);
