@@ -3,6 +3,7 @@
 #include "cli/density_command.h"
 #include "cli/generate_command.h"
 #include "cli/list_command.h"
+#include "cli/slice_command.h"
 #ifdef OFFSETGEN_HAVE_CHECK
 #include "cli/check_command.h"
 #endif
@@ -57,6 +58,8 @@ int main(int argc, char** argv) {
   add_list_command(app, list);
   DensityOptions density;
   add_density_command(app, density);
+  SliceOptions slice;
+  add_slice_command(app, slice);
 #ifdef OFFSETGEN_HAVE_CHECK
   CheckOptions check;
   add_check_command(app, check);
@@ -95,6 +98,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("generate")) return run_generate(generate, args);
     if (app.got_subcommand("list")) return run_list(list);
     if (app.got_subcommand("density")) return run_density(density);
+    if (app.got_subcommand("slice")) return run_slice_command(slice);
 #ifdef OFFSETGEN_HAVE_CHECK
     if (app.got_subcommand("check") && names_a_step_file(check.file)) {
 #ifdef OFFSETGEN_HAVE_STEP
