@@ -1,0 +1,284 @@
+// `offsetgen slice` as a user runs it, its files read back by code that is not the writer: a CLI
+// reader written here (binary long records and ASCII) checks the header's layer count, closed
+// polylines, dir against the signed area, and every vertex off the box's sides on the wall's zero set
+// (the emitted functions evaluated there: 1e-6 mm in ASCII, plus float32 rounding in binary); the
+// same bytes twice and on 1 or 2 threads; bad input exits 2 and leaves no file; the SL1 archive
+// opened with Python's zipfile (its keys, one PNG per layer of the screen's size).
+#include "offsetgen_test_support.h"
+#include "slice_test_support.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+namespace offsetgen::slice {
+namespace {
+
+namespace fs = std::filesystem;
+using test_support::read_file;
+using test_support::run_command;
+using test_support::run_offsetgen;
+using test_support::scratch_dir;
+
+struct Polyline {
+  int id = 0, dir = 0;
+  std::vector<std::array<double, 2>> points;  // mm, as in the file (closed: last = first)
+};
+struct CliLayer {
+  double z = 0;
+  std::vector<Polyline> polylines;
+};
+struct CliFile {
+  bool binary = false;
+  double units = 0;
+  long header_layers = -1;
+  std::vector<CliLayer> layers;
+  bool ended = false;  // ASCII: $$GEOMETRYEND seen
+};
+
+// The header's commands, one per line, up to $$HEADEREND; the geometry after it.
+CliFile read_cli(const std::string& bytes) {
+  CliFile f;
+  const std::string end = "$$HEADEREND";
+  const size_t he = bytes.find(end);
+  if (bytes.rfind("$$HEADERSTART", 0) != 0 || he == std::string::npos) throw std::runtime_error("no CLI header");
+  std::stringstream header(bytes.substr(0, he));
+  std::string line;
+  while (std::getline(header, line)) {
+    if (line == "$$BINARY") f.binary = true;
+    if (line.rfind("$$UNITS/", 0) == 0) f.units = std::stod(line.substr(8));
+    if (line.rfind("$$LAYERS/", 0) == 0) f.header_layers = std::stol(line.substr(9));
+  }
+  size_t at = he + end.size();
+  if (f.binary) {
+    auto need = [&](size_t n) {
+      if (at + n > bytes.size()) throw std::runtime_error("a record runs past the end");
+    };
+    auto u16 = [&] {
+      need(2);
+      const auto v = static_cast<uint16_t>(uint8_t(bytes[at]) | uint8_t(bytes[at + 1]) << 8);
+      at += 2;
+      return v;
+    };
+    auto i32 = [&] {
+      need(4);
+      uint32_t v = 0;
+      for (int k = 3; k >= 0; --k) v = v << 8 | uint8_t(bytes[at + size_t(k)]);
+      at += 4;
+      return static_cast<int32_t>(v);
+    };
+    auto f32 = [&] {
+      const auto bits = static_cast<uint32_t>(i32());
+      float v = 0;
+      std::memcpy(&v, &bits, 4);
+      return double(v);
+    };
+    while (at < bytes.size()) {
+      const uint16_t command = u16();
+      if (command == 127) {
+        f.layers.push_back({f32() * f.units, {}});
+      } else if (command == 130) {
+        if (f.layers.empty()) throw std::runtime_error("a polyline before the first layer");
+        Polyline p;
+        p.id = i32();
+        p.dir = i32();
+        const int32_t n = i32();
+        for (int32_t k = 0; k < n; ++k) {
+          const double x = f32() * f.units;
+          const double y = f32() * f.units;
+          p.points.push_back({x, y});
+        }
+        f.layers.back().polylines.push_back(p);
+      } else {
+        throw std::runtime_error(fmt::format("unexpected binary record {}", command));
+      }
+    }
+    return f;
+  }
+  std::stringstream geometry(bytes.substr(at));
+  while (std::getline(geometry, line)) {
+    if (line.empty() || line == "$$GEOMETRYSTART") continue;
+    if (line == "$$GEOMETRYEND") {
+      f.ended = true;
+      continue;
+    }
+    if (line.rfind("$$LAYER/", 0) == 0) {
+      f.layers.push_back({std::stod(line.substr(8)) * f.units, {}});
+    } else if (line.rfind("$$POLYLINE/", 0) == 0) {
+      std::vector<double> v;
+      std::stringstream in(line.substr(11));
+      std::string item;
+      while (std::getline(in, item, ',')) v.push_back(std::stod(item));
+      Polyline p;
+      p.id = int(v.at(0));
+      p.dir = int(v.at(1));
+      const auto n = static_cast<size_t>(v.at(2));
+      if (v.size() != 3 + 2 * n) throw std::runtime_error("$$POLYLINE: n does not match its coordinates");
+      for (size_t k = 0; k < n; ++k) p.points.push_back({v[3 + 2 * k] * f.units, v[4 + 2 * k] * f.units});
+      if (f.layers.empty()) throw std::runtime_error("a polyline before the first layer");
+      f.layers.back().polylines.push_back(p);
+    } else {
+      throw std::runtime_error("unexpected line: " + line.substr(0, 40));
+    }
+  }
+  return f;
+}
+
+double signed_area(const std::vector<std::array<double, 2>>& p) {
+  double a = 0;
+  for (size_t k = 0; k + 1 < p.size(); ++k) a += p[k][0] * p[k + 1][1] - p[k + 1][0] * p[k][1];
+  return 0.5 * a;
+}
+
+const double kCell = 8, kLayer = 0.25;
+const std::vector<std::string> kPart = {"slice", "--surface",   "gyroid", "--density",      "0.2",  "--cells",
+                                        "2",     "--cell-size", "8",      "--layer-height", "0.25", "-q"};
+
+test_support::CommandResult slice(const std::vector<std::string>& extra) {
+  std::vector<std::string> args = kPart;
+  args.insert(args.end(), extra.begin(), extra.end());
+  return run_offsetgen(args);
+}
+
+// Reads the file and checks it against the wall: returns the number of vertices checked on the wall.
+size_t check_cli(const std::string& path, double vertex_tolerance) {
+  const CliFile f = read_cli(read_file(path));
+  EXPECT_EQ(f.units, 1.0);
+  EXPECT_EQ(f.header_layers, static_cast<long>(f.layers.size()));
+  EXPECT_EQ(f.layers.size(), 64u);  // 16 mm at 0.25 mm
+  if (!f.binary) {
+    EXPECT_TRUE(f.ended);
+  }
+  const wall::WallField& field = test::gyroid_field();
+  size_t checked = 0;
+  for (size_t k = 0; k < f.layers.size(); ++k) {
+    const CliLayer& layer = f.layers[k];
+    EXPECT_NEAR(layer.z, kLayer * double(k + 1), 1e-6);
+    std::vector<std::array<double, 2>> on_wall;
+    for (const Polyline& p : layer.polylines) {
+      EXPECT_EQ(p.id, 1);
+      EXPECT_GE(p.points.size(), 4u);
+      EXPECT_EQ(p.points.front(), p.points.back()) << "an open polyline in layer " << k;
+      const double area = signed_area(p.points);
+      EXPECT_EQ(p.dir, area > 0 ? 1 : 0) << "dir against the signed area " << area;
+      for (const auto& v : p.points) {
+        const double eps = 1e-6;
+        const bool side = std::abs(v[0]) < eps || std::abs(v[0] - 2 * kCell) < eps || std::abs(v[1]) < eps ||
+                          std::abs(v[1] - 2 * kCell) < eps;
+        EXPECT_GE(v[0], -eps);
+        EXPECT_LE(v[0], 2 * kCell + eps);
+        if (!side) on_wall.push_back(v);
+      }
+    }
+    const std::vector<double> d = test::wall_distances(field, on_wall, layer.z - 0.5 * kLayer, kCell);
+    size_t worst = 0;
+    for (size_t i = 0; i < d.size(); ++i)
+      if (d[i] > d[worst]) worst = i;
+    if (!d.empty()) {
+      EXPECT_LT(d[worst], vertex_tolerance) << "layer " << k << ": (" << on_wall[worst][0] << ", " << on_wall[worst][1]
+                                            << ") is " << d[worst] << " mm off the wall";
+    }
+    checked += d.size();
+  }
+  return checked;
+}
+
+TEST(SliceCli, AsciiCliReadBackHasEveryVertexWithin1e6MmOfTheWall) {
+  const std::string dir = scratch_dir("slice-ascii");
+  const auto r = slice({"--cli-ascii", "-o", dir + "/part.cli"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_GT(check_cli(dir + "/part.cli", 1e-6), 10000u);
+}
+
+TEST(SliceCli, BinaryCliReadBackHasEveryVertexWithinFloat32RoundingOfTheWall) {
+  const std::string dir = scratch_dir("slice-binary");
+  const auto r = slice({"-o", dir + "/part.cli"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // float32 near 16 mm rounds by up to 9.5e-7 mm per coordinate.
+  EXPECT_GT(check_cli(dir + "/part.cli", 1e-6 + std::sqrt(2.0) * 9.6e-7), 10000u);
+}
+
+TEST(SliceCli, SameBytesTwiceAndOnOneOrTwoThreads) {
+  const std::string dir = scratch_dir("slice-determinism");
+  for (const std::string run : {"one", "two", "three"}) fs::create_directories(dir + "/" + run);
+  // Same file names (an SL1 archive holds its own name as jobDir), different directories.
+  for (const std::string ext : {"cli", "sl1"}) {
+    ASSERT_EQ(slice({"-j", "2", "-o", dir + "/one/part." + ext}).exit_code, 0);
+    ASSERT_EQ(slice({"-j", "2", "-o", dir + "/two/part." + ext}).exit_code, 0);
+    ASSERT_EQ(slice({"-j", "1", "-o", dir + "/three/part." + ext}).exit_code, 0);
+    const std::string a = read_file(dir + "/one/part." + ext);
+    EXPECT_GT(a.size(), 1000u);
+    EXPECT_TRUE(a == read_file(dir + "/two/part." + ext)) << ext << " differs between runs";
+    EXPECT_TRUE(a == read_file(dir + "/three/part." + ext)) << ext << " differs between 1 and 2 threads";
+  }
+}
+
+TEST(SliceCli, BadInputExits2AndWritesNothing) {
+  const std::string dir = scratch_dir("slice-bad");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--layer-height", "0", "-o", dir + "/a.cli"}, "--layer-height"},
+      {{"--layer-height", "-0.1", "-o", dir + "/a.cli"}, "--layer-height"},
+      {{"--layer-height", "9", "-o", dir + "/a.cli"}, "above a cell"},
+      {{"--tolerance", "0", "-o", dir + "/a.cli"}, "--tolerance"},
+      {{"-o", dir + "/a.stl"}, "unknown extension"},
+      {{"--cells", "9", "-o", dir + "/a.sl1"}, "larger than the SL1 screen"},
+      {{"--cli-ascii", "-o", dir + "/a.svg"}, "--cli-ascii"},
+      {{"--printer", "sl1s", "-o", dir + "/a.sl1"}, "--printer"},
+  };
+  for (const auto& [extra, reason] : cases) {
+    // The part's options, less those the case sets itself.
+    std::vector<std::string> args = {"slice", "--surface", "gyroid", "--density", "0.2", "--cell-size", "8", "-q"};
+    for (const std::string option : {"--layer-height", "--cells"})
+      if (std::find(extra.begin(), extra.end(), option) == extra.end())
+        args.insert(args.end(), {option, option == "--cells" ? "2" : "0.25"});
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_offsetgen(args);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(reason), std::string::npos) << r.output;
+  }
+  EXPECT_TRUE(fs::is_empty(dir)) << "a refused run left a file";
+}
+
+TEST(SliceCli, Sl1ArchiveOpensWithItsKeysAndOnePngPerLayerOfTheScreensSize) {
+  const std::string dir = scratch_dir("slice-sl1");
+  for (const auto& [ext, width, height, model] :
+       {std::tuple<std::string, int, int, std::string>{"sl1", 1440, 2560, "SL1"}, {"sl1s", 1620, 2560, "SL1S"}}) {
+    const std::string path = dir + "/part." + ext;
+    const auto r = slice({"-o", path});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const std::string script =
+        "import sys, struct, zipfile\n"
+        "z = zipfile.ZipFile(sys.argv[1])\n"
+        "assert z.testzip() is None\n"
+        "names = z.namelist()\n"
+        "cfg = dict(l.split(' = ', 1) for l in z.read('config.ini').decode().splitlines())\n"
+        "ini = dict(l.split(' = ', 1) for l in z.read('prusaslicer.ini').decode().splitlines())\n"
+        "pngs = [n for n in names if n.endswith('.png')]\n"
+        "sizes = set()\n"
+        "for n in pngs:\n"
+        "    b = z.read(n)\n"
+        "    assert b[:8] == b'\\x89PNG\\r\\n\\x1a\\n'\n"
+        "    w, h, depth, colour = struct.unpack('>IIBB', b[16:26])\n"
+        "    sizes.add((w, h, depth, colour))\n"
+        "print(names[0], names[1], pngs[0], len(pngs), sorted(sizes), cfg['numFast'], cfg['numSlow'],\n"
+        "      cfg['printerModel'], cfg['jobDir'], cfg['layerHeight'], 'fileCreationTimestamp' in cfg,\n"
+        "      ini['printer_technology'], ini['display_pixels_x'], ini['display_pixels_y'],\n"
+        "      ini['display_orientation'], ini['display_mirror_x'], ini['layer_height'], "
+        "ini['initial_layer_height'])\n";
+    const auto py = run_command({"python3", "-c", script, path});
+    ASSERT_EQ(py.exit_code, 0) << py.output;
+    EXPECT_EQ(py.output,
+              fmt::format("config.ini prusaslicer.ini part00000.png 64 [({}, {}, 8, 0)] 64 0 {} part 0.25 False SLA "
+                          "2560 {} portrait 1 0.25 0.25\n",
+                          width, height, model, width));
+  }
+}
+
+}  // namespace
+}  // namespace offsetgen::slice
