@@ -137,14 +137,19 @@ double signed_area(const std::vector<std::array<double, 2>>& p) {
 }
 
 const double kCell = 8, kLayer = 0.25;
-const std::vector<std::string> kPart = {"slice", "--surface",   "gyroid", "--density",      "0.2",  "--cells",
-                                        "2",     "--cell-size", "8",      "--layer-height", "0.25", "-q"};
+// The part's options; slice() replaces those `extra` gives again and appends the rest.
+const std::vector<std::pair<std::string, std::string>> kPart = {
+    {"--surface", "gyroid"}, {"--density", "0.2"}, {"--cells", "2"}, {"--cell-size", "8"}, {"--layer-height", "0.25"}};
 
-test_support::CommandResult slice(const std::vector<std::string>& extra) {
-  std::vector<std::string> args = kPart;
+std::vector<std::string> part_args(const std::vector<std::string>& extra) {
+  std::vector<std::string> args = {"slice", "-q"};
+  for (const auto& [option, value] : kPart)
+    if (std::find(extra.begin(), extra.end(), option) == extra.end()) args.insert(args.end(), {option, value});
   args.insert(args.end(), extra.begin(), extra.end());
-  return run_offsetgen(args);
+  return args;
 }
+
+test_support::CommandResult slice(const std::vector<std::string>& extra) { return run_offsetgen(part_args(extra)); }
 
 // Reads the file and checks it against the wall: returns the number of vertices checked on the wall.
 size_t check_cli(const std::string& path, double vertex_tolerance) {
@@ -204,20 +209,27 @@ TEST(SliceCli, BinaryCliReadBackHasEveryVertexWithinFloat32RoundingOfTheWall) {
   EXPECT_GT(check_cli(dir + "/part.cli", 1e-6 + std::sqrt(2.0) * 9.6e-7), 10000u);
 }
 
-TEST(SliceCli, SameBytesTwiceAndOnOneOrTwoThreads) {
-  const std::string dir = scratch_dir("slice-determinism");
+// Same file names (an SL1 archive holds its own name as jobDir) in different directories; a block one
+// cell tall in layers of 0.5 mm.
+void expect_same_bytes(const std::string& ext) {
+  const std::string dir = scratch_dir("slice-determinism-" + ext);
   for (const std::string run : {"one", "two", "three"}) fs::create_directories(dir + "/" + run);
-  // Same file names (an SL1 archive holds its own name as jobDir), different directories.
-  for (const std::string ext : {"cli", "sl1"}) {
-    ASSERT_EQ(slice({"-j", "2", "-o", dir + "/one/part." + ext}).exit_code, 0);
-    ASSERT_EQ(slice({"-j", "2", "-o", dir + "/two/part." + ext}).exit_code, 0);
-    ASSERT_EQ(slice({"-j", "1", "-o", dir + "/three/part." + ext}).exit_code, 0);
-    const std::string a = read_file(dir + "/one/part." + ext);
-    EXPECT_GT(a.size(), 1000u);
-    EXPECT_TRUE(a == read_file(dir + "/two/part." + ext)) << ext << " differs between runs";
-    EXPECT_TRUE(a == read_file(dir + "/three/part." + ext)) << ext << " differs between 1 and 2 threads";
-  }
+  const std::vector<std::string> part = {"--cells", "2,2,1", "--layer-height", "0.5"};
+  auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.end(), part.begin(), part.end());
+    return extra;
+  };
+  ASSERT_EQ(slice(with({"-j", "2", "-o", dir + "/one/part." + ext})).exit_code, 0);
+  ASSERT_EQ(slice(with({"-j", "2", "-o", dir + "/two/part." + ext})).exit_code, 0);
+  ASSERT_EQ(slice(with({"-j", "1", "-o", dir + "/three/part." + ext})).exit_code, 0);
+  const std::string a = read_file(dir + "/one/part." + ext);
+  EXPECT_GT(a.size(), 1000u);
+  EXPECT_TRUE(a == read_file(dir + "/two/part." + ext)) << ext << " differs between runs";
+  EXPECT_TRUE(a == read_file(dir + "/three/part." + ext)) << ext << " differs between 1 and 2 threads";
 }
+
+TEST(SliceCli, CliSameBytesTwiceAndOnOneOrTwoThreads) { expect_same_bytes("cli"); }
+TEST(SliceCli, Sl1SameBytesTwiceAndOnOneOrTwoThreads) { expect_same_bytes("sl1"); }
 
 TEST(SliceCli, BadInputExits2AndWritesNothing) {
   const std::string dir = scratch_dir("slice-bad");
@@ -232,12 +244,7 @@ TEST(SliceCli, BadInputExits2AndWritesNothing) {
       {{"--printer", "sl1s", "-o", dir + "/a.sl1"}, "--printer"},
   };
   for (const auto& [extra, reason] : cases) {
-    // The part's options, less those the case sets itself.
-    std::vector<std::string> args = {"slice", "--surface", "gyroid", "--density", "0.2", "--cell-size", "8", "-q"};
-    for (const std::string option : {"--layer-height", "--cells"})
-      if (std::find(extra.begin(), extra.end(), option) == extra.end())
-        args.insert(args.end(), {option, option == "--cells" ? "2" : "0.25"});
-    args.insert(args.end(), extra.begin(), extra.end());
+    const std::vector<std::string> args = part_args(extra);
     const auto r = run_offsetgen(args);
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find(reason), std::string::npos) << r.output;
@@ -250,7 +257,7 @@ TEST(SliceCli, Sl1ArchiveOpensWithItsKeysAndOnePngPerLayerOfTheScreensSize) {
   for (const auto& [ext, width, height, model] :
        {std::tuple<std::string, int, int, std::string>{"sl1", 1440, 2560, "SL1"}, {"sl1s", 1620, 2560, "SL1S"}}) {
     const std::string path = dir + "/part." + ext;
-    const auto r = slice({"-o", path});
+    const auto r = slice({"--layer-height", "0.5", "-o", path});
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const std::string script =
         "import sys, struct, zipfile\n"
@@ -274,8 +281,8 @@ TEST(SliceCli, Sl1ArchiveOpensWithItsKeysAndOnePngPerLayerOfTheScreensSize) {
     const auto py = run_command({"python3", "-c", script, path});
     ASSERT_EQ(py.exit_code, 0) << py.output;
     EXPECT_EQ(py.output,
-              fmt::format("config.ini prusaslicer.ini part00000.png 64 [({}, {}, 8, 0)] 64 0 {} part 0.25 False SLA "
-                          "2560 {} portrait 1 0.25 0.25\n",
+              fmt::format("config.ini prusaslicer.ini part00000.png 32 [({}, {}, 8, 0)] 32 0 {} part 0.5 False SLA "
+                          "2560 {} portrait 1 0.5 0.5\n",
                           width, height, model, width));
   }
 }
