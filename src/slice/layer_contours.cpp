@@ -171,11 +171,23 @@ struct DensePoint {
   int side = -1;  // Side: which side of the box
 };
 
+// A thread's buffers, reused from layer to layer: allocated once, they cost no page faults after the
+// first layer.
+struct Scratch {
+  std::vector<float> values;
+  std::vector<int32_t> next, crossing;
+  std::vector<uint8_t> seen;
+};
+Scratch& scratch() {
+  static thread_local Scratch s;
+  return s;
+}
+
 // The marching grid of one layer: pixel (i, j) centred at ((i - kMargin + 1/2) p, (j - kMargin + 1/2) p).
 class MarchingGrid {
  public:
   MarchingGrid(const wall::SampledLayer& layer, const LayerSetup& s, const wall::LayerGrid& grid)
-      : nx_(grid.size[0]), ny_(grid.size[1]), pixel_(grid.pixel) {
+      : nx_(grid.size[0]), ny_(grid.size[1]), pixel_(grid.pixel), values_(scratch().values) {
     values_.assign(static_cast<size_t>(nx_) * ny_, layer.background);
     auto fill = [&](const std::array<int, 2>& origin, const std::vector<float>* block) {
       for (int i = 0; i < wall::kLayerBlock; ++i)
@@ -216,13 +228,14 @@ class MarchingGrid {
  private:
   int nx_, ny_;
   double pixel_;
-  std::vector<float> values_;
+  std::vector<float>& values_;
 };
 
 // Marching squares with the solid on the left of every segment: next[e] is the edge the contour
 // leaves a cell by after entering it... (both as edge indices); -1 where the contour does not cross.
-std::vector<int64_t> march(const MarchingGrid& g, Level& level) {
-  std::vector<int64_t> next(2 * static_cast<size_t>(g.nx()) * g.ny(), -1);
+const std::vector<int32_t>& march(const MarchingGrid& g, Level& level) {
+  std::vector<int32_t>& next = scratch().next;
+  next.assign(2 * static_cast<size_t>(g.nx()) * g.ny(), -1);
   // Saddle cells first, decided by G at their centre (one batch).
   std::vector<std::array<int, 2>> saddles;
   std::vector<Point2> centres;
@@ -258,7 +271,7 @@ std::vector<int64_t> march(const MarchingGrid& g, Level& level) {
           for (int m = 0; m < 4; ++m)
             if (!c[m] && c[(m + 1) % 4]) end = m;
         }
-        next[edges[k]] = static_cast<int64_t>(edges[end]);
+        next[edges[k]] = static_cast<int32_t>(edges[end]);
       }
     }
   return next;
@@ -510,22 +523,23 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
   grid.pixel = 1.0 / s.pixels_per_cell;
   grid.origin = {-kMargin * grid.pixel, -kMargin * grid.pixel};
   grid.size = {s.cells[0] * s.pixels_per_cell + 2 * kMargin, s.cells[1] * s.pixels_per_cell + 2 * kMargin};
-  if (2.0 * grid.size[0] * grid.size[1] >= 9.0e18) throw std::length_error("layer grid too large");
+  if (2.0 * grid.size[0] * grid.size[1] >= 2.0e9) throw std::length_error("layer grid too large");
   const wall::SampledLayer sampled = wall::sample_layer(field, grid, s.reach, s.use_field_bound, s.threads, {});
   out.samples = sampled.samples;
   const MarchingGrid g(sampled, s, grid);
   Level level(field, s.cells, s.z);
-  const std::vector<int64_t> next = march(g, level);
+  const std::vector<int32_t>& next = march(g, level);
 
   // Every crossing refined onto G = 0, inside end first.
-  std::vector<int64_t> crossing(next.size(), -1);
+  std::vector<int32_t>& crossing = scratch().crossing;
+  crossing.assign(next.size(), -1);
   std::vector<Bracket> brackets;
   for (size_t e = 0; e < next.size(); ++e) {
     if (next[e] < 0) continue;
     const auto px = g.edge_pixels(e);
     const double fa = g.value(px[0], px[1]) * g.pixel(), fb = g.value(px[2], px[3]) * g.pixel();
     const Point2 a = g.centre(px[0], px[1]), b = g.centre(px[2], px[3]);
-    crossing[e] = static_cast<int64_t>(brackets.size());
+    crossing[e] = static_cast<int32_t>(brackets.size());
     brackets.push_back(fa < 0 ? Bracket{a, b, fa, fb} : Bracket{b, a, fb, fa});
   }
   const std::vector<Point2> roots = refine_roots(level, brackets);
@@ -533,7 +547,8 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
   const std::vector<double> w_at_roots = level.w();
 
   // Loops of crossings, in the order of their first edge.
-  std::vector<uint8_t> seen(next.size(), 0);
+  std::vector<uint8_t>& seen = scratch().seen;
+  seen.assign(next.size(), 0);
   const double tol = s.tolerance / s.cell_size;
   std::vector<std::vector<Point2>> loops;
   for (size_t e = 0; e < next.size(); ++e) {

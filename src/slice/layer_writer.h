@@ -24,6 +24,9 @@ struct Screen {
   double height = 68.04;       // mm, along y
   double exposure = 6;         // s
   double first_exposure = 35;  // s
+  // The bed's shape: PrusaSlicer centres a part on the bed, not the screen (for SL1 its default bed of
+  // 120 x 68 mm, centre (60, 34), on the 120.96 x 68.04 mm screen).
+  std::array<double, 2> bed{120, 68};
 };
 Screen sl1_screen();
 Screen sl1s_screen();

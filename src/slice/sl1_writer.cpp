@@ -29,7 +29,7 @@ std::string prusaslicer_ini(const Screen& s, const PartLayout& part) {
   std::map<std::string, std::string> k{
       {"absolute_correction", "0"},
       {"area_fill", "50"},
-      {"bed_shape", fmt::format("0x0,{0}x0,{0}x{1},0x{1}", number(s.width), number(s.height))},
+      {"bed_shape", fmt::format("0x0,{0}x0,{0}x{1},0x{1}", number(s.bed[0]), number(s.bed[1]))},
       {"bottle_cost", "0"},
       {"bottle_volume", "1000"},
       {"bottle_weight", "1"},
@@ -125,7 +125,13 @@ class Sl1Writer : public LayerWriter {
     if (part.size[0] > screen.width || part.size[1] > screen.height)
       throw InputError(fmt::format("the part ({:g} x {:g} mm) is larger than the {} screen ({:g} x {:g} mm)",
                                    part.size[0], part.size[1], screen.model, screen.width, screen.height));
-    shift_ = {0.5 * (screen.width - part.size[0]), 0.5 * (screen.height - part.size[1])};
+    // The part's box centred on the bed's centre, as PrusaSlicer places it.
+    shift_ = {0.5 * (screen.bed[0] - part.size[0]), 0.5 * (screen.bed[1] - part.size[1])};
+    if (shift_[0] < 0 || shift_[1] < 0 || shift_[0] + part.size[0] > screen.width ||
+        shift_[1] + part.size[1] > screen.height)
+      throw InputError(
+          fmt::format("the part ({:g} x {:g} mm) centred on the bed does not fit the {} screen ({:g} x {:g} mm)",
+                      part.size[0], part.size[1], screen.model, screen.width, screen.height));
     // The part's box in pixels (columns along y, rows along x), one pixel of margin.
     col_lo_ = std::max(0, static_cast<int>(std::floor(shift_[1] / p_y_)) - 1);
     col_hi_ = std::min(screen.pixels_y, static_cast<int>(std::ceil((shift_[1] + part.size[1]) / p_y_)) + 1);
@@ -216,8 +222,8 @@ thread_local std::vector<uint8_t> Sl1Writer::line_;
 
 }  // namespace
 
-Screen sl1_screen() { return Screen{"SL1", 2560, 1440, 120.96, 68.04, 10, 15}; }
-Screen sl1s_screen() { return Screen{"SL1S", 2560, 1620, 128, 81, 10, 15}; }
+Screen sl1_screen() { return Screen{"SL1", 2560, 1440, 120.96, 68.04, 10, 15, {120, 68}}; }
+Screen sl1s_screen() { return Screen{"SL1S", 2560, 1620, 128, 81, 10, 15, {128, 81}}; }
 
 std::unique_ptr<LayerWriter> make_sl1_writer(const std::string& path, const PartLayout& part, const Screen& screen) {
   return std::make_unique<Sl1Writer>(path, part, screen);

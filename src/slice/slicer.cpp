@@ -17,6 +17,10 @@
 namespace offsetgen::slice {
 namespace {
 
+// The marching grid: the thinnest wall spans this many pixels, so every row and column of pixels that
+// crosses a wall holds a sample inside it (a wall cut by a layer is at least its thickness wide).
+constexpr double kPixelsPerWall = 3;
+
 bool positive_length(double x) { return x > 0 && std::isfinite(x); }
 
 std::string extension_of(const std::string& path) {
@@ -131,7 +135,7 @@ void validate(const SliceRequest& r) {
   const SliceFormat f = format_for_output(r);
   if (const auto screen = screen_of(f)) {
     const double x = r.cells[0] * r.cell_size, y = r.cells[1] * r.cell_size;
-    if (x > screen->width || y > screen->height)
+    if (x > std::min(screen->width, screen->bed[0]) || y > std::min(screen->height, screen->bed[1]))
       throw InputError(fmt::format(
           "the part ({:g} x {:g} mm) is larger than the {} screen ({:g} x {:g} mm): use fewer --cells or a smaller "
           "--cell-size",
@@ -169,8 +173,9 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress) {
   m.generate_seconds = field.generate_seconds();
   const auto range = field.thickness_range(r.cells);
   const wall::WallExtent extent = field.extent(range);
-  m.pixels_per_cell =
-      r.pixels_per_cell > 0 ? r.pixels_per_cell : std::max(16, static_cast<int>(std::ceil(4 / extent.thinnest - 1e-9)));
+  m.pixels_per_cell = r.pixels_per_cell > 0
+                          ? r.pixels_per_cell
+                          : std::max(16, static_cast<int>(std::ceil(kPixelsPerWall / extent.thinnest - 1e-9)));
   if (double(m.pixels_per_cell) * std::max(r.cells[0], r.cells[1]) > 65536)
     throw InputError(
         fmt::format("{} pixels per cell over {} cells: the layer grid is too large (walls too thin for "
