@@ -317,8 +317,16 @@ std::vector<DensePoint> with_corners(std::vector<DensePoint> loop, Level& level,
     const DensePoint& b = loop[(k + 1) % n];
     out.push_back(a);
     if (a.kind == Kind::Side && b.kind == Kind::Side && a.side != b.side && (a.side < 2) != (b.side < 2)) {
+      // Two sides: their corner, where it is inside the wall; else the wall cuts the corner off, and
+      // meets each side on the way.
       const int xs = a.side < 2 ? a.side : b.side, ys = a.side < 2 ? b.side : a.side;
-      out.push_back({{xs == 0 ? 0.0 : double(s.cells[0]), ys == 2 ? 0.0 : double(s.cells[1])}, Kind::Corner, -1});
+      const Point2 corner{xs == 0 ? 0.0 : double(s.cells[0]), ys == 2 ? 0.0 : double(s.cells[1])};
+      if (level.wall_at(corner) < 0) {
+        out.push_back({corner, Kind::Corner, -1});
+      } else {
+        if (const auto c = side_corner(level, s, a.side, a.p, corner, pixel)) out.push_back({*c, Kind::Corner, -1});
+        if (const auto c = side_corner(level, s, b.side, b.p, corner, pixel)) out.push_back({*c, Kind::Corner, -1});
+      }
     } else if ((a.kind == Kind::Side) != (b.kind == Kind::Side) && a.kind != Kind::Corner && b.kind != Kind::Corner) {
       const DensePoint& side = a.kind == Kind::Side ? a : b;
       const DensePoint& wall = a.kind == Kind::Side ? b : a;

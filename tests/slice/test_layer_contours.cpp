@@ -77,7 +77,7 @@ TEST_P(GyroidLayer, VerticesOnTheWallSolidOnTheLeftChordsWithinTolerance) {
   EXPECT_LT(double(outside), 0.01 * double(g.size())) << outside << " of " << g.size();
 }
 
-INSTANTIATE_TEST_SUITE_P(Heights, GyroidLayer, ::testing::Values(0.3, 2.0, 5.55, 8.0, 13.1));
+INSTANTIATE_TEST_SUITE_P(Heights, GyroidLayer, ::testing::Values(0.3, 0.525, 2.0, 5.55, 8.0, 13.1));
 
 TEST(GyroidLayerThreads, OneAndTwoSamplingThreadsGiveTheSameLoops) {
   const wall::WallField& field = test::gyroid_field();
