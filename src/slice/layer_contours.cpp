@@ -13,7 +13,7 @@ namespace offsetgen::slice {
 namespace {
 
 constexpr int kMargin = 2;              // pixels of the marching grid beyond each side of the box
-constexpr double kRootEps = 1e-12;      // cell units: a refined root's bracket
+constexpr double kRootEps = 1e-11;      // cell units: a refined root's bracket
 constexpr int kBatchIterations = 64;    // regula falsi rounds before Brent takes over
 constexpr int kVerifyRounds = 16;       // rounds of midpoint checks and splits
 constexpr double kMaxChordPixels = 24;  // the longest chord the thinning makes, in pixels
@@ -87,9 +87,9 @@ struct Bracket {
   double fa, fb;
 };
 
-// The roots of G on the segments, to kRootEps: regula falsi with the Illinois step, all segments in one
+// The roots of G on the segments, to eps (cell units): regula falsi with the Illinois step, all segments in one
 // batch per round, a bisection where a bracket stops halving; Brent's method for any left over.
-std::vector<Point2> refine_roots(Level& level, const std::vector<Bracket>& brackets) {
+std::vector<Point2> refine_roots(Level& level, const std::vector<Bracket>& brackets, double eps = kRootEps) {
   struct State {
     double ta = 0, tb = 1, fa = 0, fb = 0, true_fa = 0, true_fb = 0, width_before = 1, t = 0;
     int kept = 0;  // -1: a moved last, +1: b moved last
@@ -115,7 +115,7 @@ std::vector<Point2> refine_roots(Level& level, const std::vector<Bracket>& brack
       State& st = s[i];
       if (st.done) continue;
       const double len = length(brackets[i].a, brackets[i].b);
-      if ((st.tb - st.ta) * len <= kRootEps) {
+      if ((st.tb - st.ta) * len <= eps) {
         st.done = true;
         st.t = 0.5 * (st.ta + st.tb);
         continue;
@@ -294,8 +294,9 @@ std::optional<Point2> side_corner(Level& level, const LayerSetup& s, int side, c
   const double direction = wall[along] > u0 ? 1.0 : -1.0;
   double prev = u0, fprev = level.wall_at(at(u0));
   if (fprev >= 0) return std::nullopt;
-  for (int k = 1; k <= 12; ++k) {
-    const double u = u0 + direction * k * pixel / 4;
+  const double end = direction > 0 ? double(s.cells[along]) : 0.0;  // the side ends at the box's corner
+  for (int k = 1; k <= 12 && prev != end; ++k) {
+    const double u = direction > 0 ? std::min(end, u0 + k * pixel / 4) : std::max(end, u0 - k * pixel / 4);
     const double f = level.wall_at(at(u));
     if (f >= 0) {
       const double root = numeric::brent_root([&](double v) { return level.wall_at(at(v)); }, prev, u, fprev, f);
@@ -305,6 +306,25 @@ std::optional<Point2> side_corner(Level& level, const LayerSetup& s, int side, c
     fprev = f;
   }
   return std::nullopt;
+}
+
+// Where side_corner finds no root before the side ends: the box's corner at that end, if it is inside
+// the wall, and the corner where the wall meets the adjacent side (searched from the box's corner
+// towards the wall point). Empty when neither is found.
+std::vector<Point2> around_corner(Level& level, const LayerSetup& s, const DensePoint& side, const Point2& wall,
+                                  double pixel) {
+  const int along = side.side < 2 ? 1 : 0;
+  const double fixed = side.side == 0 || side.side == 2 ? 0.0 : double(s.cells[1 - along]);
+  const double end = wall[along] > side.p[along] ? double(s.cells[along]) : 0.0;
+  Point2 corner{};
+  corner[along] = end;
+  corner[1 - along] = fixed;
+  if (level.wall_at(corner) >= 0) return {};
+  // The adjacent side: the one at u = end.
+  const int next = along == 1 ? (end == 0 ? 2 : 3) : (end == 0 ? 0 : 1);
+  const auto c = side_corner(level, s, next, corner, wall, pixel);
+  if (!c) return {};
+  return {corner, *c};
 }
 
 // The dense loop with the corners put in: where a wall point and a side point meet, and where two
@@ -330,7 +350,17 @@ std::vector<DensePoint> with_corners(std::vector<DensePoint> loop, Level& level,
     } else if ((a.kind == Kind::Side) != (b.kind == Kind::Side) && a.kind != Kind::Corner && b.kind != Kind::Corner) {
       const DensePoint& side = a.kind == Kind::Side ? a : b;
       const DensePoint& wall = a.kind == Kind::Side ? b : a;
-      if (const auto c = side_corner(level, s, side.side, side.p, wall.p, pixel)) out.push_back({*c, Kind::Corner, -1});
+      if (const auto c = side_corner(level, s, side.side, side.p, wall.p, pixel)) {
+        out.push_back({*c, Kind::Corner, -1});
+      } else if (const auto around = around_corner(level, s, side, wall.p, pixel); !around.empty()) {
+        // The side ends inside the wall: the box's corner, then the wall meets the next side. In the
+        // loop's order: side, corner, wall corner, wall (or the reverse).
+        if (a.kind == Kind::Side) {
+          for (const Point2& p : around) out.push_back({p, Kind::Corner, -1});
+        } else {
+          for (auto it = around.rbegin(); it != around.rend(); ++it) out.push_back({*it, Kind::Corner, -1});
+        }
+      }
     }
   }
   return out;
@@ -410,42 +440,29 @@ void verify_chords(std::vector<std::vector<Point2>>& loops, Level& level, double
             {l, k, lerp(a, b, 0.5), {-(b[1] - a[1]) / len, (b[0] - a[0]) / len}, std::max(len, 2 * pixel)});
       }
     if (chords.empty()) break;
-    // Within tol: a sign change between mid - tol n and mid + tol n.
+    // Within tol: a sign change of G between mid - tol n and mid + tol n. The deviation is where the
+    // line through the two values crosses zero (G is all but linear over 2 tol).
     std::vector<Point2> probes;
     for (const Chord& c : chords) {
       probes.push_back({c.mid[0] - tol * c.normal[0], c.mid[1] - tol * c.normal[1]});
       probes.push_back({c.mid[0] + tol * c.normal[0], c.mid[1] + tol * c.normal[1]});
-      probes.push_back(c.mid);
     }
     const std::vector<double> g = level(probes);
-    std::vector<Bracket> near, far;
-    std::vector<size_t> near_chord, far_chord;
+    std::vector<Bracket> far;
+    std::vector<size_t> far_chord;
     std::vector<size_t> searching;
     for (size_t c = 0; c < chords.size(); ++c) {
-      const double lo = g[3 * c], hi = g[3 * c + 1], mid = g[3 * c + 2];
-      const Point2 &plo = probes[3 * c], &phi = probes[3 * c + 1], &pm = probes[3 * c + 2];
-      if (mid == 0) {
+      const double lo = g[2 * c], hi = g[2 * c + 1];
+      if ((lo < 0) != (hi < 0)) {
+        max_dev = std::max(max_dev, std::abs(tol * (lo + hi) / (hi - lo)));
         pending[chords[c].loop][chords[c].index] = 0;
-      } else if ((mid < 0) != (lo < 0)) {
-        near.push_back(mid < 0 ? Bracket{pm, plo, mid, lo} : Bracket{plo, pm, lo, mid});
-        near_chord.push_back(c);
-      } else if ((mid < 0) != (hi < 0)) {
-        near.push_back(mid < 0 ? Bracket{pm, phi, mid, hi} : Bracket{phi, pm, hi, mid});
-        near_chord.push_back(c);
       } else {
         searching.push_back(c);
       }
     }
-    // The chords that pass: their deviation.
-    const std::vector<Point2> near_roots = refine_roots(level, near);
-    for (size_t k = 0; k < near.size(); ++k) {
-      const Chord& c = chords[near_chord[k]];
-      max_dev = std::max(max_dev, length(near_roots[k], c.mid));
-      pending[c.loop][c.index] = 0;
-    }
     // The others: the contour along the normal, in growing steps (both ways) up to the chord's reach.
     std::vector<double> step(chords.size(), tol), fmid(chords.size(), 0);
-    for (size_t c : searching) fmid[c] = g[3 * c + 2];
+    for (size_t c : searching) fmid[c] = g[2 * c];  // G's sign out to +-tol
     std::vector<size_t> still = searching;
     std::vector<Point2> found_roots;
     while (!still.empty()) {
@@ -551,8 +568,17 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
     brackets.push_back(fa < 0 ? Bracket{a, b, fa, fb} : Bracket{b, a, fb, fa});
   }
   const std::vector<Point2> roots = refine_roots(level, brackets);
-  level(roots);
-  const std::vector<double> w_at_roots = level.w();
+  // Which roots lie on a side of the box (there G = box >= w): only those near a side can.
+  std::vector<Point2> near_side;
+  std::vector<size_t> near_index;
+  for (size_t k = 0; k < roots.size(); ++k)
+    if (level.box(roots[k]) > -2 * g.pixel()) {
+      near_side.push_back(roots[k]);
+      near_index.push_back(k);
+    }
+  level(near_side);
+  std::vector<uint8_t> on_side(roots.size(), 0);
+  for (size_t k = 0; k < near_index.size(); ++k) on_side[near_index[k]] = level.box(near_side[k]) > level.w()[k];
 
   // Loops of crossings, in the order of their first edge.
   std::vector<uint8_t>& seen = scratch().seen;
@@ -567,7 +593,7 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
       const auto c = static_cast<size_t>(crossing[k]);
       const Point2& p = roots[c];
       DensePoint d{p, Kind::Wall, -1};
-      if (level.box(p) > w_at_roots[c]) {
+      if (on_side[c]) {
         d.kind = Kind::Side;
         d.side = level.side(p);
       }

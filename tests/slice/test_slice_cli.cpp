@@ -178,6 +178,8 @@ size_t check_cli(const std::string& path, double vertex_tolerance) {
                           std::abs(v[1] - 2 * kCell) < eps;
         EXPECT_GE(v[0], -eps);
         EXPECT_LE(v[0], 2 * kCell + eps);
+        EXPECT_GE(v[1], -eps);
+        EXPECT_LE(v[1], 2 * kCell + eps);
         if (!side) on_wall.push_back(v);
       }
     }
