@@ -48,7 +48,7 @@ void CoverageRaster::row(int r, double sign, std::vector<uint8_t>& out) const {
   for (int c = 0; c < width_; ++c) {
     sum += row[c + 1];
     const double cover = std::clamp(sign * sum, 0.0, 1.0);
-    out[static_cast<size_t>(c)] = static_cast<uint8_t>(std::lround(cover * 255));
+    out[static_cast<size_t>(c)] = static_cast<uint8_t>(cover * 255 + 0.5);  // rounded: cover >= 0
   }
 }
 
