@@ -134,9 +134,14 @@ std::vector<Point2> refine_roots(Level& level, const std::vector<Bracket>& brack
     if (active.empty()) break;
     const std::vector<double>& g = level(points);
     for (size_t k = 0; k < active.size(); ++k) {
-      State& st = s[active[k]];
+      const size_t i = active[k];
+      State& st = s[i];
       const double f = g[k];
-      if (f == 0) {
+      // Close enough when the root is within eps of t by the bracket's secant slope (G is smooth
+      // there: a step of regula falsi is a Newton step to within the slope's error).
+      const double len = length(brackets[i].a, brackets[i].b);
+      const double slope = (st.true_fb - st.true_fa) / ((st.tb - st.ta) * len);
+      if (f == 0 || std::abs(f) <= 0.1 * eps * slope) {
         st.done = true;
       } else if (f < 0) {
         st.ta = st.t;
