@@ -60,6 +60,27 @@ TEST_P(GyroidLayer, VerticesOnTheWallSolidOnTheLeftChordsWithinTolerance) {
     }
   }
   EXPECT_GT(area, 0) << "outer loops are counter-clockwise, so the layer's signed area is its area";
+  // No two edges cross (edges that share a vertex aside).
+  struct Edge {
+    Point2 a, b;
+  };
+  std::vector<Edge> edges;
+  for (const Loop& loop : c.loops)
+    for (size_t k = 0; k < loop.points.size(); ++k)
+      edges.push_back({loop.points[k], loop.points[(k + 1) % loop.points.size()]});
+  auto cross = [](const Point2& o, const Point2& a, const Point2& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  size_t crossings = 0;
+  for (size_t i = 0; i < edges.size(); ++i)
+    for (size_t j = i + 1; j < edges.size(); ++j) {
+      const Edge &e = edges[i], &f = edges[j];
+      if (e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b) continue;
+      const double d1 = cross(e.a, e.b, f.a), d2 = cross(e.a, e.b, f.b), d3 = cross(f.a, f.b, e.a),
+                   d4 = cross(f.a, f.b, e.b);
+      crossings += ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+    }
+  EXPECT_EQ(crossings, 0u) << "edges that cross";
   const std::vector<double> d = test::wall_distances(field, wall_points, z, s.cell_size);
   double worst = 0;
   for (double v : d) worst = std::max(worst, v);

@@ -196,6 +196,33 @@ size_t check_cli(const std::string& path, double vertex_tolerance) {
   return checked;
 }
 
+// A sphere's wall (radius 0.35 cell, t = 0.04) cut at z = 0.25 and 0.75 cell: an annulus per layer,
+// its outer loop counter-clockwise and its hole clockwise, every vertex on the circles of radius
+// sqrt((0.35 +- 0.02)^2 - 0.25^2) cell (the offsets of a sphere are spheres), and each loop's area that
+// of its circle less at most the chords' segments (perimeter x tolerance).
+TEST(SliceCli, SphereWallLayersAreAnnuliOnTheExactCircles) {
+  const std::string dir = scratch_dir("slice-sphere");
+  const auto r = run_offsetgen({"slice", "-q", "--expr", "(x-0.5)^2 + (y-0.5)^2 + (z-0.5)^2 - 0.1225", "--thickness",
+                                "0.04", "--cells", "1", "--cell-size", "10", "--layer-height", "5", "--cli-ascii", "-o",
+                                dir + "/sphere.cli"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CliFile f = read_cli(read_file(dir + "/sphere.cli"));
+  ASSERT_EQ(f.layers.size(), 2u);
+  const double radius[2] = {10 * std::sqrt(0.37 * 0.37 - 0.0625), 10 * std::sqrt(0.33 * 0.33 - 0.0625)};
+  for (const CliLayer& layer : f.layers) {
+    ASSERT_EQ(layer.polylines.size(), 2u);
+    for (const Polyline& p : layer.polylines) {
+      const int outer = p.dir == 1 ? 0 : 1;
+      const double area = signed_area(p.points), exact = M_PI * radius[outer] * radius[outer];
+      EXPECT_EQ(area > 0, p.dir == 1);
+      EXPECT_LE(std::abs(area), exact);
+      EXPECT_GT(std::abs(area), exact - 2 * M_PI * radius[outer] * 0.005);
+      for (const auto& v : p.points) EXPECT_NEAR(std::hypot(v[0] - 5, v[1] - 5), radius[outer], 1e-6);
+    }
+    EXPECT_NE(layer.polylines[0].dir, layer.polylines[1].dir) << "an outer loop and a hole";
+  }
+}
+
 TEST(SliceCli, AsciiCliReadBackHasEveryVertexWithin1e6MmOfTheWall) {
   const std::string dir = scratch_dir("slice-ascii");
   const auto r = slice({"--cli-ascii", "-o", dir + "/part.cli"});
