@@ -236,8 +236,8 @@ class MarchingGrid {
   std::vector<float>& values_;
 };
 
-// Marching squares with the solid on the left of every segment: next[e] is the edge the contour
-// leaves a cell by after entering it... (both as edge indices); -1 where the contour does not cross.
+// Marching squares with the solid on the left of every segment: next[e] is the edge where the contour
+// leaves the cell it enters by edge e (edge indices as MarchingGrid::edge); -1 where it does not cross.
 const std::vector<int32_t>& march(const MarchingGrid& g, Level& level) {
   std::vector<int32_t>& next = scratch().next;
   next.assign(2 * static_cast<size_t>(g.nx()) * g.ny(), -1);
@@ -376,6 +376,11 @@ std::vector<DensePoint> with_corners(std::vector<DensePoint> loop, Level& level,
 // points are always kept.
 std::vector<Point2> thin(const std::vector<DensePoint>& loop, double tol, double max_chord) {
   const size_t n = loop.size();
+  if (n < 6) {
+    std::vector<Point2> all;
+    for (const DensePoint& d : loop) all.push_back(d.p);
+    return all;
+  }
   std::vector<size_t> fixed;
   for (size_t k = 0; k < n; ++k)
     if (loop[k].kind == Kind::Corner) fixed.push_back(k);

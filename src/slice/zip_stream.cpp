@@ -102,18 +102,15 @@ void ZipStream::finish() {
     put32(dir, e.offset);
     dir += e.name;
   }
-  put32(dir, 0x06054b50);
+  const uint64_t directory = dir.size();
+  put32(dir, 0x06054b50);  // the end record
   put16(dir, 0);
   put16(dir, 0);
   put16(dir, static_cast<uint32_t>(entries_.size()));
   put16(dir, static_cast<uint32_t>(entries_.size()));
-  put32(dir, dir.size() - 0);  // fixed below
+  put32(dir, directory);
   put32(dir, start);
   put16(dir, 0);
-  // The directory's size: everything before the end record (22 bytes).
-  const uint64_t directory = dir.size() - 22;
-  for (int k = 0; k < 4; ++k)
-    dir[dir.size() - 10 + static_cast<size_t>(k)] = static_cast<char>((directory >> (8 * k)) & 0xff);
   file_.append(dir);
   file_.commit();
 }
