@@ -5,8 +5,9 @@
 // G = max(w, box) with saddle cells decided by G at the cell's centre, each crossing refined onto G = 0
 // (batched regula falsi, Brent's method for the rare stragglers), corners where the wall meets a box
 // side found on that side, the dense exact points thinned greedily to half the tolerance, and every
-// chord's midpoint projected onto the contour along the chord's normal: the deviation is measured,
-// and a chord that exceeds the tolerance gets the projected point as a new vertex.
+// chord checked at its midpoint: G must change sign within the tolerance either side along the chord's
+// normal (the deviation is where the line through those two values crosses zero); a chord that fails
+// gets the contour's point on that normal as a new vertex, and both halves are checked again.
 // Loops run with the solid on their left: outer loops counter-clockwise, holes clockwise.
 #pragma once
 

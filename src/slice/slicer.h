@@ -27,7 +27,7 @@ struct SliceRequest {
   bool cli_ascii = false;             // ASCII CLI instead of binary
   std::string printer;                // "sl1" or "sl1s"; default from the extension
   int threads = 0;                    // 0: one per hardware thread
-  int pixels_per_cell = 0;            // the marching grid; 0: the thinnest wall spans 4 pixels
+  int pixels_per_cell = 0;            // the marching grid; 0: the thinnest wall spans 3 pixels
 };
 
 struct SliceSummary {
