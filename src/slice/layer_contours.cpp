@@ -173,7 +173,8 @@ enum class Kind { Wall, Side, Corner };
 struct DensePoint {
   Point2 p;
   Kind kind = Kind::Wall;
-  int side = -1;  // Side: which side of the box
+  int side = -1;          // Side: which side of the box
+  int32_t estimate = -1;  // p is a crossing's linear estimate, its bracket's index; -1: p is exact
 };
 
 // A thread's buffers, reused from layer to layer: allocated once, they cost no page faults after the
@@ -374,13 +375,9 @@ std::vector<DensePoint> with_corners(std::vector<DensePoint> loop, Level& level,
 // Thins a dense loop: from each kept point, the farthest point such that every dense point between
 // lies within `tol` of the chord (and the chord is at most `max_chord`); corners and three spread
 // points are always kept.
-std::vector<Point2> thin(const std::vector<DensePoint>& loop, double tol, double max_chord) {
+std::vector<DensePoint> thin(const std::vector<DensePoint>& loop, double tol, double max_chord) {
   const size_t n = loop.size();
-  if (n < 6) {
-    std::vector<Point2> all;
-    for (const DensePoint& d : loop) all.push_back(d.p);
-    return all;
-  }
+  if (n < 6) return loop;
   std::vector<size_t> fixed;
   for (size_t k = 0; k < n; ++k)
     if (loop[k].kind == Kind::Corner) fixed.push_back(k);
@@ -392,10 +389,10 @@ std::vector<Point2> thin(const std::vector<DensePoint>& loop, double tol, double
   must[n / 3] = true;
   must[2 * n / 3] = true;
   auto at = [&](size_t k) -> const Point2& { return loop[(k + first) % n].p; };
-  std::vector<Point2> kept;
+  std::vector<DensePoint> kept;
   size_t i = 0;
   while (i < n) {
-    kept.push_back(at(i));
+    kept.push_back(loop[(i + first) % n]);
     size_t end = i + 1;
     while (end < n && !must[end]) ++end;  // the next fixed point (n: back to the start)
     size_t best = i + 1;
@@ -565,10 +562,11 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
   Level level(field, s.cells, s.z);
   const std::vector<int32_t>& next = march(g, level);
 
-  // Every crossing refined onto G = 0, inside end first.
+  // Every crossing's bracket, inside end first, and its linear estimate.
   std::vector<int32_t>& crossing = scratch().crossing;
   crossing.assign(next.size(), -1);
   std::vector<Bracket> brackets;
+  std::vector<Point2> estimates;
   for (size_t e = 0; e < next.size(); ++e) {
     if (next[e] < 0) continue;
     const auto px = g.edge_pixels(e);
@@ -576,33 +574,41 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
     const Point2 a = g.centre(px[0], px[1]), b = g.centre(px[2], px[3]);
     crossing[e] = static_cast<int32_t>(brackets.size());
     brackets.push_back(fa < 0 ? Bracket{a, b, fa, fb} : Bracket{b, a, fb, fa});
+    const Bracket& br = brackets.back();
+    estimates.push_back(lerp(br.a, br.b, br.fa / (br.fa - br.fb)));
   }
-  const std::vector<Point2> roots = refine_roots(level, brackets);
-  // Which roots lie on a side of the box (there G = box >= w): only those near a side can.
-  std::vector<Point2> near_side;
+  // Near the box's sides every crossing is refined at once onto G = 0, and its kind found (on a side
+  // G = box >= w): the corners are found from them. Elsewhere the thinning works on the estimates,
+  // and only the crossings it keeps are refined.
+  std::vector<Bracket> near_brackets;
   std::vector<size_t> near_index;
-  for (size_t k = 0; k < roots.size(); ++k)
-    if (level.box(roots[k]) > -2 * g.pixel()) {
-      near_side.push_back(roots[k]);
+  for (size_t k = 0; k < brackets.size(); ++k)
+    if (level.box(estimates[k]) > -3 * g.pixel()) {
+      near_brackets.push_back(brackets[k]);
       near_index.push_back(k);
     }
-  level(near_side);
-  std::vector<uint8_t> on_side(roots.size(), 0);
-  for (size_t k = 0; k < near_index.size(); ++k) on_side[near_index[k]] = level.box(near_side[k]) > level.w()[k];
+  const std::vector<Point2> near_roots = refine_roots(level, near_brackets);
+  level(near_roots);
+  std::vector<uint8_t> exact(brackets.size(), 0), on_side(brackets.size(), 0);
+  for (size_t k = 0; k < near_index.size(); ++k) {
+    estimates[near_index[k]] = near_roots[k];
+    exact[near_index[k]] = 1;
+    on_side[near_index[k]] = level.box(near_roots[k]) > level.w()[k];
+  }
 
   // Loops of crossings, in the order of their first edge.
   std::vector<uint8_t>& seen = scratch().seen;
   seen.assign(next.size(), 0);
   const double tol = s.tolerance / s.cell_size;
-  std::vector<std::vector<Point2>> loops;
+  std::vector<std::vector<DensePoint>> thinned;
   for (size_t e = 0; e < next.size(); ++e) {
     if (next[e] < 0 || seen[e]) continue;
     std::vector<DensePoint> dense;
     for (size_t k = e; !seen[k]; k = static_cast<size_t>(next[k])) {
       seen[k] = 1;
       const auto c = static_cast<size_t>(crossing[k]);
-      const Point2& p = roots[c];
-      DensePoint d{p, Kind::Wall, -1};
+      const Point2& p = estimates[c];
+      DensePoint d{p, Kind::Wall, -1, exact[c] ? -1 : static_cast<int32_t>(c)};
       if (on_side[c]) {
         d.kind = Kind::Side;
         d.side = level.side(p);
@@ -611,7 +617,20 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
       if (next[k] < 0) throw std::logic_error("marching squares: an open contour");
     }
     dense = with_corners(std::move(dense), level, s, g.pixel());
-    loops.push_back(thin(dense, 0.5 * tol, kMaxChordPixels * g.pixel()));
+    thinned.push_back(thin(dense, 0.5 * tol, kMaxChordPixels * g.pixel()));
+  }
+  // The kept estimates refined onto G = 0.
+  std::vector<Bracket> kept;
+  for (const auto& loop : thinned)
+    for (const DensePoint& d : loop)
+      if (d.estimate >= 0) kept.push_back(brackets[static_cast<size_t>(d.estimate)]);
+  const std::vector<Point2> kept_roots = refine_roots(level, kept);
+  std::vector<std::vector<Point2>> loops;
+  size_t next_root = 0;
+  for (const auto& loop : thinned) {
+    std::vector<Point2> points;
+    for (const DensePoint& d : loop) points.push_back(d.estimate >= 0 ? kept_roots[next_root++] : d.p);
+    loops.push_back(std::move(points));
   }
   verify_chords(loops, level, tol, g.pixel(), out);
   out.max_deviation *= s.cell_size;
