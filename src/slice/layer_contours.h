@@ -2,9 +2,10 @@
 // block's box, as closed polylines whose vertices lie on the exact zero set of the emitted wall (or on
 // the box's sides, where the box cuts the wall), placed so that every chord stays within a tolerance of
 // the true contour. Steps: the layer sampled in blocks (wall/layer_sampler.h), marching squares on
-// G = max(w, box) with saddle cells decided by G at the cell's centre, each crossing refined onto G = 0
-// (batched regula falsi, Brent's method for the rare stragglers), corners where the wall meets a box
-// side found on that side, the dense exact points thinned greedily to half the tolerance, and every
+// G = max(w, box) with saddle cells decided by G at the cell's centre, the crossings near the box's
+// sides refined onto G = 0 (batched regula falsi, Brent's method for the rare stragglers) and the
+// corners where the wall meets a side found on that side, each loop thinned greedily to half the
+// tolerance on the crossings' linear estimates and the crossings kept refined onto G = 0, and every
 // chord checked at its midpoint: G must change sign within the tolerance either side along the chord's
 // normal (the deviation is where the line through those two values crosses zero); a chord that fails
 // gets the contour's point on that normal as a new vertex, and both halves are checked again.
