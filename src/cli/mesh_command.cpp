@@ -89,11 +89,7 @@ void apply_map_options(const MeshOptions& o, mesh::MeshRequest& s) {
 int run_mesh_command(const MeshOptions& o) {
   if (!o.merge.empty()) return run_merge(o);
   mesh::MeshRequest s;
-  s.wall.generation = generation_request(o);
-  s.wall.thickness = o.thickness;
-  s.wall.network = o.network;
-  s.wall.generation.density = o.density;
-  s.wall.generation.density_field = o.density_field;
+  s.wall = wall_request(o);
   s.cells = parse_cells(o.cells);
   if (!o.body.empty()) {
     mesh::BodyRequest b;

@@ -12,20 +12,7 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
       "Mesh a block of cells of a wall solid (walls of thickness t around F = 0, capped by the block), or fill a\n"
       "part (--body) with it inside a solid skin, as a closed, outward-oriented triangle mesh in millimetres,\n"
       "ready for a slicer (OpenVDB volumeToMesh)");
-  add_generation_options(cmd, o, "Catalog surface (see `offsetgen list`)",
-                         "Your own F(x, y, z) in cell units, as in `generate`");
-  cmd->add_option("-t,--thickness", o.thickness,
-                  "Total wall thickness in cell units: a number, or an expression of x, y, z (x runs over [0, NX])");
-  cmd->add_option("--density", o.density,
-                  "Instead of --thickness: the relative density R of the wall (its volume fraction; periodic "
-                  "surfaces; docs/density.md)");
-  cmd->add_option("--density-field", o.density_field,
-                  "Instead of --thickness: a graded relative density rho(x, y, z), t(p) = "
-                  "thickness_for_density(rho(p))");
-  cmd->add_flag("--network", o.network,
-                "The network (skeletal, strut) solid offset(p, h) < 0 instead of the sheet: --thickness is then the "
-                "offset h in cell units (either sign; h > 0 grows the network), --density the network's relative "
-                "density (offsetgen density --network)");
+  add_wall_options(cmd, o);
   auto* cells = cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")
                     ->capture_default_str()
                     ->each([&o](const std::string&) { o.cells_given = true; });

@@ -2,7 +2,7 @@
 // passes the command line on: cli/siblings.h).
 #pragma once
 
-#include "cli/generation_options.h"
+#include "cli/wall_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -12,12 +12,9 @@
 
 namespace offsetgen {
 
-struct MeshOptions : GenerationOptions {
-  std::string thickness, cells = "1", output;
-  std::optional<double> density;             // --density R: the sheet of relative density R
-  std::optional<std::string> density_field;  // --density-field E: graded, rho(x, y, z)
-  bool network = false;                      // --network: the network solid phi(p, h) < 0
-  std::string body, origin;                  // --body FILE, --origin X,Y,Z
+struct MeshOptions : WallOptions {
+  std::string cells = "1", output;
+  std::string body, origin;  // --body FILE, --origin X,Y,Z
   double skin = 0, fillet = 0, scale = 1;
   bool repair = false;
   double cell_size = 10;

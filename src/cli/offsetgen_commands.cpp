@@ -6,6 +6,7 @@
 #include "cli/generate_command.h"
 #include "cli/list_command.h"
 #include "cli/siblings.h"
+#include "cli/slice_command.h"
 
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@ std::vector<Command> offsetgen_commands() {
       command_row<ListOptions>("list", add_list_command, [](const ListOptions& o, char**) { return run_list(o); }),
       command_row<DensityOptions>("density", add_density_command,
                                   [](const DensityOptions& o, char**) { return run_density(o); }),
+      command_row<SliceOptions>("slice", add_slice_command,
+                                [](const SliceOptions& o, char**) { return run_slice_command(o); }),
       // A STEP file is read with OpenCASCADE, by offsetgen-step.
       command_row<CheckOptions>("check", add_check_command,
                                 [](const CheckOptions& o, char** argv) {

@@ -13,6 +13,7 @@
 #include "mesh/tiles.h"
 #include "mesh/vdb_surface.h"
 #include "support/stopwatch.h"
+#include "validate/block_checks.h"
 
 #include <fmt/format.h>
 
@@ -41,13 +42,8 @@ class StageClock {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-bool positive_length(double x) { return x > 0 && std::isfinite(x); }
-
 void validate(const MeshRequest& s) {
-  for (int n : s.cells)
-    if (n < 1) throw InputError(fmt::format("--cells: {} is not a positive number of cells", n));
-  if (!positive_length(s.cell_size))
-    throw InputError(fmt::format("--cell-size {} is not a positive length (mm)", s.cell_size));
+  check_block(s.cells, s.cell_size);
   if (s.resolution < 0) throw InputError(fmt::format("--resolution {} is not a positive voxel count", s.resolution));
   if (s.voxel != 0 && !positive_length(s.voxel))
     throw InputError(fmt::format("--voxel {} is not a positive length (mm)", s.voxel));

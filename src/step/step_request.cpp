@@ -2,6 +2,7 @@
 
 #include "emit/file_writer.h"
 #include "surfaces/input_error.h"
+#include "validate/block_checks.h"
 
 #include <fmt/format.h>
 
@@ -26,8 +27,7 @@ void validate_request(const StepRequest& r) {
   if (!(r.tolerance > 0) || !std::isfinite(r.tolerance))
     throw InputError(
         fmt::format("--tolerance {}: give the largest deviation allowed, a positive length in mm", r.tolerance));
-  if (!(r.cell_size > 0) || !std::isfinite(r.cell_size))
-    throw InputError(fmt::format("--cell-size {}: a cell is a positive length in mm", r.cell_size));
+  check_block(r.cells, r.cell_size);
   if (r.output.empty()) throw InputError("no output file: use -o part.step");
   const std::string ext = std::filesystem::path(r.output).extension().string();
   if (ext != ".step" && ext != ".stp" && ext != ".STEP" && ext != ".STP")

@@ -18,9 +18,9 @@ import sys
 # offset/ sits above them; run/ turns generated files into code; numeric/ and wall/ are the evaluation
 # layer below the commands.
 LAYERS = ["support", "surfaces", "body", "field", "lowering", "offset", "density", "emit", "validate",
-          "pipeline", "run", "numeric", "wall", "check", "mesh", "step", "cli", "dev"]
+          "pipeline", "run", "numeric", "wall", "check", "mesh", "step", "slice", "cli", "dev"]
 # Folders side by side: none includes another of its group.
-PEERS = [["check", "mesh", "step"]]
+PEERS = [["check", "mesh", "step", "slice"]]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([A-Za-z_]+)/', re.MULTILINE)
 DOC_BEGIN = "<!-- layers: written by tests/tools/check_layers.py --markdown -->"
 DOC_END = "<!-- end of layers -->"

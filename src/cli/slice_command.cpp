@@ -1,0 +1,69 @@
+#include "cli/slice_command.h"
+
+#include "cli/cells_option.h"
+#include "cli/command_line.h"
+#include "slice/slicer.h"
+#include "support/progress_line.h"
+#include "surfaces/input_error.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace offsetgen {
+
+void add_slice_command(CLI::App& app, SliceOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "slice",
+      "Cut a block of cells of a wall solid into a printer's layers straight from the closed form (no mesh):\n"
+      "contours on the exact wall within --tolerance, as CLI (powder bed), SVG, or a Prusa SL1/SL1S archive\n"
+      "(resin). docs/slice.md");
+  add_wall_options(cmd, o);
+  cmd->add_option("-c,--cells", o.cells, "Cells of the block from the origin: N, NX,NY,NZ or NXxNYxNZ")
+      ->capture_default_str();
+  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
+  cmd->add_option("--layer-height", o.layer_height, "Layer height in millimetres (at most a cell)")
+      ->capture_default_str();
+  cmd->add_option("--first-layer", o.first_layer, "The first layer's height in millimetres (default --layer-height)");
+  cmd->add_option("--tolerance", o.tolerance,
+                  "The largest distance (mm) between a contour's chord and the exact wall in its layer")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", o.output,
+                  "Output: .cli (Common Layer Interface, binary), .svg (a group per layer), .sl1 or .sl1s (Prusa "
+                  "resin archive)");
+  cmd->add_flag("--cli-ascii", o.cli_ascii, "Write ASCII CLI instead of binary");
+  cmd->add_option("--printer", o.printer,
+                  "The resin printer's screen: sl1 (1440 x 2560 at 0.04725 mm) or sl1s "
+                  "(1620 x 2560 at 0.05 mm); default from the extension");
+  cmd->add_option("-j,--threads", o.threads, "Threads (default: one per hardware thread)");
+  cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
+  cmd->footer(
+      "Exit status: 0 success, 2 usage or input error (no file is written then), 3 internal error or out of\n"
+      "memory or disk, 130/143 interrupted by SIGINT/SIGTERM (the unfinished file removed).\n"
+      "Examples: offsetgen slice --surface gyroid --density 0.2 --cells 2 --cell-size 8 --layer-height 0.05 -o g.cli\n"
+      "          offsetgen slice --surface gyroid --density 0.2 --cells 6 --cell-size 8 -o gyroid.sl1");
+}
+
+int run_slice_command(const SliceOptions& o) {
+  slice::SliceRequest r;
+  r.wall = wall_request(o);
+  std::string cells = o.cells;
+  std::replace(cells.begin(), cells.end(), ',', 'x');
+  r.cells = parse_cells(cells);
+  r.cell_size = o.cell_size;
+  r.layer_height = o.layer_height;
+  r.first_layer = o.first_layer;
+  r.tolerance = o.tolerance;
+  r.output = o.output;
+  r.cli_ascii = o.cli_ascii;
+  r.printer = o.printer;
+  r.threads = o.threads;
+  slice::validate(r);  // before anything is generated
+  ProgressLine bar("[offsetgen slice]");
+  const slice::SliceSummary summary =
+      slice::run_slice(r, [&](const std::string& stage, double f) { bar.show(stage, f); });
+  bar.clear();
+  if (!o.quiet) std::fputs(slice::format_summary(summary).c_str(), stdout);
+  return kExitOk;
+}
+
+}  // namespace offsetgen

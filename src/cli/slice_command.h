@@ -1,0 +1,27 @@
+// `offsetgen slice`: its options (CLI11) and the command, run in offsetgen itself (slice/slicer.h).
+#pragma once
+
+#include "cli/wall_options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+namespace offsetgen {
+
+struct SliceOptions : WallOptions {
+  std::string cells = "1", output, printer;
+  double cell_size = 10;
+  double layer_height = 0.05;
+  std::optional<double> first_layer;
+  double tolerance = 0.005;
+  bool cli_ascii = false;
+  int threads = 0;
+  bool quiet = false;
+};
+
+void add_slice_command(CLI::App& app, SliceOptions& options);
+int run_slice_command(const SliceOptions& options);
+
+}  // namespace offsetgen

@@ -1,0 +1,56 @@
+// `offsetgen slice`: a block of cells of a wall solid as a printer's layers, cut straight from the
+// closed form (no mesh): each layer's contours (layer_contours.h) written as CLI (binary or ASCII),
+// SVG, or a Prusa SL1/SL1S archive (layer_writer.h). Layers are cut at mid-height, PrusaSlicer's way:
+// layer 0 at first_layer / 2, layer k >= 1 at first_layer + (k - 1/2) layer_height, every layer whose
+// cut lies inside the block. Layers are worked on a few threads at a time and written in order, so the
+// memory is a few layers' and the bytes do not depend on the threads.
+#pragma once
+
+#include "slice/layer_writer.h"
+#include "wall/wall_field.h"
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace offsetgen::slice {
+
+struct SliceRequest {
+  wall::WallRequest wall;
+  std::array<int, 3> cells{1, 1, 1};  // the block [0, NX] x [0, NY] x [0, NZ] cells from the origin
+  double cell_size = 10;              // mm
+  double layer_height = 0.05;         // mm
+  std::optional<double> first_layer;  // mm; default layer_height
+  double tolerance = 0.005;           // mm: the largest chord deviation from the exact contour
+  std::string output;                 // .cli, .svg, .sl1, .sl1s
+  bool cli_ascii = false;             // ASCII CLI instead of binary
+  std::string printer;                // "sl1" or "sl1s"; default from the extension
+  int threads = 0;                    // 0: one per hardware thread
+  int pixels_per_cell = 0;            // the marching grid; 0: the thinnest wall spans 3 pixels
+};
+
+struct SliceSummary {
+  std::string output, format, surface, wall;
+  std::array<int, 3> cells{};
+  double cell_size = 0, layer_height = 0, first_layer = 0, tolerance = 0;
+  int pixels_per_cell = 0;
+  size_t layers = 0, loops = 0, vertices = 0, tiny_loops = 0, unverified_chords = 0;
+  double tiny_area = 0;      // mm^2
+  double max_deviation = 0;  // mm: the largest chord deviation measured
+  size_t file_bytes = 0;
+  size_t samples = 0, refine_evaluations = 0;
+  double generate_seconds = 0, compile_seconds = 0, slice_seconds = 0;
+  size_t peak_memory_bytes = 0;  // the process's peak resident memory
+};
+
+// Called with a stage and a fraction in [0, 1] (negative: unknown).
+using SliceProgress = std::function<void(const std::string& stage, double fraction)>;
+
+SliceFormat format_for_output(const SliceRequest& request);
+// Throws InputError for bad input before anything is generated or written.
+void validate(const SliceRequest& request);
+SliceSummary run_slice(const SliceRequest& request, const SliceProgress& progress = {});
+std::string format_summary(const SliceSummary& summary);
+
+}  // namespace offsetgen::slice

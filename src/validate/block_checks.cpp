@@ -1,0 +1,20 @@
+#include "validate/block_checks.h"
+
+#include "surfaces/input_error.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace offsetgen {
+
+bool positive_length(double x) { return x > 0 && std::isfinite(x); }
+
+void check_block(const std::array<int, 3>& cells, double cell_size) {
+  for (int n : cells)
+    if (n < 1) throw InputError(fmt::format("--cells: {} is not a positive number of cells", n));
+  if (!positive_length(cell_size))
+    throw InputError(fmt::format("--cell-size {} is not a positive length (mm)", cell_size));
+}
+
+}  // namespace offsetgen
