@@ -112,19 +112,13 @@ bool out_dir_must_be_created(const std::string& given) {
 
 int run_generate(const GenerateOptions& o, const std::vector<std::string>& args) {
   const auto start = std::chrono::steady_clock::now();
-  GenerationRequest request;
-  request.surface = o.surface;
-  request.expression = o.expression;
-  request.name = o.name;
-  request.order = o.order;
-  request.method = o.method;
+  GenerationRequest request = generation_request(o);
   const std::vector<const Backend*> languages = parse_languages(o.lang);
   request.languages.clear();
   for (const Backend* b : languages) request.languages.push_back(b->name());
   if (o.precision == "double") request.precisions = {Precision::Double};
   if (o.precision == "float") request.precisions = {Precision::Float};
   if (o.precision == "both") request.precisions = {Precision::Double, Precision::Float};
-  request.params = parse_params(o.params);
   if (o.thickness_given) request.thickness = o.thickness;
   request.map = o.map;
   if (!o.domain.empty()) request.domain = parse_domain(o.domain);

@@ -1,7 +1,7 @@
 // `offsetgen generate`: options and the run.
 #pragma once
 
-#include "offset/method.h"
+#include "cli/generation_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -10,16 +10,14 @@
 
 namespace offsetgen {
 
-struct GenerateOptions {
-  std::string surface, expression, name, lang = "c" /* a comma list of backend names, or all */, precision = "double",
-                                         output, out_dir;
-  std::vector<std::string> params;
+// The surface, expression, parameters, prefix, method and order are the generation options every command
+// shares (generation_options.h); generate defines them with its own, longer help.
+struct GenerateOptions : GenerationOptions {
+  std::string lang = "c" /* a comma list of backend names, or all */, precision = "double", output, out_dir;
   std::string thickness;
   std::string map, domain;             // --map, --domain (surfaces/lattice_map.h)
   std::string density, density_field;  // --density R, --density-field EXPR (text: parsed in run_generate)
   bool density_functions = false;
-  int order = 4;
-  std::string method = kDefaultMethod;
   bool quiet = false;
   // Whether the option was on the command line at all: an empty value is refused, not ignored.
   bool output_given = false, out_dir_given = false, thickness_given = false;
