@@ -1,5 +1,6 @@
 #include "body/body_files.h"
 
+#include "support/point.h"
 #include "surfaces/input_error.h"
 
 #include <fmt/format.h>
@@ -26,8 +27,6 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
 
 namespace offsetgen::body {
 namespace {
-
-using Point = std::array<double, 3>;
 
 // Triangles are numbered with one bit to spare in body_topology.cpp.
 constexpr size_t kMaxTriangles = (size_t(1) << 31) - 1;

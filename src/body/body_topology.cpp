@@ -1,6 +1,7 @@
 #include "body/body_topology.h"
 
 #include "body/disjoint_sets.h"
+#include "support/point.h"
 
 #include <fmt/format.h>
 
@@ -17,7 +18,6 @@ namespace offsetgen::body {
 namespace {
 
 using Triangle = std::array<uint32_t, 3>;
-using Point = std::array<double, 3>;
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 constexpr size_t kMaxHoleEdges = 1000;

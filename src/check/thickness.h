@@ -10,6 +10,7 @@
 #include "check/convergence.h"
 #include "check/reference.h"
 #include "run/c_library.h"
+#include "support/point.h"
 
 #include <array>
 #include <cmath>
@@ -36,8 +37,6 @@ struct Probe {
   std::function<double(const double*, double)> graded_wall;
 };
 Probe make_probe(const run::LoadedFunctions& functions);
-
-using Point = std::array<double, 3>;
 
 // Algorithm 1: points on g = 0, the first dims-1 coordinates on a grid of `grid` values in [0, 1],
 // the last one every root in [0, 1] (scan of `scan` sub-intervals, Brent in each sign change).

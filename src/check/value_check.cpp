@@ -231,9 +231,9 @@ void compare_lane(const run::Lane& lane, const std::vector<Sample>& samples, int
   const std::string& suffix = lane.suffix;
   const bool has_graded = lane.graded;
   auto inputs = [&](bool with_t) {
-    std::vector<run::Point> in;
+    std::vector<run::Sample> in;
     for (const Sample& s : samples) {
-      run::Point q{};
+      run::Sample q{};
       for (int k = 0; k < dims; ++k)
         q[static_cast<size_t>(k)] = static_cast<double>(static_cast<T>(s.p[static_cast<size_t>(k)]));
       q[static_cast<size_t>(dims)] = static_cast<double>(static_cast<T>(with_t ? s.t : s.h));

@@ -84,13 +84,13 @@ GLuint cached_program(const gl::Functions& gl, gl::Api api, const std::vector<gl
 }
 
 std::vector<float> run_compute_path(const std::string& snippet, const std::string& call_expr,
-                                    const std::vector<Point>& inputs, int components, RunStats& st) {
+                                    const std::vector<Sample>& inputs, int components, RunStats& st) {
   const gl::Functions& gl = gl::make_current(gl::Api::Desktop43);
   const GLuint program = cached_program(
       gl, gl::Api::Desktop43, {{GL_COMPUTE_SHADER, compute_source(snippet, call_expr, components)}}, st.compile_s);
   const auto t0 = Clock::now();
   const auto n = static_cast<GLuint>(inputs.size());
-  const auto bytes = static_cast<GLsizeiptr>(inputs.size() * sizeof(Point));
+  const auto bytes = static_cast<GLsizeiptr>(inputs.size() * sizeof(Sample));
   GLuint buffers[2] = {0, 0};
   gl.GenBuffers(2, buffers);
   gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[0]);
@@ -124,12 +124,12 @@ std::vector<float> run_compute_path(const std::string& snippet, const std::strin
 }
 
 // One draw of up to kTexWidth x kMaxRowsPerDraw points starting at `first`.
-void fragment_chunk(const gl::Functions& gl, GLuint program, const std::vector<Point>& inputs, std::size_t first,
+void fragment_chunk(const gl::Functions& gl, GLuint program, const std::vector<Sample>& inputs, std::size_t first,
                     int components, std::vector<float>& out) {
   const std::size_t count = std::min(inputs.size() - first, static_cast<std::size_t>(kTexWidth) * kMaxRowsPerDraw);
   const auto rows = static_cast<GLsizei>((count + kTexWidth - 1) / kTexWidth);
   const std::size_t texels = static_cast<std::size_t>(kTexWidth) * static_cast<std::size_t>(rows);
-  std::vector<Point> padded(texels, Point{0.0f, 0.0f, 0.0f, 0.0f});
+  std::vector<Sample> padded(texels, Sample{0.0f, 0.0f, 0.0f, 0.0f});
   std::copy_n(inputs.begin() + static_cast<std::ptrdiff_t>(first), count, padded.begin());
 
   GLuint tex = 0, rbo = 0, fbo = 0, vao = 0;
@@ -171,7 +171,7 @@ void fragment_chunk(const gl::Functions& gl, GLuint program, const std::vector<P
 }
 
 std::vector<float> run_fragment_path(const std::string& snippet, const std::string& call_expr,
-                                     const std::vector<Point>& inputs, int components, RunStats& st) {
+                                     const std::vector<Sample>& inputs, int components, RunStats& st) {
   const gl::Functions& gl = gl::make_current(gl::Api::Es30);
   const GLuint program = cached_program(gl, gl::Api::Es30,
                                         {{GL_VERTEX_SHADER, fullscreen_vertex_source()},
@@ -193,7 +193,7 @@ const char* path_name(Path p) { return p == Path::Compute ? "GL 4.3 compute" : "
 std::vector<Path> all_paths() { return {Path::Compute, Path::Fragment}; }
 
 std::vector<float> run(Path path, const std::string& snippet, const std::string& call_expr,
-                       const std::vector<Point>& inputs, int components, RunStats* stats) {
+                       const std::vector<Sample>& inputs, int components, RunStats* stats) {
   swizzle(components);  // validates before any GL work
   RunStats st;
   st.points = inputs.size();

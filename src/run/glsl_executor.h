@@ -16,7 +16,7 @@
 
 namespace offsetgen::glsl {
 
-using Point = std::array<float, 4>;
+using Sample = std::array<float, 4>;
 
 enum class Path { Compute, Fragment };
 const char* path_name(Path p);
@@ -36,6 +36,6 @@ struct RunStats {
 // Throws gl::Unavailable (no EGL/driver; the message names the packages), gl::ShaderError
 // (compile error, annotated with snippet lines) or std::runtime_error.
 std::vector<float> run(Path path, const std::string& snippet, const std::string& call_expr,
-                       const std::vector<Point>& inputs, int components = 1, RunStats* stats = nullptr);
+                       const std::vector<Sample>& inputs, int components = 1, RunStats* stats = nullptr);
 
 }  // namespace offsetgen::glsl

@@ -18,7 +18,7 @@
 namespace offsetgen::run {
 
 // One evaluation point: (x, y, z, h|t) in 3D, (x, y, h|t, 0) in 2D.
-using Point = std::array<double, 4>;
+using Sample = std::array<double, 4>;
 
 // One precision of a prepared file, evaluated over many points at once. `function` is "field",
 // "offset", "shell", "normal" or "graded" (the lane adds its suffix); the result holds
@@ -29,7 +29,7 @@ struct Lane {
   std::string suffix;    // the file's own suffix for this precision: "" or "f"
   bool is_float = true;  // judged against the float32 limits, else the double ones
   bool graded = false;   // the file has _graded
-  std::function<std::vector<double>(const std::string& function, const std::vector<Point>& points, int components)>
+  std::function<std::vector<double>(const std::string& function, const std::vector<Sample>& points, int components)>
       evaluate;
 };
 
@@ -100,7 +100,7 @@ const Runner* find_runner(const std::string& backend_name);
 Outcome compile_outcome(const std::vector<CompileStep>& steps);
 
 // A lane's float inputs, and its float results widened to double (both exact).
-std::vector<std::array<float, 4>> narrowed(const std::vector<Point>& points);
+std::vector<std::array<float, 4>> narrowed(const std::vector<Sample>& points);
 std::vector<double> widened(const std::vector<float>& values);
 
 // "offset" -> "gyroid_o4_offset(p.xyz, p.w)": the call a shader makes for one function, where `point`

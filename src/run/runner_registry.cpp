@@ -40,7 +40,7 @@ Outcome compile_outcome(const std::vector<CompileStep>& steps) {
   return o;
 }
 
-std::vector<std::array<float, 4>> narrowed(const std::vector<Point>& points) {
+std::vector<std::array<float, 4>> narrowed(const std::vector<Sample>& points) {
   std::vector<std::array<float, 4>> out(points.size());
   for (size_t i = 0; i < points.size(); ++i)
     for (size_t k = 0; k < 4; ++k) out[i][k] = static_cast<float>(points[i][k]);

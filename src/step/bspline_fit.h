@@ -5,13 +5,13 @@
 // and two patches that share a boundary get the same curve. No OpenCASCADE here.
 #pragma once
 
+#include "support/point.h"
+
 #include <array>
 #include <cstddef>
 #include <vector>
 
 namespace offsetgen::step {
-
-using Point = std::array<double, 3>;
 
 // Control points per patch side tried in turn, fewest first, up to a request's limit (both routes).
 inline constexpr int kPatchSides[] = {4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 64};

@@ -1,6 +1,7 @@
 // Topology of a body (open, non-manifold and misoriented edges, shells) and its repair.
 #include "body/body_mesh.h"
 #include "body/body_topology.h"
+#include "support/point.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,6 @@
 namespace offsetgen::body {
 namespace {
 
-using Point = std::array<double, 3>;
 using Triangle = std::array<uint32_t, 3>;
 
 // The cube [o, o + s]^3 (point index = x + 2y + 4z, from `base`) as 12 outward triangles.

@@ -31,7 +31,7 @@ namespace offsetgen::glsl_test {
 
 // Double-precision values of one case at the sample points (inputs are float, as the GPU sees them).
 struct DoubleReference {
-  std::vector<glsl::Point> points;                                // x, y, z, h
+  std::vector<glsl::Sample> points;                               // x, y, z, h
   std::vector<double> field, offset, shell, phi_plus, phi_minus;  // shell at t = 2|h|
   std::vector<double> normal;                                     // 3 per point
   std::vector<double> grad_len;                                   // |grad phi_d(p, h)|

@@ -10,10 +10,10 @@
 namespace offsetgen::glsl_test {
 namespace {
 
-Vec3d position(const glsl::Point& p, int dim) { return {p[0], p[1], dim == 3 ? static_cast<double>(p[2]) : 0.0}; }
+Vec3d position(const glsl::Sample& p, int dim) { return {p[0], p[1], dim == 3 ? static_cast<double>(p[2]) : 0.0}; }
 
 // Reference value(s) of `q` at one input: 1 value, or 3 for the normal (empty when skipped).
-std::vector<double> reference_values(const SurfaceReference& ref, Quantity q, const glsl::Point& p,
+std::vector<double> reference_values(const SurfaceReference& ref, Quantity q, const glsl::Sample& p,
                                      double min_gradient) {
   const Vec3d x = position(p, ref.dim);
   const double w = p[3];
@@ -36,11 +36,11 @@ std::vector<double> reference_values(const SurfaceReference& ref, Quantity q, co
 
 }  // namespace
 
-std::vector<glsl::Point> random_points(std::size_t n, int dim, double h_max, std::uint32_t seed) {
+std::vector<glsl::Sample> random_points(std::size_t n, int dim, double h_max, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::uniform_real_distribution<float> offset(static_cast<float>(-h_max), static_cast<float>(h_max));
-  std::vector<glsl::Point> pts(n);
+  std::vector<glsl::Sample> pts(n);
   for (auto& p : pts) {
     p[0] = unit(rng);
     p[1] = unit(rng);
@@ -84,7 +84,7 @@ std::string ErrorReport::describe() const {
   return os.str();
 }
 
-ErrorReport check(const SurfaceReference& ref, Quantity q, glsl::Path path, const std::vector<glsl::Point>& points,
+ErrorReport check(const SurfaceReference& ref, Quantity q, glsl::Path path, const std::vector<glsl::Sample>& points,
                   double min_gradient) {
   if (q == Quantity::Normal && !ref.offset_gradient) {
     throw std::invalid_argument(ref.name + " has no reference gradient");

@@ -27,7 +27,7 @@ struct SurfaceReference {
 };
 
 // Uniform points: x in [0,1]^dim (other coordinates 0), w = h uniform in [-h_max, h_max].
-std::vector<glsl::Point> random_points(std::size_t n, int dim, double h_max, std::uint32_t seed);
+std::vector<glsl::Sample> random_points(std::size_t n, int dim, double h_max, std::uint32_t seed);
 
 // Which snippet function a check exercises.
 enum class Quantity { Field, Offset, Shell, Normal };
@@ -41,7 +41,7 @@ struct ErrorReport {
   std::string what;            // "<surface> <quantity> on <path>"
   double max_abs_error = 0.0;  // max over points (and components) of |glsl - reference|
   std::size_t worst = 0;       // index of the worst point
-  glsl::Point worst_input{};
+  glsl::Sample worst_input{};
   double reference = 0.0;  // at the worst point (worst component)
   double got = 0.0;
   std::size_t compared = 0;  // points compared (the normal skips near-zero gradients)
@@ -53,7 +53,7 @@ struct ErrorReport {
 // Runs `q` of `ref`'s snippet on `path` over `points` and compares it with the reference evaluated
 // in double at the same (float-rounded) inputs. For Normal, points where |grad phi| < min_gradient
 // are skipped: the direction is ill-conditioned there.
-ErrorReport check(const SurfaceReference& ref, Quantity q, glsl::Path path, const std::vector<glsl::Point>& points,
+ErrorReport check(const SurfaceReference& ref, Quantity q, glsl::Path path, const std::vector<glsl::Sample>& points,
                   double min_gradient = 0.5);
 
 }  // namespace offsetgen::glsl_test

@@ -29,8 +29,7 @@ std::vector<Violation> convention_violations(const std::string& snippet, const s
 
 // The lygia-style header comment: description, use: with every function, inputs and outputs,
 // sign convention, accuracy, targets, the generating command and "generated, do not edit".
-std::vector<Violation> header_comment_violations(const std::string& snippet,
-                                                 const std::string& prefix);
+std::vector<Violation> header_comment_violations(const std::string& snippet, const std::string& prefix);
 
 // "rule: message" lines, one per violation, for test failure output.
 std::string describe(const std::vector<Violation>& violations);

@@ -21,7 +21,7 @@ class ExecutorPath : public ::testing::TestWithParam<glsl::Path> {};
 // More points than one draw / texture holds: chunk boundaries must not shift or drop results.
 TEST_P(ExecutorPath, PassesInputsThroughBitExactAcrossChunks) {
   const std::size_t n = GetParam() == glsl::Path::Fragment ? 1024 * 1024 + 77 : 65535 * 64 + 77;
-  std::vector<glsl::Point> in(n);
+  std::vector<glsl::Sample> in(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto f = static_cast<float>(i);
     in[i] = {f, -f, 1.0f / (f + 1.0f), std::sqrt(f)};
@@ -42,7 +42,7 @@ TEST_P(ExecutorPath, BrokenSnippetNamesTheSnippetLine) {
       "highp float good(highp vec3 p) { return p.x; }\n"
       "highp float bad(highp vec3 p) { return p.x + undefined_thing; }\n";
   try {
-    glsl::run(GetParam(), snippet, "bad(p.xyz)", {glsl::Point{}}, 1);
+    glsl::run(GetParam(), snippet, "bad(p.xyz)", {glsl::Sample{}}, 1);
     FAIL() << "expected a ShaderError";
   } catch (const offsetgen::gl::ShaderError& e) {
     const std::string msg = e.what();
@@ -53,7 +53,7 @@ TEST_P(ExecutorPath, BrokenSnippetNamesTheSnippetLine) {
 
 TEST_P(ExecutorPath, WrongResultTypeIsAHostLineError) {
   try {
-    glsl::run(GetParam(), "", "p.xyz", {glsl::Point{}}, 1);
+    glsl::run(GetParam(), "", "p.xyz", {glsl::Sample{}}, 1);
     FAIL() << "expected a ShaderError";
   } catch (const offsetgen::gl::ShaderError& e) {
     EXPECT_NE(std::string(e.what()).find("host line"), std::string::npos) << e.what();

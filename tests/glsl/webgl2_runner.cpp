@@ -131,12 +131,12 @@ std::string shell_quote(const std::string& s) {
 
 std::string chromium_executable() { return OFFSETGEN_CHROMIUM; }
 
-std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs, const std::vector<glsl::Point>& inputs,
+std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs, const std::vector<glsl::Sample>& inputs,
                                            const std::string& work_dir) {
   if (chromium_executable().empty())
     throw std::runtime_error("chromium not found at configure time (Debian: chromium; run tools/install_deps.sh)");
   const int height = static_cast<int>((inputs.size() + kWidth - 1) / kWidth);
-  std::vector<std::uint8_t> bytes(inputs.size() * sizeof(glsl::Point));
+  std::vector<std::uint8_t> bytes(inputs.size() * sizeof(glsl::Sample));
   if (!inputs.empty()) std::memcpy(bytes.data(), inputs.data(), bytes.size());
   nlohmann::json sources = nlohmann::json::array();
   for (const auto& job : jobs) sources.push_back(fragment_source(job));

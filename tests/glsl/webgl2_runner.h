@@ -25,7 +25,7 @@ std::string chromium_executable();
 // One page, one Chromium run (about 15 s, mostly Chromium's start), every job over every point: result[j] has
 // inputs.size() * jobs[j].components floats, point-major. Throws std::runtime_error with the page's message (shader
 // info log, no WebGL2) or Chromium's output when no result comes back. `work_dir` holds the page.
-std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs, const std::vector<glsl::Point>& inputs,
+std::vector<std::vector<float>> run_webgl2(const std::vector<WebGl2Job>& jobs, const std::vector<glsl::Sample>& inputs,
                                            const std::string& work_dir);
 
 }  // namespace offsetgen::glsl_test

@@ -34,15 +34,15 @@ ts::CommandResult run_wgsl(const std::vector<std::string>& args) {
   return ts::run_command(argv);
 }
 
-using Point = std::array<float, 4>;  // x, y, z, h: what the shader reads
+using Sample = std::array<float, 4>;  // x, y, z, h: what the shader reads
 
 // Points near the zero set, as the README measures accuracy: |phi_d(p, h)| / |grad F(p)| <= 0.05
 // cell lengths at points where |grad F| is at least 10% of its sample maximum; p uniform in
 // [0, 1]^3, h uniform in [-0.05, 0.05]. Inputs are float, as the GPU sees them.
-std::vector<Point> points_near_zero_set(const WgslCase& c, std::size_t wanted, std::uint32_t seed) {
+std::vector<Sample> points_near_zero_set(const WgslCase& c, std::size_t wanted, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), offset(-0.05f, 0.05f);
-  const auto grad_len = [&c](const Point& q) {
+  const auto grad_len = [&c](const Sample& q) {
     const double e = 1e-6;
     double sum = 0;
     for (int k = 0; k < 3; ++k) {
@@ -54,7 +54,7 @@ std::vector<Point> points_near_zero_set(const WgslCase& c, std::size_t wanted, s
     }
     return std::sqrt(sum);
   };
-  std::vector<Point> candidates(20000);
+  std::vector<Sample> candidates(20000);
   std::vector<double> grads(candidates.size());
   double max_grad = 0;
   for (size_t i = 0; i < candidates.size(); ++i) {
@@ -62,18 +62,18 @@ std::vector<Point> points_near_zero_set(const WgslCase& c, std::size_t wanted, s
     grads[i] = grad_len(candidates[i]);
     max_grad = std::max(max_grad, grads[i]);
   }
-  std::vector<Point> near;
+  std::vector<Sample> near;
   for (size_t i = 0; i < candidates.size() && near.size() < wanted; ++i) {
-    const Point& q = candidates[i];
+    const Sample& q = candidates[i];
     if (grads[i] < 0.1 * max_grad) continue;
     if (std::abs(c.offset(q[0], q[1], q[2], q[3])) / grads[i] <= 0.05) near.push_back(q);
   }
   return near;
 }
 
-void write_points(const std::string& path, const std::vector<Point>& points) {
+void write_points(const std::string& path, const std::vector<Sample>& points) {
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(points.data()), static_cast<std::streamsize>(points.size() * sizeof(Point)));
+  out.write(reinterpret_cast<const char*>(points.data()), static_cast<std::streamsize>(points.size() * sizeof(Sample)));
 }
 
 std::vector<float> read_floats(const std::string& path) {
@@ -88,7 +88,7 @@ class WgslOnDawn : public ::testing::TestWithParam<WgslCase> {};
 
 TEST_P(WgslOnDawn, StaysWithinTwoE5OfTheDoubleHeaderNearTheZeroSet) {
   const WgslCase& c = GetParam();
-  const std::vector<Point> points = points_near_zero_set(c, 400, 14u);
+  const std::vector<Sample> points = points_near_zero_set(c, 400, 14u);
   ASSERT_GE(points.size(), 200u) << c.prefix << ": too few sample points near the zero set";
   const std::string dir = ts::scratch_dir(std::string("wgsl-") + c.prefix);
   write_points(dir + "/points.f32", points);
@@ -100,7 +100,7 @@ TEST_P(WgslOnDawn, StaysWithinTwoE5OfTheDoubleHeaderNearTheZeroSet) {
   double field = 0, offset = 0, shell = 0, normal = 0;
   size_t worst = 0;
   for (size_t i = 0; i < points.size(); ++i) {
-    const Point& q = points[i];
+    const Sample& q = points[i];
     const float* g = &got[8 * i];
     field = std::max(field, std::abs(g[0] - c.field(q[0], q[1], q[2])));
     const double e = std::abs(g[1] - c.offset(q[0], q[1], q[2], q[3]));
@@ -116,7 +116,7 @@ TEST_P(WgslOnDawn, StaysWithinTwoE5OfTheDoubleHeaderNearTheZeroSet) {
   std::cout << "[wgsl accuracy] " << c.prefix << ": offset " << offset << " (units of F, " << points.size()
             << " points near the zero set), field " << field << ", shell " << shell << ", normal " << normal << "\n";
   RecordProperty("offset_max_error", std::to_string(offset));
-  const Point& w = points[worst];
+  const Sample& w = points[worst];
   EXPECT_LT(offset, kLimit) << c.prefix << ": worst at (" << w[0] << ", " << w[1] << ", " << w[2] << "), h = " << w[3]
                             << "\n"
                             << r.output;

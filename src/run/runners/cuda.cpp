@@ -15,11 +15,11 @@ namespace {
 // Both precisions of the host program: the float functions get exact float inputs.
 std::vector<Lane> host_lanes(const std::shared_ptr<cuda::HostProgram>& program, const FileMetadata& meta) {
   Lane double_lane{"cuda", "", false, meta.has_graded(), nullptr};
-  double_lane.evaluate = [program](const std::string& function, const std::vector<Point>& points, int components) {
+  double_lane.evaluate = [program](const std::string& function, const std::vector<Sample>& points, int components) {
     return program->run(function, points, components);
   };
   Lane float_lane{"cuda", "f", true, meta.has_graded(), nullptr};
-  float_lane.evaluate = [program](const std::string& function, const std::vector<Point>& points, int components) {
+  float_lane.evaluate = [program](const std::string& function, const std::vector<Sample>& points, int components) {
     return program->run(function + "f", points, components);
   };
   return {double_lane, float_lane};

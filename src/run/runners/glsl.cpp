@@ -31,7 +31,7 @@ Lane llvmpipe_lane(const std::string& snippet, const FileMetadata& meta) {
   Lane lane;
   lane.label = "glsl";
   lane.graded = meta.thickness.has_value();
-  lane.evaluate = [snippet, meta](const std::string& function, const std::vector<Point>& points, int components) {
+  lane.evaluate = [snippet, meta](const std::string& function, const std::vector<Sample>& points, int components) {
     const std::string call = shader_call(meta, function, "p.xyz", "p.w", "p.xy", "p.z");
     return widened(glsl::run(glsl::Path::Compute, snippet, call, narrowed(points), components));
   };

@@ -62,7 +62,7 @@ Lane lavapipe_lane(std::shared_ptr<Modules> modules, const FileMetadata& meta) {
   Lane lane;
   lane.label = "hlsl";
   lane.graded = meta.thickness.has_value();
-  lane.evaluate = [modules](const std::string& function, const std::vector<Point>& points, int components) {
+  lane.evaluate = [modules](const std::string& function, const std::vector<Sample>& points, int components) {
     const std::vector<std::array<float, 4>> inputs = narrowed(points);
     const vulkan::ComputeRun run =
         vulkan::run_on_lavapipe(vulkan::read_spirv(modules->spirv.at(function).string()), inputs, 1);

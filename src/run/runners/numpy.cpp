@@ -16,7 +16,7 @@ Lane python_lane(const std::string& python, const std::string& path, const FileM
   lane.label = "numpy";
   lane.is_float = false;
   lane.graded = meta.thickness.has_value();
-  lane.evaluate = [python, path, meta](const std::string& function, const std::vector<Point>& points, int components) {
+  lane.evaluate = [python, path, meta](const std::string& function, const std::vector<Sample>& points, int components) {
     const bool with_distance = function == "offset" || function == "shell" || function == "normal";
     std::vector<std::vector<double>> columns(static_cast<size_t>(meta.dims + (with_distance ? 1 : 0)),
                                              std::vector<double>(points.size()));

@@ -47,13 +47,13 @@ std::vector<Lane> device_lanes(const std::shared_ptr<opencl::HostProgram>& progr
   std::vector<Lane> lanes;
   if (fp64) {
     Lane double_lane{"opencl", "", false, meta.has_graded(), nullptr};
-    double_lane.evaluate = [program](const std::string& function, const std::vector<Point>& points, int components) {
+    double_lane.evaluate = [program](const std::string& function, const std::vector<Sample>& points, int components) {
       return program->run(function, 8, points, components);
     };
     lanes.push_back(double_lane);
   }
   Lane float_lane{"opencl", "f", true, meta.has_graded(), nullptr};
-  float_lane.evaluate = [program](const std::string& function, const std::vector<Point>& points, int components) {
+  float_lane.evaluate = [program](const std::string& function, const std::vector<Sample>& points, int components) {
     return program->run(function + "f", 4, points, components);
   };
   lanes.push_back(float_lane);

@@ -140,7 +140,7 @@ std::string compute_shader(const std::string& snippet, const FileMetadata& meta,
 // The function's shader over the points, through float32 files.
 std::vector<double> run_function(const std::string& node, const std::string& webgpu, const std::string& snippet,
                                  const FileMetadata& meta, const std::string& function,
-                                 const std::vector<Point>& points, int components) {
+                                 const std::vector<Sample>& points, int components) {
   ScratchDir dir("offsetgen-wgsl");
   const fs::path shader = dir.path() / "shader.wgsl", in = dir.path() / "in.f32", out = dir.path() / "out.f32";
   std::ofstream(shader) << compute_shader(snippet, meta, function);
@@ -199,7 +199,7 @@ class WgslRunner final : public Runner {
     Lane lane;
     lane.label = "wgsl";
     lane.graded = meta.thickness.has_value();
-    lane.evaluate = [node, webgpu, text, meta](const std::string& function, const std::vector<Point>& points,
+    lane.evaluate = [node, webgpu, text, meta](const std::string& function, const std::vector<Sample>& points,
                                                int components) {
       return run_function(node, webgpu, text, meta, function, points, components);
     };
