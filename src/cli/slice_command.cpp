@@ -34,6 +34,12 @@ void add_slice_command(CLI::App& app, SliceOptions& o) {
   cmd->add_option("--printer", o.printer,
                   "The resin printer's screen: sl1 (1440 x 2560 at 0.04725 mm) or sl1s "
                   "(1620 x 2560 at 0.05 mm); default from the extension");
+  cmd->add_option("--layer-range", o.layer_range,
+                  "Slice share I of N (counted from 0) of the layers into a part file -o NAME.EXT.part, for "
+                  "--merge (docs/slice.md, a tall part over a Slurm array)");
+  cmd->add_option("--merge", o.merge,
+                  "Join the --layer-range parts, shares 0 to N-1 in order, into -o (the single run's bytes)")
+      ->expected(1, -1);
   cmd->add_option("-j,--threads", o.threads, "Threads (default: one per hardware thread)");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
   cmd->footer(
@@ -43,7 +49,22 @@ void add_slice_command(CLI::App& app, SliceOptions& o) {
       "          offsetgen slice --surface gyroid --density 0.2 --cells 6 --cell-size 8 -o gyroid.sl1");
 }
 
+namespace {
+
+int run_merge(const SliceOptions& o) {
+  if (!o.surface.empty() || !o.expression.empty() || !o.layer_range.empty())
+    throw InputError("--merge joins the parts of a run: give only the parts and -o");
+  const slice::LayerMergeReport r = slice::merge_layer_parts(o.merge, o.output);
+  if (!o.quiet)
+    std::printf("offsetgen slice: %s written (%s, %.1f MB): %zu layers from %zu parts\n", o.output.c_str(),
+                r.format.c_str(), double(r.bytes) / 1e6, r.layers, o.merge.size());
+  return kExitOk;
+}
+
+}  // namespace
+
 int run_slice_command(const SliceOptions& o) {
+  if (!o.merge.empty()) return run_merge(o);
   slice::SliceRequest r;
   r.wall = wall_request(o);
   std::string cells = o.cells;
@@ -57,6 +78,7 @@ int run_slice_command(const SliceOptions& o) {
   r.cli_ascii = o.cli_ascii;
   r.printer = o.printer;
   r.threads = o.threads;
+  r.layer_range = o.layer_range;
   slice::validate(r);  // before anything is generated
   ProgressLine bar("[offsetgen slice]");
   const slice::SliceSummary summary =

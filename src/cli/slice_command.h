@@ -7,11 +7,13 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace offsetgen {
 
 struct SliceOptions : WallOptions {
-  std::string cells = "1", output, printer;
+  std::string cells = "1", output, printer, layer_range;
+  std::vector<std::string> merge;
   double cell_size = 10;
   double layer_height = 0.05;
   std::optional<double> first_layer;

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <optional>
 
 namespace offsetgen::slice {
 namespace {
@@ -31,7 +32,9 @@ void put_f32(std::string& out, double v) {
 
 class CliWriter : public LayerWriter {
  public:
-  CliWriter(const std::string& path, const PartLayout& part, bool ascii) : file_(path), ascii_(ascii) {
+  CliWriter(const std::string& path, const PartLayout& part, bool ascii) : ascii_(ascii) {
+    if (path.empty()) return;
+    file_.emplace(path);
     std::string header = "$$HEADERSTART\n";
     header += ascii ? "$$ASCII\n" : "$$BINARY\n";
     header += "$$UNITS/00000001.000000\n$$VERSION/200\n";
@@ -40,7 +43,7 @@ class CliWriter : public LayerWriter {
                           part.size[1], part.size[2]);
     header += fmt::format("$$LAYERS/{}\n", part.layers);
     header += ascii ? "$$HEADEREND\n$$GEOMETRYSTART\n" : "$$HEADEREND";
-    file_.append(header);
+    file_->append(header);
   }
 
   std::string encode_layer(const LayerData& layer) const override {
@@ -73,15 +76,15 @@ class CliWriter : public LayerWriter {
     }
     return out;
   }
-  void append_layer(const LayerData&, const std::string& encoded) override { file_.append(encoded); }
+  void append_layer(const LayerData&, const std::string& encoded) override { file_->append(encoded); }
   void finish() override {
-    if (ascii_) file_.append("$$GEOMETRYEND\n");
-    file_.commit();
+    if (ascii_) file_->append("$$GEOMETRYEND\n");
+    file_->commit();
   }
-  size_t bytes() const override { return file_.size(); }
+  size_t bytes() const override { return file_ ? file_->size() : 0; }
 
  private:
-  StreamedFile file_;
+  std::optional<StreamedFile> file_;
   bool ascii_;
 };
 

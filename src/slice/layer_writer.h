@@ -44,6 +44,7 @@ struct LayerData {
   double top = 0;    // mm: the layer's top
   double slice = 0;  // mm: where it was cut
   const std::vector<Loop>* loops = nullptr;
+  double area = 0;  // mm^2: the loops' signed areas summed in order
 };
 
 class LayerWriter {
@@ -55,6 +56,8 @@ class LayerWriter {
   virtual size_t bytes() const = 0;  // written so far
 };
 
+// An empty path makes an encoder only: encode_layer works, nothing is written (a --layer-range share
+// stores the encoded layers in its part file, slicer.h).
 std::unique_ptr<LayerWriter> make_cli_writer(const std::string& path, const PartLayout& part, bool ascii);
 std::unique_ptr<LayerWriter> make_svg_writer(const std::string& path, const PartLayout& part);
 std::unique_ptr<LayerWriter> make_sl1_writer(const std::string& path, const PartLayout& part, const Screen& screen);

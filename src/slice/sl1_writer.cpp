@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace offsetgen::slice {
 namespace {
@@ -118,8 +119,7 @@ std::string prusaslicer_ini(const Screen& s, const PartLayout& part) {
 
 class Sl1Writer : public LayerWriter {
  public:
-  Sl1Writer(const std::string& path, const PartLayout& part, const Screen& screen)
-      : zip_(path), part_(part), screen_(screen) {
+  Sl1Writer(const std::string& path, const PartLayout& part, const Screen& screen) : part_(part), screen_(screen) {
     p_x_ = screen.width / screen.pixels_x;
     p_y_ = screen.height / screen.pixels_y;
     if (part.size[0] > screen.width || part.size[1] > screen.height)
@@ -137,8 +137,10 @@ class Sl1Writer : public LayerWriter {
     col_hi_ = std::min(screen.pixels_y, static_cast<int>(std::ceil((shift_[1] + part.size[1]) / p_y_)) + 1);
     row_lo_ = std::max(0, static_cast<int>(std::floor(screen.pixels_x - (shift_[0] + part.size[0]) / p_x_)) - 1);
     row_hi_ = std::min(screen.pixels_x, static_cast<int>(std::ceil(screen.pixels_x - shift_[0] / p_x_)) + 1);
-    config_ = zip_.add("config.ini", config_ini(0, 0));
-    zip_.add("prusaslicer.ini", prusaslicer_ini(screen, part));
+    if (path.empty()) return;
+    zip_.emplace(path);
+    config_ = zip_->add("config.ini", config_ini(0, 0));
+    zip_->add("prusaslicer.ini", prusaslicer_ini(screen, part));
   }
 
   std::string encode_layer(const LayerData& layer) const override {
@@ -157,17 +159,15 @@ class Sl1Writer : public LayerWriter {
   }
 
   void append_layer(const LayerData& layer, const std::string& encoded) override {
-    double area = 0;
-    for (const Loop& loop : *layer.loops) area += loop.area;
-    used_ml_ += area * (layer.index == 0 ? part_.first_layer : part_.layer_height) / 1000;
-    zip_.add(fmt::format("{}{:05d}.png", part_.job, layer.index), encoded);
+    used_ml_ += layer.area * (layer.index == 0 ? part_.first_layer : part_.layer_height) / 1000;
+    zip_->add(fmt::format("{}{:05d}.png", part_.job, layer.index), encoded);
   }
 
   void finish() override {
-    zip_.replace(config_, config_ini(used_ml_, print_seconds()));
-    zip_.finish();
+    zip_->replace(config_, config_ini(used_ml_, print_seconds()));
+    zip_->finish();
   }
-  size_t bytes() const override { return zip_.bytes(); }
+  size_t bytes() const override { return zip_ ? zip_->bytes() : 0; }
 
  private:
   // Image coordinates (column, row) of a point of the part, mm, in the raster of the part's box.
@@ -207,7 +207,7 @@ class Sl1Writer : public LayerWriter {
     return s;
   }
 
-  ZipStream zip_;
+  std::optional<ZipStream> zip_;
   PartLayout part_;
   Screen screen_;
   double p_x_ = 0, p_y_ = 0;

@@ -13,6 +13,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace offsetgen::slice {
 
@@ -28,6 +30,9 @@ struct SliceRequest {
   std::string printer;                // "sl1" or "sl1s"; default from the extension
   int threads = 0;                    // 0: one per hardware thread
   int pixels_per_cell = 0;            // the marching grid; 0: the thinnest wall spans 3 pixels
+  // --layer-range I/N: share I (from 0) of N near-equal contiguous runs of the layers, written to a
+  // part file (output NAME.EXT.part, EXT the format) that merge_layer_parts joins; empty: all layers.
+  std::string layer_range;
 };
 
 struct SliceSummary {
@@ -35,6 +40,7 @@ struct SliceSummary {
   std::array<int, 3> cells{};
   double cell_size = 0, layer_height = 0, first_layer = 0, tolerance = 0;
   int pixels_per_cell = 0;
+  std::string share;  // "I/N: layers A to B of T" for a --layer-range share, else empty
   size_t layers = 0, loops = 0, vertices = 0, tiny_loops = 0, unverified_chords = 0;
   double tiny_area = 0;      // mm^2
   double max_deviation = 0;  // mm: the largest chord deviation measured
@@ -52,5 +58,19 @@ SliceFormat format_for_output(const SliceRequest& request);
 void validate(const SliceRequest& request);
 SliceSummary run_slice(const SliceRequest& request, const SliceProgress& progress = {});
 std::string format_summary(const SliceSummary& summary);
+
+// "I/N" -> {I, N} with 0 <= I < N (as mesh's --tile-range); throws InputError otherwise.
+std::pair<int, int> parse_layer_range(const std::string& text);
+// Layers [first, end) of share `index` of `count` of `layers` layers.
+std::pair<size_t, size_t> layer_share(size_t layers, int index, int count);
+
+struct LayerMergeReport {
+  std::string format;
+  size_t layers = 0, bytes = 0;
+};
+// Joins the part files of shares 0 .. N-1 of one request, given in order, into `output` (its extension
+// the parts' format): the bytes the run without --layer-range writes. Throws InputError, writing
+// nothing, for parts of different requests, a share missing, doubled or out of order, or a damaged part.
+LayerMergeReport merge_layer_parts(const std::vector<std::string>& parts, const std::string& output);
 
 }  // namespace offsetgen::slice

@@ -5,13 +5,17 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+
 namespace offsetgen::slice {
 namespace {
 
 class SvgWriter : public LayerWriter {
  public:
-  SvgWriter(const std::string& path, const PartLayout& part) : file_(path) {
-    file_.append(
+  SvgWriter(const std::string& path, const PartLayout& part) {
+    if (path.empty()) return;
+    file_.emplace(path);
+    file_->append(
         fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                     "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:.6f}mm\" height=\"{1:.6f}mm\" "
                     "viewBox=\"0 {2:.6f} {0:.6f} {1:.6f}\">\n"
@@ -31,15 +35,15 @@ class SvgWriter : public LayerWriter {
     out += "\"/>\n</g>\n";
     return out;
   }
-  void append_layer(const LayerData&, const std::string& encoded) override { file_.append(encoded); }
+  void append_layer(const LayerData&, const std::string& encoded) override { file_->append(encoded); }
   void finish() override {
-    file_.append("</svg>\n");
-    file_.commit();
+    file_->append("</svg>\n");
+    file_->commit();
   }
-  size_t bytes() const override { return file_.size(); }
+  size_t bytes() const override { return file_ ? file_->size() : 0; }
 
  private:
-  StreamedFile file_;
+  std::optional<StreamedFile> file_;
 };
 
 }  // namespace
