@@ -1,6 +1,7 @@
 #include "mesh/tiles.h"
 
 #include "surfaces/input_error.h"
+#include "validate/share_range.h"
 
 #include <fmt/format.h>
 
@@ -47,32 +48,8 @@ std::array<std::array<long, 2>, 3> tile_neighbours(const std::vector<Tile>& tile
   return across;
 }
 
-std::pair<int, int> parse_tile_range(const std::string& text) {
-  const auto bad = [&] {
-    return InputError(
-        fmt::format("--tile-range '{}': expected I/N with 0 <= I < N (share I of N, counted from 0)", text));
-  };
-  const size_t slash = text.find('/');
-  if (slash == std::string::npos) throw bad();
-  auto number = [&](const std::string& part) {
-    size_t used = 0;
-    int value = -1;
-    try {
-      value = std::stoi(part, &used);
-    } catch (const std::exception&) {
-      throw bad();
-    }
-    if (part.empty() || used != part.size() || !std::isdigit(static_cast<unsigned char>(part[0]))) throw bad();
-    return value;
-  };
-  const int index = number(text.substr(0, slash)), count = number(text.substr(slash + 1));
-  if (count < 1 || index >= count) throw bad();
-  return {index, count};
-}
+std::pair<int, int> parse_tile_range(const std::string& text) { return parse_share(text, "--tile-range"); }
 
-std::pair<size_t, size_t> tile_share(size_t tiles, int index, int count) {
-  const auto share = [&](int i) { return tiles * static_cast<size_t>(i) / static_cast<size_t>(count); };
-  return {share(index), share(index + 1)};
-}
+std::pair<size_t, size_t> tile_share(size_t tiles, int index, int count) { return share_of(tiles, index, count); }
 
 }  // namespace offsetgen::mesh
