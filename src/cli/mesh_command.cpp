@@ -20,27 +20,6 @@
 #include <sstream>
 
 namespace offsetgen {
-std::array<double, 3> parse_point(const std::string& text, const std::string& option) {
-  std::vector<double> v;
-  std::stringstream in(text);
-  std::string part;
-  while (std::getline(in, part, ',')) {
-    size_t used = 0;
-    double value = 0;
-    try {
-      value = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (part.empty() || used != part.size() || !std::isfinite(value))
-      throw InputError(fmt::format("{} '{}': expected X,Y,Z (three numbers, mm)", option, text));
-    v.push_back(value);
-  }
-  if (v.size() != 3 || text.back() == ',')
-    throw InputError(fmt::format("{} '{}': expected X,Y,Z (three numbers, mm)", option, text));
-  return {v[0], v[1], v[2]};
-}
-
 namespace {
 
 int run_merge(const MeshOptions& o) {
@@ -91,16 +70,7 @@ int run_mesh_command(const MeshOptions& o) {
   mesh::MeshRequest s;
   s.wall = wall_request(o);
   s.cells = parse_cells(o.cells);
-  if (!o.body.empty()) {
-    mesh::BodyRequest b;
-    b.path = o.body;
-    b.skin = o.skin;
-    b.fillet = o.fillet;
-    b.scale = o.scale;
-    b.repair = o.repair;
-    if (!o.origin.empty()) b.origin = parse_point(o.origin, "--origin");
-    s.body = b;
-  }
+  s.body = body_request(o);
   s.cell_size = o.cell_size;
   if (!o.map.empty())
     apply_map_options(o, s);

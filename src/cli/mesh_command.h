@@ -11,7 +11,4 @@ namespace offsetgen {
 
 int run_mesh_command(const MeshOptions& options);
 
-// "1,2.5,-3" -> {1, 2.5, -3} (--origin). Throws InputError naming `option`.
-std::array<double, 3> parse_point(const std::string& text, const std::string& option);
-
 }  // namespace offsetgen

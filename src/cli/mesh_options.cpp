@@ -23,28 +23,7 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
                       ". Walls are --thickness mm thick along the physical normal; fill a --body, or a --domain box "
                       "(docs/maps.md)");
   cmd->add_option("--domain", o.domain, "With --map and no --body: the box X0,Y0,Z0:X1,Y1,Z1 (mm) to fill");
-  auto* body = cmd->add_option("-b,--body", o.body,
-                               "Fill this part instead of a block: a closed surface as STL (binary or ASCII), PLY, "
-                               "OBJ or 3MF, in millimetres");
-  body->excludes(cells);
-  cmd->add_option("--skin", o.skin,
-                  "With --body: a solid skin this thick (mm) inward from the body's surface; the lattice fills the "
-                  "core inside it and joins it (0: the lattice cut flush by the body)")
-      ->capture_default_str()
-      ->needs(body);
-  cmd->add_option("--fillet", o.fillet, "With --skin: blend the walls into the skin with this radius (mm)")
-      ->needs(body);
-  cmd->add_option("--origin", o.origin,
-                  "With --body: X,Y,Z (mm) where a lattice cell's corner sits (default the body's bounding-box "
-                  "minimum); x, y, z of --thickness and --density-field count cells from it")
-      ->needs(body);
-  cmd->add_option("--scale", o.scale, "With --body: multiply its coordinates (25.4 for inches, 1000 for metres)")
-      ->capture_default_str()
-      ->needs(body);
-  cmd->add_flag("--repair", o.repair,
-                "With --body: weld, drop degenerate and duplicate facets, orient them consistently and fill simple "
-                "holes instead of refusing an open body (the summary says what was repaired)")
-      ->needs(body);
+  add_body_options(cmd, o)->excludes(cells);
   cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")
       ->capture_default_str()
       ->each([&o](const std::string&) { o.cell_size_given = true; });
@@ -84,8 +63,8 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
       "          offsetgen mesh --surface diamond --network --density 0.3 --cells 3 --cell-size 8 -o struts.stl\n"
       "          offsetgen mesh ... --tile-range 0/4 -o part0.stl   (... 3/4 -o part3.stl, on four machines)\n"
       "          offsetgen mesh --merge part0.stl part1.stl part2.stl part3.stl -o part.stl\n"
-      "With --body, insideness comes from OpenVDB's mesh-to-level-set sign flood fill (facet orientation and\n"
-      "self-intersections do not change it); the body must be closed (see --repair). docs/parts.md explains.");
+      "With --body, inside is where the body's facets wind around a point (their orientation does not change\n"
+      "it); the body must be closed (see --repair). docs/parts.md explains.");
 }
 
 }  // namespace offsetgen

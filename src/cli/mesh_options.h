@@ -2,6 +2,7 @@
 // passes the command line on: cli/siblings.h).
 #pragma once
 
+#include "cli/body_options.h"
 #include "cli/wall_options.h"
 
 #include <CLI/CLI.hpp>
@@ -12,11 +13,8 @@
 
 namespace offsetgen {
 
-struct MeshOptions : WallOptions {
+struct MeshOptions : WallOptions, BodyOptions {
   std::string cells = "1", output;
-  std::string body, origin;  // --body FILE, --origin X,Y,Z
-  double skin = 0, fillet = 0, scale = 1;
-  bool repair = false;
   double cell_size = 10;
   bool cell_size_given = false, cells_given = false;
   std::string map, domain;  // --map, --domain: a conforming lattice (surfaces/lattice_map.h)

@@ -14,12 +14,14 @@ namespace offsetgen {
 void add_slice_command(CLI::App& app, SliceOptions& o) {
   auto* cmd = app.add_subcommand(
       "slice",
-      "Cut a block of cells of a wall solid into a printer's layers straight from the closed form (no mesh):\n"
+      "Cut a block of cells of a wall solid, or a part filled with it (--body) inside a skin, into a printer's\n"
+      "layers straight from the closed form (no mesh):\n"
       "contours on the exact wall within --tolerance, as CLI (powder bed), SVG, or a Prusa SL1/SL1S archive\n"
       "(resin). docs/slice.md");
   add_wall_options(cmd, o);
-  cmd->add_option("-c,--cells", o.cells, "Cells of the block from the origin: N, NX,NY,NZ or NXxNYxNZ")
-      ->capture_default_str();
+  auto* cells = cmd->add_option("-c,--cells", o.cells, "Cells of the block from the origin: N, NX,NY,NZ or NXxNYxNZ")
+                    ->capture_default_str();
+  add_body_options(cmd, o)->excludes(cells);
   cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
   cmd->add_option("--layer-height", o.layer_height, "Layer height in millimetres (at most a cell)")
       ->capture_default_str();
@@ -46,7 +48,8 @@ void add_slice_command(CLI::App& app, SliceOptions& o) {
       "Exit status: 0 success, 2 usage or input error (no file is written then), 3 internal error or out of\n"
       "memory or disk, 130/143 interrupted by SIGINT/SIGTERM (the unfinished file removed).\n"
       "Examples: offsetgen slice --surface gyroid --density 0.2 --cells 2 --cell-size 8 --layer-height 0.05 -o g.cli\n"
-      "          offsetgen slice --surface gyroid --density 0.2 --cells 6 --cell-size 8 -o gyroid.sl1");
+      "          offsetgen slice --surface gyroid --density 0.2 --cells 6 --cell-size 8 -o gyroid.sl1\n"
+      "          offsetgen slice --surface gyroid --density 0.25 --body part.stl --skin 1.5 --cell-size 6 -o part.sl1");
 }
 
 namespace {
@@ -70,6 +73,7 @@ int run_slice_command(const SliceOptions& o) {
   std::string cells = o.cells;
   std::replace(cells.begin(), cells.end(), ',', 'x');
   r.cells = parse_cells(cells);
+  r.body = body_request(o);
   r.cell_size = o.cell_size;
   r.layer_height = o.layer_height;
   r.first_layer = o.first_layer;
@@ -81,8 +85,12 @@ int run_slice_command(const SliceOptions& o) {
   r.layer_range = o.layer_range;
   slice::validate(r);  // before anything is generated
   ProgressLine bar("[offsetgen slice]");
-  const slice::SliceSummary summary =
-      slice::run_slice(r, [&](const std::string& stage, double f) { bar.show(stage, f); });
+  const slice::SliceSummary summary = slice::run_slice(
+      r, [&](const std::string& stage, double f) { bar.show(stage, f); },
+      [&](const std::string& warning) {
+        bar.clear();
+        std::fprintf(stderr, "offsetgen slice: warning: %s\n", warning.c_str());
+      });
   bar.clear();
   if (!o.quiet) std::fputs(slice::format_summary(summary).c_str(), stdout);
   return kExitOk;

@@ -1,6 +1,7 @@
 // `offsetgen slice`: its options (CLI11) and the command, run in offsetgen itself (slice/slicer.h).
 #pragma once
 
+#include "cli/body_options.h"
 #include "cli/wall_options.h"
 
 #include <CLI/CLI.hpp>
@@ -11,7 +12,7 @@
 
 namespace offsetgen {
 
-struct SliceOptions : WallOptions {
+struct SliceOptions : WallOptions, BodyOptions {
   std::string cells = "1", output, printer, layer_range;
   std::vector<std::string> merge;
   double cell_size = 10;

@@ -9,6 +9,8 @@
 namespace offsetgen::mesh {
 namespace {
 
+static_assert(kBlock == body::kDistanceBlock, "the body's distance blocks are the sampler's");
+
 constexpr double kOutsideWidth = 3.0;  // voxels of band outside the body (>= the sampler's margin of 2)
 
 int align_down(int i) { return i >= 0 ? (i / kBlock) * kBlock : -((-i + kBlock - 1) / kBlock) * kBlock; }

@@ -4,8 +4,8 @@
 // is held, so a body of any size is meshed in the memory of its facets and one tile.
 #pragma once
 
+#include "body/body_distance.h"
 #include "body/body_mesh.h"
-#include "mesh/body_distance.h"
 #include "mesh/domain.h"
 
 #include <array>
@@ -13,6 +13,9 @@
 #include <vector>
 
 namespace offsetgen::mesh {
+
+using body::BodyDistance;
+using body::Vec3;
 
 // Voxel i of an axis is centred at origin + (i + 0.5) * voxel, in millimetres.
 struct VoxelFrame {

@@ -1,10 +1,9 @@
 // What bounds the lattice: a block of cells (box_domain.h) or a body with a skin (body_domain.h). The
 // sampler reads, block by block, the domain's signed distance d (voxels, negative inside) and builds
-// the part from it and the lattice wall w (docs/parts.md):
-//   no skin:  part = max(w, d)                          (the lattice cut by the domain)
-//   skin s:   core c = d + s,  skin k = max(d, -c),  part = smin(k, max(w, c), r)
-// where smin is the quadratic smooth minimum of radius r (the fillet; r = 0 gives min).
+// the part from it and the lattice wall w (wall/part_value.h).
 #pragma once
+
+#include "wall/part_value.h"
 
 #include <array>
 #include <memory>
@@ -40,12 +39,8 @@ class Domain {
   double fillet = 0;  // voxels
 };
 
-// The part's value at one voxel from d and the wall w (see above), in voxels.
-double part_value(double d, double w, double skin, double fillet);
-// The same where w is known to exceed every value that matters (far from the walls, or not needed):
-// the skin's value where it is below `band`, else `background`.
-double part_value_without_wall(double d, double skin, double band, double background);
-// True when part_value at d depends on w within `band` voxels of the surface.
-bool wall_matters(double d, double skin, double fillet, double margin);
+using wall::part_value;
+using wall::part_value_without_wall;
+using wall::wall_matters;
 
 }  // namespace offsetgen::mesh

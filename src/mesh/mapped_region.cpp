@@ -11,15 +11,6 @@
 
 namespace offsetgen::mesh {
 
-body::BodyMesh box_body(const std::array<std::array<double, 3>, 2>& box) {
-  body::BodyMesh mesh;
-  for (int i = 0; i < 8; ++i) mesh.points.push_back({box[i & 1][0], box[(i >> 1) & 1][1], box[(i >> 2) & 1][2]});
-  // Two triangles per face, counter-clockwise seen from outside (corner index = x + 2y + 4z).
-  mesh.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                    {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  return mesh;
-}
-
 std::string bound_map_to_body(GenerationRequest& request, const body::BodyMesh& body, double margin) {
   const auto box = body::bounding_box(body);
   Surface::Box domain;

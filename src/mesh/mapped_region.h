@@ -13,9 +13,6 @@
 
 namespace offsetgen::mesh {
 
-// The 12 outward triangles of an axis-aligned box (the --domain of a mapped block).
-body::BodyMesh box_body(const std::array<std::array<double, 3>, 2>& box);
-
 // Sets request.domain to the body's box (grown by `margin` mm) and request.singular_clearance from
 // the body's surface. Throws InputError naming the point when the map's singular set meets the body
 // or lies inside it. Returns a line for the summary ("the map's singular set stays 4.2 from the body").

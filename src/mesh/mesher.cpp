@@ -1,7 +1,6 @@
 #include "mesh/mesher.h"
 
-#include "body/body_files.h"
-#include "body/body_topology.h"
+#include "body/body_request.h"
 #include "emit/file_writer.h"
 #include "mesh/body_domain.h"
 #include "mesh/box_domain.h"
@@ -57,21 +56,7 @@ void validate(const MeshRequest& s) {
     throw InputError(fmt::format("--tile {}: a tile is a multiple of {} voxels a side (0: one tile)", s.tile, kBlock));
   if (s.tile_range && format_for_path(s.output) != MeshFormat::Stl)
     throw InputError(fmt::format("--tile-range writes a partial binary STL: -o '{}' is not .stl", s.output));
-  if (!s.body) return;
-  const BodyRequest& b = *s.body;
-  if (!positive_length(b.scale)) throw InputError(fmt::format("--scale {} is not a positive factor", b.scale));
-  if (!(b.skin >= 0 && std::isfinite(b.skin)))
-    throw InputError(fmt::format("--skin {} is not a thickness >= 0 (mm)", b.skin));
-  if (!(b.fillet >= 0 && std::isfinite(b.fillet)))
-    throw InputError(fmt::format("--fillet {} is not a radius >= 0 (mm)", b.fillet));
-  if (b.fillet > 0 && b.skin == 0) throw InputError("--fillet blends the walls into the skin: it needs --skin > 0");
-  if (b.origin)
-    for (double x : *b.origin)
-      if (!std::isfinite(x)) throw InputError("--origin: the coordinates must be finite numbers (mm)");
-  // Never overwrite the part being read.
-  std::error_code ec;
-  if (std::filesystem::equivalent(b.path, s.output, ec))
-    throw InputError(fmt::format("-o {} is the body itself: choose another output file", s.output));
+  if (s.body) body::validate_body(*s.body, s.output);
 }
 
 // What sets the wall: "t=0.1", "rho=0.2" or "rho=<expression>".
@@ -104,65 +89,6 @@ void check_wall_voxels(double min_thickness, double voxels_per_cell, const std::
       network ? "the network's narrowest neck, about 2 (h_max - |h|)," : "the thinnest wall", min_thickness,
       min_thickness * voxels_per_cell, setting, network ? "necks" : "walls", kMinVoxelsPerWall, fix,
       kDefaultVoxelsPerWall));
-}
-
-// Reads the body, scales it and makes sure it is closed (or repairs it); says what it did.
-body::BodyMesh load_body(const BodyRequest& b, BodySummary& out, const WarningCallback& warn) {
-  body::BodyMesh mesh = b.box ? box_body(*b.box) : body::read_body_file(b.path);
-  if (b.scale != 1)
-    for (auto& p : mesh.points)
-      for (double& x : p) x *= b.scale;
-  body::TopologyReport topology = body::analyse_topology(mesh);
-  if (!topology.closed() && !b.repair)
-    throw InputError(fmt::format(
-        "{}: the body is not a closed surface, so it has no inside: {}. Close it in your CAD tool, or try --repair",
-        b.path, topology.describe()));
-  if (b.repair) {
-    const body::RepairReport repair = body::repair_body(mesh);
-    topology = body::analyse_topology(mesh);
-    if (!topology.closed())
-      throw InputError(fmt::format("{}: --repair {} but the body is still not closed: {}", b.path, repair.describe(),
-                                   topology.describe()));
-    out.repaired = repair.describe();
-    if (mesh.triangles.empty())
-      throw InputError(
-          fmt::format("{}: --repair {} and nothing closed is left of the body", b.path, repair.describe()));
-  }
-  out.path = b.path;
-  out.triangles = mesh.triangles.size();
-  out.box = body::bounding_box(mesh);
-  out.volume = std::abs(body::signed_volume(mesh));
-  double longest = 0;
-  for (size_t a = 0; a < 3; ++a) longest = std::max(longest, out.box[1][a] - out.box[0][a]);
-  if (warn && longest < 1)
-    warn(
-        fmt::format("the body is {:.3g} mm across: if it was exported in metres, use --scale 1000 (inches: "
-                    "--scale 25.4)",
-                    longest));
-  if (warn && longest > 2000)
-    warn(
-        fmt::format("the body is {:.4g} mm across (over 2 m): if it was exported in micrometres, use --scale "
-                    "0.001; in tenths of a millimetre, --scale 0.1",
-                    longest));
-  return mesh;
-}
-
-// Refuses bodies that cannot hold a lattice: smaller than a cell, or all skin.
-void check_body_size(const BodySummary& body, double cell_size, double skin) {
-  double longest = 0, shortest = HUGE_VAL;
-  for (size_t a = 0; a < 3; ++a) {
-    longest = std::max(longest, body.box[1][a] - body.box[0][a]);
-    shortest = std::min(shortest, body.box[1][a] - body.box[0][a]);
-  }
-  if (longest < cell_size)
-    throw InputError(fmt::format(
-        "the body ({:.4g} mm across) is smaller than one cell ({:g} mm): use a smaller --cell-size, or --scale if "
-        "its units are not millimetres",
-        longest, cell_size));
-  if (2 * skin >= shortest)
-    throw InputError(fmt::format(
-        "--skin {:g} mm is at least half the body's smallest extent ({:.4g} mm): it leaves no core for the lattice",
-        skin, shortest));
 }
 
 std::array<std::array<double, 3>, 2> mesh_box(const TriangleMesh& mesh) {
@@ -642,8 +568,15 @@ MeshSummary run_mesh_stages(const MeshRequest& s, const ProgressCallback& progre
   if (s.body) {
     progress("reading the body", -1);
     m.body.emplace();
-    body_mesh = load_body(*s.body, *m.body, warn);
-    check_body_size(*m.body, s.cell_size, s.body->skin);
+    body::LoadedBody loaded = body::load_body(*s.body, warn);
+    body::check_body_size(loaded.box, s.cell_size, s.body->skin);
+    BodySummary& b = *m.body;
+    b.path = s.body->path;
+    b.triangles = loaded.mesh.triangles.size();
+    b.repaired = loaded.repaired;
+    b.box = loaded.box;
+    b.volume = loaded.volume;
+    body_mesh = std::move(loaded.mesh);
   }
 
   // A mapped lattice is bounded over the body's box, clear of the map's singular set.

@@ -5,6 +5,7 @@
 // the skin (skin_measure), write the file atomically (mesh_files).
 #pragma once
 
+#include "body/body_request.h"
 #include "mesh/mesh_audit.h"
 #include "mesh/mesh_files.h"
 #include "mesh/narrow_band.h"
@@ -22,16 +23,7 @@
 namespace offsetgen::mesh {
 
 // A part to fill instead of a block (docs/parts.md).
-struct BodyRequest {
-  std::string path;                             // STL, PLY, OBJ or 3MF, in millimetres
-  double scale = 1;                             // multiplies the body's coordinates
-  double skin = 0;                              // mm; 0: the lattice cut flush by the body
-  double fillet = 0;                            // mm: radius of the blend where walls meet the skin
-  std::optional<std::array<double, 3>> origin;  // a lattice cell's corner, mm; default the body's box minimum
-  bool repair = false;                          // repair an open or inconsistent body instead of refusing it
-  // A box instead of a file: a mapped block (--map with --domain), meshed as a body without a skin.
-  std::optional<std::array<std::array<double, 3>, 2>> box;
-};
+using body::BodyRequest;
 
 struct MeshRequest {
   wall::WallRequest wall;

@@ -39,8 +39,8 @@ class CliWriter : public LayerWriter {
     header += ascii ? "$$ASCII\n" : "$$BINARY\n";
     header += "$$UNITS/00000001.000000\n$$VERSION/200\n";
     header += fmt::format("$$LABEL/1,{}\n", part.label);
-    header += fmt::format("$$DIMENSION/{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", 0.0, 0.0, 0.0, part.size[0],
-                          part.size[1], part.size[2]);
+    header += fmt::format("$$DIMENSION/{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", part.corner[0], part.corner[1],
+                          0.0, part.corner[0] + part.size[0], part.corner[1] + part.size[1], part.size[2]);
     header += fmt::format("$$LAYERS/{}\n", part.layers);
     header += ascii ? "$$HEADEREND\n$$GEOMETRYSTART\n" : "$$HEADEREND";
     file_->append(header);

@@ -2,6 +2,7 @@
 
 #include "numeric/root_finding.h"
 #include "wall/layer_sampler.h"
+#include "wall/part_value.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,12 +30,15 @@ double segment_distance(const Point2& p, const Point2& a, const Point2& b) {
   return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
 }
 
-// G = max(w, box) in cell units, in batches: w the wall's level (negative inside), box the distance to
-// the block's box [0, NX] x [0, NY] (negative inside).
+// G in cell units, in batches: max(w, box), w the wall's level (negative inside) and box the distance
+// to the block's box [0, NX] x [0, NY] (negative inside); or, with a body, the part from the body's
+// distance and w (wall/part_value.h).
 class Level {
  public:
-  Level(const wall::WallField& field, const std::array<int, 2>& cells, double z)
-      : field_(field), worker_(field), cells_(cells), z_(z) {}
+  Level(const wall::WallField& field, const LayerSetup& s)
+      : field_(field), worker_(field), cells_(s.cells), z_(s.z), body_(s.body) {
+    if (body_) body_query_.emplace(*body_);
+  }
 
   double box(const Point2& p) const {
     return std::max(std::max(-p[0], p[0] - cells_[0]), std::max(-p[1], p[1] - cells_[1]));
@@ -58,7 +62,13 @@ class Level {
       y_[i] = points[i][1];
     }
     if (n > 0) field_.walls(n, x_.data(), y_.data(), zs_.data(), w_.data(), worker_);
-    for (size_t i = 0; i < n; ++i) g_[i] = std::max(w_[i], box(points[i]));
+    if (body_) {
+      d_.resize(n);
+      if (n > 0) body_->distances(points, z_, d_.data(), *body_query_);
+      for (size_t i = 0; i < n; ++i) g_[i] = wall::part_value(d_[i], w_[i], body_->skin(), body_->fillet());
+    } else {
+      for (size_t i = 0; i < n; ++i) g_[i] = std::max(w_[i], box(points[i]));
+    }
     evaluations += n;
     return g_;
   }
@@ -69,7 +79,11 @@ class Level {
     ++evaluations;
     return w;
   }
-  double at(const Point2& p) { return std::max(wall_at(p), box(p)); }
+  double at(const Point2& p) {
+    if (!body_) return std::max(wall_at(p), box(p));
+    one_.assign(1, p);
+    return (*this)(one_)[0];
+  }
 
   size_t evaluations = 0;
 
@@ -78,7 +92,10 @@ class Level {
   wall::WallField::Worker worker_;
   std::array<int, 2> cells_;
   double z_;
-  std::vector<double> x_, y_, zs_, w_, g_;
+  const BodyLayer* body_;
+  std::optional<BodyLayer::Query> body_query_;
+  std::vector<double> x_, y_, zs_, w_, g_, d_;
+  std::vector<Point2> one_;
 };
 
 // A sign change of G on the segment a -> b: G(a) = fa < 0 <= G(b) = fb (any values of those signs).
@@ -189,11 +206,48 @@ Scratch& scratch() {
   return s;
 }
 
-// The marching grid of one layer: pixel (i, j) centred at ((i - kMargin + 1/2) p, (j - kMargin + 1/2) p).
+// The body's distance on the marching grid's blocks (LayerSetup::body): where each block lies, and d
+// (pixels) of the Mixed ones.
+struct BodyBlocks {
+  int blocks_y = 0;
+  std::vector<BodyLayer::Place> place;  // block (bi, bj) at bi * blocks_y + bj
+  std::vector<int32_t> slot;            // a Mixed block's values at d[slot * 64]
+  std::vector<double> d;
+  BodyLayer::Place at(int i, int j, double& value) const {
+    const size_t b = static_cast<size_t>(i / wall::kLayerBlock) * blocks_y + j / wall::kLayerBlock;
+    if (place[b] == BodyLayer::Place::Mixed)
+      value = d[static_cast<size_t>(slot[b]) * wall::kLayerBlockPixels +
+                static_cast<size_t>((i % wall::kLayerBlock) * wall::kLayerBlock + j % wall::kLayerBlock)];
+    return place[b];
+  }
+};
+
+BodyBlocks body_blocks(const BodyLayer& body, const wall::LayerGrid& grid, const std::array<int, 2>& first, double z) {
+  BodyBlocks out;
+  const int bx = (grid.size[0] + wall::kLayerBlock - 1) / wall::kLayerBlock;
+  out.blocks_y = (grid.size[1] + wall::kLayerBlock - 1) / wall::kLayerBlock;
+  out.place.resize(static_cast<size_t>(bx) * out.blocks_y);
+  out.slot.assign(out.place.size(), -1);
+  BodyLayer::Query query(body);
+  std::array<double, wall::kLayerBlockPixels> d{};
+  for (int bi = 0; bi < bx; ++bi)
+    for (int bj = 0; bj < out.blocks_y; ++bj) {
+      const size_t b = static_cast<size_t>(bi) * out.blocks_y + bj;
+      out.place[b] =
+          body.block({first[0] + bi * wall::kLayerBlock, first[1] + bj * wall::kLayerBlock}, z, d.data(), query);
+      if (out.place[b] != BodyLayer::Place::Mixed) continue;
+      out.slot[b] = static_cast<int32_t>(out.d.size() / wall::kLayerBlockPixels);
+      out.d.insert(out.d.end(), d.begin(), d.end());
+    }
+  return out;
+}
+
+// The marching grid of one layer: pixel (i, j) centred at ((first_x + i + 1/2) p, (first_y + j + 1/2) p).
 class MarchingGrid {
  public:
-  MarchingGrid(const wall::SampledLayer& layer, const LayerSetup& s, const wall::LayerGrid& grid)
-      : nx_(grid.size[0]), ny_(grid.size[1]), pixel_(grid.pixel), values_(scratch().values) {
+  MarchingGrid(const wall::SampledLayer& layer, const LayerSetup& s, const wall::LayerGrid& grid,
+               const std::array<int, 2>& first, const BodyBlocks* body)
+      : nx_(grid.size[0]), ny_(grid.size[1]), first_(first), pixel_(grid.pixel), values_(scratch().values) {
     values_.assign(static_cast<size_t>(nx_) * ny_, layer.background);
     auto fill = [&](const std::array<int, 2>& origin, const std::vector<float>* block) {
       for (int i = 0; i < wall::kLayerBlock; ++i)
@@ -205,10 +259,26 @@ class MarchingGrid {
     };
     for (const auto& o : layer.solid) fill(o, nullptr);
     for (const auto& b : layer.blocks) fill(b.origin, &b.values);
+    if (body) {
+      // G = the part from d and w, in pixels (w is +background where it was not needed).
+      const double skin = s.body->skin() * s.pixels_per_cell, fillet = s.body->fillet() * s.pixels_per_cell;
+      const double bg = layer.background;
+      for (int i = 0; i < nx_; ++i)
+        for (int j = 0; j < ny_; ++j) {
+          double d = 0;
+          const BodyLayer::Place place = body->at(i, j, d);
+          float& v = values_[index(i, j)];
+          if (place == BodyLayer::Place::Outside)
+            v = layer.background;
+          else if (place == BodyLayer::Place::Mixed)
+            v = static_cast<float>(std::clamp(wall::part_value(d, v, skin, fillet), -bg, bg));
+        }
+      return;
+    }
     // G = max(w, box), in pixels.
     for (int i = 0; i < nx_; ++i)
       for (int j = 0; j < ny_; ++j) {
-        const double x = i - kMargin + 0.5, y = j - kMargin + 0.5;
+        const double x = first_[0] + i + 0.5, y = first_[1] + j + 0.5;
         const double box = std::max(std::max(-x, x - s.cells[0] * s.pixels_per_cell),
                                     std::max(-y, y - s.cells[1] * s.pixels_per_cell));
         float& v = values_[index(i, j)];
@@ -218,7 +288,9 @@ class MarchingGrid {
   size_t index(int i, int j) const { return static_cast<size_t>(i) * ny_ + j; }
   float value(int i, int j) const { return values_[index(i, j)]; }
   bool inside(int i, int j) const { return values_[index(i, j)] < 0; }
-  Point2 centre(int i, int j) const { return {(i - kMargin + 0.5) * pixel_, (j - kMargin + 0.5) * pixel_}; }
+  Point2 centre(int i, int j) const { return {(first_[0] + i + 0.5) * pixel_, (first_[1] + j + 0.5) * pixel_}; }
+  // The centre of the square between pixels (i, j) and (i + 1, j + 1).
+  Point2 corner(int i, int j) const { return {(first_[0] + i + 1.0) * pixel_, (first_[1] + j + 1.0) * pixel_}; }
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   double pixel() const { return pixel_; }
@@ -233,6 +305,7 @@ class MarchingGrid {
 
  private:
   int nx_, ny_;
+  std::array<int, 2> first_;
   double pixel_;
   std::vector<float>& values_;
 };
@@ -253,7 +326,7 @@ const std::vector<int32_t>& march(const MarchingGrid& g, Level& level) {
       const auto c = corners(i, j);
       if (c[0] == c[2] && c[1] == c[3] && c[0] != c[1]) {
         saddles.push_back({i, j});
-        centres.push_back({(i - kMargin + 1.0) * g.pixel(), (j - kMargin + 1.0) * g.pixel()});
+        centres.push_back(g.corner(i, j));
       }
     }
   const std::vector<double> centre_values = level(centres);
@@ -553,13 +626,32 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
   wall::LayerGrid grid;
   grid.z = s.z;
   grid.pixel = 1.0 / s.pixels_per_cell;
-  grid.origin = {-kMargin * grid.pixel, -kMargin * grid.pixel};
+  std::array<int, 2> first{-kMargin, -kMargin};
   grid.size = {s.cells[0] * s.pixels_per_cell + 2 * kMargin, s.cells[1] * s.pixels_per_cell + 2 * kMargin};
+  if (s.body) {
+    first = s.body->first_pixel();
+    grid.size = s.body->pixels();
+  }
+  grid.origin = {first[0] * grid.pixel, first[1] * grid.pixel};
   if (2.0 * grid.size[0] * grid.size[1] >= 2.0e9) throw std::length_error("layer grid too large");
-  const wall::SampledLayer sampled = wall::sample_layer(field, grid, s.reach, s.use_field_bound, s.threads, {});
+  // With a body, the wall is sampled only where the part depends on it: in the core and near its surface.
+  std::optional<BodyBlocks> body;
+  wall::BlockFilter wanted;
+  if (s.body) {
+    body = body_blocks(*s.body, grid, first, s.z);
+    const double skin = s.body->skin() * s.pixels_per_cell, fillet = s.body->fillet() * s.pixels_per_cell;
+    wanted = [&](const std::array<int, 2>& origin) {
+      const size_t b =
+          static_cast<size_t>(origin[0] / wall::kLayerBlock) * body->blocks_y + origin[1] / wall::kLayerBlock;
+      if (body->place[b] != BodyLayer::Place::Mixed) return body->place[b] == BodyLayer::Place::Deep;
+      const double* d = &body->d[static_cast<size_t>(body->slot[b]) * wall::kLayerBlockPixels];
+      return wall::wall_matters(*std::min_element(d, d + wall::kLayerBlockPixels), skin, fillet, 3.0);
+    };
+  }
+  const wall::SampledLayer sampled = wall::sample_layer(field, grid, s.reach, s.use_field_bound, s.threads, {}, wanted);
   out.samples = sampled.samples;
-  const MarchingGrid g(sampled, s, grid);
-  Level level(field, s.cells, s.z);
+  const MarchingGrid g(sampled, s, grid, first, body ? &*body : nullptr);
+  Level level(field, s);
   const std::vector<int32_t>& next = march(g, level);
 
   // Every crossing's bracket, inside end first, and its linear estimate.
@@ -582,7 +674,7 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
   // and only the crossings it keeps are refined.
   std::vector<Bracket> near_brackets;
   std::vector<size_t> near_index;
-  for (size_t k = 0; k < brackets.size(); ++k)
+  for (size_t k = 0; k < brackets.size() && !s.body; ++k)
     if (level.box(estimates[k]) > -3 * g.pixel()) {
       near_brackets.push_back(brackets[k]);
       near_index.push_back(k);
@@ -616,7 +708,7 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
       dense.push_back(d);
       if (next[k] < 0) throw std::logic_error("marching squares: an open contour");
     }
-    dense = with_corners(std::move(dense), level, s, g.pixel());
+    if (!s.body) dense = with_corners(std::move(dense), level, s, g.pixel());
     thinned.push_back(thin(dense, 0.5 * tol, kMaxChordPixels * g.pixel()));
   }
   // The kept estimates refined onto G = 0.

@@ -9,9 +9,11 @@
 // chord checked at its midpoint: G must change sign within the tolerance either side along the chord's
 // normal (the deviation is where the line through those two values crosses zero); a chord that fails
 // gets the contour's point on that normal as a new vertex, and both halves are checked again.
-// Loops run with the solid on their left: outer loops counter-clockwise, holes clockwise.
+// Loops run with the solid on their left: outer loops counter-clockwise, holes clockwise. Bounded by a
+// body instead (LayerSetup::body), G is the part of wall/part_value.h from the body's distance and w.
 #pragma once
 
+#include "slice/body_layer.h"
 #include "wall/wall_field.h"
 
 #include <array>
@@ -30,12 +32,15 @@ struct Loop {
 
 struct LayerSetup {
   std::array<int, 2> cells{1, 1};  // the block's box [0, NX] x [0, NY] in cell units
-  double cell_size = 10;           // mm
-  double z = 0.5;                  // cell units
-  int pixels_per_cell = 64;        // the marching grid
-  double tolerance = 0.005;        // mm: the largest chord deviation allowed
-  double tiny_area = 0;            // mm^2: loops with less area are dropped (and counted)
-  double reach = 0;                // WallExtent::reach
+  // A body instead of the block's box: the part is wall/part_value.h's skin and core, the grid covers
+  // the body's box, and the contour has no box sides (its corners are met within the tolerance).
+  const BodyLayer* body = nullptr;
+  double cell_size = 10;     // mm
+  double z = 0.5;            // cell units
+  int pixels_per_cell = 64;  // the marching grid
+  double tolerance = 0.005;  // mm: the largest chord deviation allowed
+  double tiny_area = 0;      // mm^2: loops with less area are dropped (and counted)
+  double reach = 0;          // WallExtent::reach
   bool use_field_bound = true;
   int threads = 1;  // for sampling the layer
 };

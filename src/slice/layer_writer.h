@@ -34,7 +34,8 @@ Screen sl1s_screen();
 struct PartLayout {
   std::string label;             // what the part is, for headers
   std::string job;               // the output's name without its extension (SL1's jobDir)
-  std::array<double, 3> size{};  // the block's box from the origin, mm
+  std::array<double, 3> size{};  // the part's box: [corner, corner + size], mm (a block's corner is 0)
+  std::array<double, 3> corner{};
   size_t layers = 0;
   double layer_height = 0, first_layer = 0;  // mm
 };

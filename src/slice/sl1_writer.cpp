@@ -172,7 +172,7 @@ class Sl1Writer : public LayerWriter {
  private:
   // Image coordinates (column, row) of a point of the part, mm, in the raster of the part's box.
   std::array<double, 2> image(const Point2& p) const {
-    const double bx = p[0] + shift_[0], by = p[1] + shift_[1];
+    const double bx = p[0] - part_.corner[0] + shift_[0], by = p[1] - part_.corner[1] + shift_[1];
     return {by / p_y_ - col_lo_, screen_.pixels_x - bx / p_x_ - row_lo_};
   }
   double print_seconds() const {

@@ -1,6 +1,7 @@
 #include "slice/slicer.h"
 
 #include "emit/file_writer.h"
+#include "slice/body_layer.h"
 #include "support/stopwatch.h"
 #include "surfaces/input_error.h"
 #include "validate/block_checks.h"
@@ -53,19 +54,20 @@ std::string format_name_of(const SliceRequest& r) {
 
 double first_layer_of(const SliceRequest& r) { return r.first_layer ? *r.first_layer : r.layer_height; }
 
-// Layer k's cut and top, mm.
-double cut_height(const SliceRequest& r, size_t k) {
-  const double f = first_layer_of(r);
-  return k == 0 ? 0.5 * f : f + (double(k) - 0.5) * r.layer_height;
-}
-double top_height(const SliceRequest& r, size_t k) { return first_layer_of(r) + double(k) * r.layer_height; }
-
-size_t layer_count(const SliceRequest& r) {
-  const double height = r.cells[2] * r.cell_size;
-  size_t n = 0;
-  while (cut_height(r, n) < height) ++n;
-  return n;
-}
+// The layers of a part `height` mm tall, from its bottom.
+struct LayerStack {
+  double first = 0, step = 0, height = 0;  // mm
+  LayerStack(const SliceRequest& r, double part_height)
+      : first(first_layer_of(r)), step(r.layer_height), height(part_height) {}
+  // Layer k's cut and top, mm.
+  double cut(size_t k) const { return k == 0 ? 0.5 * first : first + (double(k) - 0.5) * step; }
+  double top(size_t k) const { return first + double(k) * step; }
+  size_t count() const {
+    size_t n = 0;
+    while (cut(n) < height) ++n;
+    return n;
+  }
+};
 
 std::optional<Screen> screen_of(SliceFormat f) {
   if (f == SliceFormat::Sl1) return sl1_screen();
@@ -103,6 +105,14 @@ std::unique_ptr<LayerWriter> make_writer(SliceFormat f, const std::string& path,
   return make_cli_writer(path, part, f == SliceFormat::CliAscii);
 }
 
+std::string body_text(const SliceRequest& r) {
+  if (!r.body) return "";
+  const body::BodyRequest& b = *r.body;
+  return fmt::format("{} scale {:a} skin {:a} fillet {:a} origin {} repair {}", b.path, b.scale, b.skin, b.fillet,
+                     b.origin ? fmt::format("{:a},{:a},{:a}", (*b.origin)[0], (*b.origin)[1], (*b.origin)[2]) : "box",
+                     b.repair ? 1 : 0);
+}
+
 // What makes two shares parts of one run: the format, the part's layout and everything that shapes
 // its contours.
 std::string part_key(SliceFormat f, const PartLayout& part, const SliceRequest& r, int pixels_per_cell) {
@@ -110,12 +120,14 @@ std::string part_key(SliceFormat f, const PartLayout& part, const SliceRequest& 
   std::string params;
   for (const auto& [k, v] : g.params) params += k + "=" + v + ";";
   return fmt::format(
-      "format {}\nlabel {}\nsize {:a} {:a} {:a}\nlayers {}\nheights {:a} {:a}\ntolerance {:a}\npixels {}\n"
-      "surface {}\nexpression {}\nparams {}\nmethod {} {}\nthickness {}|{}\ndensity {}|{}\nnetwork {}\n",
-      static_cast<int>(f), part.label, part.size[0], part.size[1], part.size[2], part.layers, part.layer_height,
-      part.first_layer, r.tolerance, pixels_per_cell, g.surface, g.expression, params, g.method, g.order,
-      r.wall.thickness, g.thickness.value_or(""), g.density ? fmt::format("{:a}", *g.density) : "",
-      g.density_field.value_or(""), r.wall.network ? 1 : 0);
+      "format {}\nlabel {}\nsize {:a} {:a} {:a}\ncorner {:a} {:a} {:a}\nlayers {}\nheights {:a} {:a}\ntolerance "
+      "{:a}\npixels {}\n"
+      "surface {}\nexpression {}\nparams {}\nmethod {} {}\nthickness {}|{}\ndensity {}|{}\nnetwork {}\nbody {}\n",
+      static_cast<int>(f), part.label, part.size[0], part.size[1], part.size[2], part.corner[0], part.corner[1],
+      part.corner[2], part.layers, part.layer_height, part.first_layer, r.tolerance, pixels_per_cell, g.surface,
+      g.expression, params, g.method, g.order, r.wall.thickness, g.thickness.value_or(""),
+      g.density ? fmt::format("{:a}", *g.density) : "", g.density_field.value_or(""), r.wall.network ? 1 : 0,
+      body_text(r));
 }
 
 std::string wall_text(const wall::WallRequest& w) {
@@ -124,6 +136,19 @@ std::string wall_text(const wall::WallRequest& w) {
   if (g.density) return fmt::format("rho={}", *g.density);
   if (g.density_field) return "rho=" + *g.density_field;
   return "t=" + w.thickness;
+}
+
+// A part of this size on the printer's screen, and its layers in an SL1 archive.
+void check_part_fits(const SliceRequest& r, SliceFormat f, const std::array<double, 3>& size) {
+  const auto screen = screen_of(f);
+  if (!screen) return;
+  if (size[0] > std::min(screen->width, screen->bed[0]) || size[1] > std::min(screen->height, screen->bed[1]))
+    throw InputError(
+        fmt::format("the part ({:g} x {:g} mm) is larger than the {} screen ({:g} x {:g} mm): {}", size[0], size[1],
+                    screen->model, screen->width, screen->height,
+                    r.body ? "scale the body down (--scale)" : "use fewer --cells or a smaller --cell-size"));
+  const size_t layers = LayerStack(r, size[2]).count();
+  if (layers > 0xfff0) throw InputError(fmt::format("{} layers: an SL1 archive holds at most 65520", layers));
 }
 
 }  // namespace
@@ -160,7 +185,10 @@ SliceFormat format_for_output(const SliceRequest& r) {
 void validate(const SliceRequest& r) {
   check_wall_choice(!r.wall.thickness.empty(), r.wall.generation.density.has_value(),
                     r.wall.generation.density_field.has_value(), WallNeed::Required);
-  check_block(r.cells, r.cell_size);
+  if (r.body)
+    body::validate_body(*r.body, r.output);
+  else
+    check_block(r.cells, r.cell_size);
   if (!positive_length(r.layer_height))
     throw InputError(fmt::format("--layer-height {} is not a positive length (mm)", r.layer_height));
   if (r.layer_height > r.cell_size)
@@ -183,16 +211,7 @@ void validate(const SliceRequest& r) {
           r.layer_range, r.output));
   }
   const SliceFormat f = format_for_output(r);
-  if (const auto screen = screen_of(f)) {
-    const double x = r.cells[0] * r.cell_size, y = r.cells[1] * r.cell_size;
-    if (x > std::min(screen->width, screen->bed[0]) || y > std::min(screen->height, screen->bed[1]))
-      throw InputError(fmt::format(
-          "the part ({:g} x {:g} mm) is larger than the {} screen ({:g} x {:g} mm): use fewer --cells or a smaller "
-          "--cell-size",
-          x, y, screen->model, screen->width, screen->height));
-  }
-  if (layer_count(r) > 0xfff0 && screen_of(f))
-    throw InputError(fmt::format("{} layers: an SL1 archive holds at most 65520", layer_count(r)));
+  if (!r.body) check_part_fits(r, f, {r.cells[0] * r.cell_size, r.cells[1] * r.cell_size, r.cells[2] * r.cell_size});
   try {
     require_writable(r.output);
   } catch (const std::runtime_error& e) {
@@ -200,7 +219,7 @@ void validate(const SliceRequest& r) {
   }
 }
 
-SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress) {
+SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress, const body::BodyWarning& warn) {
   const auto start = std::chrono::steady_clock::now();
   validate(r);
   const SliceFormat format = format_for_output(r);
@@ -217,32 +236,67 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress) {
   m.tolerance = r.tolerance;
   m.wall = wall_text(r.wall);
 
+  // The body first: a bad file fails before anything is generated.
+  std::optional<body::LoadedBody> body;
+  std::array<double, 3> origin{0, 0, 0};  // the lattice's origin, mm
+  PartLayout part;
+  part.size = {r.cells[0] * r.cell_size, r.cells[1] * r.cell_size, r.cells[2] * r.cell_size};
+  if (r.body) {
+    report("reading the body", -1);
+    body = body::load_body(*r.body, warn);
+    body::check_body_size(body->box, r.cell_size, r.body->skin);
+    origin = r.body->origin ? *r.body->origin : body->box[0];
+    for (size_t a = 0; a < 3; ++a) {
+      part.corner[a] = body->box[0][a];
+      part.size[a] = body->box[1][a] - body->box[0][a];
+    }
+    part.corner[2] = 0;  // heights from the body's lowest point
+    check_part_fits(r, format, part.size);
+    m.body =
+        fmt::format("{}, {} triangles{}, box {:.4g} x {:.4g} x {:.4g} mm, skin {:g} mm{}", r.body->path,
+                    body->mesh.triangles.size(), body->repaired.empty() ? "" : " (repaired: " + body->repaired + ")",
+                    part.size[0], part.size[1], part.size[2], r.body->skin,
+                    r.body->fillet > 0 ? fmt::format(", fillet {:g} mm", r.body->fillet) : std::string());
+  }
+  const double bottom = body ? body->box[0][2] : 0.0;  // mm: the part's lowest point
+  const LayerStack stack(r, part.size[2]);
+
   report("generating the functions", -1);
   wall::WallField field(r.wall);
   m.surface = field.generation().surface.name;
   m.generate_seconds = field.generate_seconds();
-  const auto range = field.thickness_range(r.cells);
+  // The wall's thickness over the part's box, in cells from the origin.
+  std::array<double, 3> lo{}, hi{};
+  for (size_t a = 0; a < 3; ++a) {
+    const double from = (a == 2 ? bottom : part.corner[a]) - origin[a];
+    lo[a] = from / r.cell_size;
+    hi[a] = (from + part.size[a]) / r.cell_size;
+  }
+  const auto range = field.thickness_range(lo, hi);
   const wall::WallExtent extent = field.extent(range);
-  m.pixels_per_cell = r.pixels_per_cell > 0
-                          ? r.pixels_per_cell
-                          : std::max(16, static_cast<int>(std::ceil(kPixelsPerWall / extent.thinnest - 1e-9)));
-  if (double(m.pixels_per_cell) * std::max(r.cells[0], r.cells[1]) > 65536)
+  int per_cell = std::max(16, static_cast<int>(std::ceil(kPixelsPerWall / extent.thinnest - 1e-9)));
+  // A skin spans as many pixels as the thinnest wall.
+  if (r.body && r.body->skin > 0)
+    per_cell = std::max(per_cell, static_cast<int>(std::ceil(kPixelsPerWall * r.cell_size / r.body->skin - 1e-9)));
+  m.pixels_per_cell = r.pixels_per_cell > 0 ? r.pixels_per_cell : per_cell;
+  const double longest_cells = std::max(part.size[0], part.size[1]) / r.cell_size;
+  if (double(m.pixels_per_cell) * longest_cells > 65536)
     throw InputError(
-        fmt::format("{} pixels per cell over {} cells: the layer grid is too large (walls too thin for "
-                    "the block)",
-                    m.pixels_per_cell, std::max(r.cells[0], r.cells[1])));
+        fmt::format("{} pixels per cell over {:.4g} cells: the layer grid is too large (walls too thin for "
+                    "the part)",
+                    m.pixels_per_cell, longest_cells));
   report("compiling the functions", -1);
   field.compile();
   m.compile_seconds = field.compile_seconds();
 
   const int threads = r.threads > 0 ? r.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const std::optional<Screen> screen = screen_of(format);
-  PartLayout part;
-  part.label = fmt::format("offsetgen {} {} {}x{}x{} cells of {:g} mm", m.surface, m.wall, r.cells[0], r.cells[1],
-                           r.cells[2], r.cell_size);
+  part.label = r.body ? fmt::format("offsetgen {} {} in {}, skin {:g} mm, cells of {:g} mm", m.surface, m.wall,
+                                    std::filesystem::path(r.body->path).filename().string(), r.body->skin, r.cell_size)
+                      : fmt::format("offsetgen {} {} {}x{}x{} cells of {:g} mm", m.surface, m.wall, r.cells[0],
+                                    r.cells[1], r.cells[2], r.cell_size);
   part.job = std::filesystem::path(r.output).stem().string();
-  part.size = {r.cells[0] * r.cell_size, r.cells[1] * r.cell_size, r.cells[2] * r.cell_size};
-  part.layers = layer_count(r);
+  part.layers = stack.count();
   part.layer_height = r.layer_height;
   part.first_layer = m.first_layer;
   // A share writes its layers, encoded by the format's writer, to a part file (kPartMagic).
@@ -261,8 +315,14 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress) {
   m.layers = end - begin;
   std::unique_ptr<LayerWriter> writer = make_writer(format, part_file ? std::string() : r.output, part);
 
+  std::optional<BodyLayer> body_layer;
+  if (body) {
+    report("indexing the body's facets", -1);
+    body_layer.emplace(body->mesh, origin, r.cell_size, m.pixels_per_cell, r.body->skin, r.body->fillet);
+  }
   LayerSetup setup;
   setup.cells = {r.cells[0], r.cells[1]};
+  setup.body = body_layer ? &*body_layer : nullptr;
   setup.cell_size = r.cell_size;
   setup.pixels_per_cell = m.pixels_per_cell;
   setup.tolerance = r.tolerance;
@@ -272,7 +332,8 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress) {
   m.tiny_area = setup.tiny_area;
   setup.reach = extent.reach;
   // M bounds |grad F| over the unit cell; catalog surfaces repeat it, user expressions need not.
-  setup.use_field_bound = field.generation().surface.from_catalog || r.cells == std::array<int, 3>{1, 1, 1};
+  setup.use_field_bound =
+      field.generation().surface.from_catalog || (!r.body && r.cells == std::array<int, 3>{1, 1, 1});
   setup.threads = 1;
 
   // Layers in chunks, a layer per thread at a time, written in order.
@@ -288,16 +349,20 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress) {
         [&](int&, size_t i) {
           const size_t k = first + i;
           LayerSetup s = setup;
-          s.z = cut_height(r, k) / r.cell_size;
+          s.z = (bottom + stack.cut(k) - origin[2]) / r.cell_size;
           contours[i] = layer_contours(field, s);
-          encoded[i] = writer->encode_layer({k, top_height(r, k), cut_height(r, k), &contours[i].loops});
+          // A body's loops in its own millimetres (layer_contours measures from the lattice's origin).
+          if (body)
+            for (Loop& loop : contours[i].loops)
+              for (Point2& p : loop.points) p = {p[0] + origin[0], p[1] + origin[1]};
+          encoded[i] = writer->encode_layer({k, stack.top(k), stack.cut(k), &contours[i].loops});
         });
     for (size_t i = 0; i < count; ++i) {
       const size_t k = first + i;
       const LayerContours& c = contours[i];
       double area = 0;
       for (const Loop& loop : c.loops) area += loop.area;
-      const LayerData layer{k, top_height(r, k), cut_height(r, k), &c.loops, area};
+      const LayerData layer{k, stack.top(k), stack.cut(k), &c.loops, area};
       if (part_file) {
         part_file->append(
             fmt::format("layer {} {:a} {:a} {:a} {}\n", k, layer.top, layer.slice, layer.area, encoded[i].size()));
@@ -331,8 +396,13 @@ std::string format_summary(const SliceSummary& m) {
   std::string s;
   s += fmt::format("offsetgen slice: {} written ({}, {:.1f} MB)\n", m.output, m.format, double(m.file_bytes) / 1e6);
   if (!m.share.empty()) s += fmt::format("  share:      {} (join the shares with --merge)\n", m.share);
-  s += fmt::format("  block:      {} {} {}x{}x{} cells of {:g} mm\n", m.surface, m.wall, m.cells[0], m.cells[1],
-                   m.cells[2], m.cell_size);
+  if (!m.body.empty()) {
+    s += fmt::format("  body:       {}\n", m.body);
+    s += fmt::format("  lattice:    {} {}, cells of {:g} mm\n", m.surface, m.wall, m.cell_size);
+  } else {
+    s += fmt::format("  block:      {} {} {}x{}x{} cells of {:g} mm\n", m.surface, m.wall, m.cells[0], m.cells[1],
+                     m.cells[2], m.cell_size);
+  }
   s += fmt::format("  layers:     {} of {:g} mm (first {:g} mm), cut at mid-height\n", m.layers, m.layer_height,
                    m.first_layer);
   s += fmt::format("  contours:   {} loops, {} vertices; {} loops under {:.3g} mm^2 dropped\n", m.loops, m.vertices,
@@ -424,6 +494,7 @@ LayerMergeReport merge_layer_parts(const std::vector<std::string>& parts, const 
   PartLayout part;
   part.label = key_value(key, "label");
   std::sscanf(key_value(key, "size").c_str(), "%la %la %la", &part.size[0], &part.size[1], &part.size[2]);
+  std::sscanf(key_value(key, "corner").c_str(), "%la %la %la", &part.corner[0], &part.corner[1], &part.corner[2]);
   part.layers = std::stoull(key_value(key, "layers"));
   std::sscanf(key_value(key, "heights").c_str(), "%la %la", &part.layer_height, &part.first_layer);
   part.job = std::filesystem::path(output).stem().string();

@@ -1,11 +1,12 @@
-// `offsetgen slice`: a block of cells of a wall solid as a printer's layers, cut straight from the
-// closed form (no mesh): each layer's contours (layer_contours.h) written as CLI (binary or ASCII),
-// SVG, or a Prusa SL1/SL1S archive (layer_writer.h). Layers are cut at mid-height, PrusaSlicer's way:
-// layer 0 at first_layer / 2, layer k >= 1 at first_layer + (k - 1/2) layer_height, every layer whose
-// cut lies inside the block. Layers are worked on a few threads at a time and written in order, so the
-// memory is a few layers' and the bytes do not depend on the threads.
+// `offsetgen slice`: a block of cells of a wall solid, or a body filled with it, as a printer's layers, cut straight
+// from the closed form (no mesh): each layer's contours (layer_contours.h) written as CLI (binary or ASCII), SVG, or a
+// Prusa SL1/SL1S archive (layer_writer.h). Layers are cut at mid-height, PrusaSlicer's way: layer 0 at first_layer / 2,
+// layer k >= 1 at first_layer + (k - 1/2) layer_height, every layer whose cut lies inside the block. Layers are worked
+// on a few threads at a time and written in order, so the memory is a few layers' and the bytes do not depend on the
+// threads.
 #pragma once
 
+#include "body/body_request.h"
 #include "slice/layer_writer.h"
 #include "wall/wall_field.h"
 
@@ -21,6 +22,9 @@ namespace offsetgen::slice {
 struct SliceRequest {
   wall::WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};  // the block [0, NX] x [0, NY] x [0, NZ] cells from the origin
+  // A body filled with the lattice (inside a skin) instead of the block: its layers are cut from its
+  // lowest point up, x and y in the body's own millimetres.
+  std::optional<body::BodyRequest> body;
   double cell_size = 10;              // mm
   double layer_height = 0.05;         // mm
   std::optional<double> first_layer;  // mm; default layer_height
@@ -38,6 +42,7 @@ struct SliceRequest {
 struct SliceSummary {
   std::string output, format, surface, wall;
   std::array<int, 3> cells{};
+  std::string body;  // with --body: its file, triangles, box and skin, in a line; else empty
   double cell_size = 0, layer_height = 0, first_layer = 0, tolerance = 0;
   int pixels_per_cell = 0;
   std::string share;  // "I/N: layers A to B of T" for a --layer-range share, else empty
@@ -56,7 +61,9 @@ using SliceProgress = std::function<void(const std::string& stage, double fracti
 SliceFormat format_for_output(const SliceRequest& request);
 // Throws InputError for bad input before anything is generated or written.
 void validate(const SliceRequest& request);
-SliceSummary run_slice(const SliceRequest& request, const SliceProgress& progress = {});
+// `warn` hears of a body whose size looks like other units.
+SliceSummary run_slice(const SliceRequest& request, const SliceProgress& progress = {},
+                       const body::BodyWarning& warn = {});
 std::string format_summary(const SliceSummary& summary);
 
 // "I/N" -> {I, N} with 0 <= I < N (as mesh's --tile-range); throws InputError otherwise.

@@ -15,12 +15,12 @@ class SvgWriter : public LayerWriter {
   SvgWriter(const std::string& path, const PartLayout& part) {
     if (path.empty()) return;
     file_.emplace(path);
-    file_->append(
-        fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:.6f}mm\" height=\"{1:.6f}mm\" "
-                    "viewBox=\"0 {2:.6f} {0:.6f} {1:.6f}\">\n"
-                    "<!-- {3}: {4} layers, mm, y up -->\n",
-                    part.size[0], part.size[1], -part.size[1], part.label, part.layers));
+    file_->append(fmt::format(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:.6f}mm\" height=\"{1:.6f}mm\" "
+        "viewBox=\"{5:.6f} {2:.6f} {0:.6f} {1:.6f}\">\n"
+        "<!-- {3}: {4} layers, mm, y up -->\n",
+        part.size[0], part.size[1], -(part.corner[1] + part.size[1]), part.label, part.layers, part.corner[0]));
   }
 
   std::string encode_layer(const LayerData& layer) const override {

@@ -78,11 +78,16 @@ class LayerBlockSampler {
 }  // namespace
 
 SampledLayer sample_layer(const WallField& field, const LayerGrid& grid, double reach, bool use_field_bound,
-                          int threads, const std::function<void(double)>& progress) {
+                          int threads, const std::function<void(double)>& progress, const BlockFilter& wanted) {
   SampledLayer layer;
   std::vector<std::array<int, 2>> origins;
   for (int i = 0; i < grid.size[0]; i += kLayerBlock)
-    for (int j = 0; j < grid.size[1]; j += kLayerBlock) origins.push_back({i, j});
+    for (int j = 0; j < grid.size[1]; j += kLayerBlock) {
+      if (!wanted || wanted({i, j}))
+        origins.push_back({i, j});
+      else
+        layer.skipped += kLayerBlockPixels;
+    }
   std::vector<BlockResult> results(origins.size());
   for_each_block(
       origins.size(), threads, progress,

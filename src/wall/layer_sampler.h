@@ -41,8 +41,10 @@ struct SampledLayer {
 };
 
 // `reach`: how far from F = 0 the solid's surface gets (WallExtent::reach); use_field_bound as for
-// mesh (periodic surfaces, or a single cell).
+// mesh (periodic surfaces, or a single cell). `wanted`, when given, says which blocks (by their first
+// pixel) need the wall at all (a body's core); the others are skipped, neither near nor solid.
+using BlockFilter = std::function<bool(const std::array<int, 2>& origin)>;
 SampledLayer sample_layer(const WallField& field, const LayerGrid& grid, double reach, bool use_field_bound,
-                          int threads, const std::function<void(double)>& progress);
+                          int threads, const std::function<void(double)>& progress, const BlockFilter& wanted = {});
 
 }  // namespace offsetgen::wall

@@ -17,9 +17,16 @@
 #include <cstdint>
 #include <vector>
 
-namespace offsetgen::mesh {
+namespace offsetgen::body {
 
 using Vec3 = std::array<double, 3>;
+
+// The blocks the distance is computed in: kDistanceBlock^3 voxels, x-major ((x * 8 + y) * 8 + z), the
+// sampler's blocks (mesh/narrow_band.h); a layer's blocks are kDistanceBlock^2 pixels, x-major.
+inline constexpr int kDistanceBlock = 8;
+inline constexpr int distance_block_offset(int x, int y, int z) {
+  return (x * kDistanceBlock + y) * kDistanceBlock + z;
+}
 
 class BodyDistance {
  public:
@@ -56,10 +63,14 @@ class BodyDistance {
     std::vector<std::pair<double, int>> crossings;  // (z, +-1)
   };
 
-  // The signed distances (voxels, negative inside) of the kBlock^3 voxels of the block whose first
-  // voxel is `origin`, in block order ((x * 8 + y) * 8 + z). Returns false, filling nothing, when no
-  // facet comes within reach of the block: inside(origin) then tells its side.
+  // The signed distances (voxels, negative inside) of the kDistanceBlock^3 voxels of the block whose
+  // first voxel is `origin`, in block order (distance_block_offset). Returns false, filling nothing, when
+  // no facet comes within reach of the block: inside(origin) then tells its side.
   bool block(const std::array<int, 3>& origin, double* d, Query& q) const;
+  // The same for a layer at height z (voxel units, any value): the kDistanceBlock^2 points (origin[0] +
+  // i, origin[1] + j, z), x-major ((i * 8) + j). False, filling nothing, when no facet comes within
+  // reach: inside({origin[0], origin[1], z}) then tells the side of all of them.
+  bool plane_block(const std::array<int, 2>& origin, double z, double* d, Query& q) const;
   bool inside(const Vec3& p, Query& q) const;
   // The signed distances at points (voxel coordinates), capped and free as above.
   void distances(const std::vector<Vec3>& points, double* d, Query& q) const;
@@ -92,4 +103,4 @@ class BodyDistance {
   CellIndex columns_;  // 2D (x, y), by the facet box's projection
 };
 
-}  // namespace offsetgen::mesh
+}  // namespace offsetgen::body

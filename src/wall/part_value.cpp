@@ -1,9 +1,9 @@
-#include "mesh/domain.h"
+#include "wall/part_value.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace offsetgen::mesh {
+namespace offsetgen::wall {
 namespace {
 
 // Quadratic smooth minimum: min(a, b) lowered by at most r / 4 where a and b are within r.
@@ -32,4 +32,4 @@ bool wall_matters(double d, double skin, double fillet, double margin) {
   return skin > 0 ? d + skin < margin + fillet : d < margin;
 }
 
-}  // namespace offsetgen::mesh
+}  // namespace offsetgen::wall

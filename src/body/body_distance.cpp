@@ -1,12 +1,10 @@
-#include "mesh/body_distance.h"
-
-#include "mesh/narrow_band.h"
+#include "body/body_distance.h"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-namespace offsetgen::mesh {
+namespace offsetgen::body {
 namespace {
 
 constexpr int64_t kKeyOffset = int64_t(1) << 20;
@@ -123,7 +121,7 @@ BodyDistance::BodyDistance(std::vector<Vec3> points, const std::vector<std::arra
     if (edge_function(points_[t[0]], points_[t[1]], points_[t[2]][0], points_[t[2]][1]) != 0)
       xy_extents.push_back(std::max(extent[0], extent[1]));
   }
-  cells_.cell = cell_side(extents, kBlock);
+  cells_.cell = cell_side(extents, kDistanceBlock);
   columns_.cell = cell_side(xy_extents, 2);
   balls_.reserve(triangles_.size());
   for (uint32_t f = 0; f < triangles_.size(); ++f) {
@@ -291,16 +289,16 @@ void BodyDistance::distances(const std::vector<Vec3>& points, double* d, Query& 
   // By block: the facets near one block serve all its points.
   std::vector<std::pair<std::array<int64_t, 3>, uint32_t>> order(points.size());
   for (uint32_t i = 0; i < points.size(); ++i)
-    order[i] = {{static_cast<int64_t>(std::floor(points[i][0] / kBlock)),
-                 static_cast<int64_t>(std::floor(points[i][1] / kBlock)),
-                 static_cast<int64_t>(std::floor(points[i][2] / kBlock))},
+    order[i] = {{static_cast<int64_t>(std::floor(points[i][0] / kDistanceBlock)),
+                 static_cast<int64_t>(std::floor(points[i][1] / kDistanceBlock)),
+                 static_cast<int64_t>(std::floor(points[i][2] / kDistanceBlock))},
                 i};
   std::sort(order.begin(), order.end());
-  const double half = 0.5 * kBlock, radius = half * std::sqrt(3.0);
+  const double half = 0.5 * kDistanceBlock, radius = half * std::sqrt(3.0);
   for (size_t k = 0; k < order.size();) {
     const auto cell = order[k].first;
-    const Vec3 centre = {double(cell[0]) * kBlock + half, double(cell[1]) * kBlock + half,
-                         double(cell[2]) * kBlock + half};
+    const Vec3 centre = {double(cell[0]) * kDistanceBlock + half, double(cell[1]) * kDistanceBlock + half,
+                         double(cell[2]) * kDistanceBlock + half};
     prepare(centre, radius, q);
     for (; k < order.size() && order[k].first == cell; ++k) {
       const Vec3& p = points[order[k].second];
@@ -311,25 +309,39 @@ void BodyDistance::distances(const std::vector<Vec3>& points, double* d, Query& 
 }
 
 bool BodyDistance::block(const std::array<int, 3>& origin, double* d, Query& q) const {
-  const double half = 0.5 * (kBlock - 1);
+  const double half = 0.5 * (kDistanceBlock - 1);
   const Vec3 centre = {origin[0] + half, origin[1] + half, origin[2] + half};
   prepare(centre, half * std::sqrt(3.0), q);
   if (q.near.empty()) return false;
-  for (int i = 0; i < kBlock; ++i)
-    for (int j = 0; j < kBlock; ++j) {
+  for (int i = 0; i < kDistanceBlock; ++i)
+    for (int j = 0; j < kDistanceBlock; ++j) {
       const double x = origin[0] + i, y = origin[1] + j;
       winding(x, y, q);
       // The winding number above each voxel of the column, from the top down.
       size_t next = q.crossings.size();
       int above = 0;
-      for (int l = kBlock - 1; l >= 0; --l) {
+      for (int l = kDistanceBlock - 1; l >= 0; --l) {
         const Vec3 p = {x, y, double(origin[2] + l)};
         while (next > 0 && q.crossings[next - 1].first > p[2]) above += q.crossings[--next].second;
         const Vec3 e = sub(p, centre);
-        d[block_offset(i, j, l)] = scan(p, above != 0, std::sqrt(dot(e, e)), q);
+        d[distance_block_offset(i, j, l)] = scan(p, above != 0, std::sqrt(dot(e, e)), q);
       }
     }
   return true;
 }
 
-}  // namespace offsetgen::mesh
+bool BodyDistance::plane_block(const std::array<int, 2>& origin, double z, double* d, Query& q) const {
+  const double half = 0.5 * (kDistanceBlock - 1);
+  const Vec3 centre = {origin[0] + half, origin[1] + half, z};
+  prepare(centre, half * std::sqrt(2.0), q);
+  if (q.near.empty()) return false;
+  for (int i = 0; i < kDistanceBlock; ++i)
+    for (int j = 0; j < kDistanceBlock; ++j) {
+      const Vec3 p = {double(origin[0] + i), double(origin[1] + j), z};
+      const Vec3 e = sub(p, centre);
+      d[i * kDistanceBlock + j] = scan(p, inside(p, q), std::sqrt(dot(e, e)), q);
+    }
+  return true;
+}
+
+}  // namespace offsetgen::body
