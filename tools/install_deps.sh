@@ -24,12 +24,13 @@ case "${1:---all}" in
 esac
 
 # The core set: the compiler and CMake, GiNaC/CLN, fmt, CLI11 and nlohmann-json: offsetgen itself;
-# libpng and zlib for `offsetgen slice` (SL1 layers as PNG, the archive's CRC-32).
+# libpng and zlib for `offsetgen slice` (SL1 layers as PNG, the archive's CRC-32), Clipper
+# (libpolyclipping) for its CLI --beam-offset.
 core_packages=(
   build-essential cmake pkg-config
   libginac-dev libcln-dev
   libfmt-dev libcli11-dev nlohmann-json3-dev
-  libpng-dev zlib1g-dev
+  libpng-dev zlib1g-dev libpolyclipping-dev
 )
 # The build set adds OpenVDB (with Boost.Iostreams, which Debian's FindOpenVDB.cmake needs) and lib3mf
 # for offsetgen-mesh, OpenCASCADE (foundation, modeling data and algorithms, data exchange) for

@@ -30,8 +30,8 @@ void add_slice_command(CLI::App& app, SliceOptions& o) {
                   "The largest distance (mm) between a contour's chord and the exact wall in its layer")
       ->capture_default_str();
   cmd->add_option("-o,--output", o.output,
-                  "Output: .cli (Common Layer Interface, binary), .svg (a group per layer), .sl1 or .sl1s (Prusa "
-                  "resin archive)");
+                  "Output: .cli (Common Layer Interface, binary), .svg (a group per layer), DIR/ (an SVG per layer), "
+                  ".sl1 or .sl1s (Prusa resin archive)");
   cmd->add_flag("--cli-ascii", o.cli_ascii, "Write ASCII CLI instead of binary");
   cmd->add_option("--printer", o.printer,
                   "The resin printer's screen: sl1 (1440 x 2560 at 0.04725 mm) or sl1s "
@@ -42,6 +42,14 @@ void add_slice_command(CLI::App& app, SliceOptions& o) {
   cmd->add_option("--merge", o.merge,
                   "Join the --layer-range parts, shares 0 to N-1 in order, into -o (the single run's bytes)")
       ->expected(1, -1);
+  cmd->add_option("--hatch", o.hatch,
+                  "CLI: hatch lines filling each layer, SPACING mm apart at ANGLE degrees (default 0) on layer 0, "
+                  "turned ROTATE degrees more each layer (default 66.67): SPACING[,ANGLE[,ROTATE]]");
+  cmd->add_option("--beam-offset", o.beam_offset,
+                  "CLI: write the contours offset inward by this many mm (the beam's radius); hatches fill the "
+                  "offset contours (default 0)");
+  cmd->add_option("--center", o.center,
+                  "SL1/SL1S: the part's centre on the printer's bed, X,Y in mm (default the bed's centre)");
   cmd->add_option("-j,--threads", o.threads, "Threads (default: one per hardware thread)");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
   cmd->footer(
@@ -83,6 +91,9 @@ int run_slice_command(const SliceOptions& o) {
   r.printer = o.printer;
   r.threads = o.threads;
   r.layer_range = o.layer_range;
+  r.hatch = o.hatch;
+  r.beam_offset = o.beam_offset;
+  r.center = o.center;
   slice::validate(r);  // before anything is generated
   ProgressLine bar("[offsetgen slice]");
   const slice::SliceSummary summary = slice::run_slice(

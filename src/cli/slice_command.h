@@ -22,6 +22,8 @@ struct SliceOptions : WallOptions, BodyOptions {
   bool cli_ascii = false;
   int threads = 0;
   bool quiet = false;
+  std::string hatch, center;          // --hatch, --center
+  std::optional<double> beam_offset;  // --beam-offset
 };
 
 void add_slice_command(CLI::App& app, SliceOptions& options);

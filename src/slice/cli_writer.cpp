@@ -2,7 +2,9 @@
 // (127 layer: float32 z; 130 polyline: int32 id, dir, n, then n float32 pairs, little-endian) or as
 // ASCII commands ($$LAYER/z, $$POLYLINE/id,dir,n,x1,y1,...). Units: 1 mm. A closed polyline repeats
 // its first point as its last; dir 1 counter-clockwise (an outer boundary), 0 clockwise (a hole), seen
-// looking down -z. $$LAYER is the layer's top.
+// looking down -z. $$LAYER is the layer's top. A layer's hatches (--hatch, scan_paths.h), if any, follow
+// its polylines as one record: binary 132 (hatches long: int32 id, n, then n float32 quadruples
+// sx, sy, ex, ey), ASCII $$HATCHES/id,n,sx,sy,ex,ey,...; a layer without hatches has no such record.
 #include "emit/file_writer.h"
 #include "slice/layer_writer.h"
 
@@ -59,6 +61,12 @@ class CliWriter : public LayerWriter {
         }
         out += '\n';
       }
+      if (layer.hatches && !layer.hatches->empty()) {
+        out += fmt::format("$$HATCHES/1,{}", layer.hatches->size());
+        for (const Hatch& h : *layer.hatches)
+          out += fmt::format(",{:.7f},{:.7f},{:.7f},{:.7f}", h.start[0], h.start[1], h.end[0], h.end[1]);
+        out += '\n';
+      }
       return out;
     }
     put_u16(out, 127);
@@ -73,6 +81,13 @@ class CliWriter : public LayerWriter {
         put_f32(out, p[0]);
         put_f32(out, p[1]);
       }
+    }
+    if (layer.hatches && !layer.hatches->empty()) {
+      put_u16(out, 132);
+      put_i32(out, 1);
+      put_i32(out, static_cast<int32_t>(layer.hatches->size()));
+      for (const Hatch& h : *layer.hatches)
+        for (const double v : {h.start[0], h.start[1], h.end[0], h.end[1]}) put_f32(out, v);
     }
     return out;
   }

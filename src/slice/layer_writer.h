@@ -4,16 +4,19 @@
 #pragma once
 
 #include "slice/layer_contours.h"
+#include "slice/scan_paths.h"
 
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace offsetgen::slice {
 
-enum class SliceFormat { CliBinary, CliAscii, Svg, Sl1, Sl1s };
+// SvgLayers: a directory of SVGs, one per layer (-o DIR/).
+enum class SliceFormat { CliBinary, CliAscii, Svg, Sl1, Sl1s, SvgLayers };
 
 // A resin printer's screen (portrait, x mirrored, as PrusaSlicer's SL1 and SL1S profiles).
 struct Screen {
@@ -38,14 +41,20 @@ struct PartLayout {
   std::array<double, 3> corner{};
   size_t layers = 0;
   double layer_height = 0, first_layer = 0;  // mm
+  // SL1/SL1S: where the box's centre sits on the bed (bed mm, --center); none: the bed's centre.
+  std::optional<std::array<double, 2>> center;
 };
+// Where the part's box starts on the bed (mm, its lower corner): centred on `center` or else on the
+// bed's centre. Throws InputError when the box then leaves the screen.
+std::array<double, 2> part_shift(const Screen& screen, const PartLayout& part);
 
 struct LayerData {
   size_t index = 0;
   double top = 0;    // mm: the layer's top
   double slice = 0;  // mm: where it was cut
   const std::vector<Loop>* loops = nullptr;
-  double area = 0;  // mm^2: the loops' signed areas summed in order
+  double area = 0;                              // mm^2: the loops' signed areas summed in order
+  const std::vector<Hatch>* hatches = nullptr;  // CLI: written after the loops (scan_paths.h)
 };
 
 class LayerWriter {
@@ -61,6 +70,17 @@ class LayerWriter {
 // stores the encoded layers in its part file, slicer.h).
 std::unique_ptr<LayerWriter> make_cli_writer(const std::string& path, const PartLayout& part, bool ascii);
 std::unique_ptr<LayerWriter> make_svg_writer(const std::string& path, const PartLayout& part);
+// -o DIR/: one SVG per layer, DIR/layer_00000.svg ... (at least 5 digits, more when the layers need
+// them), each a whole SVG with the single file's group of that layer. Written into a new hidden
+// directory beside DIR and renamed to DIR by finish() (DIR must be missing or empty); a failed or
+// interrupted run removes it. The layer encoding is the single SVG's (its --layer-range parts merge
+// into either).
+std::unique_ptr<LayerWriter> make_svg_layers_writer(const std::string& path, const PartLayout& part);
+// Throws InputError unless `path` can become the directory of per-layer SVGs: missing with an
+// existing parent directory, or an empty directory (never a file or a directory holding anything).
+void require_layer_directory(const std::string& path);
+// -o names a directory: it ends with '/' or is an existing directory.
+bool is_layer_directory(const std::string& path);
 std::unique_ptr<LayerWriter> make_sl1_writer(const std::string& path, const PartLayout& part, const Screen& screen);
 
 }  // namespace offsetgen::slice

@@ -1,8 +1,9 @@
 // Prusa SL1 / SL1S archives (docs/slice.md): a zip of config.ini, prusaslicer.ini and one 8-bit grey
 // PNG per layer (<job>00000.png ...), as PrusaSlicer writes them, with no creation time stamp. The
-// part's box is centred on the screen; pixels follow PrusaSlicer's portrait layout with x mirrored:
-// the centre of pixel (col, row) lies at bed x = (rows - row - 1/2) p, y = (col + 1/2) p. Each pixel is
-// the exact area of the layer's polygons inside it (coverage_raster.h), 0 dark, 255 lit.
+// part's box is centred on the bed's centre, or on --center; pixels follow PrusaSlicer's portrait
+// layout with x mirrored: the centre of pixel (col, row) lies at bed x = (rows - row - 1/2) p,
+// y = (col + 1/2) p. Each pixel is the exact area of the layer's polygons inside it
+// (coverage_raster.h), 0 dark, 255 lit.
 #include "slice/coverage_raster.h"
 #include "slice/layer_writer.h"
 #include "slice/png_encoder.h"
@@ -122,16 +123,7 @@ class Sl1Writer : public LayerWriter {
   Sl1Writer(const std::string& path, const PartLayout& part, const Screen& screen) : part_(part), screen_(screen) {
     p_x_ = screen.width / screen.pixels_x;
     p_y_ = screen.height / screen.pixels_y;
-    if (part.size[0] > screen.width || part.size[1] > screen.height)
-      throw InputError(fmt::format("the part ({:g} x {:g} mm) is larger than the {} screen ({:g} x {:g} mm)",
-                                   part.size[0], part.size[1], screen.model, screen.width, screen.height));
-    // The part's box centred on the bed's centre, as PrusaSlicer places it.
-    shift_ = {0.5 * (screen.bed[0] - part.size[0]), 0.5 * (screen.bed[1] - part.size[1])};
-    if (shift_[0] < 0 || shift_[1] < 0 || shift_[0] + part.size[0] > screen.width ||
-        shift_[1] + part.size[1] > screen.height)
-      throw InputError(
-          fmt::format("the part ({:g} x {:g} mm) centred on the bed does not fit the {} screen ({:g} x {:g} mm)",
-                      part.size[0], part.size[1], screen.model, screen.width, screen.height));
+    shift_ = part_shift(screen, part);
     // The part's box in pixels (columns along y, rows along x), one pixel of margin.
     col_lo_ = std::max(0, static_cast<int>(std::floor(shift_[1] / p_y_)) - 1);
     col_hi_ = std::min(screen.pixels_y, static_cast<int>(std::ceil((shift_[1] + part.size[1]) / p_y_)) + 1);
@@ -221,6 +213,29 @@ class Sl1Writer : public LayerWriter {
 thread_local std::vector<uint8_t> Sl1Writer::line_;
 
 }  // namespace
+
+std::array<double, 2> part_shift(const Screen& screen, const PartLayout& part) {
+  if (part.size[0] > screen.width || part.size[1] > screen.height)
+    throw InputError(fmt::format("the part ({:g} x {:g} mm) is larger than the {} screen ({:g} x {:g} mm)",
+                                 part.size[0], part.size[1], screen.model, screen.width, screen.height));
+  // The part's box centred on the bed's centre, as PrusaSlicer places it, or on --center.
+  const std::array<double, 2> c = part.center.value_or(std::array<double, 2>{0.5 * screen.bed[0], 0.5 * screen.bed[1]});
+  const std::array<double, 2> shift{c[0] - 0.5 * part.size[0], c[1] - 0.5 * part.size[1]};
+  if (!(shift[0] >= 0 && shift[1] >= 0 && shift[0] + part.size[0] <= screen.width &&
+        shift[1] + part.size[1] <= screen.height)) {
+    if (!part.center)
+      throw InputError(
+          fmt::format("the part ({:g} x {:g} mm) centred on the bed does not fit the {} screen ({:g} x {:g} mm)",
+                      part.size[0], part.size[1], screen.model, screen.width, screen.height));
+    throw InputError(fmt::format(
+        "--center {:g},{:g}: the part ({:g} x {:g} mm) would cover x {:g} to {:g}, y {:g} to {:g} mm, off the {} "
+        "screen (x 0 to {:g}, y 0 to {:g} mm): its centre must lie within x {:g} to {:g}, y {:g} to {:g} mm",
+        c[0], c[1], part.size[0], part.size[1], shift[0], shift[0] + part.size[0], shift[1], shift[1] + part.size[1],
+        screen.model, screen.width, screen.height, 0.5 * part.size[0], screen.width - 0.5 * part.size[0],
+        0.5 * part.size[1], screen.height - 0.5 * part.size[1]));
+  }
+  return shift;
+}
 
 Screen sl1_screen() { return Screen{"SL1", 2560, 1440, 120.96, 68.04, 10, 15, {120, 68}}; }
 Screen sl1s_screen() { return Screen{"SL1S", 2560, 1620, 128, 81, 10, 15, {128, 81}}; }

@@ -87,6 +87,8 @@ std::string format_name(SliceFormat f) {
       return "Prusa SL1";
     case SliceFormat::Sl1s:
       return "Prusa SL1S";
+    case SliceFormat::SvgLayers:
+      return "SVG, a file per layer";
   }
   return "?";
 }
@@ -102,6 +104,7 @@ size_t peak_memory() {
 std::unique_ptr<LayerWriter> make_writer(SliceFormat f, const std::string& path, const PartLayout& part) {
   if (const auto screen = screen_of(f)) return make_sl1_writer(path, part, *screen);
   if (f == SliceFormat::Svg) return make_svg_writer(path, part);
+  if (f == SliceFormat::SvgLayers) return make_svg_layers_writer(path, part);
   return make_cli_writer(path, part, f == SliceFormat::CliAscii);
 }
 
@@ -151,12 +154,104 @@ void check_part_fits(const SliceRequest& r, SliceFormat f, const std::array<doub
   if (layers > 0xfff0) throw InputError(fmt::format("{} layers: an SL1 archive holds at most 65520", layers));
 }
 
+bool is_cli(SliceFormat f) { return f == SliceFormat::CliBinary || f == SliceFormat::CliAscii; }
+
+// At most this many hatch lines across a layer (the block's diagonal over the spacing).
+constexpr double kMaxHatchLines = 1e6;
+
+// --hatch and --beam-offset (CLI), --center (SL1/SL1S) and -o DIR/ (a file per layer): their values
+// and what each goes with.
+void validate_extras(const SliceRequest& r) {
+  const SliceFormat f = format_for_output(r);
+  if (!r.hatch.empty()) {
+    if (!is_cli(f)) throw InputError(fmt::format("--hatch writes CLI hatches: -o '{}' is not .cli", r.output));
+    const HatchPattern h = parse_hatch(r.hatch);
+    // A body's size is known once it is read: the hatches' count is then bounded by the layer's loops.
+    const double lines = r.body ? 0 : std::hypot(r.cells[0], r.cells[1]) * r.cell_size / h.spacing;
+    if (lines > kMaxHatchLines)
+      throw InputError(
+          fmt::format("--hatch {}: {:.3g} lines across a {:g} mm layer, more than {:g}: use a larger "
+                      "spacing",
+                      r.hatch, lines, std::hypot(r.cells[0], r.cells[1]) * r.cell_size, kMaxHatchLines));
+  }
+  if (r.beam_offset) {
+    if (!is_cli(f)) throw InputError(fmt::format("--beam-offset offsets CLI contours: -o '{}' is not .cli", r.output));
+    if (!(std::isfinite(*r.beam_offset) && *r.beam_offset >= 0))
+      throw InputError(fmt::format("--beam-offset {} is not a length >= 0 (mm)", *r.beam_offset));
+  }
+  if (!r.center.empty()) {
+    const std::optional<Screen> screen = screen_of(f);
+    if (!screen)
+      throw InputError(
+          fmt::format("--center places the part on a resin printer's bed: -o '{}' is not .sl1 or .sl1s", r.output));
+    parse_center(r.center);
+    if (r.body) return;  // its size is known once it is read: the SL1 writer places it then
+    PartLayout part;
+    part.size = {r.cells[0] * r.cell_size, r.cells[1] * r.cell_size, r.cells[2] * r.cell_size};
+    part.center = parse_center(r.center);
+    part_shift(*screen, part);
+  }
+  if (f == SliceFormat::SvgLayers && !r.layer_range.empty())
+    throw InputError(fmt::format(
+        "--layer-range {} with -o '{}' (a directory of SVGs): a share is one part file; write the shares as "
+        "-o shareI.svg.part and --merge them into -o '{}'",
+        r.layer_range, r.output, r.output));
+}
+
+// What part_key leaves out that changes the encoded layers: hatches, beam offset, an SL1's centre.
+std::string extras_key(const SliceRequest& r) {
+  return fmt::format("hatch {}\nbeam offset {}\ncenter {}\n", r.hatch,
+                     r.beam_offset ? fmt::format("{:a}", *r.beam_offset) : "", r.center);
+}
+
+ScanSetup scan_setup(const SliceRequest& r, double min_area) {
+  ScanSetup s;
+  if (!r.hatch.empty()) s.hatch = parse_hatch(r.hatch);
+  s.beam_offset = r.beam_offset.value_or(0);
+  s.tolerance = r.tolerance;
+  s.min_area = min_area;
+  return s;
+}
+
+std::string scan_text(const SliceRequest& r) {
+  std::string s;
+  if (!r.hatch.empty()) {
+    const HatchPattern h = parse_hatch(r.hatch);
+    s = fmt::format("hatches {:g} mm apart at {:g} deg, {:+g} deg a layer", h.spacing, h.angle, h.rotation);
+  }
+  if (r.beam_offset && *r.beam_offset > 0)
+    s += fmt::format("{}contours offset {:g} mm inward (Clipper, arcs within {:.3g} mm)", s.empty() ? "" : "; ",
+                     *r.beam_offset, 0.25 * r.tolerance);
+  return s;
+}
+
 }  // namespace
+
+std::array<double, 2> parse_center(const std::string& text) {
+  std::array<double, 2> c{};
+  const size_t comma = text.find(',');
+  bool ok = comma != std::string::npos;
+  for (int k = 0; ok && k < 2; ++k) {
+    const std::string field = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+    size_t used = 0;
+    try {
+      c[k] = std::stod(field, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    ok = used > 0 && used == field.size() && std::isfinite(c[k]);
+  }
+  if (!ok)
+    throw InputError(fmt::format("--center '{}': give X,Y in millimetres on the bed, e.g. --center 60,34", text));
+  return c;
+}
 
 SliceFormat format_for_output(const SliceRequest& r) {
   const std::string ext = extension_of(format_name_of(r));
   SliceFormat f;
-  if (ext == ".cli")
+  if (is_layer_directory(format_name_of(r)))
+    f = SliceFormat::SvgLayers;
+  else if (ext == ".cli")
     f = r.cli_ascii ? SliceFormat::CliAscii : SliceFormat::CliBinary;
   else if (ext == ".svg")
     f = SliceFormat::Svg;
@@ -167,8 +262,7 @@ SliceFormat format_for_output(const SliceRequest& r) {
   else
     throw InputError(
         fmt::format("-o '{}': unknown extension '{}'; slice writes .cli (CLI), .svg, .sl1 or .sl1s", r.output, ext));
-  if (r.cli_ascii && ext != ".cli")
-    throw InputError(fmt::format("--cli-ascii writes CLI: -o '{}' is not .cli", r.output));
+  if (r.cli_ascii && !is_cli(f)) throw InputError(fmt::format("--cli-ascii writes CLI: -o '{}' is not .cli", r.output));
   if (!r.printer.empty()) {
     if (r.printer != "sl1" && r.printer != "sl1s")
       throw InputError(fmt::format("--printer '{}': the printers are sl1 and sl1s", r.printer));
@@ -202,6 +296,7 @@ void validate(const SliceRequest& r) {
     throw InputError(fmt::format("--tolerance {} is not a positive length (mm)", r.tolerance));
   if (r.pixels_per_cell < 0) throw InputError("the marching grid's pixels per cell must be positive");
   if (r.output.empty()) throw InputError("no output file: use -o part.cli (or .svg, .sl1, .sl1s)");
+  validate_extras(r);
   if (!r.layer_range.empty()) {
     parse_layer_range(r.layer_range);
     if (!is_part_name(r.output))
@@ -212,6 +307,7 @@ void validate(const SliceRequest& r) {
   }
   const SliceFormat f = format_for_output(r);
   if (!r.body) check_part_fits(r, f, {r.cells[0] * r.cell_size, r.cells[1] * r.cell_size, r.cells[2] * r.cell_size});
+  if (f == SliceFormat::SvgLayers) return require_layer_directory(r.output);
   try {
     require_writable(r.output);
   } catch (const std::runtime_error& e) {
@@ -299,6 +395,7 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress, con
   part.layers = stack.count();
   part.layer_height = r.layer_height;
   part.first_layer = m.first_layer;
+  if (!r.center.empty()) part.center = parse_center(r.center);
   // A share writes its layers, encoded by the format's writer, to a part file (kPartMagic).
   size_t begin = 0, end = part.layers;
   std::optional<StreamedFile> part_file;
@@ -310,7 +407,7 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress, con
     m.format = format_name(format) + " layers, a share for --merge";
     part_file.emplace(r.output);
     part_file->append(fmt::format("{}\nshare {} {}\n{}end\n", kPartMagic, index, count,
-                                  part_key(format, part, r, m.pixels_per_cell)));
+                                  part_key(format, part, r, m.pixels_per_cell) + extras_key(r)));
   }
   m.layers = end - begin;
   std::unique_ptr<LayerWriter> writer = make_writer(format, part_file ? std::string() : r.output, part);
@@ -335,6 +432,8 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress, con
   setup.use_field_bound =
       field.generation().surface.from_catalog || (!r.body && r.cells == std::array<int, 3>{1, 1, 1});
   setup.threads = 1;
+  const ScanSetup scan = scan_setup(r, setup.tiny_area);
+  m.scan = scan_text(r);
 
   // Layers in chunks, a layer per thread at a time, written in order.
   const size_t chunk = static_cast<size_t>(std::max(1, threads)) * 4;
@@ -342,6 +441,7 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress, con
     const size_t count = std::min(chunk, end - first);
     std::vector<LayerContours> contours(count);
     std::vector<std::string> encoded(count);
+    std::vector<std::vector<Hatch>> hatches(count);
     wall::for_each_block(
         count, threads,
         [&](double f) { report("slicing", (double(first - begin) + f * double(count)) / double(end - begin)); },
@@ -355,7 +455,8 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress, con
           if (body)
             for (Loop& loop : contours[i].loops)
               for (Point2& p : loop.points) p = {p[0] + origin[0], p[1] + origin[1]};
-          encoded[i] = writer->encode_layer({k, stack.top(k), stack.cut(k), &contours[i].loops});
+          hatches[i] = scan_layer(scan, k, contours[i]);
+          encoded[i] = writer->encode_layer({k, stack.top(k), stack.cut(k), &contours[i].loops, 0, &hatches[i]});
         });
     for (size_t i = 0; i < count; ++i) {
       const size_t k = first + i;
@@ -377,6 +478,8 @@ SliceSummary run_slice(const SliceRequest& r, const SliceProgress& progress, con
       m.max_deviation = std::max(m.max_deviation, c.max_deviation);
       m.samples += c.samples;
       m.refine_evaluations += c.refine_evaluations;
+      m.hatches += hatches[i].size();
+      for (const Hatch& h : hatches[i]) m.hatch_length += std::hypot(h.end[0] - h.start[0], h.end[1] - h.start[1]);
     }
   }
   report("writing " + r.output, -1);
@@ -412,6 +515,8 @@ std::string format_summary(const SliceSummary& m) {
       "(--tolerance {:g} mm){}\n",
       m.max_deviation, m.tolerance,
       m.unverified_chords ? fmt::format(", {} chords not measured", m.unverified_chords) : std::string());
+  if (!m.scan.empty())
+    s += fmt::format("  scan:       {}: {} hatches, {:.3f} m of them\n", m.scan, m.hatches, m.hatch_length / 1000);
   s += fmt::format("  evaluation: {} pixels per cell, {} samples, {} refinement evaluations\n", m.pixels_per_cell,
                    m.samples, m.refine_evaluations);
   s += fmt::format(
@@ -502,16 +607,22 @@ LayerMergeReport merge_layer_parts(const std::vector<std::string>& parts, const 
   SliceRequest target;
   target.output = output;
   target.cli_ascii = format == SliceFormat::CliAscii;
-  if (format_for_output(target) != format)
+  // SVG shares merge into one file or into a directory of a file per layer (the same groups).
+  const SliceFormat written = format_for_output(target);
+  if (written != format && !(format == SliceFormat::Svg && written == SliceFormat::SvgLayers))
     throw InputError(fmt::format("--merge: the shares hold {} layers: -o '{}' has another format's extension",
                                  format_name(format), output));
-  try {
-    require_writable(output);
-  } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
+  if (written == SliceFormat::SvgLayers) {
+    require_layer_directory(output);
+  } else {
+    try {
+      require_writable(output);
+    } catch (const std::runtime_error& e) {
+      throw InputError(e.what());
+    }
   }
 
-  std::unique_ptr<LayerWriter> writer = make_writer(format, output, part);
+  std::unique_ptr<LayerWriter> writer = make_writer(written, output, part);
   size_t next = 0;
   std::string line, encoded;
   for (size_t i = 0; i < parts.size(); ++i) {

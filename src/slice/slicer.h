@@ -37,6 +37,11 @@ struct SliceRequest {
   // --layer-range I/N: share I (from 0) of N near-equal contiguous runs of the layers, written to a
   // part file (output NAME.EXT.part, EXT the format) that merge_layer_parts joins; empty: all layers.
   std::string layer_range;
+  // CLI only (slice/scan_paths.h): --hatch SPACING[,ANGLE[,ROTATE]] ("": none) and --beam-offset MM.
+  std::string hatch;
+  std::optional<double> beam_offset;
+  // SL1/SL1S only: --center X,Y, where the part's centre sits on the bed (mm); "": the bed's centre.
+  std::string center;
 };
 
 struct SliceSummary {
@@ -50,6 +55,9 @@ struct SliceSummary {
   double tiny_area = 0;      // mm^2
   double max_deviation = 0;  // mm: the largest chord deviation measured
   size_t file_bytes = 0;
+  std::string scan;  // --hatch / --beam-offset in words, else empty
+  size_t hatches = 0;
+  double hatch_length = 0;  // mm
   size_t samples = 0, refine_evaluations = 0;
   double generate_seconds = 0, compile_seconds = 0, slice_seconds = 0;
   size_t peak_memory_bytes = 0;  // the process's peak resident memory
@@ -65,6 +73,9 @@ void validate(const SliceRequest& request);
 SliceSummary run_slice(const SliceRequest& request, const SliceProgress& progress = {},
                        const body::BodyWarning& warn = {});
 std::string format_summary(const SliceSummary& summary);
+
+// "X,Y" (mm, finite) -> {X, Y}; throws InputError otherwise.
+std::array<double, 2> parse_center(const std::string& text);
 
 // "I/N" -> {I, N} with 0 <= I < N (as mesh's --tile-range); throws InputError otherwise.
 std::pair<int, int> parse_layer_range(const std::string& text);

@@ -1,6 +1,7 @@
 // A reader of CLI files written for the tests, apart from the writer (slice/cli_writer.cpp): the ASCII
 // header up to $$HEADEREND, then binary long records (127 layer, 130 polyline; anything else is an
-// error) or ASCII commands. Coordinates times $$UNITS, in mm.
+// error; 132 hatches long: int32 id, n, 4n float32, after SLICE.md, not 131 as one public reader has
+// it) or ASCII commands ($$LAYER, $$POLYLINE, $$HATCHES). Coordinates times $$UNITS, in mm.
 #pragma once
 
 #include <array>
@@ -19,9 +20,14 @@ struct Polyline {
   int id = 0, dir = 0;
   std::vector<std::array<double, 2>> points;  // mm, as in the file (closed: last = first)
 };
+struct HatchLine {
+  std::array<double, 2> start, end;  // mm
+};
 struct CliLayer {
   double z = 0;
   std::vector<Polyline> polylines;
+  std::vector<HatchLine> hatches;  // every hatches record of the layer, in order
+  size_t hatch_records = 0;
 };
 struct CliFile {
   bool binary = false;
@@ -71,7 +77,8 @@ inline CliFile read_cli(const std::string& bytes) {
     while (at < bytes.size()) {
       const uint16_t command = u16();
       if (command == 127) {
-        f.layers.push_back({f32() * f.units, {}});
+        f.layers.emplace_back();
+        f.layers.back().z = f32() * f.units;
       } else if (command == 130) {
         if (f.layers.empty()) throw std::runtime_error("a polyline before the first layer");
         Polyline p;
@@ -84,6 +91,20 @@ inline CliFile read_cli(const std::string& bytes) {
           p.points.push_back({x, y});
         }
         f.layers.back().polylines.push_back(p);
+      } else if (command == 132) {
+        if (f.layers.empty()) throw std::runtime_error("hatches before the first layer");
+        i32();  // id
+        const int32_t n = i32();
+        if (n <= 0) throw std::runtime_error("an empty hatches record");
+        for (int32_t k = 0; k < n; ++k) {
+          HatchLine h;
+          h.start[0] = f32() * f.units;
+          h.start[1] = f32() * f.units;
+          h.end[0] = f32() * f.units;
+          h.end[1] = f32() * f.units;
+          f.layers.back().hatches.push_back(h);
+        }
+        ++f.layers.back().hatch_records;
       } else {
         throw std::runtime_error(fmt::format("unexpected binary record {}", command));
       }
@@ -98,7 +119,8 @@ inline CliFile read_cli(const std::string& bytes) {
       continue;
     }
     if (line.rfind("$$LAYER/", 0) == 0) {
-      f.layers.push_back({std::stod(line.substr(8)) * f.units, {}});
+      f.layers.emplace_back();
+      f.layers.back().z = std::stod(line.substr(8)) * f.units;
     } else if (line.rfind("$$POLYLINE/", 0) == 0) {
       std::vector<double> v;
       std::stringstream in(line.substr(11));
@@ -112,6 +134,19 @@ inline CliFile read_cli(const std::string& bytes) {
       for (size_t k = 0; k < n; ++k) p.points.push_back({v[3 + 2 * k] * f.units, v[4 + 2 * k] * f.units});
       if (f.layers.empty()) throw std::runtime_error("a polyline before the first layer");
       f.layers.back().polylines.push_back(p);
+    } else if (line.rfind("$$HATCHES/", 0) == 0) {
+      std::vector<double> v;
+      std::stringstream in(line.substr(10));
+      std::string item;
+      while (std::getline(in, item, ',')) v.push_back(std::stod(item));
+      const auto n = static_cast<size_t>(v.at(1));
+      if (n == 0 || v.size() != 2 + 4 * n) throw std::runtime_error("$$HATCHES: n does not match its coordinates");
+      if (f.layers.empty()) throw std::runtime_error("hatches before the first layer");
+      for (size_t k = 0; k < n; ++k) {
+        const double* q = &v[2 + 4 * k];
+        f.layers.back().hatches.push_back({{q[0] * f.units, q[1] * f.units}, {q[2] * f.units, q[3] * f.units}});
+      }
+      ++f.layers.back().hatch_records;
     } else {
       throw std::runtime_error("unexpected line: " + line.substr(0, 40));
     }
