@@ -30,14 +30,57 @@ double segment_distance(const Point2& p, const Point2& a, const Point2& b) {
   return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
 }
 
+// The body's distance on the marching grid's blocks (LayerSetup::body): where each block lies, and d
+// (pixels) of the Mixed ones.
+struct BodyBlocks {
+  int blocks_y = 0;
+  std::vector<BodyLayer::Place> place;  // block (bi, bj) at bi * blocks_y + bj
+  std::vector<int32_t> slot;            // a Mixed block's values at d[slot * 64]
+  std::vector<double> d;
+  BodyLayer::Place at(int i, int j, double& value) const {
+    const size_t b = static_cast<size_t>(i / wall::kLayerBlock) * blocks_y + j / wall::kLayerBlock;
+    if (place[b] == BodyLayer::Place::Mixed)
+      value = d[static_cast<size_t>(slot[b]) * wall::kLayerBlockPixels +
+                static_cast<size_t>((i % wall::kLayerBlock) * wall::kLayerBlock + j % wall::kLayerBlock)];
+    return place[b];
+  }
+};
+
+BodyBlocks body_blocks(const BodyLayer& body, const wall::LayerGrid& grid, const std::array<int, 2>& first, double z) {
+  BodyBlocks out;
+  const int bx = (grid.size[0] + wall::kLayerBlock - 1) / wall::kLayerBlock;
+  out.blocks_y = (grid.size[1] + wall::kLayerBlock - 1) / wall::kLayerBlock;
+  out.place.resize(static_cast<size_t>(bx) * out.blocks_y);
+  out.slot.assign(out.place.size(), -1);
+  BodyLayer::Query query(body);
+  std::array<double, wall::kLayerBlockPixels> d{};
+  for (int bi = 0; bi < bx; ++bi)
+    for (int bj = 0; bj < out.blocks_y; ++bj) {
+      const size_t b = static_cast<size_t>(bi) * out.blocks_y + bj;
+      out.place[b] =
+          body.block({first[0] + bi * wall::kLayerBlock, first[1] + bj * wall::kLayerBlock}, z, d.data(), query);
+      if (out.place[b] != BodyLayer::Place::Mixed) continue;
+      out.slot[b] = static_cast<int32_t>(out.d.size() / wall::kLayerBlockPixels);
+      out.d.insert(out.d.end(), d.begin(), d.end());
+    }
+  return out;
+}
+
 // G in cell units, in batches: max(w, box), w the wall's level (negative inside) and box the distance
 // to the block's box [0, NX] x [0, NY] (negative inside); or, with a body, the part from the body's
 // distance and w (wall/part_value.h).
 class Level {
  public:
-  Level(const wall::WallField& field, const LayerSetup& s)
-      : field_(field), worker_(field), cells_(s.cells), z_(s.z), body_(s.body) {
+  // With a body, `blocks` says where its distance is needed: only points in Mixed blocks get it.
+  Level(const wall::WallField& field, const LayerSetup& s, const BodyBlocks* blocks = nullptr,
+        const wall::LayerGrid* grid = nullptr)
+      : field_(field), worker_(field), cells_(s.cells), z_(s.z), body_(s.body), blocks_(blocks) {
     if (body_) body_query_.emplace(*body_);
+    if (grid) {
+      pixel_ = grid->pixel;
+      grid_origin_ = grid->origin;
+      grid_size_ = grid->size;
+    }
   }
 
   double box(const Point2& p) const {
@@ -63,8 +106,7 @@ class Level {
     }
     if (n > 0) field_.walls(n, x_.data(), y_.data(), zs_.data(), w_.data(), worker_);
     if (body_) {
-      d_.resize(n);
-      if (n > 0) body_->distances(points, z_, d_.data(), *body_query_);
+      body_distances(points);
       for (size_t i = 0; i < n; ++i) g_[i] = wall::part_value(d_[i], w_[i], body_->skin(), body_->fillet());
     } else {
       for (size_t i = 0; i < n; ++i) g_[i] = std::max(w_[i], box(points[i]));
@@ -88,13 +130,51 @@ class Level {
   size_t evaluations = 0;
 
  private:
+  // d_ at the points: far from the body's surface (a block with no facet within reach, nearest pixel
+  // first) the block's side is all that matters; elsewhere the exact distance.
+  void body_distances(const std::vector<Point2>& points) {
+    const size_t n = points.size();
+    d_.resize(n);
+    near_points_.clear();
+    near_index_.clear();
+    for (size_t i = 0; i < n; ++i) {
+      BodyLayer::Place place = BodyLayer::Place::Mixed;
+      if (blocks_) {
+        const int pi = static_cast<int>(std::floor((points[i][0] - grid_origin_[0]) / pixel_));
+        const int pj = static_cast<int>(std::floor((points[i][1] - grid_origin_[1]) / pixel_));
+        if (pi >= 0 && pj >= 0 && pi < grid_size_[0] && pj < grid_size_[1]) {
+          double unused = 0;
+          place = blocks_->at(pi, pj, unused);
+        }
+      }
+      if (place == BodyLayer::Place::Deep) {
+        d_[i] = -kFarInside;
+      } else if (place == BodyLayer::Place::Outside) {
+        d_[i] = kFarInside;
+      } else {
+        near_points_.push_back(points[i]);
+        near_index_.push_back(i);
+      }
+    }
+    near_d_.resize(near_points_.size());
+    if (!near_points_.empty()) body_->distances(near_points_, z_, near_d_.data(), *body_query_);
+    for (size_t k = 0; k < near_index_.size(); ++k) d_[near_index_[k]] = near_d_[k];
+  }
+  static constexpr double kFarInside = 1e6;  // cell units: beyond every skin
+
   const wall::WallField& field_;
   wall::WallField::Worker worker_;
   std::array<int, 2> cells_;
   double z_;
   const BodyLayer* body_;
+  const BodyBlocks* blocks_;
+  double pixel_ = 1;
+  std::array<double, 2> grid_origin_{};
+  std::array<int, 2> grid_size_{};
   std::optional<BodyLayer::Query> body_query_;
-  std::vector<double> x_, y_, zs_, w_, g_, d_;
+  std::vector<double> x_, y_, zs_, w_, g_, d_, near_d_;
+  std::vector<Point2> near_points_;
+  std::vector<size_t> near_index_;
   std::vector<Point2> one_;
 };
 
@@ -204,42 +284,6 @@ struct Scratch {
 Scratch& scratch() {
   static thread_local Scratch s;
   return s;
-}
-
-// The body's distance on the marching grid's blocks (LayerSetup::body): where each block lies, and d
-// (pixels) of the Mixed ones.
-struct BodyBlocks {
-  int blocks_y = 0;
-  std::vector<BodyLayer::Place> place;  // block (bi, bj) at bi * blocks_y + bj
-  std::vector<int32_t> slot;            // a Mixed block's values at d[slot * 64]
-  std::vector<double> d;
-  BodyLayer::Place at(int i, int j, double& value) const {
-    const size_t b = static_cast<size_t>(i / wall::kLayerBlock) * blocks_y + j / wall::kLayerBlock;
-    if (place[b] == BodyLayer::Place::Mixed)
-      value = d[static_cast<size_t>(slot[b]) * wall::kLayerBlockPixels +
-                static_cast<size_t>((i % wall::kLayerBlock) * wall::kLayerBlock + j % wall::kLayerBlock)];
-    return place[b];
-  }
-};
-
-BodyBlocks body_blocks(const BodyLayer& body, const wall::LayerGrid& grid, const std::array<int, 2>& first, double z) {
-  BodyBlocks out;
-  const int bx = (grid.size[0] + wall::kLayerBlock - 1) / wall::kLayerBlock;
-  out.blocks_y = (grid.size[1] + wall::kLayerBlock - 1) / wall::kLayerBlock;
-  out.place.resize(static_cast<size_t>(bx) * out.blocks_y);
-  out.slot.assign(out.place.size(), -1);
-  BodyLayer::Query query(body);
-  std::array<double, wall::kLayerBlockPixels> d{};
-  for (int bi = 0; bi < bx; ++bi)
-    for (int bj = 0; bj < out.blocks_y; ++bj) {
-      const size_t b = static_cast<size_t>(bi) * out.blocks_y + bj;
-      out.place[b] =
-          body.block({first[0] + bi * wall::kLayerBlock, first[1] + bj * wall::kLayerBlock}, z, d.data(), query);
-      if (out.place[b] != BodyLayer::Place::Mixed) continue;
-      out.slot[b] = static_cast<int32_t>(out.d.size() / wall::kLayerBlockPixels);
-      out.d.insert(out.d.end(), d.begin(), d.end());
-    }
-  return out;
 }
 
 // The marching grid of one layer: pixel (i, j) centred at ((first_x + i + 1/2) p, (first_y + j + 1/2) p).
@@ -651,7 +695,7 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
   const wall::SampledLayer sampled = wall::sample_layer(field, grid, s.reach, s.use_field_bound, s.threads, {}, wanted);
   out.samples = sampled.samples;
   const MarchingGrid g(sampled, s, grid, first, body ? &*body : nullptr);
-  Level level(field, s);
+  Level level(field, s, body ? &*body : nullptr, &grid);
   const std::vector<int32_t>& next = march(g, level);
 
   // Every crossing's bracket, inside end first, and its linear estimate.

@@ -27,9 +27,11 @@ std::string svg_header(const PartLayout& part, const std::string& comment) {
   return fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:.6f}mm\" height=\"{1:.6f}mm\" "
-      "viewBox=\"{5:.6f} {2:.6f} {0:.6f} {1:.6f}\">\n"
+      "viewBox=\"{5} {2:.6f} {0:.6f} {1:.6f}\">\n"
       "<!-- {3}: {4}, mm, y up -->\n",
-      part.size[0], part.size[1], -(part.corner[1] + part.size[1]), part.label, comment, part.corner[0]);
+      part.size[0], part.size[1], -(part.corner[1] + part.size[1]), part.label, comment,
+      // A block's box starts at 0 (written so since the first version); a body's where it lies.
+      part.corner[0] == 0 ? std::string("0") : fmt::format("{:.6f}", part.corner[0]));
 }
 
 std::string svg_group(const LayerData& layer) {

@@ -82,9 +82,9 @@ process.exit(0);
 )";
 
 // Where Dawn's Node bindings are: $OFFSETGEN_WEBGPU; node_modules/webgpu in the working directory or
-// one above it (as node resolves `webgpu` from there); npm's global folders; the source tree this
-// offsetgen was built from, where tools/install_deps.sh installs them. Returns the package's index.js,
-// or throws ToolMissing saying where it looked.
+// one above it (as node resolves `webgpu` from there); npm's global folders; tests/wgsl of the source
+// tree that holds the directory of this executable, where tools/install_deps.sh installs them. Returns the package's
+// index.js, or throws ToolMissing saying where it looked.
 std::string find_webgpu() {
   const auto entry = [](const fs::path& dir) { return dir / "index.js"; };
   if (const char* env = std::getenv("OFFSETGEN_WEBGPU"); env != nullptr && *env != '\0') {
@@ -102,7 +102,14 @@ std::string find_webgpu() {
   }
   for (const char* global : {"/usr/local/lib/node_modules/webgpu", "/usr/lib/node_modules/webgpu"})
     looked.emplace_back(global);
-  looked.push_back(fs::path(OFFSETGEN_BUILT_FROM) / "tests" / "wgsl" / "node_modules" / "webgpu");
+  // The source tree around the build directory this offsetgen runs from (build/ or any folder in the
+  // tree): no path of the tree is compiled in, so an installed offsetgen names none.
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  for (fs::path dir = ec ? fs::path() : self.parent_path(); !dir.empty(); dir = dir.parent_path()) {
+    if (fs::is_regular_file(dir / "tests" / "wgsl" / "package.json", ec))
+      looked.push_back(dir / "tests" / "wgsl" / "node_modules" / "webgpu");
+    if (dir == dir.root_path()) break;
+  }
   std::string where;
   for (const fs::path& dir : looked) {
     if (fs::is_regular_file(entry(dir))) return entry(dir).string();
