@@ -511,9 +511,10 @@ std::string format_summary(const SliceSummary& m) {
   s += fmt::format("  contours:   {} loops, {} vertices; {} loops under {:.3g} mm^2 dropped\n", m.loops, m.vertices,
                    m.tiny_loops, m.tiny_area);
   s += fmt::format(
-      "  accuracy:   vertices on the wall's zero set; largest chord deviation measured {:.4g} mm "
+      "  accuracy:   vertices on the {}; largest chord deviation measured {:.4g} mm "
       "(--tolerance {:g} mm){}\n",
-      m.max_deviation, m.tolerance,
+      m.body.empty() ? "wall's zero set" : "part's boundary (the wall, the body or the core)", m.max_deviation,
+      m.tolerance,
       m.unverified_chords ? fmt::format(", {} chords not measured", m.unverified_chords) : std::string());
   if (!m.scan.empty())
     s += fmt::format("  scan:       {}: {} hatches, {:.3f} m of them\n", m.scan, m.hatches, m.hatch_length / 1000);
