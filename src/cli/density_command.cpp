@@ -83,20 +83,7 @@ int run_density(const DensityOptions& o) {
     j["solid"] = o.network ? "network" : "sheet";
     j["rho"] = rho;
     j[o.network ? "offset" : "thickness"] = value;
-    j["area"] = k.area;
-    j["area_error"] = k.area_error;
-    j["chi"] = k.euler_characteristic;
-    j["gauss_integral"] = k.gauss_integral;
-    j["chi_residual"] = k.chi_residual;
-    j["volume_inside"] = k.volume_inside;
-    j["volume_error"] = k.volume_error;
-    j["mean_integral"] = k.mean_integral;
-    j["mean_error"] = k.mean_error;
-    j["max_curvature"] = k.max_curvature;
-    j["thickness_limit"] = m.thickness_limit();
-    j["density_limit"] = m.sheet_density_limit();
-    j["offset_limit"] = m.offset_limit();
-    j["network_density_range"] = {m.network_density_min(), m.network_density_max()};
+    j.update(density::constants_json(m, true));
     fmt::print("{}\n", j.dump(2));
     return kExitOk;
   }

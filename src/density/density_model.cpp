@@ -1,5 +1,7 @@
 #include "density/density_model.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -131,6 +133,26 @@ GiNaC::ex thickness_for_density_expression(const DensityModel& m, const GiNaC::e
   for (int i = 0; i < kSheetNewtonSteps; ++i)
     t = t - (a * t + c * GiNaC::pow(t, 3) - rho) / (a + 3 * c * GiNaC::pow(t, 2));
   return t;
+}
+
+nlohmann::ordered_json constants_json(const DensityModel& model, bool with_errors) {
+  const SurfaceConstants& k = model.constants();
+  nlohmann::ordered_json j;
+  j["area"] = k.area;
+  if (with_errors) j["area_error"] = k.area_error;
+  j["chi"] = k.euler_characteristic;
+  j["gauss_integral"] = k.gauss_integral;
+  if (with_errors) j["chi_residual"] = k.chi_residual;
+  j["volume_inside"] = k.volume_inside;
+  if (with_errors) j["volume_error"] = k.volume_error;
+  j["mean_integral"] = k.mean_integral;
+  if (with_errors) j["mean_error"] = k.mean_error;
+  j["max_curvature"] = k.max_curvature;
+  j["thickness_limit"] = model.thickness_limit();
+  j["density_limit"] = model.sheet_density_limit();
+  j["offset_limit"] = model.offset_limit();
+  j["network_density_range"] = {model.network_density_min(), model.network_density_max()};
+  return j;
 }
 
 }  // namespace offsetgen::density

@@ -12,6 +12,7 @@
 #include "lowering/program.h"
 
 #include <ginac/ginac.h>
+#include <nlohmann/json_fwd.hpp>
 
 namespace offsetgen::density {
 
@@ -45,6 +46,12 @@ class DensityModel {
   SurfaceConstants constants_;
   double sheet_limit_ = 0, network_min_ = 0, network_max_ = 0;
 };
+
+// The surface's constants and the model's limits as JSON, in the order `offsetgen density --json` and a
+// generated file's metadata ("density") print them: area, chi, the Gauss integral, V_0, integral H dA,
+// k_max, t_max, rho_max, h_max and the network's density range. `with_errors` adds each quadrature's
+// error after its value (and chi's residual), as `density --json` does.
+nlohmann::ordered_json constants_json(const DensityModel& model, bool with_errors);
 
 // Newton steps the emitted inverses take; enough for double precision over the whole valid range
 // (tests/density measure it on every catalog surface).

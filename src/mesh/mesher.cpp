@@ -328,13 +328,27 @@ void write_part(const MeshRequest& s, const TriangleMesh& mesh, MeshSummary& m, 
   m.stages.push_back({"write", seconds_since(start)});
 }
 
-MeshSummary run_block(const MeshRequest& s, MeshSummary m, wall::WallField& field, const ProgressCallback& progress) {
-  const auto range = field.thickness_range(s.cells);
+// The wall's thickness over the part (a block's cells or a body's box) and what the voxels are sized by.
+void record_wall_range(const MeshRequest& s, const wall::WallField& field, const std::array<double, 2>& range,
+                       MeshSummary& m) {
   m.min_thickness = range[0];
   m.max_thickness = range[1];
   m.extent = field.extent(range);
   m.network = s.wall.network;
   m.automatic_resolution = s.resolution == 0 && s.voxel == 0;
+}
+
+// Compiles and loads the wall's functions, once the request has passed the checks that need no compiler.
+void compile_wall(wall::WallField& field, MeshSummary& m, const ProgressCallback& progress) {
+  progress("compiling the functions", -1);
+  field.compile();
+  m.stages.push_back({"compile", field.compile_seconds()});
+  m.compile_flags = field.compile_flags();
+}
+
+MeshSummary run_block(const MeshRequest& s, MeshSummary m, wall::WallField& field, const ProgressCallback& progress) {
+  const auto range = field.thickness_range(s.cells);
+  record_wall_range(s, field, range, m);
   if (s.voxel > 0) {
     const double per_cell = s.cell_size / s.voxel;
     if (std::abs(per_cell - std::round(per_cell)) > 1e-6 * per_cell)
@@ -356,10 +370,7 @@ MeshSummary run_block(const MeshRequest& s, MeshSummary m, wall::WallField& fiel
                     "lower --resolution or --cells",
                     s.cells[0], s.cells[1], s.cells[2], m.resolution, voxels, kMaxVoxels));
 
-  progress("compiling the functions", -1);
-  field.compile();
-  m.stages.push_back({"compile", field.compile_seconds()});
-  m.compile_flags = field.compile_flags();
+  compile_wall(field, m, progress);
 
   VoxelGrid grid;
   grid.resolution = m.resolution;
@@ -399,11 +410,7 @@ MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& 
     longest = std::max(longest, hi[a] - lo[a]);
   }
   const auto range = field.thickness_range(lo, hi);
-  m.min_thickness = range[0];
-  m.max_thickness = range[1];
-  m.extent = field.extent(range);
-  m.network = s.wall.network;
-  m.automatic_resolution = s.resolution == 0 && s.voxel == 0;
+  record_wall_range(s, field, range, m);
   if (s.voxel > 0) {
     b.voxel = s.voxel;
   } else {
@@ -433,10 +440,7 @@ MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& 
                     "(or --resolution)",
                     b.voxel, voxels, kMaxBodyVoxels));
 
-  progress("compiling the functions", -1);
-  field.compile();
-  m.stages.push_back({"compile", field.compile_seconds()});
-  m.compile_flags = field.compile_flags();
+  compile_wall(field, m, progress);
   StageClock clock(m.stages);
 
   progress("indexing the body's facets", -1);

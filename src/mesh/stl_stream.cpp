@@ -2,6 +2,7 @@
 
 #include "mesh/mesh_files.h"
 #include "surfaces/input_error.h"
+#include "validate/share_range.h"
 
 #include <fmt/format.h>
 
@@ -64,14 +65,7 @@ void StlStream::commit() {
 }
 
 MergeReport merge_stl_parts(const std::vector<std::string>& parts, const std::string& output) {
-  if (parts.empty()) throw InputError("--merge: no parts given");
-  std::vector<std::string> all = parts;
-  all.push_back(output);
-  try {
-    require_distinct(all);
-  } catch (const std::runtime_error& e) {
-    throw InputError(std::string("--merge: ") + e.what());
-  }
+  check_merge_paths(parts, output);
   std::vector<Part> heads;
   for (const auto& path : parts) {
     heads.push_back(read_part_header(path));

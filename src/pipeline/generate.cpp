@@ -1,6 +1,6 @@
 #include "pipeline/generate.h"
 
-#include "density/surface_constants.h"
+#include "density/density_model.h"
 #include "emit/emitted_api.h"
 #include "emit/render.h"
 #include "lowering/lower.h"
@@ -56,19 +56,7 @@ nlohmann::ordered_json metadata(const GenerationRequest& request, const Generati
     j["domain"] = {lo, hi};
   }
   if (g.density) {  // only in files with density functions, so other files keep their bytes
-    const density::SurfaceConstants& k = g.density->constants();
-    nlohmann::ordered_json d;
-    d["area"] = k.area;
-    d["chi"] = k.euler_characteristic;
-    d["gauss_integral"] = k.gauss_integral;
-    d["volume_inside"] = k.volume_inside;
-    d["mean_integral"] = k.mean_integral;
-    d["max_curvature"] = k.max_curvature;
-    d["thickness_limit"] = g.density->thickness_limit();
-    d["density_limit"] = g.density->sheet_density_limit();
-    d["offset_limit"] = g.density->offset_limit();
-    d["network_density_range"] = {g.density->network_density_min(), g.density->network_density_max()};
-    j["density"] = d;
+    j["density"] = density::constants_json(*g.density, false);
     j["wall_density"] = request.density ? nlohmann::ordered_json(*request.density) : nlohmann::ordered_json();
     j["wall_thickness"] = g.wall_thickness ? nlohmann::ordered_json(*g.wall_thickness) : nlohmann::ordered_json();
     j["density_field"] =

@@ -569,15 +569,8 @@ std::string key_value(const std::string& key, const std::string& name) {
 }  // namespace
 
 LayerMergeReport merge_layer_parts(const std::vector<std::string>& parts, const std::string& output) {
-  if (parts.empty()) throw InputError("--merge: no parts given");
   if (output.empty()) throw InputError("--merge: no output file: use -o part.cli (or .svg, .sl1, .sl1s)");
-  std::vector<std::string> all = parts;
-  all.push_back(output);
-  try {
-    require_distinct(all);
-  } catch (const std::runtime_error& e) {
-    throw InputError(std::string("--merge: ") + e.what());
-  }
+  check_merge_paths(parts, output);
   std::vector<PartHead> heads;
   for (size_t i = 0; i < parts.size(); ++i) {
     heads.push_back(read_part_head(parts[i]));

@@ -36,19 +36,23 @@ uint32_t crc_of(const std::string& s) {
 
 ZipStream::ZipStream(const std::string& path) : file_(path), path_(path) {}
 
+void ZipStream::put_shared_fields(std::string& out, const Entry& e) {
+  put16(out, 10);  // version needed: stored
+  put16(out, 0);   // flags
+  put16(out, 0);   // stored
+  put16(out, kDosTime);
+  put16(out, kDosDate);
+  put32(out, e.crc);
+  put32(out, e.size);
+  put32(out, e.size);
+  put16(out, static_cast<uint32_t>(e.name.size()));
+  put16(out, 0);  // extra
+}
+
 std::string ZipStream::local_header(const Entry& e) const {
   std::string h;
   put32(h, 0x04034b50);
-  put16(h, 10);  // version needed: stored
-  put16(h, 0);   // flags
-  put16(h, 0);   // stored
-  put16(h, kDosTime);
-  put16(h, kDosDate);
-  put32(h, e.crc);
-  put32(h, e.size);
-  put32(h, e.size);
-  put16(h, static_cast<uint32_t>(e.name.size()));
-  put16(h, 0);
+  put_shared_fields(h, e);
   h += e.name;
   return h;
 }
@@ -85,16 +89,7 @@ void ZipStream::finish() {
   for (const Entry& e : entries_) {
     put32(dir, 0x02014b50);
     put16(dir, 20);  // made by: MS-DOS attributes, zip 2.0
-    put16(dir, 10);
-    put16(dir, 0);
-    put16(dir, 0);
-    put16(dir, kDosTime);
-    put16(dir, kDosDate);
-    put32(dir, e.crc);
-    put32(dir, e.size);
-    put32(dir, e.size);
-    put16(dir, static_cast<uint32_t>(e.name.size()));
-    put16(dir, 0);  // extra
+    put_shared_fields(dir, e);
     put16(dir, 0);  // comment
     put16(dir, 0);  // disk
     put16(dir, 0);  // internal attributes

@@ -29,6 +29,9 @@ class ZipStream {
     uint64_t offset = 0;
   };
   std::string local_header(const Entry& e) const;
+  // The fields a local header and the central directory's record share, from "version needed" to
+  // the extra field's length.
+  static void put_shared_fields(std::string& out, const Entry& e);
   StreamedFile file_;
   std::string path_;
   std::vector<Entry> entries_;

@@ -1,11 +1,13 @@
 #include "validate/share_range.h"
 
+#include "emit/file_writer.h"
 #include "surfaces/input_error.h"
 
 #include <fmt/format.h>
 
 #include <cctype>
 #include <exception>
+#include <stdexcept>
 
 namespace offsetgen {
 
@@ -35,6 +37,17 @@ std::pair<int, int> parse_share(const std::string& text, const std::string& opti
 std::pair<size_t, size_t> share_of(size_t total, int index, int count) {
   const auto share = [&](int i) { return total * static_cast<size_t>(i) / static_cast<size_t>(count); };
   return {share(index), share(index + 1)};
+}
+
+void check_merge_paths(const std::vector<std::string>& parts, const std::string& output) {
+  if (parts.empty()) throw InputError("--merge: no parts given");
+  std::vector<std::string> all = parts;
+  all.push_back(output);
+  try {
+    require_distinct(all);
+  } catch (const std::runtime_error& e) {
+    throw InputError(std::string("--merge: ") + e.what());
+  }
 }
 
 }  // namespace offsetgen

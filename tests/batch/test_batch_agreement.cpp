@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <random>
 #include <vector>
@@ -98,12 +97,6 @@ void check_random_agreement() {
       EXPECT_LE(quantile(batch_error, q), 1.5 * quantile(scalar_error, q) + eps) << "quantile " << q;
     }
     EXPECT_LE(quantile(batch_error, 1.0), 2.0 * quantile(scalar_error, 1.0) + 10 * eps);
-    std::printf(
-        "  %-28s within %.0e: %7.3f%%   error vs reference: scalar p50 %.1e p99 %.1e max %.1e | "
-        "batch p50 %.1e p99 %.1e max %.1e\n",
-        f.label().c_str(), kAgree<T>, 100 * within, quantile(scalar_error, 0.5), quantile(scalar_error, 0.99),
-        quantile(scalar_error, 1.0), quantile(batch_error, 0.5), quantile(batch_error, 0.99),
-        quantile(batch_error, 1.0));
   }
 }
 

@@ -656,7 +656,6 @@ TEST(SlowBodyFiles, AMillionTriangleBinaryStlIsReadInSeconds) {
   const auto start = std::chrono::steady_clock::now();
   const BodyMesh mesh = parse_body(bytes, BodyFormat::Stl, "torus.stl");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("parse of %zu triangles: %.3f s\n", mesh.triangles.size(), seconds);
   EXPECT_EQ(mesh.triangles.size(), size_t(2) * nu * nv);
   EXPECT_EQ(mesh.points.size(), size_t(nu) * nv);
   EXPECT_LT(seconds, 5.0);

@@ -1,5 +1,7 @@
 #include "check_test_support.h"
 
+#include <utility>
+
 namespace offsetgen::check::testing {
 
 std::string write_header(const std::string& dir, const std::string& surface, int order, const std::string& thickness,
@@ -28,6 +30,20 @@ std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order,
   options.cxx = false;
   c->result = run::compile_and_load(c->path, c->meta, run::find_toolchain(), options);
   return c;
+}
+
+ThicknessOptions thickness_options(std::vector<double> h, int grid) {
+  ThicknessOptions o;
+  o.h = std::move(h);
+  o.grid = grid;
+  o.scan = 100;
+  return o;
+}
+
+std::vector<double> column(const ThicknessReport& r, ErrorStats SweepRow::*member) {
+  std::vector<double> v;
+  for (const auto& row : r.rows) v.push_back((row.*member).mean);
+  return v;
 }
 
 }  // namespace offsetgen::check::testing

@@ -2,6 +2,7 @@
 // the CLI, scratch directories and files come from tests/support.
 #pragma once
 
+#include "check/thickness.h"
 #include "offsetgen_test_support.h"
 #include "pipeline/generate.h"
 #include "run/c_library.h"
@@ -33,5 +34,12 @@ struct Compiled {
 };
 std::unique_ptr<Compiled> compile_catalog(const std::string& surface, int order, const std::string& thickness = "",
                                           const std::string& method = kDefaultMethod);
+
+// The paper's measurement (section 5.2.1) at offsets h on a coarser grid than the paper's: grid 11
+// (x, y step 0.1) by default, 21 for the paper's 0.05; 100 scan steps per ray.
+ThicknessOptions thickness_options(std::vector<double> h, int grid = 11);
+
+// One column of a sweep's table: the mean of `member` at each h.
+std::vector<double> column(const ThicknessReport& r, ErrorStats SweepRow::*member);
 
 }  // namespace offsetgen::check::testing

@@ -12,20 +12,6 @@
 namespace offsetgen::check {
 namespace {
 
-ThicknessOptions fast_options(std::vector<double> h) {
-  ThicknessOptions o;
-  o.h = std::move(h);
-  o.grid = 11;  // x, y step 0.1
-  o.scan = 100;
-  return o;
-}
-
-std::vector<double> column(const ThicknessReport& r, ErrorStats SweepRow::*member) {
-  std::vector<double> v;
-  for (const auto& row : r.rows) v.push_back((row.*member).mean);
-  return v;
-}
-
 class Convergence : public ::testing::TestWithParam<std::tuple<const char*, int>> {};
 
 TEST_P(Convergence, SlopeMatchesTheOrderBothWays) {
@@ -36,7 +22,7 @@ TEST_P(Convergence, SlopeMatchesTheOrderBothWays) {
   // mean curvature ~ 0), so its asymptotic range starts below h ~ 0.002; measure order 1 lower.
   const std::vector<double> h = order == 1 ? std::vector<double>{0.000125, 0.00025, 0.0005, 0.001}
                                            : std::vector<double>{0.00125, 0.0025, 0.005, 0.01};
-  ThicknessReport r = measure_constant(make_probe(c->functions()), fast_options(h));
+  ThicknessReport r = measure_constant(make_probe(c->functions()), testing::thickness_options(h));
   EXPECT_GT(r.samples_on_f, 100);
   for (const auto& row : r.rows) {
     EXPECT_EQ(row.f_to_phi.missed, 0) << "h = " << row.h;
@@ -44,26 +30,25 @@ TEST_P(Convergence, SlopeMatchesTheOrderBothWays) {
     EXPECT_EQ(row.shell.missed, 0) << "h = " << row.h;
     EXPECT_EQ(row.f_to_phi.crossed, r.samples_on_f);
   }
-  const double forward = loglog_slope(h, column(r, &SweepRow::f_to_phi));
-  const double backward = loglog_slope(h, column(r, &SweepRow::phi_to_f));
+  const double forward = loglog_slope(h, testing::column(r, &SweepRow::f_to_phi));
+  const double backward = loglog_slope(h, testing::column(r, &SweepRow::phi_to_f));
   EXPECT_NEAR(forward, order, 0.3) << surface << " o" << order << " F -> phi";
   EXPECT_NEAR(backward, order, 0.3) << surface << " o" << order << " phi -> F";
-  std::cout << surface << " o" << order << ": slopes " << forward << " / " << backward << ", error at h = " << h.back()
-            << ": " << r.rows.back().f_to_phi.mean << "\n";
 }
 
 INSTANTIATE_TEST_SUITE_P(CatalogOrders1To4, Convergence,
                          ::testing::Combine(::testing::Values("gyroid", "schwarzp", "neovius"),
                                             ::testing::Values(1, 2, 3, 4)),
                          [](const auto& param_info) {
-                           return std::string(std::get<0>(param_info.param)) + "_o" + std::to_string(std::get<1>(param_info.param));
+                           return std::string(std::get<0>(param_info.param)) + "_o" +
+                                  std::to_string(std::get<1>(param_info.param));
                          });
 
 double error_at_one_percent(const char* surface, int order) {
   auto c = testing::compile_catalog(surface, order);
   EXPECT_TRUE(c->result.ok);
   if (!c->result.ok) return 1;
-  ThicknessReport r = measure_constant(make_probe(c->functions()), fast_options({0.01}));
+  ThicknessReport r = measure_constant(make_probe(c->functions()), testing::thickness_options({0.01}));
   EXPECT_EQ(r.rows.at(0).f_to_phi.missed, 0);
   EXPECT_EQ(r.rows.at(0).phi_to_f.missed, 0);
   return std::max(r.rows.at(0).f_to_phi.mean, r.rows.at(0).phi_to_f.mean);
@@ -72,14 +57,12 @@ double error_at_one_percent(const char* surface, int order) {
 TEST(Convergence, PaperHeadlineOrder4GyroidBelow1e6AtOnePercent) {
   const double e = error_at_one_percent("gyroid", 4);
   EXPECT_LT(e, 1e-6);
-  std::cout << "gyroid o4 at h = 0.01: " << e << "\n";
 }
 
 TEST(Convergence, Order6Below1e9AtOnePercentOnGyroidAndSchwarzP) {
   for (const char* surface : {"gyroid", "schwarzp"}) {
     const double e = error_at_one_percent(surface, 6);
     EXPECT_LT(e, 1e-9) << surface;
-    std::cout << surface << " o6 at h = 0.01: " << e << "\n";
   }
 }
 

@@ -48,8 +48,6 @@ TEST(Graded, SecondOrderMeetsThePapersThreshold) {
   EXPECT_NEAR(loglog_slope(h, total), 2.0, 0.3);
   EXPECT_NEAR(loglog_slope(h, means(r, &GradedRow::paper, nullptr)), 2.0, 0.3);
   EXPECT_NEAR(loglog_slope(h, means(r, &GradedRow::one_sided, nullptr)), 1.0, 0.3);
-  std::cout << "gyroid o2, t = 0.01 x: total " << given.total.mean << ", paper " << given.paper.mean << ", one-sided "
-            << given.one_sided.mean << "\n";
 }
 
 TEST(Graded, HigherOrdersStayAtSecondOrderAndOneSidedAtFirst) {

@@ -13,20 +13,6 @@
 namespace offsetgen::check {
 namespace {
 
-ThicknessOptions options(std::vector<double> h, int grid = 11) {
-  ThicknessOptions o;
-  o.h = std::move(h);
-  o.grid = grid;  // 11: x, y step 0.1; 21: the paper's 0.05
-  o.scan = 100;
-  return o;
-}
-
-std::vector<double> column(const ThicknessReport& r, ErrorStats SweepRow::*member) {
-  std::vector<double> v;
-  for (const auto& row : r.rows) v.push_back((row.*member).mean);
-  return v;
-}
-
 struct Case {
   std::string surface;
   int order;
@@ -41,16 +27,16 @@ TEST_P(ProjectionConvergence, SlopeMatchesTheOrderBothWays) {
   auto compiled = testing::compile_catalog(c.surface, c.order, "", "projection");
   ASSERT_TRUE(compiled->result.ok) << compiled->result.steps.front().output;
   // phi -> F starts from points on phi = 0, whose sample at high order needs the paper's grid.
-  ThicknessReport r = measure_constant(make_probe(compiled->functions()), options(c.h, c.order >= 6 ? 21 : 11));
+  ThicknessReport r =
+      measure_constant(make_probe(compiled->functions()), testing::thickness_options(c.h, c.order >= 6 ? 21 : 11));
   for (const auto& row : r.rows) {
     EXPECT_EQ(row.f_to_phi.missed, 0) << "h = " << row.h;
     EXPECT_EQ(row.phi_to_f.missed, 0) << "h = " << row.h;
   }
-  const double forward = loglog_slope(c.h, column(r, &SweepRow::f_to_phi));
-  const double backward = loglog_slope(c.h, column(r, &SweepRow::phi_to_f));
+  const double forward = loglog_slope(c.h, testing::column(r, &SweepRow::f_to_phi));
+  const double backward = loglog_slope(c.h, testing::column(r, &SweepRow::phi_to_f));
   EXPECT_NEAR(forward, c.order, 0.3) << "F -> phi";
   EXPECT_NEAR(backward, c.order, 0.3) << "phi -> F";
-  std::cout << c.surface << " projection o" << c.order << ": slopes " << forward << " / " << backward << "\n";
 }
 
 std::vector<Case> cases() {
@@ -74,7 +60,7 @@ double error_at_one_percent(const std::string& surface, int order) {
   auto c = testing::compile_catalog(surface, order, "", "projection");
   EXPECT_TRUE(c->result.ok);
   if (!c->result.ok) return 1;
-  ThicknessReport r = measure_constant(make_probe(c->functions()), options({0.01}));
+  ThicknessReport r = measure_constant(make_probe(c->functions()), testing::thickness_options({0.01}));
   return std::max(r.rows.at(0).f_to_phi.mean, r.rows.at(0).phi_to_f.mean);
 }
 
@@ -100,7 +86,7 @@ TEST(ProjectionGraded, LinearThicknessConvergesAtOrderFourAtOrderEight) {
   auto program = std::make_shared<Program>(lower_graded_wall(g.surface, *g.construction, t));
   auto wall = std::make_shared<Evaluator>(*program);
   probe.graded_wall = [program, wall](const double* q, double s) { return (*wall)({q[0], q[1], q[2], s}).at(0); };
-  GradedReport r = measure_graded(probe, thickness, "0.01*x", true, options({0.0025, 0.005, 0.01}));
+  GradedReport r = measure_graded(probe, thickness, "0.01*x", true, testing::thickness_options({0.0025, 0.005, 0.01}));
   ASSERT_TRUE(r.fit_one_sided.fitted);
   EXPECT_GE(r.fit_one_sided.slope, 3.8);
   EXPECT_GE(r.fit_total.slope, 3.8);
@@ -108,8 +94,6 @@ TEST(ProjectionGraded, LinearThicknessConvergesAtOrderFourAtOrderEight) {
   ASSERT_TRUE(given.as_given && given.compiled_graded);
   EXPECT_LT(given.one_sided.mean, 1e-7);
   EXPECT_LT(given.total.mean, 1e-7);
-  std::cout << "graded o8: slopes " << r.fit_one_sided.slope << " (wall) " << r.fit_total.slope
-            << " (total); mean error as given " << given.one_sided.mean << "\n";
 }
 
 }  // namespace

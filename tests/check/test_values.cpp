@@ -39,7 +39,6 @@ TEST_P(Values, ZeroSetShiftBelow1e12) {
     saw_shell |= f.function == "shell";
   }
   EXPECT_TRUE(saw_offset && saw_shell);
-  std::cout << method << " " << surface << " o" << order << ": max zero-set shift " << r.max_shift_double << "\n";
 }
 
 std::string case_name(const ::testing::TestParamInfo<ValueCase>& param_info) {

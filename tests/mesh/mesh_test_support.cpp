@@ -13,7 +13,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -86,49 +85,6 @@ double ExactWalls::phi(const double p[3], double h) const { return compiled_->li
 
 double ExactWalls::w(const double p[3]) const { return std::max(phi(p, 0.5 * t_), -phi(p, -0.5 * t_)); }
 
-double wall_volume_per_cell(const ExactWalls& walls, int n, int scan) {
-  double total = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      double p[3] = {(i + 0.5) / n, (j + 0.5) / n, 0};
-      auto w_at = [&](double z) {
-        p[2] = z;
-        return walls.w(p);
-      };
-      auto crossing = [&](double a, double b, double wa) {
-        for (int k = 0; k < 60 && b - a > 1e-13; ++k) {
-          const double m = 0.5 * (a + b);
-          const double wm = w_at(m);
-          if ((wm <= 0) == (wa <= 0)) {
-            a = m;
-            wa = wm;
-          } else {
-            b = m;
-          }
-        }
-        return 0.5 * (a + b);
-      };
-      double length = 0, z0 = 0, w0 = w_at(0);
-      double start = w0 <= 0 ? 0 : -1;
-      for (int k = 1; k <= scan; ++k) {
-        const double z1 = double(k) / scan, w1 = w_at(z1);
-        if ((w0 <= 0) != (w1 <= 0)) {
-          const double z = crossing(z0, z1, w0);
-          if (w1 <= 0) {
-            start = z;
-          } else {
-            length += z - start;
-          }
-        }
-        z0 = z1;
-        w0 = w1;
-      }
-      if (w0 <= 0) length += 1 - start;
-      total += length;
-    }
-  return total / (double(n) * n);
-}
-
 void expect_clean_part(const Case& c) {
   const std::string dir = scratch_dir("admesh-" + c.name);
   const std::string stl = dir + "/part.stl";
@@ -146,7 +102,6 @@ void expect_clean_part(const Case& c) {
   EXPECT_EQ(report["facets reversed"], 0) << raw;
   EXPECT_EQ(report["parts"], 1) << raw;
   EXPECT_GT(stl_volume(read_stl(stl)), 0) << "facets face inward";
-  std::cout << r.output;
 }
 
 constexpr double kPi = 3.14159265358979323846;

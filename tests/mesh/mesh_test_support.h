@@ -54,11 +54,6 @@ class ExactWalls {
   double t_;
 };
 
-// Volume of the wall inside [0, 1]^3 by column integration: an n x n midpoint grid in (x, y); along
-// each column z in [0, 1] the wall's intervals are bracketed by a scan of `scan` steps and their ends
-// refined by bisection to 1e-13.
-double wall_volume_per_cell(const ExactWalls& walls, int n, int scan);
-
 // Bodies whose insides are known in closed form, for --body.
 // An icosphere of radius r about c: the icosahedron, each triangle split in 4 `levels` times.
 TriangleMesh sphere(double r, const std::array<double, 3>& c, int levels);

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 #include <map>
 
 namespace offsetgen::mesh::testing {
@@ -51,7 +50,6 @@ TEST(MeshBody, SphereWithSkinIsOneCleanSolidWithTheClosedFormVolume) {
   CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--density", "0.3", "--body", dir + "/sphere.stl", "--skin",
                             "1.5", "--cell-size", "6", "--voxel", "0.25", "-o", dir + "/part.stl"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::cout << r.output;
   expect_admesh_clean(dir + "/part.stl", summary_number(r.output, " mm over "));
   const double voxel = 0.25;
   // The outer surface is the sphere; nothing lies inside the skin; cavities begin at R - s.
@@ -65,8 +63,6 @@ TEST(MeshBody, SphereWithSkinIsOneCleanSolidWithTheClosedFormVolume) {
   const double core = 4.0 / 3 * kPi * std::pow(kRadius - kSkin, 3);
   const double expected = 4.0 / 3 * kPi * std::pow(kRadius, 3) - core + 0.3 * core;
   const double volume = stl_volume(read_stl(dir + "/part.stl"));
-  std::cout << "sphere part volume " << volume << " mm^3, closed form " << expected << " ("
-            << 100 * (volume / expected - 1) << "%)\n";
   // About 27 cells in the core: the lattice's share of it is within a few percent of rho.
   EXPECT_NEAR(volume / expected, 1, 0.02);
 }
@@ -111,7 +107,6 @@ TEST(MeshBody, TorusKeepsItsHoleAndHasTheClosedFormVolume) {
   CliRun r = run_offsetgen({"mesh", "--surface", "diamond", "--density", "0.35", "--body", dir + "/torus.stl", "--skin",
                             "1", "--cell-size", "5", "--voxel", "0.2", "-o", dir + "/part.stl"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::cout << r.output;
   expect_admesh_clean(dir + "/part.stl", summary_number(r.output, " mm over "));
   double nearest_axis = HUGE_VAL;
   for (const auto& f : read_stl(dir + "/part.stl"))
@@ -120,8 +115,6 @@ TEST(MeshBody, TorusKeepsItsHoleAndHasTheClosedFormVolume) {
   const double body = 2 * kPi * kPi * big * small * small, core = 2 * kPi * kPi * big * std::pow(small - skin, 2);
   const double expected = body - core + 0.35 * core;
   const double volume = stl_volume(read_stl(dir + "/part.stl"));
-  std::cout << "torus part volume " << volume << " mm^3, closed form " << expected << " ("
-            << 100 * (volume / expected - 1) << "%)\n";
   EXPECT_NEAR(volume / expected, 1, 0.02);
 }
 
@@ -134,7 +127,6 @@ TEST(MeshMap, TorusAroundTheAxisIsFilledWithACylindricalLattice) {
   CliRun r = run_offsetgen({"mesh", "--surface", "gyroid", "--map", "cylindrical:12,4,4", "--thickness", "0.6",
                             "--body", dir + "/torus.stl", "--skin", "1", "--voxel", "0.15", "-o", dir + "/part.stl"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::cout << r.output;
   EXPECT_NE(r.output.find("map:        u = sqrt(x^2+y^2)/(4)"), std::string::npos);
   EXPECT_NE(r.output.find("lies outside the body"), std::string::npos);
   expect_admesh_clean(dir + "/part.stl", summary_number(r.output, " mm over "));

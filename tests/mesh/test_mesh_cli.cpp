@@ -1,7 +1,9 @@
 // `offsetgen mesh` as a user runs it: the parts are closed, oriented, one piece (admesh), their
 // volume matches the exact wall volume, vertices lie on the exact walls; bad input exits 2 and
 // writes nothing.
+#include "exact_wall_volume.h"
 #include "mesh_test_support.h"
+#include "sibling_executable.h"
 
 #include "mesh/mesh_3mf.h"
 #include "run/process.h"
@@ -90,18 +92,12 @@ class MeshAccuracy : public ::testing::Test {
 };
 
 TEST_F(MeshAccuracy, VolumeIsWithinHalfAPercentOfTheExactWallVolume) {
-  // The block is 2^3 whole cells of the periodic walls: its exact volume is 8 cells' worth.
-  // Column integration at n = 150 and 300 columns per axis; their difference bounds the error.
-  const double coarse = wall_volume_per_cell(*walls_, 150, 100);
-  const double fine = wall_volume_per_cell(*walls_, 300, 100);
-  const double exact = 8 * fine * 1000;  // mm^3: cells of 10 mm
-  const double quadrature_error = 8 * std::abs(fine - coarse) * 1000;
+  // The block is 2^3 whole cells of 10 mm of the periodic walls: its exact volume is 8 cells' worth.
+  const test_support::ExactWallVolume exact = test_support::exact_wall_volume("gyroid", "0.1", {2, 2, 2}, 10);
+  EXPECT_LT(exact.standard_error / exact.volume, 1e-3);
   const double mesh = stl_volume(*facets_);
-  const double relative = (mesh - exact) / exact;
-  std::cout << "exact wall volume " << exact << " mm^3 (quadrature difference " << quadrature_error << "), mesh "
-            << mesh << " mm^3, relative error " << relative << " at " << resolution_ << " voxels per cell\n";
-  EXPECT_LT(quadrature_error / exact, 1e-3);
-  EXPECT_LT(std::abs(relative), 0.005);
+  EXPECT_LT(std::abs(mesh - exact.volume) / exact.volume, 0.005)
+      << "mesh " << mesh << " mm^3, exact " << exact.volume << " mm^3 at " << resolution_ << " voxels per cell";
 }
 
 TEST_F(MeshAccuracy, VerticesLieWithinHalfAVoxelOfTheExactWalls) {
@@ -148,7 +144,6 @@ TEST_F(MeshAccuracy, VerticesLieWithinHalfAVoxelOfTheExactWalls) {
     worst = std::max(worst, nearest);
     if (nearest > half) ++far;
   }
-  std::cout << points.size() << " vertices; the farthest lies " << worst / voxel << " voxel from the walls\n";
   EXPECT_EQ(far, 0u) << "of " << points.size() << " vertices; worst " << worst / voxel << " voxel";
 }
 
@@ -227,7 +222,6 @@ TEST(MeshDensity, TheMeshedPartHasTheRequestedRelativeDensity) {
                             "--cell-size", "10", "-o", stl});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const double density = stl_volume(read_stl(stl)) / 1000;  // one cell of 10 mm
-  std::cout << "mesh relative density " << density << " for --density 0.2\n";
   EXPECT_NEAR(density, 0.2, 0.2 * 0.01);
   EXPECT_NE(r.output.find("; --density 0.2)"), std::string::npos) << r.output;
 }
@@ -241,7 +235,6 @@ TEST(MeshDensity, AGradedDensityFieldAveragesToItsMean) {
                             "--resolution", "96", "--cell-size", "10", "-o", stl});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const double density = stl_volume(read_stl(stl)) / 2000;  // two cells of 10 mm
-  std::cout << "mesh relative density " << density << " for rho = 0.3 - 0.1 x over x in [0, 2]\n";
   EXPECT_NEAR(density, 0.2, 0.2 * 0.02);
 }
 
@@ -328,31 +321,16 @@ TEST(MeshOutput, ThreeMfHoldsTheStlsTrianglesInMillimetresWithTheSameBytesEachRu
 // Only meshing loads OpenVDB and TBB: offsetgen execs offsetgen-mesh for `mesh`, so generate, list
 // and --version do not pay their start-up.
 TEST(MeshExecutable, OnlyOffsetgenMeshLinksOpenVdbAndTbb) {
-  const run::ProcessResult plain = run::run_process({"ldd", OFFSETGEN_EXE});
-  ASSERT_EQ(plain.exit_code, 0) << plain.output;
-  EXPECT_EQ(plain.output.find("libopenvdb"), std::string::npos) << plain.output;
-  EXPECT_EQ(plain.output.find("libtbb"), std::string::npos) << plain.output;
-  const run::ProcessResult mesher = run::run_process({"ldd", OFFSETGEN_MESH_EXE});
-  ASSERT_EQ(mesher.exit_code, 0) << mesher.output;
-  EXPECT_NE(mesher.output.find("libopenvdb"), std::string::npos) << mesher.output;
+  const std::string plain = test_support::shared_libraries(OFFSETGEN_EXE);
+  EXPECT_EQ(plain.find("libopenvdb"), std::string::npos) << plain;
+  EXPECT_EQ(plain.find("libtbb"), std::string::npos) << plain;
+  const std::string mesher = test_support::shared_libraries(OFFSETGEN_MESH_EXE);
+  EXPECT_NE(mesher.find("libopenvdb"), std::string::npos) << mesher;
 }
 
 TEST(MeshExecutable, WithoutOffsetgenMeshBesideItMeshSaysItIsMissingAndExits3) {
-  const std::string dir = scratch_dir("lone-offsetgen");
-  const std::string lone = dir + "/offsetgen";
-  fs::copy_file(OFFSETGEN_EXE, lone);
-  const run::ProcessResult r =
-      run::run_process({lone, "mesh", "--surface", "gyroid", "--thickness", "0.1", "-o", dir + "/part.stl"});
-  EXPECT_EQ(r.exit_code, 3) << r.output;
-  EXPECT_NE(r.output.find(dir + "/" + fs::path(OFFSETGEN_MESH_EXE).filename().string() + ", which is missing"),
-            std::string::npos)
-      << r.output;
-  EXPECT_FALSE(fs::exists(dir + "/part.stl"));
-  // The options are parsed once, by offsetgen-mesh: without it even --help says what is missing.
-  const run::ProcessResult help = run::run_process({lone, "mesh", "--help"});
-  EXPECT_EQ(help.exit_code, 3) << help.output;
-  EXPECT_NE(help.output.find("which is missing"), std::string::npos) << help.output;
-  EXPECT_EQ(run::run_process({lone, "mesh", "--bogus"}).exit_code, 3);
+  test_support::expect_a_missing_sibling_exits_3("mesh", OFFSETGEN_MESH_EXE,
+                                                 {"--surface", "gyroid", "--thickness", "0.1"}, "part.stl");
 }
 
 }  // namespace

@@ -3,15 +3,15 @@
 // exact wall volume (column quadrature of this process's own wall functions), the distance of exact
 // wall points (other lines than the tool's) to its faces. Bad input exits 2 and writes nothing; a
 // tolerance out of reach exits 1 and writes nothing.
-#include "numeric/volume_fraction.h"
-#include "run/process.h"
 #include "step/deviation.h"
 #include "step/step_file.h"
 #include "step/symmetry_patch.h"
 #include "step/wall_brep.h"
 #include "wall/wall_field.h"
 
+#include "exact_wall_volume.h"
 #include "offsetgen_test_support.h"
+#include "sibling_executable.h"
 
 #include <gtest/gtest.h>
 
@@ -169,27 +169,11 @@ TEST_P(StepCell, VolumeIsWithinAThousandthOfTheExactWallVolume) {
   const Written& w = one_cell(GetParam());
   ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
   const ShapeCheck c = check_shape(read_step(w.path));
-  const std::string& thickness = cell_case(GetParam()).thickness;
-  Walls walls(GetParam(), thickness);
-  const double t = std::stod(thickness);
-  wall::WallField::Worker& worker = walls.worker;
-  numeric::VolumeFractionSetup v;
-  v.g = [&](const double* p) {
-    double value = 0;
-    walls.field.walls(1, p, p + 1, p + 2, &value, worker);
-    return value;
-  };
-  v.field = [&](const double* p) { return walls.field.field(p[0], p[1], p[2]); };
-  v.field_slope_bound = walls.field.field_lipschitz();
-  v.band = walls.field.field_lipschitz() * 0.5 * t * (1 + 1e-9);
-  v.scan_step = t / 4;
-  numeric::VolumeFractionOptions options;
-  options.seed = 7;  // not the tool's
-  options.grid = cell_case(GetParam()).quadrature_grid;
-  const numeric::VolumeFraction exact = numeric::measure_volume_fraction(v, options);
-  const double exact_volume = exact.value * std::pow(kCellSize, 3);
-  EXPECT_LT(exact.standard_error / exact.value, 1e-4);
-  EXPECT_NEAR(c.volume, exact_volume, 1e-3 * exact_volume);
+  const CellCase& cell = cell_case(GetParam());
+  const test_support::ExactWallVolume exact =
+      test_support::exact_wall_volume(GetParam(), cell.thickness, {1, 1, 1}, kCellSize, cell.quadrature_grid);
+  EXPECT_LT(exact.standard_error / exact.volume, 1e-4);
+  EXPECT_NEAR(c.volume, exact.volume, 1e-3 * exact.volume);
 }
 
 TEST_P(StepCell, ExactWallsLieWithinTheToleranceOfItsFaces) {
@@ -367,30 +351,15 @@ INSTANTIATE_TEST_SUITE_P(Routes, StepSameBytes, ::testing::Values("schwarzp", "g
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 TEST(StepExecutable, OnlyOffsetgenStepLinksOpenCascade) {
-  const run::ProcessResult plain = run::run_process({"ldd", OFFSETGEN_EXE});
-  ASSERT_EQ(plain.exit_code, 0) << plain.output;
-  EXPECT_EQ(plain.output.find("libTKernel"), std::string::npos) << plain.output;
-  const run::ProcessResult step = run::run_process({"ldd", OFFSETGEN_STEP_EXE});
-  ASSERT_EQ(step.exit_code, 0) << step.output;
-  EXPECT_NE(step.output.find("libTKernel"), std::string::npos) << step.output;
+  const std::string plain = test_support::shared_libraries(OFFSETGEN_EXE);
+  EXPECT_EQ(plain.find("libTKernel"), std::string::npos) << plain;
+  const std::string step = test_support::shared_libraries(OFFSETGEN_STEP_EXE);
+  EXPECT_NE(step.find("libTKernel"), std::string::npos) << step;
 }
 
 TEST(StepExecutable, WithoutOffsetgenStepBesideItStepSaysItIsMissingAndExits3) {
-  const std::string dir = scratch_dir("lone-offsetgen");
-  const std::string lone = dir + "/offsetgen";
-  fs::copy_file(OFFSETGEN_EXE, lone);
-  const run::ProcessResult r =
-      run::run_process({lone, "step", "--surface", "schwarzp", "--thickness", "0.1", "-o", dir + "/p.step"});
-  EXPECT_EQ(r.exit_code, 3) << r.output;
-  EXPECT_NE(r.output.find(dir + "/" + fs::path(OFFSETGEN_STEP_EXE).filename().string() + ", which is missing"),
-            std::string::npos)
-      << r.output;
-  EXPECT_FALSE(fs::exists(dir + "/p.step"));
-  // The options are parsed once, by offsetgen-step: without it even --help says what is missing.
-  const run::ProcessResult help = run::run_process({lone, "step", "--help"});
-  EXPECT_EQ(help.exit_code, 3) << help.output;
-  EXPECT_NE(help.output.find("which is missing"), std::string::npos) << help.output;
-  EXPECT_EQ(run::run_process({lone, "step", "--bogus"}).exit_code, 3);
+  test_support::expect_a_missing_sibling_exits_3("step", OFFSETGEN_STEP_EXE,
+                                                 {"--surface", "schwarzp", "--thickness", "0.1"}, "p.step");
 }
 
 struct Refusal {
