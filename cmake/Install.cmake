@@ -105,8 +105,12 @@ write_basic_package_version_file("${PROJECT_BINARY_DIR}/offsetgenConfigVersion.c
 # --- Installation --------------------------------------------------------------------------------
 if(OFFSETGEN_INSTALL)
   install(TARGETS offsetgen EXPORT offsetgenTargets RUNTIME DESTINATION bin)
+  # `offsetgen mesh` and `offsetgen step` exec these from offsetgen's own directory (cli/siblings.h).
   if(TARGET offsetgen-mesh)
     install(TARGETS offsetgen-mesh RUNTIME DESTINATION bin)
+  endif()
+  if(TARGET offsetgen-step)
+    install(TARGETS offsetgen-step RUNTIME DESTINATION bin)
   endif()
   install(PROGRAMS "${PROJECT_SOURCE_DIR}/tools/plot_convergence.py" DESTINATION share/offsetgen/tools)
 

@@ -2,7 +2,7 @@
 # (the package and the executable must not care where they live) and checks that the executable
 # needs nothing beside it: its templates are compiled in, and it holds no path of the source tree.
 #   cmake -DOFFSETGEN_BINARY_DIR=<build> -DOFFSETGEN_SOURCE_DIR=<src> -DCONFIG=<build type>
-#         -DWORK_DIR=<scratch> [-DWITH_MESH=1] -P install_package.cmake
+#         -DWORK_DIR=<scratch> [-DWITH_MESH=1] [-DWITH_STEP=1] -P install_package.cmake
 # Leaves the relocated prefix in WORK_DIR/prefix for the consumer tests.
 cmake_minimum_required(VERSION 3.25)
 foreach(variable OFFSETGEN_BINARY_DIR OFFSETGEN_SOURCE_DIR CONFIG WORK_DIR)
@@ -42,6 +42,9 @@ set(expected bin/offsetgen share/offsetgen/tools/plot_convergence.py)
 if(WITH_MESH)  # built with OpenVDB: `offsetgen mesh` execs offsetgen-mesh from offsetgen's directory
   list(APPEND expected bin/offsetgen-mesh)
 endif()
+if(WITH_STEP)  # built with OpenCASCADE: `offsetgen step` execs offsetgen-step the same way
+  list(APPEND expected bin/offsetgen-step)
+endif()
 foreach(file offsetgenConfig.cmake offsetgenConfigVersion.cmake offsetgenTargets.cmake
              offsetgenGenerate.cmake offsetgenGlslString.cmake)
   list(APPEND expected "${CMAKEDIR}/${file}")
@@ -80,6 +83,15 @@ if(WITH_MESH)  # a small part, meshed through the installed pair
       -o "${WORK_DIR}/from_prefix.stl")
   if(NOT EXISTS "${WORK_DIR}/from_prefix.stl")
     message(FATAL_ERROR "the installed `offsetgen mesh` exited 0 but wrote no from_prefix.stl")
+  endif()
+endif()
+
+if(WITH_STEP)  # a small STEP block through the installed pair
+  file(REMOVE "${WORK_DIR}/from_prefix.step")
+  run("${prefix}/bin/offsetgen" step --surface schwarzp --thickness 0.1 --cells 1 --cell-size 10 -q
+      -o "${WORK_DIR}/from_prefix.step")
+  if(NOT EXISTS "${WORK_DIR}/from_prefix.step")
+    message(FATAL_ERROR "the installed `offsetgen step` exited 0 but wrote no from_prefix.step")
   endif()
 endif()
 
