@@ -525,16 +525,6 @@ std::vector<DensePoint> thin(const std::vector<DensePoint>& loop, double tol, do
   return kept;
 }
 
-double signed_area(const std::vector<Point2>& p) {
-  double a = 0;
-  for (size_t k = 0; k < p.size(); ++k) {
-    const Point2& u = p[k];
-    const Point2& v = p[(k + 1) % p.size()];
-    a += u[0] * v[1] - v[0] * u[1];
-  }
-  return 0.5 * a;
-}
-
 // Checks every chord at its midpoint: the contour's point along the chord's normal, within `tol` on
 // either side (the chord passes; its deviation recorded), or farther (that point becomes a vertex and
 // both halves are checked again). Cell units.
@@ -660,6 +650,16 @@ void verify_chords(std::vector<std::vector<Point2>>& loops, Level& level, double
 
 }  // namespace
 
+double polygon_area(const std::vector<Point2>& p) {
+  double a = 0;
+  for (size_t k = 0; k < p.size(); ++k) {
+    const Point2& u = p[k];
+    const Point2& v = p[(k + 1) % p.size()];
+    a += u[0] * v[1] - v[0] * u[1];
+  }
+  return 0.5 * a;
+}
+
 bool on_box_side(const LayerSetup& s, const Point2& mm, double eps_mm) {
   const double x = mm[0], y = mm[1], wx = s.cells[0] * s.cell_size, wy = s.cells[1] * s.cell_size;
   return std::abs(x) <= eps_mm || std::abs(x - wx) <= eps_mm || std::abs(y) <= eps_mm || std::abs(y - wy) <= eps_mm;
@@ -775,7 +775,7 @@ LayerContours layer_contours(const wall::WallField& field, const LayerSetup& s) 
     Loop loop;
     loop.points.reserve(l.size());
     for (const Point2& p : l) loop.points.push_back({p[0] * s.cell_size, p[1] * s.cell_size});
-    loop.area = signed_area(loop.points);
+    loop.area = polygon_area(loop.points);
     if (std::abs(loop.area) < s.tiny_area || loop.points.size() < 3) {
       ++out.tiny_loops;
       continue;

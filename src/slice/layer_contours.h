@@ -57,6 +57,9 @@ struct LayerContours {
 
 LayerContours layer_contours(const wall::WallField& field, const LayerSetup& setup);
 
+// The signed area of a closed polygon (shoelace): > 0 counter-clockwise.
+double polygon_area(const std::vector<Point2>& points);
+
 // A point's kind on the contour, for tests: on a side of the box (|box distance| within eps, cell units).
 bool on_box_side(const LayerSetup& setup, const Point2& mm, double eps_mm);
 

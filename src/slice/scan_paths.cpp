@@ -14,16 +14,6 @@ namespace {
 // Clipper works on integers: 1 nm per unit (a 1 m block is 1e9 units, well inside its 64-bit range).
 constexpr double kGridPerMm = 1e6;
 
-double shoelace(const std::vector<Point2>& p) {
-  double a = 0;
-  for (size_t k = 0; k < p.size(); ++k) {
-    const Point2& u = p[k];
-    const Point2& v = p[(k + 1) % p.size()];
-    a += u[0] * v[1] - v[0] * u[1];
-  }
-  return 0.5 * a;
-}
-
 double parse_number(const std::string& field, const std::string& text, const char* what) {
   size_t used = 0;
   double v = 0;
@@ -92,7 +82,7 @@ std::vector<Loop> offset_inward(const std::vector<Loop>& loops, double distance,
     loop.points.reserve(path.size());
     for (const ClipperLib::IntPoint& p : path)
       loop.points.push_back({double(p.X) / kGridPerMm, double(p.Y) / kGridPerMm});
-    loop.area = shoelace(loop.points);
+    loop.area = polygon_area(loop.points);
     if (std::abs(loop.area) < min_area) continue;
     out.push_back(std::move(loop));
   }

@@ -7,6 +7,7 @@
 #include "cli_reader.h"
 #include "offsetgen_test_support.h"
 #include "plane_geometry.h"
+#include "slice_cli_cases.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -187,7 +188,7 @@ TEST(SliceHatch, LayerRangeSharesWithHatchesMergeToTheSingleRunsBytes) {
 
 TEST(SliceHatch, BadHatchOrBeamOffsetExits2WithTheReasonAndWritesNothing) {
   const std::string dir = scratch_dir("slice-hatch-bad");
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+  const std::vector<test::RefusedCase> cases = {
       {{"--hatch", "0", "-o", dir + "/a.cli"}, "is not positive"},
       {{"--hatch", "-0.1", "-o", dir + "/a.cli"}, "is not positive"},
       {{"--hatch", "0.1,x", "-o", dir + "/a.cli"}, "is not a number"},
@@ -201,12 +202,7 @@ TEST(SliceHatch, BadHatchOrBeamOffsetExits2WithTheReasonAndWritesNothing) {
       {{"--beam-offset", "-0.01", "-o", dir + "/a.cli"}, "is not a length >= 0"},
       {{"--beam-offset", "nan", "-o", dir + "/a.cli"}, "is not a length >= 0"},
   };
-  for (const auto& [extra, reason] : cases) {
-    const auto r = run_offsetgen(block(extra));
-    EXPECT_EQ(r.exit_code, 2) << fmt::format("{}", fmt::join(extra, " ")) << "\n" << r.output;
-    EXPECT_NE(r.output.find(reason), std::string::npos) << r.output;
-  }
-  EXPECT_TRUE(fs::is_empty(dir)) << "a refused run wrote something";
+  test::expect_refused(cases, block, dir);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // range and a bad merge (shares of another request, missing, doubled, out of order, damaged, the wrong
 // extension) exit 2 and write nothing.
 #include "offsetgen_test_support.h"
+#include "slice_cli_cases.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -63,7 +64,7 @@ TEST(SliceLayerRange, Sl1SharesMergeToTheSingleRunsBytes) { expect_merged_shares
 
 TEST(SliceLayerRange, BadRangeExits2AndWritesNothing) {
   const std::string dir = scratch_dir("slice-layer-range-bad");
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+  const std::vector<test::RefusedCase> cases = {
       {{"--layer-range", "3/3", "-o", dir + "/a.cli.part"}, "expected I/N"},
       {{"--layer-range", "4/3", "-o", dir + "/a.cli.part"}, "expected I/N"},
       {{"--layer-range", "1/0", "-o", dir + "/a.cli.part"}, "expected I/N"},
@@ -74,12 +75,7 @@ TEST(SliceLayerRange, BadRangeExits2AndWritesNothing) {
       {{"--layer-range", "0/3", "-o", dir + "/a.cli"}, "NAME.EXT.part"},
       {{"--layer-range", "0/3", "-o", dir + "/a.stl.part"}, "unknown extension"},
   };
-  for (const auto& [extra, reason] : cases) {
-    const auto r = run_offsetgen(block(extra));
-    EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_NE(r.output.find(reason), std::string::npos) << r.output;
-  }
-  EXPECT_TRUE(fs::is_empty(dir)) << "a refused run left a file";
+  test::expect_refused(cases, block, dir);
 }
 
 TEST(SliceLayerRange, BadMergeExits2AndWritesNothing) {
@@ -98,7 +94,7 @@ TEST(SliceLayerRange, BadMergeExits2AndWritesNothing) {
   }
   const std::string out = dir + "/out/merged.cli";
   fs::create_directories(dir + "/out");
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+  const std::vector<test::RefusedCase> cases = {
       {{s1, s0, s2}, "give the shares in order"},
       {{s0, s1}, "give all 3 shares"},
       {{s0, s1, s2, s2}, "the same file"},

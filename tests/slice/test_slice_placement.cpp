@@ -4,6 +4,7 @@
 // centre that takes the part off the screen, a bad value, or a non-SL1 output exit 2 and write nothing.
 #include "grey_png.h"
 #include "offsetgen_test_support.h"
+#include "slice_cli_cases.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -20,13 +21,7 @@ using test_support::read_file;
 using test_support::run_offsetgen;
 using test_support::scratch_dir;
 
-// 1 cell of 4 mm at 0.2 mm layers: 20 layers.
-std::vector<std::string> block(const std::vector<std::string>& extra) {
-  std::vector<std::string> args = {"slice",   "-q", "--surface",   "gyroid", "--density",      "0.2",
-                                   "--cells", "1",  "--cell-size", "4",      "--layer-height", "0.2"};
-  args.insert(args.end(), extra.begin(), extra.end());
-  return args;
-}
+std::vector<std::string> block(const std::vector<std::string>& extra) { return test::small_block(extra); }
 
 TEST(SliceCenter, TheBedsCentreGivenAsCenterWritesTheDefaultsBytes) {
   const std::string dir = scratch_dir("slice-center-default");
@@ -78,7 +73,7 @@ TEST(SliceCenter, MovingTheCentreByWholePixelsMovesEveryLayerByThosePixelsInside
 
 TEST(SliceCenter, OffTheScreenBadValuesOrNonSl1OutputExit2AndWriteNothing) {
   const std::string dir = scratch_dir("slice-center-bad");
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+  const std::vector<test::RefusedCase> cases = {
       {{"--center", "1,1", "-o", dir + "/a.sl1"}, "off the SL1 screen"},
       {{"--center", "119,34", "-o", dir + "/a.sl1"}, "off the SL1 screen"},
       {{"--center", "60,66.5", "-o", dir + "/a.sl1"}, "off the SL1 screen"},
@@ -88,12 +83,7 @@ TEST(SliceCenter, OffTheScreenBadValuesOrNonSl1OutputExit2AndWriteNothing) {
       {{"--center", "60,34", "-o", dir + "/a.cli"}, "is not .sl1 or .sl1s"},
       {{"--center", "60,34", "-o", dir + "/a.svg"}, "is not .sl1 or .sl1s"},
   };
-  for (const auto& [extra, reason] : cases) {
-    const auto r = run_offsetgen(block(extra));
-    EXPECT_EQ(r.exit_code, 2) << extra[1] << " " << extra[3] << "\n" << r.output;
-    EXPECT_NE(r.output.find(reason), std::string::npos) << r.output;
-  }
-  EXPECT_TRUE(fs::is_empty(dir)) << "a refused run wrote something";
+  test::expect_refused(cases, block, dir);
 }
 
 }  // namespace

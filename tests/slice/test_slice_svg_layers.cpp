@@ -4,6 +4,7 @@
 // the way, --layer-range with DIR/, and an interrupted run leave nothing of the run behind.
 #include "offsetgen_test_support.h"
 #include "slice/layer_writer.h"
+#include "slice_cli_cases.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -21,13 +22,7 @@ using test_support::read_file;
 using test_support::run_offsetgen;
 using test_support::scratch_dir;
 
-// 1 cell of 4 mm at 0.2 mm layers: 20 layers.
-std::vector<std::string> block(const std::vector<std::string>& extra) {
-  std::vector<std::string> args = {"slice",   "-q", "--surface",   "gyroid", "--density",      "0.2",
-                                   "--cells", "1",  "--cell-size", "4",      "--layer-height", "0.2"};
-  args.insert(args.end(), extra.begin(), extra.end());
-  return args;
-}
+std::vector<std::string> block(const std::vector<std::string>& extra) { return test::small_block(extra); }
 
 // The single SVG's groups, in order.
 std::vector<std::string> groups_of(const std::string& svg) {
