@@ -37,4 +37,22 @@ inline void expect_refused(const std::vector<RefusedCase>& cases, const CommandL
   EXPECT_TRUE(std::filesystem::is_empty(dir)) << "a refused run wrote something";
 }
 
+// Slices shares 0/N to N-1/N of `command` into dir/sI.EXT.part and joins them with --merge into
+// `merged`; the merge's result (a share that fails is a test failure, and the merge is not run).
+inline test_support::CommandResult slice_shares_and_merge(const CommandLine& command, const std::string& dir, int count,
+                                                          const std::string& ext, const std::string& merged) {
+  std::vector<std::string> merge = {"slice", "-q", "--merge"};
+  for (int i = 0; i < count; ++i) {
+    const std::string share = fmt::format("{}/s{}.{}.part", dir, i, ext);
+    const auto r = test_support::run_offsetgen(command({"--layer-range", fmt::format("{}/{}", i, count), "-o", share}));
+    if (r.exit_code != 0) {
+      ADD_FAILURE() << "share " << i << "/" << count << " exited " << r.exit_code << "\n" << r.output;
+      return r;
+    }
+    merge.push_back(share);
+  }
+  merge.insert(merge.end(), {"-o", merged});
+  return test_support::run_offsetgen(merge);
+}
+
 }  // namespace offsetgen::slice::test

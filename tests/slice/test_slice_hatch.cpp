@@ -169,14 +169,8 @@ TEST(SliceHatch, LayerRangeSharesWithHatchesMergeToTheSingleRunsBytes) {
     return block(extra);
   };
   ASSERT_EQ(run_offsetgen(with({"-o", dir + "/single.cli"})).exit_code, 0);
-  std::vector<std::string> merge = {"slice", "-q", "--merge"};
-  for (int i = 0; i < 2; ++i) {
-    const std::string share = fmt::format("{}/s{}.cli.part", dir, i);
-    ASSERT_EQ(run_offsetgen(with({"--layer-range", fmt::format("{}/2", i), "-o", share})).exit_code, 0);
-    merge.push_back(share);
-  }
-  merge.insert(merge.end(), {"-o", dir + "/merged.cli"});
-  ASSERT_EQ(run_offsetgen(merge).exit_code, 0);
+  const auto merged = test::slice_shares_and_merge(with, dir, 2, "cli", dir + "/merged.cli");
+  ASSERT_EQ(merged.exit_code, 0) << merged.output;
   EXPECT_TRUE(read_file(dir + "/single.cli") == read_file(dir + "/merged.cli"));
   // A share of a run without hatches is another request.
   ASSERT_EQ(run_offsetgen(block({"-q", "--layer-range", "1/2", "-o", dir + "/plain1.cli.part"})).exit_code, 0);

@@ -19,13 +19,7 @@ using test_support::read_file;
 using test_support::run_offsetgen;
 using test_support::scratch_dir;
 
-// 1 cell of 4 mm at 0.2 mm layers: 20 layers.
-std::vector<std::string> block(std::vector<std::string> extra) {
-  std::vector<std::string> args = {"slice",   "-q", "--surface",   "gyroid", "--density",      "0.2",
-                                   "--cells", "1",  "--cell-size", "4",      "--layer-height", "0.2"};
-  args.insert(args.end(), extra.begin(), extra.end());
-  return args;
-}
+std::vector<std::string> block(const std::vector<std::string>& extra) { return test::small_block(extra); }
 
 // Shares 0/3, 1/3, 2/3 merged into dir/merged/part.EXT equal the single run's dir/part.EXT.
 void expect_merged_shares_equal_the_single_run(const std::string& ext, const std::vector<std::string>& options) {
@@ -37,16 +31,8 @@ void expect_merged_shares_equal_the_single_run(const std::string& ext, const std
   };
   const std::string single = dir + "/part." + ext;
   ASSERT_EQ(run_offsetgen(with({"-o", single})).exit_code, 0);
-  std::vector<std::string> merge = {"slice", "-q", "--merge"};
-  for (int i = 0; i < 3; ++i) {
-    const std::string share = fmt::format("{}/share{}.{}.part", dir, i, ext);
-    const auto r = run_offsetgen(with({"--layer-range", fmt::format("{}/3", i), "-o", share}));
-    ASSERT_EQ(r.exit_code, 0) << r.output;
-    merge.push_back(share);
-  }
   const std::string merged = dir + "/merged/part." + ext;
-  merge.insert(merge.end(), {"-o", merged});
-  const auto r = run_offsetgen(merge);
+  const auto r = test::slice_shares_and_merge(with, dir, 3, ext, merged);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string a = read_file(single);
   EXPECT_GT(a.size(), 1000u);

@@ -75,14 +75,7 @@ TEST(SliceSvgLayers, DirectoryHoldsOneWholeSvgPerLayerWithTheSingleFilesGroup) {
 TEST(SliceSvgLayers, SvgSharesMergeIntoADirectoryOfTheSingleRunsFiles) {
   const std::string dir = scratch_dir("slice-svg-layers-merge");
   ASSERT_EQ(run_offsetgen(block({"-o", dir + "/single/"})).exit_code, 0);
-  std::vector<std::string> merge = {"slice", "-q", "--merge"};
-  for (int i = 0; i < 3; ++i) {
-    const std::string share = fmt::format("{}/s{}.svg.part", dir, i);
-    ASSERT_EQ(run_offsetgen(block({"--layer-range", fmt::format("{}/3", i), "-o", share})).exit_code, 0);
-    merge.push_back(share);
-  }
-  merge.insert(merge.end(), {"-o", dir + "/merged/"});
-  const auto r = run_offsetgen(merge);
+  const auto r = test::slice_shares_and_merge(block, dir, 3, "svg", dir + "/merged/");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::set<std::string> names = names_in(dir + "/single");
   ASSERT_EQ(names.size(), 20u);
