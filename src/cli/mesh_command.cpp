@@ -1,5 +1,6 @@
 #include "cli/mesh_command.h"
 
+#include "cli/cells_option.h"
 #include "cli/command_line.h"
 #include "mesh/mesher.h"
 #include "mesh/narrow_band.h"
@@ -9,6 +10,7 @@
 #include "surfaces/expression_input.h"
 #include "surfaces/lattice_map.h"
 #include "surfaces/surface.h"
+#include "validate/block_checks.h"
 
 #include <unistd.h>
 
@@ -63,6 +65,36 @@ void apply_map_options(const MeshOptions& o, mesh::MeshRequest& s) {
   s.body = b;
 }
 
+// A box cell (--cell-size X,Y,Z of unequal sides) is the linear map u = x/X, v = y/Y, w = z/Z: the
+// composed field is offset in mm along the physical normal (docs/maps.md), over the block of --cells.
+void apply_box_cell(const MeshOptions& o, const std::array<double, 3>& size, mesh::MeshRequest& s) {
+  if (s.body)
+    throw InputError(
+        "a box cell (--cell-size X,Y,Z) fills a block of --cells; to fill a --body with it, give the same lattice "
+        "as --map \"x/X; y/Y; z/Z\" (its origin then at x = y = z = 0 of the body's coordinates)");
+  if (o.density || o.density_field)
+    throw InputError(
+        "--density and --density-field need a cube cell: with --cell-size X,Y,Z of unequal sides the cell is "
+        "stretched differently along each axis and no closed-form density relation holds; give the wall as "
+        "--thickness T (mm)");
+  if (o.resolution != 0)
+    throw InputError(
+        "--resolution counts voxels per cell, which a box cell (--cell-size X,Y,Z) does not have one of: give "
+        "--voxel MM, or neither (automatic)");
+  if (!o.domain.empty())
+    throw InputError(
+        "--domain sets the box of a mapped lattice (--map); a block of box cells is --cells and --cell-size");
+  s.wall.generation.map = fmt::format("x/{}; y/{}; z/{}", size[0], size[1], size[2]);
+  s.cell_size = 1;  // the map's x, y, z are mm
+  mesh::BodyRequest b;
+  b.path = fmt::format("--cells {} --cell-size {}", o.cells, o.cell_size);
+  b.box = std::array<std::array<double, 3>, 2>{
+      std::array<double, 3>{0, 0, 0},
+      std::array<double, 3>{s.cells[0] * size[0], s.cells[1] * size[1], s.cells[2] * size[2]}};
+  b.origin = std::array<double, 3>{0, 0, 0};
+  s.body = b;
+}
+
 }  // namespace
 
 int run_mesh_command(const MeshOptions& o) {
@@ -71,9 +103,12 @@ int run_mesh_command(const MeshOptions& o) {
   s.wall = wall_request(o);
   s.cells = parse_cells(o.cells);
   s.body = body_request(o);
-  s.cell_size = o.cell_size;
+  const std::array<double, 3> cell_size = parse_cell_size(o.cell_size);
+  s.cell_size = cell_size[0];
   if (!o.map.empty())
     apply_map_options(o, s);
+  else if (!cube_cell(cell_size))
+    apply_box_cell(o, cell_size, s);
   else if (!o.domain.empty())
     throw InputError("--domain sets the box of a mapped lattice (--map); a block is --cells NXxNYxNZ --cell-size MM");
   s.resolution = o.resolution;

@@ -24,7 +24,11 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
                       "(docs/maps.md)");
   cmd->add_option("--domain", o.domain, "With --map and no --body: the box X0,Y0,Z0:X1,Y1,Z1 (mm) to fill");
   add_body_options(cmd, o)->excludes(cells);
-  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")
+  cmd->add_option("--cell-size", o.cell_size,
+                  "Cell edge length in millimetres: MM (a cube cell), or X,Y,Z (a box cell, \"distorted cells\": the "
+                  "lattice u = x/X, v = y/Y, w = z/Z of a block of --cells, meshed as --map \"x/X; y/Y; z/Z\": "
+                  "--thickness is then in mm along the physical normal, the voxel is --voxel MM; --density and "
+                  "--resolution are refused)")
       ->capture_default_str()
       ->each([&o](const std::string&) { o.cell_size_given = true; });
   auto* resolution =
@@ -61,6 +65,7 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
       "          offsetgen mesh --surface gyroid --density 0.2 --cells 4 --cell-size 10 -o gyroid.stl\n"
       "          offsetgen mesh --surface gyroid --density 0.2 --body part.stl --skin 1.2 --cell-size 4 -o filled.stl\n"
       "          offsetgen mesh --surface diamond --network --density 0.3 --cells 3 --cell-size 8 -o struts.stl\n"
+      "          offsetgen mesh --surface gyroid --thickness 1 --cells 2 --cell-size 10,10,15 -o box_cells.stl\n"
       "          offsetgen mesh ... --tile-range 0/4 -o part0.stl   (... 3/4 -o part3.stl, on four machines)\n"
       "          offsetgen mesh --merge part0.stl part1.stl part2.stl part3.stl -o part.stl\n"
       "With --body, inside is where the body's facets wind around a point (their orientation does not change\n"

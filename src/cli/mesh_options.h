@@ -15,7 +15,7 @@ namespace offsetgen {
 
 struct MeshOptions : WallOptions, BodyOptions {
   std::string cells = "1", output;
-  double cell_size = 10;
+  std::string cell_size = "10";  // MM or X,Y,Z (cli/cells_option.h)
   bool cell_size_given = false, cells_given = false;
   std::string map, domain;  // --map, --domain: a conforming lattice (surfaces/lattice_map.h)
   int resolution = 0;

@@ -5,6 +5,9 @@
 #include "slice/slicer.h"
 #include "support/progress_line.h"
 #include "surfaces/input_error.h"
+#include "validate/block_checks.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -22,7 +25,9 @@ void add_slice_command(CLI::App& app, SliceOptions& o) {
   auto* cells = cmd->add_option("-c,--cells", o.cells, "Cells of the block from the origin: N, NX,NY,NZ or NXxNYxNZ")
                     ->capture_default_str();
   add_body_options(cmd, o)->excludes(cells);
-  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
+  cmd->add_option("--cell-size", o.cell_size,
+                  "Cell edge length in millimetres (a cube cell; a box cell X,Y,Z is refused: mesh and step take it)")
+      ->capture_default_str();
   cmd->add_option("--layer-height", o.layer_height, "Layer height in millimetres (at most a cell)")
       ->capture_default_str();
   cmd->add_option("--first-layer", o.first_layer, "The first layer's height in millimetres (default --layer-height)");
@@ -82,7 +87,15 @@ int run_slice_command(const SliceOptions& o) {
   std::replace(cells.begin(), cells.end(), ',', 'x');
   r.cells = parse_cells(cells);
   r.body = body_request(o);
-  r.cell_size = o.cell_size;
+  const std::array<double, 3> cell_size = parse_cell_size(o.cell_size);
+  // The slicer's wall, its layers and the body's lattice are in cell units of one cell size; a box cell
+  // would need the composed field in mm (as mesh and step use), which slice does not build.
+  if (!cube_cell(cell_size))
+    throw InputError(fmt::format(
+        "--cell-size {}: slice takes a cube cell only (one size, MM); a box cell X,Y,Z is not sliced yet: write "
+        "the part with offsetgen mesh --cell-size {} and slice that mesh",
+        o.cell_size, o.cell_size));
+  r.cell_size = cell_size[0];
   r.layer_height = o.layer_height;
   r.first_layer = o.first_layer;
   r.tolerance = o.tolerance;

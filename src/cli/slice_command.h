@@ -15,7 +15,7 @@ namespace offsetgen {
 struct SliceOptions : WallOptions, BodyOptions {
   std::string cells = "1", output, printer, layer_range;
   std::vector<std::string> merge;
-  double cell_size = 10;
+  std::string cell_size = "10";  // MM (a box cell X,Y,Z is refused: slice_command.cpp)
   double layer_height = 0.05;
   std::optional<double> first_layer;
   double tolerance = 0.005;

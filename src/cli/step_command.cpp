@@ -21,7 +21,7 @@ int run_step_command(const StepOptions& o) {
   r.wall.thickness = o.thickness;
   r.wall.generation.density = o.density;
   r.cells = parse_cells(o.cells);
-  r.cell_size = o.cell_size;
+  r.cell_size = parse_cell_size(o.cell_size);
   r.tolerance = o.tolerance;
   r.output = o.output;
   r.max_control_points = o.max_control_points;

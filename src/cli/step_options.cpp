@@ -16,10 +16,15 @@ void add_step_command(CLI::App& app, StepOptions& o) {
                          "(gyroid, fischerkoch, splitp, lidinoid)",
                          "Your own F(x, y, z), periodic with period 1 (by box patches)");
   cmd->add_option("-t,--thickness", o.thickness,
-                  "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall)");
+                  "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall). With a "
+                  "box cell (--cell-size X,Y,Z) in millimetres, along the physical normal (a number)");
   cmd->add_option("--density", o.density, "Instead of --thickness: the relative density R of the wall");
   cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
-  cmd->add_option("--cell-size", o.cell_size, "Cell edge length in millimetres")->capture_default_str();
+  cmd->add_option("--cell-size", o.cell_size,
+                  "Cell edge length in millimetres: MM (a cube cell), or X,Y,Z (a box cell, \"distorted cells\": the "
+                  "lattice u = x/X, v = y/Y, w = z/Z; --thickness is then in mm along the physical normal, the wall "
+                  "is cut into box patches, --density is refused)")
+      ->capture_default_str();
   cmd->add_option("--tolerance", o.tolerance,
                   "Largest distance (mm) of the exact walls from the faces; measured, and no file is written "
                   "beyond it")
@@ -41,7 +46,8 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "Examples:\n"
       "  offsetgen step --surface schwarzp --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o p.step\n"
       "  offsetgen step --surface gyroid --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o g.step\n"
-      "  offsetgen step --surface diamond --thickness \"0.05 + 0.05*x\" --cells 2x1x1 -o graded_d.step");
+      "  offsetgen step --surface diamond --thickness \"0.05 + 0.05*x\" --cells 2x1x1 -o graded_d.step\n"
+      "  offsetgen step --surface gyroid --thickness 1 --cells 2 --cell-size 10,10,15 --tolerance 0.01 -o g_box.step");
 }
 
 }  // namespace offsetgen

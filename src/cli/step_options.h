@@ -15,7 +15,7 @@ namespace offsetgen {
 struct StepOptions : GenerationOptions {
   std::string thickness, cells = "1", output;
   std::optional<double> density;
-  double cell_size = 10;
+  std::string cell_size = "10";  // MM or X,Y,Z (cli/cells_option.h)
   double tolerance = 0.01;
   int max_control_points = 40;
   std::string patches = "auto";

@@ -28,6 +28,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -38,7 +39,7 @@ namespace {
 
 class Assembly {
  public:
-  Assembly(const BoxPartition& p, double cell_size) : p_(p), mm_(cell_size) {}
+  Assembly(const BoxPartition& p, const Point& mm) : p_(p), mm_(mm), largest_(std::max({mm[0], mm[1], mm[2]})) {}
 
   WallBrep build() {
     vertices_.resize(p_.vertices.size());
@@ -60,7 +61,7 @@ class Assembly {
     for (const TopoDS_Face& f : all) builder_.Add(faces, f);
     // The parameter curves are the 3D curves' shadows on the patches: the edges' tolerances become the
     // largest distance between the two (the patches' fit error, at most).
-    BRepLib::SameParameter(faces, 1e-7 * mm_, false);
+    BRepLib::SameParameter(faces, 1e-7 * largest_, false);
     BOPAlgo_ShellSplitter shells;
     for (const TopoDS_Face& f : all) shells.AddStartElement(f);
     shells.Perform();
@@ -92,14 +93,16 @@ class Assembly {
  private:
   static constexpr double kTolerance = 1e-7;
 
-  gp_Pnt pnt(const Point& q) const { return {q[0] * mm_, q[1] * mm_, q[2] * mm_}; }
+  // Cell units to mm, along each axis by its side: an affine map, so a B-spline's control points
+  // mapped make the mapped curve or surface.
+  gp_Pnt pnt(const Point& q) const { return {q[0] * mm_[0], q[1] * mm_[1], q[2] * mm_[2]}; }
 
   // The curve through its points (they lie on the sheet, evenly spaced), as an edge between its
   // two vertices.
   void add_curve(const BoxCurve& c) {
     Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, static_cast<int>(c.points.size()));
     for (size_t i = 0; i < c.points.size(); ++i) points->SetValue(static_cast<int>(i) + 1, pnt(c.points[i]));
-    GeomAPI_Interpolate interpolate(points, false, 1e-12 * mm_);
+    GeomAPI_Interpolate interpolate(points, false, 1e-12 * largest_);
     interpolate.Perform();
     if (!interpolate.IsDone())
       throw std::runtime_error("STEP: a curve where a sheet crosses a box's face cannot be interpolated");
@@ -152,7 +155,7 @@ class Assembly {
       TColgp_Array1OfPnt2d poles2d(1, curve->NbPoles());
       for (int k = 1; k <= curve->NbPoles(); ++k) {
         const gp_Pnt q = curve->Pole(k);
-        const auto ab = patch.parameters({q.X() / mm_, q.Y() / mm_, q.Z() / mm_});
+        const auto ab = patch.parameters({q.X() / mm_[0], q.Y() / mm_[1], q.Z() / mm_[2]});
         poles2d.SetValue(k, gp_Pnt2d(ab[0], ab[1]));
       }
       Handle(Geom2d_BSplineCurve) pcurve =
@@ -179,7 +182,8 @@ class Assembly {
   }
 
   const BoxPartition& p_;
-  double mm_;
+  Point mm_;
+  double largest_;
   BRep_Builder builder_;
   std::vector<TopoDS_Vertex> vertices_;
   std::vector<Handle(Geom_BSplineCurve)> curves_;
@@ -189,8 +193,6 @@ class Assembly {
 
 }  // namespace
 
-WallBrep build_box_wall(const BoxPartition& partition, double cell_size) {
-  return Assembly(partition, cell_size).build();
-}
+WallBrep build_box_wall(const BoxPartition& partition, const Point& mm) { return Assembly(partition, mm).build(); }
 
 }  // namespace offsetgen::step

@@ -10,7 +10,8 @@
 
 namespace offsetgen::step {
 
-// Throws std::runtime_error if a face cannot be built or no closed shell comes out.
-WallBrep build_box_wall(const BoxPartition& partition, double cell_size);
+// In mm: the partition (cell units) scaled along each axis by `mm`, the cell's sides. Throws
+// std::runtime_error if a face cannot be built or no closed shell comes out.
+WallBrep build_box_wall(const BoxPartition& partition, const Point& mm);
 
 }  // namespace offsetgen::step

@@ -107,7 +107,7 @@ std::vector<Point> exact_surface_points(const LevelFunction& g, const std::array
   return points;
 }
 
-Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>& points, double cell_size,
+Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>& points, const Point& mm,
                             double reach) {
   // A face: its box, and a grid of its points whose nearest gives the projection its start (Newton
   // from there, ShapeAnalysis_Surface::NextValueOfUV, which falls back to a global search).
@@ -138,7 +138,7 @@ Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>&
   Deviation d;
   double sum = 0;
   for (const Point& q : points) {
-    const gp_Pnt p(q[0] * cell_size, q[1] * cell_size, q[2] * cell_size);
+    const gp_Pnt p(q[0] * mm[0], q[1] * mm[1], q[2] * mm[2]);
     double best = reach;
     for (Candidate& c : faces) {
       if (c.box.IsOut(p)) continue;

@@ -26,10 +26,10 @@ struct Deviation {
   Point worst{};  // mm
 };
 
-// The distance of every point (cell units, scaled by cell_size to mm) to the nearest B-spline face of
-// `shape` (the nearest point of the face, its parameter range included). Only faces whose bounding box
-// enlarged by `reach` (mm) holds a point are tried; a point with none counts as `reach` away.
-Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>& points, double cell_size,
-                            double reach);
+// The distance of every point (cell units, scaled to mm along each axis by the cell's sides `mm`) to
+// the nearest B-spline face of `shape` (the nearest point of the face, its parameter range included).
+// Only faces whose bounding box enlarged by `reach` (mm) holds a point are tried; a point with none
+// counts as `reach` away.
+Deviation measure_deviation(const TopoDS_Shape& shape, const std::vector<Point>& points, const Point& mm, double reach);
 
 }  // namespace offsetgen::step

@@ -1,6 +1,7 @@
 #include "step/measurement.h"
 
 #include "numeric/volume_fraction.h"
+#include "step/cell_frame.h"
 #include "step/deviation.h"
 #include "step/exact_walls.h"
 #include "step/wall_brep.h"
@@ -25,18 +26,29 @@ namespace {
 constexpr uint64_t kSeed = 20261126;
 
 // A uniform wall's volume fraction in one cell times the cells (the block is whole cells of a periodic
-// wall); a graded wall's, cell by cell.
+// wall); a graded wall's, cell by cell. Measured in cell units, whatever units the field takes: a box
+// cell's fraction is the same in cell units as in mm (a linear map keeps ratios of volumes), and the
+// quadrature's steps and weights are tuned to cell units. There the composed field is F itself; its
+// slope is at most the field's (per mm) times the longest side, and a wall t mm thick spans at least
+// t / longest side of a cell along a column.
 ExactVolume exact_wall_volume(const wall::WallField& field, const StepRequest& r, std::array<double, 2> thickness,
                               bool graded) {
   const auto t0 = Clock::now();
+  const CellFrame frame = cell_frame(r);
+  const double stretch = std::max({frame.field[0], frame.field[1], frame.field[2]});  // 1 for a cube cell
   wall::WallField::Worker worker(field);
   numeric::VolumeFractionSetup v;
-  v.g = [&field, &worker](const double* p) { return wall_at(field, worker, p); };
-  v.field = [&field](const double* p) { return field.field(p[0], p[1], p[2]); };
-  v.field_slope_bound = field.field_lipschitz();
+  v.g = [&field, &worker, &frame](const double* p) {
+    return wall_at(field, worker, frame.to_field({p[0], p[1], p[2]}).data());
+  };
+  v.field = [&field, &frame](const double* p) {
+    const Point q = frame.to_field({p[0], p[1], p[2]});
+    return field.field(q[0], q[1], q[2]);
+  };
+  v.field_slope_bound = field.field_lipschitz() * stretch;
   v.band = field.field_lipschitz() * 0.5 * thickness[1] * (1 + 1e-9);
-  v.scan_step = thickness[0] / 4;
-  const double cell = std::pow(r.cell_size, 3);
+  v.scan_step = thickness[0] / stretch / 4;
+  const double cell = frame.cell_volume();
   std::vector<std::array<int, 3>> cells{{0, 0, 0}};
   if (graded) {
     v.periodic = false;
@@ -99,14 +111,17 @@ void measure_solid(const TopoDS_Shape& shape, const StepRequest& r, wall::WallFi
   s.control_points_per_cell = double(s.control_points) / (double(r.cells[0]) * r.cells[1] * r.cells[2]);
   s.planar_faces = c.faces - s.bspline_faces;
 
-  // The exact wall points: lines along each axis, 12 per cell side, scanned at t/4 (the thinnest t).
-  const LevelFunction plus = offset_sheet(field, worker, 1), minus = offset_sheet(field, worker, -1);
-  const int steps = std::max(16, static_cast<int>(std::ceil(4 / s.thickness_range[0])));
+  // The exact wall points: lines along each axis, 12 per cell side, scanned at t/4 (the thinnest t, in
+  // cell units: a box cell's wall t mm thick spans at least t / max(X, Y, Z) of a cell along any line).
+  const CellFrame frame = cell_frame(r);
+  const LevelFunction plus = offset_sheet(field, worker, frame, 1), minus = offset_sheet(field, worker, frame, -1);
+  const double thinnest = s.thickness_range[0] / std::max({frame.field[0], frame.field[1], frame.field[2]});
+  const int steps = std::max(16, static_cast<int>(std::ceil(4 / thinnest)));
   std::vector<Point> points = exact_surface_points(plus, r.cells, 12, steps, kSeed);
   const std::vector<Point> more = exact_surface_points(minus, r.cells, 12, steps, kSeed + 1);
   points.insert(points.end(), more.begin(), more.end());
   // Only faces within twice the tolerance of a point are tried: a point with none is beyond the tolerance.
-  const Deviation d = measure_deviation(shape, points, r.cell_size, 2 * r.tolerance);
+  const Deviation d = measure_deviation(shape, points, frame.mm, 2 * r.tolerance);
   s.max_deviation = d.max;
   s.mean_deviation = d.mean;
   s.deviation_points = d.points;

@@ -2,6 +2,7 @@
 
 #include "step/box_brep.h"
 #include "step/box_patch.h"
+#include "step/cell_frame.h"
 #include "step/exact_walls.h"
 #include "support/stopwatch.h"
 #include "surfaces/input_error.h"
@@ -80,7 +81,7 @@ struct SheetPatches {
   double error = 0;  // cell units
 };
 
-SheetPatches fit_sheets(const PatchLayout& layout, const wall::WallField& field, bool graded,
+SheetPatches fit_sheets(const PatchLayout& layout, const wall::WallField& field, const CellFrame& frame, bool graded,
                         const std::array<int, 3>& cells, double target, int max_side) {
   std::vector<Isometry> maps{Isometry{}};
   if (graded) {
@@ -91,7 +92,7 @@ SheetPatches fit_sheets(const PatchLayout& layout, const wall::WallField& field,
   {
     wall::WallField::Worker worker(field);
     for (double side : {1.0, -1.0})
-      n = std::max(n, fit_sheet(layout, offset_sheet(field, worker, side, &cells), target, max_side).patch.n);
+      n = std::max(n, fit_sheet(layout, offset_sheet(field, worker, frame, side, &cells), target, max_side).patch.n);
   }
   SheetPatches out;
   std::vector<Fit> plus(maps.size()), minus(maps.size());
@@ -101,7 +102,8 @@ SheetPatches fit_sheets(const PatchLayout& layout, const wall::WallField& field,
     auto work = [&](unsigned t) {
       try {
         wall::WallField::Worker worker(field);
-        const LevelFunction p = offset_sheet(field, worker, 1, &cells), m = offset_sheet(field, worker, -1, &cells);
+        const LevelFunction p = offset_sheet(field, worker, frame, 1, &cells),
+                            m = offset_sheet(field, worker, frame, -1, &cells);
         for (size_t i = t; i < maps.size(); i += threads) {
           plus[i] = fit_at(layout, through(p, maps[i]), n);
           minus[i] = fit_at(layout, through(m, maps[i]), n);
@@ -131,8 +133,9 @@ SheetPatches fit_sheets(const PatchLayout& layout, const wall::WallField& field,
 }
 
 // The gradient of phi(p, +t/2) at the middle of a plus patch (central differences): out of the wall.
-Point outward(const wall::WallField& field, wall::WallField::Worker& worker, const CubicPatch& patch) {
-  const LevelFunction g = offset_sheet(field, worker, 1);
+Point outward(const wall::WallField& field, wall::WallField::Worker& worker, const CellFrame& frame,
+              const CubicPatch& patch) {
+  const LevelFunction g = offset_sheet(field, worker, frame, 1);
   const Point p = patch.evaluate(0.5, 0.5);
   constexpr double kStep = 1e-6;
   Point gradient{};
@@ -153,9 +156,10 @@ WallBrep symmetry_wall(const PatchLayout& layout, const wall::WallField& field, 
                        const StepRequest& r, double target, const InsideWall& inside_wall, StepSummary& s) {
   s.route = Route::Symmetry;
   auto t0 = Clock::now();
-  const SheetPatches patches = fit_sheets(layout, field, s.graded, r.cells, target, r.max_control_points);
+  const CellFrame frame = cell_frame(r);  // a cube cell: symmetry patches need the cube's mirror planes
+  const SheetPatches patches = fit_sheets(layout, field, frame, s.graded, r.cells, target, r.max_control_points);
   s.patch_control_points = patches.n;
-  s.fit_error = patches.error * r.cell_size;
+  s.fit_error = patches.error * frame.largest_mm();
   // A graded sheet is not perpendicular to the mirror planes: the jump is measured for uniform walls.
   if (!s.graded)
     for (const auto* sheet : {&patches.plus, &patches.minus})
@@ -163,8 +167,8 @@ WallBrep symmetry_wall(const PatchLayout& layout, const wall::WallField& field, 
         s.normal_jump = std::max(s.normal_jump, normal_jump(layout, patch, 200) * 180 / M_PI);
   s.seconds_fit = seconds_since(t0);
   t0 = Clock::now();
-  WallBrep brep = build_wall(layout, patches.plus, patches.minus, outward(field, worker, patches.plus.front()), r.cells,
-                             r.cell_size, inside_wall);
+  WallBrep brep = build_wall(layout, patches.plus, patches.minus, outward(field, worker, frame, patches.plus.front()),
+                             r.cells, frame.largest_mm(), inside_wall);
   s.seconds_build = seconds_since(t0);
   return brep;
 }
@@ -190,24 +194,25 @@ WallBrep box_wall(const wall::WallField& field, wall::WallField::Worker& worker,
                   const InsideWall& inside_wall, StepSummary& s) {
   s.route = Route::Box;
   auto t0 = Clock::now();
-  const std::array<LevelFunction, 2> sheets{offset_sheet(field, worker, 1, &r.cells),
-                                            offset_sheet(field, worker, -1, &r.cells)};
+  const CellFrame frame = cell_frame(r);
+  const std::array<LevelFunction, 2> sheets{offset_sheet(field, worker, frame, 1, &r.cells),
+                                            offset_sheet(field, worker, frame, -1, &r.cells)};
   // The patches are fitted on every core, each thread with its own Worker.
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::unique_ptr<wall::WallField::Worker>> workers;
   std::vector<std::array<LevelFunction, 2>> more;
   for (unsigned t = 1; t < threads; ++t) {
     workers.push_back(std::make_unique<wall::WallField::Worker>(field));
-    more.push_back(
-        {offset_sheet(field, *workers.back(), 1, &r.cells), offset_sheet(field, *workers.back(), -1, &r.cells)});
+    more.push_back({offset_sheet(field, *workers.back(), frame, 1, &r.cells),
+                    offset_sheet(field, *workers.back(), frame, -1, &r.cells)});
   }
   const BoxPartition partition = partition_boxes(sheets, more, inside_wall, r, target);
   s.boxes_per_cell = partition.boxes_per_cell;
   s.patch_control_points = partition.largest_side;
-  s.fit_error = partition.fit_error * r.cell_size;
+  s.fit_error = partition.fit_error * frame.largest_mm();  // at most: a cell unit is at most that many mm
   s.seconds_fit = seconds_since(t0);
   t0 = Clock::now();
-  WallBrep brep = build_box_wall(partition, r.cell_size);
+  WallBrep brep = build_box_wall(partition, frame.mm);
   s.seconds_build = seconds_since(t0);
   return brep;
 }
@@ -216,10 +221,18 @@ WallBrep box_wall(const wall::WallField& field, wall::WallField::Worker& worker,
 
 const PatchLayout* choose_layout(const StepRequest& r) {
   const std::string& surface = r.wall.generation.surface;
+  // A box cell keeps the mirror planes normal to the axes but not the diagonal ones the symmetry
+  // patches are cut along (x = y, ...): its wall takes box patches, which need no symmetry.
+  const bool box_cell = cell_frame(r).distorted();
   switch (r.patches) {
     case Patches::Box:
       return nullptr;
     case Patches::Symmetry: {
+      if (box_cell)
+        throw InputError(
+            "--patches symmetry needs a cube cell: the symmetry patches are copied across the cube's diagonal "
+            "mirror planes, which a box cell (--cell-size X,Y,Z of unequal sides) does not have; use --patches "
+            "box or auto");
       const PatchLayout* layout = find_patch_layout(surface);
       if (layout == nullptr)
         throw InputError(
@@ -229,6 +242,7 @@ const PatchLayout* choose_layout(const StepRequest& r) {
       return layout;
     }
     case Patches::Auto:
+      if (box_cell) return nullptr;
       break;
   }
   const PatchLayout* layout = find_patch_layout(surface);
@@ -237,8 +251,9 @@ const PatchLayout* choose_layout(const StepRequest& r) {
 
 WallBrep fit_and_build_wall(const PatchLayout* layout, const wall::WallField& field, wall::WallField::Worker& worker,
                             const StepRequest& r, const InsideWall& inside_wall, StepSummary& s) {
-  // Half of the tolerance for the fit, the rest is margin for what the check grid does not see.
-  const double target = 0.5 * r.tolerance / r.cell_size;
+  // Half of the tolerance for the fit, the rest is margin for what the check grid does not see; in cell
+  // units, of which one is at most the cell's longest side in mm.
+  const double target = 0.5 * r.tolerance / cell_frame(r).largest_mm();
   return layout != nullptr ? symmetry_wall(*layout, field, worker, r, target, inside_wall, s)
                            : box_wall(field, worker, r, target, inside_wall, s);
 }

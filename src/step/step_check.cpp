@@ -1,5 +1,7 @@
 #include "step/step_check.h"
 
+#include "step/cell_frame.h"
+
 #include "step/exact_walls.h"
 #include "step/measurement.h"
 #include "step/step_file.h"
@@ -64,7 +66,7 @@ StepCheck check_step_file(const std::string& path, const std::function<void(cons
 
   say("generating the walls it was made from");
   auto t0 = Clock::now();
-  wall::WallField field(check.request.wall);
+  wall::WallField field(framed_wall(check.request));
   wall::WallField::Worker worker(field);
   record_thickness(field, worker, check.request, s);
   field.compile();
@@ -83,7 +85,7 @@ std::string format_check_summary(const StepCheck& c, const std::string& path) {
   const StepRequest& r = c.request;
   std::string out = fmt::format(
       "offsetgen check: {}: {} wall, t = {}), {}x{}x{} cells of {} mm, tolerance {} mm (its header)\n", path, s.surface,
-      thickness_words(s, r.cell_size), r.cells[0], r.cells[1], r.cells[2], r.cell_size, r.tolerance);
+      thickness_words(s, r.cell_size), r.cells[0], r.cells[1], r.cells[2], cell_size_words(r.cell_size), r.tolerance);
   out += fmt::format("  faces: {} B-spline, {} planar; {} control points ({:.0f} per cell); {} bytes\n",
                      s.bspline_faces, s.planar_faces, s.control_points, s.control_points_per_cell, s.bytes);
   out += fmt::format("  {}  solid: {}, {} solid{} ({} expected), {}\n",

@@ -2,6 +2,7 @@
 
 #include "emit/file_writer.h"
 #include "run/process.h"
+#include "step/cell_frame.h"
 #include "step/exact_walls.h"
 #include "step/measurement.h"
 #include "step/patch_route.h"
@@ -28,14 +29,17 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   StepSummary s;
   s.surface = surface_words(r.wall.generation);
   say("generating the wall's functions");
-  wall::WallField field(r.wall);
+  wall::WallField field(framed_wall(r));
   wall::WallField::Worker worker(field);
   record_thickness(field, worker, r, s);
   say("compiling them");
   field.compile();
 
   s.seconds_generate = seconds_since(start);
-  const auto inside_wall = [&field, &worker](const Point& p) { return wall_at(field, worker, p.data()) < 0; };
+  const CellFrame frame = cell_frame(r);
+  const auto inside_wall = [&field, &worker, &frame](const Point& p) {
+    return inside_wall_at(field, worker, frame, p);
+  };
   say(layout != nullptr ? "fitting the symmetry patches, building the solid"
                         : "cutting the wall into boxes, fitting their patches, building the solid");
   const WallBrep brep = fit_and_build_wall(layout, field, worker, r, inside_wall, s);

@@ -22,7 +22,9 @@ Patches patches_from_name(const std::string& name);
 struct StepRequest {
   wall::WallRequest wall;
   std::array<int, 3> cells{1, 1, 1};
-  double cell_size = 10;        // mm
+  // mm along x, y and z: a cube cell (all equal; the wall in cell units), or a box cell ("distorted
+  // cells"; the wall in mm along the physical normal, step/cell_frame.h).
+  std::array<double, 3> cell_size{10, 10, 10};
   double tolerance = 0;         // mm: the largest distance allowed from the exact walls to the faces
   std::string output;           // .step / .stp
   int max_control_points = 40;  // per patch side; beyond it the tolerance is reported as out of reach
@@ -31,7 +33,7 @@ struct StepRequest {
 
 // InputError for a request the exporter cannot take, found before any work: the wall not given as
 // one of --thickness and --density, too few control points, a tolerance or cell size that is not a
-// positive length, an output that is not a writable .step or .stp file.
+// positive length, --density with a box cell, an output that is not a writable .step or .stp file.
 void validate_request(const StepRequest& request);
 
 }  // namespace offsetgen::step

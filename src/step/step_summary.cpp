@@ -1,5 +1,7 @@
 #include "step/step_summary.h"
 
+#include "step/cell_frame.h"
+
 #include <fmt/format.h>
 
 namespace offsetgen::step {
@@ -8,7 +10,9 @@ std::string surface_words(const GenerationRequest& g) {
   return g.expression.empty() ? g.surface : fmt::format("{} (F = {})", g.name, g.expression);
 }
 
-std::string thickness_words(const StepSummary& s, double cell_size) {
+std::string thickness_words(const StepSummary& s, const std::array<double, 3>& cell_sizes) {
+  if (s.thickness_in_mm) return fmt::format("{} mm (along the physical normal", s.thickness_text);
+  const double cell_size = cell_sizes[0];
   if (!s.graded) return fmt::format("{} cell ({} mm", s.thickness_text, s.thickness * cell_size);
   return fmt::format("{} cell ({:.4g} to {:.4g} mm in the block", s.thickness_text, s.thickness_range[0] * cell_size,
                      s.thickness_range[1] * cell_size);
@@ -16,9 +20,10 @@ std::string thickness_words(const StepSummary& s, double cell_size) {
 
 std::string format_summary(const StepSummary& s, const StepRequest& r) {
   std::string out =
-      fmt::format("offsetgen step: {}: {} wall, t = {}; curvature limit {:.4f} cell), {}x{}x{} cells of {} mm\n",
+      fmt::format("offsetgen step: {}: {} wall, t = {}; curvature limit {:.4f} {}), {}x{}x{} cells of {} mm\n",
                   s.passed ? r.output + " written" : "no file written", s.surface, thickness_words(s, r.cell_size),
-                  s.thickness_limit, r.cells[0], r.cells[1], r.cells[2], r.cell_size);
+                  s.thickness_limit, s.thickness_in_mm ? "mm" : "cell", r.cells[0], r.cells[1], r.cells[2],
+                  cell_size_words(r.cell_size));
   const std::string patches = s.route == Route::Symmetry
                                   ? "symmetry patch"
                                   : fmt::format("box patch (the largest; boxes of 1/{} cell)", s.boxes_per_cell);

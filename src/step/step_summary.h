@@ -13,11 +13,12 @@ enum class Route { Symmetry, Box };
 
 struct StepSummary {
   std::string surface;
-  double thickness = 0;                     // cell units (a graded wall's at the origin)
+  double thickness = 0;                     // cell units, or mm (a box cell); a graded wall's at the origin
+  bool thickness_in_mm = false;             // a box cell's wall (step/cell_frame.h): its thickness, limit in mm
   bool graded = false;                      // the thickness an expression of x, y, z
   std::string thickness_text;               // as given, for the summary and the file's header
   std::array<double, 2> thickness_range{};  // smallest and largest in the block (sampled)
-  double thickness_limit = 0;               // cell units: 2 / the largest principal curvature
+  double thickness_limit = 0;               // cell units (or mm): 2 / the largest principal curvature
   Route route = Route::Symmetry;            // export's (a file's header does not say)
   int boxes_per_cell = 0;                   // the box route's boxes per cell side (0 on the symmetry route)
   // Per side of each symmetry patch (the larger of the two sheets), or of the largest box patch.
@@ -51,8 +52,9 @@ std::string format_summary(const StepSummary& summary, const StepRequest& reques
 // The catalog name, or an expression's name (its --name) and F.
 std::string surface_words(const GenerationRequest& generation);
 
-// "0.1 cell (1 mm", or for a graded wall "0.05 + 0.05*x cell (0.5 to 1.5 mm in the block" (the caller
-// closes the bracket): export's and check's summaries.
-std::string thickness_words(const StepSummary& summary, double cell_size);
+// "0.1 cell (1 mm", or for a graded wall "0.05 + 0.05*x cell (0.5 to 1.5 mm in the block", or for a
+// box cell's wall "1 mm (along the physical normal" (the caller closes the bracket): export's and
+// check's summaries.
+std::string thickness_words(const StepSummary& summary, const std::array<double, 3>& cell_size);
 
 }  // namespace offsetgen::step

@@ -17,4 +17,18 @@ void check_block(const std::array<int, 3>& cells, double cell_size) {
     throw InputError(fmt::format("--cell-size {} is not a positive length (mm)", cell_size));
 }
 
+void check_cell_size(const std::array<double, 3>& cell_size) {
+  for (double side : cell_size)
+    if (!positive_length(side)) throw InputError(fmt::format("--cell-size {} is not a positive length (mm)", side));
+}
+
+void check_block(const std::array<int, 3>& cells, const std::array<double, 3>& cell_size) {
+  check_block(cells, cell_size[0]);
+  check_cell_size(cell_size);
+}
+
+bool cube_cell(const std::array<double, 3>& cell_size) {
+  return cell_size[0] == cell_size[1] && cell_size[1] == cell_size[2];
+}
+
 }  // namespace offsetgen

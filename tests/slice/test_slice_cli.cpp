@@ -163,6 +163,9 @@ TEST(SliceCli, BadInputExits2AndWritesNothing) {
       {{"--cells", "9", "-o", dir + "/a.sl1"}, "larger than the SL1 screen"},
       {{"--cli-ascii", "-o", dir + "/a.svg"}, "--cli-ascii"},
       {{"--printer", "sl1s", "-o", dir + "/a.sl1"}, "--printer"},
+      // A box cell ("distorted cells") is meshed and written as STEP, not sliced yet; a bad size either way.
+      {{"--cell-size", "8,8,12", "-o", dir + "/a.cli"}, "slice takes a cube cell only"},
+      {{"--cell-size", "8,eight", "-o", dir + "/a.cli"}, "expected MM (a cube cell) or X,Y,Z"},
   };
   for (const auto& [extra, reason] : cases) {
     const std::vector<std::string> args = part_args(extra);

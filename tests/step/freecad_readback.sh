@@ -7,11 +7,13 @@
 # A surface whose block holds several pieces of wall (diamond: 3) gives that many solids and shells.
 # Box patches (the gyroid) meet along their edges within the fit's tolerance rather than exactly, and
 # the volumes of the boolean's pieces then add up to 1e-4 or so: the last argument is that bound.
-#   freecad_readback.sh <offsetgen> <freecadcmd> <scratch dir> [surface cells solids additivity]
+#   freecad_readback.sh <offsetgen> <freecadcmd> <scratch dir> [surface cells solids additivity cell-size thickness]
 set -euo pipefail
 offsetgen=$1 freecad=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:-1} additivity=${7:-2e-5}
+# A box cell (--cell-size X,Y,Z) takes its wall in mm: 1 mm there, as 0.1 of a 10 mm cube cell.
+cell_size=${8:-10} thickness=${9:-0.1}
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
-"$offsetgen" step --surface "$surface" --thickness 0.1 --cells "$cells" --cell-size 10 --tolerance 0.01 \
+"$offsetgen" step --surface "$surface" --thickness "$thickness" --cells "$cells" --cell-size "$cell_size" --tolerance 0.01 \
   -o p.step >summary.txt
 cat summary.txt
 exact=$(sed -n 's/.*exact wall \([0-9.]*\) mm^3.*/\1/p' summary.txt)
@@ -19,7 +21,7 @@ cat >read.py <<PY
 import FreeCAD
 import Part
 shape = Part.read("$PWD/p.step")
-box = Part.makeBox(30, 30, 30, FreeCAD.Vector(3.7, -1, -1))
+box = Part.makeBox(40, 40, 40, FreeCAD.Vector(3.7, -1, -1))
 cut, common = shape.cut(box), shape.common(box)
 print("SHAPE", shape.isValid(), len(shape.Solids), len(shape.Shells), repr(shape.Volume))
 print("CUT", cut.isValid(), repr(cut.Volume))

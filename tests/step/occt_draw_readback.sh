@@ -6,11 +6,13 @@
 # A surface whose block holds several pieces of wall (diamond: 3) gives that many solids and shells.
 # Box patches (the gyroid) meet along their edges within the fit's tolerance rather than exactly, and
 # the volumes of the boolean's pieces then add up to 1e-4 or so: the last argument is that bound.
-#   occt_draw_readback.sh <offsetgen> <occt-draw> <scratch dir> [surface cells solids additivity]
+#   occt_draw_readback.sh <offsetgen> <occt-draw> <scratch dir> [surface cells solids additivity cell-size thickness]
 set -euo pipefail
 offsetgen=$1 draw=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:-1} additivity=${7:-2e-5}
+# A box cell (--cell-size X,Y,Z) takes its wall in mm: 1 mm there, as 0.1 of a 10 mm cube cell.
+cell_size=${8:-10} thickness=${9:-0.1}
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
-"$offsetgen" step --surface "$surface" --thickness 0.1 --cells "$cells" --cell-size 10 --tolerance 0.01 \
+"$offsetgen" step --surface "$surface" --thickness "$thickness" --cells "$cells" --cell-size "$cell_size" --tolerance 0.01 \
   -o p.step >summary.txt
 cat summary.txt
 exact=$(sed -n 's/.*exact wall \([0-9.]*\) mm^3.*/\1/p' summary.txt)
@@ -20,7 +22,7 @@ testreadstep p.step sh
 puts "CHECKSHAPE: [checkshape sh]"
 puts [nbshapes sh]
 puts [vprops sh]
-box b 3.7 -1 -1 30 30 30
+box b 3.7 -1 -1 40 40 40
 bcommon inside sh b
 bcut outside sh b
 puts "COMMON: [checkshape inside]"

@@ -13,10 +13,13 @@
 #include "offsetgen_test_support.h"
 #include "sibling_executable.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Common.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
 #include <gp_Pnt.hxx>
 
@@ -40,6 +43,7 @@ using test_support::scratch_dir;
 std::string read_bytes(const std::string& path) { return test_support::read_file(path); }
 
 constexpr double kCellSize = 10, kTolerance = 0.01;
+const Point kCellMm{kCellSize, kCellSize, kCellSize};
 
 // The cell each surface's tests write: a thickness its patch layout covers (Neovius' and F-RD's
 // curvature limits are 0.106 and 0.107 cell: at 0.1 their offset sheets fold across the patch lines),
@@ -124,7 +128,7 @@ void expect_valid_solids_within_the_tolerance(const TopoDS_Shape& shape, const s
   for (double side : {1.0, -1.0}) {
     const std::vector<Point> points = exact_surface_points(walls.sheet(side), cells, 17, 64, 99);
     ASSERT_GT(points.size(), 500u * cells[0] * cells[1] * cells[2]);
-    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
+    const Deviation d = measure_deviation(shape, points, kCellMm, 1.0);
     EXPECT_LE(d.max, kTolerance) << "side " << side;
   }
 }
@@ -185,7 +189,7 @@ TEST_P(StepCell, ExactWallsLieWithinTheToleranceOfItsFaces) {
     // Other lines than the tool's (another seed, another density).
     const std::vector<Point> points = exact_surface_points(walls.sheet(side), {1, 1, 1}, 17, 64, 99);
     ASSERT_GT(points.size(), 500u);
-    const Deviation d = measure_deviation(shape, points, kCellSize, 1.0);
+    const Deviation d = measure_deviation(shape, points, kCellMm, 1.0);
     EXPECT_LE(d.max, kTolerance) << "side " << side;
     EXPECT_GT(d.max, 0.0);  // a fitted surface is not the exact one
   }
@@ -350,6 +354,87 @@ TEST_P(StepSameBytes, SameInputsWriteTheSameBytes) {
 INSTANTIATE_TEST_SUITE_P(Routes, StepSameBytes, ::testing::Values("schwarzp", "gyroid"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
+// Box cells ("distorted cells", --cell-size X,Y,Z): the walls of the composed field
+// G(x) = F(x/X, y/Y, z/Z), --thickness mm thick along the physical normal, from this process's own
+// functions. sheet() takes cell units, as exact_surface_points gives them.
+struct BoxCellWalls {
+  BoxCellWalls(const std::string& surface, const std::string& thickness, const std::array<int, 3>& cells,
+               const Point& cell)
+      : cell(cell), field([&] {
+          wall::WallRequest r;
+          r.generation.surface = surface;
+          r.generation.map = fmt::format("x/{}; y/{}; z/{}", cell[0], cell[1], cell[2]);
+          r.generation.domain = Surface::Box{{0, 0, 0}, {cells[0] * cell[0], cells[1] * cell[1], cells[2] * cell[2]}};
+          r.thickness = thickness;
+          return r;
+        }()) {
+    field.compile();
+  }
+  LevelFunction sheet(double side) {
+    return [this, side](size_t n, const double* x, const double* y, const double* z, double* out) {
+      wall::WallField::Worker worker(field);
+      std::vector<double> mx(n), my(n), mz(n), hs(n);
+      for (size_t i = 0; i < n; ++i) {
+        mx[i] = x[i] * cell[0];
+        my[i] = y[i] * cell[1];
+        mz[i] = z[i] * cell[2];
+        hs[i] = side * 0.5 * field.thickness_at(mx[i], my[i], mz[i], worker);
+      }
+      field.offsets(n, mx.data(), my.data(), mz.data(), hs.data(), out);
+    };
+  }
+  Point cell;
+  wall::WallField field;
+};
+
+// A gyroid cell of 10 x 10 x 15 mm with a 1 mm wall: valid closed solids filling the box cell, the
+// exact walls of the composed field (other lines than the tool's) within the tolerance of its faces,
+// and offsetgen check rebuilds the same walls from the file's header and passes it.
+TEST(StepBoxCells, AGyroidBoxCellIsValidWithinTheToleranceOfTheMillimetreWallAndPassesCheck) {
+  const std::string path = scratch_dir("box_cell") + "/g.step";
+  const test_support::CommandResult r =
+      run_offsetgen({"step", "--surface", "gyroid", "--thickness", "1", "--cells", "1", "--cell-size", "10,10,15",
+                     "--tolerance", "0.01", "-o", path});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("t = 1 mm (along the physical normal"), std::string::npos) << r.output;
+  const TopoDS_Shape shape = read_step(path);
+  const ShapeCheck c = check_shape(shape);
+  EXPECT_TRUE(c.valid);
+  EXPECT_TRUE(c.closed);
+  EXPECT_GE(c.solids, 1);
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  EXPECT_NEAR(x1 - x0, 10, 0.05);
+  EXPECT_NEAR(y1 - y0, 10, 0.05);
+  EXPECT_NEAR(z1 - z0, 15, 0.05);
+  BoxCellWalls walls("gyroid", "1", {1, 1, 1}, {10, 10, 15});
+  for (double side : {1.0, -1.0}) {
+    const std::vector<Point> points = exact_surface_points(walls.sheet(side), {1, 1, 1}, 17, 64, 99);
+    ASSERT_GT(points.size(), 500u);
+    const Deviation d = measure_deviation(shape, points, walls.cell, 1.0);
+    EXPECT_LE(d.max, kTolerance) << "side " << side;
+  }
+  const test_support::CommandResult checked = run_offsetgen({"check", path});
+  EXPECT_EQ(checked.exit_code, 0) << checked.output;
+  for (const std::string line : {"t = 1 mm (along the physical normal), 1x1x1 cells of 10 x 10 x 15 mm",
+                                 "PASS  deviation of the exact walls", "PASS  volume"})
+    EXPECT_NE(checked.output.find(line), std::string::npos) << line << "\n" << checked.output;
+}
+
+// Three equal sides are a cube cell: the wall in cell units and today's file, byte for byte.
+TEST(StepBoxCells, ThreeEqualSidesWriteTheSameBytesAsOneCellSize) {
+  const Written& w = one_cell("schwarzp");
+  ASSERT_EQ(w.run.exit_code, 0) << w.run.output;
+  const std::string path = scratch_dir("equal_sides") + "/p.step";
+  const test_support::CommandResult r =
+      run_offsetgen({"step", "--surface", "schwarzp", "--thickness", cell_case("schwarzp").thickness, "--cells", "1",
+                     "--cell-size", "10,10,10", "--tolerance", "0.01", "-o", path, "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_bytes(path), read_bytes(w.path));
+}
+
 TEST(StepExecutable, OnlyOffsetgenStepLinksOpenCascade) {
   const std::string plain = test_support::shared_libraries(OFFSETGEN_EXE);
   EXPECT_EQ(plain.find("libTKernel"), std::string::npos) << plain;
@@ -378,7 +463,8 @@ TEST_P(StepRefuses, WithItsExitCodeAReasonAndNoFile) {
   auto given = [&r](const std::string& option) {
     return std::find(r.args.begin(), r.args.end(), option) != r.args.end();
   };
-  std::vector<std::string> args = {"step", "--cell-size", "10"};
+  std::vector<std::string> args = {"step"};
+  if (!given("--cell-size")) args.insert(args.end(), {"--cell-size", "10"});
   if (!given("--cells")) args.insert(args.end(), {"--cells", "1"});
   if (!given("-o")) args.insert(args.end(), {"-o", out});
   args.insert(args.end(), r.args.begin(), r.args.end());
@@ -430,6 +516,43 @@ INSTANTIATE_TEST_SUITE_P(
                 {"--surface", "schwarzp", "--thickness", "0.1", "--cells", "2x0"},
                 2,
                 "not a positive number of cells"},
+        // Box cells ("distorted cells", --cell-size X,Y,Z): what they do not cover, and bad sizes.
+        Refusal{"density_with_a_box_cell",
+                {"--surface", "schwarzp", "--density", "0.2", "--cell-size", "10,10,15", "--tolerance", "0.01"},
+                2,
+                "--density needs a cube cell"},
+        Refusal{"symmetry_patches_with_a_box_cell",
+                {"--surface", "schwarzp", "--thickness", "1", "--cell-size", "10,10,15", "--patches", "symmetry"},
+                2,
+                "--patches symmetry needs a cube cell"},
+        Refusal{"graded_wall_with_a_box_cell",
+                {"--surface", "gyroid", "--thickness", "0.5 + 0.05*x", "--cell-size", "10,10,15"},
+                2,
+                "a graded --thickness with a box cell"},
+        Refusal{"box_cell_wall_beyond_its_curvature_bound",
+                {"--surface", "schwarzp", "--thickness", "6", "--cell-size", "10,10,15"},
+                2,
+                "bounded for the box cell"},
+        Refusal{"cell_size_with_a_zero_side",
+                {"--surface", "schwarzp", "--thickness", "1", "--cell-size", "10,0,15"},
+                2,
+                "--cell-size 0 is not a positive length"},
+        Refusal{"cell_size_with_a_negative_side",
+                {"--surface", "schwarzp", "--thickness", "1", "--cell-size", "10,10,-15"},
+                2,
+                "--cell-size -15 is not a positive length"},
+        Refusal{"cell_size_not_a_number",
+                {"--surface", "schwarzp", "--thickness", "1", "--cell-size", "10,ten,15"},
+                2,
+                "expected MM (a cube cell) or X,Y,Z"},
+        Refusal{"cell_size_of_two_sides",
+                {"--surface", "schwarzp", "--thickness", "1", "--cell-size", "10,15"},
+                2,
+                "expected MM (a cube cell) or X,Y,Z"},
+        Refusal{"cell_size_of_four_sides",
+                {"--surface", "schwarzp", "--thickness", "1", "--cell-size", "10,10,15,15"},
+                2,
+                "expected MM (a cube cell) or X,Y,Z"},
         Refusal{"not_a_step_name", {"--surface", "schwarzp", "--thickness", "0.1", "-o", "p.stl"}, 2, "end in .step"},
         // The request is validated once, by the library (step_request.h), not by the CLI before it.
         Refusal{"unknown_patches",

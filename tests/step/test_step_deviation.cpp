@@ -37,7 +37,7 @@ TopoDS_Face quarter_cylinder() {
 }
 
 // Distances in mm with cell_size 1: the points are given in the face's own units.
-double deviation_of(const Point& p) { return measure_deviation(quarter_cylinder(), {p}, 1.0, 10.0).max; }
+double deviation_of(const Point& p) { return measure_deviation(quarter_cylinder(), {p}, {1, 1, 1}, 10.0).max; }
 
 TEST(StepDeviation, PointAboveTheFaceIsItsRadialDistanceAway) {
   // The cubic quadrant stays within 3e-4 of the unit circle, so radius r is r - 1 away to that.
@@ -64,7 +64,7 @@ TEST(StepDeviation, PointOnTheFaceIsAtRoundingDistance) {
 }
 
 TEST(StepDeviation, PointWithNoFaceWithinReachCountsAsReach) {
-  const Deviation d = measure_deviation(quarter_cylinder(), {Point{5, 5, 5}}, 1.0, 0.25);
+  const Deviation d = measure_deviation(quarter_cylinder(), {Point{5, 5, 5}}, {1, 1, 1}, 0.25);
   EXPECT_EQ(d.max, 0.25);
   EXPECT_EQ(d.points, 1);
 }
