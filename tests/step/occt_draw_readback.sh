@@ -12,8 +12,13 @@ offsetgen=$1 draw=$2 dir=$3 surface=${4:-schwarzp} cells=${5:-2x1x1} solids=${6:
 # A box cell (--cell-size X,Y,Z) takes its wall in mm: 1 mm there, as 0.1 of a 10 mm cube cell.
 cell_size=${8:-10} thickness=${9:-0.1}
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
-"$offsetgen" step --surface "$surface" --thickness "$thickness" --cells "$cells" --cell-size "$cell_size" --tolerance 0.01 \
-  -o p.step >summary.txt
+# A file written once for both readers (box_cells_readback.sh): its p.step and summary.txt, copied.
+if [ -n "${STEP_WRITTEN_IN:-}" ]; then
+  cp "$STEP_WRITTEN_IN/p.step" "$STEP_WRITTEN_IN/summary.txt" .
+else
+  "$offsetgen" step --surface "$surface" --thickness "$thickness" --cells "$cells" --cell-size "$cell_size" \
+    --tolerance 0.01 -o p.step >summary.txt
+fi
 cat summary.txt
 exact=$(sed -n 's/.*exact wall \([0-9.]*\) mm^3.*/\1/p' summary.txt)
 cat >read.tcl <<'TCL'
