@@ -15,9 +15,10 @@ void add_step_command(CLI::App& app, StepOptions& o) {
                          "Catalog surface: by symmetry patches (schwarzp, diamond, neovius, iwp, frd), by box patches "
                          "(gyroid, fischerkoch, splitp, lidinoid)",
                          "Your own F(x, y, z), periodic with period 1 (by box patches)");
-  cmd->add_option("-t,--thickness", o.thickness,
-                  "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall). With a "
-                  "box cell (--cell-size X,Y,Z) in millimetres, along the physical normal (a number)");
+  cmd->add_option(
+      "-t,--thickness", o.thickness,
+      "Total wall thickness in cell units: a number, or an expression of x, y, z (a graded wall). With a "
+      "box cell (--cell-size X,Y,Z) in millimetres, along the physical normal (an expression's x, y, z in mm too)");
   cmd->add_option("--density", o.density, "Instead of --thickness: the relative density R of the wall");
   cmd->add_option("-c,--cells", o.cells, "Cells of the block: NX[xNY[xNZ]]")->capture_default_str();
   cmd->add_option("--cell-size", o.cell_size,

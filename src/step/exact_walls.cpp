@@ -51,14 +51,12 @@ void record_thickness(const wall::WallField& field, wall::WallField::Worker& wor
     throw InputError(
         "STEP export takes a graded wall as --thickness EXPR (an expression of x, y, z); --density-field is refused");
   const CellFrame frame = cell_frame(r);
-  if (frame.distorted() && field.graded())
-    throw InputError(
-        "a graded --thickness with a box cell (--cell-size X,Y,Z) is not covered yet: give a uniform wall, "
-        "--thickness T in mm");
   s.graded = field.graded();
   s.thickness_in_mm = frame.distorted();
   s.thickness = field.thickness_at(0, 0, 0, worker);
-  s.thickness_range = field.thickness_range(r.cells);
+  // Over the block in the field's units (a box cell's graded wall is an expression of x, y, z in mm).
+  s.thickness_range =
+      field.thickness_range({0, 0, 0}, frame.to_field({double(r.cells[0]), double(r.cells[1]), double(r.cells[2])}));
   s.thickness_text = s.graded ? r.wall.thickness : fmt::format("{}", s.thickness);
   try {
     // A box cell's field is the surface composed with its map: the limit is the cube cell's surface's.

@@ -11,7 +11,10 @@ std::string surface_words(const GenerationRequest& g) {
 }
 
 std::string thickness_words(const StepSummary& s, const std::array<double, 3>& cell_sizes) {
-  if (s.thickness_in_mm) return fmt::format("{} mm (along the physical normal", s.thickness_text);
+  if (s.thickness_in_mm && !s.graded) return fmt::format("{} mm (along the physical normal", s.thickness_text);
+  if (s.thickness_in_mm)
+    return fmt::format("{} mm ({:.4g} to {:.4g} mm in the block, along the physical normal", s.thickness_text,
+                       s.thickness_range[0], s.thickness_range[1]);
   const double cell_size = cell_sizes[0];
   if (!s.graded) return fmt::format("{} cell ({} mm", s.thickness_text, s.thickness * cell_size);
   return fmt::format("{} cell ({:.4g} to {:.4g} mm in the block", s.thickness_text, s.thickness_range[0] * cell_size,

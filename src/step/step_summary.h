@@ -53,8 +53,8 @@ std::string format_summary(const StepSummary& summary, const StepRequest& reques
 std::string surface_words(const GenerationRequest& generation);
 
 // "0.1 cell (1 mm", or for a graded wall "0.05 + 0.05*x cell (0.5 to 1.5 mm in the block", or for a
-// box cell's wall "1 mm (along the physical normal" (the caller closes the bracket): export's and
-// check's summaries.
+// box cell's wall "1 mm (along the physical normal" or "0.75 + 0.05*x mm (0.75 to 1.25 mm in the
+// block, along the physical normal" (the caller closes the bracket): export's and check's summaries.
 std::string thickness_words(const StepSummary& summary, const std::array<double, 3>& cell_size);
 
 }  // namespace offsetgen::step
