@@ -1,8 +1,10 @@
 // The plain parts of `offsetgen mesh`: pieces, orientation, file encodings, --cells.
+#include "cli/cells_option.h"
 #include "cli/mesh_command.h"
 #include "mesh/mesh_files.h"
 #include "mesh/triangle_mesh.h"
 #include "surfaces/surface.h"
+#include "validate/block_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -107,6 +109,19 @@ TEST(MeshCells, OneTwoOrThreeCountsAreAccepted) {
   EXPECT_EQ(parse_cells("2x3x4"), (std::array<int, 3>{2, 3, 4}));
   for (const char* bad : {"0", "-1", "2x", "x2", "2x3x4x5", "a", "2.5", ""})
     EXPECT_THROW(parse_cells(bad), InputError) << bad;
+}
+
+// One size is a cube cell, three a box cell; anything else, or a side that is not a positive length,
+// is refused.
+TEST(MeshCells, OneOrThreeCellSizesAreAcceptedAndEqualSidesAreACube) {
+  EXPECT_EQ(parse_cell_size("10"), (std::array<double, 3>{10, 10, 10}));
+  EXPECT_EQ(parse_cell_size("10,10,15"), (std::array<double, 3>{10, 10, 15}));
+  EXPECT_EQ(parse_cell_size("0.5,2,1e1"), (std::array<double, 3>{0.5, 2, 10}));
+  EXPECT_TRUE(cube_cell(parse_cell_size("10,10,10")));
+  EXPECT_FALSE(cube_cell(parse_cell_size("10,10,15")));
+  for (const char* bad : {"0", "-5", "10,0,15", "10,-1,15", "10,15", "10,10,15,15", "10,,15", "10,10,15,", ",10", "ten",
+                          "10,x,15", "inf", "nan", "1e999", ""})
+    EXPECT_THROW(parse_cell_size(bad), InputError) << bad;
 }
 
 }  // namespace
