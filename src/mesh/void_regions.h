@@ -1,0 +1,45 @@
+// Enclosed voids (issue 43): the connected components (6-neighbours) of a part's void voxels that do
+// not reach the border of the sampled box, which lies outside the body: resin or powder trapped there
+// cannot leave. Found by flood fill on the part-wide void bits (voxel_bits.h): first from the border
+// (the outside), then from each void voxel not yet reached, in scan order, so the regions and their
+// order do not depend on threads or tiles.
+#pragma once
+
+#include "mesh/voxel_bits.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace offsetgen::mesh {
+
+// Regions of at least this volume must drain (--drain); smaller ones are listed apart.
+inline constexpr double kDrainRegionMm3 = 1.0;
+
+struct VoidRegion {
+  uint64_t voxels = 0;
+  double volume = 0;          // mm^3, voxels times the voxel's volume
+  std::array<int, 3> seed{};  // its first voxel in scan order
+  // The voxels where it reaches furthest, [axis][0 low, 1 high], in voxel indices: the first met.
+  std::array<std::array<std::array<int, 3>, 2>, 3> extreme{};
+};
+
+struct VoidReport {
+  bool analysed = false;
+  std::vector<VoidRegion> regions;  // the enclosed ones, in scan order of their seeds
+  double total = 0, largest = 0;    // mm^3
+  size_t large = 0;                 // regions of kDrainRegionMm3 or more
+  double large_volume = 0;          // their volume, mm^3
+  double voxel = 0;                 // mm: the analysis voxel
+  double seconds = 0;
+  size_t bytes = 0;  // the bits held, at their most
+};
+
+// The enclosed regions of `void_bits` (voxels of `voxel_mm`).
+VoidReport find_enclosed_voids(const VoxelBits& void_bits, double voxel_mm);
+// The voxels of the enclosed regions under `below_mm3`, to fill solid (--fill-pockets); sets `filled`
+// to the volume they hold (mm^3).
+VoxelBits pockets_to_fill(const VoxelBits& void_bits, const VoidReport& report, double below_mm3, double& filled);
+
+}  // namespace offsetgen::mesh
