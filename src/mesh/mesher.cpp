@@ -532,7 +532,10 @@ MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& 
       measure, text, [&voids](const SampledBand& band) { voids.record(band); });
   m.stages.push_back({"measure", measure_seconds});
   const auto void_start = std::chrono::steady_clock::now();
-  b.voids = voids.finish();
+  b.voids = voids.finish([&](const VoxelBox& blocks) {
+    return sample_band(
+        field, domain, grid, m.extent.reach, m.field_bound_used, 1, [](double) {}, blocks, blocks);
+  });
   m.stages.push_back({"voids", voids.record_seconds() + seconds_since(void_start)});
   write_part(s, mesh, m, text, progress);
   return m;

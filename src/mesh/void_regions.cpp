@@ -1,5 +1,6 @@
 #include "mesh/void_regions.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -7,10 +8,11 @@
 namespace offsetgen::mesh {
 namespace {
 
-// Breadth first over the open voxels from `seeds`, marking `visited`; calls visit(index) once per
-// voxel. Two frontiers, so the memory held is the front, not the region.
+// Breadth first over the open voxels from `seeds` (already closed), closing each voxel as it is
+// reached, so the open bits are the flood's marks too; calls visit(index) once per voxel. Two
+// frontiers, so the memory held is the front, not the region.
 template <typename Visit>
-void flood(const VoxelBits& open, VoxelBits& visited, std::vector<uint64_t> front, const Visit& visit) {
+void flood(VoxelBits& open, std::vector<uint64_t> front, const Visit& visit) {
   const auto& n = open.size();
   const uint64_t step[3] = {n[1] * n[2], n[2], 1};
   std::vector<uint64_t> next;
@@ -20,12 +22,12 @@ void flood(const VoxelBits& open, VoxelBits& visited, std::vector<uint64_t> fron
       visit(i);
       const uint64_t c[3] = {i / step[0], i / step[1] % n[1], i % n[2]};
       for (size_t a = 0; a < 3; ++a) {
-        if (c[a] > 0 && open.get(i - step[a]) && !visited.get(i - step[a])) {
-          visited.set(i - step[a], true);
+        if (c[a] > 0 && open.get(i - step[a])) {
+          open.set(i - step[a], false);
           next.push_back(i - step[a]);
         }
-        if (c[a] + 1 < n[a] && open.get(i + step[a]) && !visited.get(i + step[a])) {
-          visited.set(i + step[a], true);
+        if (c[a] + 1 < n[a] && open.get(i + step[a])) {
+          open.set(i + step[a], false);
           next.push_back(i + step[a]);
         }
       }
@@ -34,8 +36,8 @@ void flood(const VoxelBits& open, VoxelBits& visited, std::vector<uint64_t> fron
   }
 }
 
-// The open voxels on the box's faces: the outside's seeds.
-std::vector<uint64_t> border_seeds(const VoxelBits& open, VoxelBits& visited) {
+// The open voxels on the box's faces, closed: the outside's seeds.
+std::vector<uint64_t> border_seeds(VoxelBits& open) {
   std::vector<uint64_t> seeds;
   const auto& n = open.size();
   for (uint64_t x = 0; x < n[0]; ++x)
@@ -43,8 +45,8 @@ std::vector<uint64_t> border_seeds(const VoxelBits& open, VoxelBits& visited) {
       const bool face = x == 0 || y == 0 || x + 1 == n[0] || y + 1 == n[1];
       for (uint64_t z = 0; z < n[2]; z += face ? 1 : std::max<uint64_t>(1, n[2] - 1)) {
         const uint64_t i = (x * n[1] + y) * n[2] + z;
-        if (open.get(i) && !visited.get(i)) {
-          visited.set(i, true);
+        if (open.get(i)) {
+          open.set(i, false);
           seeds.push_back(i);
         }
       }
@@ -54,22 +56,22 @@ std::vector<uint64_t> border_seeds(const VoxelBits& open, VoxelBits& visited) {
 
 }  // namespace
 
-VoidReport find_enclosed_voids(const VoxelBits& void_bits, double voxel_mm) {
+VoidReport find_enclosed_voids(VoxelBits& void_bits, double voxel_mm) {
   const auto start = std::chrono::steady_clock::now();
   VoidReport report;
   report.analysed = true;
   report.voxel = voxel_mm;
+  report.bytes = void_bits.memory_bytes();
   if (void_bits.count() == 0) return report;
-  VoxelBits visited(void_bits.box(), false);
-  flood(void_bits, visited, border_seeds(void_bits, visited), [](uint64_t) {});
+  flood(void_bits, border_seeds(void_bits), [](uint64_t) {});
   const double voxel3 = std::pow(voxel_mm, 3);
   for (uint64_t i = 0; i < void_bits.count(); ++i) {
-    if (!void_bits.get(i) || visited.get(i)) continue;
+    if (!void_bits.get(i)) continue;
     VoidRegion region;
     region.seed = void_bits.point(i);
     for (auto& axis : region.extreme) axis = {region.seed, region.seed};
-    visited.set(i, true);
-    flood(void_bits, visited, {i}, [&](uint64_t j) {
+    void_bits.set(i, false);
+    flood(void_bits, {i}, [&](uint64_t j) {
       ++region.voxels;
       const auto p = void_bits.point(j);
       for (size_t a = 0; a < 3; ++a) {
@@ -86,19 +88,140 @@ VoidReport find_enclosed_voids(const VoxelBits& void_bits, double voxel_mm) {
     }
     report.regions.push_back(region);
   }
-  report.bytes = void_bits.memory_bytes() + visited.memory_bytes();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
 
+namespace {
+
+// The part's values over a box of voxels, from the sampled band; blocks the band left out are void.
+class LocalValues {
+ public:
+  LocalValues(const VoxelBox& box, const SampledBand& band) : box_(box) {
+    for (size_t a = 0; a < 3; ++a) n_[a] = box[1][a] - box[0][a];
+    values_.assign(size_t(n_[0]) * size_t(n_[1]) * size_t(n_[2]), band.background);
+    for (const BandBlock& block : band.blocks)
+      for (int x = 0; x < kBlock; ++x)
+        for (int y = 0; y < kBlock; ++y)
+          for (int z = 0; z < kBlock; ++z) {
+            const std::array<int, 3> p{block.origin[0] + x, block.origin[1] + y, block.origin[2] + z};
+            if (!contains(p)) continue;
+            at(p) = block.solid ? -band.background : block.values[size_t(block_offset(x, y, z))];
+          }
+  }
+  bool contains(const std::array<int, 3>& p) const {
+    for (size_t a = 0; a < 3; ++a)
+      if (p[a] < box_[0][a] || p[a] >= box_[1][a]) return false;
+    return true;
+  }
+  size_t index(const std::array<int, 3>& p) const {
+    return (size_t(p[0] - box_[0][0]) * size_t(n_[1]) + size_t(p[1] - box_[0][1])) * size_t(n_[2]) +
+           size_t(p[2] - box_[0][2]);
+  }
+  size_t size() const { return values_.size(); }
+  float at(const std::array<int, 3>& p) const { return values_[index(p)]; }
+  float& at(const std::array<int, 3>& p) { return values_[index(p)]; }
+
+ private:
+  VoxelBox box_;
+  std::array<int, 3> n_{};
+  std::vector<float> values_;
+};
+
+// The region's void in voxels as the mesh encloses it: its voxels flooded from the seed, then every
+// cell between eight voxel centres with a corner among them, sampled 4^3 times by trilinear
+// interpolation of the corners' values (whose zero set the mesher's surface follows), the void share
+// counted. A region a few voxels thick loses several percent in its corners this way, as the mesh does.
+double interpolated_voxels(const LocalValues& values, const std::array<int, 3>& seed) {
+  std::vector<std::array<int, 3>> stack{seed}, members{seed};
+  std::vector<uint8_t> in(values.size(), 0);
+  in[values.index(seed)] = 1;
+  while (!stack.empty()) {
+    const auto p = stack.back();
+    stack.pop_back();
+    for (size_t a = 0; a < 3; ++a)
+      for (int side : {-1, 1}) {
+        auto q = p;
+        q[a] += side;
+        if (!values.contains(q) || in[values.index(q)] || !(values.at(q) > 0)) continue;
+        in[values.index(q)] = 1;
+        stack.push_back(q);
+        members.push_back(q);
+      }
+  }
+  // The cells with a member corner, each once: keyed by their lowest corner.
+  std::vector<uint8_t> cell_done(values.size(), 0);
+  constexpr int kSub = 4;
+  double sum = 0;
+  for (const auto& m : members)
+    for (int dx = -1; dx <= 0; ++dx)
+      for (int dy = -1; dy <= 0; ++dy)
+        for (int dz = -1; dz <= 0; ++dz) {
+          const std::array<int, 3> c{m[0] + dx, m[1] + dy, m[2] + dz};
+          const std::array<int, 3> far{c[0] + 1, c[1] + 1, c[2] + 1};
+          if (!values.contains(c) || !values.contains(far) || cell_done[values.index(c)]) continue;
+          cell_done[values.index(c)] = 1;
+          float v[2][2][2];
+          for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+              for (int k = 0; k < 2; ++k) v[i][j][k] = values.at({c[0] + i, c[1] + j, c[2] + k});
+          int positive = 0;
+          for (int i = 0; i < kSub; ++i)
+            for (int j = 0; j < kSub; ++j)
+              for (int k = 0; k < kSub; ++k) {
+                const double x = (i + 0.5) / kSub, y = (j + 0.5) / kSub, z = (k + 0.5) / kSub;
+                double f = 0;
+                for (int a = 0; a < 2; ++a)
+                  for (int b = 0; b < 2; ++b)
+                    for (int e = 0; e < 2; ++e)
+                      f += (a ? x : 1 - x) * (b ? y : 1 - y) * (e ? z : 1 - z) * double(v[a][b][e]);
+                positive += f > 0 ? 1 : 0;
+              }
+          sum += double(positive) / (kSub * kSub * kSub);
+        }
+  return sum;
+}
+
+}  // namespace
+
+void refine_small_regions(VoidReport& report, const BandSampler& sample) {
+  const double voxel3 = std::pow(report.voxel, 3);
+  for (VoidRegion& region : report.regions) {
+    if (region.volume < kRefineAboveMm3 || region.volume >= kRefineBelowMm3) continue;
+    // The region's box and a voxel around it, in whole blocks.
+    VoxelBox box{};
+    for (size_t a = 0; a < 3; ++a) {
+      const int lo = region.extreme[a][0][a] - 1, hi = region.extreme[a][1][a] + 2;
+      box[0][a] = lo >= 0 ? lo / kBlock * kBlock : -((-lo + kBlock - 1) / kBlock) * kBlock;
+      box[1][a] = hi >= 0 ? (hi + kBlock - 1) / kBlock * kBlock : -(-hi / kBlock) * kBlock;
+    }
+    const LocalValues values(box, sample(box));
+    if (!(values.at(region.seed) > 0)) continue;  // not the void recorded: keep the count
+    region.volume = interpolated_voxels(values, region.seed) * voxel3;
+  }
+  report.total = report.largest = report.large_volume = 0;
+  report.large = 0;
+  for (const VoidRegion& region : report.regions) {
+    report.total += region.volume;
+    report.largest = std::max(report.largest, region.volume);
+    if (region.volume >= kDrainRegionMm3) {
+      ++report.large;
+      report.large_volume += region.volume;
+    }
+  }
+}
+
 VoxelBits pockets_to_fill(const VoxelBits& void_bits, const VoidReport& report, double below_mm3, double& filled) {
+  // Each small region flooded from its seed in a copy of the void, its voxels marked.
+  VoxelBits open = void_bits;
   VoxelBits fill(void_bits.box(), false);
   filled = 0;
   for (const VoidRegion& region : report.regions) {
     if (region.volume >= below_mm3) continue;
-    const uint64_t i = void_bits.index(region.seed[0], region.seed[1], region.seed[2]);
+    const uint64_t i = open.index(region.seed[0], region.seed[1], region.seed[2]);
+    open.set(i, false);
     fill.set(i, true);
-    flood(void_bits, fill, {i}, [](uint64_t) {});
+    flood(open, {i}, [&fill](uint64_t j) { fill.set(j, true); });
     filled += region.volume;
   }
   return fill;

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace offsetgen::mesh {
@@ -33,13 +34,25 @@ struct VoidReport {
   double large_volume = 0;          // their volume, mm^3
   double voxel = 0;                 // mm: the analysis voxel
   double seconds = 0;
-  size_t bytes = 0;  // the bits held, at their most
+  size_t bytes = 0;  // the bits held
 };
 
-// The enclosed regions of `void_bits` (voxels of `voxel_mm`).
-VoidReport find_enclosed_voids(const VoxelBits& void_bits, double voxel_mm);
-// The voxels of the enclosed regions under `below_mm3`, to fill solid (--fill-pockets); sets `filled`
-// to the volume they hold (mm^3).
+// The enclosed regions of `void_bits` (voxels of `voxel_mm`). The bits serve as the flood's marks:
+// every void voxel is cleared once reached, so the analysis holds one bit a voxel.
+VoidReport find_enclosed_voids(VoxelBits& void_bits, double voxel_mm);
+// Regions this close to kDrainRegionMm3 are measured again from the part's values: a region of a
+// few hundred voxels counted whole is off by several percent, which decides which side of 1 mm^3 it
+// falls.
+inline constexpr double kRefineBelowMm3 = 4.0, kRefineAboveMm3 = 0.25;
+// Samples the part's band over the blocks whose first voxels lie in the box (narrow_band.h).
+using BandSampler = std::function<SampledBand(const VoxelBox& blocks)>;
+// Re-measures the regions between kRefineAboveMm3 and kRefineBelowMm3 as the mesh encloses them: the
+// part's values sampled again around each, interpolated trilinearly between voxel centres (whose zero
+// set the mesher's surface follows) and the void share counted; then the totals again.
+void refine_small_regions(VoidReport& report, const BandSampler& sample);
+
+// The voxels of the enclosed regions under `below_mm3`, to fill solid (--fill-pockets), from the void
+// bits as recorded (before find_enclosed_voids cleared them); sets `filled` to their volume (mm^3).
 VoxelBits pockets_to_fill(const VoxelBits& void_bits, const VoidReport& report, double below_mm3, double& filled);
 
 }  // namespace offsetgen::mesh

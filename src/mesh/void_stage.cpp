@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace offsetgen::mesh {
@@ -37,13 +38,22 @@ void VoidStage::plan(const wall::WallField& field, const Domain& domain, const V
         [&](double f) { progress((double(t) + f) / double(tiles.size())); }, tiles[t].blocks, tiles[t].owned);
     record_material(band, bits_);
   }
-  const VoidReport before = find_enclosed_voids(bits_, voxel_);
-  if (request_.fill_below > 0) {
-    filled_ = pockets_to_fill(bits_, before, request_.fill_below, summary_.filled_volume);
+  // The flood clears the bits it reaches: pockets to fill are found in the bits as recorded.
+  std::optional<VoxelBits> recorded;
+  if (request_.fill_below > 0) recorded = bits_;
+  VoidReport before = find_enclosed_voids(bits_, voxel_);
+  refine_small_regions(before, [&](const VoxelBox& blocks) {
+    return sample_band(
+        field, domain, grid, reach, use_field_bound, 1, [](double) {}, blocks, blocks);
+  });
+  if (recorded) {
+    filled_ = pockets_to_fill(*recorded, before, request_.fill_below, summary_.filled_volume);
+    recorded.reset();
     for (const VoidRegion& r : before.regions) summary_.filled_regions += r.volume < request_.fill_below ? 1 : 0;
     edits_.filled = &filled_;
   }
-  summary_.bytes = before.bytes + filled_.memory_bytes();
+  // At the most: the void, its copy and the copy flooded, and the pockets' bits.
+  summary_.bytes = before.bytes * (request_.fill_below > 0 ? 4 : 1);
   summary_.holes = plan_drain_holes(before, body, frame, request_);
   edits_.holes = holes_in_voxels(summary_.holes, frame);
   summary_.before = before;
@@ -58,11 +68,12 @@ void VoidStage::record(const SampledBand& band) {
   record_seconds_ += seconds_since(start);
 }
 
-VoidSummary VoidStage::finish() {
+VoidSummary VoidStage::finish(const BandSampler& sample) {
   if (bits_.count() == 0) return summary_;
   summary_.after = find_enclosed_voids(bits_, voxel_);
+  refine_small_regions(summary_.after, sample);
   summary_.analysed = true;
-  summary_.bytes = std::max(summary_.bytes, summary_.after.bytes + filled_.memory_bytes());
+  summary_.bytes = std::max(summary_.bytes, summary_.after.bytes + filled_.memory_bytes());  // the pockets' kept
   bits_ = VoxelBits();
   return summary_;
 }
@@ -84,9 +95,19 @@ std::vector<double> VoidStage::away_from_holes(const std::vector<std::array<floa
 
 namespace {
 
+// The count and volume of the regions of kDrainRegionMm3 or more, the largest few listed, and of the rest.
 std::string regions_text(const VoidReport& r) {
-  return fmt::format("{} of {:g} mm^3 or more ({:.1f} mm^3), {} smaller ({:.2f} mm^3)", r.large, kDrainRegionMm3,
-                     r.large_volume, r.regions.size() - r.large, r.total - r.large_volume);
+  std::vector<double> large;
+  for (const VoidRegion& region : r.regions)
+    if (region.volume >= kDrainRegionMm3) large.push_back(region.volume);
+  std::sort(large.rbegin(), large.rend());
+  constexpr size_t kListed = 8;
+  std::string list;
+  for (size_t i = 0; i < std::min(large.size(), kListed); ++i)
+    list += fmt::format("{}{:.1f}", i ? ", " : ": ", large[i]);
+  if (large.size() > kListed) list += ", ...";
+  return fmt::format("{} of {:g} mm^3 or more ({:.1f} mm^3{}), {} smaller ({:.2f} mm^3)", r.large, kDrainRegionMm3,
+                     r.large_volume, list, r.regions.size() - r.large, r.total - r.large_volume);
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ struct VoidSummary {
   size_t filled_regions = 0;
   double filled_volume = 0;       // mm^3 made solid
   double first_pass_seconds = 0;  // sampling the part once more to plan the edits
-  size_t bytes = 0;               // the bit grids held at once, at their most
+  size_t bytes = 0;               // the bit grids held at once, at their most (one bit a voxel each)
 };
 
 class VoidStage {
@@ -52,8 +52,8 @@ class VoidStage {
 
   // The mesh pass: each tile's band, as it is sampled (with the edits cut).
   void record(const SampledBand& band);
-  // Labels the recorded part.
-  VoidSummary finish();
+  // Labels the recorded part; `sample` samples it again where regions near 1 mm^3 are re-measured.
+  VoidSummary finish(const BandSampler& sample);
 
   // The depths of the points (mm) that lie away from every hole's wall: near one, the hole's wall is
   // not skin (skin_measure.h).

@@ -27,7 +27,8 @@ VoxelBits two_cavities(bool open) {
 }
 
 TEST(MeshVoids, FindsTheClosedCavitiesNotTheOutside) {
-  const VoidReport r = find_enclosed_voids(two_cavities(false), 0.5);
+  VoxelBits bits = two_cavities(false);
+  const VoidReport r = find_enclosed_voids(bits, 0.5);
   ASSERT_EQ(r.regions.size(), 2u);
   EXPECT_EQ(r.regions[0].voxels, 64u);
   EXPECT_EQ(r.regions[1].voxels, 216u);
@@ -39,14 +40,16 @@ TEST(MeshVoids, FindsTheClosedCavitiesNotTheOutside) {
 }
 
 TEST(MeshVoids, ACavityOpenToTheOutsideIsNotEnclosed) {
-  const VoidReport r = find_enclosed_voids(two_cavities(true), 0.5);
+  VoxelBits bits = two_cavities(true);
+  const VoidReport r = find_enclosed_voids(bits, 0.5);
   ASSERT_EQ(r.regions.size(), 1u);
   EXPECT_EQ(r.regions[0].voxels, 64u);
 }
 
 TEST(MeshVoids, PocketsUnderTheVolumeAreFilled) {
   const VoxelBits bits = two_cavities(false);
-  const VoidReport r = find_enclosed_voids(bits, 0.5);
+  VoxelBits flooded = bits;
+  const VoidReport r = find_enclosed_voids(flooded, 0.5);
   double filled = 0;
   const VoxelBits fill = pockets_to_fill(bits, r, 10.0, filled);
   EXPECT_DOUBLE_EQ(filled, 64 * 0.125);

@@ -3,7 +3,8 @@
 // flood-fills the void from the grid's border (the outside), and labels what void is left: the enclosed
 // regions, 6-connected. Prints one line:
 //   stl_voids: N enclosed regions, V mm^3 trapped (largest L mm^3); K of 1 mm^3 or more (W mm^3)
-// then each region of 1 mm^3 or more, largest first. Usage: stl_voids PART.stl [VOXEL_MM, default 0.08]
+// then each region of 1 mm^3 or more and at least the eight largest, largest first. Usage: stl_voids PART.stl
+// [VOXEL_MM, default 0.08]
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -142,8 +143,10 @@ int main(int argc, char** argv) {
   // state: 0 void unvisited, 1 solid, 2 visited void.
   std::vector<uint8_t>& state = g.solid;
   std::vector<int64_t> stack;
+  std::array<double, 6> bbox{};
   auto flood = [&](int64_t seed) {
     int64_t voxels = 0;
+    bbox = {HUGE_VAL, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     state[size_t(seed)] = 2;
     stack.push_back(seed);
     while (!stack.empty()) {
@@ -151,6 +154,12 @@ int main(int argc, char** argv) {
       stack.pop_back();
       ++voxels;
       const int64_t z = v % g.n[2], y = v / g.n[2] % g.n[1], x = v / (g.n[1] * g.n[2]);
+      const double c[3] = {g.lo[0] + (double(x) + 0.5) * h, g.lo[1] + (double(y) + 0.5) * h,
+                           g.lo[2] + (double(z) + 0.5) * h};
+      for (size_t a = 0; a < 3; ++a) {
+        bbox[a] = std::min(bbox[a], c[a]);
+        bbox[a + 3] = std::max(bbox[a + 3], c[a]);
+      }
       const int64_t nb[6][3] = {{x - 1, y, z}, {x + 1, y, z}, {x, y - 1, z},
                                 {x, y + 1, z}, {x, y, z - 1}, {x, y, z + 1}};
       for (const auto& q : nb) {
@@ -164,11 +173,21 @@ int main(int argc, char** argv) {
     return voxels;
   };
   flood(g.at(0, 0, 0));  // the border is void: the grid has two voxels of margin
-  std::vector<double> volumes;
+  struct Region {
+    double volume;
+    std::array<double, 6> box;
+  };
+  std::vector<Region> regions;
   const double voxel3 = h * h * h;
   for (int64_t v = 0; v < int64_t(state.size()); ++v)
-    if (state[size_t(v)] == 0) volumes.push_back(double(flood(v)) * voxel3);
-  std::sort(volumes.rbegin(), volumes.rend());
+    if (state[size_t(v)] == 0) {
+      const double volume = double(flood(v)) * voxel3;
+      regions.push_back({volume, bbox});
+    }
+  std::stable_sort(regions.begin(), regions.end(),
+                   [](const Region& a, const Region& b) { return a.volume > b.volume; });
+  std::vector<double> volumes;
+  for (const Region& r : regions) volumes.push_back(r.volume);
   double total = 0, large_volume = 0;
   size_t large = 0;
   for (double v : volumes) {
@@ -181,6 +200,9 @@ int main(int argc, char** argv) {
   std::printf(
       "stl_voids: %zu enclosed regions, %.1f mm^3 trapped (largest %.1f mm^3); %zu of 1 mm^3 or more (%.1f mm^3)\n",
       volumes.size(), total, volumes.empty() ? 0.0 : volumes.front(), large, large_volume);
-  for (size_t i = 0; i < large; ++i) std::printf("  region %zu: %.2f mm^3\n", i + 1, volumes[i]);
+  for (size_t i = 0; i < std::max<size_t>(large, std::min<size_t>(volumes.size(), 8)); ++i)
+    std::printf("  region %zu: %.2f mm^3, box (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f) mm\n", i + 1, volumes[i],
+                regions[i].box[0], regions[i].box[1], regions[i].box[2], regions[i].box[3], regions[i].box[4],
+                regions[i].box[5]);
   return 0;
 }
