@@ -47,8 +47,9 @@ inline constexpr double kRefineBelowMm3 = 4.0, kRefineAboveMm3 = 0.25;
 // Samples the part's band over the blocks whose first voxels lie in the box (narrow_band.h).
 using BandSampler = std::function<SampledBand(const VoxelBox& blocks)>;
 // Re-measures the regions between kRefineAboveMm3 and kRefineBelowMm3 as the mesh encloses them: the
-// part's values sampled again around each, interpolated trilinearly between voxel centres (whose zero
-// set the mesher's surface follows) and the void share counted; then the totals again.
+// part's values sampled again around each, and the surface volumeToMesh builds from them (a point in
+// each cell at the average of its edges' zero crossings, a quad across each edge that changes sign)
+// taken to enclose the region; then the totals again.
 void refine_small_regions(VoidReport& report, const BandSampler& sample);
 
 // The voxels of the enclosed regions under `below_mm3`, to fill solid (--fill-pockets), from the void
