@@ -585,7 +585,9 @@ std::string format_body(const MeshSummary& m) {
         "most {:.3g} mm deep\n",
         b.measured_skin.thinnest,
         b.measured_skin.by_pieces ? fmt::format("over {} cavities", b.measured_skin.cavities)
-                                  : std::string("(tile by tile: the vertices deeper than a voxel)"),
+        : b.voids.holes.empty()
+            ? std::string("(tile by tile: the vertices deeper than a voxel)")
+            : std::string("(the vertices deeper than a voxel, two voxels clear of the drain holes)"),
         b.skin, b.voxel, b.measured_skin.outer_deepest);
   } else {
     s += "  skin:       none (--skin 0): the lattice is cut flush by the body\n";
