@@ -132,10 +132,13 @@ std::string format_voids(const VoidSummary& v) {
                      v.filled_regions, v.fill_below, v.filled_volume);
   if (!v.holes.empty()) {
     static const char* const kAxis[] = {"X", "Y", "Z"};
+    const bool by_hand = v.holes.front().role == "by hand";
     s += fmt::format(
-        "  drain:      {} holes of {:g} mm (drain: the lowest voxel of a region along {}, air: its "
-        "highest), each from inside the void out through the nearest point of the surface\n",
-        v.holes.size(), v.holes.front().diameter, kAxis[v.up]);
+        "  drain:      {} holes of {:g} mm ({}), each from inside the void out through the nearest point of the "
+        "surface\n",
+        v.holes.size(), v.holes.front().diameter,
+        by_hand ? std::string("placed by hand, --drain-at")
+                : fmt::format("drain: the lowest voxel of a region along {}, air: its highest", kAxis[v.up]));
     for (const PlannedHole& h : v.holes)
       s += fmt::format(
           "              {:<7} at ({:.3f}, {:.3f}, {:.3f}) mm, out along ({:.4f}, {:.4f}, {:.4f}), "
