@@ -119,6 +119,7 @@ int run_mesh_command(const MeshOptions& o) {
   s.min_piece = o.min_piece;
   s.output = o.output;
   s.threads = o.threads;
+  s.drain = drain_request(o);
   ProgressLine bar("[offsetgen mesh]");
   mesh::MeshSummary summary = mesh::run_mesh(
       s, [&](const std::string& stage, double f) { bar.show(stage, f); },

@@ -24,6 +24,7 @@ void add_mesh_command(CLI::App& app, MeshOptions& o) {
                       "(docs/maps.md)");
   cmd->add_option("--domain", o.domain, "With --map and no --body: the box X0,Y0,Z0:X1,Y1,Z1 (mm) to fill");
   add_body_options(cmd, o)->excludes(cells);
+  add_drain_options(cmd, o);
   cmd->add_option("--cell-size", o.cell_size,
                   "Cell edge length in millimetres: MM (a cube cell), or X,Y,Z (a box cell, \"distorted cells\": the "
                   "lattice u = x/X, v = y/Y, w = z/Z of a block of --cells, meshed as --map \"x/X; y/Y; z/Z\": "

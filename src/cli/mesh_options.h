@@ -3,6 +3,7 @@
 #pragma once
 
 #include "cli/body_options.h"
+#include "cli/drain_options.h"
 #include "cli/wall_options.h"
 
 #include <CLI/CLI.hpp>
@@ -13,7 +14,7 @@
 
 namespace offsetgen {
 
-struct MeshOptions : WallOptions, BodyOptions {
+struct MeshOptions : WallOptions, BodyOptions, DrainOptions {
   std::string cells = "1", output;
   std::string cell_size = "10";  // MM or X,Y,Z (cli/cells_option.h)
   bool cell_size_given = false, cells_given = false;

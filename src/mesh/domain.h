@@ -10,6 +10,8 @@
 
 namespace offsetgen::mesh {
 
+struct PartEdits;  // part_edits.h
+
 // Where a block of voxels lies relative to the domain.
 enum class BlockPlace {
   Outside,  // every voxel at least `margin` outside: nothing of the part there
@@ -35,8 +37,9 @@ class Domain {
   // Voxels with d above this are outside the part whatever the lattice does, so the walls are not
   // evaluated there (the box's faces lie halfway between voxels: one voxel suffices).
   virtual double lattice_margin() const = 0;
-  double skin = 0;    // voxels
-  double fillet = 0;  // voxels
+  double skin = 0;                   // voxels
+  double fillet = 0;                 // voxels
+  const PartEdits* edits = nullptr;  // drain holes and filled pockets (--drain, --fill-pockets)
 };
 
 using wall::part_value;

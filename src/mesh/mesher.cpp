@@ -41,6 +41,20 @@ class StageClock {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+// --drain and its company apply to a body, analysed whole.
+void validate_drain(const MeshRequest& s) {
+  const DrainRequest& d = s.drain;
+  if (!(d.diameter >= 0) || !std::isfinite(d.diameter))
+    throw InputError(fmt::format("--drain {} is not a diameter (mm)", d.diameter));
+  if (!(d.fill_below >= 0) || !std::isfinite(d.fill_below))
+    throw InputError(fmt::format("--fill-pockets {} is not a volume (mm^3)", d.fill_below));
+  if (!d.at.empty() && d.diameter <= 0) throw InputError("--drain-at needs the holes' diameter: --drain D (mm)");
+  if (d.any() && !s.body)
+    throw InputError("--drain and --fill-pockets act on a part's enclosed voids: they need --body");
+  if (d.any() && s.tile_range)
+    throw InputError("--drain and --fill-pockets plan over the whole part: not with --tile-range");
+}
+
 void validate(const MeshRequest& s) {
   check_block(s.cells, s.cell_size);
   if (s.resolution < 0) throw InputError(fmt::format("--resolution {} is not a positive voxel count", s.resolution));
@@ -57,6 +71,7 @@ void validate(const MeshRequest& s) {
   if (s.tile_range && format_for_path(s.output) != MeshFormat::Stl)
     throw InputError(fmt::format("--tile-range writes a partial binary STL: -o '{}' is not .stl", s.output));
   if (s.body) body::validate_body(*s.body, s.output);
+  validate_drain(s);
 }
 
 // What sets the wall: "t=0.1", "rho=0.2" or "rho=<expression>".
@@ -109,6 +124,8 @@ int threads_for(const MeshRequest& s) {
 
 // Each tile's triangles, in millimetres and facing outward, as they are produced.
 using TileHook = std::function<void(const TriangleMesh&)>;
+// Each tile's sampled band, before it is meshed.
+using BandHook = std::function<void(const SampledBand&)>;
 
 std::string tile_progress(size_t done, size_t total, double elapsed) {
   std::string s = fmt::format("tile {} of {}", done + 1, total);
@@ -177,7 +194,7 @@ void require_sound(const MeshRequest& s, const MeshSummary& m) {
 template <typename ToMm>
 TriangleMesh mesh_part(const MeshRequest& s, const wall::WallField& field, const Domain& domain, const VoxelGrid& grid,
                        MeshSummary& m, const ProgressCallback& progress, const ToMm& to_mm, const TileHook& hook,
-                       const std::string& description) {
+                       const std::string& description, const BandHook& band_hook = {}) {
   const std::vector<Tile> tiles = make_tiles(domain.block_range(), s.tile);
   m.tiles = tiles.size();
   m.tile_size = s.tile;
@@ -222,6 +239,7 @@ TriangleMesh mesh_part(const MeshRequest& s, const wall::WallField& field, const
     m.tally += band.tally;
     m.skipped_voxels += band.skipped_voxels;
     if (m.body) m.body->deep_blocks += band.deep_blocks;
+    if (band_hook) band_hook(band);
 
     progress(stage + "extracting the surface (OpenVDB)", -1);
     step = std::chrono::steady_clock::now();
@@ -394,6 +412,18 @@ MeshSummary run_block(const MeshRequest& s, MeshSummary m, wall::WallField& fiel
   return m;
 }
 
+// --drain-at points must lie inside the body.
+void check_drain_points(const DrainRequest& d, const BodyDomain& domain, int threads) {
+  std::vector<std::array<float, 3>> points;
+  for (const auto& p : d.at)
+    points.push_back({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+  const std::vector<double> depth = domain.distances(points, threads);
+  for (size_t i = 0; i < points.size(); ++i)
+    if (!(depth[i] < 0))
+      throw InputError(fmt::format("--drain-at {:g},{:g},{:g} lies outside the body: a hole starts inside a void",
+                                   d.at[i][0], d.at[i][1], d.at[i][2]));
+}
+
 MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& body_mesh, wall::WallField& field,
                      const ProgressCallback& progress) {
   BodySummary& b = *m.body;
@@ -420,6 +450,7 @@ MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& 
       resolution = std::max(resolution, static_cast<int>(std::ceil(3 * s.cell_size / settings.skin - 1e-9)));
     b.voxel = s.cell_size / resolution;
   }
+  check_drain_diameter(s.drain, b.voxel, b.box);
   const double per_cell = s.cell_size / b.voxel;
   m.resolution = static_cast<int>(std::lround(per_cell));
   check_wall_voxels(
@@ -445,8 +476,9 @@ MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& 
 
   progress("indexing the body's facets", -1);
   const VoxelFrame frame{b.origin, b.voxel};
-  const BodyDomain domain(body_mesh, frame, settings.skin / b.voxel, settings.fillet / b.voxel);
+  BodyDomain domain(body_mesh, frame, settings.skin / b.voxel, settings.fillet / b.voxel);
   b.index_bytes = domain.memory_bytes();
+  check_drain_points(s.drain, domain, threads_for(s));
   clock.done("body");
 
   VoxelGrid grid;
@@ -458,6 +490,16 @@ MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& 
   m.requested_density = s.wall.generation.density;
   b.part_box[0].fill(HUGE_VAL);
   b.part_box[1].fill(-HUGE_VAL);
+  // The enclosed voids: planned on a first pass with --drain or --fill-pockets, found on the mesh pass.
+  VoidStage voids(s.drain, domain.block_range(), b.voxel, s.tile_range.has_value());
+  if (voids.plans_edits()) {
+    voids.plan(field, domain, grid, m.extent.reach, m.field_bound_used, threads_for(s),
+               make_tiles(domain.block_range(), s.tile), body_mesh, frame,
+               [&](double f) { progress("finding the enclosed voids", f); });
+    domain.edits = &voids.edits();
+    m.stages.push_back({"drain plan", voids.first_pass_seconds()});
+  }
+  const bool holes = !voids.edits().holes.empty();
   double measure_seconds = 0;
   // Each tile's (or the whole mesh's) box and skin: the skin by closed surfaces when the mesh is
   // held, by depth tile by tile when it is streamed.
@@ -469,7 +511,10 @@ MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& 
       b.part_box[1][a] = std::max(b.part_box[1][a], box[1][a]);
     }
     if (settings.skin > 0) {
-      if (m.streamed) {
+      if (holes) {  // the holes' walls cross the skin: measured away from them, vertex by vertex
+        measure_skin_by_depth(voids.away_from_holes(mesh.points, domain.distances(mesh.points, threads_for(s)), frame),
+                              b.voxel, b.measured_skin);
+      } else if (m.streamed) {
         measure_skin_by_depth(domain.distances(mesh.points, threads_for(s)), b.voxel, b.measured_skin);
       } else {
         b.measured_skin = measure_skin(mesh, domain.distances(mesh.points, threads_for(s)), b.voxel);
@@ -484,8 +529,14 @@ MeshSummary run_body(const MeshRequest& s, MeshSummary m, const body::BodyMesh& 
         const auto q = frame.centre_mm({double(p[0]), double(p[1]), double(p[2])});
         return std::array<float, 3>{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
       },
-      measure, text);
+      measure, text, [&voids](const SampledBand& band) { voids.record(band); });
   m.stages.push_back({"measure", measure_seconds});
+  const auto void_start = std::chrono::steady_clock::now();
+  b.voids = voids.finish([&](const VoxelBox& blocks) {
+    return sample_band(
+        field, domain, grid, m.extent.reach, m.field_bound_used, 1, [](double) {}, blocks, blocks);
+  });
+  m.stages.push_back({"voids", voids.record_seconds() + seconds_since(void_start)});
   write_part(s, mesh, m, text, progress);
   return m;
 }
@@ -534,7 +585,9 @@ std::string format_body(const MeshSummary& m) {
         "most {:.3g} mm deep\n",
         b.measured_skin.thinnest,
         b.measured_skin.by_pieces ? fmt::format("over {} cavities", b.measured_skin.cavities)
-                                  : std::string("(tile by tile: the vertices deeper than a voxel)"),
+        : b.voids.holes.empty()
+            ? std::string("(tile by tile: the vertices deeper than a voxel)")
+            : std::string("(the vertices deeper than a voxel, two voxels clear of the drain holes)"),
         b.skin, b.voxel, b.measured_skin.outer_deepest);
   } else {
     s += "  skin:       none (--skin 0): the lattice is cut flush by the body\n";
@@ -552,6 +605,7 @@ std::string format_body(const MeshSummary& m) {
   }
   s += "\n";
   s += fmt::format("  part box:   {}\n", format_box(b.part_box));
+  s += format_voids(b.voids);
   return s;
 }
 

@@ -11,6 +11,7 @@
 #include "mesh/narrow_band.h"
 #include "mesh/skin_measure.h"
 #include "mesh/triangle_mesh.h"
+#include "mesh/void_stage.h"
 #include "wall/wall_field.h"
 
 #include <array>
@@ -37,7 +38,8 @@ struct MeshRequest {
   int tile = 256;                   // voxels per tile side (a multiple of 8); 0: one tile (tiles.h)
   std::optional<std::pair<int, int>> tile_range;  // --tile-range I/N: share I of N, a partial STL
   std::string output;
-  int threads = 0;  // 0: one per hardware thread
+  int threads = 0;     // 0: one per hardware thread
+  DrainRequest drain;  // --drain, --drain-at, --up, --fill-pockets (with a body)
 };
 
 inline constexpr int kMinVoxelsPerWall = 2;  // thinner walls are refused
@@ -71,6 +73,7 @@ struct BodySummary {
   size_t index_bytes = 0, deep_blocks = 0;
   std::optional<double> expected_density;  // --density, or the sheet density of a uniform --thickness
   SkinReport measured_skin;
+  VoidSummary voids;  // enclosed voids, before and after --drain and --fill-pockets
 };
 
 struct MeshSummary {

@@ -1,5 +1,7 @@
 #include "mesh/narrow_band.h"
 
+#include "mesh/part_edits.h"
+
 #include "wall/field_bound.h"
 #include "wall/parallel_blocks.h"
 
@@ -45,6 +47,7 @@ class BlockSampler {
         bound_(field, use_field_bound ? field.field_lipschitz() : 0, reach, (kActiveBand + domain.fillet) * v_) {
     skin_given_ = domain.skin;
     margin_ = domain.lattice_margin();
+    edits_ = domain.edits;
     // Planted faults for the tests of the part's check (docs/testing.md), as git's GIT_TEST_*.
     if (const char* fault = std::getenv("OFFSETGEN_TEST_FAULT")) {
       plant_shallow_skin_ = std::string(fault) == "shallow-skin";
@@ -54,6 +57,17 @@ class BlockSampler {
   bool drops_solid_blocks() const { return plant_dropped_blocks_; }
 
   void sample(const std::array<int, 3>& origin, BlockResult& out) {
+    sample_part(origin, out);
+    if (!edits_ || !apply_part_edits(*edits_, origin, background_, out.block.values)) return;
+    // The edited values decide again which voxels are inside and active.
+    out.inside = 0;
+    out.any = false;
+    out.block.active.assign(kBlockVoxels, 0);
+    for (size_t i = 0; i < static_cast<size_t>(kBlockVoxels); ++i) store(out, i, out.block.values[i]);
+  }
+
+ private:
+  void sample_part(const std::array<int, 3>& origin, BlockResult& out) {
     out = BlockResult{};
     out.block.origin = origin;
     // The planted fault: the skin read 1.5 voxels too shallow in one block of every five.
@@ -131,7 +145,6 @@ class BlockSampler {
     tally(place, out);
   }
 
- private:
   using Far = wall::FieldBound::Far;
   Far far_from_walls(const double* centre, double radius) const { return bound_.far_from_walls(centre, radius); }
   double without_wall(double d) const { return part_value_without_wall(d, skin_, kActiveBand, background_); }
@@ -178,6 +191,7 @@ class BlockSampler {
   wall::FieldBound bound_;
   double skin_given_ = 0, skin_ = 0, margin_ = 0;
   bool plant_shallow_skin_ = false, plant_dropped_blocks_ = false;
+  const PartEdits* edits_ = nullptr;
   std::array<double, kBlockVoxels> d_{};
   // How much of each voxel the lattice alone fills, min(max(1/2 - w, 0), 1) with w in voxels (as the
   // body's share): a voxel count of w < 0 would alias with the cells when voxels divide them evenly.
