@@ -67,14 +67,17 @@ TopoDS_Shape trim_by_body(const TopoDS_Shape& lattice, const CadBody& body, Body
   }
   const TopoDS_Shape part_solids = solids_of(result);
   part.seconds_trim = seconds_since(t0);
-  const ShapeCheck c = check_shape(part_solids);
+  return part_solids;
+}
+
+void measure_part(const TopoDS_Shape& shape, BodyPart& part) {
+  const ShapeCheck c = check_shape(shape);
   part.valid = c.valid;
   part.closed = c.closed;
   part.solids = c.solids;
   part.shells = c.shells;
   part.faces = c.faces;
   part.volume = c.volume;
-  return part_solids;
 }
 
 std::string body_part_failure(const BodyPart& p) {

@@ -1,6 +1,7 @@
 // The lattice of `offsetgen step --body` trimmed by the body with OpenCASCADE's booleans: lattice ∩
-// body without a skin; with one, body - (core - lattice), which is skin ∪ (lattice ∩ core) and asks no
-// boolean to merge coincident faces (the pores lie inside the body, at the skin's depth).
+// body without a skin; with one, (body - core) ∪ (lattice ∩ core): the skin and the lattice's part
+// meet on the core's faces, where the fuse merges them. The pores the skin seals become the solid's
+// inner shells (voids).
 #pragma once
 
 #include "step/body_part.h"
@@ -16,10 +17,16 @@
 namespace offsetgen::step {
 
 // `lattice` in block coordinates (mm from the block's corner). The part: a compound of its solids,
-// one per connected piece; its checks (BRepCheck_Analyzer, closed shells, volume) recorded in `part`.
-// Throws std::runtime_error where a boolean fails.
+// one per connected piece; the booleans' seconds recorded in `part`. Throws std::runtime_error where
+// a boolean fails.
 TopoDS_Shape trim_by_body(const TopoDS_Shape& lattice, const CadBody& body, BodyPart& part,
                           const std::function<void(const std::string&)>& say);
+
+// The part's checks (BRepCheck_Analyzer, closed shells, solids, faces, volume) into `part`. Export
+// measures the file read back: the volume of the booleans' result in memory was 0.11% below that of
+// the same solid written and read back (a gyroid part, 4311.46 against 4316.35 mm^3, which FreeCAD,
+// occt-draw's Gauss and adaptive integration and the mesh route, 4316.7, all agree with).
+void measure_part(const TopoDS_Shape& shape, BodyPart& part);
 
 // "" when the part is valid closed solids, else what fails.
 std::string body_part_failure(const BodyPart& part);

@@ -79,7 +79,11 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   // of it.
   say("measuring");
   measure_solid(brep.solid, block, field, worker, exact_volume, s);
-  if (s.failure.empty() && body) s.failure = body_part_failure(s.body);
+  if (body) {
+    say("reading the part back, measuring it");
+    measure_part(read_step(file.string()), s.body);
+    if (s.failure.empty()) s.failure = body_part_failure(s.body);
+  }
   if (s.failure.empty()) s.failure = file_holds_the_solid(bytes, part);
   if (s.failure.empty()) {
     write_file(r.output, bytes);
