@@ -5,6 +5,7 @@
 #include "surfaces/input_error.h"
 
 #include <fmt/format.h>
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
@@ -95,10 +96,23 @@ TopoDS_Shape closed_solids(const TopoDS_Shape& shape, const std::string& path) {
         "--body {}: OpenCASCADE's BRepCheck_Analyzer finds the body not valid (checkshape in occt-draw says where); "
         "repair it in your CAD tool",
         path));
-  for (TopExp_Explorer e(solids, TopAbs_SOLID); e.More(); e.Next())
+  std::vector<TopoDS_Shape> each;
+  for (TopExp_Explorer e(solids, TopAbs_SOLID); e.More(); e.Next()) {
     if (!(volume_of(e.Current()) > 0))
       throw InputError(fmt::format(
           "--body {}: a solid of it has no positive volume (its faces point inward); fix it in your CAD tool", path));
+    each.push_back(e.Current());
+  }
+  // Overlapping solids (two bodies in one file) would each be offset and trimmed on its own: the
+  // booleans then keep neither the lattice nor the skin where they overlap.
+  for (size_t i = 0; i < each.size(); ++i)
+    for (size_t j = i + 1; j < each.size(); ++j) {
+      BRepAlgoAPI_Common common(each[i], each[j]);
+      if (common.IsDone() && volume_of(common.Shape()) > 1e-9 * std::min(volume_of(each[i]), volume_of(each[j])))
+        throw InputError(
+            fmt::format("--body {}: solids {} and {} of it overlap; fuse them into one solid in your CAD tool", path,
+                        i + 1, j + 1));
+    }
   return solids;
 }
 

@@ -19,6 +19,7 @@
 #include <STEPControl_Writer.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
 #include <gp_Pnt.hxx>
 
@@ -128,6 +129,14 @@ TEST_P(StepBodyRefuses, WithExit2AReasonAndNoFile) {
     test_support::write_file(body, "solid part\nendsolid part\n");
   } else if (r.name == "open_step_body") {
     body = open_box_file(dir);
+  } else if (r.name == "overlapping_solids") {
+    body = dir + "/two.step";
+    TopoDS_Compound two;
+    BRep_Builder builder;
+    builder.MakeCompound(two);
+    builder.Add(two, BRepPrimAPI_MakeBox(20, 20, 20).Shape());
+    builder.Add(two, BRepPrimAPI_MakeSphere(gp_Pnt(15, 15, 15), 10).Shape());
+    write_step(two, body, "a box and a ball that overlap");
   } else if (r.name == "not_step_text") {
     body = dir + "/part.step";
     test_support::write_file(body, "this is no STEP file\n");
@@ -149,6 +158,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(BodyRefusal{"mesh_body", {"--thickness", "0.1"}, "B-rep booleans, which need a B-rep body"},
                       BodyRefusal{"open_step_body", {"--thickness", "0.1"}, "holds no solid"},
                       BodyRefusal{"not_step_text", {"--thickness", "0.1"}, "--body"},
+                      BodyRefusal{"overlapping_solids", {"--thickness", "0.1"}, "solids 1 and 2 of it overlap"},
                       BodyRefusal{"skin_leaving_no_core", {"--thickness", "0.1", "--skin", "10"}, "leaves no core"},
                       BodyRefusal{"graded_wall", {"--thickness", "0.05 + 0.05*x"}, "a uniform wall"},
                       BodyRefusal{"negative_skin", {"--thickness", "0.1", "--skin", "-1"}, "--skin -1"}));
