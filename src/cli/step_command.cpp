@@ -26,6 +26,7 @@ int run_step_command(const StepOptions& o) {
   r.output = o.output;
   r.max_control_points = o.max_control_points;
   r.patches = step::patches_from_name(o.patches);
+  r.body = body_request(o.body);
   const step::StepSummary s = step::export_step(r, [&](const std::string& stage) {
     if (!o.quiet) std::fprintf(stderr, "[offsetgen step] %s\n", stage.c_str());
   });

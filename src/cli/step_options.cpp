@@ -1,5 +1,7 @@
 #include "cli/step_options.h"
 
+#include "cli/step_body_options.h"
+
 #include <fmt/format.h>
 
 namespace offsetgen {
@@ -37,6 +39,7 @@ void add_step_command(CLI::App& app, StepOptions& o) {
                   "exactly), box (quarter-cell boxes, any catalog surface), or auto (symmetry where the surface has "
                   "mirror planes, except diamond, which box patches write faster; else box)")
       ->capture_default_str();
+  add_step_body_options(cmd, o.body);
   cmd->add_option("-o,--output", o.output, "Output file: .step or .stp");
   cmd->add_flag("-q,--quiet", o.quiet, "Print nothing on success");
   cmd->footer(
@@ -48,7 +51,9 @@ void add_step_command(CLI::App& app, StepOptions& o) {
       "  offsetgen step --surface schwarzp --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o p.step\n"
       "  offsetgen step --surface gyroid --thickness 0.1 --cells 2 --cell-size 10 --tolerance 0.01 -o g.step\n"
       "  offsetgen step --surface diamond --thickness \"0.05 + 0.05*x\" --cells 2x1x1 -o graded_d.step\n"
-      "  offsetgen step --surface gyroid --thickness 1 --cells 2 --cell-size 10,10,15 --tolerance 0.01 -o g_box.step");
+      "  offsetgen step --surface gyroid --thickness 1 --cells 2 --cell-size 10,10,15 --tolerance 0.01 -o g_box.step\n"
+      "  offsetgen step --surface gyroid --thickness 0.1 --cell-size 10 --body sphere.step -o g_sphere.step\n"
+      "  offsetgen step --surface diamond --thickness 0.1 --cell-size 10 --body part.step --skin 1.5 -o d_part.step");
 }
 
 }  // namespace offsetgen

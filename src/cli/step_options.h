@@ -2,6 +2,7 @@
 // passes the command line on: cli/siblings.h).
 #pragma once
 
+#include "cli/body_options.h"
 #include "cli/generation_options.h"
 
 #include <CLI/CLI.hpp>
@@ -20,6 +21,7 @@ struct StepOptions : GenerationOptions {
   int max_control_points = 40;
   std::string patches = "auto";
   bool quiet = false;
+  BodyOptions body;  // --body, --skin, --origin, --scale
 };
 
 void add_step_command(CLI::App& app, StepOptions& options);

@@ -32,7 +32,8 @@ std::string file_holds_the_solid(const std::string& bytes, const TopoDS_Shape& s
   size_t solids = 0, faces = 0;
   for (TopExp_Explorer e(solid, TopAbs_SOLID); e.More(); e.Next()) ++solids;
   for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next()) ++faces;
-  const size_t written_solids = occurrences(bytes, "MANIFOLD_SOLID_BREP("),
+  // A solid with inner shells (a skinned part's sealed pores) is a BREP_WITH_VOIDS.
+  const size_t written_solids = occurrences(bytes, "MANIFOLD_SOLID_BREP(") + occurrences(bytes, "BREP_WITH_VOIDS("),
                written_faces = occurrences(bytes, "ADVANCED_FACE(");
   if (written_solids == solids && written_faces == faces) return "";
   return fmt::format("the STEP file holds {} solids and {} faces of the solid's {} and {} (STEPControl_Writer)",

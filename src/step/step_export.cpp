@@ -2,6 +2,8 @@
 
 #include "emit/file_writer.h"
 #include "run/process.h"
+#include "step/body_solid.h"
+#include "step/body_trim.h"
 #include "step/cell_frame.h"
 #include "step/exact_walls.h"
 #include "step/measurement.h"
@@ -10,10 +12,12 @@
 #include "step/step_file.h"
 #include "step/step_metadata.h"
 #include "support/stopwatch.h"
+#include "surfaces/input_error.h"
 
 #include <ctime>
 #include <filesystem>
 #include <future>
+#include <optional>
 
 namespace offsetgen::step {
 
@@ -24,14 +28,26 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
     if (progress) progress(what);
   };
   validate_request(r);
+  if (r.body) validate_cad_body(*r.body, r.output);
   const PatchLayout* layout = choose_layout(r);
 
   StepSummary s;
+  // With a body, the block is the cells over it: the body is read and its core offset before the walls.
+  std::optional<CadBody> body;
+  if (r.body) {
+    say("reading the body" + std::string(r.body->skin > 0 ? ", offsetting its core" : ""));
+    body = load_cad_body(*r.body, r.cell_size[0], s.body);  // a cube cell (validate_request)
+  }
+  StepRequest block_request = r;
+  if (body) block_request.cells = body->cells;
+  const StepRequest& block = block_request;
   s.surface = surface_words(r.wall.generation);
   say("generating the wall's functions");
   wall::WallField field(framed_wall(r));
   wall::WallField::Worker worker(field);
-  record_thickness(field, worker, r, s);
+  record_thickness(field, worker, block, s);
+  if (body && s.graded)
+    throw InputError("--body takes a uniform wall (--thickness T or --density R): a graded one is not trimmed yet");
   say("compiling them");
   field.compile();
 
@@ -42,17 +58,21 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   };
   say(layout != nullptr ? "fitting the symmetry patches, building the solid"
                         : "cutting the wall into boxes, fitting their patches, building the solid");
-  const WallBrep brep = fit_and_build_wall(layout, field, worker, r, inside_wall, s);
+  const WallBrep brep = fit_and_build_wall(layout, field, worker, block, inside_wall, s);
   s.control_points = brep.control_points;
   s.expected_solids = brep.solids;
 
   // The exact wall volume needs only the wall's functions: it runs alongside the writing and the checks.
-  std::future<ExactVolume> exact_volume = start_exact_wall_volume(field, r, s);
+  std::future<ExactVolume> exact_volume = start_exact_wall_volume(field, block, s);
+  TopoDS_Shape part = brep.solid;
+  if (body) {
+    part = trim_by_body(brep.solid, *body, s.body, say);
+  }
   say("writing STEP");
   auto t0 = Clock::now();
   const run::ScratchDir scratch("offsetgen-step");  // removed on exit (a loaded library's mapping stays)
   const std::filesystem::path file = scratch.path() / "wall.step";
-  write_step(brep.solid, file.string(), file_description(r, s),
+  write_step(part, file.string(), body ? body_part_description(block, s) : file_description(block, s),
              /*pcurves=*/layout == nullptr);  // box patches' trimming curves are known exactly
   const std::string bytes = read_file_bytes(file.string());
   s.bytes = long(bytes.size());
@@ -62,8 +82,13 @@ StepSummary export_step(const StepRequest& r, const std::function<void(const std
   // tests read every file back, as `offsetgen check` does); the file must hold every solid and face
   // of it.
   say("measuring");
-  measure_solid(brep.solid, r, field, worker, exact_volume, s);
-  if (s.failure.empty()) s.failure = file_holds_the_solid(bytes, brep.solid);
+  measure_solid(brep.solid, block, field, worker, exact_volume, s);
+  if (body) {
+    say("reading the part back, measuring it");
+    measure_part(read_step(file.string()), s.body);
+    if (s.failure.empty()) s.failure = body_part_failure(s.body);
+  }
+  if (s.failure.empty()) s.failure = file_holds_the_solid(bytes, part);
   if (s.failure.empty()) {
     write_file(r.output, bytes);
     s.passed = true;

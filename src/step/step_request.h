@@ -2,9 +2,11 @@
 // over as given (docs/step.md).
 #pragma once
 
+#include "body/body_request.h"
 #include "wall/wall_field.h"
 
 #include <array>
+#include <optional>
 #include <string>
 
 namespace offsetgen::step {
@@ -29,6 +31,8 @@ struct StepRequest {
   std::string output;           // .step / .stp
   int max_control_points = 40;  // per patch side; beyond it the tolerance is reported as out of reach
   Patches patches = Patches::Auto;
+  // --body: the lattice trimmed by a CAD body, with a skin (body_solid.h); the block then covers it.
+  std::optional<body::BodyRequest> body;
 };
 
 // InputError for a request the exporter cannot take, found before any work: the wall not given as

@@ -22,11 +22,11 @@ std::string thickness_words(const StepSummary& s, const std::array<double, 3>& c
 }
 
 std::string format_summary(const StepSummary& s, const StepRequest& r) {
-  std::string out =
-      fmt::format("offsetgen step: {}: {} wall, t = {}; curvature limit {:.4f} {}), {}x{}x{} cells of {} mm\n",
-                  s.passed ? r.output + " written" : "no file written", s.surface, thickness_words(s, r.cell_size),
-                  s.thickness_limit, s.thickness_in_mm ? "mm" : "cell", r.cells[0], r.cells[1], r.cells[2],
-                  cell_size_words(r.cell_size));
+  const std::array<int, 3>& cells = s.body.path.empty() ? r.cells : s.body.cells;  // --body: the block over it
+  std::string out = fmt::format(
+      "offsetgen step: {}: {} wall, t = {}; curvature limit {:.4f} {}), {}x{}x{} cells of {} mm\n",
+      s.passed ? r.output + " written" : "no file written", s.surface, thickness_words(s, r.cell_size),
+      s.thickness_limit, s.thickness_in_mm ? "mm" : "cell", cells[0], cells[1], cells[2], cell_size_words(r.cell_size));
   const std::string patches = s.route == Route::Symmetry
                                   ? "symmetry patch"
                                   : fmt::format("box patch (the largest; boxes of 1/{} cell)", s.boxes_per_cell);
@@ -39,8 +39,9 @@ std::string format_summary(const StepSummary& s, const StepRequest& r) {
       s.graded || s.route == Route::Box
           ? "C0 edges"
           : fmt::format("largest normal jump across a patch edge {:.3f} degrees (C0 edges)", s.normal_jump));
-  out += fmt::format("  solid: {}, {} solid{}, {}{}\n", s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid", s.solids,
-                     s.solids == 1 ? "" : "s", s.closed ? "each one closed shell" : "NOT closed",
+  out += fmt::format("  {}: {}, {} solid{}, {}{}\n", s.body.path.empty() ? "solid" : "lattice block (before the trim)",
+                     s.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid", s.solids, s.solids == 1 ? "" : "s",
+                     s.closed ? "each one closed shell" : "NOT closed",
                      s.expected_solids == 1 ? ""
                                             : fmt::format(" (the block cuts the wall into {} pieces: the surface "
                                                           "crosses two of its corners)",
@@ -54,6 +55,7 @@ std::string format_summary(const StepSummary& s, const StepRequest& r) {
       "  volume: {:.6f} mm^3; exact wall {:.6f} mm^3 (column quadrature, standard error {:.2g}); difference "
       "{:+.3g}%\n",
       s.volume, s.exact_volume, s.exact_volume_error, 100 * rel);
+  out += format_body_part(s.body);
   out += fmt::format(
       "  time: {:.2f} s, {:.2f} s of CPU (generate and compile {:.2f}, fit {:.2f}, build {:.2f}, write {:.2f}, "
       "check {:.2f}, deviation {:.2f}; exact volume {:.2f} alongside the last three)\n",

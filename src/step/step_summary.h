@@ -1,6 +1,7 @@
 // What `offsetgen step` measured on the solid it wrote (or refused to write), and its summary.
 #pragma once
 
+#include "step/body_part.h"
 #include "step/step_request.h"
 
 #include <array>
@@ -41,6 +42,7 @@ struct StepSummary {
   long bytes = 0;
   bool passed = false;  // every check passed (export: and the file was written); else no file
   std::string failure;  // the check that failed, when not passed
+  BodyPart body;        // --body: the body, the core and the trimmed part (path empty without one)
   // Wall-clock seconds of each stage, and the process's CPU seconds in all (on a shared machine the
   // wall clock also counts waiting for a core).
   double seconds_generate = 0, seconds_fit = 0, seconds_build = 0, seconds_write = 0, seconds_read = 0,
