@@ -23,6 +23,7 @@
 #include <TopoDS_Shell.hxx>
 #include <gp_Pnt.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -146,6 +147,8 @@ TEST_P(StepBodyRefuses, WithExit2AReasonAndNoFile) {
   }
   std::vector<std::string> args = {"step", "--surface", "schwarzp", "--cell-size", "10", "--tolerance",
                                    "0.01", "--body",    body,       "-o",          out};
+  if (std::find(r.args.begin(), r.args.end(), "--cell-size") != r.args.end())
+    args.erase(args.begin() + 3, args.begin() + 5);  // the case's own cell size replaces the cube's
   args.insert(args.end(), r.args.begin(), r.args.end());
   const test_support::CommandResult run = run_offsetgen(args);
   EXPECT_EQ(run.exit_code, 2) << run.output;
@@ -161,7 +164,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BodyRefusal{"overlapping_solids", {"--thickness", "0.1"}, "solids 1 and 2 of it overlap"},
                       BodyRefusal{"skin_leaving_no_core", {"--thickness", "0.1", "--skin", "10"}, "leaves no core"},
                       BodyRefusal{"graded_wall", {"--thickness", "0.05 + 0.05*x"}, "a uniform wall"},
-                      BodyRefusal{"negative_skin", {"--thickness", "0.1", "--skin", "-1"}, "--skin -1"}));
+                      BodyRefusal{"negative_skin", {"--thickness", "0.1", "--skin", "-1"}, "--skin -1"},
+                      BodyRefusal{
+                          "box_cells", {"--thickness", "1", "--cell-size", "10,10,15"}, "--body takes a cube cell"}));
 
 }  // namespace
 }  // namespace offsetgen::step
