@@ -20,8 +20,8 @@
 #                                   with a gyroid of density 0.25 inside a 1.5 mm skin (--voxel 0.2
 #                                   --adaptivity 0.2, for a picture), cut open at z = 30 mm; skipped
 #                                   without the bunny
-#   docs/images/part_bunny_drained_cut.png  the same with --drain 2, cut open at z = 4 mm through the
-#                                   base's skin: the labyrinths' drain holes (docs/parts.md)
+#   docs/images/part_bunny_drained_cut.png  the same with --drain 2, cut open at z = 6 mm, 3.4 mm
+#                                   above the base: the lattice and the labyrinths' drain holes (docs/parts.md)
 #
 # Deterministic: the same offsetgen and the same Mesa/LLVM give the same bytes (llvmpipe is
 # bit-reproducible, the PNG writer stores no timestamp). Renders in 5-25 s on 2 cores once built.
@@ -87,8 +87,8 @@ if "$offsetgen" mesh --help >/dev/null 2>&1; then
     /usr/bin/python3 tools/render_stl.py "$tmp/bunny_filled.stl" "$out/part_bunny_gyroid_cut.png" --cut-above 30
     "$offsetgen" mesh --surface gyroid --density 0.25 --body "$bunny" --scale 0.5 --skin 1.5 --cell-size 6 \
       --voxel 0.2 --adaptivity 0.2 --drain 2 -o "$tmp/bunny_drained.stl" --quiet
-    /usr/bin/python3 tools/render_stl.py "$tmp/bunny_drained.stl" "$out/part_bunny_drained_cut.png" --cut-above 4 \
-      --elevation 55
+    /usr/bin/python3 tools/render_stl.py "$tmp/bunny_drained.stl" "$out/part_bunny_drained_cut.png" --cut-above 6 \
+      --elevation 60
   else
     echo "render_readme_images: no $bunny (apt-get install prusa-slicer): part_bunny_gyroid_cut.png skipped" >&2
   fi
