@@ -1,11 +1,10 @@
 #include "cli/body_options.h"
 
+#include "cli/number_list.h"
 #include "surfaces/input_error.h"
 
 #include <fmt/format.h>
 
-#include <cmath>
-#include <sstream>
 #include <vector>
 
 namespace offsetgen {
@@ -49,24 +48,9 @@ std::optional<body::BodyRequest> body_request(const BodyOptions& o) {
 }
 
 std::array<double, 3> parse_point(const std::string& text, const std::string& option) {
-  std::vector<double> v;
-  std::stringstream in(text);
-  std::string part;
-  while (std::getline(in, part, ',')) {
-    size_t used = 0;
-    double value = 0;
-    try {
-      value = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (part.empty() || used != part.size() || !std::isfinite(value))
-      throw InputError(fmt::format("{} '{}': expected X,Y,Z (three numbers, mm)", option, text));
-    v.push_back(value);
-  }
-  if (v.size() != 3 || text.back() == ',')
-    throw InputError(fmt::format("{} '{}': expected X,Y,Z (three numbers, mm)", option, text));
-  return {v[0], v[1], v[2]};
+  const auto v = parse_number_list(text);
+  if (!v || v->size() != 3) throw InputError(fmt::format("{} '{}': expected X,Y,Z (three numbers, mm)", option, text));
+  return {(*v)[0], (*v)[1], (*v)[2]};
 }
 
 }  // namespace offsetgen

@@ -1,5 +1,6 @@
 #include "cli/cells_option.h"
 
+#include "cli/number_list.h"
 #include "surfaces/input_error.h"
 #include "validate/block_checks.h"
 
@@ -34,25 +35,13 @@ std::array<int, 3> parse_cells(const std::string& text) {
 }
 
 std::array<double, 3> parse_cell_size(const std::string& text) {
-  const std::string usage =
-      fmt::format("--cell-size '{}': expected MM (a cube cell) or X,Y,Z (a box cell, mm along x, y and z)", text);
-  std::vector<double> sizes;
-  std::stringstream in(text);
-  std::string part;
-  while (std::getline(in, part, ',')) {
-    size_t used = 0;
-    double value = 0;
-    try {
-      value = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (part.empty() || used != part.size()) throw InputError(usage);
-    sizes.push_back(value);
-  }
-  if ((sizes.size() != 1 && sizes.size() != 3) || text.back() == ',') throw InputError(usage);
-  const std::array<double, 3> size = sizes.size() == 1 ? std::array<double, 3>{sizes[0], sizes[0], sizes[0]}
-                                                       : std::array<double, 3>{sizes[0], sizes[1], sizes[2]};
+  const auto sizes = parse_number_list(text);
+  if (!sizes || (sizes->size() != 1 && sizes->size() != 3))
+    throw InputError(
+        fmt::format("--cell-size '{}': expected MM (a cube cell) or X,Y,Z (a box cell, mm along x, y and z)", text));
+  const std::vector<double>& v = *sizes;
+  const std::array<double, 3> size =
+      v.size() == 1 ? std::array<double, 3>{v[0], v[0], v[0]} : std::array<double, 3>{v[0], v[1], v[2]};
   check_cell_size(size);
   return size;
 }
