@@ -18,8 +18,9 @@ std::string format_body_part(const BodyPart& p) {
       p.skin > 0 ? "skin and lattice ∩ core" : "lattice ∩ body", p.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid",
       p.solids, p.solids == 1 ? "" : "s", p.shells, p.closed ? "all" : "NOT all", p.faces, p.volume,
       p.body_volume > 0 ? 100 * p.volume / p.body_volume : 0.0);
-  out += fmt::format("  body time: read {:.2f} s, offset {:.2f} s, booleans {:.2f} s\n", p.seconds_read,
-                     p.seconds_offset, p.seconds_trim);
+  out += fmt::format(
+      "  body time: read {:.2f} s, offset {:.2f} s, booleans {:.2f} s, the part read back and checked {:.2f} s\n",
+      p.seconds_read, p.seconds_offset, p.seconds_trim, p.seconds_read_back);
   return out;
 }
 

@@ -18,7 +18,7 @@ struct BodyPart {
   int solids = 0, shells = 0, faces = 0;    // of the part
   bool valid = false, closed = false;
   double volume = 0;  // mm^3, of the part
-  double seconds_read = 0, seconds_offset = 0, seconds_trim = 0;
+  double seconds_read = 0, seconds_offset = 0, seconds_trim = 0, seconds_read_back = 0;
 };
 
 // The summary's lines for the part ("" before a body is read).

@@ -31,6 +31,10 @@ TopoDS_Shape run_boolean(BRepAlgoAPI_BooleanOperation&& op, const TopoDS_Shape& 
   op.SetTools(tools);
   op.SetRunParallel(Standard_True);
   op.SetGlue(glue);
+  // The arguments are known to be outward-oriented solids (the block is built so and measured, the
+  // body and core are checked for a positive volume), so OpenCASCADE's test for inverted solids, a
+  // point classified against each whole solid (2-3 s on the 3,840-face lattice), is skipped.
+  op.SetCheckInverted(Standard_False);
   op.Build();
   if (!op.IsDone() || op.HasErrors())
     throw std::runtime_error(fmt::format("OpenCASCADE's boolean ({}) failed on the lattice and the body", what));

@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <future>
 #include <stdexcept>
 #include <vector>
 
@@ -303,6 +304,12 @@ WallBrep build_wall(const PatchLayout& layout, const std::vector<CubicPatch>& pl
 }
 
 ShapeCheck check_shape(const TopoDS_Shape& shape) {
+  // The volume is integrated on a second core while BRepCheck analyses: both only read the shape.
+  std::future<double> volume = std::async(std::launch::async, [&shape] {
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(shape, props, true);  // Gauss points per knot span: exact to rounding for bicubic faces
+    return props.Mass();
+  });
   ShapeCheck c;
   c.valid = BRepCheck_Analyzer(shape).IsValid();
   c.closed = true;
@@ -312,9 +319,7 @@ ShapeCheck check_shape(const TopoDS_Shape& shape) {
     if (!BRep_Tool::IsClosed(e.Current())) c.closed = false;
   }
   for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) ++c.faces;
-  GProp_GProps props;
-  BRepGProp::VolumeProperties(shape, props, true);  // Gauss points per knot span: exact to rounding for bicubic faces
-  c.volume = props.Mass();
+  c.volume = volume.get();
   return c;
 }
 
