@@ -1,7 +1,6 @@
 // The lattice of `offsetgen step --body` trimmed by the body with OpenCASCADE's booleans: lattice ∩
-// body without a skin; with one, (body - core) ∪ (lattice ∩ core): the skin and the lattice's part
-// meet on the core's faces, where the fuse merges them. The pores the skin seals become the solid's
-// inner shells (voids).
+// body without a skin; with one, (body - core) ∪ (lattice ∩ core), made as the body with the pores,
+// core - lattice, for voids: the pores the skin seals become the solid's inner shells.
 #pragma once
 
 #include "step/body_part.h"

@@ -73,13 +73,17 @@ double sampled_volume(double skin) {
   return double(inside) * h * h * h;
 }
 
-void expect_trimmed_ball(const std::string& body, double skin) {
-  const std::string dir = fs::path(body).parent_path().string(), out = dir + "/part.step";
+// Runs step --body on `body` into `out`; the part's check as read back.
+ShapeCheck trimmed_part(const std::string& body, double skin, const std::string& out) {
   const auto run =
       run_offsetgen({"step", "--surface", "schwarzp", "--thickness", "0.1", "--cell-size", "10", "--tolerance", "0.01",
                      "--body", body, "--skin", std::to_string(skin), "-q", "-o", out});
-  ASSERT_EQ(run.exit_code, 0) << run.output;
-  const ShapeCheck c = check_shape(read_step(out));
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return check_shape(read_step(out));
+}
+
+void expect_trimmed_ball(const std::string& body, double skin) {
+  const ShapeCheck c = trimmed_part(body, skin, fs::path(body).parent_path().string() + "/part.step");
   EXPECT_TRUE(c.valid);
   EXPECT_TRUE(c.closed);
   EXPECT_GE(c.solids, 1);
@@ -93,6 +97,29 @@ TEST(StepBody, SchwarzPCellTrimmedByABallIsValidClosedSolidsOfTheSampledVolume) 
 
 TEST(StepBody, SchwarzPCellInABallWithASkinIsValidClosedSolidsOfTheSampledVolume) {
   expect_trimmed_ball(ball_file(scratch_dir("body_ball_skin"), "ball.step"), 1);
+}
+
+// Two balls a cell apart in one file, with a skin: each ball's pores are voids of that ball's solid
+// (not of the other's), so the part is two solids, each the one-ball part moved by a whole cell (the
+// lattice repeats), and a second run writes the same bytes.
+TEST(StepBody, TwoBallsWithASkinAreTwoSolidsOfTwiceTheOneBallVolumeAndTheSameBytesRunTwice) {
+  const std::string dir = scratch_dir("body_two_balls");
+  const std::string one = ball_file(dir, "ball.brep"), two = dir + "/two.brep";
+  TopoDS_Compound balls;
+  BRep_Builder builder;
+  builder.MakeCompound(balls);
+  for (double x : {kRadius, kRadius + 10})
+    builder.Add(balls, BRepPrimAPI_MakeSphere(gp_Pnt(x, kRadius, kRadius), kRadius).Shape());
+  BRepTools::Write(balls, two.c_str());
+  const ShapeCheck single = trimmed_part(one, 1, dir + "/one.step");
+  const ShapeCheck c = trimmed_part(two, 1, dir + "/two.step");
+  EXPECT_TRUE(c.valid);
+  EXPECT_TRUE(c.closed);
+  EXPECT_EQ(c.solids, 2 * single.solids);
+  EXPECT_EQ(c.shells, 2 * single.shells);
+  EXPECT_NEAR(c.volume, 2 * single.volume, 1e-6 * c.volume);
+  trimmed_part(two, 1, dir + "/again.step");
+  EXPECT_EQ(test_support::read_file(dir + "/two.step"), test_support::read_file(dir + "/again.step"));
 }
 
 // A box's shell with its top face left out, written as it is: a STEP body with no inside.
