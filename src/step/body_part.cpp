@@ -18,6 +18,13 @@ std::string format_body_part(const BodyPart& p) {
       p.skin > 0 ? "skin and lattice ∩ core" : "lattice ∩ body", p.valid ? "valid (BRepCheck_Analyzer)" : "NOT valid",
       p.solids, p.solids == 1 ? "" : "s", p.shells, p.closed ? "all" : "NOT all", p.faces, p.volume,
       p.body_volume > 0 ? 100 * p.volume / p.body_volume : 0.0);
+  if (p.sampled_points > 0)
+    out += fmt::format(
+        "  sampled without the booleans: {:.2f} mm^3 (standard error {:.2f}; the skin exact, the lattice in the core "
+        "at "
+        "{} points); the part {:+.3f}%\n",
+        p.sampled_volume, p.sampled_error, p.sampled_points,
+        p.sampled_volume > 0 ? 100 * (p.volume - p.sampled_volume) / p.sampled_volume : 0.0);
   out += fmt::format(
       "  body time: read {:.2f} s, offset {:.2f} s, booleans {:.2f} s, the part read back and checked {:.2f} s\n",
       p.seconds_read, p.seconds_offset, p.seconds_trim, p.seconds_read_back);

@@ -18,6 +18,9 @@ struct BodyPart {
   int solids = 0, shells = 0, faces = 0;    // of the part
   bool valid = false, closed = false;
   double volume = 0;  // mm^3, of the part
+  // The part's volume estimated without the booleans (body_sampling.h): skin exact, lattice sampled.
+  double sampled_volume = 0, sampled_error = 0;
+  long sampled_points = 0;
   double seconds_read = 0, seconds_offset = 0, seconds_trim = 0, seconds_read_back = 0;
 };
 

@@ -180,7 +180,7 @@ void validate_cad_body(const body::BodyRequest& r, const std::string& output) {
   body::validate_body(r, output);
 }
 
-CadBody load_cad_body(const body::BodyRequest& r, double cell_size, BodyPart& part) {
+CadBody load_cad_body(const body::BodyRequest& r, const std::array<double, 3>& cell_size, BodyPart& part) {
   auto t0 = Clock::now();
   CadBody out;
   TopoDS_Shape shape = read_cad_file(r.path);
@@ -196,7 +196,7 @@ CadBody load_cad_body(const body::BodyRequest& r, double cell_size, BodyPart& pa
   part.body_faces = count(out.solids, TopAbs_FACE);
   part.body_volume = volume_of(out.solids);
   const auto box = box_of(out.solids);
-  body::check_body_size(box, cell_size, r.skin);
+  body::check_body_size(box, *std::min_element(cell_size.begin(), cell_size.end()), r.skin);
   part.seconds_read = seconds_since(t0);
 
   t0 = Clock::now();
@@ -212,10 +212,10 @@ CadBody load_cad_body(const body::BodyRequest& r, double cell_size, BodyPart& pa
   part.origin = r.origin ? *r.origin : box[0];
   for (size_t a = 0; a < 3; ++a) {
     constexpr double kSlack = 1e-9;  // a box side on a cell plane takes no extra cell
-    const double lo = std::floor((lattice_box[0][a] - part.origin[a]) / cell_size + kSlack);
-    const double hi = std::ceil((lattice_box[1][a] - part.origin[a]) / cell_size - kSlack);
+    const double lo = std::floor((lattice_box[0][a] - part.origin[a]) / cell_size[a] + kSlack);
+    const double hi = std::ceil((lattice_box[1][a] - part.origin[a]) / cell_size[a] - kSlack);
     out.cells[a] = std::max(1, int(hi - lo));
-    out.corner[a] = part.origin[a] + lo * cell_size;
+    out.corner[a] = part.origin[a] + lo * cell_size[a];
   }
   part.corner = out.corner;
   part.cells = out.cells;

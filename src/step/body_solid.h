@@ -26,8 +26,8 @@ struct CadBody {
 };
 
 // Reads the body, checks it (valid, closed solids, large enough for a cell and the skin), places the
-// block and offsets the core; records what it measured in `part`. InputError where the file holds no
-// closed valid solid or the inward offset fails or leaves no core.
-CadBody load_cad_body(const body::BodyRequest& request, double cell_size, BodyPart& part);
+// block (whole cells of the given sides, mm: a cube or a box cell) and offsets the core; records what it measured in
+// `part`. InputError where the file holds no closed valid solid or the inward offset fails or leaves no core.
+CadBody load_cad_body(const body::BodyRequest& request, const std::array<double, 3>& cell_size, BodyPart& part);
 
 }  // namespace offsetgen::step

@@ -36,11 +36,6 @@ void validate_request(const StepRequest& r) {
     throw InputError(
         "--density needs a cube cell: with --cell-size X,Y,Z of unequal sides the cell is stretched differently "
         "along each axis and no closed-form density relation holds; give the wall as --thickness T (mm)");
-  // The part's block is counted in cube cells over the body (body_solid); box cells are blocks only.
-  if (!cube_cell(r.cell_size) && r.body)
-    throw InputError(
-        "--body takes a cube cell (one --cell-size MM): a lattice of box cells (--cell-size X,Y,Z) is written as a "
-        "block, not yet trimmed by a body");
   if (r.output.empty()) throw InputError("no output file: use -o part.step");
   const std::string ext = std::filesystem::path(r.output).extension().string();
   if (ext != ".step" && ext != ".stp" && ext != ".STEP" && ext != ".STP")

@@ -3,6 +3,8 @@
 // from this process's own wall functions and the ball; and the bodies it refuses (exit 2, no file).
 // issue 42's parts (a gyroid in a sphere, a diamond lattice in a holed box with a skin) are the slow
 // read-back tests (body_part_readback.sh).
+#include "step/cell_frame.h"
+#include "step/exact_walls.h"
 #include "step/step_file.h"
 #include "step/wall_brep.h"
 #include "wall/wall_field.h"
@@ -122,6 +124,56 @@ TEST(StepBody, TwoBallsWithASkinAreTwoSolidsOfTwiceTheOneBallVolumeAndTheSameByt
   EXPECT_EQ(test_support::read_file(dir + "/two.step"), test_support::read_file(dir + "/again.step"));
 }
 
+// Box cells (10 x 10 x 8 mm, walls 1 mm thick along the physical normal) in a ball with a skin: the
+// block is placed in box cells and trimmed as a cube cell's is; the part's volume is that sampled from
+// the composed wall's own functions (step/exact_walls.h) inside the ball's core and its skin.
+TEST(StepBody, BoxCellsInABallWithASkinAreValidClosedSolidsOfTheSampledVolume) {
+  const std::string dir = scratch_dir("body_ball_box_cells"), body = ball_file(dir, "ball.brep");
+  const std::string out = dir + "/part.step";
+  constexpr double kSkin = 1;
+  const auto run = run_offsetgen({"step", "--surface", "schwarzp", "--thickness", "1", "--cell-size", "10,10,8",
+                                  "--tolerance", "0.01", "--body", body, "--skin", "1", "-q", "-o", out});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const ShapeCheck c = check_shape(read_step(out));
+  EXPECT_TRUE(c.valid);
+  EXPECT_TRUE(c.closed);
+  EXPECT_GE(c.solids, 1);
+
+  StepRequest request;
+  request.wall.generation.surface = "schwarzp";
+  request.wall.thickness = "1";
+  request.cell_size = {10, 10, 8};
+  wall::WallField field(framed_wall(request));
+  wall::WallField::Worker worker(field);
+  field.compile();
+  const CellFrame frame = cell_frame(request);
+  constexpr int n = 160;
+  const double h = 2 * kRadius / n;
+  long inside = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        const Point p{(i + 0.5) * h, (j + 0.5) * h, (k + 0.5) * h};
+        const double r = std::hypot(p[0] - kRadius, p[1] - kRadius, p[2] - kRadius);
+        if (r >= kRadius) continue;
+        if (r > kRadius - kSkin || inside_wall_at(field, worker, frame, {p[0] / 10, p[1] / 10, p[2] / 8})) ++inside;
+      }
+  EXPECT_NEAR(c.volume, double(inside) * h * h * h, 0.01 * c.volume);
+}
+
+// A gyroid cell trimmed by the ball that just fits it (touching the block's six faces): OpenCASCADE's
+// common comes back valid and closed but 167% of the ball. The volume sampled without the booleans
+// finds it: exit 1, the reason, no file.
+TEST(StepBody, AWrongPartFromTheBooleansIsCaughtByTheSampledVolumeWithExit1AndNoFile) {
+  const std::string dir = scratch_dir("body_wrong_part"), body = ball_file(dir, "ball.brep");
+  fs::create_directories(dir + "/out");
+  const auto run = run_offsetgen({"step", "--surface", "gyroid", "--thickness", "0.1", "--cell-size", "10",
+                                  "--tolerance", "0.01", "--body", body, "-o", dir + "/out/part.step"});
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("booleans gave a wrong part"), std::string::npos) << run.output;
+  EXPECT_TRUE(fs::is_empty(dir + "/out")) << "no file, no temporary left behind";
+}
+
 // A box's shell with its top face left out, written as it is: a STEP body with no inside.
 std::string open_box_file(const std::string& dir) {
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(20, 20, 20).Shape();
@@ -192,8 +244,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BodyRefusal{"skin_leaving_no_core", {"--thickness", "0.1", "--skin", "10"}, "leaves no core"},
                       BodyRefusal{"graded_wall", {"--thickness", "0.05 + 0.05*x"}, "a uniform wall"},
                       BodyRefusal{"negative_skin", {"--thickness", "0.1", "--skin", "-1"}, "--skin -1"},
-                      BodyRefusal{
-                          "box_cells", {"--thickness", "1", "--cell-size", "10,10,15"}, "--body takes a cube cell"}));
+                      BodyRefusal{"box_cells_larger_than_the_body",
+                                  {"--thickness", "1", "--cell-size", "25,30,40"},
+                                  "smaller than one cell"}));
 
 }  // namespace
 }  // namespace offsetgen::step
