@@ -7,11 +7,13 @@
 #include <BRepAlgoAPI_BooleanOperation.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepClass3d.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
@@ -21,8 +23,11 @@
 #include <TopoDS_Solid.hxx>
 #include <gp_Trsf.hxx>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace offsetgen::step {
@@ -47,12 +52,42 @@ TopoDS_Shape run_boolean(BRepAlgoAPI_BooleanOperation&& op, const TopoDS_Shape& 
   return op.Shape();
 }
 
+// A face's place in a canonical order: its bounding box, corner by corner. OpenCASCADE's parallel
+// booleans hand back the faces of a shell in an order that changes from run to run; the file's bytes
+// must not.
+std::array<double, 6> face_key(const TopoDS_Shape& face) {
+  Bnd_Box box;
+  BRepBndLib::Add(face, box, /*useTriangulation=*/Standard_False);
+  std::array<double, 6> key{};
+  box.Get(key[0], key[1], key[2], key[3], key[4], key[5]);
+  return key;
+}
+
+// The shell with its faces in the canonical order (the same faces, orientations and closure).
+TopoDS_Shell canonical_shell(const TopoDS_Shape& shell) {
+  std::vector<std::pair<std::array<double, 6>, TopoDS_Shape>> faces;
+  for (TopoDS_Iterator f(shell); f.More(); f.Next()) faces.emplace_back(face_key(f.Value()), f.Value());
+  std::stable_sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  BRep_Builder builder;
+  TopoDS_Shell out;
+  builder.MakeShell(out);
+  for (const auto& face : faces) builder.Add(out, face.second);
+  out.Closed(BRep_Tool::IsClosed(shell));
+  return TopoDS::Shell(out.Oriented(shell.Orientation()));
+}
+
 // The result's solids in one compound (a boolean's result may nest compounds).
 TopoDS_Shape solids_of(const TopoDS_Shape& shape) {
   TopoDS_Compound out;
   BRep_Builder builder;
   builder.MakeCompound(out);
-  for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) builder.Add(out, e.Current());
+  for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) {
+    TopoDS_Solid solid;
+    builder.MakeSolid(solid);
+    for (TopoDS_Iterator shell(e.Current()); shell.More(); shell.Next())
+      builder.Add(solid, canonical_shell(shell.Value()));
+    builder.Add(out, solid.Oriented(e.Current().Orientation()));
+  }
   return out;
 }
 
@@ -70,9 +105,12 @@ TopoDS_Shape with_voids(const TopoDS_Shape& solids, const TopoDS_Shape& pores) {
     for (TopoDS_Iterator shell(e.Current()); shell.More(); shell.Next()) builder.Add(copy, shell.Value());
     out.push_back(copy);
   }
+  std::vector<std::pair<std::array<double, 6>, TopoDS_Solid>> in_order;
+  for (TopExp_Explorer e(pores, TopAbs_SOLID); e.More(); e.Next())
+    in_order.emplace_back(face_key(e.Current()), TopoDS::Solid(e.Current()));
+  std::stable_sort(in_order.begin(), in_order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<TopoDS_Solid> islands;
-  for (TopExp_Explorer e(pores, TopAbs_SOLID); e.More(); e.Next()) {
-    const TopoDS_Solid pore = TopoDS::Solid(e.Current());
+  for (const auto& [key, pore] : in_order) {
     const TopoDS_Shell outer = BRepClass3d::OuterShell(pore);
     if (outer.IsNull()) throw std::runtime_error("a pore (core - lattice) has no outer shell");
     const gp_Pnt at = BRep_Tool::Pnt(TopoDS::Vertex(TopExp_Explorer(outer, TopAbs_VERTEX).Current()));
@@ -80,12 +118,12 @@ TopoDS_Shape with_voids(const TopoDS_Shape& solids, const TopoDS_Shape& pores) {
     while (inside < around.size() && BRepClass3d_SolidClassifier(around[inside], at, 1e-7).State() != TopAbs_IN)
       ++inside;
     if (inside == around.size()) throw std::runtime_error("a pore (core - lattice) lies outside the body");
-    builder.Add(out[inside], outer.Reversed());
+    builder.Add(out[inside], canonical_shell(outer).Reversed());
     for (TopoDS_Iterator shell(pore); shell.More(); shell.Next()) {
       if (shell.Value().IsSame(outer)) continue;
       TopoDS_Solid island;
       builder.MakeSolid(island);
-      builder.Add(island, shell.Value().Reversed());
+      builder.Add(island, canonical_shell(shell.Value()).Reversed());
       islands.push_back(island);
     }
   }

@@ -24,9 +24,9 @@
 
 namespace offsetgen::step {
 
-// 48^3 points: the lattice in the holed box's core to about 0.5% (one standard error), in 2-4 s beside
-// the reading back.
-constexpr int kSamplesPerSide = 48;
+// 40^3 points: the lattice in the holed box's core to about 0.5% (one standard error), beside the
+// reading back.
+constexpr int kSamplesPerSide = 40;
 
 StepSummary export_step(const StepRequest& r, const std::function<void(const std::string&)>& progress) {
   const auto start = Clock::now();
