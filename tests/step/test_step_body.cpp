@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,8 +50,24 @@ std::string ball_file(const std::string& dir, const std::string& name) {
   return path;
 }
 
-// The part's volume sampled at the midpoints of a grid over the ball's cube: inside the ball, and in
-// the skin or the exact Schwarz P wall (t = 0.1 cell).
+// The volume of the ball's points (midpoints of a 160^3 grid over its cube, mm) that lie in its skin
+// or where `in_wall` holds them.
+double ball_volume_where(double skin, const std::function<bool(const Point&)>& in_wall) {
+  constexpr int n = 160;
+  const double h = 2 * kRadius / n;
+  long inside = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        const Point p{(i + 0.5) * h, (j + 0.5) * h, (k + 0.5) * h};
+        const double r = std::hypot(p[0] - kRadius, p[1] - kRadius, p[2] - kRadius);
+        if (r < kRadius && (r > kRadius - skin || in_wall(p))) ++inside;
+      }
+  return double(inside) * h * h * h;
+}
+
+// The part's volume sampled from this process's own wall functions: the exact Schwarz P wall
+// (t = 0.1 cell of 10 mm) in the ball, and the skin.
 double sampled_volume(double skin) {
   wall::WallRequest request;
   request.generation.surface = "schwarzp";
@@ -58,21 +75,12 @@ double sampled_volume(double skin) {
   wall::WallField field(request);
   wall::WallField::Worker worker(field);
   field.compile();
-  constexpr int n = 160;
-  const double h = 2 * kRadius / n;
-  long inside = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        const double p[3] = {(i + 0.5) * h, (j + 0.5) * h, (k + 0.5) * h};
-        const double r = std::hypot(p[0] - kRadius, p[1] - kRadius, p[2] - kRadius);
-        if (r >= kRadius) continue;
-        double w = 0;
-        const double q[3] = {p[0] / 10, p[1] / 10, p[2] / 10};  // cell units
-        field.walls(1, q, q + 1, q + 2, &w, worker);
-        if (r > kRadius - skin || w < 0) ++inside;
-      }
-  return double(inside) * h * h * h;
+  return ball_volume_where(skin, [&](const Point& p) {
+    double w = 0;
+    const double q[3] = {p[0] / 10, p[1] / 10, p[2] / 10};  // cell units
+    field.walls(1, q, q + 1, q + 2, &w, worker);
+    return w < 0;
+  });
 }
 
 // Runs step --body on `body` into `out`; the part's check as read back.
@@ -147,18 +155,10 @@ TEST(StepBody, BoxCellsInABallWithASkinAreValidClosedSolidsOfTheSampledVolume) {
   wall::WallField::Worker worker(field);
   field.compile();
   const CellFrame frame = cell_frame(request);
-  constexpr int n = 160;
-  const double h = 2 * kRadius / n;
-  long inside = 0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        const Point p{(i + 0.5) * h, (j + 0.5) * h, (k + 0.5) * h};
-        const double r = std::hypot(p[0] - kRadius, p[1] - kRadius, p[2] - kRadius);
-        if (r >= kRadius) continue;
-        if (r > kRadius - kSkin || inside_wall_at(field, worker, frame, {p[0] / 10, p[1] / 10, p[2] / 8})) ++inside;
-      }
-  EXPECT_NEAR(c.volume, double(inside) * h * h * h, 0.01 * c.volume);
+  const double sampled = ball_volume_where(kSkin, [&](const Point& p) {
+    return inside_wall_at(field, worker, frame, {p[0] / 10, p[1] / 10, p[2] / 8});
+  });
+  EXPECT_NEAR(c.volume, sampled, 0.01 * c.volume);
 }
 
 // A gyroid cell trimmed by the ball that just fits it (touching the block's six faces): OpenCASCADE's
